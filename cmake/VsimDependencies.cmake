@@ -1,0 +1,27 @@
+# Third-party packages, found once for the whole tree. Versions are those of Debian 12 (scripts/install-deps.sh).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(ZLIB REQUIRED)
+find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent Test LinguistTools)
+qt_standard_project_setup()
+set(CMAKE_AUTOMOC ON)
+
+# VTK: never VTK::GUISupportQt (built against Qt 5 in Debian); the Qt 6 bridge lives in modules/viz.
+find_package(VTK 9.1 REQUIRED COMPONENTS
+    CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
+    IOXML IOImage ImagingCore ImagingGeneral
+    RenderingCore RenderingOpenGL2 RenderingVolume RenderingVolumeOpenGL2 RenderingAnnotation
+    RenderingFreeType RenderingImage InteractionStyle InteractionWidgets FiltersCore FiltersGeneral FiltersSources)
+
+find_package(ITK 5.2 REQUIRED COMPONENTS
+    ITKCommon ITKIOImageBase ITKIONRRD ITKIONIFTI ITKIOMeta ITKImageGrid)
+# ITK 5.2 in Debian bundles Eigen 3.3.9 under the same include guards as Eigen 3.4: one translation unit
+# cannot hold both. ITK_USE_SYSTEM_EIGEN makes ITK's (template-only) Eigen use compile against Eigen 3.4.
+add_library(vsim_itk INTERFACE)
+target_link_libraries(vsim_itk INTERFACE ${ITK_LIBRARIES} Eigen3::Eigen)
+target_compile_definitions(vsim_itk INTERFACE ITK_USE_SYSTEM_EIGEN)
+add_library(vsim::itk ALIAS vsim_itk)
+# No include(${ITK_USE_FILE}): it puts ITK's bundled Eigen on every target's include path, shadowing Eigen 3.4.
+# ITK image IOs are chosen explicitly in code (NrrdImageIO, NiftiImageIO, ...), so no factory registration is needed.
+
+find_package(DCMTK REQUIRED)

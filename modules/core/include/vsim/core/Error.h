@@ -1,0 +1,37 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vsim {
+
+/// The one exception type of compute code: a message for a person plus machine-readable context
+/// (file, tag, parameter key, ...). App and CLI catch it at their boundary.
+class Error : public std::runtime_error
+{
+public:
+    using Context = std::vector<std::pair<std::string, std::string>>;
+
+    explicit Error(const std::string& message, Context context = {});
+
+    /// The message without the context.
+    const std::string& message() const { return m_message; }
+    const Context& context() const { return m_context; }
+    /// Returns the value of a context key, or an empty string.
+    std::string contextValue(const std::string& key) const;
+
+private:
+    std::string m_message;
+    Context m_context;
+};
+
+/// Thrown when the user cancelled a long task; nothing was written.
+class Cancelled : public Error
+{
+public:
+    Cancelled() : Error("cancelled by the user") {}
+};
+
+} // namespace vsim

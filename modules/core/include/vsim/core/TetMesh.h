@@ -1,0 +1,30 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vsim {
+
+/// A linear tetrahedral mesh in the patient frame (mm), e.g. a vessel wall. Element order follows VTK
+/// (positive volume when (p1-p0) x (p2-p0) . (p3-p0) > 0).
+struct TetMesh
+{
+    std::vector<Eigen::Vector3d> points;                 ///< mm, LPS
+    std::vector<std::array<int, 4>> tets;
+    std::map<std::string, std::vector<double>> pointFields;
+    std::map<std::string, std::vector<double>> cellFields;
+
+    /// Signed volume of element `tet` in mm^3.
+    double elementVolume(std::size_t tet) const;
+    /// Sum of element volumes in mm^3.
+    double totalVolume() const;
+    /// Throws vsim::Error for an index out of range, an inverted or degenerate element (volume <= 0),
+    /// or a field of the wrong length; the message names the element.
+    void validate() const;
+};
+
+} // namespace vsim

@@ -1,0 +1,96 @@
+#pragma once
+
+#include "vsim/core/ImageVolume.h"
+#include "vsim/core/SkeletonGraph.h"
+#include "vsim/core/TetMesh.h"
+#include "vsim/core/TriangleMesh.h"
+#include "vsim/study/Artifact.h"
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vsim::study {
+
+/// Schema version written into study.json; bump it with a migration in Manifest.cpp.
+inline constexpr int kSchemaVersion = 1;
+
+/// The document: one patient's study as a `<name>.vsim/` bundle (study.json + images/, labels/, surfaces/,
+/// meshes/, skeletons/). Artifacts added since the last save are held in memory until save(), which is atomic:
+/// new files are written and synced first, the manifest is replaced by rename last, and files no longer
+/// referenced are removed after that. A kill at any moment leaves the old or the new study.
+class Study
+{
+public:
+    /// A new, unsaved study that will be written to `bundle` (a folder, conventionally ending in .vsim).
+    static Study create(const std::filesystem::path& bundle, const std::string& name);
+    /// Opens a bundle. Throws vsim::Error when study.json is missing, unreadable, or of a newer schema.
+    /// Missing or damaged artifact files do not throw: those artifacts are flagged (Artifact::damaged) and
+    /// listed in openWarnings().
+    static Study open(const std::filesystem::path& bundle);
+
+    Study(Study&&) noexcept;
+    Study& operator=(Study&&) noexcept;
+    ~Study();
+
+    const std::filesystem::path& bundlePath() const;
+    const std::string& name() const;
+    /// Patient and study metadata (patient_name, patient_id, study_description, study_date, ...).
+    const std::map<std::string, std::string>& metadata() const;
+    void setMetadata(const std::string& key, const std::string& value);
+
+    const std::vector<Artifact>& artifacts() const;
+    /// Returns the artifact; throws vsim::Error for an unknown id.
+    const Artifact& artifact(const std::string& id) const;
+    bool hasArtifact(const std::string& id) const;
+    /// Problems found by open(): missing or damaged files, leftovers of an interrupted save.
+    const std::vector<std::string>& openWarnings() const;
+    /// True when there are changes that save() would write.
+    bool isModified() const;
+
+    /// Adds an artifact held in memory until save(); returns its new id. Throws vsim::Error for empty data.
+    std::string addImage(const CtVolume& image, const std::string& name, Provenance provenance,
+                         std::vector<std::string> warnings = {});
+    std::string addLabel(const LabelVolume& label, const std::string& name, Provenance provenance,
+                         std::vector<std::string> warnings = {});
+    std::string addSurface(const TriangleMesh& surface, const std::string& name, Provenance provenance,
+                           std::vector<std::string> warnings = {});
+    std::string addTetMesh(const TetMesh& mesh, const std::string& name, Provenance provenance,
+                           std::vector<std::string> warnings = {});
+    std::string addSkeleton(const SkeletonGraph& skeleton, const std::string& name, Provenance provenance,
+                            std::vector<std::string> warnings = {});
+
+    /// Loads an artifact's data (from memory if unsaved, else from its file). Throws vsim::Error for an unknown
+    /// id, a kind mismatch, or a damaged artifact.
+    CtVolume loadImage(const std::string& id) const;
+    LabelVolume loadLabel(const std::string& id) const;
+    TriangleMesh loadSurface(const std::string& id) const;
+    TetMesh loadTetMesh(const std::string& id) const;
+    SkeletonGraph loadSkeleton(const std::string& id) const;
+
+    /// Renames an artifact (the name shown to people); throws vsim::Error for an unknown id.
+    void renameArtifact(const std::string& id, const std::string& name);
+    /// Removes an artifact from the study; its data is returned so that an undo can put it back.
+    /// Throws vsim::Error for an unknown id.
+    void removeArtifact(const std::string& id);
+    /// Puts back an artifact removed by removeArtifact() (same id, data kept in memory until the next save).
+    void restoreArtifact(const std::string& id);
+
+    /// Writes the study atomically to its bundle. Throws vsim::Error on an I/O failure; the bundle on disk then
+    /// still holds the previous version.
+    void save();
+    /// Writes the study to a new bundle (copying saved artifact files) and makes it this study's bundle.
+    void saveAs(const std::filesystem::path& bundle);
+
+private:
+    struct State;
+    explicit Study(std::unique_ptr<State> state);
+    std::unique_ptr<State> m_state;
+};
+
+/// Returns the current time as ISO 8601 UTC, e.g. "2026-11-22T09:30:00Z".
+std::string utcTimestamp();
+
+} // namespace vsim::study

@@ -1,0 +1,29 @@
+#include "vsim/study/Artifact.h"
+
+#include "vsim/core/Error.h"
+
+namespace vsim::study {
+
+std::string kindName(ArtifactKind kind)
+{
+    switch (kind)
+    {
+    case ArtifactKind::Image: return "image";
+    case ArtifactKind::Label: return "label";
+    case ArtifactKind::Surface: return "surface";
+    case ArtifactKind::TetMesh: return "tetmesh";
+    case ArtifactKind::Skeleton: return "skeleton";
+    }
+    return "unknown";
+}
+
+ArtifactKind kindFromName(const std::string& name)
+{
+    for (ArtifactKind kind : {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface, ArtifactKind::TetMesh,
+                              ArtifactKind::Skeleton})
+        if (kindName(kind) == name)
+            return kind;
+    throw Error("unknown artifact kind '" + name + "'", {{"kind", name}});
+}
+
+} // namespace vsim::study

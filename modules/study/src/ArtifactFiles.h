@@ -1,0 +1,28 @@
+#pragma once
+
+#include "vsim/core/ImageVolume.h"
+#include "vsim/core/SkeletonGraph.h"
+#include "vsim/core/TetMesh.h"
+#include "vsim/core/TriangleMesh.h"
+#include "vsim/study/Artifact.h"
+
+#include <filesystem>
+#include <variant>
+
+namespace vsim::study {
+
+/// The in-memory data of an artifact, one alternative per ArtifactKind.
+using ArtifactData = std::variant<CtVolume, LabelVolume, TriangleMesh, TetMesh, SkeletonGraph>;
+
+/// Returns the kind of the data held.
+ArtifactKind kindOf(const ArtifactData& data);
+/// File name extension of a kind, with the dot (".nrrd", ".vtp", ...), and its bundle folder ("images", ...).
+std::string fileExtension(ArtifactKind kind);
+std::string folderName(ArtifactKind kind);
+
+/// Writes data to `file` in its kind's format (NRRD, VTK XML, JSON) and syncs it; throws vsim::Error on failure.
+void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& file);
+/// Reads a file of the given kind; throws vsim::Error when it cannot be read or parsed.
+ArtifactData readArtifactFile(ArtifactKind kind, const std::filesystem::path& file);
+
+} // namespace vsim::study

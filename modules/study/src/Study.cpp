@@ -1,0 +1,313 @@
+#include "vsim/study/Study.h"
+
+#include "ArtifactFiles.h"
+#include "BundleFiles.h"
+#include "Manifest.h"
+#include "vsim/core/Error.h"
+#include "vsim/core/Version.h"
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <set>
+
+namespace vsim::study {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kManifestFile = "study.json";
+constexpr ArtifactKind kAllKinds[] = {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface,
+                                      ArtifactKind::TetMesh, ArtifactKind::Skeleton};
+
+/// Checks an artifact's file against the manifest; returns why it is damaged, or an empty string.
+std::string checkArtifactFile(const fs::path& bundle, const Artifact& artifact)
+{
+    const fs::path file = bundle / artifact.file;
+    std::error_code error;
+    if (!fs::exists(file, error))
+        return "file is missing: " + artifact.file;
+    if (fs::file_size(file, error) != artifact.bytes)
+        return "file size differs from the manifest: " + artifact.file;
+    if (fileChecksum(file) != artifact.checksum)
+        return "file checksum differs from the manifest (damaged): " + artifact.file;
+    return {};
+}
+
+/// Files in the artifact folders that the manifest does not reference (leftovers of an interrupted save).
+std::vector<fs::path> unreferencedFiles(const fs::path& bundle, const Manifest& manifest)
+{
+    std::set<fs::path> referenced;
+    for (const Artifact& artifact : manifest.artifacts)
+        referenced.insert(bundle / artifact.file);
+    std::vector<fs::path> leftovers;
+    for (ArtifactKind kind : kAllKinds)
+    {
+        std::error_code error;
+        for (const auto& entry : fs::directory_iterator(bundle / folderName(kind), error))
+            if (entry.is_regular_file() && !referenced.count(entry.path()))
+                leftovers.push_back(entry.path());
+    }
+    if (fs::exists(bundle / (std::string(kManifestFile) + ".tmp")))
+        leftovers.push_back(bundle / (std::string(kManifestFile) + ".tmp"));
+    return leftovers;
+}
+
+} // namespace
+
+struct Study::State
+{
+    fs::path bundle;
+    Manifest manifest;
+    std::map<std::string, ArtifactData> pending;                     // unsaved data by artifact id
+    std::map<std::string, std::pair<Artifact, ArtifactData>> removed; // kept for undo
+    std::vector<std::string> openWarnings;
+    bool modified = false;
+
+    Artifact& find(const std::string& id)
+    {
+        for (Artifact& artifact : manifest.artifacts)
+            if (artifact.id == id)
+                return artifact;
+        throw Error("the study has no artifact '" + id + "'", {{"artifact", id}});
+    }
+
+    std::string add(ArtifactData data, const std::string& name, Provenance provenance, std::vector<std::string> warnings)
+    {
+        Artifact artifact;
+        artifact.kind = kindOf(data);
+        artifact.id = kindName(artifact.kind) + "-" + std::to_string(manifest.nextArtifactNumber++);
+        artifact.name = name;
+        provenance.time = utcTimestamp();
+        provenance.softwareVersion = kVersion;
+        artifact.provenance = std::move(provenance);
+        artifact.warnings = std::move(warnings);
+        pending.emplace(artifact.id, std::move(data));
+        manifest.artifacts.push_back(artifact);
+        modified = true;
+        return artifact.id;
+    }
+
+    ArtifactData load(const std::string& id, ArtifactKind expected)
+    {
+        const Artifact& artifact = find(id);
+        if (artifact.kind != expected)
+            throw Error("artifact '" + id + "' is a " + kindName(artifact.kind) + ", not a " + kindName(expected),
+                        {{"artifact", id}});
+        if (const auto found = pending.find(id); found != pending.end())
+            return found->second;
+        if (artifact.damaged)
+            throw Error("artifact '" + artifact.name + "' is damaged: " + artifact.damage, {{"artifact", id}});
+        return readArtifactFile(artifact.kind, bundle / artifact.file);
+    }
+};
+
+Study::Study(std::unique_ptr<State> state) : m_state(std::move(state)) {}
+Study::Study(Study&&) noexcept = default;
+Study& Study::operator=(Study&&) noexcept = default;
+Study::~Study() = default;
+
+Study Study::create(const fs::path& bundle, const std::string& name)
+{
+    auto state = std::make_unique<State>();
+    state->bundle = bundle;
+    state->manifest.name = name;
+    state->modified = true;
+    return Study(std::move(state));
+}
+
+Study Study::open(const fs::path& bundle)
+{
+    const fs::path manifestPath = bundle / kManifestFile;
+    if (!fs::exists(manifestPath))
+        throw Error("not a VascuSim study: study.json is missing", {{"folder", bundle.string()}});
+    auto state = std::make_unique<State>();
+    state->bundle = bundle;
+    state->manifest = manifestFromText(readTextFile(manifestPath));
+    for (Artifact& artifact : state->manifest.artifacts)
+    {
+        artifact.damage = checkArtifactFile(bundle, artifact);
+        artifact.damaged = !artifact.damage.empty();
+        if (artifact.damaged)
+            state->openWarnings.push_back("artifact '" + artifact.name + "' (" + artifact.id + "): " + artifact.damage);
+    }
+    for (const fs::path& leftover : unreferencedFiles(bundle, state->manifest))
+        state->openWarnings.push_back("leftover of an interrupted save, removed at the next save: " +
+                                      fs::relative(leftover, bundle).string());
+    return Study(std::move(state));
+}
+
+const fs::path& Study::bundlePath() const { return m_state->bundle; }
+const std::string& Study::name() const { return m_state->manifest.name; }
+const std::map<std::string, std::string>& Study::metadata() const { return m_state->manifest.metadata; }
+const std::vector<Artifact>& Study::artifacts() const { return m_state->manifest.artifacts; }
+const std::vector<std::string>& Study::openWarnings() const { return m_state->openWarnings; }
+bool Study::isModified() const { return m_state->modified; }
+const Artifact& Study::artifact(const std::string& id) const { return m_state->find(id); }
+
+void Study::setMetadata(const std::string& key, const std::string& value)
+{
+    m_state->manifest.metadata[key] = value;
+    m_state->modified = true;
+}
+
+bool Study::hasArtifact(const std::string& id) const
+{
+    const auto& all = m_state->manifest.artifacts;
+    return std::any_of(all.begin(), all.end(), [&](const Artifact& artifact) { return artifact.id == id; });
+}
+
+std::string Study::addImage(const CtVolume& image, const std::string& name, Provenance provenance,
+                            std::vector<std::string> warnings)
+{
+    if (image.isEmpty())
+        throw Error("cannot add an empty image to the study");
+    return m_state->add(image, name, std::move(provenance), std::move(warnings));
+}
+
+std::string Study::addLabel(const LabelVolume& label, const std::string& name, Provenance provenance,
+                            std::vector<std::string> warnings)
+{
+    if (label.isEmpty())
+        throw Error("cannot add an empty label volume to the study");
+    return m_state->add(label, name, std::move(provenance), std::move(warnings));
+}
+
+std::string Study::addSurface(const TriangleMesh& surface, const std::string& name, Provenance provenance,
+                              std::vector<std::string> warnings)
+{
+    surface.validate();
+    if (surface.triangles.empty())
+        throw Error("cannot add an empty surface to the study");
+    return m_state->add(surface, name, std::move(provenance), std::move(warnings));
+}
+
+std::string Study::addTetMesh(const TetMesh& mesh, const std::string& name, Provenance provenance,
+                              std::vector<std::string> warnings)
+{
+    mesh.validate();
+    if (mesh.tets.empty())
+        throw Error("cannot add an empty tetrahedral mesh to the study");
+    return m_state->add(mesh, name, std::move(provenance), std::move(warnings));
+}
+
+std::string Study::addSkeleton(const SkeletonGraph& skeleton, const std::string& name, Provenance provenance,
+                               std::vector<std::string> warnings)
+{
+    skeleton.validate();
+    return m_state->add(skeleton, name, std::move(provenance), std::move(warnings));
+}
+
+CtVolume Study::loadImage(const std::string& id) const
+{
+    return std::get<CtVolume>(m_state->load(id, ArtifactKind::Image));
+}
+LabelVolume Study::loadLabel(const std::string& id) const
+{
+    return std::get<LabelVolume>(m_state->load(id, ArtifactKind::Label));
+}
+TriangleMesh Study::loadSurface(const std::string& id) const
+{
+    return std::get<TriangleMesh>(m_state->load(id, ArtifactKind::Surface));
+}
+TetMesh Study::loadTetMesh(const std::string& id) const
+{
+    return std::get<TetMesh>(m_state->load(id, ArtifactKind::TetMesh));
+}
+SkeletonGraph Study::loadSkeleton(const std::string& id) const
+{
+    return std::get<SkeletonGraph>(m_state->load(id, ArtifactKind::Skeleton));
+}
+
+void Study::renameArtifact(const std::string& id, const std::string& name)
+{
+    m_state->find(id).name = name;
+    m_state->modified = true;
+}
+
+void Study::removeArtifact(const std::string& id)
+{
+    const Artifact artifact = m_state->find(id);
+    ArtifactData data = m_state->load(id, artifact.kind); // kept in memory: an undo must survive a save
+    auto& all = m_state->manifest.artifacts;
+    all.erase(std::remove_if(all.begin(), all.end(), [&](const Artifact& entry) { return entry.id == id; }), all.end());
+    m_state->pending.erase(id);
+    m_state->removed.insert_or_assign(id, std::make_pair(artifact, std::move(data)));
+    m_state->modified = true;
+}
+
+void Study::restoreArtifact(const std::string& id)
+{
+    const auto found = m_state->removed.find(id);
+    if (found == m_state->removed.end())
+        throw Error("artifact '" + id + "' was not removed; nothing to restore", {{"artifact", id}});
+    Artifact artifact = found->second.first;
+    artifact.file.clear(); // written again at the next save
+    m_state->pending.insert_or_assign(id, std::move(found->second.second));
+    m_state->manifest.artifacts.push_back(std::move(artifact));
+    m_state->removed.erase(found);
+    m_state->modified = true;
+}
+
+void Study::save()
+{
+    State& state = *m_state;
+    fs::create_directories(state.bundle);
+    Manifest next = state.manifest;
+    for (Artifact& artifact : next.artifacts)
+    {
+        const auto data = state.pending.find(artifact.id);
+        if (data == state.pending.end())
+            continue;
+        const fs::path relative = fs::path(folderName(artifact.kind)) / (artifact.id + fileExtension(artifact.kind));
+        fs::create_directories(state.bundle / relative.parent_path());
+        writeArtifactFile(data->second, state.bundle / relative);
+        artifact.file = relative.string();
+        artifact.bytes = fs::file_size(state.bundle / relative);
+        artifact.checksum = fileChecksum(state.bundle / relative);
+        artifact.damaged = false;
+        artifact.damage.clear();
+    }
+    for (ArtifactKind kind : kAllKinds)
+        if (fs::exists(state.bundle / folderName(kind)))
+            syncDirectory(state.bundle / folderName(kind));
+    // The commit point: until this rename the bundle holds the previous study.
+    writeFileAtomically(state.bundle / kManifestFile, manifestToText(next));
+
+    state.manifest = std::move(next);
+    state.pending.clear();
+    state.modified = false;
+    state.openWarnings.clear();
+    for (const fs::path& leftover : unreferencedFiles(state.bundle, state.manifest))
+        fs::remove(leftover);
+}
+
+void Study::saveAs(const fs::path& bundle)
+{
+    std::error_code error;
+    if (fs::exists(bundle, error) && !fs::is_empty(bundle, error))
+        throw Error("the folder for the new study is not empty; choose a new folder", {{"folder", bundle.string()}});
+    State& state = *m_state;
+    for (const Artifact& artifact : state.manifest.artifacts)
+    {
+        if (state.pending.count(artifact.id) || artifact.file.empty() || !fs::exists(state.bundle / artifact.file))
+            continue;
+        fs::create_directories((bundle / artifact.file).parent_path());
+        fs::copy_file(state.bundle / artifact.file, bundle / artifact.file, fs::copy_options::overwrite_existing);
+        syncFile(bundle / artifact.file);
+    }
+    state.bundle = bundle;
+    save();
+}
+
+std::string utcTimestamp()
+{
+    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return text;
+}
+
+} // namespace vsim::study

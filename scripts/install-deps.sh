@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package VascuSim needs to build, test and run. Idempotent, non-interactive.
+# The one list of build and test dependencies: add a package here, nowhere else.
+set -euo pipefail
+
+PACKAGES=(
+    # toolchain
+    build-essential cmake ninja-build ccache pkg-config git clang libclang-rt-14-dev
+    # Qt 6 (base, OpenGL widgets, test, linguist tools)
+    qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    libgl-dev libglu1-mesa-dev
+    # VTK 9.1 (its Qt module is built against Qt 5: never linked), ITK 5.2 (+ gdcm tools, needed by its CMake config)
+    libvtk9-dev libinsighttoolkit5-dev libgdcm-dev libgdcm-tools
+    # DICOM, linear algebra, JSON
+    libdcmtk-dev dcmtk libeigen3-dev nlohmann-json3-dev zlib1g-dev
+    # headless GUI tests and report checks
+    xvfb xauth libgl1-mesa-dri mesa-utils poppler-utils
+    # reference tools used by tests and benchmarks
+    dcm2niix python3-numpy
+)
+
+missing=()
+for package in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps: all ${#PACKAGES[@]} packages present"
+    exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "install-deps: run as root or install sudo" >&2; exit 1; }
+    SUDO="sudo"
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,150 @@
+// Study bundle: every artifact kind survives save/open exactly; provenance is recorded; damage is reported and
+// flagged without losing the rest; a newer schema is refused; undo of a removal survives a save.
+#include "StudyFixtures.h"
+#include "TestOutput.h"
+#include "vsim/core/Error.h"
+#include "vsim/study/Study.h"
+
+#include <QtTest>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using vsim::study::Study;
+
+class TestBundle : public QObject
+{
+    Q_OBJECT
+
+    fs::path freshBundle(const char* name)
+    {
+        const fs::path bundle = fs::path(vsim::test::outputFolder("study").toStdString()) / name;
+        fs::remove_all(bundle);
+        return bundle;
+    }
+
+    /// A saved study holding one artifact of every kind.
+    Study savedStudy(const fs::path& bundle)
+    {
+        Study study = Study::create(bundle, "Phantom study");
+        study.setMetadata("study_description", "CTA abdomen");
+        vsim::study::Provenance provenance{"test fixture", {{"multiplier", "3"}}, {"none"}, "", ""};
+        study.addImage(vsim::test::patternedVolume(8, 3), "CTA", provenance);
+        vsim::LabelVolume label(vsim::test::patternedVolume(8, 3).geometry());
+        label.at(2, 3, 4) = 1;
+        study.addLabel(label, "Lumen", provenance);
+        vsim::TriangleMesh surface;
+        surface.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+        surface.triangles = {{0, 1, 2}};
+        study.addSurface(surface, "Lumen surface", provenance);
+        study.addTetMesh(vsim::test::singleTet(), "Wall", provenance);
+        study.addSkeleton(vsim::test::twoNodeSkeleton(), "Skeleton", provenance, {"one spur pruned"});
+        study.save();
+        return study;
+    }
+
+private slots:
+    void everyKindRoundTripsExactly()
+    {
+        const fs::path bundle = freshBundle("roundtrip.vsim");
+        savedStudy(bundle);
+        const Study reopened = Study::open(bundle);
+        QVERIFY(reopened.openWarnings().empty());
+        QCOMPARE(reopened.name(), std::string("Phantom study"));
+        QCOMPARE(reopened.metadata().at("study_description"), std::string("CTA abdomen"));
+        QCOMPARE(reopened.artifacts().size(), std::size_t(5));
+
+        const vsim::CtVolume image = reopened.loadImage("image-1");
+        QVERIFY(image.geometry().isClose(vsim::test::patternedVolume(8, 3).geometry(), 1e-9));
+        QVERIFY(vsim::test::samePattern(image, 3));
+        QCOMPARE(reopened.loadLabel("label-2").at(2, 3, 4), std::uint8_t(1));
+        QCOMPARE(reopened.loadSurface("surface-3").triangles.size(), std::size_t(1));
+        const vsim::TetMesh wall = reopened.loadTetMesh("tetmesh-4");
+        QCOMPARE(wall.cellFields.at("von_mises_kpa"), std::vector<double>{12.5});
+        QVERIFY(std::abs(wall.totalVolume() - 8.0 / 6.0) < 1e-12);
+        const vsim::SkeletonGraph skeleton = reopened.loadSkeleton("skeleton-5");
+        QCOMPARE(skeleton.edges[0].radii, (std::vector<double>{3.0, 2.9, 2.8, 2.7}));
+
+        const auto& provenance = reopened.artifact("image-1").provenance;
+        QCOMPARE(provenance.command, std::string("test fixture"));
+        QCOMPARE(provenance.parameters.at("multiplier"), std::string("3"));
+        QVERIFY(!provenance.time.empty() && !provenance.softwareVersion.empty());
+        QCOMPARE(reopened.artifact("skeleton-5").warnings, std::vector<std::string>{"one spur pruned"});
+    }
+
+    void damagedAndMissingFilesAreFlaggedAndTheRestOpens()
+    {
+        const fs::path bundle = freshBundle("damaged.vsim");
+        savedStudy(bundle);
+        { // flip bytes in the middle of the CT
+            std::fstream file(bundle / "images/image-1.nrrd", std::ios::in | std::ios::out | std::ios::binary);
+            file.seekp(-20, std::ios::end);
+            file.write("XXXX", 4);
+        }
+        fs::remove(bundle / "meshes/tetmesh-4.vtu");
+        const Study reopened = Study::open(bundle);
+        QCOMPARE(reopened.openWarnings().size(), std::size_t(2));
+        QVERIFY(reopened.artifact("image-1").damaged);
+        QVERIFY(reopened.artifact("tetmesh-4").damaged);
+        QVERIFY(!reopened.artifact("label-2").damaged);
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, reopened.loadImage("image-1"));
+        QCOMPARE(reopened.loadLabel("label-2").at(2, 3, 4), std::uint8_t(1));
+    }
+
+    void newerSchemaAndNonStudiesAreRefused()
+    {
+        const fs::path bundle = freshBundle("newer.vsim");
+        savedStudy(bundle);
+        std::string text;
+        {
+            std::ifstream in(bundle / "study.json");
+            text.assign(std::istreambuf_iterator<char>(in), {});
+        }
+        const auto position = text.find("\"schema_version\": 1");
+        QVERIFY(position != std::string::npos);
+        text.replace(position, 19, "\"schema_version\": 99");
+        std::ofstream(bundle / "study.json") << text;
+        try
+        {
+            Study::open(bundle);
+            QFAIL("a newer schema must be refused");
+        }
+        catch (const vsim::Error& error)
+        {
+            QVERIFY(QString::fromStdString(error.message()).contains("newer VascuSim"));
+        }
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, Study::open(freshBundle("nothing-here.vsim")));
+    }
+
+    void removalCanBeUndoneAfterASave()
+    {
+        const fs::path bundle = freshBundle("undo.vsim");
+        Study study = savedStudy(bundle);
+        study.removeArtifact("image-1");
+        study.save();
+        QVERIFY(!fs::exists(bundle / "images/image-1.nrrd")); // unreferenced files are removed at save
+        study.restoreArtifact("image-1");
+        study.save();
+        const Study reopened = Study::open(bundle);
+        QVERIFY(vsim::test::samePattern(reopened.loadImage("image-1"), 3));
+    }
+
+    void saveAsCopiesEverythingToTheNewBundle()
+    {
+        const fs::path first = freshBundle("first.vsim");
+        const fs::path second = freshBundle("second.vsim");
+        Study study = savedStudy(first);
+        study.renameArtifact("image-1", "Arterial phase");
+        study.saveAs(second);
+        QCOMPARE(study.bundlePath(), second);
+        const Study copy = Study::open(second);
+        QVERIFY(copy.openWarnings().empty());
+        QCOMPARE(copy.artifact("image-1").name, std::string("Arterial phase"));
+        QVERIFY(vsim::test::samePattern(copy.loadImage("image-1"), 3));
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, study.saveAs(first)); // not empty
+    }
+};
+
+QTEST_APPLESS_MAIN(TestBundle)
+#include "tst_bundle.moc"
