@@ -11,6 +11,8 @@ if(NOT VSIM_CUDA STREQUAL "OFF")
         if(NOT DEFINED CMAKE_CUDA_ARCHITECTURES)
             set(CMAKE_CUDA_ARCHITECTURES 80 90)
         endif()
+        set(CMAKE_CUDA_STANDARD 17) # CMake 3.25 knows no C++20 flag for nvcc; CUDA sources need only C++17
+        set(CMAKE_CUDA_STANDARD_REQUIRED ON)
         enable_language(CUDA)
         find_package(CUDAToolkit REQUIRED)
         set(VSIM_HAVE_CUDA ON)

@@ -70,7 +70,9 @@ function(vsim_add_module)
     _vsim_check_libraries(${ARG_NAME} ${ARG_PUBLIC_LIBS} ${ARG_PRIVATE_LIBS})
 
     set(target vsim_${ARG_NAME})
-    add_library(${target} STATIC ${ARG_SOURCES})
+    # Public headers are listed as sources so that AUTOMOC sees the Q_OBJECT classes among them.
+    file(GLOB_RECURSE public_headers CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/include/*.h)
+    add_library(${target} STATIC ${ARG_SOURCES} ${public_headers})
     add_library(vsim::${ARG_NAME} ALIAS ${target})
     target_include_directories(${target} PUBLIC
         $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>

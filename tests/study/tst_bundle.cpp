@@ -57,6 +57,7 @@ private slots:
 
         const vsim::CtVolume image = reopened.loadImage("image-1");
         QVERIFY(image.geometry().isClose(vsim::test::patternedVolume(8, 3).geometry(), 1e-9));
+        QVERIFY(reopened.volumeGeometry("image-1").isClose(image.geometry(), 1e-9)); // header only
         QVERIFY(vsim::test::samePattern(image, 3));
         QCOMPARE(reopened.loadLabel("label-2").at(2, 3, 4), std::uint8_t(1));
         QCOMPARE(reopened.loadSurface("surface-3").triangles.size(), std::size_t(1));

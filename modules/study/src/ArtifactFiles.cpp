@@ -188,6 +188,33 @@ void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& fi
     syncFile(file);
 }
 
+VolumeGeometry readVolumeGeometry(const std::filesystem::path& file)
+{
+    auto io = itk::NrrdImageIO::New();
+    io->SetFileName(file.string());
+    try
+    {
+        io->ReadImageInformation();
+    }
+    catch (const itk::ExceptionObject& exception)
+    {
+        throw Error("cannot read NRRD header", {{"file", file.string()}, {"reason", exception.GetDescription()}});
+    }
+    if (io->GetNumberOfDimensions() != 3)
+        throw Error("image file is not 3D", {{"file", file.string()}});
+    VolumeGeometry geometry;
+    for (unsigned axis = 0; axis < 3; ++axis)
+    {
+        geometry.dims[axis] = static_cast<int>(io->GetDimensions(axis));
+        geometry.spacing[axis] = io->GetSpacing(axis);
+        geometry.origin[axis] = io->GetOrigin(axis);
+        const std::vector<double> column = io->GetDirection(axis);
+        for (unsigned row = 0; row < 3; ++row)
+            geometry.direction(row, axis) = column[row];
+    }
+    return geometry;
+}
+
 ArtifactData readArtifactFile(ArtifactKind kind, const std::filesystem::path& file)
 {
     switch (kind)

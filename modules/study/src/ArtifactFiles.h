@@ -25,4 +25,7 @@ void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& fi
 /// Reads a file of the given kind; throws vsim::Error when it cannot be read or parsed.
 ArtifactData readArtifactFile(ArtifactKind kind, const std::filesystem::path& file);
 
+/// Reads only the header of an image or label file (NRRD); throws vsim::Error when it cannot be read.
+VolumeGeometry readVolumeGeometry(const std::filesystem::path& file);
+
 } // namespace vsim::study

@@ -219,6 +219,23 @@ SkeletonGraph Study::loadSkeleton(const std::string& id) const
     return std::get<SkeletonGraph>(m_state->load(id, ArtifactKind::Skeleton));
 }
 
+VolumeGeometry Study::volumeGeometry(const std::string& id) const
+{
+    const Artifact& entry = m_state->find(id);
+    if (const auto found = m_state->pending.find(id); found != m_state->pending.end())
+    {
+        if (const auto* image = std::get_if<CtVolume>(&found->second))
+            return image->geometry();
+        if (const auto* label = std::get_if<LabelVolume>(&found->second))
+            return label->geometry();
+    }
+    if (entry.kind != ArtifactKind::Image && entry.kind != ArtifactKind::Label)
+        throw Error("artifact '" + id + "' is not a volume", {{"artifact", id}});
+    if (entry.damaged)
+        throw Error("artifact '" + entry.name + "' is damaged: " + entry.damage, {{"artifact", id}});
+    return readVolumeGeometry(m_state->bundle / entry.file);
+}
+
 void Study::renameArtifact(const std::string& id, const std::string& name)
 {
     m_state->find(id).name = name;

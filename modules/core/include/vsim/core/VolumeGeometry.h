@@ -40,7 +40,7 @@ struct VolumeGeometry
     /// Patient position (mm) -> continuous index.
     Eigen::Vector3d patientToIndex(const Eigen::Vector3d& patient) const
     {
-        return (direction.inverse() * (patient - origin)).cwiseQuotient(spacing);
+        return (direction.transpose() * (patient - origin)).cwiseQuotient(spacing); // direction is orthonormal
     }
     /// Throws vsim::Error when dims are not positive, spacing is not positive and finite, or the direction
     /// matrix is not orthonormal (within 1e-6).

@@ -70,6 +70,10 @@ public:
     TetMesh loadTetMesh(const std::string& id) const;
     SkeletonGraph loadSkeleton(const std::string& id) const;
 
+    /// The geometry of an image or label artifact, read from the file header only (no voxels).
+    /// Throws vsim::Error for another kind or a damaged artifact.
+    VolumeGeometry volumeGeometry(const std::string& id) const;
+
     /// Renames an artifact (the name shown to people); throws vsim::Error for an unknown id.
     void renameArtifact(const std::string& id, const std::string& name);
     /// Removes an artifact from the study; its data is returned so that an undo can put it back.

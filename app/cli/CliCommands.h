@@ -1,0 +1,30 @@
+#pragma once
+
+#include "vsim/core/Progress.h"
+
+#include <string>
+#include <vector>
+
+namespace vsim::cli {
+
+/// Arguments after the command name, with "--name value" options split out.
+struct Arguments
+{
+    std::vector<std::string> positional;
+    std::vector<std::pair<std::string, std::string>> options;
+
+    /// The value of --name, or `fallback` when absent.
+    std::string option(const std::string& name, const std::string& fallback = {}) const;
+    bool hasOption(const std::string& name) const;
+};
+
+/// Parses "a b --study S --flag"; a bare flag gets the value "true".
+Arguments parseArguments(const std::vector<std::string>& words);
+
+/// Each command returns the process exit code and throws vsim::Error for bad input.
+int printVersion();
+int printStudyInfo(const Arguments& arguments);
+int importVolume(const Arguments& arguments, const Progress& progress);
+int writeDemoStudy(const Arguments& arguments, const Progress& progress);
+
+} // namespace vsim::cli

@@ -1,0 +1,81 @@
+// vascusim-cli: the headless twin of the workstation. Every step the GUI offers is a command here, with the same
+// parameters, writing into the same study bundle. Exit codes: 0 success, 1 an error (one line on stderr naming
+// what was wrong), 2 usage, 130 cancelled (Ctrl-C).
+
+#include "CliCommands.h"
+#include "vsim/core/Error.h"
+
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+
+namespace {
+
+vsim::CancellationToken g_cancel;
+
+void onInterrupt(int)
+{
+    g_cancel.cancel();
+}
+
+constexpr const char* kUsage = R"(usage: vascusim-cli <command> [arguments]
+
+commands:
+  --version                                  versions of VascuSim and its libraries, CUDA and GPUs found
+  info <study.vsim>                          the study's metadata and artifacts as JSON
+  import <volume> --study <study.vsim>       add a NIfTI / NRRD / MetaImage volume (creates the study if needed)
+  demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
+)";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    std::vector<std::string> words(argv + 1, argv + argc);
+    if (words.empty() || words[0] == "--help" || words[0] == "-h")
+    {
+        std::cout << kUsage;
+        return words.empty() ? 2 : 0;
+    }
+    std::signal(SIGINT, onInterrupt);
+    const std::string command = words[0];
+    const vsim::cli::Arguments arguments = vsim::cli::parseArguments({words.begin() + 1, words.end()});
+    int lastPercent = -1;
+    const vsim::Progress progress(
+        [&lastPercent](double fraction, const std::string& stage) {
+            const int percent = static_cast<int>(fraction * 100.0);
+            if (percent == lastPercent)
+                return;
+            lastPercent = percent;
+            std::fprintf(stderr, "\r%3d%% %-40s%s", percent, stage.c_str(), percent >= 100 ? "\n" : "");
+        },
+        g_cancel);
+    try
+    {
+        if (command == "--version")
+            return vsim::cli::printVersion();
+        if (command == "info")
+            return vsim::cli::printStudyInfo(arguments);
+        if (command == "import")
+            return vsim::cli::importVolume(arguments, progress);
+        if (command == "demo-study")
+            return vsim::cli::writeDemoStudy(arguments, progress);
+        std::cerr << "unknown command '" << command << "'\n" << kUsage;
+        return 2;
+    }
+    catch (const vsim::Cancelled&)
+    {
+        std::cerr << "\ncancelled; nothing was written\n";
+        return 130;
+    }
+    catch (const vsim::Error& error)
+    {
+        std::cerr << "\nerror: " << error.what() << "\n";
+        return 1;
+    }
+    catch (const std::exception& error)
+    {
+        std::cerr << "\nerror: " << error.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,12 @@
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vsim::app {
+
+/// (component, version) for VascuSim, Qt, VTK, ITK, DCMTK, Eigen, CUDA and the GPUs found, in that order.
+std::vector<std::pair<std::string, std::string>> libraryVersions();
+
+} // namespace vsim::app

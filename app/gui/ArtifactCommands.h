@@ -1,0 +1,54 @@
+#pragma once
+
+#include <QString>
+#include <QUndoCommand>
+
+#include <string>
+
+namespace vsim::gui {
+
+class StudyDocument;
+
+/// Renames an artifact; undo restores the old name.
+class RenameArtifactCommand : public QUndoCommand
+{
+public:
+    RenameArtifactCommand(StudyDocument& document, std::string id, std::string newName);
+    void redo() override;
+    void undo() override;
+
+private:
+    StudyDocument& m_document;
+    std::string m_id;
+    std::string m_oldName;
+    std::string m_newName;
+};
+
+/// Removes an artifact; undo puts it back (its data is kept in memory by the study).
+class RemoveArtifactCommand : public QUndoCommand
+{
+public:
+    RemoveArtifactCommand(StudyDocument& document, std::string id);
+    void redo() override;
+    void undo() override;
+
+private:
+    StudyDocument& m_document;
+    std::string m_id;
+};
+
+/// Records an artifact that a task has just added, so that undo removes it and redo brings it back.
+class AddedArtifactCommand : public QUndoCommand
+{
+public:
+    AddedArtifactCommand(StudyDocument& document, std::string id, const QString& description);
+    void redo() override;
+    void undo() override;
+
+private:
+    StudyDocument& m_document;
+    std::string m_id;
+    bool m_firstRedo = true;
+};
+
+} // namespace vsim::gui

@@ -1,0 +1,336 @@
+#include "MainWindow.h"
+
+#include "ArtifactCommands.h"
+#include "ViewLayout.h"
+#include "vsim/study/VolumeFileImport.h"
+
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTreeWidget>
+
+#include <memory>
+
+namespace vsim::gui {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
+{
+    setAttribute(Qt::WA_DeleteOnClose);
+    m_views = new ViewLayout(this);
+    setCentralWidget(m_views);
+    createDocks();
+    createStatusBar();
+    createMenus();
+    connect(&m_document, &StudyDocument::artifactsChanged, this, [this] {
+        refreshArtifactTree();
+        refreshTitle();
+    });
+    connect(m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::refreshTitle);
+    connect(&m_tasks, &TaskRunner::started, this, [this](const QString& title) {
+        setBusy(true);
+        m_statusText->setText(title);
+    });
+    connect(&m_tasks, &TaskRunner::progressChanged, this, [this](double fraction, const QString& stage) {
+        m_progress->setValue(static_cast<int>(fraction * 1000));
+        if (!stage.isEmpty())
+            m_statusText->setText(stage);
+    });
+    connect(&m_tasks, &TaskRunner::failed, this, &MainWindow::showError);
+    connect(&m_tasks, &TaskRunner::cancelled, this, [this](const QString& title) {
+        statusBar()->showMessage(tr("%1: cancelled, nothing changed").arg(title), 5000);
+    });
+    connect(&m_tasks, &TaskRunner::succeeded, this, [this](const QString& title) {
+        statusBar()->showMessage(tr("%1: done").arg(title), 5000);
+    });
+    connect(&m_tasks, &TaskRunner::idle, this, [this] { setBusy(false); });
+    QSettings settings;
+    restoreGeometry(settings.value("mainWindow/geometry").toByteArray());
+    resize(size().isEmpty() ? QSize(1400, 900) : size());
+    setBusy(false);
+    refreshTitle();
+}
+
+MainWindow::~MainWindow()
+{
+    m_tasks.cancel();
+    m_tasks.waitForFinished();
+}
+
+void MainWindow::createDocks()
+{
+    m_artifactTree = new QTreeWidget(this);
+    m_artifactTree->setObjectName("artifactTree");
+    m_artifactTree->setHeaderLabels({tr("Artifact"), tr("Kind"), tr("Status")});
+    m_artifactTree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+    connect(m_artifactTree, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+        const std::string id = item->data(0, Qt::UserRole).toString().toStdString();
+        if (m_document.hasStudy() && m_document.study().artifact(id).kind == study::ArtifactKind::Image)
+            showImageArtifact(id);
+    });
+    auto* artifactDock = new QDockWidget(tr("Study"), this);
+    artifactDock->setObjectName("studyDock");
+    artifactDock->setWidget(m_artifactTree);
+    addDockWidget(Qt::LeftDockWidgetArea, artifactDock);
+
+    // The workflow of ARCHITECTURE.md; steps become available as their features land.
+    m_workflow = new QListWidget(this);
+    m_workflow->setObjectName("workflow");
+    for (const QString& step : {tr("Import"), tr("Segment"), tr("Skeleton && Centerlines"), tr("Mesh"), tr("Simulate"),
+                                tr("Report")})
+    {
+        auto* item = new QListWidgetItem(step, m_workflow);
+        if (step != tr("Import"))
+        {
+            item->setFlags(item->flags() & ~Qt::ItemIsEnabled);
+            item->setToolTip(tr("Not available in this version yet"));
+        }
+    }
+    auto* workflowDock = new QDockWidget(tr("Workflow"), this);
+    workflowDock->setObjectName("workflowDock");
+    workflowDock->setWidget(m_workflow);
+    addDockWidget(Qt::LeftDockWidgetArea, workflowDock);
+}
+
+void MainWindow::createStatusBar()
+{
+    m_statusText = new QLabel(this);
+    m_progress = new QProgressBar(this);
+    m_progress->setRange(0, 1000);
+    m_progress->setMaximumWidth(240);
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setObjectName("cancelButton");
+    connect(m_cancel, &QPushButton::clicked, &m_tasks, &TaskRunner::cancel);
+    statusBar()->addWidget(m_statusText, 1);
+    statusBar()->addPermanentWidget(m_progress);
+    statusBar()->addPermanentWidget(m_cancel);
+}
+
+void MainWindow::setBusy(bool busy)
+{
+    m_progress->setVisible(busy);
+    m_cancel->setVisible(busy);
+    if (!busy)
+    {
+        m_progress->setValue(0);
+        m_statusText->clear();
+    }
+    for (QAction* action : m_documentActions)
+        action->setEnabled(!busy && m_document.hasStudy());
+}
+
+void MainWindow::refreshTitle()
+{
+    const QString name = m_document.hasStudy() ? QString::fromStdString(m_document.study().name()) : tr("No study");
+    setWindowTitle(tr("%1[*] - VascuSim").arg(name));
+    setWindowModified(m_document.isModified());
+}
+
+void MainWindow::refreshArtifactTree()
+{
+    m_artifactTree->clear();
+    if (!m_document.hasStudy())
+        return;
+    for (const study::Artifact& artifact : m_document.study().artifacts())
+    {
+        auto* item = new QTreeWidgetItem(m_artifactTree);
+        item->setText(0, QString::fromStdString(artifact.name));
+        item->setText(1, QString::fromStdString(study::kindName(artifact.kind)));
+        item->setData(0, Qt::UserRole, QString::fromStdString(artifact.id));
+        if (artifact.damaged)
+        {
+            item->setText(2, tr("damaged"));
+            item->setToolTip(2, QString::fromStdString(artifact.damage));
+        }
+        else if (!artifact.warnings.empty())
+        {
+            item->setText(2, tr("%n warning(s)", nullptr, static_cast<int>(artifact.warnings.size())));
+            QStringList warnings;
+            for (const std::string& warning : artifact.warnings)
+                warnings << QString::fromStdString(warning);
+            item->setToolTip(2, warnings.join('\n'));
+        }
+        item->setToolTip(0, tr("%1, made by \"%2\" on %3")
+                                .arg(QString::fromStdString(artifact.id))
+                                .arg(QString::fromStdString(artifact.provenance.command))
+                                .arg(QString::fromStdString(artifact.provenance.time)));
+    }
+}
+
+void MainWindow::showError(const QString& title, const QString& message)
+{
+    auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open(); // non-blocking: the window stays usable
+    statusBar()->showMessage(tr("%1 failed").arg(title), 10000);
+}
+
+MainWindow* MainWindow::windowForNewDocument()
+{
+    if (!m_document.hasStudy())
+        return this;
+    auto* window = new MainWindow();
+    window->show();
+    return window;
+}
+
+bool MainWindow::openStudy(const QString& bundle)
+{
+    auto opened = std::make_shared<std::optional<study::Study>>();
+    auto image = std::make_shared<CtVolume>();
+    return m_tasks.run(
+        tr("Open study"),
+        [path = bundle.toStdString(), opened, image](const Progress& progress) {
+            progress.report(0.0, "checking the study's files");
+            opened->emplace(study::Study::open(path));
+            progress.report(0.5, "loading the image");
+            for (const study::Artifact& artifact : (*opened)->artifacts())
+                if (artifact.kind == study::ArtifactKind::Image && !artifact.damaged)
+                    *image = (*opened)->loadImage(artifact.id);
+            progress.report(1.0, "opened");
+        },
+        [this, bundle, opened, image] {
+            const std::vector<std::string> warnings = (*opened)->openWarnings();
+            m_document.setStudy(std::move(**opened));
+            m_views->showImage(*image);
+            rememberRecent(bundle);
+            if (!warnings.empty())
+            {
+                QStringList lines;
+                for (const std::string& warning : warnings)
+                    lines << QString::fromStdString(warning);
+                showError(tr("Study opened with problems"), lines.join('\n'));
+            }
+        });
+}
+
+bool MainWindow::newStudy(const QString& bundle)
+{
+    try
+    {
+        study::Study created = study::Study::create(bundle.toStdString(), QFileInfo(bundle).completeBaseName().toStdString());
+        created.save();
+        m_document.setStudy(std::move(created));
+        m_views->showImage(CtVolume());
+        rememberRecent(bundle);
+        setBusy(false);
+        return true;
+    }
+    catch (const std::exception& error)
+    {
+        showError(tr("New study"), QString::fromStdString(error.what()));
+        return false;
+    }
+}
+
+bool MainWindow::importVolume(const QString& file)
+{
+    if (!m_document.hasStudy())
+        return false;
+    auto imported = std::make_shared<study::ImportedVolume>();
+    return m_tasks.run(
+        tr("Import volume"),
+        [path = file.toStdString(), imported](const Progress& progress) { *imported = study::readVolumeFile(path, progress); },
+        [this, file, imported] {
+            study::Provenance provenance;
+            provenance.command = "import volume";
+            provenance.inputs = {QFileInfo(file).fileName().toStdString()};
+            provenance.parameters = {{"format", imported->format}};
+            const std::string id = m_document.study().addImage(
+                imported->image, QFileInfo(file).completeBaseName().toStdString(), provenance, imported->warnings);
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Import %1").arg(QFileInfo(file).fileName())));
+            m_views->showImage(imported->image);
+        });
+}
+
+bool MainWindow::saveStudy()
+{
+    if (!m_document.hasStudy())
+        return false;
+    return m_tasks.run(
+        tr("Save study"), [this](const Progress& progress) {
+            progress.report(0.0, "writing the study");
+            m_document.study().save(); // widgets do not edit the study while a task runs (actions disabled)
+        },
+        [this] { m_document.markSaved(); });
+}
+
+bool MainWindow::saveStudyAs(const QString& bundle)
+{
+    if (!m_document.hasStudy())
+        return false;
+    return m_tasks.run(
+        tr("Save study as"),
+        [this, path = bundle.toStdString()](const Progress& progress) {
+            progress.report(0.0, "copying the study");
+            m_document.study().saveAs(path);
+        },
+        [this, bundle] {
+            m_document.markSaved();
+            rememberRecent(bundle);
+        });
+}
+
+void MainWindow::showImageArtifact(const std::string& id)
+{
+    try
+    {
+        m_views->showImage(m_document.study().loadImage(id));
+    }
+    catch (const std::exception& error)
+    {
+        showError(tr("Show image"), QString::fromStdString(error.what()));
+    }
+}
+
+void MainWindow::rememberRecent(const QString& bundle)
+{
+    QSettings settings;
+    QStringList recent = settings.value("recentStudies").toStringList();
+    recent.removeAll(bundle);
+    recent.prepend(bundle);
+    while (recent.size() > 8)
+        recent.removeLast();
+    settings.setValue("recentStudies", recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (m_tasks.isBusy())
+    {
+        m_tasks.cancel();
+        m_tasks.waitForFinished();
+    }
+    if (m_document.isModified())
+    {
+        const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
+                                                  tr("Save the changes to this study before closing?"),
+                                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        if (answer == QMessageBox::Cancel)
+            return event->ignore();
+        if (answer == QMessageBox::Save)
+        {
+            try
+            {
+                m_document.study().save();
+            }
+            catch (const std::exception& error)
+            {
+                showError(tr("Save study"), QString::fromStdString(error.what()));
+                return event->ignore();
+            }
+        }
+    }
+    QSettings().setValue("mainWindow/geometry", saveGeometry());
+    event->accept();
+}
+
+} // namespace vsim::gui

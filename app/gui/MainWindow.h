@@ -1,0 +1,75 @@
+#pragma once
+
+#include "StudyDocument.h"
+#include "TaskRunner.h"
+
+#include <QMainWindow>
+
+class QLabel;
+class QListWidget;
+class QMenu;
+class QProgressBar;
+class QPushButton;
+class QTreeWidget;
+
+namespace vsim::gui {
+
+class ViewLayout;
+
+/// One study per window (document-oriented): artifact tree, workflow dock, 4-up views, status bar with progress
+/// and Cancel for background tasks. File New / Open / Save / Save As / Recent / Import volume, Edit Undo / Redo,
+/// View presets, Help / About. Errors are shown in non-blocking message boxes; the window stays usable.
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    StudyDocument& document() { return m_document; }
+    ViewLayout* views() const { return m_views; }
+    TaskRunner& tasks() { return m_tasks; }
+
+    /// Opens a bundle in the background (checksums, then the first image); false if a task is running.
+    bool openStudy(const QString& bundle);
+    /// Creates an empty study at `bundle` and saves it.
+    bool newStudy(const QString& bundle);
+    /// Imports a NIfTI / NRRD / MetaImage file in the background and shows it; undoable.
+    bool importVolume(const QString& file);
+    /// Saves in the background; false if there is no study or a task is running.
+    bool saveStudy();
+    /// Saves to a new bundle in the background.
+    bool saveStudyAs(const QString& bundle);
+    /// Shows the image artifact `id` in the views.
+    void showImageArtifact(const std::string& id);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void createMenus();
+    void createDocks();
+    void createStatusBar();
+    void refreshArtifactTree();
+    void refreshTitle();
+    void rememberRecent(const QString& bundle);
+    void rebuildRecentMenu();
+    void showError(const QString& title, const QString& message);
+    void showAbout();
+    void setBusy(bool busy);
+    /// A window for a new document: this one when it holds none, else a new window.
+    MainWindow* windowForNewDocument();
+
+    StudyDocument m_document;
+    TaskRunner m_tasks;
+    ViewLayout* m_views = nullptr;
+    QTreeWidget* m_artifactTree = nullptr;
+    QListWidget* m_workflow = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QPushButton* m_cancel = nullptr;
+    QLabel* m_statusText = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QList<QAction*> m_documentActions; // disabled while a task runs or without a study
+};
+
+} // namespace vsim::gui

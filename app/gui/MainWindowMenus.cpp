@@ -1,0 +1,117 @@
+// The main window's menus and the About box (MainWindow.cpp holds the document lifecycle).
+#include "ArtifactCommands.h"
+#include "MainWindow.h"
+#include "ViewLayout.h"
+#include "vsim/app/VersionInfo.h"
+#include "vsim/viz/VolumeView3D.h"
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QInputDialog>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QTreeWidget>
+
+namespace vsim::gui {
+namespace {
+
+const char* kStudyFilter = "VascuSim study (study.json)";
+const char* kVolumeFilter = "Volumes (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;All files (*)";
+
+} // namespace
+
+void MainWindow::createMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New Study..."), QKeySequence::New, this, [this] {
+        const QString bundle = QFileDialog::getSaveFileName(this, tr("New study"), QString(), tr("Study folder (*.vsim)"));
+        if (!bundle.isEmpty())
+            windowForNewDocument()->newStudy(bundle.endsWith(".vsim") ? bundle : bundle + ".vsim");
+    });
+    file->addAction(tr("&Open Study..."), QKeySequence::Open, this, [this] {
+        const QString manifest = QFileDialog::getOpenFileName(this, tr("Open study"), QString(), tr(kStudyFilter));
+        if (!manifest.isEmpty())
+            windowForNewDocument()->openStudy(QFileInfo(manifest).absolutePath());
+    });
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addSeparator();
+    m_documentActions << file->addAction(tr("&Import Volume..."), QKeySequence(tr("Ctrl+I")), this, [this] {
+        const QString volume = QFileDialog::getOpenFileName(this, tr("Import volume"), QString(), tr(kVolumeFilter));
+        if (!volume.isEmpty())
+            importVolume(volume);
+    });
+    file->addSeparator();
+    m_documentActions << file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { saveStudy(); });
+    m_documentActions << file->addAction(tr("Save &As..."), QKeySequence::SaveAs, this, [this] {
+        const QString bundle = QFileDialog::getSaveFileName(this, tr("Save study as"), QString(), tr("Study folder (*.vsim)"));
+        if (!bundle.isEmpty())
+            saveStudyAs(bundle.endsWith(".vsim") ? bundle : bundle + ".vsim");
+    });
+    file->addSeparator();
+    file->addAction(tr("&Close Window"), QKeySequence::Close, this, &QWidget::close);
+    file->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::closeAllWindows);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_document.undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_document.undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    m_documentActions << edit->addAction(tr("Re&name Artifact..."), QKeySequence(Qt::Key_F2), this, [this] {
+        QTreeWidgetItem* item = m_artifactTree->currentItem();
+        if (!item)
+            return;
+        bool accepted = false;
+        const QString name = QInputDialog::getText(this, tr("Rename artifact"), tr("Name:"), QLineEdit::Normal,
+                                                   item->text(0), &accepted);
+        if (accepted && !name.isEmpty())
+            m_document.undoStack()->push(new RenameArtifactCommand(
+                m_document, item->data(0, Qt::UserRole).toString().toStdString(), name.toStdString()));
+    });
+    m_documentActions << edit->addAction(tr("&Delete Artifact"), QKeySequence::Delete, this, [this] {
+        if (QTreeWidgetItem* item = m_artifactTree->currentItem())
+            m_document.undoStack()->push(
+                new RemoveArtifactCommand(m_document, item->data(0, Qt::UserRole).toString().toStdString()));
+    });
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(tr("Window/Level: &CTA"), this, [this] { m_views->applyWindowLevel(viz::kCtaPreset); });
+    view->addAction(tr("Window/Level: &Soft Tissue"), this, [this] { m_views->applyWindowLevel(viz::kSoftTissuePreset); });
+    view->addAction(tr("Window/Level: &Bone"), this, [this] { m_views->applyWindowLevel(viz::kBonePreset); });
+    view->addSeparator();
+    view->addAction(tr("3D: &Anterior View"), this, [this] { m_views->volumeView()->showAnteriorView(); });
+    view->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        view->addAction(dock->toggleViewAction());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About VascuSim"), this, &MainWindow::showAbout);
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value("recentStudies").toStringList();
+    for (const QString& bundle : recent)
+        m_recentMenu->addAction(bundle, this, [this, bundle] { windowForNewDocument()->openStudy(bundle); });
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::showAbout()
+{
+    QString versions;
+    for (const auto& [component, version] : app::libraryVersions())
+        versions += QStringLiteral("<tr><td>%1</td><td>%2</td></tr>")
+                        .arg(QString::fromStdString(component).toHtmlEscaped(), QString::fromStdString(version).toHtmlEscaped());
+    QMessageBox::about(this, tr("About VascuSim"),
+                       tr("<h3>VascuSim</h3><p>Patient-specific physics for vascular procedure planning.</p>"
+                          "<p>Results support planning and need clinical judgement.</p><table>%1</table>")
+                           .arg(versions));
+}
+
+} // namespace vsim::gui

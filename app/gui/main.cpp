@@ -1,0 +1,55 @@
+// vascusim: the workstation. `vascusim [study.vsim]` opens a study; `vascusim --demo` opens the built-in demo
+// study (written on first use under ~/.local/share/VascuSim).
+#include "MainWindow.h"
+#include "vsim/app/DemoStudy.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QLocale>
+#include <QSurfaceFormat>
+#include <QTranslator>
+
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+    // VTK's OpenGL2 backend needs a 3.2 core profile with a depth buffer, set before QApplication exists.
+    QSurfaceFormat format;
+    format.setVersion(3, 2);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    QSurfaceFormat::setDefaultFormat(format);
+
+    QApplication application(argc, argv);
+    QApplication::setOrganizationName("VascuSim");
+    QApplication::setApplicationName("VascuSim");
+    QTranslator translator;
+    if (translator.load(QLocale(), "vascusim", "_", ":/i18n"))
+        QApplication::installTranslator(&translator);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription("VascuSim clinical planning workstation");
+    parser.addHelpOption();
+    parser.addOption({"demo", "Open the built-in demo study (generated on first use)."});
+    parser.addPositionalArgument("study", "A study bundle (folder ending in .vsim) to open.");
+    parser.process(application);
+
+    auto* window = new vsim::gui::MainWindow();
+    window->show();
+    if (parser.isSet("demo"))
+    {
+        try
+        {
+            window->openStudy(QString::fromStdString(vsim::app::ensureDemoStudy(vsim::app::defaultDemoStudyPath()).string()));
+        }
+        catch (const std::exception& error)
+        {
+            std::cerr << "cannot write the demo study: " << error.what() << "\n";
+            return 1;
+        }
+    }
+    else if (!parser.positionalArguments().isEmpty())
+        window->openStudy(parser.positionalArguments().constFirst());
+    return application.exec();
+}

@@ -1,0 +1,20 @@
+#pragma once
+
+#include "vsim/core/Error.h"
+
+#include <cuda_runtime.h>
+
+#include <string>
+
+namespace vsim::cuda {
+
+/// Throws vsim::Error naming the call and CUDA's message when `status` is not cudaSuccess.
+inline void check(cudaError_t status, const char* call)
+{
+    if (status != cudaSuccess)
+        throw Error(std::string("CUDA call failed: ") + call + ": " + cudaGetErrorString(status));
+}
+
+} // namespace vsim::cuda
+
+#define VSIM_CUDA_CHECK(call) ::vsim::cuda::check((call), #call)

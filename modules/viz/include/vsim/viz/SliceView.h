@@ -1,0 +1,68 @@
+#pragma once
+
+#include "vsim/core/ImageVolume.h"
+#include "vsim/viz/SliceOrientation.h"
+#include "vsim/viz/VtkView.h"
+
+#include <QString>
+
+namespace vsim::viz {
+
+/// One MPR view (axial, coronal or sagittal) of a CT through a cursor point in the patient frame: linear
+/// reslicing at the finest voxel spacing, window/level, LPS orientation letters on the four edges and the slice
+/// position. The cursor sits at the centre of the view; fieldOfView() mm span the view's height.
+/// Mouse: left click/drag moves the cursor in the plane, right drag changes window (x) and level (y), the wheel
+/// steps through slices by the finest spacing.
+class SliceView : public VtkView
+{
+    Q_OBJECT
+public:
+    explicit SliceView(SliceOrientation orientation, QWidget* parent = nullptr);
+    ~SliceView() override;
+
+    SliceOrientation orientation() const { return m_orientation; }
+    /// Shows `image` (the view keeps a reference to its voxels); the cursor moves to the volume centre.
+    void setImage(const CtVolume& image);
+    void clearImage();
+    bool hasImage() const;
+
+    /// The cursor (mm, LPS): the slice passes through it and it sits at the centre of the view.
+    Eigen::Vector3d cursor() const { return m_cursor; }
+    void setCursor(const Eigen::Vector3d& cursor);
+    /// Height of the view in mm (zoom).
+    double fieldOfView() const { return m_fieldOfView; }
+    void setFieldOfView(double heightMm);
+    WindowLevel windowLevel() const { return m_windowLevel; }
+    void setWindowLevel(const WindowLevel& windowLevel);
+    /// The patient position (mm) under a widget position (logical pixels) in the current slice.
+    Eigen::Vector3d patientAt(const QPointF& widgetPosition) const;
+    /// The orientation letters shown on the left, right, top and bottom edges, e.g. "R", "L", "A", "P".
+    QString edgeLabel(Qt::Edge edge) const;
+
+signals:
+    void cursorChanged(const Eigen::Vector3d& cursor);
+    void windowLevelChanged(double window, double level);
+
+protected:
+    void resizeGL(int width, int height) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+
+private:
+    void updateSlice();
+    void updateCamera();
+
+    struct Pipeline;
+    std::unique_ptr<Pipeline> m_pipeline;
+    SliceOrientation m_orientation;
+    CtVolume m_image;
+    Eigen::Vector3d m_cursor = Eigen::Vector3d::Zero();
+    double m_fieldOfView = 300.0;
+    WindowLevel m_windowLevel = kCtaPreset;
+    QPointF m_dragStart;
+    WindowLevel m_dragStartWindowLevel;
+};
+
+} // namespace vsim::viz

@@ -1,0 +1,40 @@
+#pragma once
+
+#include "vsim/core/ImageVolume.h"
+#include "vsim/core/TriangleMesh.h"
+#include "vsim/viz/VtkView.h"
+
+#include <QColor>
+
+namespace vsim::viz {
+
+/// The 3D view: GPU volume rendering of the CT with a CTA transfer function (contrast blood and bone opaque,
+/// soft tissue and air transparent) and surfaces, placed in the LPS patient frame (mm). The camera rotates with
+/// the mouse (VTK trackball); showAnteriorView() is the standard front view.
+class VolumeView3D : public VtkView
+{
+    Q_OBJECT
+public:
+    explicit VolumeView3D(QWidget* parent = nullptr);
+    ~VolumeView3D() override;
+
+    /// Volume-renders `image` (the view keeps a reference to its voxels) and shows the anterior view.
+    void setImage(const CtVolume& image);
+    void clearImage();
+    /// Adds a surface (mm, LPS) drawn in `colour`; returns nothing, surfaces stay until clearSurfaces().
+    void addSurface(const TriangleMesh& surface, const QColor& colour);
+    void clearSurfaces();
+    void setVolumeVisible(bool visible);
+    /// Front view: the camera looks at the volume centre from anterior (-y), superior (+z) up, patient left (+x)
+    /// on the screen's right; parallel projection with `heightMm` mm across the view's height (<= 0: fit the volume).
+    void showAnteriorView(double heightMm = 0.0);
+    /// Centre of the volume in the patient frame (mm).
+    Eigen::Vector3d volumeCentre() const;
+
+private:
+    struct Scene;
+    std::unique_ptr<Scene> m_scene;
+    CtVolume m_image;
+};
+
+} // namespace vsim::viz

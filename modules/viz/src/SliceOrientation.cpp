@@ -1,0 +1,16 @@
+#include "vsim/viz/SliceOrientation.h"
+
+namespace vsim::viz {
+
+ScreenAxes screenAxes(SliceOrientation orientation)
+{
+    switch (orientation)
+    {
+    case SliceOrientation::Axial: return {{1, 0, 0}, {0, -1, 0}};
+    case SliceOrientation::Coronal: return {{1, 0, 0}, {0, 0, 1}};
+    case SliceOrientation::Sagittal: return {{0, -1, 0}, {0, 0, 1}};
+    }
+    return {{1, 0, 0}, {0, 1, 0}};
+}
+
+} // namespace vsim::viz

@@ -1,0 +1,140 @@
+#include "vsim/viz/VolumeView3D.h"
+
+#include "vsim/interop/VtkImage.h"
+#include "vsim/interop/VtkMesh.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkColorTransferFunction.h>
+#include <vtkImageData.h>
+#include <vtkMatrix4x4.h>
+#include <vtkPiecewiseFunction.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartVolumeMapper.h>
+#include <vtkVolume.h>
+#include <vtkVolumeProperty.h>
+
+#include <vector>
+
+namespace vsim::viz {
+
+struct VolumeView3D::Scene
+{
+    vtkSmartPointer<vtkImageData> scaledIndexImage;
+    vtkSmartPointer<vtkSmartVolumeMapper> mapper = vtkSmartPointer<vtkSmartVolumeMapper>::New();
+    vtkSmartPointer<vtkVolume> volume = vtkSmartPointer<vtkVolume>::New();
+    std::vector<vtkSmartPointer<vtkActor>> surfaces;
+};
+
+VolumeView3D::VolumeView3D(QWidget* parent) : VtkView(parent), m_scene(std::make_unique<Scene>())
+{
+    // CTA transfer function (HU): air and soft tissue transparent, contrast blood red and bone ivory, opaque.
+    auto opacity = vtkSmartPointer<vtkPiecewiseFunction>::New();
+    opacity->AddPoint(-1024, 0.0);
+    opacity->AddPoint(150, 0.0);
+    opacity->AddPoint(250, 0.25);
+    opacity->AddPoint(450, 0.7);
+    opacity->AddPoint(3000, 0.9);
+    auto colour = vtkSmartPointer<vtkColorTransferFunction>::New();
+    colour->AddRGBPoint(-1024, 0.0, 0.0, 0.0);
+    colour->AddRGBPoint(200, 0.75, 0.15, 0.1);
+    colour->AddRGBPoint(450, 0.95, 0.4, 0.3);
+    colour->AddRGBPoint(700, 0.95, 0.92, 0.85);
+    colour->AddRGBPoint(3000, 1.0, 1.0, 1.0);
+    auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+    property->SetScalarOpacity(opacity);
+    property->SetColor(colour);
+    property->SetInterpolationTypeToLinear();
+    property->ShadeOn();
+    property->SetAmbient(0.4);
+    m_scene->volume->SetMapper(m_scene->mapper);
+    m_scene->volume->SetProperty(property);
+    m_scene->volume->VisibilityOff();
+    renderer()->AddVolume(m_scene->volume);
+    renderer()->SetBackground(0.08, 0.09, 0.12);
+}
+
+VolumeView3D::~VolumeView3D() = default;
+
+void VolumeView3D::setImage(const CtVolume& image)
+{
+    m_image = image;
+    // The mapper sees the CT in index * spacing space; the prop's user matrix places it in the patient frame.
+    m_scene->scaledIndexImage = interop::toVtk(m_image);
+    m_scene->scaledIndexImage->SetOrigin(0.0, 0.0, 0.0);
+    const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    m_scene->scaledIndexImage->SetDirectionMatrix(identity);
+    m_scene->mapper->SetInputData(m_scene->scaledIndexImage);
+    m_scene->volume->SetUserMatrix(interop::scaledIndexToPatient(m_image.geometry()));
+    m_scene->volume->VisibilityOn();
+    showAnteriorView();
+}
+
+void VolumeView3D::clearImage()
+{
+    m_image = CtVolume();
+    m_scene->volume->VisibilityOff();
+    update();
+}
+
+void VolumeView3D::addSurface(const TriangleMesh& surface, const QColor& colour)
+{
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(interop::toVtk(surface));
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(colour.redF(), colour.greenF(), colour.blueF());
+    actor->GetProperty()->SetOpacity(colour.alphaF());
+    renderer()->AddActor(actor);
+    m_scene->surfaces.push_back(actor);
+    update();
+}
+
+void VolumeView3D::clearSurfaces()
+{
+    for (const auto& actor : m_scene->surfaces)
+        renderer()->RemoveActor(actor);
+    m_scene->surfaces.clear();
+    update();
+}
+
+void VolumeView3D::setVolumeVisible(bool visible)
+{
+    m_scene->volume->SetVisibility(visible && !m_image.isEmpty());
+    update();
+}
+
+Eigen::Vector3d VolumeView3D::volumeCentre() const
+{
+    if (m_image.isEmpty())
+        return Eigen::Vector3d::Zero();
+    const VolumeGeometry& geometry = m_image.geometry();
+    return geometry.indexToPatient(0.5 * Eigen::Vector3d(geometry.dims[0] - 1, geometry.dims[1] - 1, geometry.dims[2] - 1));
+}
+
+void VolumeView3D::showAnteriorView(double heightMm)
+{
+    const Eigen::Vector3d centre = volumeCentre();
+    double height = heightMm;
+    if (height <= 0.0 && !m_image.isEmpty())
+    {
+        const VolumeGeometry& geometry = m_image.geometry();
+        height = 1.1 * geometry.spacing.cwiseProduct(Eigen::Vector3d(geometry.dims[0], geometry.dims[1], geometry.dims[2]))
+                           .norm();
+    }
+    vtkCamera* camera = renderer()->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetFocalPoint(centre.data());
+    const Eigen::Vector3d position = centre - Eigen::Vector3d(0.0, 1000.0, 0.0); // anterior is -y in LPS
+    camera->SetPosition(position.data());
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetParallelScale(0.5 * std::max(height, 1.0));
+    renderer()->ResetCameraClippingRange();
+    update();
+}
+
+} // namespace vsim::viz

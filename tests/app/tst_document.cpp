@@ -1,0 +1,84 @@
+// The document workflow of the main window: import a volume in the background, undo and redo the import and a
+// rename, save, and reopen with the same artifacts; a broken file gives an error and leaves the study untouched.
+#include "ArtifactCommands.h"
+#include "GuiTestMain.h"
+#include "MainWindow.h"
+#include "StudyFixtures.h"
+#include "TestOutput.h"
+#include "vsim/interop/ItkImage.h"
+
+#include <QSignalSpy>
+#include <itkImageFileWriter.h>
+#include <itkNrrdImageIO.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+
+class TestDocument : public QObject
+{
+    Q_OBJECT
+
+    bool waitForTask(vsim::gui::MainWindow& window)
+    {
+        QSignalSpy idle(&window.tasks(), &vsim::gui::TaskRunner::idle);
+        return idle.wait(30000);
+    }
+
+private slots:
+    void importUndoRedoSaveReopen()
+    {
+        const fs::path folder(vsim::test::outputFolder("gui-document").toStdString());
+        const fs::path bundle = folder / "document.vsim";
+        fs::remove_all(bundle);
+        const fs::path volume = folder / "volume.nrrd";
+        auto writer = itk::ImageFileWriter<vsim::interop::ItkImage3<std::int16_t>>::New();
+        writer->SetImageIO(itk::NrrdImageIO::New());
+        const vsim::CtVolume truth = vsim::test::patternedVolume(12, 5);
+        writer->SetInput(vsim::interop::toItk(truth));
+        writer->SetFileName(volume.string());
+        writer->Update();
+
+        auto* window = new vsim::gui::MainWindow();
+        window->show();
+        QVERIFY(window->newStudy(QString::fromStdString(bundle.string())));
+        QVERIFY(window->importVolume(QString::fromStdString(volume.string())));
+        QVERIFY(waitForTask(*window));
+        auto& document = window->document();
+        QCOMPARE(document.study().artifacts().size(), std::size_t(1));
+        const std::string id = document.study().artifacts()[0].id;
+
+        document.undoStack()->push(new vsim::gui::RenameArtifactCommand(document, id, "Arterial"));
+        QCOMPARE(document.study().artifact(id).name, std::string("Arterial"));
+        document.undoStack()->undo();
+        QCOMPARE(document.study().artifact(id).name, std::string("volume"));
+        document.undoStack()->undo(); // the import
+        QVERIFY(document.study().artifacts().empty());
+        document.undoStack()->redo();
+        document.undoStack()->redo();
+        QCOMPARE(document.study().artifact(id).name, std::string("Arterial"));
+        QVERIFY(window->isWindowModified());
+
+        QVERIFY(window->saveStudy());
+        QVERIFY(waitForTask(*window));
+        QVERIFY(!window->isWindowModified());
+        const vsim::study::Study reopened = vsim::study::Study::open(bundle);
+        QCOMPARE(reopened.artifact(id).name, std::string("Arterial"));
+        QVERIFY(vsim::test::samePattern(reopened.loadImage(id), 5));
+
+        // A broken file: the task fails with a message, the study keeps its one artifact.
+        const fs::path junk = folder / "junk.nii";
+        std::ofstream(junk) << "not a volume";
+        QSignalSpy failed(&window->tasks(), &vsim::gui::TaskRunner::failed);
+        QVERIFY(window->importVolume(QString::fromStdString(junk.string())));
+        QVERIFY(waitForTask(*window));
+        QCOMPARE(failed.count(), 1);
+        QCOMPARE(document.study().artifacts().size(), std::size_t(1));
+        window->setAttribute(Qt::WA_DeleteOnClose, false);
+        delete window;
+    }
+};
+
+VSIM_GUI_TEST_MAIN(TestDocument)
+#include "tst_document.moc"

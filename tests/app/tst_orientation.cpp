@@ -1,0 +1,164 @@
+// The views put a marker where the patient frame says. A CT stored with a flipped direction matrix (x and y
+// reversed, as RAS-ordered scanners write it) holds a bright 5x5x5 voxel block at a known LPS position q, computed
+// from the geometry alone. In each MPR the marker must appear at centre + ((q - cursor) . right, (q - cursor) . up)
+// * pixels-per-mm, with right/up of the radiological convention (axial: right = patient left, up = anterior;
+// coronal: right = left, up = superior; sagittal: right = anterior, up = superior), within 3 device pixels; in the
+// anterior 3D view at centre + ((q - c).x, (q - c).z) * pixels-per-mm within 4 pixels. Screenshots are kept.
+#include "GuiTestMain.h"
+#include "MainWindow.h"
+#include "TestOutput.h"
+#include "ViewLayout.h"
+#include "vsim/study/Study.h"
+#include "vsim/viz/SliceView.h"
+#include "vsim/viz/VolumeView3D.h"
+
+#include <QImage>
+#include <QSignalSpy>
+
+#include <filesystem>
+
+using vsim::viz::SliceOrientation;
+
+namespace {
+
+constexpr std::int16_t kMarkerHu = 3000;
+
+struct Phantom
+{
+    vsim::CtVolume image;
+    Eigen::Vector3d marker; // LPS mm
+};
+
+Phantom markerPhantom()
+{
+    vsim::VolumeGeometry geometry;
+    geometry.dims = {100, 90, 80};
+    geometry.spacing = {0.8, 0.9, 1.5};
+    geometry.origin = {40.0, 30.0, -60.0};
+    geometry.direction.diagonal() << -1.0, -1.0, 1.0; // i runs right-ward, j anterior-ward
+    Phantom phantom{vsim::CtVolume(geometry), {}};
+    std::fill(phantom.image.data(), phantom.image.data() + phantom.image.size(), std::int16_t(-1000));
+    const int centre[3] = {30, 62, 55}; // some voxel off the volume centre
+    for (int k = -2; k <= 2; ++k)
+        for (int j = -2; j <= 2; ++j)
+            for (int i = -2; i <= 2; ++i)
+                phantom.image.at(centre[0] + i, centre[1] + j, centre[2] + k) = kMarkerHu;
+    phantom.marker = geometry.indexToPatient({double(centre[0]), double(centre[1]), double(centre[2])});
+    return phantom;
+}
+
+/// Centroid of the pixels brighter than `threshold` in all three channels (white marker; yellow labels excluded).
+QPointF brightCentroid(const QImage& image, int threshold, int* count)
+{
+    double sumX = 0, sumY = 0;
+    *count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+        {
+            const QRgb pixel = image.pixel(x, y);
+            if (qRed(pixel) > threshold && qGreen(pixel) > threshold && qBlue(pixel) > threshold)
+                sumX += x, sumY += y, ++*count;
+        }
+    return *count ? QPointF(sumX / *count, sumY / *count) : QPointF(-1, -1);
+}
+
+} // namespace
+
+class TestOrientation : public QObject
+{
+    Q_OBJECT
+
+    vsim::gui::MainWindow* m_window = nullptr;
+    Phantom m_phantom;
+
+private slots:
+    void initTestCase()
+    {
+        m_phantom = markerPhantom();
+        const std::filesystem::path bundle =
+            std::filesystem::path(vsim::test::outputFolder("gui").toStdString()) / "orientation.vsim";
+        std::filesystem::remove_all(bundle);
+        vsim::study::Study study = vsim::study::Study::create(bundle, "orientation");
+        study.addImage(m_phantom.image, "marker CT", {});
+        study.save();
+
+        m_window = new vsim::gui::MainWindow();
+        m_window->resize(1200, 900);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        QSignalSpy idle(&m_window->tasks(), &vsim::gui::TaskRunner::idle);
+        QVERIFY(m_window->openStudy(QString::fromStdString(bundle.string())));
+        QVERIFY(idle.wait(30000));
+        QVERIFY(m_window->document().hasStudy());
+    }
+
+    void cleanupTestCase()
+    {
+        delete m_window;
+    }
+
+    void markerAppearsWhereThePatientFrameSays_data()
+    {
+        QTest::addColumn<int>("orientation");
+        QTest::addColumn<QString>("leftRightTopBottom");
+        QTest::newRow("axial") << int(SliceOrientation::Axial) << "RLAP";
+        QTest::newRow("coronal") << int(SliceOrientation::Coronal) << "RLSI";
+        QTest::newRow("sagittal") << int(SliceOrientation::Sagittal) << "PASI";
+    }
+
+    void markerAppearsWhereThePatientFrameSays()
+    {
+        QFETCH(int, orientation);
+        QFETCH(QString, leftRightTopBottom);
+        vsim::viz::SliceView* view = m_window->views()->sliceView(SliceOrientation(orientation));
+        QCOMPARE(view->edgeLabel(Qt::LeftEdge) + view->edgeLabel(Qt::RightEdge) + view->edgeLabel(Qt::TopEdge) +
+                     view->edgeLabel(Qt::BottomEdge),
+                 leftRightTopBottom);
+
+        // Truth of the convention, written out here rather than taken from the view.
+        Eigen::Vector3d right, up;
+        Eigen::Vector3d cursor = m_phantom.image.geometry().indexToPatient({49.5, 44.5, 39.5}); // volume centre
+        if (orientation == int(SliceOrientation::Axial))
+            right = {1, 0, 0}, up = {0, -1, 0}, cursor.z() = m_phantom.marker.z();
+        else if (orientation == int(SliceOrientation::Coronal))
+            right = {1, 0, 0}, up = {0, 0, 1}, cursor.y() = m_phantom.marker.y();
+        else
+            right = {0, -1, 0}, up = {0, 0, 1}, cursor.x() = m_phantom.marker.x();
+        view->setCursor(cursor);
+        view->setFieldOfView(160.0);
+        view->setWindowLevel(vsim::viz::kBonePreset);
+
+        const QImage frame = view->grabFramebuffer();
+        frame.save(vsim::test::outputFolder("gui") + "/mpr-" + QTest::currentDataTag() + ".png");
+        const double pixelsPerMm = frame.height() / 160.0;
+        const Eigen::Vector3d offset = m_phantom.marker - cursor;
+        const QPointF expected(0.5 * frame.width() + offset.dot(right) * pixelsPerMm,
+                               0.5 * frame.height() - offset.dot(up) * pixelsPerMm);
+        int count = 0;
+        const QPointF found = brightCentroid(frame, 200, &count);
+        QVERIFY2(count > 10, "the marker must be visible");
+        QVERIFY2(std::hypot(found.x() - expected.x(), found.y() - expected.y()) <= 3.0,
+                 qPrintable(QString("marker at (%1, %2), expected (%3, %4)")
+                                .arg(found.x()).arg(found.y()).arg(expected.x()).arg(expected.y())));
+    }
+
+    void markerAppearsInTheAnteriorVolumeRendering()
+    {
+        vsim::viz::VolumeView3D* view = m_window->views()->volumeView();
+        view->showAnteriorView(160.0);
+        const QImage frame = view->grabFramebuffer();
+        frame.save(vsim::test::outputFolder("gui") + "/volume-anterior.png");
+        const double pixelsPerMm = frame.height() / 160.0;
+        const Eigen::Vector3d offset = m_phantom.marker - view->volumeCentre();
+        const QPointF expected(0.5 * frame.width() + offset.x() * pixelsPerMm, 0.5 * frame.height() - offset.z() * pixelsPerMm);
+        int count = 0;
+        const QPointF found = brightCentroid(frame, 120, &count);
+        QVERIFY2(count > 10, "the marker must be rendered");
+        QVERIFY2(std::hypot(found.x() - expected.x(), found.y() - expected.y()) <= 4.0,
+                 qPrintable(QString("marker at (%1, %2), expected (%3, %4)")
+                                .arg(found.x()).arg(found.y()).arg(expected.x()).arg(expected.y())));
+    }
+};
+
+VSIM_GUI_TEST_MAIN(TestOrientation)
+#include "tst_orientation.moc"
