@@ -62,6 +62,17 @@ QPointF brightCentroid(const QImage& image, int threshold, int* count)
     return *count ? QPointF(sumX / *count, sumY / *count) : QPointF(-1, -1);
 }
 
+/// Checks that the white marker's centroid in `frame` lies within `tolerance` pixels of `expected`.
+void verifyMarkerAt(const QImage& frame, int threshold, const QPointF& expected, double tolerance)
+{
+    int count = 0;
+    const QPointF found = brightCentroid(frame, threshold, &count);
+    QVERIFY2(count > 10, "the marker must be visible");
+    QVERIFY2(std::hypot(found.x() - expected.x(), found.y() - expected.y()) <= tolerance,
+             qPrintable(QString("marker at (%1, %2), expected (%3, %4)")
+                            .arg(found.x()).arg(found.y()).arg(expected.x()).arg(expected.y())));
+}
+
 } // namespace
 
 class TestOrientation : public QObject
@@ -134,12 +145,7 @@ private slots:
         const Eigen::Vector3d offset = m_phantom.marker - cursor;
         const QPointF expected(0.5 * frame.width() + offset.dot(right) * pixelsPerMm,
                                0.5 * frame.height() - offset.dot(up) * pixelsPerMm);
-        int count = 0;
-        const QPointF found = brightCentroid(frame, 200, &count);
-        QVERIFY2(count > 10, "the marker must be visible");
-        QVERIFY2(std::hypot(found.x() - expected.x(), found.y() - expected.y()) <= 3.0,
-                 qPrintable(QString("marker at (%1, %2), expected (%3, %4)")
-                                .arg(found.x()).arg(found.y()).arg(expected.x()).arg(expected.y())));
+        verifyMarkerAt(frame, 200, expected, 3.0);
     }
 
     void markerAppearsInTheAnteriorVolumeRendering()
@@ -151,12 +157,7 @@ private slots:
         const double pixelsPerMm = frame.height() / 160.0;
         const Eigen::Vector3d offset = m_phantom.marker - view->volumeCentre();
         const QPointF expected(0.5 * frame.width() + offset.x() * pixelsPerMm, 0.5 * frame.height() - offset.z() * pixelsPerMm);
-        int count = 0;
-        const QPointF found = brightCentroid(frame, 120, &count);
-        QVERIFY2(count > 10, "the marker must be rendered");
-        QVERIFY2(std::hypot(found.x() - expected.x(), found.y() - expected.y()) <= 4.0,
-                 qPrintable(QString("marker at (%1, %2), expected (%3, %4)")
-                                .arg(found.x()).arg(found.y()).arg(expected.x()).arg(expected.y())));
+        verifyMarkerAt(frame, 120, expected, 4.0);
     }
 };
 
