@@ -124,6 +124,11 @@ void MainWindow::setBusy(bool busy)
     }
     for (QAction* action : m_documentActions)
         action->setEnabled(!busy && m_document.hasStudy());
+    if (m_undoAction)
+    {
+        m_undoAction->setEnabled(!busy && m_document.undoStack()->canUndo());
+        m_redoAction->setEnabled(!busy && m_document.undoStack()->canRedo());
+    }
 }
 
 void MainWindow::refreshTitle()

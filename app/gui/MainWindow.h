@@ -70,6 +70,8 @@ private:
     QLabel* m_statusText = nullptr;
     QMenu* m_recentMenu = nullptr;
     QList<QAction*> m_documentActions; // disabled while a task runs or without a study
+    QAction* m_undoAction = nullptr;    // also disabled while a task runs: the task may be reading the study
+    QAction* m_redoAction = nullptr;
 };
 
 } // namespace vsim::gui
