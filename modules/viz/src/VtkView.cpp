@@ -100,24 +100,14 @@ void setEventPosition(vtkGenericRenderWindowInteractor* interactor, const QPoint
                                          modifiers & Qt::ControlModifier ? 1 : 0, modifiers & Qt::ShiftModifier ? 1 : 0);
 }
 
-unsigned long pressEventFor(Qt::MouseButton button)
+/// The VTK event for a mouse button going down (`pressed`) or up; NoEvent for other buttons.
+unsigned long buttonEventFor(Qt::MouseButton button, bool pressed)
 {
     switch (button)
     {
-    case Qt::LeftButton: return vtkCommand::LeftButtonPressEvent;
-    case Qt::MiddleButton: return vtkCommand::MiddleButtonPressEvent;
-    case Qt::RightButton: return vtkCommand::RightButtonPressEvent;
-    default: return vtkCommand::NoEvent;
-    }
-}
-
-unsigned long releaseEventFor(Qt::MouseButton button)
-{
-    switch (button)
-    {
-    case Qt::LeftButton: return vtkCommand::LeftButtonReleaseEvent;
-    case Qt::MiddleButton: return vtkCommand::MiddleButtonReleaseEvent;
-    case Qt::RightButton: return vtkCommand::RightButtonReleaseEvent;
+    case Qt::LeftButton: return pressed ? vtkCommand::LeftButtonPressEvent : vtkCommand::LeftButtonReleaseEvent;
+    case Qt::MiddleButton: return pressed ? vtkCommand::MiddleButtonPressEvent : vtkCommand::MiddleButtonReleaseEvent;
+    case Qt::RightButton: return pressed ? vtkCommand::RightButtonPressEvent : vtkCommand::RightButtonReleaseEvent;
     default: return vtkCommand::NoEvent;
     }
 }
@@ -129,7 +119,7 @@ void VtkView::mousePressEvent(QMouseEvent* event)
     if (!m_forwardEvents)
         return;
     setEventPosition(d->interactor, event->position(), event->modifiers(), devicePixelRatioF());
-    d->interactor->InvokeEvent(pressEventFor(event->button()));
+    d->interactor->InvokeEvent(buttonEventFor(event->button(), true));
 }
 
 void VtkView::mouseMoveEvent(QMouseEvent* event)
@@ -145,7 +135,7 @@ void VtkView::mouseReleaseEvent(QMouseEvent* event)
     if (!m_forwardEvents)
         return;
     setEventPosition(d->interactor, event->position(), event->modifiers(), devicePixelRatioF());
-    d->interactor->InvokeEvent(releaseEventFor(event->button()));
+    d->interactor->InvokeEvent(buttonEventFor(event->button(), false));
 }
 
 void VtkView::wheelEvent(QWheelEvent* event)
