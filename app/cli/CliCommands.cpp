@@ -1,14 +1,20 @@
 #include "CliCommands.h"
 
 #include "vsim/app/DemoStudy.h"
+#include "vsim/app/DicomStudyImport.h"
 #include "vsim/app/StudySummary.h"
 #include "vsim/app/VersionInfo.h"
 #include "vsim/core/Error.h"
+#include "vsim/dicom/DicomScan.h"
+#include "vsim/dicom/PhantomWriter.h"
 #include "vsim/study/Study.h"
 #include "vsim/study/VolumeFileImport.h"
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 namespace vsim::cli {
 namespace fs = std::filesystem;
@@ -64,21 +70,145 @@ int printStudyInfo(const Arguments& arguments)
     return 0;
 }
 
-int importVolume(const Arguments& arguments, const Progress& progress)
+namespace {
+
+bool isVolumeFile(const fs::path& file)
+{
+    const std::string name = file.filename().string();
+    for (const char* extension : {".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"})
+        if (name.size() > std::string(extension).size() &&
+            name.compare(name.size() - std::string(extension).size(), std::string::npos, extension) == 0)
+            return true;
+    return false;
+}
+
+study::Study openOrCreateStudy(const fs::path& bundle)
+{
+    return fs::exists(bundle / "study.json") ? study::Study::open(bundle)
+                                             : study::Study::create(bundle, bundle.stem().string());
+}
+
+/// Parses "a<sep>b<sep>c" into three numbers; throws naming the option.
+template <typename T>
+std::array<T, 3> parseTriple(const std::string& text, char separator, const std::string& option)
+{
+    std::array<T, 3> values{};
+    std::istringstream stream(text);
+    std::string part;
+    int count = 0;
+    while (std::getline(stream, part, separator))
+    {
+        std::size_t used = 0;
+        try
+        {
+            if (count < 3)
+                values[std::size_t(count)] = T(std::stod(part, &used));
+        }
+        catch (const std::exception&)
+        {
+            used = 0;
+        }
+        if (used == 0 || used != part.size())
+            throw Error("--" + option + " expects three numbers separated by '" + std::string(1, separator) +
+                        "', got '" + text + "'");
+        ++count;
+    }
+    if (count != 3)
+        throw Error("--" + option + " expects three numbers separated by '" + std::string(1, separator) + "', got '" +
+                    text + "'");
+    return values;
+}
+
+double parseNumber(const Arguments& arguments, const std::string& option, double fallback)
+{
+    if (!arguments.hasOption(option))
+        return fallback;
+    const std::string text = arguments.option(option);
+    try
+    {
+        std::size_t used = 0;
+        const double value = std::stod(text, &used);
+        if (used == text.size())
+            return value;
+    }
+    catch (const std::exception&)
+    {
+    }
+    throw Error("--" + option + " expects a number, got '" + text + "'");
+}
+
+int listDicom(const dicom::DicomScanResult& scan)
+{
+    std::cout << app::dicomScanJson(scan) << std::endl;
+    return 0;
+}
+
+} // namespace
+
+int importIntoStudy(const Arguments& arguments, const Progress& progress)
 {
     const std::string bundle = arguments.option("study");
-    if (arguments.positional.size() != 1 || bundle.empty())
-        throw Error("usage: vascusim-cli import <volume.nii|.nii.gz|.nrrd|.mha|.mhd> --study <study.vsim>");
-    const fs::path file = arguments.positional[0];
-    study::Study study = fs::exists(fs::path(bundle) / "study.json")
-                             ? study::Study::open(bundle)
-                             : study::Study::create(bundle, fs::path(bundle).stem().string());
-    const std::string id = study::importVolumeFile(study, file, progress);
+    const bool list = arguments.hasOption("list");
+    if (arguments.positional.size() != 1 || (bundle.empty() && !list))
+        throw Error("usage: vascusim-cli import <folder|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list]");
+    const fs::path input = arguments.positional[0];
+    if (isVolumeFile(input))
+    {
+        study::Study study = openOrCreateStudy(bundle);
+        const std::string id = study::importVolumeFile(study, input, progress);
+        study.save();
+        std::cout << "imported " << input.filename().string() << " as " << id << "\n";
+        for (const std::string& warning : study.artifact(id).warnings)
+            std::cout << "warning: " << warning << "\n";
+        return 0;
+    }
+    const dicom::DicomScanResult scan = dicom::scanDicom(input, progress.subRange(0.0, 0.1));
+    if (list)
+        return listDicom(scan);
+    const dicom::DicomSeries& series = app::chooseSeries(scan, arguments.option("series"));
+    dicom::DicomImportOptions options;
+    options.memoryLimitBytes = std::uint64_t(parseNumber(arguments, "memory-limit-mb", 0.0) * 1024.0 * 1024.0);
+    study::Study study = openOrCreateStudy(bundle);
+    const std::string id =
+        app::importDicomSeriesIntoStudy(study, series, input, options, progress.subRange(0.1, 0.9));
     study.save();
+    progress.report(1.0, "saved");
     const auto& artifact = study.artifact(id);
-    std::cout << "imported " << file.filename().string() << " as " << id << "\n";
+    const VolumeGeometry geometry = study.volumeGeometry(id);
+    std::cout << "imported series " << series.key << " (" << series.slices.size() << " slices) as " << id << ": "
+              << geometry.dims[0] << " x " << geometry.dims[1] << " x " << geometry.dims[2] << " voxels\n";
+    for (const std::string& warning : scan.warnings)
+        std::cout << "warning: " << warning << "\n";
     for (const std::string& warning : artifact.warnings)
         std::cout << "warning: " << warning << "\n";
+    return 0;
+}
+
+int writePhantomSeries(const Arguments& arguments, const Progress& progress)
+{
+    const std::string out = arguments.option("out");
+    if (arguments.positional.size() != 1 || out.empty())
+        throw Error("usage: vascusim-cli phantom <aaa|stenosis|hepatic-tree|bifurcation> --out <folder> [options]");
+    const dicom::PhantomKind kind = dicom::phantomKindFromName(arguments.positional[0]);
+    dicom::PhantomOptions options;
+    if (arguments.hasOption("size"))
+        options.size = parseTriple<int>(arguments.option("size"), 'x', "size");
+    if (arguments.hasOption("spacing"))
+    {
+        const auto spacing = parseTriple<double>(arguments.option("spacing"), ',', "spacing");
+        options.spacing = {spacing[0], spacing[1], spacing[2]};
+    }
+    options.noiseHu = parseNumber(arguments, "noise", options.noiseHu);
+    options.seed = std::uint64_t(parseNumber(arguments, "seed", double(options.seed)));
+    options.blurMm = parseNumber(arguments, "blur", options.blurMm);
+    options.aneurysmDiameterMm = parseNumber(arguments, "max-diameter", options.aneurysmDiameterMm);
+    options.stenosisPercent = parseNumber(arguments, "stenosis", options.stenosisPercent);
+    dicom::CtSeriesDescription description = dicom::phantomSeriesDescription(kind);
+    description.transferSyntax = dicom::transferSyntaxFromName(arguments.option("transfer-syntax", "explicit-le"));
+    description.enhancedMultiFrame = arguments.hasOption("enhanced");
+    const dicom::PhantomFiles files = dicom::writePhantom(kind, options, description, out, progress);
+    std::cout << "wrote " << files.series.files.size() << " DICOM files to " << files.dicomFolder.string() << "\n"
+              << "truth: " << files.truthJson.string() << ", " << files.truthLabels.string() << "\n";
     return 0;
 }
 

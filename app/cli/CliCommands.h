@@ -24,7 +24,12 @@ Arguments parseArguments(const std::vector<std::string>& words);
 /// Each command returns the process exit code and throws vsim::Error for bad input.
 int printVersion();
 int printStudyInfo(const Arguments& arguments);
-int importVolume(const Arguments& arguments, const Progress& progress);
+/// `import <dir|DICOMDIR|file> --study S [--series KEY] [--list] [--memory-limit-mb N]`: DICOM, or a
+/// NIfTI / NRRD / MetaImage volume file.
+int importIntoStudy(const Arguments& arguments, const Progress& progress);
+/// `phantom <kind> --out DIR [--size CxRxS] [--spacing x,y,z] [--noise HU] [--seed N] [--transfer-syntax T]
+/// [--max-diameter mm] [--stenosis percent] [--blur mm] [--enhanced]`.
+int writePhantomSeries(const Arguments& arguments, const Progress& progress);
 int writeDemoStudy(const Arguments& arguments, const Progress& progress);
 
 } // namespace vsim::cli

@@ -23,7 +23,15 @@ constexpr const char* kUsage = R"(usage: vascusim-cli <command> [arguments]
 commands:
   --version                                  versions of VascuSim and its libraries, CUDA and GPUs found
   info <study.vsim>                          the study's metadata and artifacts as JSON
-  import <volume> --study <study.vsim>       add a NIfTI / NRRD / MetaImage volume (creates the study if needed)
+  import <dir|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list] [--memory-limit-mb N]
+                                             add a DICOM series (the CT with most slices unless --series) or a
+                                             NIfTI / NRRD / MetaImage volume; creates the study if needed;
+                                             --list prints the series found as JSON and imports nothing
+  phantom <aaa|stenosis|hepatic-tree|bifurcation> --out <dir> [--size 512x512x400] [--spacing 0.7,0.7,1.0]
+          [--noise 20] [--seed 1] [--transfer-syntax explicit-le|implicit-le|jpeg-lossless|jpeg-ls|rle]
+          [--max-diameter 55] [--stenosis 50] [--blur mm] [--enhanced]
+                                             write a CT phantom series (<dir>/dicom) with truth.json and
+                                             truth-label.nrrd
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -57,7 +65,9 @@ int main(int argc, char** argv)
         if (command == "info")
             return vsim::cli::printStudyInfo(arguments);
         if (command == "import")
-            return vsim::cli::importVolume(arguments, progress);
+            return vsim::cli::importIntoStudy(arguments, progress);
+        if (command == "phantom")
+            return vsim::cli::writePhantomSeries(arguments, progress);
         if (command == "demo-study")
             return vsim::cli::writeDemoStudy(arguments, progress);
         std::cerr << "unknown command '" << command << "'\n" << kUsage;
@@ -70,7 +80,9 @@ int main(int argc, char** argv)
     }
     catch (const vsim::Error& error)
     {
-        std::cerr << "\nerror: " << error.what() << "\n";
+        std::cerr << "\nerror: " << error.message() << "\n";
+        for (const auto& [key, value] : error.context())
+            std::cerr << "  " << key << ": " << value << "\n";
         return 1;
     }
     catch (const std::exception& error)

@@ -2,12 +2,9 @@
 
 #include "BundleFiles.h"
 #include "vsim/core/Error.h"
-#include "vsim/interop/ItkImage.h"
+#include "vsim/interop/NrrdFile.h"
 #include "vsim/interop/VtkMesh.h"
 
-#include <itkImageFileReader.h>
-#include <itkImageFileWriter.h>
-#include <itkNrrdImageIO.h>
 #include <nlohmann/json.hpp>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
@@ -22,41 +19,6 @@ namespace vsim::study {
 namespace {
 
 using nlohmann::json;
-
-template <typename T>
-void writeNrrd(const ImageVolume<T>& volume, const std::filesystem::path& file, bool compress)
-{
-    auto writer = itk::ImageFileWriter<interop::ItkImage3<T>>::New();
-    writer->SetImageIO(itk::NrrdImageIO::New());
-    writer->SetInput(interop::toItk(volume));
-    writer->SetFileName(file.string());
-    writer->SetUseCompression(compress);
-    try
-    {
-        writer->Update();
-    }
-    catch (const itk::ExceptionObject& exception)
-    {
-        throw Error("cannot write NRRD image", {{"file", file.string()}, {"reason", exception.GetDescription()}});
-    }
-}
-
-template <typename T>
-ImageVolume<T> readNrrd(const std::filesystem::path& file)
-{
-    auto reader = itk::ImageFileReader<interop::ItkImage3<T>>::New();
-    reader->SetImageIO(itk::NrrdImageIO::New());
-    reader->SetFileName(file.string());
-    try
-    {
-        reader->Update();
-    }
-    catch (const itk::ExceptionObject& exception)
-    {
-        throw Error("cannot read NRRD image", {{"file", file.string()}, {"reason", exception.GetDescription()}});
-    }
-    return interop::fromItk<T>(reader->GetOutput());
-}
 
 json vectorToJson(const Eigen::Vector3d& vector)
 {
@@ -168,8 +130,8 @@ void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& fi
 {
     switch (kindOf(data))
     {
-    case ArtifactKind::Image: writeNrrd(std::get<CtVolume>(data), file, false); break;
-    case ArtifactKind::Label: writeNrrd(std::get<LabelVolume>(data), file, true); break;
+    case ArtifactKind::Image: interop::writeNrrd(std::get<CtVolume>(data), file, false); break;
+    case ArtifactKind::Label: interop::writeNrrd(std::get<LabelVolume>(data), file, true); break;
     case ArtifactKind::Surface:
         writeVtkXml<vtkXMLPolyDataWriter>(interop::toVtk(std::get<TriangleMesh>(data)).Get(), file);
         break;
@@ -190,37 +152,15 @@ void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& fi
 
 VolumeGeometry readVolumeGeometry(const std::filesystem::path& file)
 {
-    auto io = itk::NrrdImageIO::New();
-    io->SetFileName(file.string());
-    try
-    {
-        io->ReadImageInformation();
-    }
-    catch (const itk::ExceptionObject& exception)
-    {
-        throw Error("cannot read NRRD header", {{"file", file.string()}, {"reason", exception.GetDescription()}});
-    }
-    if (io->GetNumberOfDimensions() != 3)
-        throw Error("image file is not 3D", {{"file", file.string()}});
-    VolumeGeometry geometry;
-    for (unsigned axis = 0; axis < 3; ++axis)
-    {
-        geometry.dims[axis] = static_cast<int>(io->GetDimensions(axis));
-        geometry.spacing[axis] = io->GetSpacing(axis);
-        geometry.origin[axis] = io->GetOrigin(axis);
-        const std::vector<double> column = io->GetDirection(axis);
-        for (unsigned row = 0; row < 3; ++row)
-            geometry.direction(row, axis) = column[row];
-    }
-    return geometry;
+    return interop::readNrrdGeometry(file);
 }
 
 ArtifactData readArtifactFile(ArtifactKind kind, const std::filesystem::path& file)
 {
     switch (kind)
     {
-    case ArtifactKind::Image: return readNrrd<std::int16_t>(file);
-    case ArtifactKind::Label: return readNrrd<std::uint8_t>(file);
+    case ArtifactKind::Image: return interop::readNrrd<std::int16_t>(file);
+    case ArtifactKind::Label: return interop::readNrrd<std::uint8_t>(file);
     case ArtifactKind::Surface:
         return interop::triangleMeshFromVtk(readVtkXml<vtkXMLPolyDataReader>(file).Get());
     case ArtifactKind::TetMesh:

@@ -42,7 +42,8 @@ std::string manifestToText(const Manifest& manifest)
                              {"crc32", artifact.checksum},
                              {"bytes", artifact.bytes},
                              {"provenance", provenanceToJson(artifact.provenance)},
-                             {"warnings", artifact.warnings}});
+                             {"warnings", artifact.warnings},
+                             {"attributes", artifact.attributes}});
     const json document = {{"format", "vascusim-study"},
                            {"schema_version", kSchemaVersion},
                            {"software_version", kVersion},
@@ -81,6 +82,9 @@ Manifest manifestFromText(const std::string& text)
             artifact.bytes = entry.at("bytes").get<std::uint64_t>();
             artifact.provenance = provenanceFromJson(entry.at("provenance"));
             artifact.warnings = entry.at("warnings").get<std::vector<std::string>>();
+            // Optional since VascuSim 0.2 (additive, schema 1 unchanged).
+            artifact.attributes =
+                entry.value("attributes", std::map<std::string, std::string>{});
             manifest.artifacts.push_back(std::move(artifact));
         }
         return manifest;

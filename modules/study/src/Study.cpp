@@ -242,6 +242,12 @@ void Study::renameArtifact(const std::string& id, const std::string& name)
     m_state->modified = true;
 }
 
+void Study::setArtifactAttributes(const std::string& id, std::map<std::string, std::string> attributes)
+{
+    m_state->find(id).attributes = std::move(attributes);
+    m_state->modified = true;
+}
+
 void Study::removeArtifact(const std::string& id)
 {
     const Artifact artifact = m_state->find(id);

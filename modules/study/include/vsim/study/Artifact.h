@@ -43,6 +43,8 @@ struct Artifact
     std::uint64_t bytes = 0;
     Provenance provenance;
     std::vector<std::string> warnings; ///< what the step that made it reported (clamped values, resampling, ...)
+    /// Attributes of the source, e.g. a DICOM series' description, UIDs and dates ("series_description", ...).
+    std::map<std::string, std::string> attributes;
     bool damaged = false;      ///< set on open when the file is missing or its checksum differs
     std::string damage;        ///< why it is flagged
 };

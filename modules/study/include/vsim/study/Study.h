@@ -76,6 +76,8 @@ public:
 
     /// Renames an artifact (the name shown to people); throws vsim::Error for an unknown id.
     void renameArtifact(const std::string& id, const std::string& name);
+    /// Replaces an artifact's source attributes (Artifact::attributes); throws vsim::Error for an unknown id.
+    void setArtifactAttributes(const std::string& id, std::map<std::string, std::string> attributes);
     /// Removes an artifact from the study; its data is returned so that an undo can put it back.
     /// Throws vsim::Error for an unknown id.
     void removeArtifact(const std::string& id);

@@ -1,0 +1,395 @@
+#include "vsim/dicom/DicomFile.h"
+
+#include "DcmtkSetup.h"
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcistrmb.h>
+#include <dcmtk/dcmdata/dcmetinf.h>
+#include <dcmtk/dcmdata/dcpixel.h>
+#include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmdata/dcxfer.h>
+#include <gdcmImageReader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+namespace vsim::dicom {
+namespace {
+
+constexpr Uint32 kHeaderReadLength = 4096; // bytes; longer values (pixel data) stay on disk until accessed
+
+std::string trimmed(const char* text)
+{
+    std::string value = text ? text : "";
+    const auto begin = value.find_first_not_of(" \t\r\n");
+    if (begin == std::string::npos)
+        return {};
+    return value.substr(begin, value.find_last_not_of(" \t\r\n") - begin + 1);
+}
+
+std::string text(DcmItem& item, const DcmTagKey& tag)
+{
+    OFString value;
+    return item.findAndGetOFStringArray(tag, value).good() ? trimmed(value.c_str()) : std::string();
+}
+
+int integer(DcmItem& item, const DcmTagKey& tag, int fallback = 0)
+{
+    Sint32 value = 0;
+    return item.findAndGetSint32(tag, value).good() ? int(value) : fallback;
+}
+
+int unsignedShort(DcmItem& item, const DcmTagKey& tag, int fallback = 0)
+{
+    Uint16 value = 0;
+    return item.findAndGetUint16(tag, value).good() ? int(value) : fallback;
+}
+
+/// Reads `count` decimal values; false when any is missing or not finite.
+bool decimals(DcmItem& item, const DcmTagKey& tag, double* values, int count)
+{
+    for (int n = 0; n < count; ++n)
+    {
+        Float64 value = 0;
+        if (item.findAndGetFloat64(tag, value, n).bad() || !std::isfinite(value))
+            return false;
+        values[n] = value;
+    }
+    return true;
+}
+
+/// Reads whatever of position, orientation, spacing and rescale one item holds into `geometry`.
+void readPlaneAttributes(DcmItem& item, FrameGeometry& geometry)
+{
+    double v[6];
+    if (decimals(item, DCM_ImagePositionPatient, v, 3))
+    {
+        geometry.position = {v[0], v[1], v[2]};
+        geometry.hasPosition = true;
+    }
+    if (decimals(item, DCM_ImageOrientationPatient, v, 6))
+    {
+        const Eigen::Vector3d x(v[0], v[1], v[2]), y(v[3], v[4], v[5]);
+        if (x.norm() > 0.5 && y.norm() > 0.5 && std::abs(x.normalized().dot(y.normalized())) < 1e-3)
+        {
+            geometry.xDirection = x.normalized();
+            geometry.yDirection = y.normalized();
+            geometry.hasOrientation = true;
+        }
+    }
+    if (decimals(item, DCM_PixelSpacing, v, 2) && v[0] > 0 && v[1] > 0)
+    {
+        geometry.rowSpacing = v[0];
+        geometry.columnSpacing = v[1];
+    }
+    if (decimals(item, DCM_SliceThickness, v, 1) && v[0] > 0)
+        geometry.sliceThickness = v[0];
+    if (decimals(item, DCM_RescaleSlope, v, 1) && v[0] != 0.0)
+        geometry.rescaleSlope = v[0];
+    if (decimals(item, DCM_RescaleIntercept, v, 1))
+        geometry.rescaleIntercept = v[0];
+}
+
+/// Functional groups (Enhanced CT/MR): a macro is taken from the frame's own item, else from the shared one.
+DcmItem* functionalGroup(DcmItem* perFrame, DcmItem* shared, const DcmTagKey& sequence)
+{
+    DcmItem* item = nullptr;
+    if (perFrame && perFrame->findAndGetSequenceItem(sequence, item, 0).good() && item)
+        return item;
+    if (shared && shared->findAndGetSequenceItem(sequence, item, 0).good() && item)
+        return item;
+    return nullptr;
+}
+
+std::vector<FrameGeometry> readFrames(DcmDataset& dataset, int frameCount)
+{
+    FrameGeometry common;
+    readPlaneAttributes(dataset, common);
+    DcmItem* shared = nullptr;
+    dataset.findAndGetSequenceItem(DCM_SharedFunctionalGroupsSequence, shared, 0);
+    DcmSequenceOfItems* perFrameSequence = nullptr;
+    dataset.findAndGetSequence(DCM_PerFrameFunctionalGroupsSequence, perFrameSequence);
+    if (!shared && !perFrameSequence)
+        return std::vector<FrameGeometry>(std::size_t(frameCount), common);
+
+    std::vector<FrameGeometry> frames;
+    frames.reserve(std::size_t(frameCount));
+    for (int f = 0; f < frameCount; ++f)
+    {
+        FrameGeometry geometry = common;
+        DcmItem* perFrame =
+            perFrameSequence && f < int(perFrameSequence->card()) ? perFrameSequence->getItem(unsigned(f)) : nullptr;
+        for (const DcmTagKey& macro : {DCM_PlanePositionSequence, DCM_PlaneOrientationSequence,
+                                       DCM_PixelMeasuresSequence, DCM_PixelValueTransformationSequence})
+            if (DcmItem* item = functionalGroup(perFrame, shared, macro))
+                readPlaneAttributes(*item, geometry);
+        frames.push_back(geometry);
+    }
+    return frames;
+}
+
+DicomImageHeader headerOf(DcmFileFormat& fileFormat, const std::filesystem::path& file)
+{
+    DcmDataset& dataset = *fileFormat.getDataset();
+    DicomImageHeader header;
+    header.file = file;
+    header.sopClassUid = text(dataset, DCM_SOPClassUID);
+    if (header.sopClassUid.empty())
+        header.sopClassUid = text(*fileFormat.getMetaInfo(), DCM_MediaStorageSOPClassUID);
+    if (!dataset.tagExists(DCM_PixelData))
+    {
+        if (header.sopClassUid.empty() && !dataset.tagExists(DCM_StudyInstanceUID))
+            throw NotDicomFile("not a DICOM file");
+        throw NotAnImage("DICOM file without pixel data", {{"sop_class", header.sopClassUid}});
+    }
+    header.sopInstanceUid = text(dataset, DCM_SOPInstanceUID);
+    header.studyInstanceUid = text(dataset, DCM_StudyInstanceUID);
+    header.seriesInstanceUid = text(dataset, DCM_SeriesInstanceUID);
+    header.frameOfReferenceUid = text(dataset, DCM_FrameOfReferenceUID);
+    header.modality = text(dataset, DCM_Modality);
+    header.imageType = text(dataset, DCM_ImageType);
+    header.instanceNumber = integer(dataset, DCM_InstanceNumber);
+    header.acquisitionNumber = integer(dataset, DCM_AcquisitionNumber);
+    header.seriesNumber = integer(dataset, DCM_SeriesNumber);
+
+    PixelFormat& format = header.format;
+    format.rows = unsignedShort(dataset, DCM_Rows);
+    format.columns = unsignedShort(dataset, DCM_Columns);
+    format.samplesPerPixel = unsignedShort(dataset, DCM_SamplesPerPixel, 1);
+    format.bitsAllocated = unsignedShort(dataset, DCM_BitsAllocated, 16);
+    format.bitsStored = unsignedShort(dataset, DCM_BitsStored, format.bitsAllocated);
+    format.highBit = unsignedShort(dataset, DCM_HighBit, format.bitsStored - 1);
+    format.isSigned = unsignedShort(dataset, DCM_PixelRepresentation) == 1;
+    format.photometric = text(dataset, DCM_PhotometricInterpretation);
+    format.transferSyntaxUid = DcmXfer(dataset.getOriginalXfer()).getXferID();
+    if (format.rows <= 0 || format.columns <= 0)
+        throw Error("DICOM image has no rows or columns");
+    if (format.bitsAllocated != 8 && format.bitsAllocated != 16)
+        throw Error("unsupported pixel layout: " + std::to_string(format.bitsAllocated) + " bits allocated");
+    if (format.bitsStored < 1 || format.bitsStored > format.bitsAllocated || format.highBit >= format.bitsAllocated ||
+        format.highBit + 1 < format.bitsStored)
+        throw Error("inconsistent Bits Stored / High Bit");
+    const int frameCount = integer(dataset, DCM_NumberOfFrames, 1);
+    if (frameCount < 1 || frameCount > 65535)
+        throw Error("invalid Number of Frames: " + std::to_string(frameCount));
+    header.frames = readFrames(dataset, frameCount);
+
+    const std::pair<const char*, DcmTagKey> attributes[] = {
+        {"patient_name", DCM_PatientName},           {"patient_id", DCM_PatientID},
+        {"patient_birth_date", DCM_PatientBirthDate}, {"patient_sex", DCM_PatientSex},
+        {"study_instance_uid", DCM_StudyInstanceUID}, {"study_date", DCM_StudyDate},
+        {"study_time", DCM_StudyTime},               {"study_description", DCM_StudyDescription},
+        {"accession_number", DCM_AccessionNumber},   {"study_id", DCM_StudyID},
+        {"series_instance_uid", DCM_SeriesInstanceUID}, {"series_date", DCM_SeriesDate},
+        {"series_description", DCM_SeriesDescription}, {"series_number", DCM_SeriesNumber},
+        {"modality", DCM_Modality},                  {"manufacturer", DCM_Manufacturer},
+        {"manufacturer_model", DCM_ManufacturerModelName}, {"body_part_examined", DCM_BodyPartExamined},
+        {"convolution_kernel", DCM_ConvolutionKernel}, {"kvp", DCM_KVP},
+        {"contrast_agent", DCM_ContrastBolusAgent},  {"frame_of_reference_uid", DCM_FrameOfReferenceUID},
+        {"patient_position", DCM_PatientPosition}};
+    for (const auto& [key, tag] : attributes)
+        if (std::string value = text(dataset, tag); !value.empty())
+            header.attributes[key] = value;
+    return header;
+}
+
+bool hasDicomPreamble(const std::filesystem::path& file)
+{
+    std::ifstream stream(file, std::ios::binary);
+    char magic[4] = {};
+    stream.seekg(128);
+    return stream.read(magic, 4) && std::memcmp(magic, "DICM", 4) == 0;
+}
+
+/// Stored value -> HU for one frame. Returns the number of clamped values.
+template <typename Stored>
+std::size_t storedToHu(const Stored* stored, std::size_t count, const PixelFormat& format,
+                       const FrameGeometry& geometry, std::int16_t* out)
+{
+    const int shift = format.highBit + 1 - format.bitsStored;
+    const std::uint32_t mask = format.bitsStored >= 32 ? 0xFFFFFFFFu : ((1u << format.bitsStored) - 1u);
+    const std::int32_t signBit = std::int32_t(1) << (format.bitsStored - 1);
+    const bool plainWords = shift == 0 && format.bitsStored == int(8 * sizeof(Stored));
+    const double slope = geometry.rescaleSlope, intercept = geometry.rescaleIntercept;
+    const bool integerRescale = slope == 1.0 && intercept == std::round(intercept) && std::abs(intercept) < 1e6;
+    const std::int32_t integerIntercept = std::int32_t(intercept);
+    std::size_t clamped = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        std::int32_t raw;
+        if (plainWords)
+            raw = format.isSigned ? std::int32_t(std::make_signed_t<Stored>(stored[i])) : std::int32_t(stored[i]);
+        else
+        {
+            raw = std::int32_t((std::uint32_t(stored[i]) >> shift) & mask);
+            if (format.isSigned && (raw & signBit))
+                raw -= 2 * signBit;
+        }
+        std::int64_t hu = integerRescale ? std::int64_t(raw) + integerIntercept
+                                         : std::llround(double(raw) * slope + intercept);
+        if (hu < std::numeric_limits<std::int16_t>::min() || hu > std::numeric_limits<std::int16_t>::max())
+        {
+            hu = std::clamp<std::int64_t>(hu, std::numeric_limits<std::int16_t>::min(),
+                                          std::numeric_limits<std::int16_t>::max());
+            ++clamped;
+        }
+        out[i] = std::int16_t(hu);
+    }
+    return clamped;
+}
+
+/// Converts frames of stored pixel data (native, local byte order) laid out frame after frame.
+std::size_t convertFrames(const void* pixels, std::size_t bytes, const DicomImageHeader& header,
+                          const std::vector<int>& frames, const std::vector<std::int16_t*>& out)
+{
+    const PixelFormat& format = header.format;
+    const std::size_t perFrame = format.pixelsPerFrame();
+    const std::size_t bytesPerValue = std::size_t(format.bitsAllocated / 8);
+    std::size_t clamped = 0;
+    for (std::size_t n = 0; n < frames.size(); ++n)
+    {
+        const int frame = frames[n];
+        if (frame < 0 || frame >= int(header.frames.size()))
+            throw Error("frame index out of range", {{"frame", std::to_string(frame)}});
+        const std::size_t offset = std::size_t(frame) * perFrame * bytesPerValue;
+        if (offset + perFrame * bytesPerValue > bytes)
+            throw Error("pixel data is shorter than the image it describes (truncated file?)");
+        const auto* base = static_cast<const std::uint8_t*>(pixels) + offset;
+        if (bytesPerValue == 2)
+            clamped += storedToHu(reinterpret_cast<const std::uint16_t*>(base), perFrame, format,
+                                  header.frames[std::size_t(frame)], out[n]);
+        else
+            clamped += storedToHu(base, perFrame, format, header.frames[std::size_t(frame)], out[n]);
+    }
+    return clamped;
+}
+
+bool isJpeg2000(const std::string& transferSyntaxUid)
+{
+    return transferSyntaxUid == UID_JPEG2000LosslessOnlyTransferSyntax || transferSyntaxUid == UID_JPEG2000TransferSyntax;
+}
+
+std::size_t decodeWithGdcm(const DicomImageHeader& header, const std::vector<int>& frames,
+                           const std::vector<std::int16_t*>& out)
+{
+    gdcm::ImageReader reader;
+    reader.SetFileName(header.file.string().c_str());
+    if (!reader.Read())
+        throw Error("GDCM cannot read the JPEG 2000 image");
+    const gdcm::Image& image = reader.GetImage();
+    std::vector<char> buffer(image.GetBufferLength());
+    if (!image.GetBuffer(buffer.data()))
+        throw Error("GDCM cannot decode the JPEG 2000 pixel data");
+    return convertFrames(buffer.data(), buffer.size(), header, frames, out);
+}
+
+std::size_t decodeWithDcmtk(DcmFileFormat& fileFormat, const DicomImageHeader& header, const std::vector<int>& frames,
+                            const std::vector<std::int16_t*>& out)
+{
+    DcmDataset& dataset = *fileFormat.getDataset();
+    if (DcmXfer(dataset.getOriginalXfer()).isEncapsulated())
+    {
+        const OFCondition status = dataset.chooseRepresentation(EXS_LittleEndianExplicit, nullptr);
+        if (status.bad() || !dataset.canWriteXfer(EXS_LittleEndianExplicit))
+            throw Error("cannot decompress the pixel data",
+                        {{"transfer_syntax", header.format.transferSyntaxUid}, {"reason", status.text()}});
+    }
+    DcmElement* element = nullptr;
+    if (dataset.findAndGetElement(DCM_PixelData, element).bad() || !element)
+        throw Error("pixel data missing");
+    const Uint32 bytes = element->getLength();
+    const void* pixels = nullptr;
+    if (header.format.bitsAllocated == 16)
+    {
+        Uint16* words = nullptr;
+        if (element->getUint16Array(words).good())
+            pixels = words;
+    }
+    else
+    {
+        Uint8* values = nullptr;
+        if (element->getUint8Array(values).good())
+            pixels = values;
+    }
+    if (!pixels)
+        throw Error("cannot read the pixel data");
+    return convertFrames(pixels, bytes, header, frames, out);
+}
+
+void checkDecodable(const DicomImageHeader& header)
+{
+    if (!header.format.isGrayscale())
+        throw Error("not a greyscale image", {{"photometric", header.format.photometric}});
+}
+
+} // namespace
+
+DicomImageHeader readDicomHeader(const std::filesystem::path& file)
+{
+    ensureDcmtkCodecs();
+    DcmFileFormat fileFormat;
+    const OFCondition status =
+        fileFormat.loadFile(file.string().c_str(), EXS_Unknown, EGL_noChange, kHeaderReadLength, ERM_autoDetect);
+    if (status.bad())
+    {
+        if (hasDicomPreamble(file))
+            throw Error("damaged or truncated DICOM file", {{"reason", status.text()}});
+        throw NotDicomFile("not a DICOM file", {{"reason", status.text()}});
+    }
+    return headerOf(fileFormat, file);
+}
+
+std::size_t decodeFramesToHu(const DicomImageHeader& header, const std::vector<int>& frames,
+                             const std::vector<std::int16_t*>& out)
+{
+    if (frames.size() != out.size())
+        throw Error("decodeFramesToHu: one output per frame expected");
+    checkDecodable(header);
+    if (isJpeg2000(header.format.transferSyntaxUid))
+        return decodeWithGdcm(header, frames, out);
+    ensureDcmtkCodecs();
+    DcmFileFormat fileFormat;
+    const OFCondition status = fileFormat.loadFile(header.file.string().c_str());
+    if (status.bad())
+        throw Error("damaged or truncated DICOM file", {{"reason", status.text()}});
+    return decodeWithDcmtk(fileFormat, header, frames, out);
+}
+
+DicomImageHeader parseDicomBuffer(const std::uint8_t* data, std::size_t size, std::vector<std::int16_t>& hu,
+                                  std::size_t maxVoxels)
+{
+    ensureDcmtkCodecs();
+    DcmInputBufferStream stream;
+    stream.setBuffer(data, offile_off_t(size));
+    stream.setEos();
+    DcmFileFormat fileFormat;
+    fileFormat.transferInit();
+    const OFCondition status = fileFormat.read(stream, EXS_Unknown, EGL_noChange, DCM_MaxReadLength);
+    fileFormat.transferEnd();
+    if (status.bad())
+        throw NotDicomFile("not a DICOM file", {{"reason", status.text()}});
+    DicomImageHeader header = headerOf(fileFormat, {});
+    checkDecodable(header);
+    const std::size_t voxels = header.format.pixelsPerFrame() * header.frames.size();
+    if (voxels > maxVoxels)
+        throw Error("image larger than the limit", {{"voxels", std::to_string(voxels)}});
+    if (isJpeg2000(header.format.transferSyntaxUid))
+        throw Error("JPEG 2000 is decoded from files only");
+    hu.resize(voxels);
+    std::vector<int> frames(header.frames.size());
+    std::vector<std::int16_t*> out(header.frames.size());
+    for (std::size_t f = 0; f < frames.size(); ++f)
+    {
+        frames[f] = int(f);
+        out[f] = hu.data() + f * header.format.pixelsPerFrame();
+    }
+    decodeWithDcmtk(fileFormat, header, frames, out);
+    return header;
+}
+
+} // namespace vsim::dicom

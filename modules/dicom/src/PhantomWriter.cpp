@@ -1,0 +1,47 @@
+#include "vsim/dicom/PhantomWriter.h"
+
+#include "vsim/dicom/PhantomRender.h"
+#include "vsim/interop/NrrdFile.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+namespace vsim::dicom {
+
+CtSeriesDescription phantomSeriesDescription(PhantomKind kind)
+{
+    std::string upper = phantomKindName(kind);
+    std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+    CtSeriesDescription description;
+    description.patientName = "PHANTOM^" + upper;
+    description.patientId = "VSIM-" + upper;
+    description.studyDescription = "CT angiography phantom (" + phantomKindName(kind) + ")";
+    description.seriesDescription = "CTA arterial phase, " + phantomKindName(kind) + " phantom";
+    return description;
+}
+
+PhantomFiles writePhantom(PhantomKind kind, const PhantomOptions& options, const CtSeriesDescription& description,
+                          const std::filesystem::path& out, const Progress& progress)
+{
+    const PhantomModel model = buildPhantomModel(kind, options);
+    PhantomFiles files;
+    files.geometry = phantomGeometry(options);
+    files.dicomFolder = out / "dicom";
+    files.truthJson = out / "truth.json";
+    files.truthLabels = out / "truth-label.nrrd";
+
+    const CtVolume ct = renderPhantomCt(model, stackOf(files.geometry), options, progress.subRange(0.0, 0.45));
+    files.series = writeCtSeries(ct, stackOf(files.geometry), description, files.dicomFolder,
+                                 progress.subRange(0.45, 0.85));
+    const LabelVolume labels = renderPhantomLabels(model, files.geometry, progress.subRange(0.85, 0.97));
+    interop::writeNrrd(labels, files.truthLabels, true);
+    std::ofstream truth(files.truthJson, std::ios::trunc);
+    truth << phantomTruthJson(model, options);
+    if (!truth.flush())
+        throw Error("cannot write truth.json", {{"file", files.truthJson.string()}});
+    progress.report(1.0, "phantom written");
+    return files;
+}
+
+} // namespace vsim::dicom
