@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <unistd.h>
 
 namespace {
 
@@ -48,10 +49,14 @@ int main(int argc, char** argv)
     std::signal(SIGINT, onInterrupt);
     const std::string command = words[0];
     const vsim::cli::Arguments arguments = vsim::cli::parseArguments({words.begin() + 1, words.end()});
+    // A progress line only on a terminal: logs and pipes get the result and the errors alone.
+    const bool showProgress = isatty(STDERR_FILENO) == 1;
     int lastPercent = -1;
     const vsim::Progress progress(
-        [&lastPercent](double fraction, const std::string& stage) {
+        [&lastPercent, showProgress](double fraction, const std::string& stage) {
             const int percent = static_cast<int>(fraction * 100.0);
+            if (!showProgress)
+                return;
             if (percent == lastPercent)
                 return;
             lastPercent = percent;
@@ -75,19 +80,19 @@ int main(int argc, char** argv)
     }
     catch (const vsim::Cancelled&)
     {
-        std::cerr << "\ncancelled; nothing was written\n";
+        std::cerr << (lastPercent >= 0 ? "\n" : "") << "cancelled; nothing was written\n";
         return 130;
     }
     catch (const vsim::Error& error)
     {
-        std::cerr << "\nerror: " << error.message() << "\n";
+        std::cerr << (lastPercent >= 0 ? "\n" : "") << "error: " << error.message() << "\n";
         for (const auto& [key, value] : error.context())
             std::cerr << "  " << key << ": " << value << "\n";
         return 1;
     }
     catch (const std::exception& error)
     {
-        std::cerr << "\nerror: " << error.what() << "\n";
+        std::cerr << (lastPercent >= 0 ? "\n" : "") << "error: " << error.what() << "\n";
         return 1;
     }
 }

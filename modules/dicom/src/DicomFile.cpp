@@ -5,12 +5,15 @@
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
-#include <dcmtk/dcmdata/dcistrmb.h>
 #include <dcmtk/dcmdata/dcmetinf.h>
 #include <dcmtk/dcmdata/dcpixel.h>
+#include <dcmtk/dcmdata/dcpixseq.h>
+#include <dcmtk/dcmdata/dcpxitem.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmdata/dcxfer.h>
-#include <gdcmImageReader.h>
+#include <gdcmJPEG2000Codec.h>
+#include <gdcmSequenceOfFragments.h>
+#include <gdcmTrace.h>
 
 #include <algorithm>
 #include <cmath>
@@ -274,24 +277,107 @@ bool isJpeg2000(const std::string& transferSyntaxUid)
     return transferSyntaxUid == UID_JPEG2000LosslessOnlyTransferSyntax || transferSyntaxUid == UID_JPEG2000TransferSyntax;
 }
 
-std::size_t decodeWithGdcm(const DicomImageHeader& header, const std::vector<int>& frames,
+std::uint32_t bigEndian32(const std::uint8_t* p)
+{
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | std::uint32_t(p[3]);
+}
+
+/// Refuses a JPEG 2000 code stream whose image size (SIZ marker) is not the DICOM image's: the decoder would
+/// allocate what the code stream declares, however large.
+void checkJpeg2000Size(const std::string& codestream, const PixelFormat& format)
+{
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(codestream.data());
+    constexpr std::size_t kSizFields = 2 + 2 + 4 * 4; // Lsiz, Rsiz, Xsiz, Ysiz, XOsiz, YOsiz
+    for (std::size_t i = 0; i + 4 + kSizFields <= std::min<std::size_t>(codestream.size(), 4096); ++i)
+        if (bytes[i] == 0xFF && bytes[i + 1] == 0x4F && bytes[i + 2] == 0xFF && bytes[i + 3] == 0x51) // SOC, SIZ
+        {
+            const std::uint8_t* siz = bytes + i + 4 + 4;
+            const std::uint32_t xsiz = bigEndian32(siz), ysiz = bigEndian32(siz + 4);
+            const std::uint32_t xosiz = bigEndian32(siz + 8), yosiz = bigEndian32(siz + 12);
+            if (xosiz > xsiz || yosiz > ysiz || xsiz - xosiz != std::uint32_t(format.columns) ||
+                ysiz - yosiz != std::uint32_t(format.rows))
+                throw Error("JPEG 2000 code stream size differs from the image's rows and columns");
+            return;
+        }
+    throw Error("JPEG 2000 pixel data has no code stream header");
+}
+
+/// The compressed bytes of each frame: one fragment per frame, or all fragments of a single-frame image.
+std::vector<std::string> frameCodestreams(DcmDataset& dataset, const DicomImageHeader& header)
+{
+    DcmElement* element = nullptr;
+    DcmPixelSequence* sequence = nullptr;
+    if (dataset.findAndGetElement(DCM_PixelData, element).bad() || !element ||
+        static_cast<DcmPixelData*>(element)->getEncapsulatedRepresentation(dataset.getOriginalXfer(), nullptr, sequence).bad() ||
+        !sequence || sequence->card() < 2)
+        throw Error("JPEG 2000 pixel data has no fragments");
+    const unsigned long fragments = sequence->card() - 1; // item 0 is the basic offset table
+    const std::size_t frames = header.frames.size();
+    if (frames != 1 && fragments != frames)
+        throw Error("multi-frame JPEG 2000 with several fragments per frame is not supported");
+    std::vector<std::string> codestreams(frames);
+    for (unsigned long f = 0; f < fragments; ++f)
+    {
+        DcmPixelItem* item = nullptr;
+        Uint8* bytes = nullptr;
+        if (sequence->getItem(item, f + 1).bad() || !item || item->getUint8Array(bytes).bad() || !bytes)
+            throw Error("JPEG 2000 fragment unreadable");
+        codestreams[frames == 1 ? 0 : f].append(reinterpret_cast<const char*>(bytes), item->getLength());
+    }
+    return codestreams;
+}
+
+/// JPEG 2000 (DCMTK 3.6.7 has no decoder): the code streams are taken from DCMTK's parse and decoded by GDCM's
+/// JPEG 2000 codec (OpenJPEG), one frame at a time.
+std::size_t decodeJpeg2000(DcmDataset& dataset, const DicomImageHeader& header, const std::vector<int>& frames,
                            const std::vector<std::int16_t*>& out)
 {
-    gdcm::ImageReader reader;
-    reader.SetFileName(header.file.string().c_str());
-    if (!reader.Read())
-        throw Error("GDCM cannot read the JPEG 2000 image");
-    const gdcm::Image& image = reader.GetImage();
-    std::vector<char> buffer(image.GetBufferLength());
-    if (!image.GetBuffer(buffer.data()))
-        throw Error("GDCM cannot decode the JPEG 2000 pixel data");
-    return convertFrames(buffer.data(), buffer.size(), header, frames, out);
+    static const bool quiet = [] {
+        gdcm::Trace::DebugOff();
+        gdcm::Trace::WarningOff();
+        gdcm::Trace::ErrorOff();
+        return true;
+    }();
+    (void)quiet;
+    const PixelFormat& format = header.format;
+    const std::vector<std::string> codestreams = frameCodestreams(dataset, header);
+    DicomImageHeader single = header; // one frame at a time through convertFrames
+    std::size_t clamped = 0;
+    for (std::size_t n = 0; n < frames.size(); ++n)
+    {
+        if (frames[n] < 0 || std::size_t(frames[n]) >= codestreams.size())
+            throw Error("frame index out of range", {{"frame", std::to_string(frames[n])}});
+        const std::string& codestream = codestreams[std::size_t(frames[n])];
+        checkJpeg2000Size(codestream, format);
+        gdcm::JPEG2000Codec codec;
+        codec.SetNumberOfDimensions(2);
+        const unsigned int dimensions[3] = {unsigned(format.columns), unsigned(format.rows), 1};
+        codec.SetDimensions(dimensions);
+        codec.SetPixelFormat(gdcm::PixelFormat(1, std::uint8_t(format.bitsAllocated), std::uint8_t(format.bitsStored),
+                                               std::uint8_t(format.highBit), format.isSigned ? 1 : 0));
+        codec.SetPhotometricInterpretation(gdcm::PhotometricInterpretation::MONOCHROME2);
+        gdcm::SmartPointer<gdcm::SequenceOfFragments> fragments = new gdcm::SequenceOfFragments;
+        gdcm::Fragment fragment;
+        fragment.SetByteValue(codestream.data(), gdcm::VL(std::uint32_t(codestream.size())));
+        fragments->AddFragment(fragment);
+        gdcm::DataElement compressed(gdcm::Tag(0x7fe0, 0x0010));
+        compressed.SetValue(*fragments);
+        gdcm::DataElement decoded;
+        const gdcm::ByteValue* pixels = codec.Decode(compressed, decoded) ? decoded.GetByteValue() : nullptr;
+        if (!pixels)
+            throw Error("cannot decode the JPEG 2000 code stream");
+        single.frames = {header.frames[std::size_t(frames[n])]};
+        clamped += convertFrames(pixels->GetPointer(), pixels->GetLength(), single, {0}, {out[n]});
+    }
+    return clamped;
 }
 
 std::size_t decodeWithDcmtk(DcmFileFormat& fileFormat, const DicomImageHeader& header, const std::vector<int>& frames,
                             const std::vector<std::int16_t*>& out)
 {
     DcmDataset& dataset = *fileFormat.getDataset();
+    if (isJpeg2000(header.format.transferSyntaxUid))
+        return decodeJpeg2000(dataset, header, frames, out);
     if (DcmXfer(dataset.getOriginalXfer()).isEncapsulated())
     {
         const OFCondition status = dataset.chooseRepresentation(EXS_LittleEndianExplicit, nullptr);
@@ -303,6 +389,10 @@ std::size_t decodeWithDcmtk(DcmFileFormat& fileFormat, const DicomImageHeader& h
     if (dataset.findAndGetElement(DCM_PixelData, element).bad() || !element)
         throw Error("pixel data missing");
     const Uint32 bytes = element->getLength();
+    std::error_code error;
+    if (!DcmXfer(dataset.getOriginalXfer()).isEncapsulated() && !header.file.empty() &&
+        bytes > std::filesystem::file_size(header.file, error) && !error) // checked before DCMTK allocates it
+        throw Error("pixel data longer than the file (damaged length or truncated file)");
     const void* pixels = nullptr;
     if (header.format.bitsAllocated == 16)
     {
@@ -350,46 +440,12 @@ std::size_t decodeFramesToHu(const DicomImageHeader& header, const std::vector<i
     if (frames.size() != out.size())
         throw Error("decodeFramesToHu: one output per frame expected");
     checkDecodable(header);
-    if (isJpeg2000(header.format.transferSyntaxUid))
-        return decodeWithGdcm(header, frames, out);
     ensureDcmtkCodecs();
     DcmFileFormat fileFormat;
     const OFCondition status = fileFormat.loadFile(header.file.string().c_str());
     if (status.bad())
         throw Error("damaged or truncated DICOM file", {{"reason", status.text()}});
     return decodeWithDcmtk(fileFormat, header, frames, out);
-}
-
-DicomImageHeader parseDicomBuffer(const std::uint8_t* data, std::size_t size, std::vector<std::int16_t>& hu,
-                                  std::size_t maxVoxels)
-{
-    ensureDcmtkCodecs();
-    DcmInputBufferStream stream;
-    stream.setBuffer(data, offile_off_t(size));
-    stream.setEos();
-    DcmFileFormat fileFormat;
-    fileFormat.transferInit();
-    const OFCondition status = fileFormat.read(stream, EXS_Unknown, EGL_noChange, DCM_MaxReadLength);
-    fileFormat.transferEnd();
-    if (status.bad())
-        throw NotDicomFile("not a DICOM file", {{"reason", status.text()}});
-    DicomImageHeader header = headerOf(fileFormat, {});
-    checkDecodable(header);
-    const std::size_t voxels = header.format.pixelsPerFrame() * header.frames.size();
-    if (voxels > maxVoxels)
-        throw Error("image larger than the limit", {{"voxels", std::to_string(voxels)}});
-    if (isJpeg2000(header.format.transferSyntaxUid))
-        throw Error("JPEG 2000 is decoded from files only");
-    hu.resize(voxels);
-    std::vector<int> frames(header.frames.size());
-    std::vector<std::int16_t*> out(header.frames.size());
-    for (std::size_t f = 0; f < frames.size(); ++f)
-    {
-        frames[f] = int(f);
-        out[f] = hu.data() + f * header.format.pixelsPerFrame();
-    }
-    decodeWithDcmtk(fileFormat, header, frames, out);
-    return header;
 }
 
 } // namespace vsim::dicom

@@ -93,9 +93,4 @@ DicomImageHeader readDicomHeader(const std::filesystem::path& file);
 std::size_t decodeFramesToHu(const DicomImageHeader& header, const std::vector<int>& frames,
                              const std::vector<std::int16_t*>& out);
 
-/// Parses and decodes a file held in memory, as the scanner and importer would (for the fuzzer): returns the
-/// header and fills `hu` with every frame, unless the image is larger than `maxVoxels`. Throws like the above.
-DicomImageHeader parseDicomBuffer(const std::uint8_t* data, std::size_t size, std::vector<std::int16_t>& hu,
-                                  std::size_t maxVoxels = std::size_t(64) << 20);
-
 } // namespace vsim::dicom
