@@ -1,7 +1,10 @@
 #include "MainWindow.h"
 
 #include "ArtifactCommands.h"
+#include "DicomImportDialog.h"
 #include "ViewLayout.h"
+#include "vsim/app/DicomStudyImport.h"
+#include "vsim/dicom/DicomImport.h"
 #include "vsim/study/VolumeFileImport.h"
 
 #include <QCloseEvent>
@@ -93,6 +96,10 @@ void MainWindow::createDocks()
             item->setToolTip(tr("Not available in this version yet"));
         }
     }
+    connect(m_workflow, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
+        if (item->text() == tr("Import") && m_document.hasStudy() && !m_tasks.isBusy())
+            showDicomImportDialog();
+    });
     auto* workflowDock = new QDockWidget(tr("Workflow"), this);
     workflowDock->setObjectName("workflowDock");
     workflowDock->setWidget(m_workflow);
@@ -253,6 +260,45 @@ bool MainWindow::importVolume(const QString& file)
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Import %1").arg(QFileInfo(file).fileName())));
             m_views->showImage(imported->image);
         });
+}
+
+bool MainWindow::importDicom(const QString& path, const QString& seriesKey,
+                             std::shared_ptr<const dicom::DicomScanResult> scan)
+{
+    if (!m_document.hasStudy())
+        return false;
+    auto volume = std::make_shared<dicom::DicomVolume>();
+    return m_tasks.run(
+        tr("Import DICOM"),
+        [input = path.toStdString(), wanted = seriesKey.toStdString(), scan, volume](const Progress& progress) {
+            std::shared_ptr<const dicom::DicomScanResult> scanned = scan;
+            if (!scanned)
+                scanned = std::make_shared<const dicom::DicomScanResult>(dicom::scanDicom(input, progress.subRange(0.0, 0.2)));
+            *volume = dicom::importDicomSeries(app::chooseSeries(*scanned, wanted), {}, progress.subRange(0.2, 1.0));
+        },
+        [this, path, volume] {
+            try
+            {
+                const std::string id = app::addDicomVolumeToStudy(m_document.study(), *volume, path.toStdString());
+                const QString name = QString::fromStdString(m_document.study().artifact(id).name);
+                m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Import %1").arg(name)));
+                m_views->showImage(volume->image);
+            }
+            catch (const Error& error)
+            {
+                showError(tr("Import DICOM"), QString::fromStdString(error.message()));
+            }
+        });
+}
+
+void MainWindow::showDicomImportDialog()
+{
+    auto* dialog = new DicomImportDialog(this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        importDicom(dialog->scannedPath(), dialog->selectedSeriesKey(), dialog->scanResult());
+    });
+    dialog->open();
 }
 
 bool MainWindow::saveStudy()

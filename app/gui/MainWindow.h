@@ -2,8 +2,11 @@
 
 #include "StudyDocument.h"
 #include "TaskRunner.h"
+#include "vsim/dicom/DicomScan.h"
 
 #include <QMainWindow>
+
+#include <memory>
 
 class QLabel;
 class QListWidget;
@@ -36,6 +39,12 @@ public:
     bool newStudy(const QString& bundle);
     /// Imports a NIfTI / NRRD / MetaImage file in the background and shows it; undoable.
     bool importVolume(const QString& file);
+    /// Imports a DICOM series in the background (scanning `path` first unless `scan` is given) and shows it;
+    /// `seriesKey` empty picks the CT with most slices. Undoable; progress and Cancel in the status bar.
+    bool importDicom(const QString& path, const QString& seriesKey = {},
+                     std::shared_ptr<const dicom::DicomScanResult> scan = {});
+    /// Opens the Import DICOM dialog and imports what the user picks.
+    void showDicomImportDialog();
     /// Saves in the background; false if there is no study or a task is running.
     bool saveStudy();
     /// Saves to a new bundle in the background.

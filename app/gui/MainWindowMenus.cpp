@@ -38,6 +38,8 @@ void MainWindow::createMenus()
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
     file->addSeparator();
+    m_documentActions << file->addAction(tr("Import &DICOM..."), QKeySequence(tr("Ctrl+D")), this,
+                                         &MainWindow::showDicomImportDialog);
     m_documentActions << file->addAction(tr("&Import Volume..."), QKeySequence(tr("Ctrl+I")), this, [this] {
         const QString volume = QFileDialog::getOpenFileName(this, tr("Import volume"), QString(), tr(kVolumeFilter));
         if (!volume.isEmpty())

@@ -81,21 +81,27 @@ json seriesJson(const dicom::DicomSeries& series)
 
 } // namespace
 
+std::string addDicomVolumeToStudy(study::Study& study, const dicom::DicomVolume& volume,
+                                  const std::filesystem::path& source)
+{
+    adoptStudyMetadata(study, volume.attributes);
+    study::Provenance provenance;
+    provenance.command = "import dicom";
+    provenance.parameters = {{"series", attribute(volume.attributes, "series_key")}};
+    provenance.inputs = {source.string()};
+    std::string name = attribute(volume.attributes, "series_description");
+    if (name.empty())
+        name = "DICOM series " + attribute(volume.attributes, "series_number");
+    const std::string id = study.addImage(volume.image, name, provenance, volume.warnings);
+    study.setArtifactAttributes(id, volume.attributes);
+    return id;
+}
+
 std::string importDicomSeriesIntoStudy(study::Study& study, const dicom::DicomSeries& series,
                                        const std::filesystem::path& source, const dicom::DicomImportOptions& options,
                                        const Progress& progress)
 {
-    dicom::DicomVolume volume = dicom::importDicomSeries(series, options, progress);
-    adoptStudyMetadata(study, volume.attributes);
-    study::Provenance provenance;
-    provenance.command = "import dicom";
-    provenance.parameters = {{"series", series.key}};
-    provenance.inputs = {source.string()};
-    const std::string name = series.description.empty() ? "DICOM series " + std::to_string(series.seriesNumber)
-                                                        : series.description;
-    const std::string id = study.addImage(volume.image, name, provenance, volume.warnings);
-    study.setArtifactAttributes(id, volume.attributes);
-    return id;
+    return addDicomVolumeToStudy(study, dicom::importDicomSeries(series, options, progress), source);
 }
 
 const dicom::DicomSeries& chooseSeries(const dicom::DicomScanResult& scan, const std::string& keyOrUid)

@@ -302,29 +302,83 @@ void checkJpeg2000Size(const std::string& codestream, const PixelFormat& format)
     throw Error("JPEG 2000 pixel data has no code stream header");
 }
 
-/// The compressed bytes of each frame: one fragment per frame, or all fragments of a single-frame image.
-std::vector<std::string> frameCodestreams(DcmDataset& dataset, const DicomImageHeader& header)
+/// The fragments of encapsulated pixel data (item 0, the basic offset table, excluded).
+std::vector<std::pair<const Uint8*, std::size_t>> pixelFragments(DcmDataset& dataset)
 {
     DcmElement* element = nullptr;
     DcmPixelSequence* sequence = nullptr;
     if (dataset.findAndGetElement(DCM_PixelData, element).bad() || !element ||
         static_cast<DcmPixelData*>(element)->getEncapsulatedRepresentation(dataset.getOriginalXfer(), nullptr, sequence).bad() ||
         !sequence || sequence->card() < 2)
-        throw Error("JPEG 2000 pixel data has no fragments");
-    const unsigned long fragments = sequence->card() - 1; // item 0 is the basic offset table
-    const std::size_t frames = header.frames.size();
-    if (frames != 1 && fragments != frames)
-        throw Error("multi-frame JPEG 2000 with several fragments per frame is not supported");
-    std::vector<std::string> codestreams(frames);
-    for (unsigned long f = 0; f < fragments; ++f)
+        throw Error("compressed pixel data has no fragments");
+    std::vector<std::pair<const Uint8*, std::size_t>> fragments;
+    for (unsigned long f = 1; f < sequence->card(); ++f)
     {
         DcmPixelItem* item = nullptr;
         Uint8* bytes = nullptr;
-        if (sequence->getItem(item, f + 1).bad() || !item || item->getUint8Array(bytes).bad() || !bytes)
-            throw Error("JPEG 2000 fragment unreadable");
-        codestreams[frames == 1 ? 0 : f].append(reinterpret_cast<const char*>(bytes), item->getLength());
+        if (sequence->getItem(item, f).bad() || !item || item->getUint8Array(bytes).bad() || !bytes)
+            throw Error("compressed pixel data fragment unreadable");
+        fragments.emplace_back(bytes, item->getLength());
     }
+    return fragments;
+}
+
+/// The compressed bytes of each frame: one fragment per frame, or all fragments of a single-frame image.
+std::vector<std::string> frameCodestreams(DcmDataset& dataset, const DicomImageHeader& header)
+{
+    const auto fragments = pixelFragments(dataset);
+    const std::size_t frames = header.frames.size();
+    if (frames != 1 && fragments.size() != frames)
+        throw Error("multi-frame JPEG 2000 with several fragments per frame is not supported");
+    std::vector<std::string> codestreams(frames);
+    for (std::size_t f = 0; f < fragments.size(); ++f)
+        codestreams[frames == 1 ? 0 : f].append(reinterpret_cast<const char*>(fragments[f].first), fragments[f].second);
     return codestreams;
+}
+
+bool isJpegFamily(const std::string& transferSyntaxUid)
+{
+    return transferSyntaxUid.rfind("1.2.840.10008.1.2.4.", 0) == 0 && !isJpeg2000(transferSyntaxUid);
+}
+
+/// Walks the marker segments of a JPEG / JPEG-LS header up to the start of scan (ITU T.81 B.1.1): fill bytes,
+/// stand-alone markers, segment lengths of at least 2 within the data, a frame header before the scan. DCMTK
+/// 3.6.7 loops forever on some malformed headers (found by fuzzing), so they are refused before it sees them.
+void checkJpegHeader(const Uint8* data, std::size_t length)
+{
+    std::size_t at = 0;
+    bool frameHeader = false;
+    if (length < 4 || data[0] != 0xFF || data[1] != 0xD8)
+        throw Error("damaged JPEG stream: no start of image");
+    at = 2;
+    while (true)
+    {
+        if (at >= length || data[at] != 0xFF)
+            throw Error("damaged JPEG stream: marker expected");
+        while (at < length && data[at] == 0xFF) // fill bytes
+            ++at;
+        if (at >= length)
+            throw Error("damaged JPEG stream: ends in fill bytes");
+        const Uint8 marker = data[at++];
+        if (marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) // TEM, RSTn: no length
+            continue;
+        if (marker == 0xD9 || marker == 0xD8 || marker == 0x00)
+            throw Error("damaged JPEG stream: unexpected marker before the scan");
+        if (at + 2 > length)
+            throw Error("damaged JPEG stream: truncated marker segment");
+        const std::size_t segment = std::size_t(data[at]) << 8 | data[at + 1];
+        if (segment < 2 || at + segment > length)
+            throw Error("damaged JPEG stream: bad marker segment length");
+        if (marker == 0xDA) // start of scan: the header is complete
+        {
+            if (!frameHeader)
+                throw Error("damaged JPEG stream: scan without a frame header");
+            return;
+        }
+        frameHeader |= (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC) ||
+                       marker == 0xF7; // SOFn, SOF55 (JPEG-LS)
+        at += segment;
+    }
 }
 
 /// JPEG 2000 (DCMTK 3.6.7 has no decoder): the code streams are taken from DCMTK's parse and decoded by GDCM's
@@ -378,6 +432,13 @@ std::size_t decodeWithDcmtk(DcmFileFormat& fileFormat, const DicomImageHeader& h
     DcmDataset& dataset = *fileFormat.getDataset();
     if (isJpeg2000(header.format.transferSyntaxUid))
         return decodeJpeg2000(dataset, header, frames, out);
+    if (isJpegFamily(header.format.transferSyntaxUid))
+    {
+        const auto fragments = pixelFragments(dataset);
+        for (std::size_t f = 0; f < fragments.size(); ++f)
+            if (f == 0 || (fragments[f].second >= 2 && fragments[f].first[0] == 0xFF && fragments[f].first[1] == 0xD8))
+                checkJpegHeader(fragments[f].first, fragments[f].second);
+    }
     if (DcmXfer(dataset.getOriginalXfer()).isEncapsulated())
     {
         const OFCondition status = dataset.chooseRepresentation(EXS_LittleEndianExplicit, nullptr);

@@ -13,6 +13,12 @@ class Study;
 
 namespace vsim::app {
 
+/// Adds a decoded series to the study as an image with provenance (the series key, the source), the DICOM
+/// attributes and the import warnings; fills the study's patient and study metadata when empty. Returns the id.
+/// Throws vsim::Error when the series belongs to another patient than the study's.
+std::string addDicomVolumeToStudy(study::Study& study, const dicom::DicomVolume& volume,
+                                  const std::filesystem::path& source);
+
 /// Decodes a scanned series and adds it to the study as an image with provenance (the series key, the source),
 /// the DICOM attributes and the import warnings; fills the study's patient and study metadata when empty.
 /// Throws vsim::Error when the series belongs to another patient than the study's, or cannot be imported.
