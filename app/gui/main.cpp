@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QLocale>
+#include <QProgressDialog>
 #include <QSurfaceFormat>
 #include <QTranslator>
 
@@ -41,7 +42,15 @@ int main(int argc, char** argv)
     {
         try
         {
-            window->openStudy(QString::fromStdString(vsim::app::ensureDemoStudy(vsim::app::defaultDemoStudyPath()).string()));
+            // First use writes the full-size aaa phantom (some seconds): a modal progress dialog meanwhile.
+            QProgressDialog writing(QObject::tr("Writing the demo study (aaa phantom)..."), QString(), 0, 100, window);
+            writing.setWindowModality(Qt::WindowModal);
+            writing.setMinimumDuration(500);
+            const vsim::Progress progress(
+                [&writing](double fraction, const std::string&) { writing.setValue(int(fraction * 100.0)); }, {});
+            const auto bundle = vsim::app::ensureDemoStudy(vsim::app::defaultDemoStudyPath(), progress);
+            writing.setValue(100);
+            window->openStudy(QString::fromStdString(bundle.string()));
         }
         catch (const std::exception& error)
         {
