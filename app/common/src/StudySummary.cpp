@@ -34,6 +34,7 @@ std::string studySummaryJson(const study::Study& study)
                       {"bytes", artifact.bytes},
                       {"damaged", artifact.damaged},
                       {"warnings", artifact.warnings},
+                      {"attributes", artifact.attributes},
                       {"provenance",
                        {{"command", artifact.provenance.command},
                         {"parameters", artifact.provenance.parameters},
