@@ -2,13 +2,444 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>QObject</name>
+    <message>
+        <location filename="../app/gui/main.cpp" line="46"/>
+        <source>Writing the demo study (aaa phantom)...</source>
+        <translation>Demo-Studie wird geschrieben (AAA-Phantom)...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ArtifactCommands.cpp" line="11"/>
+        <source>Rename &quot;%1&quot;</source>
+        <translation>&quot;%1&quot; umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ArtifactCommands.cpp" line="29"/>
+        <source>Delete &quot;%1&quot;</source>
+        <translation>&quot;%1&quot; löschen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="56"/>
+        <source>cannot be placed</source>
+        <translation>nicht platzierbar</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::DicomImportDialog</name>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="64"/>
+        <source>Import DICOM</source>
+        <translation>DICOM importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="69"/>
+        <source>Folder, DICOMDIR or file</source>
+        <translation>Ordner, DICOMDIR oder Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="70"/>
+        <source>Browse...</source>
+        <translation>Durchsuchen...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="71"/>
+        <source>Scan</source>
+        <translation>Einlesen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="79"/>
+        <source>Patient / study / series</source>
+        <translation>Patient / Studie / Serie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="79"/>
+        <source>Modality</source>
+        <translation>Modalität</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="79"/>
+        <source>Slices</source>
+        <translation>Schichten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="79"/>
+        <source>Voxel spacing (mm)</source>
+        <translation>Voxelabstand (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="80"/>
+        <source>Warnings</source>
+        <translation>Warnungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="88"/>
+        <source>Stop</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="96"/>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="106"/>
+        <source>DICOM folder</source>
+        <translation>DICOM-Ordner</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="157"/>
+        <source>Reading DICOM headers...</source>
+        <translation>DICOM-Header werden gelesen...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="202"/>
+        <source>(no name)</source>
+        <translation>(kein Name)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="203"/>
+        <source>no ID</source>
+        <translation>keine ID</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="209"/>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="219"/>
+        <source>(no description)</source>
+        <translation>(keine Beschreibung)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/DicomImportDialog.cpp" line="229"/>
+        <source>%n file(s), %1 series</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DicomImportDialog.cpp" line="240"/>
+        <source> (making previews)</source>
+        <translation> (Vorschauen werden erstellt)</translation>
+    </message>
+</context>
+<context>
     <name>vsim::gui::MainWindow</name>
-    <message><source>&amp;File</source><translation>&amp;Datei</translation></message>
-    <message><source>&amp;Edit</source><translation>&amp;Bearbeiten</translation></message>
-    <message><source>&amp;View</source><translation>&amp;Ansicht</translation></message>
-    <message><source>&amp;Help</source><translation>&amp;Hilfe</translation></message>
-    <message><source>Study</source><translation>Studie</translation></message>
-    <message><source>Workflow</source><translation>Arbeitsablauf</translation></message>
-    <message><source>Cancel</source><translation>Abbrechen</translation></message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="27"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="28"/>
+        <source>&amp;New Study...</source>
+        <translation>&amp;Neue Studie...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
+        <source>Study folder (*.vsim)</source>
+        <translation>Studienordner (*.vsim)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="33"/>
+        <source>&amp;Open Study...</source>
+        <translation>Studie ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="38"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="41"/>
+        <source>Import &amp;DICOM...</source>
+        <translation>&amp;DICOM importieren...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="41"/>
+        <source>Ctrl+D</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="43"/>
+        <source>&amp;Import Volume...</source>
+        <translation>Volumen &amp;importieren...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="43"/>
+        <source>Ctrl+I</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="49"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="50"/>
+        <source>Save &amp;As...</source>
+        <translation>Speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="56"/>
+        <source>&amp;Close Window</source>
+        <translation>Fenster &amp;schließen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="57"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="59"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="60"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="62"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="67"/>
+        <source>Re&amp;name Artifact...</source>
+        <translation>Artefakt &amp;umbenennen...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="72"/>
+        <source>Rename artifact</source>
+        <translation>Artefakt umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="72"/>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="78"/>
+        <source>&amp;Delete Artifact</source>
+        <translation>Artefakt &amp;löschen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="84"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="85"/>
+        <source>Window/Level: &amp;CTA</source>
+        <translation>Fenster: &amp;CTA</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="86"/>
+        <source>Window/Level: &amp;Soft Tissue</source>
+        <translation>Fenster: &amp;Weichteil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="87"/>
+        <source>Window/Level: &amp;Bone</source>
+        <translation>Fenster: &amp;Knochen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="89"/>
+        <source>3D: &amp;Anterior View</source>
+        <translation>3D: &amp;Ansicht von vorn</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="94"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="95"/>
+        <source>&amp;About VascuSim</source>
+        <translation>Ü&amp;ber VascuSim</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="113"/>
+        <source>About VascuSim</source>
+        <translation>Über VascuSim</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="114"/>
+        <source>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patient-specific physics for vascular procedure planning.&lt;/p&gt;&lt;p&gt;Results support planning and need clinical judgement.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="51"/>
+        <source>%1: cancelled, nothing changed</source>
+        <translation>%1: abgebrochen, nichts geändert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="54"/>
+        <source>%1: done</source>
+        <translation>%1: fertig</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="74"/>
+        <source>Artifact</source>
+        <translation>Artefakt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="74"/>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="74"/>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="81"/>
+        <source>Study</source>
+        <translation>Studie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <location filename="../app/gui/MainWindow.cpp" line="93"/>
+        <location filename="../app/gui/MainWindow.cpp" line="100"/>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <source>Segment</source>
+        <translation>Segmentieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <source>Skeleton &amp;&amp; Centerlines</source>
+        <translation>Skelett &amp;&amp; Mittellinien</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <source>Mesh</source>
+        <translation>Netz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <source>Simulate</source>
+        <translation>Simulieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="90"/>
+        <source>Report</source>
+        <translation>Bericht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="96"/>
+        <source>Not available in this version yet</source>
+        <translation>In dieser Version noch nicht verfügbar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="103"/>
+        <source>Workflow</source>
+        <translation>Arbeitsablauf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="115"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="143"/>
+        <source>No study</source>
+        <translation>Keine Studie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="144"/>
+        <source>%1[*] - VascuSim</source>
+        <translation>%1[*] - VascuSim</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="161"/>
+        <source>damaged</source>
+        <translation>beschädigt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/MainWindow.cpp" line="166"/>
+        <source>%n warning(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="172"/>
+        <source>%1, made by &quot;%2&quot; on %3</source>
+        <translation>%1, erzeugt von &quot;%2&quot; am %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="184"/>
+        <source>%1 failed</source>
+        <translation>%1 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="201"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="34"/>
+        <source>Open study</source>
+        <translation>Studie öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="221"/>
+        <source>Study opened with problems</source>
+        <translation>Studie mit Problemen geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="240"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
+        <source>New study</source>
+        <translation>Neue Studie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="251"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="44"/>
+        <source>Import volume</source>
+        <translation>Volumen importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="260"/>
+        <location filename="../app/gui/MainWindow.cpp" line="284"/>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="272"/>
+        <location filename="../app/gui/MainWindow.cpp" line="289"/>
+        <source>Import DICOM</source>
+        <translation>DICOM importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="309"/>
+        <location filename="../app/gui/MainWindow.cpp" line="378"/>
+        <source>Save study</source>
+        <translation>Studie speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="321"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
+        <source>Save study as</source>
+        <translation>Studie speichern unter</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="340"/>
+        <source>Show image</source>
+        <translation>Bild anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="365"/>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="366"/>
+        <source>Save the changes to this study before closing?</source>
+        <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
+    </message>
 </context>
 </TS>
