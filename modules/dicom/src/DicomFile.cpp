@@ -209,39 +209,47 @@ bool hasDicomPreamble(const std::filesystem::path& file)
     return stream.read(magic, 4) && std::memcmp(magic, "DICM", 4) == 0;
 }
 
-/// Stored value -> HU for one frame. Returns the number of clamped values.
+/// Stored value -> HU for one frame. Returns the number of clamped values. The common CT layouts (all bits
+/// stored from bit 0, integer intercept, slope 1) take a branch-free loop the compiler vectorises.
 template <typename Stored>
 std::size_t storedToHu(const Stored* stored, std::size_t count, const PixelFormat& format,
                        const FrameGeometry& geometry, std::int16_t* out)
 {
+    constexpr std::int32_t kLow = std::numeric_limits<std::int16_t>::min(), kHigh = std::numeric_limits<std::int16_t>::max();
     const int shift = format.highBit + 1 - format.bitsStored;
-    const std::uint32_t mask = format.bitsStored >= 32 ? 0xFFFFFFFFu : ((1u << format.bitsStored) - 1u);
+    const std::uint32_t mask = (std::uint32_t(1) << format.bitsStored) - 1u;
     const std::int32_t signBit = std::int32_t(1) << (format.bitsStored - 1);
-    const bool plainWords = shift == 0 && format.bitsStored == int(8 * sizeof(Stored));
     const double slope = geometry.rescaleSlope, intercept = geometry.rescaleIntercept;
-    const bool integerRescale = slope == 1.0 && intercept == std::round(intercept) && std::abs(intercept) < 1e6;
-    const std::int32_t integerIntercept = std::int32_t(intercept);
     std::size_t clamped = 0;
+    if (shift == 0 && slope == 1.0 && intercept == std::round(intercept) && std::abs(intercept) < 65536.0)
+    {
+        const std::int32_t offset = std::int32_t(intercept);
+        const std::int32_t extend = format.isSigned ? signBit : 0; // (x ^ s) - s sign-extends; s = 0 leaves x
+        std::int32_t low = kHigh, high = kLow;
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            const std::int32_t hu = ((std::int32_t(stored[i]) & std::int32_t(mask)) ^ extend) - extend + offset;
+            low = std::min(low, hu);
+            high = std::max(high, hu);
+            out[i] = std::int16_t(std::clamp(hu, kLow, kHigh));
+        }
+        if (low >= kLow && high <= kHigh)
+            return 0;
+        for (std::size_t i = 0; i < count; ++i) // rare: count what was clamped
+        {
+            const std::int32_t hu = ((std::int32_t(stored[i]) & std::int32_t(mask)) ^ extend) - extend + offset;
+            clamped += std::size_t(hu < kLow) + std::size_t(hu > kHigh);
+        }
+        return clamped;
+    }
     for (std::size_t i = 0; i < count; ++i)
     {
-        std::int32_t raw;
-        if (plainWords)
-            raw = format.isSigned ? std::int32_t(std::make_signed_t<Stored>(stored[i])) : std::int32_t(stored[i]);
-        else
-        {
-            raw = std::int32_t((std::uint32_t(stored[i]) >> shift) & mask);
-            if (format.isSigned && (raw & signBit))
-                raw -= 2 * signBit;
-        }
-        std::int64_t hu = integerRescale ? std::int64_t(raw) + integerIntercept
-                                         : std::llround(double(raw) * slope + intercept);
-        if (hu < std::numeric_limits<std::int16_t>::min() || hu > std::numeric_limits<std::int16_t>::max())
-        {
-            hu = std::clamp<std::int64_t>(hu, std::numeric_limits<std::int16_t>::min(),
-                                          std::numeric_limits<std::int16_t>::max());
-            ++clamped;
-        }
-        out[i] = std::int16_t(hu);
+        std::int32_t raw = std::int32_t((std::uint32_t(stored[i]) >> shift) & mask);
+        if (format.isSigned)
+            raw = (raw ^ signBit) - signBit;
+        const double hu = std::round(double(raw) * slope + intercept);
+        clamped += std::size_t(hu < kLow) + std::size_t(hu > kHigh);
+        out[i] = std::int16_t(std::clamp(hu, double(kLow), double(kHigh)));
     }
     return clamped;
 }

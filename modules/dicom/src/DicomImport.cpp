@@ -126,13 +126,13 @@ DicomVolume importDicomSeries(const DicomSeries& series, const DicomImportOption
     std::size_t clamped = 0;
     if (!plan.resample)
     {
-        result.image = CtVolume(plan.grid);
+        result.image = CtVolume::uninitialized(plan.grid); // every slice is decoded into
         decodeSorted(series, plan.sorted, result.image, options.threads, progress, clamped);
     }
     else
     {
         const SliceStack stack = plan.sourceStack(series);
-        CtVolume source(stack.nominalGeometry());
+        CtVolume source = CtVolume::uninitialized(stack.nominalGeometry());
         decodeSorted(series, plan.sorted, source, options.threads, progress.subRange(0.0, 0.6), clamped);
         result.image = resampleStack(source, stack, plan.offsets, plan.grid, progress.subRange(0.6, 1.0));
     }

@@ -29,7 +29,7 @@ double bilinear(const std::int16_t* slice, int columns, int rows, double a, doub
 CtVolume resampleStack(const CtVolume& pixels, const SliceStack& stack, const std::vector<double>& offsets,
                        const VolumeGeometry& grid, const Progress& progress)
 {
-    CtVolume out(grid);
+    CtVolume out = CtVolume::uninitialized(grid); // every voxel is written below
     const Eigen::Vector3d normal = stack.normal();
     const Eigen::Vector3d x = stack.xDirection / stack.columnSpacing, y = stack.yDirection / stack.rowSpacing;
     const std::size_t perSlice = std::size_t(stack.columns) * std::size_t(stack.rows);

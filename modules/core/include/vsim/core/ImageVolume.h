@@ -34,6 +34,14 @@ public:
             throw Error("image volume adopted an empty buffer");
     }
 
+    /// Allocates without zero-filling, for producers that write every voxel before anything reads it (decoders,
+    /// resamplers): saves a pass over the memory. Throws vsim::Error for an invalid geometry.
+    static ImageVolume uninitialized(const VolumeGeometry& geometry)
+    {
+        geometry.validate();
+        return ImageVolume(geometry, std::shared_ptr<T[]>(new T[geometry.voxelCount()]));
+    }
+
     const VolumeGeometry& geometry() const { return m_geometry; }
     bool isEmpty() const { return !m_voxels; }
     std::size_t size() const { return m_voxels ? m_geometry.voxelCount() : 0; }
