@@ -51,6 +51,22 @@ if(NOT dims STREQUAL "[96,96,48]" OR NOT spacing STREQUAL "[3.5,3.5,8.0]" OR NOT
                         "command ${command}, patient ${patient}")
 endif()
 
+# Refused before allocating when the memory needed exceeds the limit; another patient's series is refused.
+run_cli(1 out err import ${WORK}/aaa --study ${WORK}/aaa.vsim --memory-limit-mb 0.5)
+if(NOT err MATCHES "needs 0.00 GiB of memory for 96 x 96 x 48 voxels")
+    message(FATAL_ERROR "a series over the memory limit must be refused with the size needed:\n${err}")
+endif()
+run_cli(0 out err phantom stenosis --out ${WORK}/other --size 32x32x16 --spacing 4,4,8)
+run_cli(1 out err import ${WORK}/other --study ${WORK}/aaa.vsim)
+if(NOT err MATCHES "another patient")
+    message(FATAL_ERROR "importing another patient's series into a study must be refused:\n${err}")
+endif()
+run_cli(0 info_after err info ${WORK}/aaa.vsim)
+string(JSON artifact_count LENGTH "${info_after}" artifacts)
+if(NOT artifact_count EQUAL 1)
+    message(FATAL_ERROR "refused imports must leave the study as it was (1 artifact), found ${artifact_count}")
+endif()
+
 # A folder of junk: non-zero exit, one line saying why.
 file(WRITE ${WORK}/junk/a.txt "not DICOM")
 file(WRITE ${WORK}/junk/b.bin "0123456789")
