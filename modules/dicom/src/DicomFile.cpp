@@ -254,28 +254,33 @@ std::size_t storedToHu(const Stored* stored, std::size_t count, const PixelForma
     return clamped;
 }
 
-/// Converts frames of stored pixel data (native, local byte order) laid out frame after frame.
+/// Converts one frame of stored pixel data (native, local byte order) starting at `pixels`.
+std::size_t convertFrame(const void* pixels, std::size_t bytes, const DicomImageHeader& header, int frame,
+                         std::int16_t* out)
+{
+    const PixelFormat& format = header.format;
+    if (frame < 0 || frame >= int(header.frames.size()))
+        throw Error("frame index out of range", {{"frame", std::to_string(frame)}});
+    const std::size_t perFrame = format.pixelsPerFrame();
+    if (perFrame * std::size_t(format.bitsAllocated / 8) > bytes)
+        throw Error("pixel data is shorter than the image it describes (truncated file?)");
+    const FrameGeometry& geometry = header.frames[std::size_t(frame)];
+    if (format.bitsAllocated == 16)
+        return storedToHu(static_cast<const std::uint16_t*>(pixels), perFrame, format, geometry, out);
+    return storedToHu(static_cast<const std::uint8_t*>(pixels), perFrame, format, geometry, out);
+}
+
+/// Converts frames of stored pixel data laid out frame after frame.
 std::size_t convertFrames(const void* pixels, std::size_t bytes, const DicomImageHeader& header,
                           const std::vector<int>& frames, const std::vector<std::int16_t*>& out)
 {
-    const PixelFormat& format = header.format;
-    const std::size_t perFrame = format.pixelsPerFrame();
-    const std::size_t bytesPerValue = std::size_t(format.bitsAllocated / 8);
+    const std::size_t frameBytes = header.format.pixelsPerFrame() * std::size_t(header.format.bitsAllocated / 8);
     std::size_t clamped = 0;
     for (std::size_t n = 0; n < frames.size(); ++n)
     {
-        const int frame = frames[n];
-        if (frame < 0 || frame >= int(header.frames.size()))
-            throw Error("frame index out of range", {{"frame", std::to_string(frame)}});
-        const std::size_t offset = std::size_t(frame) * perFrame * bytesPerValue;
-        if (offset + perFrame * bytesPerValue > bytes)
-            throw Error("pixel data is shorter than the image it describes (truncated file?)");
-        const auto* base = static_cast<const std::uint8_t*>(pixels) + offset;
-        if (bytesPerValue == 2)
-            clamped += storedToHu(reinterpret_cast<const std::uint16_t*>(base), perFrame, format,
-                                  header.frames[std::size_t(frame)], out[n]);
-        else
-            clamped += storedToHu(base, perFrame, format, header.frames[std::size_t(frame)], out[n]);
+        const std::size_t offset = std::size_t(std::max(frames[n], 0)) * frameBytes;
+        clamped += convertFrame(static_cast<const std::uint8_t*>(pixels) + std::min(offset, bytes),
+                                bytes - std::min(offset, bytes), header, frames[n], out[n]);
     }
     return clamped;
 }
@@ -403,7 +408,6 @@ std::size_t decodeJpeg2000(DcmDataset& dataset, const DicomImageHeader& header, 
     (void)quiet;
     const PixelFormat& format = header.format;
     const std::vector<std::string> codestreams = frameCodestreams(dataset, header);
-    DicomImageHeader single = header; // one frame at a time through convertFrames
     std::size_t clamped = 0;
     for (std::size_t n = 0; n < frames.size(); ++n)
     {
@@ -428,8 +432,7 @@ std::size_t decodeJpeg2000(DcmDataset& dataset, const DicomImageHeader& header, 
         const gdcm::ByteValue* pixels = codec.Decode(compressed, decoded) ? decoded.GetByteValue() : nullptr;
         if (!pixels)
             throw Error("cannot decode the JPEG 2000 code stream");
-        single.frames = {header.frames[std::size_t(frames[n])]};
-        clamped += convertFrames(pixels->GetPointer(), pixels->GetLength(), single, {0}, {out[n]});
+        clamped += convertFrame(pixels->GetPointer(), pixels->GetLength(), header, frames[n], out[n]);
     }
     return clamped;
 }
@@ -480,6 +483,60 @@ std::size_t decodeWithDcmtk(DcmFileFormat& fileFormat, const DicomImageHeader& h
     return convertFrames(pixels, bytes, header, frames, out);
 }
 
+/// Where native little-endian pixel data starts when it is the last element of the file: its 8 (implicit VR) or
+/// 12 (explicit VR) byte element header must sit right before the value and name Pixel Data and its length.
+std::uint64_t trailingPixelDataOffset(DcmDataset& dataset, const DicomImageHeader& header)
+{
+    const E_TransferSyntax xfer = dataset.getOriginalXfer();
+    if (xfer != EXS_LittleEndianExplicit && xfer != EXS_LittleEndianImplicit)
+        return 0;
+    DcmElement* element = nullptr;
+    if (dataset.findAndGetElement(DCM_PixelData, element).bad() || !element)
+        return 0;
+    const std::uint64_t length = element->getLength();
+    const std::uint64_t needed = std::uint64_t(header.format.pixelsPerFrame()) * header.frames.size() *
+                                 std::uint64_t(header.format.bitsAllocated / 8);
+    std::error_code error;
+    const std::uint64_t fileSize = std::filesystem::file_size(header.file, error);
+    const std::uint64_t elementHeader = xfer == EXS_LittleEndianExplicit ? 12 : 8;
+    if (error || length < needed || length == 0xFFFFFFFFu || fileSize < length + elementHeader)
+        return 0;
+    const std::uint64_t offset = fileSize - length;
+    std::ifstream stream(header.file, std::ios::binary);
+    std::uint8_t bytes[12] = {};
+    if (!stream.seekg(std::streamoff(offset - elementHeader)) || !stream.read(reinterpret_cast<char*>(bytes), std::streamsize(elementHeader)))
+        return 0;
+    const std::uint8_t* lengthField = bytes + elementHeader - 4;
+    const std::uint64_t declared = std::uint64_t(lengthField[0]) | std::uint64_t(lengthField[1]) << 8 |
+                                   std::uint64_t(lengthField[2]) << 16 | std::uint64_t(lengthField[3]) << 24;
+    const bool tag = bytes[0] == 0xE0 && bytes[1] == 0x7F && bytes[2] == 0x10 && bytes[3] == 0x00;
+    const bool vr = elementHeader == 8 || ((bytes[4] == 'O' && (bytes[5] == 'W' || bytes[5] == 'B')) && bytes[6] == 0 && bytes[7] == 0);
+    return tag && vr && declared == length ? offset : 0;
+}
+
+/// Reads the wanted frames of trailing native pixel data straight from the file (no second DICOM parse).
+std::size_t decodeTrailingPixelData(const DicomImageHeader& header, const std::vector<int>& frames,
+                                    const std::vector<std::int16_t*>& out)
+{
+    const std::size_t frameBytes = header.format.pixelsPerFrame() * std::size_t(header.format.bitsAllocated / 8);
+    std::ifstream stream(header.file, std::ios::binary);
+    if (!stream)
+        throw Error("cannot open the file");
+    thread_local std::vector<char> buffer;
+    buffer.resize(frameBytes);
+    std::size_t clamped = 0;
+    for (std::size_t n = 0; n < frames.size(); ++n)
+    {
+        if (frames[n] < 0 || std::size_t(frames[n]) >= header.frames.size())
+            throw Error("frame index out of range", {{"frame", std::to_string(frames[n])}});
+        stream.seekg(std::streamoff(header.pixelDataOffset + std::uint64_t(frames[n]) * frameBytes));
+        if (!stream.read(buffer.data(), std::streamsize(frameBytes)))
+            throw Error("pixel data is shorter than the image it describes (truncated file?)");
+        clamped += convertFrame(buffer.data(), buffer.size(), header, frames[n], out[n]);
+    }
+    return clamped;
+}
+
 void checkDecodable(const DicomImageHeader& header)
 {
     if (!header.format.isGrayscale())
@@ -500,7 +557,9 @@ DicomImageHeader readDicomHeader(const std::filesystem::path& file)
             throw Error("damaged or truncated DICOM file", {{"reason", status.text()}});
         throw NotDicomFile("not a DICOM file", {{"reason", status.text()}});
     }
-    return headerOf(fileFormat, file);
+    DicomImageHeader header = headerOf(fileFormat, file);
+    header.pixelDataOffset = trailingPixelDataOffset(*fileFormat.getDataset(), header);
+    return header;
 }
 
 std::size_t decodeFramesToHu(const DicomImageHeader& header, const std::vector<int>& frames,
@@ -509,6 +568,8 @@ std::size_t decodeFramesToHu(const DicomImageHeader& header, const std::vector<i
     if (frames.size() != out.size())
         throw Error("decodeFramesToHu: one output per frame expected");
     checkDecodable(header);
+    if (header.pixelDataOffset != 0)
+        return decodeTrailingPixelData(header, frames, out);
     ensureDcmtkCodecs();
     DcmFileFormat fileFormat;
     const OFCondition status = fileFormat.loadFile(header.file.string().c_str());

@@ -76,6 +76,9 @@ struct DicomImageHeader
     int seriesNumber = 0;
     PixelFormat format;
     std::vector<FrameGeometry> frames; ///< one per frame (1 for classic images)
+    /// Byte offset of native little-endian pixel data that ends the file (verified against the element header),
+    /// so that decoding can read the frames directly; 0 when unknown (compressed, big endian, trailing elements).
+    std::uint64_t pixelDataOffset = 0;
     /// Patient / study / series attributes for the study: patient_name, patient_id, study_description, ...
     std::map<std::string, std::string> attributes;
 
