@@ -15,7 +15,10 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
     RenderingFreeType RenderingImage InteractionStyle InteractionWidgets FiltersCore FiltersGeneral FiltersSources)
 
 find_package(ITK 5.2 REQUIRED COMPONENTS
-    ITKCommon ITKIOImageBase ITKIONRRD ITKIONIFTI ITKIOMeta ITKImageGrid)
+    ITKCommon ITKIOImageBase ITKIONRRD ITKIONIFTI ITKIOMeta ITKImageGrid
+    ITKSmoothing ITKThresholding ITKConnectedComponents ITKRegionGrowing ITKImageFeature ITKImageIntensity
+    ITKBinaryMathematicalMorphology ITKMathematicalMorphology ITKDistanceMap ITKLabelMap ITKImageLabel
+    ITKImageStatistics ITKFastMarching ITKLevelSets)
 # ITK 5.2 in Debian bundles Eigen 3.3.9 under the same include guards as Eigen 3.4: one translation unit
 # cannot hold both. ITK_USE_SYSTEM_EIGEN makes ITK's (template-only) Eigen use compile against Eigen 3.4.
 add_library(vsim_itk INTERFACE)

@@ -1,0 +1,101 @@
+#include "MaskOps.h"
+
+#include <cstdlib>
+
+namespace vsim::imaging {
+
+std::size_t floodFill(const Dims& dims, const std::vector<std::size_t>& seeds,
+                      const std::function<bool(std::size_t)>& accept, std::vector<std::uint8_t>& out, bool faceOnly,
+                      std::vector<std::size_t>* members)
+{
+    const std::size_t nx = std::size_t(dims[0]), ny = std::size_t(dims[1]), nz = std::size_t(dims[2]);
+    const std::size_t slice = nx * ny;
+    std::vector<std::size_t> stack;
+    std::size_t added = 0;
+    for (std::size_t seed : seeds)
+        if (seed < out.size() && !out[seed] && accept(seed))
+        {
+            out[seed] = 1;
+            stack.push_back(seed);
+            ++added;
+        }
+    while (!stack.empty())
+    {
+        const std::size_t index = stack.back();
+        stack.pop_back();
+        if (members)
+            members->push_back(index);
+        const std::size_t k = index / slice, j = (index % slice) / nx, i = index % nx;
+        for (int dk = -1; dk <= 1; ++dk)
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di)
+                {
+                    const int manhattan = std::abs(di) + std::abs(dj) + std::abs(dk);
+                    if (manhattan == 0 || (faceOnly && manhattan > 1))
+                        continue;
+                    if ((di < 0 && i == 0) || (di > 0 && i + 1 == nx) || (dj < 0 && j == 0) || (dj > 0 && j + 1 == ny) ||
+                        (dk < 0 && k == 0) || (dk > 0 && k + 1 == nz))
+                        continue;
+                    const std::size_t next = index + std::size_t(std::ptrdiff_t(di) + std::ptrdiff_t(dj) * std::ptrdiff_t(nx) +
+                                                                 std::ptrdiff_t(dk) * std::ptrdiff_t(slice));
+                    if (out[next] || !accept(next))
+                        continue;
+                    out[next] = 1;
+                    stack.push_back(next);
+                    ++added;
+                }
+    }
+    return added;
+}
+
+namespace {
+
+template <bool Erode>
+std::vector<std::uint8_t> morph6(const Dims& dims, const std::vector<std::uint8_t>& mask)
+{
+    const std::size_t nx = std::size_t(dims[0]), ny = std::size_t(dims[1]), nz = std::size_t(dims[2]);
+    const std::size_t slice = nx * ny;
+    std::vector<std::uint8_t> out(mask.size(), 0);
+    for (std::size_t k = 0; k < nz; ++k)
+        for (std::size_t j = 0; j < ny; ++j)
+        {
+            const std::size_t row = k * slice + j * nx;
+            for (std::size_t i = 0; i < nx; ++i)
+            {
+                const std::size_t index = row + i;
+                auto at = [&](bool inside, std::size_t neighbour) { return inside ? mask[neighbour] : std::uint8_t(0); };
+                const std::uint8_t neighbours[6] = {
+                    at(i > 0, index - 1),          at(i + 1 < nx, index + 1),          at(j > 0, index - nx),
+                    at(j + 1 < ny, index + nx),    at(k > 0, index - slice),           at(k + 1 < nz, index + slice)};
+                if constexpr (Erode)
+                {
+                    std::uint8_t all = mask[index];
+                    for (std::uint8_t n : neighbours)
+                        all &= n;
+                    out[index] = all;
+                }
+                else
+                {
+                    std::uint8_t any = mask[index];
+                    for (std::uint8_t n : neighbours)
+                        any |= n;
+                    out[index] = any;
+                }
+            }
+        }
+    return out;
+}
+
+} // namespace
+
+std::vector<std::uint8_t> erode6(const Dims& dims, const std::vector<std::uint8_t>& mask)
+{
+    return morph6<true>(dims, mask);
+}
+
+std::vector<std::uint8_t> dilate6(const Dims& dims, const std::vector<std::uint8_t>& mask)
+{
+    return morph6<false>(dims, mask);
+}
+
+} // namespace vsim::imaging
