@@ -7,6 +7,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PhantomWriter.h"
+#include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/study/Study.h"
 #include "vsim/study/VolumeFileImport.h"
 
@@ -14,6 +15,7 @@
 #include <array>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace vsim::cli {
@@ -209,6 +211,69 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
     const dicom::PhantomFiles files = dicom::writePhantom(kind, options, description, out, progress);
     std::cout << "wrote " << files.series.files.size() << " DICOM files to " << files.dicomFolder.string() << "\n"
               << "truth: " << files.truthJson.string() << ", " << files.truthLabels.string() << "\n";
+    return 0;
+}
+
+namespace {
+
+/// The image to work on: --image, else the newest undamaged image of the study.
+std::string chooseImage(const study::Study& study, const std::string& wanted)
+{
+    if (!wanted.empty())
+        return study.artifact(wanted).id;
+    for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend(); ++it)
+        if (it->kind == study::ArtifactKind::Image && !it->damaged)
+            return it->id;
+    throw Error("the study has no CT image: import one first (vascusim-cli import <dicom folder> --study S)");
+}
+
+std::string formatNumber(double value)
+{
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+} // namespace
+
+int segmentStudy(const Arguments& arguments, const Progress& progress)
+{
+    const std::string bundle = arguments.option("study");
+    if (bundle.empty() || !arguments.positional.empty())
+        throw Error("usage: vascusim-cli segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value]");
+    study::Study study = study::Study::open(bundle);
+    const std::string imageId = chooseImage(study, arguments.option("image"));
+    ParameterSet parameters(imaging::segmentationParameters());
+    for (const auto& [name, value] : arguments.options)
+        if (name == "param")
+            parameters.setFromText(value);
+    std::optional<Eigen::Vector3d> seed;
+    if (arguments.hasOption("seed"))
+    {
+        const auto xyz = parseTriple<double>(arguments.option("seed"), ',', "seed");
+        seed = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+    }
+    const CtVolume ct = study.loadImage(imageId);
+    const imaging::SegmentationResult result = imaging::segmentVessels(ct, parameters, seed, progress.subRange(0.0, 0.9));
+
+    study::Provenance provenance;
+    provenance.command = "segment";
+    provenance.inputs = {imageId};
+    for (const auto& [key, value] : parameters.values())
+        provenance.parameters[key] = formatNumber(value);
+    provenance.parameters["seed_mm"] = formatNumber(result.seedMm.x()) + "," + formatNumber(result.seedMm.y()) + "," +
+                                       formatNumber(result.seedMm.z());
+    provenance.parameters["seed_found_automatically"] = result.seedFound ? "yes" : "no";
+    const std::string id = study.addLabel(result.label, "Vessel lumen", provenance, result.warnings);
+    study.save();
+    progress.report(1.0, "saved");
+    std::cout << "segmented " << imageId << " as " << id << ": " << formatNumber(result.figures.at("volume_ml"))
+              << " ml, boundary " << formatNumber(result.figures.at("threshold_hu")) << " HU (blood "
+              << formatNumber(result.figures.at("blood_hu")) << " HU, tissue " << formatNumber(result.figures.at("tissue_hu"))
+              << " HU), seed " << provenance.parameters["seed_mm"] << " mm"
+              << (result.seedFound ? " (found automatically)" : "") << "\n";
+    for (const std::string& warning : result.warnings)
+        std::cout << "warning: " << warning << "\n";
     return 0;
 }
 

@@ -30,6 +30,8 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress);
 /// `phantom <kind> --out DIR [--size CxRxS] [--spacing x,y,z] [--noise HU] [--seed N] [--transfer-syntax T]
 /// [--max-diameter mm] [--stenosis percent] [--blur mm] [--enhanced]`.
 int writePhantomSeries(const Arguments& arguments, const Progress& progress);
+/// `segment --study S [--image ID] [--seed x,y,z] [--param key=value ...]`: adds a vessel label to the study.
+int segmentStudy(const Arguments& arguments, const Progress& progress);
 int writeDemoStudy(const Arguments& arguments, const Progress& progress);
 
 } // namespace vsim::cli

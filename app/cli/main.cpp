@@ -33,6 +33,9 @@ commands:
           [--max-diameter 55] [--stenosis 50] [--blur mm] [--enhanced]
                                              write a CT phantom series (<dir>/dicom) with truth.json and
                                              truth-label.nrrd
+  segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value ...]
+                                             segment the contrast-filled vessels (automatic seed unless given, mm)
+                                             into a label artifact
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -71,6 +74,8 @@ int main(int argc, char** argv)
             return vsim::cli::printStudyInfo(arguments);
         if (command == "import")
             return vsim::cli::importIntoStudy(arguments, progress);
+        if (command == "segment")
+            return vsim::cli::segmentStudy(arguments, progress);
         if (command == "phantom")
             return vsim::cli::writePhantomSeries(arguments, progress);
         if (command == "demo-study")

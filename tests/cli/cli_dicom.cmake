@@ -67,6 +67,28 @@ if(NOT artifact_count EQUAL 1)
     message(FATAL_ERROR "refused imports must leave the study as it was (1 artifact), found ${artifact_count}")
 endif()
 
+# Segmentation of the imported phantom: a label artifact with the parameters in its provenance; a seed in
+# bone is refused and leaves the study as it was.
+run_cli(0 segmented err segment --study ${WORK}/aaa.vsim)
+if(NOT segmented MATCHES "segmented image-1 as label-[0-9]+: [0-9.]+ ml.*found automatically")
+    message(FATAL_ERROR "segment output:\n${segmented}")
+endif()
+run_cli(1 out err segment --study ${WORK}/aaa.vsim --seed 0,45,-300)
+if(NOT err MATCHES "not in a contrast-filled vessel")
+    message(FATAL_ERROR "a seed in bone must be refused:\n${err}")
+endif()
+run_cli(1 out err segment --study ${WORK}/aaa.vsim --param refine_sigma_mm=99)
+run_cli(0 info_segmented err info ${WORK}/aaa.vsim)
+string(JSON artifact_count LENGTH "${info_segmented}" artifacts)
+string(JSON label_kind GET "${info_segmented}" artifacts 1 kind)
+string(JSON label_command GET "${info_segmented}" artifacts 1 provenance command)
+string(JSON label_threshold GET "${info_segmented}" artifacts 1 provenance parameters threshold_fraction)
+if(NOT artifact_count EQUAL 2 OR NOT label_kind STREQUAL "label" OR NOT label_command STREQUAL "segment"
+   OR NOT label_threshold STREQUAL "0.5")
+    message(FATAL_ERROR "after segment: ${artifact_count} artifacts, ${label_kind} by ${label_command}, "
+                        "threshold_fraction ${label_threshold}")
+endif()
+
 # A folder of junk: non-zero exit, one line saying why.
 file(WRITE ${WORK}/junk/a.txt "not DICOM")
 file(WRITE ${WORK}/junk/b.bin "0123456789")
