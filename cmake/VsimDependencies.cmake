@@ -12,7 +12,8 @@ find_package(VTK 9.1 REQUIRED COMPONENTS
     CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
     IOXML IOImage ImagingCore ImagingGeneral
     RenderingCore RenderingOpenGL2 RenderingVolume RenderingVolumeOpenGL2 RenderingAnnotation
-    RenderingFreeType RenderingImage InteractionStyle InteractionWidgets FiltersCore FiltersGeneral FiltersSources)
+    RenderingFreeType RenderingImage InteractionStyle InteractionWidgets FiltersCore FiltersGeneral FiltersSources
+    FiltersModeling IOGeometry)
 
 find_package(ITK 5.2 REQUIRED COMPONENTS
     ITKCommon ITKIOImageBase ITKIONRRD ITKIONIFTI ITKIOMeta ITKImageGrid

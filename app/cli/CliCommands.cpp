@@ -8,6 +8,7 @@
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PhantomWriter.h"
 #include "vsim/imaging/VesselSegmentation.h"
+#include "vsim/mesh/VesselSurface.h"
 #include "vsim/study/Study.h"
 #include "vsim/study/VolumeFileImport.h"
 
@@ -216,22 +217,41 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
 
 namespace {
 
-/// The image to work on: --image, else the newest undamaged image of the study.
-std::string chooseImage(const study::Study& study, const std::string& wanted)
+/// The artifact to work on: `wanted`, else the newest undamaged one of `kind`; `missing` says what to do first.
+std::string chooseArtifact(const study::Study& study, const std::string& wanted, study::ArtifactKind kind,
+                           const std::string& missing)
 {
     if (!wanted.empty())
         return study.artifact(wanted).id;
     for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend(); ++it)
-        if (it->kind == study::ArtifactKind::Image && !it->damaged)
+        if (it->kind == kind && !it->damaged)
             return it->id;
-    throw Error("the study has no CT image: import one first (vascusim-cli import <dicom folder> --study S)");
+    throw Error(missing);
 }
+
+/// Applies every --param key=value to the set.
+void applyParameters(const Arguments& arguments, ParameterSet& parameters)
+{
+    for (const auto& [name, value] : arguments.options)
+        if (name == "param")
+            parameters.setFromText(value);
+}
+
 
 std::string formatNumber(double value)
 {
     std::ostringstream text;
     text << value;
     return text.str();
+}
+
+/// Parameter values as text for provenance records.
+std::map<std::string, std::string> provenanceParameters(const ParameterSet& parameters)
+{
+    std::map<std::string, std::string> text;
+    for (const auto& [key, value] : parameters.values())
+        text[key] = formatNumber(value);
+    return text;
 }
 
 } // namespace
@@ -242,11 +262,11 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
     if (bundle.empty() || !arguments.positional.empty())
         throw Error("usage: vascusim-cli segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value]");
     study::Study study = study::Study::open(bundle);
-    const std::string imageId = chooseImage(study, arguments.option("image"));
+    const std::string imageId = chooseArtifact(study, arguments.option("image"), study::ArtifactKind::Image,
+                                               "the study has no CT image: import one first (vascusim-cli import "
+                                               "<dicom folder> --study S)");
     ParameterSet parameters(imaging::segmentationParameters());
-    for (const auto& [name, value] : arguments.options)
-        if (name == "param")
-            parameters.setFromText(value);
+    applyParameters(arguments, parameters);
     std::optional<Eigen::Vector3d> seed;
     if (arguments.hasOption("seed"))
     {
@@ -259,8 +279,7 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
     study::Provenance provenance;
     provenance.command = "segment";
     provenance.inputs = {imageId};
-    for (const auto& [key, value] : parameters.values())
-        provenance.parameters[key] = formatNumber(value);
+    provenance.parameters = provenanceParameters(parameters);
     provenance.parameters["seed_mm"] = formatNumber(result.seedMm.x()) + "," + formatNumber(result.seedMm.y()) + "," +
                                        formatNumber(result.seedMm.z());
     provenance.parameters["seed_found_automatically"] = result.seedFound ? "yes" : "no";
@@ -274,6 +293,40 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
               << (result.seedFound ? " (found automatically)" : "") << "\n";
     for (const std::string& warning : result.warnings)
         std::cout << "warning: " << warning << "\n";
+    return 0;
+}
+
+int surfaceStudy(const Arguments& arguments, const Progress& progress)
+{
+    const std::string bundle = arguments.option("study");
+    if (bundle.empty() || !arguments.positional.empty())
+        throw Error("usage: vascusim-cli surface --study <study.vsim> [--label ID] [--target-vertices N] [--stl FILE]");
+    study::Study study = study::Study::open(bundle);
+    const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
+                                               "the study has no vessel label: run vascusim-cli segment first");
+    ParameterSet parameters(mesh::surfaceParameters());
+    applyParameters(arguments, parameters);
+    if (arguments.hasOption("target-vertices"))
+        parameters.set("target_vertices", parseNumber(arguments, "target-vertices", 0.0));
+    const mesh::VesselSurface result =
+        mesh::extractVesselSurface(study.loadLabel(labelId), 1, parameters, progress.subRange(0.0, 0.9));
+    study::Provenance provenance;
+    provenance.command = "surface";
+    provenance.inputs = {labelId};
+    provenance.parameters = provenanceParameters(parameters);
+    std::vector<std::string> notes;
+    if (result.surface.points.size() < result.fullVertices)
+        notes.push_back("decimated from " + std::to_string(result.fullVertices) + " vertices: shape error mean " +
+                        formatNumber(result.meanErrorMm) + " mm, Hausdorff " + formatNumber(result.hausdorffMm) + " mm");
+    const std::string id = study.addSurface(result.surface, "Lumen surface", provenance, notes);
+    study.save();
+    if (arguments.hasOption("stl"))
+        mesh::writeStl(result.surface, arguments.option("stl"));
+    progress.report(1.0, "saved");
+    std::cout << "surface of " << labelId << " as " << id << ": " << result.surface.points.size() << " vertices, "
+              << result.surface.triangles.size() << " triangles, " << formatNumber(result.surface.area()) << " mm^2\n";
+    for (const std::string& note : notes)
+        std::cout << note << "\n";
     return 0;
 }
 

@@ -32,6 +32,9 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress);
 int writePhantomSeries(const Arguments& arguments, const Progress& progress);
 /// `segment --study S [--image ID] [--seed x,y,z] [--param key=value ...]`: adds a vessel label to the study.
 int segmentStudy(const Arguments& arguments, const Progress& progress);
+/// `surface --study S [--label ID] [--target-vertices N] [--stl FILE] [--param key=value ...]`: adds the lumen
+/// surface of a vessel label to the study (and writes it as STL when asked).
+int surfaceStudy(const Arguments& arguments, const Progress& progress);
 int writeDemoStudy(const Arguments& arguments, const Progress& progress);
 
 } // namespace vsim::cli

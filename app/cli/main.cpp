@@ -36,6 +36,8 @@ commands:
   segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value ...]
                                              segment the contrast-filled vessels (automatic seed unless given, mm)
                                              into a label artifact
+  surface --study <study.vsim> [--label ID] [--target-vertices N] [--stl FILE] [--param key=value ...]
+                                             the lumen surface of the newest vessel label (VTP in the study)
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -76,6 +78,8 @@ int main(int argc, char** argv)
             return vsim::cli::importIntoStudy(arguments, progress);
         if (command == "segment")
             return vsim::cli::segmentStudy(arguments, progress);
+        if (command == "surface")
+            return vsim::cli::surfaceStudy(arguments, progress);
         if (command == "phantom")
             return vsim::cli::writePhantomSeries(arguments, progress);
         if (command == "demo-study")

@@ -89,6 +89,18 @@ if(NOT artifact_count EQUAL 2 OR NOT label_kind STREQUAL "label" OR NOT label_co
                         "threshold_fraction ${label_threshold}")
 endif()
 
+# The lumen surface of that label, decimated, as a study artifact and an STL file.
+run_cli(0 surfaced err surface --study ${WORK}/aaa.vsim --target-vertices 1500 --stl ${WORK}/lumen.stl)
+if(NOT surfaced MATCHES "surface of label-[0-9]+ as surface-[0-9]+: [0-9]+ vertices" OR NOT EXISTS ${WORK}/lumen.stl
+   OR NOT surfaced MATCHES "shape error mean")
+    message(FATAL_ERROR "surface output:\n${surfaced}")
+endif()
+run_cli(0 info_surface err info ${WORK}/aaa.vsim)
+string(JSON surface_kind GET "${info_surface}" artifacts 2 kind)
+if(NOT surface_kind STREQUAL "surface")
+    message(FATAL_ERROR "the surface must be the study's third artifact, found ${surface_kind}")
+endif()
+
 # A folder of junk: non-zero exit, one line saying why.
 file(WRITE ${WORK}/junk/a.txt "not DICOM")
 file(WRITE ${WORK}/junk/b.bin "0123456789")

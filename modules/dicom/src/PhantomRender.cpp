@@ -189,6 +189,18 @@ CtVolume renderPhantomCt(const PhantomModel& model, const SliceStack& stack, con
     return volume;
 }
 
+double vesselSurfaceDistance(const PhantomModel& model, const Vector3d& p)
+{
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const VesselSegment& segment : model.segments)
+        for (std::size_t s = 1; s < segment.points.size(); ++s)
+        {
+            const ConePiece piece{segment.points[s - 1], segment.points[s], segment.radii[s - 1], segment.radii[s], {}, {}};
+            nearest = std::min(nearest, coneDistance(piece, p));
+        }
+    return nearest;
+}
+
 LabelVolume renderPhantomLabels(const PhantomModel& model, const VolumeGeometry& geometry, const Progress& progress)
 {
     const SliceStack stack = stackOf(geometry);

@@ -20,4 +20,8 @@ CtVolume renderPhantomCt(const PhantomModel& model, const SliceStack& stack, con
 LabelVolume renderPhantomLabels(const PhantomModel& model, const VolumeGeometry& geometry,
                                 const Progress& progress = {});
 
+/// Signed distance (mm) from `p` to the model's vessel lumen surface (negative inside): the ground truth for
+/// surfaces and centerlines extracted from the phantom. Brute force over every cone piece.
+double vesselSurfaceDistance(const PhantomModel& model, const Eigen::Vector3d& p);
+
 } // namespace vsim::dicom
