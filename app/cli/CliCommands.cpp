@@ -7,6 +7,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PhantomWriter.h"
+#include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/study/Study.h"
@@ -327,6 +328,37 @@ int surfaceStudy(const Arguments& arguments, const Progress& progress)
               << result.surface.triangles.size() << " triangles, " << formatNumber(result.surface.area()) << " mm^2\n";
     for (const std::string& note : notes)
         std::cout << note << "\n";
+    return 0;
+}
+
+int skeletonStudy(const Arguments& arguments, const Progress& progress)
+{
+    const std::string bundle = arguments.option("study");
+    if (bundle.empty() || !arguments.positional.empty())
+        throw Error("usage: vascusim-cli skeleton --study <study.vsim> [--label ID] [--param key=value]");
+    study::Study study = study::Study::open(bundle);
+    const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
+                                               "the study has no vessel label: run vascusim-cli segment first");
+    ParameterSet parameters(imaging::skeletonParameters());
+    applyParameters(arguments, parameters);
+    const imaging::SkeletonResult result =
+        imaging::extractSkeleton(study.loadLabel(labelId), 1, parameters, progress.subRange(0.0, 0.9));
+    study::Provenance provenance;
+    provenance.command = "skeleton";
+    provenance.inputs = {labelId};
+    provenance.parameters = provenanceParameters(parameters);
+    std::vector<std::string> notes;
+    if (result.crowdedAfterVdsm > 0)
+        notes.push_back(std::to_string(result.crowdedAfterVdsm) + " crowded voxels remain after VDSM");
+    const std::string id = study.addSkeleton(result.graph, "Vessel skeleton", provenance, notes);
+    study.save();
+    progress.report(1.0, "saved");
+    std::cout << "skeleton of " << labelId << " as " << id << ": " << result.graph.endpoints().size() << " endpoints, "
+              << result.graph.junctions().size() << " junctions, " << result.graph.edges.size() << " edges; "
+              << result.crowdedAfterThinning << " crowded voxels after thinning, " << result.crowdedAfterVdsm
+              << " after VDSM, " << result.prunedBranches << " spurs pruned\n";
+    for (const std::string& note : notes)
+        std::cout << "warning: " << note << "\n";
     return 0;
 }
 

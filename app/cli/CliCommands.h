@@ -35,6 +35,8 @@ int segmentStudy(const Arguments& arguments, const Progress& progress);
 /// `surface --study S [--label ID] [--target-vertices N] [--stl FILE] [--param key=value ...]`: adds the lumen
 /// surface of a vessel label to the study (and writes it as STL when asked).
 int surfaceStudy(const Arguments& arguments, const Progress& progress);
+/// `skeleton --study S [--label ID] [--param key=value ...]`: adds the unit-width skeleton graph of a vessel label.
+int skeletonStudy(const Arguments& arguments, const Progress& progress);
 int writeDemoStudy(const Arguments& arguments, const Progress& progress);
 
 } // namespace vsim::cli

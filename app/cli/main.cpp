@@ -38,6 +38,8 @@ commands:
                                              into a label artifact
   surface --study <study.vsim> [--label ID] [--target-vertices N] [--stl FILE] [--param key=value ...]
                                              the lumen surface of the newest vessel label (VTP in the study)
+  skeleton --study <study.vsim> [--label ID] [--param key=value ...]
+                                             unit-width skeleton graph (thinning + VDSM) of the newest label
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -80,6 +82,8 @@ int main(int argc, char** argv)
             return vsim::cli::segmentStudy(arguments, progress);
         if (command == "surface")
             return vsim::cli::surfaceStudy(arguments, progress);
+        if (command == "skeleton")
+            return vsim::cli::skeletonStudy(arguments, progress);
         if (command == "phantom")
             return vsim::cli::writePhantomSeries(arguments, progress);
         if (command == "demo-study")

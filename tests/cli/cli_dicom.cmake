@@ -101,6 +101,12 @@ if(NOT surface_kind STREQUAL "surface")
     message(FATAL_ERROR "the surface must be the study's third artifact, found ${surface_kind}")
 endif()
 
+# The skeleton graph of the label: the small aaa's aorta, iliacs and renal arteries, no crowded voxel left.
+run_cli(0 skeletonised err skeleton --study ${WORK}/aaa.vsim)
+if(NOT skeletonised MATCHES "as skeleton-[0-9]+: [0-9]+ endpoints, [0-9]+ junctions, [0-9]+ edges;.* 0 after VDSM")
+    message(FATAL_ERROR "skeleton output:\n${skeletonised}")
+endif()
+
 # A folder of junk: non-zero exit, one line saying why.
 file(WRITE ${WORK}/junk/a.txt "not DICOM")
 file(WRITE ${WORK}/junk/b.bin "0123456789")
