@@ -8,35 +8,36 @@
 namespace vsim::imaging {
 namespace {
 
-constexpr int kCentre = 13; // local index (dx+1) + 3 (dy+1) + 9 (dz+1) of the voxel itself
+constexpr int kCentre = 13; // bit (dx+1) + 3 (dy+1) + 9 (dz+1) of the voxel itself
 
+/// Bit masks over the 3 x 3 x 3 neighbourhood: 26- and 6-adjacency of each position, N18, the six faces.
 struct LocalTables
 {
-    std::array<std::vector<int>, 27> adjacent26;
-    std::array<std::vector<int>, 27> adjacent6;
-    std::array<bool, 27> inN18{};
-    std::array<int, 6> faces{};
+    std::array<std::uint32_t, 27> adjacent26{};
+    std::array<std::uint32_t, 27> adjacent6{};
+    std::uint32_t n18 = 0;
+    std::uint32_t faces = 0;
 
     LocalTables()
     {
         auto coordinates = [](int l) { return std::array<int, 3>{l % 3 - 1, (l / 3) % 3 - 1, l / 9 - 1}; };
-        int face = 0;
         for (int a = 0; a < 27; ++a)
         {
             const auto ca = coordinates(a);
             const int fromCentre = std::abs(ca[0]) + std::abs(ca[1]) + std::abs(ca[2]);
-            inN18[std::size_t(a)] = fromCentre >= 1 && fromCentre <= 2;
+            if (fromCentre >= 1 && fromCentre <= 2)
+                n18 |= 1u << a;
             if (fromCentre == 1)
-                faces[std::size_t(face++)] = a;
+                faces |= 1u << a;
             for (int b = 0; b < 27; ++b)
             {
                 const auto cb = coordinates(b);
                 const int dx = std::abs(ca[0] - cb[0]), dy = std::abs(ca[1] - cb[1]), dz = std::abs(ca[2] - cb[2]);
                 if (a == b || std::max({dx, dy, dz}) > 1)
                     continue;
-                adjacent26[std::size_t(a)].push_back(b);
+                adjacent26[std::size_t(a)] |= 1u << b;
                 if (dx + dy + dz == 1)
-                    adjacent6[std::size_t(a)].push_back(b);
+                    adjacent6[std::size_t(a)] |= 1u << b;
             }
         }
     }
@@ -46,6 +47,21 @@ const LocalTables& tables()
 {
     static const LocalTables instance;
     return instance;
+}
+
+/// The component of `start` (one bit) within `within` under the adjacency masks.
+std::uint32_t componentOf(std::uint32_t start, std::uint32_t within, const std::array<std::uint32_t, 27>& adjacency)
+{
+    std::uint32_t component = start, frontier = start;
+    while (frontier)
+    {
+        std::uint32_t grown = 0;
+        for (std::uint32_t bits = frontier; bits; bits &= bits - 1)
+            grown |= adjacency[std::size_t(__builtin_ctz(bits))];
+        frontier = grown & within & ~component;
+        component |= frontier;
+    }
+    return component;
 }
 
 } // namespace
@@ -124,73 +140,33 @@ std::size_t SkeletonGrid::indexOf(const std::array<int, 3>& v) const
            std::size_t(dims[0]) * (std::size_t(v[1] - start[1]) + std::size_t(dims[1]) * std::size_t(v[2] - start[2]));
 }
 
-int SkeletonGrid::degree(std::size_t index) const
+std::uint32_t SkeletonGrid::neighbourhood(std::size_t index) const
 {
-    int count = 0;
-    for (std::ptrdiff_t offset : neighbour)
-        count += voxels[std::size_t(std::ptrdiff_t(index) + offset)];
-    return count;
+    std::uint32_t bits = 0;
+    for (std::size_t n = 0; n < 26; ++n)
+        if (voxels[std::size_t(std::ptrdiff_t(index) + neighbour[n])])
+            bits |= 1u << ((step[n][0] + 1) + 3 * (step[n][1] + 1) + 9 * (step[n][2] + 1));
+    return bits;
 }
 
-bool SkeletonGrid::isSimple(std::size_t index) const
+int SkeletonGrid::degree(std::size_t index) const
+{
+    return __builtin_popcount(neighbourhood(index));
+}
+
+bool SkeletonGrid::isSimpleNeighbourhood(std::uint32_t neighbours)
 {
     const LocalTables& t = tables();
-    std::array<std::uint8_t, 27> local{};
-    for (std::size_t n = 0; n < 26; ++n)
-    {
-        const int l = (step[n][0] + 1) + 3 * (step[n][1] + 1) + 9 * (step[n][2] + 1);
-        local[std::size_t(l)] = voxels[std::size_t(std::ptrdiff_t(index) + neighbour[n])];
-    }
     // One 26-connected object component among the 26 neighbours.
-    std::uint32_t seen = 0;
-    int components = 0;
-    int stack[27];
-    for (int l = 0; l < 27; ++l)
-    {
-        if (l == kCentre || !local[std::size_t(l)] || (seen >> l & 1u))
-            continue;
-        if (++components > 1)
-            return false;
-        int top = 0;
-        stack[top++] = l;
-        seen |= 1u << l;
-        while (top > 0)
-        {
-            const int current = stack[--top];
-            for (int next : t.adjacent26[std::size_t(current)])
-                if (next != kCentre && local[std::size_t(next)] && !(seen >> next & 1u))
-                {
-                    seen |= 1u << next;
-                    stack[top++] = next;
-                }
-        }
-    }
-    if (components != 1)
+    const std::uint32_t object = neighbours & ~(1u << kCentre);
+    if (!object || componentOf(object & (~object + 1), object, t.adjacent26) != object)
         return false;
-    // One 6-connected background component in N18 touching a face neighbour.
-    seen = 0;
-    components = 0;
-    for (int face : t.faces)
-    {
-        if (local[std::size_t(face)] || (seen >> face & 1u))
-            continue;
-        if (++components > 1)
-            return false;
-        int top = 0;
-        stack[top++] = face;
-        seen |= 1u << face;
-        while (top > 0)
-        {
-            const int current = stack[--top];
-            for (int next : t.adjacent6[std::size_t(current)])
-                if (t.inN18[std::size_t(next)] && !local[std::size_t(next)] && !(seen >> next & 1u))
-                {
-                    seen |= 1u << next;
-                    stack[top++] = next;
-                }
-        }
-    }
-    return components == 1;
+    // One 6-connected background component in N18 that touches a face neighbour.
+    const std::uint32_t background = ~neighbours & t.n18;
+    const std::uint32_t faces = background & t.faces;
+    if (!faces)
+        return false;
+    return (faces & ~componentOf(faces & (~faces + 1), background, t.adjacent6)) == 0;
 }
 
 } // namespace vsim::imaging

@@ -29,11 +29,14 @@ struct SkeletonGrid
 
     std::array<int, 3> voxelOf(std::size_t index) const;  ///< in label indices
     std::size_t indexOf(const std::array<int, 3>& labelVoxel) const;
+    /// The 26 neighbours as bits (bit (di+1) + 3 (dj+1) + 9 (dk+1); the voxel's own bit 13 is 0).
+    std::uint32_t neighbourhood(std::size_t index) const;
     /// Number of object voxels among the 26 neighbours.
     int degree(std::size_t index) const;
     /// Bertrand & Malandain: one 26-connected object component in N26 minus the voxel, and one 6-connected
     /// background component in N18 that is 6-adjacent to it.
-    bool isSimple(std::size_t index) const;
+    bool isSimple(std::size_t index) const { return isSimpleNeighbourhood(neighbourhood(index)); }
+    static bool isSimpleNeighbourhood(std::uint32_t neighbours);
 };
 
 } // namespace vsim::imaging

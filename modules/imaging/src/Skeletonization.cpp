@@ -43,12 +43,15 @@ void thin(SkeletonGrid& grid, const Progress& progress)
         {
             const std::ptrdiff_t outward = grid.neighbour[std::size_t(face)];
             candidates.clear();
+            auto removable = [&](std::size_t index) {
+                const std::uint32_t neighbours = grid.neighbourhood(index);
+                return __builtin_popcount(neighbours) > 1 && SkeletonGrid::isSimpleNeighbourhood(neighbours);
+            };
             for (std::size_t index : objects)
-                if (grid.voxels[index] && !grid.voxels[std::size_t(std::ptrdiff_t(index) + outward)] &&
-                    grid.degree(index) > 1 && grid.isSimple(index))
+                if (grid.voxels[index] && !grid.voxels[std::size_t(std::ptrdiff_t(index) + outward)] && removable(index))
                     candidates.push_back(index);
             for (std::size_t index : candidates) // sequential re-check keeps the topology
-                if (grid.degree(index) > 1 && grid.isSimple(index))
+                if (removable(index))
                 {
                     grid.voxels[index] = 0;
                     changed = true;
