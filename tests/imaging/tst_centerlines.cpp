@@ -1,0 +1,123 @@
+// Centerlines against the phantoms' truth centerlines: mean distance <= 0.5 mm, largest <= 1.5 mm, from the truth
+// label and from a segmentation of a noisy phantom; the B-spline smoothing brings a noisy polyline closer to the
+// curve it samples.
+
+#include "vsim/dicom/PhantomRender.h"
+#include "vsim/imaging/Centerlines.h"
+#include "vsim/imaging/Skeletonization.h"
+#include "vsim/imaging/VesselSegmentation.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <random>
+
+using namespace vsim;
+using namespace vsim::dicom;
+
+namespace {
+
+double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    const Eigen::Vector3d ab = b - a;
+    const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return (p - (a + t * ab)).norm();
+}
+
+/// Distance from p to the nearest truth centerline.
+double distanceToTruth(const PhantomModel& model, const Eigen::Vector3d& p)
+{
+    double best = 1e300;
+    for (const VesselSegment& segment : model.segments)
+        for (std::size_t s = 1; s < segment.points.size(); ++s)
+            best = std::min(best, distanceToSegment(p, segment.points[s - 1], segment.points[s]));
+    return best;
+}
+
+void checkAgainstTruth(const SkeletonGraph& centerlines, const PhantomModel& model, const char* what)
+{
+    double sum = 0, largest = 0;
+    std::size_t count = 0;
+    for (const SkeletonGraph::Edge& edge : centerlines.edges)
+        for (const Eigen::Vector3d& point : edge.points)
+        {
+            const double d = distanceToTruth(model, point);
+            sum += d, largest = std::max(largest, d), ++count;
+        }
+    qInfo("%s: %zu centerlines, %zu points, mean distance to the truth %.3f mm, largest %.3f mm", what,
+          centerlines.edges.size(), count, sum / count, largest);
+    centerlines.validate();
+    QVERIFY(sum / count <= 0.5);
+    QVERIFY(largest <= 1.5);
+}
+
+VolumeGeometry gridAround(const PhantomModel& model, double spacing, double margin)
+{
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(1e9), high = Eigen::Vector3d::Constant(-1e9);
+    for (const VesselNode& node : model.nodes)
+        low = low.cwiseMin(node.position), high = high.cwiseMax(node.position);
+    VolumeGeometry geometry;
+    geometry.origin = low - Eigen::Vector3d::Constant(margin);
+    geometry.spacing = Eigen::Vector3d::Constant(spacing);
+    for (int a = 0; a < 3; ++a)
+        geometry.dims[a] = int(std::ceil((high[a] - low[a] + 2 * margin) / spacing)) + 1;
+    return geometry;
+}
+
+SkeletonGraph centerlinesOf(const LabelVolume& label)
+{
+    const auto skeleton = imaging::extractSkeleton(label, 1, ParameterSet(imaging::skeletonParameters()));
+    return imaging::extractCenterlines(label, 1, skeleton.graph, ParameterSet(imaging::centerlineParameters()));
+}
+
+} // namespace
+
+class Centerlines : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void hepaticTreeTruthLabel()
+    {
+        PhantomModel model = buildPhantomModel(PhantomKind::HepaticTree, {});
+        model.tissues.clear();
+        const LabelVolume truth = renderPhantomLabels(model, gridAround(model, 0.35, 4.0));
+        checkAgainstTruth(centerlinesOf(truth), model, "hepatic tree truth label");
+    }
+
+    void bifurcationFromSegmentation()
+    {
+        PhantomOptions options;
+        options.size = {192, 192, 120};
+        options.spacing = {1.0, 1.0, 1.0};
+        options.seed = 5;
+        const PhantomModel model = buildPhantomModel(PhantomKind::Bifurcation, options);
+        const VolumeGeometry geometry = phantomGeometry(options);
+        const CtVolume ct = renderPhantomCt(model, stackOf(geometry), options);
+        const LabelVolume label = imaging::segmentVessels(ct, ParameterSet(imaging::segmentationParameters())).label;
+        checkAgainstTruth(centerlinesOf(label), model, "bifurcation segmented");
+    }
+
+    void bsplineSmoothsNoise()
+    {
+        // A quarter circle of radius 20 mm sampled every 0.7 mm with 0.3 mm noise.
+        std::mt19937 random(3);
+        std::normal_distribution<double> noise(0.0, 0.3);
+        std::vector<Eigen::Vector3d> noisy;
+        for (double angle = 0; angle <= M_PI / 2; angle += 0.7 / 20.0)
+            noisy.push_back(Eigen::Vector3d(20 * std::cos(angle) + noise(random), 20 * std::sin(angle) + noise(random), noise(random)));
+        auto meanError = [](const std::vector<Eigen::Vector3d>& points) {
+            double sum = 0;
+            for (const auto& p : points)
+                sum += std::abs(std::hypot(std::hypot(p.x(), p.y()), p.z()) - 20.0);
+            return sum / points.size();
+        };
+        const auto smooth = imaging::smoothWithBSpline(noisy, 4.0, 0.5);
+        qInfo("noisy arc: mean error %.3f mm raw, %.3f mm smoothed", meanError(noisy), meanError(smooth));
+        QVERIFY(meanError(smooth) < 0.5 * meanError(noisy));
+        QVERIFY((smooth.front() - noisy.front()).norm() < 1e-9 && (smooth.back() - noisy.back()).norm() < 1e-9);
+    }
+};
+
+QTEST_GUILESS_MAIN(Centerlines)
+#include "tst_centerlines.moc"
