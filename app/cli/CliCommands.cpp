@@ -7,6 +7,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PhantomWriter.h"
+#include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
@@ -359,6 +360,53 @@ int skeletonStudy(const Arguments& arguments, const Progress& progress)
               << " after VDSM, " << result.prunedBranches << " spurs pruned\n";
     for (const std::string& note : notes)
         std::cout << "warning: " << note << "\n";
+    return 0;
+}
+
+int centerlineStudy(const Arguments& arguments, const Progress& progress)
+{
+    const std::string bundle = arguments.option("study");
+    if (bundle.empty() || !arguments.positional.empty() || arguments.hasOption("from") != arguments.hasOption("to"))
+        throw Error("usage: vascusim-cli centerline --study <study.vsim> [--skeleton ID] [--label ID] "
+                    "[--from NODE --to NODE] [--param key=value]");
+    study::Study study = study::Study::open(bundle);
+    const std::string skeletonId =
+        chooseArtifact(study, arguments.option("skeleton"), study::ArtifactKind::Skeleton,
+                       "the study has no skeleton: run vascusim-cli skeleton first");
+    const std::string labelId =
+        arguments.hasOption("label") ? arguments.option("label")
+                                     : study.artifact(skeletonId).provenance.inputs.empty()
+                                           ? chooseArtifact(study, {}, study::ArtifactKind::Label, "no vessel label")
+                                           : study.artifact(skeletonId).provenance.inputs.front();
+    ParameterSet parameters(imaging::centerlineParameters());
+    applyParameters(arguments, parameters);
+    const SkeletonGraph skeleton = study.loadSkeleton(skeletonId);
+    std::optional<std::pair<int, int>> fromTo;
+    if (arguments.hasOption("from"))
+    {
+        fromTo = std::pair<int, int>{int(parseNumber(arguments, "from", 0)), int(parseNumber(arguments, "to", 0))};
+        for (int node : {fromTo->first, fromTo->second})
+            if (node < 0 || node >= int(skeleton.nodes.size()))
+                throw Error("no skeleton node " + std::to_string(node) + " (the skeleton has " +
+                            std::to_string(skeleton.nodes.size()) + " nodes)");
+    }
+    const SkeletonGraph centerlines =
+        imaging::extractCenterlines(study.loadLabel(labelId), 1, skeleton, parameters, fromTo, progress.subRange(0, 0.9));
+    study::Provenance provenance;
+    provenance.command = "centerline";
+    provenance.inputs = {skeletonId, labelId};
+    provenance.parameters = provenanceParameters(parameters);
+    if (fromTo)
+        provenance.parameters["from_node"] = std::to_string(fromTo->first),
+        provenance.parameters["to_node"] = std::to_string(fromTo->second);
+    const std::string id = study.addSkeleton(centerlines, "Centerlines", provenance);
+    study.save();
+    progress.report(1.0, "saved");
+    double length = 0;
+    for (const auto& edge : centerlines.edges)
+        length += edge.length();
+    std::cout << "centerlines of " << skeletonId << " as " << id << ": " << centerlines.edges.size()
+              << " paths, " << formatNumber(length) << " mm in all\n";
     return 0;
 }
 

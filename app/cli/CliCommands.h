@@ -37,6 +37,9 @@ int segmentStudy(const Arguments& arguments, const Progress& progress);
 int surfaceStudy(const Arguments& arguments, const Progress& progress);
 /// `skeleton --study S [--label ID] [--param key=value ...]`: adds the unit-width skeleton graph of a vessel label.
 int skeletonStudy(const Arguments& arguments, const Progress& progress);
+/// `centerline --study S [--skeleton ID] [--label ID] [--from NODE --to NODE] [--param key=value ...]`: smoothed
+/// centerlines of every skeleton edge (or of one path) into the study.
+int centerlineStudy(const Arguments& arguments, const Progress& progress);
 int writeDemoStudy(const Arguments& arguments, const Progress& progress);
 
 } // namespace vsim::cli

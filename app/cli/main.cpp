@@ -40,6 +40,9 @@ commands:
                                              the lumen surface of the newest vessel label (VTP in the study)
   skeleton --study <study.vsim> [--label ID] [--param key=value ...]
                                              unit-width skeleton graph (thinning + VDSM) of the newest label
+  centerline --study <study.vsim> [--skeleton ID] [--from NODE --to NODE] [--param key=value ...]
+                                             B-spline centerlines (fast marching + minimal paths) of every skeleton
+                                             edge, or of one path between two skeleton nodes
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -84,6 +87,8 @@ int main(int argc, char** argv)
             return vsim::cli::surfaceStudy(arguments, progress);
         if (command == "skeleton")
             return vsim::cli::skeletonStudy(arguments, progress);
+        if (command == "centerline")
+            return vsim::cli::centerlineStudy(arguments, progress);
         if (command == "phantom")
             return vsim::cli::writePhantomSeries(arguments, progress);
         if (command == "demo-study")

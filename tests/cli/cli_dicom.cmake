@@ -107,6 +107,12 @@ if(NOT skeletonised MATCHES "as skeleton-[0-9]+: [0-9]+ endpoints, [0-9]+ juncti
     message(FATAL_ERROR "skeleton output:\n${skeletonised}")
 endif()
 
+run_cli(0 centerlined err centerline --study ${WORK}/aaa.vsim)
+if(NOT centerlined MATCHES "centerlines of skeleton-[0-9]+ as skeleton-[0-9]+: [0-9]+ paths")
+    message(FATAL_ERROR "centerline output:\n${centerlined}")
+endif()
+run_cli(1 out err centerline --study ${WORK}/aaa.vsim --from 0 --to 999)
+
 # A folder of junk: non-zero exit, one line saying why.
 file(WRITE ${WORK}/junk/a.txt "not DICOM")
 file(WRITE ${WORK}/junk/b.bin "0123456789")
