@@ -274,6 +274,32 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
                                                          timeAt(toIsChild ? voxelFrom : voxelTo));
         if (voxels.back() != (toIsChild ? voxelFrom : voxelTo))
             voxels.push_back(toIsChild ? voxelFrom : voxelTo);
+        // Thinning stops short of a rounded vessel end: at an endpoint, carry on up the arrival time while the
+        // lumen keeps at least 90 % of the end's radius (a cap's centre is where the full radius ends).
+        const int child = toIsChild ? to : from;
+        if (skeleton.degree(child) == 1 && !fromTo)
+        {
+            const double endRadius = distance.at(voxels.front()[0], voxels.front()[1], voxels.front()[2]);
+            std::vector<std::array<int, 3>> extension;
+            std::array<int, 3> current = voxels.front();
+            for (int guard = 0; guard < 1000; ++guard)
+            {
+                std::array<int, 3> best = current;
+                for (int n = 0; n < 27; ++n)
+                {
+                    const std::array<int, 3> next{current[0] + n % 3 - 1, current[1] + (n / 3) % 3 - 1, current[2] + n / 9 - 1};
+                    if (geometry.contains(next[0], next[1], next[2]) && binary.at(next[0], next[1], next[2]) &&
+                        distance.at(next[0], next[1], next[2]) >= 0.9 * endRadius && timeAt(next) < kUnreached &&
+                        timeAt(next) > timeAt(best))
+                        best = next;
+                }
+                if (best == current)
+                    break;
+                current = best;
+                extension.push_back(current);
+            }
+            voxels.insert(voxels.begin(), extension.rbegin(), extension.rend());
+        }
         if (toIsChild)
             std::reverse(voxels.begin(), voxels.end()); // from -> to
         // Sub-voxel: each path voxel moves to the centroid of its 3 x 3 x 3 neighbourhood weighted by the
