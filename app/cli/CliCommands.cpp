@@ -9,13 +9,17 @@
 #include "vsim/dicom/PhantomWriter.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
+#include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/study/Study.h"
+
+#include <nlohmann/json.hpp>
 #include "vsim/study/VolumeFileImport.h"
 
 #include <algorithm>
 #include <array>
+#include <fstream>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -407,6 +411,85 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress)
         length += edge.length();
     std::cout << "centerlines of " << skeletonId << " as " << id << ": " << centerlines.edges.size()
               << " paths, " << formatNumber(length) << " mm in all\n";
+    return 0;
+}
+
+int measureStudy(const Arguments& arguments, const Progress& progress)
+{
+    const std::string bundle = arguments.option("study");
+    if (bundle.empty() || !arguments.positional.empty())
+        throw Error("usage: vascusim-cli measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE]");
+    const study::Study study = study::Study::open(bundle);
+    std::string centerlinesId = arguments.option("centerlines");
+    if (centerlinesId.empty())
+        for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend() && centerlinesId.empty(); ++it)
+            if (it->kind == study::ArtifactKind::Skeleton && it->provenance.command == "centerline" && !it->damaged)
+                centerlinesId = it->id;
+    if (centerlinesId.empty())
+        throw Error("the study has no centerlines: run vascusim-cli centerline first");
+    const auto& inputs = study.artifact(centerlinesId).provenance.inputs;
+    const std::string labelId = arguments.hasOption("label") ? arguments.option("label")
+                                : inputs.size() > 1          ? inputs[1]
+                                                             : chooseArtifact(study, {}, study::ArtifactKind::Label,
+                                                                              "no vessel label");
+    ParameterSet parameters(imaging::measurementParameters());
+    applyParameters(arguments, parameters);
+    const imaging::VesselMeasurements result = imaging::measureVessels(
+        study.loadLabel(labelId), study.loadSkeleton(centerlinesId), parameters, progress.subRange(0.0, 0.95));
+
+    nlohmann::json segments = nlohmann::json::array();
+    for (const imaging::SegmentMeasurements& s : result.segments)
+    {
+        nlohmann::json sections = nlohmann::json::array();
+        for (const imaging::CrossSection& c : s.sections)
+            sections.push_back({{"arc_mm", c.arcLengthMm},
+                                {"centre_mm", {c.centre.x(), c.centre.y(), c.centre.z()}},
+                                {"area_mm2", c.areaMm2},
+                                {"equivalent_diameter_mm", c.equivalentDiameterMm},
+                                {"min_diameter_mm", c.minDiameterMm},
+                                {"max_diameter_mm", c.maxDiameterMm},
+                                {"near_junction", c.nearJunction}});
+        segments.push_back({{"from_node", s.from},
+                            {"to_node", s.to},
+                            {"length_mm", s.lengthMm},
+                            {"start_radius_mm", s.startRadiusMm},
+                            {"end_radius_mm", s.endRadiusMm},
+                            {"reference_diameter_mm", s.referenceDiameterMm},
+                            {"minimal_diameter_mm", s.minimalDiameterMm},
+                            {"diameter_stenosis_percent", s.diameterStenosisPercent},
+                            {"area_stenosis_percent", s.areaStenosisPercent},
+                            {"max_diameter_mm", s.maxDiameterMm},
+                            {"max_caliper_mm", s.maxCaliperMm},
+                            {"sections", sections}});
+    }
+    const nlohmann::json document = {{"centerlines", centerlinesId},
+                                     {"label", labelId},
+                                     {"parameters", provenanceParameters(parameters)},
+                                     {"max_diameter_mm", result.maxDiameterMm},
+                                     {"max_caliper_mm", result.maxCaliperMm},
+                                     {"worst_stenosis_segment", result.worstStenosisSegment},
+                                     {"segments", segments}};
+    if (arguments.hasOption("json"))
+    {
+        std::ofstream file(arguments.option("json"), std::ios::trunc);
+        file << document.dump(2) << "\n";
+        if (!file.flush())
+            throw Error("cannot write the measurements", {{"file", arguments.option("json")}});
+    }
+    progress.report(1.0, "measured");
+    std::cout << "maximum diameter " << formatNumber(result.maxDiameterMm) << " mm (largest caliper "
+              << formatNumber(result.maxCaliperMm) << " mm)\n";
+    if (result.worstStenosisSegment >= 0)
+    {
+        const auto& worst = result.segments[std::size_t(result.worstStenosisSegment)];
+        std::cout << "worst stenosis " << formatNumber(worst.diameterStenosisPercent) << " % diameter, "
+                  << formatNumber(worst.areaStenosisPercent) << " % area (nodes " << worst.from << "-" << worst.to
+                  << ", minimal " << formatNumber(worst.minimalDiameterMm) << " mm of "
+                  << formatNumber(worst.referenceDiameterMm) << " mm)\n";
+    }
+    for (const imaging::SegmentMeasurements& s : result.segments)
+        std::cout << "segment " << s.from << "-" << s.to << ": " << formatNumber(s.lengthMm) << " mm, radii "
+                  << formatNumber(s.startRadiusMm) << " -> " << formatNumber(s.endRadiusMm) << " mm\n";
     return 0;
 }
 

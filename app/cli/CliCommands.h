@@ -40,6 +40,9 @@ int skeletonStudy(const Arguments& arguments, const Progress& progress);
 /// `centerline --study S [--skeleton ID] [--label ID] [--from NODE --to NODE] [--param key=value ...]`: smoothed
 /// centerlines of every skeleton edge (or of one path) into the study.
 int centerlineStudy(const Arguments& arguments, const Progress& progress);
+/// `measure --study S [--centerlines ID] [--label ID] [--json FILE]`: cross-sections, lengths, radii, maximum
+/// diameter and stenosis along the newest centerlines, printed (and written as JSON when asked).
+int measureStudy(const Arguments& arguments, const Progress& progress);
 int writeDemoStudy(const Arguments& arguments, const Progress& progress);
 
 } // namespace vsim::cli

@@ -43,6 +43,8 @@ commands:
   centerline --study <study.vsim> [--skeleton ID] [--from NODE --to NODE] [--param key=value ...]
                                              B-spline centerlines (fast marching + minimal paths) of every skeleton
                                              edge, or of one path between two skeleton nodes
+  measure --study <study.vsim> [--centerlines ID] [--json FILE]
+                                             cross-sections, lengths, radii, maximum diameter, stenosis
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -89,6 +91,8 @@ int main(int argc, char** argv)
             return vsim::cli::skeletonStudy(arguments, progress);
         if (command == "centerline")
             return vsim::cli::centerlineStudy(arguments, progress);
+        if (command == "measure")
+            return vsim::cli::measureStudy(arguments, progress);
         if (command == "phantom")
             return vsim::cli::writePhantomSeries(arguments, progress);
         if (command == "demo-study")

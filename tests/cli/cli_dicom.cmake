@@ -112,6 +112,12 @@ if(NOT centerlined MATCHES "centerlines of skeleton-[0-9]+ as skeleton-[0-9]+: [
     message(FATAL_ERROR "centerline output:\n${centerlined}")
 endif()
 run_cli(1 out err centerline --study ${WORK}/aaa.vsim --from 0 --to 999)
+run_cli(0 measured err measure --study ${WORK}/aaa.vsim --json ${WORK}/measurements.json)
+file(READ ${WORK}/measurements.json measurements)
+string(JSON max_diameter GET "${measurements}" max_diameter_mm)
+if(NOT measured MATCHES "maximum diameter" OR max_diameter LESS 40 OR max_diameter GREATER 70)
+    message(FATAL_ERROR "measure: maximum diameter ${max_diameter} mm (the phantom's is 55 mm):\n${measured}")
+endif()
 
 # A folder of junk: non-zero exit, one line saying why.
 file(WRITE ${WORK}/junk/a.txt "not DICOM")
