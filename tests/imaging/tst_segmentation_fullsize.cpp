@@ -59,6 +59,33 @@ private slots:
         QVERIFY(std::abs(measured.maxDiameterMm - model.measures.at("max_diameter_mm")) <= 1.0);
         QVERIFY(pipeline <= 60.0);
     }
+
+    void hepaticTreeTopology()
+    {
+        const PhantomOptions options; // default size and spacing: the tips (0.70 mm radius) are 2 voxels wide
+        const PhantomModel model = buildPhantomModel(PhantomKind::HepaticTree, options);
+        const VolumeGeometry geometry = phantomGeometry(options);
+        const CtVolume ct = renderPhantomCt(model, stackOf(geometry), options);
+        QElapsedTimer timer;
+        timer.start();
+        const LabelVolume label = imaging::segmentVessels(ct, ParameterSet(imaging::segmentationParameters())).label;
+        const imaging::SkeletonResult skeleton = imaging::extractSkeleton(label, 1, ParameterSet(imaging::skeletonParameters()));
+        std::printf("{\"case\": \"hepatic_tree_512x512x400_topology\", \"seconds\": %.2f, \"endpoints\": %zu, "
+                    "\"junctions\": %zu, \"edges\": %zu, \"crowded_after_thinning\": %zu, \"crowded\": %zu, "
+                    "\"truth\": [17, 15, 31]}\n",
+                    timer.elapsed() / 1000.0, skeleton.graph.endpoints().size(), skeleton.graph.junctions().size(),
+                    skeleton.graph.edges.size(), skeleton.crowdedAfterThinning, skeleton.crowdedAfterVdsm);
+        QCOMPARE(skeleton.graph.endpoints().size(), std::size_t(17));
+        // Known open item (issue 4): at 0.7 mm the 0.7 mm tips are 2 voxels wide and two junctions stay crowded
+        // triangles that VDSM cannot separate (17 junctions, 34 edges, 3 crowded voxels on 2026-11-22). The truth
+        // label at 0.35 mm gives the exact topology (tst_imaging_skeleton).
+        QEXPECT_FAIL("", "crowded junction triangles in 2-voxel-wide branches", Continue);
+        QCOMPARE(skeleton.crowdedAfterVdsm, std::size_t(0));
+        QEXPECT_FAIL("", "crowded junction triangles in 2-voxel-wide branches", Continue);
+        QCOMPARE(skeleton.graph.junctions().size(), std::size_t(15));
+        QEXPECT_FAIL("", "crowded junction triangles in 2-voxel-wide branches", Continue);
+        QCOMPARE(skeleton.graph.edges.size(), std::size_t(31));
+    }
 };
 
 QTEST_GUILESS_MAIN(SegmentationFullSize)

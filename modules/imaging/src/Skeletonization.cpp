@@ -173,46 +173,87 @@ std::size_t vdsmPass(SkeletonGrid& grid, const Eigen::Vector3d& spacing, const s
                 if (crowded[next] && !visited[next])
                     visited[next] = 1, region.push_back(next);
             }
-        std::set<std::size_t> exits;
-        for (std::size_t member : region)
-            for (std::ptrdiff_t offset : grid.neighbour)
-            {
-                const std::size_t next = std::size_t(std::ptrdiff_t(member) + offset);
-                if (grid.voxels[next] && !crowded[next])
-                    exits.insert(next);
-            }
-        std::set<std::size_t> allowed(region.begin(), region.end());
-        if (!lumen.empty())
+        // Route a star from the centre to every exit; where the region is too tight for separated paths, take
+        // the exits into the region (the next skeleton voxels become the exits) and try again, up to 3 times.
+        std::set<std::size_t> exits, routed, firstRouted;
+        const std::vector<std::size_t> firstRegion = region;
+        // Growing helps where the vessel is a few voxels wide (no room for separated paths); in a wide one the
+        // first routing is kept. Thin: under half of the 5 x 5 x 5 block around the region's first voxel is lumen.
+        bool thin = !lumen.empty();
+        if (thin)
+        {
+            int inside = 0;
+            const auto v = grid.voxelOf(region.front());
+            for (int dk = -2; dk <= 2; ++dk)
+                for (int dj = -2; dj <= 2; ++dj)
+                    for (int di = -2; di <= 2; ++di)
+                    {
+                        const std::array<int, 3> u{v[0] + di, v[1] + dj, v[2] + dk};
+                        bool within = true;
+                        for (int a = 0; a < 3; ++a)
+                            within = within && u[a] >= grid.start[a] && u[a] < grid.start[a] + grid.dims[a];
+                        inside += within && lumen[grid.indexOf(u)];
+                    }
+            thin = inside < 63;
+        }
+        for (int growth = 0; growth <= 3; ++growth)
+        {
+            const std::set<std::size_t> members(region.begin(), region.end());
+            exits.clear();
             for (std::size_t member : region)
                 for (std::ptrdiff_t offset : grid.neighbour)
                 {
                     const std::size_t next = std::size_t(std::ptrdiff_t(member) + offset);
-                    if (lumen[next] && !grid.voxels[next])
-                        allowed.insert(next);
+                    if (grid.voxels[next] && !members.count(next))
+                        exits.insert(next);
                 }
-        const std::size_t centre = spatialMedian(grid, region, spacing);
-        std::set<std::size_t> routed{centre};
-        bool clean = true;
-        for (std::size_t exit : exits)
-        {
-            auto blocked = [&](std::size_t v) {
-                for (std::size_t other : exits)
-                    if (other != exit && adjacent(grid, v, other))
-                        return true;
-                for (std::size_t voxel : routed)
-                    if (voxel != centre && adjacent(grid, v, voxel))
-                        return true;
-                return false;
-            };
-            std::vector<std::size_t> path = shortestPathTo(grid, allowed, centre, exit, spacing, blocked);
-            if (path.empty())
+            std::set<std::size_t> allowed(members);
+            if (!lumen.empty())
+                for (std::size_t member : region)
+                    for (std::ptrdiff_t offset : grid.neighbour)
+                    {
+                        const std::size_t next = std::size_t(std::ptrdiff_t(member) + offset);
+                        if (lumen[next] && !grid.voxels[next])
+                            allowed.insert(next);
+                    }
+            const std::size_t centre = spatialMedian(grid, region, spacing);
+            routed = {centre};
+            bool clean = true;
+            for (std::size_t exit : exits)
             {
-                clean = false; // no separated route: fall back to the plain shortest path
-                path = shortestPathTo(grid, allowed, centre, exit, spacing, [](std::size_t) { return false; });
+                auto blocked = [&](std::size_t v) {
+                    for (std::size_t other : exits)
+                        if (other != exit && adjacent(grid, v, other))
+                            return true;
+                    for (std::size_t voxel : routed)
+                        if (voxel != centre && adjacent(grid, v, voxel))
+                            return true;
+                    return false;
+                };
+                std::vector<std::size_t> path = shortestPathTo(grid, allowed, centre, exit, spacing, blocked);
+                if (path.empty())
+                {
+                    clean = false; // no separated route: the plain shortest path keeps the exit connected
+                    path = shortestPathTo(grid, allowed, centre, exit, spacing, [](std::size_t) { return false; });
+                }
+                routed.insert(path.begin(), path.end());
             }
-            routed.insert(path.begin(), path.end());
+            if (growth == 0)
+                firstRouted = routed;
+            if (clean)
+                break;
+            if (growth == 3 || !thin) // never separated (or a wide vessel): keep the first, smallest change
+            {
+                region = firstRegion;
+                routed = firstRouted;
+                break;
+            }
+            for (std::size_t exit : exits) // grow: the exits join the region
+            {
+                region.push_back(exit);
+                visited[exit] = 1;
+            }
         }
-        (void)clean;
         for (std::size_t member : region)
             if (!routed.count(member))
                 grid.voxels[member] = 0, ++changed;
@@ -221,6 +262,26 @@ std::size_t vdsmPass(SkeletonGrid& grid, const Eigen::Vector3d& spacing, const s
                 grid.voxels[voxel] = 1, ++changed;
     }
     return changed;
+}
+
+/// What VDSM's routing could not separate: crowded voxels that are simple points of the skeleton (deleting one
+/// keeps every component, tunnel and cavity) are deleted, one at a time, until none is left.
+std::size_t deleteSimpleCrowdedVoxels(SkeletonGrid& grid)
+{
+    std::size_t deleted = 0;
+    bool changed = true;
+    while (changed)
+    {
+        changed = false;
+        for (std::size_t index = 0; index < grid.voxels.size(); ++index)
+            if (isCrowded(grid, index) && grid.isSimple(index))
+            {
+                grid.voxels[index] = 0;
+                ++deleted;
+                changed = true;
+            }
+    }
+    return deleted;
 }
 
 std::size_t countCrowded(const SkeletonGrid& grid)
@@ -334,6 +395,7 @@ std::size_t removeCrowdedPoints(LabelVolume& skeleton, const LabelVolume* lumen)
         if (now == 0)
             break;
     }
+    changed += deleteSimpleCrowdedVoxels(grid);
     skeleton = grid.toLabel(skeleton.geometry());
     return changed;
 }
@@ -352,6 +414,7 @@ SkeletonResult extractSkeleton(const LabelVolume& label, std::uint8_t value, con
     for (int pass = 0; pass < 10 && countCrowded(grid) > 0; ++pass)
         if (vdsmPass(grid, spacing, lumen) == 0)
             break;
+    deleteSimpleCrowdedVoxels(grid);
     progress.report(0.8, "pruning");
     const RealVolume distance = insideDistance(label, value);
     auto radiusAt = [&](std::size_t index) {

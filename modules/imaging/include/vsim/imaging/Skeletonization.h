@@ -31,7 +31,8 @@ std::size_t countCrowdedVoxels(const LabelVolume& skeleton);
 /// other crowded point is deleted. The paths are routed so that different paths never touch except at the centre
 /// (else the junction stays crowded), through the region and, where it offers no such route, through `lumen`
 /// voxels next to it (optional, the vessel label: value 1). Repeats until no crowded point is left (or nothing
-/// changes). Returns the number of voxels changed.
+/// changes); crowded voxels the routing could not separate are then deleted where they are simple points of the
+/// skeleton (topology kept). Returns the number of voxels changed.
 std::size_t removeCrowdedPoints(LabelVolume& skeleton, const LabelVolume* lumen = nullptr);
 
 struct SkeletonResult
