@@ -2,6 +2,7 @@
 // label and from a segmentation of a noisy phantom; the B-spline smoothing brings a noisy polyline closer to the
 // curve it samples.
 
+#include "PhantomGrids.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
@@ -51,18 +52,6 @@ void checkAgainstTruth(const SkeletonGraph& centerlines, const PhantomModel& mod
     QVERIFY(largest <= 1.5);
 }
 
-VolumeGeometry gridAround(const PhantomModel& model, double spacing, double margin)
-{
-    Eigen::Vector3d low = Eigen::Vector3d::Constant(1e9), high = Eigen::Vector3d::Constant(-1e9);
-    for (const VesselNode& node : model.nodes)
-        low = low.cwiseMin(node.position), high = high.cwiseMax(node.position);
-    VolumeGeometry geometry;
-    geometry.origin = low - Eigen::Vector3d::Constant(margin);
-    geometry.spacing = Eigen::Vector3d::Constant(spacing);
-    for (int a = 0; a < 3; ++a)
-        geometry.dims[a] = int(std::ceil((high[a] - low[a] + 2 * margin) / spacing)) + 1;
-    return geometry;
-}
 
 SkeletonGraph centerlinesOf(const LabelVolume& label)
 {
@@ -81,7 +70,7 @@ private slots:
     {
         PhantomModel model = buildPhantomModel(PhantomKind::HepaticTree, {});
         model.tissues.clear();
-        const LabelVolume truth = renderPhantomLabels(model, gridAround(model, 0.35, 4.0));
+        const LabelVolume truth = renderPhantomLabels(model, test::gridAroundVessels(model, 0.35, 4.0));
         checkAgainstTruth(centerlinesOf(truth), model, "hepatic tree truth label");
     }
 

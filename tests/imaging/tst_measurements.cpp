@@ -2,6 +2,7 @@
 // seed): AAA maximum diameter within 1 mm, stenosis within 5 percentage points, segment lengths and radii
 // within 10 % (hepatic tree, from its truth label).
 
+#include "PhantomGrids.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
@@ -80,15 +81,7 @@ private slots:
     {
         PhantomModel model = buildPhantomModel(PhantomKind::HepaticTree, {});
         model.tissues.clear();
-        Eigen::Vector3d low = Eigen::Vector3d::Constant(1e9), high = Eigen::Vector3d::Constant(-1e9);
-        for (const VesselNode& node : model.nodes)
-            low = low.cwiseMin(node.position), high = high.cwiseMax(node.position);
-        VolumeGeometry geometry;
-        geometry.origin = low - Eigen::Vector3d::Constant(4.0);
-        geometry.spacing = Eigen::Vector3d::Constant(0.35);
-        for (int a = 0; a < 3; ++a)
-            geometry.dims[a] = int(std::ceil((high[a] - low[a] + 8.0) / 0.35)) + 1;
-        const Pipeline p = measure(renderPhantomLabels(model, geometry));
+        const Pipeline p = measure(renderPhantomLabels(model, test::gridAroundVessels(model, 0.35, 4.0)));
         // Match each measured segment to the truth segment whose end nodes are nearest to its ends.
         int matched = 0;
         double worstLength = 0, worstRadius = 0;

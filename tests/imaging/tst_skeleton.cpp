@@ -2,6 +2,7 @@
 // phantoms' truth topology (bifurcation; hepatic tree with 31 segments), from the truth labels and from a
 // segmentation of a noisy phantom.
 
+#include "PhantomGrids.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselSegmentation.h"
@@ -14,19 +15,6 @@ using namespace vsim::dicom;
 
 namespace {
 
-/// A grid around the model's vessels (nodes +- margin) at `spacing` mm.
-VolumeGeometry gridAround(const PhantomModel& model, double spacing, double margin)
-{
-    Eigen::Vector3d low = Eigen::Vector3d::Constant(1e9), high = Eigen::Vector3d::Constant(-1e9);
-    for (const VesselNode& node : model.nodes)
-        low = low.cwiseMin(node.position), high = high.cwiseMax(node.position);
-    VolumeGeometry geometry;
-    geometry.origin = low - Eigen::Vector3d::Constant(margin);
-    geometry.spacing = Eigen::Vector3d::Constant(spacing);
-    for (int a = 0; a < 3; ++a)
-        geometry.dims[a] = int(std::ceil((high[a] - low[a] + 2 * margin) / spacing)) + 1;
-    return geometry;
-}
 
 void checkTopology(const imaging::SkeletonResult& result, const PhantomModel& model, const char* what)
 {
@@ -61,7 +49,7 @@ private slots:
     {
         PhantomOptions options;
         const PhantomModel model = buildPhantomModel(PhantomKind::Bifurcation, options);
-        const VolumeGeometry geometry = gridAround(model, 0.8, 6.0);
+        const VolumeGeometry geometry = test::gridAroundVessels(model, 0.8, 6.0);
         const LabelVolume truth = renderPhantomLabels(model, geometry);
         QElapsedTimer timer;
         timer.start();
@@ -75,7 +63,7 @@ private slots:
         PhantomOptions options;
         PhantomModel model = buildPhantomModel(PhantomKind::HepaticTree, options);
         model.tissues.clear();
-        const VolumeGeometry geometry = gridAround(model, 0.35, 4.0);
+        const VolumeGeometry geometry = test::gridAroundVessels(model, 0.35, 4.0);
         const LabelVolume truth = renderPhantomLabels(model, geometry);
         QElapsedTimer timer;
         timer.start();

@@ -1,10 +1,10 @@
 #include "vsim/imaging/Centerlines.h"
 
+#include "LabelGeometry.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <Eigen/Dense>
 #include <itkFastMarchingImageFilter.h>
-#include <itkSignedMaurerDistanceMapImageFilter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -43,30 +43,14 @@ Eigen::VectorXd cubicBasis(const std::vector<double>& knots, int controls, doubl
     return basis.head(controls);
 }
 
-RealVolume insideDistanceMm(const LabelVolume& binary)
-{
-    auto filter = itk::SignedMaurerDistanceMapImageFilter<interop::ItkImage3<std::uint8_t>, FloatImage>::New();
-    filter->SetInput(interop::toItk(binary));
-    filter->SetUseImageSpacing(true);
-    filter->SetInsideIsPositive(true);
-    filter->SetSquaredDistance(false);
-    filter->Update();
-    return interop::fromItk<float>(filter->GetOutput());
-}
-
 /// The label cropped to its bounding box + `margin` voxels, as 0/1.
 LabelVolume croppedBinary(const LabelVolume& label, std::uint8_t value, int margin)
 {
-    const auto& d = label.geometry().dims;
-    std::array<int, 3> low{d[0], d[1], d[2]}, high{-1, -1, -1};
-    for (int k = 0; k < d[2]; ++k)
-        for (int j = 0; j < d[1]; ++j)
-            for (int i = 0; i < d[0]; ++i)
-                if (label.at(i, j, k) == value)
-                    low = {std::min(low[0], i), std::min(low[1], j), std::min(low[2], k)},
-                    high = {std::max(high[0], i), std::max(high[1], j), std::max(high[2], k)};
-    if (high[0] < 0)
+    const auto bounds = labelBounds(label, value);
+    if (!bounds)
         throw Error("the label is empty: segment the vessels first");
+    const auto& d = label.geometry().dims;
+    const auto& [low, high] = *bounds;
     VolumeGeometry geometry = label.geometry();
     std::array<int, 3> start{};
     for (int a = 0; a < 3; ++a)
@@ -175,7 +159,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
         throw Error("the skeleton is empty: run the skeleton step first");
     const LabelVolume binary = croppedBinary(label, value, 2);
     const VolumeGeometry& geometry = binary.geometry();
-    const RealVolume distance = insideDistanceMm(binary);
+    const RealVolume distance = insideDistanceMm(binary, 1);
     progress.report(0.2, "fast marching");
 
     // Speed: fastest on the medial axis; a crawl in the voxels touching the lumen, so that lumen voxels joined

@@ -1,5 +1,7 @@
 #include "SkeletonGrid.h"
 
+#include "LabelGeometry.h"
+
 #include "vsim/core/Error.h"
 
 #include <algorithm>
@@ -68,18 +70,10 @@ std::uint32_t componentOf(std::uint32_t start, std::uint32_t within, const std::
 
 SkeletonGrid SkeletonGrid::fromLabel(const LabelVolume& label, std::uint8_t value)
 {
-    const auto& d = label.geometry().dims;
-    std::array<int, 3> low{d[0], d[1], d[2]}, high{-1, -1, -1};
-    for (int k = 0; k < d[2]; ++k)
-        for (int j = 0; j < d[1]; ++j)
-            for (int i = 0; i < d[0]; ++i)
-                if (label.at(i, j, k) == value)
-                {
-                    low = {std::min(low[0], i), std::min(low[1], j), std::min(low[2], k)};
-                    high = {std::max(high[0], i), std::max(high[1], j), std::max(high[2], k)};
-                }
-    if (high[0] < 0)
+    const auto bounds = labelBounds(label, value);
+    if (!bounds)
         throw Error("the label is empty: segment the vessels first");
+    const auto& [low, high] = *bounds;
     SkeletonGrid grid;
     for (int a = 0; a < 3; ++a)
     {

@@ -1,9 +1,7 @@
 #include "vsim/imaging/Skeletonization.h"
 
+#include "LabelGeometry.h"
 #include "SkeletonGrid.h"
-#include "vsim/interop/ItkImage.h"
-
-#include <itkSignedMaurerDistanceMapImageFilter.h>
 
 #include <algorithm>
 #include <functional>
@@ -344,21 +342,6 @@ double pathLength(const SkeletonGrid& grid, const std::vector<std::size_t>& path
     return length;
 }
 
-/// Distance (mm) from every voxel inside the label to the lumen boundary, on the label's grid.
-RealVolume insideDistance(const LabelVolume& label, std::uint8_t value)
-{
-    LabelVolume binary(label.geometry());
-    std::transform(label.data(), label.data() + label.size(), binary.data(),
-                   [value](std::uint8_t v) { return std::uint8_t(v == value); });
-    auto filter = itk::SignedMaurerDistanceMapImageFilter<interop::ItkImage3<std::uint8_t>, itk::Image<float, 3>>::New();
-    filter->SetInput(interop::toItk(binary));
-    filter->SetUseImageSpacing(true);
-    filter->SetInsideIsPositive(true);
-    filter->SetSquaredDistance(false);
-    filter->Update();
-    return interop::fromItk<float>(filter->GetOutput());
-}
-
 } // namespace
 
 std::vector<ParameterSpec> skeletonParameters()
@@ -416,7 +399,7 @@ SkeletonResult extractSkeleton(const LabelVolume& label, std::uint8_t value, con
             break;
     deleteSimpleCrowdedVoxels(grid);
     progress.report(0.8, "pruning");
-    const RealVolume distance = insideDistance(label, value);
+    const RealVolume distance = insideDistanceMm(label, value);
     auto radiusAt = [&](std::size_t index) {
         const auto v = grid.voxelOf(index);
         return std::max(double(distance.at(v[0], v[1], v[2])), 0.5 * spacing.minCoeff());
