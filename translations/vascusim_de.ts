@@ -225,47 +225,47 @@
         <translation>Artefakt &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="84"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="86"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="85"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="87"/>
         <source>Window/Level: &amp;CTA</source>
         <translation>Fenster: &amp;CTA</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="86"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="88"/>
         <source>Window/Level: &amp;Soft Tissue</source>
         <translation>Fenster: &amp;Weichteil</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="87"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="89"/>
         <source>Window/Level: &amp;Bone</source>
         <translation>Fenster: &amp;Knochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="89"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="91"/>
         <source>3D: &amp;Anterior View</source>
         <translation>3D: &amp;Ansicht von vorn</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="94"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="96"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="95"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="97"/>
         <source>&amp;About VascuSim</source>
         <translation>Ü&amp;ber VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="113"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="115"/>
         <source>About VascuSim</source>
         <translation>Über VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="114"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="116"/>
         <source>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patient-specific physics for vascular procedure planning.&lt;/p&gt;&lt;p&gt;Results support planning and need clinical judgement.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -302,17 +302,21 @@
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="89"/>
         <location filename="../app/gui/MainWindow.cpp" line="93"/>
-        <location filename="../app/gui/MainWindow.cpp" line="100"/>
+        <location filename="../app/gui/MainWindow.cpp" line="102"/>
         <source>Import</source>
         <translation>Importieren</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <location filename="../app/gui/MainWindow.cpp" line="93"/>
+        <location filename="../app/gui/MainWindow.cpp" line="104"/>
         <source>Segment</source>
         <translation>Segmentieren</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <location filename="../app/gui/MainWindow.cpp" line="93"/>
+        <location filename="../app/gui/MainWindow.cpp" line="106"/>
         <source>Skeleton &amp;&amp; Centerlines</source>
         <translation>Skelett &amp;&amp; Mittellinien</translation>
     </message>
@@ -337,32 +341,32 @@
         <translation>In dieser Version noch nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="103"/>
+        <location filename="../app/gui/MainWindow.cpp" line="109"/>
         <source>Workflow</source>
         <translation>Arbeitsablauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="115"/>
+        <location filename="../app/gui/MainWindow.cpp" line="121"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="143"/>
+        <location filename="../app/gui/MainWindow.cpp" line="149"/>
         <source>No study</source>
         <translation>Keine Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="144"/>
+        <location filename="../app/gui/MainWindow.cpp" line="150"/>
         <source>%1[*] - VascuSim</source>
         <translation>%1[*] - VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="161"/>
+        <location filename="../app/gui/MainWindow.cpp" line="167"/>
         <source>damaged</source>
         <translation>beschädigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MainWindow.cpp" line="166"/>
+        <location filename="../app/gui/MainWindow.cpp" line="172"/>
         <source>%n warning(s)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -370,76 +374,125 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="172"/>
+        <location filename="../app/gui/MainWindow.cpp" line="178"/>
         <source>%1, made by &quot;%2&quot; on %3</source>
         <translation>%1, erzeugt von &quot;%2&quot; am %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="184"/>
+        <location filename="../app/gui/MainWindow.cpp" line="190"/>
         <source>%1 failed</source>
         <translation>%1 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="201"/>
+        <location filename="../app/gui/MainWindow.cpp" line="207"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="34"/>
         <source>Open study</source>
         <translation>Studie öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="221"/>
+        <location filename="../app/gui/MainWindow.cpp" line="227"/>
         <source>Study opened with problems</source>
         <translation>Studie mit Problemen geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="240"/>
+        <location filename="../app/gui/MainWindow.cpp" line="246"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
         <source>New study</source>
         <translation>Neue Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="251"/>
+        <location filename="../app/gui/MainWindow.cpp" line="257"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="44"/>
         <source>Import volume</source>
         <translation>Volumen importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="260"/>
-        <location filename="../app/gui/MainWindow.cpp" line="284"/>
+        <location filename="../app/gui/MainWindow.cpp" line="266"/>
+        <location filename="../app/gui/MainWindow.cpp" line="290"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="272"/>
-        <location filename="../app/gui/MainWindow.cpp" line="289"/>
+        <location filename="../app/gui/MainWindow.cpp" line="278"/>
+        <location filename="../app/gui/MainWindow.cpp" line="295"/>
         <source>Import DICOM</source>
         <translation>DICOM importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="309"/>
-        <location filename="../app/gui/MainWindow.cpp" line="378"/>
+        <location filename="../app/gui/MainWindow.cpp" line="315"/>
+        <location filename="../app/gui/MainWindow.cpp" line="384"/>
         <source>Save study</source>
         <translation>Studie speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="321"/>
+        <location filename="../app/gui/MainWindow.cpp" line="327"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
         <source>Save study as</source>
         <translation>Studie speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="340"/>
+        <location filename="../app/gui/MainWindow.cpp" line="346"/>
         <source>Show image</source>
         <translation>Bild anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="365"/>
+        <location filename="../app/gui/MainWindow.cpp" line="371"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="366"/>
+        <location filename="../app/gui/MainWindow.cpp" line="372"/>
         <source>Save the changes to this study before closing?</source>
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="39"/>
+        <source>V&amp;essels</source>
+        <translation>&amp;Gefäße</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="40"/>
+        <source>&amp;Segment Vessels</source>
+        <translation>Gefäße &amp;segmentieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="41"/>
+        <source>S&amp;keleton and Centerlines</source>
+        <translation>S&amp;kelett und Mittellinien</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="61"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="93"/>
+        <source>Segment vessels</source>
+        <translation>Gefäße segmentieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="61"/>
+        <source>The study has no CT image: import one first.</source>
+        <translation>Die Studie enthält kein CT-Bild: zuerst eines importieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="106"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="117"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="140"/>
+        <source>Skeleton and centerlines</source>
+        <translation>Skelett und Mittellinien</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="106"/>
+        <source>The study has no vessel label: segment the vessels first.</source>
+        <translation>Die Studie enthält keine Gefäßmaske: zuerst die Gefäße segmentieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="141"/>
+        <source>Skeleton</source>
+        <translation>Skelett</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="142"/>
+        <source>Centerlines</source>
+        <translation>Mittellinien</translation>
     </message>
 </context>
 </TS>

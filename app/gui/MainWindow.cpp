@@ -90,15 +90,21 @@ void MainWindow::createDocks()
                                 tr("Report")})
     {
         auto* item = new QListWidgetItem(step, m_workflow);
-        if (step != tr("Import"))
+        if (step != tr("Import") && step != tr("Segment") && step != tr("Skeleton && Centerlines"))
         {
             item->setFlags(item->flags() & ~Qt::ItemIsEnabled);
             item->setToolTip(tr("Not available in this version yet"));
         }
     }
     connect(m_workflow, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
-        if (item->text() == tr("Import") && m_document.hasStudy() && !m_tasks.isBusy())
+        if (!m_document.hasStudy() || m_tasks.isBusy())
+            return;
+        if (item->text() == tr("Import"))
             showDicomImportDialog();
+        else if (item->text() == tr("Segment"))
+            segmentVessels();
+        else if (item->text() == tr("Skeleton && Centerlines"))
+            extractSkeletonAndCenterlines();
     });
     auto* workflowDock = new QDockWidget(tr("Workflow"), this);
     workflowDock->setObjectName("workflowDock");

@@ -6,7 +6,10 @@
 
 #include <QMainWindow>
 
+#include <Eigen/Core>
+
 #include <memory>
+#include <optional>
 
 class QLabel;
 class QListWidget;
@@ -45,6 +48,11 @@ public:
                      std::shared_ptr<const dicom::DicomScanResult> scan = {});
     /// Opens the Import DICOM dialog and imports what the user picks.
     void showDicomImportDialog();
+    /// Segments the vessels of the newest image in the background (default parameters; automatic seed unless
+    /// `seedMm`), adds the label (undoable) and shows its lumen surface in the 3D view.
+    bool segmentVessels(const std::optional<Eigen::Vector3d>& seedMm = std::nullopt);
+    /// Skeleton and centerlines of the newest vessel label in the background; both added (one undo step).
+    bool extractSkeletonAndCenterlines();
     /// Saves in the background; false if there is no study or a task is running.
     bool saveStudy();
     /// Saves to a new bundle in the background.
@@ -57,6 +65,9 @@ protected:
 
 private:
     void createMenus();
+    void createVesselMenu();
+    /// The newest undamaged artifact of a kind, or an empty string.
+    std::string newestArtifact(study::ArtifactKind kind) const;
     void createDocks();
     void createStatusBar();
     void refreshArtifactTree();

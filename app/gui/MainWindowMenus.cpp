@@ -81,6 +81,8 @@ void MainWindow::createMenus()
                 new RemoveArtifactCommand(m_document, item->data(0, Qt::UserRole).toString().toStdString()));
     });
 
+    createVesselMenu();
+
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("Window/Level: &CTA"), this, [this] { m_views->applyWindowLevel(viz::kCtaPreset); });
     view->addAction(tr("Window/Level: &Soft Tissue"), this, [this] { m_views->applyWindowLevel(viz::kSoftTissuePreset); });

@@ -1,0 +1,72 @@
+// The vessel steps from the GUI: segment the imported phantom in the background (label undoable, lumen surface in
+// the 3D view), then skeleton and centerlines as one undo step; without an image the step says what to do first.
+#include "DicomFixtures.h"
+#include "GuiTestMain.h"
+#include "MainWindow.h"
+#include "ViewLayout.h"
+#include "vsim/imaging/VesselSegmentation.h"
+
+#include <QSignalSpy>
+
+namespace fs = std::filesystem;
+using namespace vsim;
+
+class TestVessels : public QObject
+{
+    Q_OBJECT
+
+    bool waitForTask(gui::MainWindow& window)
+    {
+        QSignalSpy idle(&window.tasks(), &gui::TaskRunner::idle);
+        return idle.wait(120000);
+    }
+
+private slots:
+    void segmentSkeletonCenterlines()
+    {
+        const fs::path folder = test::freshFolder("gui-vessels", "aaa");
+        const auto phantom = test::writePhantomSeries(dicom::PhantomKind::Aaa, test::smallPhantomOptions(), folder);
+        gui::MainWindow window;
+        window.resize(1200, 900);
+        window.show();
+        const fs::path bundle = test::freshFolder("gui-vessels", "study") / "vessels.vsim";
+        QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
+        QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
+        QVERIFY(waitForTask(window));
+
+        QVERIFY(window.segmentVessels());
+        QVERIFY(waitForTask(window));
+        const study::Study& study = window.document().study();
+        QCOMPARE(study.artifacts().size(), std::size_t(2));
+        const study::Artifact& label = study.artifacts().back();
+        QCOMPARE(label.kind, study::ArtifactKind::Label);
+        QCOMPARE(label.provenance.command, std::string("segment"));
+        const LabelVolume truth = dicom::renderPhantomLabels(phantom.model, phantom.geometry);
+        const double dice = imaging::diceCoefficient(study.loadLabel(label.id), 1, truth, dicom::label::kVesselLumen);
+        qInfo("GUI segmentation of the 3.5 mm aaa: Dice %.3f", dice);
+        QVERIFY(dice > 0.85); // 3.5 mm voxels: the small renal branches are a few voxels wide
+
+        QVERIFY(window.extractSkeletonAndCenterlines());
+        QVERIFY(waitForTask(window));
+        QCOMPARE(window.document().study().artifacts().size(), std::size_t(4));
+        QCOMPARE(window.document().study().artifacts().back().name, std::string("Centerlines"));
+        window.grab().save(QString::fromStdString((fs::path(test::outputFolder("gui").toStdString()) / "vessels.png").string()));
+        window.document().undoStack()->undo(); // skeleton and centerlines go together
+        QCOMPARE(window.document().study().artifacts().size(), std::size_t(2));
+        window.document().undoStack()->undo();
+        QCOMPARE(window.document().study().artifacts().size(), std::size_t(1));
+    }
+
+    void withoutImageSaysWhatToDo()
+    {
+        gui::MainWindow window;
+        const fs::path bundle = test::freshFolder("gui-vessels", "empty") / "empty.vsim";
+        QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
+        QVERIFY(!window.segmentVessels());
+        QVERIFY(!window.extractSkeletonAndCenterlines());
+        QCOMPARE(window.document().study().artifacts().size(), std::size_t(0));
+    }
+};
+
+VSIM_GUI_TEST_MAIN(TestVessels)
+#include "tst_vessels.moc"
