@@ -446,51 +446,56 @@
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="39"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="40"/>
         <source>V&amp;essels</source>
         <translation>&amp;Gefäße</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="40"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="41"/>
         <source>&amp;Segment Vessels</source>
         <translation>Gefäße &amp;segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="41"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="43"/>
+        <source>Segment from the &amp;Cursor</source>
+        <translation>Ab dem &amp;Cursor segmentieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="46"/>
         <source>S&amp;keleton and Centerlines</source>
         <translation>S&amp;kelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="61"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="93"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="66"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="77"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="98"/>
         <source>Segment vessels</source>
         <translation>Gefäße segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="61"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="66"/>
         <source>The study has no CT image: import one first.</source>
         <translation>Die Studie enthält kein CT-Bild: zuerst eines importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="106"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="117"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="140"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="111"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="122"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
         <source>Skeleton and centerlines</source>
         <translation>Skelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="106"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="111"/>
         <source>The study has no vessel label: segment the vessels first.</source>
         <translation>Die Studie enthält keine Gefäßmaske: zuerst die Gefäße segmentieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="141"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="146"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="142"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="147"/>
         <source>Centerlines</source>
         <translation>Mittellinien</translation>
     </message>

@@ -8,6 +8,7 @@
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
+#include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QMenu>
@@ -38,6 +39,10 @@ void MainWindow::createVesselMenu()
 {
     QMenu* vessels = menuBar()->addMenu(tr("V&essels"));
     m_documentActions << vessels->addAction(tr("&Segment Vessels"), this, [this] { segmentVessels(); });
+    // Click a vessel in any MPR view (the linked cursor goes there), then segment from that seed.
+    m_documentActions << vessels->addAction(tr("Segment from the &Cursor"), this, [this] {
+        segmentVessels(m_views->sliceView(viz::SliceOrientation::Axial)->cursor());
+    });
     m_documentActions << vessels->addAction(tr("S&keleton and Centerlines"), this,
                                             [this] { extractSkeletonAndCenterlines(); });
 }

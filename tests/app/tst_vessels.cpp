@@ -4,6 +4,7 @@
 #include "GuiTestMain.h"
 #include "MainWindow.h"
 #include "ViewLayout.h"
+#include "vsim/viz/SliceView.h"
 #include "vsim/imaging/VesselSegmentation.h"
 
 #include <QSignalSpy>
@@ -55,6 +56,31 @@ private slots:
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(2));
         window.document().undoStack()->undo();
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(1));
+    }
+
+    void seedFromTheCursor()
+    {
+        const fs::path folder = test::freshFolder("gui-vessels", "seeded");
+        test::writePhantomSeries(dicom::PhantomKind::Aaa, test::smallPhantomOptions(), folder);
+        gui::MainWindow window;
+        const fs::path bundle = test::freshFolder("gui-vessels", "seeded-study") / "seeded.vsim";
+        QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
+        QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
+        QVERIFY(waitForTask(window));
+        // The cursor on the aorta above the aneurysm, as a click in an MPR view puts it.
+        const Eigen::Vector3d aorta = dicom::kPhantomCentre + Eigen::Vector3d(0, -5, 100);
+        window.views()->sliceView(viz::SliceOrientation::Axial)->setCursor(aorta);
+        QVERIFY(window.segmentVessels(window.views()->sliceView(viz::SliceOrientation::Axial)->cursor()));
+        QVERIFY(waitForTask(window));
+        const study::Artifact& label = window.document().study().artifacts().back();
+        QCOMPARE(label.provenance.parameters.at("seed_found_automatically"), std::string("no"));
+        // A seed in the spine is refused with a message and adds nothing.
+        QSignalSpy failed(&window.tasks(), &gui::TaskRunner::failed);
+        QVERIFY(window.segmentVessels(dicom::kPhantomCentre + Eigen::Vector3d(0, 45, 0)));
+        QVERIFY(waitForTask(window));
+        QCOMPARE(failed.count(), 1);
+        QVERIFY(failed.front().at(1).toString().contains("not in a contrast-filled vessel"));
+        QCOMPARE(window.document().study().artifacts().size(), std::size_t(2));
     }
 
     void withoutImageSaysWhatToDo()
