@@ -1,5 +1,6 @@
 #include "LabelGeometry.h"
 
+#include "vsim/core/Error.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <itkSignedMaurerDistanceMapImageFilter.h>
@@ -39,6 +40,30 @@ RealVolume insideDistanceMm(const LabelVolume& label, std::uint8_t value)
     filter->SetSquaredDistance(false);
     filter->Update();
     return interop::fromItk<float>(filter->GetOutput());
+}
+
+CroppedDistance croppedInsideDistanceMm(const LabelVolume& label, std::uint8_t value, int margin)
+{
+    const auto bounds = labelBounds(label, value);
+    if (!bounds)
+        throw Error("the label is empty: segment the vessels first");
+    const auto& [low, high] = *bounds;
+    const auto& d = label.geometry().dims;
+    VolumeGeometry geometry = label.geometry();
+    CroppedDistance result;
+    for (int a = 0; a < 3; ++a)
+    {
+        result.start[a] = std::max(0, low[a] - margin);
+        geometry.dims[a] = std::min(d[a] - 1, high[a] + margin) - result.start[a] + 1;
+    }
+    geometry.origin = label.geometry().indexToPatient(Eigen::Vector3d(result.start[0], result.start[1], result.start[2]));
+    LabelVolume crop(geometry);
+    for (int k = 0; k < geometry.dims[2]; ++k)
+        for (int j = 0; j < geometry.dims[1]; ++j)
+            for (int i = 0; i < geometry.dims[0]; ++i)
+                crop.at(i, j, k) = label.at(result.start[0] + i, result.start[1] + j, result.start[2] + k) == value;
+    result.distance = insideDistanceMm(crop, 1);
+    return result;
 }
 
 } // namespace vsim::imaging

@@ -399,10 +399,10 @@ SkeletonResult extractSkeleton(const LabelVolume& label, std::uint8_t value, con
             break;
     deleteSimpleCrowdedVoxels(grid);
     progress.report(0.8, "pruning");
-    const RealVolume distance = insideDistanceMm(label, value);
+    // One voxel of margin holds the background nearest to the lumen (the volume's border is not background).
+    const CroppedDistance distance = croppedInsideDistanceMm(label, value, 1);
     auto radiusAt = [&](std::size_t index) {
-        const auto v = grid.voxelOf(index);
-        return std::max(double(distance.at(v[0], v[1], v[2])), 0.5 * spacing.minCoeff());
+        return std::max(double(distance.at(grid.voxelOf(index))), 0.5 * spacing.minCoeff());
     };
 
     // Spur pruning: end branches short against the lumen radius where they leave a junction.
