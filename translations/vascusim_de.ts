@@ -270,103 +270,104 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="51"/>
+        <location filename="../app/gui/MainWindow.cpp" line="52"/>
         <source>%1: cancelled, nothing changed</source>
         <translation>%1: abgebrochen, nichts geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="54"/>
+        <location filename="../app/gui/MainWindow.cpp" line="55"/>
         <source>%1: done</source>
         <translation>%1: fertig</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="74"/>
+        <location filename="../app/gui/MainWindow.cpp" line="75"/>
         <source>Artifact</source>
         <translation>Artefakt</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="74"/>
+        <location filename="../app/gui/MainWindow.cpp" line="75"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="74"/>
+        <location filename="../app/gui/MainWindow.cpp" line="75"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="81"/>
+        <location filename="../app/gui/MainWindow.cpp" line="82"/>
         <source>Study</source>
         <translation>Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="89"/>
-        <location filename="../app/gui/MainWindow.cpp" line="93"/>
-        <location filename="../app/gui/MainWindow.cpp" line="102"/>
+        <location filename="../app/gui/MainWindow.cpp" line="90"/>
+        <location filename="../app/gui/MainWindow.cpp" line="94"/>
+        <location filename="../app/gui/MainWindow.cpp" line="103"/>
         <source>Import</source>
         <translation>Importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="89"/>
-        <location filename="../app/gui/MainWindow.cpp" line="93"/>
-        <location filename="../app/gui/MainWindow.cpp" line="104"/>
+        <location filename="../app/gui/MainWindow.cpp" line="90"/>
+        <location filename="../app/gui/MainWindow.cpp" line="94"/>
+        <location filename="../app/gui/MainWindow.cpp" line="105"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
         <source>Segment</source>
         <translation>Segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="89"/>
-        <location filename="../app/gui/MainWindow.cpp" line="93"/>
-        <location filename="../app/gui/MainWindow.cpp" line="106"/>
+        <location filename="../app/gui/MainWindow.cpp" line="90"/>
+        <location filename="../app/gui/MainWindow.cpp" line="94"/>
+        <location filename="../app/gui/MainWindow.cpp" line="107"/>
         <source>Skeleton &amp;&amp; Centerlines</source>
         <translation>Skelett &amp;&amp; Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <location filename="../app/gui/MainWindow.cpp" line="90"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="89"/>
+        <location filename="../app/gui/MainWindow.cpp" line="90"/>
         <source>Simulate</source>
         <translation>Simulieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="90"/>
+        <location filename="../app/gui/MainWindow.cpp" line="91"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="96"/>
+        <location filename="../app/gui/MainWindow.cpp" line="97"/>
         <source>Not available in this version yet</source>
         <translation>In dieser Version noch nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="109"/>
+        <location filename="../app/gui/MainWindow.cpp" line="110"/>
         <source>Workflow</source>
         <translation>Arbeitsablauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="121"/>
+        <location filename="../app/gui/MainWindow.cpp" line="122"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="149"/>
+        <location filename="../app/gui/MainWindow.cpp" line="150"/>
         <source>No study</source>
         <translation>Keine Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="150"/>
+        <location filename="../app/gui/MainWindow.cpp" line="151"/>
         <source>%1[*] - VascuSim</source>
         <translation>%1[*] - VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="167"/>
+        <location filename="../app/gui/MainWindow.cpp" line="168"/>
         <source>damaged</source>
         <translation>beschädigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MainWindow.cpp" line="172"/>
+        <location filename="../app/gui/MainWindow.cpp" line="173"/>
         <source>%n warning(s)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -374,128 +375,173 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="178"/>
+        <location filename="../app/gui/MainWindow.cpp" line="179"/>
         <source>%1, made by &quot;%2&quot; on %3</source>
         <translation>%1, erzeugt von &quot;%2&quot; am %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="190"/>
+        <location filename="../app/gui/MainWindow.cpp" line="191"/>
         <source>%1 failed</source>
         <translation>%1 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="207"/>
+        <location filename="../app/gui/MainWindow.cpp" line="208"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="34"/>
         <source>Open study</source>
         <translation>Studie öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="227"/>
+        <location filename="../app/gui/MainWindow.cpp" line="228"/>
         <source>Study opened with problems</source>
         <translation>Studie mit Problemen geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="246"/>
+        <location filename="../app/gui/MainWindow.cpp" line="247"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
         <source>New study</source>
         <translation>Neue Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="257"/>
+        <location filename="../app/gui/MainWindow.cpp" line="258"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="44"/>
         <source>Import volume</source>
         <translation>Volumen importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="266"/>
-        <location filename="../app/gui/MainWindow.cpp" line="290"/>
+        <location filename="../app/gui/MainWindow.cpp" line="267"/>
+        <location filename="../app/gui/MainWindow.cpp" line="291"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="278"/>
-        <location filename="../app/gui/MainWindow.cpp" line="295"/>
+        <location filename="../app/gui/MainWindow.cpp" line="279"/>
+        <location filename="../app/gui/MainWindow.cpp" line="296"/>
         <source>Import DICOM</source>
         <translation>DICOM importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="315"/>
-        <location filename="../app/gui/MainWindow.cpp" line="384"/>
+        <location filename="../app/gui/MainWindow.cpp" line="316"/>
+        <location filename="../app/gui/MainWindow.cpp" line="385"/>
         <source>Save study</source>
         <translation>Studie speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="327"/>
+        <location filename="../app/gui/MainWindow.cpp" line="328"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
         <source>Save study as</source>
         <translation>Studie speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="346"/>
+        <location filename="../app/gui/MainWindow.cpp" line="347"/>
         <source>Show image</source>
         <translation>Bild anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="371"/>
+        <location filename="../app/gui/MainWindow.cpp" line="372"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="372"/>
+        <location filename="../app/gui/MainWindow.cpp" line="373"/>
         <source>Save the changes to this study before closing?</source>
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="40"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
+        <source>Length (mm)</source>
+        <translation>Länge (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
+        <source>Start r (mm)</source>
+        <translation>Anfangs-r (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
+        <source>End r (mm)</source>
+        <translation>End-r (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="70"/>
+        <source>Reference Ø (mm)</source>
+        <translation>Referenz-Ø (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="70"/>
+        <source>Minimal Ø (mm)</source>
+        <translation>Minimaler Ø (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="71"/>
+        <source>Stenosis (%)</source>
+        <translation>Stenose (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="71"/>
+        <source>Max Ø (mm)</source>
+        <translation>Max. Ø (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="83"/>
+        <source>Measurements</source>
+        <translation>Messungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="111"/>
+        <source>Maximum diameter %1 mm</source>
+        <translation>Maximaler Durchmesser %1 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="119"/>
         <source>V&amp;essels</source>
         <translation>&amp;Gefäße</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="41"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="120"/>
         <source>&amp;Segment Vessels</source>
         <translation>Gefäße &amp;segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="43"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="122"/>
         <source>Segment from the &amp;Cursor</source>
         <translation>Ab dem &amp;Cursor segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="46"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="125"/>
         <source>S&amp;keleton and Centerlines</source>
         <translation>S&amp;kelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="66"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="77"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="98"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="156"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="177"/>
         <source>Segment vessels</source>
         <translation>Gefäße segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="66"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
         <source>The study has no CT image: import one first.</source>
         <translation>Die Studie enthält kein CT-Bild: zuerst eines importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="111"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="122"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="190"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="202"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="228"/>
         <source>Skeleton and centerlines</source>
         <translation>Skelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="111"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="190"/>
         <source>The study has no vessel label: segment the vessels first.</source>
         <translation>Die Studie enthält keine Gefäßmaske: zuerst die Gefäße segmentieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="146"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="229"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="147"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="230"/>
         <source>Centerlines</source>
         <translation>Mittellinien</translation>
     </message>

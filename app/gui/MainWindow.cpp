@@ -30,6 +30,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     m_views = new ViewLayout(this);
     setCentralWidget(m_views);
     createDocks();
+    createMeasurementDock();
     createStatusBar();
     createMenus();
     connect(&m_document, &StudyDocument::artifactsChanged, this, [this] {

@@ -16,7 +16,12 @@ class QListWidget;
 class QMenu;
 class QProgressBar;
 class QPushButton;
+class QTableWidget;
 class QTreeWidget;
+
+namespace vsim::imaging {
+struct VesselMeasurements;
+}
 
 namespace vsim::gui {
 
@@ -53,6 +58,9 @@ public:
     bool segmentVessels(const std::optional<Eigen::Vector3d>& seedMm = std::nullopt);
     /// Skeleton and centerlines of the newest vessel label in the background; both added (one undo step).
     bool extractSkeletonAndCenterlines();
+    /// The Measurements dock's table: one row per centerline (length, radii, diameters, stenosis) and a first row for
+    /// the maximum diameter; clicking a row moves the MPR cursor to its narrowest (or widest) section.
+    QTableWidget* measurementTable() const { return m_measurementTable; }
     /// Saves in the background; false if there is no study or a task is running.
     bool saveStudy();
     /// Saves to a new bundle in the background.
@@ -66,6 +74,9 @@ protected:
 private:
     void createMenus();
     void createVesselMenu();
+    void createMeasurementDock();
+    /// Fills the Measurements dock; each row keeps the patient position (mm) it jumps to.
+    void showMeasurements(const imaging::VesselMeasurements& measurements);
     /// The newest undamaged artifact of a kind, or an empty string.
     std::string newestArtifact(study::ArtifactKind kind) const;
     void createDocks();
@@ -84,6 +95,7 @@ private:
     TaskRunner m_tasks;
     ViewLayout* m_views = nullptr;
     QTreeWidget* m_artifactTree = nullptr;
+    QTableWidget* m_measurementTable = nullptr;
     QListWidget* m_workflow = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;

@@ -6,14 +6,21 @@
 #include "ViewLayout.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
+#include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QDockWidget>
+#include <QHeaderView>
 #include <QMenu>
 #include <QMenuBar>
+#include <QTableWidget>
 
+#include <QVector3D>
+
+#include <algorithm>
 #include <sstream>
 
 namespace vsim::gui {
@@ -32,8 +39,80 @@ std::map<std::string, std::string> asText(const ParameterSet& parameters)
 }
 
 const QColor kLumenColour(220, 60, 50);
+constexpr int kPositionRole = Qt::UserRole + 1;
+
+QTableWidgetItem* number(double value, int decimals)
+{
+    auto* item = new QTableWidgetItem(QString::number(value, 'f', decimals));
+    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    return item;
+}
+
+/// The section where a row should take the cursor: the narrowest valid one, or the widest for the maximum row.
+const imaging::CrossSection* sectionOf(const imaging::SegmentMeasurements& segment, bool widest)
+{
+    const imaging::CrossSection* chosen = nullptr;
+    for (const imaging::CrossSection& section : segment.sections)
+        if (!section.nearJunction && section.areaMm2 > 0 &&
+            (!chosen || (widest ? section.equivalentDiameterMm > chosen->equivalentDiameterMm
+                                : section.equivalentDiameterMm < chosen->equivalentDiameterMm)))
+            chosen = &section;
+    return chosen;
+}
 
 } // namespace
+
+void MainWindow::createMeasurementDock()
+{
+    m_measurementTable = new QTableWidget(0, 8, this);
+    m_measurementTable->setObjectName("measurementTable");
+    m_measurementTable->setHorizontalHeaderLabels({tr("Segment"), tr("Length (mm)"), tr("Start r (mm)"), tr("End r (mm)"),
+                                                   tr("Reference \u00d8 (mm)"), tr("Minimal \u00d8 (mm)"),
+                                                   tr("Stenosis (%)"), tr("Max \u00d8 (mm)")});
+    m_measurementTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_measurementTable->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_measurementTable->verticalHeader()->hide();
+    connect(m_measurementTable, &QTableWidget::cellClicked, this, [this](int row, int) {
+        const QVariant position = m_measurementTable->item(row, 0)->data(kPositionRole);
+        if (position.isValid())
+        {
+            const QVector3D p = position.value<QVector3D>();
+            m_views->sliceView(viz::SliceOrientation::Axial)->setCursor(Eigen::Vector3d(p.x(), p.y(), p.z()));
+        }
+    });
+    auto* dock = new QDockWidget(tr("Measurements"), this);
+    dock->setObjectName("measurementDock");
+    dock->setWidget(m_measurementTable);
+    addDockWidget(Qt::BottomDockWidgetArea, dock);
+}
+
+void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurements)
+{
+    m_measurementTable->setRowCount(0);
+    auto addRow = [&](const QString& name, const imaging::SegmentMeasurements& s, const imaging::CrossSection* jump) {
+        const int row = m_measurementTable->rowCount();
+        m_measurementTable->insertRow(row);
+        auto* label = new QTableWidgetItem(name);
+        if (jump)
+            label->setData(kPositionRole, QVector3D(float(jump->centre.x()), float(jump->centre.y()), float(jump->centre.z())));
+        m_measurementTable->setItem(row, 0, label);
+        m_measurementTable->setItem(row, 1, number(s.lengthMm, 1));
+        m_measurementTable->setItem(row, 2, number(s.startRadiusMm, 2));
+        m_measurementTable->setItem(row, 3, number(s.endRadiusMm, 2));
+        m_measurementTable->setItem(row, 4, number(s.referenceDiameterMm, 2));
+        m_measurementTable->setItem(row, 5, number(s.minimalDiameterMm, 2));
+        m_measurementTable->setItem(row, 6, number(s.diameterStenosisPercent, 1));
+        m_measurementTable->setItem(row, 7, number(s.maxDiameterMm, 2));
+    };
+    // First row: the segment holding the maximum diameter, jumping to its widest section.
+    const auto widest = std::max_element(measurements.segments.begin(), measurements.segments.end(),
+                                         [](const auto& a, const auto& b) { return a.maxDiameterMm < b.maxDiameterMm; });
+    if (widest != measurements.segments.end())
+        addRow(tr("Maximum diameter %1 mm").arg(measurements.maxDiameterMm, 0, 'f', 1), *widest, sectionOf(*widest, true));
+    for (const imaging::SegmentMeasurements& s : measurements.segments)
+        addRow(QString("%1 - %2").arg(s.from).arg(s.to), s, sectionOf(s, false));
+    m_measurementTable->resizeColumnsToContents();
+}
 
 void MainWindow::createVesselMenu()
 {
@@ -115,6 +194,7 @@ bool MainWindow::extractSkeletonAndCenterlines()
     {
         imaging::SkeletonResult skeleton;
         SkeletonGraph centerlines;
+        imaging::VesselMeasurements measurements;
         std::map<std::string, std::string> skeletonParameters, centerlineParameters;
     };
     auto outcome = std::make_shared<Outcome>();
@@ -125,7 +205,10 @@ bool MainWindow::extractSkeletonAndCenterlines()
             const ParameterSet skeleton(imaging::skeletonParameters()), centerline(imaging::centerlineParameters());
             outcome->skeleton = imaging::extractSkeleton(label, 1, skeleton, progress.subRange(0.0, 0.6));
             outcome->centerlines = imaging::extractCenterlines(label, 1, outcome->skeleton.graph, centerline, std::nullopt,
-                                                               progress.subRange(0.6, 1.0));
+                                                               progress.subRange(0.6, 0.9));
+            outcome->measurements = imaging::measureVessels(label, outcome->centerlines,
+                                                            ParameterSet(imaging::measurementParameters()),
+                                                            progress.subRange(0.9, 1.0));
             outcome->skeletonParameters = asText(skeleton);
             outcome->centerlineParameters = asText(centerline);
         },
@@ -146,6 +229,7 @@ bool MainWindow::extractSkeletonAndCenterlines()
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, skeletonId, tr("Skeleton")));
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, centerlineId, tr("Centerlines")));
             m_document.undoStack()->endMacro();
+            showMeasurements(outcome->measurements);
         });
 }
 

@@ -8,6 +8,7 @@
 #include "vsim/imaging/VesselSegmentation.h"
 
 #include <QSignalSpy>
+#include <QTableWidget>
 
 namespace fs = std::filesystem;
 using namespace vsim;
@@ -51,6 +52,16 @@ private slots:
         QVERIFY(waitForTask(window));
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(4));
         QCOMPARE(window.document().study().artifacts().back().name, std::string("Centerlines"));
+        // The measurement table: the maximum-diameter row first (the aaa's 55 mm, coarse 3.5 mm voxels here), and
+        // a click takes the MPR cursor into the aneurysm.
+        QTableWidget* table = window.measurementTable();
+        QVERIFY(table->rowCount() >= 2);
+        const double maximum = table->item(0, 7)->text().toDouble();
+        qInfo("measurement table: %d rows, maximum diameter %.2f mm", table->rowCount(), maximum);
+        QVERIFY(std::abs(maximum - 55.0) < 4.0);
+        emit table->cellClicked(0, 0);
+        const Eigen::Vector3d cursor = window.views()->sliceView(viz::SliceOrientation::Axial)->cursor();
+        QVERIFY(std::abs(cursor.z() - phantom.model.measures.at("aneurysm_centre_z_mm")) < 25.0);
         window.grab().save(QString::fromStdString((fs::path(test::outputFolder("gui").toStdString()) / "vessels.png").string()));
         window.document().undoStack()->undo(); // skeleton and centerlines go together
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(2));
