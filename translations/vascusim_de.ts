@@ -310,7 +310,6 @@
         <location filename="../app/gui/MainWindow.cpp" line="90"/>
         <location filename="../app/gui/MainWindow.cpp" line="94"/>
         <location filename="../app/gui/MainWindow.cpp" line="105"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
         <source>Segment</source>
         <translation>Segmentieren</translation>
     </message>
@@ -460,6 +459,12 @@
         <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
         <source>End r (mm)</source>
         <translation>End-r (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
+        <source>Segment</source>
+        <comment>a vessel segment (noun)</comment>
+        <translation type="unfinished">Segmentieren</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowVessels.cpp" line="70"/>

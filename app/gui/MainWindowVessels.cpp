@@ -66,7 +66,7 @@ void MainWindow::createMeasurementDock()
 {
     m_measurementTable = new QTableWidget(0, 8, this);
     m_measurementTable->setObjectName("measurementTable");
-    m_measurementTable->setHorizontalHeaderLabels({tr("Segment"), tr("Length (mm)"), tr("Start r (mm)"), tr("End r (mm)"),
+    m_measurementTable->setHorizontalHeaderLabels({tr("Segment", "a vessel segment (noun)"), tr("Length (mm)"), tr("Start r (mm)"), tr("End r (mm)"),
                                                    tr("Reference \u00d8 (mm)"), tr("Minimal \u00d8 (mm)"),
                                                    tr("Stenosis (%)"), tr("Max \u00d8 (mm)")});
     m_measurementTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
