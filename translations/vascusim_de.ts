@@ -464,7 +464,7 @@
         <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
         <source>Segment</source>
         <comment>a vessel segment (noun)</comment>
-        <translation type="unfinished">Segmentieren</translation>
+        <translation>Segment</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowVessels.cpp" line="70"/>
