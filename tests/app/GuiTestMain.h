@@ -1,9 +1,24 @@
 #pragma once
 
-// main() for GUI suites: VTK needs the OpenGL 3.2 core surface format set before QApplication exists.
+// main() for GUI suites: VTK needs the OpenGL 3.2 core surface format set before QApplication exists; and the
+// wait for a main window's background task.
+#include "MainWindow.h"
+
 #include <QApplication>
+#include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QtTest>
+
+namespace vsim::test {
+
+/// Waits until the window's task runner is idle again; false after `milliseconds`.
+inline bool waitForTask(gui::MainWindow& window, int milliseconds = 120000)
+{
+    QSignalSpy idle(&window.tasks(), &gui::TaskRunner::idle);
+    return idle.wait(milliseconds);
+}
+
+} // namespace vsim::test
 
 #define VSIM_GUI_TEST_MAIN(TestClass)                                                                                  \
     int main(int argc, char** argv)                                                                                    \

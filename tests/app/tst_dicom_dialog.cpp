@@ -17,11 +17,6 @@ class TestDicomDialog : public QObject
 {
     Q_OBJECT
 
-    bool waitForTask(gui::MainWindow& window)
-    {
-        QSignalSpy idle(&window.tasks(), &gui::TaskRunner::idle);
-        return idle.wait(60000);
-    }
 
     static std::vector<QTreeWidgetItem*> seriesRows(QTreeWidget* tree)
     {
@@ -69,7 +64,7 @@ private slots:
         // Import the other series, as a user picking it would.
         QVERIFY(window.importDicom(dialog.scannedPath(), QString::fromStdString(aaa.written.seriesInstanceUid),
                                    dialog.scanResult()));
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
         const study::Study& study = window.document().study();
         QCOMPARE(study.artifacts().size(), std::size_t(1));
         const study::Artifact& image = study.artifacts().front();
@@ -96,7 +91,7 @@ private slots:
         QSignalSpy cancelled(&window.tasks(), &gui::TaskRunner::cancelled);
         QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
         window.tasks().cancel();
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
         QCOMPARE(cancelled.count(), 1);
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(0));
         QVERIFY(!window.document().undoStack()->canUndo());
@@ -111,7 +106,7 @@ private slots:
         QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
         QSignalSpy failed(&window.tasks(), &gui::TaskRunner::failed);
         QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
         QCOMPARE(failed.count(), 1);
         QVERIFY(failed.front().at(1).toString().contains("no importable DICOM image series"));
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(0));

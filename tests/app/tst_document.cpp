@@ -20,12 +20,6 @@ class TestDocument : public QObject
 {
     Q_OBJECT
 
-    bool waitForTask(vsim::gui::MainWindow& window)
-    {
-        QSignalSpy idle(&window.tasks(), &vsim::gui::TaskRunner::idle);
-        return idle.wait(30000);
-    }
-
 private slots:
     void importUndoRedoSaveReopen()
     {
@@ -44,7 +38,7 @@ private slots:
         window->show();
         QVERIFY(window->newStudy(QString::fromStdString(bundle.string())));
         QVERIFY(window->importVolume(QString::fromStdString(volume.string())));
-        QVERIFY(waitForTask(*window));
+        QVERIFY(vsim::test::waitForTask(*window));
         auto& document = window->document();
         QCOMPARE(document.study().artifacts().size(), std::size_t(1));
         const std::string id = document.study().artifacts()[0].id;
@@ -61,7 +55,7 @@ private slots:
         QVERIFY(window->isWindowModified());
 
         QVERIFY(window->saveStudy());
-        QVERIFY(waitForTask(*window));
+        QVERIFY(vsim::test::waitForTask(*window));
         QVERIFY(!window->isWindowModified());
         const vsim::study::Study reopened = vsim::study::Study::open(bundle);
         QCOMPARE(reopened.artifact(id).name, std::string("Arterial"));
@@ -72,7 +66,7 @@ private slots:
         std::ofstream(junk) << "not a volume";
         QSignalSpy failed(&window->tasks(), &vsim::gui::TaskRunner::failed);
         QVERIFY(window->importVolume(QString::fromStdString(junk.string())));
-        QVERIFY(waitForTask(*window));
+        QVERIFY(vsim::test::waitForTask(*window));
         QCOMPARE(failed.count(), 1);
         QCOMPARE(document.study().artifacts().size(), std::size_t(1));
         window->setAttribute(Qt::WA_DeleteOnClose, false);

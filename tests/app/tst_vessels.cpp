@@ -17,12 +17,6 @@ class TestVessels : public QObject
 {
     Q_OBJECT
 
-    bool waitForTask(gui::MainWindow& window)
-    {
-        QSignalSpy idle(&window.tasks(), &gui::TaskRunner::idle);
-        return idle.wait(120000);
-    }
-
 private slots:
     void segmentSkeletonCenterlines()
     {
@@ -34,10 +28,10 @@ private slots:
         const fs::path bundle = test::freshFolder("gui-vessels", "study") / "vessels.vsim";
         QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
         QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
 
         QVERIFY(window.segmentVessels());
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
         const study::Study& study = window.document().study();
         QCOMPARE(study.artifacts().size(), std::size_t(2));
         const study::Artifact& label = study.artifacts().back();
@@ -49,7 +43,7 @@ private slots:
         QVERIFY(dice > 0.85); // 3.5 mm voxels: the small renal branches are a few voxels wide
 
         QVERIFY(window.extractSkeletonAndCenterlines());
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(4));
         QCOMPARE(window.document().study().artifacts().back().name, std::string("Centerlines"));
         // The measurement table: the maximum-diameter row first (the aaa's 55 mm, coarse 3.5 mm voxels here), and
@@ -77,18 +71,18 @@ private slots:
         const fs::path bundle = test::freshFolder("gui-vessels", "seeded-study") / "seeded.vsim";
         QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
         QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
         // The cursor on the aorta above the aneurysm, as a click in an MPR view puts it.
         const Eigen::Vector3d aorta = dicom::kPhantomCentre + Eigen::Vector3d(0, -5, 100);
         window.views()->sliceView(viz::SliceOrientation::Axial)->setCursor(aorta);
         QVERIFY(window.segmentVessels(window.views()->sliceView(viz::SliceOrientation::Axial)->cursor()));
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
         const study::Artifact& label = window.document().study().artifacts().back();
         QCOMPARE(label.provenance.parameters.at("seed_found_automatically"), std::string("no"));
         // A seed in the spine is refused with a message and adds nothing.
         QSignalSpy failed(&window.tasks(), &gui::TaskRunner::failed);
         QVERIFY(window.segmentVessels(dicom::kPhantomCentre + Eigen::Vector3d(0, 45, 0)));
-        QVERIFY(waitForTask(window));
+        QVERIFY(vsim::test::waitForTask(window));
         QCOMPARE(failed.count(), 1);
         QVERIFY(failed.front().at(1).toString().contains("not in a contrast-filled vessel"));
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(2));

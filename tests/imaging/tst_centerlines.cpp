@@ -3,6 +3,7 @@
 // curve it samples.
 
 #include "PhantomGrids.h"
+#include "SegmentedPhantom.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
@@ -76,14 +77,10 @@ private slots:
 
     void bifurcationFromSegmentation()
     {
-        PhantomOptions options;
-        options.size = {192, 192, 120};
-        options.spacing = {1.0, 1.0, 1.0};
-        options.seed = 5;
-        const PhantomModel model = buildPhantomModel(PhantomKind::Bifurcation, options);
-        const VolumeGeometry geometry = phantomGeometry(options);
-        const CtVolume ct = renderPhantomCt(model, stackOf(geometry), options);
-        const LabelVolume label = imaging::segmentVessels(ct, ParameterSet(imaging::segmentationParameters())).label;
+        const test::SegmentedPhantom phantom =
+            test::segmentPhantom(PhantomKind::Bifurcation, {192, 192, 120}, {1.0, 1.0, 1.0}, 5);
+        const PhantomModel& model = phantom.model;
+        const LabelVolume& label = phantom.label;
         checkAgainstTruth(centerlinesOf(label), model, "bifurcation segmented");
     }
 

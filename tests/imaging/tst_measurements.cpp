@@ -3,6 +3,7 @@
 // within 10 % (hepatic tree, from its truth label).
 
 #include "PhantomGrids.h"
+#include "SegmentedPhantom.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
@@ -37,14 +38,9 @@ Pipeline measure(const LabelVolume& label)
 
 Pipeline fromPhantom(PhantomKind kind, std::array<int, 3> size, Eigen::Vector3d spacing, PhantomModel* model)
 {
-    PhantomOptions options;
-    options.size = size;
-    options.spacing = spacing;
-    options.seed = 21;
-    *model = buildPhantomModel(kind, options);
-    const VolumeGeometry geometry = phantomGeometry(options);
-    const CtVolume ct = renderPhantomCt(*model, stackOf(geometry), options);
-    return measure(imaging::segmentVessels(ct, ParameterSet(imaging::segmentationParameters())).label);
+    test::SegmentedPhantom phantom = test::segmentPhantom(kind, size, spacing, 21);
+    *model = std::move(phantom.model);
+    return measure(phantom.label);
 }
 
 } // namespace

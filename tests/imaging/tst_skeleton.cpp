@@ -3,6 +3,7 @@
 // segmentation of a noisy phantom.
 
 #include "PhantomGrids.h"
+#include "SegmentedPhantom.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselSegmentation.h"
@@ -75,14 +76,10 @@ private slots:
 
     void bifurcationFromSegmentation()
     {
-        PhantomOptions options;
-        options.size = {192, 192, 120};
-        options.spacing = {1.0, 1.0, 1.0};
-        options.seed = 5;
-        const PhantomModel model = buildPhantomModel(PhantomKind::Bifurcation, options);
-        const VolumeGeometry geometry = phantomGeometry(options);
-        const CtVolume ct = renderPhantomCt(model, stackOf(geometry), options);
-        const LabelVolume label = imaging::segmentVessels(ct, ParameterSet(imaging::segmentationParameters())).label;
+        const test::SegmentedPhantom phantom =
+            test::segmentPhantom(PhantomKind::Bifurcation, {192, 192, 120}, {1.0, 1.0, 1.0}, 5);
+        const PhantomModel& model = phantom.model;
+        const LabelVolume& label = phantom.label;
         const auto result = imaging::extractSkeleton(label, 1, ParameterSet(imaging::skeletonParameters()));
         checkTopology(result, model, "bifurcation segmented");
     }

@@ -1,6 +1,7 @@
 // The lumen surface of a segmented phantom against the analytic vessel surface: mean distance <= 0.5 mm;
 // decimation to a vertex budget reports its shape error; the surface is closed and outward.
 
+#include "SegmentedPhantom.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
@@ -37,14 +38,10 @@ class Surface : public QObject
 private slots:
     void initTestCase()
     {
-        PhantomOptions options;
-        options.size = {192, 192, 120};
-        options.spacing = {1.0, 1.0, 1.0};
-        options.seed = 5;
-        m_model = buildPhantomModel(PhantomKind::Bifurcation, options);
-        const VolumeGeometry geometry = phantomGeometry(options);
-        const CtVolume ct = renderPhantomCt(m_model, stackOf(geometry), options);
-        m_label = imaging::segmentVessels(ct, ParameterSet(imaging::segmentationParameters())).label;
+        test::SegmentedPhantom phantom =
+            test::segmentPhantom(PhantomKind::Bifurcation, {192, 192, 120}, {1.0, 1.0, 1.0}, 5);
+        m_model = std::move(phantom.model);
+        m_label = std::move(phantom.label);
     }
 
     void surfaceMatchesTheModel()

@@ -8,6 +8,7 @@
 #include <dcmtk/dcmjpls/djdecode.h>
 #include <dcmtk/dcmjpls/djencode.h>
 #include <dcmtk/oflog/oflog.h>
+#include <gdcmTrace.h>
 
 #include <mutex>
 
@@ -18,6 +19,9 @@ void ensureDcmtkCodecs()
     static std::once_flag once;
     std::call_once(once, [] {
         OFLog::configure(OFLogger::FATAL_LOG_LEVEL);
+        gdcm::Trace::DebugOff(); // GDCM decodes JPEG 2000; its messages would reach stderr too
+        gdcm::Trace::WarningOff();
+        gdcm::Trace::ErrorOff();
         DJDecoderRegistration::registerCodecs();
         DJEncoderRegistration::registerCodecs();
         DJLSDecoderRegistration::registerCodecs();

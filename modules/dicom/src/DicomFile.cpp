@@ -13,7 +13,6 @@
 #include <dcmtk/dcmdata/dcxfer.h>
 #include <gdcmJPEG2000Codec.h>
 #include <gdcmSequenceOfFragments.h>
-#include <gdcmTrace.h>
 
 #include <algorithm>
 #include <cmath>
@@ -399,13 +398,6 @@ void checkJpegHeader(const Uint8* data, std::size_t length)
 std::size_t decodeJpeg2000(DcmDataset& dataset, const DicomImageHeader& header, const std::vector<int>& frames,
                            const std::vector<std::int16_t*>& out)
 {
-    static const bool quiet = [] {
-        gdcm::Trace::DebugOff();
-        gdcm::Trace::WarningOff();
-        gdcm::Trace::ErrorOff();
-        return true;
-    }();
-    (void)quiet;
     const PixelFormat& format = header.format;
     const std::vector<std::string> codestreams = frameCodestreams(dataset, header);
     std::size_t clamped = 0;

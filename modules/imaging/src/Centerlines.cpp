@@ -43,30 +43,6 @@ Eigen::VectorXd cubicBasis(const std::vector<double>& knots, int controls, doubl
     return basis.head(controls);
 }
 
-/// The label cropped to its bounding box + `margin` voxels, as 0/1.
-LabelVolume croppedBinary(const LabelVolume& label, std::uint8_t value, int margin)
-{
-    const auto bounds = labelBounds(label, value);
-    if (!bounds)
-        throw Error("the label is empty: segment the vessels first");
-    const auto& d = label.geometry().dims;
-    const auto& [low, high] = *bounds;
-    VolumeGeometry geometry = label.geometry();
-    std::array<int, 3> start{};
-    for (int a = 0; a < 3; ++a)
-    {
-        start[a] = std::max(0, low[a] - margin);
-        geometry.dims[a] = std::min(d[a] - 1, high[a] + margin) - start[a] + 1;
-    }
-    geometry.origin = label.geometry().indexToPatient(Eigen::Vector3d(start[0], start[1], start[2]));
-    LabelVolume out(geometry);
-    for (int k = 0; k < geometry.dims[2]; ++k)
-        for (int j = 0; j < geometry.dims[1]; ++j)
-            for (int i = 0; i < geometry.dims[0]; ++i)
-                out.at(i, j, k) = label.at(start[0] + i, start[1] + j, start[2] + k) == value;
-    return out;
-}
-
 std::array<int, 3> nearestVoxel(const VolumeGeometry& geometry, const Eigen::Vector3d& patient)
 {
     const Eigen::Vector3d index = geometry.patientToIndex(patient);
@@ -157,7 +133,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
 {
     if (skeleton.nodes.empty() || skeleton.edges.empty())
         throw Error("the skeleton is empty: run the skeleton step first");
-    const LabelVolume binary = croppedBinary(label, value, 2);
+    const LabelVolume binary = cropLabel(label, value, 2).binary;
     const VolumeGeometry& geometry = binary.geometry();
     const RealVolume distance = insideDistanceMm(binary, 1);
     progress.report(0.2, "fast marching");

@@ -42,7 +42,7 @@ RealVolume insideDistanceMm(const LabelVolume& label, std::uint8_t value)
     return interop::fromItk<float>(filter->GetOutput());
 }
 
-CroppedDistance croppedInsideDistanceMm(const LabelVolume& label, std::uint8_t value, int margin)
+LabelCrop cropLabel(const LabelVolume& label, std::uint8_t value, int margin)
 {
     const auto bounds = labelBounds(label, value);
     if (!bounds)
@@ -50,20 +50,25 @@ CroppedDistance croppedInsideDistanceMm(const LabelVolume& label, std::uint8_t v
     const auto& [low, high] = *bounds;
     const auto& d = label.geometry().dims;
     VolumeGeometry geometry = label.geometry();
-    CroppedDistance result;
+    LabelCrop crop;
     for (int a = 0; a < 3; ++a)
     {
-        result.start[a] = std::max(0, low[a] - margin);
-        geometry.dims[a] = std::min(d[a] - 1, high[a] + margin) - result.start[a] + 1;
+        crop.start[a] = std::max(0, low[a] - margin);
+        geometry.dims[a] = std::min(d[a] - 1, high[a] + margin) - crop.start[a] + 1;
     }
-    geometry.origin = label.geometry().indexToPatient(Eigen::Vector3d(result.start[0], result.start[1], result.start[2]));
-    LabelVolume crop(geometry);
+    geometry.origin = label.geometry().indexToPatient(Eigen::Vector3d(crop.start[0], crop.start[1], crop.start[2]));
+    crop.binary = LabelVolume(geometry);
     for (int k = 0; k < geometry.dims[2]; ++k)
         for (int j = 0; j < geometry.dims[1]; ++j)
             for (int i = 0; i < geometry.dims[0]; ++i)
-                crop.at(i, j, k) = label.at(result.start[0] + i, result.start[1] + j, result.start[2] + k) == value;
-    result.distance = insideDistanceMm(crop, 1);
-    return result;
+                crop.binary.at(i, j, k) = label.at(crop.start[0] + i, crop.start[1] + j, crop.start[2] + k) == value;
+    return crop;
+}
+
+CroppedDistance croppedInsideDistanceMm(const LabelVolume& label, std::uint8_t value, int margin)
+{
+    const LabelCrop crop = cropLabel(label, value, margin);
+    return {insideDistanceMm(crop.binary, 1), crop.start};
 }
 
 } // namespace vsim::imaging

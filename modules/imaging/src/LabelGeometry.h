@@ -18,6 +18,15 @@ std::optional<std::pair<std::array<int, 3>, std::array<int, 3>>> labelBounds(con
 /// positive inside; negative outside), on the label's grid.
 RealVolume insideDistanceMm(const LabelVolume& label, std::uint8_t value);
 
+/// The voxels equal to `value` as 0/1 in their bounding box grown by `margin` voxels, clipped to the volume;
+/// `start` is the label index of the crop's voxel (0, 0, 0). Throws vsim::Error for an empty label.
+struct LabelCrop
+{
+    LabelVolume binary;
+    std::array<int, 3> start{};
+};
+LabelCrop cropLabel(const LabelVolume& label, std::uint8_t value, int margin);
+
 /// The distance map of the voxels equal to `value` computed only in their bounding box grown by `margin` voxels
 /// (clipped to the volume, so the volume's own border is not taken for background): `start` is the label index
 /// of the map's voxel (0, 0, 0). Same values as insideDistanceMm inside the object, at a fraction of the memory.
