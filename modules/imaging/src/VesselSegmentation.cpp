@@ -1,5 +1,6 @@
 #include "vsim/imaging/VesselSegmentation.h"
 
+#include "LevelSetRefinement.h"
 #include "MaskOps.h"
 #include "vsim/interop/ItkImage.h"
 
@@ -180,7 +181,7 @@ Mask refine(const Mask& mask, const VolumeGeometry& geometry, double sigmaMm)
 std::vector<ParameterSpec> segmentationParameters()
 {
     const std::string window = "Layer 1: window and region growing", hessian = "Layer 2: vesselness",
-                      cleanup = "Layers 3-4: clean-up and refinement";
+                      levelSet = "Layer 3: level set", cleanup = "Layer 4: refinement and clean-up";
     return {
         {"min_contrast_hu", "Lowest contrast HU", "HU", 200, 50, 1000, window,
          "Lowest HU of contrast-filled blood; kidneys and tumour blush (about 150 HU) stay below."},
@@ -199,6 +200,11 @@ std::vector<ParameterSpec> segmentationParameters()
         {"vesselness_min_sigma_mm", "Smallest vessel scale", "mm", 0.5, 0.1, 5, hessian, "Smallest Hessian scale."},
         {"vesselness_max_sigma_mm", "Largest vessel scale", "mm", 1.5, 0.2, 10, hessian, "Largest Hessian scale."},
         {"vesselness_scales", "Vesselness scales", "", 2, 1, 8, hessian, "Number of Hessian scales.", ParameterSpec::Kind::Integer},
+        {"level_set_iterations", "Level-set steps", "", 20, 0, 500, levelSet,
+         "Steps of the threshold level set that moves the boundary onto the boundary level (0 turns layer 3 off).",
+         ParameterSpec::Kind::Integer},
+        {"level_set_curvature", "Level-set curvature weight", "", 0.05, 0, 2, levelSet,
+         "Weight of the curvature (smoothing) term against the contrast term; large values shrink thin vessels."},
         {"bone_margin_mm", "Bone margin", "mm", 1.0, 0, 5, cleanup,
          "Voxels this close to bone or calcium (above the highest contrast HU) are removed."},
         {"refine_sigma_mm", "Refinement sigma", "mm", 0.35, 0, 3, cleanup,
@@ -350,9 +356,26 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
                 vessel[i] = 1, ++added;
         result.figures["vesselness_added_voxels"] = double(added);
     }
-    progress.report(0.75, "clean-up");
+    progress.throwIfCancelled();
+    progress.report(0.65, "level set");
 
-    // Layer 3: bone exclusion, then hole filling (background not reachable from the region's border).
+    // Layer 3: the level set moves the voxel boundary onto the boundary level, smoothed by curvature.
+    {
+        RealVolume contrast = RealVolume::uninitialized(roi.geometry());
+        const double scale = 1.0 / std::max(blood - tissue, 1.0);
+        std::transform(hu, hu + roi.size(), contrast.data(), [=](float v) { return float((v - tissue) * scale); });
+        LevelSetSettings settings;
+        settings.lowerContrast = p.get("threshold_fraction");
+        settings.upperContrast = std::max((maxHu - tissue) * scale, settings.lowerContrast + 0.1);
+        settings.curvatureWeight = p.get("level_set_curvature");
+        settings.iterations = int(p.get("level_set_iterations"));
+        int steps = 0;
+        vessel = refineWithLevelSet(contrast, vessel, settings, &steps);
+        result.figures["level_set_steps"] = double(steps);
+    }
+    progress.report(0.8, "clean-up");
+
+    // Clean-up: bone exclusion, then hole filling (background not reachable from the region's border).
     const int boneSteps = int(std::lround(p.get("bone_margin_mm") / roi.geometry().spacing.minCoeff()));
     Mask bone(roi.size());
     for (std::size_t i = 0; i < bone.size(); ++i)
