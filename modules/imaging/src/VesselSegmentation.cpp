@@ -203,7 +203,7 @@ std::vector<ParameterSpec> segmentationParameters()
         {"level_set_iterations", "Level-set steps", "", 20, 0, 500, levelSet,
          "Steps of the threshold level set that moves the boundary onto the boundary level (0 turns layer 3 off).",
          ParameterSpec::Kind::Integer},
-        {"level_set_curvature", "Level-set curvature weight", "", 0.05, 0, 2, levelSet,
+        {"level_set_curvature", "Level-set curvature weight", "", 0.01, 0, 2, levelSet,
          "Weight of the curvature (smoothing) term against the contrast term; large values shrink thin vessels."},
         {"bone_margin_mm", "Bone margin", "mm", 1.0, 0, 5, cleanup,
          "Voxels this close to bone or calcium (above the highest contrast HU) are removed."},
