@@ -76,14 +76,8 @@ private slots:
                     timer.elapsed() / 1000.0, skeleton.graph.endpoints().size(), skeleton.graph.junctions().size(),
                     skeleton.graph.edges.size(), skeleton.crowdedAfterThinning, skeleton.crowdedAfterVdsm);
         QCOMPARE(skeleton.graph.endpoints().size(), std::size_t(17));
-        // Known open item (issue 4): at 0.7 mm the 0.7 mm tips are 2 voxels wide and two junctions stay crowded
-        // triangles that VDSM cannot separate (17 junctions, 34 edges, 3 crowded voxels on 2026-11-22). The truth
-        // label at 0.35 mm gives the exact topology (tst_imaging_skeleton).
-        QEXPECT_FAIL("", "crowded junction triangles in 2-voxel-wide branches", Continue);
         QCOMPARE(skeleton.crowdedAfterVdsm, std::size_t(0));
-        QEXPECT_FAIL("", "crowded junction triangles in 2-voxel-wide branches", Continue);
         QCOMPARE(skeleton.graph.junctions().size(), std::size_t(15));
-        QEXPECT_FAIL("", "crowded junction triangles in 2-voxel-wide branches", Continue);
         QCOMPARE(skeleton.graph.edges.size(), std::size_t(31));
     }
 };

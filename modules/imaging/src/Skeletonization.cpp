@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <queue>
+#include <optional>
 #include <set>
 
 namespace vsim::imaging {
@@ -146,6 +147,51 @@ std::vector<std::size_t> shortestPathTo(const SkeletonGrid& grid, const std::set
     return {};
 }
 
+/// Routes paths from `centre` to every exit so that voxels of different paths never touch (except through the
+/// centre) and no path voxel touches another path's exit. Paths are routed one after the other, so the order
+/// matters: up to 24 orders of the exits are tried. Returns the union of the paths (with the centre), or nothing
+/// when no order separates them; `fallback` then receives the first order's routing, where an exit without a
+/// separated route took its plain shortest path (every exit stays connected).
+std::optional<std::set<std::size_t>> routeStar(const SkeletonGrid& grid, const std::set<std::size_t>& allowed,
+                                               std::size_t centre, const std::set<std::size_t>& exits,
+                                               const Eigen::Vector3d& spacing, std::set<std::size_t>* fallback)
+{
+    std::vector<std::size_t> order(exits.begin(), exits.end());
+    for (int attempt = 0; attempt < 24; ++attempt)
+    {
+        std::set<std::size_t> routed{centre};
+        bool clean = true;
+        for (std::size_t exit : order)
+        {
+            auto blocked = [&](std::size_t v) {
+                for (std::size_t other : exits)
+                    if (other != exit && adjacent(grid, v, other))
+                        return true;
+                for (std::size_t voxel : routed)
+                    if (voxel != centre && adjacent(grid, v, voxel))
+                        return true;
+                return false;
+            };
+            std::vector<std::size_t> path = shortestPathTo(grid, allowed, centre, exit, spacing, blocked);
+            if (path.empty())
+            {
+                clean = false;
+                if (attempt > 0)
+                    break;
+                path = shortestPathTo(grid, allowed, centre, exit, spacing, [](std::size_t) { return false; });
+            }
+            routed.insert(path.begin(), path.end());
+        }
+        if (clean)
+            return routed;
+        if (attempt == 0)
+            *fallback = routed;
+        if (!std::next_permutation(order.begin(), order.end()))
+            break;
+    }
+    return std::nullopt;
+}
+
 /// One VDSM pass (see removeCrowdedPoints). Paths from the centre to the exits are routed so that voxels of
 /// different paths never touch (except through the centre), which is what makes the result unit-width; they run
 /// through the crowded region and, where it has no such route, through lumen voxels next to it (`lumen`, same
@@ -215,27 +261,10 @@ std::size_t vdsmPass(SkeletonGrid& grid, const Eigen::Vector3d& spacing, const s
                             allowed.insert(next);
                     }
             const std::size_t centre = spatialMedian(grid, region, spacing);
-            routed = {centre};
-            bool clean = true;
-            for (std::size_t exit : exits)
-            {
-                auto blocked = [&](std::size_t v) {
-                    for (std::size_t other : exits)
-                        if (other != exit && adjacent(grid, v, other))
-                            return true;
-                    for (std::size_t voxel : routed)
-                        if (voxel != centre && adjacent(grid, v, voxel))
-                            return true;
-                    return false;
-                };
-                std::vector<std::size_t> path = shortestPathTo(grid, allowed, centre, exit, spacing, blocked);
-                if (path.empty())
-                {
-                    clean = false; // no separated route: the plain shortest path keeps the exit connected
-                    path = shortestPathTo(grid, allowed, centre, exit, spacing, [](std::size_t) { return false; });
-                }
-                routed.insert(path.begin(), path.end());
-            }
+            const std::optional<std::set<std::size_t>> star = routeStar(grid, allowed, centre, exits, spacing, &routed);
+            const bool clean = star.has_value();
+            if (clean)
+                routed = *star;
             if (growth == 0)
                 firstRouted = routed;
             if (clean)
