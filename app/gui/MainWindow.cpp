@@ -36,6 +36,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(&m_document, &StudyDocument::artifactsChanged, this, [this] {
         refreshArtifactTree();
         refreshTitle();
+        // An undo may have taken away the label the overlays show.
+        if (!m_overlayLabelId.empty() && (!m_document.hasStudy() || !m_document.study().hasArtifact(m_overlayLabelId)))
+        {
+            discardLabelEdits();
+            showLabelOverlay({}, {});
+        }
+    });
+    connect(&m_document, &StudyDocument::studyReplaced, this, [this] {
+        discardLabelEdits();
+        showLabelOverlay({}, {});
     });
     connect(m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::refreshTitle);
     connect(&m_tasks, &TaskRunner::started, this, [this](const QString& title) {

@@ -2,7 +2,10 @@
 
 #include "StudyDocument.h"
 #include "TaskRunner.h"
+#include "vsim/core/ImageVolume.h"
+#include "vsim/core/Parameters.h"
 #include "vsim/dicom/DicomScan.h"
+#include "vsim/viz/BrushMode.h"
 
 #include <QMainWindow>
 
@@ -11,12 +14,14 @@
 #include <memory>
 #include <optional>
 
+class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 class QMenu;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
+class QToolBar;
 class QTreeWidget;
 
 namespace vsim::imaging {
@@ -25,6 +30,7 @@ struct VesselMeasurements;
 
 namespace vsim::gui {
 
+class LabelEditSession;
 class ViewLayout;
 
 /// One study per window (document-oriented): artifact tree, workflow dock, 4-up views, status bar with progress
@@ -53,11 +59,27 @@ public:
                      std::shared_ptr<const dicom::DicomScanResult> scan = {});
     /// Opens the Import DICOM dialog and imports what the user picks.
     void showDicomImportDialog();
-    /// Segments the vessels of the newest image in the background (default parameters; automatic seed unless
-    /// `seedMm`), adds the label (undoable) and shows its lumen surface in the 3D view.
+    /// Segments the vessels of the newest image in the background (segmentationParameters(); automatic seed
+    /// unless `seedMm`), adds the label (undoable), overlays it in the MPRs and shows its surface in 3D.
     bool segmentVessels(const std::optional<Eigen::Vector3d>& seedMm = std::nullopt);
-    /// Skeleton and centerlines of the newest vessel label in the background; both added (one undo step).
+    /// Skeleton and centerlines of the newest vessel label in the background; both added (one undo step) and drawn
+    /// over the lumen surface in the 3D view.
     bool extractSkeletonAndCenterlines();
+    /// The parameters the vessel steps use (Vessels > Parameters edits them; defaults from the declarations).
+    ParameterSet& segmentationParameters() { return m_segmentationParameters; }
+    ParameterSet& skeletonParameters() { return m_skeletonParameters; }
+    ParameterSet& centerlineParameters() { return m_centerlineParameters; }
+
+    /// Starts correcting the newest vessel label with the brush (`brush` in every MPR, radius in mm); false
+    /// without a label or while a task runs.
+    bool startLabelEditing(viz::BrushMode brush = viz::BrushMode::Paint, double radiusMm = 3.0);
+    /// The running edit session, or nullptr.
+    LabelEditSession* labelEditSession() const { return m_labelEdit; }
+    /// Adds the edited label as a new artifact (undoable; the original stays) and ends the session; false
+    /// when there is no session or nothing was edited.
+    bool applyLabelEdits();
+    /// Ends the session without adding anything (its strokes stay in the undo history, harmless).
+    void discardLabelEdits();
     /// The Measurements dock's table: one row per centerline (length, radii, diameters, stenosis) and a first row for
     /// the maximum diameter; clicking a row moves the MPR cursor to its narrowest (or widest) section.
     QTableWidget* measurementTable() const { return m_measurementTable; }
@@ -75,6 +97,12 @@ private:
     void createMenus();
     void createVesselMenu();
     void createMeasurementDock();
+    void createLabelEditToolBar();
+    void editVesselParameters();
+    /// Overlays a label in the three MPRs (an empty one clears them); `artifactId` is what it shows.
+    void showLabelOverlay(const LabelVolume& label, const std::string& artifactId);
+    /// Extracts a display surface of `label` in the background and shows it (and nothing else) in 3D.
+    void showLumenSurface(const LabelVolume& label);
     /// Fills the Measurements dock; each row keeps the patient position (mm) it jumps to.
     void showMeasurements(const imaging::VesselMeasurements& measurements);
     /// The newest undamaged artifact of a kind, or an empty string.
@@ -104,6 +132,16 @@ private:
     QList<QAction*> m_documentActions; // disabled while a task runs or without a study
     QAction* m_undoAction = nullptr;    // also disabled while a task runs: the task may be reading the study
     QAction* m_redoAction = nullptr;
+
+    ParameterSet m_segmentationParameters;
+    ParameterSet m_skeletonParameters;
+    ParameterSet m_centerlineParameters;
+    std::string m_overlayLabelId; // the label artifact the MPR overlays show
+    LabelEditSession* m_labelEdit = nullptr;
+    QToolBar* m_editToolBar = nullptr;
+    QAction* m_paintAction = nullptr;
+    QAction* m_eraseAction = nullptr;
+    QDoubleSpinBox* m_brushRadius = nullptr;
 };
 
 } // namespace vsim::gui

@@ -1,8 +1,9 @@
-// The vessel steps of the workflow: segmentation, skeleton and centerlines, run in the task runner and added to
-// the study as undoable artifacts. The parameters are the declared defaults (the parameter form comes next).
+// The vessel steps of the workflow: segmentation, skeleton and centerlines, run in the task runner with the
+// parameters of Vessels > Parameters and added to the study as undoable artifacts; the measurement dock.
 
 #include "ArtifactCommands.h"
 #include "MainWindow.h"
+#include "ParameterForm.h"
 #include "ViewLayout.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
@@ -39,6 +40,8 @@ std::map<std::string, std::string> asText(const ParameterSet& parameters)
 }
 
 const QColor kLumenColour(220, 60, 50);
+const QColor kSkeletonColour(250, 210, 40);
+const QColor kCenterlineColour(60, 220, 90);
 constexpr int kPositionRole = Qt::UserRole + 1;
 
 QTableWidgetItem* number(double value, int decimals)
@@ -116,6 +119,12 @@ void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurement
 
 void MainWindow::createVesselMenu()
 {
+    // The parameters the vessel steps run with start at the declared defaults.
+    m_segmentationParameters = ParameterSet(imaging::segmentationParameters());
+    m_skeletonParameters = ParameterSet(imaging::skeletonParameters());
+    m_centerlineParameters = ParameterSet(imaging::centerlineParameters());
+    createLabelEditToolBar();
+
     QMenu* vessels = menuBar()->addMenu(tr("V&essels"));
     m_documentActions << vessels->addAction(tr("&Segment Vessels"), this, [this] { segmentVessels(); });
     // Click a vessel in any MPR view (the linked cursor goes there), then segment from that seed.
@@ -124,6 +133,17 @@ void MainWindow::createVesselMenu()
     });
     m_documentActions << vessels->addAction(tr("S&keleton and Centerlines"), this,
                                             [this] { extractSkeletonAndCenterlines(); });
+    vessels->addSeparator();
+    m_documentActions << vessels->addAction(tr("&Edit Label (Brush)"), this, [this] { startLabelEditing(); });
+    m_documentActions << vessels->addAction(tr("&Parameters..."), this, [this] { editVesselParameters(); });
+}
+
+void MainWindow::editVesselParameters()
+{
+    editParametersInDialog(this, tr("Vessel parameters"),
+                           {{tr("Segmentation"), &m_segmentationParameters},
+                            {tr("Skeleton"), &m_skeletonParameters},
+                            {tr("Centerlines"), &m_centerlineParameters}});
 }
 
 std::string MainWindow::newestArtifact(study::ArtifactKind kind) const
@@ -152,11 +172,11 @@ bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)
         std::map<std::string, std::string> parameters;
     };
     auto outcome = std::make_shared<Outcome>();
+    discardLabelEdits();
     return m_tasks.run(
         tr("Segment vessels"),
-        [this, imageId, seedMm, outcome](const Progress& progress) {
+        [this, imageId, seedMm, outcome, parameters = m_segmentationParameters](const Progress& progress) {
             const CtVolume ct = m_document.study().loadImage(imageId); // the study is not edited while a task runs
-            const ParameterSet parameters(imaging::segmentationParameters());
             outcome->segmentation = imaging::segmentVessels(ct, parameters, seedMm, progress.subRange(0.0, 0.8));
             outcome->parameters = asText(parameters);
             ParameterSet surface(mesh::surfaceParameters());
@@ -175,7 +195,9 @@ bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)
             const std::string id = m_document.study().addLabel(outcome->segmentation.label, "Vessel lumen", provenance,
                                                                outcome->segmentation.warnings);
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Segment vessels")));
+            showLabelOverlay(outcome->segmentation.label, id);
             m_views->volumeView()->clearSurfaces();
+            m_views->volumeView()->clearLines();
             m_views->volumeView()->addSurface(outcome->surface, kLumenColour);
         });
 }
@@ -198,11 +220,12 @@ bool MainWindow::extractSkeletonAndCenterlines()
         std::map<std::string, std::string> skeletonParameters, centerlineParameters;
     };
     auto outcome = std::make_shared<Outcome>();
+    discardLabelEdits();
     return m_tasks.run(
         tr("Skeleton and centerlines"),
-        [this, labelId, outcome](const Progress& progress) {
+        [this, labelId, outcome, skeleton = m_skeletonParameters,
+         centerline = m_centerlineParameters](const Progress& progress) {
             const LabelVolume label = m_document.study().loadLabel(labelId);
-            const ParameterSet skeleton(imaging::skeletonParameters()), centerline(imaging::centerlineParameters());
             outcome->skeleton = imaging::extractSkeleton(label, 1, skeleton, progress.subRange(0.0, 0.6));
             outcome->centerlines = imaging::extractCenterlines(label, 1, outcome->skeleton.graph, centerline, std::nullopt,
                                                                progress.subRange(0.6, 0.9));
@@ -230,6 +253,12 @@ bool MainWindow::extractSkeletonAndCenterlines()
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, centerlineId, tr("Centerlines")));
             m_document.undoStack()->endMacro();
             showMeasurements(outcome->measurements);
+            viz::VolumeView3D* view = m_views->volumeView();
+            view->clearLines();
+            view->setVolumeVisible(false);  // the rendered contrast blood would hide the lines inside it
+            view->setSurfaceOpacity(0.35); // the lines run inside the lumen
+            view->addLines(outcome->skeleton.graph, kSkeletonColour, 1.0);
+            view->addLines(outcome->centerlines, kCenterlineColour, 3.0);
         });
 }
 

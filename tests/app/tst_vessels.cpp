@@ -1,12 +1,19 @@
-// The vessel steps from the GUI: segment the imported phantom in the background (label undoable, lumen surface in
-// the 3D view), then skeleton and centerlines as one undo step; without an image the step says what to do first.
+// The vessel steps from the GUI: segment the imported phantom in the background (label undoable, overlaid in the
+// MPRs, lumen surface in the 3D view), then skeleton and centerlines as one undo step, drawn over the surface;
+// parameters from the declarations' form; the brush paints and erases with undo, and its result becomes a new
+// label artifact; without an image the step says what to do first.
 #include "DicomFixtures.h"
 #include "GuiTestMain.h"
+#include "LabelEditSession.h"
 #include "MainWindow.h"
+#include "ParameterForm.h"
 #include "ViewLayout.h"
 #include "vsim/viz/SliceView.h"
+#include "vsim/viz/VolumeView3D.h"
 #include "vsim/imaging/VesselSegmentation.h"
 
+#include <QDoubleSpinBox>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QTableWidget>
 
@@ -41,11 +48,17 @@ private slots:
         const double dice = imaging::diceCoefficient(study.loadLabel(label.id), 1, truth, dicom::label::kVesselLumen);
         qInfo("GUI segmentation of the 3.5 mm aaa: Dice %.3f", dice);
         QVERIFY(dice > 0.85); // 3.5 mm voxels: the small renal branches are a few voxels wide
+        for (auto orientation : {viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal, viz::SliceOrientation::Sagittal})
+            QVERIFY(window.views()->sliceView(orientation)->hasLabel());
 
         QVERIFY(window.extractSkeletonAndCenterlines());
         QVERIFY(vsim::test::waitForTask(window));
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(4));
         QCOMPARE(window.document().study().artifacts().back().name, std::string("Centerlines"));
+        const auto& artifacts = window.document().study().artifacts();
+        const std::size_t drawn = window.document().study().loadSkeleton(artifacts[2].id).edges.size() +
+                                  window.document().study().loadSkeleton(artifacts[3].id).edges.size();
+        QCOMPARE(window.views()->volumeView()->lineCount(), int(drawn)); // skeleton and centerlines over the surface
         // The measurement table: the maximum-diameter row first (the aaa's 55 mm, coarse 3.5 mm voxels here), and
         // a click takes the MPR cursor into the aneurysm.
         QTableWidget* table = window.measurementTable();
@@ -56,11 +69,117 @@ private slots:
         emit table->cellClicked(0, 0);
         const Eigen::Vector3d cursor = window.views()->sliceView(viz::SliceOrientation::Axial)->cursor();
         QVERIFY(std::abs(cursor.z() - phantom.model.measures.at("aneurysm_centre_z_mm")) < 25.0);
+        // What people see: the label overlay tints the coronal MPR red, the centerlines show green through the
+        // translucent lumen surface (window.grab() does not re-render the OpenGL views: grab each one).
+        const QString output = test::outputFolder("gui");
+        const QImage coronal = window.views()->sliceView(viz::SliceOrientation::Coronal)->grabFramebuffer();
+        const QImage scene = window.views()->volumeView()->grabFramebuffer();
+        coronal.save(output + "/vessels-coronal-overlay.png");
+        scene.save(output + "/vessels-3d-centerlines.png");
+        const auto countPixels = [](const QImage& image, auto test) {
+            int count = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    count += test(QColor(image.pixel(x, y)));
+            return count;
+        };
+        const int tinted = countPixels(coronal, [](const QColor& c) { return c.red() > c.green() + 60; });
+        const int green = countPixels(scene, [](const QColor& c) { return c.green() > c.red() + 30 && c.green() > 100; });
+        qInfo("overlay: %d red-tinted pixels in the coronal MPR; %d centerline pixels in the 3D view", tinted, green);
+        QVERIFY(tinted > 500);
+        window.views()->volumeView()->clearLines();
+        const int greenWithoutLines = countPixels(window.views()->volumeView()->grabFramebuffer(), [](const QColor& c) {
+            return c.green() > c.red() + 30 && c.green() > 100;
+        });
+        QVERIFY2(green > 20 && greenWithoutLines < 5, qPrintable(QString("%1 / %2").arg(green).arg(greenWithoutLines)));
         window.grab().save(QString::fromStdString((fs::path(test::outputFolder("gui").toStdString()) / "vessels.png").string()));
         window.document().undoStack()->undo(); // skeleton and centerlines go together
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(2));
         window.document().undoStack()->undo();
         QCOMPARE(window.document().study().artifacts().size(), std::size_t(1));
+    }
+
+    void parametersBrushAndUndo()
+    {
+        const fs::path folder = test::freshFolder("gui-vessels", "brush");
+        test::writePhantomSeries(dicom::PhantomKind::Aaa, test::smallPhantomOptions(), folder);
+        gui::MainWindow window;
+        window.resize(1200, 900);
+        window.show();
+        const fs::path bundle = test::freshFolder("gui-vessels", "brush-study") / "brush.vsim";
+        QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
+        QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
+        QVERIFY(vsim::test::waitForTask(window));
+
+        // The form shows the declarations; an edited value reaches the step and its provenance.
+        gui::ParameterForm form(window.segmentationParameters());
+        auto* refine = form.findChild<QDoubleSpinBox*>("refine_sigma_mm");
+        QVERIFY(refine);
+        QCOMPARE(refine->suffix(), QString(" mm"));
+        QVERIFY(!refine->toolTip().isEmpty());
+        refine->setValue(0.5);
+        QCOMPARE(form.values().get("refine_sigma_mm"), 0.5);
+        form.resetToDefaults();
+        QCOMPARE(form.values().get("refine_sigma_mm"), 0.35);
+        window.segmentationParameters().set("refine_sigma_mm", 0.0);
+        QVERIFY(window.segmentVessels());
+        QVERIFY(vsim::test::waitForTask(window));
+        const study::Artifact segmented = window.document().study().artifacts().back();
+        QCOMPARE(segmented.provenance.parameters.at("refine_sigma_mm"), std::string("0"));
+        const LabelVolume original = window.document().study().loadLabel(segmented.id);
+        const auto voxels = [](const LabelVolume& label) { return std::count(label.data(), label.data() + label.size(), 1); };
+
+        // A paint stroke dragged across the axial view: one undo step that undoes exactly.
+        QVERIFY(window.startLabelEditing(viz::BrushMode::Paint, 6.0));
+        gui::LabelEditSession* session = window.labelEditSession();
+        QVERIFY(session);
+        viz::SliceView* axial = window.views()->sliceView(viz::SliceOrientation::Axial);
+        axial->setCursor(dicom::kPhantomCentre + Eigen::Vector3d(70.0, 0.0, 0.0)); // tissue beside the aorta
+        const QPointF middle(axial->width() / 2.0, axial->height() / 2.0);
+        const int undoBefore = window.document().undoStack()->count();
+        auto mouse = [&](QEvent::Type type, QPointF at, Qt::MouseButtons buttons) {
+            QMouseEvent event(type, at, axial->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
+            QApplication::sendEvent(axial, &event);
+        };
+        mouse(QEvent::MouseButtonPress, middle, Qt::LeftButton);
+        mouse(QEvent::MouseMove, middle + QPointF(20, 0), Qt::LeftButton);
+        mouse(QEvent::MouseButtonRelease, middle + QPointF(20, 0), Qt::NoButton);
+        const std::size_t painted = session->paintedVoxels();
+        qInfo("brush stroke: %zu voxels painted", painted);
+        QVERIFY(painted > 0);
+        QCOMPARE(window.document().undoStack()->count(), undoBefore + 1);
+        QCOMPARE(voxels(session->label()), voxels(original) + long(painted));
+        QCOMPARE(axial->cursor(), dicom::kPhantomCentre + Eigen::Vector3d(70.0, 0.0, 0.0)); // the brush does not move it
+        window.document().undoStack()->undo();
+        QCOMPARE(session->paintedVoxels(), std::size_t(0));
+        QVERIFY(std::equal(original.data(), original.data() + original.size(), session->label().data()));
+        window.document().undoStack()->redo();
+        QCOMPARE(session->paintedVoxels(), painted);
+
+        // Applying adds a new label artifact that records the edits; undo takes it away again.
+        const std::size_t before = window.document().study().artifacts().size();
+        QVERIFY(window.applyLabelEdits());
+        QVERIFY(vsim::test::waitForTask(window)); // the surface of the edited label
+        QVERIFY(!window.labelEditSession());
+        const study::Artifact edited = window.document().study().artifacts().back();
+        QCOMPARE(edited.name, std::string("Vessel lumen (edited)"));
+        QCOMPARE(edited.provenance.command, std::string("edit-label"));
+        QCOMPARE(edited.provenance.inputs.front(), segmented.id);
+        QCOMPARE(edited.provenance.parameters.at("painted_voxels"), std::to_string(painted));
+        QCOMPARE(voxels(window.document().study().loadLabel(edited.id)), voxels(original) + long(painted));
+        window.document().undoStack()->undo();
+        QCOMPARE(window.document().study().artifacts().size(), before);
+
+        // Erasing inside the aorta removes lumen voxels; nothing to apply without edits.
+        QVERIFY(window.startLabelEditing(viz::BrushMode::Erase, 3.0));
+        QVERIFY(!window.applyLabelEdits());
+        axial->setCursor(dicom::kPhantomCentre + Eigen::Vector3d(0.0, -5.0, 100.0));
+        mouse(QEvent::MouseButtonPress, middle, Qt::LeftButton);
+        mouse(QEvent::MouseButtonRelease, middle, Qt::NoButton);
+        QVERIFY(window.labelEditSession()->erasedVoxels() > 0);
+        window.discardLabelEdits();
+        QVERIFY(!window.labelEditSession());
+        QCOMPARE(window.document().study().artifacts().size(), before);
     }
 
     void seedFromTheCursor()

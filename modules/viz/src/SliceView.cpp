@@ -7,9 +7,11 @@
 #include <vtkCamera.h>
 #include <vtkImageActor.h>
 #include <vtkImageData.h>
+#include <vtkImageMapToColors.h>
 #include <vtkImageMapper3D.h>
 #include <vtkImageProperty.h>
 #include <vtkImageReslice.h>
+#include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
@@ -49,6 +51,11 @@ struct SliceView::Pipeline
     vtkSmartPointer<vtkImageData> scaledIndexImage; // the CT in "index * spacing" space, sharing its voxels
     vtkSmartPointer<vtkImageReslice> reslice = vtkSmartPointer<vtkImageReslice>::New();
     vtkSmartPointer<vtkImageActor> actor = vtkSmartPointer<vtkImageActor>::New();
+    // The label overlay: same reslice axes, nearest neighbour, 0 transparent and 1 translucent red.
+    vtkSmartPointer<vtkImageData> scaledIndexLabel;
+    vtkSmartPointer<vtkImageReslice> labelReslice = vtkSmartPointer<vtkImageReslice>::New();
+    vtkSmartPointer<vtkImageMapToColors> labelColours = vtkSmartPointer<vtkImageMapToColors>::New();
+    vtkSmartPointer<vtkImageActor> labelActor = vtkSmartPointer<vtkImageActor>::New();
     std::array<vtkSmartPointer<vtkTextActor>, 4> edgeLabels; // left, right, top, bottom
     vtkSmartPointer<vtkTextActor> positionLabel;
 };
@@ -66,6 +73,24 @@ SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
     p.actor->VisibilityOff();
     renderer()->AddViewProp(p.actor);
     renderer()->SetBackground(0.0, 0.0, 0.0);
+
+    p.labelReslice->SetOutputDimensionality(2);
+    p.labelReslice->SetInterpolationModeToNearestNeighbor();
+    p.labelReslice->SetBackgroundLevel(0.0);
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetNumberOfTableValues(2);
+    table->SetTableRange(0.0, 1.0);
+    table->SetTableValue(0, 0.0, 0.0, 0.0, 0.0);
+    table->SetTableValue(1, 1.0, 0.2, 0.15, 0.45);
+    table->Build();
+    p.labelColours->SetLookupTable(table);
+    p.labelColours->SetOutputFormatToRGBA();
+    p.labelColours->SetInputConnection(p.labelReslice->GetOutputPort());
+    p.labelActor->GetMapper()->SetInputConnection(p.labelColours->GetOutputPort());
+    p.labelActor->GetProperty()->SetInterpolationTypeToNearest();
+    p.labelActor->SetPosition(0.0, 0.0, 0.5); // in front of the CT slice (the camera looks down -z)
+    p.labelActor->VisibilityOff();
+    renderer()->AddViewProp(p.labelActor);
 
     p.edgeLabels = {makeLabel(VTK_TEXT_LEFT, VTK_TEXT_CENTERED), makeLabel(VTK_TEXT_RIGHT, VTK_TEXT_CENTERED),
                     makeLabel(VTK_TEXT_CENTERED, VTK_TEXT_TOP), makeLabel(VTK_TEXT_CENTERED, VTK_TEXT_BOTTOM)};
@@ -105,6 +130,11 @@ QString SliceView::edgeLabel(Qt::Edge edge) const
 void SliceView::setImage(const CtVolume& image)
 {
     m_image = image;
+    if (!m_label.isEmpty() && !m_label.geometry().isClose(image.geometry(), 1e-4))
+    {
+        m_label = LabelVolume(); // an overlay belongs to its image's grid
+        m_pipeline->labelActor->VisibilityOff();
+    }
     Pipeline& p = *m_pipeline;
     p.scaledIndexImage = interop::toVtk(m_image);
     p.scaledIndexImage->SetOrigin(0.0, 0.0, 0.0); // reslicing happens in index * spacing space, see updateSlice()
@@ -122,9 +152,45 @@ void SliceView::setImage(const CtVolume& image)
     updateCamera();
 }
 
+void SliceView::setLabel(const LabelVolume& label)
+{
+    Pipeline& p = *m_pipeline;
+    if (label.isEmpty() || !hasImage() || !label.geometry().isClose(m_image.geometry(), 1e-4))
+    {
+        m_label = LabelVolume();
+        p.labelActor->VisibilityOff();
+        update();
+        return;
+    }
+    m_label = label;
+    p.scaledIndexLabel = interop::toVtk(m_label);
+    p.scaledIndexLabel->SetOrigin(0.0, 0.0, 0.0);
+    const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    p.scaledIndexLabel->SetDirectionMatrix(identity);
+    p.labelReslice->SetInputData(p.scaledIndexLabel);
+    p.labelActor->VisibilityOn();
+    updateSlice();
+}
+
+void SliceView::refreshLabel()
+{
+    if (m_pipeline->scaledIndexLabel)
+        m_pipeline->scaledIndexLabel->Modified();
+    update();
+}
+
+void SliceView::setBrush(BrushMode brush, double radiusMm)
+{
+    m_brush = brush;
+    m_brushRadiusMm = std::max(0.1, radiusMm);
+    QWidget::setCursor(m_brush == BrushMode::Off ? Qt::ArrowCursor : Qt::CrossCursor);
+}
+
 void SliceView::clearImage()
 {
     m_image = CtVolume();
+    m_label = LabelVolume();
+    m_pipeline->labelActor->VisibilityOff();
     m_pipeline->actor->VisibilityOff();
     m_pipeline->positionLabel->SetInput("");
     update();
@@ -191,6 +257,10 @@ void SliceView::updateSlice()
     p.reslice->SetOutputSpacing(pixel, pixel, pixel);
     p.reslice->SetOutputOrigin(0.0, 0.0, 0.0);
     p.reslice->SetOutputExtent(-half, half, -half, half, 0, 0);
+    p.labelReslice->SetResliceAxes(matrix);
+    p.labelReslice->SetOutputSpacing(pixel, pixel, pixel);
+    p.labelReslice->SetOutputOrigin(0.0, 0.0, 0.0);
+    p.labelReslice->SetOutputExtent(-half, half, -half, half, 0, 0);
     const Eigen::Vector3d index = geometry.patientToIndex(m_cursor);
     const double along = m_cursor.dot(axes.normal().cwiseAbs());
     const char* axisName = m_orientation == SliceOrientation::Axial ? "z" : m_orientation == SliceOrientation::Coronal ? "y" : "x";
@@ -227,15 +297,24 @@ void SliceView::mousePressEvent(QMouseEvent* event)
 {
     m_dragStart = event->position();
     m_dragStartWindowLevel = m_windowLevel;
-    if (event->button() == Qt::LeftButton && hasImage())
-        setCursor(patientAt(event->position()));
+    if (event->button() != Qt::LeftButton || !hasImage())
+        return;
+    if (m_brush != BrushMode::Off && hasLabel())
+    {
+        m_stroking = true;
+        emit brushDab(patientAt(event->position()), screenAxes(m_orientation).normal());
+        return;
+    }
+    setCursor(patientAt(event->position()));
 }
 
 void SliceView::mouseMoveEvent(QMouseEvent* event)
 {
     if (!hasImage())
         return;
-    if (event->buttons() & Qt::LeftButton)
+    if ((event->buttons() & Qt::LeftButton) && m_stroking)
+        emit brushDab(patientAt(event->position()), screenAxes(m_orientation).normal());
+    else if (event->buttons() & Qt::LeftButton)
         setCursor(patientAt(event->position()));
     else if (event->buttons() & Qt::RightButton)
     {
@@ -244,7 +323,14 @@ void SliceView::mouseMoveEvent(QMouseEvent* event)
     }
 }
 
-void SliceView::mouseReleaseEvent(QMouseEvent*) {}
+void SliceView::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::LeftButton && m_stroking)
+    {
+        m_stroking = false;
+        emit brushStrokeFinished();
+    }
+}
 
 void SliceView::wheelEvent(QWheelEvent* event)
 {

@@ -5,10 +5,12 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPiecewiseFunction.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -17,6 +19,7 @@
 #include <vtkVolume.h>
 #include <vtkVolumeProperty.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace vsim::viz {
@@ -27,6 +30,8 @@ struct VolumeView3D::Scene
     vtkSmartPointer<vtkSmartVolumeMapper> mapper = vtkSmartPointer<vtkSmartVolumeMapper>::New();
     vtkSmartPointer<vtkVolume> volume = vtkSmartPointer<vtkVolume>::New();
     std::vector<vtkSmartPointer<vtkActor>> surfaces;
+    std::vector<vtkSmartPointer<vtkActor>> lines;
+    int lineCount = 0;
 };
 
 VolumeView3D::VolumeView3D(QWidget* parent) : VtkView(parent), m_scene(std::make_unique<Scene>())
@@ -101,6 +106,51 @@ void VolumeView3D::clearSurfaces()
     m_scene->surfaces.clear();
     update();
 }
+
+void VolumeView3D::setSurfaceOpacity(double opacity)
+{
+    for (const auto& actor : m_scene->surfaces)
+        actor->GetProperty()->SetOpacity(std::clamp(opacity, 0.0, 1.0));
+    update();
+}
+
+void VolumeView3D::addLines(const SkeletonGraph& graph, const QColor& colour, double widthPixels)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    for (const SkeletonGraph::Edge& edge : graph.edges)
+    {
+        cells->InsertNextCell(vtkIdType(edge.points.size()));
+        for (const Eigen::Vector3d& point : edge.points)
+            cells->InsertCellPoint(points->InsertNextPoint(point.x(), point.y(), point.z()));
+    }
+    auto polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(points);
+    polyData->SetLines(cells);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(polyData);
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(colour.redF(), colour.greenF(), colour.blueF());
+    actor->GetProperty()->SetLineWidth(float(widthPixels));
+    actor->GetProperty()->SetLighting(false);
+    renderer()->AddActor(actor);
+    m_scene->lines.push_back(actor);
+    m_scene->lineCount += int(graph.edges.size());
+    update();
+}
+
+void VolumeView3D::clearLines()
+{
+    for (const auto& actor : m_scene->lines)
+        renderer()->RemoveActor(actor);
+    m_scene->lines.clear();
+    m_scene->lineCount = 0;
+    update();
+}
+
+int VolumeView3D::lineCount() const { return m_scene->lineCount; }
 
 void VolumeView3D::setVolumeVisible(bool visible)
 {

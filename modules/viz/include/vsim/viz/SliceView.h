@@ -1,6 +1,7 @@
 #pragma once
 
 #include "vsim/core/ImageVolume.h"
+#include "vsim/viz/BrushMode.h"
 #include "vsim/viz/SliceOrientation.h"
 #include "vsim/viz/VtkView.h"
 
@@ -12,7 +13,9 @@ namespace vsim::viz {
 /// reslicing at the finest voxel spacing, window/level, LPS orientation letters on the four edges and the slice
 /// position. The cursor sits at the centre of the view; fieldOfView() mm span the view's height.
 /// Mouse: left click/drag moves the cursor in the plane, right drag changes window (x) and level (y), the wheel
-/// steps through slices by the finest spacing.
+/// steps through slices by the finest spacing. A label map on the CT's grid can be overlaid (voxels of value 1 in
+/// translucent red); in brush mode the left button paints or erases it instead of moving the cursor: the view
+/// only reports where (brushDab), the owner edits the label and calls refreshLabel().
 class SliceView : public VtkView
 {
     Q_OBJECT
@@ -25,6 +28,17 @@ public:
     void setImage(const CtVolume& image);
     void clearImage();
     bool hasImage() const;
+
+    /// Overlays `label` (same grid as the image; the view keeps a reference to its voxels); an empty one hides it.
+    void setLabel(const LabelVolume& label);
+    /// Redraws the overlay after its voxels changed in place.
+    void refreshLabel();
+    bool hasLabel() const { return !m_label.isEmpty(); }
+
+    /// Brush mode and radius (mm): with a brush the left button reports dabs instead of moving the cursor.
+    void setBrush(BrushMode brush, double radiusMm);
+    BrushMode brush() const { return m_brush; }
+    double brushRadius() const { return m_brushRadiusMm; }
 
     /// The cursor (mm, LPS): the slice passes through it and it sits at the centre of the view.
     Eigen::Vector3d cursor() const { return m_cursor; }
@@ -42,6 +56,10 @@ public:
 signals:
     void cursorChanged(const Eigen::Vector3d& cursor);
     void windowLevelChanged(double window, double level);
+    /// A brush dab at `centreMm` (patient frame) in the plane of this view; a stroke is the dabs between a press
+    /// and brushStrokeFinished().
+    void brushDab(const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal);
+    void brushStrokeFinished();
 
 protected:
     void resizeGL(int width, int height) override;
@@ -58,6 +76,10 @@ private:
     std::unique_ptr<Pipeline> m_pipeline;
     SliceOrientation m_orientation;
     CtVolume m_image;
+    LabelVolume m_label;
+    BrushMode m_brush = BrushMode::Off;
+    double m_brushRadiusMm = 3.0;
+    bool m_stroking = false;
     Eigen::Vector3d m_cursor = Eigen::Vector3d::Zero();
     double m_fieldOfView = 300.0;
     WindowLevel m_windowLevel = kCtaPreset;

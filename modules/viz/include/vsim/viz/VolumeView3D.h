@@ -1,6 +1,7 @@
 #pragma once
 
 #include "vsim/core/ImageVolume.h"
+#include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TriangleMesh.h"
 #include "vsim/viz/VtkView.h"
 
@@ -24,6 +25,14 @@ public:
     /// Adds a surface (mm, LPS) drawn in `colour`; returns nothing, surfaces stay until clearSurfaces().
     void addSurface(const TriangleMesh& surface, const QColor& colour);
     void clearSurfaces();
+    /// Opacity of every surface (0..1): lowered so that skeletons and centerlines inside show through.
+    void setSurfaceOpacity(double opacity);
+    /// Draws the edges of a skeleton or centerline graph (mm, LPS) as lines `widthPixels` wide, on top of the
+    /// surfaces; they stay until clearLines().
+    void addLines(const SkeletonGraph& graph, const QColor& colour, double widthPixels);
+    void clearLines();
+    /// Number of polylines drawn (all graphs).
+    int lineCount() const;
     void setVolumeVisible(bool visible);
     /// Front view: the camera looks at the volume centre from anterior (-y), superior (+z) up, patient left (+x)
     /// on the screen's right; parallel projection with `heightMm` mm across the view's height (<= 0: fit the volume).

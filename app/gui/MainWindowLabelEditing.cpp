@@ -1,0 +1,178 @@
+// Manual correction of the vessel label: the label overlay in the MPRs, the brush tool bar (Paint / Erase /
+// radius / Apply / Discard), one undo step per stroke, and the edited label added as a new artifact.
+
+#include "ArtifactCommands.h"
+#include "LabelEditSession.h"
+#include "MainWindow.h"
+#include "ViewLayout.h"
+#include "vsim/mesh/VesselSurface.h"
+#include "vsim/viz/SliceView.h"
+#include "vsim/viz/VolumeView3D.h"
+
+#include <QActionGroup>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace vsim::gui {
+namespace {
+
+const std::array<viz::SliceOrientation, 3> kOrientations{viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal,
+                                                          viz::SliceOrientation::Sagittal};
+
+} // namespace
+
+void MainWindow::createLabelEditToolBar()
+{
+    m_editToolBar = addToolBar(tr("Label Editing"));
+    m_editToolBar->setObjectName("labelEditToolBar");
+    auto* modes = new QActionGroup(this);
+    m_paintAction = m_editToolBar->addAction(tr("Paint"));
+    m_eraseAction = m_editToolBar->addAction(tr("Erase"));
+    for (QAction* action : {m_paintAction, m_eraseAction})
+    {
+        action->setCheckable(true);
+        modes->addAction(action);
+    }
+    m_paintAction->setToolTip(tr("Paint vessel voxels with the left button in any MPR view (one undo step per stroke)"));
+    m_eraseAction->setToolTip(tr("Erase vessel voxels with the left button in any MPR view"));
+    m_editToolBar->addWidget(new QLabel(tr(" Radius "), this));
+    m_brushRadius = new QDoubleSpinBox(this);
+    m_brushRadius->setObjectName("brushRadius");
+    m_brushRadius->setRange(0.5, 25.0);
+    m_brushRadius->setValue(3.0);
+    m_brushRadius->setSuffix(" mm");
+    m_editToolBar->addWidget(m_brushRadius);
+    QAction* apply = m_editToolBar->addAction(tr("Apply Edits"), this, [this] { applyLabelEdits(); });
+    m_editToolBar->addAction(tr("Discard Edits"), this, [this] { discardLabelEdits(); });
+    apply->setToolTip(tr("Add the edited label to the study as a new artifact (the original stays)"));
+    m_editToolBar->hide();
+
+    auto applyBrush = [this] {
+        const viz::BrushMode mode = m_eraseAction->isChecked() ? viz::BrushMode::Erase : viz::BrushMode::Paint;
+        for (viz::SliceOrientation orientation : kOrientations)
+            m_views->sliceView(orientation)->setBrush(m_labelEdit ? mode : viz::BrushMode::Off, m_brushRadius->value());
+    };
+    connect(modes, &QActionGroup::triggered, this, applyBrush);
+    connect(m_brushRadius, &QDoubleSpinBox::valueChanged, this, applyBrush);
+
+    for (viz::SliceOrientation orientation : kOrientations)
+    {
+        viz::SliceView* view = m_views->sliceView(orientation);
+        connect(view, &viz::SliceView::brushDab, this, [this, view](const Eigen::Vector3d& centre, const Eigen::Vector3d& normal) {
+            if (m_labelEdit)
+                m_labelEdit->dab(centre, normal, view->brushRadius(), view->brush() == viz::BrushMode::Erase);
+        });
+        connect(view, &viz::SliceView::brushStrokeFinished, this, [this] {
+            if (!m_labelEdit)
+                return;
+            if (QUndoCommand* stroke = m_labelEdit->finishStroke())
+                m_document.undoStack()->push(stroke);
+            statusBar()->showMessage(tr("Label edits: %1 voxels painted, %2 erased")
+                                         .arg(m_labelEdit->paintedVoxels())
+                                         .arg(m_labelEdit->erasedVoxels()),
+                                     5000);
+        });
+    }
+}
+
+void MainWindow::showLabelOverlay(const LabelVolume& label, const std::string& artifactId)
+{
+    m_overlayLabelId = label.isEmpty() ? std::string() : artifactId;
+    for (viz::SliceOrientation orientation : kOrientations)
+        m_views->sliceView(orientation)->setLabel(label);
+}
+
+bool MainWindow::startLabelEditing(viz::BrushMode brush, double radiusMm)
+{
+    if (!m_document.hasStudy() || m_tasks.isBusy())
+        return false;
+    const std::string labelId = newestArtifact(study::ArtifactKind::Label);
+    if (labelId.empty())
+    {
+        showError(tr("Edit label"), tr("The study has no vessel label: segment the vessels first."));
+        return false;
+    }
+    LabelVolume source;
+    try
+    {
+        source = m_document.study().loadLabel(labelId);
+    }
+    catch (const std::exception& error)
+    {
+        showError(tr("Edit label"), QString::fromStdString(error.what()));
+        return false;
+    }
+    discardLabelEdits();
+    m_labelEdit = new LabelEditSession(labelId, source, this);
+    connect(m_labelEdit, &LabelEditSession::labelChanged, this, [this] {
+        for (viz::SliceOrientation orientation : kOrientations)
+            m_views->sliceView(orientation)->refreshLabel();
+    });
+    showLabelOverlay(m_labelEdit->label(), labelId);
+    (brush == viz::BrushMode::Erase ? m_eraseAction : m_paintAction)->setChecked(true);
+    m_brushRadius->setValue(radiusMm);
+    for (viz::SliceOrientation orientation : kOrientations)
+        m_views->sliceView(orientation)->setBrush(brush == viz::BrushMode::Off ? viz::BrushMode::Paint : brush, radiusMm);
+    m_editToolBar->show();
+    return true;
+}
+
+void MainWindow::discardLabelEdits()
+{
+    if (!m_labelEdit)
+        return;
+    const std::string sourceId = m_labelEdit->sourceId();
+    m_labelEdit->deleteLater();
+    m_labelEdit = nullptr;
+    for (viz::SliceOrientation orientation : kOrientations)
+        m_views->sliceView(orientation)->setBrush(viz::BrushMode::Off, m_brushRadius->value());
+    m_editToolBar->hide();
+    // The overlay shows the study's label again.
+    if (m_document.hasStudy() && m_document.study().hasArtifact(sourceId))
+        showLabelOverlay(m_document.study().loadLabel(sourceId), sourceId);
+    else
+        showLabelOverlay({}, {});
+}
+
+bool MainWindow::applyLabelEdits()
+{
+    if (!m_labelEdit || !m_labelEdit->hasEdits() || !m_document.hasStudy() || m_tasks.isBusy())
+        return false;
+    study::Provenance provenance;
+    provenance.command = "edit-label";
+    provenance.inputs = {m_labelEdit->sourceId()};
+    provenance.parameters["painted_voxels"] = std::to_string(m_labelEdit->paintedVoxels());
+    provenance.parameters["erased_voxels"] = std::to_string(m_labelEdit->erasedVoxels());
+    const LabelVolume edited = m_labelEdit->label().clone();
+    const std::string id = m_document.study().addLabel(edited, "Vessel lumen (edited)", provenance);
+    m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Apply label edits")));
+    m_labelEdit->deleteLater();
+    m_labelEdit = nullptr;
+    for (viz::SliceOrientation orientation : kOrientations)
+        m_views->sliceView(orientation)->setBrush(viz::BrushMode::Off, m_brushRadius->value());
+    m_editToolBar->hide();
+    showLabelOverlay(edited, id);
+    showLumenSurface(edited);
+    return true;
+}
+
+void MainWindow::showLumenSurface(const LabelVolume& label)
+{
+    auto surface = std::make_shared<TriangleMesh>();
+    m_tasks.run(
+        tr("Vessel surface"),
+        [label, surface](const Progress& progress) {
+            ParameterSet parameters(mesh::surfaceParameters());
+            parameters.set("target_vertices", 20000); // enough for display
+            *surface = mesh::extractVesselSurface(label, 1, parameters, progress).surface;
+        },
+        [this, surface] {
+            m_views->volumeView()->clearSurfaces();
+            m_views->volumeView()->clearLines();
+            m_views->volumeView()->addSurface(*surface, QColor(220, 60, 50));
+        });
+}
+
+} // namespace vsim::gui

@@ -1,0 +1,122 @@
+#include "ParameterForm.h"
+
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsim::gui {
+
+ParameterForm::ParameterForm(const ParameterSet& initial, QWidget* parent)
+    : QWidget(parent), m_declared(initial.specs())
+{
+    auto* layout = new QVBoxLayout(this);
+    std::map<std::string, QFormLayout*> groups;
+    for (const ParameterSpec& spec : initial.specs())
+    {
+        QFormLayout*& form = groups[spec.group];
+        if (!form)
+        {
+            auto* box = new QGroupBox(QString::fromStdString(spec.group), this);
+            form = new QFormLayout(box);
+            layout->addWidget(box);
+        }
+        QAbstractSpinBox* field = nullptr;
+        const QString suffix = spec.unit.empty() ? QString() : " " + QString::fromStdString(spec.unit);
+        if (spec.kind == ParameterSpec::Kind::Integer)
+        {
+            auto* box = new QSpinBox(this);
+            box->setRange(int(spec.minimum), int(spec.maximum));
+            box->setSuffix(suffix);
+            field = box;
+        }
+        else
+        {
+            auto* box = new QDoubleSpinBox(this);
+            // Enough decimals for the default and a hundredth of the range.
+            const double step = (spec.maximum - spec.minimum) / 100.0;
+            const int decimals = std::clamp(int(std::ceil(-std::log10(std::max(step, 1e-6)))), 0, 4);
+            box->setDecimals(std::max(decimals, 2));
+            box->setRange(spec.minimum, spec.maximum);
+            box->setSingleStep(std::pow(10.0, -std::max(decimals, 1)));
+            box->setSuffix(suffix);
+            field = box;
+        }
+        field->setObjectName(QString::fromStdString(spec.key));
+        field->setToolTip(QString::fromStdString(spec.description));
+        form->addRow(QString::fromStdString(spec.label), field);
+        m_fields[spec.key] = field;
+    }
+    layout->addStretch();
+    show(initial);
+}
+
+void ParameterForm::show(const ParameterSet& values)
+{
+    for (const auto& [key, field] : m_fields)
+    {
+        if (auto* integer = qobject_cast<QSpinBox*>(field))
+            integer->setValue(int(std::lround(values.get(key))));
+        else if (auto* real = qobject_cast<QDoubleSpinBox*>(field))
+            real->setValue(values.get(key));
+    }
+}
+
+ParameterSet ParameterForm::values() const
+{
+    ParameterSet result = m_declared;
+    for (const auto& [key, field] : m_fields)
+    {
+        if (const auto* integer = qobject_cast<const QSpinBox*>(field))
+            result.set(key, integer->value());
+        else if (const auto* real = qobject_cast<const QDoubleSpinBox*>(field))
+            result.set(key, real->value());
+    }
+    return result;
+}
+
+void ParameterForm::resetToDefaults() { show(m_declared); }
+
+bool editParametersInDialog(QWidget* parent, const QString& title,
+                            const std::vector<std::pair<QString, ParameterSet*>>& pages)
+{
+    QDialog dialog(parent);
+    dialog.setWindowTitle(title);
+    auto* layout = new QVBoxLayout(&dialog);
+    auto* tabs = new QTabWidget(&dialog);
+    std::vector<ParameterForm*> forms;
+    for (const auto& [name, parameters] : pages)
+    {
+        auto* scroll = new QScrollArea(tabs);
+        auto* form = new ParameterForm(*parameters, scroll);
+        scroll->setWidget(form);
+        scroll->setWidgetResizable(true);
+        tabs->addTab(scroll, name);
+        forms.push_back(form);
+    }
+    layout->addWidget(tabs);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel |
+                                             QDialogButtonBox::RestoreDefaults, &dialog);
+    QObject::connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    QObject::connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    QObject::connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, &dialog,
+                     [&] { forms[std::size_t(tabs->currentIndex())]->resetToDefaults(); });
+    layout->addWidget(buttons);
+    dialog.resize(560, 640);
+    if (dialog.exec() != QDialog::Accepted)
+        return false;
+    for (std::size_t page = 0; page < pages.size(); ++page)
+        *pages[page].second = forms[page]->values();
+    return true;
+}
+
+} // namespace vsim::gui
