@@ -84,6 +84,33 @@ private slots:
         checkAgainstTruth(centerlinesOf(label), model, "bifurcation segmented");
     }
 
+    // Two separate tubes: the skeleton has both, the centerlines refuse with what to try.
+    void disconnectedLabelSaysWhatToTry()
+    {
+        VolumeGeometry geometry;
+        geometry.dims = {60, 40, 50};
+        geometry.spacing = {0.5, 0.5, 0.5};
+        LabelVolume label(geometry);
+        for (int k = 3; k < 47; ++k)
+            for (int j = 0; j < 40; ++j)
+                for (int i = 0; i < 60; ++i)
+                    for (int centre : {15, 45})
+                        if ((i - centre) * (i - centre) + (j - 20) * (j - 20) <= 25)
+                            label.at(i, j, k) = 1;
+        const imaging::SkeletonResult skeleton = imaging::extractSkeleton(label, 1, ParameterSet(imaging::skeletonParameters()));
+        QCOMPARE(skeleton.graph.edges.size(), std::size_t(2));
+        try
+        {
+            imaging::extractCenterlines(label, 1, skeleton.graph, ParameterSet(imaging::centerlineParameters()));
+            QFAIL("a disconnected label was accepted");
+        }
+        catch (const Error& error)
+        {
+            QVERIFY2(std::string(error.what()).find("disconnected") != std::string::npos, error.what());
+            QVERIFY2(std::string(error.what()).find("brush") != std::string::npos, error.what());
+        }
+    }
+
     void bsplineSmoothsNoise()
     {
         // A quarter circle of radius 20 mm sampled every 0.7 mm with 0.3 mm noise.

@@ -226,8 +226,9 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
         const auto voxelFrom = nearestVoxel(geometry, skeleton.nodes[std::size_t(from)].position);
         const auto voxelTo = nearestVoxel(geometry, skeleton.nodes[std::size_t(to)].position);
         if (timeAt(voxelFrom) >= kUnreached || timeAt(voxelTo) >= kUnreached)
-            throw Error("skeleton nodes " + std::to_string(from) + " and " + std::to_string(to) +
-                        " are not connected to the root through the lumen");
+            throw Error("the vessel label is disconnected: skeleton nodes " + std::to_string(from) + " and " +
+                        std::to_string(to) + " cannot be reached from the root through the lumen; segment one vessel "
+                        "tree from a seed, or join the parts with the brush");
         // Descend from the node farther from the root down to the nearer one.
         const bool toIsChild = timeAt(voxelTo) >= timeAt(voxelFrom);
         std::vector<std::array<int, 3>> voxels = descend(toIsChild ? voxelTo : voxelFrom,
