@@ -23,6 +23,16 @@
         <source>cannot be placed</source>
         <translation>nicht platzierbar</translation>
     </message>
+    <message>
+        <location filename="../app/gui/LabelEditSession.cpp" line="13"/>
+        <source>Paint label</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/LabelEditSession.cpp" line="13"/>
+        <source>Erase label</source>
+        <translation>Label radieren</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::DicomImportDialog</name>
@@ -270,103 +280,103 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="52"/>
+        <location filename="../app/gui/MainWindow.cpp" line="62"/>
         <source>%1: cancelled, nothing changed</source>
         <translation>%1: abgebrochen, nichts geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="55"/>
+        <location filename="../app/gui/MainWindow.cpp" line="65"/>
         <source>%1: done</source>
         <translation>%1: fertig</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="75"/>
+        <location filename="../app/gui/MainWindow.cpp" line="85"/>
         <source>Artifact</source>
         <translation>Artefakt</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="75"/>
+        <location filename="../app/gui/MainWindow.cpp" line="85"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="75"/>
+        <location filename="../app/gui/MainWindow.cpp" line="85"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="82"/>
+        <location filename="../app/gui/MainWindow.cpp" line="92"/>
         <source>Study</source>
         <translation>Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="90"/>
-        <location filename="../app/gui/MainWindow.cpp" line="94"/>
-        <location filename="../app/gui/MainWindow.cpp" line="103"/>
+        <location filename="../app/gui/MainWindow.cpp" line="100"/>
+        <location filename="../app/gui/MainWindow.cpp" line="104"/>
+        <location filename="../app/gui/MainWindow.cpp" line="113"/>
         <source>Import</source>
         <translation>Importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="90"/>
-        <location filename="../app/gui/MainWindow.cpp" line="94"/>
-        <location filename="../app/gui/MainWindow.cpp" line="105"/>
+        <location filename="../app/gui/MainWindow.cpp" line="100"/>
+        <location filename="../app/gui/MainWindow.cpp" line="104"/>
+        <location filename="../app/gui/MainWindow.cpp" line="115"/>
         <source>Segment</source>
         <translation>Segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="90"/>
-        <location filename="../app/gui/MainWindow.cpp" line="94"/>
-        <location filename="../app/gui/MainWindow.cpp" line="107"/>
+        <location filename="../app/gui/MainWindow.cpp" line="100"/>
+        <location filename="../app/gui/MainWindow.cpp" line="104"/>
+        <location filename="../app/gui/MainWindow.cpp" line="117"/>
         <source>Skeleton &amp;&amp; Centerlines</source>
         <translation>Skelett &amp;&amp; Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="90"/>
+        <location filename="../app/gui/MainWindow.cpp" line="100"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="90"/>
+        <location filename="../app/gui/MainWindow.cpp" line="100"/>
         <source>Simulate</source>
         <translation>Simulieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="91"/>
+        <location filename="../app/gui/MainWindow.cpp" line="101"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="97"/>
+        <location filename="../app/gui/MainWindow.cpp" line="107"/>
         <source>Not available in this version yet</source>
         <translation>In dieser Version noch nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="110"/>
+        <location filename="../app/gui/MainWindow.cpp" line="120"/>
         <source>Workflow</source>
         <translation>Arbeitsablauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="122"/>
+        <location filename="../app/gui/MainWindow.cpp" line="132"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="150"/>
+        <location filename="../app/gui/MainWindow.cpp" line="160"/>
         <source>No study</source>
         <translation>Keine Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="151"/>
+        <location filename="../app/gui/MainWindow.cpp" line="161"/>
         <source>%1[*] - VascuSim</source>
         <translation>%1[*] - VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="168"/>
+        <location filename="../app/gui/MainWindow.cpp" line="178"/>
         <source>damaged</source>
         <translation>beschädigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MainWindow.cpp" line="173"/>
+        <location filename="../app/gui/MainWindow.cpp" line="183"/>
         <source>%n warning(s)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -374,179 +384,268 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="179"/>
+        <location filename="../app/gui/MainWindow.cpp" line="189"/>
         <source>%1, made by &quot;%2&quot; on %3</source>
         <translation>%1, erzeugt von &quot;%2&quot; am %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="191"/>
+        <location filename="../app/gui/MainWindow.cpp" line="201"/>
         <source>%1 failed</source>
         <translation>%1 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="208"/>
+        <location filename="../app/gui/MainWindow.cpp" line="218"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="34"/>
         <source>Open study</source>
         <translation>Studie öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="228"/>
+        <location filename="../app/gui/MainWindow.cpp" line="238"/>
         <source>Study opened with problems</source>
         <translation>Studie mit Problemen geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="247"/>
+        <location filename="../app/gui/MainWindow.cpp" line="257"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
         <source>New study</source>
         <translation>Neue Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="258"/>
+        <location filename="../app/gui/MainWindow.cpp" line="268"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="44"/>
         <source>Import volume</source>
         <translation>Volumen importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="267"/>
-        <location filename="../app/gui/MainWindow.cpp" line="291"/>
+        <location filename="../app/gui/MainWindow.cpp" line="277"/>
+        <location filename="../app/gui/MainWindow.cpp" line="301"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="279"/>
-        <location filename="../app/gui/MainWindow.cpp" line="296"/>
+        <location filename="../app/gui/MainWindow.cpp" line="289"/>
+        <location filename="../app/gui/MainWindow.cpp" line="306"/>
         <source>Import DICOM</source>
         <translation>DICOM importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="316"/>
-        <location filename="../app/gui/MainWindow.cpp" line="385"/>
+        <location filename="../app/gui/MainWindow.cpp" line="326"/>
+        <location filename="../app/gui/MainWindow.cpp" line="395"/>
         <source>Save study</source>
         <translation>Studie speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="328"/>
+        <location filename="../app/gui/MainWindow.cpp" line="338"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
         <source>Save study as</source>
         <translation>Studie speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="347"/>
+        <location filename="../app/gui/MainWindow.cpp" line="357"/>
         <source>Show image</source>
         <translation>Bild anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="372"/>
+        <location filename="../app/gui/MainWindow.cpp" line="382"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="373"/>
+        <location filename="../app/gui/MainWindow.cpp" line="383"/>
         <source>Save the changes to this study before closing?</source>
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
         <source>Length (mm)</source>
         <translation>Länge (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
         <source>Start r (mm)</source>
         <translation>Anfangs-r (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
         <source>End r (mm)</source>
         <translation>End-r (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="69"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
         <source>Segment</source>
         <comment>a vessel segment (noun)</comment>
         <translation>Segment</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="70"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="73"/>
         <source>Reference Ø (mm)</source>
         <translation>Referenz-Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="70"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="73"/>
         <source>Minimal Ø (mm)</source>
         <translation>Minimaler Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="71"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="74"/>
         <source>Stenosis (%)</source>
         <translation>Stenose (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="71"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="74"/>
         <source>Max Ø (mm)</source>
         <translation>Max. Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="83"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="86"/>
         <source>Measurements</source>
         <translation>Messungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="111"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="114"/>
         <source>Maximum diameter %1 mm</source>
         <translation>Maximaler Durchmesser %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="119"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="128"/>
         <source>V&amp;essels</source>
         <translation>&amp;Gefäße</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="120"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="129"/>
         <source>&amp;Segment Vessels</source>
         <translation>Gefäße &amp;segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="122"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="131"/>
         <source>Segment from the &amp;Cursor</source>
         <translation>Ab dem &amp;Cursor segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="125"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="134"/>
         <source>S&amp;keleton and Centerlines</source>
         <translation>S&amp;kelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="156"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="137"/>
+        <source>&amp;Edit Label (Brush)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="138"/>
+        <source>&amp;Parameters...</source>
+        <translation>&amp;Parameter...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="143"/>
+        <source>Vessel parameters</source>
+        <translation>Gefäßparameter</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="144"/>
+        <source>Segmentation</source>
+        <translation>Segmentierung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="165"/>
         <location filename="../app/gui/MainWindowVessels.cpp" line="177"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="197"/>
         <source>Segment vessels</source>
         <translation>Gefäße segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="165"/>
         <source>The study has no CT image: import one first.</source>
         <translation>Die Studie enthält kein CT-Bild: zuerst eines importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="190"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="202"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="228"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="212"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="225"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="251"/>
         <source>Skeleton and centerlines</source>
         <translation>Skelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="190"/>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="28"/>
+        <source>Label Editing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="31"/>
+        <source>Paint</source>
+        <translation>Malen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="32"/>
+        <source>Erase</source>
+        <translation>Radieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="38"/>
+        <source>Paint vessel voxels with the left button in any MPR view (one undo step per stroke)</source>
+        <translation>Gefäßvoxel mit der linken Maustaste in einer MPR-Ansicht malen (ein Rückgängig-Schritt pro Strich)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="39"/>
+        <source>Erase vessel voxels with the left button in any MPR view</source>
+        <translation>Gefäßvoxel mit der linken Maustaste in einer MPR-Ansicht radieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="40"/>
+        <source> Radius </source>
+        <translation> Radius </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="47"/>
+        <source>Apply Edits</source>
+        <translation>Änderungen übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="48"/>
+        <source>Discard Edits</source>
+        <translation>Änderungen verwerfen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="49"/>
+        <source>Add the edited label to the study as a new artifact (the original stays)</source>
+        <translation>Das bearbeitete Label als neues Artefakt zur Studie hinzufügen (das Original bleibt)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="72"/>
+        <source>Label edits: %1 voxels painted, %2 erased</source>
+        <translation>Label-Änderungen: %1 Voxel gemalt, %2 radiert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="94"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="212"/>
         <source>The study has no vessel label: segment the vessels first.</source>
         <translation>Die Studie enthält keine Gefäßmaske: zuerst die Gefäße segmentieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="229"/>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="94"/>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="104"/>
+        <source>Edit label</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="150"/>
+        <source>Apply label edits</source>
+        <translation>Label-Änderungen übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="165"/>
+        <source>Vessel surface</source>
+        <translation>Gefäßoberfläche</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="252"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="230"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="146"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="253"/>
         <source>Centerlines</source>
         <translation>Mittellinien</translation>
     </message>
