@@ -26,7 +26,7 @@
     <message>
         <location filename="../app/gui/LabelEditSession.cpp" line="13"/>
         <source>Paint label</source>
-        <translation type="unfinished"></translation>
+        <translation>Label malen</translation>
     </message>
     <message>
         <location filename="../app/gui/LabelEditSession.cpp" line="13"/>
@@ -529,7 +529,7 @@
     <message>
         <location filename="../app/gui/MainWindowVessels.cpp" line="137"/>
         <source>&amp;Edit Label (Brush)</source>
-        <translation type="unfinished"></translation>
+        <translation>Label &amp;bearbeiten (Pinsel)</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowVessels.cpp" line="138"/>
@@ -568,7 +568,7 @@
     <message>
         <location filename="../app/gui/MainWindowLabelEditing.cpp" line="28"/>
         <source>Label Editing</source>
-        <translation type="unfinished"></translation>
+        <translation>Label-Bearbeitung</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowLabelEditing.cpp" line="31"/>
@@ -625,7 +625,7 @@
         <location filename="../app/gui/MainWindowLabelEditing.cpp" line="94"/>
         <location filename="../app/gui/MainWindowLabelEditing.cpp" line="104"/>
         <source>Edit label</source>
-        <translation type="unfinished"></translation>
+        <translation>Label bearbeiten</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowLabelEditing.cpp" line="150"/>
