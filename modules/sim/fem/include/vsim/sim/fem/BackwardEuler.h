@@ -1,0 +1,55 @@
+#pragma once
+
+// Implicit (backward) Euler for the co-rotational model with Rayleigh damping C = alpha M + beta K (thesis
+// ch. 4.4; Baraff & Witkin 1998 linearised form): with the rotations of the step's start,
+//   [(1 + h alpha) M + (h beta + h^2) K] dv = h (f_elastic + f_external - alpha M v) - h (beta + h) K v,
+//   v += dv, x += h v,
+// solved by block-Jacobi PCG warm-started from the last step's dv. Constrained components keep dv = 0.
+
+#include "vsim/sim/fem/BlockSparseMatrix.h"
+#include "vsim/sim/fem/CorotationalFem.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+struct BackwardEulerSettings
+{
+    double timeStep = 1e-3;      ///< s
+    double rayleighAlpha = 0.0;  ///< 1/s (thesis: 0)
+    double rayleighBeta = 0.22;  ///< s (thesis: 0.22 s)
+    double cgTolerance = 1e-6;   ///< relative residual
+    int cgMaxIterations = 100;
+};
+
+struct StepReport
+{
+    int cgIterations = 0;
+    double cgResidual = 0.0;
+    bool cgConverged = false;
+    std::size_t invertedElements = 0;
+};
+
+class BackwardEuler
+{
+public:
+    BackwardEuler(const CorotationalFem& model, BackwardEulerSettings settings);
+
+    const BackwardEulerSettings& settings() const { return m_settings; }
+    /// One step of the model under `externalForces` (N, 3 per node; empty: none) with the components marked
+    /// in `constrained` held (their velocity stays as it is, normally 0). Updates positions and velocities.
+    StepReport step(CorotationalFem& model, const Eigen::VectorXd& externalForces,
+                    const std::vector<std::uint8_t>& constrained);
+    /// The system matrix of the last step (for the GPU parity tests and benchmarks).
+    const BlockSparseMatrix& systemMatrix() const { return m_system; }
+
+private:
+    BackwardEulerSettings m_settings;
+    BlockSparseMatrix m_system;
+    Eigen::VectorXd m_lastDeltaV;
+};
+
+} // namespace vsim::sim::fem

@@ -1,0 +1,82 @@
+#pragma once
+
+// The co-rotational linear FEM model of the vessel wall (thesis ch. 4.3-4.5; Mueller & Gross 2004, "Interactive
+// virtual materials"): per element the rotation R of the deformation gradient (polar decomposition), the elastic
+// force f_e = -R K_e (R^T x_e - X_e) and the stiffness R K_e R^T, lumped (diagonal) mass (thesis eq. 4.12: a
+// quarter of each element's mass on each node). State and parameters in SI: positions in m, forces in N.
+// Time integration is separate (BackwardEuler.h).
+
+#include "vsim/sim/fem/BlockSparseMatrix.h"
+#include "vsim/sim/fem/ElasticMaterial.h"
+#include "vsim/sim/fem/TetElement.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+/// Stresses per element (Pa), Cauchy stress of the linear law in the element's rotated frame.
+struct ElementStresses
+{
+    std::vector<double> vonMises;
+    std::vector<double> maxPrincipal;
+    std::vector<Eigen::Matrix3d> tensors; ///< in the patient frame (rotated back)
+};
+
+class CorotationalFem
+{
+public:
+    /// Rest positions (m) and elements (positively oriented). Throws vsim::Error for a bad material, an index
+    /// out of range, or a degenerate or inverted element (naming it).
+    CorotationalFem(std::vector<Eigen::Vector3d> restPositions, std::vector<std::array<int, 4>> tets,
+                    const ElasticMaterial& material);
+
+    std::size_t nodeCount() const { return m_rest.size(); }
+    std::size_t elementCount() const { return m_tets.size(); }
+    const std::vector<std::array<int, 4>>& tets() const { return m_tets; }
+    const std::vector<Eigen::Vector3d>& restPositions() const { return m_rest; }
+    const ElasticMaterial& material() const { return m_material; }
+    const std::vector<TetRest>& elements() const { return m_elements; }
+
+    /// Current positions and velocities, 3 entries per node (m, m/s).
+    Eigen::VectorXd& positions() { return m_positions; }
+    const Eigen::VectorXd& positions() const { return m_positions; }
+    Eigen::VectorXd& velocities() { return m_velocities; }
+    const Eigen::VectorXd& velocities() const { return m_velocities; }
+    /// Lumped mass per degree of freedom (kg), 3 equal entries per node.
+    const Eigen::VectorXd& lumpedMass() const { return m_mass; }
+
+    /// Re-extracts every element's rotation from the current positions (warm-started). Returns the number of
+    /// inverted elements (det F <= 0), whose rotation is left as it was.
+    std::size_t updateRotations();
+    /// Elastic forces (N) at the current positions with the current rotations.
+    Eigen::VectorXd elasticForces() const;
+    /// Writes c_mass M + c_stiffness R K R^T into `matrix` (which must have this mesh's pattern).
+    void assemble(BlockSparseMatrix& matrix, double massFactor, double stiffnessFactor) const;
+    /// The pattern of this mesh's matrices.
+    BlockSparseMatrix makeMatrix() const { return BlockSparseMatrix(nodeCount(), m_tets); }
+    /// Elastic energy 1/2 sum_e u_e^T K_e u_e with u_e = R^T x_e - X_e (J).
+    double elasticEnergy() const;
+    /// Kinetic energy 1/2 v^T M v (J).
+    double kineticEnergy() const;
+    ElementStresses elementStresses() const;
+    /// The rotation of element `tet`.
+    Eigen::Matrix3d rotation(std::size_t tet) const { return m_rotations[tet].toRotationMatrix(); }
+
+private:
+    Vector12d corotatedDisplacement(std::size_t tet, const Eigen::Matrix3d& rotation) const;
+
+    std::vector<Eigen::Vector3d> m_rest;
+    std::vector<std::array<int, 4>> m_tets;
+    ElasticMaterial m_material;
+    std::vector<TetRest> m_elements;
+    std::vector<Eigen::Quaterniond> m_rotations;
+    Eigen::VectorXd m_positions;
+    Eigen::VectorXd m_velocities;
+    Eigen::VectorXd m_mass;
+};
+
+} // namespace vsim::sim::fem

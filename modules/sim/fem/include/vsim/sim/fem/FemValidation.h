@@ -1,0 +1,42 @@
+#pragma once
+
+// The analytic validation cases of the wall solver, shared by its tests and `vascusim-cli validate <case>`:
+//  fem-patch       constant-strain patch test: a linear displacement on the boundary is reproduced inside (1e-8)
+//  fem-rotation    a 90-degree rigid rotation produces no elastic force (co-rotation)
+//  fem-cantilever  tip deflection of a clamped beam within 3 % of Timoshenko beam theory
+//  fem-lame        thick-walled cylinder under internal pressure (plane strain, nu = 0.45): radial displacement
+//                  within 2 %, hoop stress within 5 % of Lame's solution
+//  fem-damping     with Rayleigh damping and no load the total energy decays monotonically
+
+#include "vsim/core/Progress.h"
+
+#include <string>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+struct ValidationFigure
+{
+    std::string name;
+    double measured = 0.0;
+    double expected = 0.0;
+    double tolerance = 0.0; ///< allowed |measured - expected| (absolute, in the figure's unit)
+    std::string unit;
+    bool passed() const;
+};
+
+struct ValidationResult
+{
+    std::string name;
+    std::string description; ///< what is compared with what
+    std::vector<ValidationFigure> figures;
+    double seconds = 0.0;
+    bool passed() const;
+};
+
+/// The case names above, in order.
+std::vector<std::string> femValidationCases();
+/// Runs one case. Throws vsim::Error for an unknown name (listing the known ones).
+ValidationResult runFemValidation(const std::string& name, const Progress& progress = {});
+
+} // namespace vsim::sim::fem

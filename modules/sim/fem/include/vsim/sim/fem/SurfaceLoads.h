@@ -1,0 +1,26 @@
+#pragma once
+
+// Loads on the wall model (SI): the boundary faces of a tetrahedral mesh, a pressure acting on a set of them
+// (a follower load: it acts along the current normals), and gravity on the lumped masses.
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+/// Faces that belong to one element only, ordered so that their normal (p1-p0) x (p2-p0) points out of the
+/// solid (the elements must be positively oriented, as CorotationalFem requires).
+std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets);
+
+/// Adds the nodal forces (N) of a uniform pressure `pressurePa` on `faces` at the current `positions` (m, 3 per
+/// node) to `forces`: -p A n / 3 per corner, with n the face's outward unit normal (a positive pressure pushes
+/// into the solid, as blood pressure on the lumen side of the wall does).
+void addPressureForces(const std::vector<std::array<int, 3>>& faces, const Eigen::VectorXd& positions,
+                       double pressurePa, Eigen::VectorXd& forces);
+
+/// Adds m g to `forces` for lumped masses `mass` (kg per component) and gravity `gravity` (m/s^2).
+void addGravityForces(const Eigen::VectorXd& mass, const Eigen::Vector3d& gravity, Eigen::VectorXd& forces);
+
+} // namespace vsim::sim::fem

@@ -1,0 +1,113 @@
+// Building blocks of the wall solver: the element stiffness is symmetric with the six rigid-body modes in its null
+// space, lumped masses add up to rho V, the rotation extraction recovers a known rotation, boundary faces of a box
+// are its 2 x 6 x n^2 outward triangles, a pressure on a closed surface sums to zero force, and bad input is refused.
+
+#include "vsim/core/Error.h"
+#include "vsim/sim/fem/CorotationalFem.h"
+#include "vsim/sim/fem/RotationExtraction.h"
+#include "vsim/sim/fem/StructuredMeshes.h"
+#include "vsim/sim/fem/SurfaceLoads.h"
+
+#include <Eigen/Eigenvalues>
+#include <QtTest>
+
+#include <random>
+
+using namespace vsim;
+using namespace vsim::sim::fem;
+
+class FemModel : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void elementStiffnessHasRigidModes()
+    {
+        const std::array<Eigen::Vector3d, 4> corners{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.01, 0.001, 0),
+                                                     Eigen::Vector3d(0.002, 0.012, 0.001), Eigen::Vector3d(0.001, 0.002, 0.009)};
+        const TetRest rest = restTetrahedron(corners, ElasticMaterial{});
+        QVERIFY((rest.stiffness - rest.stiffness.transpose()).norm() <= 1e-9 * rest.stiffness.norm());
+        const Eigen::SelfAdjointEigenSolver<Matrix12d> eigen(rest.stiffness);
+        const auto values = eigen.eigenvalues();
+        for (int i = 0; i < 6; ++i)
+            QVERIFY(std::abs(values[i]) <= 1e-9 * values[11]); // 3 translations + 3 rotations
+        QVERIFY(values[6] > 1e-6 * values[11]);
+        QCOMPARE(rest.volume, Eigen::Matrix3d((Eigen::Matrix3d() << corners[1] - corners[0], corners[2] - corners[0],
+                                                corners[3] - corners[0]).finished()).determinant() / 6.0);
+    }
+
+    void lumpedMassAddsUp()
+    {
+        const StructuredTetMesh mesh = boxTetMesh(Eigen::Vector3d(0.02, 0.03, 0.01), {3, 4, 2});
+        ElasticMaterial material;
+        const CorotationalFem model(mesh.points, mesh.tets, material);
+        QCOMPARE(model.elementCount(), std::size_t(6 * 24));
+        const double total = model.lumpedMass().sum() / 3.0;
+        QVERIFY(std::abs(total - material.densityKgPerM3 * 0.02 * 0.03 * 0.01) < 1e-12);
+    }
+
+    void rotationExtractionRecoversAKnownRotation()
+    {
+        std::mt19937 random(5);
+        std::normal_distribution<double> normal;
+        for (int trial = 0; trial < 20; ++trial)
+        {
+            const Eigen::Quaterniond truth = Eigen::Quaterniond(normal(random), normal(random), normal(random), normal(random)).normalized();
+            Eigen::Matrix3d stretch = Eigen::Matrix3d::Identity();
+            stretch(0, 0) = 1.3, stretch(1, 1) = 0.8, stretch(0, 1) = stretch(1, 0) = 0.1; // symmetric positive
+            Eigen::Quaterniond estimate = Eigen::Quaterniond::Identity();
+            extractRotation(truth.toRotationMatrix() * stretch, estimate, 100);
+            QVERIFY2((estimate.toRotationMatrix() - truth.toRotationMatrix()).norm() < 1e-9, qPrintable(QString::number(trial)));
+        }
+    }
+
+    void boundaryFacesPointOutAndPressureBalances()
+    {
+        const StructuredTetMesh mesh = boxTetMesh(Eigen::Vector3d(1.0, 1.0, 1.0), {3, 3, 3});
+        const auto faces = boundaryFaces(mesh.tets);
+        QCOMPARE(faces.size(), std::size_t(2 * 6 * 9));
+        Eigen::VectorXd positions(Eigen::Index(3 * mesh.points.size()));
+        for (std::size_t n = 0; n < mesh.points.size(); ++n)
+            positions.segment<3>(Eigen::Index(3 * n)) = mesh.points[n];
+        for (const auto& face : faces)
+        {
+            const Eigen::Vector3d p0 = mesh.points[std::size_t(face[0])];
+            const Eigen::Vector3d normal = (mesh.points[std::size_t(face[1])] - p0).cross(mesh.points[std::size_t(face[2])] - p0);
+            const Eigen::Vector3d centre = (p0 + mesh.points[std::size_t(face[1])] + mesh.points[std::size_t(face[2])]) / 3.0;
+            QVERIFY(normal.dot(centre - Eigen::Vector3d(0.5, 0.5, 0.5)) > 0.0);
+        }
+        // 1 kPa on the closed surface: no net force, and the force on the face x = 1 is -1 kN along x.
+        Eigen::VectorXd forces = Eigen::VectorXd::Zero(positions.size());
+        addPressureForces(faces, positions, 1e3, forces);
+        Eigen::Vector3d net = Eigen::Vector3d::Zero(), onRight = Eigen::Vector3d::Zero();
+        for (std::size_t n = 0; n < mesh.points.size(); ++n)
+            net += forces.segment<3>(Eigen::Index(3 * n));
+        QVERIFY(net.norm() < 1e-9);
+        std::vector<std::array<int, 3>> right;
+        for (const auto& face : faces)
+            if (mesh.points[std::size_t(face[0])].x() > 0.999 && mesh.points[std::size_t(face[1])].x() > 0.999 &&
+                mesh.points[std::size_t(face[2])].x() > 0.999)
+                right.push_back(face);
+        forces.setZero();
+        addPressureForces(right, positions, 1e3, forces);
+        for (std::size_t n = 0; n < mesh.points.size(); ++n)
+            onRight += forces.segment<3>(Eigen::Index(3 * n));
+        QVERIFY((onRight - Eigen::Vector3d(-1e3, 0, 0)).norm() < 1e-9);
+    }
+
+    void badInputIsRefused()
+    {
+        StructuredTetMesh mesh = boxTetMesh(Eigen::Vector3d(1.0, 1.0, 1.0), {1, 1, 1});
+        ElasticMaterial bad;
+        bad.poissonRatio = 0.5;
+        QVERIFY_THROWS_EXCEPTION(Error, CorotationalFem(mesh.points, mesh.tets, bad));
+        std::swap(mesh.tets[0][1], mesh.tets[0][2]); // inverted
+        QVERIFY_THROWS_EXCEPTION(Error, CorotationalFem(mesh.points, mesh.tets, ElasticMaterial{}));
+        mesh = boxTetMesh(Eigen::Vector3d(1.0, 1.0, 1.0), {1, 1, 1});
+        mesh.tets[2][3] = 99;
+        QVERIFY_THROWS_EXCEPTION(Error, CorotationalFem(mesh.points, mesh.tets, ElasticMaterial{}));
+    }
+};
+
+QTEST_GUILESS_MAIN(FemModel)
+#include "tst_fem_model.moc"
