@@ -3,6 +3,7 @@
 // what was wrong), 2 usage, 130 cancelled (Ctrl-C).
 
 #include "CliCommands.h"
+#include "ValidateCommand.h"
 #include "vsim/core/Error.h"
 
 #include <csignal>
@@ -45,6 +46,9 @@ commands:
                                              edge, or of one path between two skeleton nodes
   measure --study <study.vsim> [--centerlines ID] [--json FILE]
                                              cross-sections, lengths, radii, maximum diameter, stenosis
+  validate <fem-patch|fem-rotation|fem-cantilever|fem-lame|fem-damping|all>
+                                             analytic validation of the wall solver (JSON); exit 0 only when
+                                             every figure is within its tolerance
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -95,6 +99,8 @@ int main(int argc, char** argv)
             return vsim::cli::measureStudy(arguments, progress);
         if (command == "phantom")
             return vsim::cli::writePhantomSeries(arguments, progress);
+        if (command == "validate")
+            return vsim::cli::validateSolvers(arguments, progress);
         if (command == "demo-study")
             return vsim::cli::writeDemoStudy(arguments, progress);
         std::cerr << "unknown command '" << command << "'\n" << kUsage;

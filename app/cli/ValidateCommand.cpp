@@ -1,0 +1,54 @@
+#include "ValidateCommand.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/sim/fem/FemValidation.h"
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+
+namespace vsim::cli {
+
+int validateSolvers(const Arguments& arguments, const Progress& progress)
+{
+    if (arguments.positional.size() != 1)
+        throw Error("validate needs one case name or 'all'");
+    const std::string requested = arguments.positional.front();
+    const std::vector<std::string> names =
+        requested == "all" ? sim::fem::femValidationCases() : std::vector<std::string>{requested};
+    std::vector<std::string> failures;
+    for (std::size_t i = 0; i < names.size(); ++i)
+    {
+        const sim::fem::ValidationResult result =
+            sim::fem::runFemValidation(names[i], progress.subRange(double(i) / names.size(), double(i + 1) / names.size()));
+        nlohmann::json figures = nlohmann::json::array();
+        for (const sim::fem::ValidationFigure& figure : result.figures)
+        {
+            figures.push_back({{"name", figure.name},
+                               {"measured", figure.measured},
+                               {"expected", figure.expected},
+                               {"tolerance", figure.tolerance},
+                               {"unit", figure.unit},
+                               {"passed", figure.passed()}});
+            if (!figure.passed())
+                failures.push_back(result.name + ": " + figure.name);
+        }
+        std::cout << nlohmann::json{{"case", result.name},
+                                    {"description", result.description},
+                                    {"seconds", result.seconds},
+                                    {"passed", result.passed()},
+                                    {"figures", figures}}
+                         .dump(2)
+                  << "\n";
+    }
+    if (!failures.empty())
+    {
+        std::string list;
+        for (const std::string& failure : failures)
+            list += (list.empty() ? "" : "; ") + failure;
+        throw Error("out of tolerance: " + list);
+    }
+    return 0;
+}
+
+} // namespace vsim::cli
