@@ -17,7 +17,7 @@ StepReport BackwardEuler::step(CorotationalFem& model, const Eigen::VectorXd& ex
 {
     StepReport report;
     const double h = m_settings.timeStep, alpha = m_settings.rayleighAlpha, beta = m_settings.rayleighBeta;
-    report.invertedElements = model.updateRotations();
+    report.invertedElements = model.updateElements();
     const double massFactor = 1.0 + h * alpha, stiffnessFactor = h * beta + h * h;
     model.assemble(m_system, massFactor, stiffnessFactor);
 

@@ -7,83 +7,95 @@
 #include <cmath>
 
 namespace vsim::sim::fem {
-namespace {
-
-void filter(Eigen::VectorXd& v, const std::vector<std::uint8_t>& constrained)
-{
-    if (constrained.empty())
-        return;
-    for (Eigen::Index i = 0; i < v.size(); ++i)
-        if (constrained[std::size_t(i)])
-            v[i] = 0.0;
-}
-
-double dot(const Eigen::VectorXd& a, const Eigen::VectorXd& b)
-{
-    double sum = 0.0;
-#pragma omp parallel for reduction(+ : sum) schedule(static)
-    for (Eigen::Index i = 0; i < a.size(); ++i)
-        sum += a[i] * b[i];
-    return sum;
-}
-
-} // namespace
 
 ConjugateGradientResult solveConjugateGradient(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                                const std::vector<std::uint8_t>& constrained, double tolerance,
                                                int maxIterations)
 {
-    const Eigen::Index n = Eigen::Index(3 * a.nodeCount());
+    const std::size_t nodes = a.nodeCount();
+    const Eigen::Index n = Eigen::Index(3 * nodes);
     if (b.size() != n || x.size() != n || (!constrained.empty() && constrained.size() != std::size_t(n)))
         throw Error("conjugate gradients: the matrix, right-hand side, guess and constraints differ in size");
-    std::vector<Eigen::Matrix3d> inverseDiagonal(a.nodeCount());
-    for (std::size_t node = 0; node < a.nodeCount(); ++node)
+    // The filter as a 0/1 mask per component, folded into the preconditioner and the mat-vec.
+    Eigen::VectorXd free = Eigen::VectorXd::Ones(n);
+    for (std::size_t i = 0; i < constrained.size(); ++i)
+        if (constrained[i])
+            free[Eigen::Index(i)] = 0.0;
+    std::vector<Eigen::Matrix3d> inverseDiagonal(nodes);
+    for (std::size_t node = 0; node < nodes; ++node)
     {
         const Eigen::Matrix3d& d = a.diagonal(node);
-        inverseDiagonal[node] = std::abs(d.determinant()) > 0.0 ? Eigen::Matrix3d(d.inverse()) : Eigen::Matrix3d::Identity();
+        const Eigen::Matrix3d inverse = std::abs(d.determinant()) > 0.0 ? Eigen::Matrix3d(d.inverse()) : Eigen::Matrix3d::Identity();
+        const Eigen::Vector3d mask = free.segment<3>(Eigen::Index(3 * node));
+        inverseDiagonal[node] = mask.asDiagonal() * inverse * mask.asDiagonal();
     }
-    auto precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-        z.resize(n);
-#pragma omp parallel for schedule(static)
-        for (std::ptrdiff_t node = 0; node < std::ptrdiff_t(a.nodeCount()); ++node)
-            z.segment<3>(3 * node) = inverseDiagonal[std::size_t(node)] * r.segment<3>(3 * node);
-        filter(z, constrained);
+    const std::uint32_t* rowStart = a.rowStart().data();
+    const std::uint32_t* columns = a.columns().data();
+    const Eigen::Matrix3d* blocks = a.blocks().data();
+    auto row = [&](const Eigen::VectorXd& v, std::ptrdiff_t node) {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        for (std::uint32_t s = rowStart[node]; s < rowStart[node + 1]; ++s)
+            sum.noalias() += blocks[s] * v.segment<3>(Eigen::Index(3 * columns[s]));
+        return Eigen::Vector3d(free.segment<3>(3 * node).cwiseProduct(sum));
     };
 
     ConjugateGradientResult result;
-    Eigen::VectorXd filteredB = b;
-    filter(filteredB, constrained);
-    const double bNorm = std::sqrt(dot(filteredB, filteredB));
     Eigen::VectorXd r(n), z(n), p(n), q(n);
-    a.multiply(x, q);
-    r = b - q;
-    filter(r, constrained);
+    double bb = 0.0, rr = 0.0, rz = 0.0;
+#pragma omp parallel for reduction(+ : bb, rr, rz) schedule(static)
+    for (std::ptrdiff_t node = 0; node < std::ptrdiff_t(nodes); ++node)
+    {
+        const Eigen::Vector3d bFree = free.segment<3>(3 * node).cwiseProduct(b.segment<3>(3 * node));
+        const Eigen::Vector3d residual = bFree - row(x, node);
+        const Eigen::Vector3d preconditioned = inverseDiagonal[std::size_t(node)] * residual;
+        r.segment<3>(3 * node) = residual;
+        z.segment<3>(3 * node) = preconditioned;
+        p.segment<3>(3 * node) = preconditioned;
+        bb += bFree.squaredNorm();
+        rr += residual.squaredNorm();
+        rz += residual.dot(preconditioned);
+    }
     // Relative to |S b|; when only prescribed values drive the free ones (b = 0 there), to the first residual.
-    const double reference = bNorm > 0.0 ? bNorm : std::sqrt(dot(r, r));
+    const double reference = bb > 0.0 ? std::sqrt(bb) : std::sqrt(rr);
     if (reference == 0.0)
     {
         result.converged = true;
         return result;
     }
-    precondition(r, z);
-    p = z;
-    double rz = dot(r, z);
-    double residual = std::sqrt(dot(r, r)) / reference;
+    double residual = std::sqrt(rr) / reference;
+    // Three fused sweeps per iteration: q = S A p with p.q; x, r, z updates with r.z and r.r; the new direction.
     while (residual > tolerance && result.iterations < maxIterations)
     {
-        a.multiply(p, q);
-        filter(q, constrained);
-        const double pq = dot(p, q);
+        double pq = 0.0;
+#pragma omp parallel for reduction(+ : pq) schedule(static)
+        for (std::ptrdiff_t node = 0; node < std::ptrdiff_t(nodes); ++node)
+        {
+            const Eigen::Vector3d qNode = row(p, node);
+            q.segment<3>(3 * node) = qNode;
+            pq += p.segment<3>(3 * node).dot(qNode);
+        }
         if (!(pq > 0.0))
             break; // not positive definite along p (or NaN): the caller's guard reports it
         const double alpha = rz / pq;
-        x += alpha * p;
-        r -= alpha * q;
-        precondition(r, z);
-        const double rzNext = dot(r, z);
-        p = z + (rzNext / rz) * p;
+        double rzNext = 0.0;
+        rr = 0.0;
+#pragma omp parallel for reduction(+ : rzNext, rr) schedule(static)
+        for (std::ptrdiff_t node = 0; node < std::ptrdiff_t(nodes); ++node)
+        {
+            x.segment<3>(3 * node) += alpha * p.segment<3>(3 * node);
+            const Eigen::Vector3d rNode = r.segment<3>(3 * node) - alpha * q.segment<3>(3 * node);
+            const Eigen::Vector3d zNode = inverseDiagonal[std::size_t(node)] * rNode;
+            r.segment<3>(3 * node) = rNode;
+            z.segment<3>(3 * node) = zNode;
+            rzNext += rNode.dot(zNode);
+            rr += rNode.squaredNorm();
+        }
+        const double beta = rzNext / rz;
         rz = rzNext;
-        residual = std::sqrt(dot(r, r)) / reference;
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i)
+            p[i] = z[i] + beta * p[i];
+        residual = std::sqrt(rr) / reference;
         ++result.iterations;
     }
     result.relativeResidual = residual;

@@ -9,6 +9,22 @@
 #include <string>
 
 namespace vsim::sim::fem {
+namespace {
+
+/// Where block (a, b) of an element's 4 x 4 blocks is stored among its 10 distinct ones, and whether transposed.
+struct StoredBlock
+{
+    int index;
+    bool transposed;
+};
+constexpr int kUpperIndex[4][4] = {{-1, 4, 5, 6}, {4, -1, 7, 8}, {5, 7, -1, 9}, {6, 8, 9, -1}};
+
+constexpr StoredBlock storedBlock(int a, int b)
+{
+    return a == b ? StoredBlock{a, false} : StoredBlock{kUpperIndex[a][b], a > b};
+}
+
+} // namespace
 
 CorotationalFem::CorotationalFem(std::vector<Eigen::Vector3d> restPositions, std::vector<std::array<int, 4>> tets,
                                  const ElasticMaterial& material)
@@ -43,30 +59,74 @@ CorotationalFem::CorotationalFem(std::vector<Eigen::Vector3d> restPositions, std
             m_mass.segment<3>(3 * node).array() += quarter;
     }
     m_rotations.assign(m_tets.size(), Eigen::Quaterniond::Identity());
+    m_rotatedBlocks.resize(m_tets.size());
+    m_elementForces.assign(m_tets.size(), Vector12d::Zero());
+    m_pattern = BlockSparseMatrix(m_rest.size(), m_tets);
+    // Gather lists: counting sort of the element entries by matrix block and by node.
+    m_blockEntryStart.assign(m_pattern.blockCount() + 1, 0);
+    m_nodeEntryStart.assign(m_rest.size() + 1, 0);
+    for (std::size_t t = 0; t < m_tets.size(); ++t)
+        for (int a = 0; a < 4; ++a)
+        {
+            ++m_nodeEntryStart[std::size_t(m_tets[t][std::size_t(a)]) + 1];
+            for (int b = 0; b < 4; ++b)
+                ++m_blockEntryStart[m_pattern.slot(t, a, b) + 1];
+        }
+    for (std::size_t s = 0; s < m_pattern.blockCount(); ++s)
+        m_blockEntryStart[s + 1] += m_blockEntryStart[s];
+    for (std::size_t n = 0; n < m_rest.size(); ++n)
+        m_nodeEntryStart[n + 1] += m_nodeEntryStart[n];
+    m_blockEntries.resize(m_blockEntryStart.back());
+    m_nodeEntries.resize(m_nodeEntryStart.back());
+    std::vector<std::uint32_t> blockFill(m_blockEntryStart.begin(), m_blockEntryStart.end() - 1);
+    std::vector<std::uint32_t> nodeFill(m_nodeEntryStart.begin(), m_nodeEntryStart.end() - 1);
+    for (std::size_t t = 0; t < m_tets.size(); ++t)
+        for (int a = 0; a < 4; ++a)
+        {
+            m_nodeEntries[nodeFill[std::size_t(m_tets[t][std::size_t(a)])]++] = std::uint32_t(4 * t + std::size_t(a));
+            for (int b = 0; b < 4; ++b)
+                m_blockEntries[blockFill[m_pattern.slot(t, a, b)]++] = std::uint32_t(16 * t + std::size_t(4 * a + b));
+        }
     m_positions.resize(Eigen::Index(3 * m_rest.size()));
     for (std::size_t n = 0; n < m_rest.size(); ++n)
         m_positions.segment<3>(Eigen::Index(3 * n)) = m_rest[n];
     m_velocities = Eigen::VectorXd::Zero(m_positions.size());
 }
 
-std::size_t CorotationalFem::updateRotations()
+std::size_t CorotationalFem::updateElements()
 {
     std::size_t inverted = 0;
 #pragma omp parallel for reduction(+ : inverted) schedule(static)
     for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
     {
-        const auto& tet = m_tets[std::size_t(t)];
+        const std::size_t e = std::size_t(t);
+        const auto& tet = m_tets[e];
         const Eigen::Vector3d x0 = m_positions.segment<3>(3 * tet[0]);
         Eigen::Matrix3d edges;
         edges << m_positions.segment<3>(3 * tet[1]) - x0, m_positions.segment<3>(3 * tet[2]) - x0,
             m_positions.segment<3>(3 * tet[3]) - x0;
-        const Eigen::Matrix3d deformation = edges * m_elements[std::size_t(t)].restEdgesInverse;
+        const Eigen::Matrix3d deformation = edges * m_elements[e].restEdgesInverse;
         if (deformation.determinant() <= 0.0)
-        {
             ++inverted;
-            continue;
+        else
+            extractRotation(deformation, m_rotations[e]);
+        const Eigen::Matrix3d r = m_rotations[e].toRotationMatrix();
+        const Matrix12d& k = m_elements[e].stiffness;
+        const Vector12d f = k * corotatedDisplacement(e, r);
+        std::array<Eigen::Matrix3d, 10>& blocks = m_rotatedBlocks[e];
+        for (int a = 0; a < 4; ++a)
+            blocks[std::size_t(a)].setZero();
+        for (int a = 0; a < 4; ++a)
+        {
+            m_elementForces[e].segment<3>(3 * a).noalias() = -(r * f.segment<3>(3 * a));
+            for (int b = a + 1; b < 4; ++b)
+            {
+                Eigen::Matrix3d& block = blocks[std::size_t(kUpperIndex[a][b])];
+                block.noalias() = r * (k.block<3, 3>(3 * a, 3 * b) * r.transpose());
+                blocks[std::size_t(a)] -= block;
+                blocks[std::size_t(b)] -= block.transpose();
+            }
         }
-        extractRotation(deformation, m_rotations[std::size_t(t)]);
     }
     return inverted;
 }
@@ -84,46 +144,38 @@ Vector12d CorotationalFem::corotatedDisplacement(std::size_t t, const Eigen::Mat
 
 Eigen::VectorXd CorotationalFem::elasticForces() const
 {
-    Eigen::VectorXd forces = Eigen::VectorXd::Zero(m_positions.size());
-    // Scatter per node would race: compute per element, then add serially (cheap next to the element pass).
-    std::vector<Vector12d> elementForces(m_tets.size());
+    Eigen::VectorXd forces(m_positions.size());
 #pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
+    for (std::ptrdiff_t n = 0; n < std::ptrdiff_t(m_rest.size()); ++n)
     {
-        const Eigen::Matrix3d r = m_rotations[std::size_t(t)].toRotationMatrix();
-        const Vector12d f = m_elements[std::size_t(t)].stiffness * corotatedDisplacement(std::size_t(t), r);
-        Vector12d rotated;
-        for (int a = 0; a < 4; ++a)
-            rotated.segment<3>(3 * a) = -(r * f.segment<3>(3 * a));
-        elementForces[std::size_t(t)] = rotated;
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        for (std::uint32_t i = m_nodeEntryStart[std::size_t(n)]; i < m_nodeEntryStart[std::size_t(n) + 1]; ++i)
+            sum += m_elementForces[m_nodeEntries[i] / 4].segment<3>(3 * (m_nodeEntries[i] % 4));
+        forces.segment<3>(3 * n) = sum;
     }
-    for (std::size_t t = 0; t < m_tets.size(); ++t)
-        for (int a = 0; a < 4; ++a)
-            forces.segment<3>(3 * m_tets[t][std::size_t(a)]) += elementForces[t].segment<3>(3 * a);
     return forces;
 }
 
 void CorotationalFem::assemble(BlockSparseMatrix& matrix, double massFactor, double stiffnessFactor) const
 {
-    if (matrix.nodeCount() != nodeCount())
+    if (matrix.nodeCount() != nodeCount() || matrix.blockCount() != m_pattern.blockCount())
         throw Error("the matrix does not have this mesh's pattern");
-    matrix.setZero();
-    // Rotated element blocks in parallel, added serially through the precomputed slots.
-    std::vector<std::array<Eigen::Matrix3d, 16>> rotatedBlocks(m_tets.size());
 #pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
+    for (std::ptrdiff_t s = 0; s < std::ptrdiff_t(m_pattern.blockCount()); ++s)
     {
-        const Eigen::Matrix3d r = m_rotations[std::size_t(t)].toRotationMatrix();
-        const Matrix12d& k = m_elements[std::size_t(t)].stiffness;
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b)
-                rotatedBlocks[std::size_t(t)][std::size_t(4 * a + b)].noalias() =
-                    stiffnessFactor * (r * k.block<3, 3>(3 * a, 3 * b) * r.transpose());
+        Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+        for (std::uint32_t i = m_blockEntryStart[std::size_t(s)]; i < m_blockEntryStart[std::size_t(s) + 1]; ++i)
+        {
+            const std::uint32_t local = m_blockEntries[i] % 16;
+            const StoredBlock stored = storedBlock(int(local / 4), int(local % 4));
+            const Eigen::Matrix3d& block = m_rotatedBlocks[m_blockEntries[i] / 16][std::size_t(stored.index)];
+            if (stored.transposed)
+                sum += block.transpose();
+            else
+                sum += block;
+        }
+        matrix.block(std::uint32_t(s)) = stiffnessFactor * sum;
     }
-    for (std::size_t t = 0; t < m_tets.size(); ++t)
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b)
-                matrix.block(matrix.slot(t, a, b)) += rotatedBlocks[t][std::size_t(4 * a + b)];
     for (std::size_t n = 0; n < nodeCount(); ++n)
         matrix.diagonal(n).diagonal().array() += massFactor * m_mass[Eigen::Index(3 * n)];
 }

@@ -80,7 +80,7 @@ ValidationResult rotationTest(const Progress&)
     const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     for (std::size_t n = 0; n < model.nodeCount(); ++n)
         model.positions().segment<3>(Eigen::Index(3 * n)) = turn * mesh.points[n] + Eigen::Vector3d(0.3, -0.2, 0.1);
-    model.updateRotations();
+    model.updateElements();
     const double forceScale = model.material().youngModulusPa * 0.025 * 0.025;
     double largest = 0.0;
     const Eigen::VectorXd forces = model.elasticForces();

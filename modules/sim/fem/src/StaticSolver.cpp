@@ -31,7 +31,7 @@ StaticSolveReport solveStatic(CorotationalFem& model, const Eigen::VectorXd& ext
     double reference = freeNorm(external, constrained);
     for (; report.updates < maxUpdates; ++report.updates)
     {
-        if (const std::size_t inverted = model.updateRotations(); inverted > 0)
+        if (const std::size_t inverted = model.updateElements(); inverted > 0)
             throw Error(std::to_string(inverted) + " elements inverted during the static solve: the load is too large "
                                                    "for the mesh, or the constraints do not hold it");
         const Eigen::VectorXd residual = model.elasticForces() + external;

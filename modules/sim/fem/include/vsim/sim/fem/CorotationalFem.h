@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace vsim::sim::fem {
@@ -49,20 +50,27 @@ public:
     /// Lumped mass per degree of freedom (kg), 3 equal entries per node.
     const Eigen::VectorXd& lumpedMass() const { return m_mass; }
 
-    /// Re-extracts every element's rotation from the current positions (warm-started). Returns the number of
-    /// inverted elements (det F <= 0), whose rotation is left as it was.
-    std::size_t updateRotations();
-    /// Elastic forces (N) at the current positions with the current rotations.
+    /// The element pass, one parallel sweep: every element's rotation from the current positions (warm-started),
+    /// its elastic force -R K (R^T x - X) and its rotated stiffness blocks R K_ab R^T, kept for elasticForces()
+    /// and assemble(). Returns the number of inverted elements (det F <= 0), whose rotation is left as it was.
+    std::size_t updateElements();
+    /// Elastic forces (N) of the last element pass, gathered per node.
     Eigen::VectorXd elasticForces() const;
-    /// Writes c_mass M + c_stiffness R K R^T into `matrix` (which must have this mesh's pattern).
+    /// Writes c_mass M + c_stiffness R K R^T (the last element pass) into `matrix`, which must have this mesh's
+    /// pattern (makeMatrix()); gathered per matrix block, in parallel.
     void assemble(BlockSparseMatrix& matrix, double massFactor, double stiffnessFactor) const;
     /// The pattern of this mesh's matrices.
-    BlockSparseMatrix makeMatrix() const { return BlockSparseMatrix(nodeCount(), m_tets); }
+    BlockSparseMatrix makeMatrix() const { return m_pattern; }
     /// Elastic energy 1/2 sum_e u_e^T K_e u_e with u_e = R^T x_e - X_e (J).
     double elasticEnergy() const;
     /// Kinetic energy 1/2 v^T M v (J).
     double kineticEnergy() const;
     ElementStresses elementStresses() const;
+    /// Gather lists (see the members): for matrix block s, entries m_blockEntries[start[s] .. start[s + 1]).
+    const std::vector<std::uint32_t>& blockEntryStart() const { return m_blockEntryStart; }
+    const std::vector<std::uint32_t>& blockEntries() const { return m_blockEntries; }
+    const std::vector<std::uint32_t>& nodeEntryStart() const { return m_nodeEntryStart; }
+    const std::vector<std::uint32_t>& nodeEntries() const { return m_nodeEntries; }
     /// The rotation of element `tet`.
     Eigen::Matrix3d rotation(std::size_t tet) const { return m_rotations[tet].toRotationMatrix(); }
 
@@ -74,6 +82,16 @@ private:
     ElasticMaterial m_material;
     std::vector<TetRest> m_elements;
     std::vector<Eigen::Quaterniond> m_rotations;
+    // The last element pass, and where its pieces go: per matrix block and per node, the (element, local) entries
+    // that add up there (gathers instead of racing scatters; the CUDA backend uses the same lists).
+    // The 10 distinct rotated blocks of each element: the 4 diagonal (a, a), then the 6 above it (a < b); the
+    // blocks below are their transposes (K_e is symmetric) and each diagonal block is minus the sum of the
+    // others in its row (K_e annihilates translations), so only the 6 off-diagonal products are computed.
+    std::vector<std::array<Eigen::Matrix3d, 10>> m_rotatedBlocks;
+    std::vector<Vector12d> m_elementForces;
+    BlockSparseMatrix m_pattern;
+    std::vector<std::uint32_t> m_blockEntryStart, m_blockEntries; // entry = 16 * element + 4 * a + b
+    std::vector<std::uint32_t> m_nodeEntryStart, m_nodeEntries;   // entry = 4 * element + a
     Eigen::VectorXd m_positions;
     Eigen::VectorXd m_velocities;
     Eigen::VectorXd m_mass;
