@@ -112,7 +112,7 @@ std::size_t CorotationalFem::updateElements()
             extractRotation(deformation, m_rotations[e]);
         const Eigen::Matrix3d r = m_rotations[e].toRotationMatrix();
         const Matrix12d& k = m_elements[e].stiffness;
-        const Vector12d f = k * corotatedDisplacement(e, r);
+        const Vector12d f = k.lazyProduct(corotatedDisplacement(e, r)); // small fixed size: no GEMV kernel
         std::array<Eigen::Matrix3d, 10>& blocks = m_rotatedBlocks[e];
         for (int a = 0; a < 4; ++a)
             blocks[std::size_t(a)].setZero();

@@ -1,7 +1,6 @@
 #include "vsim/sim/fem/RotationExtraction.h"
 
-#include <Eigen/Cholesky>
-
+#include <algorithm>
 #include <cmath>
 
 namespace vsim::sim::fem {
@@ -18,10 +17,20 @@ void extractRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q, int maxIte
         // positive definite (far from the solution) take their step.
         const Eigen::Matrix3d m = a * r.transpose();
         const Eigen::Matrix3d hessian = m.trace() * Eigen::Matrix3d::Identity() - 0.5 * (m + m.transpose());
+        // Symmetric 3x3 solve by the adjugate: positive definite when every leading minor is positive.
+        const double h00 = hessian(0, 0), h01 = hessian(0, 1), h02 = hessian(0, 2), h11 = hessian(1, 1),
+                     h12 = hessian(1, 2), h22 = hessian(2, 2);
+        const double c00 = h11 * h22 - h12 * h12, c01 = h02 * h12 - h01 * h22, c02 = h01 * h12 - h02 * h11;
+        const double determinant = h00 * c00 + h01 * c01 + h02 * c02;
         Eigen::Vector3d omega;
-        const Eigen::LLT<Eigen::Matrix3d> newton(hessian);
-        if (newton.info() == Eigen::Success && hessian.diagonal().minCoeff() > 0.1 * m.trace())
-            omega = newton.solve(torque);
+        const double floor = 0.1 * std::abs(m.trace());
+        if (m.trace() > 0.0 && std::min({h00, h11, h22}) > floor && h00 * h11 - h01 * h01 > 0.0 && determinant > 0.0)
+        {
+            Eigen::Matrix3d adjugate;
+            adjugate << c00, c01, c02, c01, h00 * h22 - h02 * h02, h01 * h02 - h00 * h12, c02, h01 * h02 - h00 * h12,
+                h00 * h11 - h01 * h01;
+            omega = adjugate * torque / determinant;
+        }
         else
             omega = torque / (std::abs(m.trace()) + 1e-12);
         const double angle = omega.norm();
