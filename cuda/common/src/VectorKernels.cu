@@ -1,6 +1,6 @@
 #include "vsim/cuda_common/VectorKernels.h"
 
-#include "CudaCheck.h"
+#include "vsim/cuda_common/CudaCheck.h"
 
 namespace vsim::cuda {
 namespace {

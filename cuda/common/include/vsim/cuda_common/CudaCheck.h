@@ -1,5 +1,7 @@
 #pragma once
 
+// Include only from .cu files: it brings in the CUDA runtime header.
+
 #include "vsim/core/Error.h"
 
 #include <cuda_runtime.h>

@@ -1,0 +1,45 @@
+#pragma once
+
+// The CUDA backend of the wall solver: the same algorithm as sim::fem::BackwardEuler on the CPU (element pass
+// with the Newton-scaled rotation extraction, gather assembly of the 3x3-block matrix, block-Jacobi PCG with the
+// constraint filter, warm start), in double precision, with the whole implicit step (element pass, assembly,
+// pressure, right-hand side, up to cgMaxIterations PCG iterations that stop on the device when converged, update)
+// recorded once as a CUDA graph and replayed each step. No CUDA types in this header.
+
+#include "vsim/sim/fem/BackwardEuler.h"
+#include "vsim/sim/fem/CorotationalFem.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace vsim::cuda {
+
+class CudaBackwardEuler
+{
+public:
+    /// Copies the model (rest data, state, gather lists), the constraints and the faces the pressure acts on to
+    /// the GPU. Throws vsim::Error when there is no CUDA device or memory runs out.
+    CudaBackwardEuler(const sim::fem::CorotationalFem& model, const sim::fem::BackwardEulerSettings& settings,
+                      const std::vector<std::uint8_t>& constrained,
+                      const std::vector<std::array<int, 3>>& pressureFaces);
+    ~CudaBackwardEuler();
+    CudaBackwardEuler(const CudaBackwardEuler&) = delete;
+    CudaBackwardEuler& operator=(const CudaBackwardEuler&) = delete;
+
+    /// One implicit step under `pressurePa` on the pressure faces (a follower load, as addPressureForces).
+    sim::fem::StepReport step(double pressurePa);
+    /// Copies the positions and velocities (m, m/s; 3 per node) back.
+    void download(Eigen::VectorXd& positions, Eigen::VectorXd& velocities) const;
+    /// Bytes of GPU memory this solver holds.
+    std::size_t deviceBytes() const;
+
+private:
+    struct Device;
+    std::unique_ptr<Device> m_device;
+};
+
+} // namespace vsim::cuda
