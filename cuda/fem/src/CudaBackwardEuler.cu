@@ -49,7 +49,8 @@ struct CudaBackwardEuler::Device
     sim::fem::BackwardEulerSettings settings;
     std::size_t nodes = 0;
     Buffer<int> tets, faces;
-    Buffer<double> rest, restInverse, stiffness, mass, freeMask, quaternions, elementForces, elementBlocks, matrix;
+    Buffer<double> rest, restInverse, stiffness, mass, freeMask, quaternions, elementForces;
+    Buffer<fem::MatrixReal> elementBlocks, matrix;
     Buffer<std::uint32_t> rowStart, columns, diagonalSlot, blockEntryStart, blockEntries, nodeEntryStart, nodeEntries;
     Buffer<double> x, v, dv, force, external, av, rhs, inverseDiagonal, r, z, p, q;
     Buffer<fem::DeviceScalars> scalars;
@@ -187,7 +188,8 @@ CudaBackwardEuler::CudaBackwardEuler(const sim::fem::CorotationalFem& model, con
     d.bytes = 0;
     for (std::size_t n : {d.tets.count * 4, d.faces.count * 4, d.rest.count * 8, d.restInverse.count * 8, d.stiffness.count * 8,
                           d.mass.count * 8, d.freeMask.count * 8, d.quaternions.count * 8, d.elementForces.count * 8,
-                          d.elementBlocks.count * 8, d.matrix.count * 8, d.rowStart.count * 4, d.columns.count * 4,
+                          d.elementBlocks.count * sizeof(fem::MatrixReal), d.matrix.count * sizeof(fem::MatrixReal),
+                          d.rowStart.count * 4, d.columns.count * 4,
                           d.blockEntries.count * 4, d.nodeEntries.count * 4, d.inverseDiagonal.count * 8, 13 * 3 * d.nodes * 8})
         d.bytes += n;
     d.record();

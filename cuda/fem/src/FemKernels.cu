@@ -53,7 +53,7 @@ __device__ void rowProduct(const DeviceModel& m, const double* v, int node, int 
             const std::size_t stride = std::size_t(m.blocks);
             double b[9];
             for (int j = 0; j < 9; ++j)
-                b[j] = __ldg(m.matrix + j * stride + s); // read-only during the sweep
+                b[j] = double(__ldg(m.matrix + j * stride + s)); // read-only during the sweep
             const double x0 = x[0], x1 = x[1], x2 = x[2];
             out[0] += b[0] * x0 + b[1] * x1 + b[2] * x2;
             out[1] += b[3] * x0 + b[4] * x1 + b[5] * x2;
@@ -124,7 +124,7 @@ __global__ void elementKernel(DeviceModel m, const double* x, DeviceScalars* s)
             force(3 * a + i) = -(r(i, 0) * f[0] + r(i, 1) * f[1] + r(i, 2) * f[2]);
     }
     // Entry-major like K: entry j of element e at j * elements + e (coalesced writes).
-    auto blockEntry = [&](int block, int j) -> double& {
+    auto blockEntry = [&](int block, int j) -> MatrixReal& {
         return m.elementBlocks[std::size_t(9 * block + j) * elements + std::size_t(e)];
     };
     Mat3 diagonal[4];
@@ -143,14 +143,14 @@ __global__ void elementKernel(DeviceModel m, const double* x, DeviceScalars* s)
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 3; ++j)
                 {
-                    blockEntry(stored, 3 * i + j) = rotated(i, j);
+                    blockEntry(stored, 3 * i + j) = MatrixReal(rotated(i, j));
                     diagonal[a](i, j) -= rotated(i, j);
                     diagonal[b](i, j) -= rotated(j, i);
                 }
         }
     for (int a = 0; a < 4; ++a)
         for (int i = 0; i < 9; ++i)
-            blockEntry(a, i) = diagonal[a].m[i];
+            blockEntry(a, i) = MatrixReal(diagonal[a].m[i]);
 }
 
 __global__ void assembleKernel(DeviceModel m, double massFactor, double stiffnessFactor)
@@ -165,7 +165,7 @@ __global__ void assembleKernel(DeviceModel m, double massFactor, double stiffnes
         const int a = int(local / 4), b = int(local % 4);
         const int stored = a == b ? a : upperIndex(a, b);
         const std::size_t elements = std::size_t(m.elements);
-        auto block = [&](int j) { return __ldg(m.elementBlocks + std::size_t(9 * stored + j) * elements + element); };
+        auto block = [&](int j) { return double(__ldg(m.elementBlocks + std::size_t(9 * stored + j) * elements + element)); };
         if (a > b)
             for (int r = 0; r < 3; ++r)
                 for (int c = 0; c < 3; ++c)
@@ -175,7 +175,7 @@ __global__ void assembleKernel(DeviceModel m, double massFactor, double stiffnes
                 sum[j] += block(j);
     }
     for (int j = 0; j < 9; ++j)
-        m.matrix[std::size_t(j) * std::size_t(m.blocks) + std::size_t(slot)] = stiffnessFactor * sum[j];
+        m.matrix[std::size_t(j) * std::size_t(m.blocks) + std::size_t(slot)] = MatrixReal(stiffnessFactor * sum[j]);
 }
 
 __global__ void addMassKernel(DeviceModel m, double massFactor)
@@ -185,7 +185,8 @@ __global__ void addMassKernel(DeviceModel m, double massFactor)
         return;
     const std::size_t slot = m.diagonalSlot[node], stride = std::size_t(m.blocks);
     const double add = massFactor * m.mass[3 * node];
-    m.matrix[slot] += add, m.matrix[4 * stride + slot] += add, m.matrix[8 * stride + slot] += add;
+    for (int j : {0, 4, 8})
+        m.matrix[std::size_t(j) * stride + slot] = MatrixReal(double(m.matrix[std::size_t(j) * stride + slot]) + add);
 }
 
 __global__ void forceKernel(DeviceModel m, double* force)
@@ -257,7 +258,7 @@ __global__ void cgInitKernel(DeviceModel m, const double* b, const double* x, do
         const std::size_t slot = m.diagonalSlot[node], stride = std::size_t(m.blocks);
         Mat3 block;
         for (int j = 0; j < 9; ++j)
-            block.m[j] = m.matrix[j * stride + slot];
+            block.m[j] = double(m.matrix[j * stride + slot]);
         const double det = determinant(block);
         Mat3 inverse;
         if (fabs(det) > 0.0)
