@@ -12,6 +12,7 @@
 
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
+#include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 
 #include <omp.h>
@@ -46,7 +47,7 @@ Figures run(const StructuredTetMesh& mesh, int steps)
     for (std::size_t n = 0; n < model.nodeCount(); ++n)
         if (mesh.points[n].z() < 1e-9 || mesh.points[n].z() > 0.1 - 1e-9)
             fixed[3 * n] = fixed[3 * n + 1] = fixed[3 * n + 2] = 1;
-    for (const auto& face : boundaryFaces(mesh.tets))
+    for (const auto& face : vsim::boundaryFaces(mesh.tets))
     {
         bool onInner = true;
         for (int node : face)

@@ -11,6 +11,7 @@
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_fem/CudaBackwardEuler.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
+#include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 
 #include <omp.h>
@@ -41,7 +42,7 @@ Setup setup(const std::array<int, 3>& cells)
     for (std::size_t n = 0; n < s.mesh.points.size(); ++n)
         if (s.mesh.points[n].z() < 1e-9 || s.mesh.points[n].z() > 0.1 - 1e-9)
             s.fixed[3 * n] = s.fixed[3 * n + 1] = s.fixed[3 * n + 2] = 1;
-    for (const auto& face : boundaryFaces(s.mesh.tets))
+    for (const auto& face : vsim::boundaryFaces(s.mesh.tets))
     {
         bool onInner = true;
         for (int node : face)

@@ -5,6 +5,7 @@
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_fem/CudaBackwardEuler.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
+#include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 
 #include <QtTest>

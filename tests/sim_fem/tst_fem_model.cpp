@@ -6,6 +6,7 @@
 #include "vsim/sim/fem/CorotationalFem.h"
 #include "vsim/sim/fem/RotationExtraction.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
+#include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 
 #include <Eigen/Eigenvalues>

@@ -1,5 +1,8 @@
 #include "vsim/core/TetMesh.h"
 
+#include <algorithm>
+#include <map>
+
 #include "vsim/core/Error.h"
 
 #include <Eigen/Geometry>
@@ -40,6 +43,26 @@ void TetMesh::validate() const
     for (const auto& [name, values] : cellFields)
         if (values.size() != tets.size())
             throw Error("cell field length differs from the element count", {{"field", name}});
+}
+
+std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets)
+{
+    // The face opposite corner a of a positively oriented tet, in this order, has an outward normal.
+    static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+    std::map<std::array<int, 3>, std::pair<int, std::array<int, 3>>> faces; // sorted corners -> (count, face)
+    for (const auto& tet : tets)
+        for (const auto& local : kFaces)
+        {
+            const std::array<int, 3> face{tet[std::size_t(local[0])], tet[std::size_t(local[1])], tet[std::size_t(local[2])]};
+            std::array<int, 3> key = face;
+            std::sort(key.begin(), key.end());
+            ++faces.try_emplace(key, 0, face).first->second.first;
+        }
+    std::vector<std::array<int, 3>> boundary;
+    for (const auto& [key, entry] : faces)
+        if (entry.first == 1)
+            boundary.push_back(entry.second);
+    return boundary;
 }
 
 } // namespace vsim

@@ -27,4 +27,8 @@ struct TetMesh
     void validate() const;
 };
 
+/// Faces that belong to one element only, ordered so that their normal (p1-p0) x (p2-p0) points out of the
+/// solid (the elements must be positively oriented, as TetMesh::validate requires).
+std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets);
+
 } // namespace vsim

@@ -1,7 +1,7 @@
 #pragma once
 
-// Loads on the wall model (SI): the boundary faces of a tetrahedral mesh, a pressure acting on a set of them
-// (a follower load: it acts along the current normals), and gravity on the lumped masses.
+// Loads on the wall model (SI): a pressure acting on a set of boundary faces (a follower load: it acts along the
+// current normals), and gravity on the lumped masses.
 
 #include <Eigen/Core>
 
@@ -10,9 +10,7 @@
 
 namespace vsim::sim::fem {
 
-/// Faces that belong to one element only, ordered so that their normal (p1-p0) x (p2-p0) points out of the
-/// solid (the elements must be positively oriented, as CorotationalFem requires).
-std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets);
+/// (The boundary faces of a mesh: vsim::boundaryFaces in vsim/core/TetMesh.h.)
 
 /// Adds the nodal forces (N) of a uniform pressure `pressurePa` on `faces` at the current `positions` (m, 3 per
 /// node) to `forces`: -p A n / 3 per corner, with n the face's outward unit normal (a positive pressure pushes

@@ -1,0 +1,55 @@
+#pragma once
+
+// The tetrahedral vessel wall of the mechanics solver (thesis ch. 4.3): the lumen surface offset outward along its
+// vertex normals by the wall thickness, each triangle and its offset a prism split into three tetrahedra (the
+// smallest-index diagonal rule of Dompierre et al. 1999, so neighbouring prisms conform), one element layer
+// through the wall. The closed ends of the segmented lumen are cut open one vessel radius inside each centerline
+// endpoint (triangles beyond the cut plane are removed, so the open rim follows the triangles); the nodes of each
+// open end form a fixed set. All in mm (patient frame).
+
+#include "vsim/core/SkeletonGraph.h"
+#include "vsim/core/TetMesh.h"
+#include "vsim/core/TriangleMesh.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace vsim::mesh {
+
+/// One open end of the vessel tree: a centerline endpoint, the direction out of the vessel there and its radius.
+struct VesselEnd
+{
+    Eigen::Vector3d point;    ///< mm
+    Eigen::Vector3d outward;  ///< unit
+    double radiusMm = 0.0;
+};
+
+/// The ends of a centerline graph: its degree-1 nodes, with the direction of the last few mm of their edge.
+std::vector<VesselEnd> vesselEnds(const SkeletonGraph& centerlines);
+
+struct WallMesh
+{
+    /// The wall (mm). Point fields: "wall_layer" (0 lumen side, 1 outside), "end_set" (0 free, k for end k - 1).
+    TetMesh mesh;
+    std::vector<std::vector<int>> endNodes; ///< per end, its nodes (both layers)
+    double minDihedralDeg = 0.0;            ///< smallest dihedral angle of any element
+    double meanMinDihedralDeg = 0.0;        ///< mean over elements of their smallest dihedral angle
+    std::size_t inverted = 0;               ///< elements that could not be oriented positively (offset folded)
+    std::vector<std::string> warnings;
+};
+
+/// Builds the wall of `lumen` (closed or open, outward-oriented triangles, mm) with `thicknessMm`, opening it at
+/// `ends`. Throws vsim::Error for an empty surface, a thickness outside 0.1..10 mm, or an end that cuts nothing.
+WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm);
+
+/// The faces of the wall on the lumen side, oriented out of the solid (into the lumen): where blood pressure acts.
+std::vector<std::array<int, 3>> lumenFaces(const TetMesh& wall);
+
+/// Smallest dihedral angle (degrees) of the tetrahedron with corners a, b, c, d.
+double minDihedralAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                        const Eigen::Vector3d& d);
+
+} // namespace vsim::mesh

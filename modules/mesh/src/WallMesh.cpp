@@ -1,0 +1,248 @@
+#include "vsim/mesh/WallMesh.h"
+
+#include "vsim/core/Error.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace vsim::mesh {
+namespace {
+
+/// Removes the triangles of each end's cap (a vertex beyond the cut plane, one radius inside the end, within three
+/// radii of it). Returns the surface and, per vertex, the end whose new boundary it lies on (-1: none).
+std::pair<TriangleMesh, std::vector<int>> openEnds(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends,
+                                                   std::vector<std::string>& warnings)
+{
+    std::vector<Eigen::Vector3d> planePoint(ends.size());
+    for (std::size_t e = 0; e < ends.size(); ++e)
+        planePoint[e] = ends[e].point - ends[e].radiusMm * ends[e].outward;
+    auto beyond = [&](const Eigen::Vector3d& v, std::size_t e) {
+        return (v - planePoint[e]).dot(ends[e].outward) > 0.0 && (v - planePoint[e]).norm() < 3.0 * ends[e].radiusMm;
+    };
+    std::vector<std::array<int, 3>> kept;
+    std::vector<std::size_t> cutPerEnd(ends.size(), 0);
+    for (const auto& triangle : lumen.triangles)
+    {
+        bool drop = false;
+        for (std::size_t e = 0; e < ends.size() && !drop; ++e)
+            for (int v : triangle)
+                if (beyond(lumen.points[std::size_t(v)], e))
+                {
+                    drop = true;
+                    ++cutPerEnd[e];
+                    break;
+                }
+        if (!drop)
+            kept.push_back(triangle);
+    }
+    for (std::size_t e = 0; e < ends.size(); ++e)
+        if (cutPerEnd[e] == 0)
+            throw Error("the vessel end " + std::to_string(e + 1) + " cuts no triangle of the lumen surface: is the "
+                        "surface from the same label as the centerlines?");
+    // Compact the vertices.
+    std::vector<int> newIndex(lumen.points.size(), -1);
+    TriangleMesh open;
+    for (auto& triangle : kept)
+        for (int& v : triangle)
+        {
+            if (newIndex[std::size_t(v)] < 0)
+            {
+                newIndex[std::size_t(v)] = int(open.points.size());
+                open.points.push_back(lumen.points[std::size_t(v)]);
+            }
+            v = newIndex[std::size_t(v)];
+        }
+    open.triangles = kept;
+    // Boundary edges (in one triangle only) belong to the nearest end's cut when they lie in its cut sphere; any
+    // other boundary was open before (a lumen cut by the image border) and stays free.
+    std::map<std::pair<int, int>, int> edgeCount;
+    for (const auto& t : open.triangles)
+        for (int k = 0; k < 3; ++k)
+            ++edgeCount[std::minmax(t[std::size_t(k)], t[std::size_t((k + 1) % 3)])];
+    std::vector<int> endOf(open.points.size(), -1);
+    std::size_t stray = 0;
+    for (const auto& [edge, count] : edgeCount)
+        if (count == 1)
+            for (int v : {edge.first, edge.second})
+            {
+                std::size_t nearest = 0;
+                for (std::size_t e = 1; e < ends.size(); ++e)
+                    if ((open.points[std::size_t(v)] - planePoint[e]).norm() <
+                        (open.points[std::size_t(v)] - planePoint[nearest]).norm())
+                        nearest = e;
+                if ((open.points[std::size_t(v)] - planePoint[nearest]).norm() < 3.0 * ends[nearest].radiusMm)
+                    endOf[std::size_t(v)] = int(nearest);
+                else
+                    ++stray;
+            }
+    if (stray > 0)
+        warnings.push_back("the lumen surface is open away from the vessel ends (" + std::to_string(stray / 2) +
+                           " boundary edges; is the segmentation cut by the image border?): those nodes stay free");
+    // (Flattening the loop onto the plane was tried: it turns the triangles next to the cut into slivers.)
+    return {open, endOf};
+}
+
+double signedVolume(const std::vector<Eigen::Vector3d>& p, const std::array<int, 4>& t)
+{
+    return (p[std::size_t(t[1])] - p[std::size_t(t[0])])
+               .cross(p[std::size_t(t[2])] - p[std::size_t(t[0])])
+               .dot(p[std::size_t(t[3])] - p[std::size_t(t[0])]) /
+           6.0;
+}
+
+} // namespace
+
+std::vector<VesselEnd> vesselEnds(const SkeletonGraph& centerlines)
+{
+    std::vector<VesselEnd> ends;
+    for (int node : centerlines.endpoints())
+        for (const SkeletonGraph::Edge& edge : centerlines.edges)
+        {
+            if (edge.from != node && edge.to != node)
+                continue;
+            // Walk inward from the end about 3 mm (or the whole edge) to get a stable direction.
+            std::vector<Eigen::Vector3d> points = edge.points;
+            std::vector<double> radii = edge.radii;
+            if (edge.to == node)
+            {
+                std::reverse(points.begin(), points.end());
+                std::reverse(radii.begin(), radii.end());
+            }
+            std::size_t inner = 1;
+            while (inner + 1 < points.size() && (points[inner] - points.front()).norm() < 3.0)
+                ++inner;
+            VesselEnd end;
+            end.point = points.front();
+            end.outward = (points.front() - points[inner]).normalized();
+            end.radiusMm = *std::max_element(radii.begin(), radii.begin() + long(inner + 1));
+            ends.push_back(end);
+            break;
+        }
+    return ends;
+}
+
+double minDihedralAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                        const Eigen::Vector3d& d)
+{
+    const std::array<Eigen::Vector3d, 4> p{a, b, c, d};
+    // Face normals (outward for a positive tet): face k is opposite corner k.
+    static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+    std::array<Eigen::Vector3d, 4> normal;
+    for (int k = 0; k < 4; ++k)
+        normal[std::size_t(k)] = (p[std::size_t(kFaces[k][1])] - p[std::size_t(kFaces[k][0])])
+                                     .cross(p[std::size_t(kFaces[k][2])] - p[std::size_t(kFaces[k][0])])
+                                     .normalized();
+    double smallest = 180.0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+        {
+            // The dihedral angle at the edge shared by faces i and j is pi minus the angle between their normals.
+            const double cosine = std::clamp(-normal[std::size_t(i)].dot(normal[std::size_t(j)]), -1.0, 1.0);
+            smallest = std::min(smallest, std::acos(cosine) * 180.0 / M_PI);
+        }
+    return smallest;
+}
+
+WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm)
+{
+    if (lumen.triangles.empty())
+        throw Error("the lumen surface is empty: extract the surface first");
+    if (!(thicknessMm >= 0.1 && thicknessMm <= 10.0))
+        throw Error("the wall thickness must lie in 0.1..10 mm (" + std::to_string(thicknessMm) + " given)");
+    WallMesh wall;
+    const auto [surface, endOf] = openEnds(lumen, ends, wall.warnings);
+    const int n = int(surface.points.size());
+    // Area-weighted vertex normals (triangles are counter-clockwise seen from outside the lumen).
+    std::vector<Eigen::Vector3d> normal(surface.points.size(), Eigen::Vector3d::Zero());
+    for (const auto& t : surface.triangles)
+    {
+        const Eigen::Vector3d areaNormal = (surface.points[std::size_t(t[1])] - surface.points[std::size_t(t[0])])
+                                               .cross(surface.points[std::size_t(t[2])] - surface.points[std::size_t(t[0])]);
+        for (int v : t)
+            normal[std::size_t(v)] += areaNormal;
+    }
+    wall.mesh.points = surface.points;
+    wall.mesh.points.resize(2 * surface.points.size());
+    for (int v = 0; v < n; ++v)
+    {
+        Eigen::Vector3d direction = normal[std::size_t(v)];
+        if (endOf[std::size_t(v)] >= 0) // keep the open end planar
+        {
+            const Eigen::Vector3d& axis = ends[std::size_t(endOf[std::size_t(v)])].outward;
+            direction -= direction.dot(axis) * axis;
+        }
+        if (direction.norm() == 0.0)
+            throw Error("a lumen vertex has no normal (degenerate surface)");
+        wall.mesh.points[std::size_t(n + v)] = surface.points[std::size_t(v)] + thicknessMm * direction.normalized();
+    }
+    // Prisms (a, b, c) -> (a', b', c') into three tets; rotate so that the smallest index comes first (Dompierre
+    // et al. 1999): with inner indices below outer ones, the quad diagonals follow the smaller inner index.
+    for (const auto& triangle : surface.triangles)
+    {
+        std::array<int, 3> t = triangle;
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        const int v0 = t[0], v1 = t[1], v2 = t[2], v3 = v0 + n, v4 = v1 + n, v5 = v2 + n;
+        const std::array<std::array<int, 4>, 3> tets =
+            v1 < v2 ? std::array<std::array<int, 4>, 3>{{{v0, v1, v2, v5}, {v0, v1, v5, v4}, {v0, v4, v5, v3}}}
+                    : std::array<std::array<int, 4>, 3>{{{v0, v1, v2, v4}, {v0, v4, v2, v5}, {v0, v4, v5, v3}}};
+        for (std::array<int, 4> tet : tets)
+        {
+            if (signedVolume(wall.mesh.points, tet) < 0.0)
+                std::swap(tet[1], tet[2]);
+            if (signedVolume(wall.mesh.points, tet) <= 0.0)
+                ++wall.inverted;
+            wall.mesh.tets.push_back(tet);
+        }
+    }
+    std::vector<double> layer(wall.mesh.points.size(), 0.0), endSet(wall.mesh.points.size(), 0.0);
+    wall.endNodes.assign(ends.size(), {});
+    for (int v = 0; v < n; ++v)
+    {
+        layer[std::size_t(n + v)] = 1.0;
+        if (endOf[std::size_t(v)] >= 0)
+        {
+            const int end = endOf[std::size_t(v)];
+            endSet[std::size_t(v)] = endSet[std::size_t(n + v)] = double(end + 1);
+            wall.endNodes[std::size_t(end)].push_back(v);
+            wall.endNodes[std::size_t(end)].push_back(n + v);
+        }
+    }
+    wall.mesh.pointFields["wall_layer"] = layer;
+    wall.mesh.pointFields["end_set"] = endSet;
+    double smallest = 180.0, sum = 0.0;
+    for (const auto& tet : wall.mesh.tets)
+    {
+        const double angle = minDihedralAngle(wall.mesh.points[std::size_t(tet[0])], wall.mesh.points[std::size_t(tet[1])],
+                                              wall.mesh.points[std::size_t(tet[2])], wall.mesh.points[std::size_t(tet[3])]);
+        smallest = std::min(smallest, angle);
+        sum += angle;
+    }
+    wall.minDihedralDeg = smallest;
+    wall.meanMinDihedralDeg = sum / double(wall.mesh.tets.size());
+    if (wall.inverted > 0)
+        wall.warnings.push_back(std::to_string(wall.inverted) + " elements are inverted where the offset folds (wall "
+                                "thicker than the local radius of curvature): use a thinner wall or a smoother surface");
+    for (std::size_t e = 0; e < ends.size(); ++e)
+        if (wall.endNodes[e].empty())
+            wall.warnings.push_back("end " + std::to_string(e + 1) + " has no open boundary");
+    return wall;
+}
+
+std::vector<std::array<int, 3>> lumenFaces(const TetMesh& wall)
+{
+    const auto layer = wall.pointFields.find("wall_layer");
+    if (layer == wall.pointFields.end())
+        throw Error("the tetrahedral mesh is not a vessel wall (no wall_layer field)");
+    std::vector<std::array<int, 3>> inner;
+    for (const auto& face : boundaryFaces(wall.tets))
+        if (layer->second[std::size_t(face[0])] == 0.0 && layer->second[std::size_t(face[1])] == 0.0 &&
+            layer->second[std::size_t(face[2])] == 0.0)
+            inner.push_back(face);
+    return inner;
+}
+
+} // namespace vsim::mesh
