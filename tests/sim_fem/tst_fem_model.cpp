@@ -8,6 +8,7 @@
 #include "vsim/sim/fem/StructuredMeshes.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
+#include "vsim/sim/fem/Tearing.h"
 
 #include <Eigen/Eigenvalues>
 #include <QtTest>
@@ -94,6 +95,45 @@ private slots:
         for (std::size_t n = 0; n < mesh.points.size(); ++n)
             onRight += forces.segment<3>(Eigen::Index(3 * n));
         QVERIFY((onRight - Eigen::Vector3d(-1e3, 0, 0)).norm() < 1e-9);
+    }
+
+    // A crack along a shared edge: the two cells left touch only along that edge, so its two nodes split.
+    void detachingSplitsTheNodesAFractureSeparates()
+    {
+        const StructuredTetMesh mesh = boxTetMesh(Eigen::Vector3d(0.02, 0.02, 0.01), {2, 2, 1});
+        CorotationalFem model(mesh.points, mesh.tets, ElasticMaterial{});
+        model.positions().array() += 1e-4; // a moved state is carried over
+        std::vector<std::size_t> torn;
+        for (std::size_t cell : {1u, 2u}) // cells (1, 0) and (0, 1)
+            for (std::size_t t = 6 * cell; t < 6 * cell + 6; ++t)
+                torn.push_back(t);
+        const DetachedModel detached = detachElements(model, torn);
+        QCOMPARE(detached.model.elementCount(), std::size_t(12));
+        QCOMPARE(detached.splitNodes, std::size_t(2)); // the edge x = y = 10 mm, at z = 0 and 10 mm
+        // The outer corner edge of each removed cell is orphaned (2 x 2 nodes): 18 - 4 + 2 copies.
+        QCOMPARE(detached.model.nodeCount(), std::size_t(16));
+        for (std::size_t n = 0; n < detached.model.nodeCount(); ++n)
+            QVERIFY((detached.model.positions().segment<3>(Eigen::Index(3 * n)) -
+                     model.positions().segment<3>(3 * detached.oldNodeOf[n])).norm() == 0.0);
+        // The two halves no longer share a node: mass splits evenly.
+        QVERIFY(std::abs(detached.model.lumpedMass().sum() - 0.5 * model.lumpedMass().sum()) < 1e-15);
+        QVERIFY_THROWS_EXCEPTION(Error, detachElements(model, std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
+                                                                                      11, 12, 13, 14, 15, 16, 17, 18, 19,
+                                                                                      20, 21, 22, 23}));
+    }
+
+    void fractureEntropyCountsEffectiveTears()
+    {
+        FractureEntropy entropy;
+        entropy.addTornElement(2.0);
+        QCOMPARE(entropy.value(), 0.0);
+        entropy.addTornElement(2.0);
+        QVERIFY(std::abs(entropy.value() - std::log(2.0)) < 1e-12);
+        for (int k = 0; k < 6; ++k)
+            entropy.addTornElement(2.0);
+        QVERIFY(std::abs(entropy.effectiveCount() - 8.0) < 1e-9);
+        entropy.addTornElement(1e-9); // a tear that released almost nothing barely counts
+        QVERIFY(std::abs(entropy.effectiveCount() - 8.0) < 1e-6);
     }
 
     void badInputIsRefused()

@@ -180,15 +180,24 @@ void CorotationalFem::assemble(BlockSparseMatrix& matrix, double massFactor, dou
         matrix.diagonal(n).diagonal().array() += massFactor * m_mass[Eigen::Index(3 * n)];
 }
 
-double CorotationalFem::elasticEnergy() const
+std::vector<double> CorotationalFem::elementEnergies() const
 {
-    double energy = 0.0;
-#pragma omp parallel for reduction(+ : energy) schedule(static)
+    std::vector<double> energies(m_tets.size());
+#pragma omp parallel for schedule(static)
     for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
     {
         const Vector12d u = corotatedDisplacement(std::size_t(t), m_rotations[std::size_t(t)].toRotationMatrix());
-        energy += 0.5 * u.dot(m_elements[std::size_t(t)].stiffness * u);
+        energies[std::size_t(t)] = 0.5 * u.dot(m_elements[std::size_t(t)].stiffness * u);
     }
+    return energies;
+}
+
+double CorotationalFem::elasticEnergy() const
+{
+    const std::vector<double> energies = elementEnergies();
+    double energy = 0.0;
+    for (double e : energies)
+        energy += e;
     return energy;
 }
 

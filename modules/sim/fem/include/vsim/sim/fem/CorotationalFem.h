@@ -63,6 +63,8 @@ public:
     BlockSparseMatrix makeMatrix() const { return m_pattern; }
     /// Elastic energy 1/2 sum_e u_e^T K_e u_e with u_e = R^T x_e - X_e (J).
     double elasticEnergy() const;
+    /// The same per element (J).
+    std::vector<double> elementEnergies() const;
     /// Kinetic energy 1/2 v^T M v (J).
     double kineticEnergy() const;
     ElementStresses elementStresses() const;
