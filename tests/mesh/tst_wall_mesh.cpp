@@ -4,6 +4,7 @@
 // vessel ends, every element is positive and the dihedral angles are reported. Bad input is refused.
 
 #include "PhantomGrids.h"
+#include "WallFixtures.h"
 #include "vsim/core/Error.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Centerlines.h"
@@ -17,38 +18,6 @@
 
 using namespace vsim;
 
-namespace {
-
-/// A closed cylinder along z (radius, length, `around` segments, rings every mm), caps as fans; outward triangles.
-TriangleMesh cappedCylinder(double radius, double length, int around)
-{
-    TriangleMesh surface;
-    const int rings = int(length) + 1;
-    for (int k = 0; k < rings; ++k)
-        for (int j = 0; j < around; ++j)
-        {
-            const double phi = 2.0 * M_PI * j / around;
-            surface.points.emplace_back(radius * std::cos(phi), radius * std::sin(phi), length * k / (rings - 1));
-        }
-    for (int k = 0; k + 1 < rings; ++k)
-        for (int j = 0; j < around; ++j)
-        {
-            const int a = k * around + j, b = k * around + (j + 1) % around, c = a + around, d = b + around;
-            surface.triangles.push_back({a, b, d});
-            surface.triangles.push_back({a, d, c});
-        }
-    const int bottom = int(surface.points.size()), top = bottom + 1;
-    surface.points.emplace_back(0, 0, 0);
-    surface.points.emplace_back(0, 0, length);
-    for (int j = 0; j < around; ++j)
-    {
-        surface.triangles.push_back({bottom, (j + 1) % around, j});
-        surface.triangles.push_back({top, (rings - 1) * around + j, (rings - 1) * around + (j + 1) % around});
-    }
-    return surface;
-}
-
-} // namespace
 
 class WallMeshTest : public QObject
 {
@@ -58,7 +27,7 @@ private slots:
     void cylinderWallVolumeAndEnds()
     {
         const double radius = 5.0, length = 60.0, thickness = 1.5;
-        const TriangleMesh lumen = cappedCylinder(radius, length, 96);
+        const TriangleMesh lumen = test::cappedCylinder(radius, length, 96);
         QVERIFY(lumen.signedVolume() > 0.0);
         const std::vector<mesh::VesselEnd> ends{{Eigen::Vector3d(0, 0, 0), -Eigen::Vector3d::UnitZ(), radius},
                                                 {Eigen::Vector3d(0, 0, length), Eigen::Vector3d::UnitZ(), radius}};
@@ -123,7 +92,7 @@ private slots:
 
     void badInputIsRefused()
     {
-        const TriangleMesh lumen = cappedCylinder(5.0, 60.0, 32);
+        const TriangleMesh lumen = test::cappedCylinder(5.0, 60.0, 32);
         const std::vector<mesh::VesselEnd> ends{{Eigen::Vector3d(0, 0, 0), -Eigen::Vector3d::UnitZ(), 5.0}};
         QVERIFY_THROWS_EXCEPTION(Error, mesh::buildWallMesh(TriangleMesh{}, ends, 1.5));
         QVERIFY_THROWS_EXCEPTION(Error, mesh::buildWallMesh(lumen, ends, 0.0));

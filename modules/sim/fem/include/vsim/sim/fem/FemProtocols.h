@@ -1,0 +1,41 @@
+#pragma once
+
+// The protocols of `vascusim-cli simulate fem` and the GUI (parameters declared once, SI conversion here):
+//  thesis-rupture  the thesis's experiment (ch. 4.7): E = 4.23 MPa, nu = 0.23, both ends fixed, a pressure ramp
+//                  8 -> 12 MPa on the middle third of the lumen ("mid-vessel boundary pressure"), tearing at the
+//                  tear strength, stopping on the fracture entropy; reports the tearing onset pressure (thesis:
+//                  10.4 MPa) and the entropy curve. These pressures are about 600 times systolic: a reproduction,
+//                  not physiology (SEED-NOTES.md).
+//  physiological   wall stress at the patient's pressure (default 120 mmHg), quasi-static, ends fixed: peak wall
+//                  stress and where, and the peak rupture potential index against the wall strength of Vande Geest
+//                  et al. 2006 (J Biomech Eng 128:1055, "Towards a noninvasive method for determination of
+//                  patient-specific wall strength distribution in AAA").
+
+#include "vsim/core/Parameters.h"
+#include "vsim/core/Progress.h"
+#include "vsim/core/SkeletonGraph.h"
+#include "vsim/core/TetMesh.h"
+#include "vsim/sim/fem/FemRun.h"
+
+#include <string>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+/// Every parameter of the wall runs (material, integration, both protocols, the patient's strength inputs).
+std::vector<ParameterSpec> femParameters();
+
+/// The thesis protocol on a wall mesh (mm).
+FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& parameters, const Progress& progress = {});
+
+/// The physiological protocol; `centerlines` (mm, with radii) give each element's local diameter for the
+/// strength model. Adds metrics peak_rupture_index, its location, the strength there and max_diameter_mm.
+FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& parameters,
+                              const Progress& progress = {});
+
+/// AAA wall strength (Pa) by Vande Geest et al. 2006: 71.9 - 37.9 (ILT^1/2 - 0.81) - 15.6 (NORD - 2.46)
+/// - 21.3 HIST + 19.3 SEX N/cm^2, with ILT the local thrombus thickness (cm), NORD the local diameter over the
+/// non-aneurysmal reference, HIST +-0.5 (family history yes / no), SEX +-0.5 (female / male).
+double vandeGeestWallStrength(double thrombusCm, double normalizedDiameter, bool familyHistory, bool female);
+
+} // namespace vsim::sim::fem

@@ -1,0 +1,59 @@
+#pragma once
+
+// The run driver of the wall solver: a vessel wall (TetMesh in mm, as mesh::buildWallMesh makes it) under a
+// lumen pressure curve, ends fixed, stepped with backward Euler; optional tearing with the entropy end condition;
+// frames every N steps; guards (NaN, inverted elements, PCG breakdown) stop the run with a message and keep the
+// last good frame. SI inside, mm / kPa in the frames.
+
+#include "vsim/core/Progress.h"
+#include "vsim/core/TetMesh.h"
+#include "vsim/sim/fem/BackwardEuler.h"
+#include "vsim/sim/fem/ElasticMaterial.h"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+struct FemRunSetup
+{
+    TetMesh wall;                                 ///< mm; point fields "wall_layer" and "end_set"
+    ElasticMaterial material;
+    BackwardEulerSettings integrator;
+    /// Lumen pressure (Pa) over time (s), or over the load fraction 0..1 when quasiStatic.
+    std::function<double(double timeS)> pressurePa;
+    /// Which lumen faces carry the pressure (face centroid, mm); empty: all of them.
+    std::function<bool(const Eigen::Vector3d& centroidMm)> loaded;
+    int steps = 100;
+    int frameEvery = 20;
+    /// Each step finds the static equilibrium under that step's pressure (load increments; follower load
+    /// re-evaluated until the shape settles) instead of a backward Euler step.
+    bool quasiStatic = false;
+    bool tearing = false;
+    double tearStressPa = 0.0;     ///< largest principal stress that tears an element
+    double entropyEnd = 0.0;       ///< stop once the fracture entropy passes this (nats); 0: never
+};
+
+struct FemRunResult
+{
+    /// Frames in mm with point fields displacement_x/y/z_mm, displacement_mm and cell fields von_mises_kpa,
+    /// max_principal_kpa; each frame has its own mesh (tearing splits nodes). Frame attributes: time and pressure.
+    std::vector<TetMesh> frames;
+    std::vector<double> frameTimesS, framePressuresPa;
+    std::map<std::string, double> metrics;
+    std::vector<std::pair<double, double>> entropyCurve; ///< (pressure Pa, entropy) after each tear
+    std::string stopReason;                              ///< why the run ended early, empty when it ran through
+    std::vector<std::string> warnings;
+};
+
+/// Runs the setup. Throws vsim::Error for a mesh that is not a wall (fields missing, no fixed end, no lumen face)
+/// and vsim::Cancelled when cancelled; a run that a guard stops returns normally with `stopReason` set.
+FemRunResult runFem(const FemRunSetup& setup, const Progress& progress = {});
+
+/// Element stresses averaged over each prism (the three tets a wall triangle makes, consecutive in the mesh),
+/// written back to every tet of the prism: constant-stress tets scatter about the wall stress (FemValidation).
+std::vector<double> prismAverage(const std::vector<double>& perTet, const TetMesh& wall);
+
+} // namespace vsim::sim::fem

@@ -1,0 +1,179 @@
+#include "vsim/sim/fem/FemProtocols.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsim::sim::fem {
+namespace {
+
+ElasticMaterial materialOf(const ParameterSet& p)
+{
+    ElasticMaterial material;
+    material.youngModulusPa = units::mpaToPa(p.get("young_modulus_mpa"));
+    material.poissonRatio = p.get("poisson_ratio");
+    material.densityKgPerM3 = p.get("density_kg_m3");
+    return material;
+}
+
+BackwardEulerSettings integratorOf(const ParameterSet& p)
+{
+    BackwardEulerSettings settings;
+    settings.timeStep = 1e-3 * p.get("time_step_ms");
+    settings.rayleighAlpha = p.get("rayleigh_alpha");
+    settings.rayleighBeta = p.get("rayleigh_beta_s");
+    settings.cgTolerance = p.get("cg_tolerance");
+    settings.cgMaxIterations = int(p.get("cg_max_iterations"));
+    return settings;
+}
+
+/// The principal axis of the wall's nodes (largest spread), its centre and half-length along it (mm).
+struct Axis
+{
+    Eigen::Vector3d centre, direction;
+    double halfLength;
+};
+
+Axis principalAxis(const std::vector<Eigen::Vector3d>& points)
+{
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& p : points)
+        centre += p / double(points.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (const auto& p : points)
+        covariance += (p - centre) * (p - centre).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+    const Eigen::Vector3d direction = eigen.eigenvectors().col(2);
+    double low = 0.0, high = 0.0;
+    for (const auto& p : points)
+        low = std::min(low, (p - centre).dot(direction)), high = std::max(high, (p - centre).dot(direction));
+    return {centre + 0.5 * (low + high) * direction, direction, 0.5 * (high - low)};
+}
+
+} // namespace
+
+std::vector<ParameterSpec> femParameters()
+{
+    const std::string material = "Material", integration = "Integration", thesis = "Thesis rupture protocol",
+                      physiological = "Physiological protocol", patient = "Patient (wall strength)";
+    return {
+        {"young_modulus_mpa", "Young's modulus", "MPa", 4.23, 0.01, 1000, material, "Wall stiffness (thesis patient 1: 4.23 MPa)."},
+        {"poisson_ratio", "Poisson's ratio", "", 0.23, 0.0, 0.49, material, "Thesis: 0.23 (printed as 0.23 MPa, a typo)."},
+        {"density_kg_m3", "Density", "kg/m^3", 1100, 500, 3000, material, "Wall density (lumped mass)."},
+        {"time_step_ms", "Time step", "ms", 1.0, 0.01, 100, integration, "Backward Euler step."},
+        {"rayleigh_alpha", "Rayleigh alpha", "1/s", 0.0, 0.0, 1000, integration, "Mass-proportional damping (thesis: 0)."},
+        {"rayleigh_beta_s", "Rayleigh beta", "s", 0.22, 0.0, 10, integration, "Stiffness-proportional damping (thesis: 0.22 s)."},
+        {"cg_tolerance", "PCG tolerance", "", 1e-6, 1e-12, 1e-1, integration, "Relative residual of the implicit solve."},
+        {"cg_max_iterations", "PCG iterations", "", 100, 1, 100000, integration, "Largest number of PCG iterations per step.",
+         ParameterSpec::Kind::Integer},
+        {"pressure_start_mpa", "Ramp start", "MPa", 8, 0, 100, thesis, "Mid-vessel pressure at the start of the ramp."},
+        {"pressure_end_mpa", "Ramp end", "MPa", 12, 0, 100, thesis, "Mid-vessel pressure at the end of the ramp."},
+        {"ramp_steps", "Ramp steps", "", 400, 1, 1000000, thesis, "Time steps of the ramp.", ParameterSpec::Kind::Integer},
+        {"loaded_fraction", "Loaded length", "", 1.0 / 3.0, 0.05, 1, thesis,
+         "Share of the wall's length (about its middle, along its principal axis) that the pressure acts on."},
+        {"tear_strength_mpa", "Tear strength", "MPa", 100, 0.01, 100000, thesis,
+         "Largest principal stress at which an element tears (the thesis's tear factor; it does not print a value)."},
+        {"entropy_end", "Fracture entropy end", "nats", 3.9, 0, 20, thesis,
+         "Stop once the fracture entropy passes this (3.9: about 50 torn elements' worth)."},
+        {"pressure_mmhg", "Blood pressure", "mmHg", 120, 1, 400, physiological, "Systolic pressure on the lumen."},
+        {"load_steps", "Load steps", "", 4, 1, 100, physiological, "Quasi-static load increments.", ParameterSpec::Kind::Integer},
+        {"female", "Female", "", 0, 0, 1, patient, "1 for a female patient (Vande Geest 2006 SEX = +0.5).", ParameterSpec::Kind::Integer},
+        {"family_history", "Family history of AAA", "", 0, 0, 1, patient, "1 with a family history (HIST = +0.5).",
+         ParameterSpec::Kind::Integer},
+        {"thrombus_mm", "Thrombus thickness", "mm", 0, 0, 50, patient, "Local intraluminal thrombus thickness (ILT)."},
+        {"reference_diameter_mm", "Reference diameter", "mm", 20, 5, 50, patient,
+         "Non-aneurysmal aortic diameter for the normalised diameter (NORD)."},
+    };
+}
+
+double vandeGeestWallStrength(double thrombusCm, double normalizedDiameter, bool familyHistory, bool female)
+{
+    const double newtonPerCm2 = 71.9 - 37.9 * (std::sqrt(std::max(thrombusCm, 0.0)) - 0.81) -
+                                15.6 * (normalizedDiameter - 2.46) - 21.3 * (familyHistory ? 0.5 : -0.5) +
+                                19.3 * (female ? 0.5 : -0.5);
+    return newtonPerCm2 * 1e4; // N/cm^2 -> Pa
+}
+
+FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const Progress& progress)
+{
+    FemRunSetup setup;
+    setup.wall = wall;
+    setup.material = materialOf(p);
+    setup.integrator = integratorOf(p);
+    const double start = units::mpaToPa(p.get("pressure_start_mpa")), end = units::mpaToPa(p.get("pressure_end_mpa"));
+    setup.steps = int(p.get("ramp_steps"));
+    const double duration = setup.steps * setup.integrator.timeStep;
+    setup.pressurePa = [=](double t) { return start + (end - start) * std::clamp(t / duration, 0.0, 1.0); };
+    const Axis axis = principalAxis(wall.points);
+    const double half = 0.5 * p.get("loaded_fraction") * 2.0 * axis.halfLength;
+    setup.loaded = [=](const Eigen::Vector3d& c) { return std::abs((c - axis.centre).dot(axis.direction)) <= half; };
+    setup.frameEvery = std::max(1, setup.steps / 40);
+    setup.tearing = true;
+    setup.tearStressPa = units::mpaToPa(p.get("tear_strength_mpa"));
+    setup.entropyEnd = p.get("entropy_end");
+    return runFem(setup, progress);
+}
+
+FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& p,
+                              const Progress& progress)
+{
+    FemRunSetup setup;
+    setup.wall = wall;
+    setup.material = materialOf(p);
+    setup.integrator = integratorOf(p);
+    const double pressure = units::mmHgToPa(p.get("pressure_mmhg"));
+    setup.pressurePa = [=](double fraction) { return pressure * std::clamp(fraction, 0.0, 1.0); };
+    setup.quasiStatic = true;
+    setup.steps = int(p.get("load_steps"));
+    setup.frameEvery = 1;
+    FemRunResult result = runFem(setup, progress);
+
+    // Wall strength per element (local diameter from the nearest centerline point) and the rupture index.
+    if (centerlines.edges.empty())
+        throw Error("the physiological protocol needs centerlines (for the local diameter)");
+    const TetMesh& last = result.frames.back();
+    const auto& stress = last.cellFields.at("von_mises_kpa");
+    const double reference = p.get("reference_diameter_mm");
+    const bool female = p.get("female") > 0.5, history = p.get("family_history") > 0.5;
+    const double thrombusCm = 0.1 * p.get("thrombus_mm");
+    std::vector<double> strength(last.tets.size()), index(last.tets.size());
+    double maxDiameter = 0.0;
+    for (const auto& edge : centerlines.edges)
+        for (double r : edge.radii)
+            maxDiameter = std::max(maxDiameter, 2.0 * r);
+    for (std::size_t t = 0; t < last.tets.size(); ++t)
+    {
+        Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+        for (int node : last.tets[t])
+            centroid += 0.25 * last.points[std::size_t(node)];
+        double nearest = 1e300, radius = 0.0;
+        for (const auto& edge : centerlines.edges)
+            for (std::size_t i = 0; i < edge.points.size(); ++i)
+                if (const double d = (edge.points[i] - centroid).squaredNorm(); d < nearest)
+                    nearest = d, radius = edge.radii[i];
+        strength[t] = vandeGeestWallStrength(thrombusCm, 2.0 * radius / reference, history, female);
+        index[t] = stress[t] * 1e3 / strength[t];
+    }
+    const std::size_t peak = std::size_t(std::max_element(index.begin(), index.end()) - index.begin());
+    Eigen::Vector3d where = Eigen::Vector3d::Zero();
+    for (int node : last.tets[peak])
+        where += 0.25 * last.points[std::size_t(node)];
+    result.frames.back().cellFields["wall_strength_kpa"] = strength;
+    for (double& s : result.frames.back().cellFields["wall_strength_kpa"])
+        s *= 1e-3;
+    result.frames.back().cellFields["rupture_index"] = index;
+    result.metrics["peak_rupture_index"] = index[peak];
+    result.metrics["peak_rupture_index_x_mm"] = where.x();
+    result.metrics["peak_rupture_index_y_mm"] = where.y();
+    result.metrics["peak_rupture_index_z_mm"] = where.z();
+    result.metrics["strength_at_peak_rupture_index_kpa"] = strength[peak] * 1e-3;
+    result.metrics["max_diameter_mm"] = maxDiameter;
+    result.metrics["pressure_kpa"] = pressure * 1e-3;
+    return result;
+}
+
+} // namespace vsim::sim::fem
