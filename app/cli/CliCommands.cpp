@@ -1,4 +1,5 @@
 #include "CliCommands.h"
+#include "CliSupport.h"
 
 #include "vsim/app/DemoStudy.h"
 #include "vsim/app/DicomStudyImport.h"
@@ -221,46 +222,6 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
     return 0;
 }
 
-namespace {
-
-/// The artifact to work on: `wanted`, else the newest undamaged one of `kind`; `missing` says what to do first.
-std::string chooseArtifact(const study::Study& study, const std::string& wanted, study::ArtifactKind kind,
-                           const std::string& missing)
-{
-    if (!wanted.empty())
-        return study.artifact(wanted).id;
-    for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend(); ++it)
-        if (it->kind == kind && !it->damaged)
-            return it->id;
-    throw Error(missing);
-}
-
-/// Applies every --param key=value to the set.
-void applyParameters(const Arguments& arguments, ParameterSet& parameters)
-{
-    for (const auto& [name, value] : arguments.options)
-        if (name == "param")
-            parameters.setFromText(value);
-}
-
-
-std::string formatNumber(double value)
-{
-    std::ostringstream text;
-    text << value;
-    return text.str();
-}
-
-/// Parameter values as text for provenance records.
-std::map<std::string, std::string> provenanceParameters(const ParameterSet& parameters)
-{
-    std::map<std::string, std::string> text;
-    for (const auto& [key, value] : parameters.values())
-        text[key] = formatNumber(value);
-    return text;
-}
-
-} // namespace
 
 int segmentStudy(const Arguments& arguments, const Progress& progress)
 {
@@ -420,13 +381,7 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
     if (bundle.empty() || !arguments.positional.empty())
         throw Error("usage: vascusim-cli measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE]");
     const study::Study study = study::Study::open(bundle);
-    std::string centerlinesId = arguments.option("centerlines");
-    if (centerlinesId.empty())
-        for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend() && centerlinesId.empty(); ++it)
-            if (it->kind == study::ArtifactKind::Skeleton && it->provenance.command == "centerline" && !it->damaged)
-                centerlinesId = it->id;
-    if (centerlinesId.empty())
-        throw Error("the study has no centerlines: run vascusim-cli centerline first");
+    const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
     const auto& inputs = study.artifact(centerlinesId).provenance.inputs;
     const std::string labelId = arguments.hasOption("label") ? arguments.option("label")
                                 : inputs.size() > 1          ? inputs[1]

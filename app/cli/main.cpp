@@ -4,6 +4,7 @@
 
 #include "CliCommands.h"
 #include "ValidateCommand.h"
+#include "WallCommands.h"
 #include "vsim/core/Error.h"
 
 #include <csignal>
@@ -46,6 +47,13 @@ commands:
                                              edge, or of one path between two skeleton nodes
   measure --study <study.vsim> [--centerlines ID] [--json FILE]
                                              cross-sections, lengths, radii, maximum diameter, stenosis
+  mesh wall --study <study.vsim> [--label ID] [--centerlines ID] [--thickness 1.5] [--target-vertices 3000]
+                                             tetrahedral vessel wall (one layer) around the lumen, opened at the
+                                             centerline ends (fixed sets)
+  simulate fem --study <study.vsim> --protocol thesis-rupture|physiological [--mesh ID] [--backend auto|cpu]
+               [--param key=value ...] [--out DIR]
+                                             wall mechanics: the last frame (stresses, rupture index) and the metrics
+                                             into the study; the frame series (.vtu, series.pvd, metrics.json) to DIR
   validate <fem-patch|fem-rotation|fem-cantilever|fem-lame|fem-damping|all>
                                              analytic validation of the wall solver (JSON); exit 0 only when
                                              every figure is within its tolerance
@@ -99,6 +107,10 @@ int main(int argc, char** argv)
             return vsim::cli::measureStudy(arguments, progress);
         if (command == "phantom")
             return vsim::cli::writePhantomSeries(arguments, progress);
+        if (command == "mesh")
+            return vsim::cli::meshWall(arguments, progress);
+        if (command == "simulate")
+            return vsim::cli::simulateFem(arguments, progress);
         if (command == "validate")
             return vsim::cli::validateSolvers(arguments, progress);
         if (command == "demo-study")

@@ -1,0 +1,52 @@
+#include "CliSupport.h"
+
+#include "vsim/core/Error.h"
+
+#include <sstream>
+
+namespace vsim::cli {
+
+std::string chooseArtifact(const study::Study& study, const std::string& wanted, study::ArtifactKind kind,
+                           const std::string& missing)
+{
+    if (!wanted.empty())
+        return study.artifact(wanted).id;
+    for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend(); ++it)
+        if (it->kind == kind && !it->damaged)
+            return it->id;
+    throw Error(missing);
+}
+
+std::string chooseCenterlines(const study::Study& study, const std::string& wanted)
+{
+    if (!wanted.empty())
+        return study.artifact(wanted).id;
+    for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend(); ++it)
+        if (it->kind == study::ArtifactKind::Skeleton && it->provenance.command == "centerline" && !it->damaged)
+            return it->id;
+    throw Error("the study has no centerlines: run vascusim-cli centerline first");
+}
+
+void applyParameters(const Arguments& arguments, ParameterSet& parameters)
+{
+    for (const auto& [name, value] : arguments.options)
+        if (name == "param")
+            parameters.setFromText(value);
+}
+
+std::string formatNumber(double value)
+{
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+std::map<std::string, std::string> provenanceParameters(const ParameterSet& parameters)
+{
+    std::map<std::string, std::string> text;
+    for (const auto& [key, value] : parameters.values())
+        text[key] = formatNumber(value);
+    return text;
+}
+
+} // namespace vsim::cli

@@ -1,0 +1,19 @@
+#pragma once
+
+// A simulation run as files ParaView opens: frames/frame_NNNN.vtu, series.pvd (the frames with their times) and
+// metrics.json, in a folder of the caller's choice.
+
+#include "vsim/core/TetMesh.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vsim::study {
+
+/// Writes `frames` (one per time in `times`, s) and `metricsJson` into `folder` (created; existing frames of the
+/// same names are replaced). Throws vsim::Error when a file cannot be written or the counts differ.
+void writeRunSeries(const std::filesystem::path& folder, const std::vector<TetMesh>& frames,
+                    const std::vector<double>& times, const std::string& metricsJson);
+
+} // namespace vsim::study
