@@ -2,6 +2,7 @@
 
 #include "CliSupport.h"
 #include "vsim/core/Error.h"
+#include "vsim/mesh/SurfaceRemeshing.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/mesh/WallMesh.h"
 #include "vsim/sim/fem/FemProtocols.h"
@@ -27,19 +28,26 @@ int meshWall(const Arguments& arguments, const Progress& progress)
     ParameterSet surfaceParameters(mesh::surfaceParameters());
     surfaceParameters.set("target_vertices", std::stod(arguments.option("target-vertices", "3000")));
     progress.report(0.0, "lumen surface");
-    const mesh::VesselSurface lumen =
-        mesh::extractVesselSurface(study.loadLabel(labelId), 1, surfaceParameters, progress.subRange(0.0, 0.8));
-    const mesh::WallMesh wall =
-        mesh::buildWallMesh(lumen.surface, mesh::vesselEnds(study.loadSkeleton(centerlinesId)), thickness);
+    const mesh::VesselSurface decimated =
+        mesh::extractVesselSurface(study.loadLabel(labelId), 1, surfaceParameters, progress.subRange(0.0, 0.7));
+    // Decimation keeps the shape but leaves slivers; remeshing evens the triangles: edges of the budget's length,
+    // shorter in thin vessels (0.8 of the local radius) so that they keep several edges around.
+    const SkeletonGraph centerlines = study.loadSkeleton(centerlinesId);
+    const double edge = mesh::edgeForVertexBudget(decimated.surface.area(), surfaceParameters.get("target_vertices"));
+    progress.report(0.7, "remeshing");
+    const TriangleMesh lumen = mesh::remeshIsotropic(decimated.surface, mesh::vesselSizing(centerlines, 0.8, edge));
+    const mesh::WallMesh wall = mesh::buildWallMesh(lumen, mesh::vesselEnds(centerlines), thickness);
     study::Provenance provenance;
     provenance.command = "mesh wall";
     provenance.inputs = {labelId, centerlinesId};
     provenance.parameters = provenanceParameters(surfaceParameters);
     provenance.parameters["thickness_mm"] = formatNumber(thickness);
+    provenance.parameters["remesh_edge_mm"] = formatNumber(edge);
     const std::string id = study.addTetMesh(wall.mesh, "Vessel wall", provenance, wall.warnings);
     study.setArtifactAttributes(id, {{"min_dihedral_deg", formatNumber(wall.minDihedralDeg)},
                                      {"mean_min_dihedral_deg", formatNumber(wall.meanMinDihedralDeg)},
                                      {"inverted_elements", std::to_string(wall.inverted)},
+                                     {"elements_under_5_deg", std::to_string(wall.slivers)},
                                      {"ends", std::to_string(wall.endNodes.size())}});
     study.save();
     progress.report(1.0, "saved");
@@ -50,8 +58,12 @@ int meshWall(const Arguments& arguments, const Progress& progress)
                                 {"nodes", wall.mesh.points.size()},
                                 {"tets", wall.mesh.tets.size()},
                                 {"thickness_mm", thickness},
-                                {"surface_vertices", lumen.surface.points.size()},
+                                {"surface_vertices", lumen.points.size()},
+                                {"remesh_edge_mm", edge},
+                                {"smallest_surface_angle_deg", mesh::minTriangleAngle(lumen)},
+                                {"elements_under_5_deg", wall.slivers},
                                 {"min_dihedral_deg", wall.minDihedralDeg},
+                                {"worst_element_mm", {wall.worstElementMm.x(), wall.worstElementMm.y(), wall.worstElementMm.z()}},
                                 {"mean_min_dihedral_deg", wall.meanMinDihedralDeg},
                                 {"inverted_elements", wall.inverted},
                                 {"end_nodes", ends},

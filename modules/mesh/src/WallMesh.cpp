@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -13,15 +14,24 @@ namespace vsim::mesh {
 namespace {
 
 /// Removes the triangles of each end's cap (a vertex beyond the cut plane, one radius inside the end, within three
-/// radii of it). Returns the surface and, per vertex, the end whose new boundary it lies on (-1: none).
+/// radii or four mean edges of it). Returns the surface and, per vertex, the end whose new boundary it lies on (-1: none).
 std::pair<TriangleMesh, std::vector<int>> openEnds(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends,
                                                    std::vector<std::string>& warnings)
 {
+    // The cut sphere: three radii, and at least four mean edge lengths (a thin vessel's tip radius is small).
+    double edgeSum = 0.0;
+    for (const auto& t : lumen.triangles)
+        edgeSum += (lumen.points[std::size_t(t[1])] - lumen.points[std::size_t(t[0])]).norm();
+    const double meanEdge = edgeSum / double(lumen.triangles.size());
     std::vector<Eigen::Vector3d> planePoint(ends.size());
+    std::vector<double> reach(ends.size());
     for (std::size_t e = 0; e < ends.size(); ++e)
+    {
         planePoint[e] = ends[e].point - ends[e].radiusMm * ends[e].outward;
+        reach[e] = std::max(3.0 * ends[e].radiusMm, 4.0 * meanEdge);
+    }
     auto beyond = [&](const Eigen::Vector3d& v, std::size_t e) {
-        return (v - planePoint[e]).dot(ends[e].outward) > 0.0 && (v - planePoint[e]).norm() < 3.0 * ends[e].radiusMm;
+        return (v - planePoint[e]).dot(ends[e].outward) > 0.0 && (v - planePoint[e]).norm() < reach[e];
     };
     std::vector<std::array<int, 3>> kept;
     std::vector<std::size_t> cutPerEnd(ends.size(), 0);
@@ -43,6 +53,28 @@ std::pair<TriangleMesh, std::vector<int>> openEnds(const TriangleMesh& lumen, co
         if (cutPerEnd[e] == 0)
             throw Error("the vessel end " + std::to_string(e + 1) + " cuts no triangle of the lumen surface: is the "
                         "surface from the same label as the centerlines?");
+    // Keep the largest connected piece: a cut can leave a loose ring of a vessel's cap, which nothing would hold.
+    {
+        std::vector<int> parent(lumen.points.size());
+        for (std::size_t v = 0; v < parent.size(); ++v)
+            parent[v] = int(v);
+        std::function<int(int)> root = [&](int v) { return parent[std::size_t(v)] == v ? v : parent[std::size_t(v)] = root(parent[std::size_t(v)]); };
+        for (const auto& t : kept)
+            for (int k = 1; k < 3; ++k)
+                parent[std::size_t(root(t[std::size_t(k)]))] = root(t[0]);
+        std::map<int, std::size_t> size;
+        for (const auto& t : kept)
+            ++size[root(t[0])];
+        const int largest = std::max_element(size.begin(), size.end(), [](const auto& a, const auto& b) {
+                                return a.second < b.second;
+                            })->first;
+        const std::size_t before = kept.size();
+        kept.erase(std::remove_if(kept.begin(), kept.end(), [&](const auto& t) { return root(t[0]) != largest; }),
+                   kept.end());
+        if (kept.size() < before)
+            warnings.push_back(std::to_string(before - kept.size()) + " triangles in loose pieces left by the end cuts "
+                               "(or apart from the vessel tree) were dropped");
+    }
     // Compact the vertices.
     std::vector<int> newIndex(lumen.points.size(), -1);
     TriangleMesh open;
@@ -74,7 +106,7 @@ std::pair<TriangleMesh, std::vector<int>> openEnds(const TriangleMesh& lumen, co
                     if ((open.points[std::size_t(v)] - planePoint[e]).norm() <
                         (open.points[std::size_t(v)] - planePoint[nearest]).norm())
                         nearest = e;
-                if ((open.points[std::size_t(v)] - planePoint[nearest]).norm() < 3.0 * ends[nearest].radiusMm)
+                if ((open.points[std::size_t(v)] - planePoint[nearest]).norm() < reach[nearest])
                     endOf[std::size_t(v)] = int(nearest);
                 else
                     ++stray;
@@ -165,16 +197,27 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
         for (int v : t)
             normal[std::size_t(v)] += areaNormal;
     }
+    // Smooth the normal field (three 1-ring averages): on a noisy segmented surface neighbouring normals scatter,
+    // which twists the prisms and leaves a flat tet among their three.
+    for (auto& direction : normal)
+        if (direction.norm() > 0.0)
+            direction.normalize();
+    for (int pass = 0; pass < 3; ++pass)
+    {
+        std::vector<Eigen::Vector3d> averaged = normal;
+        for (const auto& t : surface.triangles)
+            for (int k = 0; k < 3; ++k)
+                averaged[std::size_t(t[std::size_t(k)])] += normal[std::size_t(t[std::size_t((k + 1) % 3)])] +
+                                                             normal[std::size_t(t[std::size_t((k + 2) % 3)])];
+        for (std::size_t v = 0; v < normal.size(); ++v)
+            if (averaged[v].norm() > 0.0)
+                normal[v] = averaged[v].normalized();
+    }
     wall.mesh.points = surface.points;
     wall.mesh.points.resize(2 * surface.points.size());
     for (int v = 0; v < n; ++v)
     {
-        Eigen::Vector3d direction = normal[std::size_t(v)];
-        if (endOf[std::size_t(v)] >= 0) // keep the open end planar
-        {
-            const Eigen::Vector3d& axis = ends[std::size_t(endOf[std::size_t(v)])].outward;
-            direction -= direction.dot(axis) * axis;
-        }
+        const Eigen::Vector3d direction = normal[std::size_t(v)];
         if (direction.norm() == 0.0)
             throw Error("a lumen vertex has no normal (degenerate surface)");
         wall.mesh.points[std::size_t(n + v)] = surface.points[std::size_t(v)] + thicknessMm * direction.normalized();
@@ -218,8 +261,14 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
     {
         const double angle = minDihedralAngle(wall.mesh.points[std::size_t(tet[0])], wall.mesh.points[std::size_t(tet[1])],
                                               wall.mesh.points[std::size_t(tet[2])], wall.mesh.points[std::size_t(tet[3])]);
-        smallest = std::min(smallest, angle);
+        if (angle < smallest)
+        {
+            smallest = angle;
+            wall.worstElementMm = 0.25 * (wall.mesh.points[std::size_t(tet[0])] + wall.mesh.points[std::size_t(tet[1])] +
+                                          wall.mesh.points[std::size_t(tet[2])] + wall.mesh.points[std::size_t(tet[3])]);
+        }
         sum += angle;
+        wall.slivers += angle < 5.0;
     }
     wall.minDihedralDeg = smallest;
     wall.meanMinDihedralDeg = sum / double(wall.mesh.tets.size());

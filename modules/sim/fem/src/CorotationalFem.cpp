@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace vsim::sim::fem {
@@ -61,6 +62,7 @@ CorotationalFem::CorotationalFem(std::vector<Eigen::Vector3d> restPositions, std
     m_rotations.assign(m_tets.size(), Eigen::Quaterniond::Identity());
     m_rotatedBlocks.resize(m_tets.size());
     m_elementForces.assign(m_tets.size(), Vector12d::Zero());
+    m_inverted.assign(m_tets.size(), 0);
     m_pattern = BlockSparseMatrix(m_rest.size(), m_tets);
     // Gather lists: counting sort of the element entries by matrix block and by node.
     m_blockEntryStart.assign(m_pattern.blockCount() + 1, 0);
@@ -106,7 +108,8 @@ std::size_t CorotationalFem::updateElements()
         edges << m_positions.segment<3>(3 * tet[1]) - x0, m_positions.segment<3>(3 * tet[2]) - x0,
             m_positions.segment<3>(3 * tet[3]) - x0;
         const Eigen::Matrix3d deformation = edges * m_elements[e].restEdgesInverse;
-        if (deformation.determinant() <= 0.0)
+        m_inverted[e] = deformation.determinant() <= 0.0;
+        if (m_inverted[e])
             ++inverted;
         else
             extractRotation(deformation, m_rotations[e]);
@@ -129,6 +132,19 @@ std::size_t CorotationalFem::updateElements()
         }
     }
     return inverted;
+}
+
+Eigen::Vector3d CorotationalFem::firstInvertedCentroid() const
+{
+    for (std::size_t t = 0; t < m_tets.size(); ++t)
+        if (m_inverted[t])
+        {
+            Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+            for (int node : m_tets[t])
+                centroid += 0.25 * m_positions.segment<3>(3 * node);
+            return centroid;
+        }
+    return Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
 }
 
 Vector12d CorotationalFem::corotatedDisplacement(std::size_t t, const Eigen::Matrix3d& rotation) const

@@ -3,7 +3,6 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/fem/CorotationalFem.h"
-#include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 #include "vsim/sim/fem/Tearing.h"
 
@@ -11,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace vsim::sim::fem {
@@ -171,43 +171,24 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
     for (int step = 1; step <= setup.steps; ++step)
     {
         progress.throwIfCancelled();
-        const double time = setup.quasiStatic ? double(step) / setup.steps : step * h; // quasi-static: load fraction
-        const double pressure = setup.pressurePa(time);
+        const double time = step * h, pressure = setup.pressurePa(time);
         const Eigen::VectorXd lastPositions = model.positions(), lastVelocities = model.velocities();
         std::string guard;
-        if (setup.quasiStatic)
-            try
-            {
-                // Follower load: re-evaluate the pressure on the deformed lumen until the shape settles.
-                for (int pass = 0; pass < 20; ++pass)
-                {
-                    const Eigen::VectorXd before = model.positions();
-                    forces = Eigen::VectorXd::Zero(model.positions().size());
-                    addPressureForces(faceNodes(faces, model), model.positions(), pressure, forces);
-                    cgIterations += solveStatic(model, forces, fixed, 1e-9, 5).cgIterations;
-                    if ((model.positions() - before).norm() <= 1e-10 * model.positions().norm())
-                        break;
-                }
-                if (!finite(model.positions()))
-                    guard = "the solution is no longer finite (NaN or infinity)";
-            }
-            catch (const Error& error)
-            {
-                guard = error.what();
-            }
-        else
+        forces = Eigen::VectorXd::Zero(model.positions().size());
+        addPressureForces(faceNodes(faces, model), model.positions(), pressure, forces);
+        const StepReport report = integrator.step(model, forces, fixed);
+        cgIterations += report.cgIterations;
+        if (!finite(model.positions()))
+            guard = "the solution is no longer finite (NaN or infinity)";
+        else if (report.invertedElements > 0)
         {
-            forces = Eigen::VectorXd::Zero(model.positions().size());
-            addPressureForces(faceNodes(faces, model), model.positions(), pressure, forces);
-            const StepReport report = integrator.step(model, forces, fixed);
-            cgIterations += report.cgIterations;
-            if (!finite(model.positions()))
-                guard = "the solution is no longer finite (NaN or infinity)";
-            else if (report.invertedElements > 0)
-                guard = std::to_string(report.invertedElements) + " elements inverted";
-            else if (!report.cgConverged && report.cgIterations < setup.integrator.cgMaxIterations)
-                guard = "the conjugate gradients broke down (the system is not positive definite)";
+            const Eigen::Vector3d where = 1e3 * model.firstInvertedCentroid();
+            char place[96];
+            std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
+            guard = std::to_string(report.invertedElements) + " elements inverted" + place;
         }
+        else if (!report.cgConverged && report.cgIterations < setup.integrator.cgMaxIterations)
+            guard = "the conjugate gradients broke down (the system is not positive definite)";
         if (!guard.empty())
         {
             model.positions() = lastPositions;
@@ -262,7 +243,7 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
             addFrame(time, pressure);
         progress.report(double(step) / setup.steps, "simulating");
     }
-    const double lastTime = setup.quasiStatic ? double(stepsRun) / setup.steps : stepsRun * h;
+    const double lastTime = stepsRun * h;
     if (!result.stopReason.empty() && result.frameTimesS.back() != lastTime)
         addFrame(lastTime, setup.pressurePa(lastTime)); // the last good state
 

@@ -5,6 +5,7 @@
 
 
 #include <cmath>
+#include <cstdio>
 
 namespace vsim::sim::fem {
 namespace {
@@ -32,8 +33,13 @@ StaticSolveReport solveStatic(CorotationalFem& model, const Eigen::VectorXd& ext
     for (; report.updates < maxUpdates; ++report.updates)
     {
         if (const std::size_t inverted = model.updateElements(); inverted > 0)
-            throw Error(std::to_string(inverted) + " elements inverted during the static solve: the load is too large "
-                                                   "for the mesh, or the constraints do not hold it");
+        {
+            const Eigen::Vector3d where = 1e3 * model.firstInvertedCentroid();
+            char place[96];
+            std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
+            throw Error(std::to_string(inverted) + " elements inverted during the static solve" + place +
+                        ": the load is too large for the mesh, or the constraints do not hold it");
+        }
         const Eigen::VectorXd residual = model.elasticForces() + external;
         const double norm = freeNorm(residual, constrained);
         if (reference == 0.0)

@@ -37,6 +37,8 @@ struct WallMesh
     std::vector<std::vector<int>> endNodes; ///< per end, its nodes (both layers)
     double minDihedralDeg = 0.0;            ///< smallest dihedral angle of any element
     double meanMinDihedralDeg = 0.0;        ///< mean over elements of their smallest dihedral angle
+    std::size_t slivers = 0;                ///< elements with a dihedral angle under 5 degrees
+    Eigen::Vector3d worstElementMm = Eigen::Vector3d::Zero(); ///< centroid of the element with the smallest angle
     std::size_t inverted = 0;               ///< elements that could not be oriented positively (offset folded)
     std::vector<std::string> warnings;
 };

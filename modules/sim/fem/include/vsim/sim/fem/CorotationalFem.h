@@ -54,6 +54,10 @@ public:
     /// its elastic force -R K (R^T x - X) and its rotated stiffness blocks R K_ab R^T, kept for elasticForces()
     /// and assemble(). Returns the number of inverted elements (det F <= 0), whose rotation is left as it was.
     std::size_t updateElements();
+    /// Whether element `tet` was inverted (det F <= 0) in the last element pass.
+    bool isInverted(std::size_t tet) const { return m_inverted[tet] != 0; }
+    /// Centroid (m, current positions) of the first inverted element of the last pass; NaN when none.
+    Eigen::Vector3d firstInvertedCentroid() const;
     /// Elastic forces (N) of the last element pass, gathered per node.
     Eigen::VectorXd elasticForces() const;
     /// Writes c_mass M + c_stiffness R K R^T (the last element pass) into `matrix`, which must have this mesh's
@@ -91,6 +95,7 @@ private:
     // others in its row (K_e annihilates translations), so only the 6 off-diagonal products are computed.
     std::vector<std::array<Eigen::Matrix3d, 10>> m_rotatedBlocks;
     std::vector<Vector12d> m_elementForces;
+    std::vector<std::uint8_t> m_inverted;
     BlockSparseMatrix m_pattern;
     std::vector<std::uint32_t> m_blockEntryStart, m_blockEntries; // entry = 16 * element + 4 * a + b
     std::vector<std::uint32_t> m_nodeEntryStart, m_nodeEntries;   // entry = 4 * element + a

@@ -22,15 +22,12 @@ struct FemRunSetup
     TetMesh wall;                                 ///< mm; point fields "wall_layer" and "end_set"
     ElasticMaterial material;
     BackwardEulerSettings integrator;
-    /// Lumen pressure (Pa) over time (s), or over the load fraction 0..1 when quasiStatic.
+    /// Lumen pressure (Pa) over time (s).
     std::function<double(double timeS)> pressurePa;
     /// Which lumen faces carry the pressure (face centroid, mm); empty: all of them.
     std::function<bool(const Eigen::Vector3d& centroidMm)> loaded;
     int steps = 100;
     int frameEvery = 20;
-    /// Each step finds the static equilibrium under that step's pressure (load increments; follower load
-    /// re-evaluated until the shape settles) instead of a backward Euler step.
-    bool quasiStatic = false;
     bool tearing = false;
     double tearStressPa = 0.0;     ///< largest principal stress that tears an element
     double entropyEnd = 0.0;       ///< stop once the fracture entropy passes this (nats); 0: never
