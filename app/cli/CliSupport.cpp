@@ -17,14 +17,21 @@ std::string chooseArtifact(const study::Study& study, const std::string& wanted,
     throw Error(missing);
 }
 
-std::string chooseCenterlines(const study::Study& study, const std::string& wanted)
+std::string chooseMadeBy(const study::Study& study, const std::string& wanted, study::ArtifactKind kind,
+                         const std::string& command, const std::string& missing)
 {
     if (!wanted.empty())
         return study.artifact(wanted).id;
     for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend(); ++it)
-        if (it->kind == study::ArtifactKind::Skeleton && it->provenance.command == "centerline" && !it->damaged)
+        if (it->kind == kind && it->provenance.command == command && !it->damaged)
             return it->id;
-    throw Error("the study has no centerlines: run vascusim-cli centerline first");
+    throw Error(missing);
+}
+
+std::string chooseCenterlines(const study::Study& study, const std::string& wanted)
+{
+    return chooseMadeBy(study, wanted, study::ArtifactKind::Skeleton, "centerline",
+                        "the study has no centerlines: run vascusim-cli centerline first");
 }
 
 void applyParameters(const Arguments& arguments, ParameterSet& parameters)

@@ -90,8 +90,8 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
     if (protocol != "thesis-rupture" && protocol != "physiological")
         throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
     study::Study study = study::Study::open(bundle);
-    const std::string meshId = chooseArtifact(study, arguments.option("mesh"), study::ArtifactKind::TetMesh,
-                                              "the study has no wall mesh: run vascusim-cli mesh wall first");
+    const std::string meshId = chooseMadeBy(study, arguments.option("mesh"), study::ArtifactKind::TetMesh, "mesh wall",
+                                            "the study has no wall mesh: run vascusim-cli mesh wall first");
     ParameterSet parameters(sim::fem::femParameters());
     applyParameters(arguments, parameters);
     const TetMesh wall = study.loadTetMesh(meshId);
