@@ -2,9 +2,7 @@
 
 #include "CliSupport.h"
 #include "vsim/core/Error.h"
-#include "vsim/mesh/SurfaceRemeshing.h"
-#include "vsim/mesh/VesselSurface.h"
-#include "vsim/mesh/WallMesh.h"
+#include "vsim/app/WallPipeline.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/study/RunSeries.h"
 
@@ -25,30 +23,11 @@ int meshWall(const Arguments& arguments, const Progress& progress)
     const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
                                                "the study has no vessel label: run vascusim-cli segment first");
     const double thickness = std::stod(arguments.option("thickness", "1.5"));
-    ParameterSet surfaceParameters(mesh::surfaceParameters());
-    surfaceParameters.set("target_vertices", std::stod(arguments.option("target-vertices", "3000")));
-    progress.report(0.0, "lumen surface");
-    const mesh::VesselSurface decimated =
-        mesh::extractVesselSurface(study.loadLabel(labelId), 1, surfaceParameters, progress.subRange(0.0, 0.7));
-    // Decimation keeps the shape but leaves slivers; remeshing evens the triangles: edges of the budget's length,
-    // shorter in thin vessels (0.8 of the local radius) so that they keep several edges around.
-    const SkeletonGraph centerlines = study.loadSkeleton(centerlinesId);
-    const double edge = mesh::edgeForVertexBudget(decimated.surface.area(), surfaceParameters.get("target_vertices"));
-    progress.report(0.7, "remeshing");
-    const TriangleMesh lumen = mesh::remeshIsotropic(decimated.surface, mesh::vesselSizing(centerlines, 0.8, edge));
-    const mesh::WallMesh wall = mesh::buildWallMesh(lumen, mesh::vesselEnds(centerlines), thickness);
-    study::Provenance provenance;
-    provenance.command = "mesh wall";
-    provenance.inputs = {labelId, centerlinesId};
-    provenance.parameters = provenanceParameters(surfaceParameters);
-    provenance.parameters["thickness_mm"] = formatNumber(thickness);
-    provenance.parameters["remesh_edge_mm"] = formatNumber(edge);
-    const std::string id = study.addTetMesh(wall.mesh, "Vessel wall", provenance, wall.warnings);
-    study.setArtifactAttributes(id, {{"min_dihedral_deg", formatNumber(wall.minDihedralDeg)},
-                                     {"mean_min_dihedral_deg", formatNumber(wall.meanMinDihedralDeg)},
-                                     {"inverted_elements", std::to_string(wall.inverted)},
-                                     {"elements_under_5_deg", std::to_string(wall.slivers)},
-                                     {"ends", std::to_string(wall.endNodes.size())}});
+    const double targetVertices = std::stod(arguments.option("target-vertices", "3000"));
+    const app::WallMeshBuild build = app::buildWallMesh(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
+                                                        thickness, targetVertices, progress.subRange(0.0, 0.95));
+    const mesh::WallMesh& wall = build.wall;
+    const std::string id = app::addWallMesh(study, build, labelId, centerlinesId, thickness, targetVertices);
     study.save();
     progress.report(1.0, "saved");
     nlohmann::json ends = nlohmann::json::array();
@@ -58,9 +37,9 @@ int meshWall(const Arguments& arguments, const Progress& progress)
                                 {"nodes", wall.mesh.points.size()},
                                 {"tets", wall.mesh.tets.size()},
                                 {"thickness_mm", thickness},
-                                {"surface_vertices", lumen.points.size()},
-                                {"remesh_edge_mm", edge},
-                                {"smallest_surface_angle_deg", mesh::minTriangleAngle(lumen)},
+                                {"surface_vertices", build.lumenVertices},
+                                {"remesh_edge_mm", build.remeshEdgeMm},
+                                {"smallest_surface_angle_deg", build.smallestSurfaceAngleDeg},
                                 {"elements_under_5_deg", wall.slivers},
                                 {"min_dihedral_deg", wall.minDihedralDeg},
                                 {"worst_element_mm", {wall.worstElementMm.x(), wall.worstElementMm.y(), wall.worstElementMm.z()}},
@@ -94,16 +73,10 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                             "the study has no wall mesh: run vascusim-cli mesh wall first");
     ParameterSet parameters(sim::fem::femParameters());
     applyParameters(arguments, parameters);
-    const TetMesh wall = study.loadTetMesh(meshId);
-    std::string centerlinesId;
-    sim::fem::FemRunResult run;
-    if (protocol == "thesis-rupture")
-        run = sim::fem::runThesisRupture(wall, parameters, progress.subRange(0.0, 0.95));
-    else
-    {
-        centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
-        run = sim::fem::runPhysiological(wall, study.loadSkeleton(centerlinesId), parameters, progress.subRange(0.0, 0.95));
-    }
+    const std::string centerlinesId =
+        protocol == "physiological" ? chooseCenterlines(study, arguments.option("centerlines")) : std::string();
+    const sim::fem::FemRunResult run =
+        app::runWallProtocol(study, protocol, meshId, centerlinesId, parameters, progress.subRange(0.0, 0.95));
     nlohmann::json metrics(run.metrics);
     nlohmann::json entropy = nlohmann::json::array();
     for (const auto& [pressure, value] : run.entropyCurve)
@@ -117,22 +90,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                   {"frames", run.frames.size()},
                                   {"parameters", provenanceParameters(parameters)}};
 
-    study::Provenance provenance;
-    provenance.command = "simulate fem";
-    provenance.inputs = {meshId};
-    if (!centerlinesId.empty())
-        provenance.inputs.push_back(centerlinesId);
-    provenance.parameters = provenanceParameters(parameters);
-    provenance.parameters["protocol"] = protocol;
-    provenance.parameters["backend"] = "cpu";
-    std::vector<std::string> warnings = run.warnings;
-    if (!run.stopReason.empty())
-        warnings.push_back("stopped early: " + run.stopReason);
-    const std::string id = study.addTetMesh(run.frames.back(), "Wall stress (" + protocol + ")", provenance, warnings);
-    std::map<std::string, std::string> attributes;
-    for (const auto& [key, value] : run.metrics)
-        attributes[key] = formatNumber(value);
-    study.setArtifactAttributes(id, attributes);
+    const std::string id = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters);
     study.save();
     if (arguments.hasOption("out"))
         study::writeRunSeries(arguments.option("out"), run.frames, run.frameTimesS, document.dump(2));

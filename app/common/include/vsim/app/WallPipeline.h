@@ -1,0 +1,45 @@
+#pragma once
+
+// The wall-mechanics steps as the CLI and the workstation both run them: the wall mesh of a study's vessel label
+// and centerlines, and a wall run added to the study, each with its provenance.
+
+#include "vsim/core/Parameters.h"
+#include "vsim/core/Progress.h"
+#include "vsim/mesh/WallMesh.h"
+#include "vsim/sim/fem/FemRun.h"
+#include "vsim/study/Study.h"
+
+#include <string>
+
+namespace vsim::app {
+
+struct WallMeshBuild
+{
+    mesh::WallMesh wall;
+    std::size_t lumenVertices = 0;
+    double remeshEdgeMm = 0.0;
+    double smallestSurfaceAngleDeg = 0.0;
+};
+
+/// Lumen surface of `label` decimated to `targetVertices`, remeshed (edges of the budget, 0.8 of the local radius
+/// in thin vessels), and the wall of `thicknessMm` opened at the centerline ends.
+WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& centerlines, double thicknessMm,
+                            double targetVertices, const Progress& progress = {});
+
+/// Adds the wall to the study (provenance: label and centerlines, thickness, budget; quality as attributes);
+/// returns its id. The study is not saved.
+std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const std::string& labelId,
+                        const std::string& centerlinesId, double thicknessMm, double targetVertices);
+
+/// Runs `protocol` ("thesis-rupture" or "physiological") on the wall artifact `wallId` (centerlines needed by the
+/// physiological protocol). Throws vsim::Error for an unknown protocol.
+sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::string& protocol, const std::string& wallId,
+                                       const std::string& centerlinesId, const ParameterSet& parameters,
+                                       const Progress& progress = {});
+
+/// Adds a run's last frame to the study ("Wall stress (protocol)", metrics as attributes, warnings and an early
+/// stop as warnings); returns its id. The study is not saved.
+std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
+                       const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters);
+
+} // namespace vsim::app

@@ -1,0 +1,97 @@
+#include "vsim/app/WallPipeline.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/mesh/SurfaceRemeshing.h"
+#include "vsim/mesh/VesselSurface.h"
+#include "vsim/sim/fem/FemProtocols.h"
+
+#include <sstream>
+
+namespace vsim::app {
+namespace {
+
+std::string text(double value)
+{
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+} // namespace
+
+WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& centerlines, double thicknessMm,
+                            double targetVertices, const Progress& progress)
+{
+    ParameterSet surfaceParameters(mesh::surfaceParameters());
+    surfaceParameters.set("target_vertices", targetVertices);
+    progress.report(0.0, "lumen surface");
+    const mesh::VesselSurface decimated = mesh::extractVesselSurface(label, 1, surfaceParameters, progress.subRange(0.0, 0.7));
+    WallMeshBuild build;
+    // Decimation keeps the shape but leaves slivers; remeshing evens the triangles (SurfaceRemeshing.h).
+    build.remeshEdgeMm = mesh::edgeForVertexBudget(decimated.surface.area(), targetVertices);
+    progress.report(0.7, "remeshing");
+    const TriangleMesh lumen =
+        mesh::remeshIsotropic(decimated.surface, mesh::vesselSizing(centerlines, 0.8, build.remeshEdgeMm));
+    progress.throwIfCancelled();
+    progress.report(0.9, "wall");
+    build.lumenVertices = lumen.points.size();
+    build.smallestSurfaceAngleDeg = mesh::minTriangleAngle(lumen);
+    build.wall = mesh::buildWallMesh(lumen, mesh::vesselEnds(centerlines), thicknessMm);
+    progress.report(1.0, "wall");
+    return build;
+}
+
+std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const std::string& labelId,
+                        const std::string& centerlinesId, double thicknessMm, double targetVertices)
+{
+    study::Provenance provenance;
+    provenance.command = "mesh wall";
+    provenance.inputs = {labelId, centerlinesId};
+    provenance.parameters = {{"thickness_mm", text(thicknessMm)},
+                             {"target_vertices", text(targetVertices)},
+                             {"remesh_edge_mm", text(build.remeshEdgeMm)}};
+    const std::string id = study.addTetMesh(build.wall.mesh, "Vessel wall", provenance, build.wall.warnings);
+    study.setArtifactAttributes(id, {{"min_dihedral_deg", text(build.wall.minDihedralDeg)},
+                                     {"mean_min_dihedral_deg", text(build.wall.meanMinDihedralDeg)},
+                                     {"elements_under_5_deg", std::to_string(build.wall.slivers)},
+                                     {"inverted_elements", std::to_string(build.wall.inverted)},
+                                     {"ends", std::to_string(build.wall.endNodes.size())}});
+    return id;
+}
+
+sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::string& protocol, const std::string& wallId,
+                                       const std::string& centerlinesId, const ParameterSet& parameters,
+                                       const Progress& progress)
+{
+    const TetMesh wall = study.loadTetMesh(wallId);
+    if (protocol == "thesis-rupture")
+        return sim::fem::runThesisRupture(wall, parameters, progress);
+    if (protocol == "physiological")
+        return sim::fem::runPhysiological(wall, study.loadSkeleton(centerlinesId), parameters, progress);
+    throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
+}
+
+std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
+                       const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters)
+{
+    study::Provenance provenance;
+    provenance.command = "simulate fem";
+    provenance.inputs = {wallId};
+    if (!centerlinesId.empty())
+        provenance.inputs.push_back(centerlinesId);
+    for (const auto& [key, value] : parameters.values())
+        provenance.parameters[key] = text(value);
+    provenance.parameters["protocol"] = protocol;
+    provenance.parameters["backend"] = "cpu";
+    std::vector<std::string> warnings = run.warnings;
+    if (!run.stopReason.empty())
+        warnings.push_back("stopped early: " + run.stopReason);
+    const std::string id = study.addTetMesh(run.frames.back(), "Wall stress (" + protocol + ")", provenance, warnings);
+    std::map<std::string, std::string> attributes;
+    for (const auto& [key, value] : run.metrics)
+        attributes[key] = text(value);
+    study.setArtifactAttributes(id, attributes);
+    return id;
+}
+
+} // namespace vsim::app
