@@ -5,6 +5,8 @@
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/fem/FemProtocols.h"
 
+#include <algorithm>
+#include <map>
 #include <sstream>
 
 namespace vsim::app {
@@ -18,6 +20,38 @@ std::string text(double value)
 }
 
 } // namespace
+
+std::vector<ParameterSpec> wallMeshParameters()
+{
+    const std::string group = "Wall mesh";
+    return {
+        {"thickness_mm", "Wall thickness", "mm", 1.5, 0.1, 10, group, "Offset of the lumen surface (one element layer)."},
+        {"target_vertices", "Vertex budget", "", 3000, 200, 200000, group,
+         "Sets the largest edge (thin vessels get 0.8 of their radius); thesis meshes: 1,427-2,251 vertices.",
+         ParameterSpec::Kind::Integer},
+    };
+}
+
+TriangleMesh frameSurface(const TetMesh& frame, const std::string& cellField)
+{
+    const auto values = frame.cellFields.find(cellField);
+    if (values == frame.cellFields.end())
+        throw Error("the frame has no cell field '" + cellField + "'");
+    TriangleMesh surface;
+    surface.points = frame.points;
+    std::vector<std::size_t> owners;
+    surface.triangles = boundaryFaces(frame.tets, &owners);
+    std::vector<double> sum(frame.points.size(), 0.0), count(frame.points.size(), 0.0);
+    for (std::size_t f = 0; f < surface.triangles.size(); ++f)
+        for (int node : surface.triangles[f])
+            sum[std::size_t(node)] += values->second[owners[f]], count[std::size_t(node)] += 1.0;
+    std::vector<double> field(frame.points.size(), 0.0);
+    for (std::size_t n = 0; n < field.size(); ++n)
+        if (count[n] > 0.0)
+            field[n] = sum[n] / count[n];
+    surface.pointFields[cellField] = field;
+    return surface;
+}
 
 WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& centerlines, double thicknessMm,
                             double targetVertices, const Progress& progress)

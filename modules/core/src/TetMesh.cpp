@@ -45,23 +45,37 @@ void TetMesh::validate() const
             throw Error("cell field length differs from the element count", {{"field", name}});
 }
 
-std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets)
+std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets,
+                                              std::vector<std::size_t>* owners)
 {
     // The face opposite corner a of a positively oriented tet, in this order, has an outward normal.
     static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-    std::map<std::array<int, 3>, std::pair<int, std::array<int, 3>>> faces; // sorted corners -> (count, face)
-    for (const auto& tet : tets)
+    struct Seen
+    {
+        int count;
+        std::array<int, 3> face;
+        std::size_t owner;
+    };
+    std::map<std::array<int, 3>, Seen> faces; // sorted corners -> what was seen
+    for (std::size_t t = 0; t < tets.size(); ++t)
         for (const auto& local : kFaces)
         {
-            const std::array<int, 3> face{tet[std::size_t(local[0])], tet[std::size_t(local[1])], tet[std::size_t(local[2])]};
+            const std::array<int, 3> face{tets[t][std::size_t(local[0])], tets[t][std::size_t(local[1])],
+                                          tets[t][std::size_t(local[2])]};
             std::array<int, 3> key = face;
             std::sort(key.begin(), key.end());
-            ++faces.try_emplace(key, 0, face).first->second.first;
+            ++faces.try_emplace(key, Seen{0, face, t}).first->second.count;
         }
     std::vector<std::array<int, 3>> boundary;
-    for (const auto& [key, entry] : faces)
-        if (entry.first == 1)
-            boundary.push_back(entry.second);
+    if (owners)
+        owners->clear();
+    for (const auto& [key, seen] : faces)
+        if (seen.count == 1)
+        {
+            boundary.push_back(seen.face);
+            if (owners)
+                owners->push_back(seen.owner);
+        }
     return boundary;
 }
 

@@ -1,5 +1,6 @@
 #include "vsim/viz/VolumeView3D.h"
 
+#include "vsim/core/Error.h"
 #include "vsim/interop/VtkImage.h"
 #include "vsim/interop/VtkMesh.h"
 
@@ -7,14 +8,19 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkColorTransferFunction.h>
+#include <vtkDoubleArray.h>
 #include <vtkImageData.h>
+#include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPiecewiseFunction.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPointData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextProperty.h>
 #include <vtkSmartVolumeMapper.h>
 #include <vtkVolume.h>
 #include <vtkVolumeProperty.h>
@@ -31,6 +37,9 @@ struct VolumeView3D::Scene
     vtkSmartPointer<vtkVolume> volume = vtkSmartPointer<vtkVolume>::New();
     std::vector<vtkSmartPointer<vtkActor>> surfaces;
     std::vector<vtkSmartPointer<vtkActor>> lines;
+    vtkSmartPointer<vtkActor> fieldSurface;
+    vtkSmartPointer<vtkScalarBarActor> legend;
+    QString legendTitle;
     int lineCount = 0;
 };
 
@@ -104,8 +113,59 @@ void VolumeView3D::clearSurfaces()
     for (const auto& actor : m_scene->surfaces)
         renderer()->RemoveActor(actor);
     m_scene->surfaces.clear();
+    if (m_scene->fieldSurface)
+        renderer()->RemoveActor(m_scene->fieldSurface);
+    m_scene->fieldSurface = nullptr;
+    if (m_scene->legend)
+        m_scene->legend->SetVisibility(false);
+    m_scene->legendTitle.clear();
     update();
 }
+
+void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::string& field, double low, double high,
+                                    const QString& legendTitle)
+{
+    const auto values = surface.pointFields.find(field);
+    if (values == surface.pointFields.end())
+        throw Error("the surface has no field '" + field + "' to colour by");
+    vtkSmartPointer<vtkPolyData> polyData = interop::toVtk(surface);
+    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+    scalars->SetName(field.c_str());
+    for (double v : values->second)
+        scalars->InsertNextValue(v);
+    polyData->GetPointData()->SetScalars(scalars);
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetHueRange(0.667, 0.0); // blue (low) to red (high)
+    table->SetTableRange(low, high);
+    table->Build();
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(polyData);
+    mapper->SetLookupTable(table);
+    mapper->SetScalarRange(low, high);
+    mapper->ScalarVisibilityOn();
+    mapper->SetScalarModeToUsePointData();
+    if (m_scene->fieldSurface)
+        renderer()->RemoveActor(m_scene->fieldSurface);
+    m_scene->fieldSurface = vtkSmartPointer<vtkActor>::New();
+    m_scene->fieldSurface->SetMapper(mapper);
+    renderer()->AddActor(m_scene->fieldSurface);
+    if (!m_scene->legend)
+    {
+        m_scene->legend = vtkSmartPointer<vtkScalarBarActor>::New();
+        m_scene->legend->SetNumberOfLabels(5);
+        m_scene->legend->SetWidth(0.12);
+        m_scene->legend->SetHeight(0.6);
+        m_scene->legend->GetTitleTextProperty()->SetFontSize(12);
+        renderer()->AddViewProp(m_scene->legend);
+    }
+    m_scene->legend->SetLookupTable(table);
+    m_scene->legend->SetTitle(legendTitle.toUtf8().constData());
+    m_scene->legend->SetVisibility(true);
+    m_scene->legendTitle = legendTitle;
+    update();
+}
+
+QString VolumeView3D::legendTitle() const { return m_scene->legendTitle; }
 
 void VolumeView3D::setSurfaceOpacity(double opacity)
 {

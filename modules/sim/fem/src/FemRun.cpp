@@ -28,25 +28,24 @@ constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}; // ou
 std::vector<ElementFace> lumenElementFaces(const TetMesh& wall, const std::vector<double>& layer,
                                            const std::function<bool(const Eigen::Vector3d&)>& loaded)
 {
-    std::map<std::array<int, 3>, std::pair<int, ElementFace>> faces;
-    for (std::size_t t = 0; t < wall.tets.size(); ++t)
-        for (int k = 0; k < 4; ++k)
-        {
-            std::array<int, 3> key{wall.tets[t][std::size_t(kFaces[k][0])], wall.tets[t][std::size_t(kFaces[k][1])],
-                                   wall.tets[t][std::size_t(kFaces[k][2])]};
-            std::sort(key.begin(), key.end());
-            ++faces.try_emplace(key, 0, ElementFace{t, k}).first->second.first;
-        }
+    std::vector<std::size_t> owners;
+    const std::vector<std::array<int, 3>> faces = boundaryFaces(wall.tets, &owners);
     std::vector<ElementFace> lumen;
-    for (const auto& [key, entry] : faces)
+    for (std::size_t f = 0; f < faces.size(); ++f)
     {
-        if (entry.first != 1 || layer[std::size_t(key[0])] != 0.0 || layer[std::size_t(key[1])] != 0.0 ||
-            layer[std::size_t(key[2])] != 0.0)
+        const auto& face = faces[f];
+        if (layer[std::size_t(face[0])] != 0.0 || layer[std::size_t(face[1])] != 0.0 || layer[std::size_t(face[2])] != 0.0)
             continue;
         const Eigen::Vector3d centroid =
-            (wall.points[std::size_t(key[0])] + wall.points[std::size_t(key[1])] + wall.points[std::size_t(key[2])]) / 3.0;
-        if (!loaded || loaded(centroid))
-            lumen.push_back(entry.second);
+            (wall.points[std::size_t(face[0])] + wall.points[std::size_t(face[1])] + wall.points[std::size_t(face[2])]) / 3.0;
+        if (loaded && !loaded(centroid))
+            continue;
+        // The face is opposite the owner's one corner that is not on it.
+        const auto& tet = wall.tets[owners[f]];
+        int opposite = 0;
+        while (std::find(face.begin(), face.end(), tet[std::size_t(opposite)]) != face.end())
+            ++opposite;
+        lumen.push_back({owners[f], opposite});
     }
     return lumen;
 }

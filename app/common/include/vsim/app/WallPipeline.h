@@ -13,6 +13,9 @@
 
 namespace vsim::app {
 
+/// The wall mesh's parameters: thickness_mm (1.5) and target_vertices (3,000).
+std::vector<ParameterSpec> wallMeshParameters();
+
 struct WallMeshBuild
 {
     mesh::WallMesh wall;
@@ -41,5 +44,9 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
 /// stop as warnings); returns its id. The study is not saved.
 std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
                        const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters);
+
+/// The boundary of a run frame (mm) with the cell field `cellField` carried to its points (mean over the
+/// boundary faces around each point), for colouring.
+TriangleMesh frameSurface(const TetMesh& frame, const std::string& cellField);
 
 } // namespace vsim::app

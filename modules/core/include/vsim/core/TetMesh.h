@@ -28,7 +28,9 @@ struct TetMesh
 };
 
 /// Faces that belong to one element only, ordered so that their normal (p1-p0) x (p2-p0) points out of the
-/// solid (the elements must be positively oriented, as TetMesh::validate requires).
-std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets);
+/// solid (the elements must be positively oriented, as TetMesh::validate requires). `owners`, when given, receives
+/// each face's element.
+std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets,
+                                              std::vector<std::size_t>* owners = nullptr);
 
 } // namespace vsim

@@ -6,6 +6,9 @@
 #include "vsim/viz/VtkView.h"
 
 #include <QColor>
+#include <QString>
+
+#include <string>
 
 namespace vsim::viz {
 
@@ -25,6 +28,12 @@ public:
     /// Adds a surface (mm, LPS) drawn in `colour`; returns nothing, surfaces stay until clearSurfaces().
     void addSurface(const TriangleMesh& surface, const QColor& colour);
     void clearSurfaces();
+    /// Shows a surface coloured by its point field `field` (blue -> red over [low, high]) with a colour legend
+    /// titled `legendTitle` (units included); replaces any earlier coloured surface.
+    void showFieldSurface(const TriangleMesh& surface, const std::string& field, double low, double high,
+                          const QString& legendTitle);
+    /// The legend's title, empty when no coloured surface is shown.
+    QString legendTitle() const;
     /// Opacity of every surface (0..1): lowered so that skeletons and centerlines inside show through.
     void setSurfaceOpacity(double opacity);
     /// Draws the edges of a skeleton or centerline graph (mm, LPS) as lines `widthPixels` wide, on top of the
