@@ -235,47 +235,47 @@
         <translation>Artefakt &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="86"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="87"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="87"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="88"/>
         <source>Window/Level: &amp;CTA</source>
         <translation>Fenster: &amp;CTA</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="88"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="89"/>
         <source>Window/Level: &amp;Soft Tissue</source>
         <translation>Fenster: &amp;Weichteil</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="89"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="90"/>
         <source>Window/Level: &amp;Bone</source>
         <translation>Fenster: &amp;Knochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="91"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="92"/>
         <source>3D: &amp;Anterior View</source>
         <translation>3D: &amp;Ansicht von vorn</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="96"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="97"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="97"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="98"/>
         <source>&amp;About VascuSim</source>
         <translation>Ü&amp;ber VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="115"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="116"/>
         <source>About VascuSim</source>
         <translation>Über VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="116"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="117"/>
         <source>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patient-specific physics for vascular procedure planning.&lt;/p&gt;&lt;p&gt;Results support planning and need clinical judgement.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -312,31 +312,35 @@
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="100"/>
         <location filename="../app/gui/MainWindow.cpp" line="104"/>
-        <location filename="../app/gui/MainWindow.cpp" line="113"/>
+        <location filename="../app/gui/MainWindow.cpp" line="114"/>
         <source>Import</source>
         <translation>Importieren</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="100"/>
         <location filename="../app/gui/MainWindow.cpp" line="104"/>
-        <location filename="../app/gui/MainWindow.cpp" line="115"/>
+        <location filename="../app/gui/MainWindow.cpp" line="116"/>
         <source>Segment</source>
         <translation>Segmentieren</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="100"/>
         <location filename="../app/gui/MainWindow.cpp" line="104"/>
-        <location filename="../app/gui/MainWindow.cpp" line="117"/>
+        <location filename="../app/gui/MainWindow.cpp" line="118"/>
         <source>Skeleton &amp;&amp; Centerlines</source>
         <translation>Skelett &amp;&amp; Mittellinien</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="100"/>
+        <location filename="../app/gui/MainWindow.cpp" line="104"/>
+        <location filename="../app/gui/MainWindow.cpp" line="120"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="100"/>
+        <location filename="../app/gui/MainWindow.cpp" line="105"/>
+        <location filename="../app/gui/MainWindow.cpp" line="122"/>
         <source>Simulate</source>
         <translation>Simulieren</translation>
     </message>
@@ -346,37 +350,37 @@
         <translation>Bericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="107"/>
+        <location filename="../app/gui/MainWindow.cpp" line="108"/>
         <source>Not available in this version yet</source>
         <translation>In dieser Version noch nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="120"/>
+        <location filename="../app/gui/MainWindow.cpp" line="125"/>
         <source>Workflow</source>
         <translation>Arbeitsablauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="132"/>
+        <location filename="../app/gui/MainWindow.cpp" line="137"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="160"/>
+        <location filename="../app/gui/MainWindow.cpp" line="165"/>
         <source>No study</source>
         <translation>Keine Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="161"/>
+        <location filename="../app/gui/MainWindow.cpp" line="166"/>
         <source>%1[*] - VascuSim</source>
         <translation>%1[*] - VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="178"/>
+        <location filename="../app/gui/MainWindow.cpp" line="183"/>
         <source>damaged</source>
         <translation>beschädigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MainWindow.cpp" line="183"/>
+        <location filename="../app/gui/MainWindow.cpp" line="188"/>
         <source>%n warning(s)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -384,74 +388,74 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="189"/>
+        <location filename="../app/gui/MainWindow.cpp" line="194"/>
         <source>%1, made by &quot;%2&quot; on %3</source>
         <translation>%1, erzeugt von &quot;%2&quot; am %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="201"/>
+        <location filename="../app/gui/MainWindow.cpp" line="206"/>
         <source>%1 failed</source>
         <translation>%1 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="218"/>
+        <location filename="../app/gui/MainWindow.cpp" line="223"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="34"/>
         <source>Open study</source>
         <translation>Studie öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="238"/>
+        <location filename="../app/gui/MainWindow.cpp" line="243"/>
         <source>Study opened with problems</source>
         <translation>Studie mit Problemen geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="257"/>
+        <location filename="../app/gui/MainWindow.cpp" line="262"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
         <source>New study</source>
         <translation>Neue Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="268"/>
+        <location filename="../app/gui/MainWindow.cpp" line="273"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="44"/>
         <source>Import volume</source>
         <translation>Volumen importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="277"/>
-        <location filename="../app/gui/MainWindow.cpp" line="301"/>
+        <location filename="../app/gui/MainWindow.cpp" line="282"/>
+        <location filename="../app/gui/MainWindow.cpp" line="306"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="289"/>
-        <location filename="../app/gui/MainWindow.cpp" line="306"/>
+        <location filename="../app/gui/MainWindow.cpp" line="294"/>
+        <location filename="../app/gui/MainWindow.cpp" line="311"/>
         <source>Import DICOM</source>
         <translation>DICOM importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="326"/>
-        <location filename="../app/gui/MainWindow.cpp" line="395"/>
+        <location filename="../app/gui/MainWindow.cpp" line="331"/>
+        <location filename="../app/gui/MainWindow.cpp" line="400"/>
         <source>Save study</source>
         <translation>Studie speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="338"/>
+        <location filename="../app/gui/MainWindow.cpp" line="343"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
         <source>Save study as</source>
         <translation>Studie speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="357"/>
+        <location filename="../app/gui/MainWindow.cpp" line="362"/>
         <source>Show image</source>
         <translation>Bild anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="382"/>
+        <location filename="../app/gui/MainWindow.cpp" line="387"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="383"/>
+        <location filename="../app/gui/MainWindow.cpp" line="388"/>
         <source>Save the changes to this study before closing?</source>
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
     </message>
@@ -547,21 +551,21 @@
         <translation>Segmentierung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="165"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="177"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="197"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="161"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="173"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="193"/>
         <source>Segment vessels</source>
         <translation>Gefäße segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="165"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="161"/>
         <source>The study has no CT image: import one first.</source>
         <translation>Die Studie enthält kein CT-Bild: zuerst eines importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="212"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="225"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="251"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="208"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="221"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="247"/>
         <source>Skeleton and centerlines</source>
         <translation>Skelett und Mittellinien</translation>
     </message>
@@ -617,7 +621,7 @@
     </message>
     <message>
         <location filename="../app/gui/MainWindowLabelEditing.cpp" line="94"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="212"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="208"/>
         <source>The study has no vessel label: segment the vessels first.</source>
         <translation>Die Studie enthält keine Gefäßmaske: zuerst die Gefäße segmentieren.</translation>
     </message>
@@ -639,15 +643,101 @@
     </message>
     <message>
         <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="252"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="248"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowVessels.cpp" line="146"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="253"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="249"/>
         <source>Centerlines</source>
         <translation>Mittellinien</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="25"/>
+        <source>&amp;Wall</source>
+        <translation>&amp;Wand</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="26"/>
+        <source>Build &amp;Wall Mesh</source>
+        <translation>&amp;Wandnetz erzeugen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="27"/>
+        <source>Wall Stress at &amp;Blood Pressure</source>
+        <translation>Wandspannung bei &amp;Blutdruck</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="29"/>
+        <source>&amp;Thesis Rupture Protocol</source>
+        <translation>&amp;Ruptur-Protokoll der Dissertation</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="31"/>
+        <source>Wall &amp;Parameters...</source>
+        <translation>Wand-&amp;Parameter...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="32"/>
+        <source>Wall parameters</source>
+        <translation>Wandparameter</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="33"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="45"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="52"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="59"/>
+        <source>Wall mesh</source>
+        <translation>Wandnetz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="33"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="75"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="91"/>
+        <source>Wall mechanics</source>
+        <translation>Wandmechanik</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="45"/>
+        <source>The wall needs a vessel label and centerlines: run Segment and Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>Die Wand braucht ein Gefäßlabel und Mittellinien: zuerst Segmentieren und Skelett &amp;&amp; Mittellinien ausführen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="60"/>
+        <source>Wall: %1 elements, smallest dihedral angle %2 deg</source>
+        <translation>Wand: %1 Elemente, kleinster Diederwinkel %2 Grad</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="75"/>
+        <source>Build the wall mesh first (Wall &gt; Build Wall Mesh).</source>
+        <translation>Zuerst das Wandnetz erzeugen (Wand &gt; Wandnetz erzeugen).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="81"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="88"/>
+        <source>Wall stress</source>
+        <translation>Wandspannung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="81"/>
+        <source>Thesis rupture protocol</source>
+        <translation>Ruptur-Protokoll der Dissertation</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="91"/>
+        <source>The run stopped early: %1</source>
+        <translation>Die Rechnung endete vorzeitig: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="93"/>
+        <source>Peak wall stress %1 kPa, peak rupture index %2</source>
+        <translation>Höchste Wandspannung %1 kPa, höchster Rupturindex %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="109"/>
+        <source>von Mises (kPa)</source>
+        <translation>von Mises (kPa)</translation>
     </message>
 </context>
 </TS>

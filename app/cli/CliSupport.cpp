@@ -9,12 +9,7 @@ namespace vsim::cli {
 std::string chooseArtifact(const study::Study& study, const std::string& wanted, study::ArtifactKind kind,
                            const std::string& missing)
 {
-    if (!wanted.empty())
-        return study.artifact(wanted).id;
-    for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend(); ++it)
-        if (it->kind == kind && !it->damaged)
-            return it->id;
-    throw Error(missing);
+    return chooseMadeBy(study, wanted, kind, {}, missing);
 }
 
 std::string chooseMadeBy(const study::Study& study, const std::string& wanted, study::ArtifactKind kind,
@@ -22,10 +17,10 @@ std::string chooseMadeBy(const study::Study& study, const std::string& wanted, s
 {
     if (!wanted.empty())
         return study.artifact(wanted).id;
-    for (auto it = study.artifacts().rbegin(); it != study.artifacts().rend(); ++it)
-        if (it->kind == kind && it->provenance.command == command && !it->damaged)
-            return it->id;
-    throw Error(missing);
+    const std::string newest = study.newestArtifact(kind, command);
+    if (newest.empty())
+        throw Error(missing);
+    return newest;
 }
 
 std::string chooseCenterlines(const study::Study& study, const std::string& wanted)

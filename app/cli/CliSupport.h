@@ -14,8 +14,8 @@ namespace vsim::cli {
 /// The artifact to work on: `wanted`, else the newest undamaged one of `kind`; `missing` says what to do first.
 std::string chooseArtifact(const study::Study& study, const std::string& wanted, study::ArtifactKind kind,
                            const std::string& missing);
-/// `wanted`, else the newest undamaged artifact of `kind` that the CLI command `command` made; `missing` says what
-/// to do first.
+/// `wanted`, else the newest undamaged artifact of `kind` that the step `command` made (any, when empty);
+/// `missing` says what to do first.
 std::string chooseMadeBy(const study::Study& study, const std::string& wanted, study::ArtifactKind kind,
                          const std::string& command, const std::string& missing);
 /// `wanted`, else the newest centerlines (a skeleton made by the centerline step).

@@ -101,7 +101,8 @@ void MainWindow::createDocks()
                                 tr("Report")})
     {
         auto* item = new QListWidgetItem(step, m_workflow);
-        if (step != tr("Import") && step != tr("Segment") && step != tr("Skeleton && Centerlines"))
+        if (step != tr("Import") && step != tr("Segment") && step != tr("Skeleton && Centerlines") && step != tr("Mesh") &&
+            step != tr("Simulate"))
         {
             item->setFlags(item->flags() & ~Qt::ItemIsEnabled);
             item->setToolTip(tr("Not available in this version yet"));
@@ -116,6 +117,10 @@ void MainWindow::createDocks()
             segmentVessels();
         else if (item->text() == tr("Skeleton && Centerlines"))
             extractSkeletonAndCenterlines();
+        else if (item->text() == tr("Mesh"))
+            buildWallMesh();
+        else if (item->text() == tr("Simulate"))
+            simulateWall("physiological");
     });
     auto* workflowDock = new QDockWidget(tr("Workflow"), this);
     workflowDock->setObjectName("workflowDock");

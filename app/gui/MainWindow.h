@@ -4,6 +4,7 @@
 #include "TaskRunner.h"
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Parameters.h"
+#include "vsim/core/TetMesh.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/viz/BrushMode.h"
 
@@ -65,6 +66,13 @@ public:
     /// Skeleton and centerlines of the newest vessel label in the background; both added (one undo step) and drawn
     /// over the lumen surface in the 3D view.
     bool extractSkeletonAndCenterlines();
+    /// Builds the wall mesh (Wall > Build Wall Mesh) in the background; undoable.
+    bool buildWallMesh();
+    /// Runs a wall protocol ("physiological" or "thesis-rupture") on the newest wall; the last frame is added
+    /// (undoable) and shown in 3D coloured by von Mises stress with a legend.
+    bool simulateWall(const std::string& protocol);
+    ParameterSet& wallMeshParameters() { return m_wallMeshParameters; }
+    ParameterSet& femParameters() { return m_femParameters; }
     /// The parameters the vessel steps use (Vessels > Parameters edits them; defaults from the declarations).
     ParameterSet& segmentationParameters() { return m_segmentationParameters; }
     ParameterSet& skeletonParameters() { return m_skeletonParameters; }
@@ -98,6 +106,8 @@ private:
     void createVesselMenu();
     void createMeasurementDock();
     void createLabelEditToolBar();
+    void createWallMenu();
+    void showWallStress(const TetMesh& frame);
     void editVesselParameters();
     /// Overlays a label in the three MPRs (an empty one clears them); `artifactId` is what it shows.
     void showLabelOverlay(const LabelVolume& label, const std::string& artifactId);
@@ -136,6 +146,8 @@ private:
     ParameterSet m_segmentationParameters;
     ParameterSet m_skeletonParameters;
     ParameterSet m_centerlineParameters;
+    ParameterSet m_wallMeshParameters;
+    ParameterSet m_femParameters;
     std::string m_overlayLabelId; // the label artifact the MPR overlays show
     LabelEditSession* m_labelEdit = nullptr;
     QToolBar* m_editToolBar = nullptr;

@@ -82,6 +82,7 @@ void MainWindow::createMenus()
     });
 
     createVesselMenu();
+    createWallMenu();
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("Window/Level: &CTA"), this, [this] { m_views->applyWindowLevel(viz::kCtaPreset); });

@@ -148,11 +148,7 @@ void MainWindow::editVesselParameters()
 
 std::string MainWindow::newestArtifact(study::ArtifactKind kind) const
 {
-    const auto& artifacts = m_document.study().artifacts();
-    for (auto it = artifacts.rbegin(); it != artifacts.rend(); ++it)
-        if (it->kind == kind && !it->damaged)
-            return it->id;
-    return {};
+    return m_document.study().newestArtifact(kind);
 }
 
 bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)

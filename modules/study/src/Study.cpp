@@ -157,6 +157,15 @@ bool Study::hasArtifact(const std::string& id) const
     return std::any_of(all.begin(), all.end(), [&](const Artifact& artifact) { return artifact.id == id; });
 }
 
+std::string Study::newestArtifact(ArtifactKind kind, const std::string& madeBy) const
+{
+    const auto& all = m_state->manifest.artifacts;
+    for (auto it = all.rbegin(); it != all.rend(); ++it)
+        if (it->kind == kind && !it->damaged && (madeBy.empty() || it->provenance.command == madeBy))
+            return it->id;
+    return {};
+}
+
 std::string Study::addImage(const CtVolume& image, const std::string& name, Provenance provenance,
                             std::vector<std::string> warnings)
 {

@@ -44,6 +44,8 @@ public:
     const std::vector<Artifact>& artifacts() const;
     /// Returns the artifact; throws vsim::Error for an unknown id.
     const Artifact& artifact(const std::string& id) const;
+    /// The newest undamaged artifact of `kind` (made by the step `madeBy`, e.g. "centerline", when given); "" if none.
+    std::string newestArtifact(ArtifactKind kind, const std::string& madeBy = {}) const;
     bool hasArtifact(const std::string& id) const;
     /// Problems found by open(): missing or damaged files, leftovers of an interrupted save.
     const std::vector<std::string>& openWarnings() const;

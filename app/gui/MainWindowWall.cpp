@@ -1,0 +1,112 @@
+// The wall-mechanics steps of the workflow: the wall mesh around the newest vessel label and centerlines, and the
+// wall runs (physiological wall stress with the rupture index, the thesis rupture protocol) in the task runner,
+// added to the study (undoable) and shown in 3D coloured by stress with a legend.
+
+#include "ArtifactCommands.h"
+#include "MainWindow.h"
+#include "ParameterForm.h"
+#include "ViewLayout.h"
+#include "vsim/app/WallPipeline.h"
+#include "vsim/sim/fem/FemProtocols.h"
+#include "vsim/viz/VolumeView3D.h"
+
+#include <QMenu>
+#include <QMenuBar>
+#include <QStatusBar>
+
+#include <algorithm>
+
+namespace vsim::gui {
+
+void MainWindow::createWallMenu()
+{
+    m_wallMeshParameters = ParameterSet(app::wallMeshParameters());
+    m_femParameters = ParameterSet(sim::fem::femParameters());
+    QMenu* wall = menuBar()->addMenu(tr("&Wall"));
+    m_documentActions << wall->addAction(tr("Build &Wall Mesh"), this, [this] { buildWallMesh(); });
+    m_documentActions << wall->addAction(tr("Wall Stress at &Blood Pressure"), this,
+                                         [this] { simulateWall("physiological"); });
+    m_documentActions << wall->addAction(tr("&Thesis Rupture Protocol"), this, [this] { simulateWall("thesis-rupture"); });
+    wall->addSeparator();
+    m_documentActions << wall->addAction(tr("Wall &Parameters..."), this, [this] {
+        editParametersInDialog(this, tr("Wall parameters"),
+                               {{tr("Wall mesh"), &m_wallMeshParameters}, {tr("Wall mechanics"), &m_femParameters}});
+    });
+}
+
+bool MainWindow::buildWallMesh()
+{
+    if (!m_document.hasStudy())
+        return false;
+    const std::string labelId = newestArtifact(study::ArtifactKind::Label);
+    const std::string centerlinesId = m_document.study().newestArtifact(study::ArtifactKind::Skeleton, "centerline");
+    if (labelId.empty() || centerlinesId.empty())
+    {
+        showError(tr("Wall mesh"), tr("The wall needs a vessel label and centerlines: run Segment and Skeleton && "
+                                      "Centerlines first."));
+        return false;
+    }
+    auto build = std::make_shared<app::WallMeshBuild>();
+    const double thickness = m_wallMeshParameters.get("thickness_mm"), budget = m_wallMeshParameters.get("target_vertices");
+    return m_tasks.run(
+        tr("Wall mesh"),
+        [this, labelId, centerlinesId, thickness, budget, build](const Progress& progress) {
+            *build = app::buildWallMesh(m_document.study().loadLabel(labelId),
+                                        m_document.study().loadSkeleton(centerlinesId), thickness, budget, progress);
+        },
+        [this, labelId, centerlinesId, thickness, budget, build] {
+            const std::string id = app::addWallMesh(m_document.study(), *build, labelId, centerlinesId, thickness, budget);
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Wall mesh")));
+            statusBar()->showMessage(tr("Wall: %1 elements, smallest dihedral angle %2 deg")
+                                         .arg(build->wall.mesh.tets.size())
+                                         .arg(build->wall.minDihedralDeg, 0, 'f', 1),
+                                     8000);
+        });
+}
+
+bool MainWindow::simulateWall(const std::string& protocol)
+{
+    if (!m_document.hasStudy())
+        return false;
+    const std::string wallId = m_document.study().newestArtifact(study::ArtifactKind::TetMesh, "mesh wall");
+    const std::string centerlinesId = m_document.study().newestArtifact(study::ArtifactKind::Skeleton, "centerline");
+    if (wallId.empty() || (protocol == "physiological" && centerlinesId.empty()))
+    {
+        showError(tr("Wall mechanics"), tr("Build the wall mesh first (Wall > Build Wall Mesh)."));
+        return false;
+    }
+    auto run = std::make_shared<sim::fem::FemRunResult>();
+    const ParameterSet parameters = m_femParameters;
+    return m_tasks.run(
+        protocol == "physiological" ? tr("Wall stress") : tr("Thesis rupture protocol"),
+        [this, protocol, wallId, centerlinesId, parameters, run](const Progress& progress) {
+            *run = app::runWallProtocol(m_document.study(), protocol, wallId, centerlinesId, parameters, progress);
+        },
+        [this, protocol, wallId, centerlinesId, parameters, run] {
+            const std::string id = app::addWallRun(m_document.study(), *run, protocol, wallId,
+                                                   protocol == "physiological" ? centerlinesId : std::string(), parameters);
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Wall stress")));
+            showWallStress(run->frames.back());
+            if (!run->stopReason.empty())
+                showError(tr("Wall mechanics"), tr("The run stopped early: %1").arg(QString::fromStdString(run->stopReason)));
+            else if (protocol == "physiological")
+                statusBar()->showMessage(tr("Peak wall stress %1 kPa, peak rupture index %2")
+                                             .arg(run->metrics.at("peak_von_mises_kpa"), 0, 'f', 0)
+                                             .arg(run->metrics.at("peak_rupture_index"), 0, 'f', 2),
+                                         10000);
+        });
+}
+
+void MainWindow::showWallStress(const TetMesh& frame)
+{
+    const TriangleMesh surface = app::frameSurface(frame, "von_mises_kpa");
+    const auto& stress = surface.pointFields.at("von_mises_kpa");
+    const double high = stress.empty() ? 1.0 : *std::max_element(stress.begin(), stress.end());
+    viz::VolumeView3D* view = m_views->volumeView();
+    view->clearSurfaces();
+    view->clearLines();
+    view->setVolumeVisible(false);
+    view->showFieldSurface(surface, "von_mises_kpa", 0.0, std::max(high, 1e-6), tr("von Mises (kPa)"));
+}
+
+} // namespace vsim::gui
