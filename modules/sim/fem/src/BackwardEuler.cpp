@@ -13,13 +13,18 @@ BackwardEuler::BackwardEuler(const CorotationalFem& model, BackwardEulerSettings
 }
 
 StepReport BackwardEuler::step(CorotationalFem& model, const Eigen::VectorXd& externalForces,
-                               const std::vector<std::uint8_t>& constrained)
+                               const std::vector<std::uint8_t>& constrained, const Contacts& contacts)
 {
     StepReport report;
     const double h = m_settings.timeStep, alpha = m_settings.rayleighAlpha, beta = m_settings.rayleighBeta;
     report.invertedElements = model.updateElements();
     const double massFactor = 1.0 + h * alpha, stiffnessFactor = h * beta + h * h;
     model.assemble(m_system, massFactor, stiffnessFactor);
+    Eigen::VectorXd contactForces = Eigen::VectorXd::Zero(model.positions().size());
+    if (!contacts.springs.empty() || !contacts.probes.empty())
+        for (const ContactStiffness& contact :
+             addContactForces(contacts, model.positions(), model.velocities(), contactForces))
+            m_system.diagonal(std::size_t(contact.node)) += stiffnessFactor * contact.block;
 
     const Eigen::VectorXd& v = model.velocities();
     const Eigen::VectorXd& mass = model.lumpedMass();
@@ -27,7 +32,7 @@ StepReport BackwardEuler::step(CorotationalFem& model, const Eigen::VectorXd& ex
     Eigen::VectorXd av;
     m_system.multiply(v, av);
     const Eigen::VectorXd kv = (av - massFactor * mass.cwiseProduct(v)) / stiffnessFactor;
-    Eigen::VectorXd rhs = h * (model.elasticForces() - alpha * mass.cwiseProduct(v)) - h * (beta + h) * kv;
+    Eigen::VectorXd rhs = h * (model.elasticForces() + contactForces - alpha * mass.cwiseProduct(v)) - h * (beta + h) * kv;
     if (externalForces.size() == rhs.size())
         rhs += h * externalForces;
     else if (externalForces.size() != 0)

@@ -7,6 +7,7 @@
 // solved by block-Jacobi PCG warm-started from the last step's dv. Constrained components keep dv = 0.
 
 #include "vsim/sim/fem/BlockSparseMatrix.h"
+#include "vsim/sim/fem/Contacts.h"
 #include "vsim/sim/fem/CorotationalFem.h"
 
 #include <Eigen/Core>
@@ -40,9 +41,10 @@ public:
 
     const BackwardEulerSettings& settings() const { return m_settings; }
     /// One step of the model under `externalForces` (N, 3 per node; empty: none) with the components marked
-    /// in `constrained` held (their velocity stays as it is, normally 0). Updates positions and velocities.
+    /// in `constrained` held (their velocity stays as it is, normally 0) and `contacts` acting (their stiffness
+    /// joins K, so they are damped like the wall). Updates positions and velocities.
     StepReport step(CorotationalFem& model, const Eigen::VectorXd& externalForces,
-                    const std::vector<std::uint8_t>& constrained);
+                    const std::vector<std::uint8_t>& constrained, const Contacts& contacts = {});
     /// The system matrix of the last step (for the GPU parity tests and benchmarks).
     const BlockSparseMatrix& systemMatrix() const { return m_system; }
 
