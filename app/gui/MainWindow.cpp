@@ -44,6 +44,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         }
     });
     connect(&m_document, &StudyDocument::studyReplaced, this, [this] {
+        stopInteractiveWall();
         discardLabelEdits();
         showLabelOverlay({}, {});
     });

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 
+class QDockWidget;
 class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
@@ -31,6 +32,7 @@ struct VesselMeasurements;
 
 namespace vsim::gui {
 
+class InteractiveWall;
 class LabelEditSession;
 class ViewLayout;
 
@@ -71,6 +73,11 @@ public:
     /// Runs a wall protocol ("physiological" or "thesis-rupture") on the newest wall; the last frame is added
     /// (undoable) and shown in 3D coloured by von Mises stress with a legend.
     bool simulateWall(const std::string& protocol);
+    /// Starts the interactive wall protocol on the newest wall (Wall > Interactive Protocol): a dock with play /
+    /// pause, the pressure slider and tearing; drag the wall in the 3D view. False without a wall.
+    bool startInteractiveWall();
+    void stopInteractiveWall();
+    InteractiveWall* interactiveWall() const { return m_interactiveWall; }
     ParameterSet& wallMeshParameters() { return m_wallMeshParameters; }
     ParameterSet& femParameters() { return m_femParameters; }
     /// The parameters the vessel steps use (Vessels > Parameters edits them; defaults from the declarations).
@@ -148,6 +155,8 @@ private:
     ParameterSet m_centerlineParameters;
     ParameterSet m_wallMeshParameters;
     ParameterSet m_femParameters;
+    InteractiveWall* m_interactiveWall = nullptr;
+    QDockWidget* m_interactiveDock = nullptr;
     std::string m_overlayLabelId; // the label artifact the MPR overlays show
     LabelEditSession* m_labelEdit = nullptr;
     QToolBar* m_editToolBar = nullptr;

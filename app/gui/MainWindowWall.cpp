@@ -3,6 +3,7 @@
 // added to the study (undoable) and shown in 3D coloured by stress with a legend.
 
 #include "ArtifactCommands.h"
+#include "InteractiveWall.h"
 #include "MainWindow.h"
 #include "ParameterForm.h"
 #include "ViewLayout.h"
@@ -10,8 +11,14 @@
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QFormLayout>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QPushButton>
+#include <QSlider>
 #include <QStatusBar>
 
 #include <algorithm>
@@ -27,6 +34,7 @@ void MainWindow::createWallMenu()
     m_documentActions << wall->addAction(tr("Wall Stress at &Blood Pressure"), this,
                                          [this] { simulateWall("physiological"); });
     m_documentActions << wall->addAction(tr("&Thesis Rupture Protocol"), this, [this] { simulateWall("thesis-rupture"); });
+    m_documentActions << wall->addAction(tr("&Interactive Protocol"), this, [this] { startInteractiveWall(); });
     wall->addSeparator();
     m_documentActions << wall->addAction(tr("Wall &Parameters..."), this, [this] {
         editParametersInDialog(this, tr("Wall parameters"),
@@ -107,6 +115,101 @@ void MainWindow::showWallStress(const TetMesh& frame)
     view->clearLines();
     view->setVolumeVisible(false);
     view->showFieldSurface(surface, "von_mises_kpa", 0.0, std::max(high, 1e-6), tr("von Mises (kPa)"));
+}
+
+bool MainWindow::startInteractiveWall()
+{
+    if (!m_document.hasStudy())
+        return false;
+    const std::string wallId = m_document.study().newestArtifact(study::ArtifactKind::TetMesh, "mesh wall");
+    if (wallId.empty())
+    {
+        showError(tr("Wall mechanics"), tr("Build the wall mesh first (Wall > Build Wall Mesh)."));
+        return false;
+    }
+    stopInteractiveWall();
+    sim::fem::ElasticMaterial material;
+    material.youngModulusPa = 1e6 * m_femParameters.get("young_modulus_mpa");
+    material.poissonRatio = m_femParameters.get("poisson_ratio");
+    material.densityKgPerM3 = m_femParameters.get("density_kg_m3");
+    sim::fem::BackwardEulerSettings settings;
+    settings.timeStep = 1e-3 * m_femParameters.get("time_step_ms");
+    settings.rayleighAlpha = m_femParameters.get("rayleigh_alpha");
+    settings.rayleighBeta = m_femParameters.get("rayleigh_beta_s");
+    settings.cgTolerance = m_femParameters.get("cg_tolerance");
+    settings.cgMaxIterations = int(m_femParameters.get("cg_max_iterations"));
+    viz::VolumeView3D* view = m_views->volumeView();
+    try
+    {
+        view->clearSurfaces();
+        view->clearLines();
+        view->setVolumeVisible(false);
+        m_interactiveWall = new InteractiveWall(m_document.study().loadTetMesh(wallId), material, settings, view, this);
+    }
+    catch (const std::exception& error)
+    {
+        showError(tr("Wall mechanics"), QString::fromStdString(error.what()));
+        return false;
+    }
+    view->setDragEnabled(true);
+    connect(view, &viz::VolumeView3D::pointGrabbed, m_interactiveWall, &InteractiveWall::grab);
+    connect(view, &viz::VolumeView3D::pointDragged, m_interactiveWall, &InteractiveWall::dragTo);
+    connect(view, &viz::VolumeView3D::pointReleased, m_interactiveWall, &InteractiveWall::release);
+
+    auto* panel = new QWidget(this);
+    auto* form = new QFormLayout(panel);
+    auto* play = new QPushButton(tr("Play"), panel);
+    play->setObjectName("interactivePlay");
+    play->setCheckable(true);
+    auto* pressure = new QSlider(Qt::Horizontal, panel);
+    pressure->setObjectName("interactivePressure");
+    pressure->setRange(0, 300);
+    auto* pressureLabel = new QLabel(tr("0 mmHg"), panel);
+    auto* tearing = new QCheckBox(tr("Tear at %1 MPa").arg(m_femParameters.get("tear_strength_mpa")), panel);
+    auto* status = new QLabel(panel);
+    form->addRow(play);
+    form->addRow(tr("Pressure"), pressure);
+    form->addRow(QString(), pressureLabel);
+    form->addRow(tearing);
+    form->addRow(status);
+    form->addRow(new QLabel(tr("Drag the wall with the left button in the 3D view."), panel));
+    connect(play, &QPushButton::toggled, this, [this, play](bool on) {
+        on ? m_interactiveWall->play() : m_interactiveWall->pause();
+        play->setText(on ? tr("Pause") : tr("Play"));
+    });
+    connect(pressure, &QSlider::valueChanged, this, [this, pressureLabel](int mmHg) {
+        m_interactiveWall->setPressureMmHg(mmHg);
+        pressureLabel->setText(tr("%1 mmHg").arg(mmHg));
+    });
+    const double strength = m_femParameters.get("tear_strength_mpa");
+    connect(tearing, &QCheckBox::toggled, this, [this, strength](bool on) { m_interactiveWall->setTearStrengthMpa(on ? strength : 0.0); });
+    connect(m_interactiveWall, &InteractiveWall::frameShown, status, [status](double fps, double peak) {
+        status->setText(tr("%1 frames/s, peak von Mises %2 kPa").arg(fps, 0, 'f', 0).arg(peak, 0, 'f', 1));
+    });
+    connect(m_interactiveWall, &InteractiveWall::stopped, this, [this, play](const QString& reason) {
+        play->setChecked(false);
+        showError(tr("Wall mechanics"), tr("The simulation paused: %1").arg(reason));
+    });
+    m_interactiveDock = new QDockWidget(tr("Interactive Wall"), this);
+    m_interactiveDock->setObjectName("interactiveWallDock");
+    m_interactiveDock->setWidget(panel);
+    addDockWidget(Qt::RightDockWidgetArea, m_interactiveDock);
+    return true;
+}
+
+void MainWindow::stopInteractiveWall()
+{
+    if (!m_interactiveWall)
+        return;
+    m_interactiveWall->pause();
+    m_views->volumeView()->setDragEnabled(false);
+    m_interactiveWall->deleteLater();
+    m_interactiveWall = nullptr;
+    if (m_interactiveDock)
+    {
+        m_interactiveDock->deleteLater();
+        m_interactiveDock = nullptr;
+    }
 }
 
 } // namespace vsim::gui

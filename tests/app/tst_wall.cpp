@@ -1,14 +1,21 @@
 // The wall steps from the workstation: on the imported small aaa phantom, Segment, Skeleton & Centerlines, then
 // Build Wall Mesh and Wall Stress at Blood Pressure in the background: the wall and the stress frame are added
 // (undoable, with provenance and metrics), the 3D view shows the stress with its legend; without a wall the step
-// says what to do first.
+// says what to do first. The interactive protocol drags a point of the wall towards the cursor; its frame rate on
+// a 20k-tet wall is measured.
 
 #include "DicomFixtures.h"
 #include "GuiTestMain.h"
+#include "InteractiveWall.h"
 #include "MainWindow.h"
+#include "vsim/sim/fem/StructuredMeshes.h"
 #include "ViewLayout.h"
+#include "vsim/core/Units.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QSlider>
+
+#include <QElapsedTimer>
 #include <QSignalSpy>
 
 namespace fs = std::filesystem;
@@ -61,6 +68,70 @@ private slots:
         const std::size_t before = window.document().study().artifacts().size();
         window.document().undoStack()->undo();
         QCOMPARE(window.document().study().artifacts().size(), before - 1);
+
+        // The interactive protocol: pressure from the slider, a point of the wall dragged 3 mm outward.
+        QVERIFY(window.startInteractiveWall());
+        gui::InteractiveWall* wall3d = window.interactiveWall();
+        QVERIFY(wall3d);
+        auto* slider = window.findChild<QSlider*>("interactivePressure");
+        QVERIFY(slider);
+        slider->setValue(120);
+        QCOMPARE(wall3d->simulation().pressure(), units::mmHgToPa(120.0));
+        const TriangleMesh& surface = wall3d->lastSurface();
+        const Eigen::Vector3d grabbed = surface.points[surface.triangles.front()[0]];
+        wall3d->grab(grabbed);
+        const Eigen::Vector3d target = grabbed + Eigen::Vector3d(3.0, 0.0, 0.0);
+        wall3d->dragTo(target);
+        const double startGap = (grabbed - target).norm();
+        for (int frame = 0; frame < 30; ++frame)
+            wall3d->advance();
+        double gap = 1e300;
+        for (const Eigen::Vector3d& point : wall3d->lastSurface().points)
+            gap = std::min(gap, (point - target).norm());
+        qInfo("interactive: the wall point closest to the drag target is %.2f mm from it (%.2f mm at the grab)", gap,
+              startGap);
+        QVERIFY(gap < startGap - 0.1);
+        window.stopInteractiveWall();
+        QVERIFY(!window.interactiveWall());
+    }
+
+    // The interactive protocol's frame rate on a 20k-tet wall (a closed tube, 19,968 tets), dragging: steps and
+    // drawing together, this machine's CPU and Xvfb's software OpenGL. Printed for RESULTS.md.
+    void interactiveFrameRateAt20kTets()
+    {
+        const sim::fem::StructuredTetMesh tube = sim::fem::tubeWallTetMesh(0.01, 0.0115, 0.1, {1, 128, 26});
+        TetMesh wall;
+        wall.tets = tube.tets;
+        std::vector<double> layer, ends;
+        for (const Eigen::Vector3d& p : tube.points)
+        {
+            wall.points.push_back(1e3 * p);
+            layer.push_back(p.head<2>().norm() > 0.0105 ? 1.0 : 0.0);
+            ends.push_back(p.z() < 1e-9 ? 1.0 : p.z() > 0.1 - 1e-9 ? 2.0 : 0.0);
+        }
+        wall.pointFields["wall_layer"] = layer;
+        wall.pointFields["end_set"] = ends;
+        gui::MainWindow window;
+        window.resize(1200, 900);
+        window.show();
+        gui::InteractiveWall interactive(wall, sim::fem::ElasticMaterial{}, sim::fem::BackwardEulerSettings{},
+                                         window.views()->volumeView());
+        interactive.setPressureMmHg(120.0);
+        interactive.grab(Eigen::Vector3d(11.5, 0.0, 50.0));
+        interactive.dragTo(Eigen::Vector3d(16.5, 0.0, 50.0));
+        QElapsedTimer clock;
+        clock.start();
+        int frames = 0;
+        while (clock.elapsed() < 3000)
+        {
+            interactive.advance();
+            window.views()->volumeView()->repaint();
+            ++frames;
+        }
+        const double fps = 1000.0 * frames / double(clock.elapsed());
+        qInfo("interactive wall, %zu tets, dragging: %.1f frames/s over %d frames (step + colours + render)",
+              wall.tets.size(), fps, frames);
+        QVERIFY(frames > 3);
     }
 };
 

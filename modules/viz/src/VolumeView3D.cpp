@@ -6,6 +6,7 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCellPicker.h>
 #include <vtkCellArray.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDoubleArray.h>
@@ -24,6 +25,8 @@
 #include <vtkSmartVolumeMapper.h>
 #include <vtkVolume.h>
 #include <vtkVolumeProperty.h>
+
+#include <QMouseEvent>
 
 #include <algorithm>
 #include <vector>
@@ -128,27 +131,52 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
     const auto values = surface.pointFields.find(field);
     if (values == surface.pointFields.end())
         throw Error("the surface has no field '" + field + "' to colour by");
-    vtkSmartPointer<vtkPolyData> polyData = interop::toVtk(surface);
-    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
-    scalars->SetName(field.c_str());
-    for (double v : values->second)
-        scalars->InsertNextValue(v);
-    polyData->GetPointData()->SetScalars(scalars);
-    auto table = vtkSmartPointer<vtkLookupTable>::New();
-    table->SetHueRange(0.667, 0.0); // blue (low) to red (high)
-    table->SetTableRange(low, high);
-    table->Build();
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(polyData);
-    mapper->SetLookupTable(table);
-    mapper->SetScalarRange(low, high);
-    mapper->ScalarVisibilityOn();
-    mapper->SetScalarModeToUsePointData();
-    if (m_scene->fieldSurface)
-        renderer()->RemoveActor(m_scene->fieldSurface);
-    m_scene->fieldSurface = vtkSmartPointer<vtkActor>::New();
-    m_scene->fieldSurface->SetMapper(mapper);
-    renderer()->AddActor(m_scene->fieldSurface);
+    // A surface of the same size as the one shown (the interactive wall, frame after frame) only gets new
+    // points and values; anything else builds a new actor.
+    vtkPolyData* shown = m_scene->fieldSurface
+                             ? vtkPolyData::SafeDownCast(m_scene->fieldSurface->GetMapper()->GetInput())
+                             : nullptr;
+    if (shown && shown->GetNumberOfPoints() == vtkIdType(surface.points.size()) &&
+        shown->GetNumberOfPolys() == vtkIdType(surface.triangles.size()))
+    {
+        vtkPoints* points = shown->GetPoints();
+        vtkDataArray* scalars = shown->GetPointData()->GetScalars();
+        for (std::size_t i = 0; i < surface.points.size(); ++i)
+        {
+            points->SetPoint(vtkIdType(i), surface.points[i].data());
+            scalars->SetTuple1(vtkIdType(i), values->second[i]);
+        }
+        points->Modified();
+        scalars->Modified();
+        shown->Modified();
+        m_scene->fieldSurface->GetMapper()->SetScalarRange(low, high);
+        vtkLookupTable::SafeDownCast(m_scene->fieldSurface->GetMapper()->GetLookupTable())->SetTableRange(low, high);
+    }
+    else
+    {
+        vtkSmartPointer<vtkPolyData> polyData = interop::toVtk(surface);
+        auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+        scalars->SetName(field.c_str());
+        for (double v : values->second)
+            scalars->InsertNextValue(v);
+        polyData->GetPointData()->SetScalars(scalars);
+        auto table = vtkSmartPointer<vtkLookupTable>::New();
+        table->SetHueRange(0.667, 0.0); // blue (low) to red (high)
+        table->SetTableRange(low, high);
+        table->Build();
+        auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+        mapper->SetInputData(polyData);
+        mapper->SetLookupTable(table);
+        mapper->SetScalarRange(low, high);
+        mapper->ScalarVisibilityOn();
+        mapper->SetScalarModeToUsePointData();
+        if (m_scene->fieldSurface)
+            renderer()->RemoveActor(m_scene->fieldSurface);
+        m_scene->fieldSurface = vtkSmartPointer<vtkActor>::New();
+        m_scene->fieldSurface->SetMapper(mapper);
+        renderer()->AddActor(m_scene->fieldSurface);
+    }
+    vtkScalarsToColors* table = m_scene->fieldSurface->GetMapper()->GetLookupTable();
     if (!m_scene->legend)
     {
         m_scene->legend = vtkSmartPointer<vtkScalarBarActor>::New();
@@ -224,6 +252,74 @@ Eigen::Vector3d VolumeView3D::volumeCentre() const
         return Eigen::Vector3d::Zero();
     const VolumeGeometry& geometry = m_image.geometry();
     return geometry.indexToPatient(0.5 * Eigen::Vector3d(geometry.dims[0] - 1, geometry.dims[1] - 1, geometry.dims[2] - 1));
+}
+
+std::optional<Eigen::Vector3d> VolumeView3D::surfacePointAt(const QPointF& position) const
+{
+    auto picker = vtkSmartPointer<vtkCellPicker>::New();
+    picker->SetTolerance(0.002);
+    picker->PickFromListOn();
+    bool any = false;
+    for (const auto& actor : m_scene->surfaces)
+        picker->AddPickList(actor), any = true;
+    if (m_scene->fieldSurface)
+        picker->AddPickList(m_scene->fieldSurface), any = true;
+    if (!any)
+        return std::nullopt;
+    const double ratio = devicePixelRatioF();
+    if (!picker->Pick(position.x() * ratio, (height() - position.y()) * ratio, 0.0, renderer()))
+        return std::nullopt;
+    double point[3];
+    picker->GetPickPosition(point);
+    return Eigen::Vector3d(point[0], point[1], point[2]);
+}
+
+Eigen::Vector3d VolumeView3D::pointAtDepthOf(const QPointF& position, const Eigen::Vector3d& reference) const
+{
+    vtkRenderer* r = renderer();
+    r->SetWorldPoint(reference.x(), reference.y(), reference.z(), 1.0);
+    r->WorldToDisplay();
+    double display[3];
+    r->GetDisplayPoint(display);
+    const double ratio = devicePixelRatioF();
+    r->SetDisplayPoint(position.x() * ratio, (height() - position.y()) * ratio, display[2]);
+    r->DisplayToWorld();
+    double world[4];
+    r->GetWorldPoint(world);
+    return Eigen::Vector3d(world[0], world[1], world[2]) / (world[3] != 0.0 ? world[3] : 1.0);
+}
+
+void VolumeView3D::mousePressEvent(QMouseEvent* event)
+{
+    if (m_dragEnabled && event->button() == Qt::LeftButton)
+        if (const auto point = surfacePointAt(event->position()))
+        {
+            m_grabbed = *point;
+            emit pointGrabbed(*point);
+            return;
+        }
+    VtkView::mousePressEvent(event);
+}
+
+void VolumeView3D::mouseMoveEvent(QMouseEvent* event)
+{
+    if (m_grabbed)
+    {
+        emit pointDragged(pointAtDepthOf(event->position(), *m_grabbed));
+        return;
+    }
+    VtkView::mouseMoveEvent(event);
+}
+
+void VolumeView3D::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (m_grabbed && event->button() == Qt::LeftButton)
+    {
+        m_grabbed.reset();
+        emit pointReleased();
+        return;
+    }
+    VtkView::mouseReleaseEvent(event);
 }
 
 void VolumeView3D::showAnteriorView(double heightMm)

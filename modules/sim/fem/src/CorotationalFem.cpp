@@ -222,28 +222,50 @@ double CorotationalFem::kineticEnergy() const
     return 0.5 * m_velocities.dot(m_mass.cwiseProduct(m_velocities));
 }
 
+Eigen::Matrix<double, 6, 1> CorotationalFem::elementStress(std::size_t e, const Eigen::Matrix3d& rotation) const
+{
+    return m_material.elasticityMatrix() *
+           (strainDisplacement(m_elements[e].gradients) * corotatedDisplacement(e, rotation));
+}
+
+namespace {
+
+double vonMisesOf(const Eigen::Matrix<double, 6, 1>& s)
+{
+    return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
+                     3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
+} // namespace
+
 ElementStresses CorotationalFem::elementStresses() const
 {
     ElementStresses out;
     out.vonMises.resize(m_tets.size());
     out.maxPrincipal.resize(m_tets.size());
     out.tensors.resize(m_tets.size());
-    const Eigen::Matrix<double, 6, 6> d = m_material.elasticityMatrix();
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
     {
         const std::size_t e = std::size_t(t);
         const Eigen::Matrix3d r = m_rotations[e].toRotationMatrix();
-        const Eigen::Matrix<double, 6, 1> s = d * (strainDisplacement(m_elements[e].gradients) * corotatedDisplacement(e, r));
+        const Eigen::Matrix<double, 6, 1> s = elementStress(e, r);
         Eigen::Matrix3d local;
         local << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
         out.tensors[e] = r * local * r.transpose();
-        out.vonMises[e] = std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) +
-                                           (s[2] - s[0]) * (s[2] - s[0])) +
-                                    3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+        out.vonMises[e] = vonMisesOf(s);
         out.maxPrincipal[e] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(local, Eigen::EigenvaluesOnly).eigenvalues()[2];
     }
     return out;
+}
+
+std::vector<double> CorotationalFem::elementVonMises() const
+{
+    std::vector<double> vonMises(m_tets.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
+        vonMises[std::size_t(t)] = vonMisesOf(elementStress(std::size_t(t), m_rotations[std::size_t(t)].toRotationMatrix()));
+    return vonMises;
 }
 
 } // namespace vsim::sim::fem

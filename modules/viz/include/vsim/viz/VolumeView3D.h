@@ -8,6 +8,8 @@
 #include <QColor>
 #include <QString>
 
+#include <optional>
+
 #include <string>
 
 namespace vsim::viz {
@@ -49,10 +51,31 @@ public:
     /// Centre of the volume in the patient frame (mm).
     Eigen::Vector3d volumeCentre() const;
 
+    /// With dragging on, the left button grabs the shown surface (pointGrabbed), moving drags the point in the
+    /// plane through it facing the camera (pointDragged) and releasing lets go (pointReleased); other buttons
+    /// still turn the camera.
+    void setDragEnabled(bool enabled) { m_dragEnabled = enabled; }
+    /// The surface point (mm) under a widget position (logical pixels), if any surface is there.
+    std::optional<Eigen::Vector3d> surfacePointAt(const QPointF& widgetPosition) const;
+    /// The point (mm) under a widget position at the depth of `reference` (the drag plane).
+    Eigen::Vector3d pointAtDepthOf(const QPointF& widgetPosition, const Eigen::Vector3d& reference) const;
+
+signals:
+    void pointGrabbed(const Eigen::Vector3d& pointMm);
+    void pointDragged(const Eigen::Vector3d& pointMm);
+    void pointReleased();
+
+protected:
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+
 private:
     struct Scene;
     std::unique_ptr<Scene> m_scene;
     CtVolume m_image;
+    bool m_dragEnabled = false;
+    std::optional<Eigen::Vector3d> m_grabbed;
 };
 
 } // namespace vsim::viz

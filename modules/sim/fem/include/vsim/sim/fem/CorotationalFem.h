@@ -72,6 +72,8 @@ public:
     /// Kinetic energy 1/2 v^T M v (J).
     double kineticEnergy() const;
     ElementStresses elementStresses() const;
+    /// Von Mises stress per element (Pa) alone (no eigen-decomposition: the interactive display's colours).
+    std::vector<double> elementVonMises() const;
     /// Gather lists (see the members): for matrix block s, entries m_blockEntries[start[s] .. start[s + 1]).
     const std::vector<std::uint32_t>& blockEntryStart() const { return m_blockEntryStart; }
     const std::vector<std::uint32_t>& blockEntries() const { return m_blockEntries; }
@@ -82,6 +84,8 @@ public:
 
 private:
     Vector12d corotatedDisplacement(std::size_t tet, const Eigen::Matrix3d& rotation) const;
+    /// Stress (Pa, Voigt) of element `tet` in its rotated frame.
+    Eigen::Matrix<double, 6, 1> elementStress(std::size_t tet, const Eigen::Matrix3d& rotation) const;
 
     std::vector<Eigen::Vector3d> m_rest;
     std::vector<std::array<int, 4>> m_tets;

@@ -1,9 +1,9 @@
 #pragma once
 
 // The run driver of the wall solver: a vessel wall (TetMesh in mm, as mesh::buildWallMesh makes it) under a
-// lumen pressure curve, ends fixed, stepped with backward Euler; optional tearing with the entropy end condition;
-// frames every N steps; guards (NaN, inverted elements, PCG breakdown) stop the run with a message and keep the
-// last good frame. SI inside, mm / kPa in the frames.
+// lumen pressure curve, stepped by WallSimulation (ends fixed, backward Euler, optional tearing) until the curve
+// ends, a guard stops it (NaN, inverted elements, PCG breakdown: the last good frame is kept) or the fracture
+// entropy passes its end value; frames every N steps. SI inside, mm / kPa in the frames.
 
 #include "vsim/core/Progress.h"
 #include "vsim/core/TetMesh.h"
@@ -48,9 +48,5 @@ struct FemRunResult
 /// Runs the setup. Throws vsim::Error for a mesh that is not a wall (fields missing, no fixed end, no lumen face)
 /// and vsim::Cancelled when cancelled; a run that a guard stops returns normally with `stopReason` set.
 FemRunResult runFem(const FemRunSetup& setup, const Progress& progress = {});
-
-/// Element stresses averaged over each prism (the three tets a wall triangle makes, consecutive in the mesh),
-/// written back to every tet of the prism: constant-stress tets scatter about the wall stress (FemValidation).
-std::vector<double> prismAverage(const std::vector<double>& perTet, const TetMesh& wall);
 
 } // namespace vsim::sim::fem

@@ -1,0 +1,77 @@
+#pragma once
+
+// The wall as it steps: model, integrator, fixed ends, the lumen faces under pressure, contacts (the drag spring of
+// the interactive protocol), tearing and its entropy, and the guards that restore the last good state. The run
+// driver (FemRun.h) loops over it with a pressure curve; the workstation's interactive protocol steps it on a
+// timer while the user drags the wall and moves the pressure slider. Input mesh in mm, state in SI.
+
+#include "vsim/core/TetMesh.h"
+#include "vsim/sim/fem/BackwardEuler.h"
+#include "vsim/sim/fem/Contacts.h"
+#include "vsim/sim/fem/CorotationalFem.h"
+#include "vsim/sim/fem/Tearing.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+class WallSimulation
+{
+public:
+    /// Throws vsim::Error for a mesh that is not a wall (wall_layer / end_set missing), no fixed end or no lumen
+    /// face under load (`loaded` selects lumen faces by centroid, mm; empty: all).
+    WallSimulation(const TetMesh& wallMm, const ElasticMaterial& material, const BackwardEulerSettings& settings,
+                   const std::function<bool(const Eigen::Vector3d&)>& loaded = {});
+
+    void setPressure(double pressurePa) { m_pressure = pressurePa; }
+    double pressure() const { return m_pressure; }
+    /// Tears elements whose largest principal stress passes `strengthPa` after each step (0: no tearing).
+    void setTearStrength(double strengthPa) { m_tearStrength = strengthPa; }
+    /// Grabs the node nearest to `pointMm` (the current shape) with a spring of `stiffness` N/m; returns it.
+    int grab(const Eigen::Vector3d& pointMm, double stiffness);
+    /// Moves the grabbed node's spring anchor (mm); nothing when none is grabbed.
+    void dragTo(const Eigen::Vector3d& targetMm);
+    void release() { m_contacts.springs.clear(); }
+    bool isGrabbing() const { return !m_contacts.springs.empty(); }
+
+    struct StepOutcome
+    {
+        StepReport report;
+        std::string guard;          ///< why the step was undone (the state is the last good one); empty when fine
+        std::size_t tornNow = 0;    ///< elements torn by this step
+    };
+    /// One implicit step at the current pressure, contacts and tearing.
+    StepOutcome step();
+
+    double time() const { return m_time; }
+    const CorotationalFem& model() const { return m_model; }
+    const FractureEntropy& entropy() const { return m_entropy; }
+    /// The current state as a frame (mm): displacement point fields, prism-averaged von Mises and largest principal
+    /// stress (kPa) cell fields.
+    TetMesh frame() const;
+
+private:
+    struct ElementFace
+    {
+        std::size_t element;
+        int opposite;
+    };
+    std::vector<std::array<int, 3>> pressureFaces() const;
+    void tear(const std::vector<std::size_t>& over);
+
+    CorotationalFem m_model;
+    BackwardEulerSettings m_settings;
+    BackwardEuler m_integrator;
+    std::vector<std::uint8_t> m_fixed;
+    std::vector<ElementFace> m_faces;
+    std::vector<std::size_t> m_originalElement; // the wall mesh's element each tet came from (prism = index / 3)
+    Contacts m_contacts;
+    FractureEntropy m_entropy;
+    double m_pressure = 0.0;
+    double m_tearStrength = 0.0;
+    double m_time = 0.0;
+};
+
+} // namespace vsim::sim::fem

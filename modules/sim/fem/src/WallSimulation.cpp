@@ -1,0 +1,235 @@
+#include "vsim/sim/fem/WallSimulation.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
+#include "vsim/sim/fem/SurfaceLoads.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+
+namespace vsim::sim::fem {
+namespace {
+
+constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}; // outward for a positive tet
+
+const std::vector<double>& field(const TetMesh& wall, const char* name)
+{
+    const auto found = wall.pointFields.find(name);
+    if (found == wall.pointFields.end())
+        throw Error("the tetrahedral mesh is not a vessel wall (wall_layer / end_set fields missing): build it with "
+                    "'mesh wall'");
+    return found->second;
+}
+
+CorotationalFem modelOf(const TetMesh& wall, const ElasticMaterial& material)
+{
+    field(wall, "wall_layer"), field(wall, "end_set");
+    std::vector<Eigen::Vector3d> rest(wall.points.size());
+    for (std::size_t i = 0; i < rest.size(); ++i)
+        rest[i] = units::mmToM(1.0) * wall.points[i];
+    return CorotationalFem(rest, wall.tets, material);
+}
+
+/// Averages per-tet values over the tets that came from one prism (original element index / 3).
+std::vector<double> averageByPrism(const std::vector<double>& perTet, const std::vector<std::size_t>& originalElement)
+{
+    std::map<std::size_t, std::pair<double, int>> sums;
+    for (std::size_t t = 0; t < perTet.size(); ++t)
+    {
+        auto& [sum, count] = sums[originalElement[t] / 3];
+        sum += perTet[t];
+        ++count;
+    }
+    std::vector<double> out(perTet.size());
+    for (std::size_t t = 0; t < perTet.size(); ++t)
+    {
+        const auto& [sum, count] = sums[originalElement[t] / 3];
+        out[t] = sum / count;
+    }
+    return out;
+}
+
+} // namespace
+
+WallSimulation::WallSimulation(const TetMesh& wall, const ElasticMaterial& material, const BackwardEulerSettings& settings,
+                               const std::function<bool(const Eigen::Vector3d&)>& loaded)
+    : m_model(modelOf(wall, material)), m_settings(settings), m_integrator(m_model, settings)
+{
+    const std::vector<double>& layer = field(wall, "wall_layer");
+    const std::vector<double>& endSet = field(wall, "end_set");
+    m_fixed.assign(3 * m_model.nodeCount(), 0);
+    std::size_t fixedNodes = 0;
+    for (std::size_t i = 0; i < m_model.nodeCount(); ++i)
+        if (endSet[i] > 0.0)
+        {
+            m_fixed[3 * i] = m_fixed[3 * i + 1] = m_fixed[3 * i + 2] = 1;
+            ++fixedNodes;
+        }
+    if (fixedNodes == 0)
+        throw Error("the wall has no fixed end (end_set is 0 everywhere): build it from centerlines with ends");
+    std::vector<std::size_t> owners;
+    const std::vector<std::array<int, 3>> boundary = boundaryFaces(wall.tets, &owners);
+    for (std::size_t f = 0; f < boundary.size(); ++f)
+    {
+        const auto& face = boundary[f];
+        if (layer[std::size_t(face[0])] != 0.0 || layer[std::size_t(face[1])] != 0.0 || layer[std::size_t(face[2])] != 0.0)
+            continue;
+        const Eigen::Vector3d centroid =
+            (wall.points[std::size_t(face[0])] + wall.points[std::size_t(face[1])] + wall.points[std::size_t(face[2])]) / 3.0;
+        if (loaded && !loaded(centroid))
+            continue;
+        // The face is opposite the owner's one corner that is not on it.
+        const auto& tet = wall.tets[owners[f]];
+        int opposite = 0;
+        while (std::find(face.begin(), face.end(), tet[std::size_t(opposite)]) != face.end())
+            ++opposite;
+        m_faces.push_back({owners[f], opposite});
+    }
+    if (m_faces.empty())
+        throw Error("no lumen face carries the pressure");
+    m_originalElement.resize(m_model.elementCount());
+    for (std::size_t t = 0; t < m_originalElement.size(); ++t)
+        m_originalElement[t] = t;
+}
+
+std::vector<std::array<int, 3>> WallSimulation::pressureFaces() const
+{
+    std::vector<std::array<int, 3>> nodes;
+    nodes.reserve(m_faces.size());
+    for (const ElementFace& face : m_faces)
+    {
+        const auto& tet = m_model.tets()[face.element];
+        nodes.push_back({tet[std::size_t(kFaces[face.opposite][0])], tet[std::size_t(kFaces[face.opposite][1])],
+                         tet[std::size_t(kFaces[face.opposite][2])]});
+    }
+    return nodes;
+}
+
+int WallSimulation::grab(const Eigen::Vector3d& pointMm, double stiffness)
+{
+    const Eigen::Vector3d point = units::mmToM(1.0) * pointMm;
+    int nearest = 0;
+    double best = 1e300;
+    for (std::size_t n = 0; n < m_model.nodeCount(); ++n)
+        if (const double d = (m_model.positions().segment<3>(Eigen::Index(3 * n)) - point).squaredNorm(); d < best)
+            best = d, nearest = int(n);
+    m_contacts.springs = {{nearest, m_model.positions().segment<3>(3 * nearest), stiffness}};
+    return nearest;
+}
+
+void WallSimulation::dragTo(const Eigen::Vector3d& targetMm)
+{
+    if (!m_contacts.springs.empty())
+        m_contacts.springs.front().anchor = units::mmToM(1.0) * targetMm;
+}
+
+WallSimulation::StepOutcome WallSimulation::step()
+{
+    StepOutcome outcome;
+    const Eigen::VectorXd lastPositions = m_model.positions(), lastVelocities = m_model.velocities();
+    Eigen::VectorXd forces = Eigen::VectorXd::Zero(m_model.positions().size());
+    addPressureForces(pressureFaces(), m_model.positions(), m_pressure, forces);
+    outcome.report = m_integrator.step(m_model, forces, m_fixed, m_contacts);
+    if (!m_model.positions().allFinite())
+        outcome.guard = "the solution is no longer finite (NaN or infinity)";
+    else if (outcome.report.invertedElements > 0)
+    {
+        const Eigen::Vector3d where = 1e3 * m_model.firstInvertedCentroid();
+        char place[96];
+        std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
+        outcome.guard = std::to_string(outcome.report.invertedElements) + " elements inverted" + place;
+    }
+    else if (!outcome.report.cgConverged && outcome.report.cgIterations < m_settings.cgMaxIterations)
+        outcome.guard = "the conjugate gradients broke down (the system is not positive definite)";
+    if (!outcome.guard.empty())
+    {
+        m_model.positions() = lastPositions;
+        m_model.velocities() = lastVelocities;
+        m_model.updateElements();
+        return outcome;
+    }
+    m_time += m_settings.timeStep;
+    if (m_tearStrength > 0.0)
+    {
+        const std::vector<std::size_t> over = elementsOverStrength(m_model.elementStresses(), m_tearStrength);
+        if (!over.empty())
+        {
+            tear(over);
+            outcome.tornNow = over.size();
+        }
+    }
+    return outcome;
+}
+
+void WallSimulation::tear(const std::vector<std::size_t>& over)
+{
+    const std::vector<double> energies = m_model.elementEnergies();
+    for (std::size_t e : over)
+        m_entropy.addTornElement(energies[e]);
+    DetachedModel detached = detachElements(m_model, over);
+    std::vector<long> newElementOf(m_model.elementCount(), -1);
+    for (std::size_t e = 0; e < detached.oldElementOf.size(); ++e)
+        newElementOf[detached.oldElementOf[e]] = long(e);
+    std::vector<ElementFace> kept;
+    for (const ElementFace& face : m_faces)
+        if (newElementOf[face.element] >= 0)
+            kept.push_back({std::size_t(newElementOf[face.element]), face.opposite});
+    m_faces = std::move(kept);
+    std::vector<std::uint8_t> fixed(3 * detached.model.nodeCount());
+    std::vector<int> newNodeOf(m_model.nodeCount(), -1);
+    for (std::size_t n = 0; n < detached.model.nodeCount(); ++n)
+    {
+        for (int d = 0; d < 3; ++d)
+            fixed[3 * n + std::size_t(d)] = m_fixed[3 * std::size_t(detached.oldNodeOf[n]) + std::size_t(d)];
+        if (newNodeOf[std::size_t(detached.oldNodeOf[n])] < 0)
+            newNodeOf[std::size_t(detached.oldNodeOf[n])] = int(n);
+    }
+    m_fixed = std::move(fixed);
+    std::vector<std::size_t> original(detached.oldElementOf.size());
+    for (std::size_t e = 0; e < original.size(); ++e)
+        original[e] = m_originalElement[detached.oldElementOf[e]];
+    m_originalElement = std::move(original);
+    std::vector<SpringConstraint> springs;
+    for (SpringConstraint spring : m_contacts.springs)
+        if (newNodeOf[std::size_t(spring.node)] >= 0)
+        {
+            spring.node = newNodeOf[std::size_t(spring.node)];
+            springs.push_back(spring);
+        }
+    m_contacts.springs = std::move(springs);
+    m_model = std::move(detached.model);
+    m_integrator = BackwardEuler(m_model, m_settings);
+}
+
+TetMesh WallSimulation::frame() const
+{
+    TetMesh frame;
+    frame.tets = m_model.tets();
+    const std::size_t n = m_model.nodeCount();
+    frame.points.resize(n);
+    std::vector<double> dx(n), dy(n), dz(n), magnitude(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        frame.points[i] = units::mToMm(1.0) * m_model.restPositions()[i];
+        const Eigen::Vector3d d =
+            units::mToMm(1.0) * (m_model.positions().segment<3>(Eigen::Index(3 * i)) - m_model.restPositions()[i]);
+        dx[i] = d.x(), dy[i] = d.y(), dz[i] = d.z(), magnitude[i] = d.norm();
+    }
+    frame.pointFields["displacement_x_mm"] = dx;
+    frame.pointFields["displacement_y_mm"] = dy;
+    frame.pointFields["displacement_z_mm"] = dz;
+    frame.pointFields["displacement_mm"] = magnitude;
+    const ElementStresses stresses = m_model.elementStresses();
+    std::vector<double> vonMises = averageByPrism(stresses.vonMises, m_originalElement);
+    std::vector<double> principal = averageByPrism(stresses.maxPrincipal, m_originalElement);
+    for (double& v : vonMises)
+        v *= 1e-3;
+    for (double& v : principal)
+        v *= 1e-3;
+    frame.cellFields["von_mises_kpa"] = vonMises;
+    frame.cellFields["max_principal_kpa"] = principal;
+    return frame;
+}
+
+} // namespace vsim::sim::fem
