@@ -128,16 +128,8 @@ bool MainWindow::startInteractiveWall()
         return false;
     }
     stopInteractiveWall();
-    sim::fem::ElasticMaterial material;
-    material.youngModulusPa = 1e6 * m_femParameters.get("young_modulus_mpa");
-    material.poissonRatio = m_femParameters.get("poisson_ratio");
-    material.densityKgPerM3 = m_femParameters.get("density_kg_m3");
-    sim::fem::BackwardEulerSettings settings;
-    settings.timeStep = 1e-3 * m_femParameters.get("time_step_ms");
-    settings.rayleighAlpha = m_femParameters.get("rayleigh_alpha");
-    settings.rayleighBeta = m_femParameters.get("rayleigh_beta_s");
-    settings.cgTolerance = m_femParameters.get("cg_tolerance");
-    settings.cgMaxIterations = int(m_femParameters.get("cg_max_iterations"));
+    const sim::fem::ElasticMaterial material = sim::fem::femMaterial(m_femParameters);
+    const sim::fem::BackwardEulerSettings settings = sim::fem::femIntegrator(m_femParameters);
     viz::VolumeView3D* view = m_views->volumeView();
     try
     {

@@ -5,6 +5,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/sim/fem/CorotationalFem.h"
 #include "vsim/sim/fem/RotationExtraction.h"
+#include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
@@ -14,6 +15,7 @@
 #include <QtTest>
 
 #include <random>
+#include <tuple>
 
 using namespace vsim;
 using namespace vsim::sim::fem;
@@ -134,6 +136,58 @@ private slots:
         QVERIFY(std::abs(entropy.effectiveCount() - 8.0) < 1e-9);
         entropy.addTornElement(1e-9); // a tear that released almost nothing barely counts
         QVERIFY(std::abs(entropy.effectiveCount() - 8.0) < 1e-6);
+    }
+
+    // St. Venant-Kirchhoff: no force under a rigid 90-degree rotation, and a bar (nu = 0) stretched by 30 % pulls
+    // with P A0 = lambda E (lambda^2 - 1) / 2 A0 (44.85 N here, where linear elasticity would give 30 N); at 0.1 %
+    // both models give E eps A0.
+    void stVenantKirchhoffRotationAndStretch()
+    {
+        const StructuredTetMesh bar = boxTetMesh(Eigen::Vector3d(0.1, 0.01, 0.01), {10, 2, 2});
+        ElasticMaterial svk;
+        svk.youngModulusPa = 1e6;
+        svk.poissonRatio = 0.0;
+        svk.model = ElasticMaterial::Model::StVenantKirchhoff;
+        {
+            CorotationalFem model(bar.points, bar.tets, svk);
+            const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+            for (std::size_t n = 0; n < model.nodeCount(); ++n)
+                model.positions().segment<3>(Eigen::Index(3 * n)) = turn * bar.points[n];
+            model.updateElements();
+            QVERIFY(model.elasticForces().cwiseAbs().maxCoeff() < 1e-9 * svk.youngModulusPa * 0.005 * 0.005);
+        }
+        for (const auto& [stretch, material, expected] :
+             std::vector<std::tuple<double, ElasticMaterial::Model, double>>{
+                 {1.3, ElasticMaterial::Model::StVenantKirchhoff, 1.3 * 1e6 * (1.3 * 1.3 - 1.0) / 2.0 * 1e-4},
+                 {1.001, ElasticMaterial::Model::StVenantKirchhoff, 1.001 * 1e6 * (1.001 * 1.001 - 1.0) / 2.0 * 1e-4},
+                 {1.001, ElasticMaterial::Model::CorotationalLinear, 1e6 * 0.001 * 1e-4}})
+        {
+            ElasticMaterial chosen = svk;
+            chosen.model = material;
+            CorotationalFem model(bar.points, bar.tets, chosen);
+            std::vector<std::uint8_t> fixed(3 * model.nodeCount(), 0);
+            for (std::size_t n = 0; n < model.nodeCount(); ++n)
+            {
+                fixed[3 * n + 1] = fixed[3 * n + 2] = 1; // nu = 0: no lateral motion anyway; no rigid modes
+                if (bar.points[n].x() < 1e-12 || bar.points[n].x() > 0.1 - 1e-12)
+                    fixed[3 * n] = 1;
+                if (bar.points[n].x() > 0.1 - 1e-12)
+                    model.positions()[Eigen::Index(3 * n)] = 0.1 * stretch;
+            }
+            // Only the end is moved; the interior must be found (Newton with the consistent tangent).
+            const StaticSolveReport report = solveStatic(model, {}, fixed, 1e-10);
+            QVERIFY(report.converged);
+            model.updateElements();
+            const Eigen::VectorXd forces = model.elasticForces();
+            double pull = 0.0;
+            for (std::size_t n = 0; n < model.nodeCount(); ++n)
+                if (bar.points[n].x() > 0.1 - 1e-12)
+                    pull -= forces[Eigen::Index(3 * n)]; // the elastic force pulls the end back
+            qInfo("%s, stretch %.3f: end force %.5f N (expected %.5f N), %d linearised solves",
+                  material == ElasticMaterial::Model::StVenantKirchhoff ? "St. Venant-Kirchhoff" : "co-rotational",
+                  stretch, pull, expected, report.updates);
+            QVERIFY(std::abs(pull / expected - 1.0) < 0.005);
+        }
     }
 
     void badInputIsRefused()

@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/fem/RotationExtraction.h"
+#include "vsim/sim/fem/StVenantKirchhoff.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -32,6 +33,9 @@ CorotationalFem::CorotationalFem(std::vector<Eigen::Vector3d> restPositions, std
     : m_rest(std::move(restPositions)), m_tets(std::move(tets)), m_material(material)
 {
     m_material.validate();
+    m_svk = m_material.model == ElasticMaterial::Model::StVenantKirchhoff;
+    m_lambda = m_material.lambda();
+    m_mu = m_material.mu();
     if (m_tets.empty())
         throw Error("the mesh has no elements");
     m_elements.reserve(m_tets.size());
@@ -113,6 +117,12 @@ std::size_t CorotationalFem::updateElements()
             ++inverted;
         else
             extractRotation(deformation, m_rotations[e]);
+        if (m_svk)
+        {
+            stVenantKirchhoffElement(deformation, m_elements[e].gradients, m_elements[e].volume, m_lambda, m_mu,
+                                     m_elementForces[e], m_rotatedBlocks[e]);
+            continue;
+        }
         const Eigen::Matrix3d r = m_rotations[e].toRotationMatrix();
         const Matrix12d& k = m_elements[e].stiffness;
         const Vector12d f = k.lazyProduct(corotatedDisplacement(e, r)); // small fixed size: no GEMV kernel
@@ -202,8 +212,14 @@ std::vector<double> CorotationalFem::elementEnergies() const
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
     {
-        const Vector12d u = corotatedDisplacement(std::size_t(t), m_rotations[std::size_t(t)].toRotationMatrix());
-        energies[std::size_t(t)] = 0.5 * u.dot(m_elements[std::size_t(t)].stiffness * u);
+        const std::size_t e = std::size_t(t);
+        if (m_svk)
+        {
+            energies[e] = stVenantKirchhoffEnergy(deformation(e), m_elements[e].volume, m_lambda, m_mu);
+            continue;
+        }
+        const Vector12d u = corotatedDisplacement(e, m_rotations[e].toRotationMatrix());
+        energies[e] = 0.5 * u.dot(m_elements[e].stiffness * u);
     }
     return energies;
 }
@@ -222,18 +238,35 @@ double CorotationalFem::kineticEnergy() const
     return 0.5 * m_velocities.dot(m_mass.cwiseProduct(m_velocities));
 }
 
-Eigen::Matrix<double, 6, 1> CorotationalFem::elementStress(std::size_t e, const Eigen::Matrix3d& rotation) const
+Eigen::Matrix3d CorotationalFem::deformation(std::size_t e) const
 {
-    return m_material.elasticityMatrix() *
-           (strainDisplacement(m_elements[e].gradients) * corotatedDisplacement(e, rotation));
+    const auto& tet = m_tets[e];
+    const Eigen::Vector3d x0 = m_positions.segment<3>(3 * tet[0]);
+    Eigen::Matrix3d edges;
+    edges << m_positions.segment<3>(3 * tet[1]) - x0, m_positions.segment<3>(3 * tet[2]) - x0,
+        m_positions.segment<3>(3 * tet[3]) - x0;
+    return edges * m_elements[e].restEdgesInverse;
+}
+
+Eigen::Matrix3d CorotationalFem::elementStress(std::size_t e) const
+{
+    if (m_svk)
+        return stVenantKirchhoffCauchy(deformation(e), m_lambda, m_mu);
+    const Eigen::Matrix3d r = m_rotations[e].toRotationMatrix();
+    const Eigen::Matrix<double, 6, 1> s =
+        m_material.elasticityMatrix() * (strainDisplacement(m_elements[e].gradients) * corotatedDisplacement(e, r));
+    Eigen::Matrix3d local;
+    local << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
+    return r * local * r.transpose();
 }
 
 namespace {
 
-double vonMisesOf(const Eigen::Matrix<double, 6, 1>& s)
+double vonMisesOf(const Eigen::Matrix3d& s)
 {
-    return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - s[2]) * (s[1] - s[2]) + (s[2] - s[0]) * (s[2] - s[0])) +
-                     3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+    return std::sqrt(0.5 * ((s(0, 0) - s(1, 1)) * (s(0, 0) - s(1, 1)) + (s(1, 1) - s(2, 2)) * (s(1, 1) - s(2, 2)) +
+                            (s(2, 2) - s(0, 0)) * (s(2, 2) - s(0, 0))) +
+                     3.0 * (s(0, 1) * s(0, 1) + s(1, 2) * s(1, 2) + s(2, 0) * s(2, 0)));
 }
 
 } // namespace
@@ -248,13 +281,10 @@ ElementStresses CorotationalFem::elementStresses() const
     for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
     {
         const std::size_t e = std::size_t(t);
-        const Eigen::Matrix3d r = m_rotations[e].toRotationMatrix();
-        const Eigen::Matrix<double, 6, 1> s = elementStress(e, r);
-        Eigen::Matrix3d local;
-        local << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
-        out.tensors[e] = r * local * r.transpose();
-        out.vonMises[e] = vonMisesOf(s);
-        out.maxPrincipal[e] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(local, Eigen::EigenvaluesOnly).eigenvalues()[2];
+        out.tensors[e] = elementStress(e);
+        out.vonMises[e] = vonMisesOf(out.tensors[e]);
+        out.maxPrincipal[e] =
+            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(out.tensors[e], Eigen::EigenvaluesOnly).eigenvalues()[2];
     }
     return out;
 }
@@ -264,7 +294,7 @@ std::vector<double> CorotationalFem::elementVonMises() const
     std::vector<double> vonMises(m_tets.size());
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
-        vonMises[std::size_t(t)] = vonMisesOf(elementStress(std::size_t(t), m_rotations[std::size_t(t)].toRotationMatrix()));
+        vonMises[std::size_t(t)] = vonMisesOf(elementStress(std::size_t(t)));
     return vonMises;
 }
 

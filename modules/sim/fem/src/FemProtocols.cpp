@@ -9,18 +9,19 @@
 #include <cmath>
 
 namespace vsim::sim::fem {
-namespace {
 
-ElasticMaterial materialOf(const ParameterSet& p)
+ElasticMaterial femMaterial(const ParameterSet& p)
 {
     ElasticMaterial material;
+    material.model = p.get("material_model") > 0.5 ? ElasticMaterial::Model::StVenantKirchhoff
+                                                   : ElasticMaterial::Model::CorotationalLinear;
     material.youngModulusPa = units::mpaToPa(p.get("young_modulus_mpa"));
     material.poissonRatio = p.get("poisson_ratio");
     material.densityKgPerM3 = p.get("density_kg_m3");
     return material;
 }
 
-BackwardEulerSettings integratorOf(const ParameterSet& p)
+BackwardEulerSettings femIntegrator(const ParameterSet& p)
 {
     BackwardEulerSettings settings;
     settings.timeStep = 1e-3 * p.get("time_step_ms");
@@ -30,6 +31,8 @@ BackwardEulerSettings integratorOf(const ParameterSet& p)
     settings.cgMaxIterations = int(p.get("cg_max_iterations"));
     return settings;
 }
+
+namespace {
 
 /// The principal axis of the wall's nodes (largest spread), its centre and half-length along it (mm).
 struct Axis
@@ -61,6 +64,9 @@ std::vector<ParameterSpec> femParameters()
     const std::string material = "Material", integration = "Integration", thesis = "Thesis rupture protocol",
                       physiological = "Physiological protocol", patient = "Patient (wall strength)";
     return {
+        {"material_model", "Material model", "", 0, 0, 1, material,
+         "0: co-rotational linear elasticity (thesis), 1: St. Venant-Kirchhoff (Green strain; CPU only).",
+         ParameterSpec::Kind::Integer},
         {"young_modulus_mpa", "Young's modulus", "MPa", 4.23, 0.01, 1000, material, "Wall stiffness (thesis patient 1: 4.23 MPa)."},
         {"poisson_ratio", "Poisson's ratio", "", 0.23, 0.0, 0.49, material, "Thesis: 0.23 (printed as 0.23 MPa, a typo)."},
         {"density_kg_m3", "Density", "kg/m^3", 1100, 500, 3000, material, "Wall density (lumped mass)."},
@@ -106,8 +112,8 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const 
 {
     FemRunSetup setup;
     setup.wall = wall;
-    setup.material = materialOf(p);
-    setup.integrator = integratorOf(p);
+    setup.material = femMaterial(p);
+    setup.integrator = femIntegrator(p);
     const double start = units::mpaToPa(p.get("pressure_start_mpa")), end = units::mpaToPa(p.get("pressure_end_mpa"));
     setup.steps = int(p.get("ramp_steps"));
     const double duration = setup.steps * setup.integrator.timeStep;
@@ -127,8 +133,8 @@ FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerli
 {
     FemRunSetup setup;
     setup.wall = wall;
-    setup.material = materialOf(p);
-    setup.integrator = integratorOf(p);
+    setup.material = femMaterial(p);
+    setup.integrator = femIntegrator(p);
     // Quasi-static by pseudo-time: ramp the pressure, then let the damped wall settle. (A plain static solve of
     // K dx = f is ill-conditioned on real wall meshes with flat elements; the mass term keeps each step sound.)
     const double pressure = units::mmHgToPa(p.get("pressure_mmhg")), settle = p.get("settle_time_s");

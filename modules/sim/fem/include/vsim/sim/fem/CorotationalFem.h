@@ -1,8 +1,9 @@
 #pragma once
 
-// The co-rotational linear FEM model of the vessel wall (thesis ch. 4.3-4.5; Mueller & Gross 2004, "Interactive
-// virtual materials"): per element the rotation R of the deformation gradient (polar decomposition), the elastic
-// force f_e = -R K_e (R^T x_e - X_e) and the stiffness R K_e R^T, lumped (diagonal) mass (thesis eq. 4.12: a
+// The FEM model of the vessel wall (thesis ch. 4.3-4.5), co-rotational linear by default (Mueller & Gross 2004,
+// "Interactive virtual materials"): per element the rotation R of the deformation gradient (polar decomposition),
+// the elastic force f_e = -R K_e (R^T x_e - X_e) and the stiffness R K_e R^T; optionally St. Venant-Kirchhoff
+// (StVenantKirchhoff.h: forces and the consistent tangent from the Green strain); lumped (diagonal) mass (thesis eq. 4.12: a
 // quarter of each element's mass on each node). State and parameters in SI: positions in m, forces in N.
 // Time integration is separate (BackwardEuler.h).
 
@@ -19,7 +20,8 @@
 
 namespace vsim::sim::fem {
 
-/// Stresses per element (Pa), Cauchy stress of the linear law in the element's rotated frame.
+/// Stresses per element (Pa): the Cauchy stress (co-rotational: the linear law's in the element's rotated frame,
+/// turned back; St. Venant-Kirchhoff: F S F^T / det F), its von Mises value and largest principal value.
 struct ElementStresses
 {
     std::vector<double> vonMises;
@@ -84,12 +86,16 @@ public:
 
 private:
     Vector12d corotatedDisplacement(std::size_t tet, const Eigen::Matrix3d& rotation) const;
-    /// Stress (Pa, Voigt) of element `tet` in its rotated frame.
-    Eigen::Matrix<double, 6, 1> elementStress(std::size_t tet, const Eigen::Matrix3d& rotation) const;
+    /// Cauchy stress (Pa) of element `tet` in the patient frame.
+    Eigen::Matrix3d elementStress(std::size_t tet) const;
+    /// Deformation gradient of element `tet` at the current positions.
+    Eigen::Matrix3d deformation(std::size_t tet) const;
 
     std::vector<Eigen::Vector3d> m_rest;
     std::vector<std::array<int, 4>> m_tets;
     ElasticMaterial m_material;
+    bool m_svk = false;        // St. Venant-Kirchhoff instead of co-rotational linear
+    double m_lambda = 0.0, m_mu = 0.0;
     std::vector<TetRest> m_elements;
     std::vector<Eigen::Quaterniond> m_rotations;
     // The last element pass, and where its pieces go: per matrix block and per node, the (element, local) entries

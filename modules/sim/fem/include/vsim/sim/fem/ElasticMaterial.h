@@ -9,6 +9,9 @@ namespace vsim::sim::fem {
 
 struct ElasticMaterial
 {
+    /// The constitutive model: co-rotational linear elasticity (default) or St. Venant-Kirchhoff.
+    enum class Model { CorotationalLinear, StVenantKirchhoff };
+    Model model = Model::CorotationalLinear;
     double youngModulusPa = 4.23e6;  ///< Pa (thesis patient 1: 4.23 MPa)
     double poissonRatio = 0.23;      ///< dimensionless, -1 < nu < 0.5
     double densityKgPerM3 = 1100.0;  ///< kg/m^3 (arterial wall, about that of soft tissue)

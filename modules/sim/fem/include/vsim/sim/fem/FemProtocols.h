@@ -24,6 +24,9 @@ namespace vsim::sim::fem {
 
 /// Every parameter of the wall runs (material, integration, both protocols, the patient's strength inputs).
 std::vector<ParameterSpec> femParameters();
+/// The material and the integrator settings of a parameter set (SI).
+ElasticMaterial femMaterial(const ParameterSet& parameters);
+BackwardEulerSettings femIntegrator(const ParameterSet& parameters);
 
 /// The thesis protocol on a wall mesh (mm).
 FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& parameters, const Progress& progress = {});
