@@ -132,6 +132,14 @@
     </message>
 </context>
 <context>
+    <name>vsim::gui::InteractiveWall</name>
+    <message>
+        <location filename="../app/gui/InteractiveWall.cpp" line="75"/>
+        <source>von Mises (kPa)</source>
+        <translation>von Mises (kPa)</translation>
+    </message>
+</context>
+<context>
     <name>vsim::gui::MainWindow</name>
     <message>
         <location filename="../app/gui/MainWindowMenus.cpp" line="27"/>
@@ -280,107 +288,107 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="62"/>
+        <location filename="../app/gui/MainWindow.cpp" line="63"/>
         <source>%1: cancelled, nothing changed</source>
         <translation>%1: abgebrochen, nichts geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="65"/>
+        <location filename="../app/gui/MainWindow.cpp" line="66"/>
         <source>%1: done</source>
         <translation>%1: fertig</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="85"/>
+        <location filename="../app/gui/MainWindow.cpp" line="86"/>
         <source>Artifact</source>
         <translation>Artefakt</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="85"/>
+        <location filename="../app/gui/MainWindow.cpp" line="86"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="85"/>
+        <location filename="../app/gui/MainWindow.cpp" line="86"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="92"/>
+        <location filename="../app/gui/MainWindow.cpp" line="93"/>
         <source>Study</source>
         <translation>Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="100"/>
-        <location filename="../app/gui/MainWindow.cpp" line="104"/>
-        <location filename="../app/gui/MainWindow.cpp" line="114"/>
+        <location filename="../app/gui/MainWindow.cpp" line="101"/>
+        <location filename="../app/gui/MainWindow.cpp" line="105"/>
+        <location filename="../app/gui/MainWindow.cpp" line="115"/>
         <source>Import</source>
         <translation>Importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="100"/>
-        <location filename="../app/gui/MainWindow.cpp" line="104"/>
-        <location filename="../app/gui/MainWindow.cpp" line="116"/>
+        <location filename="../app/gui/MainWindow.cpp" line="101"/>
+        <location filename="../app/gui/MainWindow.cpp" line="105"/>
+        <location filename="../app/gui/MainWindow.cpp" line="117"/>
         <source>Segment</source>
         <translation>Segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="100"/>
-        <location filename="../app/gui/MainWindow.cpp" line="104"/>
-        <location filename="../app/gui/MainWindow.cpp" line="118"/>
+        <location filename="../app/gui/MainWindow.cpp" line="101"/>
+        <location filename="../app/gui/MainWindow.cpp" line="105"/>
+        <location filename="../app/gui/MainWindow.cpp" line="119"/>
         <source>Skeleton &amp;&amp; Centerlines</source>
         <translation>Skelett &amp;&amp; Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="100"/>
-        <location filename="../app/gui/MainWindow.cpp" line="104"/>
-        <location filename="../app/gui/MainWindow.cpp" line="120"/>
+        <location filename="../app/gui/MainWindow.cpp" line="101"/>
+        <location filename="../app/gui/MainWindow.cpp" line="105"/>
+        <location filename="../app/gui/MainWindow.cpp" line="121"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="100"/>
-        <location filename="../app/gui/MainWindow.cpp" line="105"/>
-        <location filename="../app/gui/MainWindow.cpp" line="122"/>
+        <location filename="../app/gui/MainWindow.cpp" line="101"/>
+        <location filename="../app/gui/MainWindow.cpp" line="106"/>
+        <location filename="../app/gui/MainWindow.cpp" line="123"/>
         <source>Simulate</source>
         <translation>Simulieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="101"/>
+        <location filename="../app/gui/MainWindow.cpp" line="102"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="108"/>
+        <location filename="../app/gui/MainWindow.cpp" line="109"/>
         <source>Not available in this version yet</source>
         <translation>In dieser Version noch nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="125"/>
+        <location filename="../app/gui/MainWindow.cpp" line="126"/>
         <source>Workflow</source>
         <translation>Arbeitsablauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="137"/>
+        <location filename="../app/gui/MainWindow.cpp" line="138"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="165"/>
+        <location filename="../app/gui/MainWindow.cpp" line="166"/>
         <source>No study</source>
         <translation>Keine Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="166"/>
+        <location filename="../app/gui/MainWindow.cpp" line="167"/>
         <source>%1[*] - VascuSim</source>
         <translation>%1[*] - VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="183"/>
+        <location filename="../app/gui/MainWindow.cpp" line="184"/>
         <source>damaged</source>
         <translation>beschädigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MainWindow.cpp" line="188"/>
+        <location filename="../app/gui/MainWindow.cpp" line="189"/>
         <source>%n warning(s)</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -388,74 +396,74 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="194"/>
+        <location filename="../app/gui/MainWindow.cpp" line="195"/>
         <source>%1, made by &quot;%2&quot; on %3</source>
         <translation>%1, erzeugt von &quot;%2&quot; am %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="206"/>
+        <location filename="../app/gui/MainWindow.cpp" line="207"/>
         <source>%1 failed</source>
         <translation>%1 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="223"/>
+        <location filename="../app/gui/MainWindow.cpp" line="224"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="34"/>
         <source>Open study</source>
         <translation>Studie öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="243"/>
+        <location filename="../app/gui/MainWindow.cpp" line="244"/>
         <source>Study opened with problems</source>
         <translation>Studie mit Problemen geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="262"/>
+        <location filename="../app/gui/MainWindow.cpp" line="263"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
         <source>New study</source>
         <translation>Neue Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="273"/>
+        <location filename="../app/gui/MainWindow.cpp" line="274"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="44"/>
         <source>Import volume</source>
         <translation>Volumen importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="282"/>
-        <location filename="../app/gui/MainWindow.cpp" line="306"/>
+        <location filename="../app/gui/MainWindow.cpp" line="283"/>
+        <location filename="../app/gui/MainWindow.cpp" line="307"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="294"/>
-        <location filename="../app/gui/MainWindow.cpp" line="311"/>
+        <location filename="../app/gui/MainWindow.cpp" line="295"/>
+        <location filename="../app/gui/MainWindow.cpp" line="312"/>
         <source>Import DICOM</source>
         <translation>DICOM importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="331"/>
-        <location filename="../app/gui/MainWindow.cpp" line="400"/>
+        <location filename="../app/gui/MainWindow.cpp" line="332"/>
+        <location filename="../app/gui/MainWindow.cpp" line="401"/>
         <source>Save study</source>
         <translation>Studie speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="343"/>
+        <location filename="../app/gui/MainWindow.cpp" line="344"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
         <source>Save study as</source>
         <translation>Studie speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="362"/>
+        <location filename="../app/gui/MainWindow.cpp" line="363"/>
         <source>Show image</source>
         <translation>Bild anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="387"/>
+        <location filename="../app/gui/MainWindow.cpp" line="388"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="388"/>
+        <location filename="../app/gui/MainWindow.cpp" line="389"/>
         <source>Save the changes to this study before closing?</source>
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
     </message>
@@ -654,90 +662,150 @@
         <translation>Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="25"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="32"/>
         <source>&amp;Wall</source>
         <translation>&amp;Wand</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="26"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="33"/>
         <source>Build &amp;Wall Mesh</source>
         <translation>&amp;Wandnetz erzeugen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="27"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="34"/>
         <source>Wall Stress at &amp;Blood Pressure</source>
         <translation>Wandspannung bei &amp;Blutdruck</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="29"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="36"/>
         <source>&amp;Thesis Rupture Protocol</source>
         <translation>&amp;Ruptur-Protokoll der Dissertation</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="31"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="37"/>
+        <source>&amp;Interactive Protocol</source>
+        <translation>&amp;Interaktives Protokoll</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="39"/>
         <source>Wall &amp;Parameters...</source>
         <translation>Wand-&amp;Parameter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="32"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="40"/>
         <source>Wall parameters</source>
         <translation>Wandparameter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="33"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="45"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="52"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="59"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="41"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="53"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="60"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="67"/>
         <source>Wall mesh</source>
         <translation>Wandnetz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="33"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="75"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="91"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="41"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="83"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="99"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="127"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="143"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="183"/>
         <source>Wall mechanics</source>
         <translation>Wandmechanik</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="45"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="53"/>
         <source>The wall needs a vessel label and centerlines: run Segment and Skeleton &amp;&amp; Centerlines first.</source>
         <translation>Die Wand braucht ein Gefäßlabel und Mittellinien: zuerst Segmentieren und Skelett &amp;&amp; Mittellinien ausführen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="60"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="68"/>
         <source>Wall: %1 elements, smallest dihedral angle %2 deg</source>
         <translation>Wand: %1 Elemente, kleinster Diederwinkel %2 Grad</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="75"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="83"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="127"/>
         <source>Build the wall mesh first (Wall &gt; Build Wall Mesh).</source>
         <translation>Zuerst das Wandnetz erzeugen (Wand &gt; Wandnetz erzeugen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="81"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="88"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="89"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="96"/>
         <source>Wall stress</source>
         <translation>Wandspannung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="81"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="89"/>
         <source>Thesis rupture protocol</source>
         <translation>Ruptur-Protokoll der Dissertation</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="91"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="99"/>
         <source>The run stopped early: %1</source>
         <translation>Die Rechnung endete vorzeitig: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="93"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="101"/>
         <source>Peak wall stress %1 kPa, peak rupture index %2</source>
         <translation>Höchste Wandspannung %1 kPa, höchster Rupturindex %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="109"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="117"/>
         <source>von Mises (kPa)</source>
         <translation>von Mises (kPa)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="153"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="170"/>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="159"/>
+        <source>0 mmHg</source>
+        <translation>0 mmHg</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="160"/>
+        <source>Tear at %1 MPa</source>
+        <translation>Reißen bei %1 MPa</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="163"/>
+        <source>Pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="167"/>
+        <source>Drag the wall with the left button in the 3D view.</source>
+        <translation>Die Wand in der 3D-Ansicht mit der linken Maustaste ziehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="170"/>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="174"/>
+        <source>%1 mmHg</source>
+        <translation>%1 mmHg</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="179"/>
+        <source>%1 frames/s, peak von Mises %2 kPa</source>
+        <translation>%1 Bilder/s, höchste von-Mises-Spannung %2 kPa</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="183"/>
+        <source>The simulation paused: %1</source>
+        <translation>Die Simulation hält an: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="185"/>
+        <source>Interactive Wall</source>
+        <translation>Interaktive Wand</translation>
     </message>
 </context>
 </TS>
