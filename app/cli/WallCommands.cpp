@@ -4,20 +4,64 @@
 #include "vsim/core/Error.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/sim/fem/FemProtocols.h"
+#include "vsim/study/MeshFileImport.h"
 #include "vsim/study/RunSeries.h"
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <iostream>
 
 namespace vsim::cli {
 
+namespace {
+
+/// Adds a sheet or an imported mesh as a wall (provenance "mesh wall" so that simulate and the GUI find it).
+int addOtherWall(study::Study& study, const TetMesh& wall, const std::string& name,
+                 const std::map<std::string, std::string>& parameters)
+{
+    study::Provenance provenance;
+    provenance.command = "mesh wall";
+    provenance.parameters = parameters;
+    const std::string id = study.addTetMesh(wall, name, provenance);
+    study.save();
+    std::cout << nlohmann::json{{"artifact", id}, {"nodes", wall.points.size()}, {"tets", wall.tets.size()}}.dump(2)
+              << "\n";
+    return 0;
+}
+
+} // namespace
+
 int meshWall(const Arguments& arguments, const Progress& progress)
 {
     const std::string bundle = arguments.option("study");
-    if (bundle.empty() || arguments.positional != std::vector<std::string>{"wall"})
+    const std::string kind = arguments.positional.empty() ? std::string() : arguments.positional.front();
+    if (bundle.empty() || (kind != "wall" && kind != "sheet" && kind != "import") ||
+        (kind == "import") != (arguments.positional.size() == 2) || (kind != "import" && arguments.positional.size() != 1))
         throw Error("usage: vascusim-cli mesh wall --study <study.vsim> [--label ID] [--centerlines ID] "
-                    "[--thickness mm] [--target-vertices N]");
+                    "[--thickness mm] [--target-vertices N]\n"
+                    "       vascusim-cli mesh sheet --study <study.vsim> [--width 40] [--length 40] [--thickness 0.5] "
+                    "[--cell 1]\n"
+                    "       vascusim-cli mesh import <mesh.vtu> --study <study.vsim>");
+    if (kind == "sheet")
+    {
+        study::Study study = study::Study::open(bundle);
+        const double width = std::stod(arguments.option("width", "40")), length = std::stod(arguments.option("length", "40"));
+        const double thickness = std::stod(arguments.option("thickness", "0.5")), cell = std::stod(arguments.option("cell", "1"));
+        return addOtherWall(study, app::clothSheet(width, length, thickness, cell), "Cloth sheet",
+                            {{"shape", "sheet"},
+                             {"width_mm", formatNumber(width)},
+                             {"length_mm", formatNumber(length)},
+                             {"thickness_mm", formatNumber(thickness)},
+                             {"cell_mm", formatNumber(cell)}});
+    }
+    if (kind == "import")
+    {
+        study::Study study = study::Study::open(bundle);
+        const std::string file = arguments.positional[1];
+        return addOtherWall(study, app::asWall(study::readTetMeshFile(file)), "Imported wall",
+                            {{"shape", "imported"}, {"source", std::filesystem::path(file).filename().string()}});
+    }
     study::Study study = study::Study::open(bundle);
     const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
     const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,

@@ -50,6 +50,9 @@ commands:
   mesh wall --study <study.vsim> [--label ID] [--centerlines ID] [--thickness 1.5] [--target-vertices 3000]
                                              tetrahedral vessel wall (one layer) around the lumen, opened at the
                                              centerline ends (fixed sets)
+  mesh sheet --study <study.vsim> [--width 40] [--length 40] [--thickness 0.5] [--cell 1]
+                                             a thin cloth-type sheet (thesis 4.7.3), edges across x fixed
+  mesh import <mesh.vtu> --study <study.vsim> a tetrahedral mesh from outside as a wall (its ends fixed)
   simulate fem --study <study.vsim> --protocol thesis-rupture|physiological [--mesh ID] [--backend auto|cpu]
                [--param key=value ...] [--out DIR]
                                              wall mechanics: the last frame (stresses, rupture index) and the metrics

@@ -4,8 +4,12 @@
 #include "vsim/mesh/SurfaceRemeshing.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/fem/FemProtocols.h"
+#include "vsim/sim/fem/StructuredMeshes.h"
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -51,6 +55,57 @@ TriangleMesh frameSurface(const TetMesh& frame, const std::string& cellField)
             field[n] = sum[n] / count[n];
     surface.pointFields[cellField] = field;
     return surface;
+}
+
+TetMesh clothSheet(double widthMm, double lengthMm, double thicknessMm, double cellMm)
+{
+    if (!(widthMm > 0 && lengthMm > 0 && thicknessMm >= 0.05 && cellMm > 0))
+        throw Error("a sheet needs a positive size, a cell size and at least 0.05 mm thickness");
+    const std::array<int, 3> cells{std::max(1, int(std::lround(lengthMm / cellMm))),
+                                   std::max(1, int(std::lround(widthMm / cellMm))), 1};
+    const sim::fem::StructuredTetMesh box = sim::fem::boxTetMesh(Eigen::Vector3d(lengthMm, widthMm, thicknessMm), cells);
+    TetMesh sheet;
+    sheet.points = box.points;
+    sheet.tets = box.tets;
+    std::vector<double> layer, ends;
+    for (const Eigen::Vector3d& p : box.points)
+    {
+        layer.push_back(p.z() > 0.5 * thicknessMm ? 1.0 : 0.0);
+        ends.push_back(p.x() < 1e-9 ? 1.0 : p.x() > lengthMm - 1e-9 ? 2.0 : 0.0);
+    }
+    sheet.pointFields["wall_layer"] = layer;
+    sheet.pointFields["end_set"] = ends;
+    return sheet;
+}
+
+TetMesh asWall(TetMesh mesh)
+{
+    if (mesh.pointFields.count("wall_layer") && mesh.pointFields.count("end_set"))
+        return mesh;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& p : mesh.points)
+        centre += p / double(mesh.points.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (const auto& p : mesh.points)
+        covariance += (p - centre) * (p - centre).transpose();
+    const Eigen::Vector3d axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(2);
+    double low = 1e300, high = -1e300;
+    for (const auto& p : mesh.points)
+        low = std::min(low, (p - centre).dot(axis)), high = std::max(high, (p - centre).dot(axis));
+    const double margin = 0.01 * (high - low);
+    std::vector<double> ends(mesh.points.size(), 0.0);
+    std::size_t fixed = 0;
+    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    {
+        const double along = (mesh.points[i] - centre).dot(axis);
+        ends[i] = along <= low + margin ? 1.0 : along >= high - margin ? 2.0 : 0.0;
+        fixed += ends[i] > 0.0;
+    }
+    if (fixed == 0)
+        throw Error("no node lies at the ends of the mesh's long axis to hold it");
+    mesh.pointFields["end_set"] = ends;
+    mesh.pointFields["wall_layer"] = std::vector<double>(mesh.points.size(), 0.0);
+    return mesh;
 }
 
 WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& centerlines, double thicknessMm,

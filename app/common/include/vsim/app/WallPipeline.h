@@ -29,6 +29,17 @@ struct WallMeshBuild
 WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& centerlines, double thicknessMm,
                             double targetVertices, const Progress& progress = {});
 
+/// A thin "cloth-type" sheet (thesis ch. 4.7.3: 0.5 mm; 5 / 20 / 100 MPa) of width x length mm in the x-y plane,
+/// `cellMm` cells, one element layer of `thicknessMm`, as a wall: the lower face is the loaded side (wall_layer
+/// 0), the two edges across x are fixed (end sets 1 and 2).
+TetMesh clothSheet(double widthMm, double lengthMm, double thicknessMm, double cellMm);
+
+/// A tetrahedral mesh from outside (mm) made usable as a wall: its own wall_layer / end_set fields are kept when it
+/// has them; otherwise the nodes within 1 % of its length of either end of its principal axis become end sets 1
+/// and 2, and every node counts as lumen side (pressure then acts on its whole boundary). Throws vsim::Error when
+/// no node would be fixed.
+TetMesh asWall(TetMesh mesh);
+
 /// Adds the wall to the study (provenance: label and centerlines, thickness, budget; quality as attributes);
 /// returns its id. The study is not saved.
 std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const std::string& labelId,
