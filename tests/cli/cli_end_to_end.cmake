@@ -1,14 +1,5 @@
 # Runs vascusim-cli as a user would and checks its output against what the inputs must give.
-file(REMOVE_RECURSE ${WORK})
-file(MAKE_DIRECTORY ${WORK})
-
-function(run_cli expected_code output_var)
-    execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    if(NOT code EQUAL expected_code)
-        message(FATAL_ERROR "vascusim-cli ${ARGN}: exit ${code}, expected ${expected_code}\n${out}\n${err}")
-    endif()
-    set(${output_var} "${out}${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 run_cli(0 version --version)
 foreach(component VascuSim Qt VTK ITK DCMTK Eigen "CUDA runtime" GPU)

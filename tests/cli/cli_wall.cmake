@@ -2,15 +2,7 @@
 # `mesh wall` (no inverted element, over 1,000 tets), `simulate fem --protocol
 # physiological` (a positive peak stress and rupture index below 1, the frame series written), a cloth sheet, a
 # .vtu imported as a wall, and bad input (a file that is not .vtu, an unknown protocol, --backend cuda) refused.
-file(REMOVE_RECURSE ${WORK})
-file(MAKE_DIRECTORY ${WORK})
-function(run_cli expected_code output_var)
-    execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-    if(NOT code EQUAL expected_code)
-        message(FATAL_ERROR "vascusim-cli ${ARGN}: exit ${code}, expected ${expected_code}\n${out}\n${err}")
-    endif()
-    set(${output_var} "${out}${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(study ${WORK}/wall.vsim)
 run_cli(0 ignored phantom aaa --out ${WORK}/ph --size 192x192x160 --spacing 1.8,1.8,2.5)
