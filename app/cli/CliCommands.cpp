@@ -246,16 +246,16 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
     study::Provenance provenance;
     provenance.command = "segment";
     provenance.inputs = {imageId};
-    provenance.parameters = provenanceParameters(parameters);
-    provenance.parameters["seed_mm"] = formatNumber(result.seedMm.x()) + "," + formatNumber(result.seedMm.y()) + "," +
-                                       formatNumber(result.seedMm.z());
+    provenance.parameters = parameters.valuesAsText();
+    provenance.parameters["seed_mm"] = numberText(result.seedMm.x()) + "," + numberText(result.seedMm.y()) + "," +
+                                       numberText(result.seedMm.z());
     provenance.parameters["seed_found_automatically"] = result.seedFound ? "yes" : "no";
     const std::string id = study.addLabel(result.label, "Vessel lumen", provenance, result.warnings);
     study.save();
     progress.report(1.0, "saved");
-    std::cout << "segmented " << imageId << " as " << id << ": " << formatNumber(result.figures.at("volume_ml"))
-              << " ml, boundary " << formatNumber(result.figures.at("threshold_hu")) << " HU (blood "
-              << formatNumber(result.figures.at("blood_hu")) << " HU, tissue " << formatNumber(result.figures.at("tissue_hu"))
+    std::cout << "segmented " << imageId << " as " << id << ": " << numberText(result.figures.at("volume_ml"))
+              << " ml, boundary " << numberText(result.figures.at("threshold_hu")) << " HU (blood "
+              << numberText(result.figures.at("blood_hu")) << " HU, tissue " << numberText(result.figures.at("tissue_hu"))
               << " HU), seed " << provenance.parameters["seed_mm"] << " mm"
               << (result.seedFound ? " (found automatically)" : "") << "\n";
     for (const std::string& warning : result.warnings)
@@ -280,18 +280,18 @@ int surfaceStudy(const Arguments& arguments, const Progress& progress)
     study::Provenance provenance;
     provenance.command = "surface";
     provenance.inputs = {labelId};
-    provenance.parameters = provenanceParameters(parameters);
+    provenance.parameters = parameters.valuesAsText();
     std::vector<std::string> notes;
     if (result.surface.points.size() < result.fullVertices)
         notes.push_back("decimated from " + std::to_string(result.fullVertices) + " vertices: shape error mean " +
-                        formatNumber(result.meanErrorMm) + " mm, Hausdorff " + formatNumber(result.hausdorffMm) + " mm");
+                        numberText(result.meanErrorMm) + " mm, Hausdorff " + numberText(result.hausdorffMm) + " mm");
     const std::string id = study.addSurface(result.surface, "Lumen surface", provenance, notes);
     study.save();
     if (arguments.hasOption("stl"))
         mesh::writeStl(result.surface, arguments.option("stl"));
     progress.report(1.0, "saved");
     std::cout << "surface of " << labelId << " as " << id << ": " << result.surface.points.size() << " vertices, "
-              << result.surface.triangles.size() << " triangles, " << formatNumber(result.surface.area()) << " mm^2\n";
+              << result.surface.triangles.size() << " triangles, " << numberText(result.surface.area()) << " mm^2\n";
     for (const std::string& note : notes)
         std::cout << note << "\n";
     return 0;
@@ -312,7 +312,7 @@ int skeletonStudy(const Arguments& arguments, const Progress& progress)
     study::Provenance provenance;
     provenance.command = "skeleton";
     provenance.inputs = {labelId};
-    provenance.parameters = provenanceParameters(parameters);
+    provenance.parameters = parameters.valuesAsText();
     std::vector<std::string> notes;
     if (result.crowdedAfterVdsm > 0)
         notes.push_back(std::to_string(result.crowdedAfterVdsm) + " crowded voxels remain after VDSM");
@@ -360,7 +360,7 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress)
     study::Provenance provenance;
     provenance.command = "centerline";
     provenance.inputs = {skeletonId, labelId};
-    provenance.parameters = provenanceParameters(parameters);
+    provenance.parameters = parameters.valuesAsText();
     if (fromTo)
         provenance.parameters["from_node"] = std::to_string(fromTo->first),
         provenance.parameters["to_node"] = std::to_string(fromTo->second);
@@ -371,7 +371,7 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress)
     for (const auto& edge : centerlines.edges)
         length += edge.length();
     std::cout << "centerlines of " << skeletonId << " as " << id << ": " << centerlines.edges.size()
-              << " paths, " << formatNumber(length) << " mm in all\n";
+              << " paths, " << numberText(length) << " mm in all\n";
     return 0;
 }
 
@@ -419,7 +419,7 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
     }
     const nlohmann::json document = {{"centerlines", centerlinesId},
                                      {"label", labelId},
-                                     {"parameters", provenanceParameters(parameters)},
+                                     {"parameters", parameters.valuesAsText()},
                                      {"max_diameter_mm", result.maxDiameterMm},
                                      {"max_caliper_mm", result.maxCaliperMm},
                                      {"worst_stenosis_segment", result.worstStenosisSegment},
@@ -432,19 +432,19 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
             throw Error("cannot write the measurements", {{"file", arguments.option("json")}});
     }
     progress.report(1.0, "measured");
-    std::cout << "maximum diameter " << formatNumber(result.maxDiameterMm) << " mm (largest caliper "
-              << formatNumber(result.maxCaliperMm) << " mm)\n";
+    std::cout << "maximum diameter " << numberText(result.maxDiameterMm) << " mm (largest caliper "
+              << numberText(result.maxCaliperMm) << " mm)\n";
     if (result.worstStenosisSegment >= 0)
     {
         const auto& worst = result.segments[std::size_t(result.worstStenosisSegment)];
-        std::cout << "worst stenosis " << formatNumber(worst.diameterStenosisPercent) << " % diameter, "
-                  << formatNumber(worst.areaStenosisPercent) << " % area (nodes " << worst.from << "-" << worst.to
-                  << ", minimal " << formatNumber(worst.minimalDiameterMm) << " mm of "
-                  << formatNumber(worst.referenceDiameterMm) << " mm)\n";
+        std::cout << "worst stenosis " << numberText(worst.diameterStenosisPercent) << " % diameter, "
+                  << numberText(worst.areaStenosisPercent) << " % area (nodes " << worst.from << "-" << worst.to
+                  << ", minimal " << numberText(worst.minimalDiameterMm) << " mm of "
+                  << numberText(worst.referenceDiameterMm) << " mm)\n";
     }
     for (const imaging::SegmentMeasurements& s : result.segments)
-        std::cout << "segment " << s.from << "-" << s.to << ": " << formatNumber(s.lengthMm) << " mm, radii "
-                  << formatNumber(s.startRadiusMm) << " -> " << formatNumber(s.endRadiusMm) << " mm\n";
+        std::cout << "segment " << s.from << "-" << s.to << ": " << numberText(s.lengthMm) << " mm, radii "
+                  << numberText(s.startRadiusMm) << " -> " << numberText(s.endRadiusMm) << " mm\n";
     return 0;
 }
 

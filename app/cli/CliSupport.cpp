@@ -2,7 +2,6 @@
 
 #include "vsim/core/Error.h"
 
-#include <sstream>
 
 namespace vsim::cli {
 
@@ -34,21 +33,6 @@ void applyParameters(const Arguments& arguments, ParameterSet& parameters)
     for (const auto& [name, value] : arguments.options)
         if (name == "param")
             parameters.setFromText(value);
-}
-
-std::string formatNumber(double value)
-{
-    std::ostringstream text;
-    text << value;
-    return text.str();
-}
-
-std::map<std::string, std::string> provenanceParameters(const ParameterSet& parameters)
-{
-    std::map<std::string, std::string> text;
-    for (const auto& [key, value] : parameters.values())
-        text[key] = formatNumber(value);
-    return text;
 }
 
 } // namespace vsim::cli

@@ -1,6 +1,6 @@
 #pragma once
 
-// What several vascusim-cli commands share: picking artifacts, --param, provenance text.
+// What several vascusim-cli commands share: picking artifacts and --param.
 
 #include "CliCommands.h"
 #include "vsim/core/Parameters.h"
@@ -22,8 +22,5 @@ std::string chooseMadeBy(const study::Study& study, const std::string& wanted, s
 std::string chooseCenterlines(const study::Study& study, const std::string& wanted);
 /// Applies every --param key=value to the set.
 void applyParameters(const Arguments& arguments, ParameterSet& parameters);
-std::string formatNumber(double value);
-/// Parameter values as text for provenance records.
-std::map<std::string, std::string> provenanceParameters(const ParameterSet& parameters);
 
 } // namespace vsim::cli

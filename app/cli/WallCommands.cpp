@@ -50,10 +50,10 @@ int meshWall(const Arguments& arguments, const Progress& progress)
         const double thickness = std::stod(arguments.option("thickness", "0.5")), cell = std::stod(arguments.option("cell", "1"));
         return addOtherWall(study, app::clothSheet(width, length, thickness, cell), "Cloth sheet",
                             {{"shape", "sheet"},
-                             {"width_mm", formatNumber(width)},
-                             {"length_mm", formatNumber(length)},
-                             {"thickness_mm", formatNumber(thickness)},
-                             {"cell_mm", formatNumber(cell)}});
+                             {"width_mm", numberText(width)},
+                             {"length_mm", numberText(length)},
+                             {"thickness_mm", numberText(thickness)},
+                             {"cell_mm", numberText(cell)}});
     }
     if (kind == "import")
     {
@@ -132,7 +132,14 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                   {"entropy_curve", entropy},
                                   {"stop_reason", run.stopReason},
                                   {"frames", run.frames.size()},
-                                  {"parameters", provenanceParameters(parameters)}};
+                                  {"frame_times_s", run.frameTimesS},
+                                  {"frame_pressures_kpa", [&run] {
+                                       std::vector<double> kpa;
+                                       for (double pa : run.framePressuresPa)
+                                           kpa.push_back(1e-3 * pa);
+                                       return kpa;
+                                   }()},
+                                  {"parameters", parameters.valuesAsText()}};
 
     const std::string id = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters);
     study.save();

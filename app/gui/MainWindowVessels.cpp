@@ -22,22 +22,9 @@
 #include <QVector3D>
 
 #include <algorithm>
-#include <sstream>
 
 namespace vsim::gui {
 namespace {
-
-std::map<std::string, std::string> asText(const ParameterSet& parameters)
-{
-    std::map<std::string, std::string> text;
-    for (const auto& [key, value] : parameters.values())
-    {
-        std::ostringstream number;
-        number << value;
-        text[key] = number.str();
-    }
-    return text;
-}
 
 const QColor kLumenColour(220, 60, 50);
 const QColor kSkeletonColour(250, 210, 40);
@@ -174,7 +161,7 @@ bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)
         [this, imageId, seedMm, outcome, parameters = m_segmentationParameters](const Progress& progress) {
             const CtVolume ct = m_document.study().loadImage(imageId); // the study is not edited while a task runs
             outcome->segmentation = imaging::segmentVessels(ct, parameters, seedMm, progress.subRange(0.0, 0.8));
-            outcome->parameters = asText(parameters);
+            outcome->parameters = parameters.valuesAsText();
             ParameterSet surface(mesh::surfaceParameters());
             surface.set("target_vertices", 20000); // enough for display
             outcome->surface =
@@ -228,8 +215,8 @@ bool MainWindow::extractSkeletonAndCenterlines()
             outcome->measurements = imaging::measureVessels(label, outcome->centerlines,
                                                             ParameterSet(imaging::measurementParameters()),
                                                             progress.subRange(0.9, 1.0));
-            outcome->skeletonParameters = asText(skeleton);
-            outcome->centerlineParameters = asText(centerline);
+            outcome->skeletonParameters = skeleton.valuesAsText();
+            outcome->centerlineParameters = centerline.valuesAsText();
         },
         [this, labelId, outcome] {
             study::Provenance skeleton;

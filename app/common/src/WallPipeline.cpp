@@ -1,30 +1,18 @@
 #include "vsim/app/WallPipeline.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/PrincipalAxis.h"
 #include "vsim/mesh/SurfaceRemeshing.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
 
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <sstream>
 
 namespace vsim::app {
-namespace {
-
-std::string text(double value)
-{
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
-} // namespace
-
 std::vector<ParameterSpec> wallMeshParameters()
 {
     const std::string group = "Wall mesh";
@@ -82,23 +70,14 @@ TetMesh asWall(TetMesh mesh)
 {
     if (mesh.pointFields.count("wall_layer") && mesh.pointFields.count("end_set"))
         return mesh;
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (const auto& p : mesh.points)
-        centre += p / double(mesh.points.size());
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (const auto& p : mesh.points)
-        covariance += (p - centre) * (p - centre).transpose();
-    const Eigen::Vector3d axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors().col(2);
-    double low = 1e300, high = -1e300;
-    for (const auto& p : mesh.points)
-        low = std::min(low, (p - centre).dot(axis)), high = std::max(high, (p - centre).dot(axis));
-    const double margin = 0.01 * (high - low);
+    const PrincipalAxis axis = principalAxis(mesh.points);
+    const double margin = 0.02 * axis.halfLength; // 1 % of the length
     std::vector<double> ends(mesh.points.size(), 0.0);
     std::size_t fixed = 0;
     for (std::size_t i = 0; i < mesh.points.size(); ++i)
     {
-        const double along = (mesh.points[i] - centre).dot(axis);
-        ends[i] = along <= low + margin ? 1.0 : along >= high - margin ? 2.0 : 0.0;
+        const double along = (mesh.points[i] - axis.centre).dot(axis.direction);
+        ends[i] = along <= -axis.halfLength + margin ? 1.0 : along >= axis.halfLength - margin ? 2.0 : 0.0;
         fixed += ends[i] > 0.0;
     }
     if (fixed == 0)
@@ -136,12 +115,12 @@ std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const s
     study::Provenance provenance;
     provenance.command = "mesh wall";
     provenance.inputs = {labelId, centerlinesId};
-    provenance.parameters = {{"thickness_mm", text(thicknessMm)},
-                             {"target_vertices", text(targetVertices)},
-                             {"remesh_edge_mm", text(build.remeshEdgeMm)}};
+    provenance.parameters = {{"thickness_mm", numberText(thicknessMm)},
+                             {"target_vertices", numberText(targetVertices)},
+                             {"remesh_edge_mm", numberText(build.remeshEdgeMm)}};
     const std::string id = study.addTetMesh(build.wall.mesh, "Vessel wall", provenance, build.wall.warnings);
-    study.setArtifactAttributes(id, {{"min_dihedral_deg", text(build.wall.minDihedralDeg)},
-                                     {"mean_min_dihedral_deg", text(build.wall.meanMinDihedralDeg)},
+    study.setArtifactAttributes(id, {{"min_dihedral_deg", numberText(build.wall.minDihedralDeg)},
+                                     {"mean_min_dihedral_deg", numberText(build.wall.meanMinDihedralDeg)},
                                      {"elements_under_5_deg", std::to_string(build.wall.slivers)},
                                      {"inverted_elements", std::to_string(build.wall.inverted)},
                                      {"ends", std::to_string(build.wall.endNodes.size())}});
@@ -168,17 +147,16 @@ std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, c
     provenance.inputs = {wallId};
     if (!centerlinesId.empty())
         provenance.inputs.push_back(centerlinesId);
-    for (const auto& [key, value] : parameters.values())
-        provenance.parameters[key] = text(value);
+    provenance.parameters = parameters.valuesAsText();
     provenance.parameters["protocol"] = protocol;
     provenance.parameters["backend"] = "cpu";
-    std::vector<std::string> warnings = run.warnings;
+    std::vector<std::string> warnings;
     if (!run.stopReason.empty())
         warnings.push_back("stopped early: " + run.stopReason);
     const std::string id = study.addTetMesh(run.frames.back(), "Wall stress (" + protocol + ")", provenance, warnings);
     std::map<std::string, std::string> attributes;
     for (const auto& [key, value] : run.metrics)
-        attributes[key] = text(value);
+        attributes[key] = numberText(value);
     study.setArtifactAttributes(id, attributes);
     return id;
 }

@@ -95,4 +95,19 @@ double ParameterSet::get(const std::string& key) const
     return found->second;
 }
 
+std::map<std::string, std::string> ParameterSet::valuesAsText() const
+{
+    std::map<std::string, std::string> text;
+    for (const auto& [key, value] : m_values)
+        text[key] = numberText(value);
+    return text;
+}
+
+std::string numberText(double value)
+{
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
 } // namespace vsim

@@ -48,8 +48,6 @@ void TetMesh::validate() const
 std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets,
                                               std::vector<std::size_t>* owners)
 {
-    // The face opposite corner a of a positively oriented tet, in this order, has an outward normal.
-    static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
     struct Seen
     {
         int count;
@@ -58,7 +56,7 @@ std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 
     };
     std::map<std::array<int, 3>, Seen> faces; // sorted corners -> what was seen
     for (std::size_t t = 0; t < tets.size(); ++t)
-        for (const auto& local : kFaces)
+        for (const auto& local : kTetFaces)
         {
             const std::array<int, 3> face{tets[t][std::size_t(local[0])], tets[t][std::size_t(local[1])],
                                           tets[t][std::size_t(local[2])]};

@@ -162,11 +162,10 @@ double minDihedralAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
 {
     const std::array<Eigen::Vector3d, 4> p{a, b, c, d};
     // Face normals (outward for a positive tet): face k is opposite corner k.
-    static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
     std::array<Eigen::Vector3d, 4> normal;
     for (int k = 0; k < 4; ++k)
-        normal[std::size_t(k)] = (p[std::size_t(kFaces[k][1])] - p[std::size_t(kFaces[k][0])])
-                                     .cross(p[std::size_t(kFaces[k][2])] - p[std::size_t(kFaces[k][0])])
+        normal[std::size_t(k)] = (p[std::size_t(kTetFaces[k][1])] - p[std::size_t(kTetFaces[k][0])])
+                                     .cross(p[std::size_t(kTetFaces[k][2])] - p[std::size_t(kTetFaces[k][0])])
                                      .normalized();
     double smallest = 180.0;
     for (int i = 0; i < 4; ++i)

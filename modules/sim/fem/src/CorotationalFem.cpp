@@ -3,6 +3,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/sim/fem/RotationExtraction.h"
 #include "vsim/sim/fem/StVenantKirchhoff.h"
+#include "vsim/sim/fem/TetElement.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -19,11 +20,10 @@ struct StoredBlock
     int index;
     bool transposed;
 };
-constexpr int kUpperIndex[4][4] = {{-1, 4, 5, 6}, {4, -1, 7, 8}, {5, 7, -1, 9}, {6, 8, 9, -1}};
 
 constexpr StoredBlock storedBlock(int a, int b)
 {
-    return a == b ? StoredBlock{a, false} : StoredBlock{kUpperIndex[a][b], a > b};
+    return a == b ? StoredBlock{a, false} : StoredBlock{kUpperBlockIndex[a][b], a > b};
 }
 
 } // namespace
@@ -134,7 +134,7 @@ std::size_t CorotationalFem::updateElements()
             m_elementForces[e].segment<3>(3 * a).noalias() = -(r * f.segment<3>(3 * a));
             for (int b = a + 1; b < 4; ++b)
             {
-                Eigen::Matrix3d& block = blocks[std::size_t(kUpperIndex[a][b])];
+                Eigen::Matrix3d& block = blocks[std::size_t(kUpperBlockIndex[a][b])];
                 block.noalias() = r * (k.block<3, 3>(3 * a, 3 * b) * r.transpose());
                 blocks[std::size_t(a)] -= block;
                 blocks[std::size_t(b)] -= block.transpose();

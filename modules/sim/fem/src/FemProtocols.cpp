@@ -1,6 +1,7 @@
 #include "vsim/sim/fem/FemProtocols.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/PrincipalAxis.h"
 #include "vsim/core/Units.h"
 
 #include <Eigen/Eigenvalues>
@@ -31,33 +32,6 @@ BackwardEulerSettings femIntegrator(const ParameterSet& p)
     settings.cgMaxIterations = int(p.get("cg_max_iterations"));
     return settings;
 }
-
-namespace {
-
-/// The principal axis of the wall's nodes (largest spread), its centre and half-length along it (mm).
-struct Axis
-{
-    Eigen::Vector3d centre, direction;
-    double halfLength;
-};
-
-Axis principalAxis(const std::vector<Eigen::Vector3d>& points)
-{
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (const auto& p : points)
-        centre += p / double(points.size());
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (const auto& p : points)
-        covariance += (p - centre) * (p - centre).transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
-    const Eigen::Vector3d direction = eigen.eigenvectors().col(2);
-    double low = 0.0, high = 0.0;
-    for (const auto& p : points)
-        low = std::min(low, (p - centre).dot(direction)), high = std::max(high, (p - centre).dot(direction));
-    return {centre + 0.5 * (low + high) * direction, direction, 0.5 * (high - low)};
-}
-
-} // namespace
 
 std::vector<ParameterSpec> femParameters()
 {
@@ -118,7 +92,7 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const 
     setup.steps = int(p.get("ramp_steps"));
     const double duration = setup.steps * setup.integrator.timeStep;
     setup.pressurePa = [=](double t) { return start + (end - start) * std::clamp(t / duration, 0.0, 1.0); };
-    const Axis axis = principalAxis(wall.points);
+    const PrincipalAxis axis = principalAxis(wall.points);
     const double half = 0.5 * p.get("loaded_fraction") * 2.0 * axis.halfLength;
     setup.loaded = [=](const Eigen::Vector3d& c) { return std::abs((c - axis.centre).dot(axis.direction)) <= half; };
     setup.frameEvery = std::max(1, setup.steps / 40);

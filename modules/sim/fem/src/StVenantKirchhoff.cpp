@@ -1,11 +1,11 @@
 #include "vsim/sim/fem/StVenantKirchhoff.h"
 
+#include "vsim/sim/fem/TetElement.h"
+
 #include <Eigen/LU>
 
 namespace vsim::sim::fem {
 namespace {
-
-constexpr int kUpperIndex[4][4] = {{-1, 4, 5, 6}, {4, -1, 7, 8}, {5, 7, -1, 9}, {6, 8, 9, -1}};
 
 Eigen::Matrix3d secondPiolaKirchhoff(const Eigen::Matrix3d& e, double lambda, double mu)
 {
@@ -42,7 +42,7 @@ void stVenantKirchhoffElement(const Eigen::Matrix3d& f, const Eigen::Matrix<doub
                 const Eigen::Matrix3d dP = dF * s + f * secondPiolaKirchhoff(dE, lambda, mu);
                 block.col(j) = volume * dP * g.row(a).transpose();
             }
-            blocks[std::size_t(kUpperIndex[a][b])] = block;
+            blocks[std::size_t(kUpperBlockIndex[a][b])] = block;
             blocks[std::size_t(a)] -= block; // rows of the tangent sum to zero (translation invariance)
             blocks[std::size_t(b)] -= block.transpose();
         }

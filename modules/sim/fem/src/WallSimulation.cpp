@@ -11,8 +11,6 @@
 namespace vsim::sim::fem {
 namespace {
 
-constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}; // outward for a positive tet
-
 const std::vector<double>& field(const TetMesh& wall, const char* name)
 {
     const auto found = wall.pointFields.find(name);
@@ -100,8 +98,8 @@ std::vector<std::array<int, 3>> WallSimulation::pressureFaces() const
     for (const ElementFace& face : m_faces)
     {
         const auto& tet = m_model.tets()[face.element];
-        nodes.push_back({tet[std::size_t(kFaces[face.opposite][0])], tet[std::size_t(kFaces[face.opposite][1])],
-                         tet[std::size_t(kFaces[face.opposite][2])]});
+        nodes.push_back({tet[std::size_t(kTetFaces[face.opposite][0])], tet[std::size_t(kTetFaces[face.opposite][1])],
+                         tet[std::size_t(kTetFaces[face.opposite][2])]});
     }
     return nodes;
 }

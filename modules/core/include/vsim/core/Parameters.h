@@ -45,10 +45,15 @@ public:
     const std::vector<ParameterSpec>& specs() const { return m_specs; }
     /// Values by key (sorted), for provenance records.
     const std::map<std::string, double>& values() const { return m_values; }
+    /// Values by key as text (numberText), for provenance records.
+    std::map<std::string, std::string> valuesAsText() const;
 
 private:
     std::vector<ParameterSpec> m_specs;
     std::map<std::string, double> m_values;
 };
+
+/// The text a number is recorded in (provenance, artifact attributes, CLI messages): the default stream form.
+std::string numberText(double value);
 
 } // namespace vsim

@@ -27,6 +27,9 @@ struct TetMesh
     void validate() const;
 };
 
+/// The face opposite corner k of a tetrahedron, ordered so that its normal points out of a positive element.
+inline constexpr int kTetFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
 /// Faces that belong to one element only, ordered so that their normal (p1-p0) x (p2-p0) points out of the
 /// solid (the elements must be positively oriented, as TetMesh::validate requires). `owners`, when given, receives
 /// each face's element.

@@ -42,7 +42,6 @@ struct FemRunResult
     std::map<std::string, double> metrics;
     std::vector<std::pair<double, double>> entropyCurve; ///< (pressure Pa, entropy) after each tear
     std::string stopReason;                              ///< why the run ended early, empty when it ran through
-    std::vector<std::string> warnings;
 };
 
 /// Runs the setup. Throws vsim::Error for a mesh that is not a wall (fields missing, no fixed end, no lumen face)

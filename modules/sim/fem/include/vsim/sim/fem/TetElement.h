@@ -15,6 +15,10 @@ using Matrix12d = Eigen::Matrix<double, 12, 12>;
 using Vector12d = Eigen::Matrix<double, 12, 1>;
 using StrainMatrix = Eigen::Matrix<double, 6, 12>;
 
+/// Where an element's 3x3 block (a, b), a != b, sits among the 10 distinct ones the models store: the 4 diagonal
+/// blocks first, then (0,1) (0,2) (0,3) (1,2) (1,3) (2,3); block (b, a) is its transpose.
+inline constexpr int kUpperBlockIndex[4][4] = {{-1, 4, 5, 6}, {4, -1, 7, 8}, {5, 7, -1, 9}, {6, 8, 9, -1}};
+
 /// What an element keeps from its rest shape.
 struct TetRest
 {
