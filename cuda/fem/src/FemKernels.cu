@@ -6,69 +6,140 @@ namespace {
 
 constexpr int kLanes = kRowLanes; // rows hold about 15 blocks
 
-/// Where off-diagonal block (a, b) of an element is stored among its 10 (CorotationalFem.h's layout).
-__device__ inline int upperIndex(int a, int b)
+/// Stored block `block` of the matrix, row-major.
+__device__ inline void loadBlock(const double* matrix, std::size_t block, double b[9])
 {
-    const int low = a < b ? a : b, high = a < b ? b : a;
-    return low == 0 ? 3 + high : low == 1 ? 5 + high : 9; // (0,1..3) -> 4..6, (1,2..3) -> 7..8, (2,3) -> 9
+    for (int k = 0; k < 9; ++k)
+        b[k] = __ldg(matrix + kBlockStride * block + k);
 }
 
-/// Sums `value` over the block into thread 0's return value (blockDim.x a power of two, at most 1024).
-__device__ double blockSum(double value, double* shared)
+__device__ inline void storeBlock(double* matrix, std::size_t block, const double b[9])
 {
-    shared[threadIdx.x] = value;
-    __syncthreads();
-    for (unsigned stride = blockDim.x / 2; stride > 0; stride /= 2)
-    {
-        if (threadIdx.x < stride)
-            shared[threadIdx.x] += shared[threadIdx.x + stride];
-        __syncthreads();
-    }
-    const double sum = shared[0];
-    __syncthreads();
-    return sum;
+    for (int k = 0; k < 9; ++k)
+        matrix[kBlockStride * block + k] = b[k];
 }
 
-/// True in thread 0 of the last block to get here (the counter wraps back to 0 for the next sweep).
-__device__ bool lastBlock(DeviceScalars* s)
+/// Grid-wide sums of `Count` values per thread in a fixed order, so that a step repeats bit for bit: every block
+/// stores its sums in partials[Count * block + i]; the last block to finish adds those up (its first warp) and gets
+/// true, with the sums in `totals` in that warp's threads. The counter wraps back to 0 for the next sweep.
+template <int Count>
+__device__ bool gridSum(double (&values)[Count], double* partials, DeviceScalars* s, double (&totals)[Count])
 {
+    __shared__ double warpSums[Count][32];
     __shared__ bool last;
-    __threadfence();
-    if (threadIdx.x == 0)
-        last = atomicInc(&s->blocksDone, gridDim.x - 1) == gridDim.x - 1;
+    const unsigned lane = threadIdx.x % 32, warp = threadIdx.x / 32;
+    for (int i = 0; i < Count; ++i)
+    {
+        for (int offset = 16; offset > 0; offset /= 2)
+            values[i] += __shfl_down_sync(0xffffffffu, values[i], offset);
+        if (lane == 0)
+            warpSums[i][warp] = values[i];
+    }
     __syncthreads();
-    return last && threadIdx.x == 0;
+    if (threadIdx.x == 0)
+    {
+        for (int i = 0; i < Count; ++i)
+        {
+            double sum = 0.0;
+            for (unsigned w = 0; w < blockDim.x / 32; ++w)
+                sum += warpSums[i][w];
+            partials[Count * blockIdx.x + i] = sum;
+        }
+        __threadfence(); // the partials are visible before the count says so
+        last = atomicInc(&s->blocksDone, gridDim.x - 1) == gridDim.x - 1;
+    }
+    __syncthreads();
+    if (!last || warp != 0)
+        return false;
+    for (int i = 0; i < Count; ++i)
+    {
+        double sum = 0.0;
+        for (unsigned block = lane; block < gridDim.x; block += 32)
+            sum += __ldcg(partials + Count * block + i); // from L2: other multiprocessors wrote them
+        for (int offset = 16; offset > 0; offset /= 2)
+            sum += __shfl_xor_sync(0xffffffffu, sum, offset);
+        totals[i] = sum;
+    }
+    return true;
 }
 
-/// Row `node` of the matrix times `v`, computed by kLanes neighbouring threads (each takes every kLanes-th block
-/// of the row; the matrix is stored component-major, so neighbouring lanes read neighbouring memory) and summed
-/// with shuffles: every lane of the group returns the sum. Lanes of a node past the end contribute zeros.
+/// How many passes over the rows a grid-stride kernel makes (the same in every thread, so that the shuffles of a
+/// row group always find all their lanes).
+__device__ inline int rowPasses(int rows, int rowsPerGrid) { return (rows + rowsPerGrid - 1) / rowsPerGrid; }
+
+/// Row `node` of the matrix times `v`, computed by kLanes neighbouring threads and summed with shuffles: every
+/// lane of the group returns the sum. The row's blocks are numbered lower (read transposed from the rows above),
+/// then stored (diagonal and upper); lane l takes every kLanes-th from l. Lanes past the end contribute zeros.
 __device__ void rowProduct(const DeviceModel& m, const double* v, int node, int lane, double out[3])
 {
     out[0] = out[1] = out[2] = 0.0;
     if (node < m.nodes)
-        for (std::uint32_t s = m.rowStart[node] + std::uint32_t(lane); s < m.rowStart[node + 1]; s += kLanes)
+    {
+        const std::uint32_t lowerBegin = m.lowerRowStart[node], lowerCount = m.lowerRowStart[node + 1] - lowerBegin;
+        const std::uint32_t storedBegin = m.rowStart[node], storedCount = m.rowStart[node + 1] - storedBegin;
+        for (std::uint32_t k = std::uint32_t(lane); k < lowerCount + storedCount; k += kLanes)
         {
-            const double* x = v + 3 * std::size_t(__ldg(m.columns + s));
-            const std::size_t stride = std::size_t(m.blocks);
+            const bool transposed = k < lowerCount;
+            const std::uint32_t block = transposed ? __ldg(m.lowerSlots + lowerBegin + k) : storedBegin + k - lowerCount;
+            const std::uint32_t column = transposed ? __ldg(m.lowerColumns + lowerBegin + k) : __ldg(m.columns + block);
+            const double* x = v + 3 * std::size_t(column);
             double b[9];
-            for (int j = 0; j < 9; ++j)
-                b[j] = double(__ldg(m.matrix + j * stride + s)); // read-only during the sweep
+            loadBlock(m.matrix, block, b); // read-only during the sweep
             const double x0 = x[0], x1 = x[1], x2 = x[2];
-            out[0] += b[0] * x0 + b[1] * x1 + b[2] * x2;
-            out[1] += b[3] * x0 + b[4] * x1 + b[5] * x2;
-            out[2] += b[6] * x0 + b[7] * x1 + b[8] * x2;
+            if (transposed)
+            {
+                out[0] += b[0] * x0 + b[3] * x1 + b[6] * x2;
+                out[1] += b[1] * x0 + b[4] * x1 + b[7] * x2;
+                out[2] += b[2] * x0 + b[5] * x1 + b[8] * x2;
+            }
+            else
+            {
+                out[0] += b[0] * x0 + b[1] * x1 + b[2] * x2;
+                out[1] += b[3] * x0 + b[4] * x1 + b[5] * x2;
+                out[2] += b[6] * x0 + b[7] * x1 + b[8] * x2;
+            }
         }
+    }
     for (int offset = kLanes / 2; offset > 0; offset /= 2)
         for (int i = 0; i < 3; ++i)
             out[i] += __shfl_xor_sync(0xffffffffu, out[i], offset, kLanes);
+}
+
+/// What the kernels read of element `e`'s record (DeviceModel::elementRecords): its rotation, the shape-function
+/// gradients (1/m: rows of the rest edges' inverse, g_0 = -(g_1 + g_2 + g_3), TetElement.cpp), V lambda, V mu.
+struct ElementShape
+{
+    Quat rotation;
+    double g[4][3];
+    double volumeLambda, volumeMu;
+};
+
+__device__ inline ElementShape elementShape(const DeviceModel& m, std::size_t e)
+{
+    double s[16]; // read as 16-byte pairs: the record is 128-byte aligned
+    const double2* pairs = reinterpret_cast<const double2*>(m.elementRecords + 16 * e);
+    for (int k = 0; k < 8; ++k)
+    {
+        const double2 pair = pairs[k];
+        s[2 * k] = pair.x, s[2 * k + 1] = pair.y;
+    }
+    ElementShape shape;
+    shape.rotation = Quat{s[0], s[1], s[2], s[3]};
+    for (int b = 1; b < 4; ++b)
+        for (int i = 0; i < 3; ++i)
+            shape.g[b][i] = s[4 + 3 * (b - 1) + i];
+    for (int i = 0; i < 3; ++i)
+        shape.g[0][i] = -(shape.g[1][i] + shape.g[2][i] + shape.g[3][i]);
+    shape.volumeLambda = s[13];
+    shape.volumeMu = s[14];
+    return shape;
 }
 
 } // namespace
 
 __global__ void resetKernel(DeviceScalars* s)
 {
-    s->bb = s->rr = s->rz = s->pq = s->rzNext = 0.0;
+    s->rz = 0.0;
     s->done = 0;
     s->iterations = 0;
     s->inverted = 0;
@@ -83,110 +154,122 @@ __global__ void elementKernel(DeviceModel m, const double* x, DeviceScalars* s)
     int node[4];
     for (int a = 0; a < 4; ++a)
         node[a] = m.tets[4 * e + a];
+    const ElementShape shape = elementShape(m, std::size_t(e));
     Mat3 edges, restInverse;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
         {
             edges(r, c) = x[3 * node[c + 1] + r] - x[3 * node[0] + r];
-            restInverse(r, c) = m.restEdgesInverse[9 * std::size_t(e) + 3 * r + c];
+            restInverse(r, c) = shape.g[r + 1][c];
         }
     const Mat3 deformation = multiply(edges, restInverse);
-    Quat q{m.quaternions[4 * e], m.quaternions[4 * e + 1], m.quaternions[4 * e + 2], m.quaternions[4 * e + 3]};
+    Quat q = shape.rotation;
     if (determinant(deformation) <= 0.0)
         atomicAdd(&s->inverted, 1);
     else
     {
         extractRotation(deformation, q, 20, 1e-10);
-        m.quaternions[4 * e] = q.w, m.quaternions[4 * e + 1] = q.x, m.quaternions[4 * e + 2] = q.y,
-        m.quaternions[4 * e + 3] = q.z;
+        double* record = m.elementRecords + 16 * std::size_t(e);
+        record[0] = q.w, record[1] = q.x, record[2] = q.y, record[3] = q.z;
     }
     const Mat3 r = rotationMatrix(q);
-    double u[12];
-    for (int a = 0; a < 4; ++a)
+    // f = -R K u with u = R^T x - X: K u = V sigma g_a for the linear strain of the displacement gradient
+    // H = sum_b u_b g_b^T (sigma = lambda tr(H) I + mu (H + H^T)), the same product as K_e = V B^T D B.
+    Mat3 h;
+    for (int i = 0; i < 9; ++i)
+        h.m[i] = 0.0;
+    for (int b = 0; b < 4; ++b)
+    {
+        double u[3];
         for (int i = 0; i < 3; ++i)
-            u[3 * a + i] = r(0, i) * x[3 * node[a]] + r(1, i) * x[3 * node[a] + 1] + r(2, i) * x[3 * node[a] + 2] -
-                           m.rest[3 * node[a] + i];
-    // K is stored entry-major (entry c of every element together) so that a warp's loads coalesce.
-    const std::size_t elements = std::size_t(m.elements);
-    auto k = [&](int entry) { return m.stiffness[std::size_t(entry) * elements + std::size_t(e)]; };
-    auto force = [&](int entry) -> double& { return m.elementForces[std::size_t(entry) * elements + std::size_t(e)]; };
+            u[i] = r(0, i) * x[3 * node[b]] + r(1, i) * x[3 * node[b] + 1] + r(2, i) * x[3 * node[b] + 2] -
+                   m.rest[3 * node[b] + i];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                h(i, j) += u[i] * shape.g[b][j];
+    }
+    const double pressure = shape.volumeLambda * (h(0, 0) + h(1, 1) + h(2, 2));
+    Mat3 stress; // V sigma
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            stress(i, j) = shape.volumeMu * (h(i, j) + h(j, i)) + (i == j ? pressure : 0.0);
     for (int a = 0; a < 4; ++a)
     {
         double f[3];
         for (int i = 0; i < 3; ++i)
-        {
-            double sum = 0.0;
-            for (int c = 0; c < 12; ++c)
-                sum += k(12 * (3 * a + i) + c) * u[c];
-            f[i] = sum;
-        }
+            f[i] = stress(i, 0) * shape.g[a][0] + stress(i, 1) * shape.g[a][1] + stress(i, 2) * shape.g[a][2];
+        double* target = m.elementForces + 3 * std::size_t(m.forceSlots[4 * e + a]);
         for (int i = 0; i < 3; ++i)
-            force(3 * a + i) = -(r(i, 0) * f[0] + r(i, 1) * f[1] + r(i, 2) * f[2]);
+            target[i] = -(r(i, 0) * f[0] + r(i, 1) * f[1] + r(i, 2) * f[2]);
     }
-    // Entry-major like K: entry j of element e at j * elements + e (coalesced writes).
-    auto blockEntry = [&](int block, int j) -> MatrixReal& {
-        return m.elementBlocks[std::size_t(9 * block + j) * elements + std::size_t(e)];
-    };
-    Mat3 diagonal[4];
-    for (int a = 0; a < 4; ++a)
-        for (int i = 0; i < 9; ++i)
-            diagonal[a].m[i] = 0.0;
-    for (int a = 0; a < 4; ++a)
-        for (int b = a + 1; b < 4; ++b)
-        {
-            Mat3 kab;
-            for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j)
-                    kab(i, j) = k(12 * (3 * a + i) + 3 * b + j);
-            const Mat3 rotated = multiply(r, multiplyTransposed(kab, r)); // R (K_ab R^T)
-            const int stored = upperIndex(a, b);
-            for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j)
-                {
-                    blockEntry(stored, 3 * i + j) = MatrixReal(rotated(i, j));
-                    diagonal[a](i, j) -= rotated(i, j);
-                    diagonal[b](i, j) -= rotated(j, i);
-                }
-        }
-    for (int a = 0; a < 4; ++a)
-        for (int i = 0; i < 9; ++i)
-            blockEntry(a, i) = MatrixReal(diagonal[a].m[i]);
 }
 
-__global__ void assembleKernel(DeviceModel m, double massFactor, double stiffnessFactor)
+/// Off-diagonal stored block t = sum over its elements of R K_ab R^T, with K_ab = V (lambda g_a g_b^T + mu g_b g_a^T +
+/// mu (g_a . g_b) I) (V B^T D B written out per node pair; K_ba = K_ab^T), times the stiffness factor.
+__global__ void assembleKernel(DeviceModel m, double stiffnessFactor)
 {
-    const int slot = blockIdx.x * blockDim.x + threadIdx.x;
-    if (slot >= m.blocks)
+    const int stored = blockIdx.x * blockDim.x + threadIdx.x;
+    if (stored >= m.storedBlocks)
         return;
-    double sum[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    const std::uint32_t slot = m.assembledSource[stored];
+    if (slot == kDiagonalBlock)
+        return; // diagonalKernel's
+    Mat3 sum;
+    for (int j = 0; j < 9; ++j)
+        sum.m[j] = 0.0;
     for (std::uint32_t i = m.blockEntryStart[slot]; i < m.blockEntryStart[slot + 1]; ++i)
     {
-        const std::uint32_t entry = m.blockEntries[i], element = entry / 16, local = entry % 16;
-        const int a = int(local / 4), b = int(local % 4);
-        const int stored = a == b ? a : upperIndex(a, b);
-        const std::size_t elements = std::size_t(m.elements);
-        auto block = [&](int j) { return double(__ldg(m.elementBlocks + std::size_t(9 * stored + j) * elements + element)); };
-        if (a > b)
-            for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c)
-                    sum[3 * r + c] += block(3 * c + r);
-        else
-            for (int j = 0; j < 9; ++j)
-                sum[j] += block(j);
+        const std::uint32_t entry = m.blockEntries[i], element = entry / 16;
+        const int a = int(entry % 16 / 4), b = int(entry % 4);
+        const ElementShape shape = elementShape(m, element);
+        const double* ga = shape.g[a];
+        const double* gb = shape.g[b];
+        const double dot = shape.volumeMu * (ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2]);
+        Mat3 k;
+        for (int row = 0; row < 3; ++row)
+            for (int c = 0; c < 3; ++c)
+                k(row, c) = shape.volumeLambda * ga[row] * gb[c] + shape.volumeMu * ga[c] * gb[row] + (row == c ? dot : 0.0);
+        const Mat3 r = rotationMatrix(shape.rotation);
+        const Mat3 rotated = multiply(r, multiplyTransposed(k, r));
+        for (int j = 0; j < 9; ++j)
+            sum.m[j] += rotated.m[j];
     }
     for (int j = 0; j < 9; ++j)
-        m.matrix[std::size_t(j) * std::size_t(m.blocks) + std::size_t(slot)] = MatrixReal(stiffnessFactor * sum[j]);
+        sum.m[j] *= stiffnessFactor;
+    storeBlock(m.matrix, std::size_t(stored), sum.m);
 }
 
-__global__ void addMassKernel(DeviceModel m, double massFactor)
+/// Diagonal block i = c_M M_i - sum over j != i of the stiffness blocks A_ij just assembled: every element's
+/// K_aa is -sum_b K_ab (rigid translations carry no force), the identity the CPU's element pass uses per element.
+/// Summing the assembled row instead spares the assembly the diagonal blocks' many elements (about 24 each, four
+/// times an edge's), which kept most threads of a warp idle.
+__global__ void diagonalKernel(DeviceModel m, double massFactor)
 {
-    const int node = blockIdx.x * blockDim.x + threadIdx.x;
-    if (node >= m.nodes)
+    const int thread = blockIdx.x * blockDim.x + threadIdx.x, node = thread / kLanes, lane = thread % kLanes;
+    double sum[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    if (node < m.nodes)
+    {
+        const std::uint32_t lowerBegin = m.lowerRowStart[node], lowerCount = m.lowerRowStart[node + 1] - lowerBegin;
+        const std::uint32_t upperBegin = m.rowStart[node] + 1, upperCount = m.rowStart[node + 1] - upperBegin;
+        for (std::uint32_t k = std::uint32_t(lane); k < lowerCount + upperCount; k += kLanes)
+        {
+            const bool transposed = k < lowerCount; // A_ij = A_ji^T for j < i
+            double block[9];
+            loadBlock(m.matrix, transposed ? m.lowerSlots[lowerBegin + k] : upperBegin + k - lowerCount, block);
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                    sum[3 * r + c] += transposed ? block[3 * c + r] : block[3 * r + c];
+        }
+    }
+    for (int offset = kLanes / 2; offset > 0; offset /= 2)
+        for (int j = 0; j < 9; ++j)
+            sum[j] += __shfl_xor_sync(0xffffffffu, sum[j], offset, kLanes);
+    if (node >= m.nodes || lane != 0)
         return;
-    const std::size_t slot = m.diagonalSlot[node], stride = std::size_t(m.blocks);
-    const double add = massFactor * m.mass[3 * node];
-    for (int j : {0, 4, 8})
-        m.matrix[std::size_t(j) * stride + slot] = MatrixReal(double(m.matrix[std::size_t(j) * stride + slot]) + add);
+    const double mass = massFactor * m.mass[3 * node];
+    for (int j = 0; j < 9; ++j)
+        sum[j] = -sum[j] + (j % 4 == 0 ? mass : 0.0);
+    storeBlock(m.matrix, m.rowStart[node], sum);
 }
 
 __global__ void forceKernel(DeviceModel m, double* force)
@@ -196,12 +279,8 @@ __global__ void forceKernel(DeviceModel m, double* force)
         return;
     double sum[3] = {0, 0, 0};
     for (std::uint32_t i = m.nodeEntryStart[node]; i < m.nodeEntryStart[node + 1]; ++i)
-    {
-        const std::uint32_t entry = m.nodeEntries[i];
-        const std::size_t elements = std::size_t(m.elements), element = entry / 4, first = 3 * (entry % 4);
         for (int k = 0; k < 3; ++k)
-            sum[k] += __ldg(m.elementForces + (first + std::size_t(k)) * elements + element);
-    }
+            sum[k] += __ldg(m.elementForces + 3 * std::size_t(i) + k);
     force[3 * node] = sum[0], force[3 * node + 1] = sum[1], force[3 * node + 2] = sum[2];
 }
 
@@ -246,19 +325,22 @@ __global__ void rightHandSideKernel(DeviceModel m, const double* force, const do
 }
 
 __global__ void cgInitKernel(DeviceModel m, const double* b, const double* x, double* inverseDiagonal, double* r,
-                             double* z, double* p, double* q, DeviceScalars* s)
+                             double* z, double* p, double* q, double* partials, DeviceScalars* s)
 {
-    __shared__ double shared[256];
-    const int thread = blockIdx.x * blockDim.x + threadIdx.x, node = thread / kLanes, lane = thread % kLanes;
-    double ax[3];
-    rowProduct(m, x, node, lane, ax);
-    double bb = 0.0, rr = 0.0, rz = 0.0;
-    if (node < m.nodes && lane == 0)
+    const int groups = int(gridDim.x * blockDim.x) / kLanes, lane = int(threadIdx.x) % kLanes;
+    double sums[3] = {0.0, 0.0, 0.0}; // b.b, r.r, r.z over the free components
+    for (int pass = 0, passes = rowPasses(m.nodes, groups); pass < passes; ++pass)
     {
-        const std::size_t slot = m.diagonalSlot[node], stride = std::size_t(m.blocks);
+        const int node = int(blockIdx.x * blockDim.x + threadIdx.x) / kLanes + pass * groups;
+        double ax[3];
+        rowProduct(m, x, node, lane, ax);
+        if (node >= m.nodes || lane != 0)
+            continue;
+        double stored[9];
+        loadBlock(m.matrix, m.rowStart[node], stored);
         Mat3 block;
         for (int j = 0; j < 9; ++j)
-            block.m[j] = double(m.matrix[j * stride + slot]);
+            block.m[j] = stored[j];
         const double det = determinant(block);
         Mat3 inverse;
         if (fabs(det) > 0.0)
@@ -285,8 +367,8 @@ __global__ void cgInitKernel(DeviceModel m, const double* b, const double* x, do
         {
             const double bFree = mask[i] * b[3 * node + i];
             residual[i] = bFree - mask[i] * ax[i];
-            bb += bFree * bFree;
-            rr += residual[i] * residual[i];
+            sums[0] += bFree * bFree;
+            sums[1] += residual[i] * residual[i];
         }
         const double* inv = inverseDiagonal + 9 * std::size_t(node);
         for (int i = 0; i < 3; ++i)
@@ -296,111 +378,100 @@ __global__ void cgInitKernel(DeviceModel m, const double* b, const double* x, do
             z[3 * node + i] = zi;
             p[3 * node + i] = 0.0;
             q[3 * node + i] = 0.0;
-            rz += residual[i] * zi;
+            sums[2] += residual[i] * zi;
         }
     }
-    bb = blockSum(bb, shared);
-    rr = blockSum(rr, shared);
-    rz = blockSum(rz, shared);
-    if (threadIdx.x == 0)
+    double totals[3];
+    if (gridSum(sums, partials, s, totals) && threadIdx.x == 0)
     {
-        atomicAdd(&s->bb, bb);
-        atomicAdd(&s->rr, rr);
-        atomicAdd(&s->rz, rz);
-    }
-    if (lastBlock(s))
-    {
-        const double sbb = atomicAdd(&s->bb, 0.0), srr = atomicAdd(&s->rr, 0.0);
-        s->reference = sbb > 0.0 ? sqrt(sbb) : sqrt(srr);
-        s->residual = s->reference > 0.0 ? sqrt(srr) / s->reference : 0.0;
+        s->reference = totals[0] > 0.0 ? sqrt(totals[0]) : sqrt(totals[1]);
+        s->residual = s->reference > 0.0 ? sqrt(totals[1]) / s->reference : 0.0;
+        s->rz = totals[2];
         s->done = s->reference == 0.0 ? 1 : 0;
         s->beta = 0.0;
-        s->pq = 0.0;
     }
 }
 
 /// Sweep 1 of an iteration (solveConjugateGradient's first loop): p = z + beta p, q = S A z + beta q, p.q; the last
 /// block computes alpha.
-__global__ void cgDirectionKernel(DeviceModel m, const double* z, double* p, double* q, DeviceScalars* s,
-                                  double tolerance, int maxIterations)
+__global__ void cgDirectionKernel(DeviceModel m, const double* z, double* p, double* q, double* partials,
+                                  DeviceScalars* s, double tolerance, int maxIterations)
 {
-    __shared__ double shared[256];
     if (s->done || s->residual <= tolerance || s->iterations >= maxIterations)
         return; // the whole grid agrees: these only change between kernels
-    const int thread = blockIdx.x * blockDim.x + threadIdx.x, node = thread / kLanes, lane = thread % kLanes;
-    double w[3];
-    rowProduct(m, z, node, lane, w);
-    double pq = 0.0;
-    if (node < m.nodes && lane == 0)
+    const int groups = int(gridDim.x * blockDim.x) / kLanes, lane = int(threadIdx.x) % kLanes;
+    const double beta = s->beta;
+    double pq[1] = {0.0};
+    for (int pass = 0, passes = rowPasses(m.nodes, groups); pass < passes; ++pass)
     {
-        const double beta = s->beta;
-        for (int i = 0; i < 3; ++i)
-        {
-            const double pi = z[3 * node + i] + beta * p[3 * node + i];
-            const double qi = m.freeMask[3 * node + i] * w[i] + beta * q[3 * node + i];
-            p[3 * node + i] = pi;
-            q[3 * node + i] = qi;
-            pq += pi * qi;
-        }
+        const int node = int(blockIdx.x * blockDim.x + threadIdx.x) / kLanes + pass * groups;
+        const bool owner = node < m.nodes && lane < 3; // lane i updates component i
+        const std::size_t i = 3 * std::size_t(node) + std::size_t(lane);
+        double zi = 0.0, pi = 0.0, qi = 0.0, free = 0.0;
+        if (owner) // loaded before the row product so that both wait on memory together
+            zi = z[i], pi = p[i], qi = q[i], free = m.freeMask[i];
+        double w[3];
+        rowProduct(m, z, node, lane, w);
+        if (!owner)
+            continue;
+        pi = zi + beta * pi;
+        qi = free * (lane == 0 ? w[0] : lane == 1 ? w[1] : w[2]) + beta * qi;
+        p[i] = pi;
+        q[i] = qi;
+        pq[0] += pi * qi;
     }
-    pq = blockSum(pq, shared);
-    if (threadIdx.x == 0)
-        atomicAdd(&s->pq, pq);
-    if (lastBlock(s))
+    double total[1];
+    if (gridSum(pq, partials, s, total) && threadIdx.x == 0)
     {
-        const double total = atomicAdd(&s->pq, 0.0);
-        if (!(total > 0.0))
+        if (!(total[0] > 0.0))
             s->done = 1; // not positive definite along p (or NaN)
         else
-            s->alpha = s->rz / total;
-        s->rzNext = 0.0;
-        s->rr = 0.0;
+            s->alpha = s->rz / total[0];
     }
 }
 
 /// Sweep 2: x += alpha p, r -= alpha q, z = P r, with r.z and r.r; the last block computes beta and the residual.
+/// One thread per component, ten nodes per warp (lanes 30 and 31 idle), so that every load is coalesced; a node's
+/// three residual components reach each other by shuffles.
 __global__ void cgUpdateKernel(DeviceModel m, const double* inverseDiagonal, double* x, double* r, double* z,
-                               const double* p, const double* q, DeviceScalars* s, double tolerance, int maxIterations)
+                               const double* p, const double* q, double* partials, DeviceScalars* s, double tolerance,
+                               int maxIterations)
 {
-    __shared__ double shared[256];
     if (s->done || s->residual <= tolerance || s->iterations >= maxIterations)
         return;
-    const int node = blockIdx.x * blockDim.x + threadIdx.x;
-    double rzNext = 0.0, rr = 0.0;
-    if (node < m.nodes)
+    const double alpha = s->alpha;
+    const int lane = int(threadIdx.x % 32), component = lane % 3, first = lane - component;
+    const int warps = int(gridDim.x * blockDim.x / 32), chunks = (m.nodes + kNodesPerWarp - 1) / kNodesPerWarp;
+    double sums[2] = {0.0, 0.0}; // r.z, r.r
+    for (int chunk = int((blockIdx.x * blockDim.x + threadIdx.x) / 32); chunk < chunks; chunk += warps)
     {
-        const double alpha = s->alpha;
-        double rNode[3];
-        for (int i = 0; i < 3; ++i)
+        const int node = kNodesPerWarp * chunk + lane / 3;
+        const bool active = lane < 3 * kNodesPerWarp && node < m.nodes;
+        const std::size_t i = 3 * std::size_t(node) + std::size_t(component);
+        double ri = 0.0;
+        if (active)
         {
-            x[3 * node + i] += alpha * p[3 * node + i];
-            rNode[i] = r[3 * node + i] - alpha * q[3 * node + i];
-            r[3 * node + i] = rNode[i];
+            x[i] += alpha * p[i];
+            ri = r[i] - alpha * q[i];
+            r[i] = ri;
         }
-        const double* inv = inverseDiagonal + 9 * std::size_t(node);
-        for (int i = 0; i < 3; ++i)
-        {
-            const double zi = inv[3 * i] * rNode[0] + inv[3 * i + 1] * rNode[1] + inv[3 * i + 2] * rNode[2];
-            z[3 * node + i] = zi;
-            rzNext += rNode[i] * zi;
-            rr += rNode[i] * rNode[i];
-        }
+        const double r0 = __shfl_sync(0xffffffffu, ri, first), r1 = __shfl_sync(0xffffffffu, ri, first + 1),
+                     r2 = __shfl_sync(0xffffffffu, ri, first + 2);
+        if (!active)
+            continue;
+        const double* inv = inverseDiagonal + 9 * std::size_t(node) + 3 * std::size_t(component);
+        const double zi = inv[0] * r0 + inv[1] * r1 + inv[2] * r2;
+        z[i] = zi;
+        sums[0] += ri * zi;
+        sums[1] += ri * ri;
     }
-    rzNext = blockSum(rzNext, shared);
-    rr = blockSum(rr, shared);
-    if (threadIdx.x == 0)
+    double totals[2];
+    if (gridSum(sums, partials, s, totals) && threadIdx.x == 0)
     {
-        atomicAdd(&s->rzNext, rzNext);
-        atomicAdd(&s->rr, rr);
-    }
-    if (lastBlock(s))
-    {
-        const double next = atomicAdd(&s->rzNext, 0.0);
-        s->beta = next / s->rz;
-        s->rz = next;
-        s->residual = sqrt(atomicAdd(&s->rr, 0.0)) / s->reference;
+        s->beta = totals[0] / s->rz;
+        s->rz = totals[0];
+        s->residual = sqrt(totals[1]) / s->reference;
         s->iterations += 1;
-        s->pq = 0.0;
     }
 }
 
