@@ -101,13 +101,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
     const std::string bundle = arguments.option("study"), protocol = arguments.option("protocol");
     if (bundle.empty() || arguments.positional != std::vector<std::string>{"fem"} || protocol.empty())
         throw Error("usage: vascusim-cli simulate fem --study <study.vsim> --protocol thesis-rupture|physiological "
-                    "[--mesh ID] [--centerlines ID] [--backend auto|cpu] [--param key=value] [--out DIR]");
-    const std::string backend = arguments.option("backend", "auto");
-    if (backend == "cuda")
-        throw Error("simulate fem runs on the CPU in this version (the CUDA backend is benchmarked and checked "
-                    "against it by tst_gpu_fem); use --backend cpu or auto");
-    if (backend != "auto" && backend != "cpu")
-        throw Error("unknown backend '" + backend + "' (auto, cpu)");
+                    "[--mesh ID] [--centerlines ID] [--backend auto|cpu|cuda] [--param key=value] [--out DIR]");
     if (protocol == "interactive")
         throw Error("the interactive protocol needs the workstation (vascusim): it drags the wall with the mouse");
     if (protocol != "thesis-rupture" && protocol != "physiological")
@@ -117,17 +111,19 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                             "the study has no wall mesh: run vascusim-cli mesh wall first");
     ParameterSet parameters(sim::fem::femParameters());
     applyParameters(arguments, parameters);
+    const app::WallBackend backend = app::chooseWallBackend(arguments.option("backend", "auto"), parameters);
     const std::string centerlinesId =
         protocol == "physiological" ? chooseCenterlines(study, arguments.option("centerlines")) : std::string();
     const sim::fem::FemRunResult run =
-        app::runWallProtocol(study, protocol, meshId, centerlinesId, parameters, progress.subRange(0.0, 0.95));
+        app::runWallProtocol(study, protocol, meshId, centerlinesId, parameters, backend, progress.subRange(0.0, 0.95));
     nlohmann::json metrics(run.metrics);
     nlohmann::json entropy = nlohmann::json::array();
     for (const auto& [pressure, value] : run.entropyCurve)
         entropy.push_back({{"pressure_mpa", pressure * 1e-6}, {"entropy", value}});
     const nlohmann::json document{{"protocol", protocol},
                                   {"mesh", meshId},
-                                  {"backend", "cpu"},
+                                  {"backend", backend.name},
+                                  {"device", backend.device},
                                   {"metrics", metrics},
                                   {"entropy_curve", entropy},
                                   {"stop_reason", run.stopReason},
@@ -141,7 +137,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                    }()},
                                   {"parameters", parameters.valuesAsText()}};
 
-    const std::string id = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters);
+    const std::string id = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters, backend);
     study.save();
     if (arguments.hasOption("out"))
         study::writeRunSeries(arguments.option("out"), run.frames, run.frameTimesS, document.dump(2));

@@ -53,7 +53,7 @@ commands:
   mesh sheet --study <study.vsim> [--width 40] [--length 40] [--thickness 0.5] [--cell 1]
                                              a thin cloth-type sheet (thesis 4.7.3), edges across x fixed
   mesh import <mesh.vtu> --study <study.vsim> a tetrahedral mesh from outside as a wall (its ends fixed)
-  simulate fem --study <study.vsim> --protocol thesis-rupture|physiological [--mesh ID] [--backend auto|cpu]
+  simulate fem --study <study.vsim> --protocol thesis-rupture|physiological [--mesh ID] [--backend auto|cpu|cuda]
                [--param key=value ...] [--out DIR]
                                              wall mechanics: the last frame (stresses, rupture index) and the metrics
                                              into the study; the frame series (.vtu, series.pvd, metrics.json) to DIR

@@ -85,14 +85,16 @@ bool MainWindow::simulateWall(const std::string& protocol)
     }
     auto run = std::make_shared<sim::fem::FemRunResult>();
     const ParameterSet parameters = m_femParameters;
+    const app::WallBackend backend = app::chooseWallBackend("auto", parameters); // the GPU when there is one
     return m_tasks.run(
         protocol == "physiological" ? tr("Wall stress") : tr("Thesis rupture protocol"),
-        [this, protocol, wallId, centerlinesId, parameters, run](const Progress& progress) {
-            *run = app::runWallProtocol(m_document.study(), protocol, wallId, centerlinesId, parameters, progress);
+        [this, protocol, wallId, centerlinesId, parameters, backend, run](const Progress& progress) {
+            *run = app::runWallProtocol(m_document.study(), protocol, wallId, centerlinesId, parameters, backend, progress);
         },
-        [this, protocol, wallId, centerlinesId, parameters, run] {
-            const std::string id = app::addWallRun(m_document.study(), *run, protocol, wallId,
-                                                   protocol == "physiological" ? centerlinesId : std::string(), parameters);
+        [this, protocol, wallId, centerlinesId, parameters, backend, run] {
+            const std::string id =
+                app::addWallRun(m_document.study(), *run, protocol, wallId,
+                                protocol == "physiological" ? centerlinesId : std::string(), parameters, backend);
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Wall stress")));
             showWallStress(run->frames.back());
             if (!run->stopReason.empty())

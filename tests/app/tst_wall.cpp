@@ -8,7 +8,7 @@
 #include "GuiTestMain.h"
 #include "InteractiveWall.h"
 #include "MainWindow.h"
-#include "vsim/sim/fem/StructuredMeshes.h"
+#include "TubeWall.h"
 #include "ViewLayout.h"
 #include "vsim/core/Units.h"
 #include "vsim/viz/VolumeView3D.h"
@@ -99,18 +99,7 @@ private slots:
     // drawing together, this machine's CPU and Xvfb's software OpenGL. Printed for RESULTS.md.
     void interactiveFrameRateAt20kTets()
     {
-        const sim::fem::StructuredTetMesh tube = sim::fem::tubeWallTetMesh(0.01, 0.0115, 0.1, {1, 128, 26});
-        TetMesh wall;
-        wall.tets = tube.tets;
-        std::vector<double> layer, ends;
-        for (const Eigen::Vector3d& p : tube.points)
-        {
-            wall.points.push_back(1e3 * p);
-            layer.push_back(p.head<2>().norm() > 0.0105 ? 1.0 : 0.0);
-            ends.push_back(p.z() < 1e-9 ? 1.0 : p.z() > 0.1 - 1e-9 ? 2.0 : 0.0);
-        }
-        wall.pointFields["wall_layer"] = layer;
-        wall.pointFields["end_set"] = ends;
+        const TetMesh wall = test::tubeWall({1, 128, 26});
         gui::MainWindow window;
         window.resize(1200, 900);
         window.show();

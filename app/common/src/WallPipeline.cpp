@@ -7,6 +7,11 @@
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
 
+#ifdef VSIM_HAVE_CUDA
+#include "vsim/cuda_common/DeviceInfo.h"
+#include "vsim/cuda_fem/CudaBackwardEuler.h"
+#endif
+
 
 #include <algorithm>
 #include <cmath>
@@ -127,20 +132,45 @@ std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const s
     return id;
 }
 
+WallBackend chooseWallBackend(const std::string& requested, const ParameterSet& parameters)
+{
+    if (requested != "auto" && requested != "cpu" && requested != "cuda")
+        throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
+    if (requested == "cpu")
+        return {};
+    std::string unavailable;
+#ifdef VSIM_HAVE_CUDA
+    const std::vector<cuda::DeviceInfo> devices = cuda::devices();
+    if (devices.empty())
+        unavailable = "there is no CUDA device";
+    else if (sim::fem::femMaterial(parameters).model != sim::fem::ElasticMaterial::Model::CorotationalLinear)
+        unavailable = "the CUDA backend runs the co-rotational linear model only";
+    if (unavailable.empty())
+        return {"cuda", cuda::deviceSummary(), cuda::cudaStepperFactory()};
+#else
+    (void)parameters;
+    unavailable = "this build has no CUDA backend (nvcc was not found when it was configured)";
+#endif
+    if (requested == "cuda")
+        throw Error(unavailable + ": use --backend cpu or auto");
+    return {};
+}
+
 sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::string& protocol, const std::string& wallId,
                                        const std::string& centerlinesId, const ParameterSet& parameters,
-                                       const Progress& progress)
+                                       const WallBackend& backend, const Progress& progress)
 {
     const TetMesh wall = study.loadTetMesh(wallId);
     if (protocol == "thesis-rupture")
-        return sim::fem::runThesisRupture(wall, parameters, progress);
+        return sim::fem::runThesisRupture(wall, parameters, progress, backend.stepper);
     if (protocol == "physiological")
-        return sim::fem::runPhysiological(wall, study.loadSkeleton(centerlinesId), parameters, progress);
+        return sim::fem::runPhysiological(wall, study.loadSkeleton(centerlinesId), parameters, progress, backend.stepper);
     throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
 }
 
 std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
-                       const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters)
+                       const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters,
+                       const WallBackend& backend)
 {
     study::Provenance provenance;
     provenance.command = "simulate fem";
@@ -149,7 +179,9 @@ std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, c
         provenance.inputs.push_back(centerlinesId);
     provenance.parameters = parameters.valuesAsText();
     provenance.parameters["protocol"] = protocol;
-    provenance.parameters["backend"] = "cpu";
+    provenance.parameters["backend"] = backend.name;
+    if (!backend.device.empty())
+        provenance.parameters["device"] = backend.device;
     std::vector<std::string> warnings;
     if (!run.stopReason.empty())
         warnings.push_back("stopped early: " + run.stopReason);

@@ -280,4 +280,13 @@ void CudaBackwardEuler::download(Eigen::VectorXd& positions, Eigen::VectorXd& ve
 
 std::size_t CudaBackwardEuler::deviceBytes() const { return m_device->bytes; }
 
+sim::fem::StepperFactory cudaStepperFactory()
+{
+    return [](const sim::fem::CorotationalFem& model, const sim::fem::BackwardEulerSettings& settings,
+              const std::vector<std::uint8_t>& constrained, const std::vector<std::array<int, 3>>& pressureFaces) {
+        return std::unique_ptr<sim::fem::ImplicitStepper>(
+            std::make_unique<CudaBackwardEuler>(model, settings, constrained, pressureFaces));
+    };
+}
+
 } // namespace vsim::cuda

@@ -82,9 +82,11 @@ double vandeGeestWallStrength(double thrombusCm, double normalizedDiameter, bool
     return newtonPerCm2 * 1e4; // N/cm^2 -> Pa
 }
 
-FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const Progress& progress)
+FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const Progress& progress,
+                              const StepperFactory& stepper)
 {
     FemRunSetup setup;
+    setup.stepper = stepper;
     setup.wall = wall;
     setup.material = femMaterial(p);
     setup.integrator = femIntegrator(p);
@@ -103,9 +105,10 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const 
 }
 
 FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& p,
-                              const Progress& progress)
+                              const Progress& progress, const StepperFactory& stepper)
 {
     FemRunSetup setup;
+    setup.stepper = stepper;
     setup.wall = wall;
     setup.material = femMaterial(p);
     setup.integrator = femIntegrator(p);

@@ -14,6 +14,8 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
     WallSimulation simulation(setup.wall, setup.material, setup.integrator, setup.loaded);
     if (setup.tearing)
         simulation.setTearStrength(setup.tearStressPa);
+    if (setup.stepper)
+        simulation.setStepper(setup.stepper);
     FemRunResult result;
     const double h = setup.integrator.timeStep;
     auto addFrame = [&](double time, double pressure) {

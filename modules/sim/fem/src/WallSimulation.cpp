@@ -104,8 +104,26 @@ std::vector<std::array<int, 3>> WallSimulation::pressureFaces() const
     return nodes;
 }
 
+void WallSimulation::setStepper(StepperFactory factory)
+{
+    m_stepper.reset();
+    m_stepperFactory = std::move(factory);
+    if (m_stepperFactory)
+        m_stepper = m_stepperFactory(m_model, m_settings, m_fixed, pressureFaces());
+}
+
+StepReport WallSimulation::stepOnStepper()
+{
+    const StepReport report = m_stepper->step(m_pressure);
+    m_stepper->download(m_model.positions(), m_model.velocities());
+    m_model.updateElements(); // rotations for the stresses at the new positions (the CPU path's are a step older)
+    return report;
+}
+
 int WallSimulation::grab(const Eigen::Vector3d& pointMm, double stiffness)
 {
+    if (m_stepper)
+        throw Error("dragging the wall needs the CPU backend (the GPU stepper has no contact springs)");
     const Eigen::Vector3d point = units::mmToM(1.0) * pointMm;
     int nearest = 0;
     double best = 1e300;
@@ -126,25 +144,33 @@ WallSimulation::StepOutcome WallSimulation::step()
 {
     StepOutcome outcome;
     const Eigen::VectorXd lastPositions = m_model.positions(), lastVelocities = m_model.velocities();
-    Eigen::VectorXd forces = Eigen::VectorXd::Zero(m_model.positions().size());
-    addPressureForces(pressureFaces(), m_model.positions(), m_pressure, forces);
-    outcome.report = m_integrator.step(m_model, forces, m_fixed, m_contacts);
+    if (m_stepper)
+        outcome.report = stepOnStepper();
+    else
+    {
+        Eigen::VectorXd forces = Eigen::VectorXd::Zero(m_model.positions().size());
+        addPressureForces(pressureFaces(), m_model.positions(), m_pressure, forces);
+        outcome.report = m_integrator.step(m_model, forces, m_fixed, m_contacts);
+    }
     if (!m_model.positions().allFinite())
         outcome.guard = "the solution is no longer finite (NaN or infinity)";
-    else if (outcome.report.invertedElements > 0)
-    {
-        const Eigen::Vector3d where = 1e3 * m_model.firstInvertedCentroid();
-        char place[96];
-        std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
-        outcome.guard = std::to_string(outcome.report.invertedElements) + " elements inverted" + place;
-    }
-    else if (!outcome.report.cgConverged && outcome.report.cgIterations < m_settings.cgMaxIterations)
+    else if (!outcome.report.cgConverged && outcome.report.invertedElements == 0 &&
+             outcome.report.cgIterations < m_settings.cgMaxIterations)
         outcome.guard = "the conjugate gradients broke down (the system is not positive definite)";
-    if (!outcome.guard.empty())
+    if (!outcome.guard.empty() || outcome.report.invertedElements > 0)
     {
         m_model.positions() = lastPositions;
         m_model.velocities() = lastVelocities;
-        m_model.updateElements();
+        m_model.updateElements(); // the inverted elements are those of this state (the step's element pass)
+        if (outcome.guard.empty())
+        {
+            const Eigen::Vector3d where = 1e3 * m_model.firstInvertedCentroid();
+            char place[96];
+            std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
+            outcome.guard = std::to_string(outcome.report.invertedElements) + " elements inverted" + place;
+        }
+        if (m_stepper)
+            setStepper(m_stepperFactory); // the stepper's state is the failed one
         return outcome;
     }
     m_time += m_settings.timeStep;
@@ -198,6 +224,8 @@ void WallSimulation::tear(const std::vector<std::size_t>& over)
     m_contacts.springs = std::move(springs);
     m_model = std::move(detached.model);
     m_integrator = BackwardEuler(m_model, m_settings);
+    if (m_stepper)
+        setStepper(m_stepperFactory);
 }
 
 TetMesh WallSimulation::frame() const

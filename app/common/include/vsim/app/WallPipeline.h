@@ -45,16 +45,29 @@ TetMesh asWall(TetMesh mesh);
 std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const std::string& labelId,
                         const std::string& centerlinesId, double thicknessMm, double targetVertices);
 
+/// Where a wall run's implicit steps run.
+struct WallBackend
+{
+    std::string name = "cpu";         ///< "cpu" or "cuda", as recorded in the provenance
+    std::string device;               ///< the GPU, for "cuda"
+    sim::fem::StepperFactory stepper; ///< empty for the CPU
+};
+
+/// Resolves `requested`: "cpu"; "cuda" (throws vsim::Error when this build has no CUDA backend, there is no device,
+/// or the material model is not the co-rotational one); "auto": the GPU when "cuda" would work, else the CPU.
+WallBackend chooseWallBackend(const std::string& requested, const ParameterSet& parameters);
+
 /// Runs `protocol` ("thesis-rupture" or "physiological") on the wall artifact `wallId` (centerlines needed by the
-/// physiological protocol). Throws vsim::Error for an unknown protocol.
+/// physiological protocol) on `backend`. Throws vsim::Error for an unknown protocol.
 sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::string& protocol, const std::string& wallId,
                                        const std::string& centerlinesId, const ParameterSet& parameters,
-                                       const Progress& progress = {});
+                                       const WallBackend& backend = {}, const Progress& progress = {});
 
 /// Adds a run's last frame to the study ("Wall stress (protocol)", metrics as attributes, warnings and an early
-/// stop as warnings); returns its id. The study is not saved.
+/// stop as warnings, the backend in the provenance); returns its id. The study is not saved.
 std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
-                       const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters);
+                       const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters,
+                       const WallBackend& backend = {});
 
 /// The boundary of a run frame (mm) with the cell field `cellField` carried to its points (mean over the
 /// boundary faces around each point), for colouring.

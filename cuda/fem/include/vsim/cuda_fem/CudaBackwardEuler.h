@@ -8,6 +8,7 @@
 
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/CorotationalFem.h"
+#include "vsim/sim/fem/ImplicitStepper.h"
 
 #include <Eigen/Core>
 
@@ -18,22 +19,23 @@
 
 namespace vsim::cuda {
 
-class CudaBackwardEuler
+class CudaBackwardEuler final : public sim::fem::ImplicitStepper
 {
 public:
     /// Copies the model (rest data, state, gather lists), the constraints and the faces the pressure acts on to
-    /// the GPU. Throws vsim::Error when there is no CUDA device or memory runs out.
+    /// the GPU. Throws vsim::Error when there is no CUDA device, memory runs out or the model is not the
+    /// co-rotational linear one.
     CudaBackwardEuler(const sim::fem::CorotationalFem& model, const sim::fem::BackwardEulerSettings& settings,
                       const std::vector<std::uint8_t>& constrained,
                       const std::vector<std::array<int, 3>>& pressureFaces);
-    ~CudaBackwardEuler();
+    ~CudaBackwardEuler() override;
     CudaBackwardEuler(const CudaBackwardEuler&) = delete;
     CudaBackwardEuler& operator=(const CudaBackwardEuler&) = delete;
 
     /// One implicit step under `pressurePa` on the pressure faces (a follower load, as addPressureForces).
-    sim::fem::StepReport step(double pressurePa);
+    sim::fem::StepReport step(double pressurePa) override;
     /// Copies the positions and velocities (m, m/s; 3 per node) back.
-    void download(Eigen::VectorXd& positions, Eigen::VectorXd& velocities) const;
+    void download(Eigen::VectorXd& positions, Eigen::VectorXd& velocities) const override;
     /// Bytes of GPU memory this solver holds.
     std::size_t deviceBytes() const;
 
@@ -41,5 +43,8 @@ private:
     struct Device;
     std::unique_ptr<Device> m_device;
 };
+
+/// The factory WallSimulation / the run driver take (sim::fem::StepperFactory): a CudaBackwardEuler per model.
+sim::fem::StepperFactory cudaStepperFactory();
 
 } // namespace vsim::cuda

@@ -29,12 +29,14 @@ ElasticMaterial femMaterial(const ParameterSet& parameters);
 BackwardEulerSettings femIntegrator(const ParameterSet& parameters);
 
 /// The thesis protocol on a wall mesh (mm).
-FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& parameters, const Progress& progress = {});
+/// `stepper`: where the implicit steps run (FemRunSetup::stepper; empty: this CPU), in both protocols.
+FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& parameters, const Progress& progress = {},
+                              const StepperFactory& stepper = {});
 
 /// The physiological protocol; `centerlines` (mm, with radii) give each element's local diameter for the
 /// strength model. Adds metrics peak_rupture_index, its location, the strength there and max_diameter_mm.
 FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& parameters,
-                              const Progress& progress = {});
+                              const Progress& progress = {}, const StepperFactory& stepper = {});
 
 /// AAA wall strength (Pa) by Vande Geest et al. 2006: 71.9 - 37.9 (ILT^1/2 - 0.81) - 15.6 (NORD - 2.46)
 /// - 21.3 HIST + 19.3 SEX N/cm^2, with ILT the local thrombus thickness (cm), NORD the local diameter over the

@@ -9,6 +9,7 @@
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/ElasticMaterial.h"
+#include "vsim/sim/fem/ImplicitStepper.h"
 
 #include <functional>
 #include <map>
@@ -31,6 +32,7 @@ struct FemRunSetup
     bool tearing = false;
     double tearStressPa = 0.0;     ///< largest principal stress that tears an element
     double entropyEnd = 0.0;       ///< stop once the fracture entropy passes this (nats); 0: never
+    StepperFactory stepper;        ///< where the implicit steps run (the CUDA backend); empty: this CPU
 };
 
 struct FemRunResult

@@ -9,9 +9,11 @@
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/Contacts.h"
 #include "vsim/sim/fem/CorotationalFem.h"
+#include "vsim/sim/fem/ImplicitStepper.h"
 #include "vsim/sim/fem/Tearing.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,11 +27,17 @@ public:
     WallSimulation(const TetMesh& wallMm, const ElasticMaterial& material, const BackwardEulerSettings& settings,
                    const std::function<bool(const Eigen::Vector3d&)>& loaded = {});
 
+    /// Runs the implicit steps with steppers from `factory` (the CUDA backend) instead of BackwardEuler; an empty
+    /// factory goes back to the CPU. Throws what the factory throws. Contacts (grab) need the CPU.
+    void setStepper(StepperFactory factory);
+    bool hasStepper() const { return m_stepper != nullptr; }
+
     void setPressure(double pressurePa) { m_pressure = pressurePa; }
     double pressure() const { return m_pressure; }
     /// Tears elements whose largest principal stress passes `strengthPa` after each step (0: no tearing).
     void setTearStrength(double strengthPa) { m_tearStrength = strengthPa; }
     /// Grabs the node nearest to `pointMm` (the current shape) with a spring of `stiffness` N/m; returns it.
+    /// Throws vsim::Error when a stepper runs the steps (springs are a CPU feature).
     int grab(const Eigen::Vector3d& pointMm, double stiffness);
     /// Moves the grabbed node's spring anchor (mm); nothing when none is grabbed.
     void dragTo(const Eigen::Vector3d& targetMm);
@@ -60,10 +68,14 @@ private:
     };
     std::vector<std::array<int, 3>> pressureFaces() const;
     void tear(const std::vector<std::size_t>& over);
+    /// One step on the stepper: the state comes back and the element pass runs here (stresses, tearing, guards).
+    StepReport stepOnStepper();
 
     CorotationalFem m_model;
     BackwardEulerSettings m_settings;
     BackwardEuler m_integrator;
+    StepperFactory m_stepperFactory;
+    std::unique_ptr<ImplicitStepper> m_stepper; // made from the current model; remade when it changes
     std::vector<std::uint8_t> m_fixed;
     std::vector<ElementFace> m_faces;
     std::vector<std::size_t> m_originalElement; // the wall mesh's element each tet came from (prism = index / 3)
