@@ -82,14 +82,15 @@ private slots:
 
     // The run driver on the GPU stepper (what `simulate fem --backend cuda` runs) against the CPU, on a tube wall
     // of 2,250 nodes ramped to `pressure`; with tearing, the stepper is remade after every tear (new nodes).
-    // Displacements agree within 1e-5 of the largest (the solver's parity bound), the peak von Mises stress within
-    // 1e-3 (the GPU path takes the stress rotations a step later), tear onsets within two ramp steps.
+    // Without tearing, displacements agree within 1e-5 of the largest (the solver's parity bound) and the peak von
+    // Mises stress within 1e-3 (the GPU path takes the stress rotations a step later); with tearing, the onsets
+    // agree within two ramp steps (after that, one different tear parts the two runs).
     void runDriverOnTheGpu_data()
     {
         QTest::addColumn<double>("pressure");
         QTest::addColumn<double>("tearStrength");
         QTest::newRow("120 mmHg, no tearing") << 16e3 << 0.0;
-        QTest::newRow("ramp to 300 kPa, tearing at 1 MPa") << 300e3 << 1e6;
+        QTest::newRow("ramp to 300 kPa, tearing at 0.3 MPa") << 300e3 << 0.3e6;
     }
 
     void runDriverOnTheGpu()
@@ -113,7 +114,6 @@ private slots:
         qInfo("peak von Mises CPU %.6g kPa, GPU %.6g kPa (%.2g relative); mean PCG iterations CPU %.1f, GPU %.1f",
               cpuPeak, gpuPeak, std::abs(gpuPeak - cpuPeak) / cpuPeak, cpu.metrics.at("mean_cg_iterations"),
               gpu.metrics.at("mean_cg_iterations"));
-        QVERIFY(std::abs(gpuPeak - cpuPeak) <= 1e-3 * cpuPeak);
         if (setup.tearing)
         {
             const double rampStepPa = pressure / 80.0;
@@ -122,8 +122,9 @@ private slots:
                   cpu.metrics.at("torn_elements"), gpu.metrics.at("torn_elements"));
             QVERIFY(cpuOnset > 0.0);
             QVERIFY(std::abs(gpuOnset - cpuOnset) * 1e6 <= 2.0 * rampStepPa + 1.0);
-            return; // torn meshes differ in topology as soon as one tear differs: no node-wise comparison
+            return; // the torn meshes part as soon as one tear differs: no stress or node-wise comparison
         }
+        QVERIFY(std::abs(gpuPeak - cpuPeak) <= 1e-3 * cpuPeak);
         const auto& a = cpu.frames.back().pointFields.at("displacement_mm");
         const auto& b = gpu.frames.back().pointFields.at("displacement_mm");
         QCOMPARE(a.size(), b.size());
