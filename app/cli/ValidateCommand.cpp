@@ -19,10 +19,10 @@ int validateSolvers(const Arguments& arguments, const Progress& progress)
     std::vector<std::string> failures;
     for (std::size_t i = 0; i < names.size(); ++i)
     {
-        const sim::fem::ValidationResult result =
+        const ValidationResult result =
             sim::fem::runFemValidation(names[i], progress.subRange(double(i) / names.size(), double(i + 1) / names.size()));
         nlohmann::json figures = nlohmann::json::array();
-        for (const sim::fem::ValidationFigure& figure : result.figures)
+        for (const ValidationFigure& figure : result.figures)
         {
             figures.push_back({{"name", figure.name},
                                {"measured", figure.measured},

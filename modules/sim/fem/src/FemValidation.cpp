@@ -285,16 +285,6 @@ const std::map<std::string, std::function<ValidationResult(const Progress&)>>& c
 
 } // namespace
 
-bool ValidationFigure::passed() const { return std::abs(measured - expected) <= tolerance; }
-
-bool ValidationResult::passed() const
-{
-    for (const ValidationFigure& figure : figures)
-        if (!figure.passed())
-            return false;
-    return !figures.empty();
-}
-
 std::vector<std::string> femValidationCases()
 {
     return {"fem-patch", "fem-rotation", "fem-cantilever", "fem-lame", "fem-damping"};

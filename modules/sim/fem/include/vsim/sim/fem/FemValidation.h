@@ -9,30 +9,12 @@
 //  fem-damping     with Rayleigh damping and no load the total energy decays monotonically
 
 #include "vsim/core/Progress.h"
+#include "vsim/core/Validation.h"
 
 #include <string>
 #include <vector>
 
 namespace vsim::sim::fem {
-
-struct ValidationFigure
-{
-    std::string name;
-    double measured = 0.0;
-    double expected = 0.0;
-    double tolerance = 0.0; ///< allowed |measured - expected| (absolute, in the figure's unit)
-    std::string unit;
-    bool passed() const;
-};
-
-struct ValidationResult
-{
-    std::string name;
-    std::string description; ///< what is compared with what
-    std::vector<ValidationFigure> figures;
-    double seconds = 0.0;
-    bool passed() const;
-};
 
 /// The case names above, in order.
 std::vector<std::string> femValidationCases();

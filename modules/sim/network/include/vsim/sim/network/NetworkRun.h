@@ -1,0 +1,82 @@
+#pragma once
+
+// The drug-delivery run of `vascusim-cli simulate network` and the workstation: the network downstream of the
+// catheter tip, default outlet conditions, the steady split for the two-phase drug and for a pure liquid, the
+// filling, control points, and tumour targeting with a ranking of tip positions. Geometry in mm, SI inside, the
+// report's units (ml/min, mmHg, s) in the fields and metrics.
+//
+// Outlets without a condition drain into a terminal resistance by Murray's law (1926: a vessel's flow goes with the
+// cube of its radius): all outlets together carry reference_inflow_ml_min at reference_pressure_drop_mmhg, each in
+// proportion to its terminal segment's mean radius cubed, into outlet_pressure_mmhg. The resistances stand for the
+// blood-filled vascular bed beyond the imaged tree, so they do not change with the injected fluid.
+//
+// Two-phase against pure liquid (thesis ch. 6.4, "8-9 % lower"): the quantity compared is the drug (liquid-phase)
+// volume flow through a control point, (1 - v) Q, for the same injected mixture volume rate; the liquid run has
+// v = 0. With the same rate, the split hardly changes (only the tree's share of the resistance scales with the
+// viscosity), so the drop is close to the void fraction itself; the run also reports the drop at the same tip
+// pressure.
+
+#include "vsim/core/Parameters.h"
+#include "vsim/core/Progress.h"
+#include "vsim/core/VesselNetwork.h"
+#include "vsim/sim/network/Filling.h"
+#include "vsim/sim/network/FlowSolver.h"
+#include "vsim/sim/network/Targeting.h"
+#include "vsim/sim/network/TwoPhaseFluid.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vsim::sim::network {
+
+/// Every parameter of the drug-delivery run.
+std::vector<ParameterSpec> networkParameters();
+/// The injected mixture of a parameter set.
+TwoPhaseMixture networkMixture(const ParameterSet& parameters);
+
+/// Adds Murray-law terminal resistances (see above) for every end node other than the root without a condition.
+void addDefaultOutlets(VesselNetwork& network, const ParameterSet& parameters);
+
+struct NetworkRunSetup
+{
+    VesselNetwork network;                      ///< validated; root set (or the largest end is taken)
+    bool defaultOutlets = true;                 ///< false: every outlet needs a condition in the network
+    std::optional<int> tipNode;                 ///< the catheter tip as a node, or
+    std::optional<Eigen::Vector3d> tipPointMm;  ///< as a point on the tree
+    std::optional<TumourSphere> tumour;
+    std::vector<Eigen::Vector3d> controlPointsMm; ///< empty: the two largest daughters of the first junction
+    ParameterSet parameters{networkParameters()};
+    bool rankTips = true;
+};
+
+struct ControlPoint
+{
+    std::string name;                  ///< "A", "B", ...
+    Eigen::Vector3d pointMm = Eigen::Vector3d::Zero();
+    int segment = -1;
+    double drugFlowTwoPhaseMlMin = 0.0; ///< (1 - v) |Q|, same injected rate
+    double drugFlowLiquidMlMin = 0.0;   ///< |Q| with v = 0
+    double dropPercent = 0.0;           ///< 100 (1 - two-phase / liquid)
+    double dropAtSamePressurePercent = 0.0; ///< the same with the tip held at the liquid run's pressure
+};
+
+struct NetworkRunResult
+{
+    VesselNetwork network;             ///< as solved (tip node inserted, outlet conditions), with segment fields
+    int tipNode = -1;
+    FlowSolution twoPhase, liquid;
+    FillingTimes filling;
+    std::vector<ControlPoint> controls;
+    std::vector<int> tumourOutlets;
+    std::vector<TipCandidate> ranking; ///< best first
+    std::map<std::string, double> metrics;
+    std::vector<std::string> warnings;
+};
+
+/// Runs the setup. Throws vsim::Error for bad input (tip off the tree or on a disconnected part, outlets without a
+/// condition, a void fraction out of range, ...) naming the node or segment; nothing is returned then.
+NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progress = {});
+
+} // namespace vsim::sim::network

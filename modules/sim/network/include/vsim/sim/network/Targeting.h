@@ -1,0 +1,42 @@
+#pragma once
+
+// Chemoembolization targeting: the outlets that feed a tumour, the share of the injected drug that reaches it, and
+// candidate catheter-tip positions ranked by that share.
+
+#include "vsim/core/Progress.h"
+#include "vsim/core/VesselNetwork.h"
+#include "vsim/sim/network/FlowSolver.h"
+
+#include <functional>
+#include <vector>
+
+namespace vsim::sim::network {
+
+/// A tumour as a sphere (mm).
+struct TumourSphere
+{
+    Eigen::Vector3d centreMm = Eigen::Vector3d::Zero();
+    double radiusMm = 0.0;
+    bool contains(const Eigen::Vector3d& pointMm) const { return (pointMm - centreMm).norm() <= radiusMm; }
+};
+
+/// The end nodes (not the root) inside the region: the terminal segments that feed the tumour.
+std::vector<int> feedingOutlets(const VesselNetwork& network, const std::function<bool(const Eigen::Vector3d&)>& inside);
+
+/// The share of the injected flow leaving through `outlets`.
+double deliveredFraction(const FlowSolution& flow, const std::vector<int>& outlets);
+
+struct TipCandidate
+{
+    int node = -1;
+    double tumourFraction = 0.0;   ///< share of the injected drug reaching the tumour's outlets
+    int depth = 0;                 ///< segments from the root
+    double radiusMm = 0.0;         ///< largest vessel radius at the node (catheter access)
+};
+
+/// Every node that is not an end (and the root) as the catheter tip, injecting `volumeRate` (m^3/s) of a fluid of
+/// `viscosity`; ranked by tumour share, then nearer the root first (the less selective, easier position).
+std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const std::vector<int>& feeders,
+                                           double volumeRate, double viscosity, const Progress& progress = {});
+
+} // namespace vsim::sim::network

@@ -1,0 +1,148 @@
+#include "vsim/sim/network/FlowSolver.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
+#include "vsim/sim/network/ConicalPipe.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace vsim::sim::network {
+
+namespace {
+
+/// Long double throughout the nodal system: the conductances of a vessel tree span ten orders of magnitude (a wide
+/// artery in series with a terminal bed), and in double the bed's conductance added to a node's diagonal keeps only
+/// a few digits, which left outlet splits off by 1e-5 and Kirchhoff's law unbalanced by 1e-11 of the flow.
+using Real = long double;
+
+} // namespace
+
+double segmentResistance(const VesselNetwork::Segment& segment, double viscosity)
+{
+    if (segment.resistance > 0.0)
+        return segment.resistance;
+    return conicalResistance(units::mmToM(segment.startRadiusMm), units::mmToM(segment.endRadiusMm),
+                             units::mmToM(segment.lengthMm), viscosity);
+}
+
+FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection, double viscosity)
+{
+    const bool byRate = injection.volumeRate != 0.0;
+    if (byRate && !(injection.volumeRate > 0.0 && std::isfinite(injection.volumeRate)))
+        throw Error("the injection rate must be positive");
+    if (!byRate && !std::isfinite(injection.pressure))
+        throw Error("the injection needs a positive rate or a tip pressure");
+    FlowSolution solution;
+    solution.orientation = orientFromTip(network, injection.tipNode);
+    const TipOrientation& o = solution.orientation;
+
+    // Unknowns: the pressures of the reached nodes that are not held at a pressure.
+    std::map<int, const VesselNetwork::Outlet*> conditions;
+    for (const VesselNetwork::Outlet& outlet : network.outlets)
+        conditions[outlet.node] = &outlet;
+    for (int outlet : o.outlets)
+        if (!conditions.count(outlet))
+            throw Error("outlet node " + std::to_string(outlet) + " has no boundary condition (a pressure or a terminal "
+                        "resistance)",
+                        {{"node", std::to_string(outlet)}});
+    std::vector<double> fixedPressure(network.nodes.size(), std::nan(""));
+    if (!byRate)
+        fixedPressure[std::size_t(o.tip)] = injection.pressure;
+    for (int node : o.order)
+        if (node != o.tip && conditions.count(node) && conditions[node]->type == VesselNetwork::Outlet::Type::Pressure)
+            fixedPressure[std::size_t(node)] = conditions[node]->pressurePa;
+    std::vector<int> unknown(network.nodes.size(), -1);
+    int unknowns = 0;
+    for (int node : o.order)
+        if (std::isnan(fixedPressure[std::size_t(node)]))
+            unknown[std::size_t(node)] = unknowns++;
+
+    solution.segmentResistance.assign(network.segments.size(), 0.0);
+    std::vector<Eigen::Triplet<Real>> entries;
+    Eigen::Matrix<Real, Eigen::Dynamic, 1> rhs = Eigen::Matrix<Real, Eigen::Dynamic, 1>::Zero(unknowns);
+    auto couple = [&](int a, int b, Real conductance) { // a conductance between two nodes
+        const int ia = unknown[std::size_t(a)], ib = unknown[std::size_t(b)];
+        if (ia >= 0)
+            entries.emplace_back(ia, ia, conductance);
+        if (ib >= 0)
+            entries.emplace_back(ib, ib, conductance);
+        if (ia >= 0 && ib >= 0)
+            entries.emplace_back(ia, ib, -conductance), entries.emplace_back(ib, ia, -conductance);
+        if (ia >= 0 && ib < 0)
+            rhs[ia] += conductance * fixedPressure[std::size_t(b)];
+        if (ib >= 0 && ia < 0)
+            rhs[ib] += conductance * fixedPressure[std::size_t(a)];
+    };
+    for (std::size_t s = 0; s < network.segments.size(); ++s)
+        if (o.active(int(s)))
+        {
+            const auto& segment = network.segments[s];
+            solution.segmentResistance[s] = segmentResistance(segment, viscosity);
+            couple(segment.from, segment.to, 1.0L / solution.segmentResistance[s]);
+        }
+    for (int node : o.order)
+    {
+        const int i = unknown[std::size_t(node)];
+        if (i < 0 || node == o.tip || !conditions.count(node))
+            continue;
+        const VesselNetwork::Outlet& outlet = *conditions[node];
+        if (outlet.type == VesselNetwork::Outlet::Type::Resistance && outlet.resistance > 0.0)
+        {
+            entries.emplace_back(i, i, 1.0L / outlet.resistance);
+            rhs[i] += Real(outlet.pressurePa) / outlet.resistance;
+        }
+        else if (outlet.type == VesselNetwork::Outlet::Type::Resistance) // zero resistance: held at the pressure
+        {
+            entries.emplace_back(i, i, 1.0L);
+            rhs[i] = outlet.pressurePa;
+        }
+    }
+    if (byRate)
+        rhs[unknown[std::size_t(o.tip)]] += injection.volumeRate;
+
+    Eigen::SparseMatrix<Real> system(unknowns, unknowns);
+    system.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<Real>> solver(system);
+    if (solver.info() != Eigen::Success)
+        throw Error("the flow system is singular: the part downstream of the tip has no outlet pressure to refer to");
+    const Eigen::Matrix<Real, Eigen::Dynamic, 1> pressures = solver.solve(rhs);
+
+    std::vector<Real> pressure(network.nodes.size(), 0.0L);
+    solution.nodePressure.assign(network.nodes.size(), 0.0);
+    for (int node : o.order)
+    {
+        const int i = unknown[std::size_t(node)];
+        pressure[std::size_t(node)] = i >= 0 ? pressures[i] : Real(fixedPressure[std::size_t(node)]);
+        solution.nodePressure[std::size_t(node)] = double(pressure[std::size_t(node)]);
+    }
+    solution.segmentFlow.assign(network.segments.size(), 0.0);
+    std::vector<double> netOut(network.nodes.size(), 0.0); // flow leaving each node through its segments
+    for (std::size_t s = 0; s < network.segments.size(); ++s)
+        if (o.active(int(s)))
+        {
+            const auto& segment = network.segments[s];
+            const double q = double((pressure[std::size_t(segment.from)] - pressure[std::size_t(segment.to)]) /
+                                    solution.segmentResistance[s]);
+            solution.segmentFlow[s] = q;
+            netOut[std::size_t(segment.from)] += q;
+            netOut[std::size_t(segment.to)] -= q;
+        }
+    solution.tipPressure = solution.nodePressure[std::size_t(o.tip)];
+    solution.injectedFlow = netOut[std::size_t(o.tip)];
+    for (int outlet : o.outlets)
+        solution.outletFlow[outlet] = -netOut[std::size_t(outlet)];
+    // Kirchhoff's check at the interior nodes (the tip and outlets exchange flow with the outside).
+    double worst = 0.0;
+    for (int node : o.order)
+        if (node != o.tip && !solution.outletFlow.count(node))
+            worst = std::max(worst, std::abs(netOut[std::size_t(node)]));
+    solution.conservationError = std::abs(solution.injectedFlow) > 0.0 ? worst / std::abs(solution.injectedFlow) : worst;
+    return solution;
+}
+
+} // namespace vsim::sim::network

@@ -1,0 +1,268 @@
+#include "vsim/sim/network/NetworkRun.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
+#include "vsim/sim/network/ConicalPipe.h"
+#include "vsim/sim/network/NetworkBuild.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+namespace vsim::sim::network {
+namespace {
+
+using Kind = ParameterSpec::Kind;
+
+double meanRadiusMm(const VesselNetwork::Segment& segment) { return 0.5 * (segment.startRadiusMm + segment.endRadiusMm); }
+
+/// The control points of the thesis's figure when none are given: the two daughters of the first junction
+/// downstream of the tip that carry the most flow, at their middles.
+std::vector<Eigen::Vector3d> defaultControlPoints(const VesselNetwork& network, const FlowSolution& flow)
+{
+    const TipOrientation& o = flow.orientation;
+    for (int node : o.order)
+    {
+        std::vector<int> children;
+        for (std::size_t s = 0; s < network.segments.size(); ++s)
+            if (o.upstreamNode[s] == node)
+                children.push_back(int(s));
+        if (children.size() < 2)
+            continue;
+        std::sort(children.begin(), children.end(), [&](int a, int b) {
+            return std::abs(flow.segmentFlow[std::size_t(a)]) > std::abs(flow.segmentFlow[std::size_t(b)]);
+        });
+        return {segmentMiddle(network, children[0]), segmentMiddle(network, children[1])};
+    }
+    return {};
+}
+
+void setFields(NetworkRunResult& r, const TwoPhaseMixture& fluid)
+{
+    VesselNetwork& n = r.network;
+    const std::size_t count = n.segments.size();
+    auto field = [&](const char* name) -> std::vector<double>& { return n.segmentFields[name] = std::vector<double>(count, 0.0); };
+    std::vector<double>& downstream = field("downstream");
+    std::vector<double>& flow = field("flow_ml_min");
+    std::vector<double>& drug = field("drug_flow_ml_min");
+    std::vector<double>& liquid = field("liquid_flow_ml_min");
+    std::vector<double>& pFrom = field("pressure_from_mmhg");
+    std::vector<double>& pTo = field("pressure_to_mmhg");
+    std::vector<double>& velocity = field("velocity_mm_s");
+    std::vector<double>& reynolds = field("reynolds");
+    std::vector<double>& enter = field("fill_enter_s");
+    std::vector<double>& leave = field("fill_leave_s");
+    double maxReynolds = 0.0;
+    for (std::size_t s = 0; s < count; ++s)
+    {
+        if (!r.twoPhase.orientation.active(int(s)))
+        {
+            enter[s] = leave[s] = -1.0;
+            continue;
+        }
+        const auto& segment = n.segments[s];
+        const double q = r.twoPhase.segmentFlow[s], radius = units::mmToM(meanRadiusMm(segment));
+        const double u = std::abs(q) / (std::numbers::pi * radius * radius);
+        downstream[s] = 1.0;
+        flow[s] = units::m3PerSToMlPerMin(q);
+        drug[s] = units::m3PerSToMlPerMin(fluid.liquidFraction() * std::abs(q));
+        liquid[s] = units::m3PerSToMlPerMin(std::abs(r.liquid.segmentFlow[s]));
+        pFrom[s] = units::paToMmHg(r.twoPhase.nodePressure[std::size_t(segment.from)]);
+        pTo[s] = units::paToMmHg(r.twoPhase.nodePressure[std::size_t(segment.to)]);
+        velocity[s] = units::mToMm(u);
+        reynolds[s] = fluid.density() * u * 2.0 * radius / fluid.viscosity();
+        maxReynolds = std::max(maxReynolds, reynolds[s]);
+        enter[s] = r.filling.enter[s] == kNever ? -1.0 : r.filling.enter[s];
+        leave[s] = r.filling.leave[s] == kNever ? -1.0 : r.filling.leave[s];
+    }
+    r.metrics["max_reynolds"] = maxReynolds;
+    if (maxReynolds > 2000.0)
+        r.warnings.push_back("the Reynolds number reaches " + std::to_string(int(maxReynolds)) +
+                             ": the flow may not be laminar there, and Hagen-Poiseuille does not hold");
+}
+
+} // namespace
+
+std::vector<ParameterSpec> networkParameters()
+{
+    return {
+        {"injection_rate_ml_min", "Injection rate", "ml/min", 2.0, 0.01, 200.0, "Injection",
+         "Volume rate of the injected drug mixture at the catheter tip."},
+        {"tip_snap_mm", "Tip snap distance", "mm", 1.0, 0.0, 10.0, "Injection",
+         "A tip or control point given as a point this near a node is put on the node."},
+        {"tip_reach_mm", "Tip reach", "mm", 10.0, 0.5, 50.0, "Injection",
+         "How far a tip or control point given as a point may lie from the vessel tree."},
+        {"void_fraction", "Void fraction", "", 0.1, 0.0, 0.95, "Two-phase drug",
+         "Gas volume fraction of the injected drug (thesis eq. 6.2, 6.3); the flow is bubbly up to about 0.25."},
+        {"gas_absorption_ml_min", "Gas absorption rate", "ml/min", 10.0, 5.0, 20.0, "Two-phase drug",
+         "Gas absorption rate of the bubbly regime (thesis ch. 6.1: 5-20 ml/min); with the bubble size it gives the "
+         "bubble rate."},
+        {"bubble_diameter_mm", "Bubble diameter", "mm", 1.5, 1.29, 2.05, "Two-phase drug",
+         "Bubble diameter of the bubbly regime (thesis ch. 6.1: 1.29-2.05 mm)."},
+        {"liquid_density", "Liquid density", "kg/m^3", 1060.0, 900.0, 1500.0, "Two-phase drug",
+         "Density of the liquid phase (plasma: 1,060 kg/m^3)."},
+        {"liquid_viscosity_mpa_s", "Liquid viscosity", "mPa s", 3.56, 0.5, 50.0, "Two-phase drug",
+         "Dynamic viscosity of the liquid phase at 37 C (plasma: 3.56 mPa s)."},
+        {"gas_density", "Gas density", "kg/m^3", 1.205, 0.1, 10.0, "Two-phase drug", "Density of the gas phase."},
+        {"gas_viscosity_upa_s", "Gas viscosity", "uPa s", 18.6, 5.0, 50.0, "Two-phase drug",
+         "Dynamic viscosity of the gas phase at 37 C."},
+        {"reference_inflow_ml_min", "Outlets' reference flow", "ml/min", 100.0, 1.0, 5000.0, "Outlets",
+         "Flow that all outlets together drain at the reference pressure drop, split by Murray's law (hepatic artery "
+         "flow is about 100-400 ml/min)."},
+        {"reference_pressure_drop_mmhg", "Outlets' reference pressure drop", "mmHg", 60.0, 1.0, 200.0, "Outlets",
+         "Pressure drop across the vascular bed beyond the outlets at the reference flow."},
+        {"outlet_pressure_mmhg", "Pressure beyond the outlets", "mmHg", 10.0, 0.0, 100.0, "Outlets",
+         "Pressure at the far end of the terminal resistances (venous side)."},
+        {"tumour_resistance_factor", "Tumour bed resistance factor", "", 1.0, 0.05, 20.0, "Targeting",
+         "Terminal resistance of the tumour's outlets times this (below 1 for a hypervascular tumour)."},
+        {"filling_steps", "Filling steps", "", 1000.0, 10.0, 100000.0, "Filling",
+         "Time steps from the start of the injection to the last outlet's arrival.", Kind::Integer},
+    };
+}
+
+TwoPhaseMixture networkMixture(const ParameterSet& p)
+{
+    TwoPhaseMixture fluid;
+    fluid.voidFraction = p.get("void_fraction");
+    fluid.phases.liquidDensity = p.get("liquid_density");
+    fluid.phases.gasDensity = p.get("gas_density");
+    fluid.phases.liquidViscosity = 1e-3 * p.get("liquid_viscosity_mpa_s");
+    fluid.phases.gasViscosity = 1e-6 * p.get("gas_viscosity_upa_s");
+    fluid.validate();
+    return fluid;
+}
+
+void addDefaultOutlets(VesselNetwork& network, const ParameterSet& p)
+{
+    std::set<int> explicitNodes;
+    for (const VesselNetwork::Outlet& outlet : network.outlets)
+        explicitNodes.insert(outlet.node);
+    const std::vector<std::vector<int>> incident = network.incidentSegments();
+    std::vector<std::pair<int, double>> ends; // node, radius cubed (of the whole tree: independent of the tip)
+    double total = 0.0;
+    for (int node : network.endNodes())
+        if (node != network.root)
+        {
+            const double r = meanRadiusMm(network.segments[std::size_t(incident[std::size_t(node)].front())]);
+            ends.emplace_back(node, r * r * r);
+            total += r * r * r;
+        }
+    const double inflow = units::mlPerMinToM3PerS(p.get("reference_inflow_ml_min"));
+    const double drop = units::mmHgToPa(p.get("reference_pressure_drop_mmhg"));
+    for (const auto& [node, cube] : ends)
+        if (!explicitNodes.count(node))
+            network.outlets.push_back({node, VesselNetwork::Outlet::Type::Resistance,
+                                       units::mmHgToPa(p.get("outlet_pressure_mmhg")), drop / (inflow * cube / total)});
+}
+
+NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progress)
+{
+    const ParameterSet& p = setup.parameters;
+    const TwoPhaseMixture fluid = networkMixture(p);
+    NetworkRunResult r;
+    r.network = setup.network;
+    VesselNetwork& net = r.network;
+    net.validate();
+    if (net.root < 0)
+        net.root = largestEnd(net);
+    if (setup.tipNode)
+        r.tipNode = *setup.tipNode;
+    else if (setup.tipPointMm)
+        r.tipNode = placeNode(net, *setup.tipPointMm, p.get("tip_snap_mm"), p.get("tip_reach_mm"));
+    else
+        r.tipNode = net.root;
+    if (setup.defaultOutlets)
+        addDefaultOutlets(net, p);
+    if (setup.tumour)
+    {
+        if (!(setup.tumour->radiusMm > 0.0))
+            throw Error("the tumour's radius must be positive");
+        r.tumourOutlets = feedingOutlets(net, [&](const Eigen::Vector3d& x) { return setup.tumour->contains(x); });
+        const std::set<int> feeders(r.tumourOutlets.begin(), r.tumourOutlets.end());
+        for (VesselNetwork::Outlet& outlet : net.outlets)
+            if (feeders.count(outlet.node) && outlet.type == VesselNetwork::Outlet::Type::Resistance)
+                outlet.resistance *= p.get("tumour_resistance_factor");
+        if (r.tumourOutlets.empty())
+            r.warnings.push_back("no outlet of the tree ends inside the tumour: nothing feeds it");
+    }
+    const double rate = units::mlPerMinToM3PerS(p.get("injection_rate_ml_min"));
+    r.twoPhase = solveFlow(net, {r.tipNode, rate, 0.0}, fluid.viscosity());
+    r.liquid = solveFlow(net, {r.tipNode, rate, 0.0}, fluid.phases.liquidViscosity);
+    const FlowSolution samePressure = solveFlow(net, {r.tipNode, 0.0, r.liquid.tipPressure}, fluid.viscosity());
+    r.filling = fillingTimes(net, r.twoPhase);
+    progress.report(0.2, "flow solved");
+
+    const std::vector<Eigen::Vector3d> points =
+        setup.controlPointsMm.empty() ? defaultControlPoints(net, r.twoPhase) : setup.controlPointsMm;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+        ControlPoint c;
+        c.name = std::string(1, char('A' + std::min<std::size_t>(i, 25)));
+        c.pointMm = points[i];
+        const auto [segment, distance] =
+            nearestSegment(net, points[i], [&](int s) { return r.twoPhase.orientation.active(s); });
+        if (segment < 0 || distance > p.get("tip_reach_mm"))
+            throw Error("control point " + c.name + " is not on the tree downstream of the tip");
+        c.segment = segment;
+        const double twoPhase = fluid.liquidFraction() * std::abs(r.twoPhase.segmentFlow[std::size_t(segment)]);
+        const double liquid = std::abs(r.liquid.segmentFlow[std::size_t(segment)]);
+        const double pressureDriven = fluid.liquidFraction() * std::abs(samePressure.segmentFlow[std::size_t(segment)]);
+        c.drugFlowTwoPhaseMlMin = units::m3PerSToMlPerMin(twoPhase);
+        c.drugFlowLiquidMlMin = units::m3PerSToMlPerMin(liquid);
+        c.dropPercent = liquid > 0.0 ? 100.0 * (1.0 - twoPhase / liquid) : 0.0;
+        c.dropAtSamePressurePercent = liquid > 0.0 ? 100.0 * (1.0 - pressureDriven / liquid) : 0.0;
+        r.controls.push_back(c);
+        const std::string key = "control_" + c.name + "_";
+        r.metrics[key + "drug_flow_two_phase_ml_min"] = c.drugFlowTwoPhaseMlMin;
+        r.metrics[key + "drug_flow_liquid_ml_min"] = c.drugFlowLiquidMlMin;
+        r.metrics[key + "drop_percent"] = c.dropPercent;
+        r.metrics[key + "drop_same_pressure_percent"] = c.dropAtSamePressurePercent;
+    }
+    if (setup.tumour)
+    {
+        r.metrics["tumour_outlets"] = double(r.tumourOutlets.size());
+        r.metrics["tumour_fraction"] = deliveredFraction(r.twoPhase, r.tumourOutlets);
+        r.metrics["non_target_fraction"] = 1.0 - r.metrics["tumour_fraction"];
+        if (setup.rankTips && !r.tumourOutlets.empty())
+        {
+            r.ranking = rankTipPositions(net, r.tumourOutlets, rate, fluid.viscosity(), progress.subRange(0.2, 0.95));
+            const TipCandidate& best = r.ranking.front();
+            r.metrics["best_tip_node"] = best.node;
+            r.metrics["best_tip_fraction"] = best.tumourFraction;
+            r.metrics["best_tip_depth"] = best.depth;
+            r.metrics["best_tip_x_mm"] = net.nodes[std::size_t(best.node)].positionMm.x();
+            r.metrics["best_tip_y_mm"] = net.nodes[std::size_t(best.node)].positionMm.y();
+            r.metrics["best_tip_z_mm"] = net.nodes[std::size_t(best.node)].positionMm.z();
+        }
+    }
+    setFields(r, fluid);
+    if (fluid.voidFraction > kBubblyVoidFractionLimit)
+        r.warnings.push_back("a void fraction of " + std::to_string(fluid.voidFraction) +
+                             " is past bubbly flow (about 0.25): the homogeneous model and the thesis's experiment do "
+                             "not cover it");
+    double downstream = 0.0;
+    for (std::size_t s = 0; s < net.segments.size(); ++s)
+        downstream += r.twoPhase.orientation.active(int(s)) ? 1.0 : 0.0;
+    const double bubbleVolume = std::numbers::pi / 6.0 * std::pow(units::mmToM(p.get("bubble_diameter_mm")), 3.0);
+    r.metrics["injection_rate_ml_min"] = p.get("injection_rate_ml_min");
+    r.metrics["void_fraction"] = fluid.voidFraction;
+    r.metrics["mixture_density_kg_m3"] = fluid.density();
+    r.metrics["mixture_viscosity_mpa_s"] = 1e3 * fluid.viscosity();
+    r.metrics["bubble_rate_per_s"] = units::mlPerMinToM3PerS(p.get("gas_absorption_ml_min")) / bubbleVolume;
+    r.metrics["tip_node"] = r.tipNode;
+    r.metrics["tip_pressure_mmhg"] = units::paToMmHg(r.twoPhase.tipPressure);
+    r.metrics["tip_pressure_liquid_mmhg"] = units::paToMmHg(r.liquid.tipPressure);
+    r.metrics["downstream_segments"] = downstream;
+    r.metrics["outlets"] = double(r.twoPhase.orientation.outlets.size());
+    r.metrics["conservation_error"] = r.twoPhase.conservationError;
+    r.metrics["last_arrival_s"] = r.filling.lastArrival;
+    double first = kNever;
+    for (const auto& [node, time] : r.filling.arrival)
+        first = std::min(first, time);
+    r.metrics["first_arrival_s"] = first == kNever ? -1.0 : first;
+    progress.report(1.0, "done");
+    return r;
+}
+
+} // namespace vsim::sim::network

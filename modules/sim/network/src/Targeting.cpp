@@ -1,0 +1,73 @@
+#include "vsim/sim/network/Targeting.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsim::sim::network {
+
+std::vector<int> feedingOutlets(const VesselNetwork& network, const std::function<bool(const Eigen::Vector3d&)>& inside)
+{
+    std::vector<int> feeders;
+    for (int node : network.endNodes())
+        if (node != network.root && inside(network.nodes[std::size_t(node)].positionMm))
+            feeders.push_back(node);
+    return feeders;
+}
+
+double deliveredFraction(const FlowSolution& flow, const std::vector<int>& outlets)
+{
+    double delivered = 0.0;
+    for (int outlet : outlets)
+    {
+        const auto found = flow.outletFlow.find(outlet);
+        if (found != flow.outletFlow.end() && found->second > 0.0)
+            delivered += found->second;
+    }
+    return flow.injectedFlow > 0.0 ? delivered / flow.injectedFlow : 0.0;
+}
+
+std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const std::vector<int>& feeders,
+                                           double volumeRate, double viscosity, const Progress& progress)
+{
+    const std::vector<std::vector<int>> incident = network.incidentSegments();
+    std::vector<int> depth(network.nodes.size(), 0);
+    if (network.root >= 0)
+    {
+        const TipOrientation fromRoot = orientFromTip(network, network.root);
+        for (int node : fromRoot.order)
+            if (node != network.root)
+            {
+                const int parent = fromRoot.upstreamNode[std::size_t(fromRoot.parentSegment[std::size_t(node)])];
+                depth[std::size_t(node)] = depth[std::size_t(parent)] + 1;
+            }
+    }
+    std::vector<int> candidates;
+    for (std::size_t n = 0; n < network.nodes.size(); ++n)
+        if (incident[n].size() >= 2 || int(n) == network.root)
+            candidates.push_back(int(n));
+    std::vector<TipCandidate> ranking;
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+    {
+        progress.throwIfCancelled();
+        const int node = candidates[i];
+        TipCandidate candidate;
+        candidate.node = node;
+        candidate.depth = depth[std::size_t(node)];
+        for (int s : incident[std::size_t(node)])
+        {
+            const auto& segment = network.segments[std::size_t(s)];
+            candidate.radiusMm = std::max(candidate.radiusMm, segment.from == node ? segment.startRadiusMm : segment.endRadiusMm);
+        }
+        candidate.tumourFraction = deliveredFraction(solveFlow(network, {node, volumeRate, 0.0}, viscosity), feeders);
+        ranking.push_back(candidate);
+        progress.report(double(i + 1) / double(candidates.size()), "ranking catheter positions");
+    }
+    std::stable_sort(ranking.begin(), ranking.end(), [](const TipCandidate& a, const TipCandidate& b) {
+        if (std::abs(a.tumourFraction - b.tumourFraction) > 1e-9)
+            return a.tumourFraction > b.tumourFraction;
+        return a.depth < b.depth;
+    });
+    return ranking;
+}
+
+} // namespace vsim::sim::network

@@ -1,0 +1,215 @@
+// The drug network's pieces against closed forms: two-phase properties (eq. 6.2, 6.3), the filled length of a
+// cone, plug filling of a chain, the part downstream of the tip, splitting a segment at a point, Murray-law
+// outlets, the two-phase / liquid control-point comparison, tumour targeting; and bad input refused with a
+// message naming the node or segment.
+
+#include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
+#include "vsim/sim/network/ConicalPipe.h"
+#include "vsim/sim/network/Filling.h"
+#include "vsim/sim/network/NetworkBuild.h"
+#include "vsim/sim/network/NetworkRun.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace vsim;
+using namespace vsim::sim::network;
+
+namespace {
+
+/// A network of straight segments {from, to, r1, r2} between the given node positions (mm); lengths from them.
+VesselNetwork makeNetwork(const std::vector<Eigen::Vector3d>& positions, const std::vector<std::array<double, 4>>& segments)
+{
+    VesselNetwork network;
+    for (const Eigen::Vector3d& p : positions)
+        network.nodes.push_back({p, {}});
+    for (const auto& [from, to, r1, r2] : segments)
+    {
+        VesselNetwork::Segment s;
+        s.from = int(from), s.to = int(to), s.startRadiusMm = r1, s.endRadiusMm = r2;
+        s.lengthMm = (positions[std::size_t(from)] - positions[std::size_t(to)]).norm();
+        network.segments.push_back(s);
+    }
+    network.root = 0;
+    return network;
+}
+
+/// Root 0 -> junction 1 -> junctions 2 and 3 -> leaves 4, 5 (under 2) and 6, 7 (under 3).
+VesselNetwork binaryTree()
+{
+    return makeNetwork({{0, 0, 0}, {0, 0, 20}, {-10, 0, 35}, {10, 0, 35}, {-15, 0, 45}, {-5, 0, 45}, {5, 0, 45}, {15, 0, 45}},
+                       {{0, 1, 2.0, 1.8}, {1, 2, 1.4, 1.3}, {1, 3, 1.4, 1.3}, {2, 4, 1.0, 0.9}, {2, 5, 1.0, 0.9},
+                        {3, 6, 1.0, 0.9}, {3, 7, 1.0, 0.9}});
+}
+
+template <typename F>
+QString messageOf(F&& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const Error& error)
+    {
+        return QString::fromStdString(error.message());
+    }
+    return {};
+}
+
+} // namespace
+
+class NetworkModel : public QObject
+{
+    Q_OBJECT
+private slots:
+    void twoPhaseProperties()
+    {
+        TwoPhaseMixture fluid;
+        fluid.voidFraction = 0.1;
+        QCOMPARE(fluid.density(), 1060.0 * 0.9 + 1.205 * 0.1);
+        QCOMPARE(fluid.viscosity(), 0.1 * 18.6e-6 + 0.9 * 3.56e-3);
+        fluid.voidFraction = 0.0;
+        QCOMPARE(fluid.density(), 1060.0);
+        for (double bad : {-0.01, 1.0, std::nan("")})
+        {
+            fluid.voidFraction = bad;
+            QVERIFY(messageOf([&] { fluid.validate(); }).contains("void fraction"));
+        }
+    }
+
+    void filledLengthInvertsTheConeVolume()
+    {
+        const double r1 = 2e-3, r2 = 0.8e-3, length = 0.03;
+        for (double x : {0.0, 1e-4, 0.007, 0.015, 0.0299, 0.03})
+            QVERIFY(std::abs(filledLength(r1, r2, length, conicalVolume(r1, r2, length, x)) - x) <= 1e-12 * length);
+        QCOMPARE(filledLength(r1, r2, length, -1.0), 0.0);
+        QCOMPARE(filledLength(r1, r2, length, 1.0), length);
+        // The resistance of two halves adds up to the whole (the integral of eq. 6.4 is additive).
+        VesselNetwork n = makeNetwork({{0, 0, 0}, {0, 0, 30}}, {{0, 1, 2.0, 0.8}});
+        const double whole = segmentResistance(n.segments[0], 3.56e-3);
+        const int middle = placeNode(n, {0.2, 0, 15}, 0.5, 5.0);
+        QCOMPARE(middle, 2);
+        QCOMPARE(n.segments[0].endRadiusMm, 1.4);
+        QCOMPARE(n.segments[1].startRadiusMm, 1.4);
+        QVERIFY(std::abs(segmentResistance(n.segments[0], 3.56e-3) + segmentResistance(n.segments[1], 3.56e-3) - whole) <=
+                1e-12 * whole);
+    }
+
+    // Plug filling of a chain of two cylinders: each fills in V / Q after the one before.
+    void fillingOfAChain()
+    {
+        VesselNetwork n = makeNetwork({{0, 0, 0}, {0, 0, 10}, {0, 0, 30}}, {{0, 1, 1.0, 1.0}, {1, 2, 0.5, 0.5}});
+        n.outlets = {{2, VesselNetwork::Outlet::Type::Pressure, 0.0, 0.0}};
+        const double q = units::mlPerMinToM3PerS(2.0);
+        const FlowSolution flow = solveFlow(n, {0, q, 0.0}, 3.56e-3);
+        const FillingTimes times = fillingTimes(n, flow);
+        const double v1 = std::numbers::pi * 1e-6 * 0.01, v2 = std::numbers::pi * 0.25e-6 * 0.02;
+        QVERIFY(std::abs(times.leave[0] - v1 / q) <= 1e-12 * times.leave[0]);
+        QVERIFY(std::abs(times.leave[1] - (v1 + v2) / q) <= 1e-12 * times.leave[1]);
+        QCOMPARE(times.arrival.at(2), times.leave[1]);
+        std::vector<double> lengths;
+        filledLengths(n, flow, times, 0.5 * times.leave[0], lengths);
+        QVERIFY(std::abs(lengths[0] - 5.0) <= 1e-9);
+        QCOMPARE(lengths[1], 0.0);
+        filledLengths(n, flow, times, times.leave[1] + 1.0, lengths);
+        QCOMPARE(lengths[1], 20.0);
+    }
+
+    void downstreamOfTheTipOnly()
+    {
+        const VesselNetwork n = binaryTree();
+        const TipOrientation o = orientFromTip(n, 2);
+        QVERIFY(!o.active(0) && !o.active(1) && !o.active(2) && !o.active(5) && !o.active(6));
+        QVERIFY(o.active(3) && o.active(4));
+        QCOMPARE(o.outlets, (std::vector<int>{4, 5}));
+        QVERIFY(messageOf([&] { orientFromTip(n, 6); }).contains("nothing is downstream"));
+    }
+
+    // Terminal resistances by Murray's law split the flow as the radius cubed when they dominate.
+    void murrayOutlets()
+    {
+        VesselNetwork n = makeNetwork({{0, 0, 0}, {0, 0, 10}, {-5, 0, 20}, {5, 0, 20}},
+                                      {{0, 1, 2.0, 2.0}, {1, 2, 1.0, 1.0}, {1, 3, 1.5, 1.5}});
+        for (auto& s : n.segments)
+            s.resistance = 1.0; // negligible against the terminal resistances
+        ParameterSet p(networkParameters());
+        addDefaultOutlets(n, p);
+        QCOMPARE(n.outlets.size(), std::size_t(2));
+        const FlowSolution flow = solveFlow(n, {0, 1e-8, 0.0}, 3.56e-3);
+        qInfo("outlet flows %.6g / %.6g = %.8f (r^3 ratio %.8f)", flow.outletFlow.at(2), flow.outletFlow.at(3),
+              flow.outletFlow.at(2) / flow.outletFlow.at(3), 1.0 / 3.375);
+        QVERIFY(std::abs(flow.outletFlow.at(2) / flow.outletFlow.at(3) - 1.0 / 3.375) <= 1e-6);
+    }
+
+    // Two-phase against liquid at the same injected rate: the drug flow at A and B drops by about the void fraction.
+    void controlPointComparison()
+    {
+        NetworkRunSetup setup;
+        setup.network = binaryTree();
+        setup.parameters.set("void_fraction", 0.1);
+        const NetworkRunResult r = runNetwork(setup);
+        QCOMPARE(r.controls.size(), std::size_t(2));
+        for (const ControlPoint& c : r.controls)
+        {
+            qInfo("control %s: two-phase %.4f ml/min, liquid %.4f ml/min, drop %.2f %% (same tip pressure: %.2f %%)",
+                  c.name.c_str(), c.drugFlowTwoPhaseMlMin, c.drugFlowLiquidMlMin, c.dropPercent, c.dropAtSamePressurePercent);
+            QVERIFY(c.dropPercent > 9.9 && c.dropPercent < 10.1);
+            QVERIFY(std::abs(c.drugFlowLiquidMlMin - 1.0) <= 1e-9); // the symmetric tree halves 2 ml/min
+        }
+        QVERIFY(r.metrics.at("conservation_error") <= 1e-12);
+        QVERIFY(r.metrics.at("last_arrival_s") > 0.0);
+        QCOMPARE(r.network.segmentFields.at("flow_ml_min").size(), r.network.segments.size());
+    }
+
+    // The tumour fed by leaves 4 and 5: the root delivers half, junction 2 all; junction 2 ranks first.
+    void targeting()
+    {
+        NetworkRunSetup setup;
+        setup.network = binaryTree();
+        setup.tumour = TumourSphere{Eigen::Vector3d(-10, 0, 45), 6.0};
+        const NetworkRunResult r = runNetwork(setup);
+        QCOMPARE(r.tumourOutlets, (std::vector<int>{4, 5}));
+        QVERIFY(std::abs(r.metrics.at("tumour_fraction") - 0.5) <= 1e-9);
+        QCOMPARE(int(r.metrics.at("best_tip_node")), 2);
+        QVERIFY(std::abs(r.metrics.at("best_tip_fraction") - 1.0) <= 1e-12);
+        QCOMPARE(r.ranking.back().tumourFraction, 0.0); // junction 3 feeds the other side
+    }
+
+    void badInputIsNamed()
+    {
+        VesselNetwork n = binaryTree();
+        NetworkRunSetup setup;
+        setup.network = n;
+        setup.tipPointMm = Eigen::Vector3d(100, 100, 100);
+        QVERIFY(messageOf([&] { runNetwork(setup); }).contains("from the vessel tree"));
+
+        VesselNetwork zero = n;
+        zero.segments[3].endRadiusMm = 0.0;
+        QVERIFY(messageOf([&] { zero.validate(); }).contains("segment 3 has a radius that is zero"));
+
+        VesselNetwork cycle = n;
+        cycle.segments.push_back(cycle.segments[1]);
+        cycle.segments.back().from = 4, cycle.segments.back().to = 5;
+        QVERIFY(messageOf([&] { cycle.validate(); }).contains("segment 7 (nodes 4 - 5) closes a cycle"));
+
+        VesselNetwork apart = n;
+        apart.nodes.push_back({{50, 0, 0}, {}});
+        apart.nodes.push_back({{60, 0, 0}, {}});
+        apart.segments.push_back(apart.segments[0]);
+        apart.segments.back().from = 8, apart.segments.back().to = 9;
+        QVERIFY(messageOf([&] { orientFromTip(apart, 8); }).contains("not connected to its root"));
+
+        setup.tipPointMm.reset();
+        setup.defaultOutlets = false;
+        QVERIFY(messageOf([&] { runNetwork(setup); }).contains("outlet node 4 has no boundary condition"));
+
+        setup.defaultOutlets = true;
+        QVERIFY(messageOf([&] { setup.parameters.set("void_fraction", 1.0); }).contains("void_fraction"));
+    }
+};
+
+QTEST_APPLESS_MAIN(NetworkModel)
+#include "tst_network_model.moc"
