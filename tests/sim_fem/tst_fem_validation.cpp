@@ -7,6 +7,7 @@
 
 #include <QtTest>
 
+using namespace vsim;
 using namespace vsim::sim::fem;
 
 class FemValidation : public QObject
