@@ -3,6 +3,7 @@
 
 #include "vsim/app/DemoStudy.h"
 #include "vsim/app/DicomStudyImport.h"
+#include "vsim/app/NetworkPipeline.h"
 #include "vsim/app/StudySummary.h"
 #include "vsim/app/VersionInfo.h"
 #include "vsim/core/Error.h"
@@ -96,37 +97,6 @@ study::Study openOrCreateStudy(const fs::path& bundle)
 {
     return fs::exists(bundle / "study.json") ? study::Study::open(bundle)
                                              : study::Study::create(bundle, bundle.stem().string());
-}
-
-/// Parses "a<sep>b<sep>c" into three numbers; throws naming the option.
-template <typename T>
-std::array<T, 3> parseTriple(const std::string& text, char separator, const std::string& option)
-{
-    std::array<T, 3> values{};
-    std::istringstream stream(text);
-    std::string part;
-    int count = 0;
-    while (std::getline(stream, part, separator))
-    {
-        std::size_t used = 0;
-        try
-        {
-            if (count < 3)
-                values[std::size_t(count)] = T(std::stod(part, &used));
-        }
-        catch (const std::exception&)
-        {
-            used = 0;
-        }
-        if (used == 0 || used != part.size())
-            throw Error("--" + option + " expects three numbers separated by '" + std::string(1, separator) +
-                        "', got '" + text + "'");
-        ++count;
-    }
-    if (count != 3)
-        throw Error("--" + option + " expects three numbers separated by '" + std::string(1, separator) + "', got '" +
-                    text + "'");
-    return values;
 }
 
 double parseNumber(const Arguments& arguments, const std::string& option, double fallback)
@@ -382,11 +352,10 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
         throw Error("usage: vascusim-cli measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE]");
     const study::Study study = study::Study::open(bundle);
     const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
-    const auto& inputs = study.artifact(centerlinesId).provenance.inputs;
     const std::string labelId = arguments.hasOption("label") ? arguments.option("label")
-                                : inputs.size() > 1          ? inputs[1]
-                                                             : chooseArtifact(study, {}, study::ArtifactKind::Label,
-                                                                              "no vessel label");
+                                                             : app::labelOfCenterlines(study, centerlinesId);
+    if (labelId.empty())
+        throw Error("the study has no vessel label to measure in: run vascusim-cli segment first");
     ParameterSet parameters(imaging::measurementParameters());
     applyParameters(arguments, parameters);
     const imaging::VesselMeasurements result = imaging::measureVessels(

@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 
+#include <sstream>
 
 namespace vsim::cli {
 
@@ -33,6 +34,34 @@ void applyParameters(const Arguments& arguments, ParameterSet& parameters)
     for (const auto& [name, value] : arguments.options)
         if (name == "param")
             parameters.setFromText(value);
+}
+
+std::vector<double> parseNumbers(const std::string& text, char separator, std::size_t count, const std::string& option)
+{
+    const std::string expected = "--" + option + " expects " + std::to_string(count) + " numbers separated by '" +
+                                 std::string(1, separator) + "', got '" + text + "'";
+    std::vector<double> values;
+    std::istringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, separator))
+    {
+        std::size_t used = 0;
+        double value = 0.0;
+        try
+        {
+            value = std::stod(part, &used);
+        }
+        catch (const std::exception&)
+        {
+            used = 0;
+        }
+        if (used == 0 || used != part.size())
+            throw Error(expected);
+        values.push_back(value);
+    }
+    if (values.size() != count)
+        throw Error(expected);
+    return values;
 }
 
 } // namespace vsim::cli

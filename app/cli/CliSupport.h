@@ -6,8 +6,10 @@
 #include "vsim/core/Parameters.h"
 #include "vsim/study/Study.h"
 
+#include <array>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace vsim::cli {
 
@@ -22,5 +24,15 @@ std::string chooseMadeBy(const study::Study& study, const std::string& wanted, s
 std::string chooseCenterlines(const study::Study& study, const std::string& wanted);
 /// Applies every --param key=value to the set.
 void applyParameters(const Arguments& arguments, ParameterSet& parameters);
+
+/// Parses `count` numbers separated by `separator` ("1.5,2,3"); throws vsim::Error naming --`option`.
+std::vector<double> parseNumbers(const std::string& text, char separator, std::size_t count, const std::string& option);
+
+template <typename T>
+std::array<T, 3> parseTriple(const std::string& text, char separator, const std::string& option)
+{
+    const std::vector<double> values = parseNumbers(text, separator, 3, option);
+    return {T(values[0]), T(values[1]), T(values[2])};
+}
 
 } // namespace vsim::cli

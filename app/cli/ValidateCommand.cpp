@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/fem/FemValidation.h"
+#include "vsim/sim/network/NetworkValidation.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,13 +15,24 @@ int validateSolvers(const Arguments& arguments, const Progress& progress)
     if (arguments.positional.size() != 1)
         throw Error("validate needs one case name or 'all'");
     const std::string requested = arguments.positional.front();
-    const std::vector<std::string> names =
-        requested == "all" ? sim::fem::femValidationCases() : std::vector<std::string>{requested};
+    const std::vector<std::string> fem = sim::fem::femValidationCases(),
+                                   network = sim::network::networkValidationCases();
+    std::vector<std::string> names{requested};
+    if (requested == "fem" || requested == "network" || requested == "all")
+    {
+        names.clear();
+        if (requested != "network")
+            names.insert(names.end(), fem.begin(), fem.end());
+        if (requested != "fem")
+            names.insert(names.end(), network.begin(), network.end());
+    }
     std::vector<std::string> failures;
     for (std::size_t i = 0; i < names.size(); ++i)
     {
-        const ValidationResult result =
-            sim::fem::runFemValidation(names[i], progress.subRange(double(i) / names.size(), double(i + 1) / names.size()));
+        const Progress part = progress.subRange(double(i) / names.size(), double(i + 1) / names.size());
+        const ValidationResult result = names[i].rfind("network-", 0) == 0
+                                            ? sim::network::runNetworkValidation(names[i], part)
+                                            : sim::fem::runFemValidation(names[i], part);
         nlohmann::json figures = nlohmann::json::array();
         for (const ValidationFigure& figure : result.figures)
         {

@@ -10,7 +10,7 @@ namespace vsim::cli {
 int meshWall(const Arguments& arguments, const Progress& progress);
 
 /// `simulate fem --study S --protocol thesis-rupture|physiological [--mesh ID] [--centerlines ID] [--backend
-/// auto|cpu] [--param key=value ...] [--out DIR]`: runs the wall solver, adds the last frame (stresses, rupture
+/// auto|cpu|cuda] [--param key=value ...] [--out DIR]`: runs the wall solver, adds the last frame (stresses, rupture
 /// index) to the study with the metrics, prints the metrics as JSON, and writes the frame series to DIR.
 int simulateFem(const Arguments& arguments, const Progress& progress);
 

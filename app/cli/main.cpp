@@ -3,6 +3,7 @@
 // what was wrong), 2 usage, 130 cancelled (Ctrl-C).
 
 #include "CliCommands.h"
+#include "NetworkCommands.h"
 #include "ValidateCommand.h"
 #include "WallCommands.h"
 #include "vsim/core/Error.h"
@@ -57,9 +58,17 @@ commands:
                [--param key=value ...] [--out DIR]
                                              wall mechanics: the last frame (stresses, rupture index) and the metrics
                                              into the study; the frame series (.vtu, series.pvd, metrics.json) to DIR
-  validate <fem-patch|fem-rotation|fem-cantilever|fem-lame|fem-damping|all>
-                                             analytic validation of the wall solver (JSON); exit 0 only when
-                                             every figure is within its tolerance
+  simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min] [--void-fraction 0.1]
+                   [--tumour x,y,z,r] [--control x,y,z ...] [--network FILE [--default-outlets murray]]
+                   [--param key=value ...] [--out DIR]
+                                             drug delivery (two-phase conical Hagen-Poiseuille network): flow split,
+                                             filling, control points two-phase vs liquid, tumour share and the best
+                                             tip positions; the solved network into the study, the run files to DIR
+  validate <case|fem|network|all>            analytic validation (JSON) of the wall solver (fem-patch, fem-rotation,
+                                             fem-cantilever, fem-lame, fem-damping) and the drug network
+                                             (network-cylinder, network-cone, network-conservation,
+                                             network-bifurcation, network-confluence); exit 0 only when every
+                                             figure is within its tolerance
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -112,6 +121,8 @@ int main(int argc, char** argv)
             return vsim::cli::writePhantomSeries(arguments, progress);
         if (command == "mesh")
             return vsim::cli::meshWall(arguments, progress);
+        if (command == "simulate" && !arguments.positional.empty() && arguments.positional.front() == "network")
+            return vsim::cli::simulateNetwork(arguments, progress);
         if (command == "simulate")
             return vsim::cli::simulateFem(arguments, progress);
         if (command == "validate")

@@ -13,6 +13,7 @@ std::string kindName(ArtifactKind kind)
     case ArtifactKind::Surface: return "surface";
     case ArtifactKind::TetMesh: return "tetmesh";
     case ArtifactKind::Skeleton: return "skeleton";
+    case ArtifactKind::Network: return "network";
     }
     return "unknown";
 }
@@ -20,7 +21,7 @@ std::string kindName(ArtifactKind kind)
 ArtifactKind kindFromName(const std::string& name)
 {
     for (ArtifactKind kind : {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface, ArtifactKind::TetMesh,
-                              ArtifactKind::Skeleton})
+                              ArtifactKind::Skeleton, ArtifactKind::Network})
         if (kindName(kind) == name)
             return kind;
     throw Error("unknown artifact kind '" + name + "'", {{"kind", name}});

@@ -4,6 +4,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/interop/NrrdFile.h"
 #include "vsim/interop/VtkMesh.h"
+#include "vsim/study/NetworkFile.h"
 
 #include <nlohmann/json.hpp>
 #include <vtkPolyData.h>
@@ -96,7 +97,7 @@ auto readVtkXml(const std::filesystem::path& file)
 ArtifactKind kindOf(const ArtifactData& data)
 {
     static constexpr ArtifactKind kinds[] = {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface,
-                                             ArtifactKind::TetMesh, ArtifactKind::Skeleton};
+                                             ArtifactKind::TetMesh, ArtifactKind::Skeleton, ArtifactKind::Network};
     return kinds[data.index()];
 }
 
@@ -108,7 +109,8 @@ std::string fileExtension(ArtifactKind kind)
     case ArtifactKind::Label: return ".nrrd";
     case ArtifactKind::Surface: return ".vtp";
     case ArtifactKind::TetMesh: return ".vtu";
-    case ArtifactKind::Skeleton: return ".json";
+    case ArtifactKind::Skeleton:
+    case ArtifactKind::Network: return ".json";
     }
     return {};
 }
@@ -122,6 +124,7 @@ std::string folderName(ArtifactKind kind)
     case ArtifactKind::Surface: return "surfaces";
     case ArtifactKind::TetMesh: return "meshes";
     case ArtifactKind::Skeleton: return "skeletons";
+    case ArtifactKind::Network: return "networks";
     }
     return {};
 }
@@ -146,6 +149,7 @@ void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& fi
             throw Error("cannot write skeleton", {{"file", file.string()}});
         break;
     }
+    case ArtifactKind::Network: writeNetworkFile(std::get<VesselNetwork>(data), file); break;
     }
     syncFile(file);
 }
@@ -174,6 +178,7 @@ ArtifactData readArtifactFile(ArtifactKind kind, const std::filesystem::path& fi
         {
             throw Error("cannot parse skeleton", {{"file", file.string()}, {"reason", exception.what()}});
         }
+    case ArtifactKind::Network: return readNetworkFile(file);
     }
     throw Error("unknown artifact kind");
 }

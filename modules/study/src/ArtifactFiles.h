@@ -4,6 +4,7 @@
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/core/TriangleMesh.h"
+#include "vsim/core/VesselNetwork.h"
 #include "vsim/study/Artifact.h"
 
 #include <filesystem>
@@ -12,7 +13,7 @@
 namespace vsim::study {
 
 /// The in-memory data of an artifact, one alternative per ArtifactKind.
-using ArtifactData = std::variant<CtVolume, LabelVolume, TriangleMesh, TetMesh, SkeletonGraph>;
+using ArtifactData = std::variant<CtVolume, LabelVolume, TriangleMesh, TetMesh, SkeletonGraph, VesselNetwork>;
 
 /// Returns the kind of the data held.
 ArtifactKind kindOf(const ArtifactData& data);

@@ -18,7 +18,7 @@ namespace {
 
 constexpr const char* kManifestFile = "study.json";
 constexpr ArtifactKind kAllKinds[] = {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface,
-                                      ArtifactKind::TetMesh, ArtifactKind::Skeleton};
+                                      ArtifactKind::TetMesh, ArtifactKind::Skeleton, ArtifactKind::Network};
 
 /// Checks an artifact's file against the manifest; returns why it is damaged, or an empty string.
 std::string checkArtifactFile(const fs::path& bundle, const Artifact& artifact)
@@ -207,6 +207,15 @@ std::string Study::addSkeleton(const SkeletonGraph& skeleton, const std::string&
     return m_state->add(skeleton, name, std::move(provenance), std::move(warnings));
 }
 
+std::string Study::addNetwork(const VesselNetwork& network, const std::string& name, Provenance provenance,
+                              std::vector<std::string> warnings)
+{
+    network.validate();
+    if (network.segments.empty())
+        throw Error("cannot add an empty vessel network to the study");
+    return m_state->add(network, name, std::move(provenance), std::move(warnings));
+}
+
 CtVolume Study::loadImage(const std::string& id) const
 {
     return std::get<CtVolume>(m_state->load(id, ArtifactKind::Image));
@@ -226,6 +235,10 @@ TetMesh Study::loadTetMesh(const std::string& id) const
 SkeletonGraph Study::loadSkeleton(const std::string& id) const
 {
     return std::get<SkeletonGraph>(m_state->load(id, ArtifactKind::Skeleton));
+}
+VesselNetwork Study::loadNetwork(const std::string& id) const
+{
+    return std::get<VesselNetwork>(m_state->load(id, ArtifactKind::Network));
 }
 
 VolumeGeometry Study::volumeGeometry(const std::string& id) const

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numeric>
 #include <string>
 
 namespace vsim::sim::network {
@@ -57,9 +58,47 @@ PathPoint nearestOnPath(const std::vector<Eigen::Vector3d>& path, const Eigen::V
     return best;
 }
 
+/// Leaves out the thinnest segment of every loop (Kruskal's maximum spanning forest by mean radius).
+void breakLoops(VesselNetwork& network, std::vector<std::string>* warnings)
+{
+    std::vector<std::size_t> order(network.segments.size());
+    std::iota(order.begin(), order.end(), 0);
+    auto radius = [&](std::size_t s) { return network.segments[s].startRadiusMm + network.segments[s].endRadiusMm; };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return radius(a) > radius(b); });
+    std::vector<int> parent(network.nodes.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int x) {
+        while (parent[std::size_t(x)] != x)
+            x = parent[std::size_t(x)] = parent[std::size_t(parent[std::size_t(x)])];
+        return x;
+    };
+    std::vector<char> keep(network.segments.size(), 1);
+    for (std::size_t s : order)
+    {
+        const int a = find(network.segments[s].from), b = find(network.segments[s].to);
+        if (a == b)
+        {
+            keep[s] = 0;
+            if (warnings)
+                warnings->push_back("centerline edge " + std::to_string(s) + " closed a loop (nodes " +
+                                    std::to_string(network.segments[s].from) + " - " +
+                                    std::to_string(network.segments[s].to) +
+                                    ") and was left out of the network: check the skeleton there");
+        }
+        else
+            parent[std::size_t(a)] = b;
+    }
+    std::vector<VesselNetwork::Segment> kept;
+    for (std::size_t s = 0; s < network.segments.size(); ++s)
+        if (keep[s])
+            kept.push_back(std::move(network.segments[s]));
+    network.segments = std::move(kept);
+}
+
 } // namespace
 
-VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std::vector<std::array<double, 2>>& endRadiiMm)
+VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std::vector<std::array<double, 2>>& endRadiiMm,
+                                     std::vector<std::string>* warnings)
 {
     if (centerlines.edges.empty())
         throw Error("the centerlines have no vessel segments: extract them first (vascusim-cli centerline)");
@@ -90,6 +129,7 @@ VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std
                         {{"segment", std::to_string(e)}});
         network.segments.push_back(std::move(segment));
     }
+    breakLoops(network, warnings);
     network.root = largestEnd(network);
     network.validate();
     return network;

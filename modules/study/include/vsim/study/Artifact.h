@@ -15,6 +15,7 @@ enum class ArtifactKind
     Surface,  ///< triangle surface: surfaces/<id>.vtp
     TetMesh,  ///< tetrahedral mesh: meshes/<id>.vtu
     Skeleton, ///< vessel graph: skeletons/<id>.json
+    Network,  ///< vessel network (drug delivery), possibly with results: networks/<id>.json
 };
 
 /// Returns the manifest name of a kind ("image", "label", ...).

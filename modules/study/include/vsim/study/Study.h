@@ -4,6 +4,7 @@
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/core/TriangleMesh.h"
+#include "vsim/core/VesselNetwork.h"
 #include "vsim/study/Artifact.h"
 
 #include <filesystem>
@@ -18,7 +19,7 @@ namespace vsim::study {
 inline constexpr int kSchemaVersion = 1;
 
 /// The document: one patient's study as a `<name>.vsim/` bundle (study.json + images/, labels/, surfaces/,
-/// meshes/, skeletons/). Artifacts added since the last save are held in memory until save(), which is atomic:
+/// meshes/, skeletons/, networks/). Artifacts added since the last save are held in memory until save(), which is atomic:
 /// new files are written and synced first, the manifest is replaced by rename last, and files no longer
 /// referenced are removed after that. A kill at any moment leaves the old or the new study.
 class Study
@@ -63,6 +64,8 @@ public:
                            std::vector<std::string> warnings = {});
     std::string addSkeleton(const SkeletonGraph& skeleton, const std::string& name, Provenance provenance,
                             std::vector<std::string> warnings = {});
+    std::string addNetwork(const VesselNetwork& network, const std::string& name, Provenance provenance,
+                           std::vector<std::string> warnings = {});
 
     /// Loads an artifact's data (from memory if unsaved, else from its file). Throws vsim::Error for an unknown
     /// id, a kind mismatch, or a damaged artifact.
@@ -71,6 +74,7 @@ public:
     TriangleMesh loadSurface(const std::string& id) const;
     TetMesh loadTetMesh(const std::string& id) const;
     SkeletonGraph loadSkeleton(const std::string& id) const;
+    VesselNetwork loadNetwork(const std::string& id) const;
 
     /// The geometry of an image or label artifact, read from the file header only (no voxels).
     /// Throws vsim::Error for another kind or a damaged artifact.

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -16,9 +17,13 @@ namespace vsim::sim::network {
 /// One segment per centerline edge: nodes and paths (mm) from the centerlines, lengths along the polylines, end
 /// radii from `endRadiiMm` (per edge {start, end}, e.g. the cross-section measurements' equivalent radii) when
 /// given, else the median centerline radius over the first and last quarter of the edge. The root is the end of
-/// the largest radius. Throws vsim::Error for empty centerlines or radii that are not positive (naming the edge).
+/// the largest radius. A skeleton can keep a small loop where vessels touch or a junction was crowded; the
+/// network must be a tree, so the thinnest segment of each loop is left out (a maximum spanning tree by radius)
+/// and named in `warnings`. Throws vsim::Error for empty centerlines or radii that are not positive (naming the
+/// edge).
 VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines,
-                                     const std::vector<std::array<double, 2>>& endRadiiMm = {});
+                                     const std::vector<std::array<double, 2>>& endRadiiMm = {},
+                                     std::vector<std::string>* warnings = nullptr);
 
 /// The segment nearest to `pointMm` (along its path) among those `eligible` accepts (all when empty) and the
 /// distance (mm); {-1, inf} when there is none.

@@ -1,0 +1,46 @@
+#pragma once
+
+// The drug-delivery steps as the CLI and the workstation both run them: a study's vessel network (centerlines with
+// end radii from the cross-section measurements of the label), a network run added to the study, and its files.
+
+#include "vsim/core/Parameters.h"
+#include "vsim/core/Progress.h"
+#include "vsim/core/VesselNetwork.h"
+#include "vsim/sim/network/NetworkRun.h"
+#include "vsim/study/Study.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vsim::app {
+
+/// The vessel label the centerlines were extracted from (their provenance), else the newest label; "" if none.
+std::string labelOfCenterlines(const study::Study& study, const std::string& centerlinesId);
+
+/// One conical segment per centerline; end radii are the equivalent radii of the label's cross-sections one
+/// junction clearance in from the ends (imaging::measureVessels), lengths along the centerlines; loops of the
+/// skeleton broken at their thinnest segment, each named in `warnings`.
+VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& centerlinesId,
+                                std::vector<std::string>& warnings, const Progress& progress = {});
+
+/// What a run report shows of a network run (metrics, control points, the ten best tip positions, warnings) as
+/// JSON text; `source` names where the network came from.
+std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
+                               const std::map<std::string, std::string>& source);
+
+/// Adds the solved network ("Drug flow") with its per-segment fields to the study, the metrics as attributes and
+/// `source` (inputs, tip, tumour) in the provenance, the run's warnings and `moreWarnings`; returns its id. The
+/// study is not saved.
+std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
+                          const std::vector<std::string>& inputs, const std::map<std::string, std::string>& source,
+                          const std::vector<std::string>& moreWarnings = {});
+
+/// Writes a run into `folder`: network.json (the solved network with its fields), segments.csv (per segment:
+/// flow, drug flow, pressures, velocity, Reynolds number, filling times), outlets.csv (flow share and arrival
+/// time per outlet) and metrics.json (`document`). Throws vsim::Error when a file cannot be written.
+void writeNetworkRun(const std::filesystem::path& folder, const sim::network::NetworkRunResult& run,
+                     const std::string& document);
+
+} // namespace vsim::app

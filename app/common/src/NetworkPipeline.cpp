@@ -1,0 +1,175 @@
+#include "vsim/app/NetworkPipeline.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
+#include "vsim/imaging/VesselMeasurements.h"
+#include "vsim/sim/network/NetworkBuild.h"
+#include "vsim/study/NetworkFile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+
+namespace vsim::app {
+namespace {
+
+std::ofstream openForWriting(const std::filesystem::path& file)
+{
+    std::ofstream stream(file, std::ios::trunc);
+    if (!stream)
+        throw Error("cannot write the run file", {{"file", file.string()}});
+    return stream;
+}
+
+/// The conical segment's end radii (mm): a straight line fitted (least squares) to the equivalent radii of the
+/// cross-sections away from junctions, evaluated at both ends. Single sections near the ends are too noisy for
+/// the model (a section at a junction takes in the branch, one at a cut vessel end loses area, and a flow split
+/// goes with the radius cubed); with fewer than three good sections, the median equivalent radius at both ends,
+/// else the centerline's distance radii.
+std::array<double, 2> fittedEndRadii(const imaging::SegmentMeasurements& segment, const SkeletonGraph::Edge& edge)
+{
+    std::vector<std::pair<double, double>> samples; // arc length (mm), equivalent radius (mm)
+    for (const imaging::CrossSection& section : segment.sections)
+        if (!section.nearJunction && section.equivalentDiameterMm > 0.0)
+            samples.emplace_back(section.arcLengthMm, 0.5 * section.equivalentDiameterMm);
+    if (samples.size() < 3)
+    {
+        if (segment.referenceDiameterMm > 0.0)
+            return {0.5 * segment.referenceDiameterMm, 0.5 * segment.referenceDiameterMm};
+        return {edge.radii.front(), edge.radii.back()};
+    }
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, smallest = 1e300;
+    for (const auto& [x, y] : samples)
+        sx += x, sy += y, sxx += x * x, sxy += x * y, smallest = std::min(smallest, y);
+    const double n = double(samples.size()), denominator = n * sxx - sx * sx;
+    const double slope = denominator > 0.0 ? (n * sxy - sx * sy) / denominator : 0.0, intercept = (sy - slope * sx) / n;
+    const double floor = 0.5 * smallest; // a steep fit must not reach zero at an end
+    return {std::max(floor, intercept), std::max(floor, intercept + slope * segment.lengthMm)};
+}
+
+} // namespace
+
+std::string labelOfCenterlines(const study::Study& study, const std::string& centerlinesId)
+{
+    const auto& inputs = study.artifact(centerlinesId).provenance.inputs; // {skeleton, label} (the centerline step)
+    if (inputs.size() > 1 && study.hasArtifact(inputs[1]) &&
+        study.artifact(inputs[1]).kind == study::ArtifactKind::Label)
+        return inputs[1];
+    return study.newestArtifact(study::ArtifactKind::Label);
+}
+
+VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& centerlinesId,
+                                std::vector<std::string>& warnings, const Progress& progress)
+{
+    const SkeletonGraph centerlines = study.loadSkeleton(centerlinesId);
+    const std::string labelId = labelOfCenterlines(study, centerlinesId);
+    std::vector<std::array<double, 2>> endRadii;
+    if (!labelId.empty())
+    {
+        const imaging::VesselMeasurements measured =
+            imaging::measureVessels(study.loadLabel(labelId), centerlines,
+                                    ParameterSet(imaging::measurementParameters()), progress.subRange(0.0, 0.9));
+        for (std::size_t e = 0; e < measured.segments.size(); ++e)
+            endRadii.push_back(fittedEndRadii(measured.segments[e], centerlines.edges[e]));
+    }
+    return sim::network::networkFromCenterlines(centerlines, endRadii, &warnings);
+}
+
+std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
+                               const std::map<std::string, std::string>& source)
+{
+    nlohmann::json controls = nlohmann::json::array(), ranking = nlohmann::json::array();
+    for (const sim::network::ControlPoint& c : run.controls)
+        controls.push_back({{"name", c.name},
+                            {"point_mm", {c.pointMm.x(), c.pointMm.y(), c.pointMm.z()}},
+                            {"segment", c.segment},
+                            {"drug_flow_two_phase_ml_min", c.drugFlowTwoPhaseMlMin},
+                            {"drug_flow_liquid_ml_min", c.drugFlowLiquidMlMin},
+                            {"drop_percent", c.dropPercent},
+                            {"drop_same_pressure_percent", c.dropAtSamePressurePercent}});
+    for (std::size_t i = 0; i < run.ranking.size() && i < 10; ++i)
+    {
+        const auto& c = run.ranking[i];
+        const Eigen::Vector3d& p = run.network.nodes[std::size_t(c.node)].positionMm;
+        ranking.push_back({{"node", c.node},
+                           {"point_mm", {p.x(), p.y(), p.z()}},
+                           {"tumour_fraction", c.tumourFraction},
+                           {"depth", c.depth},
+                           {"radius_mm", c.radiusMm}});
+    }
+    return nlohmann::json{{"source", source},
+                          {"metrics", run.metrics},
+                          {"control_points", controls},
+                          {"tumour_outlets", run.tumourOutlets},
+                          {"tip_ranking", ranking},
+                          {"warnings", run.warnings},
+                          {"parameters", parameters.valuesAsText()}}
+        .dump(2);
+}
+
+std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
+                          const std::vector<std::string>& inputs, const std::map<std::string, std::string>& source,
+                          const std::vector<std::string>& moreWarnings)
+{
+    study::Provenance provenance;
+    provenance.command = "simulate network";
+    provenance.inputs = inputs;
+    provenance.parameters = parameters.valuesAsText();
+    for (const auto& [key, value] : source)
+        provenance.parameters[key] = value;
+    std::vector<std::string> warnings = moreWarnings;
+    warnings.insert(warnings.end(), run.warnings.begin(), run.warnings.end());
+    const std::string id = study.addNetwork(run.network, "Drug flow", provenance, warnings);
+    std::map<std::string, std::string> attributes;
+    for (const auto& [key, value] : run.metrics)
+        attributes[key] = numberText(value);
+    study.setArtifactAttributes(id, attributes);
+    return id;
+}
+
+void writeNetworkRun(const std::filesystem::path& folder, const sim::network::NetworkRunResult& run,
+                     const std::string& document)
+{
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error)
+        throw Error("cannot create the run folder", {{"folder", folder.string()}});
+    study::writeNetworkFile(run.network, folder / "network.json");
+    {
+        std::ofstream csv = openForWriting(folder / "segments.csv");
+        const auto& f = run.network.segmentFields;
+        csv << "segment,from,to,start_radius_mm,end_radius_mm,length_mm";
+        for (const auto& [name, values] : f)
+            csv << "," << name;
+        csv << "\n";
+        for (std::size_t s = 0; s < run.network.segments.size(); ++s)
+        {
+            const auto& segment = run.network.segments[s];
+            csv << s << "," << segment.from << "," << segment.to << "," << numberText(segment.startRadiusMm) << ","
+                << numberText(segment.endRadiusMm) << "," << numberText(segment.lengthMm);
+            for (const auto& [name, values] : f)
+                csv << "," << numberText(values[s]);
+            csv << "\n";
+        }
+    }
+    {
+        std::ofstream csv = openForWriting(folder / "outlets.csv");
+        csv << "node,x_mm,y_mm,z_mm,flow_ml_min,share,arrival_s\n";
+        for (const auto& [node, flow] : run.twoPhase.outletFlow)
+        {
+            const Eigen::Vector3d& p = run.network.nodes[std::size_t(node)].positionMm;
+            const double arrival = run.filling.arrival.at(node);
+            csv << node << "," << numberText(p.x()) << "," << numberText(p.y()) << "," << numberText(p.z()) << ","
+                << numberText(units::m3PerSToMlPerMin(flow)) << "," << numberText(flow / run.twoPhase.injectedFlow) << ","
+                << (arrival == sim::network::kNever ? std::string("-1") : numberText(arrival)) << "\n";
+        }
+    }
+    std::ofstream metrics = openForWriting(folder / "metrics.json");
+    metrics << document << "\n";
+    if (!metrics.flush())
+        throw Error("cannot write metrics.json", {{"folder", folder.string()}});
+}
+
+} // namespace vsim::app
