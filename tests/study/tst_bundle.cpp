@@ -3,6 +3,7 @@
 #include "StudyFixtures.h"
 #include "TestOutput.h"
 #include "vsim/core/Error.h"
+#include "vsim/study/NetworkFile.h"
 #include "vsim/study/Study.h"
 
 #include <QtTest>
@@ -24,6 +25,25 @@ class TestBundle : public QObject
         return bundle;
     }
 
+    /// A Y of three conical segments with one outlet at a pressure, one through a resistance, and a result field.
+    static vsim::VesselNetwork yNetwork()
+    {
+        vsim::VesselNetwork network;
+        for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 20), Eigen::Vector3d(-5, 0, 30),
+                                         Eigen::Vector3d(5, 0, 30)})
+            network.nodes.push_back({p, {}});
+        network.nodes[1].name = "junction";
+        for (const auto& [from, to] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{1, 3}})
+            network.segments.push_back({from, to, 1.5, 1.2, 20.0, 0.0, {}});
+        network.segments[1].resistance = 4e9;
+        network.segments[2].pathMm = {{0, 0, 20}, {3, 0, 26}, {5, 0, 30}};
+        network.outlets = {{2, vsim::VesselNetwork::Outlet::Type::Pressure, 1333.0, 0.0},
+                           {3, vsim::VesselNetwork::Outlet::Type::Resistance, 1000.0, 8e10}};
+        network.root = 0;
+        network.segmentFields["flow_ml_min"] = {2.0, 1.25, 0.75};
+        return network;
+    }
+
     /// A saved study holding one artifact of every kind.
     Study savedStudy(const fs::path& bundle)
     {
@@ -40,6 +60,7 @@ class TestBundle : public QObject
         study.addSurface(surface, "Lumen surface", provenance);
         study.addTetMesh(vsim::test::singleTet(), "Wall", provenance);
         study.addSkeleton(vsim::test::twoNodeSkeleton(), "Skeleton", provenance, {"one spur pruned"});
+        study.addNetwork(yNetwork(), "Drug flow", provenance);
         study.save();
         return study;
     }
@@ -53,7 +74,7 @@ private slots:
         QVERIFY(reopened.openWarnings().empty());
         QCOMPARE(reopened.name(), std::string("Phantom study"));
         QCOMPARE(reopened.metadata().at("study_description"), std::string("CTA abdomen"));
-        QCOMPARE(reopened.artifacts().size(), std::size_t(5));
+        QCOMPARE(reopened.artifacts().size(), std::size_t(6));
 
         const vsim::CtVolume image = reopened.loadImage("image-1");
         QVERIFY(image.geometry().isClose(vsim::test::patternedVolume(8, 3).geometry(), 1e-9));
@@ -67,11 +88,47 @@ private slots:
         const vsim::SkeletonGraph skeleton = reopened.loadSkeleton("skeleton-5");
         QCOMPARE(skeleton.edges[0].radii, (std::vector<double>{3.0, 2.9, 2.8, 2.7}));
 
+        const vsim::VesselNetwork network = reopened.loadNetwork("network-6"), written = yNetwork();
+        QCOMPARE(network.nodes[1].name, std::string("junction"));
+        QCOMPARE(network.segments[2].pathMm.size(), std::size_t(3));
+        QVERIFY(std::abs(network.segments[1].resistance / written.segments[1].resistance - 1.0) < 1e-12);
+        QVERIFY(std::abs(network.outlets[0].pressurePa - 1333.0) < 1e-9);
+        QVERIFY(network.outlets[1].type == vsim::VesselNetwork::Outlet::Type::Resistance);
+        QVERIFY(std::abs(network.outlets[1].resistance / 8e10 - 1.0) < 1e-12);
+        QCOMPARE(network.segmentFields.at("flow_ml_min"), (std::vector<double>{2.0, 1.25, 0.75}));
+        QCOMPARE(network.root, 0);
+
         const auto& provenance = reopened.artifact("image-1").provenance;
         QCOMPARE(provenance.command, std::string("test fixture"));
         QCOMPARE(provenance.parameters.at("multiplier"), std::string("3"));
         QVERIFY(!provenance.time.empty() && !provenance.softwareVersion.empty());
         QCOMPARE(reopened.artifact("skeleton-5").warnings, std::vector<std::string>{"one spur pruned"});
+    }
+
+    // Network files a user wrote: what is wrong is named.
+    void badNetworkFilesAreRefusedWithTheReason()
+    {
+        auto messageOf = [](const std::string& text) {
+            try
+            {
+                vsim::study::networkFromJsonText(text);
+            }
+            catch (const vsim::Error& error)
+            {
+                return QString::fromStdString(error.message());
+            }
+            return QString();
+        };
+        QVERIFY(messageOf("{}").contains("not a vascusim network file"));
+        QVERIFY(messageOf("not json").contains("cannot read the network file"));
+        const std::string head = R"({"format": "vascusim-network", "version": 1, "nodes": [{"position_mm": [0, 0, 0]},
+            {"position_mm": [0, 0, 10]}], "segments": [)";
+        QVERIFY(messageOf(head + R"({"from": 0, "to": 1, "start_radius_mm": 1, "length_mm": 10}]})")
+                    .contains("segment 0 of the network file"));
+        QVERIFY(messageOf(head + R"({"from": 0, "to": 1, "start_radius_mm": 1, "end_radius_mm": -1, "length_mm": 10}]})")
+                    .contains("segment 0 has a radius that is zero or negative"));
+        const std::string text = vsim::study::networkToJsonText(yNetwork());
+        QCOMPARE(vsim::study::networkFromJsonText(text).segments.size(), std::size_t(3));
     }
 
     void damagedAndMissingFilesAreFlaggedAndTheRestOpens()
