@@ -4,6 +4,7 @@
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/ConicalPipe.h"
 
+#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -42,11 +43,11 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
     const TipOrientation& o = solution.orientation;
 
     // Unknowns: the pressures of the reached nodes that are not held at a pressure.
-    std::map<int, const VesselNetwork::Outlet*> conditions;
+    std::vector<const VesselNetwork::Outlet*> conditions(network.nodes.size(), nullptr);
     for (const VesselNetwork::Outlet& outlet : network.outlets)
-        conditions[outlet.node] = &outlet;
+        conditions[std::size_t(outlet.node)] = &outlet;
     for (int outlet : o.outlets)
-        if (!conditions.count(outlet))
+        if (!conditions[std::size_t(outlet)])
             throw Error("outlet node " + std::to_string(outlet) + " has no boundary condition (a pressure or a terminal "
                         "resistance)",
                         {{"node", std::to_string(outlet)}});
@@ -54,13 +55,16 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
     if (!byRate)
         fixedPressure[std::size_t(o.tip)] = injection.pressure;
     for (int node : o.order)
-        if (node != o.tip && conditions.count(node) && conditions[node]->type == VesselNetwork::Outlet::Type::Pressure)
-            fixedPressure[std::size_t(node)] = conditions[node]->pressurePa;
+        if (node != o.tip && conditions[std::size_t(node)] &&
+            conditions[std::size_t(node)]->type == VesselNetwork::Outlet::Type::Pressure)
+            fixedPressure[std::size_t(node)] = conditions[std::size_t(node)]->pressurePa;
+    // Unknowns numbered children before parents: eliminating a tree from its leaves up creates no fill, so the
+    // natural order needs no reordering and the factor has the matrix's pattern.
     std::vector<int> unknown(network.nodes.size(), -1);
     int unknowns = 0;
-    for (int node : o.order)
-        if (std::isnan(fixedPressure[std::size_t(node)]))
-            unknown[std::size_t(node)] = unknowns++;
+    for (auto node = o.order.rbegin(); node != o.order.rend(); ++node)
+        if (std::isnan(fixedPressure[std::size_t(*node)]))
+            unknown[std::size_t(*node)] = unknowns++;
 
     solution.segmentResistance.assign(network.segments.size(), 0.0);
     std::vector<Eigen::Triplet<Real>> entries;
@@ -88,9 +92,9 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
     for (int node : o.order)
     {
         const int i = unknown[std::size_t(node)];
-        if (i < 0 || node == o.tip || !conditions.count(node))
+        if (i < 0 || node == o.tip || !conditions[std::size_t(node)])
             continue;
-        const VesselNetwork::Outlet& outlet = *conditions[node];
+        const VesselNetwork::Outlet& outlet = *conditions[std::size_t(node)];
         if (outlet.type == VesselNetwork::Outlet::Type::Resistance && outlet.resistance > 0.0)
         {
             entries.emplace_back(i, i, 1.0L / outlet.resistance);
@@ -107,7 +111,7 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
 
     Eigen::SparseMatrix<Real> system(unknowns, unknowns);
     system.setFromTriplets(entries.begin(), entries.end());
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<Real>> solver(system);
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<Real>, Eigen::Lower, Eigen::NaturalOrdering<int>> solver(system);
     if (solver.info() != Eigen::Success)
         throw Error("the flow system is singular: the part downstream of the tip has no outlet pressure to refer to");
     const Eigen::Matrix<Real, Eigen::Dynamic, 1> pressures = solver.solve(rhs);

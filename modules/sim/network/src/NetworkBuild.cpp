@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 #include <numeric>
+#include <random>
 #include <string>
 
 namespace vsim::sim::network {
@@ -214,6 +215,29 @@ int placeNode(VesselNetwork& network, const Eigen::Vector3d& pointMm, double sna
     network.segments.push_back(std::move(distal)); // `segment` is not used after this
     network.segmentFields.clear();
     return node;
+}
+
+VesselNetwork randomTree(int segments, std::uint32_t seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    VesselNetwork network;
+    network.nodes.push_back({Eigen::Vector3d::Zero(), {}});
+    for (int s = 0; s < segments; ++s)
+    {
+        const int parent = std::min(int(unit(random) * double(network.nodes.size())), int(network.nodes.size()) - 1);
+        const Eigen::Vector3d offset(unit(random), unit(random), 1.0);
+        network.nodes.push_back({network.nodes[std::size_t(parent)].positionMm + offset, {}});
+        VesselNetwork::Segment segment;
+        segment.from = parent;
+        segment.to = int(network.nodes.size()) - 1;
+        segment.startRadiusMm = 0.3 + 2.7 * unit(random);
+        segment.endRadiusMm = segment.startRadiusMm * (0.7 + 0.3 * unit(random));
+        segment.lengthMm = 2.0 + 20.0 * unit(random);
+        network.segments.push_back(segment);
+    }
+    network.root = 0;
+    return network;
 }
 
 } // namespace vsim::sim::network

@@ -3,6 +3,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/sim/network/ConicalPipe.h"
 #include "vsim/sim/network/FlowSolver.h"
+#include "vsim/sim/network/NetworkBuild.h"
 
 #include <algorithm>
 #include <chrono>
@@ -67,19 +68,9 @@ ValidationResult cone()
 ValidationResult conservation()
 {
     ValidationResult result{"network-conservation", "Kirchhoff's law on a seeded random tree of 2,000 segments", {}, 0.0};
+    VesselNetwork network = randomTree(2000, 20261122);
     std::mt19937 random(20261122);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    VesselNetwork network = nodes(1);
-    for (int s = 0; s < 2000; ++s)
-    {
-        const int parent = int(unit(random) * double(network.nodes.size()));
-        network.nodes.push_back({network.nodes[std::size_t(parent)].positionMm + Eigen::Vector3d(unit(random), unit(random), 1.0), {}});
-        const double r1 = 0.3 + 2.7 * unit(random), r2 = r1 * (0.7 + 0.3 * unit(random));
-        VesselNetwork::Segment segment;
-        segment.from = parent, segment.to = int(network.nodes.size()) - 1;
-        segment.startRadiusMm = r1, segment.endRadiusMm = r2, segment.lengthMm = 2.0 + 20.0 * unit(random);
-        network.segments.push_back(segment);
-    }
     network.root = 0;
     for (int end : network.endNodes())
         if (end != 0)

@@ -7,6 +7,7 @@
 #include "vsim/core/VesselNetwork.h"
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <utility>
@@ -37,5 +38,10 @@ Eigen::Vector3d segmentMiddle(const VesselNetwork& network, int segment);
 /// (path, length and radii divided at the point; an explicit resistance in proportion to length; result fields
 /// dropped). Throws vsim::Error when the point is farther than `reachMm` from every segment.
 int placeNode(VesselNetwork& network, const Eigen::Vector3d& pointMm, double snapMm, double reachMm);
+
+/// A synthetic tree for validation and benchmarks: `segments` conical segments, each from a uniformly chosen
+/// earlier node (seeded: the same tree on every machine), radii 0.3-3 mm tapering up to 30 %, lengths 2-22 mm,
+/// root node 0; no outlet conditions.
+VesselNetwork randomTree(int segments, std::uint32_t seed);
 
 } // namespace vsim::sim::network
