@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
+#include "vsim/imaging/PartialVolumeRadii.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/study/NetworkFile.h"
@@ -73,6 +74,18 @@ VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& ce
                                     ParameterSet(imaging::measurementParameters()), progress.subRange(0.0, 0.9));
         for (std::size_t e = 0; e < measured.segments.size(); ++e)
             endRadii.push_back(fittedEndRadii(measured.segments[e], centerlines.edges[e]));
+        // The CT the label came from (the segment step's input): partial-volume radii where a segment is long
+        // enough between its clearances.
+        const auto& labelInputs = study.artifact(labelId).provenance.inputs;
+        if (!labelInputs.empty() && study.hasArtifact(labelInputs.front()) &&
+            study.artifact(labelInputs.front()).kind == study::ArtifactKind::Image)
+        {
+            const std::vector<imaging::PartialVolumeRadius> radii =
+                imaging::partialVolumeRadii(study.loadImage(labelInputs.front()), centerlines, progress.subRange(0.9, 1.0));
+            for (std::size_t e = 0; e < radii.size(); ++e)
+                if (radii[e].measured)
+                    endRadii[e] = {radii[e].startRadiusMm, radii[e].endRadiusMm};
+        }
     }
     return sim::network::networkFromCenterlines(centerlines, endRadii, &warnings);
 }
