@@ -10,7 +10,8 @@
 namespace vsim::imaging {
 namespace {
 
-constexpr double kTubeMarginMm = 2.0;  // beyond the distance radius: its bias and the blurred edge (1.2 mm cut the root to 2.4 of 2.85 mm)
+constexpr double kFirstMarginMm = 2.0; // pass 1: beyond the distance radius (its threshold bias and the blur)
+constexpr double kBlurMarginMm = 1.0;  // pass 2: beyond the lumen found, plus half a voxel (3 sigma of the blur)
 constexpr double kShellMm = 1.5;       // tissue sampled this far beyond the tube
 
 double median(std::vector<double> values)
@@ -43,36 +44,26 @@ struct Owner
 {
     int edge = -1;
     float distance = 1e30f, arc = 0.0f;
+    bool inTube = false; ///< within some edge's tube (not tissue for any shell)
 };
 
-} // namespace
 
-std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const SkeletonGraph& centerlines,
-                                                    const Progress& progress)
+/// One pass: every voxel within tube[e] + kShellMm of a centerline to its nearest one; the lumen volume of each
+/// tube (between the clearances, in two halves) from the contrast against its shell's tissue and the blood of the
+/// widest vessels' cores.
+std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonGraph& centerlines,
+                                             const std::vector<std::vector<double>>& arcs, const std::vector<double>& length,
+                                             const std::vector<double>& radius, const std::vector<double>& tube,
+                                             const Progress& progress)
 {
-    if (centerlines.edges.empty())
-        throw Error("no centerlines to measure");
     const VolumeGeometry& g = ct.geometry();
     const std::size_t edges = centerlines.edges.size();
-    std::vector<std::vector<double>> arcs(edges);
-    std::vector<double> radius(edges), length(edges);
-    for (std::size_t e = 0; e < edges; ++e)
-    {
-        const auto& edge = centerlines.edges[e];
-        arcs[e].assign(1, 0.0);
-        for (std::size_t i = 1; i < edge.points.size(); ++i)
-            arcs[e].push_back(arcs[e].back() + (edge.points[i] - edge.points[i - 1]).norm());
-        length[e] = arcs[e].back();
-        std::vector<double> radii(edge.radii.begin(), edge.radii.end());
-        radius[e] = radii.empty() ? 1.0 : median(radii);
-    }
-    // Every voxel near a centerline (tube + shell) to its nearest edge.
     std::unordered_map<std::size_t, Owner> owners;
     for (std::size_t e = 0; e < edges; ++e)
     {
         progress.throwIfCancelled();
         const auto& points = centerlines.edges[e].points;
-        const double reach = radius[e] + kTubeMarginMm + kShellMm;
+        const double reach = tube[e] + kShellMm;
         Eigen::Vector3d low = Eigen::Vector3d::Constant(1e300), high = Eigen::Vector3d::Constant(-1e300);
         for (const Eigen::Vector3d& p : points)
             for (int corner = 0; corner < 8; ++corner)
@@ -89,32 +80,20 @@ std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const Sk
                     if (distance > reach)
                         continue;
                     Owner& owner = owners[g.linearIndex(i, j, k)];
+                    owner.inTube = owner.inTube || distance <= tube[e];
                     if (distance < owner.distance)
-                        owner = {int(e), float(distance), float(arc)};
+                        owner = {int(e), float(distance), float(arc), owner.inTube};
                 }
-        progress.report(0.8 * double(e + 1) / double(edges), "partial-volume radii");
+        progress.report(double(e + 1) / double(edges), "partial-volume radii");
     }
-    // Blood: the cores of the widest vessels; tissue: each edge's shell.
-    std::vector<double> core;
-    std::vector<std::vector<double>> shell(edges);
-    const double widest = *std::max_element(radius.begin(), radius.end());
-    for (const auto& [index, owner] : owners)
-    {
-        const double hu = ct.data()[index];
-        const std::size_t e = std::size_t(owner.edge);
-        if (radius[e] >= 0.6 * widest && owner.distance <= 0.4 * radius[e])
-            core.push_back(hu);
-        if (owner.distance > radius[e] + kTubeMarginMm)
-            shell[e].push_back(hu);
-    }
-    const double blood = median(core);
-    std::vector<double> tissue(edges);
+    // Clearances. A junction end takes in the bifurcation's widened lumen, and thinning places the junction node
+    // towards the wider parent: two radii of the widest vessel there, plus 1 mm. A free end loses its blurred cap.
+    std::vector<double> widestAt(centerlines.nodes.size(), 0.0);
     for (std::size_t e = 0; e < edges; ++e)
-        tissue[e] = median(shell[e]);
-
-    // Clearances: a junction end takes in the branches, a free end the blurred cap.
+        for (int node : {centerlines.edges[e].from, centerlines.edges[e].to})
+            widestAt[std::size_t(node)] = std::max(widestAt[std::size_t(node)], radius[e]);
     auto clearance = [&](int node, std::size_t e) {
-        return centerlines.degree(node) >= 3 ? std::max(2.0 * radius[e], 1.5) : radius[e] + 1.0;
+        return centerlines.degree(node) >= 3 ? 2.0 * widestAt[std::size_t(node)] + 1.0 : radius[e] + 1.0;
     };
     std::vector<double> lower(edges), upper(edges), sums(2 * edges, 0.0);
     for (std::size_t e = 0; e < edges; ++e)
@@ -122,16 +101,34 @@ std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const Sk
         lower[e] = clearance(centerlines.edges[e].from, e);
         upper[e] = length[e] - clearance(centerlines.edges[e].to, e);
     }
+    // Blood: the cores of the widest vessels. Tissue: each half's shell, away from every tube (the background
+    // changes along a vessel, e.g. where it enters a tumour).
+    std::vector<double> core;
+    std::vector<std::vector<double>> shell(2 * edges);
+    const double widest = *std::max_element(radius.begin(), radius.end());
+    for (const auto& [index, owner] : owners)
+    {
+        const double hu = ct.data()[index];
+        const std::size_t e = std::size_t(owner.edge);
+        if (radius[e] >= 0.6 * widest && owner.distance <= 0.4 * radius[e])
+            core.push_back(hu);
+        if (!owner.inTube && owner.arc >= lower[e] && owner.arc <= upper[e])
+            shell[2 * e + (owner.arc >= 0.5 * (lower[e] + upper[e]) ? 1 : 0)].push_back(hu);
+    }
+    const double blood = median(core);
+    std::vector<double> tissue(2 * edges);
+    for (std::size_t h = 0; h < 2 * edges; ++h)
+        tissue[h] = median(shell[h]);
+
     const double voxelVolume = g.spacing.prod();
     for (const auto& [index, owner] : owners)
     {
         const std::size_t e = std::size_t(owner.edge);
-        if (owner.distance > radius[e] + kTubeMarginMm || owner.arc < lower[e] || owner.arc > upper[e] ||
-            !(blood > tissue[e]))
+        if (owner.distance > tube[e] || owner.arc < lower[e] || owner.arc > upper[e])
             continue;
-        const double contrast = (ct.data()[index] - tissue[e]) / (blood - tissue[e]);
-        const bool distal = owner.arc >= 0.5 * (lower[e] + upper[e]);
-        sums[2 * e + (distal ? 1 : 0)] += contrast * voxelVolume;
+        const std::size_t h = 2 * e + (owner.arc >= 0.5 * (lower[e] + upper[e]) ? 1 : 0);
+        if (blood > tissue[h])
+            sums[h] += (ct.data()[index] - tissue[h]) / (blood - tissue[h]) * voxelVolume;
     }
     std::vector<PartialVolumeRadius> result(edges);
     for (std::size_t e = 0; e < edges; ++e)
@@ -148,10 +145,49 @@ std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const Sk
         r.measured = true;
         r.meanRadiusMm = std::sqrt((sums[2 * e] + sums[2 * e + 1]) / r.usedLengthMm / std::numbers::pi);
         const double s1 = lower[e] + 0.5 * half, s2 = upper[e] - 0.5 * half, slope = (r2 - r1) / (s2 - s1);
-        r.startRadiusMm = std::clamp(r1 - slope * s1, 0.5 * r.meanRadiusMm, 2.0 * r.meanRadiusMm);
-        r.endRadiusMm = std::clamp(r2 + slope * (length[e] - s2), 0.5 * r.meanRadiusMm, 2.0 * r.meanRadiusMm);
+        // Vessels taper by tens of percent along a segment at most: a steeper line is noise.
+        r.startRadiusMm = std::clamp(r1 - slope * s1, 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
+        r.endRadiusMm = std::clamp(r2 + slope * (length[e] - s2), 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
     }
-    progress.report(1.0, "partial-volume radii");
+    return result;
+}
+
+} // namespace
+
+std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const SkeletonGraph& centerlines,
+                                                    const Progress& progress)
+{
+    if (centerlines.edges.empty())
+        throw Error("no centerlines to measure");
+    const std::size_t edges = centerlines.edges.size();
+    std::vector<std::vector<double>> arcs(edges);
+    std::vector<double> radius(edges), length(edges);
+    for (std::size_t e = 0; e < edges; ++e)
+    {
+        const auto& edge = centerlines.edges[e];
+        arcs[e].assign(1, 0.0);
+        for (std::size_t i = 1; i < edge.points.size(); ++i)
+            arcs[e].push_back(arcs[e].back() + (edge.points[i] - edge.points[i - 1]).norm());
+        length[e] = arcs[e].back();
+        std::vector<double> radii(edge.radii.begin(), edge.radii.end());
+        radius[e] = radii.empty() ? 1.0 : median(radii);
+    }
+    // Pass 1 around the segmentation's distance radii (which a threshold biases), pass 2 around the lumen pass 1
+    // found: a tube only as wide as the blur needs keeps less tissue, whose estimate's error weighs with the tube.
+    std::vector<double> tube(edges);
+    for (std::size_t e = 0; e < edges; ++e)
+        tube[e] = radius[e] + kFirstMarginMm;
+    const std::vector<PartialVolumeRadius> first =
+        measurePass(ct, centerlines, arcs, length, radius, tube, progress.subRange(0.0, 0.5));
+    const double blurMargin = kBlurMarginMm + 0.5 * ct.geometry().spacing.maxCoeff();
+    for (std::size_t e = 0; e < edges; ++e)
+        if (first[e].measured)
+            tube[e] = first[e].meanRadiusMm + blurMargin;
+    std::vector<PartialVolumeRadius> result =
+        measurePass(ct, centerlines, arcs, length, radius, tube, progress.subRange(0.5, 1.0));
+    for (std::size_t e = 0; e < edges; ++e)
+        if (!result[e].measured)
+            result[e] = first[e];
     return result;
 }
 
