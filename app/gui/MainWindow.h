@@ -29,9 +29,13 @@ class QTreeWidget;
 namespace vsim::imaging {
 struct VesselMeasurements;
 }
+namespace vsim::sim::network {
+struct NetworkRunResult;
+}
 
 namespace vsim::gui {
 
+class DrugDeliveryPanel;
 class InteractiveWall;
 class LabelEditSession;
 class ViewLayout;
@@ -78,6 +82,18 @@ public:
     bool startInteractiveWall();
     void stopInteractiveWall();
     InteractiveWall* interactiveWall() const { return m_interactiveWall; }
+    /// What the Drug Delivery dialog asks: the tip ("x, y, z" mm; empty: the root), the tumour sphere ("x, y, z, r";
+    /// empty: none) and control points ("x, y, z; ..."; empty: the first junction's branches).
+    struct DrugDeliveryRequest
+    {
+        QString tip, tumour, controls;
+    };
+    /// Runs the drug delivery from the newest centerlines in the background (Drug > Drug Delivery); the solved
+    /// network is added (undoable) and shown: coloured by drug flow in 3D, the Drug Delivery dock with the
+    /// figures, the outlets and the filling player. False without centerlines or for malformed input.
+    bool simulateDrugDelivery(const DrugDeliveryRequest& request);
+    DrugDeliveryPanel* drugDeliveryPanel() const { return m_drugPanel; }
+    ParameterSet& networkParameters() { return m_networkParameters; }
     ParameterSet& wallMeshParameters() { return m_wallMeshParameters; }
     ParameterSet& femParameters() { return m_femParameters; }
     /// The parameters the vessel steps use (Vessels > Parameters edits them; defaults from the declarations).
@@ -114,6 +130,9 @@ private:
     void createMeasurementDock();
     void createLabelEditToolBar();
     void createWallMenu();
+    void createDrugMenu();
+    void showDrugDeliveryDialog();
+    void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
     void showWallStress(const TetMesh& frame);
     void editVesselParameters();
     /// Overlays a label in the three MPRs (an empty one clears them); `artifactId` is what it shows.
@@ -155,6 +174,10 @@ private:
     ParameterSet m_centerlineParameters;
     ParameterSet m_wallMeshParameters;
     ParameterSet m_femParameters;
+    ParameterSet m_networkParameters;
+    DrugDeliveryRequest m_drugRequest;
+    DrugDeliveryPanel* m_drugPanel = nullptr;
+    QDockWidget* m_drugDock = nullptr;
     InteractiveWall* m_interactiveWall = nullptr;
     QDockWidget* m_interactiveDock = nullptr;
     std::string m_overlayLabelId; // the label artifact the MPR overlays show

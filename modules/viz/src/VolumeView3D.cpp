@@ -4,10 +4,13 @@
 #include "vsim/interop/VtkImage.h"
 #include "vsim/interop/VtkMesh.h"
 
+#include <Eigen/Geometry>
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellPicker.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
@@ -19,9 +22,12 @@
 #include <vtkPointData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTubeFilter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkSmartVolumeMapper.h>
 #include <vtkVolume.h>
 #include <vtkVolumeProperty.h>
@@ -40,7 +46,9 @@ struct VolumeView3D::Scene
     vtkSmartPointer<vtkVolume> volume = vtkSmartPointer<vtkVolume>::New();
     std::vector<vtkSmartPointer<vtkActor>> surfaces;
     std::vector<vtkSmartPointer<vtkActor>> lines;
-    vtkSmartPointer<vtkActor> fieldSurface;
+    vtkSmartPointer<vtkActor> fieldSurface, fieldLines, tubelets;
+    vtkSmartPointer<vtkRenderer> overlay; // layer 1: the tubelets on top of the vessels
+    int tubeletQuads = 0;
     vtkSmartPointer<vtkScalarBarActor> legend;
     QString legendTitle;
     int lineCount = 0;
@@ -176,7 +184,11 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
         m_scene->fieldSurface->SetMapper(mapper);
         renderer()->AddActor(m_scene->fieldSurface);
     }
-    vtkScalarsToColors* table = m_scene->fieldSurface->GetMapper()->GetLookupTable();
+    showLegend(m_scene->fieldSurface->GetMapper()->GetLookupTable(), legendTitle);
+}
+
+void VolumeView3D::showLegend(vtkScalarsToColors* table, const QString& title)
+{
     if (!m_scene->legend)
     {
         m_scene->legend = vtkSmartPointer<vtkScalarBarActor>::New();
@@ -187,11 +199,144 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
         renderer()->AddViewProp(m_scene->legend);
     }
     m_scene->legend->SetLookupTable(table);
-    m_scene->legend->SetTitle(legendTitle.toUtf8().constData());
+    m_scene->legend->SetTitle(title.toUtf8().constData());
     m_scene->legend->SetVisibility(true);
-    m_scene->legendTitle = legendTitle;
+    m_scene->legendTitle = title;
     update();
 }
+
+void VolumeView3D::showFieldLines(const std::vector<std::vector<Eigen::Vector3d>>& lines, const std::vector<double>& values,
+                                  double low, double high, double widthPixels, const QString& legendTitle,
+                                  const std::vector<std::array<double, 2>>& radiiMm)
+{
+    if (values.size() != lines.size() || (!radiiMm.empty() && radiiMm.size() != lines.size()))
+        throw Error("field lines need one value (and radius pair) per line");
+    clearFieldLines();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+    scalars->SetName("value");
+    auto radius = vtkSmartPointer<vtkDoubleArray>::New();
+    radius->SetName("radius");
+    for (std::size_t l = 0; l < lines.size(); ++l)
+    {
+        cells->InsertNextCell(vtkIdType(lines[l].size()));
+        for (std::size_t i = 0; i < lines[l].size(); ++i)
+        {
+            const Eigen::Vector3d& point = lines[l][i];
+            cells->InsertCellPoint(points->InsertNextPoint(point.x(), point.y(), point.z()));
+            if (!radiiMm.empty()) // linear along the line, as the conical segment
+            {
+                const double t = lines[l].size() > 1 ? double(i) / double(lines[l].size() - 1) : 0.0;
+                radius->InsertNextValue(radiiMm[l][0] + t * (radiiMm[l][1] - radiiMm[l][0]));
+            }
+        }
+        scalars->InsertNextValue(values[l]);
+    }
+    vtkSmartPointer<vtkPolyData> polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(points);
+    polyData->SetLines(cells);
+    polyData->GetCellData()->SetScalars(scalars);
+    if (!radiiMm.empty()) // the vessels as tubes of their radius: clearer than wide lines, which software GL draws poorly
+    {
+        polyData->GetPointData()->SetScalars(radius);
+        auto tubes = vtkSmartPointer<vtkTubeFilter>::New();
+        tubes->SetInputData(polyData);
+        tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
+        tubes->SetNumberOfSides(12);
+        tubes->CappingOn();
+        tubes->Update();
+        polyData = tubes->GetOutput();
+    }
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetHueRange(0.667, 0.0);
+    table->SetTableRange(low, high);
+    table->Build();
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(polyData);
+    mapper->SetLookupTable(table);
+    mapper->SetScalarRange(low, high);
+    mapper->SetScalarModeToUseCellData();
+    mapper->ScalarVisibilityOn();
+    m_scene->fieldLines = vtkSmartPointer<vtkActor>::New();
+    m_scene->fieldLines->SetMapper(mapper);
+    m_scene->fieldLines->GetProperty()->SetLineWidth(float(widthPixels));
+    m_scene->fieldLines->GetProperty()->SetLighting(!radiiMm.empty());
+    renderer()->AddActor(m_scene->fieldLines);
+    showLegend(table, legendTitle);
+}
+
+void VolumeView3D::clearFieldLines()
+{
+    if (m_scene->fieldLines)
+        renderer()->RemoveActor(m_scene->fieldLines);
+    m_scene->fieldLines = nullptr;
+    update();
+}
+
+int VolumeView3D::showTubelets(const std::vector<std::vector<Eigen::Vector3d>>& trails, double widthMm, const QColor& colour)
+{
+    // The tubelets run inside the vessels: they are drawn in an overlay layer with the same camera, on top.
+    if (!m_scene->overlay)
+    {
+        m_scene->overlay = vtkSmartPointer<vtkRenderer>::New();
+        m_scene->overlay->SetLayer(1);
+        m_scene->overlay->InteractiveOff();
+        m_scene->overlay->SetActiveCamera(renderer()->GetActiveCamera());
+        renderWindow()->SetNumberOfLayers(2);
+        renderWindow()->AddRenderer(m_scene->overlay);
+    }
+    if (m_scene->tubelets)
+        m_scene->overlay->RemoveActor(m_scene->tubelets);
+    m_scene->tubelets = nullptr;
+    m_scene->tubeletQuads = 0;
+    double view[3];
+    renderer()->GetActiveCamera()->GetDirectionOfProjection(view);
+    const Eigen::Vector3d towardsViewer = -Eigen::Vector3d(view[0], view[1], view[2]).normalized();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto quads = vtkSmartPointer<vtkCellArray>::New();
+    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colours->SetNumberOfComponents(4);
+    for (const auto& trail : trails)
+        for (std::size_t i = 0; i + 1 < trail.size(); ++i)
+        {
+            const Eigen::Vector3d along = trail[i + 1] - trail[i];
+            Eigen::Vector3d side = along.cross(towardsViewer);
+            if (side.norm() < 1e-9)
+                continue;
+            side = 0.5 * widthMm * side.normalized();
+            // Opacity falls from the head (i = 0) to the tail: the washing-out look of the thesis's figure 6.9.
+            const double a0 = 1.0 - double(i) / double(trail.size() - 1), a1 = 1.0 - double(i + 1) / double(trail.size() - 1);
+            quads->InsertNextCell(4);
+            for (const auto& [point, alpha] : {std::pair{Eigen::Vector3d(trail[i] - side), a0}, std::pair{Eigen::Vector3d(trail[i] + side), a0},
+                                               std::pair{Eigen::Vector3d(trail[i + 1] + side), a1},
+                                               std::pair{Eigen::Vector3d(trail[i + 1] - side), a1}})
+            {
+                quads->InsertCellPoint(points->InsertNextPoint(point.x(), point.y(), point.z()));
+                const unsigned char rgba[4] = {static_cast<unsigned char>(colour.red()), static_cast<unsigned char>(colour.green()),
+                                               static_cast<unsigned char>(colour.blue()),
+                                               static_cast<unsigned char>(std::lround(255.0 * alpha))};
+                colours->InsertNextTypedTuple(rgba);
+            }
+            ++m_scene->tubeletQuads;
+        }
+    auto polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(points);
+    polyData->SetPolys(quads);
+    polyData->GetPointData()->SetScalars(colours);
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(polyData);
+    mapper->SetColorModeToDirectScalars();
+    mapper->ScalarVisibilityOn();
+    m_scene->tubelets = vtkSmartPointer<vtkActor>::New();
+    m_scene->tubelets->SetMapper(mapper);
+    m_scene->tubelets->GetProperty()->SetLighting(false);
+    m_scene->overlay->AddActor(m_scene->tubelets);
+    update();
+    return m_scene->tubeletQuads;
+}
+
+int VolumeView3D::tubeletQuadCount() const { return m_scene->tubeletQuads; }
 
 QString VolumeView3D::legendTitle() const { return m_scene->legendTitle; }
 
@@ -322,9 +467,10 @@ void VolumeView3D::mouseReleaseEvent(QMouseEvent* event)
     VtkView::mouseReleaseEvent(event);
 }
 
-void VolumeView3D::showAnteriorView(double heightMm)
+void VolumeView3D::showAnteriorView(double heightMm) { showAnteriorView(volumeCentre(), heightMm); }
+
+void VolumeView3D::showAnteriorView(const Eigen::Vector3d& centre, double heightMm)
 {
-    const Eigen::Vector3d centre = volumeCentre();
     double height = heightMm;
     if (height <= 0.0 && !m_image.isEmpty())
     {

@@ -8,9 +8,13 @@
 #include <QColor>
 #include <QString>
 
+#include <array>
 #include <optional>
 
 #include <string>
+#include <vector>
+
+class vtkScalarsToColors;
 
 namespace vsim::viz {
 
@@ -44,10 +48,24 @@ public:
     void clearLines();
     /// Number of polylines drawn (all graphs).
     int lineCount() const;
+    /// Polylines (mm, LPS) each coloured by one value (blue -> red over [low, high]) with the colour legend titled
+    /// `legendTitle`; drawn as tubes when `radiiMm` gives each line's radius at its start and end (mm), else as
+    /// lines `widthPixels` wide. Replaces earlier field lines.
+    void showFieldLines(const std::vector<std::vector<Eigen::Vector3d>>& lines, const std::vector<double>& values,
+                        double low, double high, double widthPixels, const QString& legendTitle,
+                        const std::vector<std::array<double, 2>>& radiiMm = {});
+    void clearFieldLines();
+    /// Virtual tubelets (thesis ch. 6.3, after Schirski et al.): along every trail (mm, head first), quads of
+    /// `widthMm` turned to face the camera, opaque at the head and fading to clear at the tail; replaces earlier
+    /// ones. Returns the number of quads drawn.
+    int showTubelets(const std::vector<std::vector<Eigen::Vector3d>>& trails, double widthMm, const QColor& colour);
+    int tubeletQuadCount() const;
     void setVolumeVisible(bool visible);
     /// Front view: the camera looks at the volume centre from anterior (-y), superior (+z) up, patient left (+x)
     /// on the screen's right; parallel projection with `heightMm` mm across the view's height (<= 0: fit the volume).
     void showAnteriorView(double heightMm = 0.0);
+    /// The same front view centred on `centreMm` (e.g. a vessel tree).
+    void showAnteriorView(const Eigen::Vector3d& centreMm, double heightMm);
     /// Centre of the volume in the patient frame (mm).
     Eigen::Vector3d volumeCentre() const;
 
@@ -71,6 +89,7 @@ protected:
     void mouseReleaseEvent(QMouseEvent* event) override;
 
 private:
+    void showLegend(vtkScalarsToColors* table, const QString& title);
     struct Scene;
     std::unique_ptr<Scene> m_scene;
     CtVolume m_image;

@@ -1,0 +1,149 @@
+#include "DrugDeliveryPanel.h"
+
+#include "NetworkProjectionView.h"
+#include "vsim/core/Units.h"
+#include "vsim/sim/network/Tracers.h"
+#include "vsim/viz/VolumeView3D.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace vsim::gui {
+namespace {
+
+QString number(double value, int decimals) { return QString::number(value, 'f', decimals); }
+
+} // namespace
+
+DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
+    : QWidget(parent), m_view(view), m_summary(new QTextBrowser(this)), m_outlets(new QTableWidget(this)),
+      m_projection(new NetworkProjectionView(this)), m_slider(new QSlider(Qt::Horizontal, this)),
+      m_play(new QPushButton(tr("Play"), this)), m_time(new QLabel(this)), m_timer(new QTimer(this))
+{
+    m_summary->setObjectName("drugSummary");
+    m_summary->setMaximumHeight(130);
+    m_outlets->setColumnCount(3);
+    m_outlets->setHorizontalHeaderLabels({tr("Outlet"), tr("Drug share (%)"), tr("Arrival (s)")});
+    m_outlets->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_outlets->horizontalHeader()->setStretchLastSection(true);
+    m_outlets->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_outlets->setObjectName("drugOutletTable");
+    m_slider->setObjectName("drugTimeSlider");
+    m_play->setObjectName("drugPlay");
+    m_play->setCheckable(true);
+    auto* player = new QHBoxLayout;
+    player->addWidget(m_play);
+    player->addWidget(m_slider, 1);
+    player->addWidget(m_time);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_summary);
+    layout->addLayout(player);
+    layout->addWidget(m_projection, 2);
+    layout->addWidget(m_outlets, 1);
+    connect(m_slider, &QSlider::valueChanged, this, &DrugDeliveryPanel::showStep);
+    connect(m_play, &QPushButton::toggled, this, [this](bool on) {
+        m_play->setText(on ? tr("Pause") : tr("Play"));
+        if (on && m_slider->value() == m_slider->maximum())
+            m_slider->setValue(0);
+        on ? m_timer->start(30) : m_timer->stop();
+    });
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        const int step = m_slider->value() + std::max(1, m_slider->maximum() / 400); // about 12 s a run
+        m_slider->setValue(std::min(step, m_slider->maximum()));
+        if (m_slider->value() == m_slider->maximum())
+            m_play->setChecked(false);
+    });
+}
+
+DrugDeliveryPanel::~DrugDeliveryPanel() = default;
+
+void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunResult> run, int fillingSteps)
+{
+    m_run = std::move(run);
+    const sim::network::NetworkRunResult& r = *m_run;
+    const auto& m = r.metrics;
+    QString text = tr("Tip pressure %1 mmHg; last outlet reached after %2 s.")
+                       .arg(number(m.at("tip_pressure_mmhg"), 1), number(m.at("last_arrival_s"), 1));
+    for (const sim::network::ControlPoint& c : r.controls)
+        text += tr("<br>Control point %1: drug %2 ml/min two-phase, %3 ml/min liquid (%4 % lower)")
+                    .arg(QString::fromStdString(c.name), number(c.drugFlowTwoPhaseMlMin, 3), number(c.drugFlowLiquidMlMin, 3),
+                         number(c.dropPercent, 1));
+    if (m.count("tumour_fraction"))
+        text += tr("<br>Tumour share %1 % (%2 outlets).").arg(number(100.0 * m.at("tumour_fraction"), 1)).arg(r.tumourOutlets.size());
+    if (m.count("best_tip_node"))
+        text += tr("<br>Best tip: node %1 delivers %2 % to the tumour.")
+                    .arg(int(m.at("best_tip_node")))
+                    .arg(number(100.0 * m.at("best_tip_fraction"), 1));
+    for (const std::string& warning : r.warnings)
+        text += "<br><i>" + QString::fromStdString(warning).toHtmlEscaped() + "</i>";
+    m_summary->setHtml(text);
+
+    m_outlets->setRowCount(int(r.twoPhase.outletFlow.size()));
+    int row = 0;
+    for (const auto& [node, flow] : r.twoPhase.outletFlow)
+    {
+        const double arrival = r.filling.arrival.at(node);
+        m_outlets->setItem(row, 0, new QTableWidgetItem(QString::number(node)));
+        m_outlets->setItem(row, 1, new QTableWidgetItem(number(100.0 * flow / r.twoPhase.injectedFlow, 2)));
+        m_outlets->setItem(row, 2, new QTableWidgetItem(arrival == sim::network::kNever ? tr("never") : number(arrival, 1)));
+        ++row;
+    }
+    // The tree coloured by drug flow, in 3D (with the legend) and in the projection.
+    std::vector<std::vector<Eigen::Vector3d>> lines;
+    std::vector<double> values;
+    std::vector<std::array<double, 2>> radii;
+    const std::vector<double>& drug = r.network.segmentFields.at("drug_flow_ml_min");
+    for (std::size_t s = 0; s < r.network.segments.size(); ++s)
+    {
+        if (!r.twoPhase.orientation.active(int(s)))
+            continue;
+        const auto& segment = r.network.segments[s];
+        lines.push_back(segment.pathMm.size() >= 2 ? segment.pathMm
+                                                   : std::vector<Eigen::Vector3d>{r.network.nodes[std::size_t(segment.from)].positionMm,
+                                                                                  r.network.nodes[std::size_t(segment.to)].positionMm});
+        values.push_back(drug[s]);
+        radii.push_back({segment.startRadiusMm, segment.endRadiusMm});
+    }
+    const double high = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
+    m_view->clearSurfaces(); // the tree alone, coloured by flow
+    m_view->clearLines();
+    m_view->setVolumeVisible(false);
+    m_view->showFieldLines(lines, values, 0.0, high, 5.0, tr("Drug flow (ml/min)"), radii);
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(1e300), top = Eigen::Vector3d::Constant(-1e300);
+    for (const auto& line : lines)
+        for (const Eigen::Vector3d& p : line)
+            low = low.cwiseMin(p), top = top.cwiseMax(p);
+    if (!lines.empty()) // frame the tree from the front
+        m_view->showAnteriorView(0.5 * (low + top), 1.2 * std::max((top - low).x(), (top - low).z()));
+    m_projection->setNetwork(r.network, drug, 0.0, high);
+    m_slider->setRange(0, std::max(1, fillingSteps));
+    m_slider->setValue(0);
+    showStep(0);
+}
+
+void DrugDeliveryPanel::showStep(int step)
+{
+    if (!m_run)
+        return;
+    const double last = m_run->filling.lastArrival;
+    m_timeS = last * double(step) / double(std::max(1, m_slider->maximum()));
+    // About 200 tracers over the filling, trails a fortieth of it long.
+    sim::network::TracerSettings tracers;
+    tracers.releaseEveryS = std::max(1e-3, last / 200.0);
+    tracers.trailSpacingS = std::max(1e-3, last / 320.0);
+    const auto trails = sim::network::tracerTrails(m_run->network, m_run->twoPhase, m_timeS, tracers);
+    m_view->showTubelets(trails, 1.2, QColor(255, 235, 90));
+    m_projection->setTrails(trails);
+    m_time->setText(tr("%1 s").arg(number(m_timeS, 1)));
+}
+
+} // namespace vsim::gui

@@ -1,0 +1,156 @@
+// The drug-delivery step of the workflow (Drug menu): the study's vessel network from the newest centerlines, a
+// run from a catheter tip with an optional tumour and control points in the task runner, the solved network added
+// to the study (undoable), and the Drug Delivery dock with the figures, the outlets and the filling player.
+
+#include "ArtifactCommands.h"
+#include "DrugDeliveryPanel.h"
+#include "MainWindow.h"
+#include "ParameterForm.h"
+#include "ViewLayout.h"
+#include "vsim/app/NetworkPipeline.h"
+#include "vsim/core/Units.h"
+
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDockWidget>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QStatusBar>
+
+#include <sstream>
+
+namespace vsim::gui {
+namespace {
+
+/// "x, y, z[, r]" in mm -> numbers; empty text -> none; nullopt for a malformed entry.
+std::optional<std::vector<double>> numbersIn(const QString& text, std::size_t count)
+{
+    std::vector<double> values;
+    for (const QString& part : text.split(',', Qt::SkipEmptyParts))
+    {
+        bool ok = false;
+        values.push_back(part.trimmed().toDouble(&ok));
+        if (!ok)
+            return std::nullopt;
+    }
+    if (!values.empty() && values.size() != count)
+        return std::nullopt;
+    return values;
+}
+
+} // namespace
+
+void MainWindow::createDrugMenu()
+{
+    m_networkParameters = ParameterSet(sim::network::networkParameters());
+    QMenu* drug = menuBar()->addMenu(tr("&Drug"));
+    m_documentActions << drug->addAction(tr("Drug &Delivery..."), this, [this] { showDrugDeliveryDialog(); });
+    m_documentActions << drug->addAction(tr("Drug &Parameters..."), this, [this] {
+        editParametersInDialog(this, tr("Drug delivery parameters"), {{tr("Drug delivery"), &m_networkParameters}});
+    });
+}
+
+void MainWindow::showDrugDeliveryDialog()
+{
+    QDialog dialog(this);
+    dialog.setWindowTitle(tr("Drug delivery"));
+    auto* form = new QFormLayout(&dialog);
+    auto* tip = new QLineEdit(m_drugRequest.tip, &dialog);
+    tip->setPlaceholderText(tr("x, y, z in mm; empty: the root of the tree"));
+    auto* tumour = new QLineEdit(m_drugRequest.tumour, &dialog);
+    tumour->setPlaceholderText(tr("x, y, z, radius in mm; empty: none"));
+    auto* controls = new QLineEdit(m_drugRequest.controls, &dialog);
+    controls->setPlaceholderText(tr("x, y, z; x, y, z ... in mm; empty: the first junction's branches"));
+    form->addRow(tr("Catheter tip"), tip);
+    form->addRow(tr("Tumour sphere"), tumour);
+    form->addRow(tr("Control points"), controls);
+    form->addRow(new QLabel(tr("Rate %1 ml/min, void fraction %2 (Drug > Drug Parameters).")
+                                .arg(m_networkParameters.get("injection_rate_ml_min"))
+                                .arg(m_networkParameters.get("void_fraction")),
+                            &dialog));
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+    form->addRow(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    simulateDrugDelivery({tip->text(), tumour->text(), controls->text()});
+}
+
+bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
+{
+    if (!m_document.hasStudy())
+        return false;
+    const std::string centerlinesId = m_document.study().newestArtifact(study::ArtifactKind::Skeleton, "centerline");
+    if (centerlinesId.empty())
+    {
+        showError(tr("Drug delivery"), tr("The network needs centerlines: run Skeleton && Centerlines first."));
+        return false;
+    }
+    sim::network::NetworkRunSetup setup;
+    setup.parameters = m_networkParameters;
+    std::map<std::string, std::string> source;
+    const auto tip = numbersIn(request.tip, 3), tumour = numbersIn(request.tumour, 4);
+    if (!tip || !tumour)
+    {
+        showError(tr("Drug delivery"), tr("The tip needs three numbers (mm) and the tumour four (centre and radius)."));
+        return false;
+    }
+    if (!tip->empty())
+        setup.tipPointMm = Eigen::Vector3d((*tip)[0], (*tip)[1], (*tip)[2]), source["tip"] = request.tip.toStdString();
+    if (!tumour->empty())
+        setup.tumour = sim::network::TumourSphere{Eigen::Vector3d((*tumour)[0], (*tumour)[1], (*tumour)[2]), (*tumour)[3]},
+        source["tumour_mm"] = request.tumour.toStdString();
+    for (const QString& point : request.controls.split(';', Qt::SkipEmptyParts))
+    {
+        const auto xyz = numbersIn(point, 3);
+        if (!xyz || xyz->empty())
+        {
+            showError(tr("Drug delivery"), tr("Control points are x, y, z in mm, separated by ';'."));
+            return false;
+        }
+        setup.controlPointsMm.emplace_back((*xyz)[0], (*xyz)[1], (*xyz)[2]);
+    }
+    m_drugRequest = request;
+    auto run = std::make_shared<sim::network::NetworkRunResult>();
+    auto warnings = std::make_shared<std::vector<std::string>>();
+    const std::string labelId = app::labelOfCenterlines(m_document.study(), centerlinesId);
+    return m_tasks.run(
+        tr("Drug delivery"),
+        [this, setup, centerlinesId, run, warnings](const Progress& progress) mutable {
+            setup.network = app::buildStudyNetwork(m_document.study(), centerlinesId, *warnings, progress.subRange(0.0, 0.4));
+            *run = sim::network::runNetwork(setup, progress.subRange(0.4, 1.0));
+            run->warnings.insert(run->warnings.begin(), warnings->begin(), warnings->end());
+        },
+        [this, run, centerlinesId, labelId, source] {
+            std::vector<std::string> inputs{centerlinesId};
+            if (!labelId.empty())
+                inputs.push_back(labelId);
+            const std::string id = app::addNetworkRun(m_document.study(), *run, m_networkParameters, inputs, source);
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Drug flow")));
+            showDrugDeliveryRun(run);
+        });
+}
+
+void MainWindow::showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run)
+{
+    if (!m_drugPanel)
+    {
+        m_drugPanel = new DrugDeliveryPanel(m_views->volumeView(), this);
+        m_drugDock = new QDockWidget(tr("Drug Delivery"), this);
+        m_drugDock->setObjectName("drugDeliveryDock");
+        m_drugDock->setWidget(m_drugPanel);
+        addDockWidget(Qt::RightDockWidgetArea, m_drugDock);
+    }
+    m_drugDock->show();
+    m_drugPanel->setRun(run, int(m_networkParameters.get("filling_steps")));
+    statusBar()->showMessage(tr("Drug delivery: %1 outlets, last reached after %2 s")
+                                 .arg(run->twoPhase.outletFlow.size())
+                                 .arg(run->filling.lastArrival, 0, 'f', 1),
+                             8000);
+}
+
+} // namespace vsim::gui

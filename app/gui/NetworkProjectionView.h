@@ -1,0 +1,40 @@
+#pragma once
+
+// The drug network in a 2D projection (thesis ch. 6 shows the filling in 2D): the tree seen from the front
+// (coronal: patient left on the right, superior up), each segment as wide as its vessel and coloured by a value,
+// and the filling's virtual tubelets (quads along each tracer's trail, fading from head to tail). Drawn with QPainter.
+
+#include "vsim/core/VesselNetwork.h"
+
+#include <QWidget>
+
+#include <vector>
+
+namespace vsim::gui {
+
+class NetworkProjectionView : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit NetworkProjectionView(QWidget* parent = nullptr);
+
+    /// The network and one value per segment, coloured blue -> red over [low, high].
+    void setNetwork(const VesselNetwork& network, const std::vector<double>& values, double low, double high);
+    /// Tracer trails (mm, head first).
+    void setTrails(std::vector<std::vector<Eigen::Vector3d>> trails);
+    int trailCount() const { return int(m_trails.size()); }
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+
+private:
+    QPointF project(const Eigen::Vector3d& pointMm) const;
+
+    VesselNetwork m_network;
+    std::vector<double> m_values;
+    double m_low = 0.0, m_high = 1.0;
+    std::vector<std::vector<Eigen::Vector3d>> m_trails;
+    Eigen::Vector2d m_min{0, 0}, m_max{1, 1}; // projected bounds (mm): x, z
+};
+
+} // namespace vsim::gui
