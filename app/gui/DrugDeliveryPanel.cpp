@@ -5,9 +5,12 @@
 #include "vsim/sim/network/Tracers.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QDoubleSpinBox>
+#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSlider>
 #include <QTableWidget>
@@ -27,8 +30,43 @@ QString number(double value, int decimals) { return QString::number(value, 'f', 
 DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     : QWidget(parent), m_view(view), m_summary(new QTextBrowser(this)), m_outlets(new QTableWidget(this)),
       m_projection(new NetworkProjectionView(this)), m_slider(new QSlider(Qt::Horizontal, this)),
-      m_play(new QPushButton(tr("Play"), this)), m_time(new QLabel(this)), m_timer(new QTimer(this))
+      m_play(new QPushButton(tr("Play"), this)), m_time(new QLabel(this)), m_timer(new QTimer(this)),
+      m_tip(new QLineEdit(this)), m_tumour(new QLineEdit(this)), m_controls(new QLineEdit(this)),
+      m_tumourRadius(new QDoubleSpinBox(this))
 {
+    // The next run: fields to type in or pick on the tree.
+    m_tip->setObjectName("drugTip");
+    m_tip->setPlaceholderText(tr("x, y, z mm; empty: the root"));
+    m_tumour->setObjectName("drugTumour");
+    m_tumour->setPlaceholderText(tr("x, y, z, radius mm; empty: none"));
+    m_controls->setObjectName("drugControls");
+    m_controls->setPlaceholderText(tr("x, y, z; ... mm; empty: the first branches"));
+    m_tumourRadius->setRange(1.0, 100.0);
+    m_tumourRadius->setValue(15.0);
+    m_tumourRadius->setSuffix(tr(" mm"));
+    auto* pickTip = new QPushButton(tr("Pick"), this);
+    auto* pickTumour = new QPushButton(tr("Pick"), this);
+    auto* pickControl = new QPushButton(tr("Add"), this);
+    auto* run = new QPushButton(tr("Run"), this);
+    run->setObjectName("drugRun");
+    auto* setup = new QFormLayout;
+    auto row = [this](QLineEdit* edit, QWidget* button) {
+        auto* line = new QHBoxLayout;
+        line->addWidget(edit, 1);
+        line->addWidget(button);
+        return line;
+    };
+    setup->addRow(tr("Catheter tip"), row(m_tip, pickTip));
+    setup->addRow(tr("Tumour"), row(m_tumour, pickTumour));
+    setup->addRow(tr("Tumour radius (picked)"), m_tumourRadius);
+    setup->addRow(tr("Control points"), row(m_controls, pickControl));
+    setup->addRow(QString(), run);
+    connect(pickTip, &QPushButton::clicked, this, [this] { startPicking(Pick::Tip); });
+    connect(pickTumour, &QPushButton::clicked, this, [this] { startPicking(Pick::TumourCentre); });
+    connect(pickControl, &QPushButton::clicked, this, [this] { startPicking(Pick::ControlPoint); });
+    connect(run, &QPushButton::clicked, this, [this] { emit runRequested(request()); });
+    connect(m_view, &viz::VolumeView3D::pointPicked, this, &DrugDeliveryPanel::picked);
+
     m_summary->setObjectName("drugSummary");
     m_summary->setMaximumHeight(130);
     m_outlets->setColumnCount(3);
@@ -45,6 +83,7 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     player->addWidget(m_slider, 1);
     player->addWidget(m_time);
     auto* layout = new QVBoxLayout(this);
+    layout->addLayout(setup);
     layout->addWidget(m_summary);
     layout->addLayout(player);
     layout->addWidget(m_projection, 2);
@@ -64,7 +103,39 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     });
 }
 
-DrugDeliveryPanel::~DrugDeliveryPanel() = default;
+DrugDeliveryPanel::~DrugDeliveryPanel()
+{
+    if (m_pick != Pick::None)
+        m_view->setPickEnabled(false);
+}
+
+void DrugDeliveryPanel::startPicking(Pick what)
+{
+    m_pick = what;
+    m_view->setPickEnabled(what != Pick::None);
+}
+
+void DrugDeliveryPanel::picked(const Eigen::Vector3d& p)
+{
+    const QString xyz = QString("%1, %2, %3").arg(p.x(), 0, 'f', 1).arg(p.y(), 0, 'f', 1).arg(p.z(), 0, 'f', 1);
+    switch (m_pick)
+    {
+    case Pick::Tip: m_tip->setText(xyz); break;
+    case Pick::TumourCentre: m_tumour->setText(xyz + QString(", %1").arg(m_tumourRadius->value(), 0, 'f', 1)); break;
+    case Pick::ControlPoint: m_controls->setText(m_controls->text().isEmpty() ? xyz : m_controls->text() + "; " + xyz); break;
+    case Pick::None: return;
+    }
+    startPicking(Pick::None);
+}
+
+DrugDeliveryRequest DrugDeliveryPanel::request() const { return {m_tip->text(), m_tumour->text(), m_controls->text()}; }
+
+void DrugDeliveryPanel::setRequest(const DrugDeliveryRequest& request)
+{
+    m_tip->setText(request.tip);
+    m_tumour->setText(request.tumour);
+    m_controls->setText(request.controls);
+}
 
 void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunResult> run, int fillingSteps)
 {

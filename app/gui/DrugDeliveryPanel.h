@@ -1,16 +1,21 @@
 #pragma once
 
-// The Drug Delivery dock: a run's key figures (tip pressure, tumour share, best tip, control points two-phase
-// against liquid), the outlets' shares and arrival times in a table, and the filling player: a time slider and
-// Play, drawing the virtual tubelets in the 3D view and in the 2D projection beside the table.
+// The Drug Delivery dock: the next run's tip, tumour and control points (typed, or picked on the tree in the 3D
+// view), a run's key figures (tip pressure, tumour share, best tip, control points two-phase against liquid), the
+// outlets' shares and arrival times in a table, and the filling player: a time slider and Play, drawing the virtual
+// tubelets in the 3D view and in the 2D projection.
 
 #include "vsim/sim/network/NetworkRun.h"
 
+#include <Eigen/Core>
+#include <QString>
 #include <QWidget>
 
 #include <memory>
 
+class QDoubleSpinBox;
 class QLabel;
+class QLineEdit;
 class QPushButton;
 class QSlider;
 class QTableWidget;
@@ -25,12 +30,33 @@ namespace vsim::gui {
 
 class NetworkProjectionView;
 
+/// Where the next run injects and what it looks at: the tip ("x, y, z" mm; empty: the root), the tumour sphere
+/// ("x, y, z, r"; empty: none) and control points ("x, y, z; ..."; empty: the first junction's branches).
+struct DrugDeliveryRequest
+{
+    QString tip, tumour, controls;
+};
+
 class DrugDeliveryPanel : public QWidget
 {
     Q_OBJECT
 public:
     DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent = nullptr);
     ~DrugDeliveryPanel() override;
+
+    /// What the next click on the tree in the 3D view sets.
+    enum class Pick
+    {
+        None,
+        Tip,
+        TumourCentre,
+        ControlPoint,
+    };
+    /// Turns picking on in the 3D view for `what` (None: off).
+    void startPicking(Pick what);
+    Pick picking() const { return m_pick; }
+    DrugDeliveryRequest request() const;
+    void setRequest(const DrugDeliveryRequest& request);
 
     /// Shows a run: the network coloured by drug flow in 3D and in the projection, the tables, the player at 0.
     void setRun(std::shared_ptr<const sim::network::NetworkRunResult> run, int fillingSteps);
@@ -42,8 +68,17 @@ public:
     QSlider* timeSlider() const { return m_slider; }
     QPushButton* playButton() const { return m_play; }
 
+signals:
+    /// Run pressed: the request as typed or picked.
+    void runRequested(const DrugDeliveryRequest& request);
+
 private:
+    void picked(const Eigen::Vector3d& pointMm);
+
     viz::VolumeView3D* m_view;
+    Pick m_pick = Pick::None;
+    QLineEdit *m_tip, *m_tumour, *m_controls;
+    QDoubleSpinBox* m_tumourRadius;
     std::shared_ptr<const sim::network::NetworkRunResult> m_run;
     QTextBrowser* m_summary;
     QTableWidget* m_outlets;

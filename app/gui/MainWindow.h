@@ -1,5 +1,6 @@
 #pragma once
 
+#include "DrugDeliveryPanel.h"
 #include "StudyDocument.h"
 #include "TaskRunner.h"
 #include "vsim/core/ImageVolume.h"
@@ -35,7 +36,6 @@ struct NetworkRunResult;
 
 namespace vsim::gui {
 
-class DrugDeliveryPanel;
 class InteractiveWall;
 class LabelEditSession;
 class ViewLayout;
@@ -82,15 +82,10 @@ public:
     bool startInteractiveWall();
     void stopInteractiveWall();
     InteractiveWall* interactiveWall() const { return m_interactiveWall; }
-    /// What the Drug Delivery dialog asks: the tip ("x, y, z" mm; empty: the root), the tumour sphere ("x, y, z, r";
-    /// empty: none) and control points ("x, y, z; ..."; empty: the first junction's branches).
-    struct DrugDeliveryRequest
-    {
-        QString tip, tumour, controls;
-    };
-    /// Runs the drug delivery from the newest centerlines in the background (Drug > Drug Delivery); the solved
-    /// network is added (undoable) and shown: coloured by drug flow in 3D, the Drug Delivery dock with the
-    /// figures, the outlets and the filling player. False without centerlines or for malformed input.
+    /// Runs the drug delivery from the newest centerlines in the background (Drug > Drug Delivery runs from the root;
+    /// the Drug Delivery dock's Run with its tip, tumour and control points, typed or picked on the tree); the
+    /// solved network is added (undoable) and shown: the tree coloured by drug flow in 3D, the dock with the figures,
+    /// the outlets and the filling player. False without centerlines or for malformed input.
     bool simulateDrugDelivery(const DrugDeliveryRequest& request);
     DrugDeliveryPanel* drugDeliveryPanel() const { return m_drugPanel; }
     ParameterSet& networkParameters() { return m_networkParameters; }
@@ -131,7 +126,6 @@ private:
     void createLabelEditToolBar();
     void createWallMenu();
     void createDrugMenu();
-    void showDrugDeliveryDialog();
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
     void showWallStress(const TetMesh& frame);
     void editVesselParameters();

@@ -1,6 +1,7 @@
-// The drug-delivery step of the workflow (Drug menu): the study's vessel network from the newest centerlines, a
-// run from a catheter tip with an optional tumour and control points in the task runner, the solved network added
-// to the study (undoable), and the Drug Delivery dock with the figures, the outlets and the filling player.
+// The drug-delivery step of the workflow (Drug menu, Drug Delivery dock): the study's vessel network from the newest
+// centerlines, a run from a catheter tip with an optional tumour and control points in the task runner, the solved
+// network added to the study (undoable), and the dock with the next run's inputs, the figures, the outlets and the
+// filling player.
 
 #include "ArtifactCommands.h"
 #include "DrugDeliveryPanel.h"
@@ -10,17 +11,11 @@
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Units.h"
 
-#include <QDialog>
-#include <QDialogButtonBox>
 #include <QDockWidget>
-#include <QFormLayout>
-#include <QLabel>
-#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QStatusBar>
 
-#include <sstream>
 
 namespace vsim::gui {
 namespace {
@@ -47,37 +42,12 @@ void MainWindow::createDrugMenu()
 {
     m_networkParameters = ParameterSet(sim::network::networkParameters());
     QMenu* drug = menuBar()->addMenu(tr("&Drug"));
-    m_documentActions << drug->addAction(tr("Drug &Delivery..."), this, [this] { showDrugDeliveryDialog(); });
+    m_documentActions << drug->addAction(tr("Drug &Delivery"), this, [this] {
+        simulateDrugDelivery(m_drugPanel ? m_drugPanel->request() : m_drugRequest);
+    });
     m_documentActions << drug->addAction(tr("Drug &Parameters..."), this, [this] {
         editParametersInDialog(this, tr("Drug delivery parameters"), {{tr("Drug delivery"), &m_networkParameters}});
     });
-}
-
-void MainWindow::showDrugDeliveryDialog()
-{
-    QDialog dialog(this);
-    dialog.setWindowTitle(tr("Drug delivery"));
-    auto* form = new QFormLayout(&dialog);
-    auto* tip = new QLineEdit(m_drugRequest.tip, &dialog);
-    tip->setPlaceholderText(tr("x, y, z in mm; empty: the root of the tree"));
-    auto* tumour = new QLineEdit(m_drugRequest.tumour, &dialog);
-    tumour->setPlaceholderText(tr("x, y, z, radius in mm; empty: none"));
-    auto* controls = new QLineEdit(m_drugRequest.controls, &dialog);
-    controls->setPlaceholderText(tr("x, y, z; x, y, z ... in mm; empty: the first junction's branches"));
-    form->addRow(tr("Catheter tip"), tip);
-    form->addRow(tr("Tumour sphere"), tumour);
-    form->addRow(tr("Control points"), controls);
-    form->addRow(new QLabel(tr("Rate %1 ml/min, void fraction %2 (Drug > Drug Parameters).")
-                                .arg(m_networkParameters.get("injection_rate_ml_min"))
-                                .arg(m_networkParameters.get("void_fraction")),
-                            &dialog));
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
-    form->addRow(buttons);
-    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    simulateDrugDelivery({tip->text(), tumour->text(), controls->text()});
 }
 
 bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
@@ -140,12 +110,16 @@ void MainWindow::showDrugDeliveryRun(std::shared_ptr<const sim::network::Network
     if (!m_drugPanel)
     {
         m_drugPanel = new DrugDeliveryPanel(m_views->volumeView(), this);
+        m_drugPanel->setRequest(m_drugRequest);
+        connect(m_drugPanel, &DrugDeliveryPanel::runRequested, this,
+                [this](const DrugDeliveryRequest& request) { simulateDrugDelivery(request); });
         m_drugDock = new QDockWidget(tr("Drug Delivery"), this);
         m_drugDock->setObjectName("drugDeliveryDock");
         m_drugDock->setWidget(m_drugPanel);
         addDockWidget(Qt::RightDockWidgetArea, m_drugDock);
     }
     m_drugDock->show();
+    m_drugPanel->setRequest(m_drugRequest);
     m_drugPanel->setRun(run, int(m_networkParameters.get("filling_steps")));
     statusBar()->showMessage(tr("Drug delivery: %1 outlets, last reached after %2 s")
                                  .arg(run->twoPhase.outletFlow.size())

@@ -83,6 +83,23 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(panel->timeSlider()->value() == panel->timeSlider()->maximum(), 30000);
         QVERIFY(!panel->playButton()->isChecked());
 
+        // The best tip position picked on the tree in the 3D view, then Run from the dock: the tumour gets more.
+        const double first = std::stod(run.attributes.at("tumour_fraction"));
+        const Eigen::Vector3d best(std::stod(run.attributes.at("best_tip_x_mm")), std::stod(run.attributes.at("best_tip_y_mm")),
+                                   std::stod(run.attributes.at("best_tip_z_mm")));
+        panel->startPicking(gui::DrugDeliveryPanel::Pick::Tip);
+        QVERIFY(window.views()->volumeView()->isPickEnabled());
+        emit window.views()->volumeView()->pointPicked(best);
+        QVERIFY(!window.views()->volumeView()->isPickEnabled());
+        QVERIFY(!panel->request().tip.isEmpty());
+        panel->findChild<QPushButton*>("drugRun")->click();
+        QVERIFY(vsim::test::waitForTask(window));
+        QCOMPARE(failed.count(), 0);
+        const study::Artifact picked = window.document().study().artifacts().back();
+        QCOMPARE(QString::fromStdString(picked.provenance.parameters.at("tip")), panel->request().tip);
+        qInfo("tumour share from the root %.3f, from the picked best tip %s", first, picked.attributes.at("tumour_fraction").c_str());
+        QVERIFY(std::stod(picked.attributes.at("tumour_fraction")) > first);
+
         const std::size_t before = window.document().study().artifacts().size();
         window.document().undoStack()->undo();
         QCOMPARE(window.document().study().artifacts().size(), before - 1);

@@ -409,6 +409,8 @@ std::optional<Eigen::Vector3d> VolumeView3D::surfacePointAt(const QPointF& posit
         picker->AddPickList(actor), any = true;
     if (m_scene->fieldSurface)
         picker->AddPickList(m_scene->fieldSurface), any = true;
+    if (m_scene->fieldLines)
+        picker->AddPickList(m_scene->fieldLines), any = true;
     if (!any)
         return std::nullopt;
     const double ratio = devicePixelRatioF();
@@ -436,6 +438,12 @@ Eigen::Vector3d VolumeView3D::pointAtDepthOf(const QPointF& position, const Eige
 
 void VolumeView3D::mousePressEvent(QMouseEvent* event)
 {
+    if (m_pickEnabled && event->button() == Qt::LeftButton)
+        if (const auto point = surfacePointAt(event->position()))
+        {
+            emit pointPicked(*point);
+            return;
+        }
     if (m_dragEnabled && event->button() == Qt::LeftButton)
         if (const auto point = surfacePointAt(event->position()))
         {

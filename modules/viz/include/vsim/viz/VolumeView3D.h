@@ -73,7 +73,11 @@ public:
     /// plane through it facing the camera (pointDragged) and releasing lets go (pointReleased); other buttons
     /// still turn the camera.
     void setDragEnabled(bool enabled) { m_dragEnabled = enabled; }
-    /// The surface point (mm) under a widget position (logical pixels), if any surface is there.
+    /// With picking on, a left click on a surface or a tube emits pointPicked (the point, mm); the camera keeps
+    /// the other buttons.
+    void setPickEnabled(bool enabled) { m_pickEnabled = enabled; }
+    bool isPickEnabled() const { return m_pickEnabled; }
+    /// The surface point (mm) under a widget position (logical pixels), if any surface or tube is there.
     std::optional<Eigen::Vector3d> surfacePointAt(const QPointF& widgetPosition) const;
     /// The point (mm) under a widget position at the depth of `reference` (the drag plane).
     Eigen::Vector3d pointAtDepthOf(const QPointF& widgetPosition, const Eigen::Vector3d& reference) const;
@@ -82,6 +86,7 @@ signals:
     void pointGrabbed(const Eigen::Vector3d& pointMm);
     void pointDragged(const Eigen::Vector3d& pointMm);
     void pointReleased();
+    void pointPicked(const Eigen::Vector3d& pointMm);
 
 protected:
     void mousePressEvent(QMouseEvent* event) override;
@@ -94,6 +99,7 @@ private:
     std::unique_ptr<Scene> m_scene;
     CtVolume m_image;
     bool m_dragEnabled = false;
+    bool m_pickEnabled = false;
     std::optional<Eigen::Vector3d> m_grabbed;
 };
 
