@@ -132,6 +132,126 @@
     </message>
 </context>
 <context>
+    <name>vsim::gui::DrugDeliveryPanel</name>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="33"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="93"/>
+        <source>Play</source>
+        <translation type="unfinished">Abspielen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="39"/>
+        <source>x, y, z mm; empty: the root</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="41"/>
+        <source>x, y, z, radius mm; empty: none</source>
+        <translation>x, y, z, Radius mm; leer: keiner</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="43"/>
+        <source>x, y, z; ... mm; empty: the first branches</source>
+        <translation>x, y, z; ... mm; leer: die ersten Äste</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="46"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="47"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="48"/>
+        <source>Pick</source>
+        <translation>Wählen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="49"/>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="50"/>
+        <source>Run</source>
+        <translation>Berechnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="59"/>
+        <source>Catheter tip</source>
+        <translation>Katheterspitze</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="60"/>
+        <source>Tumour</source>
+        <translation>Tumor</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="61"/>
+        <source>Tumour radius (picked)</source>
+        <translation>Tumorradius (gewählt)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="62"/>
+        <source>Control points</source>
+        <translation>Kontrollpunkte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="73"/>
+        <source>Outlet</source>
+        <translation>Auslass</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="73"/>
+        <source>Drug share (%)</source>
+        <translation>Wirkstoffanteil (%)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="73"/>
+        <source>Arrival (s)</source>
+        <translation>Ankunft (s)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="93"/>
+        <source>Pause</source>
+        <translation type="unfinished">Pause</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="145"/>
+        <source>Tip pressure %1 mmHg; last outlet reached after %2 s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="148"/>
+        <source>&lt;br&gt;Control point %1: drug %2 ml/min two-phase, %3 ml/min liquid (%4 % lower)</source>
+        <translation>&lt;br&gt;Kontrollpunkt %1: Wirkstoff %2 ml/min zweiphasig, %3 ml/min flüssig (%4 % weniger)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="152"/>
+        <source>&lt;br&gt;Tumour share %1 % (%2 outlets).</source>
+        <translation>&lt;br&gt;Tumoranteil %1 % (%2 Auslässe).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="154"/>
+        <source>&lt;br&gt;Best tip: node %1 delivers %2 % to the tumour.</source>
+        <translation>&lt;br&gt;Beste Spitze: Knoten %1 bringt %2 % in den Tumor.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="168"/>
+        <source>never</source>
+        <translation>nie</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="191"/>
+        <source>Drug flow (ml/min)</source>
+        <translation>Wirkstofffluss (ml/min)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="217"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+</context>
+<context>
     <name>vsim::gui::InteractiveWall</name>
     <message>
         <location filename="../app/gui/InteractiveWall.cpp" line="75"/>
@@ -243,47 +363,47 @@
         <translation>Artefakt &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="87"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="88"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="88"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="89"/>
         <source>Window/Level: &amp;CTA</source>
         <translation>Fenster: &amp;CTA</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="89"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="90"/>
         <source>Window/Level: &amp;Soft Tissue</source>
         <translation>Fenster: &amp;Weichteil</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="90"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="91"/>
         <source>Window/Level: &amp;Bone</source>
         <translation>Fenster: &amp;Knochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="92"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="93"/>
         <source>3D: &amp;Anterior View</source>
         <translation>3D: &amp;Ansicht von vorn</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="97"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="98"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="98"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="99"/>
         <source>&amp;About VascuSim</source>
         <translation>Ü&amp;ber VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="116"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="117"/>
         <source>About VascuSim</source>
         <translation>Über VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="117"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="118"/>
         <source>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patient-specific physics for vascular procedure planning.&lt;/p&gt;&lt;p&gt;Results support planning and need clinical judgement.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -468,112 +588,112 @@
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="59"/>
         <source>Length (mm)</source>
         <translation>Länge (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="59"/>
         <source>Start r (mm)</source>
         <translation>Anfangs-r (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="59"/>
         <source>End r (mm)</source>
         <translation>End-r (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="72"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="59"/>
         <source>Segment</source>
         <comment>a vessel segment (noun)</comment>
         <translation>Segment</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="73"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="60"/>
         <source>Reference Ø (mm)</source>
         <translation>Referenz-Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="73"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="60"/>
         <source>Minimal Ø (mm)</source>
         <translation>Minimaler Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="74"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="61"/>
         <source>Stenosis (%)</source>
         <translation>Stenose (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="74"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="61"/>
         <source>Max Ø (mm)</source>
         <translation>Max. Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="86"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="73"/>
         <source>Measurements</source>
         <translation>Messungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="114"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="101"/>
         <source>Maximum diameter %1 mm</source>
         <translation>Maximaler Durchmesser %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="128"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="115"/>
         <source>V&amp;essels</source>
         <translation>&amp;Gefäße</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="129"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="116"/>
         <source>&amp;Segment Vessels</source>
         <translation>Gefäße &amp;segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="131"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="118"/>
         <source>Segment from the &amp;Cursor</source>
         <translation>Ab dem &amp;Cursor segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="134"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="121"/>
         <source>S&amp;keleton and Centerlines</source>
         <translation>S&amp;kelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="137"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="124"/>
         <source>&amp;Edit Label (Brush)</source>
         <translation>Label &amp;bearbeiten (Pinsel)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="138"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="125"/>
         <source>&amp;Parameters...</source>
         <translation>&amp;Parameter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="143"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="130"/>
         <source>Vessel parameters</source>
         <translation>Gefäßparameter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="144"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="131"/>
         <source>Segmentation</source>
         <translation>Segmentierung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="161"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="173"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="193"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="148"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="160"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="180"/>
         <source>Segment vessels</source>
         <translation>Gefäße segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="161"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="148"/>
         <source>The study has no CT image: import one first.</source>
         <translation>Die Studie enthält kein CT-Bild: zuerst eines importieren.</translation>
     </message>
     <message>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="195"/>
         <location filename="../app/gui/MainWindowVessels.cpp" line="208"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="221"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="247"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="234"/>
         <source>Skeleton and centerlines</source>
         <translation>Skelett und Mittellinien</translation>
     </message>
@@ -629,7 +749,7 @@
     </message>
     <message>
         <location filename="../app/gui/MainWindowLabelEditing.cpp" line="94"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="208"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="195"/>
         <source>The study has no vessel label: segment the vessels first.</source>
         <translation>Die Studie enthält keine Gefäßmaske: zuerst die Gefäße segmentieren.</translation>
     </message>
@@ -650,14 +770,14 @@
         <translation>Gefäßoberfläche</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="248"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="132"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="235"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="146"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="249"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="133"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="236"/>
         <source>Centerlines</source>
         <translation>Mittellinien</translation>
     </message>
@@ -707,10 +827,10 @@
     <message>
         <location filename="../app/gui/MainWindowWall.cpp" line="41"/>
         <location filename="../app/gui/MainWindowWall.cpp" line="83"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="99"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="127"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="143"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="183"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="101"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="129"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="145"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="185"/>
         <source>Wall mechanics</source>
         <translation>Wandmechanik</translation>
     </message>
@@ -726,86 +846,145 @@
     </message>
     <message>
         <location filename="../app/gui/MainWindowWall.cpp" line="83"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="127"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="129"/>
         <source>Build the wall mesh first (Wall &gt; Build Wall Mesh).</source>
         <translation>Zuerst das Wandnetz erzeugen (Wand &gt; Wandnetz erzeugen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="89"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="96"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="90"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="98"/>
         <source>Wall stress</source>
         <translation>Wandspannung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="89"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="90"/>
         <source>Thesis rupture protocol</source>
         <translation>Ruptur-Protokoll der Dissertation</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="99"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="101"/>
         <source>The run stopped early: %1</source>
         <translation>Die Rechnung endete vorzeitig: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="101"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="103"/>
         <source>Peak wall stress %1 kPa, peak rupture index %2</source>
         <translation>Höchste Wandspannung %1 kPa, höchster Rupturindex %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="117"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="119"/>
         <source>von Mises (kPa)</source>
         <translation>von Mises (kPa)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="153"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="170"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="155"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="172"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="159"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="161"/>
         <source>0 mmHg</source>
         <translation>0 mmHg</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="160"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="162"/>
         <source>Tear at %1 MPa</source>
         <translation>Reißen bei %1 MPa</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="163"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="165"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="167"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="169"/>
         <source>Drag the wall with the left button in the 3D view.</source>
         <translation>Die Wand in der 3D-Ansicht mit der linken Maustaste ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="170"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="172"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="174"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="176"/>
         <source>%1 mmHg</source>
         <translation>%1 mmHg</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="179"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="181"/>
         <source>%1 frames/s, peak von Mises %2 kPa</source>
         <translation>%1 Bilder/s, höchste von-Mises-Spannung %2 kPa</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="183"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="185"/>
         <source>The simulation paused: %1</source>
         <translation>Die Simulation hält an: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="185"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="187"/>
         <source>Interactive Wall</source>
         <translation>Interaktive Wand</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="44"/>
+        <source>&amp;Drug</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="45"/>
+        <source>Drug &amp;Delivery</source>
+        <translation>Wirkstoff&amp;gabe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="48"/>
+        <source>Drug &amp;Parameters...</source>
+        <translation>Wirkstoff&amp;parameter...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="49"/>
+        <source>Drug delivery parameters</source>
+        <translation>Parameter der Wirkstoffgabe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="49"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="60"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="69"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="82"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="92"/>
+        <source>Drug delivery</source>
+        <translation>Wirkstoffgabe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="60"/>
+        <source>The network needs centerlines: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>Das Netzwerk braucht Mittellinien: zuerst Skelett &amp;&amp; Mittellinien ausführen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="69"/>
+        <source>The tip needs three numbers (mm) and the tumour four (centre and radius).</source>
+        <translation>Die Spitze braucht drei Zahlen (mm), der Tumor vier (Mitte und Radius).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="82"/>
+        <source>Control points are x, y, z in mm, separated by &apos;;&apos;.</source>
+        <translation>Kontrollpunkte sind x, y, z in mm, getrennt durch &apos;;&apos;.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="103"/>
+        <source>Drug flow</source>
+        <translation>Wirkstofffluss</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="116"/>
+        <source>Drug Delivery</source>
+        <translation>Wirkstoffgabe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="124"/>
+        <source>Drug delivery: %1 outlets, last reached after %2 s</source>
+        <translation>Wirkstoffgabe: %1 Auslässe, der letzte nach %2 s erreicht</translation>
     </message>
 </context>
 </TS>
