@@ -137,12 +137,12 @@
         <location filename="../app/gui/DrugDeliveryPanel.cpp" line="33"/>
         <location filename="../app/gui/DrugDeliveryPanel.cpp" line="93"/>
         <source>Play</source>
-        <translation type="unfinished">Abspielen</translation>
+        <translation>Abspielen</translation>
     </message>
     <message>
         <location filename="../app/gui/DrugDeliveryPanel.cpp" line="39"/>
         <source>x, y, z mm; empty: the root</source>
-        <translation type="unfinished"></translation>
+        <translation>x, y, z mm; leer: die Wurzel</translation>
     </message>
     <message>
         <location filename="../app/gui/DrugDeliveryPanel.cpp" line="41"/>
@@ -213,12 +213,12 @@
     <message>
         <location filename="../app/gui/DrugDeliveryPanel.cpp" line="93"/>
         <source>Pause</source>
-        <translation type="unfinished">Pause</translation>
+        <translation>Pause</translation>
     </message>
     <message>
         <location filename="../app/gui/DrugDeliveryPanel.cpp" line="145"/>
         <source>Tip pressure %1 mmHg; last outlet reached after %2 s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Druck an der Spitze %1 mmHg; letzter Auslass nach %2 s erreicht.</translation>
     </message>
     <message>
         <location filename="../app/gui/DrugDeliveryPanel.cpp" line="148"/>
@@ -930,7 +930,7 @@
     <message>
         <location filename="../app/gui/MainWindowNetwork.cpp" line="44"/>
         <source>&amp;Drug</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wirkstoff</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowNetwork.cpp" line="45"/>
