@@ -42,7 +42,7 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
     const std::string bundle = arguments.option("study");
     if (bundle.empty() || !arguments.hasOption("tip"))
         throw Error("usage: vascusim-cli simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min] "
-                    "[--void-fraction 0.1] [--tumour x,y,z,r] [--control x,y,z ...] [--network FILE [--default-outlets "
+                    "[--void-fraction 0.1] [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]] [--control x,y,z ...] [--network FILE [--default-outlets "
                     "murray]] [--centerlines ID] [--param key=value] [--out DIR]");
     study::Study study = study::Study::open(bundle);
     sim::network::NetworkRunSetup setup;
@@ -82,8 +82,17 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
     if (arguments.hasOption("tumour"))
     {
         const std::vector<double> sphere = parseNumbers(arguments.option("tumour"), ',', 4, "tumour");
-        setup.tumour = sim::network::TumourSphere{point(sphere), sphere[3]};
+        setup.tumour = sim::network::TumourSphere{point(sphere), sphere[3]}.region();
         source["tumour_mm"] = arguments.option("tumour");
+    }
+    if (arguments.hasOption("tumour-label"))
+    {
+        if (setup.tumour)
+            throw Error("give the tumour as a sphere (--tumour) or a label (--tumour-label), not both");
+        const int value = arguments.hasOption("tumour-value") ? int(parseNumbers(arguments.option("tumour-value"), ',', 1, "tumour-value")[0]) : 0;
+        setup.tumour = app::volumeRegion(study, arguments.option("tumour-label"), value);
+        source["tumour_label"] = arguments.option("tumour-label") + (value ? ":" + std::to_string(value) : std::string());
+        inputs.push_back(arguments.option("tumour-label"));
     }
     for (const auto& [name, value] : arguments.options)
         if (name == "control")

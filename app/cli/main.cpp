@@ -59,7 +59,8 @@ commands:
                                              wall mechanics: the last frame (stresses, rupture index) and the metrics
                                              into the study; the frame series (.vtu, series.pvd, metrics.json) to DIR
   simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min] [--void-fraction 0.1]
-                   [--tumour x,y,z,r] [--control x,y,z ...] [--network FILE [--default-outlets murray]]
+                   [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]] [--control x,y,z ...]
+                   [--network FILE [--default-outlets murray]]
                    [--param key=value ...] [--out DIR]
                                              drug delivery (two-phase conical Hagen-Poiseuille network): flow split,
                                              filling, control points two-phase vs liquid, tumour share and the best

@@ -72,8 +72,15 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
     if (!tip->empty())
         setup.tipPointMm = Eigen::Vector3d((*tip)[0], (*tip)[1], (*tip)[2]), source["tip"] = request.tip.toStdString();
     if (!tumour->empty())
-        setup.tumour = sim::network::TumourSphere{Eigen::Vector3d((*tumour)[0], (*tumour)[1], (*tumour)[2]), (*tumour)[3]},
+    {
+        if (!((*tumour)[3] > 0.0))
+        {
+            showError(tr("Drug delivery"), tr("The tumour's radius must be positive."));
+            return false;
+        }
+        setup.tumour = sim::network::TumourSphere{Eigen::Vector3d((*tumour)[0], (*tumour)[1], (*tumour)[2]), (*tumour)[3]}.region();
         source["tumour_mm"] = request.tumour.toStdString();
+    }
     for (const QString& point : request.controls.split(';', Qt::SkipEmptyParts))
     {
         const auto xyz = numbersIn(point, 3);

@@ -1,7 +1,7 @@
 # The drug-delivery steps as a user runs them on the full-size hepatic-tree phantom (512 x 512 x 400 at 0.7 mm):
 # segment, skeleton, centerline, then `simulate network` from the root with the phantom's tumour (Kirchhoff
-# balanced, 16 outlets, the control points' two-phase drop near the void fraction, the run files written), a
-# hand-written network file, `validate network`, and bad input refused with a message (a tip off the tree, a void
+# balanced, 16 outlets, the control points' two-phase drop near the void fraction, the run files written), the
+# tumour as a label (the same share as the sphere), a hand-written network file, `validate network`, and bad input refused with a message (a tip off the tree, a void
 # fraction of 1, a network with a cycle, outlets without a condition).
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
@@ -26,6 +26,22 @@ endforeach()
 if(balance GREATER 1e-12 OR NOT outlets EQUAL 16 OR fed LESS 1 OR drop LESS 9 OR drop GREATER 11 OR best LESS 0.2)
     message(FATAL_ERROR "simulate network: balance ${balance}, ${outlets} outlets, ${fed} tumour outlets, drop ${drop} %, "
                         "best tip ${best}\n${run}")
+endif()
+
+# The tumour as a label: the phantom's truth label (value 2) imported as a volume.
+run_cli(0 imported import ${WORK}/ph/truth-label.nrrd --study ${study})
+string(REGEX MATCH "as (image-[0-9]+)" ignored "${imported}")
+set(label_id ${CMAKE_MATCH_1})
+run_cli(0 bylabel simulate network --study ${study} --tip 20,-25,-305 --tumour-label ${label_id} --tumour-value 2)
+string(JSON fed_label GET "${bylabel}" metrics tumour_outlets)
+string(JSON share_label GET "${bylabel}" metrics tumour_fraction)
+string(JSON share_sphere GET "${run}" metrics tumour_fraction)
+if(fed_label LESS 1 OR NOT share_label EQUAL share_sphere)
+    message(FATAL_ERROR "the tumour as a label: ${fed_label} outlets, share ${share_label} (sphere ${share_sphere})")
+endif()
+run_cli(1 notlabel simulate network --study ${study} --tip 20,-25,-305 --tumour-label skeleton-3)
+if(NOT notlabel MATCHES "must be a label or image")
+    message(FATAL_ERROR "a skeleton as the tumour must be refused:\n${notlabel}")
 endif()
 
 # A hand-written network: a Y with its outlets at pressures, then the same with a cycle and without conditions.

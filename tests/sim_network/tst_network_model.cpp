@@ -169,7 +169,7 @@ private slots:
     {
         NetworkRunSetup setup;
         setup.network = binaryTree();
-        setup.tumour = TumourSphere{Eigen::Vector3d(-10, 0, 45), 6.0};
+        setup.tumour = TumourSphere{Eigen::Vector3d(-10, 0, 45), 6.0}.region();
         const NetworkRunResult r = runNetwork(setup);
         QCOMPARE(r.tumourOutlets, (std::vector<int>{4, 5}));
         QVERIFY(std::abs(r.metrics.at("tumour_fraction") - 0.5) <= 1e-9);

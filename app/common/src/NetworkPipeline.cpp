@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <fstream>
 
 namespace vsim::app {
@@ -88,6 +89,32 @@ VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& ce
         }
     }
     return sim::network::networkFromCenterlines(centerlines, endRadii, &warnings);
+}
+
+std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& study, const std::string& artifactId,
+                                                         int value)
+{
+    const study::ArtifactKind kind = study.artifact(artifactId).kind;
+    auto regionOf = [value](const auto& volume) -> std::function<bool(const Eigen::Vector3d&)> {
+        bool any = false;
+        for (std::size_t i = 0; i < volume.size() && !any; ++i)
+            any = value == 0 ? volume.data()[i] != 0 : volume.data()[i] == value;
+        if (!any)
+            throw Error("the tumour volume has no voxel of value " + std::to_string(value));
+        return [volume, value](const Eigen::Vector3d& p) {
+            const Eigen::Vector3d index = volume.geometry().patientToIndex(p);
+            const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
+            if (!volume.geometry().contains(i, j, k))
+                return false;
+            const int v = int(volume.at(i, j, k));
+            return value == 0 ? v != 0 : v == value;
+        };
+    };
+    if (kind == study::ArtifactKind::Label)
+        return regionOf(study.loadLabel(artifactId));
+    if (kind == study::ArtifactKind::Image)
+        return regionOf(study.loadImage(artifactId));
+    throw Error("the tumour must be a label or image artifact, not a " + study::kindName(kind));
 }
 
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,

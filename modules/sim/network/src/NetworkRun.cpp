@@ -176,9 +176,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         addDefaultOutlets(net, p);
     if (setup.tumour)
     {
-        if (!(setup.tumour->radiusMm > 0.0))
-            throw Error("the tumour's radius must be positive");
-        r.tumourOutlets = feedingOutlets(net, [&](const Eigen::Vector3d& x) { return setup.tumour->contains(x); });
+        r.tumourOutlets = feedingOutlets(net, setup.tumour);
         const std::set<int> feeders(r.tumourOutlets.begin(), r.tumourOutlets.end());
         for (VesselNetwork::Outlet& outlet : net.outlets)
             if (feeders.count(outlet.node) && outlet.type == VesselNetwork::Outlet::Type::Resistance)

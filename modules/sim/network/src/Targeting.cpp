@@ -1,9 +1,18 @@
 #include "vsim/sim/network/Targeting.h"
 
+#include "vsim/core/Error.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace vsim::sim::network {
+
+std::function<bool(const Eigen::Vector3d&)> TumourSphere::region() const
+{
+    if (!(radiusMm > 0.0))
+        throw Error("the tumour's radius must be positive");
+    return [sphere = *this](const Eigen::Vector3d& p) { return sphere.contains(p); };
+}
 
 std::vector<int> feedingOutlets(const VesselNetwork& network, const std::function<bool(const Eigen::Vector3d&)>& inside)
 {

@@ -10,6 +10,7 @@
 #include "vsim/study/Study.h"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,6 +25,11 @@ std::string labelOfCenterlines(const study::Study& study, const std::string& cen
 /// skeleton broken at their thinnest segment, each named in `warnings`.
 VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& centerlinesId,
                                 std::vector<std::string>& warnings, const Progress& progress = {});
+
+/// A tumour region from a label or image artifact: the points whose nearest voxel holds `value` (any non-zero
+/// value when 0). Throws vsim::Error for another kind of artifact or no such voxel.
+std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& study, const std::string& artifactId,
+                                                         int value);
 
 /// What a run report shows of a network run (metrics, control points, the ten best tip positions, warnings) as
 /// JSON text; `source` names where the network came from.

@@ -24,6 +24,7 @@
 #include "vsim/sim/network/Targeting.h"
 #include "vsim/sim/network/TwoPhaseFluid.h"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -45,7 +46,8 @@ struct NetworkRunSetup
     bool defaultOutlets = true;                 ///< false: every outlet needs a condition in the network
     std::optional<int> tipNode;                 ///< the catheter tip as a node, or
     std::optional<Eigen::Vector3d> tipPointMm;  ///< as a point on the tree
-    std::optional<TumourSphere> tumour;
+    /// The tumour: inside(point mm); empty for none. TumourSphere::contains, or a label's voxels.
+    std::function<bool(const Eigen::Vector3d&)> tumour;
     std::vector<Eigen::Vector3d> controlPointsMm; ///< empty: the two largest daughters of the first junction
     ParameterSet parameters{networkParameters()};
     bool rankTips = true;

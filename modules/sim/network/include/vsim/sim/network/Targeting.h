@@ -18,6 +18,8 @@ struct TumourSphere
     Eigen::Vector3d centreMm = Eigen::Vector3d::Zero();
     double radiusMm = 0.0;
     bool contains(const Eigen::Vector3d& pointMm) const { return (pointMm - centreMm).norm() <= radiusMm; }
+    /// contains() as a region for NetworkRunSetup::tumour; throws vsim::Error for a radius that is not positive.
+    std::function<bool(const Eigen::Vector3d&)> region() const;
 };
 
 /// The end nodes (not the root) inside the region: the terminal segments that feed the tumour.
