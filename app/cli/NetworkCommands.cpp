@@ -3,6 +3,7 @@
 #include "CliSupport.h"
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
 #include "vsim/study/NetworkFile.h"
 
 #include <algorithm>
@@ -11,8 +12,9 @@
 namespace vsim::cli {
 namespace {
 
-/// "2ml/min", "2 ml/min", "0.05ml/s" or a plain number (ml/min) -> ml/min.
-double parseRateMlPerMin(const std::string& text)
+/// "2ml/min", "2 ml/min", "0.05ml/s" or a plain number (ml/min) -> ml/min; a mass rate ("1.9g/min", "30mg/s")
+/// through the mixture's density (kg/m^3 = g/l).
+double parseRateMlPerMin(const std::string& text, double densityKgPerM3)
 {
     std::size_t used = 0;
     double value = 0.0;
@@ -30,7 +32,12 @@ double parseRateMlPerMin(const std::string& text)
         return value;
     if (unit == "ml/s")
         return 60.0 * value;
-    throw Error("--rate: unknown unit '" + unit + "' (ml/min or ml/s)");
+    const double gramsPerMl = densityKgPerM3 * 1e-3;
+    if (unit == "g/min")
+        return value / gramsPerMl;
+    if (unit == "mg/s")
+        return 60.0 * 1e-3 * value / gramsPerMl;
+    throw Error("--rate: unknown unit '" + unit + "' (ml/min, ml/s, g/min or mg/s)");
 }
 
 Eigen::Vector3d point(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
@@ -41,16 +48,21 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
 {
     const std::string bundle = arguments.option("study");
     if (bundle.empty() || !arguments.hasOption("tip"))
-        throw Error("usage: vascusim-cli simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min] "
+        throw Error("usage: vascusim-cli simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min | --tip-pressure mmHg] "
                     "[--void-fraction 0.1] [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]] [--control x,y,z ...] [--network FILE [--default-outlets "
                     "murray]] [--centerlines ID] [--param key=value] [--out DIR]");
     study::Study study = study::Study::open(bundle);
     sim::network::NetworkRunSetup setup;
     applyParameters(arguments, setup.parameters);
-    if (arguments.hasOption("rate"))
-        setup.parameters.set("injection_rate_ml_min", parseRateMlPerMin(arguments.option("rate")));
     if (arguments.hasOption("void-fraction"))
         setup.parameters.set("void_fraction", parseNumbers(arguments.option("void-fraction"), ',', 1, "void-fraction")[0]);
+    if (arguments.hasOption("rate") && arguments.hasOption("tip-pressure"))
+        throw Error("give the injection as a rate (--rate) or a tip pressure (--tip-pressure), not both");
+    if (arguments.hasOption("rate"))
+        setup.parameters.set("injection_rate_ml_min",
+                             parseRateMlPerMin(arguments.option("rate"), sim::network::networkMixture(setup.parameters).density()));
+    if (arguments.hasOption("tip-pressure"))
+        setup.tipPressurePa = units::mmHgToPa(parseNumbers(arguments.option("tip-pressure"), ',', 1, "tip-pressure")[0]);
 
     std::map<std::string, std::string> source;
     std::vector<std::string> inputs, warnings;

@@ -58,7 +58,8 @@ commands:
                [--param key=value ...] [--out DIR]
                                              wall mechanics: the last frame (stresses, rupture index) and the metrics
                                              into the study; the frame series (.vtu, series.pvd, metrics.json) to DIR
-  simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min] [--void-fraction 0.1]
+  simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min|g/min | --tip-pressure mmHg]
+                   [--void-fraction 0.1]
                    [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]] [--control x,y,z ...]
                    [--network FILE [--default-outlets murray]]
                    [--param key=value ...] [--out DIR]

@@ -206,6 +206,25 @@ void writeNetworkRun(const std::filesystem::path& folder, const sim::network::Ne
                 << (arrival == sim::network::kNever ? std::string("-1") : numberText(arrival)) << "\n";
         }
     }
+    {
+        // The filling: every segment's filled length (mm, from its upstream end) at 101 times from the start of
+        // the injection to the last outlet's arrival.
+        std::ofstream csv = openForWriting(folder / "filling.csv");
+        csv << "time_s";
+        for (std::size_t s = 0; s < run.network.segments.size(); ++s)
+            csv << ",segment_" << s << "_filled_mm";
+        csv << "\n";
+        std::vector<double> lengths;
+        for (int step = 0; step <= 100; ++step)
+        {
+            const double time = run.filling.lastArrival * step / 100.0;
+            sim::network::filledLengths(run.network, run.twoPhase, run.filling, time, lengths);
+            csv << numberText(time);
+            for (double length : lengths)
+                csv << "," << numberText(length);
+            csv << "\n";
+        }
+    }
     std::ofstream metrics = openForWriting(folder / "metrics.json");
     metrics << document << "\n";
     if (!metrics.flush())

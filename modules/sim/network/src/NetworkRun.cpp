@@ -184,10 +184,15 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         if (r.tumourOutlets.empty())
             r.warnings.push_back("no outlet of the tree ends inside the tumour: nothing feeds it");
     }
-    const double rate = units::mlPerMinToM3PerS(p.get("injection_rate_ml_min"));
-    r.twoPhase = solveFlow(net, {r.tipNode, rate, 0.0}, fluid.viscosity());
-    r.liquid = solveFlow(net, {r.tipNode, rate, 0.0}, fluid.phases.liquidViscosity);
-    const FlowSolution samePressure = solveFlow(net, {r.tipNode, 0.0, r.liquid.tipPressure}, fluid.viscosity());
+    const Injection injection = setup.tipPressurePa ? Injection{r.tipNode, 0.0, *setup.tipPressurePa}
+                                                    : Injection{r.tipNode, units::mlPerMinToM3PerS(p.get("injection_rate_ml_min")), 0.0};
+    r.twoPhase = solveFlow(net, injection, fluid.viscosity());
+    r.liquid = solveFlow(net, injection, fluid.phases.liquidViscosity);
+    const FlowSolution samePressure =
+        setup.tipPressurePa ? r.twoPhase : solveFlow(net, {r.tipNode, 0.0, r.liquid.tipPressure}, fluid.viscosity());
+    const double rate = r.twoPhase.injectedFlow;
+    if (!(rate > 0.0))
+        throw Error("the tip pressure does not drive any flow into the network (it is at or below the outlets')");
     r.filling = fillingTimes(net, r.twoPhase);
     progress.report(0.2, "flow solved");
 
@@ -243,7 +248,8 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     for (std::size_t s = 0; s < net.segments.size(); ++s)
         downstream += r.twoPhase.orientation.active(int(s)) ? 1.0 : 0.0;
     const double bubbleVolume = std::numbers::pi / 6.0 * std::pow(units::mmToM(p.get("bubble_diameter_mm")), 3.0);
-    r.metrics["injection_rate_ml_min"] = p.get("injection_rate_ml_min");
+    r.metrics["injection_rate_ml_min"] = units::m3PerSToMlPerMin(rate);
+    r.metrics["injection_mass_rate_g_min"] = units::m3PerSToMlPerMin(rate) * fluid.density() * 1e-3; // ml/min * g/ml
     r.metrics["void_fraction"] = fluid.voidFraction;
     r.metrics["mixture_density_kg_m3"] = fluid.density();
     r.metrics["mixture_viscosity_mpa_s"] = 1e3 * fluid.viscosity();

@@ -45,7 +45,8 @@ std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunRes
 
 /// Writes a run into `folder`: network.json (the solved network with its fields), segments.csv (per segment:
 /// flow, drug flow, pressures, velocity, Reynolds number, filling times), outlets.csv (flow share and arrival
-/// time per outlet) and metrics.json (`document`). Throws vsim::Error when a file cannot be written.
+/// time per outlet), filling.csv (every segment's filled length at 101 times up to the last arrival) and
+/// metrics.json (`document`). Throws vsim::Error when a file cannot be written.
 void writeNetworkRun(const std::filesystem::path& folder, const sim::network::NetworkRunResult& run,
                      const std::string& document);
 

@@ -49,6 +49,9 @@ struct NetworkRunSetup
     /// The tumour: inside(point mm); empty for none. TumourSphere::contains, or a label's voxels.
     std::function<bool(const Eigen::Vector3d&)> tumour;
     std::vector<Eigen::Vector3d> controlPointsMm; ///< empty: the two largest daughters of the first junction
+    /// Pa: hold the tip at this pressure instead of injecting injection_rate_ml_min (both fluids at the same
+    /// pressure: the control points then compare at the same tip pressure).
+    std::optional<double> tipPressurePa;
     ParameterSet parameters{networkParameters()};
     bool rankTips = true;
 };
