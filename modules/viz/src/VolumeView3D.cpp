@@ -39,6 +39,25 @@
 
 namespace vsim::viz {
 
+namespace {
+
+/// A mapper colouring its scalars blue (low) to red (high) over [low, high].
+vtkSmartPointer<vtkPolyDataMapper> fieldMapper(vtkPolyData* polyData, double low, double high)
+{
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetHueRange(0.667, 0.0);
+    table->SetTableRange(low, high);
+    table->Build();
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(polyData);
+    mapper->SetLookupTable(table);
+    mapper->SetScalarRange(low, high);
+    mapper->ScalarVisibilityOn();
+    return mapper;
+}
+
+} // namespace
+
 struct VolumeView3D::Scene
 {
     vtkSmartPointer<vtkImageData> scaledIndexImage;
@@ -168,15 +187,7 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
         for (double v : values->second)
             scalars->InsertNextValue(v);
         polyData->GetPointData()->SetScalars(scalars);
-        auto table = vtkSmartPointer<vtkLookupTable>::New();
-        table->SetHueRange(0.667, 0.0); // blue (low) to red (high)
-        table->SetTableRange(low, high);
-        table->Build();
-        auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-        mapper->SetInputData(polyData);
-        mapper->SetLookupTable(table);
-        mapper->SetScalarRange(low, high);
-        mapper->ScalarVisibilityOn();
+        vtkSmartPointer<vtkPolyDataMapper> mapper = fieldMapper(polyData, low, high);
         mapper->SetScalarModeToUsePointData();
         if (m_scene->fieldSurface)
             renderer()->RemoveActor(m_scene->fieldSurface);
@@ -248,22 +259,14 @@ void VolumeView3D::showFieldLines(const std::vector<std::vector<Eigen::Vector3d>
         tubes->Update();
         polyData = tubes->GetOutput();
     }
-    auto table = vtkSmartPointer<vtkLookupTable>::New();
-    table->SetHueRange(0.667, 0.0);
-    table->SetTableRange(low, high);
-    table->Build();
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(polyData);
-    mapper->SetLookupTable(table);
-    mapper->SetScalarRange(low, high);
+    vtkSmartPointer<vtkPolyDataMapper> mapper = fieldMapper(polyData, low, high);
     mapper->SetScalarModeToUseCellData();
-    mapper->ScalarVisibilityOn();
     m_scene->fieldLines = vtkSmartPointer<vtkActor>::New();
     m_scene->fieldLines->SetMapper(mapper);
     m_scene->fieldLines->GetProperty()->SetLineWidth(float(widthPixels));
     m_scene->fieldLines->GetProperty()->SetLighting(!radiiMm.empty());
     renderer()->AddActor(m_scene->fieldLines);
-    showLegend(table, legendTitle);
+    showLegend(mapper->GetLookupTable(), legendTitle);
 }
 
 void VolumeView3D::clearFieldLines()
