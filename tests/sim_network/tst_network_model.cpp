@@ -9,6 +9,7 @@
 #include "vsim/sim/network/Filling.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/sim/network/NetworkRun.h"
+#include "vsim/sim/network/Tracers.h"
 
 #include <QtTest>
 
@@ -176,6 +177,39 @@ private slots:
         QCOMPARE(int(r.metrics.at("best_tip_node")), 2);
         QVERIFY(std::abs(r.metrics.at("best_tip_fraction") - 1.0) <= 1e-12);
         QCOMPARE(r.ranking.back().tumourFraction, 0.0); // junction 3 feeds the other side
+    }
+
+    // Tracers move with the plug flow: one released at 0 stands where the filling front stands; they go to the
+    // outlets in proportion to the outlet flows; a trail starts at its head.
+    void tracersFollowTheFront()
+    {
+        VesselNetwork n = makeNetwork({{0, 0, 0}, {0, 0, 10}, {0, 0, 30}}, {{0, 1, 1.0, 1.0}, {1, 2, 0.5, 0.5}});
+        n.outlets = {{2, VesselNetwork::Outlet::Type::Pressure, 0.0, 0.0}};
+        const FlowSolution flow = solveFlow(n, {0, units::mlPerMinToM3PerS(2.0), 0.0}, 3.56e-3);
+        const FillingTimes times = fillingTimes(n, flow);
+        std::vector<double> lengths;
+        for (double t : {0.3 * times.leave[0], 0.5 * (times.leave[0] + times.leave[1])})
+        {
+            Eigen::Vector3d where;
+            QVERIFY(tracerPosition(n, flow, 2, t, where));
+            filledLengths(n, flow, times, t, lengths);
+            const double front = t < times.leave[0] ? lengths[0] : 10.0 + lengths[1];
+            QVERIFY(std::abs(where.z() - front) <= 1e-9);
+        }
+        Eigen::Vector3d gone;
+        QVERIFY(!tracerPosition(n, flow, 2, times.leave[1] + 1.0, gone));
+
+        const VesselNetwork tree = binaryTree();
+        NetworkRunSetup setup;
+        setup.network = tree;
+        const NetworkRunResult r = runNetwork(setup);
+        TracerSettings settings;
+        settings.releaseEveryS = r.filling.lastArrival / 40.0;
+        settings.trailSpacingS = r.filling.lastArrival / 200.0;
+        const auto trails = tracerTrails(r.network, r.twoPhase, 0.5 * r.filling.lastArrival, settings);
+        QVERIFY(trails.size() >= 10);
+        for (const auto& trail : trails)
+            QVERIFY(trail.size() >= 2 && trail.front().z() >= trail.back().z()); // the tree runs to +z: head first
     }
 
     void badInputIsNamed()
