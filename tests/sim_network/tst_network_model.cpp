@@ -145,6 +145,21 @@ private slots:
         QVERIFY(std::abs(flow.outletFlow.at(2) / flow.outletFlow.at(3) - 1.0 / 3.375) <= 1e-6);
     }
 
+    // A terminal resistance of zero holds its outlet at the pressure, as a pressure condition does.
+    void zeroTerminalResistanceIsAPressure()
+    {
+        VesselNetwork n = binaryTree();
+        for (int node : {4, 5, 6, 7})
+            n.outlets.push_back({node, VesselNetwork::Outlet::Type::Pressure, 100.0 * node, 0.0});
+        const FlowSolution pressure = solveFlow(n, {0, 1e-8, 0.0}, 3.56e-3);
+        for (auto& outlet : n.outlets)
+            outlet.type = VesselNetwork::Outlet::Type::Resistance;
+        const FlowSolution zero = solveFlow(n, {0, 1e-8, 0.0}, 3.56e-3);
+        for (int node : {4, 5, 6, 7})
+            QCOMPARE(zero.outletFlow.at(node), pressure.outletFlow.at(node));
+        QCOMPARE(zero.nodePressure[4], 400.0);
+    }
+
     // Two-phase against liquid at the same injected rate: the drug flow at A and B drops by about the void fraction.
     void controlPointComparison()
     {

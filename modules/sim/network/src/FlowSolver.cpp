@@ -54,10 +54,10 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
     std::vector<double> fixedPressure(network.nodes.size(), std::nan(""));
     if (!byRate)
         fixedPressure[std::size_t(o.tip)] = injection.pressure;
-    for (int node : o.order)
-        if (node != o.tip && conditions[std::size_t(node)] &&
-            conditions[std::size_t(node)]->type == VesselNetwork::Outlet::Type::Pressure)
-            fixedPressure[std::size_t(node)] = conditions[std::size_t(node)]->pressurePa;
+    for (int node : o.order) // a pressure, or a terminal resistance of zero, holds the node at the pressure
+        if (const VesselNetwork::Outlet* c = conditions[std::size_t(node)];
+            node != o.tip && c && (c->type == VesselNetwork::Outlet::Type::Pressure || !(c->resistance > 0.0)))
+            fixedPressure[std::size_t(node)] = c->pressurePa;
     // Unknowns numbered children before parents: eliminating a tree from its leaves up creates no fill, so the
     // natural order needs no reordering and the factor has the matrix's pattern.
     std::vector<int> unknown(network.nodes.size(), -1);
@@ -95,15 +95,10 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
         if (i < 0 || node == o.tip || !conditions[std::size_t(node)])
             continue;
         const VesselNetwork::Outlet& outlet = *conditions[std::size_t(node)];
-        if (outlet.type == VesselNetwork::Outlet::Type::Resistance && outlet.resistance > 0.0)
+        if (outlet.type == VesselNetwork::Outlet::Type::Resistance) // (a zero one is held above)
         {
             entries.emplace_back(i, i, 1.0L / outlet.resistance);
             rhs[i] += Real(outlet.pressurePa) / outlet.resistance;
-        }
-        else if (outlet.type == VesselNetwork::Outlet::Type::Resistance) // zero resistance: held at the pressure
-        {
-            entries.emplace_back(i, i, 1.0L);
-            rhs[i] = outlet.pressurePa;
         }
     }
     if (byRate)
