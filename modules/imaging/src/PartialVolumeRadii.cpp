@@ -2,6 +2,9 @@
 
 #include "vsim/core/Error.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -47,6 +50,193 @@ struct Owner
     bool inTube = false; ///< within some edge's tube (not tissue for any shell)
 };
 
+/// A blurred tapering cylinder fitted to the CT around one centerline (Levenberg-Marquardt), evaluated at the voxel
+/// centres themselves: intensity = tissue + (blood - tissue) Phi((r - d) / sigma) at distance d from the axis (the
+/// partial-volume profile of an edge blurred by a Gaussian), the radius linear from r1 at arc `lower` to r2 at
+/// `upper`. The reference vessel (the widest; `fitSigma`) keeps the centerline as its axis, shifted by (u, v), and
+/// also fits sigma and the tissue level. A thin vessel fits a straight axis whose two ends move across it (a
+/// smoothed centerline wanders by a third of such a radius, and may run off the lumen where it shares a stretch
+/// with a neighbour), started at the contrast-weighted centres of its two halves, with sigma and the tissue fixed
+/// (a free tissue level trades off against the radius of a thin tube). Neither the slab sampling of a blur finer
+/// than the slices nor an axis off the lumen's centre biases the radius, as they bias a sum over slabs.
+struct CylinderFit
+{
+    bool ok = false;
+    double r1 = 0.0, r2 = 0.0, tissue = 0.0, sigma = 0.0;
+};
+
+CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::vector<double>& values,
+                        const std::vector<Eigen::Vector3d>& path, const std::vector<double>& arc, double lower, double upper,
+                        double blood, double radius0, double tissue0, double sigma0, bool fitSigma)
+{
+    CylinderFit fit;
+    if (points.size() < 30 || path.size() < 2 || !(upper > lower))
+        return fit;
+    Eigen::Vector3d axis = (path.back() - path.front()).normalized();
+    const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+    const int n = 6; // u, v, r1, r2, sigma, tissue (reference) or u, v, r1, r2, u2, v2 (thin vessels)
+    Eigen::VectorXd x(6);
+    if (fitSigma)
+        x << 0.0, 0.0, radius0, radius0, sigma0, tissue0;
+    else
+        x << 0.0, 0.0, radius0, radius0, 0.0, 0.0;
+    x.conservativeResize(n);
+    // The straight axis of thin vessels: the centerline's points at `lower` and `upper`.
+    auto pointAt = [&](double at) {
+        for (std::size_t i = 1; i < path.size(); ++i)
+            if (arc[i] >= at)
+            {
+                const double t = arc[i] > arc[i - 1] ? (at - arc[i - 1]) / (arc[i] - arc[i - 1]) : 0.0;
+                return Eigen::Vector3d(path[i - 1] + std::clamp(t, 0.0, 1.0) * (path[i] - path[i - 1]));
+            }
+        return path.back();
+    };
+    Eigen::Vector3d a0 = pointAt(lower), b0 = pointAt(upper);
+    if (!fitSigma)
+    {
+        // Start the axis at the lumen itself: the contrast-weighted centres of the near and far halves of the voxels
+        // (a centerline can run off a thin vessel where it shares a stretch with a neighbour).
+        const Eigen::Vector3d direction = (b0 - a0).normalized();
+        const double middle = 0.5 * (a0 + b0).dot(direction);
+        Eigen::Vector3d centre[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+        double weight[2] = {0.0, 0.0};
+        for (std::size_t k = 0; k < points.size(); ++k)
+        {
+            const double w = std::max(0.0, (values[k] - tissue0) / (blood - tissue0));
+            const int half = points[k].dot(direction) >= middle ? 1 : 0;
+            centre[half] += w * points[k], weight[half] += w;
+        }
+        if (weight[0] > 0.0 && weight[1] > 0.0)
+        {
+            const Eigen::Vector3d c0 = centre[0] / weight[0], c1 = centre[1] / weight[1];
+            if ((c1 - c0).norm() > 0.25 * (b0 - a0).norm())
+            {
+                const Eigen::Vector3d d = (c1 - c0).normalized();
+                a0 = c0 + (a0 - c0).dot(d) * d, b0 = c0 + (b0 - c0).dot(d) * d; // the same span, on the new line
+            }
+        }
+        axis = (b0 - a0).normalized();
+    }
+    const Eigen::Vector3d f1 = axis.unitOrthogonal(), f2 = axis.cross(f1);
+    auto residuals = [&](const Eigen::VectorXd& q, Eigen::VectorXd& out) {
+        const Eigen::Vector3d offset = q[0] * e1 + q[1] * e2;
+        const double sigma = fitSigma ? q[4] : sigma0;
+        const double tissue = fitSigma ? q[5] : tissue0;
+        out.resize(Eigen::Index(points.size()));
+        const std::vector<Eigen::Vector3d> line{a0 + q[0] * f1 + q[1] * f2, b0 + (fitSigma ? q[0] : q[4]) * f1 + (fitSigma ? q[1] : q[5]) * f2};
+        const std::vector<double> lineArc{0.0, (line[1] - line[0]).norm()};
+        for (std::size_t k = 0; k < points.size(); ++k)
+        {
+            const auto [d, s] = fitSigma ? toPolyline(path, arc, points[k] - offset) : toPolyline(line, lineArc, points[k]);
+            const double t = std::clamp((s - lower) / (upper - lower), 0.0, 1.0);
+            const double r = q[2] + (q[3] - q[2]) * (fitSigma ? t : std::clamp(s / lineArc[1], 0.0, 1.0));
+            const double occupancy = 0.5 * std::erfc(-(r - d) / (sigma * std::numbers::sqrt2));
+            out[Eigen::Index(k)] = values[k] - (tissue + (blood - tissue) * occupancy);
+        }
+    };
+    Eigen::VectorXd r, trial;
+    residuals(x, r);
+    double cost = r.squaredNorm(), lambda = 1e-3;
+    for (int iteration = 0; iteration < 40; ++iteration)
+    {
+        Eigen::MatrixXd jacobian(r.size(), n);
+        for (int j = 0; j < n; ++j)
+        {
+            Eigen::VectorXd shifted = x;
+            const double h = fitSigma && j == 5 ? 0.5 : 1e-4;
+            shifted[j] += h;
+            residuals(shifted, trial);
+            jacobian.col(j) = (trial - r) / h;
+        }
+        const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
+        const Eigen::VectorXd gradient = jacobian.transpose() * r;
+        bool improved = false;
+        for (int attempt = 0; attempt < 8 && !improved; ++attempt)
+        {
+            Eigen::MatrixXd damped = normal;
+            damped.diagonal() *= 1.0 + lambda;
+            const Eigen::VectorXd step = damped.ldlt().solve(-gradient);
+            const Eigen::VectorXd candidate = x + step;
+            if (!(candidate[2] > 0.05 && candidate[3] > 0.05 && (!fitSigma || candidate[4] > 0.05)))
+            {
+                lambda *= 10.0;
+                continue;
+            }
+            residuals(candidate, trial);
+            const double candidateCost = trial.squaredNorm();
+            if (candidateCost < cost)
+            {
+                improved = true;
+                const bool converged = cost - candidateCost < 1e-10 * cost;
+                x = candidate, r = trial, cost = candidateCost, lambda = std::max(1e-7, lambda / 10.0);
+                if (converged)
+                    iteration = 1000;
+            }
+            else
+                lambda *= 10.0;
+        }
+        if (!improved)
+            break;
+    }
+    fit.ok = std::isfinite(cost) && x[2] > 0.05 && x[3] > 0.05;
+    fit.r1 = x[2], fit.r2 = x[3], fit.sigma = fitSigma ? x[4] : sigma0, fit.tissue = fitSigma ? x[5] : tissue0;
+    return fit;
+}
+
+
+/// Refines each measured edge's radii with fitCylinder on the voxels of the middle 60 % of its tube between the
+/// clearances (a vessel's end and a fork's merging lumens stay out): sigma from the widest edge first, then every
+/// edge with it; the volume estimate stays where a fit fails or leaves it by more than a factor of two.
+void fitCylinders(const CtVolume& ct, const SkeletonGraph& centerlines, const std::vector<std::vector<double>>& arcs,
+                  const std::vector<double>& length, const std::vector<double>& tube, const std::vector<double>& lower,
+                  const std::vector<double>& upper, const std::unordered_map<std::size_t, Owner>& owners, double blood,
+                  const std::vector<double>& tissue, std::vector<PartialVolumeRadius>& result)
+{
+    const VolumeGeometry& g = ct.geometry();
+    const std::size_t edges = result.size();
+    std::vector<std::vector<Eigen::Vector3d>> points(edges);
+    std::vector<std::vector<double>> values(edges);
+    for (const auto& [index, owner] : owners)
+    {
+        const std::size_t e = std::size_t(owner.edge);
+        const double margin = 0.2 * (upper[e] - lower[e]);
+        if (!result[e].measured || owner.distance > tube[e] || owner.arc < lower[e] + margin || owner.arc > upper[e] - margin)
+            continue;
+        const int i = int(index % std::size_t(g.dims[0])), j = int(index / std::size_t(g.dims[0]) % std::size_t(g.dims[1]));
+        const int k = int(index / (std::size_t(g.dims[0]) * std::size_t(g.dims[1])));
+        points[e].push_back(g.indexToPatient(Eigen::Vector3d(i, j, k)));
+        values[e].push_back(ct.data()[index]);
+    }
+    std::size_t widest = edges;
+    for (std::size_t e = 0; e < edges; ++e)
+        if (result[e].measured && (widest == edges || result[e].meanRadiusMm > result[widest].meanRadiusMm))
+            widest = e;
+    if (widest == edges)
+        return;
+    auto tissueOf = [&](std::size_t e) { return 0.5 * (tissue[2 * e] + tissue[2 * e + 1]); };
+    const CylinderFit reference =
+        fitCylinder(points[widest], values[widest], centerlines.edges[widest].points, arcs[widest], lower[widest],
+                    upper[widest], blood, result[widest].meanRadiusMm, tissueOf(widest), 0.5 * g.spacing.x(), true);
+    if (!reference.ok || !(reference.sigma > 0.05 && reference.sigma < 3.0))
+        return;
+    for (std::size_t e = 0; e < edges; ++e)
+    {
+        if (!result[e].measured)
+            continue;
+        const CylinderFit fit = fitCylinder(points[e], values[e], centerlines.edges[e].points, arcs[e], lower[e], upper[e],
+                                            blood, result[e].meanRadiusMm, tissueOf(e), reference.sigma, false);
+        const double mean = 0.5 * (fit.r1 + fit.r2);
+        if (!fit.ok || !(mean > 0.5 * result[e].meanRadiusMm && mean < 2.0 * result[e].meanRadiusMm))
+            continue; // keep the volume estimate
+        // r1 and r2 are the radii at `lower` and `upper`: the segment's middle and ends along that line (the
+        // taper clamped as elsewhere).
+        PartialVolumeRadius& r = result[e];
+        const double slope = (fit.r2 - fit.r1) / (upper[e] - lower[e]);
+        r.meanRadiusMm = fit.r1 + slope * (0.5 * length[e] - lower[e]);
+        r.startRadiusMm = std::clamp(fit.r1 - slope * lower[e], 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
+        r.endRadiusMm = std::clamp(fit.r2 + slope * (length[e] - upper[e]), 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
+    }
+}
 
 /// One pass: every voxel within tube[e] + kShellMm of a centerline to its nearest one; the lumen volume of each
 /// tube (between the clearances, in two halves) from the contrast against its shell's tissue and the blood of the
@@ -54,7 +244,7 @@ struct Owner
 std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonGraph& centerlines,
                                              const std::vector<std::vector<double>>& arcs, const std::vector<double>& length,
                                              const std::vector<double>& radius, const std::vector<double>& tube,
-                                             const Progress& progress)
+                                             bool fitModel, const Progress& progress)
 {
     const VolumeGeometry& g = ct.geometry();
     const std::size_t edges = centerlines.edges.size();
@@ -150,6 +340,8 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
         r.startRadiusMm = std::clamp(r1 - slope * s1, 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
         r.endRadiusMm = std::clamp(r2 + slope * (length[e] - s2), 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
     }
+    if (fitModel)
+        fitCylinders(ct, centerlines, arcs, length, tube, lower, upper, owners, blood, tissue, result);
     return result;
 }
 
@@ -179,7 +371,7 @@ std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const Sk
     for (std::size_t e = 0; e < edges; ++e)
         tube[e] = radius[e] + kFirstMarginMm;
     const std::vector<PartialVolumeRadius> first =
-        measurePass(ct, centerlines, arcs, length, radius, tube, progress.subRange(0.0, 0.5));
+        measurePass(ct, centerlines, arcs, length, radius, tube, false, progress.subRange(0.0, 0.5));
     // Pass 2 also takes the clearances from pass 1's radii: the distance radii of a thresholded label can be half
     // the lumen of a thin vessel.
     const double blurMargin = kBlurMarginMm + 0.5 * ct.geometry().spacing.maxCoeff();
@@ -188,7 +380,7 @@ std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const Sk
         if (first[e].measured)
             tube[e] = first[e].meanRadiusMm + blurMargin, lumen[e] = first[e].meanRadiusMm;
     std::vector<PartialVolumeRadius> result =
-        measurePass(ct, centerlines, arcs, length, lumen, tube, progress.subRange(0.5, 1.0));
+        measurePass(ct, centerlines, arcs, length, lumen, tube, true, progress.subRange(0.5, 1.0));
     for (std::size_t e = 0; e < edges; ++e)
         if (!result[e].measured)
             result[e] = first[e];

@@ -2,10 +2,11 @@
 
 // Vessel radii from the CT's partial-volume contrast rather than from a thresholded label. A scanner blurs a thin
 // vessel, so the contour of any threshold shrinks with the vessel's size (a 1.5 mm artery at 0.7 mm voxels loses
-// 10-20 % of its radius), and single cross-sections scatter by as much; but blurring keeps the integral of the
-// contrast: over a tube around the centerline, sum (HU - tissue) / (blood - tissue) times the voxel volume is the
-// lumen volume, whatever the blur, with the noise averaged over hundreds of voxels. The drug network needs this:
-// a flow split goes with the radius cubed or to the fourth power.
+// 10-20 % of its radius), and single cross-sections scatter by as much. The contrast over a tube around the
+// centerline, (HU - tissue) / (blood - tissue) summed times the voxel volume, is the lumen volume when the blur is
+// a convolution; a model of the blurred edge fitted to the voxels (the phantom's edge profile Phi((r - d) / sigma)
+// does not keep that integral: it adds pi sigma^2 to the area) refines it. The drug network needs this: a flow
+// split goes with the radius cubed or to the fourth power.
 
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Progress.h"
@@ -24,10 +25,12 @@ struct PartialVolumeRadius
     double usedLengthMm = 0.0;    ///< length between the clearances that was integrated
 };
 
-/// One radius estimate per centerline edge. Each voxel within (distance radius + 2 mm) of a centerline belongs to
-/// the nearest one; lengths within a clearance of a junction (2 radii, at least 1.5 mm) or a free end (1 radius
-/// + 1 mm) are left out; tissue is each tube's surrounding 1.5 mm shell (median), blood the core of the widest
-/// vessels (median). Throws vsim::Error for empty centerlines.
+/// One radius estimate per centerline edge. Each voxel within a tube around the centerlines belongs to the nearest
+/// one; lengths within a clearance of a junction (3 radii of the widest vessel there + 1 mm) or a free end (1
+/// radius + 1 mm) are left out; tissue is each half tube's surrounding 1.5 mm shell (median), blood the core of the
+/// widest vessels (median). Two passes of the volume integral (the second with the tube tightened to the lumen
+/// found), then a blurred-cylinder fit to the voxels of each tube's middle (the blur's sigma fitted on the widest
+/// vessel). Throws vsim::Error for empty centerlines.
 std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const SkeletonGraph& centerlines,
                                                     const Progress& progress = {});
 
