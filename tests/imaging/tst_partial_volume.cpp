@@ -1,7 +1,7 @@
 // Partial-volume vessel radii (PartialVolumeRadii.h) on the hepatic-tree phantom CT (320 x 320 x 240 voxels of
 // 0.7 x 0.7 x 1 mm, 20 HU noise), segmented, skeletonised and centerlined with the default parameters, against the truth
 // segments' mean radii: the root within 2 %, the mean error within 3 % and every segment within 8 % (measured
-// 2026-11-22: 0.1 %, 1.3 %, 5.0 %), and a smaller mean error than the label's cross-sections (8.4 %: the
+// 2026-11-22: 0.1 %, 1.1 %, 4.5 %), and a smaller mean error than the label's cross-sections (8.4 %: the
 // threshold shrinks thin vessels).
 
 #include "vsim/dicom/PhantomRender.h"

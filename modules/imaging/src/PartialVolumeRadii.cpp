@@ -184,7 +184,7 @@ CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::v
 }
 
 
-/// Refines each measured edge's radii with fitCylinder on the voxels of the middle 60 % of its tube between the
+/// Refines each measured edge's radii with fitCylinder on the voxels of the middle 80 % of its tube between the
 /// clearances (a vessel's end and a fork's merging lumens stay out): sigma from the widest edge first, then every
 /// edge with it; the volume estimate stays where a fit fails or leaves it by more than a factor of two.
 void fitCylinders(const CtVolume& ct, const SkeletonGraph& centerlines, const std::vector<std::vector<double>>& arcs,
@@ -199,7 +199,7 @@ void fitCylinders(const CtVolume& ct, const SkeletonGraph& centerlines, const st
     for (const auto& [index, owner] : owners)
     {
         const std::size_t e = std::size_t(owner.edge);
-        const double margin = 0.2 * (upper[e] - lower[e]);
+        const double margin = 0.1 * (upper[e] - lower[e]);
         if (!result[e].measured || owner.distance > tube[e] || owner.arc < lower[e] + margin || owner.arc > upper[e] - margin)
             continue;
         const int i = int(index % std::size_t(g.dims[0])), j = int(index / std::size_t(g.dims[0]) % std::size_t(g.dims[1]));
