@@ -85,16 +85,7 @@ private slots:
         {
             const Eigen::Vector3d a = p.centerlines.nodes[std::size_t(segment.from)].position;
             const Eigen::Vector3d b = p.centerlines.nodes[std::size_t(segment.to)].position;
-            const VesselSegment* best = nullptr;
-            double bestDistance = 1e300;
-            for (const VesselSegment& truth : model.segments)
-            {
-                const Eigen::Vector3d ta = model.nodes[std::size_t(truth.from)].position;
-                const Eigen::Vector3d tb = model.nodes[std::size_t(truth.to)].position;
-                const double d = std::min((a - ta).norm() + (b - tb).norm(), (a - tb).norm() + (b - ta).norm());
-                if (d < bestDistance)
-                    bestDistance = d, best = &truth;
-            }
+            const VesselSegment* best = &test::nearestTruthSegment(model, a, b);
             const double lengthError = std::abs(segment.lengthMm - best->lengthMm()) / best->lengthMm();
             const double truthRadius = 0.5 * (best->radii.front() + best->radii.back());
             const double radiusError = std::abs(0.5 * segment.referenceDiameterMm - truthRadius) / truthRadius;

@@ -4,6 +4,7 @@
 // 2026-11-22: 0.1 %, 1.1 %, 4.5 %), and a smaller mean error than the label's cross-sections (8.4 %: the
 // threshold shrinks thin vessels).
 
+#include "PhantomGrids.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/PartialVolumeRadii.h"
@@ -54,19 +55,9 @@ private:
         {
             if (!radii[e].measured)
                 continue;
-            // The truth segment whose end nodes are nearest to the edge's ends.
-            const Eigen::Vector3d a = centerlines.nodes[std::size_t(centerlines.edges[e].from)].position;
-            const Eigen::Vector3d b = centerlines.nodes[std::size_t(centerlines.edges[e].to)].position;
-            const VesselSegment* truth = nullptr;
-            double nearest = 1e300;
-            for (const VesselSegment& segment : model.segments)
-            {
-                const Eigen::Vector3d ta = model.nodes[std::size_t(segment.from)].position;
-                const Eigen::Vector3d tb = model.nodes[std::size_t(segment.to)].position;
-                const double d = std::min((a - ta).norm() + (b - tb).norm(), (a - tb).norm() + (b - ta).norm());
-                if (d < nearest)
-                    nearest = d, truth = &segment;
-            }
+            const VesselSegment* truth =
+                &test::nearestTruthSegment(model, centerlines.nodes[std::size_t(centerlines.edges[e].from)].position,
+                                           centerlines.nodes[std::size_t(centerlines.edges[e].to)].position);
             const double expected = 0.5 * (truth->radii.front() + truth->radii.back());
             const double error = std::abs(radii[e].meanRadiusMm / expected - 1.0);
             worst = std::max(worst, error);
