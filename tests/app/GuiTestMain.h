@@ -5,6 +5,7 @@
 #include "MainWindow.h"
 
 #include <QApplication>
+#include <QString>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QtTest>
@@ -16,6 +17,14 @@ inline bool waitForTask(gui::MainWindow& window, int milliseconds = 120000)
 {
     QSignalSpy idle(&window.tasks(), &gui::TaskRunner::idle);
     return idle.wait(milliseconds);
+}
+
+/// The vessel steps as a user runs them in the window's study: Import DICOM from `folder`, Segment, Skeleton &
+/// Centerlines, each in the background; false as soon as one is refused or does not finish.
+inline bool runVesselSteps(gui::MainWindow& window, const std::string& folder)
+{
+    return window.importDicom(QString::fromStdString(folder)) && waitForTask(window) && window.segmentVessels() &&
+           waitForTask(window) && window.extractSkeletonAndCenterlines() && waitForTask(window);
 }
 
 } // namespace vsim::test

@@ -42,12 +42,7 @@ private slots:
         QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
         QSignalSpy failed(&window.tasks(), &gui::TaskRunner::failed);
         QVERIFY(!window.simulateDrugDelivery({})); // no centerlines yet: says so, adds nothing
-        QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
-        QVERIFY(vsim::test::waitForTask(window));
-        QVERIFY(window.segmentVessels());
-        QVERIFY(vsim::test::waitForTask(window));
-        QVERIFY(window.extractSkeletonAndCenterlines());
-        QVERIFY(vsim::test::waitForTask(window));
+        QVERIFY(vsim::test::runVesselSteps(window, folder.string()));
         QVERIFY(!window.simulateDrugDelivery({"1, 2", "", ""})); // malformed tip
 
         const auto& m = model.measures;

@@ -37,12 +37,7 @@ private slots:
         QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
         QSignalSpy failed(&window.tasks(), &gui::TaskRunner::failed);
         QVERIFY(!window.simulateWall("physiological")); // no wall yet: says so, adds nothing
-        QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
-        QVERIFY(vsim::test::waitForTask(window));
-        QVERIFY(window.segmentVessels());
-        QVERIFY(vsim::test::waitForTask(window));
-        QVERIFY(window.extractSkeletonAndCenterlines());
-        QVERIFY(vsim::test::waitForTask(window));
+        QVERIFY(vsim::test::runVesselSteps(window, folder.string()));
 
         window.wallMeshParameters().set("target_vertices", 1500);
         QVERIFY(window.buildWallMesh());

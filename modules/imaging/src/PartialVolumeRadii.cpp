@@ -72,15 +72,6 @@ CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::v
     CylinderFit fit;
     if (points.size() < 30 || path.size() < 2 || !(upper > lower))
         return fit;
-    Eigen::Vector3d axis = (path.back() - path.front()).normalized();
-    const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
-    const int n = 6; // u, v, r1, r2, sigma, tissue (reference) or u, v, r1, r2, u2, v2 (thin vessels)
-    Eigen::VectorXd x(6);
-    if (fitSigma)
-        x << 0.0, 0.0, radius0, radius0, sigma0, tissue0;
-    else
-        x << 0.0, 0.0, radius0, radius0, 0.0, 0.0;
-    x.conservativeResize(n);
     // The straight axis of thin vessels: the centerline's points at `lower` and `upper`.
     auto pointAt = [&](double at) {
         for (std::size_t i = 1; i < path.size(); ++i)
@@ -91,8 +82,9 @@ CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::v
             }
         return path.back();
     };
+    const bool thin = !fitSigma;
     Eigen::Vector3d a0 = pointAt(lower), b0 = pointAt(upper);
-    if (!fitSigma)
+    if (thin)
     {
         // Start the axis at the lumen itself: the contrast-weighted centres of the near and far halves of the voxels
         // (a centerline can run off a thin vessel where it shares a stretch with a neighbour).
@@ -115,21 +107,36 @@ CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::v
                 a0 = c0 + (a0 - c0).dot(d) * d, b0 = c0 + (b0 - c0).dot(d) * d; // the same span, on the new line
             }
         }
-        axis = (b0 - a0).normalized();
     }
+    const Eigen::Vector3d axis = thin ? Eigen::Vector3d((b0 - a0).normalized()) : Eigen::Vector3d((path.back() - path.front()).normalized());
     const Eigen::Vector3d f1 = axis.unitOrthogonal(), f2 = axis.cross(f1);
+    // Parameters: u, v, r1, r2, then sigma and tissue (the reference) or the far end's u2, v2 (a thin vessel).
+    constexpr int n = 6;
+    Eigen::VectorXd x(n);
+    x << 0.0, 0.0, radius0, radius0, thin ? 0.0 : sigma0, thin ? 0.0 : tissue0;
     auto residuals = [&](const Eigen::VectorXd& q, Eigen::VectorXd& out) {
-        const Eigen::Vector3d offset = q[0] * e1 + q[1] * e2;
-        const double sigma = fitSigma ? q[4] : sigma0;
-        const double tissue = fitSigma ? q[5] : tissue0;
+        const double sigma = thin ? sigma0 : q[4], tissue = thin ? tissue0 : q[5];
+        const Eigen::Vector3d offset = q[0] * f1 + q[1] * f2;
+        std::vector<Eigen::Vector3d> line; // a thin vessel's axis
+        std::vector<double> lineArc;
+        if (thin)
+            line = {a0 + offset, b0 + q[4] * f1 + q[5] * f2}, lineArc = {0.0, (line[1] - line[0]).norm()};
         out.resize(Eigen::Index(points.size()));
-        const std::vector<Eigen::Vector3d> line{a0 + q[0] * f1 + q[1] * f2, b0 + (fitSigma ? q[0] : q[4]) * f1 + (fitSigma ? q[1] : q[5]) * f2};
-        const std::vector<double> lineArc{0.0, (line[1] - line[0]).norm()};
         for (std::size_t k = 0; k < points.size(); ++k)
         {
-            const auto [d, s] = fitSigma ? toPolyline(path, arc, points[k] - offset) : toPolyline(line, lineArc, points[k]);
-            const double t = std::clamp((s - lower) / (upper - lower), 0.0, 1.0);
-            const double r = q[2] + (q[3] - q[2]) * (fitSigma ? t : std::clamp(s / lineArc[1], 0.0, 1.0));
+            // Distance to the axis and where along it (0..1 from `lower` to `upper`).
+            double d = 0.0, t = 0.0;
+            if (thin)
+            {
+                const auto [distance, s] = toPolyline(line, lineArc, points[k]);
+                d = distance, t = std::clamp(s / lineArc[1], 0.0, 1.0);
+            }
+            else
+            {
+                const auto [distance, s] = toPolyline(path, arc, points[k] - offset);
+                d = distance, t = std::clamp((s - lower) / (upper - lower), 0.0, 1.0);
+            }
+            const double r = q[2] + (q[3] - q[2]) * t;
             const double occupancy = 0.5 * std::erfc(-(r - d) / (sigma * std::numbers::sqrt2));
             out[Eigen::Index(k)] = values[k] - (tissue + (blood - tissue) * occupancy);
         }
@@ -143,7 +150,7 @@ CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::v
         for (int j = 0; j < n; ++j)
         {
             Eigen::VectorXd shifted = x;
-            const double h = fitSigma && j == 5 ? 0.5 : 1e-4;
+            const double h = !thin && j == 5 ? 0.5 : 1e-4; // the tissue level in HU
             shifted[j] += h;
             residuals(shifted, trial);
             jacobian.col(j) = (trial - r) / h;
@@ -157,7 +164,7 @@ CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::v
             damped.diagonal() *= 1.0 + lambda;
             const Eigen::VectorXd step = damped.ldlt().solve(-gradient);
             const Eigen::VectorXd candidate = x + step;
-            if (!(candidate[2] > 0.05 && candidate[3] > 0.05 && (!fitSigma || candidate[4] > 0.05)))
+            if (!(candidate[2] > 0.05 && candidate[3] > 0.05 && (thin || candidate[4] > 0.05)))
             {
                 lambda *= 10.0;
                 continue;
@@ -179,10 +186,9 @@ CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::v
             break;
     }
     fit.ok = std::isfinite(cost) && x[2] > 0.05 && x[3] > 0.05;
-    fit.r1 = x[2], fit.r2 = x[3], fit.sigma = fitSigma ? x[4] : sigma0, fit.tissue = fitSigma ? x[5] : tissue0;
+    fit.r1 = x[2], fit.r2 = x[3], fit.sigma = thin ? sigma0 : x[4], fit.tissue = thin ? tissue0 : x[5];
     return fit;
 }
-
 
 /// Refines each measured edge's radii with fitCylinder on the voxels of the middle 80 % of its tube between the
 /// clearances (a vessel's end and a fork's merging lumens stay out): sigma from the widest edge first, then every

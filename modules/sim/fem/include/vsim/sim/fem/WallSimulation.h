@@ -30,7 +30,6 @@ public:
     /// Runs the implicit steps with steppers from `factory` (the CUDA backend) instead of BackwardEuler; an empty
     /// factory goes back to the CPU. Throws what the factory throws. Contacts (grab) need the CPU.
     void setStepper(StepperFactory factory);
-    bool hasStepper() const { return m_stepper != nullptr; }
 
     void setPressure(double pressurePa) { m_pressure = pressurePa; }
     double pressure() const { return m_pressure; }

@@ -18,7 +18,6 @@ struct TipOrientation
     std::vector<int> upstreamNode;    ///< per segment: its end nearer the tip (-1 when left out)
     std::vector<int> outlets;         ///< end nodes downstream of the tip (not the tip itself)
     bool active(int segment) const { return upstreamNode[std::size_t(segment)] >= 0; }
-    bool reaches(int node) const { return node == tip || parentSegment[std::size_t(node)] >= 0; }
 };
 
 /// Orients `network` (a validated tree) from `tip`. Throws vsim::Error when the tip does not exist, is not
