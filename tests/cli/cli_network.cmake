@@ -1,8 +1,10 @@
 # The drug-delivery steps as a user runs them on the full-size hepatic-tree phantom (512 x 512 x 400 at 0.7 mm):
 # segment, skeleton, centerline, then `simulate network` from the root with the phantom's tumour (Kirchhoff
 # balanced, 16 outlets, the control points' two-phase drop near the void fraction, the run files written), the
-# tumour as a label (the same share as the sphere), a hand-written network file, `validate network`, and bad input refused with a message (a tip off the tree, a void
-# fraction of 1, a network with a cycle, outlets without a condition).
+# tumour as a label (the same share as the sphere), injection by tip pressure and by mass rate, a hand-written
+# network file, `validate network`, and bad input refused with a message (a tip off the tree, a void fraction of 1,
+# a network with a cycle, outlets without a condition, a rate and a tip pressure together, an unknown rate unit, a
+# tip pressure below the outlets').
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(study ${WORK}/hepatic.vsim)
@@ -59,6 +61,12 @@ string(JSON pressure_tip GET "${pressure}" metrics tip_pressure_mmhg)
 string(JSON mass_rate GET "${mass}" metrics injection_mass_rate_g_min)
 if(pressure_tip LESS 29.999 OR pressure_tip GREATER 30.001 OR mass_rate LESS 1.8999 OR mass_rate GREATER 1.9001)
     message(FATAL_ERROR "injection by pressure (${pressure_tip} mmHg) or by mass rate (${mass_rate} g/min) not kept")
+endif()
+run_cli(1 both simulate network --study ${study} --tip 20,-25,-305 --rate 2 --tip-pressure 30)
+run_cli(1 unit simulate network --study ${study} --tip 20,-25,-305 --rate 2l/h)
+run_cli(1 low simulate network --study ${study} --tip 20,-25,-305 --tip-pressure 5)
+if(NOT both MATCHES "not both" OR NOT unit MATCHES "unknown unit 'l/h'" OR NOT low MATCHES "does not drive any flow")
+    message(FATAL_ERROR "a conflicting, malformed or too low injection must be refused:\n${both}\n${unit}\n${low}")
 endif()
 run_cli(1 far simulate network --study ${study} --tip 200,200,0)
 run_cli(1 void simulate network --study ${study} --tip 20,-25,-305 --void-fraction 1)
