@@ -138,12 +138,16 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
     const RealVolume distance = insideDistanceMm(binary, 1);
     progress.report(0.2, "fast marching");
 
-    // Speed: fastest on the medial axis; a crawl in the voxels touching the lumen, so that lumen voxels joined
-    // only across an edge or a corner (26-connected) stay reachable by the 6-connected front; none farther out.
+    // Speed: fastest on the medial axis, ((d + h/2) / (peak + h/2))^power with d the distance of a voxel's centre to
+    // the wall's voxels and h the finest spacing (the wall itself lies half a voxel out: a vessel two voxels across
+    // has d = 0 in all of its voxels, and must still be much faster than around it). A crawl, far slower than any
+    // lumen voxel, in the voxels touching the lumen, so that lumen voxels joined only across an edge or a corner
+    // (26-connected) stay reachable by the 6-connected front; none farther out.
     const float peak = *std::max_element(distance.data(), distance.data() + distance.size());
     RealVolume speed = RealVolume::uninitialized(geometry);
     const double power = p.get("speed_power");
-    constexpr float kCrawl = 1e-3f;
+    const double halfVoxel = 0.5 * geometry.spacing.minCoeff();
+    constexpr float kCrawl = 1e-5f;
     const auto& d = geometry.dims;
     for (int k = 0; k < d[2]; ++k)
         for (int j = 0; j < d[1]; ++j)
@@ -151,7 +155,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
             {
                 float value = 0.0f;
                 if (binary.at(i, j, k))
-                    value = float(std::max(double(kCrawl), std::pow(std::max(0.0f, distance.at(i, j, k)) / peak, power)));
+                    value = float(std::pow((std::max(0.0f, distance.at(i, j, k)) + halfVoxel) / (peak + halfVoxel), power));
                 else
                     for (int n = 0; n < 27 && value == 0.0f; ++n)
                     {

@@ -2,7 +2,8 @@
 
 #include "vsim/core/Error.h"
 
-#include <Eigen/Cholesky>
+#include "BlurredTubeFit.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -26,22 +27,49 @@ double median(std::vector<double> values)
     return *middle;
 }
 
-/// Distance (mm) from p to a polyline and the arc length (mm) of the nearest point.
-std::pair<double, double> toPolyline(const std::vector<Eigen::Vector3d>& path, const std::vector<double>& arc,
-                                     const Eigen::Vector3d& p)
+constexpr double kTissueWindowMm = 2.0; // the tissue level at an arc: the shell within this distance along the tube
+constexpr double kProfileStepMm = 0.5;
+
+/// The tissue level (HU) along one tube: the median of its shell's voxels within kTissueWindowMm of each arc, in
+/// 0.5 mm steps (the background changes along a vessel, e.g. where it enters a tumour); the whole shell's median
+/// where a window holds fewer than 20 voxels.
+class TissueProfile
 {
-    double best = 1e300, at = 0.0;
-    for (std::size_t i = 1; i < path.size(); ++i)
+public:
+    TissueProfile() = default;
+    TissueProfile(std::vector<std::pair<float, float>> shell, double lengthMm) // (arc mm, HU)
     {
-        const Eigen::Vector3d d = path[i] - path[i - 1];
-        const double length2 = d.squaredNorm();
-        const double t = length2 > 0.0 ? std::clamp((p - path[i - 1]).dot(d) / length2, 0.0, 1.0) : 0.0;
-        const double distance = (path[i - 1] + t * d - p).squaredNorm();
-        if (distance < best)
-            best = distance, at = arc[i - 1] + t * (arc[i] - arc[i - 1]);
+        std::vector<double> all;
+        for (const auto& [arc, hu] : shell)
+            all.push_back(hu);
+        overall_ = median(all);
+        std::sort(shell.begin(), shell.end());
+        std::size_t first = 0, last = 0;
+        for (double at = 0.0; at <= lengthMm + kProfileStepMm; at += kProfileStepMm)
+        {
+            while (first < shell.size() && shell[first].first < at - kTissueWindowMm)
+                ++first;
+            last = std::max(last, first);
+            while (last < shell.size() && shell[last].first <= at + kTissueWindowMm)
+                ++last;
+            std::vector<double> window;
+            for (std::size_t k = first; k < last; ++k)
+                window.push_back(shell[k].second);
+            levels_.push_back(window.size() >= 20 ? median(window) : overall_);
+        }
     }
-    return {std::sqrt(best), at};
-}
+    double at(double arcMm) const
+    {
+        if (levels_.empty())
+            return overall_;
+        return levels_[std::min(levels_.size() - 1, std::size_t(std::max(0.0, std::round(arcMm / kProfileStepMm))))];
+    }
+    double overall() const { return overall_; }
+
+private:
+    std::vector<double> levels_;
+    double overall_ = std::nan("");
+};
 
 struct Owner
 {
@@ -50,198 +78,174 @@ struct Owner
     bool inTube = false; ///< within some edge's tube (not tissue for any shell)
 };
 
-/// A blurred tapering cylinder fitted to the CT around one centerline (Levenberg-Marquardt), evaluated at the voxel
-/// centres themselves: intensity = tissue + (blood - tissue) Phi((r - d) / sigma) at distance d from the axis (the
-/// partial-volume profile of an edge blurred by a Gaussian), the radius linear from r1 at arc `lower` to r2 at
-/// `upper`. The reference vessel (the widest; `fitSigma`) keeps the centerline as its axis, shifted by (u, v), and
-/// also fits sigma and the tissue level. A thin vessel fits a straight axis whose two ends move across it (a
-/// smoothed centerline wanders by a third of such a radius, and may run off the lumen where it shares a stretch
-/// with a neighbour), started at the contrast-weighted centres of its two halves, with sigma and the tissue fixed
-/// (a free tissue level trades off against the radius of a thin tube). Neither the slab sampling of a blur finer
-/// than the slices nor an axis off the lumen's centre biases the radius, as they bias a sum over slabs.
-struct CylinderFit
-{
-    bool ok = false;
-    double r1 = 0.0, r2 = 0.0, tissue = 0.0, sigma = 0.0;
-};
+constexpr double kFitMargin = 0.1;       // the first fit: the middle 80 % between the clearances
+constexpr double kForkClearanceMm = 0.5; // the fit with the neighbours: this close to a fork
 
-CylinderFit fitCylinder(const std::vector<Eigen::Vector3d>& points, const std::vector<double>& values,
-                        const std::vector<Eigen::Vector3d>& path, const std::vector<double>& arc, double lower, double upper,
-                        double blood, double radius0, double tissue0, double sigma0, bool fitSigma)
+Eigen::Vector3d pointAt(const std::vector<Eigen::Vector3d>& path, const std::vector<double>& arc, double at)
 {
-    CylinderFit fit;
-    if (points.size() < 30 || path.size() < 2 || !(upper > lower))
-        return fit;
-    // The straight axis of thin vessels: the centerline's points at `lower` and `upper`.
-    auto pointAt = [&](double at) {
-        for (std::size_t i = 1; i < path.size(); ++i)
-            if (arc[i] >= at)
-            {
-                const double t = arc[i] > arc[i - 1] ? (at - arc[i - 1]) / (arc[i] - arc[i - 1]) : 0.0;
-                return Eigen::Vector3d(path[i - 1] + std::clamp(t, 0.0, 1.0) * (path[i] - path[i - 1]));
-            }
-        return path.back();
-    };
-    const bool thin = !fitSigma;
-    Eigen::Vector3d a0 = pointAt(lower), b0 = pointAt(upper);
-    if (thin)
-    {
-        // Start the axis at the lumen itself: the contrast-weighted centres of the near and far halves of the voxels
-        // (a centerline can run off a thin vessel where it shares a stretch with a neighbour).
-        const Eigen::Vector3d direction = (b0 - a0).normalized();
-        const double middle = 0.5 * (a0 + b0).dot(direction);
-        Eigen::Vector3d centre[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-        double weight[2] = {0.0, 0.0};
-        for (std::size_t k = 0; k < points.size(); ++k)
+    for (std::size_t i = 1; i < path.size(); ++i)
+        if (arc[i] >= at)
         {
-            const double w = std::max(0.0, (values[k] - tissue0) / (blood - tissue0));
-            const int half = points[k].dot(direction) >= middle ? 1 : 0;
-            centre[half] += w * points[k], weight[half] += w;
+            const double t = arc[i] > arc[i - 1] ? (at - arc[i - 1]) / (arc[i] - arc[i - 1]) : 0.0;
+            return path[i - 1] + std::clamp(t, 0.0, 1.0) * (path[i] - path[i - 1]);
         }
-        if (weight[0] > 0.0 && weight[1] > 0.0)
-        {
-            const Eigen::Vector3d c0 = centre[0] / weight[0], c1 = centre[1] / weight[1];
-            if ((c1 - c0).norm() > 0.25 * (b0 - a0).norm())
-            {
-                const Eigen::Vector3d d = (c1 - c0).normalized();
-                a0 = c0 + (a0 - c0).dot(d) * d, b0 = c0 + (b0 - c0).dot(d) * d; // the same span, on the new line
-            }
-        }
-    }
-    const Eigen::Vector3d axis = thin ? Eigen::Vector3d((b0 - a0).normalized()) : Eigen::Vector3d((path.back() - path.front()).normalized());
-    const Eigen::Vector3d f1 = axis.unitOrthogonal(), f2 = axis.cross(f1);
-    // Parameters: u, v, r1, r2, then sigma and tissue (the reference) or the far end's u2, v2 (a thin vessel).
-    constexpr int n = 6;
-    Eigen::VectorXd x(n);
-    x << 0.0, 0.0, radius0, radius0, thin ? 0.0 : sigma0, thin ? 0.0 : tissue0;
-    auto residuals = [&](const Eigen::VectorXd& q, Eigen::VectorXd& out) {
-        const double sigma = thin ? sigma0 : q[4], tissue = thin ? tissue0 : q[5];
-        const Eigen::Vector3d offset = q[0] * f1 + q[1] * f2;
-        std::vector<Eigen::Vector3d> line; // a thin vessel's axis
-        std::vector<double> lineArc;
-        if (thin)
-            line = {a0 + offset, b0 + q[4] * f1 + q[5] * f2}, lineArc = {0.0, (line[1] - line[0]).norm()};
-        out.resize(Eigen::Index(points.size()));
-        for (std::size_t k = 0; k < points.size(); ++k)
-        {
-            // Distance to the axis and where along it (0..1 from `lower` to `upper`).
-            double d = 0.0, t = 0.0;
-            if (thin)
-            {
-                const auto [distance, s] = toPolyline(line, lineArc, points[k]);
-                d = distance, t = std::clamp(s / lineArc[1], 0.0, 1.0);
-            }
-            else
-            {
-                const auto [distance, s] = toPolyline(path, arc, points[k] - offset);
-                d = distance, t = std::clamp((s - lower) / (upper - lower), 0.0, 1.0);
-            }
-            const double r = q[2] + (q[3] - q[2]) * t;
-            const double occupancy = 0.5 * std::erfc(-(r - d) / (sigma * std::numbers::sqrt2));
-            out[Eigen::Index(k)] = values[k] - (tissue + (blood - tissue) * occupancy);
-        }
-    };
-    Eigen::VectorXd r, trial;
-    residuals(x, r);
-    double cost = r.squaredNorm(), lambda = 1e-3;
-    for (int iteration = 0; iteration < 40; ++iteration)
-    {
-        Eigen::MatrixXd jacobian(r.size(), n);
-        for (int j = 0; j < n; ++j)
-        {
-            Eigen::VectorXd shifted = x;
-            const double h = !thin && j == 5 ? 0.5 : 1e-4; // the tissue level in HU
-            shifted[j] += h;
-            residuals(shifted, trial);
-            jacobian.col(j) = (trial - r) / h;
-        }
-        const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
-        const Eigen::VectorXd gradient = jacobian.transpose() * r;
-        bool improved = false;
-        for (int attempt = 0; attempt < 8 && !improved; ++attempt)
-        {
-            Eigen::MatrixXd damped = normal;
-            damped.diagonal() *= 1.0 + lambda;
-            const Eigen::VectorXd step = damped.ldlt().solve(-gradient);
-            const Eigen::VectorXd candidate = x + step;
-            if (!(candidate[2] > 0.05 && candidate[3] > 0.05 && (thin || candidate[4] > 0.05)))
-            {
-                lambda *= 10.0;
-                continue;
-            }
-            residuals(candidate, trial);
-            const double candidateCost = trial.squaredNorm();
-            if (candidateCost < cost)
-            {
-                improved = true;
-                const bool converged = cost - candidateCost < 1e-10 * cost;
-                x = candidate, r = trial, cost = candidateCost, lambda = std::max(1e-7, lambda / 10.0);
-                if (converged)
-                    iteration = 1000;
-            }
-            else
-                lambda *= 10.0;
-        }
-        if (!improved)
-            break;
-    }
-    fit.ok = std::isfinite(cost) && x[2] > 0.05 && x[3] > 0.05;
-    fit.r1 = x[2], fit.r2 = x[3], fit.sigma = thin ? sigma0 : x[4], fit.tissue = thin ? tissue0 : x[5];
-    return fit;
+    return path.back();
 }
 
-/// Refines each measured edge's radii with fitCylinder on the voxels of the middle 80 % of its tube between the
-/// clearances (a vessel's end and a fork's merging lumens stay out): sigma from the widest edge first, then every
-/// edge with it; the volume estimate stays where a fit fails or leaves it by more than a factor of two.
-void fitCylinders(const CtVolume& ct, const SkeletonGraph& centerlines, const std::vector<std::vector<double>>& arcs,
-                  const std::vector<double>& length, const std::vector<double>& tube, const std::vector<double>& lower,
-                  const std::vector<double>& upper, const std::unordered_map<std::size_t, Owner>& owners, double blood,
-                  const std::vector<double>& tissue, std::vector<PartialVolumeRadius>& result)
+/// The voxels each tube owns between arcs from[e] and to[e] (mm), within tube[e] of its centerline.
+std::vector<detail::TubeSamples> collectSamples(const CtVolume& ct, const std::unordered_map<std::size_t, Owner>& owners,
+                                                const std::vector<TissueProfile>& tissue, const std::vector<double>& tube,
+                                                const std::vector<double>& from, const std::vector<double>& to)
 {
     const VolumeGeometry& g = ct.geometry();
-    const std::size_t edges = result.size();
-    std::vector<std::vector<Eigen::Vector3d>> points(edges);
-    std::vector<std::vector<double>> values(edges);
+    std::vector<detail::TubeSamples> samples(tube.size());
     for (const auto& [index, owner] : owners)
     {
         const std::size_t e = std::size_t(owner.edge);
-        const double margin = 0.1 * (upper[e] - lower[e]);
-        if (!result[e].measured || owner.distance > tube[e] || owner.arc < lower[e] + margin || owner.arc > upper[e] - margin)
+        if (owner.distance > tube[e] || owner.arc < from[e] || owner.arc > to[e])
             continue;
         const int i = int(index % std::size_t(g.dims[0])), j = int(index / std::size_t(g.dims[0]) % std::size_t(g.dims[1]));
         const int k = int(index / (std::size_t(g.dims[0]) * std::size_t(g.dims[1])));
-        points[e].push_back(g.indexToPatient(Eigen::Vector3d(i, j, k)));
-        values[e].push_back(ct.data()[index]);
+        samples[e].points.push_back(g.indexToPatient(Eigen::Vector3d(i, j, k)));
+        samples[e].values.push_back(ct.data()[index]);
+        samples[e].tissue.push_back(tissue[e].at(owner.arc));
     }
+    return samples;
+}
+
+/// A thin tube's fitted straight stretch between centerline arcs lo and hi (mm), extended along its line.
+struct FittedLine
+{
+    Eigen::Vector3d start, end;
+    double lo = 0.0, hi = 1.0, r1 = 0.0, r2 = 0.0;
+
+    Eigen::Vector3d at(double s) const { return start + (s - lo) / (hi - lo) * (end - start); }
+    double radiusAt(double s) const { return r1 + (r2 - r1) * (s - lo) / (hi - lo); }
+};
+
+/// The edge's radii from its fitted line: the middle and the two ends (the taper clamped: vessels taper by tens of
+/// percent along a segment at most, a steeper line is noise).
+void storeFit(const FittedLine& line, double length, PartialVolumeRadius& r)
+{
+    r.meanRadiusMm = line.radiusAt(0.5 * length);
+    r.startRadiusMm = std::clamp(line.radiusAt(0.0), 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
+    r.endRadiusMm = std::clamp(line.radiusAt(length), 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
+}
+
+/// The largest distance (mm) of the centerline between arcs lo and hi from a fitted straight tube's axis.
+double departure(const std::vector<Eigen::Vector3d>& path, const std::vector<double>& arc, const FittedLine& line,
+                 double lo, double hi)
+{
+    const std::vector<Eigen::Vector3d> axis{line.at(lo), line.at(hi)};
+    const std::vector<double> axisArc{0.0, (axis[1] - axis[0]).norm()};
+    double largest = 0.0;
+    for (std::size_t i = 0; i < path.size(); ++i)
+        if (arc[i] >= lo && arc[i] <= hi)
+            largest = std::max(largest, detail::toPolyline(axis, axisArc, path[i]).first);
+    return largest;
+}
+
+/// Refines each measured edge's radii with blurred-tube fits (BlurredTubeFit.h). First each tube alone, on the
+/// voxels of the middle 80 % between its clearances: sigma from the widest edge, then every edge with it. Then,
+/// twice over, each nearly straight tube again from 0.5 mm of its forks, its neighbours' fitted tubes filling the
+/// merged lumens there: twice the voxels of a short tip, whose radius a flow split takes cubed. The volume estimate
+/// stays where a fit fails or leaves it by more than a factor of two.
+void fitTubes(const CtVolume& ct, const SkeletonGraph& centerlines, const std::vector<std::vector<double>>& arcs,
+              const std::vector<double>& length, const std::vector<double>& lumen, const std::vector<double>& tube,
+              const std::vector<double>& lower, const std::vector<double>& upper,
+              const std::unordered_map<std::size_t, Owner>& owners, double blood,
+              const std::vector<TissueProfile>& tissue, std::vector<PartialVolumeRadius>& result)
+{
+    const std::size_t edges = result.size();
+    std::vector<double> from(edges), to(edges);
+    for (std::size_t e = 0; e < edges; ++e)
+    {
+        const double margin = kFitMargin * (upper[e] - lower[e]);
+        from[e] = result[e].measured ? lower[e] + margin : 1.0, to[e] = result[e].measured ? upper[e] - margin : 0.0;
+    }
+    std::vector<detail::TubeSamples> samples = collectSamples(ct, owners, tissue, tube, from, to);
     std::size_t widest = edges;
     for (std::size_t e = 0; e < edges; ++e)
         if (result[e].measured && (widest == edges || result[e].meanRadiusMm > result[widest].meanRadiusMm))
             widest = e;
     if (widest == edges)
         return;
-    auto tissueOf = [&](std::size_t e) { return 0.5 * (tissue[2 * e] + tissue[2 * e + 1]); };
-    const CylinderFit reference =
-        fitCylinder(points[widest], values[widest], centerlines.edges[widest].points, arcs[widest], lower[widest],
-                    upper[widest], blood, result[widest].meanRadiusMm, tissueOf(widest), 0.5 * g.spacing.x(), true);
+    auto path = [&](std::size_t e) -> const std::vector<Eigen::Vector3d>& { return centerlines.edges[e].points; };
+    const detail::TubeFit reference =
+        detail::fitReferenceTube(samples[widest], path(widest), arcs[widest], from[widest], to[widest], blood,
+                                 result[widest].meanRadiusMm, tissue[widest].overall(), 0.5 * ct.geometry().spacing.x());
     if (!reference.ok || !(reference.sigma > 0.05 && reference.sigma < 3.0))
         return;
+    const double sigma = reference.sigma;
+
+    std::vector<double> volumeRadius(edges);
+    for (std::size_t e = 0; e < edges; ++e)
+        volumeRadius[e] = result[e].meanRadiusMm;
+    std::vector<FittedLine> lines(edges);
+    std::vector<bool> fitted(edges, false);
+    auto fitThin = [&](std::size_t e, const detail::TubeSamples& s, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+        const detail::TubeFit fit = detail::fitThinTube(s, a, b, blood, result[e].meanRadiusMm, sigma);
+        const double mean = 0.5 * (fit.r1 + fit.r2);
+        if (!fit.ok || !(mean > 0.5 * volumeRadius[e] && mean < 2.0 * volumeRadius[e]))
+            return;
+        lines[e] = {fit.start, fit.end, from[e], to[e], fit.r1, fit.r2};
+        storeFit(lines[e], length[e], result[e]);
+        fitted[e] = true;
+    };
+    for (std::size_t e = 0; e < edges; ++e)
+        if (result[e].measured)
+        {
+            const auto [a, b] = detail::lumenLine(samples[e], pointAt(path(e), arcs[e], from[e]),
+                                                  pointAt(path(e), arcs[e], to[e]), blood);
+            fitThin(e, samples[e], a, b);
+        }
+
+    // Near the forks: each tube with its neighbours (the tubes sharing a node with it) held as fitted.
+    std::vector<detail::TubeModel> models(edges);
+    auto updateModel = [&](std::size_t e) {
+        detail::TubeModel& m = models[e];
+        if (fitted[e])
+            m.axis = {lines[e].at(0.0), lines[e].at(length[e])}, m.arc = {0.0, length[e]};
+        else
+            m.axis = path(e), m.arc = arcs[e];
+        m.startRadiusMm = result[e].measured ? result[e].startRadiusMm : lumen[e];
+        m.endRadiusMm = result[e].measured ? result[e].endRadiusMm : lumen[e];
+    };
+    std::vector<std::vector<std::size_t>> neighbours(edges);
     for (std::size_t e = 0; e < edges; ++e)
     {
-        if (!result[e].measured)
-            continue;
-        const CylinderFit fit = fitCylinder(points[e], values[e], centerlines.edges[e].points, arcs[e], lower[e], upper[e],
-                                            blood, result[e].meanRadiusMm, tissueOf(e), reference.sigma, false);
-        const double mean = 0.5 * (fit.r1 + fit.r2);
-        if (!fit.ok || !(mean > 0.5 * result[e].meanRadiusMm && mean < 2.0 * result[e].meanRadiusMm))
-            continue; // keep the volume estimate
-        // r1 and r2 are the radii at `lower` and `upper`: the segment's middle and ends along that line (the
-        // taper clamped as elsewhere).
-        PartialVolumeRadius& r = result[e];
-        const double slope = (fit.r2 - fit.r1) / (upper[e] - lower[e]);
-        r.meanRadiusMm = fit.r1 + slope * (0.5 * length[e] - lower[e]);
-        r.startRadiusMm = std::clamp(fit.r1 - slope * lower[e], 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
-        r.endRadiusMm = std::clamp(fit.r2 + slope * (length[e] - upper[e]), 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
+        updateModel(e);
+        for (std::size_t n = 0; n < edges; ++n)
+        {
+            const auto& a = centerlines.edges[e];
+            const auto& b = centerlines.edges[n];
+            if (n != e && (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to))
+                neighbours[e].push_back(n);
+        }
     }
+    for (std::size_t e = 0; e < edges; ++e)
+    {
+        const auto& edge = centerlines.edges[e];
+        from[e] = centerlines.degree(edge.from) >= 3 ? kForkClearanceMm : lower[e];
+        to[e] = centerlines.degree(edge.to) >= 3 ? length[e] - kForkClearanceMm : upper[e];
+    }
+    samples = collectSamples(ct, owners, tissue, tube, from, to);
+    const double straightness = ct.geometry().spacing.maxCoeff();
+    for (int sweep = 0; sweep < 2; ++sweep)
+        for (std::size_t e = 0; e < edges; ++e)
+        {
+            if (!fitted[e] || !(to[e] - from[e] > 2.0) ||
+                departure(path(e), arcs[e], lines[e], lower[e], upper[e]) > straightness)
+                continue;
+            detail::TubeSamples& s = samples[e];
+            s.floor.assign(s.points.size(), 0.0);
+            for (std::size_t k = 0; k < s.points.size(); ++k)
+                for (std::size_t n : neighbours[e])
+                    s.floor[k] = std::max(s.floor[k], models[n].occupancy(s.points[k], sigma));
+            const FittedLine previous = lines[e];
+            fitThin(e, s, previous.at(from[e]), previous.at(to[e]));
+            updateModel(e);
+        }
 }
 
 /// One pass: every voxel within tube[e] + kShellMm of a centerline to its nearest one; the lumen volume of each
@@ -272,7 +276,7 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
             for (int j = std::max(0, int(std::floor(low.y()))); j <= std::min(g.dims[1] - 1, int(std::ceil(high.y()))); ++j)
                 for (int i = std::max(0, int(std::floor(low.x()))); i <= std::min(g.dims[0] - 1, int(std::ceil(high.x()))); ++i)
                 {
-                    const auto [distance, arc] = toPolyline(points, arcs[e], g.indexToPatient(Eigen::Vector3d(i, j, k)));
+                    const auto [distance, arc] = detail::toPolyline(points, arcs[e], g.indexToPatient(Eigen::Vector3d(i, j, k)));
                     if (distance > reach)
                         continue;
                     Owner& owner = owners[g.linearIndex(i, j, k)];
@@ -298,10 +302,9 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
         lower[e] = clearance(centerlines.edges[e].from, e);
         upper[e] = length[e] - clearance(centerlines.edges[e].to, e);
     }
-    // Blood: the cores of the widest vessels. Tissue: each half's shell, away from every tube (the background
-    // changes along a vessel, e.g. where it enters a tumour).
+    // Blood: the cores of the widest vessels. Tissue: each tube's shell, away from every tube, along its length.
     std::vector<double> core;
-    std::vector<std::vector<double>> shell(2 * edges);
+    std::vector<std::vector<std::pair<float, float>>> shell(edges);
     const double widest = *std::max_element(radius.begin(), radius.end());
     for (const auto& [index, owner] : owners)
     {
@@ -309,13 +312,13 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
         const std::size_t e = std::size_t(owner.edge);
         if (radius[e] >= 0.6 * widest && owner.distance <= 0.4 * radius[e])
             core.push_back(hu);
-        if (!owner.inTube && owner.arc >= lower[e] && owner.arc <= upper[e])
-            shell[2 * e + (owner.arc >= 0.5 * (lower[e] + upper[e]) ? 1 : 0)].push_back(hu);
+        if (!owner.inTube)
+            shell[e].emplace_back(owner.arc, float(hu));
     }
     const double blood = median(core);
-    std::vector<double> tissue(2 * edges);
-    for (std::size_t h = 0; h < 2 * edges; ++h)
-        tissue[h] = median(shell[h]);
+    std::vector<TissueProfile> tissue(edges);
+    for (std::size_t e = 0; e < edges; ++e)
+        tissue[e] = TissueProfile(std::move(shell[e]), length[e]);
 
     const double voxelVolume = g.spacing.prod();
     for (const auto& [index, owner] : owners)
@@ -323,9 +326,10 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
         const std::size_t e = std::size_t(owner.edge);
         if (owner.distance > tube[e] || owner.arc < lower[e] || owner.arc > upper[e])
             continue;
-        const std::size_t h = 2 * e + (owner.arc >= 0.5 * (lower[e] + upper[e]) ? 1 : 0);
-        if (blood > tissue[h])
-            sums[h] += (ct.data()[index] - tissue[h]) / (blood - tissue[h]) * voxelVolume;
+        const double level = tissue[e].at(owner.arc);
+        if (blood > level)
+            sums[2 * e + (owner.arc >= 0.5 * (lower[e] + upper[e]) ? 1 : 0)] +=
+                (ct.data()[index] - level) / (blood - level) * voxelVolume;
     }
     std::vector<PartialVolumeRadius> result(edges);
     for (std::size_t e = 0; e < edges; ++e)
@@ -347,7 +351,7 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
         r.endRadiusMm = std::clamp(r2 + slope * (length[e] - s2), 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
     }
     if (fitModel)
-        fitCylinders(ct, centerlines, arcs, length, tube, lower, upper, owners, blood, tissue, result);
+        fitTubes(ct, centerlines, arcs, length, radius, tube, lower, upper, owners, blood, tissue, result);
     return result;
 }
 

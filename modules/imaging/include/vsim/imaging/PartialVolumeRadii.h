@@ -27,10 +27,11 @@ struct PartialVolumeRadius
 
 /// One radius estimate per centerline edge. Each voxel within a tube around the centerlines belongs to the nearest
 /// one; lengths within a clearance of a junction (3 radii of the widest vessel there + 1 mm) or a free end (1
-/// radius + 1 mm) are left out; tissue is each half tube's surrounding 1.5 mm shell (median), blood the core of the
-/// widest vessels (median). Two passes of the volume integral (the second with the tube tightened to the lumen
-/// found), then a blurred-cylinder fit to the voxels of each tube's middle (the blur's sigma fitted on the widest
-/// vessel). Throws vsim::Error for empty centerlines.
+/// radius + 1 mm) are left out; tissue is the median of each tube's surrounding 1.5 mm shell within 2 mm along it,
+/// blood the core of the widest vessels (median). Two passes of the volume integral (the second with the tube
+/// tightened to the lumen found), then blurred-tube fits to the voxels (the blur's sigma fitted on the widest
+/// vessel): each tube's middle alone, then each nearly straight tube from its forks with its neighbours' fitted
+/// tubes filling the merged lumens there. Throws vsim::Error for empty centerlines.
 std::vector<PartialVolumeRadius> partialVolumeRadii(const CtVolume& ct, const SkeletonGraph& centerlines,
                                                     const Progress& progress = {});
 
