@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 namespace vsim::app {
 namespace {
@@ -62,33 +63,39 @@ std::string labelOfCenterlines(const study::Study& study, const std::string& cen
     return study.newestArtifact(study::ArtifactKind::Label);
 }
 
+VesselNetwork networkFromImages(const SkeletonGraph& centerlines, const LabelVolume& label, const CtVolume* ct,
+                                std::vector<std::string>& warnings, const Progress& progress)
+{
+    const imaging::VesselMeasurements measured = imaging::measureVessels(
+        label, centerlines, ParameterSet(imaging::measurementParameters()), progress.subRange(0.0, ct ? 0.5 : 1.0));
+    std::vector<std::array<double, 2>> endRadii;
+    for (std::size_t e = 0; e < measured.segments.size(); ++e)
+        endRadii.push_back(fittedEndRadii(measured.segments[e], centerlines.edges[e]));
+    if (ct)
+    {
+        const std::vector<imaging::PartialVolumeRadius> radii =
+            imaging::partialVolumeRadii(*ct, centerlines, progress.subRange(0.5, 1.0));
+        for (std::size_t e = 0; e < radii.size(); ++e)
+            if (radii[e].measured)
+                endRadii[e] = {radii[e].startRadiusMm, radii[e].endRadiusMm};
+    }
+    return sim::network::networkFromCenterlines(centerlines, endRadii, &warnings);
+}
+
 VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& centerlinesId,
                                 std::vector<std::string>& warnings, const Progress& progress)
 {
     const SkeletonGraph centerlines = study.loadSkeleton(centerlinesId);
     const std::string labelId = labelOfCenterlines(study, centerlinesId);
-    std::vector<std::array<double, 2>> endRadii;
-    if (!labelId.empty())
-    {
-        const imaging::VesselMeasurements measured =
-            imaging::measureVessels(study.loadLabel(labelId), centerlines,
-                                    ParameterSet(imaging::measurementParameters()), progress.subRange(0.0, 0.9));
-        for (std::size_t e = 0; e < measured.segments.size(); ++e)
-            endRadii.push_back(fittedEndRadii(measured.segments[e], centerlines.edges[e]));
-        // The CT the label came from (the segment step's input): partial-volume radii where a segment is long
-        // enough between its clearances.
-        const auto& labelInputs = study.artifact(labelId).provenance.inputs;
-        if (!labelInputs.empty() && study.hasArtifact(labelInputs.front()) &&
-            study.artifact(labelInputs.front()).kind == study::ArtifactKind::Image)
-        {
-            const std::vector<imaging::PartialVolumeRadius> radii =
-                imaging::partialVolumeRadii(study.loadImage(labelInputs.front()), centerlines, progress.subRange(0.9, 1.0));
-            for (std::size_t e = 0; e < radii.size(); ++e)
-                if (radii[e].measured)
-                    endRadii[e] = {radii[e].startRadiusMm, radii[e].endRadiusMm};
-        }
-    }
-    return sim::network::networkFromCenterlines(centerlines, endRadii, &warnings);
+    if (labelId.empty())
+        return sim::network::networkFromCenterlines(centerlines, {}, &warnings);
+    // The CT the label came from (the segment step's input).
+    const auto& labelInputs = study.artifact(labelId).provenance.inputs;
+    std::optional<CtVolume> ct;
+    if (!labelInputs.empty() && study.hasArtifact(labelInputs.front()) &&
+        study.artifact(labelInputs.front()).kind == study::ArtifactKind::Image)
+        ct = study.loadImage(labelInputs.front());
+    return networkFromImages(centerlines, study.loadLabel(labelId), ct ? &*ct : nullptr, warnings, progress);
 }
 
 std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& study, const std::string& artifactId,

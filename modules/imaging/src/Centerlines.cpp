@@ -143,10 +143,11 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
     // has d = 0 in all of its voxels, and must still be much faster than around it). A crawl, far slower than any
     // lumen voxel, in the voxels touching the lumen, so that lumen voxels joined only across an edge or a corner
     // (26-connected) stay reachable by the 6-connected front; none farther out.
-    const float peak = *std::max_element(distance.data(), distance.data() + distance.size());
+    const double halfVoxel = 0.5 * geometry.spacing.minCoeff();
+    auto wallDistance = [&](int i, int j, int k) { return std::max(0.0, double(distance.at(i, j, k))) + halfVoxel; };
+    const double peak = *std::max_element(distance.data(), distance.data() + distance.size()) + halfVoxel;
     RealVolume speed = RealVolume::uninitialized(geometry);
     const double power = p.get("speed_power");
-    const double halfVoxel = 0.5 * geometry.spacing.minCoeff();
     constexpr float kCrawl = 1e-5f;
     const auto& d = geometry.dims;
     for (int k = 0; k < d[2]; ++k)
@@ -155,7 +156,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
             {
                 float value = 0.0f;
                 if (binary.at(i, j, k))
-                    value = float(std::pow((std::max(0.0f, distance.at(i, j, k)) + halfVoxel) / (peak + halfVoxel), power));
+                    value = float(std::pow(wallDistance(i, j, k) / peak, power));
                 else
                     for (int n = 0; n < 27 && value == 0.0f; ++n)
                     {
@@ -239,12 +240,14 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
                                                          timeAt(toIsChild ? voxelFrom : voxelTo));
         if (voxels.back() != (toIsChild ? voxelFrom : voxelTo))
             voxels.push_back(toIsChild ? voxelFrom : voxelTo);
-        // Thinning stops short of a rounded vessel end: at an endpoint, carry on up the arrival time while the
-        // lumen keeps at least 90 % of the end's radius (a cap's centre is where the full radius ends).
+        // Thinning stops short of a vessel end (a rounded cap; a two-voxel tip that steps diagonally loses
+        // millimetres): at an endpoint, carry on up the arrival time while the lumen keeps at least 90 % of the end's
+        // radius (a cap's centre is where the full radius ends), measured to the wall half a voxel beyond the wall
+        // voxels (a two-voxel tip is all wall voxels).
         const int child = toIsChild ? to : from;
         if (skeleton.degree(child) == 1 && !fromTo)
         {
-            const double endRadius = distance.at(voxels.front()[0], voxels.front()[1], voxels.front()[2]);
+            const double endRadius = wallDistance(voxels.front()[0], voxels.front()[1], voxels.front()[2]);
             std::vector<std::array<int, 3>> extension;
             std::array<int, 3> current = voxels.front();
             for (int guard = 0; guard < 1000; ++guard)
@@ -254,7 +257,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
                 {
                     const std::array<int, 3> next{current[0] + n % 3 - 1, current[1] + (n / 3) % 3 - 1, current[2] + n / 9 - 1};
                     if (geometry.contains(next[0], next[1], next[2]) && binary.at(next[0], next[1], next[2]) &&
-                        distance.at(next[0], next[1], next[2]) >= 0.9 * endRadius && timeAt(next) < kUnreached &&
+                        wallDistance(next[0], next[1], next[2]) >= 0.9 * endRadius && timeAt(next) < kUnreached &&
                         timeAt(next) > timeAt(best))
                         best = next;
                 }

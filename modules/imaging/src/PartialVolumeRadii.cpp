@@ -79,7 +79,8 @@ struct Owner
 };
 
 constexpr double kFitMargin = 0.1;       // the first fit: the middle 80 % between the clearances
-constexpr double kForkClearanceMm = 0.5; // the fit with the neighbours: this close to a fork
+constexpr double kEndClearanceMm = 0.5; // the fit with the neighbours: this close to a fork or a free end
+constexpr double kOverhangMm = 1.0;     // ... its tube 1 mm longer at both ends (its round caps off the voxels)
 
 Eigen::Vector3d pointAt(const std::vector<Eigen::Vector3d>& path, const std::vector<double>& arc, double at)
 {
@@ -145,108 +146,156 @@ double departure(const std::vector<Eigen::Vector3d>& path, const std::vector<dou
     return largest;
 }
 
-/// Refines each measured edge's radii with blurred-tube fits (BlurredTubeFit.h). First each tube alone, on the
-/// voxels of the middle 80 % between its clearances: sigma from the widest edge, then every edge with it. Then,
-/// twice over, each nearly straight tube again from 0.5 mm of its forks, its neighbours' fitted tubes filling the
-/// merged lumens there: twice the voxels of a short tip, whose radius a flow split takes cubed. The volume estimate
-/// stays where a fit fails or leaves it by more than a factor of two.
-void fitTubes(const CtVolume& ct, const SkeletonGraph& centerlines, const std::vector<std::vector<double>>& arcs,
-              const std::vector<double>& length, const std::vector<double>& lumen, const std::vector<double>& tube,
-              const std::vector<double>& lower, const std::vector<double>& upper,
-              const std::unordered_map<std::size_t, Owner>& owners, double blood,
-              const std::vector<TissueProfile>& tissue, std::vector<PartialVolumeRadius>& result)
+/// What one measuring pass knows of the tubes: the centerlines with their arc lengths (mm), the tubes' reach (mm),
+/// the voxels' owners, blood (HU), the tissue along each tube, and the clearances of pass 1 (mm).
+struct TubeVoxels
 {
-    const std::size_t edges = result.size();
-    std::vector<double> from(edges), to(edges);
-    for (std::size_t e = 0; e < edges; ++e)
-    {
-        const double margin = kFitMargin * (upper[e] - lower[e]);
-        from[e] = result[e].measured ? lower[e] + margin : 1.0, to[e] = result[e].measured ? upper[e] - margin : 0.0;
-    }
-    std::vector<detail::TubeSamples> samples = collectSamples(ct, owners, tissue, tube, from, to);
-    std::size_t widest = edges;
-    for (std::size_t e = 0; e < edges; ++e)
-        if (result[e].measured && (widest == edges || result[e].meanRadiusMm > result[widest].meanRadiusMm))
-            widest = e;
-    if (widest == edges)
-        return;
-    auto path = [&](std::size_t e) -> const std::vector<Eigen::Vector3d>& { return centerlines.edges[e].points; };
-    const detail::TubeFit reference =
-        detail::fitReferenceTube(samples[widest], path(widest), arcs[widest], from[widest], to[widest], blood,
-                                 result[widest].meanRadiusMm, tissue[widest].overall(), 0.5 * ct.geometry().spacing.x());
-    if (!reference.ok || !(reference.sigma > 0.05 && reference.sigma < 3.0))
-        return;
-    const double sigma = reference.sigma;
+    const CtVolume& ct;
+    const SkeletonGraph& centerlines;
+    const std::vector<std::vector<double>>& arcs;
+    const std::vector<double>& length;
+    const std::vector<double>& lumen; ///< the radius each tube was drawn with
+    const std::vector<double>& tube;
+    const std::vector<double>& lower;
+    const std::vector<double>& upper;
+    const std::unordered_map<std::size_t, Owner>& owners;
+    double blood;
+    const std::vector<TissueProfile>& tissue;
+};
 
-    std::vector<double> volumeRadius(edges);
-    for (std::size_t e = 0; e < edges; ++e)
-        volumeRadius[e] = result[e].meanRadiusMm;
-    std::vector<FittedLine> lines(edges);
-    std::vector<bool> fitted(edges, false);
-    auto fitThin = [&](std::size_t e, const detail::TubeSamples& s, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-        const detail::TubeFit fit = detail::fitThinTube(s, a, b, blood, result[e].meanRadiusMm, sigma);
-        const double mean = 0.5 * (fit.r1 + fit.r2);
-        if (!fit.ok || !(mean > 0.5 * volumeRadius[e] && mean < 2.0 * volumeRadius[e]))
+/// Refines the measured edges' radii with blurred-tube fits (BlurredTubeFit.h): first each tube alone on the
+/// voxels of the middle 80 % between its clearances (sigma from the widest edge, then every edge with it), then each
+/// nearly straight tube with its neighbours (refitWithNeighbours). The volume estimate stays where a fit fails or
+/// leaves it by more than a factor of two.
+class TubeFitter
+{
+public:
+    TubeFitter(const TubeVoxels& v, std::vector<PartialVolumeRadius>& result)
+        : v_(v), result_(result), edges_(result.size()), lines_(edges_), fitted_(edges_, false), models_(edges_)
+    {
+        for (const PartialVolumeRadius& r : result)
+            volumeRadius_.push_back(r.meanRadiusMm);
+    }
+
+    void run()
+    {
+        std::vector<double> from(edges_, 1.0), to(edges_, 0.0);
+        for (std::size_t e = 0; e < edges_; ++e)
+            if (result_[e].measured)
+            {
+                const double margin = kFitMargin * (v_.upper[e] - v_.lower[e]);
+                from[e] = v_.lower[e] + margin, to[e] = v_.upper[e] - margin;
+            }
+        const std::vector<detail::TubeSamples> samples = collectSamples(v_.ct, v_.owners, v_.tissue, v_.tube, from, to);
+        if (!fitSigma(samples, from, to))
             return;
-        lines[e] = {fit.start, fit.end, from[e], to[e], fit.r1, fit.r2};
-        storeFit(lines[e], length[e], result[e]);
-        fitted[e] = true;
-    };
-    for (std::size_t e = 0; e < edges; ++e)
-        if (result[e].measured)
-        {
-            const auto [a, b] = detail::lumenLine(samples[e], pointAt(path(e), arcs[e], from[e]),
-                                                  pointAt(path(e), arcs[e], to[e]), blood);
-            fitThin(e, samples[e], a, b);
-        }
+        for (std::size_t e = 0; e < edges_; ++e)
+            if (result_[e].measured)
+            {
+                const auto [a, b] = detail::lumenLine(samples[e], pointAt(path(e), v_.arcs[e], from[e]),
+                                                      pointAt(path(e), v_.arcs[e], to[e]), v_.blood);
+                fitThin(e, samples[e], from[e], to[e], a, b);
+            }
+        refitWithNeighbours();
+    }
 
-    // Near the forks: each tube with its neighbours (the tubes sharing a node with it) held as fitted.
-    std::vector<detail::TubeModel> models(edges);
-    auto updateModel = [&](std::size_t e) {
-        detail::TubeModel& m = models[e];
-        if (fitted[e])
-            m.axis = {lines[e].at(0.0), lines[e].at(length[e])}, m.arc = {0.0, length[e]};
+private:
+    const std::vector<Eigen::Vector3d>& path(std::size_t e) const { return v_.centerlines.edges[e].points; }
+
+    /// The blur's sigma from the widest measured edge (its centerline as the axis, sigma and tissue free).
+    bool fitSigma(const std::vector<detail::TubeSamples>& samples, const std::vector<double>& from,
+                  const std::vector<double>& to)
+    {
+        std::size_t widest = edges_;
+        for (std::size_t e = 0; e < edges_; ++e)
+            if (result_[e].measured && (widest == edges_ || volumeRadius_[e] > volumeRadius_[widest]))
+                widest = e;
+        if (widest == edges_)
+            return false;
+        const detail::TubeFit reference =
+            detail::fitReferenceTube(samples[widest], path(widest), v_.arcs[widest], from[widest], to[widest], v_.blood,
+                                     volumeRadius_[widest], v_.tissue[widest].overall(), 0.5 * v_.ct.geometry().spacing.x());
+        sigma_ = reference.sigma;
+        return reference.ok && sigma_ > 0.05 && sigma_ < 3.0;
+    }
+
+    /// A thin tube's fit on `s` with its straight axis from a (arc lo) to b (arc hi); kept when it agrees with the
+    /// volume estimate within a factor of two.
+    void fitThin(std::size_t e, const detail::TubeSamples& s, double lo, double hi, const Eigen::Vector3d& a,
+                 const Eigen::Vector3d& b)
+    {
+        const detail::TubeFit fit = detail::fitThinTube(s, a, b, v_.blood, result_[e].meanRadiusMm, sigma_);
+        const double mean = 0.5 * (fit.r1 + fit.r2);
+        if (!fit.ok || !(mean > 0.5 * volumeRadius_[e] && mean < 2.0 * volumeRadius_[e]))
+            return;
+        lines_[e] = {fit.start, fit.end, lo, hi, fit.r1, fit.r2};
+        storeFit(lines_[e], v_.length[e], result_[e]);
+        fitted_[e] = true;
+    }
+
+    /// Edge e's tube as its neighbours see it: the fitted line over the whole edge, or the centerline.
+    void updateModel(std::size_t e)
+    {
+        detail::TubeModel& m = models_[e];
+        if (fitted_[e])
+            m.axis = {lines_[e].at(0.0), lines_[e].at(v_.length[e])}, m.arc = {0.0, v_.length[e]};
         else
-            m.axis = path(e), m.arc = arcs[e];
-        m.startRadiusMm = result[e].measured ? result[e].startRadiusMm : lumen[e];
-        m.endRadiusMm = result[e].measured ? result[e].endRadiusMm : lumen[e];
-    };
-    std::vector<std::vector<std::size_t>> neighbours(edges);
-    for (std::size_t e = 0; e < edges; ++e)
-    {
-        updateModel(e);
-        for (std::size_t n = 0; n < edges; ++n)
-        {
-            const auto& a = centerlines.edges[e];
-            const auto& b = centerlines.edges[n];
-            if (n != e && (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to))
-                neighbours[e].push_back(n);
-        }
+            m.axis = path(e), m.arc = v_.arcs[e];
+        m.startRadiusMm = result_[e].measured ? result_[e].startRadiusMm : v_.lumen[e];
+        m.endRadiusMm = result_[e].measured ? result_[e].endRadiusMm : v_.lumen[e];
     }
-    for (std::size_t e = 0; e < edges; ++e)
+
+    /// Twice over, each tube whose centerline stays within a voxel of its fitted line, again on the voxels from
+    /// 0.5 mm of its ends (its line 1 mm longer, so its round caps stay off them), a voxel reading the largest
+    /// occupancy of the tube and its neighbours (the tubes sharing a node with it, held as fitted) where lumens
+    /// merge at a fork: near twice the voxels of a short tip, whose radius a flow split takes cubed.
+    void refitWithNeighbours()
     {
-        const auto& edge = centerlines.edges[e];
-        from[e] = centerlines.degree(edge.from) >= 3 ? kForkClearanceMm : lower[e];
-        to[e] = centerlines.degree(edge.to) >= 3 ? length[e] - kForkClearanceMm : upper[e];
-    }
-    samples = collectSamples(ct, owners, tissue, tube, from, to);
-    const double straightness = ct.geometry().spacing.maxCoeff();
-    for (int sweep = 0; sweep < 2; ++sweep)
-        for (std::size_t e = 0; e < edges; ++e)
+        const SkeletonGraph& graph = v_.centerlines;
+        std::vector<std::vector<std::size_t>> neighbours(edges_);
+        for (std::size_t e = 0; e < edges_; ++e)
         {
-            if (!fitted[e] || !(to[e] - from[e] > 2.0) ||
-                departure(path(e), arcs[e], lines[e], lower[e], upper[e]) > straightness)
-                continue;
-            detail::TubeSamples& s = samples[e];
-            s.floor.assign(s.points.size(), 0.0);
-            for (std::size_t k = 0; k < s.points.size(); ++k)
-                for (std::size_t n : neighbours[e])
-                    s.floor[k] = std::max(s.floor[k], models[n].occupancy(s.points[k], sigma));
-            const FittedLine previous = lines[e];
-            fitThin(e, s, previous.at(from[e]), previous.at(to[e]));
             updateModel(e);
+            for (std::size_t n = 0; n < edges_; ++n)
+            {
+                const auto& a = graph.edges[e];
+                const auto& b = graph.edges[n];
+                if (n != e && (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to))
+                    neighbours[e].push_back(n);
+            }
         }
-}
+        std::vector<double> from(edges_, kEndClearanceMm), to(edges_);
+        for (std::size_t e = 0; e < edges_; ++e)
+            to[e] = v_.length[e] - kEndClearanceMm;
+        std::vector<detail::TubeSamples> samples = collectSamples(v_.ct, v_.owners, v_.tissue, v_.tube, from, to);
+        const double straightness = v_.ct.geometry().spacing.maxCoeff();
+        for (int sweep = 0; sweep < 2; ++sweep)
+            for (std::size_t e = 0; e < edges_; ++e)
+            {
+                if (!fitted_[e] || !(to[e] - from[e] > 2.0) ||
+                    departure(path(e), v_.arcs[e], lines_[e], v_.lower[e], v_.upper[e]) > straightness)
+                    continue;
+                detail::TubeSamples& s = samples[e];
+                s.floor.assign(s.points.size(), 0.0);
+                for (std::size_t k = 0; k < s.points.size(); ++k)
+                    for (std::size_t n : neighbours[e])
+                        s.floor[k] = std::max(s.floor[k], models_[n].occupancy(s.points[k], sigma_));
+                const FittedLine previous = lines_[e];
+                const double lo = from[e] - kOverhangMm, hi = to[e] + kOverhangMm;
+                fitThin(e, s, lo, hi, previous.at(lo), previous.at(hi));
+                updateModel(e);
+            }
+    }
+
+    const TubeVoxels& v_;
+    std::vector<PartialVolumeRadius>& result_;
+    std::size_t edges_;
+    std::vector<double> volumeRadius_;
+    double sigma_ = 0.0;
+    std::vector<FittedLine> lines_;
+    std::vector<bool> fitted_;
+    std::vector<detail::TubeModel> models_;
+};
 
 /// One pass: every voxel within tube[e] + kShellMm of a centerline to its nearest one; the lumen volume of each
 /// tube (between the clearances, in two halves) from the contrast against its shell's tissue and the blood of the
@@ -351,7 +400,10 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
         r.endRadiusMm = std::clamp(r2 + slope * (length[e] - s2), 0.75 * r.meanRadiusMm, 1.33 * r.meanRadiusMm);
     }
     if (fitModel)
-        fitTubes(ct, centerlines, arcs, length, radius, tube, lower, upper, owners, blood, tissue, result);
+    {
+        const TubeVoxels voxels{ct, centerlines, arcs, length, radius, tube, lower, upper, owners, blood, tissue};
+        TubeFitter(voxels, result).run();
+    }
     return result;
 }
 

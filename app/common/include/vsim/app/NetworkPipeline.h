@@ -1,7 +1,8 @@
 #pragma once
 
 // The drug-delivery steps as the CLI and the workstation both run them: a study's vessel network (centerlines with
-// end radii from the cross-section measurements of the label), a network run added to the study, and its files.
+// end radii from the CT's partial-volume contrast, else the label's cross-sections), a network run added to the
+// study, and its files.
 
 #include "vsim/core/Parameters.h"
 #include "vsim/core/Progress.h"
@@ -20,9 +21,14 @@ namespace vsim::app {
 /// The vessel label the centerlines were extracted from (their provenance), else the newest label; "" if none.
 std::string labelOfCenterlines(const study::Study& study, const std::string& centerlinesId);
 
-/// One conical segment per centerline; end radii are the equivalent radii of the label's cross-sections one
-/// junction clearance in from the ends (imaging::measureVessels), lengths along the centerlines; loops of the
-/// skeleton broken at their thinnest segment, each named in `warnings`.
+/// One conical segment per centerline, lengths along the centerlines. End radii from the CT the label was segmented
+/// from (imaging::partialVolumeRadii) where `ct` is given and a segment is long enough between its clearances, else
+/// a line through the equivalent radii of the label's cross-sections away from junctions (imaging::measureVessels).
+/// Loops of the skeleton are broken at their thinnest segment, each named in `warnings`.
+VesselNetwork networkFromImages(const SkeletonGraph& centerlines, const LabelVolume& label, const CtVolume* ct,
+                                std::vector<std::string>& warnings, const Progress& progress = {});
+
+/// networkFromImages on the study's centerlines, the label they came from and that label's source image.
 VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& centerlinesId,
                                 std::vector<std::string>& warnings, const Progress& progress = {});
 
