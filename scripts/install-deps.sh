@@ -13,6 +13,8 @@ PACKAGES=(
     libvtk9-dev libinsighttoolkit5-dev libgdcm-dev libgdcm-tools
     # DICOM, linear algebra, JSON
     libdcmtk-dev dcmtk libeigen3-dev nlohmann-json3-dev zlib1g-dev
+    # the report's font (embedded in its PDFs)
+    fonts-dejavu-core
     # headless GUI tests and report checks
     xvfb xauth libgl1-mesa-dri mesa-utils poppler-utils
     # reference tools used by tests and benchmarks

@@ -3,7 +3,9 @@
 // what was wrong), 2 usage, 130 cancelled (Ctrl-C).
 
 #include "CliCommands.h"
+#include "DemoCommand.h"
 #include "NetworkCommands.h"
+#include "ReportCommand.h"
 #include "ValidateCommand.h"
 #include "WallCommands.h"
 #include "vsim/core/Error.h"
@@ -71,6 +73,15 @@ commands:
                                              (network-cylinder, network-cone, network-conservation,
                                              network-bifurcation, network-confluence); exit 0 only when every
                                              figure is within its tolerance
+  report --study <study.vsim> --out <report.pdf> [--sections aaa,stenosis,chemoembolization,smoke,runs]
+         [--page a4|letter] [--dicom-pdf <out.dcm>] [--anonymize] [--metrics-csv F] [--metrics-json F]
+         [--no-validation]
+                                             the clinical report (PDF): a section per analysis run, the analyses not
+                                             run, each run's parameters and its solver's validation; as DICOM
+                                             Encapsulated PDF in a new series of the study; the metrics as CSV / JSON
+  demo --out <dir> [--size 512x512x400]      the aaa, hepatic-tree and stenosis phantoms through the whole
+                                             pipeline with default parameters (the AAA wall at blood pressure, the
+                                             drug network from the hepatic root), each study with its report
   demo-study [--out <study.vsim>]            write the built-in demo study (default: ~/.local/share/VascuSim)
 )";
 
@@ -129,6 +140,10 @@ int main(int argc, char** argv)
             return vsim::cli::simulateFem(arguments, progress);
         if (command == "validate")
             return vsim::cli::validateSolvers(arguments, progress);
+        if (command == "report")
+            return vsim::cli::writeReport(arguments, progress);
+        if (command == "demo")
+            return vsim::cli::runDemo(arguments, progress);
         if (command == "demo-study")
             return vsim::cli::writeDemoStudy(arguments, progress);
         std::cerr << "unknown command '" << command << "'\n" << kUsage;

@@ -14,6 +14,7 @@
 
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 
@@ -161,11 +162,16 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
                                        const WallBackend& backend, const Progress& progress)
 {
     const TetMesh wall = study.loadTetMesh(wallId);
+    const auto started = std::chrono::steady_clock::now();
+    sim::fem::FemRunResult run;
     if (protocol == "thesis-rupture")
-        return sim::fem::runThesisRupture(wall, parameters, progress, backend.stepper);
-    if (protocol == "physiological")
-        return sim::fem::runPhysiological(wall, study.loadSkeleton(centerlinesId), parameters, progress, backend.stepper);
-    throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
+        run = sim::fem::runThesisRupture(wall, parameters, progress, backend.stepper);
+    else if (protocol == "physiological")
+        run = sim::fem::runPhysiological(wall, study.loadSkeleton(centerlinesId), parameters, progress, backend.stepper);
+    else
+        throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
+    run.metrics["wall_clock_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return run;
 }
 
 std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,

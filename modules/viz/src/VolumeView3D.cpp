@@ -1,5 +1,7 @@
 #include "vsim/viz/VolumeView3D.h"
 
+#include "FieldScene.h"
+
 #include "vsim/core/Error.h"
 #include "vsim/interop/VtkImage.h"
 #include "vsim/interop/VtkMesh.h"
@@ -39,24 +41,7 @@
 
 namespace vsim::viz {
 
-namespace {
-
-/// A mapper colouring its scalars blue (low) to red (high) over [low, high].
-vtkSmartPointer<vtkPolyDataMapper> fieldMapper(vtkPolyData* polyData, double low, double high)
-{
-    auto table = vtkSmartPointer<vtkLookupTable>::New();
-    table->SetHueRange(0.667, 0.0);
-    table->SetTableRange(low, high);
-    table->Build();
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(polyData);
-    mapper->SetLookupTable(table);
-    mapper->SetScalarRange(low, high);
-    mapper->ScalarVisibilityOn();
-    return mapper;
-}
-
-} // namespace
+using detail::fieldMapper;
 
 struct VolumeView3D::Scene
 {
@@ -181,12 +166,7 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
     }
     else
     {
-        vtkSmartPointer<vtkPolyData> polyData = interop::toVtk(surface);
-        auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
-        scalars->SetName(field.c_str());
-        for (double v : values->second)
-            scalars->InsertNextValue(v);
-        polyData->GetPointData()->SetScalars(scalars);
+        vtkSmartPointer<vtkPolyData> polyData = detail::fieldSurface(surface, field);
         vtkSmartPointer<vtkPolyDataMapper> mapper = fieldMapper(polyData, low, high);
         mapper->SetScalarModeToUsePointData();
         if (m_scene->fieldSurface)
@@ -202,11 +182,7 @@ void VolumeView3D::showLegend(vtkScalarsToColors* table, const QString& title)
 {
     if (!m_scene->legend)
     {
-        m_scene->legend = vtkSmartPointer<vtkScalarBarActor>::New();
-        m_scene->legend->SetNumberOfLabels(5);
-        m_scene->legend->SetWidth(0.12);
-        m_scene->legend->SetHeight(0.6);
-        m_scene->legend->GetTitleTextProperty()->SetFontSize(12);
+        m_scene->legend = detail::newLegend();
         renderer()->AddViewProp(m_scene->legend);
     }
     m_scene->legend->SetLookupTable(table);
@@ -220,45 +196,8 @@ void VolumeView3D::showFieldLines(const std::vector<std::vector<Eigen::Vector3d>
                                   double low, double high, double widthPixels, const QString& legendTitle,
                                   const std::vector<std::array<double, 2>>& radiiMm)
 {
-    if (values.size() != lines.size() || (!radiiMm.empty() && radiiMm.size() != lines.size()))
-        throw Error("field lines need one value (and radius pair) per line");
+    vtkSmartPointer<vtkPolyData> polyData = detail::fieldTubes(lines, values, radiiMm);
     clearFieldLines();
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
-    scalars->SetName("value");
-    auto radius = vtkSmartPointer<vtkDoubleArray>::New();
-    radius->SetName("radius");
-    for (std::size_t l = 0; l < lines.size(); ++l)
-    {
-        cells->InsertNextCell(vtkIdType(lines[l].size()));
-        for (std::size_t i = 0; i < lines[l].size(); ++i)
-        {
-            const Eigen::Vector3d& point = lines[l][i];
-            cells->InsertCellPoint(points->InsertNextPoint(point.x(), point.y(), point.z()));
-            if (!radiiMm.empty()) // linear along the line, as the conical segment
-            {
-                const double t = lines[l].size() > 1 ? double(i) / double(lines[l].size() - 1) : 0.0;
-                radius->InsertNextValue(radiiMm[l][0] + t * (radiiMm[l][1] - radiiMm[l][0]));
-            }
-        }
-        scalars->InsertNextValue(values[l]);
-    }
-    vtkSmartPointer<vtkPolyData> polyData = vtkSmartPointer<vtkPolyData>::New();
-    polyData->SetPoints(points);
-    polyData->SetLines(cells);
-    polyData->GetCellData()->SetScalars(scalars);
-    if (!radiiMm.empty()) // the vessels as tubes of their radius: clearer than wide lines, which software GL draws poorly
-    {
-        polyData->GetPointData()->SetScalars(radius);
-        auto tubes = vtkSmartPointer<vtkTubeFilter>::New();
-        tubes->SetInputData(polyData);
-        tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
-        tubes->SetNumberOfSides(12);
-        tubes->CappingOn();
-        tubes->Update();
-        polyData = tubes->GetOutput();
-    }
     vtkSmartPointer<vtkPolyDataMapper> mapper = fieldMapper(polyData, low, high);
     mapper->SetScalarModeToUseCellData();
     m_scene->fieldLines = vtkSmartPointer<vtkActor>::New();
@@ -489,13 +428,7 @@ void VolumeView3D::showAnteriorView(const Eigen::Vector3d& centre, double height
         height = 1.1 * geometry.spacing.cwiseProduct(Eigen::Vector3d(geometry.dims[0], geometry.dims[1], geometry.dims[2]))
                            .norm();
     }
-    vtkCamera* camera = renderer()->GetActiveCamera();
-    camera->ParallelProjectionOn();
-    camera->SetFocalPoint(centre.data());
-    const Eigen::Vector3d position = centre - Eigen::Vector3d(0.0, 1000.0, 0.0); // anterior is -y in LPS
-    camera->SetPosition(position.data());
-    camera->SetViewUp(0.0, 0.0, 1.0);
-    camera->SetParallelScale(0.5 * std::max(height, 1.0));
+    detail::lookFromFront(renderer()->GetActiveCamera(), centre, height);
     renderer()->ResetCameraClippingRange();
     update();
 }

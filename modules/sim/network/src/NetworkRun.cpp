@@ -6,6 +6,7 @@
 #include "vsim/sim/network/NetworkBuild.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -158,6 +159,7 @@ void addDefaultOutlets(VesselNetwork& network, const ParameterSet& p)
 
 NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progress)
 {
+    const auto started = std::chrono::steady_clock::now();
     const ParameterSet& p = setup.parameters;
     const TwoPhaseMixture fluid = networkMixture(p);
     NetworkRunResult r;
@@ -266,6 +268,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         first = std::min(first, time);
     r.metrics["first_arrival_s"] = first == kNever ? -1.0 : first;
     progress.report(1.0, "done");
+    r.metrics["wall_clock_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return r;
 }
 

@@ -42,6 +42,10 @@ std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& stu
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
                                const std::map<std::string, std::string>& source);
 
+/// How many of the best tip positions a network run keeps in the study (attributes tip_rank_<k>_node, _x_mm, _y_mm,
+/// _z_mm, _tumour_fraction, _depth).
+inline constexpr std::size_t kRankedTipsKept = 5;
+
 /// Adds the solved network ("Drug flow") with its per-segment fields to the study, the metrics as attributes and
 /// `source` (inputs, tip, tumour) in the provenance, the run's warnings and `moreWarnings`; returns its id. The
 /// study is not saved.

@@ -1,0 +1,85 @@
+#include "ReportCommand.h"
+
+#include "vsim/app/StudyReport.h"
+#include "vsim/core/Error.h"
+#include "vsim/report/EncapsulatedPdf.h"
+#include "vsim/report/MetricsExport.h"
+#include "vsim/report/PdfReport.h"
+
+#include <QGuiApplication>
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace vsim::cli {
+namespace {
+
+/// Fonts and painting need a QGuiApplication; the CLI starts one on the offscreen platform (no display needed).
+std::unique_ptr<QGuiApplication> guiApplication()
+{
+    if (QGuiApplication::instance())
+        return nullptr;
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char name[] = "vascusim-cli";
+    static char* argv[] = {name, nullptr};
+    return std::make_unique<QGuiApplication>(argc, argv);
+}
+
+std::set<std::string> sectionList(const std::string& text)
+{
+    std::set<std::string> sections;
+    std::istringstream stream(text);
+    for (std::string id; std::getline(stream, id, ',');)
+        if (!id.empty())
+            sections.insert(id);
+    return sections;
+}
+
+} // namespace
+
+int writeReport(const Arguments& arguments, const Progress& progress)
+{
+    const std::string bundle = arguments.option("study"), out = arguments.option("out");
+    if (bundle.empty() || out.empty())
+        throw Error("usage: vascusim-cli report --study <study.vsim> --out <report.pdf> [--sections "
+                    "aaa,stenosis,chemoembolization,smoke,runs] [--page a4|letter] [--dicom-pdf <out.dcm>] "
+                    "[--anonymize] [--metrics-csv <file>] [--metrics-json <file>] [--no-validation]");
+    const report::PageSize page = report::pageSizeFromName(arguments.option("page", "a4"));
+    const study::Study study = study::Study::open(bundle);
+    app::ReportOptions options;
+    options.anonymize = arguments.hasOption("anonymize");
+    options.validate = !arguments.hasOption("no-validation");
+    options.sections = sectionList(arguments.option("sections"));
+    const auto application = guiApplication();
+    const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
+    const QByteArray pdf = report::renderPdf(report, page);
+    report::writeText(std::string(pdf.constData(), std::size_t(pdf.size())), out);
+    nlohmann::json summary = {{"pdf", out}, {"bytes", pdf.size()}, {"anonymized", options.anonymize}};
+    if (arguments.hasOption("dicom-pdf"))
+    {
+        const std::string series =
+            report::writeEncapsulatedPdf(pdf, app::documentIdentity(study, options.anonymize), arguments.option("dicom-pdf"));
+        summary["dicom_pdf"] = arguments.option("dicom-pdf");
+        summary["series_instance_uid"] = series;
+    }
+    if (arguments.hasOption("metrics-csv"))
+        report::writeText(report::metricsCsv(report), arguments.option("metrics-csv"));
+    if (arguments.hasOption("metrics-json"))
+        report::writeText(report::metricsJson(report), arguments.option("metrics-json"));
+    nlohmann::json sections = nlohmann::json::array();
+    for (const report::Section& section : report.sections)
+        sections.push_back(section.id);
+    summary["sections"] = sections;
+    summary["not_run"] = report.notRun;
+    summary["metrics"] = report.metrics().size();
+    progress.report(1.0, "report written");
+    std::cout << summary.dump(2) << "\n";
+    return 0;
+}
+
+} // namespace vsim::cli

@@ -1,0 +1,193 @@
+#include "ReportSections.h"
+
+#include "ReportSupport.h"
+#include "vsim/core/Units.h"
+#include "vsim/sim/network/ConicalPipe.h"
+#include "vsim/viz/Snapshot.h"
+
+#include <algorithm>
+
+namespace vsim::app::detail {
+namespace {
+
+constexpr std::size_t kBranchRows = 60; // branches listed by drug flow; the rest summed in one line
+
+std::string fixed(double value, int decimals)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+/// The share (%) of the downstream tree's volume that the drug has filled over time: each segment fills linearly
+/// in time between entering and leaving (plug flow at a steady rate through a cone).
+report::Plot fillingPlot(const VesselNetwork& network)
+{
+    const auto& enter = network.segmentFields.at("fill_enter_s");
+    const auto& leave = network.segmentFields.at("fill_leave_s");
+    std::vector<double> volume(network.segments.size(), 0.0);
+    double total = 0.0, end = 0.0;
+    for (std::size_t s = 0; s < network.segments.size(); ++s)
+        if (enter[s] >= 0.0 && leave[s] >= enter[s])
+        {
+            const auto& segment = network.segments[s];
+            const double length = units::mmToM(segment.lengthMm);
+            volume[s] = sim::network::conicalVolume(units::mmToM(segment.startRadiusMm), units::mmToM(segment.endRadiusMm),
+                                                    length, length);
+            total += volume[s], end = std::max(end, leave[s]);
+        }
+    report::Plot plot;
+    plot.caption = "Filling of the tree downstream of the tip";
+    plot.xLabel = "Time from the start of the injection [s]";
+    plot.yLabel = "Volume filled by the drug [%]";
+    report::PlotSeries series{"filled", {}};
+    constexpr int kSamples = 200;
+    for (int i = 0; i <= kSamples && total > 0.0; ++i)
+    {
+        const double t = end * i / kSamples;
+        double filled = 0.0;
+        for (std::size_t s = 0; s < volume.size(); ++s)
+            if (volume[s] > 0.0)
+                filled += volume[s] * (leave[s] > enter[s] ? std::clamp((t - enter[s]) / (leave[s] - enter[s]), 0.0, 1.0)
+                                                           : (t >= leave[s] ? 1.0 : 0.0));
+        series.points.emplace_back(t, 100.0 * filled / total);
+    }
+    plot.series.push_back(series);
+    return plot;
+}
+
+/// Drug flow per branch, largest first; shares of `drugInjectedMlMin`.
+report::Table branchTable(const VesselNetwork& network, double drugInjectedMlMin)
+{
+    report::Table table;
+    table.caption = "Drug flow per branch (segments downstream of the tip, largest flow first)";
+    table.columns = {"Segment", "Nodes", "Radius [mm]", "Length [mm]", "Drug flow [ml/min]", "Share [%]", "Filled after [s]"};
+    const auto& drug = network.segmentFields.at("drug_flow_ml_min");
+    const auto& downstream = network.segmentFields.at("downstream");
+    const auto& leave = network.segmentFields.at("fill_leave_s");
+    std::vector<std::size_t> order;
+    for (std::size_t s = 0; s < network.segments.size(); ++s)
+        if (downstream[s] > 0.0)
+            order.push_back(s);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return drug[a] > drug[b]; });
+    const double injected = std::max(1e-300, drugInjectedMlMin);
+    for (std::size_t i = 0; i < order.size() && i < kBranchRows; ++i)
+    {
+        const std::size_t s = order[i];
+        const auto& segment = network.segments[s];
+        table.rows.push_back({std::to_string(s), std::to_string(segment.from) + " - " + std::to_string(segment.to),
+                              fixed(segment.startRadiusMm, 2) + " - " + fixed(segment.endRadiusMm, 2),
+                              fixed(segment.lengthMm, 1), report::formatMetric(drug[s]),
+                              fixed(100.0 * drug[s] / injected, 1),
+                              leave[s] >= 0.0 ? fixed(leave[s], 1) : std::string("never")});
+    }
+    if (order.size() > kBranchRows)
+        table.rows.push_back({"...", std::to_string(order.size() - kBranchRows) + " more", "", "", "", "", ""});
+    return table;
+}
+
+} // namespace
+
+std::optional<report::Section> drugSection(const study::Study& study, const ReportOptions& options,
+                                           std::vector<const study::Artifact*>& runs)
+{
+    const study::Artifact* run = newestRun(study, "simulate network");
+    if (!run)
+        return std::nullopt;
+    VesselNetwork network = study.loadNetwork(run->id);
+    report::Section section{"chemoembolization", "Chemoembolization: drug delivery through the hepatic arteries", {}};
+    const auto& source = run->provenance.parameters;
+    const auto tip = source.find("tip");
+    const auto tumour = source.find("tumour_mm");
+    const auto tumourLabel = source.find("tumour_label");
+    section.blocks.push_back(report::Paragraph{
+        "Catheter tip: " + (tip == source.end() ? std::string("the root of the tree") : tip->second) +
+        " (a node of the network, or a point x,y,z in mm, patient LPS). Tumour: " +
+        (tumour != source.end() ? "sphere x,y,z,radius " + tumour->second + " mm"
+                                : tumourLabel != source.end() ? "label " + tumourLabel->second : std::string("none given")) +
+        "."});
+    report::MetricTable injection{"Injection and filling", {}};
+    addMetrics(injection, *run,
+               {{"injection_rate_ml_min", "Injected mixture", "ml/min"},
+                {"injection_mass_rate_g_min", "Injected mass", "g/min"},
+                {"void_fraction", "Gas void fraction", "%", 100.0},
+                {"mixture_density_kg_m3", "Mixture density", "kg/m3"},
+                {"mixture_viscosity_mpa_s", "Mixture viscosity", "mPa s"},
+                {"tip_pressure_mmhg", "Pressure at the tip", "mmHg"},
+                {"first_arrival_s", "First outlet reached after", "s"},
+                {"last_arrival_s", "Last outlet reached after", "s"},
+                {"outlets", "Outlets downstream of the tip", ""},
+                {"max_reynolds", "Largest Reynolds number", ""}});
+    section.blocks.push_back(injection);
+    report::MetricTable targeting{"Targeting", {}};
+    addMetrics(targeting, *run,
+               {{"tumour_fraction", "Drug reaching the tumour", "%", 100.0},
+                {"non_target_fraction", "Drug reaching non-target liver", "%", 100.0},
+                {"tumour_outlets", "Outlets feeding the tumour", ""},
+                {"best_tip_fraction", "Tumour share at the best tip position", "%", 100.0}});
+    section.blocks.push_back(targeting);
+
+    report::Table ranking;
+    ranking.caption = "Candidate catheter tip positions, ranked by the drug share reaching the tumour";
+    ranking.columns = {"Rank", "Node", "Position x, y, z [mm]", "Tumour share [%]", "Depth [segments]"};
+    for (int k = 1;; ++k)
+    {
+        const std::string prefix = "tip_rank_" + std::to_string(k) + "_";
+        auto at = [&](const std::string& key) {
+            const auto found = run->attributes.find(prefix + key);
+            return found == run->attributes.end() ? std::string() : found->second;
+        };
+        if (at("node").empty())
+            break;
+        ranking.rows.push_back({std::to_string(k), at("node"),
+                                fixed(std::stod(at("x_mm")), 1) + ", " + fixed(std::stod(at("y_mm")), 1) + ", " +
+                                    fixed(std::stod(at("z_mm")), 1),
+                                fixed(100.0 * std::stod(at("tumour_fraction")), 1), at("depth")});
+    }
+    if (!ranking.rows.empty())
+        section.blocks.push_back(ranking);
+
+    report::MetricTable controls{"Two-phase drug against a pure liquid at the control points", {}};
+    addMetrics(controls, *run,
+               {{"control_A_drug_flow_two_phase_ml_min", "A: drug flow, two-phase", "ml/min"},
+                {"control_A_drug_flow_liquid_ml_min", "A: drug flow, pure liquid", "ml/min"},
+                {"control_A_drop_percent", "A: two-phase lower by (same injected rate)", "%"},
+                {"control_A_drop_same_pressure_percent", "A: two-phase lower by (same tip pressure)", "%"},
+                {"control_B_drug_flow_two_phase_ml_min", "B: drug flow, two-phase", "ml/min"},
+                {"control_B_drug_flow_liquid_ml_min", "B: drug flow, pure liquid", "ml/min"},
+                {"control_B_drop_percent", "B: two-phase lower by (same injected rate)", "%"},
+                {"control_B_drop_same_pressure_percent", "B: two-phase lower by (same tip pressure)", "%"}});
+    section.blocks.push_back(controls);
+    section.blocks.push_back(report::Paragraph{
+        "The drug flow is the liquid phase's volume flow, (1 - v) Q, with v the void fraction; the pure liquid is the "
+        "same injection with v = 0 (thesis ch. 6.4)."});
+
+    const auto injected = runMetric(*run, "injection_rate_ml_min", "", "");
+    const auto voidFraction = runMetric(*run, "void_fraction", "", "");
+    section.blocks.push_back(
+        branchTable(network, injected ? injected->value * (1.0 - (voidFraction ? voidFraction->value : 0.0)) : 0.0));
+    section.blocks.push_back(fillingPlot(network));
+    section.blocks.push_back(snapshotOrNote("The tree coloured by drug flow (ml/min), seen from the front", [&] {
+        std::vector<std::vector<Eigen::Vector3d>> lines;
+        std::vector<double> values;
+        std::vector<std::array<double, 2>> radii;
+        const auto& drug = network.segmentFields.at("drug_flow_ml_min");
+        for (std::size_t s = 0; s < network.segments.size(); ++s)
+        {
+            const auto& segment = network.segments[s];
+            lines.push_back(segment.pathMm.size() >= 2
+                                ? segment.pathMm
+                                : std::vector<Eigen::Vector3d>{network.nodes[std::size_t(segment.from)].positionMm,
+                                                               network.nodes[std::size_t(segment.to)].positionMm});
+            values.push_back(drug[s]);
+            radii.push_back({segment.startRadiusMm, segment.endRadiusMm});
+        }
+        const double high = drug.empty() ? 1.0 : *std::max_element(drug.begin(), drug.end());
+        return viz::snapshotTubes(lines, values, radii, {"drug flow [ml/min]", 0.0, high},
+                                  QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4));
+    }));
+    runs.push_back(run);
+    return section;
+}
+
+} // namespace vsim::app::detail

@@ -1,0 +1,87 @@
+#include "ReportSupport.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/viz/Snapshot.h"
+
+#include <cstdlib>
+
+namespace vsim::app::detail {
+
+const study::Artifact* newestRun(const study::Study& study, const std::string& command, const std::string& key,
+                                 const std::string& value)
+{
+    const study::Artifact* newest = nullptr;
+    for (const study::Artifact& artifact : study.artifacts()) // in the order they were added
+    {
+        if (artifact.damaged || artifact.provenance.command != command)
+            continue;
+        if (!key.empty())
+        {
+            const auto found = artifact.provenance.parameters.find(key);
+            if (found == artifact.provenance.parameters.end() || found->second != value)
+                continue;
+        }
+        newest = &artifact;
+    }
+    return newest;
+}
+
+std::optional<report::Metric> runMetric(const study::Artifact& run, const std::string& key, const std::string& label,
+                                        const std::string& unit, double scale)
+{
+    const auto found = run.attributes.find(key);
+    if (found == run.attributes.end())
+        return std::nullopt;
+    char* end = nullptr;
+    const double value = std::strtod(found->second.c_str(), &end);
+    if (end == found->second.c_str())
+        return std::nullopt;
+    return report::metric(key, label, value * scale, unit);
+}
+
+void addMetrics(report::MetricTable& table, const study::Artifact& run, const std::vector<MetricRow>& rows)
+{
+    for (const MetricRow& row : rows)
+        if (auto m = runMetric(run, row.key, row.label, row.unit, row.scale))
+            table.rows.push_back(*m);
+}
+
+report::Table parameterTable(const study::Artifact& run, const std::vector<ParameterSpec>& specs,
+                             const std::string& caption)
+{
+    report::Table table;
+    table.caption = caption;
+    table.columns = {"Parameter", "Value"};
+    const auto& recorded = run.provenance.parameters;
+    for (const ParameterSpec& spec : specs)
+    {
+        const auto found = recorded.find(spec.key);
+        if (found != recorded.end())
+            table.rows.push_back({spec.label, found->second + (spec.unit.empty() ? "" : " " + spec.unit)});
+    }
+    for (const auto& [key, value] : recorded)
+    {
+        bool declared = false;
+        for (const ParameterSpec& spec : specs)
+            declared = declared || spec.key == key;
+        if (!declared)
+            table.rows.push_back({key, value});
+    }
+    return table;
+}
+
+report::Block snapshotOrNote(const std::string& caption, const std::function<QImage()>& render)
+{
+    if (!viz::canRenderSnapshots())
+        return report::Paragraph{caption + ": not rendered (3D snapshots need a display; run under xvfb-run)."};
+    try
+    {
+        return report::Figure{caption, render()};
+    }
+    catch (const Error& error)
+    {
+        return report::Paragraph{caption + ": not rendered (" + error.what() + ")."};
+    }
+}
+
+} // namespace vsim::app::detail

@@ -1,0 +1,48 @@
+#pragma once
+
+// Helpers of the study report (StudyReport.cpp and its sections): run artifacts and their metrics, metric rows
+// with units, parameter tables from the declarations, offscreen snapshots that degrade to a note.
+
+#include "vsim/core/Parameters.h"
+#include "vsim/report/ReportModel.h"
+#include "vsim/study/Study.h"
+
+#include <QImage>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vsim::app::detail {
+
+/// The newest undamaged artifact made by `command` (e.g. "simulate fem") whose provenance parameter `key` is
+/// `value` when key is given; nullptr when there is none.
+const study::Artifact* newestRun(const study::Study& study, const std::string& command, const std::string& key = {},
+                                 const std::string& value = {});
+
+/// A metric of a run (its attributes) as a report row; `scale` converts it (100 for a fraction in %). Empty when
+/// the run has no such metric.
+std::optional<report::Metric> runMetric(const study::Artifact& run, const std::string& key, const std::string& label,
+                                        const std::string& unit, double scale = 1.0);
+
+/// Adds runMetric() rows that exist to `table`.
+struct MetricRow
+{
+    const char* key;
+    const char* label;
+    const char* unit;
+    double scale = 1.0;
+};
+void addMetrics(report::MetricTable& table, const study::Artifact& run, const std::vector<MetricRow>& rows);
+
+/// The run's parameters as a table: label, value with unit, from the declarations; keys not declared (the tip,
+/// the tumour, the backend) with their text as recorded.
+report::Table parameterTable(const study::Artifact& run, const std::vector<ParameterSpec>& specs,
+                             const std::string& caption);
+
+/// A picture for the report, or a paragraph saying why there is none (no display for the offscreen renderer, or
+/// the renderer's error).
+report::Block snapshotOrNote(const std::string& caption, const std::function<QImage()>& render);
+
+} // namespace vsim::app::detail

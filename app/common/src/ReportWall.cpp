@@ -1,0 +1,186 @@
+#include "ReportSections.h"
+
+#include "ReportSupport.h"
+#include "vsim/app/NetworkPipeline.h"
+#include "vsim/app/WallPipeline.h"
+#include "vsim/imaging/VesselMeasurements.h"
+#include "vsim/viz/Snapshot.h"
+
+#include <algorithm>
+
+namespace vsim::app::detail {
+namespace {
+
+constexpr double kRepairThresholdMenMm = 55.0;   // 5.5 cm (EVAR / open repair guidelines)
+constexpr double kRepairThresholdWomenMm = 50.0; // 5.0 cm
+constexpr double kReportedStenosisPercent = 40.0; // a narrowing from which the stenosis section is written
+
+/// The centerlines a wall run used (its second input), else the newest centerlines.
+std::string centerlinesOf(const study::Study& study, const study::Artifact& run)
+{
+    const auto& inputs = run.provenance.inputs;
+    if (inputs.size() > 1 && study.hasArtifact(inputs[1]) && !study.artifact(inputs[1]).damaged)
+        return inputs[1];
+    return study.newestArtifact(study::ArtifactKind::Skeleton, "centerline");
+}
+
+/// The diameter along the centerline of the segment with the largest maximum diameter (sections away from
+/// junctions), with the repair thresholds.
+report::Plot diameterPlot(const imaging::VesselMeasurements& measured)
+{
+    report::Plot plot;
+    plot.caption = "Diameter along the centerline (the segment of the maximum diameter)";
+    plot.xLabel = "Distance along the centerline [mm]";
+    plot.yLabel = "Equivalent diameter [mm]";
+    const auto widest = std::max_element(measured.segments.begin(), measured.segments.end(),
+                                         [](const auto& a, const auto& b) { return a.maxDiameterMm < b.maxDiameterMm; });
+    report::PlotSeries series{"diameter", {}};
+    if (widest != measured.segments.end())
+        for (const imaging::CrossSection& section : widest->sections)
+            if (!section.nearJunction && section.equivalentDiameterMm > 0.0)
+                series.points.emplace_back(section.arcLengthMm, section.equivalentDiameterMm);
+    plot.series.push_back(series);
+    plot.references = {{"repair threshold, men: 55 mm", kRepairThresholdMenMm},
+                       {"repair threshold, women: 50 mm", kRepairThresholdWomenMm}};
+    return plot;
+}
+
+std::string thresholdSentence(double diameterMm)
+{
+    const std::string versus = diameterMm >= kRepairThresholdMenMm ? "at or above both repair thresholds"
+                               : diameterMm >= kRepairThresholdWomenMm
+                                   ? "at or above the threshold for women (5.0 cm), below the one for men (5.5 cm)"
+                                   : "below both repair thresholds";
+    return "Repair is usually considered from a maximum diameter of 5.5 cm in men and 5.0 cm in women; this one is " +
+           versus + ".";
+}
+
+} // namespace
+
+std::optional<report::Section> aaaSection(const study::Study& study, const ReportOptions& options,
+                                          std::vector<const study::Artifact*>& runs, const Progress& progress)
+{
+    const study::Artifact* physiological = newestRun(study, "simulate fem", "protocol", "physiological");
+    const study::Artifact* rupture = newestRun(study, "simulate fem", "protocol", "thesis-rupture");
+    if (!physiological && !rupture)
+        return std::nullopt;
+    report::Section section{"aaa", "AAA rupture-risk review", {}};
+
+    // Geometry: the cross-sections of the centerlines the wall run used.
+    const study::Artifact& anyRun = physiological ? *physiological : *rupture;
+    const std::string centerlinesId = centerlinesOf(study, anyRun);
+    const std::string labelId = centerlinesId.empty() ? std::string() : labelOfCenterlines(study, centerlinesId);
+    report::MetricTable geometry{"Geometry (cross-sections perpendicular to the centerline)", {}};
+    if (!labelId.empty())
+    {
+        const imaging::VesselMeasurements measured =
+            imaging::measureVessels(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
+                                    ParameterSet(imaging::measurementParameters()), progress.subRange(0.0, 0.6));
+        geometry.rows.push_back(report::metric("max_diameter_mm", "Maximum diameter", measured.maxDiameterMm, "mm"));
+        geometry.rows.push_back(report::metric("max_caliper_mm", "Largest caliper width", measured.maxCaliperMm, "mm"));
+        section.blocks.push_back(geometry);
+        section.blocks.push_back(report::Paragraph{thresholdSentence(measured.maxDiameterMm)});
+        section.blocks.push_back(diameterPlot(measured));
+    }
+    else
+        section.blocks.push_back(report::Paragraph{"No centerlines: the maximum diameter was not measured."});
+
+    if (physiological)
+    {
+        report::MetricTable stress{"Wall stress at blood pressure (physiological protocol)", {}};
+        addMetrics(stress, *physiological,
+                   {{"pressure_kpa", "Blood pressure on the lumen", "kPa"},
+                    {"peak_von_mises_kpa", "Peak wall stress (von Mises)", "kPa"},
+                    {"peak_von_mises_x_mm", "Peak wall stress at x (patient LPS)", "mm"},
+                    {"peak_von_mises_y_mm", "Peak wall stress at y", "mm"},
+                    {"peak_von_mises_z_mm", "Peak wall stress at z", "mm"},
+                    {"peak_max_principal_kpa", "Peak largest principal stress", "kPa"},
+                    {"max_displacement_mm", "Largest wall displacement", "mm"},
+                    {"peak_rupture_index", "Peak wall rupture index (stress / strength)", ""},
+                    {"strength_at_peak_rupture_index_kpa", "Wall strength at the peak rupture index", "kPa"},
+                    {"peak_rupture_index_x_mm", "Peak rupture index at x (patient LPS)", "mm"},
+                    {"peak_rupture_index_y_mm", "Peak rupture index at y", "mm"},
+                    {"peak_rupture_index_z_mm", "Peak rupture index at z", "mm"}});
+        section.blocks.push_back(stress);
+        const auto& p = physiological->provenance.parameters;
+        auto value = [&](const char* key) {
+            const auto found = p.find(key);
+            return found == p.end() ? std::string("?") : found->second;
+        };
+        section.blocks.push_back(report::Paragraph{
+            "Strength model: Vande Geest et al. 2006 (wall strength from the local thrombus thickness, the local "
+            "diameter over the non-aneurysmal reference, family history and sex), with thrombus " +
+            value("thrombus_mm") + " mm, reference diameter " + value("reference_diameter_mm") + " mm, female " +
+            value("female") + ", family history " + value("family_history") +
+            ". A rupture index of 1 means the stress reaches the estimated strength."});
+        section.blocks.push_back(snapshotOrNote("Wall stress (von Mises, kPa) at blood pressure, seen from the front", [&] {
+            const TriangleMesh surface = frameSurface(study.loadTetMesh(physiological->id), "von_mises_kpa");
+            const auto& values = surface.pointFields.at("von_mises_kpa");
+            const double high = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
+            return viz::snapshotSurface(surface, "von_mises_kpa", {"von Mises [kPa]", 0.0, high},
+                                        QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4));
+        }));
+        runs.push_back(physiological);
+    }
+    else
+        section.blocks.push_back(report::Paragraph{"The physiological wall-stress run was not made for this study."});
+
+    if (rupture)
+    {
+        report::MetricTable tearing{"Tearing (thesis protocol: pressure ramp on the middle of the vessel)", {}};
+        addMetrics(tearing, *rupture,
+                   {{"tear_onset_pressure_mpa", "Pressure at the first tear (-1: none)", "MPa"},
+                    {"torn_elements", "Torn elements", ""},
+                    {"fracture_entropy", "Fracture entropy", "nats"},
+                    {"final_pressure_kpa", "Pressure at the end of the run", "kPa"}});
+        section.blocks.push_back(tearing);
+        runs.push_back(rupture);
+    }
+    else
+        section.blocks.push_back(report::Paragraph{"The thesis tearing protocol was not run for this study."});
+    progress.report(1.0, "AAA section");
+    return section;
+}
+
+std::optional<report::Section> stenosisSection(const study::Study& study, const Progress& progress)
+{
+    const std::string centerlinesId = study.newestArtifact(study::ArtifactKind::Skeleton, "centerline");
+    if (centerlinesId.empty())
+        return std::nullopt;
+    const std::string labelId = labelOfCenterlines(study, centerlinesId);
+    if (labelId.empty())
+        return std::nullopt;
+    const imaging::VesselMeasurements measured =
+        imaging::measureVessels(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
+                                ParameterSet(imaging::measurementParameters()), progress);
+    if (measured.worstStenosisSegment < 0)
+        return std::nullopt;
+    const imaging::SegmentMeasurements& worst = measured.segments[std::size_t(measured.worstStenosisSegment)];
+    if (worst.diameterStenosisPercent < kReportedStenosisPercent)
+        return std::nullopt;
+    report::Section section{"stenosis", "Stenosis / blockage", {}};
+    report::MetricTable geometry{"The narrowest segment (cross-sections perpendicular to the centerline)", {}};
+    geometry.rows = {report::metric("diameter_stenosis_percent", "Diameter stenosis", worst.diameterStenosisPercent, "%"),
+                     report::metric("area_stenosis_percent", "Area stenosis", worst.areaStenosisPercent, "%"),
+                     report::metric("reference_diameter_mm", "Reference diameter (median)", worst.referenceDiameterMm, "mm"),
+                     report::metric("minimal_diameter_mm", "Minimal diameter", worst.minimalDiameterMm, "mm"),
+                     report::metric("segment_length_mm", "Segment length", worst.lengthMm, "mm")};
+    section.blocks.push_back(geometry);
+    report::Plot plot;
+    plot.caption = "Diameter along the narrowest segment";
+    plot.xLabel = "Distance along the centerline [mm]";
+    plot.yLabel = "Equivalent diameter [mm]";
+    report::PlotSeries series{"diameter", {}};
+    for (const imaging::CrossSection& s : worst.sections)
+        if (!s.nearJunction && s.equivalentDiameterMm > 0.0)
+            series.points.emplace_back(s.arcLengthMm, s.equivalentDiameterMm);
+    plot.series.push_back(series);
+    plot.references = {{"reference diameter", worst.referenceDiameterMm}};
+    section.blocks.push_back(plot);
+    section.blocks.push_back(report::Paragraph{
+        "Blockage velocity ratios, the pressure drop, the velocity along the centerline and the wall pressure come "
+        "from a blood-flow run; this study has none (the blood-flow solver is not part of this version)."});
+    return section;
+}
+
+} // namespace vsim::app::detail

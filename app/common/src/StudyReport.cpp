@@ -1,0 +1,134 @@
+#include "vsim/app/StudyReport.h"
+
+#include "ReportSections.h"
+#include "ReportSupport.h"
+#include "vsim/core/Error.h"
+#include "vsim/core/Version.h"
+
+#include <algorithm>
+
+namespace vsim::app {
+namespace {
+
+using study::Artifact;
+
+std::string metadata(const study::Study& study, const std::string& key)
+{
+    const auto found = study.metadata().find(key);
+    return found == study.metadata().end() ? std::string() : found->second;
+}
+
+/// An attribute of the study's newest image (the CT series), e.g. "series_description".
+std::string imageAttribute(const study::Study& study, const std::string& key)
+{
+    const std::string image = study.newestArtifact(study::ArtifactKind::Image);
+    if (image.empty())
+        return {};
+    const auto& attributes = study.artifact(image).attributes;
+    const auto found = attributes.find(key);
+    return found == attributes.end() ? std::string() : found->second;
+}
+
+/// YYYYMMDD -> YYYY-MM-DD; other text unchanged.
+std::string readableDate(const std::string& date)
+{
+    if (date.size() == 8 && std::all_of(date.begin(), date.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return date.substr(0, 4) + "-" + date.substr(4, 2) + "-" + date.substr(6, 2);
+    return date;
+}
+
+report::ReportHeader header(const study::Study& study, bool anonymize)
+{
+    report::ReportHeader h;
+    h.anonymized = anonymize;
+    if (!anonymize)
+    {
+        h.patientName = metadata(study, "patient_name");
+        std::replace(h.patientName.begin(), h.patientName.end(), '^', ' ');
+        h.patientId = metadata(study, "patient_id");
+        h.patientBirthDate = readableDate(metadata(study, "patient_birth_date"));
+        h.institution = imageAttribute(study, "institution_name");
+    }
+    h.studyDate = readableDate(metadata(study, "study_date"));
+    h.studyDescription = metadata(study, "study_description");
+    h.seriesDescription = imageAttribute(study, "series_description");
+    h.softwareVersion = std::string("VascuSim ") + kVersion;
+    h.reportDate = study::utcTimestamp();
+    return h;
+}
+
+} // namespace
+
+std::vector<std::string> reportSectionIds()
+{
+    return {"aaa", "stenosis", "chemoembolization", "smoke", "runs"};
+}
+
+report::Report buildStudyReport(const study::Study& study, const ReportOptions& options, const Progress& progress)
+{
+    const std::vector<std::string> known = reportSectionIds();
+    for (const std::string& id : options.sections)
+        if (std::find(known.begin(), known.end(), id) == known.end())
+            throw Error("unknown report section '" + id + "'; sections: aaa, stenosis, chemoembolization, smoke, runs");
+    auto wanted = [&](const std::string& id) { return options.sections.empty() || options.sections.count(id) > 0; };
+
+    report::Report report;
+    report.header = header(study, options.anonymize);
+    std::vector<const Artifact*> runs;
+    if (wanted("aaa"))
+    {
+        if (auto section = detail::aaaSection(study, options, runs, progress.subRange(0.0, 0.4)))
+            report.sections.push_back(std::move(*section));
+        else
+            report.notRun.push_back("AAA rupture-risk review: the study has no wall-mechanics run (simulate fem).");
+    }
+    if (wanted("stenosis"))
+    {
+        if (auto section = detail::stenosisSection(study, progress.subRange(0.4, 0.6)))
+            report.sections.push_back(std::move(*section));
+        else
+            report.notRun.push_back("Stenosis / blockage: no segment of the centerlines narrows by 40 % or more, and "
+                                    "the study has no blood-flow run (velocity ratios, pressure drop).");
+    }
+    if (wanted("chemoembolization"))
+    {
+        if (auto section = detail::drugSection(study, options, runs))
+            report.sections.push_back(std::move(*section));
+        else
+            report.notRun.push_back("Chemoembolization: the study has no drug-delivery run (simulate network).");
+    }
+    if (wanted("smoke"))
+        report.notRun.push_back("Surgical smoke: the study has no smoke run (the smoke solver is not part of this "
+                                "version).");
+    if (wanted("runs") && !runs.empty())
+        report.sections.push_back(detail::runsSection(runs, options, progress.subRange(0.6, 1.0)));
+    progress.report(1.0, "report");
+    return report;
+}
+
+report::DocumentIdentity documentIdentity(const study::Study& study, bool anonymize)
+{
+    report::DocumentIdentity identity;
+    identity.studyInstanceUid = metadata(study, "study_instance_uid");
+    identity.studyDate = metadata(study, "study_date");
+    identity.studyTime = imageAttribute(study, "study_time");
+    identity.studyDescription = metadata(study, "study_description");
+    identity.softwareVersion = kVersion;
+    identity.identifiesPatient = !anonymize;
+    if (anonymize)
+    {
+        identity.patientName = "ANONYMIZED";
+        identity.patientId = "ANONYMIZED";
+        return identity;
+    }
+    identity.patientName = metadata(study, "patient_name");
+    identity.patientId = metadata(study, "patient_id");
+    identity.patientBirthDate = metadata(study, "patient_birth_date");
+    identity.patientSex = metadata(study, "patient_sex");
+    identity.accessionNumber = metadata(study, "accession_number");
+    identity.studyId = imageAttribute(study, "study_id");
+    identity.institution = imageAttribute(study, "institution_name");
+    return identity;
+}
+
+} // namespace vsim::app

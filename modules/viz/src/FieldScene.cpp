@@ -1,0 +1,115 @@
+#include "FieldScene.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/interop/VtkMesh.h"
+
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkLookupTable.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextProperty.h>
+#include <vtkTubeFilter.h>
+
+#include <algorithm>
+
+namespace vsim::viz::detail {
+
+vtkSmartPointer<vtkPolyDataMapper> fieldMapper(vtkPolyData* polyData, double low, double high)
+{
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetHueRange(0.667, 0.0);
+    table->SetTableRange(low, high);
+    table->Build();
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(polyData);
+    mapper->SetLookupTable(table);
+    mapper->SetScalarRange(low, high);
+    mapper->ScalarVisibilityOn();
+    return mapper;
+}
+
+vtkSmartPointer<vtkPolyData> fieldSurface(const TriangleMesh& surface, const std::string& field)
+{
+    const auto values = surface.pointFields.find(field);
+    if (values == surface.pointFields.end())
+        throw Error("the surface has no field '" + field + "' to colour by");
+    vtkSmartPointer<vtkPolyData> polyData = interop::toVtk(surface);
+    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+    scalars->SetName(field.c_str());
+    for (double v : values->second)
+        scalars->InsertNextValue(v);
+    polyData->GetPointData()->SetScalars(scalars);
+    return polyData;
+}
+
+vtkSmartPointer<vtkPolyData> fieldTubes(const std::vector<std::vector<Eigen::Vector3d>>& lines,
+                                        const std::vector<double>& values,
+                                        const std::vector<std::array<double, 2>>& radiiMm)
+{
+    if (values.size() != lines.size() || (!radiiMm.empty() && radiiMm.size() != lines.size()))
+        throw Error("field lines need one value (and radius pair) per line");
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+    scalars->SetName("value");
+    auto radius = vtkSmartPointer<vtkDoubleArray>::New();
+    radius->SetName("radius");
+    for (std::size_t l = 0; l < lines.size(); ++l)
+    {
+        cells->InsertNextCell(vtkIdType(lines[l].size()));
+        for (std::size_t i = 0; i < lines[l].size(); ++i)
+        {
+            const Eigen::Vector3d& point = lines[l][i];
+            cells->InsertCellPoint(points->InsertNextPoint(point.x(), point.y(), point.z()));
+            if (!radiiMm.empty()) // linear along the line, as the conical segment
+            {
+                const double t = lines[l].size() > 1 ? double(i) / double(lines[l].size() - 1) : 0.0;
+                radius->InsertNextValue(radiiMm[l][0] + t * (radiiMm[l][1] - radiiMm[l][0]));
+            }
+        }
+        scalars->InsertNextValue(values[l]);
+    }
+    auto polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(points);
+    polyData->SetLines(cells);
+    polyData->GetCellData()->SetScalars(scalars);
+    if (radiiMm.empty())
+        return polyData;
+    // The vessels as tubes of their radius: clearer than wide lines, which software GL draws poorly.
+    polyData->GetPointData()->SetScalars(radius);
+    auto tubes = vtkSmartPointer<vtkTubeFilter>::New();
+    tubes->SetInputData(polyData);
+    tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
+    tubes->SetNumberOfSides(12);
+    tubes->CappingOn();
+    tubes->Update();
+    return tubes->GetOutput();
+}
+
+vtkSmartPointer<vtkScalarBarActor> newLegend()
+{
+    auto legend = vtkSmartPointer<vtkScalarBarActor>::New();
+    legend->SetNumberOfLabels(5);
+    legend->SetWidth(0.12);
+    legend->SetHeight(0.6);
+    legend->GetTitleTextProperty()->SetFontSize(12);
+    return legend;
+}
+
+void lookFromFront(vtkCamera* camera, const Eigen::Vector3d& centre, double heightMm)
+{
+    camera->ParallelProjectionOn();
+    camera->SetFocalPoint(centre.data());
+    const Eigen::Vector3d position = centre - Eigen::Vector3d(0.0, 1000.0, 0.0); // anterior is -y in LPS
+    camera->SetPosition(position.data());
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->SetParallelScale(0.5 * std::max(heightMm, 1.0));
+}
+
+} // namespace vsim::viz::detail

@@ -1,0 +1,42 @@
+#pragma once
+
+// The pieces of a coloured 3D scene that the workstation's 3D view and the report's offscreen snapshots share:
+// a surface or a vessel tree carrying a field, its blue-to-red mapper, the colour legend, the anterior camera.
+
+#include "vsim/core/TriangleMesh.h"
+
+#include <Eigen/Core>
+
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkCamera;
+class vtkPolyData;
+class vtkPolyDataMapper;
+class vtkScalarBarActor;
+
+namespace vsim::viz::detail {
+
+/// A mapper colouring its scalars blue (low) to red (high) over [low, high].
+vtkSmartPointer<vtkPolyDataMapper> fieldMapper(vtkPolyData* polyData, double low, double high);
+
+/// The surface with its point field `field` as the point scalars. Throws vsim::Error when it has no such field.
+vtkSmartPointer<vtkPolyData> fieldSurface(const TriangleMesh& surface, const std::string& field);
+
+/// Polylines (mm) with one value each as cell scalars; with radii (mm, linear from the first point to the last, as
+/// a conical segment), tubes of those radii, else lines. Throws vsim::Error for mismatched sizes.
+vtkSmartPointer<vtkPolyData> fieldTubes(const std::vector<std::vector<Eigen::Vector3d>>& lines,
+                                        const std::vector<double>& values,
+                                        const std::vector<std::array<double, 2>>& radiiMm);
+
+/// A vertical colour legend with five labels.
+vtkSmartPointer<vtkScalarBarActor> newLegend();
+
+/// Looks at `centre` (mm) from the patient's front (anterior is -y in LPS), superior up, in parallel projection
+/// showing `heightMm`.
+void lookFromFront(vtkCamera* camera, const Eigen::Vector3d& centre, double heightMm);
+
+} // namespace vsim::viz::detail
