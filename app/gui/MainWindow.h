@@ -1,6 +1,7 @@
 #pragma once
 
 #include "DrugDeliveryPanel.h"
+#include "ReportExportDialog.h"
 #include "StudyDocument.h"
 #include "TaskRunner.h"
 #include "vsim/core/ImageVolume.h"
@@ -88,6 +89,12 @@ public:
     /// the outlets and the filling player. False without centerlines or for malformed input.
     bool simulateDrugDelivery(const DrugDeliveryRequest& request);
     DrugDeliveryPanel* drugDeliveryPanel() const { return m_drugPanel; }
+    /// Writes the study's report in the background (File > Export Report): the PDF, and beside it the DICOM
+    /// Encapsulated PDF and the metrics when asked; 3D snapshots are rendered on the GUI thread. False without a
+    /// study, without a path, or while a task runs.
+    bool exportReport(const ReportExportRequest& request);
+    /// File > Export Report: the dialog, then exportReport().
+    void showReportExportDialog();
     ParameterSet& networkParameters() { return m_networkParameters; }
     ParameterSet& wallMeshParameters() { return m_wallMeshParameters; }
     ParameterSet& femParameters() { return m_femParameters; }

@@ -53,6 +53,9 @@ void MainWindow::createMenus()
             saveStudyAs(bundle.endsWith(".vsim") ? bundle : bundle + ".vsim");
     });
     file->addSeparator();
+    m_documentActions << file->addAction(tr("Export &Report..."), QKeySequence(tr("Ctrl+R")), this,
+                                         &MainWindow::showReportExportDialog);
+    file->addSeparator();
     file->addAction(tr("&Close Window"), QKeySequence::Close, this, &QWidget::close);
     file->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::closeAllWindows);
 

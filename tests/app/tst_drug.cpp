@@ -2,7 +2,8 @@
 // Skeleton & Centerlines, then Drug > Drug Delivery from the root with the phantom's tumour in the background: the
 // solved network is added (undoable, with provenance and metrics), the 3D view colours the tree by drug flow with
 // its legend, the Drug Delivery dock lists the outlets, and moving the filling player draws virtual tubelets in
-// the 3D view and the 2D projection. Malformed input and a study without centerlines are refused with a message.
+// the 3D view and the 2D projection; File > Export Report writes the PDF, the DICOM instance and the metrics.
+// Malformed input and a study without centerlines are refused with a message.
 
 #include "DicomFixtures.h"
 #include "DrugDeliveryPanel.h"
@@ -13,10 +14,13 @@
 #include "vsim/dicom/PhantomModel.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QFile>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTableWidget>
+
+#include <fstream>
 
 namespace fs = std::filesystem;
 using namespace vsim;
@@ -94,6 +98,24 @@ private slots:
         QCOMPARE(QString::fromStdString(picked.provenance.parameters.at("tip")), panel->request().tip);
         qInfo("tumour share from the root %.3f, from the picked best tip %s", first, picked.attributes.at("tumour_fraction").c_str());
         QVERIFY(std::stod(picked.attributes.at("tumour_fraction")) > first);
+
+        // File > Export Report in the background, the tree's snapshot rendered on the GUI thread: the PDF with the
+        // chemoembolization section, the DICOM instance and the metrics beside it.
+        const fs::path reports = test::freshFolder("gui-drug", "report");
+        const QString pdf = QString::fromStdString((reports / "drug.pdf").string());
+        QVERIFY(window.exportReport({pdf, report::PageSize::Letter, false, true, true}));
+        QVERIFY(vsim::test::waitForTask(window));
+        QCOMPARE(failed.count(), 0);
+        QFile written(pdf);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        const QByteArray bytes = written.readAll();
+        QVERIFY(bytes.startsWith("%PDF"));
+        QVERIFY2(bytes.size() > 50000, "the PDF holds the tree's snapshot"); // text alone is about 40 kB
+        QVERIFY(fs::exists(reports / "drug.dcm"));
+        QVERIFY(fs::exists(reports / "drug-metrics.csv") && fs::exists(reports / "drug-metrics.json"));
+        std::ifstream metrics(reports / "drug-metrics.json");
+        const std::string text((std::istreambuf_iterator<char>(metrics)), std::istreambuf_iterator<char>());
+        QVERIFY(text.find("\"tumour_fraction\"") != std::string::npos);
 
         const std::size_t before = window.document().study().artifacts().size();
         window.document().undoStack()->undo();

@@ -171,7 +171,7 @@ std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunRes
     const std::string id = study.addNetwork(run.network, "Drug flow", provenance, warnings);
     std::map<std::string, std::string> attributes;
     for (const auto& [key, value] : run.metrics)
-        attributes[key] = numberText(value);
+        attributes[key] = preciseNumberText(value);
     // The best tip positions, for the report.
     for (std::size_t i = 0; i < run.ranking.size() && i < kRankedTipsKept; ++i)
     {
@@ -179,10 +179,10 @@ std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunRes
         const Eigen::Vector3d& p = run.network.nodes[std::size_t(c.node)].positionMm;
         const std::string prefix = "tip_rank_" + std::to_string(i + 1) + "_";
         attributes[prefix + "node"] = std::to_string(c.node);
-        attributes[prefix + "x_mm"] = numberText(p.x());
-        attributes[prefix + "y_mm"] = numberText(p.y());
-        attributes[prefix + "z_mm"] = numberText(p.z());
-        attributes[prefix + "tumour_fraction"] = numberText(c.tumourFraction);
+        attributes[prefix + "x_mm"] = preciseNumberText(p.x());
+        attributes[prefix + "y_mm"] = preciseNumberText(p.y());
+        attributes[prefix + "z_mm"] = preciseNumberText(p.z());
+        attributes[prefix + "tumour_fraction"] = preciseNumberText(c.tumourFraction);
         attributes[prefix + "depth"] = std::to_string(c.depth);
     }
     study.setArtifactAttributes(id, attributes);

@@ -167,7 +167,7 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
     section.blocks.push_back(
         branchTable(network, injected ? injected->value * (1.0 - (voidFraction ? voidFraction->value : 0.0)) : 0.0));
     section.blocks.push_back(fillingPlot(network));
-    section.blocks.push_back(snapshotOrNote("The tree coloured by drug flow (ml/min), seen from the front", [&] {
+    section.blocks.push_back(snapshotOrNote("The tree coloured by drug flow (ml/min), seen from the front", options, [&] {
         std::vector<std::vector<Eigen::Vector3d>> lines;
         std::vector<double> values;
         std::vector<std::array<double, 2>> radii;

@@ -70,13 +70,14 @@ report::Table parameterTable(const study::Artifact& run, const std::vector<Param
     return table;
 }
 
-report::Block snapshotOrNote(const std::string& caption, const std::function<QImage()>& render)
+report::Block snapshotOrNote(const std::string& caption, const ReportOptions& options,
+                             const std::function<QImage()>& render)
 {
     if (!viz::canRenderSnapshots())
         return report::Paragraph{caption + ": not rendered (3D snapshots need a display; run under xvfb-run)."};
     try
     {
-        return report::Figure{caption, render()};
+        return report::Figure{caption, options.renderSnapshot ? options.renderSnapshot(render) : render()};
     }
     catch (const Error& error)
     {

@@ -3,6 +3,7 @@
 // Helpers of the study report (StudyReport.cpp and its sections): run artifacts and their metrics, metric rows
 // with units, parameter tables from the declarations, offscreen snapshots that degrade to a note.
 
+#include "vsim/app/StudyReport.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/report/ReportModel.h"
 #include "vsim/study/Study.h"
@@ -41,8 +42,9 @@ void addMetrics(report::MetricTable& table, const study::Artifact& run, const st
 report::Table parameterTable(const study::Artifact& run, const std::vector<ParameterSpec>& specs,
                              const std::string& caption);
 
-/// A picture for the report, or a paragraph saying why there is none (no display for the offscreen renderer, or
-/// the renderer's error).
-report::Block snapshotOrNote(const std::string& caption, const std::function<QImage()>& render);
+/// A picture for the report (rendered through options.renderSnapshot when set), or a paragraph saying why there is
+/// none (no display for the offscreen renderer, or the renderer's error).
+report::Block snapshotOrNote(const std::string& caption, const ReportOptions& options,
+                             const std::function<QImage()>& render);
 
 } // namespace vsim::app::detail

@@ -194,7 +194,7 @@ std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, c
     const std::string id = study.addTetMesh(run.frames.back(), "Wall stress (" + protocol + ")", provenance, warnings);
     std::map<std::string, std::string> attributes;
     for (const auto& [key, value] : run.metrics)
-        attributes[key] = numberText(value);
+        attributes[key] = preciseNumberText(value);
     study.setArtifactAttributes(id, attributes);
     return id;
 }

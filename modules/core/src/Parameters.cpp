@@ -110,4 +110,12 @@ std::string numberText(double value)
     return text.str();
 }
 
+std::string preciseNumberText(double value)
+{
+    std::ostringstream text;
+    text.precision(15);
+    text << value;
+    return text.str();
+}
+
 } // namespace vsim

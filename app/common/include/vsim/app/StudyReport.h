@@ -10,6 +10,9 @@
 #include "vsim/report/ReportModel.h"
 #include "vsim/study/Study.h"
 
+#include <QImage>
+
+#include <functional>
 #include <set>
 #include <string>
 
@@ -24,6 +27,9 @@ struct ReportOptions
     std::set<std::string> sections; ///< empty: every section the study can fill; else these (reportSectionIds())
     bool validate = true;           ///< run the validation cases of the solvers reported (a few seconds)
     int snapshotPixels = 2000;      ///< width of the 3D snapshots (print resolution over the text width)
+    /// Runs a snapshot's rendering and returns the picture; empty: right here. The workstation renders on its GUI
+    /// thread (OpenGL) while the report is built in the background.
+    std::function<QImage(const std::function<QImage()>&)> renderSnapshot;
 };
 
 /// Builds the report of `study`. Throws vsim::Error for an unknown section id.

@@ -55,5 +55,8 @@ private:
 
 /// The text a number is recorded in (provenance, artifact attributes, CLI messages): the default stream form.
 std::string numberText(double value);
+/// A number as text with 15 significant digits, for results kept as text (run metrics in a study's attributes):
+/// it reads back to the value within 1e-15.
+std::string preciseNumberText(double value);
 
 } // namespace vsim

@@ -1,0 +1,87 @@
+#include "MainWindow.h"
+
+#include "ReportExportDialog.h"
+#include "vsim/app/StudyReport.h"
+#include "vsim/report/EncapsulatedPdf.h"
+#include "vsim/report/MetricsExport.h"
+
+#include <QApplication>
+#include <QFileInfo>
+#include <QStatusBar>
+#include <QThread>
+
+namespace vsim::gui {
+namespace {
+
+/// Runs a snapshot's OpenGL rendering on the GUI thread and waits for the picture (the report is built in the
+/// background; the 3D views' contexts live on the GUI thread).
+QImage renderOnGuiThread(const std::function<QImage()>& render)
+{
+    if (QThread::currentThread() == qApp->thread())
+        return render();
+    QImage image;
+    QString failure;
+    QMetaObject::invokeMethod(
+        qApp,
+        [&] {
+            try
+            {
+                image = render();
+            }
+            catch (const std::exception& error)
+            {
+                failure = QString::fromUtf8(error.what());
+            }
+        },
+        Qt::BlockingQueuedConnection);
+    if (!failure.isEmpty())
+        throw Error(failure.toStdString());
+    return image;
+}
+
+/// <folder>/<name><suffix> beside the PDF.
+std::string beside(const QString& pdf, const QString& suffix)
+{
+    const QFileInfo info(pdf);
+    return (info.absolutePath() + "/" + info.completeBaseName() + suffix).toStdString();
+}
+
+} // namespace
+
+void MainWindow::showReportExportDialog()
+{
+    if (!m_document.hasStudy())
+        return;
+    const QString suggested = QString::fromStdString(
+        (m_document.study().bundlePath().parent_path() / (m_document.study().name() + "-report.pdf")).string());
+    ReportExportDialog dialog(suggested, this);
+    if (dialog.exec() == QDialog::Accepted)
+        exportReport(dialog.request());
+}
+
+bool MainWindow::exportReport(const ReportExportRequest& request)
+{
+    if (!m_document.hasStudy() || request.pdf.isEmpty())
+        return false;
+    app::ReportOptions options;
+    options.anonymize = request.anonymize;
+    options.renderSnapshot = renderOnGuiThread;
+    return m_tasks.run(
+        tr("Report"),
+        [this, request, options](const Progress& progress) {
+            const study::Study& study = m_document.study();
+            const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
+            const QByteArray pdf = report::renderPdf(report, request.page);
+            report::writeText(std::string(pdf.constData(), std::size_t(pdf.size())), request.pdf.toStdString());
+            if (request.dicom)
+                report::writeEncapsulatedPdf(pdf, app::documentIdentity(study, request.anonymize), beside(request.pdf, ".dcm"));
+            if (request.metrics)
+            {
+                report::writeText(report::metricsCsv(report), beside(request.pdf, "-metrics.csv"));
+                report::writeText(report::metricsJson(report), beside(request.pdf, "-metrics.json"));
+            }
+        },
+        [this, request] { statusBar()->showMessage(tr("Report written to %1").arg(request.pdf), 8000); });
+}
+
+} // namespace vsim::gui

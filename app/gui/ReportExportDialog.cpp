@@ -1,0 +1,52 @@
+#include "ReportExportDialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPushButton>
+
+namespace vsim::gui {
+
+ReportExportDialog::ReportExportDialog(const QString& suggestedPdf, QWidget* parent) : QDialog(parent)
+{
+    setWindowTitle(tr("Export Report"));
+    m_path = new QLineEdit(suggestedPdf, this);
+    auto* browse = new QPushButton(tr("Browse..."), this);
+    connect(browse, &QPushButton::clicked, this, [this] {
+        const QString file = QFileDialog::getSaveFileName(this, tr("Report"), m_path->text(), tr("PDF (*.pdf)"));
+        if (!file.isEmpty())
+            m_path->setText(file.endsWith(".pdf", Qt::CaseInsensitive) ? file : file + ".pdf");
+    });
+    auto* pathRow = new QHBoxLayout;
+    pathRow->addWidget(m_path, 1);
+    pathRow->addWidget(browse);
+    m_page = new QComboBox(this);
+    m_page->addItem(tr("A4"), int(report::PageSize::A4));
+    m_page->addItem(tr("Letter"), int(report::PageSize::Letter));
+    m_anonymize = new QCheckBox(tr("Anonymize (no patient name, ID, birth date or institution)"), this);
+    m_dicom = new QCheckBox(tr("Also as DICOM Encapsulated PDF (a new series of the study)"), this);
+    m_metrics = new QCheckBox(tr("Also the metrics as CSV and JSON"), this);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* form = new QFormLayout(this);
+    form->addRow(tr("PDF file:"), pathRow);
+    form->addRow(tr("Paper:"), m_page);
+    form->addRow(m_anonymize);
+    form->addRow(m_dicom);
+    form->addRow(m_metrics);
+    form->addRow(buttons);
+}
+
+ReportExportRequest ReportExportDialog::request() const
+{
+    return {m_path->text(), report::PageSize(m_page->currentData().toInt()), m_anonymize->isChecked(),
+            m_dicom->isChecked(), m_metrics->isChecked()};
+}
+
+} // namespace vsim::gui

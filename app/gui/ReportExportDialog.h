@@ -1,0 +1,41 @@
+#pragma once
+
+// File > Export Report: where the PDF goes, the paper, anonymization, and whether a DICOM Encapsulated PDF and the
+// metrics (CSV, JSON) go beside it.
+
+#include "vsim/report/PdfReport.h"
+
+#include <QDialog>
+#include <QString>
+
+class QCheckBox;
+class QComboBox;
+class QLineEdit;
+
+namespace vsim::gui {
+
+struct ReportExportRequest
+{
+    QString pdf;                                   ///< the PDF's path; the DICOM and metrics files go beside it
+    report::PageSize page = report::PageSize::A4;
+    bool anonymize = false;
+    bool dicom = false;   ///< <name>.dcm: an Encapsulated PDF in a new series of the study
+    bool metrics = false; ///< <name>-metrics.csv and <name>-metrics.json
+};
+
+class ReportExportDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    ReportExportDialog(const QString& suggestedPdf, QWidget* parent = nullptr);
+    ReportExportRequest request() const;
+
+private:
+    QLineEdit* m_path = nullptr;
+    QComboBox* m_page = nullptr;
+    QCheckBox* m_anonymize = nullptr;
+    QCheckBox* m_dicom = nullptr;
+    QCheckBox* m_metrics = nullptr;
+};
+
+} // namespace vsim::gui

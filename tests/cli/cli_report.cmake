@@ -1,0 +1,41 @@
+# The clinical report on the demo studies (issue 7): `vascusim-cli demo` runs the aaa, hepatic-tree and stenosis
+# phantoms through the pipeline at full size and writes each study's report; check_report.py reads them as a user
+# would (pdftotext, pdftoppm, dcmdump). Then an anonymized report, Letter paper, and bad input refused.
+include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
+
+run_cli(0 demo demo --out ${WORK}/demo)
+foreach(case aaa hepatic-tree stenosis)
+    set(folder ${WORK}/demo/${case})
+    set(extra)
+    if(case STREQUAL "hepatic-tree")
+        set(extra --run-metrics ${folder}/network-run/metrics.json)
+        run_cli(0 anonymous report --study ${folder}/${case}.vsim --out ${WORK}/anonymous.pdf --dicom-pdf ${WORK}/anonymous.dcm
+                --anonymize --page letter --no-validation)
+        list(APPEND extra --anonymized ${WORK}/anonymous.pdf ${WORK}/anonymous.dcm)
+    endif()
+    execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/check_report.py ${folder} ${folder}/${case}.vsim ${extra}
+                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message(STATUS "${out}")
+    if(NOT code EQUAL 0)
+        message(FATAL_ERROR "report of ${case}: ${err}")
+    endif()
+endforeach()
+
+# Which sections each study got, and what it says was not run.
+file(READ ${WORK}/demo/aaa/metrics.json aaa)
+file(READ ${WORK}/demo/stenosis/metrics.json stenosis)
+if(NOT aaa MATCHES "\"section\": \"aaa\"" OR NOT aaa MATCHES "peak_rupture_index" OR NOT stenosis MATCHES "diameter_stenosis_percent"
+   OR NOT stenosis MATCHES "no wall-mechanics run")
+    message(FATAL_ERROR "demo reports: the AAA or stenosis section is missing\n${aaa}\n${stenosis}")
+endif()
+execute_process(COMMAND pdfinfo ${WORK}/anonymous.pdf OUTPUT_VARIABLE info)
+if(NOT info MATCHES "612 x 792")
+    message(FATAL_ERROR "--page letter did not give Letter pages:\n${info}")
+endif()
+
+run_cli(1 section report --study ${WORK}/demo/aaa/aaa.vsim --out ${WORK}/x.pdf --sections aaa,bogus)
+run_cli(1 page report --study ${WORK}/demo/aaa/aaa.vsim --out ${WORK}/x.pdf --page a5)
+run_cli(1 nostudy report --study ${WORK}/missing.vsim --out ${WORK}/x.pdf)
+if(NOT section MATCHES "unknown report section 'bogus'" OR NOT page MATCHES "unknown page size 'a5'" OR NOT nostudy MATCHES "study")
+    message(FATAL_ERROR "bad report input must be refused with a message:\n${section}\n${page}\n${nostudy}")
+endif()
