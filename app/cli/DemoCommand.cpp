@@ -87,7 +87,9 @@ int runDemo(const Arguments& arguments, const Progress& progress)
         if (kind == "aaa")
         {
             step(meshWall, {"wall", "--study", study}, stage(0.55, 0.6));
-            step(simulateFem, {"fem", "--study", study, "--protocol", "physiological", "--backend", "auto"},
+            step(simulateFem,
+                 {"fem", "--study", study, "--protocol", "physiological", "--backend", "auto", "--out",
+                  (folder / "wall-run").string()},
                  stage(0.6, 0.85));
         }
         if (kind == "hepatic-tree")

@@ -4,7 +4,9 @@ PDF's text with its unit; the numbers equal the runs' own metrics (within the 4 
 the same rows; pdftoppm renders every page; the DICOM Encapsulated PDF has the study's Study Instance UID in a new
 series. With --anonymized: no patient identifier of the study in the PDF text nor in the DICOM.
 
-usage: check_report.py CASE_FOLDER STUDY_BUNDLE [--anonymized PDF DCM] [--run-metrics FILE]"""
+The 3D snapshots (--figures N) are pictures in the PDF when there is a display, else the report says why not.
+
+usage: check_report.py CASE_FOLDER STUDY_BUNDLE [--figures N] [--anonymized PDF DCM] [--run-metrics FILE]"""
 
 import csv
 import json
@@ -79,6 +81,16 @@ def main():
     rows = list(csv.DictReader(open(os.path.join(folder, "metrics.csv"))))
     if [(r["section"], r["key"], r["text"]) for r in rows] != [(m["section"], m["key"], m["text"]) for m in report["metrics"]]:
         fail("metrics.csv and metrics.json differ")
+
+    # The 3D snapshots: pictures with a display (xvfb-run), a note without.
+    figures = int(sys.argv[sys.argv.index("--figures") + 1]) if "--figures" in sys.argv else 0
+    listed = subprocess.run(["pdfimages", "-list", pdf], check=True, capture_output=True, text=True).stdout
+    images = len(listed.splitlines()) - 2
+    if os.environ.get("DISPLAY"):
+        if images != figures:
+            fail(f"{images} pictures in the PDF, expected {figures} snapshots")
+    elif figures and text.count("not rendered (3D snapshots need a display") != figures:
+        fail("without a display the report must say that its snapshots were not rendered")
 
     # Every page renders.
     pages = pages_of(pdf)

@@ -76,8 +76,8 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
         const imaging::VesselMeasurements measured =
             imaging::measureVessels(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
                                     ParameterSet(imaging::measurementParameters()), progress.subRange(0.0, 0.6));
-        geometry.rows.push_back(report::metric("max_diameter_mm", "Maximum diameter", measured.maxDiameterMm, "mm"));
-        geometry.rows.push_back(report::metric("max_caliper_mm", "Largest caliper width", measured.maxCaliperMm, "mm"));
+        geometry.rows.push_back(report::metric("measured_max_diameter_mm", "Maximum diameter", measured.maxDiameterMm, "mm"));
+        geometry.rows.push_back(report::metric("measured_max_caliper_mm", "Largest caliper width", measured.maxCaliperMm, "mm"));
         section.blocks.push_back(geometry);
         section.blocks.push_back(report::Paragraph{thresholdSentence(measured.maxDiameterMm)});
         section.blocks.push_back(diameterPlot(measured));
