@@ -120,9 +120,9 @@
     <message numerus="yes">
         <location filename="../app/gui/DicomImportDialog.cpp" line="229"/>
         <source>%n file(s), %1 series</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Datei, %1 Serien</numerusform>
+            <numerusform>%n Dateien, %1 Serien</numerusform>
         </translation>
     </message>
     <message>
@@ -295,7 +295,7 @@
     <message>
         <location filename="../app/gui/MainWindowMenus.cpp" line="41"/>
         <source>Ctrl+D</source>
-        <translation type="unfinished"></translation>
+        <translation>Ctrl+D</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowMenus.cpp" line="43"/>
@@ -305,7 +305,7 @@
     <message>
         <location filename="../app/gui/MainWindowMenus.cpp" line="43"/>
         <source>Ctrl+I</source>
-        <translation type="unfinished"></translation>
+        <translation>Ctrl+I</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindowMenus.cpp" line="49"/>
@@ -319,93 +319,103 @@
     </message>
     <message>
         <location filename="../app/gui/MainWindowMenus.cpp" line="56"/>
+        <source>Export &amp;Report...</source>
+        <translation>&amp;Bericht exportieren...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="56"/>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="59"/>
         <source>&amp;Close Window</source>
         <translation>Fenster &amp;schließen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="57"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="60"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="59"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="62"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="60"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="63"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="62"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="65"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="67"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="70"/>
         <source>Re&amp;name Artifact...</source>
         <translation>Artefakt &amp;umbenennen...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="72"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="75"/>
         <source>Rename artifact</source>
         <translation>Artefakt umbenennen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="72"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="75"/>
         <source>Name:</source>
         <translation>Name:</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="78"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="81"/>
         <source>&amp;Delete Artifact</source>
         <translation>Artefakt &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="88"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="91"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="89"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="92"/>
         <source>Window/Level: &amp;CTA</source>
         <translation>Fenster: &amp;CTA</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="90"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="93"/>
         <source>Window/Level: &amp;Soft Tissue</source>
         <translation>Fenster: &amp;Weichteil</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="91"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="94"/>
         <source>Window/Level: &amp;Bone</source>
         <translation>Fenster: &amp;Knochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="93"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="96"/>
         <source>3D: &amp;Anterior View</source>
         <translation>3D: &amp;Ansicht von vorn</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="98"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="101"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="99"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="102"/>
         <source>&amp;About VascuSim</source>
         <translation>Ü&amp;ber VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="117"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="120"/>
         <source>About VascuSim</source>
         <translation>Über VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="118"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="121"/>
         <source>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patient-specific physics for vascular procedure planning.&lt;/p&gt;&lt;p&gt;Results support planning and need clinical judgement.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patientenspezifische Physik für die Planung vaskulärer Eingriffe.&lt;/p&gt;&lt;p&gt;Die Ergebnisse unterstützen die Planung und erfordern ärztliches Urteil.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</translation>
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="63"/>
@@ -474,6 +484,7 @@
     </message>
     <message>
         <location filename="../app/gui/MainWindow.cpp" line="102"/>
+        <location filename="../app/gui/MainWindowReport.cpp" line="70"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
@@ -510,9 +521,9 @@
     <message numerus="yes">
         <location filename="../app/gui/MainWindow.cpp" line="189"/>
         <source>%n warning(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Warnung</numerusform>
+            <numerusform>%n Warnungen</numerusform>
         </translation>
     </message>
     <message>
@@ -951,8 +962,9 @@
         <location filename="../app/gui/MainWindowNetwork.cpp" line="49"/>
         <location filename="../app/gui/MainWindowNetwork.cpp" line="60"/>
         <location filename="../app/gui/MainWindowNetwork.cpp" line="69"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="82"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="92"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="78"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="89"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="99"/>
         <source>Drug delivery</source>
         <translation>Wirkstoffgabe</translation>
     </message>
@@ -967,24 +979,97 @@
         <translation>Die Spitze braucht drei Zahlen (mm), der Tumor vier (Mitte und Radius).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="82"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="78"/>
+        <source>The tumour&apos;s radius must be positive.</source>
+        <translation>Der Radius des Tumors muss positiv sein.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="89"/>
         <source>Control points are x, y, z in mm, separated by &apos;;&apos;.</source>
         <translation>Kontrollpunkte sind x, y, z in mm, getrennt durch &apos;;&apos;.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="103"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="110"/>
         <source>Drug flow</source>
         <translation>Wirkstofffluss</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="116"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="123"/>
         <source>Drug Delivery</source>
         <translation>Wirkstoffgabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="124"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="131"/>
         <source>Drug delivery: %1 outlets, last reached after %2 s</source>
         <translation>Wirkstoffgabe: %1 Auslässe, der letzte nach %2 s erreicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowReport.cpp" line="84"/>
+        <source>Report written to %1</source>
+        <translation>Bericht geschrieben nach %1</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::ReportExportDialog</name>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="16"/>
+        <source>Export Report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="18"/>
+        <source>Browse...</source>
+        <translation>Durchsuchen...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="20"/>
+        <source>Report</source>
+        <translation>Bericht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="20"/>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="28"/>
+        <source>A4</source>
+        <translation>A4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="29"/>
+        <source>Letter</source>
+        <translation>Letter</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="30"/>
+        <source>Anonymize (no patient name, ID, birth date or institution)</source>
+        <translation>Anonymisieren (ohne Patientenname, ID, Geburtsdatum und Einrichtung)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="31"/>
+        <source>Also as DICOM Encapsulated PDF (a new series of the study)</source>
+        <translation>Auch als DICOM Encapsulated PDF (eine neue Serie der Studie)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="32"/>
+        <source>Also the metrics as CSV and JSON</source>
+        <translation>Auch die Kennzahlen als CSV und JSON</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="34"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="38"/>
+        <source>PDF file:</source>
+        <translation>PDF-Datei:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="39"/>
+        <source>Paper:</source>
+        <translation>Papier:</translation>
     </message>
 </context>
 </TS>
