@@ -139,9 +139,8 @@ private:
         m_painter.setFont(font);
         const QRectF width(m_area.left() + indentMm * m_mm, 0, m_area.width() - indentMm * m_mm, 1e6);
         const QString string = QString::fromStdString(content);
-        QRectF bounds = m_painter.boundingRect(width, Qt::TextWordWrap, string);
+        const QRectF bounds = m_painter.boundingRect(width, Qt::TextWordWrap, string);
         ensure(bounds.height());
-        bounds.moveTop(m_y);
         m_painter.setPen(Qt::black);
         m_painter.drawText(QRectF(width.left(), m_y, width.width(), bounds.height()), Qt::TextWordWrap, string);
         m_y += bounds.height();

@@ -4,6 +4,8 @@
 #include "vsim/core/Error.h"
 
 #include <vtkActor.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderWindow.h>
@@ -12,9 +14,8 @@
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
