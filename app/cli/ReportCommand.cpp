@@ -49,8 +49,9 @@ int writeReport(const Arguments& arguments, const Progress& progress)
         throw Error("usage: vascusim-cli report --study <study.vsim> --out <report.pdf> [--sections "
                     "aaa,stenosis,chemoembolization,smoke,runs] [--page a4|letter] [--dicom-pdf <out.dcm>] "
                     "[--anonymize] [--metrics-csv <file>] [--metrics-json <file>] [--no-validation]");
-    const report::PageSize page = report::pageSizeFromName(arguments.option("page", "a4"));
-    const study::Study study = study::Study::open(bundle);
+    const std::string pageName = arguments.option("page", "a4");
+    const report::PageSize page = report::pageSizeFromName(pageName);
+    study::Study study = study::Study::open(bundle);
     app::ReportOptions options;
     options.anonymize = arguments.hasOption("anonymize");
     options.validate = !arguments.hasOption("no-validation");
@@ -59,7 +60,10 @@ int writeReport(const Arguments& arguments, const Progress& progress)
     const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
     const QByteArray pdf = report::renderPdf(report, page);
     report::writeText(std::string(pdf.constData(), std::size_t(pdf.size())), out);
-    nlohmann::json summary = {{"pdf", out}, {"bytes", pdf.size()}, {"anonymized", options.anonymize}};
+    const std::string bytes(pdf.constData(), std::size_t(pdf.size()));
+    const std::string id = app::addReport(study, report, bytes, options, pageName);
+    study.save();
+    nlohmann::json summary = {{"pdf", out}, {"bytes", pdf.size()}, {"anonymized", options.anonymize}, {"artifact", id}};
     if (arguments.hasOption("dicom-pdf"))
     {
         const std::string series =

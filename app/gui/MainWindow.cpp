@@ -87,8 +87,12 @@ void MainWindow::createDocks()
     m_artifactTree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
     connect(m_artifactTree, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
         const std::string id = item->data(0, Qt::UserRole).toString().toStdString();
-        if (m_document.hasStudy() && m_document.study().artifact(id).kind == study::ArtifactKind::Image)
+        if (!m_document.hasStudy())
+            return;
+        if (m_document.study().artifact(id).kind == study::ArtifactKind::Image)
             showImageArtifact(id);
+        if (m_document.study().artifact(id).kind == study::ArtifactKind::Report)
+            openReportArtifact(id);
     });
     auto* artifactDock = new QDockWidget(tr("Study"), this);
     artifactDock->setObjectName("studyDock");

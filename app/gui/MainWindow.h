@@ -95,6 +95,9 @@ public:
     bool exportReport(const ReportExportRequest& request);
     /// File > Export Report: the dialog, then exportReport().
     void showReportExportDialog();
+    /// Opens a report artifact (double-click in the study tree) in the desktop's PDF viewer, from a copy in the
+    /// temporary folder (the artifact may not be saved yet).
+    void openReportArtifact(const std::string& id);
     ParameterSet& networkParameters() { return m_networkParameters; }
     ParameterSet& wallMeshParameters() { return m_wallMeshParameters; }
     ParameterSet& femParameters() { return m_femParameters; }

@@ -1,11 +1,16 @@
 #include "MainWindow.h"
 
+#include "ArtifactCommands.h"
 #include "ReportExportDialog.h"
 #include "vsim/app/StudyReport.h"
 #include "vsim/report/EncapsulatedPdf.h"
 #include "vsim/report/MetricsExport.h"
 
 #include <QApplication>
+#include <QDesktopServices>
+#include <QDir>
+#include <QStandardPaths>
+#include <QUrl>
 #include <QFileInfo>
 #include <QStatusBar>
 #include <QThread>
@@ -48,6 +53,23 @@ std::string beside(const QString& pdf, const QString& suffix)
 
 } // namespace
 
+void MainWindow::openReportArtifact(const std::string& id)
+{
+    try
+    {
+        const std::string pdf = m_document.study().loadReport(id);
+        const QString file = QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
+                                 .filePath(QString::fromStdString(m_document.study().name() + "-" + id + ".pdf"));
+        report::writeText(pdf, file.toStdString());
+        if (!QDesktopServices::openUrl(QUrl::fromLocalFile(file)))
+            showError(tr("Report"), tr("No PDF viewer opened %1.").arg(file));
+    }
+    catch (const Error& error)
+    {
+        showError(tr("Report"), QString::fromStdString(error.message()));
+    }
+}
+
 void MainWindow::showReportExportDialog()
 {
     if (!m_document.hasStudy())
@@ -66,12 +88,14 @@ bool MainWindow::exportReport(const ReportExportRequest& request)
     app::ReportOptions options;
     options.anonymize = request.anonymize;
     options.renderSnapshot = renderOnGuiThread;
+    auto built = std::make_shared<std::pair<report::Report, QByteArray>>();
     return m_tasks.run(
         tr("Report"),
-        [this, request, options](const Progress& progress) {
+        [this, request, options, built](const Progress& progress) {
             const study::Study& study = m_document.study();
             const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
             const QByteArray pdf = report::renderPdf(report, request.page);
+            *built = {report, pdf};
             report::writeText(std::string(pdf.constData(), std::size_t(pdf.size())), request.pdf.toStdString());
             if (request.dicom)
                 report::writeEncapsulatedPdf(pdf, app::documentIdentity(study, request.anonymize), beside(request.pdf, ".dcm"));
@@ -81,7 +105,14 @@ bool MainWindow::exportReport(const ReportExportRequest& request)
                 report::writeText(report::metricsJson(report), beside(request.pdf, "-metrics.json"));
             }
         },
-        [this, request] { statusBar()->showMessage(tr("Report written to %1").arg(request.pdf), 8000); });
+        [this, request, options, built] {
+            // The report goes into the study too (undoable; saved with it).
+            const std::string id = app::addReport(m_document.study(), built->first,
+                                                  std::string(built->second.constData(), std::size_t(built->second.size())),
+                                                  options, request.page == report::PageSize::A4 ? "a4" : "letter");
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Report")));
+            statusBar()->showMessage(tr("Report written to %1").arg(request.pdf), 8000);
+        });
 }
 
 } // namespace vsim::gui

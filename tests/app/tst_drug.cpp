@@ -20,6 +20,7 @@
 #include <QSlider>
 #include <QTableWidget>
 
+#include <algorithm>
 #include <fstream>
 
 namespace fs = std::filesystem;
@@ -116,6 +117,12 @@ private slots:
         std::ifstream metrics(reports / "drug-metrics.json");
         const std::string text((std::istreambuf_iterator<char>(metrics)), std::istreambuf_iterator<char>());
         QVERIFY(text.find("\"tumour_fraction\"") != std::string::npos);
+        const study::Artifact kept = window.document().study().artifacts().back(); // the report is in the study too
+        QCOMPARE(kept.kind, study::ArtifactKind::Report);
+        QCOMPARE(window.document().study().loadReport(kept.id), std::string(bytes.constData(), std::size_t(bytes.size())));
+        QVERIFY(std::find(kept.provenance.inputs.begin(), kept.provenance.inputs.end(), picked.id) != kept.provenance.inputs.end());
+        window.document().undoStack()->undo();
+        QVERIFY(!window.document().study().hasArtifact(kept.id));
 
         const std::size_t before = window.document().study().artifacts().size();
         window.document().undoStack()->undo();

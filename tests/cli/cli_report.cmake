@@ -24,6 +24,14 @@ foreach(case aaa hepatic-tree stenosis)
     endif()
 endforeach()
 
+# Each report is kept in its study too (reports/<id>.pdf).
+foreach(case aaa hepatic-tree stenosis)
+    file(GLOB kept ${WORK}/demo/${case}/${case}.vsim/reports/*.pdf)
+    if(NOT kept)
+        message(FATAL_ERROR "the ${case} study does not keep its report")
+    endif()
+endforeach()
+
 # Which sections each study got, and what it says was not run.
 file(READ ${WORK}/demo/aaa/metrics.json aaa)
 file(READ ${WORK}/demo/stenosis/metrics.json stenosis)

@@ -14,6 +14,9 @@
 namespace fs = std::filesystem;
 using vsim::study::Study;
 
+/// A report's bytes: a PDF header and bytes a text read or write would change.
+const std::string kReportPdf = std::string("%PDF-1.4\n") + std::string("\0\r\n\xff\x80 binary", 13) + "\n%%EOF\n";
+
 class TestBundle : public QObject
 {
     Q_OBJECT
@@ -61,6 +64,7 @@ class TestBundle : public QObject
         study.addTetMesh(vsim::test::singleTet(), "Wall", provenance);
         study.addSkeleton(vsim::test::twoNodeSkeleton(), "Skeleton", provenance, {"one spur pruned"});
         study.addNetwork(yNetwork(), "Drug flow", provenance);
+        study.addReport(kReportPdf, "Report", provenance);
         study.save();
         return study;
     }
@@ -74,7 +78,7 @@ private slots:
         QVERIFY(reopened.openWarnings().empty());
         QCOMPARE(reopened.name(), std::string("Phantom study"));
         QCOMPARE(reopened.metadata().at("study_description"), std::string("CTA abdomen"));
-        QCOMPARE(reopened.artifacts().size(), std::size_t(6));
+        QCOMPARE(reopened.artifacts().size(), std::size_t(7));
 
         const vsim::CtVolume image = reopened.loadImage("image-1");
         QVERIFY(image.geometry().isClose(vsim::test::patternedVolume(8, 3).geometry(), 1e-9));
@@ -97,6 +101,13 @@ private slots:
         QVERIFY(std::abs(network.outlets[1].resistance / 8e10 - 1.0) < 1e-12);
         QCOMPARE(network.segmentFields.at("flow_ml_min"), (std::vector<double>{2.0, 1.25, 0.75}));
         QCOMPARE(network.root, 0);
+
+        // A report is kept byte for byte (binary included) as reports/<id>.pdf; anything else is refused.
+        QCOMPARE(reopened.loadReport("report-7"), kReportPdf);
+        QCOMPARE(reopened.artifact("report-7").file, std::string("reports/report-7.pdf"));
+        QVERIFY(fs::exists(bundle / "reports" / "report-7.pdf"));
+        Study other = Study::create(freshBundle("notpdf.vsim"), "x");
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, other.addReport("not a pdf", "Report", {}));
 
         const auto& provenance = reopened.artifact("image-1").provenance;
         QCOMPARE(provenance.command, std::string("test fixture"));

@@ -100,10 +100,33 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
     if (wanted("smoke"))
         report.notRun.push_back("Surgical smoke: the study has no smoke run (the smoke solver is not part of this "
                                 "version).");
+    for (const Artifact* run : runs)
+        report.sources.push_back(run->id);
     if (wanted("runs") && !runs.empty())
         report.sections.push_back(detail::runsSection(runs, options, progress.subRange(0.6, 1.0)));
     progress.report(1.0, "report");
     return report;
+}
+
+std::string addReport(study::Study& study, const report::Report& report, const std::string& pdf,
+                      const ReportOptions& options, const std::string& page)
+{
+    study::Provenance provenance;
+    provenance.command = "report";
+    provenance.inputs = report.sources;
+    std::string sections;
+    for (const report::Section& section : report.sections)
+        sections += (sections.empty() ? "" : ",") + section.id;
+    provenance.parameters = {{"sections", sections},
+                             {"anonymized", options.anonymize ? "1" : "0"},
+                             {"page", page},
+                             {"validation", options.validate ? "1" : "0"}};
+    const std::string id = study.addReport(pdf, options.anonymize ? "Report (anonymized)" : "Report", provenance);
+    std::map<std::string, std::string> attributes;
+    attributes["metrics"] = std::to_string(report.metrics().size());
+    attributes["analyses_not_run"] = std::to_string(report.notRun.size());
+    study.setArtifactAttributes(id, attributes);
+    return id;
 }
 
 report::DocumentIdentity documentIdentity(const study::Study& study, bool anonymize)

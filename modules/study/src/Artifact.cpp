@@ -14,6 +14,7 @@ std::string kindName(ArtifactKind kind)
     case ArtifactKind::TetMesh: return "tetmesh";
     case ArtifactKind::Skeleton: return "skeleton";
     case ArtifactKind::Network: return "network";
+    case ArtifactKind::Report: return "report";
     }
     return "unknown";
 }
@@ -21,7 +22,7 @@ std::string kindName(ArtifactKind kind)
 ArtifactKind kindFromName(const std::string& name)
 {
     for (ArtifactKind kind : {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface, ArtifactKind::TetMesh,
-                              ArtifactKind::Skeleton, ArtifactKind::Network})
+                              ArtifactKind::Skeleton, ArtifactKind::Network, ArtifactKind::Report})
         if (kindName(kind) == name)
             return kind;
     throw Error("unknown artifact kind '" + name + "'", {{"kind", name}});

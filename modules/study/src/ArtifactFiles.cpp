@@ -97,7 +97,8 @@ auto readVtkXml(const std::filesystem::path& file)
 ArtifactKind kindOf(const ArtifactData& data)
 {
     static constexpr ArtifactKind kinds[] = {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface,
-                                             ArtifactKind::TetMesh, ArtifactKind::Skeleton, ArtifactKind::Network};
+                                             ArtifactKind::TetMesh, ArtifactKind::Skeleton, ArtifactKind::Network,
+                                             ArtifactKind::Report};
     return kinds[data.index()];
 }
 
@@ -111,6 +112,7 @@ std::string fileExtension(ArtifactKind kind)
     case ArtifactKind::TetMesh: return ".vtu";
     case ArtifactKind::Skeleton:
     case ArtifactKind::Network: return ".json";
+    case ArtifactKind::Report: return ".pdf";
     }
     return {};
 }
@@ -125,6 +127,7 @@ std::string folderName(ArtifactKind kind)
     case ArtifactKind::TetMesh: return "meshes";
     case ArtifactKind::Skeleton: return "skeletons";
     case ArtifactKind::Network: return "networks";
+    case ArtifactKind::Report: return "reports";
     }
     return {};
 }
@@ -150,6 +153,14 @@ void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& fi
         break;
     }
     case ArtifactKind::Network: writeNetworkFile(std::get<VesselNetwork>(data), file); break;
+    case ArtifactKind::Report:
+    {
+        std::ofstream stream(file, std::ios::binary | std::ios::trunc);
+        const std::string& bytes = std::get<Document>(data).bytes;
+        if (!stream.write(bytes.data(), std::streamsize(bytes.size())) || !stream.flush())
+            throw Error("cannot write the report", {{"file", file.string()}});
+        break;
+    }
     }
     syncFile(file);
 }
@@ -179,6 +190,7 @@ ArtifactData readArtifactFile(ArtifactKind kind, const std::filesystem::path& fi
             throw Error("cannot parse skeleton", {{"file", file.string()}, {"reason", exception.what()}});
         }
     case ArtifactKind::Network: return readNetworkFile(file);
+    case ArtifactKind::Report: return Document{readTextFile(file)};
     }
     throw Error("unknown artifact kind");
 }

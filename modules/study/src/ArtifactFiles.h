@@ -13,7 +13,7 @@
 namespace vsim::study {
 
 /// The in-memory data of an artifact, one alternative per ArtifactKind.
-using ArtifactData = std::variant<CtVolume, LabelVolume, TriangleMesh, TetMesh, SkeletonGraph, VesselNetwork>;
+using ArtifactData = std::variant<CtVolume, LabelVolume, TriangleMesh, TetMesh, SkeletonGraph, VesselNetwork, Document>;
 
 /// Returns the kind of the data held.
 ArtifactKind kindOf(const ArtifactData& data);

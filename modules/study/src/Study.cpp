@@ -18,7 +18,8 @@ namespace {
 
 constexpr const char* kManifestFile = "study.json";
 constexpr ArtifactKind kAllKinds[] = {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface,
-                                      ArtifactKind::TetMesh, ArtifactKind::Skeleton, ArtifactKind::Network};
+                                      ArtifactKind::TetMesh, ArtifactKind::Skeleton, ArtifactKind::Network,
+                                      ArtifactKind::Report};
 
 /// Checks an artifact's file against the manifest; returns why it is damaged, or an empty string.
 std::string checkArtifactFile(const fs::path& bundle, const Artifact& artifact)
@@ -216,6 +217,14 @@ std::string Study::addNetwork(const VesselNetwork& network, const std::string& n
     return m_state->add(network, name, std::move(provenance), std::move(warnings));
 }
 
+std::string Study::addReport(const std::string& pdf, const std::string& name, Provenance provenance,
+                             std::vector<std::string> warnings)
+{
+    if (pdf.rfind("%PDF", 0) != 0)
+        throw Error("a report added to the study must be a PDF");
+    return m_state->add(Document{pdf}, name, std::move(provenance), std::move(warnings));
+}
+
 CtVolume Study::loadImage(const std::string& id) const
 {
     return std::get<CtVolume>(m_state->load(id, ArtifactKind::Image));
@@ -239,6 +248,10 @@ SkeletonGraph Study::loadSkeleton(const std::string& id) const
 VesselNetwork Study::loadNetwork(const std::string& id) const
 {
     return std::get<VesselNetwork>(m_state->load(id, ArtifactKind::Network));
+}
+std::string Study::loadReport(const std::string& id) const
+{
+    return std::get<Document>(m_state->load(id, ArtifactKind::Report)).bytes;
 }
 
 VolumeGeometry Study::volumeGeometry(const std::string& id) const

@@ -35,6 +35,11 @@ struct ReportOptions
 /// Builds the report of `study`. Throws vsim::Error for an unknown section id.
 report::Report buildStudyReport(const study::Study& study, const ReportOptions& options, const Progress& progress = {});
 
+/// Adds the report's PDF to the study (reports/<id>.pdf; provenance: the runs reported, the sections, anonymized,
+/// the paper `page`); returns its id. The study is not saved.
+std::string addReport(study::Study& study, const report::Report& report, const std::string& pdf,
+                      const ReportOptions& options, const std::string& page);
+
 /// Who the report's DICOM instance belongs to: the study's Study Instance UID and dates; the patient's name, ID,
 /// birth date and sex unless anonymized (then "ANONYMIZED" and an ID that does not identify).
 report::DocumentIdentity documentIdentity(const study::Study& study, bool anonymize);

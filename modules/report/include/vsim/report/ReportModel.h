@@ -105,6 +105,7 @@ struct Report
     ReportHeader header;
     std::vector<Section> sections;
     std::vector<std::string> notRun; ///< analyses the study holds no run of, said as such in the report
+    std::vector<std::string> sources; ///< the study artifacts reported (the report's provenance inputs)
 
     /// Every metric of every section's metric tables, with the section's id.
     std::vector<std::pair<std::string, Metric>> metrics() const;

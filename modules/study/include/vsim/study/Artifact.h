@@ -16,6 +16,13 @@ enum class ArtifactKind
     TetMesh,  ///< tetrahedral mesh: meshes/<id>.vtu
     Skeleton, ///< vessel graph: skeletons/<id>.json
     Network,  ///< vessel network (drug delivery), possibly with results: networks/<id>.json
+    Report,   ///< a clinical report as written: reports/<id>.pdf
+};
+
+/// A document kept as written (a report's PDF bytes).
+struct Document
+{
+    std::string bytes;
 };
 
 /// Returns the manifest name of a kind ("image", "label", ...).

@@ -19,7 +19,7 @@ namespace vsim::study {
 inline constexpr int kSchemaVersion = 1;
 
 /// The document: one patient's study as a `<name>.vsim/` bundle (study.json + images/, labels/, surfaces/,
-/// meshes/, skeletons/, networks/). Artifacts added since the last save are held in memory until save(), which is atomic:
+/// meshes/, skeletons/, networks/, reports/). Artifacts added since the last save are held in memory until save(), which is atomic:
 /// new files are written and synced first, the manifest is replaced by rename last, and files no longer
 /// referenced are removed after that. A kill at any moment leaves the old or the new study.
 class Study
@@ -66,6 +66,9 @@ public:
                             std::vector<std::string> warnings = {});
     std::string addNetwork(const VesselNetwork& network, const std::string& name, Provenance provenance,
                            std::vector<std::string> warnings = {});
+    /// A report's PDF as written (reports/<id>.pdf); throws vsim::Error when the bytes are not a PDF.
+    std::string addReport(const std::string& pdf, const std::string& name, Provenance provenance,
+                          std::vector<std::string> warnings = {});
 
     /// Loads an artifact's data (from memory if unsaved, else from its file). Throws vsim::Error for an unknown
     /// id, a kind mismatch, or a damaged artifact.
@@ -75,6 +78,8 @@ public:
     TetMesh loadTetMesh(const std::string& id) const;
     SkeletonGraph loadSkeleton(const std::string& id) const;
     VesselNetwork loadNetwork(const std::string& id) const;
+    /// The PDF bytes of a report artifact.
+    std::string loadReport(const std::string& id) const;
 
     /// The geometry of an image or label artifact, read from the file header only (no voxels).
     /// Throws vsim::Error for another kind or a damaged artifact.
