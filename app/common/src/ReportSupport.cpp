@@ -70,6 +70,20 @@ report::Table parameterTable(const study::Artifact& run, const std::vector<Param
     return table;
 }
 
+report::Plot diameterPlot(const imaging::SegmentMeasurements& segment, const std::string& caption)
+{
+    report::Plot plot;
+    plot.caption = caption;
+    plot.xLabel = "Distance along the centerline [mm]";
+    plot.yLabel = "Equivalent diameter [mm]";
+    report::PlotSeries series{"diameter", {}};
+    for (const imaging::CrossSection& section : segment.sections)
+        if (!section.nearJunction && section.equivalentDiameterMm > 0.0)
+            series.points.emplace_back(section.arcLengthMm, section.equivalentDiameterMm);
+    plot.series.push_back(series);
+    return plot;
+}
+
 report::Block snapshotOrNote(const std::string& caption, const ReportOptions& options,
                              const std::function<QImage()>& render)
 {

@@ -5,6 +5,7 @@
 
 #include "vsim/app/StudyReport.h"
 #include "vsim/core/Parameters.h"
+#include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/report/ReportModel.h"
 #include "vsim/study/Study.h"
 
@@ -41,6 +42,9 @@ void addMetrics(report::MetricTable& table, const study::Artifact& run, const st
 /// the tumour, the backend) with their text as recorded.
 report::Table parameterTable(const study::Artifact& run, const std::vector<ParameterSpec>& specs,
                              const std::string& caption);
+
+/// The equivalent diameter along a segment's centerline (its sections away from junctions).
+report::Plot diameterPlot(const imaging::SegmentMeasurements& segment, const std::string& caption);
 
 /// A picture for the report (rendered through options.renderSnapshot when set), or a paragraph saying why there is
 /// none (no display for the offscreen renderer, or the renderer's error).

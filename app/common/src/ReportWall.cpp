@@ -13,7 +13,6 @@ namespace {
 
 constexpr double kRepairThresholdMenMm = 55.0;   // 5.5 cm (EVAR / open repair guidelines)
 constexpr double kRepairThresholdWomenMm = 50.0; // 5.0 cm
-constexpr double kReportedStenosisPercent = 40.0; // a narrowing from which the stenosis section is written
 
 /// The centerlines a wall run used (its second input), else the newest centerlines.
 std::string centerlinesOf(const study::Study& study, const study::Artifact& run)
@@ -24,22 +23,13 @@ std::string centerlinesOf(const study::Study& study, const study::Artifact& run)
     return study.newestArtifact(study::ArtifactKind::Skeleton, "centerline");
 }
 
-/// The diameter along the centerline of the segment with the largest maximum diameter (sections away from
-/// junctions), with the repair thresholds.
-report::Plot diameterPlot(const imaging::VesselMeasurements& measured)
+/// The diameter along the centerline of the segment with the largest maximum diameter, with the repair thresholds.
+report::Plot aneurysmPlot(const imaging::VesselMeasurements& measured)
 {
-    report::Plot plot;
-    plot.caption = "Diameter along the centerline (the segment of the maximum diameter)";
-    plot.xLabel = "Distance along the centerline [mm]";
-    plot.yLabel = "Equivalent diameter [mm]";
     const auto widest = std::max_element(measured.segments.begin(), measured.segments.end(),
                                          [](const auto& a, const auto& b) { return a.maxDiameterMm < b.maxDiameterMm; });
-    report::PlotSeries series{"diameter", {}};
-    if (widest != measured.segments.end())
-        for (const imaging::CrossSection& section : widest->sections)
-            if (!section.nearJunction && section.equivalentDiameterMm > 0.0)
-                series.points.emplace_back(section.arcLengthMm, section.equivalentDiameterMm);
-    plot.series.push_back(series);
+    report::Plot plot = diameterPlot(widest == measured.segments.end() ? imaging::SegmentMeasurements{} : *widest,
+                                     "Diameter along the centerline (the segment of the maximum diameter)");
     plot.references = {{"repair threshold, men: 55 mm", kRepairThresholdMenMm},
                        {"repair threshold, women: 50 mm", kRepairThresholdWomenMm}};
     return plot;
@@ -80,7 +70,7 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
         geometry.rows.push_back(report::metric("measured_max_caliper_mm", "Largest caliper width", measured.maxCaliperMm, "mm"));
         section.blocks.push_back(geometry);
         section.blocks.push_back(report::Paragraph{thresholdSentence(measured.maxDiameterMm)});
-        section.blocks.push_back(diameterPlot(measured));
+        section.blocks.push_back(aneurysmPlot(measured));
     }
     else
         section.blocks.push_back(report::Paragraph{"No centerlines: the maximum diameter was not measured."});
@@ -139,47 +129,6 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
     else
         section.blocks.push_back(report::Paragraph{"The thesis tearing protocol was not run for this study."});
     progress.report(1.0, "AAA section");
-    return section;
-}
-
-std::optional<report::Section> stenosisSection(const study::Study& study, const Progress& progress)
-{
-    const std::string centerlinesId = study.newestArtifact(study::ArtifactKind::Skeleton, "centerline");
-    if (centerlinesId.empty())
-        return std::nullopt;
-    const std::string labelId = labelOfCenterlines(study, centerlinesId);
-    if (labelId.empty())
-        return std::nullopt;
-    const imaging::VesselMeasurements measured =
-        imaging::measureVessels(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
-                                ParameterSet(imaging::measurementParameters()), progress);
-    if (measured.worstStenosisSegment < 0)
-        return std::nullopt;
-    const imaging::SegmentMeasurements& worst = measured.segments[std::size_t(measured.worstStenosisSegment)];
-    if (worst.diameterStenosisPercent < kReportedStenosisPercent)
-        return std::nullopt;
-    report::Section section{"stenosis", "Stenosis / blockage", {}};
-    report::MetricTable geometry{"The narrowest segment (cross-sections perpendicular to the centerline)", {}};
-    geometry.rows = {report::metric("diameter_stenosis_percent", "Diameter stenosis", worst.diameterStenosisPercent, "%"),
-                     report::metric("area_stenosis_percent", "Area stenosis", worst.areaStenosisPercent, "%"),
-                     report::metric("reference_diameter_mm", "Reference diameter (median)", worst.referenceDiameterMm, "mm"),
-                     report::metric("minimal_diameter_mm", "Minimal diameter", worst.minimalDiameterMm, "mm"),
-                     report::metric("segment_length_mm", "Segment length", worst.lengthMm, "mm")};
-    section.blocks.push_back(geometry);
-    report::Plot plot;
-    plot.caption = "Diameter along the narrowest segment";
-    plot.xLabel = "Distance along the centerline [mm]";
-    plot.yLabel = "Equivalent diameter [mm]";
-    report::PlotSeries series{"diameter", {}};
-    for (const imaging::CrossSection& s : worst.sections)
-        if (!s.nearJunction && s.equivalentDiameterMm > 0.0)
-            series.points.emplace_back(s.arcLengthMm, s.equivalentDiameterMm);
-    plot.series.push_back(series);
-    plot.references = {{"reference diameter", worst.referenceDiameterMm}};
-    section.blocks.push_back(plot);
-    section.blocks.push_back(report::Paragraph{
-        "Blockage velocity ratios, the pressure drop, the velocity along the centerline and the wall pressure come "
-        "from a blood-flow run; this study has none (the blood-flow solver is not part of this version)."});
     return section;
 }
 
