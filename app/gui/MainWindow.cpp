@@ -99,20 +99,12 @@ void MainWindow::createDocks()
     artifactDock->setWidget(m_artifactTree);
     addDockWidget(Qt::LeftDockWidgetArea, artifactDock);
 
-    // The workflow of ARCHITECTURE.md; steps become available as their features land.
+    // The workflow of ARCHITECTURE.md.
     m_workflow = new QListWidget(this);
     m_workflow->setObjectName("workflow");
     for (const QString& step : {tr("Import"), tr("Segment"), tr("Skeleton && Centerlines"), tr("Mesh"), tr("Simulate"),
                                 tr("Report")})
-    {
-        auto* item = new QListWidgetItem(step, m_workflow);
-        if (step != tr("Import") && step != tr("Segment") && step != tr("Skeleton && Centerlines") && step != tr("Mesh") &&
-            step != tr("Simulate"))
-        {
-            item->setFlags(item->flags() & ~Qt::ItemIsEnabled);
-            item->setToolTip(tr("Not available in this version yet"));
-        }
-    }
+        new QListWidgetItem(step, m_workflow);
     connect(m_workflow, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
         if (!m_document.hasStudy() || m_tasks.isBusy())
             return;
@@ -126,6 +118,8 @@ void MainWindow::createDocks()
             buildWallMesh();
         else if (item->text() == tr("Simulate"))
             simulateWall("physiological");
+        else if (item->text() == tr("Report"))
+            showReportExportDialog();
     });
     auto* workflowDock = new QDockWidget(tr("Workflow"), this);
     workflowDock->setObjectName("workflowDock");
