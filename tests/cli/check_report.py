@@ -6,7 +6,7 @@ series. With --anonymized: no patient identifier of the study in the PDF text no
 
 The 3D snapshots (--figures N) are pictures in the PDF when there is a display, else the report says why not.
 
-usage: check_report.py CASE_FOLDER STUDY_BUNDLE [--figures N] [--anonymized PDF DCM] [--run-metrics FILE]"""
+usage: check_report.py CASE_FOLDER STUDY_BUNDLE [--figures N] [--anonymized PDF DCM] [--run-metrics FILE [--keys K,...]]"""
 
 import csv
 import json
@@ -64,14 +64,15 @@ def main():
     if "--run-metrics" in sys.argv:
         run = json.load(open(sys.argv[sys.argv.index("--run-metrics") + 1]))
         run = run.get("metrics", run)
+        keys = sys.argv[sys.argv.index("--keys") + 1].split(",") if "--keys" in sys.argv else None
         compared = 0
         for m in report["metrics"]:
-            if m["key"] in run:
+            if m["key"] in run and (keys is None or m["key"] in keys):
                 scale = 100.0 if m["unit"] == "%" and (m["key"].endswith("fraction")) else 1.0
                 if not math.isclose(m["value"], scale * run[m["key"]], rel_tol=1e-9, abs_tol=1e-12):
                     fail(f"{m['key']}: report {m['value']}, run {run[m['key']]}")
                 compared += 1
-        if compared < 5:
+        if compared < (len(keys) if keys else 5):
             fail(f"only {compared} report metrics found in the run's metrics")
     for analysis in report["not_run"]:
         if " ".join(analysis.split()) not in text:

@@ -24,6 +24,19 @@ foreach(case aaa hepatic-tree stenosis)
     endif()
 endforeach()
 
+# The thesis tearing protocol on the demo AAA, then its report again: the tearing figures equal the run's.
+set(tear ${WORK}/aaa-tear)
+run_cli(0 ignored simulate fem --study ${WORK}/demo/aaa/aaa.vsim --protocol thesis-rupture --param ramp_steps=40
+        --param tear_strength_mpa=5 --out ${tear}/run)
+run_cli(0 ignored report --study ${WORK}/demo/aaa/aaa.vsim --out ${tear}/report.pdf --dicom-pdf ${tear}/report.dcm
+        --metrics-json ${tear}/metrics.json --metrics-csv ${tear}/metrics.csv --sections aaa)
+execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/check_report.py ${tear} ${WORK}/demo/aaa/aaa.vsim --figures 1
+                --run-metrics ${tear}/run/metrics.json --keys tear_onset_pressure_mpa,torn_elements,fracture_entropy,final_pressure_kpa
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+    message(FATAL_ERROR "report with the tearing protocol: ${err}")
+endif()
+
 # Each report is kept in its study too (reports/<id>.pdf).
 foreach(case aaa hepatic-tree stenosis)
     file(GLOB kept ${WORK}/demo/${case}/${case}.vsim/reports/*.pdf)
