@@ -1,0 +1,66 @@
+#pragma once
+
+// The tissue level around a vessel for the partial-volume radii (PartialVolumeRadii.cpp): medians of the voxels of a
+// shell around the tube, along its length (HU; arcs in mm).
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace vsim::imaging::detail {
+
+inline double median(std::vector<double> values)
+{
+    if (values.empty())
+        return std::nan("");
+    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
+inline constexpr double kTissueWindowMm = 2.0; // the level at an arc: the shell within this distance along the tube
+inline constexpr double kProfileStepMm = 0.5;
+
+/// The tissue level (HU) along one tube: the median of its shell's voxels within kTissueWindowMm of each arc, in
+/// 0.5 mm steps (the background changes along a vessel, e.g. where it enters a tumour); the whole shell's median
+/// where a window holds fewer than 20 voxels.
+class TissueProfile
+{
+public:
+    TissueProfile() = default;
+    TissueProfile(std::vector<std::pair<float, float>> shell, double lengthMm) // (arc mm, HU)
+    {
+        std::vector<double> all;
+        for (const auto& [arc, hu] : shell)
+            all.push_back(hu);
+        overall_ = median(all);
+        std::sort(shell.begin(), shell.end());
+        std::size_t first = 0, last = 0;
+        for (double at = 0.0; at <= lengthMm + kProfileStepMm; at += kProfileStepMm)
+        {
+            while (first < shell.size() && shell[first].first < at - kTissueWindowMm)
+                ++first;
+            last = std::max(last, first);
+            while (last < shell.size() && shell[last].first <= at + kTissueWindowMm)
+                ++last;
+            std::vector<double> window;
+            for (std::size_t k = first; k < last; ++k)
+                window.push_back(shell[k].second);
+            levels_.push_back(window.size() >= 20 ? median(window) : overall_);
+        }
+    }
+    double at(double arcMm) const
+    {
+        if (levels_.empty())
+            return overall_;
+        return levels_[std::min(levels_.size() - 1, std::size_t(std::max(0.0, std::round(arcMm / kProfileStepMm))))];
+    }
+    double overall() const { return overall_; }
+
+private:
+    std::vector<double> levels_;
+    double overall_ = std::nan("");
+};
+
+} // namespace vsim::imaging::detail
