@@ -60,10 +60,17 @@ int writeReport(const Arguments& arguments, const Progress& progress)
     const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
     const QByteArray pdf = report::renderPdf(report, page);
     report::writeText(std::string(pdf.constData(), std::size_t(pdf.size())), out);
-    const std::string bytes(pdf.constData(), std::size_t(pdf.size()));
-    const std::string id = app::addReport(study, report, bytes, options, pageName);
-    study.save();
-    nlohmann::json summary = {{"pdf", out}, {"bytes", pdf.size()}, {"anonymized", options.anonymize}, {"artifact", id}};
+    nlohmann::json summary = {{"pdf", out}, {"bytes", pdf.size()}, {"anonymized", options.anonymize}};
+    try // the report is written; keeping it in the study too may fail (a read-only study) without losing it
+    {
+        summary["artifact"] = app::addReport(study, report, std::string(pdf.constData(), std::size_t(pdf.size())),
+                                             options, pageName);
+        study.save();
+    }
+    catch (const Error& error)
+    {
+        summary["warning"] = "the report was not kept in the study: " + error.message();
+    }
     if (arguments.hasOption("dicom-pdf"))
     {
         const std::string series =
