@@ -10,7 +10,7 @@
 namespace vsim::app::detail {
 namespace {
 
-constexpr std::size_t kBranchRows = 60; // branches listed by drug flow; the rest summed in one line
+constexpr std::size_t kBranchRows = 60; // branches listed by drug flow; the rest counted in one line
 
 std::string fixed(double value, int decimals)
 {
@@ -94,7 +94,7 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
     const study::Artifact* run = newestRun(study, "simulate network");
     if (!run)
         return std::nullopt;
-    VesselNetwork network = study.loadNetwork(run->id);
+    const VesselNetwork network = study.loadNetwork(run->id);
     report::Section section{"chemoembolization", "Chemoembolization: drug delivery through the hepatic arteries", {}};
     const auto& source = run->provenance.parameters;
     const auto tip = source.find("tip");
