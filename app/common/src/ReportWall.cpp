@@ -103,7 +103,9 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
             value("thrombus_mm") + " mm, reference diameter " + value("reference_diameter_mm") + " mm, female " +
             value("female") + ", family history " + value("family_history") +
             ". A rupture index of 1 means the stress reaches the estimated strength."});
-        section.blocks.push_back(snapshotOrNote("Wall stress (von Mises, kPa) at blood pressure, seen from the front", options, [&] {
+        const std::string caption = "Wall stress (von Mises, kPa; the elements' values averaged to the surface points) "
+                                    "at blood pressure, seen from the front";
+        section.blocks.push_back(snapshotOrNote(caption, options, [&] {
             const TriangleMesh surface = frameSurface(study.loadTetMesh(physiological->id), "von_mises_kpa");
             const auto& values = surface.pointFields.at("von_mises_kpa");
             const double high = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
