@@ -97,14 +97,12 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
     const VesselNetwork network = study.loadNetwork(run->id);
     report::Section section{"chemoembolization", "Chemoembolization: drug delivery through the hepatic arteries", {}};
     const auto& source = run->provenance.parameters;
-    const auto tip = source.find("tip");
-    const auto tumour = source.find("tumour_mm");
-    const auto tumourLabel = source.find("tumour_label");
+    const std::string tumour = textOr(source, "tumour_mm"), tumourLabel = textOr(source, "tumour_label");
     section.blocks.push_back(report::Paragraph{
-        "Catheter tip: " + (tip == source.end() ? std::string("the root of the tree") : tip->second) +
+        "Catheter tip: " + textOr(source, "tip", "the root of the tree") +
         " (a node of the network, or a point x,y,z in mm, patient LPS). Tumour: " +
-        (tumour != source.end() ? "sphere x,y,z,radius " + tumour->second + " mm"
-                                : tumourLabel != source.end() ? "label " + tumourLabel->second : std::string("none given")) +
+        (!tumour.empty() ? "sphere x,y,z,radius " + tumour + " mm"
+                         : !tumourLabel.empty() ? "label " + tumourLabel : std::string("none given")) +
         "."});
     report::MetricTable injection{"Injection and filling", {}};
     addMetrics(injection, *run,
@@ -133,10 +131,7 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
     for (int k = 1;; ++k)
     {
         const std::string prefix = "tip_rank_" + std::to_string(k) + "_";
-        auto at = [&](const std::string& key) {
-            const auto found = run->attributes.find(prefix + key);
-            return found == run->attributes.end() ? std::string() : found->second;
-        };
+        auto at = [&](const std::string& key) { return textOr(run->attributes, prefix + key); };
         if (at("node").empty())
             break;
         ranking.rows.push_back({std::to_string(k), at("node"),

@@ -33,18 +33,6 @@ SolverInfo solverOf(const study::Artifact& run)
             [](const std::string& name, const Progress& p) { return sim::network::runNetworkValidation(name, p); }};
 }
 
-std::string attribute(const study::Artifact& run, const std::string& key, const std::string& fallback = "-")
-{
-    const auto found = run.attributes.find(key);
-    return found == run.attributes.end() ? fallback : found->second;
-}
-
-std::string parameter(const study::Artifact& run, const std::string& key, const std::string& fallback = "-")
-{
-    const auto found = run.provenance.parameters.find(key);
-    return found == run.provenance.parameters.end() ? fallback : found->second;
-}
-
 } // namespace
 
 report::Section runsSection(const std::vector<const study::Artifact*>& runs, const ReportOptions& options,
@@ -59,13 +47,14 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
         report::Table summary;
         summary.caption = run.name + " (" + run.id + ")";
         summary.columns = {"Item", "Value"};
-        const std::string protocol = parameter(run, "protocol", "");
+        const auto& parameters = run.provenance.parameters;
+        const std::string protocol = textOr(parameters, "protocol");
+        const std::string device = textOr(parameters, "device");
         summary.rows = {{"Solver", solver.description},
                         {"Command", run.provenance.command + (protocol.empty() ? "" : " --protocol " + protocol)},
-                        {"Backend", parameter(run, "backend", "cpu") +
-                                        (run.provenance.parameters.count("device") ? " (" + parameter(run, "device") + ")" : "")},
-                        {"Steps", attribute(run, "steps", "1 (steady solve)")},
-                        {"Wall-clock time", attribute(run, "wall_clock_s", "not recorded") +
+                        {"Backend", textOr(parameters, "backend", "cpu") + (device.empty() ? "" : " (" + device + ")")},
+                        {"Steps", textOr(run.attributes, "steps", "1 (steady solve)")},
+                        {"Wall-clock time", textOr(run.attributes, "wall_clock_s", "not recorded") +
                                                 (run.attributes.count("wall_clock_s") ? " s" : "")},
                         {"Inputs", [&] {
                              std::string list;

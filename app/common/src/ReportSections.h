@@ -3,6 +3,7 @@
 // The sections of the study report (StudyReport.cpp): each returns nothing when the study holds no run of its
 // analysis, and adds the runs it reports to `runs` for the runs section.
 
+#include "ReportSupport.h"
 #include "vsim/app/StudyReport.h"
 #include "vsim/report/ReportModel.h"
 #include "vsim/study/Study.h"
@@ -15,11 +16,13 @@ namespace vsim::app::detail {
 /// AAA rupture-risk review: maximum diameter against the repair thresholds, peak wall stress and rupture index
 /// (physiological run), tearing onset (thesis protocol), a stress snapshot and the diameter along the centerline.
 std::optional<report::Section> aaaSection(const study::Study& study, const ReportOptions& options,
-                                          std::vector<const study::Artifact*>& runs, const Progress& progress);
+                                          VesselSections& sections, std::vector<const study::Artifact*>& runs,
+                                          const Progress& progress);
 
 /// Stenosis from the cross-sections of the newest centerlines when a segment narrows by 40 % or more; the blood-flow
 /// figures (velocity ratios, pressure drop) come with the blood-flow solver.
-std::optional<report::Section> stenosisSection(const study::Study& study, const Progress& progress);
+std::optional<report::Section> stenosisSection(const study::Study& study, VesselSections& sections,
+                                               const Progress& progress);
 
 /// Chemoembolization: the newest drug network run.
 std::optional<report::Section> drugSection(const study::Study& study, const ReportOptions& options,

@@ -1,8 +1,6 @@
 #include "ReportSections.h"
 
 #include "ReportSupport.h"
-#include "vsim/app/NetworkPipeline.h"
-#include "vsim/imaging/VesselMeasurements.h"
 
 namespace vsim::app::detail {
 namespace {
@@ -11,20 +9,14 @@ constexpr double kReportedStenosisPercent = 40.0; // a narrowing from which the 
 
 } // namespace
 
-std::optional<report::Section> stenosisSection(const study::Study& study, const Progress& progress)
+std::optional<report::Section> stenosisSection(const study::Study& study, VesselSections& sections,
+                                               const Progress& progress)
 {
-    const std::string centerlinesId = study.newestArtifact(study::ArtifactKind::Skeleton, "centerline");
-    if (centerlinesId.empty())
+    const imaging::VesselMeasurements* measured =
+        sections.of(study.newestArtifact(study::ArtifactKind::Skeleton, "centerline"), progress);
+    if (!measured || measured->worstStenosisSegment < 0)
         return std::nullopt;
-    const std::string labelId = labelOfCenterlines(study, centerlinesId);
-    if (labelId.empty())
-        return std::nullopt;
-    const imaging::VesselMeasurements measured =
-        imaging::measureVessels(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
-                                ParameterSet(imaging::measurementParameters()), progress);
-    if (measured.worstStenosisSegment < 0)
-        return std::nullopt;
-    const imaging::SegmentMeasurements& worst = measured.segments[std::size_t(measured.worstStenosisSegment)];
+    const imaging::SegmentMeasurements& worst = measured->segments[std::size_t(measured->worstStenosisSegment)];
     if (worst.diameterStenosisPercent < kReportedStenosisPercent)
         return std::nullopt;
     report::Section section{"stenosis", "Stenosis / blockage", {}};

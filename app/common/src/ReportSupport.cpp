@@ -1,11 +1,19 @@
 #include "ReportSupport.h"
 
+#include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
 #include "vsim/viz/Snapshot.h"
 
 #include <cstdlib>
 
 namespace vsim::app::detail {
+
+std::string textOr(const std::map<std::string, std::string>& values, const std::string& key,
+                   const std::string& fallback)
+{
+    const auto found = values.find(key);
+    return found == values.end() ? fallback : found->second;
+}
 
 const study::Artifact* newestRun(const study::Study& study, const std::string& command, const std::string& key,
                                  const std::string& value)
@@ -15,12 +23,9 @@ const study::Artifact* newestRun(const study::Study& study, const std::string& c
     {
         if (artifact.damaged || artifact.provenance.command != command)
             continue;
-        if (!key.empty())
-        {
-            const auto found = artifact.provenance.parameters.find(key);
-            if (found == artifact.provenance.parameters.end() || found->second != value)
-                continue;
-        }
+        const auto& parameters = artifact.provenance.parameters;
+        if (!key.empty() && (!parameters.count(key) || textOr(parameters, key) != value))
+            continue;
         newest = &artifact;
     }
     return newest;
@@ -29,12 +34,10 @@ const study::Artifact* newestRun(const study::Study& study, const std::string& c
 std::optional<report::Metric> runMetric(const study::Artifact& run, const std::string& key, const std::string& label,
                                         const std::string& unit, double scale)
 {
-    const auto found = run.attributes.find(key);
-    if (found == run.attributes.end())
-        return std::nullopt;
+    const std::string text = textOr(run.attributes, key);
     char* end = nullptr;
-    const double value = std::strtod(found->second.c_str(), &end);
-    if (end == found->second.c_str())
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end == text.c_str())
         return std::nullopt;
     return report::metric(key, label, value * scale, unit);
 }
@@ -68,6 +71,21 @@ report::Table parameterTable(const study::Artifact& run, const std::vector<Param
             table.rows.push_back({key, value});
     }
     return table;
+}
+
+const imaging::VesselMeasurements* VesselSections::of(const std::string& centerlinesId, const Progress& progress)
+{
+    auto found = m_measured.find(centerlinesId);
+    if (found == m_measured.end())
+    {
+        std::optional<imaging::VesselMeasurements> measured;
+        const std::string labelId = centerlinesId.empty() ? std::string() : labelOfCenterlines(m_study, centerlinesId);
+        if (!labelId.empty())
+            measured = imaging::measureVessels(m_study.loadLabel(labelId), m_study.loadSkeleton(centerlinesId),
+                                               ParameterSet(imaging::measurementParameters()), progress);
+        found = m_measured.emplace(centerlinesId, std::move(measured)).first;
+    }
+    return found->second ? &*found->second : nullptr;
 }
 
 report::Plot diameterPlot(const imaging::SegmentMeasurements& segment, const std::string& caption)

@@ -12,11 +12,16 @@
 #include <QImage>
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace vsim::app::detail {
+
+/// The text recorded under `key` (metadata, attributes, provenance parameters), or `fallback`.
+std::string textOr(const std::map<std::string, std::string>& values, const std::string& key,
+                   const std::string& fallback = {});
 
 /// The newest undamaged artifact made by `command` (e.g. "simulate fem") whose provenance parameter `key` is
 /// `value` when key is given; nullptr when there is none.
@@ -42,6 +47,20 @@ void addMetrics(report::MetricTable& table, const study::Artifact& run, const st
 /// the tumour, the backend) with their text as recorded.
 report::Table parameterTable(const study::Artifact& run, const std::vector<ParameterSpec>& specs,
                              const std::string& caption);
+
+/// The cross-sections of a study's centerlines in the label they came from, measured once per centerlines artifact
+/// however many sections ask (a full-size tree takes about half a second).
+class VesselSections
+{
+public:
+    explicit VesselSections(const study::Study& study) : m_study(study) {}
+    /// The measurements of `centerlinesId`; nullptr when the centerlines have no label to measure in.
+    const imaging::VesselMeasurements* of(const std::string& centerlinesId, const Progress& progress);
+
+private:
+    const study::Study& m_study;
+    std::map<std::string, std::optional<imaging::VesselMeasurements>> m_measured;
+};
 
 /// The equivalent diameter along a segment's centerline (its sections away from junctions).
 report::Plot diameterPlot(const imaging::SegmentMeasurements& segment, const std::string& caption);

@@ -1,7 +1,6 @@
 #include "ReportSections.h"
 
 #include "ReportSupport.h"
-#include "vsim/app/NetworkPipeline.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/viz/Snapshot.h"
@@ -48,7 +47,8 @@ std::string thresholdSentence(double diameterMm)
 } // namespace
 
 std::optional<report::Section> aaaSection(const study::Study& study, const ReportOptions& options,
-                                          std::vector<const study::Artifact*>& runs, const Progress& progress)
+                                          VesselSections& sections, std::vector<const study::Artifact*>& runs,
+                                          const Progress& progress)
 {
     const study::Artifact* physiological = newestRun(study, "simulate fem", "protocol", "physiological");
     const study::Artifact* rupture = newestRun(study, "simulate fem", "protocol", "thesis-rupture");
@@ -58,19 +58,15 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
 
     // Geometry: the cross-sections of the centerlines the wall run used.
     const study::Artifact& anyRun = physiological ? *physiological : *rupture;
-    const std::string centerlinesId = centerlinesOf(study, anyRun);
-    const std::string labelId = centerlinesId.empty() ? std::string() : labelOfCenterlines(study, centerlinesId);
+    const imaging::VesselMeasurements* measured = sections.of(centerlinesOf(study, anyRun), progress.subRange(0.0, 0.6));
     report::MetricTable geometry{"Geometry (cross-sections perpendicular to the centerline)", {}};
-    if (!labelId.empty())
+    if (measured)
     {
-        const imaging::VesselMeasurements measured =
-            imaging::measureVessels(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
-                                    ParameterSet(imaging::measurementParameters()), progress.subRange(0.0, 0.6));
-        geometry.rows.push_back(report::metric("measured_max_diameter_mm", "Maximum diameter", measured.maxDiameterMm, "mm"));
-        geometry.rows.push_back(report::metric("measured_max_caliper_mm", "Largest caliper width", measured.maxCaliperMm, "mm"));
+        geometry.rows.push_back(report::metric("measured_max_diameter_mm", "Maximum diameter", measured->maxDiameterMm, "mm"));
+        geometry.rows.push_back(report::metric("measured_max_caliper_mm", "Largest caliper width", measured->maxCaliperMm, "mm"));
         section.blocks.push_back(geometry);
-        section.blocks.push_back(report::Paragraph{thresholdSentence(measured.maxDiameterMm)});
-        section.blocks.push_back(aneurysmPlot(measured));
+        section.blocks.push_back(report::Paragraph{thresholdSentence(measured->maxDiameterMm)});
+        section.blocks.push_back(aneurysmPlot(*measured));
     }
     else
         section.blocks.push_back(report::Paragraph{"No centerlines: the maximum diameter was not measured."});
@@ -92,11 +88,7 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
                     {"peak_rupture_index_y_mm", "Peak rupture index at y", "mm"},
                     {"peak_rupture_index_z_mm", "Peak rupture index at z", "mm"}});
         section.blocks.push_back(stress);
-        const auto& p = physiological->provenance.parameters;
-        auto value = [&](const char* key) {
-            const auto found = p.find(key);
-            return found == p.end() ? std::string("?") : found->second;
-        };
+        auto value = [&](const char* key) { return textOr(physiological->provenance.parameters, key, "?"); };
         section.blocks.push_back(report::Paragraph{
             "Strength model: Vande Geest et al. 2006 (wall strength from the local thrombus thickness, the local "
             "diameter over the non-aneurysmal reference, family history and sex), with thrombus " +

@@ -14,8 +14,7 @@ using study::Artifact;
 
 std::string metadata(const study::Study& study, const std::string& key)
 {
-    const auto found = study.metadata().find(key);
-    return found == study.metadata().end() ? std::string() : found->second;
+    return detail::textOr(study.metadata(), key);
 }
 
 /// An attribute of the study's newest image (the CT series), e.g. "series_description".
@@ -24,9 +23,7 @@ std::string imageAttribute(const study::Study& study, const std::string& key)
     const std::string image = study.newestArtifact(study::ArtifactKind::Image);
     if (image.empty())
         return {};
-    const auto& attributes = study.artifact(image).attributes;
-    const auto found = attributes.find(key);
-    return found == attributes.end() ? std::string() : found->second;
+    return detail::textOr(study.artifact(image).attributes, key);
 }
 
 /// YYYYMMDD -> YYYY-MM-DD; other text unchanged.
@@ -75,16 +72,17 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
     report::Report report;
     report.header = header(study, options.anonymize);
     std::vector<const Artifact*> runs;
+    detail::VesselSections sections(study);
     if (wanted("aaa"))
     {
-        if (auto section = detail::aaaSection(study, options, runs, progress.subRange(0.0, 0.4)))
+        if (auto section = detail::aaaSection(study, options, sections, runs, progress.subRange(0.0, 0.4)))
             report.sections.push_back(std::move(*section));
         else
             report.notRun.push_back("AAA rupture-risk review: the study has no wall-mechanics run (simulate fem).");
     }
     if (wanted("stenosis"))
     {
-        if (auto section = detail::stenosisSection(study, progress.subRange(0.4, 0.6)))
+        if (auto section = detail::stenosisSection(study, sections, progress.subRange(0.4, 0.6)))
             report.sections.push_back(std::move(*section));
         else
             report.notRun.push_back("Stenosis / blockage: no segment of the centerlines narrows by 40 % or more, and "
