@@ -1,5 +1,6 @@
 #include "CliCommands.h"
 #include "CliSupport.h"
+#include "CommandLine.h"
 
 #include "vsim/app/DemoStudy.h"
 #include "vsim/app/DicomStudyImport.h"
@@ -7,6 +8,7 @@
 #include "vsim/app/StudySummary.h"
 #include "vsim/app/VersionInfo.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/OutputSafety.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PhantomWriter.h"
 #include "vsim/imaging/Centerlines.h"
@@ -46,25 +48,6 @@ bool Arguments::hasOption(const std::string& name) const
     return false;
 }
 
-Arguments parseArguments(const std::vector<std::string>& words)
-{
-    Arguments arguments;
-    for (std::size_t w = 0; w < words.size(); ++w)
-    {
-        if (words[w].rfind("--", 0) == 0)
-        {
-            const std::string name = words[w].substr(2);
-            const bool hasValue = w + 1 < words.size() && words[w + 1].rfind("--", 0) != 0;
-            arguments.options.emplace_back(name, hasValue ? words[++w] : std::string("true"));
-        }
-        else
-        {
-            arguments.positional.push_back(words[w]);
-        }
-    }
-    return arguments;
-}
-
 int printVersion()
 {
     for (const auto& [component, version] : app::libraryVersions())
@@ -76,7 +59,7 @@ int printStudyInfo(const Arguments& arguments)
 {
     if (arguments.positional.size() != 1)
         throw Error("usage: vascusim-cli info <study.vsim>");
-    const study::Study study = study::Study::open(arguments.positional[0]);
+    const study::Study study = openStudyForReading(arguments.positional[0]);
     std::cout << app::studySummaryJson(study) << std::endl;
     return 0;
 }
@@ -93,28 +76,12 @@ bool isVolumeFile(const fs::path& file)
     return false;
 }
 
-study::Study openOrCreateStudy(const fs::path& bundle)
+/// The study to import into: opened for writing, or created in a new or empty folder.
+study::Study openOrCreateStudy(const Arguments& arguments)
 {
-    return fs::exists(bundle / "study.json") ? study::Study::open(bundle)
-                                             : study::Study::create(bundle, bundle.stem().string());
-}
-
-double parseNumber(const Arguments& arguments, const std::string& option, double fallback)
-{
-    if (!arguments.hasOption(option))
-        return fallback;
-    const std::string text = arguments.option(option);
-    try
-    {
-        std::size_t used = 0;
-        const double value = std::stod(text, &used);
-        if (used == text.size())
-            return value;
-    }
-    catch (const std::exception&)
-    {
-    }
-    throw Error("--" + option + " expects a number, got '" + text + "'");
+    const fs::path bundle = arguments.option("study");
+    return fs::exists(bundle / "study.json") ? openStudyForWriting(arguments)
+                                             : study::Study::create(bundle, bundle.stem().string(), waitSeconds(arguments));
 }
 
 int listDicom(const dicom::DicomScanResult& scan)
@@ -134,7 +101,7 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress)
     const fs::path input = arguments.positional[0];
     if (isVolumeFile(input))
     {
-        study::Study study = openOrCreateStudy(bundle);
+        study::Study study = openOrCreateStudy(arguments);
         const std::string id = study::importVolumeFile(study, input, progress);
         study.save();
         std::cout << "imported " << input.filename().string() << " as " << id << "\n";
@@ -147,8 +114,8 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress)
         return listDicom(scan);
     const dicom::DicomSeries& series = app::chooseSeries(scan, arguments.option("series"));
     dicom::DicomImportOptions options;
-    options.memoryLimitBytes = std::uint64_t(parseNumber(arguments, "memory-limit-mb", 0.0) * 1024.0 * 1024.0);
-    study::Study study = openOrCreateStudy(bundle);
+    options.memoryLimitBytes = std::uint64_t(quantityOption(arguments, "memory-limit-mb", "", 0.0) * 1024.0 * 1024.0);
+    study::Study study = openOrCreateStudy(arguments);
     const std::string id =
         app::importDicomSeriesIntoStudy(study, series, input, options, progress.subRange(0.1, 0.9));
     study.save();
@@ -178,11 +145,11 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
         const auto spacing = parseTriple<double>(arguments.option("spacing"), ',', "spacing");
         options.spacing = {spacing[0], spacing[1], spacing[2]};
     }
-    options.noiseHu = parseNumber(arguments, "noise", options.noiseHu);
-    options.seed = std::uint64_t(parseNumber(arguments, "seed", double(options.seed)));
-    options.blurMm = parseNumber(arguments, "blur", options.blurMm);
-    options.aneurysmDiameterMm = parseNumber(arguments, "max-diameter", options.aneurysmDiameterMm);
-    options.stenosisPercent = parseNumber(arguments, "stenosis", options.stenosisPercent);
+    options.noiseHu = quantityOption(arguments, "noise", "HU", options.noiseHu);
+    options.seed = std::uint64_t(quantityOption(arguments, "seed", "", double(options.seed)));
+    options.blurMm = quantityOption(arguments, "blur", "mm", options.blurMm);
+    options.aneurysmDiameterMm = quantityOption(arguments, "max-diameter", "mm", options.aneurysmDiameterMm);
+    options.stenosisPercent = quantityOption(arguments, "stenosis", "%", options.stenosisPercent);
     dicom::CtSeriesDescription description = dicom::phantomSeriesDescription(kind);
     description.transferSyntax = dicom::transferSyntaxFromName(arguments.option("transfer-syntax", "explicit-le"));
     description.enhancedMultiFrame = arguments.hasOption("enhanced");
@@ -198,7 +165,7 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
     const std::string bundle = arguments.option("study");
     if (bundle.empty() || !arguments.positional.empty())
         throw Error("usage: vascusim-cli segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value]");
-    study::Study study = study::Study::open(bundle);
+    study::Study study = openStudyForWriting(arguments);
     const std::string imageId = chooseArtifact(study, arguments.option("image"), study::ArtifactKind::Image,
                                                "the study has no CT image: import one first (vascusim-cli import "
                                                "<dicom folder> --study S)");
@@ -238,13 +205,15 @@ int surfaceStudy(const Arguments& arguments, const Progress& progress)
     const std::string bundle = arguments.option("study");
     if (bundle.empty() || !arguments.positional.empty())
         throw Error("usage: vascusim-cli surface --study <study.vsim> [--label ID] [--target-vertices N] [--stl FILE]");
-    study::Study study = study::Study::open(bundle);
+    study::Study study = openStudyForWriting(arguments);
     const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
                                                "the study has no vessel label: run vascusim-cli segment first");
+    if (arguments.hasOption("stl"))
+        checkOutputFile(arguments.option("stl"), arguments.hasOption("overwrite"));
     ParameterSet parameters(mesh::surfaceParameters());
     applyParameters(arguments, parameters);
     if (arguments.hasOption("target-vertices"))
-        parameters.set("target_vertices", parseNumber(arguments, "target-vertices", 0.0));
+        parameters.set("target_vertices", quantityOption(arguments, "target-vertices", "", 0.0));
     const mesh::VesselSurface result =
         mesh::extractVesselSurface(study.loadLabel(labelId), 1, parameters, progress.subRange(0.0, 0.9));
     study::Provenance provenance;
@@ -272,7 +241,7 @@ int skeletonStudy(const Arguments& arguments, const Progress& progress)
     const std::string bundle = arguments.option("study");
     if (bundle.empty() || !arguments.positional.empty())
         throw Error("usage: vascusim-cli skeleton --study <study.vsim> [--label ID] [--param key=value]");
-    study::Study study = study::Study::open(bundle);
+    study::Study study = openStudyForWriting(arguments);
     const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
                                                "the study has no vessel label: run vascusim-cli segment first");
     ParameterSet parameters(imaging::skeletonParameters());
@@ -304,7 +273,7 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress)
     if (bundle.empty() || !arguments.positional.empty() || arguments.hasOption("from") != arguments.hasOption("to"))
         throw Error("usage: vascusim-cli centerline --study <study.vsim> [--skeleton ID] [--label ID] "
                     "[--from NODE --to NODE] [--param key=value]");
-    study::Study study = study::Study::open(bundle);
+    study::Study study = openStudyForWriting(arguments);
     const std::string skeletonId =
         chooseArtifact(study, arguments.option("skeleton"), study::ArtifactKind::Skeleton,
                        "the study has no skeleton: run vascusim-cli skeleton first");
@@ -319,7 +288,7 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress)
     std::optional<std::pair<int, int>> fromTo;
     if (arguments.hasOption("from"))
     {
-        fromTo = std::pair<int, int>{int(parseNumber(arguments, "from", 0)), int(parseNumber(arguments, "to", 0))};
+        fromTo = std::pair<int, int>{int(quantityOption(arguments, "from", "", 0)), int(quantityOption(arguments, "to", "", 0))};
         for (int node : {fromTo->first, fromTo->second})
             if (node < 0 || node >= int(skeleton.nodes.size()))
                 throw Error("no skeleton node " + std::to_string(node) + " (the skeleton has " +
@@ -350,7 +319,7 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
     const std::string bundle = arguments.option("study");
     if (bundle.empty() || !arguments.positional.empty())
         throw Error("usage: vascusim-cli measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE]");
-    const study::Study study = study::Study::open(bundle);
+    const study::Study study = openStudyForReading(bundle);
     const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
     const std::string labelId = arguments.hasOption("label") ? arguments.option("label")
                                                              : app::labelOfCenterlines(study, centerlinesId);
@@ -395,6 +364,7 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
                                      {"segments", segments}};
     if (arguments.hasOption("json"))
     {
+        checkOutputFile(arguments.option("json"), arguments.hasOption("overwrite"));
         std::ofstream file(arguments.option("json"), std::ios::trunc);
         file << document.dump(2) << "\n";
         if (!file.flush())

@@ -7,7 +7,8 @@
 
 namespace vsim::cli {
 
-/// Arguments after the command name, with "--name value" options split out.
+/// Arguments after the command name, with "--name value" options split out (CommandLine.h parses them; a flag
+/// has the value "true").
 struct Arguments
 {
     std::vector<std::string> positional;
@@ -17,9 +18,6 @@ struct Arguments
     std::string option(const std::string& name, const std::string& fallback = {}) const;
     bool hasOption(const std::string& name) const;
 };
-
-/// Parses "a b --study S --flag"; a bare flag gets the value "true".
-Arguments parseArguments(const std::vector<std::string>& words);
 
 /// Each command returns the process exit code and throws vsim::Error for bad input.
 int printVersion();

@@ -1,5 +1,6 @@
 #include "CliSupport.h"
 
+#include "CommandLine.h"
 #include "vsim/core/Error.h"
 
 #include <sstream>
@@ -27,6 +28,29 @@ std::string chooseCenterlines(const study::Study& study, const std::string& want
 {
     return chooseMadeBy(study, wanted, study::ArtifactKind::Skeleton, "centerline",
                         "the study has no centerlines: run vascusim-cli centerline first");
+}
+
+double waitSeconds(const Arguments& arguments)
+{
+    const double seconds = quantityOption(arguments, "wait", "s", 0.0);
+    if (!(seconds >= 0.0))
+        throw UsageError("--wait expects seconds >= 0");
+    return seconds;
+}
+
+study::Study openStudyForWriting(const Arguments& arguments)
+{
+    const std::string bundle = arguments.option("study");
+    if (bundle.empty())
+        throw UsageError("--study <study.vsim> is required");
+    return study::Study::open(bundle, study::Access::Write, waitSeconds(arguments));
+}
+
+study::Study openStudyForReading(const std::string& bundle)
+{
+    if (bundle.empty())
+        throw UsageError("--study <study.vsim> is required");
+    return study::Study::open(bundle, study::Access::ReadOnly);
 }
 
 void applyParameters(const Arguments& arguments, ParameterSet& parameters)

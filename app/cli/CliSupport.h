@@ -22,6 +22,14 @@ std::string chooseMadeBy(const study::Study& study, const std::string& wanted, s
                          const std::string& command, const std::string& missing);
 /// `wanted`, else the newest centerlines (a skeleton made by the centerline step).
 std::string chooseCenterlines(const study::Study& study, const std::string& wanted);
+/// Opens --study for writing, waiting up to --wait seconds (default 0) for another writer's lock; throws
+/// vsim::Error naming the holder when it is still held.
+study::Study openStudyForWriting(const Arguments& arguments);
+/// Opens --study (or `bundle`) for reading: works while another process writes it.
+study::Study openStudyForReading(const std::string& bundle);
+/// --wait in seconds (a number, "s" allowed), 0 when absent.
+double waitSeconds(const Arguments& arguments);
+
 /// Applies every --param key=value to the set.
 void applyParameters(const Arguments& arguments, ParameterSet& parameters);
 

@@ -3,8 +3,12 @@
 #include "NetworkCommands.h"
 #include "ReportCommand.h"
 #include "WallCommands.h"
+#include "CliSupport.h"
+#include "CommandLine.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/OutputSafety.h"
 #include "vsim/dicom/PhantomModel.h"
+#include "vsim/dicom/PhantomWriter.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,14 +22,13 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Runs one command as `vascusim-cli <words>` would, its JSON output kept out of the demo's own.
-std::string step(int (*command)(const Arguments&, const Progress&), const std::vector<std::string>& words,
-                 const Progress& progress)
+std::string step(const std::vector<std::string>& words, const Progress& progress)
 {
     std::ostringstream captured;
     std::streambuf* previous = std::cout.rdbuf(captured.rdbuf());
     try
     {
-        command(parseArguments(words), progress);
+        runCommandLine(words, progress);
     }
     catch (...)
     {
@@ -63,9 +66,15 @@ std::pair<std::string, std::string> hepaticTipAndTumour()
 int runDemo(const Arguments& arguments, const Progress& progress)
 {
     const std::string out = arguments.option("out");
-    if (out.empty())
-        throw Error("usage: vascusim-cli demo --out <folder> [--size 512x512x400]");
+    dicom::PhantomOptions options;
+    if (arguments.hasOption("size"))
+        options.size = parseTriple<int>(arguments.option("size"), 'x', "size");
+    claimOutputFolder(out, "demo");
     const std::vector<std::string> cases = {"aaa", "hepatic-tree", "stenosis"};
+    for (const std::string& kind : cases)
+        if (fs::exists(fs::path(out) / kind))
+            throw Error("the demo folder already holds a " + kind + " demo; choose a new or empty --out",
+                        {{"folder", (fs::path(out) / kind).string()}});
     nlohmann::json summary = nlohmann::json::array();
     for (std::size_t c = 0; c < cases.size(); ++c)
     {
@@ -74,38 +83,34 @@ int runDemo(const Arguments& arguments, const Progress& progress)
         auto stage = [&](double from, double to) { return part.subRange(from, to); };
         const fs::path folder = fs::path(out) / kind;
         const std::string study = (folder / (kind + ".vsim")).string(), phantom = (folder / "phantom").string();
-        if (fs::exists(study))
-            throw Error("the demo folder already holds " + study + "; choose an empty --out");
-        std::vector<std::string> phantomWords = {kind, "--out", phantom};
-        if (arguments.hasOption("size"))
-            phantomWords.insert(phantomWords.end(), {"--size", arguments.option("size")});
-        step(writePhantomSeries, phantomWords, stage(0.0, 0.1));
-        step(importIntoStudy, {phantom + "/dicom", "--study", study}, stage(0.1, 0.2));
-        step(segmentStudy, {"--study", study}, stage(0.2, 0.35));
-        step(skeletonStudy, {"--study", study}, stage(0.35, 0.45));
-        step(centerlineStudy, {"--study", study}, stage(0.45, 0.55));
+        const dicom::PhantomKind phantomKind = dicom::phantomKindFromName(kind);
+        const dicom::PhantomFiles phantomFiles = dicom::writePhantom(
+            phantomKind, options, dicom::phantomSeriesDescription(phantomKind), phantom, stage(0.0, 0.1));
+        step({"import", phantomFiles.dicomFolder.string(), "--study", study}, stage(0.1, 0.2));
+        step({"segment", "--study", study}, stage(0.2, 0.35));
+        step({"skeleton", "--study", study}, stage(0.35, 0.45));
+        step({"centerline", "--study", study}, stage(0.45, 0.55));
         if (kind == "aaa")
         {
-            step(meshWall, {"wall", "--study", study}, stage(0.55, 0.6));
-            step(simulateFem,
-                 {"fem", "--study", study, "--protocol", "physiological", "--backend", "auto", "--out",
+            step({"mesh", "wall", "--study", study}, stage(0.55, 0.6));
+            step({"simulate", "fem", "--study", study, "--protocol", "physiological", "--backend", "auto", "--out",
                   (folder / "wall-run").string()},
                  stage(0.6, 0.85));
         }
         if (kind == "hepatic-tree")
         {
             const auto [tip, tumour] = hepaticTipAndTumour();
-            step(simulateNetwork, {"network", "--study", study, "--tip", tip, "--tumour", tumour, "--out",
+            step({"simulate", "network", "--study", study, "--tip", tip, "--tumour", tumour, "--out",
                                    (folder / "network-run").string()},
                  stage(0.55, 0.85));
         }
         const std::string report = (folder / "report.pdf").string();
         const std::string written =
-            step(writeReport, {"--study", study, "--out", report, "--dicom-pdf", (folder / "report.dcm").string(),
+            step({"report", "--study", study, "--out", report, "--dicom-pdf", (folder / "report.dcm").string(),
                                "--metrics-json", (folder / "metrics.json").string(), "--metrics-csv",
                                (folder / "metrics.csv").string()},
                  stage(0.85, 1.0));
-        fs::remove_all(fs::path(phantom) / "dicom"); // the CT is in the study now
+        removeWrittenFiles(phantomFiles.series.files, phantomFiles.dicomFolder); // the CT is in the study now; truth stays
         nlohmann::json entry = nlohmann::json::parse(written);
         entry["case"] = kind;
         entry["study"] = study;

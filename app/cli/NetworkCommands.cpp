@@ -1,8 +1,10 @@
 #include "NetworkCommands.h"
 
 #include "CliSupport.h"
+#include "CommandLine.h"
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/OutputSafety.h"
 #include "vsim/core/Units.h"
 #include "vsim/study/NetworkFile.h"
 
@@ -37,7 +39,7 @@ double parseRateMlPerMin(const std::string& text, double densityKgPerM3)
         return value / gramsPerMl;
     if (unit == "mg/s")
         return 60.0 * 1e-3 * value / gramsPerMl;
-    throw Error("--rate: unknown unit '" + unit + "' (ml/min, ml/s, g/min or mg/s)");
+    throw UsageError("--rate: unknown unit '" + unit + "' (ml/min, ml/s, g/min or mg/s)");
 }
 
 Eigen::Vector3d point(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
@@ -51,7 +53,9 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
         throw Error("usage: vascusim-cli simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min | --tip-pressure mmHg] "
                     "[--void-fraction 0.1] [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]] [--control x,y,z ...] [--network FILE [--default-outlets "
                     "murray]] [--centerlines ID] [--param key=value] [--out DIR]");
-    study::Study study = study::Study::open(bundle);
+    if (arguments.hasOption("out")) // before the run: a refused folder costs no time
+        claimOutputFolder(arguments.option("out"), "run");
+    study::Study study = openStudyForWriting(arguments);
     sim::network::NetworkRunSetup setup;
     applyParameters(arguments, setup.parameters);
     if (arguments.hasOption("void-fraction"))
@@ -62,7 +66,7 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
         setup.parameters.set("injection_rate_ml_min",
                              parseRateMlPerMin(arguments.option("rate"), sim::network::networkMixture(setup.parameters).density()));
     if (arguments.hasOption("tip-pressure"))
-        setup.tipPressurePa = units::mmHgToPa(parseNumbers(arguments.option("tip-pressure"), ',', 1, "tip-pressure")[0]);
+        setup.tipPressurePa = units::mmHgToPa(quantityOption(arguments, "tip-pressure", "mmHg", 0.0));
 
     std::map<std::string, std::string> source;
     std::vector<std::string> inputs, warnings;

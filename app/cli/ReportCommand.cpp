@@ -1,7 +1,9 @@
 #include "ReportCommand.h"
 
 #include "vsim/app/StudyReport.h"
+#include "CliSupport.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/OutputSafety.h"
 #include "vsim/report/EncapsulatedPdf.h"
 #include "vsim/report/MetricsExport.h"
 #include "vsim/report/PdfReport.h"
@@ -12,6 +14,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace vsim::cli {
@@ -51,7 +54,25 @@ int writeReport(const Arguments& arguments, const Progress& progress)
                     "[--anonymize] [--metrics-csv <file>] [--metrics-json <file>] [--no-validation]");
     const std::string pageName = arguments.option("page", "a4");
     const report::PageSize page = report::pageSizeFromName(pageName);
-    study::Study study = study::Study::open(bundle);
+    // Every output file is checked before the report is built: an existing one is replaced only with --overwrite.
+    for (const char* option : {"out", "dicom-pdf", "metrics-csv", "metrics-json"})
+        if (arguments.hasOption(option))
+            checkOutputFile(arguments.option(option), arguments.hasOption("overwrite"));
+    // A reader: a study another process is writing is reported all the same, and the PDF is not kept in it.
+    std::string notKept;
+    std::optional<study::Study> opened;
+    try
+    {
+        opened.emplace(study::Study::open(bundle, study::Access::Write, waitSeconds(arguments)));
+    }
+    catch (const Error& error)
+    {
+        if (error.contextValue("holder").empty())
+            throw;
+        notKept = error.message();
+        opened.emplace(study::Study::open(bundle, study::Access::ReadOnly));
+    }
+    study::Study& study = *opened;
     app::ReportOptions options;
     options.anonymize = arguments.hasOption("anonymize");
     options.validate = !arguments.hasOption("no-validation");
@@ -63,6 +84,8 @@ int writeReport(const Arguments& arguments, const Progress& progress)
     nlohmann::json summary = {{"pdf", out}, {"bytes", pdf.size()}, {"anonymized", options.anonymize}};
     try // the report is written; keeping it in the study too may fail (a read-only study) without losing it
     {
+        if (!notKept.empty())
+            throw Error(notKept);
         summary["artifact"] = app::addReport(study, report, std::string(pdf.constData(), std::size_t(pdf.size())),
                                              options, pageName);
         study.save();

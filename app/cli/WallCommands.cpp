@@ -1,7 +1,10 @@
 #include "WallCommands.h"
 
 #include "CliSupport.h"
+#include "CommandLine.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/OutputSafety.h"
+#include "vsim/app/RunRecord.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/study/MeshFileImport.h"
@@ -45,9 +48,11 @@ int meshWall(const Arguments& arguments, const Progress& progress)
                     "       vascusim-cli mesh import <mesh.vtu> --study <study.vsim>");
     if (kind == "sheet")
     {
-        study::Study study = study::Study::open(bundle);
-        const double width = std::stod(arguments.option("width", "40")), length = std::stod(arguments.option("length", "40"));
-        const double thickness = std::stod(arguments.option("thickness", "0.5")), cell = std::stod(arguments.option("cell", "1"));
+        study::Study study = openStudyForWriting(arguments);
+        const double width = quantityOption(arguments, "width", "mm", 40.0);
+        const double length = quantityOption(arguments, "length", "mm", 40.0);
+        const double thickness = quantityOption(arguments, "thickness", "mm", 0.5);
+        const double cell = quantityOption(arguments, "cell", "mm", 1.0);
         return addOtherWall(study, app::clothSheet(width, length, thickness, cell), "Cloth sheet",
                             {{"shape", "sheet"},
                              {"width_mm", numberText(width)},
@@ -57,17 +62,17 @@ int meshWall(const Arguments& arguments, const Progress& progress)
     }
     if (kind == "import")
     {
-        study::Study study = study::Study::open(bundle);
+        study::Study study = openStudyForWriting(arguments);
         const std::string file = arguments.positional[1];
         return addOtherWall(study, app::asWall(study::readTetMeshFile(file)), "Imported wall",
                             {{"shape", "imported"}, {"source", std::filesystem::path(file).filename().string()}});
     }
-    study::Study study = study::Study::open(bundle);
+    study::Study study = openStudyForWriting(arguments);
     const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
     const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
                                                "the study has no vessel label: run vascusim-cli segment first");
-    const double thickness = std::stod(arguments.option("thickness", "1.5"));
-    const double targetVertices = std::stod(arguments.option("target-vertices", "3000"));
+    const double thickness = quantityOption(arguments, "thickness", "mm", 1.5);
+    const double targetVertices = quantityOption(arguments, "target-vertices", "", 3000.0);
     const app::WallMeshBuild build = app::buildWallMesh(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
                                                         thickness, targetVertices, progress.subRange(0.0, 0.95));
     const mesh::WallMesh& wall = build.wall;
@@ -106,7 +111,9 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
         throw Error("the interactive protocol needs the workstation (vascusim): it drags the wall with the mouse");
     if (protocol != "thesis-rupture" && protocol != "physiological")
         throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
-    study::Study study = study::Study::open(bundle);
+    if (arguments.hasOption("out")) // before the run: a refused folder costs no time
+        claimOutputFolder(arguments.option("out"), "run");
+    study::Study study = openStudyForWriting(arguments);
     const std::string meshId = chooseMadeBy(study, arguments.option("mesh"), study::ArtifactKind::TetMesh, "mesh wall",
                                             "the study has no wall mesh: run vascusim-cli mesh wall first");
     ParameterSet parameters(sim::fem::femParameters());
@@ -127,6 +134,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                   {"metrics", metrics},
                                   {"entropy_curve", entropy},
                                   {"stop_reason", run.stopReason},
+                                  {"run_status", nlohmann::json::parse(app::runStatusJson(run.status))},
                                   {"frames", run.frames.size()},
                                   {"frame_times_s", run.frameTimesS},
                                   {"frame_pressures_kpa", [&run] {
@@ -135,7 +143,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                            kpa.push_back(1e-3 * pa);
                                        return kpa;
                                    }()},
-                                  {"parameters", parameters.valuesAsText()}};
+                                  {"parameters", sim::fem::femProtocolValues(parameters, protocol)}};
 
     const std::string id = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters, backend);
     study.save();

@@ -5,6 +5,7 @@
 #include "ViewLayout.h"
 #include "vsim/app/DicomStudyImport.h"
 #include "vsim/dicom/DicomImport.h"
+#include "vsim/study/StudyLock.h"
 #include "vsim/study/VolumeFileImport.h"
 
 #include <QCloseEvent>
@@ -162,7 +163,8 @@ void MainWindow::setBusy(bool busy)
 void MainWindow::refreshTitle()
 {
     const QString name = m_document.hasStudy() ? QString::fromStdString(m_document.study().name()) : tr("No study");
-    setWindowTitle(tr("%1[*] - VascuSim").arg(name));
+    const bool readOnly = m_document.hasStudy() && m_document.study().isReadOnly();
+    setWindowTitle(readOnly ? tr("%1 (read-only) - VascuSim").arg(name) : tr("%1[*] - VascuSim").arg(name));
     setWindowModified(m_document.isModified());
 }
 
@@ -214,15 +216,61 @@ MainWindow* MainWindow::windowForNewDocument()
     return window;
 }
 
+study::Access MainWindow::askHowToOpenLockedStudy(const QString& bundle, bool& breakLock)
+{
+    breakLock = false;
+    const study::LockHolder holder = study::StudyLock::currentHolder(bundle.toStdString());
+    if (holder.pid == 0)
+        return study::Access::Write;
+    const QString who = QString::fromStdString(holder.describe());
+    if (!holder.isOtherHost()) // the kernel holds the lock for a live process here: never broken
+    {
+        statusBar()->showMessage(tr("Opened read-only: the study is being written by %1").arg(who), 15000);
+        return study::Access::ReadOnly;
+    }
+    // A network share: the holder may have died on its host. Only the user can tell; nothing is broken silently.
+    QMessageBox box(QMessageBox::Warning, tr("Study in use"),
+                    tr("The study is being written by %1.\nOpen it read-only, or break the lock if you are sure that "
+                       "program no longer runs.").arg(who),
+                    QMessageBox::NoButton, this);
+    QPushButton* readOnly = box.addButton(tr("Open Read-Only"), QMessageBox::AcceptRole);
+    QPushButton* breakButton = box.addButton(tr("Break the Lock..."), QMessageBox::DestructiveRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(readOnly);
+    box.exec();
+    if (box.clickedButton() == breakButton &&
+        QMessageBox::question(this, tr("Break the lock"),
+                              tr("If %1 still runs, both programs will write the study and results can be lost. "
+                                 "Break the lock?").arg(who),
+                              QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes)
+    {
+        breakLock = true;
+        return study::Access::Write;
+    }
+    if (box.clickedButton() == readOnly)
+        return study::Access::ReadOnly;
+    throw Cancelled();
+}
+
 bool MainWindow::openStudy(const QString& bundle)
 {
+    bool breakLock = false;
+    study::Access access = study::Access::Write;
+    try
+    {
+        access = askHowToOpenLockedStudy(bundle, breakLock);
+    }
+    catch (const Cancelled&)
+    {
+        return false;
+    }
     auto opened = std::make_shared<std::optional<study::Study>>();
     auto image = std::make_shared<CtVolume>();
     return m_tasks.run(
         tr("Open study"),
-        [path = bundle.toStdString(), opened, image](const Progress& progress) {
+        [path = bundle.toStdString(), opened, image, access, breakLock](const Progress& progress) {
             progress.report(0.0, "checking the study's files");
-            opened->emplace(study::Study::open(path));
+            opened->emplace(breakLock ? study::Study::openBreakingLock(path) : study::Study::open(path, access));
             progress.report(0.5, "loading the image");
             for (const study::Artifact& artifact : (*opened)->artifacts())
                 if (artifact.kind == study::ArtifactKind::Image && !artifact.damaged)

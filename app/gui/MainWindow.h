@@ -6,6 +6,7 @@
 #include "TaskRunner.h"
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Parameters.h"
+#include "vsim/core/RunStatus.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/viz/BrushMode.h"
@@ -56,6 +57,8 @@ public:
     TaskRunner& tasks() { return m_tasks; }
 
     /// Opens a bundle in the background (checksums, then the first image); false if a task is running.
+    /// Opens a study in this window, for writing; read-only when another program here writes it (the status bar
+    /// says who); for a holder on another host the user chooses read-only or a confirmed break of its lock.
     bool openStudy(const QString& bundle);
     /// Creates an empty study at `bundle` and saves it.
     bool newStudy(const QString& bundle);
@@ -130,6 +133,9 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    /// Write access when nobody holds the study's lock; otherwise as the header of openStudy() says. Throws
+    /// vsim::Cancelled when the user cancels.
+    study::Access askHowToOpenLockedStudy(const QString& bundle, bool& breakLock);
     void createMenus();
     void createVesselMenu();
     void createMeasurementDock();
@@ -137,7 +143,7 @@ private:
     void createWallMenu();
     void createDrugMenu();
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
-    void showWallStress(const TetMesh& frame);
+    void showWallStress(const TetMesh& frame, const RunStatus& status);
     void editVesselParameters();
     /// Overlays a label in the three MPRs (an empty one clears them); `artifactId` is what it shows.
     void showLabelOverlay(const LabelVolume& label, const std::string& artifactId);

@@ -3,6 +3,7 @@
 #include "ArtifactCommands.h"
 #include "ReportExportDialog.h"
 #include "vsim/app/StudyReport.h"
+#include "vsim/core/OutputSafety.h"
 #include "vsim/report/EncapsulatedPdf.h"
 #include "vsim/report/MetricsExport.h"
 
@@ -12,6 +13,7 @@
 #include <QStandardPaths>
 #include <QUrl>
 #include <QFileInfo>
+#include <QMessageBox>
 #include <QStatusBar>
 #include <QThread>
 
@@ -51,6 +53,16 @@ std::string beside(const QString& pdf, const QString& suffix)
     return (info.absolutePath() + "/" + info.completeBaseName() + suffix).toStdString();
 }
 
+/// A file name in the temporary folder that nothing uses yet: "<stem>.pdf", else "<stem>-2.pdf", ...
+QString unusedTemporaryFile(const QString& stem)
+{
+    const QDir folder(QStandardPaths::writableLocation(QStandardPaths::TempLocation));
+    QString file = folder.filePath(stem + ".pdf");
+    for (int n = 2; QFileInfo::exists(file); ++n)
+        file = folder.filePath(QStringLiteral("%1-%2.pdf").arg(stem).arg(n));
+    return file;
+}
+
 } // namespace
 
 void MainWindow::openReportArtifact(const std::string& id)
@@ -58,8 +70,7 @@ void MainWindow::openReportArtifact(const std::string& id)
     try
     {
         const std::string pdf = m_document.study().loadReport(id);
-        const QString file = QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
-                                 .filePath(QString::fromStdString(m_document.study().name() + "-" + id + ".pdf"));
+        const QString file = unusedTemporaryFile(QString::fromStdString(m_document.study().name() + "-" + id));
         report::writeText(pdf, file.toStdString());
         if (!QDesktopServices::openUrl(QUrl::fromLocalFile(file)))
             showError(tr("Report"), tr("No PDF viewer opened %1.").arg(file));
@@ -77,8 +88,22 @@ void MainWindow::showReportExportDialog()
     const QString suggested = QString::fromStdString(
         (m_document.study().bundlePath().parent_path() / (m_document.study().name() + "-report.pdf")).string());
     ReportExportDialog dialog(suggested, this);
-    if (dialog.exec() == QDialog::Accepted)
-        exportReport(dialog.request());
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    ReportExportRequest request = dialog.request();
+    QStringList existing;
+    for (const QString& file : request.outputFiles())
+        if (QFileInfo::exists(file))
+            existing << file;
+    if (!existing.isEmpty())
+    {
+        if (QMessageBox::question(this, tr("Replace files"),
+                                  tr("These files exist already:\n%1\nReplace them?").arg(existing.join('\n')),
+                                  QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes)
+            return;
+        request.overwrite = true;
+    }
+    exportReport(request);
 }
 
 bool MainWindow::exportReport(const ReportExportRequest& request)
@@ -92,6 +117,8 @@ bool MainWindow::exportReport(const ReportExportRequest& request)
     return m_tasks.run(
         tr("Report"),
         [this, request, options, built](const Progress& progress) {
+            for (const QString& file : request.outputFiles()) // before the work: a refusal costs no time
+                checkOutputFile(file.toStdString(), request.overwrite);
             const study::Study& study = m_document.study();
             const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
             const QByteArray pdf = report::renderPdf(report, request.page);

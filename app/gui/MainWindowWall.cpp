@@ -7,6 +7,7 @@
 #include "MainWindow.h"
 #include "ParameterForm.h"
 #include "ViewLayout.h"
+#include "vsim/app/RunRecord.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/viz/VolumeView3D.h"
@@ -96,9 +97,10 @@ bool MainWindow::simulateWall(const std::string& protocol)
                 app::addWallRun(m_document.study(), *run, protocol, wallId,
                                 protocol == "physiological" ? centerlinesId : std::string(), parameters, backend);
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Wall stress")));
-            showWallStress(run->frames.back());
-            if (!run->stopReason.empty())
-                showError(tr("Wall mechanics"), tr("The run stopped early: %1").arg(QString::fromStdString(run->stopReason)));
+            showWallStress(run->frames.back(), run->status);
+            if (const std::string warning = app::runStatusWarning(run->status); !warning.empty())
+                showError(tr("Wall mechanics"),
+                          tr("Read these results with care: %1").arg(QString::fromStdString(warning)));
             else if (protocol == "physiological")
                 statusBar()->showMessage(tr("Peak wall stress %1 kPa, peak rupture index %2")
                                              .arg(run->metrics.at("peak_von_mises_kpa"), 0, 'f', 0)
@@ -107,7 +109,7 @@ bool MainWindow::simulateWall(const std::string& protocol)
         });
 }
 
-void MainWindow::showWallStress(const TetMesh& frame)
+void MainWindow::showWallStress(const TetMesh& frame, const RunStatus& status)
 {
     const TriangleMesh surface = app::frameSurface(frame, "von_mises_kpa");
     const auto& stress = surface.pointFields.at("von_mises_kpa");
@@ -116,7 +118,10 @@ void MainWindow::showWallStress(const TetMesh& frame)
     view->clearSurfaces();
     view->clearLines();
     view->setVolumeVisible(false);
-    view->showFieldSurface(surface, "von_mises_kpa", 0.0, std::max(high, 1e-6), tr("von Mises (kPa)"));
+    const QString title = !status.converged()  ? tr("von Mises (kPa), NOT CONVERGED")
+                          : !status.complete() ? tr("von Mises (kPa), STOPPED EARLY")
+                                               : tr("von Mises (kPa)");
+    view->showFieldSurface(surface, "von_mises_kpa", 0.0, std::max(high, 1e-6), title);
 }
 
 bool MainWindow::startInteractiveWall()

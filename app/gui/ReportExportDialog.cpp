@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLineEdit>
@@ -41,6 +42,18 @@ ReportExportDialog::ReportExportDialog(const QString& suggestedPdf, QWidget* par
     form->addRow(m_dicom);
     form->addRow(m_metrics);
     form->addRow(buttons);
+}
+
+QStringList ReportExportRequest::outputFiles() const
+{
+    const QFileInfo info(pdf);
+    const QString stem = info.absolutePath() + "/" + info.completeBaseName();
+    QStringList files{pdf};
+    if (dicom)
+        files << stem + ".dcm";
+    if (metrics)
+        files << stem + "-metrics.csv" << stem + "-metrics.json";
+    return files;
 }
 
 ReportExportRequest ReportExportDialog::request() const

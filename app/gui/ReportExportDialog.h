@@ -21,6 +21,10 @@ struct ReportExportRequest
     bool anonymize = false;
     bool dicom = false;   ///< <name>.dcm: an Encapsulated PDF in a new series of the study
     bool metrics = false; ///< <name>-metrics.csv and <name>-metrics.json
+    bool overwrite = false; ///< the user confirmed replacing files that exist (outputFiles())
+
+    /// Every file the export writes: the PDF and, when asked, the DICOM and metrics files beside it.
+    QStringList outputFiles() const;
 };
 
 class ReportExportDialog : public QDialog

@@ -57,7 +57,7 @@ private slots:
         QVERIFY(window->saveStudy());
         QVERIFY(vsim::test::waitForTask(*window));
         QVERIFY(!window->isWindowModified());
-        const vsim::study::Study reopened = vsim::study::Study::open(bundle);
+        const vsim::study::Study reopened = vsim::study::Study::open(bundle, vsim::study::Access::ReadOnly);
         QCOMPARE(reopened.artifact(id).name, std::string("Arterial"));
         QVERIFY(vsim::test::samePattern(reopened.loadImage(id), 5));
 

@@ -24,6 +24,30 @@ foreach(case aaa hepatic-tree stenosis)
     endif()
 endforeach()
 
+# Issue 14: the parameter table lists what the physiological run used (no ramp or tearing settings of the thesis
+# protocol, no time_step_ms, no raw keys), blood pressure in mmHg with kPa beside it, and an unconverged run is
+# marked next to its figures and in the run's summary.
+execute_process(COMMAND pdftotext ${WORK}/demo/aaa/report.pdf - OUTPUT_VARIABLE aaa_text RESULT_VARIABLE code)
+string(REGEX REPLACE "[ \n]+" " " aaa_text "${aaa_text}")
+foreach(unused "Ramp start" "Ramp end" "Ramp steps" "Tear strength" "Fracture entropy end" "Loaded length" "Time step "
+        "pressure_mmhg" "settle_time_s" "young_modulus_mpa" "cg_max_iterations")
+    string(FIND "${aaa_text}" "${unused}" at)
+    if(NOT at EQUAL -1)
+        message(FATAL_ERROR "the physiological run's parameter table shows '${unused}', which it did not use or is a raw key")
+    endif()
+endforeach()
+if(NOT aaa_text MATCHES "Blood pressure 120 mmHg \\(16\\.0 kPa\\)" OR NOT aaa_text MATCHES "Settling time step 10 ms")
+    message(FATAL_ERROR "the parameter table must give the blood pressure in mmHg with kPa and the settling step:\n${aaa_text}")
+endif()
+file(READ ${WORK}/demo/aaa/wall-run/metrics.json wall_run)
+string(JSON converged GET "${wall_run}" run_status converged)
+if(NOT converged AND NOT aaa_text MATCHES "Wall stress at blood pressure \\(physiological protocol\\) - NOT CONVERGED")
+    message(FATAL_ERROR "the demo wall run did not converge and the AAA table does not say so")
+endif()
+if(NOT aaa_text MATCHES "Convergence (converged|not converged: [0-9]+ of [0-9]+ solves)")
+    message(FATAL_ERROR "the run summary must state the convergence")
+endif()
+
 # The thesis tearing protocol on the demo AAA, then its report again: the tearing figures equal the run's.
 set(tear ${WORK}/aaa-tear)
 run_cli(0 ignored simulate fem --study ${WORK}/demo/aaa/aaa.vsim --protocol thesis-rupture --param ramp_steps=40

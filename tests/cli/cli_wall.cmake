@@ -38,3 +38,27 @@ if(NOT junk MATCHES "error: not a VTK XML" OR NOT unknown MATCHES "unknown proto
    OR NOT cuda MATCHES "error: .*CUDA.*use --backend cpu or auto" OR NOT backend MATCHES "unknown backend 'quantum'")
     message(FATAL_ERROR "bad input must be refused with a message:\n${junk}\n${unknown}\n${cuda}\n${backend}")
 endif()
+
+# Issue 14: runs say how far they got and how well they converged. A run whose PCG solves end at a 2-iteration cap
+# is "not converged" (CLI output and the report, next to the figures); a thesis ramp on a wall 400 times too soft
+# is stopped by a guard, and the report states the pressure it reached against the target.
+run_cli(0 capped simulate fem --study ${study} --protocol physiological --param settle_time_s=0.3 --param cg_max_iterations=2)
+string(JSON converged GET "${capped}" run_status converged)
+string(JSON convergence GET "${capped}" run_status convergence)
+if(converged OR NOT convergence MATCHES "^not converged: [0-9]+ of [0-9]+ solves ended above their tolerance at the 2-iteration cap")
+    message(FATAL_ERROR "a capped run must be marked not converged:\n${capped}")
+endif()
+run_cli(0 guarded simulate fem --study ${study} --protocol thesis-rupture --param young_modulus_mpa=0.01
+        --param pressure_start_mpa=50 --param pressure_end_mpa=60 --param ramp_steps=20)
+string(JSON stopped_by GET "${guarded}" run_status stopped_by)
+string(JSON stop GET "${guarded}" run_status stop)
+if(NOT stopped_by STREQUAL "guard" OR NOT stop MATCHES "^stopped by a guard at pressure [0-9.]+ of 60000.0 kPa")
+    message(FATAL_ERROR "a guard-stopped run must state the pressure reached against the target:\n${guarded}")
+endif()
+run_cli(0 ignored report --study ${study} --out ${WORK}/status.pdf --sections aaa --no-validation)
+execute_process(COMMAND pdftotext ${WORK}/status.pdf - OUTPUT_VARIABLE text)
+string(REGEX REPLACE "[ \n]+" " " text "${text}")
+if(NOT text MATCHES "physiological protocol\\) - NOT CONVERGED" OR NOT text MATCHES "NOT CONVERGED \\([0-9]+ of [0-9]+ solves"
+   OR NOT text MATCHES "STOPPED EARLY \\(stopped by a guard at pressure [0-9.]+ of 60000.0 kPa")
+    message(FATAL_ERROR "the report must mark the capped and the guard-stopped runs next to their figures:\n${text}")
+endif()

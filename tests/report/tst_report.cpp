@@ -88,6 +88,23 @@ private slots:
         QCOMPARE(report::formatMetric(std::nan("")), std::string("n/a"));
     }
 
+    void figuresAreRoundedToTheirUnitsPrecision()
+    {
+        // Issue 14: diameters 0.1 mm (1 mm in the clinical summary), stresses 1 kPa, times 0.1 s, shares 0.1 %.
+        QCOMPARE(report::formatMetric(55.009, "mm"), std::string("55.0"));
+        QCOMPARE(report::formatMetric(55.009, "mm", 0), std::string("55"));
+        QCOMPARE(report::formatMetric(312.64, "kPa"), std::string("313"));
+        QCOMPARE(report::formatMetric(0.000243527, "s"), std::string("0.0"));
+        QCOMPARE(report::formatMetric(6.3811, "%"), std::string("6.4"));
+        QCOMPARE(report::formatMetric(120.0, "mmHg"), std::string("120"));
+        QCOMPARE(report::formatMetric(10.4349, "MPa"), std::string("10.43"));
+        QCOMPARE(report::formatMetric(0.43712, ""), std::string("0.437"));
+        QCOMPARE(report::formatMetric(16.0, ""), std::string("16"));      // a count
+        QCOMPARE(report::formatMetric(1.2345, "ml/min"), std::string("1.23"));
+        QCOMPARE(report::formatMetric(1234.5, "kg/m3"), std::string("1234")); // %.0f rounds half to even
+        QCOMPARE(report::formatMetric(-0.04, "mm"), std::string("0.0"));
+    }
+
     void pdfHasEveryMetricWithItsUnit()
     {
         if (QStandardPaths::findExecutable("pdftotext").isEmpty())
@@ -170,7 +187,7 @@ private slots:
         const report::Report r = sampleReport();
         const std::string csv = report::metricsCsv(r);
         QVERIFY(csv.rfind("section,key,label,value,unit,text\n", 0) == 0);
-        QVERIFY(csv.find("aaa,max_diameter_mm,Maximum diameter,55.012300000000003,mm,55.01\n") != std::string::npos);
+        QVERIFY(csv.find("aaa,max_diameter_mm,Maximum diameter,55.012300000000003,mm,55.0\n") != std::string::npos);
         QVERIFY(csv.find("\"Drug reaching the tumour, a label long enough to wrap in its cell\"") != std::string::npos);
         const auto json = nlohmann::json::parse(report::metricsJson(r));
         QCOMPARE(json.at("format").get<std::string>(), std::string("vascusim-report-metrics"));

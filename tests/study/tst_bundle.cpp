@@ -74,7 +74,7 @@ private slots:
     {
         const fs::path bundle = freshBundle("roundtrip.vsim");
         savedStudy(bundle);
-        const Study reopened = Study::open(bundle);
+        const Study reopened = Study::open(bundle, vsim::study::Access::ReadOnly);
         QVERIFY(reopened.openWarnings().empty());
         QCOMPARE(reopened.name(), std::string("Phantom study"));
         QCOMPARE(reopened.metadata().at("study_description"), std::string("CTA abdomen"));
@@ -152,7 +152,7 @@ private slots:
             file.write("XXXX", 4);
         }
         fs::remove(bundle / "meshes/tetmesh-4.vtu");
-        const Study reopened = Study::open(bundle);
+        const Study reopened = Study::open(bundle, vsim::study::Access::ReadOnly);
         QCOMPARE(reopened.openWarnings().size(), std::size_t(2));
         QVERIFY(reopened.artifact("image-1").damaged);
         QVERIFY(reopened.artifact("tetmesh-4").damaged);
@@ -195,7 +195,7 @@ private slots:
         QVERIFY(!fs::exists(bundle / "images/image-1.nrrd")); // unreferenced files are removed at save
         study.restoreArtifact("image-1");
         study.save();
-        const Study reopened = Study::open(bundle);
+        const Study reopened = Study::open(bundle, vsim::study::Access::ReadOnly);
         QVERIFY(vsim::test::samePattern(reopened.loadImage("image-1"), 3));
     }
 
@@ -207,7 +207,7 @@ private slots:
         study.renameArtifact("image-1", "Arterial phase");
         study.saveAs(second);
         QCOMPARE(study.bundlePath(), second);
-        const Study copy = Study::open(second);
+        const Study copy = Study::open(second, vsim::study::Access::ReadOnly);
         QVERIFY(copy.openWarnings().empty());
         QCOMPARE(copy.artifact("image-1").name, std::string("Arterial phase"));
         QVERIFY(vsim::test::samePattern(copy.loadImage("image-1"), 3));

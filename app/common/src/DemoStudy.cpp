@@ -1,6 +1,7 @@
 #include "vsim/app/DemoStudy.h"
 
 #include "vsim/app/DicomStudyImport.h"
+#include "vsim/core/OutputSafety.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PhantomWriter.h"
 #include "vsim/study/Study.h"
@@ -14,20 +15,18 @@ fs::path ensureDemoStudy(const fs::path& bundle, const Progress& progress)
 {
     if (fs::exists(bundle / "study.json"))
         return bundle;
-    fs::remove_all(bundle); // an interrupted first write leaves no manifest: start again
+    // A new, empty or interrupted demo folder (marked by Study::create); a folder of anyone else's is refused.
+    study::Study demo = study::Study::create(bundle, "Demo: abdominal aortic aneurysm (aaa phantom)");
     const fs::path scratch = bundle.parent_path() / (bundle.filename().string() + ".phantom");
-    fs::remove_all(scratch);
-
     const dicom::PhantomOptions options; // full size, defaults of `vascusim-cli phantom aaa`
     const dicom::PhantomFiles phantom =
         dicom::writePhantom(dicom::PhantomKind::Aaa, options, dicom::phantomSeriesDescription(dicom::PhantomKind::Aaa),
                             scratch, progress.subRange(0.0, 0.6));
     const dicom::DicomScanResult scan = dicom::scanDicom(phantom.dicomFolder, progress.subRange(0.6, 0.65));
-    study::Study demo = study::Study::create(bundle, "Demo: abdominal aortic aneurysm (aaa phantom)");
     importDicomSeriesIntoStudy(demo, chooseSeries(scan, {}), phantom.dicomFolder, {}, progress.subRange(0.65, 0.9));
     demo.save();
     progress.report(1.0, "demo study written");
-    fs::remove_all(scratch);
+    removeWrittenFiles(phantom.written(), scratch);
     return bundle;
 }
 

@@ -1,5 +1,6 @@
 #include "vsim/app/NetworkPipeline.h"
 
+#include "vsim/app/RunRecord.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
 #include "vsim/imaging/PartialVolumeRadii.h"
@@ -148,6 +149,7 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
     }
     return nlohmann::json{{"source", source},
                           {"metrics", run.metrics},
+                          {"run_status", nlohmann::json::parse(runStatusJson(run.status))},
                           {"control_points", controls},
                           {"tumour_outlets", run.tumourOutlets},
                           {"tip_ranking", ranking},
@@ -168,10 +170,10 @@ std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunRes
         provenance.parameters[key] = value;
     std::vector<std::string> warnings = moreWarnings;
     warnings.insert(warnings.end(), run.warnings.begin(), run.warnings.end());
+    if (const std::string status = runStatusWarning(run.status); !status.empty())
+        warnings.push_back(status);
     const std::string id = study.addNetwork(run.network, "Drug flow", provenance, warnings);
-    std::map<std::string, std::string> attributes;
-    for (const auto& [key, value] : run.metrics)
-        attributes[key] = preciseNumberText(value);
+    std::map<std::string, std::string> attributes = runAttributes(run.metrics, run.status);
     // The best tip positions, for the report.
     for (std::size_t i = 0; i < run.ranking.size() && i < kRankedTipsKept; ++i)
     {

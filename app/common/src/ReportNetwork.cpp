@@ -116,7 +116,10 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
                 {"last_arrival_s", "Last outlet reached after", "s"},
                 {"outlets", "Outlets downstream of the tip", ""},
                 {"max_reynolds", "Largest Reynolds number", ""}});
+    const auto note = markRunStatus(injection, *run);
     section.blocks.push_back(injection);
+    if (note)
+        section.blocks.push_back(*note);
     report::MetricTable targeting{"Targeting", {}};
     addMetrics(targeting, *run,
                {{"tumour_fraction", "Drug reaching the tumour", "%", 100.0},

@@ -1,13 +1,14 @@
 #include "ReportSections.h"
 
 #include "ReportSupport.h"
+#include "vsim/app/RunRecord.h"
 #include "vsim/core/Validation.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/sim/fem/FemValidation.h"
 #include "vsim/sim/network/NetworkRun.h"
 #include "vsim/sim/network/NetworkValidation.h"
 
-#include <map>
+#include <set>
 
 namespace vsim::app::detail {
 namespace {
@@ -15,9 +16,11 @@ namespace {
 struct SolverInfo
 {
     std::string description;
-    std::vector<ParameterSpec> parameters;
+    std::vector<ParameterSpec> parameters; ///< those the run used
+    std::vector<ParameterSpec> declared;   ///< every parameter of the solver
     std::vector<std::string> validationCases;
     std::function<ValidationResult(const std::string&, const Progress&)> validate;
+    ValidationConfiguration validation; ///< the settings its validation cases run with
 };
 
 SolverInfo solverOf(const study::Artifact& run)
@@ -25,12 +28,40 @@ SolverInfo solverOf(const study::Artifact& run)
     if (run.provenance.command == "simulate fem")
         return {"Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), lumped "
                 "mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. 4).",
+                sim::fem::femProtocolParameters(textOr(run.provenance.parameters, "protocol", "physiological")),
                 sim::fem::femParameters(), sim::fem::femValidationCases(),
-                [](const std::string& name, const Progress& p) { return sim::fem::runFemValidation(name, p); }};
+                [](const std::string& name, const Progress& p) { return sim::fem::runFemValidation(name, p); },
+                sim::fem::femValidationConfiguration()};
     return {"Drug delivery: two-phase homogeneous fluid in a network of conical Hagen-Poiseuille pipes, Kirchhoff "
             "solve, plug filling (thesis ch. 6).",
-            sim::network::networkParameters(), sim::network::networkValidationCases(),
-            [](const std::string& name, const Progress& p) { return sim::network::runNetworkValidation(name, p); }};
+            sim::network::networkParameters(), sim::network::networkParameters(), sim::network::networkValidationCases(),
+            [](const std::string& name, const Progress& p) { return sim::network::runNetworkValidation(name, p); },
+            sim::network::networkValidationConfiguration()};
+}
+
+/// How the validation's settings differ from the reported run's (backend, iteration cap, tolerance): a sentence
+/// for the report, which says so also when nothing differs.
+std::string validationAgainstRun(const ValidationConfiguration& validation, const study::Artifact& run)
+{
+    const auto& recorded = run.provenance.parameters;
+    const std::string backend = textOr(recorded, "backend", "cpu");
+    std::vector<std::string> differences;
+    if (backend != validation.backend)
+        differences.push_back("the run used the " + backend + " backend, the cases the " + validation.backend);
+    const RunStatus status = runStatusOf(run);
+    if (status.iterationCap > 0 && status.iterationCap < validation.iterationCap)
+        differences.push_back("the run's solves stopped at " + std::to_string(status.iterationCap) +
+                              " iterations, the cases' at " + std::to_string(validation.iterationCap));
+    if (status.tolerance > validation.loosestTolerance && validation.loosestTolerance > 0.0)
+        differences.push_back("the run solved to a relative residual of " + report::formatMetric(status.tolerance) +
+                              ", the cases to " + report::formatMetric(validation.loosestTolerance) + " or tighter");
+    std::string sentence = "The cases ran " + validation.text + ". ";
+    if (differences.empty())
+        return sentence + "That is the configuration of the reported run.";
+    sentence += "What differs from the reported run: ";
+    for (std::size_t i = 0; i < differences.size(); ++i)
+        sentence += (i ? "; " : "") + differences[i];
+    return sentence + ". The cases show the method, not this run's solver settings.";
 }
 
 } // namespace
@@ -39,7 +70,7 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
                             const Progress& progress)
 {
     report::Section section{"runs", "Runs: parameters, solver, validation", {}};
-    std::map<std::string, report::Table> validated; // by command: each solver's cases once
+    std::set<std::string> validated; // commands whose solver's cases are in the section
     for (std::size_t i = 0; i < runs.size(); ++i)
     {
         const study::Artifact& run = *runs[i];
@@ -54,8 +85,11 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
                         {"Command", run.provenance.command + (protocol.empty() ? "" : " --protocol " + protocol)},
                         {"Backend", textOr(parameters, "backend", "cpu") + (device.empty() ? "" : " (" + device + ")")},
                         {"Steps", textOr(run.attributes, "steps", "1 (steady solve)")},
-                        {"Wall-clock time", textOr(run.attributes, "wall_clock_s", "not recorded") +
-                                                (run.attributes.count("wall_clock_s") ? " s" : "")},
+                        {"Wall-clock time", [&] {
+                             const auto seconds = runMetric(run, "wall_clock_s", "", "s");
+                             return seconds ? seconds->text + " s" : std::string("not recorded");
+                         }()},
+                        {"Convergence", runStatusOf(run).convergenceText()},
                         {"Inputs", [&] {
                              std::string list;
                              for (const std::string& input : run.provenance.inputs)
@@ -66,22 +100,27 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
         for (const std::string& warning : run.warnings)
             summary.rows.push_back({"Warning", warning});
         section.blocks.push_back(summary);
-        section.blocks.push_back(parameterTable(run, solver.parameters, "Parameters of " + run.id));
+        section.blocks.push_back(parameterTable(run, solver.parameters, solver.declared, "Parameters of " + run.id));
 
-        if (!options.validate || validated.count(run.provenance.command))
+        if (!options.validate)
             continue;
-        report::Table cases;
-        cases.caption = "Validation of this solver in this build (vascusim-cli validate)";
-        cases.columns = {"Case", "What is compared", "Result"};
-        for (std::size_t c = 0; c < solver.validationCases.size(); ++c)
+        if (!validated.count(run.provenance.command)) // each solver's cases once
         {
-            const Progress part = progress.subRange((i + double(c) / solver.validationCases.size()) / runs.size(),
-                                                    (i + double(c + 1) / solver.validationCases.size()) / runs.size());
-            const ValidationResult result = solver.validate(solver.validationCases[c], part);
-            cases.rows.push_back({result.name, result.description, result.passed() ? "passed" : "FAILED"});
+            report::Table cases;
+            cases.caption = "Validation of this solver in this build (vascusim-cli validate)";
+            cases.columns = {"Case", "What is compared", "Result"};
+            for (std::size_t c = 0; c < solver.validationCases.size(); ++c)
+            {
+                const Progress part =
+                    progress.subRange((i + double(c) / solver.validationCases.size()) / runs.size(),
+                                      (i + double(c + 1) / solver.validationCases.size()) / runs.size());
+                const ValidationResult result = solver.validate(solver.validationCases[c], part);
+                cases.rows.push_back({result.name, result.description, result.passed() ? "passed" : "FAILED"});
+            }
+            validated.insert(run.provenance.command);
+            section.blocks.push_back(cases);
         }
-        validated[run.provenance.command] = cases;
-        section.blocks.push_back(cases);
+        section.blocks.push_back(report::Paragraph{validationAgainstRun(solver.validation, run)});
     }
     return section;
 }

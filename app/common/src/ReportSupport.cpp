@@ -1,9 +1,14 @@
 #include "ReportSupport.h"
 
 #include "vsim/app/NetworkPipeline.h"
+#include "vsim/app/RunRecord.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
 #include "vsim/viz/Snapshot.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
 #include <cstdlib>
 
 namespace vsim::app::detail {
@@ -49,27 +54,76 @@ void addMetrics(report::MetricTable& table, const study::Artifact& run, const st
             table.rows.push_back(*m);
 }
 
+std::optional<report::Paragraph> markRunStatus(report::MetricTable& table, const study::Artifact& run)
+{
+    const RunStatus status = runStatusOf(run);
+    if (status.converged() && status.complete())
+        return std::nullopt;
+    if (!status.converged())
+        table.caption += " - NOT CONVERGED";
+    if (!status.complete())
+        table.caption += " - STOPPED EARLY";
+    return report::Paragraph{"Read these figures with care: " + runStatusWarning(status) + "."};
+}
+
+namespace {
+
+/// How a parameter's value reads: 4 significant digits and its unit; a blood pressure in mmHg with kPa beside it.
+std::string parameterValueText(const std::string& recorded, const std::string& unit)
+{
+    char* end = nullptr;
+    const double value = std::strtod(recorded.c_str(), &end);
+    if (recorded.empty() || *end != '\0')
+        return recorded;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.4g", value);
+    std::string shown = std::string(text) + (unit.empty() ? "" : " " + unit);
+    if (unit == "mmHg")
+        shown += " (" + report::formatMetric(units::mmHgToPa(value) * 1e-3, "kPa", 1) + " kPa)";
+    return shown;
+}
+
+/// People's names for what a run records beside its declared parameters (its source); the solver, backend and
+/// device are in the run's summary table, not here.
+std::optional<std::string> sourceLabel(const std::string& key)
+{
+    static const std::map<std::string, std::string> kLabels = {
+        {"tip", "Catheter tip (node, or x,y,z in mm)"},
+        {"tumour_mm", "Tumour sphere (x, y, z, radius; mm)"},
+        {"tumour_label", "Tumour label"},
+        {"network_file", "Network file"},
+        {"control_points", "Control points"}};
+    if (key == "protocol" || key == "backend" || key == "device")
+        return std::nullopt;
+    const auto found = kLabels.find(key);
+    if (found != kLabels.end())
+        return found->second;
+    std::string words = key; // a key nobody named yet: in words, never raw
+    std::replace(words.begin(), words.end(), '_', ' ');
+    if (!words.empty())
+        words[0] = char(std::toupper(static_cast<unsigned char>(words[0])));
+    return words;
+}
+
+} // namespace
+
 report::Table parameterTable(const study::Artifact& run, const std::vector<ParameterSpec>& specs,
-                             const std::string& caption)
+                             const std::vector<ParameterSpec>& declaredSpecs, const std::string& caption)
 {
     report::Table table;
     table.caption = caption;
     table.columns = {"Parameter", "Value"};
     const auto& recorded = run.provenance.parameters;
     for (const ParameterSpec& spec : specs)
-    {
-        const auto found = recorded.find(spec.key);
-        if (found != recorded.end())
-            table.rows.push_back({spec.label, found->second + (spec.unit.empty() ? "" : " " + spec.unit)});
-    }
+        if (const auto found = recorded.find(spec.key); found != recorded.end())
+            table.rows.push_back({spec.label, parameterValueText(found->second, spec.unit)});
+    std::map<std::string, ParameterSpec> declared;
+    for (const ParameterSpec& spec : declaredSpecs)
+        declared.emplace(spec.key, spec);
     for (const auto& [key, value] : recorded)
-    {
-        bool declared = false;
-        for (const ParameterSpec& spec : specs)
-            declared = declared || spec.key == key;
-        if (!declared)
-            table.rows.push_back({key, value});
-    }
+        if (!declared.count(key)) // declared keys the run did not use (another protocol's) are left out
+            if (const auto label = sourceLabel(key))
+                table.rows.push_back({*label, value});
     return table;
 }
 

@@ -43,10 +43,15 @@ struct MetricRow
 };
 void addMetrics(report::MetricTable& table, const study::Artifact& run, const std::vector<MetricRow>& rows);
 
-/// The run's parameters as a table: label, value with unit, from the declarations; keys not declared (the tip,
-/// the tumour, the backend) with their text as recorded.
+/// Marks a run's figures: the table's caption gains " - NOT CONVERGED" / " - STOPPED EARLY", and the paragraph
+/// returned (when there is something to say) gives the residuals and the pressure or time reached against the target.
+std::optional<report::Paragraph> markRunStatus(report::MetricTable& table, const study::Artifact& run);
+
+/// The run's parameters as a table: the values of `specs` (those the run used) by their labels, with units a
+/// clinician reads (a blood pressure in mmHg with kPa beside it); what the run recorded beyond `declaredSpecs`
+/// (the tip, the tumour) by people's names. Declared parameters the run did not use are left out.
 report::Table parameterTable(const study::Artifact& run, const std::vector<ParameterSpec>& specs,
-                             const std::string& caption);
+                             const std::vector<ParameterSpec>& declaredSpecs, const std::string& caption);
 
 /// The cross-sections of a study's centerlines in the label they came from, measured once per centerlines artifact
 /// however many sections ask (a full-size tree takes about half a second).

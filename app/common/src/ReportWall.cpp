@@ -62,7 +62,7 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
     report::MetricTable geometry{"Geometry (cross-sections perpendicular to the centerline)", {}};
     if (measured)
     {
-        geometry.rows.push_back(report::metric("measured_max_diameter_mm", "Maximum diameter", measured->maxDiameterMm, "mm"));
+        geometry.rows.push_back(report::metric("measured_max_diameter_mm", "Maximum diameter", measured->maxDiameterMm, "mm", 0));
         geometry.rows.push_back(report::metric("measured_max_caliper_mm", "Largest caliper width", measured->maxCaliperMm, "mm"));
         section.blocks.push_back(geometry);
         section.blocks.push_back(report::Paragraph{thresholdSentence(measured->maxDiameterMm)});
@@ -75,7 +75,8 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
     {
         report::MetricTable stress{"Wall stress at blood pressure (physiological protocol)", {}};
         addMetrics(stress, *physiological,
-                   {{"pressure_kpa", "Blood pressure on the lumen", "kPa"},
+                   {{"pressure_kpa", "Target blood pressure on the lumen", "kPa"},
+                    {"final_pressure_kpa", "Pressure reached (the figures below are at this pressure)", "kPa"},
                     {"peak_von_mises_kpa", "Peak wall stress (von Mises)", "kPa"},
                     {"peak_von_mises_x_mm", "Peak wall stress at x (patient LPS)", "mm"},
                     {"peak_von_mises_y_mm", "Peak wall stress at y", "mm"},
@@ -87,7 +88,10 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
                     {"peak_rupture_index_x_mm", "Peak rupture index at x (patient LPS)", "mm"},
                     {"peak_rupture_index_y_mm", "Peak rupture index at y", "mm"},
                     {"peak_rupture_index_z_mm", "Peak rupture index at z", "mm"}});
+        const auto note = markRunStatus(stress, *physiological);
         section.blocks.push_back(stress);
+        if (note)
+            section.blocks.push_back(*note);
         auto value = [&](const char* key) { return textOr(physiological->provenance.parameters, key, "?"); };
         section.blocks.push_back(report::Paragraph{
             "Strength model: Vande Geest et al. 2006 (wall strength from the local thrombus thickness, the local "
@@ -117,7 +121,10 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
                     {"torn_elements", "Torn elements", ""},
                     {"fracture_entropy", "Fracture entropy", "nats"},
                     {"final_pressure_kpa", "Pressure at the end of the run", "kPa"}});
+        const auto note = markRunStatus(tearing, *rupture);
         section.blocks.push_back(tearing);
+        if (note)
+            section.blocks.push_back(*note);
         runs.push_back(rupture);
     }
     else

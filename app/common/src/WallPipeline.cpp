@@ -1,5 +1,6 @@
 #include "vsim/app/WallPipeline.h"
 
+#include "vsim/app/RunRecord.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/PrincipalAxis.h"
 #include "vsim/mesh/SurfaceRemeshing.h"
@@ -183,7 +184,7 @@ std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, c
     provenance.inputs = {wallId};
     if (!centerlinesId.empty())
         provenance.inputs.push_back(centerlinesId);
-    provenance.parameters = parameters.valuesAsText();
+    provenance.parameters = sim::fem::femProtocolValues(parameters, protocol); // what the report's table lists
     provenance.parameters["protocol"] = protocol;
     provenance.parameters["backend"] = backend.name;
     if (!backend.device.empty())
@@ -191,11 +192,10 @@ std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, c
     std::vector<std::string> warnings;
     if (!run.stopReason.empty())
         warnings.push_back("stopped early: " + run.stopReason);
+    if (const std::string status = runStatusWarning(run.status); !status.empty())
+        warnings.push_back(status);
     const std::string id = study.addTetMesh(run.frames.back(), "Wall stress (" + protocol + ")", provenance, warnings);
-    std::map<std::string, std::string> attributes;
-    for (const auto& [key, value] : run.metrics)
-        attributes[key] = preciseNumberText(value);
-    study.setArtifactAttributes(id, attributes);
+    study.setArtifactAttributes(id, runAttributes(run.metrics, run.status));
     return id;
 }
 

@@ -1,5 +1,6 @@
 #include "vsim/dicom/PhantomWriter.h"
 
+#include "vsim/core/OutputSafety.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/interop/NrrdFile.h"
 
@@ -24,6 +25,7 @@ CtSeriesDescription phantomSeriesDescription(PhantomKind kind)
 PhantomFiles writePhantom(PhantomKind kind, const PhantomOptions& options, const CtSeriesDescription& description,
                           const std::filesystem::path& out, const Progress& progress)
 {
+    claimOutputFolder(out, "phantom"); // before the rendering: a refused folder costs no time
     const PhantomModel model = buildPhantomModel(kind, options);
     PhantomFiles files;
     files.geometry = phantomGeometry(options);
@@ -42,6 +44,13 @@ PhantomFiles writePhantom(PhantomKind kind, const PhantomOptions& options, const
         throw Error("cannot write truth.json", {{"file", files.truthJson.string()}});
     progress.report(1.0, "phantom written");
     return files;
+}
+
+std::vector<std::filesystem::path> PhantomFiles::written() const
+{
+    std::vector<std::filesystem::path> all = series.files;
+    all.insert(all.end(), {truthJson, truthLabels, truthJson.parent_path() / kOwnedFolderMarker});
+    return all;
 }
 
 } // namespace vsim::dicom

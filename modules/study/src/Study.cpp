@@ -4,11 +4,14 @@
 #include "BundleFiles.h"
 #include "Manifest.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/OutputSafety.h"
 #include "vsim/core/Version.h"
+#include "vsim/study/StudyLock.h"
 
 #include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <optional>
 #include <set>
 
 namespace vsim::study {
@@ -35,7 +38,19 @@ std::string checkArtifactFile(const fs::path& bundle, const Artifact& artifact)
     return {};
 }
 
-/// Files in the artifact folders that the manifest does not reference (leftovers of an interrupted save).
+/// True for a file name that save() gives an artifact of `kind` ("label-12.nrrd"): the only files it may remove.
+bool isArtifactFileName(ArtifactKind kind, const std::string& name)
+{
+    const std::string prefix = kindName(kind) + "-", suffix = fileExtension(kind);
+    if (name.size() <= prefix.size() + suffix.size() || name.rfind(prefix, 0) != 0 ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+        return false;
+    const std::string number = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    return std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+/// Files of VascuSim's artifact names in the artifact folders that the manifest does not reference (leftovers of
+/// an interrupted save, artifacts removed from the study). Anything else a person put there is never touched.
 std::vector<fs::path> unreferencedFiles(const fs::path& bundle, const Manifest& manifest)
 {
     std::set<fs::path> referenced;
@@ -46,7 +61,8 @@ std::vector<fs::path> unreferencedFiles(const fs::path& bundle, const Manifest& 
     {
         std::error_code error;
         for (const auto& entry : fs::directory_iterator(bundle / folderName(kind), error))
-            if (entry.is_regular_file() && !referenced.count(entry.path()))
+            if (entry.is_regular_file() && !referenced.count(entry.path()) &&
+                isArtifactFileName(kind, entry.path().filename().string()))
                 leftovers.push_back(entry.path());
     }
     if (fs::exists(bundle / (std::string(kManifestFile) + ".tmp")))
@@ -59,6 +75,8 @@ std::vector<fs::path> unreferencedFiles(const fs::path& bundle, const Manifest& 
 struct Study::State
 {
     fs::path bundle;
+    std::optional<StudyLock> lock; // held while the study is open for writing
+    std::string manifestOnDisk;    // study.json as this study last read or wrote it ("" before the first save)
     Manifest manifest;
     std::map<std::string, ArtifactData> pending;                     // unsaved data by artifact id
     std::map<std::string, std::pair<Artifact, ArtifactData>> removed; // kept for undo
@@ -108,23 +126,40 @@ Study::Study(Study&&) noexcept = default;
 Study& Study::operator=(Study&&) noexcept = default;
 Study::~Study() = default;
 
-Study Study::create(const fs::path& bundle, const std::string& name)
+Study Study::create(const fs::path& bundle, const std::string& name, double waitSeconds)
 {
+    if (fs::exists(bundle / kManifestFile))
+        throw Error("the folder is a study already; open it instead of creating a new one", {{"folder", bundle.string()}});
+    claimOutputFolder(bundle, "study");
     auto state = std::make_unique<State>();
     state->bundle = bundle;
+    state->lock.emplace(StudyLock::acquire(bundle, waitSeconds));
+    if (fs::exists(bundle / kManifestFile)) // another writer saved it while this one waited
+        throw Error("the folder became a study while waiting for its lock; open it instead", {{"folder", bundle.string()}});
     state->manifest.name = name;
     state->modified = true;
     return Study(std::move(state));
 }
 
-Study Study::open(const fs::path& bundle)
+Study Study::openBreakingLock(const fs::path& bundle)
+{
+    StudyLock lock = StudyLock::breakAndAcquire(bundle);
+    Study study = open(bundle, Access::ReadOnly);
+    study.m_state->lock.emplace(std::move(lock));
+    return study;
+}
+
+Study Study::open(const fs::path& bundle, Access access, double waitSeconds)
 {
     const fs::path manifestPath = bundle / kManifestFile;
     if (!fs::exists(manifestPath))
         throw Error("not a VascuSim study: study.json is missing", {{"folder", bundle.string()}});
     auto state = std::make_unique<State>();
     state->bundle = bundle;
-    state->manifest = manifestFromText(readTextFile(manifestPath));
+    if (access == Access::Write) // the manifest is read under the lock: the next artifact number is this writer's
+        state->lock.emplace(StudyLock::acquire(bundle, waitSeconds));
+    state->manifestOnDisk = readTextFile(manifestPath);
+    state->manifest = manifestFromText(state->manifestOnDisk);
     for (Artifact& artifact : state->manifest.artifacts)
     {
         artifact.damage = checkArtifactFile(bundle, artifact);
@@ -144,6 +179,7 @@ const std::map<std::string, std::string>& Study::metadata() const { return m_sta
 const std::vector<Artifact>& Study::artifacts() const { return m_state->manifest.artifacts; }
 const std::vector<std::string>& Study::openWarnings() const { return m_state->openWarnings; }
 bool Study::isModified() const { return m_state->modified; }
+bool Study::isReadOnly() const { return !m_state->lock.has_value(); }
 const Artifact& Study::artifact(const std::string& id) const { return m_state->find(id); }
 
 void Study::setMetadata(const std::string& key, const std::string& value)
@@ -310,7 +346,16 @@ void Study::restoreArtifact(const std::string& id)
 void Study::save()
 {
     State& state = *m_state;
-    fs::create_directories(state.bundle);
+    if (!state.lock)
+        throw Error("the study is open read-only; save it under a new name, or reopen it for writing when "
+                    "its writer has finished", {{"folder", state.bundle.string()}});
+    const fs::path manifestPath = state.bundle / kManifestFile;
+    std::error_code missing;
+    const std::string onDisk = fs::exists(manifestPath, missing) ? readTextFile(manifestPath) : std::string();
+    if (onDisk != state.manifestOnDisk)
+        throw Error("study.json was changed by another program since this study was opened; nothing was written. "
+                    "Save under a new name (Save As) to keep this version",
+                    {{"folder", state.bundle.string()}});
     Manifest next = state.manifest;
     for (Artifact& artifact : next.artifacts)
     {
@@ -330,7 +375,9 @@ void Study::save()
         if (fs::exists(state.bundle / folderName(kind)))
             syncDirectory(state.bundle / folderName(kind));
     // The commit point: until this rename the bundle holds the previous study.
-    writeFileAtomically(state.bundle / kManifestFile, manifestToText(next));
+    const std::string manifestText = manifestToText(next);
+    writeFileAtomically(manifestPath, manifestText);
+    state.manifestOnDisk = manifestText;
 
     state.manifest = std::move(next);
     state.pending.clear();
@@ -345,6 +392,8 @@ void Study::saveAs(const fs::path& bundle)
     std::error_code error;
     if (fs::exists(bundle, error) && !fs::is_empty(bundle, error))
         throw Error("the folder for the new study is not empty; choose a new folder", {{"folder", bundle.string()}});
+    claimOutputFolder(bundle, "study");
+    StudyLock lock = StudyLock::acquire(bundle);
     State& state = *m_state;
     for (const Artifact& artifact : state.manifest.artifacts)
     {
@@ -355,6 +404,8 @@ void Study::saveAs(const fs::path& bundle)
         syncFile(bundle / artifact.file);
     }
     state.bundle = bundle;
+    state.lock.emplace(std::move(lock)); // releases the old bundle's lock
+    state.manifestOnDisk.clear();
     save();
 }
 

@@ -74,6 +74,33 @@ std::vector<ParameterSpec> femParameters()
     };
 }
 
+std::vector<ParameterSpec> femProtocolParameters(const std::string& protocol)
+{
+    std::vector<std::string> groups = {"Material", "Integration"};
+    std::vector<std::string> unused;
+    if (protocol == "physiological")
+        groups.insert(groups.end(), {"Physiological protocol", "Patient (wall strength)"}), unused = {"time_step_ms"};
+    else if (protocol == "thesis-rupture")
+        groups.push_back("Thesis rupture protocol");
+    else if (protocol != "interactive")
+        throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
+    std::vector<ParameterSpec> used;
+    for (const ParameterSpec& spec : femParameters())
+        if (std::find(groups.begin(), groups.end(), spec.group) != groups.end() &&
+            std::find(unused.begin(), unused.end(), spec.key) == unused.end())
+            used.push_back(spec);
+    return used;
+}
+
+std::map<std::string, std::string> femProtocolValues(const ParameterSet& parameters, const std::string& protocol)
+{
+    const std::map<std::string, std::string> all = parameters.valuesAsText();
+    std::map<std::string, std::string> used;
+    for (const ParameterSpec& spec : femProtocolParameters(protocol))
+        used[spec.key] = all.at(spec.key);
+    return used;
+}
+
 double vandeGeestWallStrength(double thrombusCm, double normalizedDiameter, bool familyHistory, bool female)
 {
     const double newtonPerCm2 = 71.9 - 37.9 * (std::sqrt(std::max(thrombusCm, 0.0)) - 0.81) -

@@ -24,7 +24,7 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
         result.framePressuresPa.push_back(pressure);
     };
     addFrame(0.0, setup.pressurePa(0.0));
-    long cgIterations = 0;
+    RunStatus& status = result.status;
     int stepsRun = 0;
     double onsetPressure = -1.0;
     for (int step = 1; step <= setup.steps; ++step)
@@ -33,11 +33,14 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
         const double time = step * h, pressure = setup.pressurePa(time);
         simulation.setPressure(pressure);
         const WallSimulation::StepOutcome outcome = simulation.step();
-        cgIterations += outcome.report.cgIterations;
+        status.recordSolve(outcome.report.cgIterations, outcome.report.cgResidual, setup.integrator.cgTolerance,
+                           setup.integrator.cgMaxIterations);
         if (!outcome.guard.empty())
         {
             result.stopReason = outcome.guard + " at step " + std::to_string(step) + " (t = " + std::to_string(time) +
                                 " s, pressure " + std::to_string(pressure * 1e-6) + " MPa); the last good state is kept";
+            status.stoppedBy = RunStatus::StoppedBy::Guard;
+            status.stopMessage = outcome.guard + " at step " + std::to_string(step) + "; the last good state is kept";
             break;
         }
         stepsRun = step;
@@ -50,6 +53,8 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
             {
                 result.stopReason = "the fracture entropy reached " + std::to_string(simulation.entropy().value()) +
                                     " (end condition " + std::to_string(setup.entropyEnd) + ")";
+                status.stoppedBy = RunStatus::StoppedBy::EndCondition;
+                status.stopMessage = result.stopReason;
                 addFrame(time, pressure);
                 break;
             }
@@ -77,8 +82,14 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
         *std::max_element(last.cellFields.at("max_principal_kpa").begin(), last.cellFields.at("max_principal_kpa").end());
     result.metrics["max_displacement_mm"] = *std::max_element(displacement.begin(), displacement.end());
     result.metrics["steps"] = stepsRun;
-    result.metrics["mean_cg_iterations"] = stepsRun ? double(cgIterations) / stepsRun : 0.0;
+    result.metrics["mean_cg_iterations"] = status.solves ? double(status.iterations) / double(status.solves) : 0.0;
     result.metrics["final_pressure_kpa"] = setup.pressurePa(lastTime) * 1e-3;
+    status.reachedQuantity = "pressure";
+    status.reachedUnit = "kPa";
+    status.reached = setup.pressurePa(lastTime) * 1e-3;
+    status.target = setup.pressurePa(setup.steps * h) * 1e-3;
+    for (const auto& [key, value] : status.metrics())
+        result.metrics[key] = value;
     if (setup.tearing)
     {
         result.metrics["torn_elements"] = double(simulation.entropy().tornElements());

@@ -262,6 +262,11 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     r.metrics["downstream_segments"] = downstream;
     r.metrics["outlets"] = double(r.twoPhase.orientation.outlets.size());
     r.metrics["conservation_error"] = r.twoPhase.conservationError;
+    // The direct (LDL^T) solves: Kirchhoff's balance at every node is the residual, relative to the injected flow.
+    for (const FlowSolution* solution : {&r.twoPhase, &r.liquid})
+        r.status.recordSolve(0, solution->conservationError, kConservationTolerance, 0);
+    for (const auto& [key, value] : r.status.metrics())
+        r.metrics[key] = value;
     r.metrics["last_arrival_s"] = r.filling.lastArrival;
     double first = kNever;
     for (const auto& [node, time] : r.filling.arrival)

@@ -131,6 +131,11 @@ std::vector<std::string> networkValidationCases()
     return {"network-cylinder", "network-cone", "network-conservation", "network-bifurcation", "network-confluence"};
 }
 
+ValidationConfiguration networkValidationConfiguration()
+{
+    return {"cpu", 0, 0.0, "on the CPU with the direct (LDL^T) flow solve every run uses"};
+}
+
 ValidationResult runNetworkValidation(const std::string& name, const Progress& progress)
 {
     const auto start = std::chrono::steady_clock::now();

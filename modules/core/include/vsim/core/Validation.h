@@ -28,4 +28,13 @@ struct ValidationResult
     bool passed() const;
 };
 
+/// The solver settings a solver's validation cases run with, to set beside a reported run's.
+struct ValidationConfiguration
+{
+    std::string backend = "cpu";
+    int iterationCap = 0;          ///< largest iterations per linear solve (0: direct solves)
+    double loosestTolerance = 0.0; ///< the loosest relative residual any case solves to (0: direct)
+    std::string text;              ///< the same for people
+};
+
 } // namespace vsim

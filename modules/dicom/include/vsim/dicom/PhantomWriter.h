@@ -16,13 +16,17 @@ struct PhantomFiles
     std::filesystem::path truthLabels; ///< <out>/truth-label.nrrd (gzip)
     WrittenSeries series;
     VolumeGeometry geometry;           ///< the axial grid of the series
+
+    /// Every file the phantom writer wrote (series, truth, the folder's marker): what may be removed again.
+    std::vector<std::filesystem::path> written() const;
 };
 
 /// Identity of a phantom series: patient "PHANTOM^<KIND>", ID "VSIM-<KIND>", descriptions naming the kind.
 CtSeriesDescription phantomSeriesDescription(PhantomKind kind);
 
 /// Builds, renders and writes a phantom: the CT series (axial, options' size and spacing), truth.json and
-/// truth-label.nrrd. Throws vsim::Error for invalid options or a write failure, vsim::Cancelled when cancelled.
+/// truth-label.nrrd into `out`, a new, empty or earlier phantom folder (claimOutputFolder "phantom"). Throws
+/// vsim::Error for a folder holding other files, invalid options or a write failure, vsim::Cancelled when cancelled.
 PhantomFiles writePhantom(PhantomKind kind, const PhantomOptions& options, const CtSeriesDescription& description,
                           const std::filesystem::path& out, const Progress& progress = {});
 

@@ -41,8 +41,12 @@ struct Metric
 
 /// The number as reports and exports print it: 4 significant digits, no exponent between 1e-3 and 1e6.
 std::string formatMetric(double value);
-/// A metric with its text filled in.
-Metric metric(std::string key, std::string label, double value, std::string unit);
+/// The number rounded to the precision that means something for its unit (mm 0.1, kPa 1, MPa 0.01, mmHg 1,
+/// s 0.1, % 0.1; counts as integers; other units 3 significant digits); `decimals` >= 0 overrides (e.g. 0 for a
+/// diameter in the clinical summary, which guidelines report to 1 mm).
+std::string formatMetric(double value, const std::string& unit, int decimals = -1);
+/// A metric with its text filled in by formatMetric(value, unit, decimals).
+Metric metric(std::string key, std::string label, double value, std::string unit, int decimals = -1);
 
 struct Paragraph
 {

@@ -11,8 +11,9 @@
 
 namespace vsim::study {
 
-/// Writes `frames` (one per time in `times`, s) and `metricsJson` into `folder` (created; existing frames of the
-/// same names are replaced). Throws vsim::Error when a file cannot be written or the counts differ.
+/// Writes `frames` (one per time in `times`, s) and `metricsJson` into `folder`, a run folder the caller claimed
+/// (claimOutputFolder "run"): frames of an earlier run there are replaced, and its surplus frames removed.
+/// Throws vsim::Error when a file cannot be written or the counts differ.
 void writeRunSeries(const std::filesystem::path& folder, const std::vector<TetMesh>& frames,
                     const std::vector<double>& times, const std::string& metricsJson);
 

@@ -18,19 +18,32 @@ namespace vsim::study {
 /// Schema version written into study.json; bump it with a migration in Manifest.cpp.
 inline constexpr int kSchemaVersion = 1;
 
+/// How a study is opened: for writing (its lock held until the Study is destroyed) or for reading only.
+enum class Access
+{
+    Write,
+    ReadOnly
+};
+
 /// The document: one patient's study as a `<name>.vsim/` bundle (study.json + images/, labels/, surfaces/,
 /// meshes/, skeletons/, networks/, reports/). Artifacts added since the last save are held in memory until save(), which is atomic:
 /// new files are written and synced first, the manifest is replaced by rename last, and files no longer
-/// referenced are removed after that. A kill at any moment leaves the old or the new study.
+/// referenced are removed after that (only files of VascuSim's own artifact names). A kill at any moment leaves
+/// the old or the new study. One writer at a time: a study opened for writing holds the bundle's StudyLock.
 class Study
 {
 public:
-    /// A new, unsaved study that will be written to `bundle` (a folder, conventionally ending in .vsim).
-    static Study create(const std::filesystem::path& bundle, const std::string& name);
-    /// Opens a bundle. Throws vsim::Error when study.json is missing, unreadable, or of a newer schema.
+    /// A new study that will be written to `bundle` (a folder, conventionally ending in .vsim): the folder is created
+    /// and locked now; its files are written by save(). Throws vsim::Error when the folder is a study already, holds
+    /// files VascuSim did not write, or is locked by another writer after `waitSeconds`.
+    static Study create(const std::filesystem::path& bundle, const std::string& name, double waitSeconds = 0.0);
+    /// Opens a bundle. Throws vsim::Error when study.json is missing, unreadable, or of a newer schema, and (for
+    /// Access::Write) when another process still holds the study's lock after `waitSeconds` (the message names it).
     /// Missing or damaged artifact files do not throw: those artifacts are flagged (Artifact::damaged) and
     /// listed in openWarnings().
-    static Study open(const std::filesystem::path& bundle);
+    static Study open(const std::filesystem::path& bundle, Access access = Access::Write, double waitSeconds = 0.0);
+    /// Opens for writing after moving a stale lock aside (a holder on another host that the user confirmed dead).
+    static Study openBreakingLock(const std::filesystem::path& bundle);
 
     Study(Study&&) noexcept;
     Study& operator=(Study&&) noexcept;
@@ -52,6 +65,8 @@ public:
     const std::vector<std::string>& openWarnings() const;
     /// True when there are changes that save() would write.
     bool isModified() const;
+    /// True when the study was opened with Access::ReadOnly: save() refuses.
+    bool isReadOnly() const;
 
     /// Adds an artifact held in memory until save(); returns its new id. Throws vsim::Error for empty data.
     std::string addImage(const CtVolume& image, const std::string& name, Provenance provenance,
@@ -95,10 +110,12 @@ public:
     /// Puts back an artifact removed by removeArtifact() (same id, data kept in memory until the next save).
     void restoreArtifact(const std::string& id);
 
-    /// Writes the study atomically to its bundle. Throws vsim::Error on an I/O failure; the bundle on disk then
-    /// still holds the previous version.
+    /// Writes the study atomically to its bundle. Throws vsim::Error on an I/O failure (the bundle on disk then
+    /// still holds the previous version), for a read-only study, and when study.json was changed by another program
+    /// since this study read or wrote it (nothing is written then).
     void save();
-    /// Writes the study to a new bundle (copying saved artifact files) and makes it this study's bundle.
+    /// Writes the study to a new bundle (a new or empty folder, locked; saved artifact files copied) and makes it
+    /// this study's bundle, releasing the old one's lock. Throws vsim::Error for a folder that is not new or empty.
     void saveAs(const std::filesystem::path& bundle);
 
 private:

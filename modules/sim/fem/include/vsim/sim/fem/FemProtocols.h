@@ -17,6 +17,7 @@
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/FemRun.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,12 @@ namespace vsim::sim::fem {
 
 /// Every parameter of the wall runs (material, integration, both protocols, the patient's strength inputs).
 std::vector<ParameterSpec> femParameters();
+/// The parameters a protocol ("physiological", "thesis-rupture", "interactive") uses: the physiological protocol
+/// steps with settle_time_step_ms instead of time_step_ms and has no ramp or tearing, the thesis protocol has no
+/// blood pressure or strength inputs. Throws vsim::Error for an unknown protocol.
+std::vector<ParameterSpec> femProtocolParameters(const std::string& protocol);
+/// The values (as provenance text) of the parameters `protocol` uses, nothing else.
+std::map<std::string, std::string> femProtocolValues(const ParameterSet& parameters, const std::string& protocol);
 /// The material and the integrator settings of a parameter set (SI).
 ElasticMaterial femMaterial(const ParameterSet& parameters);
 BackwardEulerSettings femIntegrator(const ParameterSet& parameters);

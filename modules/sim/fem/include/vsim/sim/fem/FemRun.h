@@ -6,6 +6,7 @@
 // entropy passes its end value; frames every N steps. SI inside, mm / kPa in the frames.
 
 #include "vsim/core/Progress.h"
+#include "vsim/core/RunStatus.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/ElasticMaterial.h"
@@ -44,6 +45,9 @@ struct FemRunResult
     std::map<std::string, double> metrics;
     std::vector<std::pair<double, double>> entropyCurve; ///< (pressure Pa, entropy) after each tear
     std::string stopReason;                              ///< why the run ended early, empty when it ran through
+    /// Every implicit step's PCG solve (iterations, relative residual against the tolerance), how the run stopped
+    /// and the pressure it reached (kPa) against the curve's end; its metrics() are in `metrics` too.
+    RunStatus status;
 };
 
 /// Runs the setup. Throws vsim::Error for a mesh that is not a wall (fields missing, no fixed end, no lumen face)

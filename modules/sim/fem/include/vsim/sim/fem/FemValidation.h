@@ -18,6 +18,8 @@ namespace vsim::sim::fem {
 
 /// The case names above, in order.
 std::vector<std::string> femValidationCases();
+/// The solver settings the cases run with (CPU, static solves to 1e-8 or tighter with up to 20,000 PCG iterations).
+ValidationConfiguration femValidationConfiguration();
 /// Runs one case. Throws vsim::Error for an unknown name (listing the known ones).
 ValidationResult runFemValidation(const std::string& name, const Progress& progress = {});
 

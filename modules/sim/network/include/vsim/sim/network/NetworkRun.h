@@ -18,6 +18,7 @@
 
 #include "vsim/core/Parameters.h"
 #include "vsim/core/Progress.h"
+#include "vsim/core/RunStatus.h"
 #include "vsim/core/VesselNetwork.h"
 #include "vsim/sim/network/Filling.h"
 #include "vsim/sim/network/FlowSolver.h"
@@ -78,7 +79,11 @@ struct NetworkRunResult
     std::vector<TipCandidate> ranking; ///< best first
     std::map<std::string, double> metrics;
     std::vector<std::string> warnings;
+    RunStatus status; ///< the two flow solves (direct): Kirchhoff's balance against kConservationTolerance
 };
+
+/// Largest relative imbalance of flow at a node that a flow solve may leave (a direct solve leaves ~1e-15).
+inline constexpr double kConservationTolerance = 1e-9;
 
 /// Runs the setup. Throws vsim::Error for bad input (tip off the tree or on a disconnected part, outlets without a
 /// condition, a void fraction out of range, ...) naming the node or segment; nothing is returned then.

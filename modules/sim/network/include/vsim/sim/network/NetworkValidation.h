@@ -20,6 +20,8 @@ namespace vsim::sim::network {
 
 /// The case names above, in order.
 std::vector<std::string> networkValidationCases();
+/// The solver settings the cases run with: the run's own direct (LDL^T) solve on the CPU.
+ValidationConfiguration networkValidationConfiguration();
 /// Runs one case. Throws vsim::Error for an unknown name (listing the known ones).
 ValidationResult runNetworkValidation(const std::string& name, const Progress& progress = {});
 

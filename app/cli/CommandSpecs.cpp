@@ -1,0 +1,132 @@
+// The declarations of vascusim-cli's commands: options, positional arguments and usage (CommandLine.h).
+
+#include "CommandLine.h"
+#include "DemoCommand.h"
+#include "NetworkCommands.h"
+#include "ReportCommand.h"
+#include "ValidateCommand.h"
+#include "WallCommands.h"
+
+namespace vsim::cli {
+namespace {
+
+using Arity = OptionSpec::Arity;
+
+OptionSpec value(const std::string& name) { return {name, Arity::Value}; }
+OptionSpec flag(const std::string& name) { return {name, Arity::Flag}; }
+OptionSpec repeatable(const std::string& name) { return {name, Arity::Repeatable}; }
+
+/// Every command that writes into a study waits for its lock this long (default 0: refuse at once).
+const OptionSpec kWait = value("wait");
+const OptionSpec kParam = repeatable("param");
+const OptionSpec kStudy = value("study");
+
+std::vector<CommandSpec> declareCommands()
+{
+    return {
+        {"info", 1, 1, {}, "info <study.vsim>\n    the study's metadata and artifacts as JSON (works while another process writes it)",
+         [](const Arguments& a, const Progress&) { return printStudyInfo(a); }},
+        {"import", 1, 1, {kStudy, value("series"), flag("list"), value("memory-limit-mb"), kWait},
+         "import <dir|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list] [--memory-limit-mb N] [--wait s]\n"
+         "    add a DICOM series (the CT with most slices unless --series) or a NIfTI / NRRD / MetaImage volume;\n"
+         "    creates the study in a new or empty folder; --list prints the series found as JSON and imports nothing",
+         importIntoStudy},
+        {"phantom", 1, 1,
+         {value("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),
+          value("max-diameter"), value("stenosis"), value("blur"), flag("enhanced")},
+         "phantom <aaa|stenosis|hepatic-tree|bifurcation> --out <dir> [--size 512x512x400] [--spacing 0.7,0.7,1.0]\n"
+         "        [--noise 20] [--seed 1] [--transfer-syntax explicit-le|implicit-le|jpeg-lossless|jpeg-ls|rle]\n"
+         "        [--max-diameter 55] [--stenosis 50] [--blur mm] [--enhanced]\n"
+         "    write a CT phantom series (<dir>/dicom) with truth.json and truth-label.nrrd into a new or empty folder",
+         writePhantomSeries},
+        {"segment", 0, 0, {kStudy, value("image"), value("seed"), kParam, kWait},
+         "segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value ...] [--wait s]\n"
+         "    segment the contrast-filled vessels (automatic seed unless given, mm) into a label artifact",
+         segmentStudy},
+        {"surface", 0, 0, {kStudy, value("label"), value("target-vertices"), value("stl"), flag("overwrite"), kParam, kWait},
+         "surface --study <study.vsim> [--label ID] [--target-vertices N] [--stl FILE [--overwrite]] [--param key=value ...]\n"
+         "    the lumen surface of the newest vessel label (VTP in the study; STL when asked)",
+         surfaceStudy},
+        {"skeleton", 0, 0, {kStudy, value("label"), kParam, kWait},
+         "skeleton --study <study.vsim> [--label ID] [--param key=value ...] [--wait s]\n"
+         "    unit-width skeleton graph (thinning + VDSM) of the newest label",
+         skeletonStudy},
+        {"centerline", 0, 0, {kStudy, value("skeleton"), value("label"), value("from"), value("to"), kParam, kWait},
+         "centerline --study <study.vsim> [--skeleton ID] [--label ID] [--from NODE --to NODE] [--param key=value ...]\n"
+         "    B-spline centerlines (fast marching + minimal paths) of every skeleton edge, or of one path",
+         centerlineStudy},
+        {"measure", 0, 0, {kStudy, value("centerlines"), value("label"), value("json"), flag("overwrite"), kParam},
+         "measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE [--overwrite]] [--param key=value ...]\n"
+         "    cross-sections, lengths, radii, maximum diameter, stenosis (reads the study only)",
+         measureStudy},
+        {"mesh wall", 1, 1,
+         {kStudy, value("label"), value("centerlines"), value("thickness"), value("target-vertices"), kWait},
+         "mesh wall --study <study.vsim> [--label ID] [--centerlines ID] [--thickness 1.5mm] [--target-vertices 3000]\n"
+         "    tetrahedral vessel wall (one layer) around the lumen, opened at the centerline ends (fixed sets)",
+         meshWall},
+        {"mesh sheet", 1, 1,
+         {kStudy, value("width"), value("length"), value("thickness"), value("cell"), kWait},
+         "mesh sheet --study <study.vsim> [--width 40mm] [--length 40mm] [--thickness 0.5mm] [--cell 1mm]\n"
+         "    a thin cloth-type sheet (thesis 4.7.3), edges across x fixed",
+         meshWall},
+        {"mesh import", 2, 2,
+         {kStudy, value("pressure-array"), value("fixed-array"), value("lumen-point"), flag("fix-open-ends"), kWait},
+         "mesh import <mesh.vtu> --study <study.vsim> (--pressure-array NAME | --lumen-point x,y,z)\n"
+         "            (--fixed-array NAME | --fix-open-ends)\n"
+         "    a tetrahedral mesh from outside as a wall: the pressure faces from a cell-data array of the boundary\n"
+         "    faces or the inner surface reached from a point in the lumen, the fixed nodes from a point-data array\n"
+         "    or the mesh's open boundary loops",
+         meshWall},
+        {"simulate fem", 1, 1,
+         {kStudy, value("protocol"), value("mesh"), value("centerlines"), value("backend"), kParam, value("out"), kWait},
+         "simulate fem --study <study.vsim> --protocol thesis-rupture|physiological [--mesh ID] [--backend auto|cpu|cuda]\n"
+         "             [--param key=value ...] [--out DIR]\n"
+         "    wall mechanics: the last frame (stresses, rupture index) and the metrics into the study; the frame\n"
+         "    series (.vtu, series.pvd, metrics.json) to DIR (new, empty, or an earlier run folder)",
+         simulateFem},
+        {"simulate network", 1, 1,
+         {kStudy, value("tip"), value("rate"), value("tip-pressure"), value("void-fraction"), value("tumour"),
+          value("tumour-label"), value("tumour-value"), repeatable("control"), value("network"),
+          value("default-outlets"), value("centerlines"), kParam, value("out"), kWait},
+         "simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min|g/min | --tip-pressure mmHg]\n"
+         "                 [--void-fraction 0.1] [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]]\n"
+         "                 [--control x,y,z ...] [--network FILE [--default-outlets murray]] [--param key=value ...]\n"
+         "                 [--out DIR]\n"
+         "    drug delivery (two-phase conical Hagen-Poiseuille network): flow split, filling, control points\n"
+         "    two-phase vs liquid, tumour share and the best tip positions",
+         simulateNetwork},
+        {"validate", 1, 1, {},
+         "validate <case|fem|network|all>\n"
+         "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"
+         "    fem-damping) and the drug network (network-cylinder, network-cone, network-conservation,\n"
+         "    network-bifurcation, network-confluence); exit 0 only when every figure is within its tolerance",
+         validateSolvers},
+        {"report", 0, 0,
+         {kStudy, value("out"), value("sections"), value("page"), value("dicom-pdf"), flag("anonymize"),
+          value("metrics-csv"), value("metrics-json"), flag("no-validation"), flag("overwrite"), kWait},
+         "report --study <study.vsim> --out <report.pdf> [--sections aaa,stenosis,chemoembolization,smoke,runs]\n"
+         "       [--page a4|letter] [--dicom-pdf <out.dcm>] [--anonymize] [--metrics-csv F] [--metrics-json F]\n"
+         "       [--no-validation] [--overwrite]\n"
+         "    the clinical report (PDF); existing output files are replaced only with --overwrite",
+         writeReport},
+        {"demo", 0, 0, {value("out"), value("size")},
+         "demo --out <dir> [--size 512x512x400]\n"
+         "    the aaa, hepatic-tree and stenosis phantoms through the whole pipeline, each study with its report,\n"
+         "    into a new or empty folder",
+         runDemo},
+        {"demo-study", 0, 0, {value("out")},
+         "demo-study [--out <study.vsim>]\n"
+         "    write the built-in demo study (default: ~/.local/share/VascuSim/demo.vsim) unless it exists",
+         writeDemoStudy},
+    };
+}
+
+} // namespace
+
+const std::vector<CommandSpec>& commandSpecs()
+{
+    static const std::vector<CommandSpec> specs = declareCommands();
+    return specs;
+}
+
+} // namespace vsim::cli

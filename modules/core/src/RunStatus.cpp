@@ -1,0 +1,134 @@
+#include "vsim/core/RunStatus.h"
+
+#include "vsim/core/Error.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace vsim {
+namespace {
+
+std::string shortNumber(double value, const char* format = "%.1e")
+{
+    char text[32];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+std::string fixed(double value) { return shortNumber(value, "%.1f"); }
+
+} // namespace
+
+std::string stoppedByName(RunStatus::StoppedBy stoppedBy)
+{
+    switch (stoppedBy)
+    {
+    case RunStatus::StoppedBy::End: return "end";
+    case RunStatus::StoppedBy::EndCondition: return "end condition";
+    case RunStatus::StoppedBy::Guard: return "guard";
+    case RunStatus::StoppedBy::Cancel: return "cancel";
+    }
+    return "end";
+}
+
+void RunStatus::recordSolve(int solveIterations, double residual, double solveTolerance, int cap)
+{
+    ++solves;
+    iterations += solveIterations;
+    iterationCap = std::max(iterationCap, cap);
+    tolerance = std::max(tolerance, solveTolerance);
+    finalResidual = residual;
+    worstResidual = std::max(worstResidual, residual);
+    if (!(residual <= solveTolerance)) // NaN counts as not converged
+        ++unconvergedSolves;
+}
+
+std::string RunStatus::convergenceText() const
+{
+    if (converged())
+        return "converged";
+    std::string text = "not converged: " + std::to_string(unconvergedSolves) + " of " + std::to_string(solves) +
+                       " solves ended above their tolerance";
+    if (iterationCap > 0)
+        text += " at the " + std::to_string(iterationCap) + "-iteration cap";
+    return text + ", worst relative residual " + shortNumber(worstResidual) + " (tolerance " + shortNumber(tolerance) +
+           ")";
+}
+
+std::string RunStatus::stopText() const
+{
+    if (stoppedBy == StoppedBy::End)
+        return {};
+    std::string text = stoppedBy == StoppedBy::Cancel        ? "cancelled"
+                       : stoppedBy == StoppedBy::Guard       ? "stopped by a guard"
+                                                             : "stopped by its end condition";
+    if (!reachedQuantity.empty())
+        text += " at " + reachedQuantity + " " + fixed(reached) + " of " + fixed(target) + " " + reachedUnit;
+    if (!stopMessage.empty())
+        text += ": " + stopMessage;
+    return text;
+}
+
+std::map<std::string, double> RunStatus::metrics() const
+{
+    std::map<std::string, double> values{{"run_converged", converged() ? 1.0 : 0.0},
+                                         {"run_complete", complete() ? 1.0 : 0.0},
+                                         {"run_solves", double(solves)},
+                                         {"run_unconverged_solves", double(unconvergedSolves)},
+                                         {"run_mean_iterations", solves ? double(iterations) / double(solves) : 0.0},
+                                         {"run_iteration_cap", double(iterationCap)},
+                                         {"run_tolerance", tolerance},
+                                         {"run_final_residual", finalResidual},
+                                         {"run_worst_residual", worstResidual}};
+    if (!reachedQuantity.empty())
+    {
+        values["run_reached_" + reachedQuantity + "_" + reachedUnit] = reached;
+        values["run_target_" + reachedQuantity + "_" + reachedUnit] = target;
+    }
+    return values;
+}
+
+std::map<std::string, std::string> RunStatus::attributes() const
+{
+    return {{"run_stopped_by", stoppedByName(stoppedBy)},
+            {"run_stop_message", stopMessage},
+            {"run_reached_quantity", reachedQuantity},
+            {"run_reached_unit", reachedUnit},
+            {"run_convergence", convergenceText()}};
+}
+
+RunStatus RunStatus::fromRecords(const std::map<std::string, double>& metrics,
+                                 const std::map<std::string, std::string>& attributes)
+{
+    auto number = [&](const std::string& key, double fallback) {
+        const auto found = metrics.find(key);
+        return found == metrics.end() ? fallback : found->second;
+    };
+    auto text = [&](const std::string& key) {
+        const auto found = attributes.find(key);
+        return found == attributes.end() ? std::string() : found->second;
+    };
+    RunStatus status;
+    status.solves = long(number("run_solves", 0));
+    status.unconvergedSolves = long(number("run_unconverged_solves", 0));
+    status.iterations = long(number("run_mean_iterations", 0) * double(status.solves) + 0.5);
+    status.iterationCap = int(number("run_iteration_cap", 0));
+    status.tolerance = number("run_tolerance", 0);
+    status.finalResidual = number("run_final_residual", 0);
+    status.worstResidual = number("run_worst_residual", 0);
+    for (RunStatus::StoppedBy by : {StoppedBy::End, StoppedBy::EndCondition, StoppedBy::Guard, StoppedBy::Cancel})
+        if (stoppedByName(by) == text("run_stopped_by"))
+            status.stoppedBy = by;
+    status.stopMessage = text("run_stop_message");
+    status.reachedQuantity = text("run_reached_quantity");
+    status.reachedUnit = text("run_reached_unit");
+    if (!status.reachedQuantity.empty())
+    {
+        const std::string suffix = status.reachedQuantity + "_" + status.reachedUnit;
+        status.reached = number("run_reached_" + suffix, 0);
+        status.target = number("run_target_" + suffix, 0);
+    }
+    return status;
+}
+
+} // namespace vsim
