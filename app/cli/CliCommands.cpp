@@ -57,8 +57,6 @@ int printVersion()
 
 int printStudyInfo(const Arguments& arguments)
 {
-    if (arguments.positional.size() != 1)
-        throw Error("usage: vascusim-cli info <study.vsim>");
     const study::Study study = openStudyForReading(arguments.positional[0]);
     std::cout << app::studySummaryJson(study) << std::endl;
     return 0;
@@ -96,8 +94,8 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress)
 {
     const std::string bundle = arguments.option("study");
     const bool list = arguments.hasOption("list");
-    if (arguments.positional.size() != 1 || (bundle.empty() && !list))
-        throw Error("usage: vascusim-cli import <folder|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list]");
+    if (bundle.empty() && !list)
+        throw UsageError("vascusim-cli import: --study is required (or --list)");
     const fs::path input = arguments.positional[0];
     if (isVolumeFile(input))
     {
@@ -134,8 +132,6 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress)
 int writePhantomSeries(const Arguments& arguments, const Progress& progress)
 {
     const std::string out = arguments.option("out");
-    if (arguments.positional.size() != 1 || out.empty())
-        throw Error("usage: vascusim-cli phantom <aaa|stenosis|hepatic-tree|bifurcation> --out <folder> [options]");
     const dicom::PhantomKind kind = dicom::phantomKindFromName(arguments.positional[0]);
     dicom::PhantomOptions options;
     if (arguments.hasOption("size"))
@@ -162,9 +158,6 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
 
 int segmentStudy(const Arguments& arguments, const Progress& progress)
 {
-    const std::string bundle = arguments.option("study");
-    if (bundle.empty() || !arguments.positional.empty())
-        throw Error("usage: vascusim-cli segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value]");
     study::Study study = openStudyForWriting(arguments);
     const std::string imageId = chooseArtifact(study, arguments.option("image"), study::ArtifactKind::Image,
                                                "the study has no CT image: import one first (vascusim-cli import "
@@ -202,9 +195,6 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
 
 int surfaceStudy(const Arguments& arguments, const Progress& progress)
 {
-    const std::string bundle = arguments.option("study");
-    if (bundle.empty() || !arguments.positional.empty())
-        throw Error("usage: vascusim-cli surface --study <study.vsim> [--label ID] [--target-vertices N] [--stl FILE]");
     study::Study study = openStudyForWriting(arguments);
     const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
                                                "the study has no vessel label: run vascusim-cli segment first");
@@ -238,9 +228,6 @@ int surfaceStudy(const Arguments& arguments, const Progress& progress)
 
 int skeletonStudy(const Arguments& arguments, const Progress& progress)
 {
-    const std::string bundle = arguments.option("study");
-    if (bundle.empty() || !arguments.positional.empty())
-        throw Error("usage: vascusim-cli skeleton --study <study.vsim> [--label ID] [--param key=value]");
     study::Study study = openStudyForWriting(arguments);
     const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
                                                "the study has no vessel label: run vascusim-cli segment first");
@@ -269,10 +256,8 @@ int skeletonStudy(const Arguments& arguments, const Progress& progress)
 
 int centerlineStudy(const Arguments& arguments, const Progress& progress)
 {
-    const std::string bundle = arguments.option("study");
-    if (bundle.empty() || !arguments.positional.empty() || arguments.hasOption("from") != arguments.hasOption("to"))
-        throw Error("usage: vascusim-cli centerline --study <study.vsim> [--skeleton ID] [--label ID] "
-                    "[--from NODE --to NODE] [--param key=value]");
+    if (arguments.hasOption("from") != arguments.hasOption("to"))
+        throw UsageError("vascusim-cli centerline: give --from and --to together");
     study::Study study = openStudyForWriting(arguments);
     const std::string skeletonId =
         chooseArtifact(study, arguments.option("skeleton"), study::ArtifactKind::Skeleton,
@@ -317,8 +302,6 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress)
 int measureStudy(const Arguments& arguments, const Progress& progress)
 {
     const std::string bundle = arguments.option("study");
-    if (bundle.empty() || !arguments.positional.empty())
-        throw Error("usage: vascusim-cli measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE]");
     const study::Study study = openStudyForReading(bundle);
     const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
     const std::string labelId = arguments.hasOption("label") ? arguments.option("label")

@@ -96,6 +96,9 @@ Arguments parseArguments(const CommandSpec& spec, const std::vector<std::string>
             throw UsageError(command + ": --" + name + " needs a value");
         arguments.options.emplace_back(name, value);
     }
+    for (const OptionSpec& option : spec.options)
+        if (option.required && !arguments.hasOption(option.name))
+            throw UsageError(command + ": --" + option.name + " is required; usage: vascusim-cli " + synopsis(spec));
     if (arguments.positional.size() < spec.minPositional || arguments.positional.size() > spec.maxPositional)
     {
         const std::string extra = arguments.positional.size() > spec.maxPositional

@@ -2,7 +2,7 @@
 
 // The command line, declared once per command: its options (flag, one value, or repeatable), its positional
 // arguments and its usage text. Parsing against the declaration is strict: an unknown option, a missing value, a
-// single option given twice or an extra positional argument is a UsageError (exit code 2) naming the option and
+// single option given twice, a required option missing or an extra positional argument is a UsageError (exit code 2) naming the option and
 // the accepted ones. The declarations also give the top-level usage and every command's --help.
 
 #include "CliCommands.h"
@@ -30,6 +30,7 @@ struct OptionSpec
     };
     std::string name;
     Arity arity = Arity::Value;
+    bool required = false; ///< the command cannot run without it
 };
 
 struct CommandSpec

@@ -15,24 +15,25 @@ using Arity = OptionSpec::Arity;
 OptionSpec value(const std::string& name) { return {name, Arity::Value}; }
 OptionSpec flag(const std::string& name) { return {name, Arity::Flag}; }
 OptionSpec repeatable(const std::string& name) { return {name, Arity::Repeatable}; }
+OptionSpec required(const std::string& name) { return {name, Arity::Value, true}; }
 
 /// Every command that writes into a study waits for its lock this long (default 0: refuse at once).
 const OptionSpec kWait = value("wait");
 const OptionSpec kParam = repeatable("param");
-const OptionSpec kStudy = value("study");
+const OptionSpec kStudy = required("study");
 
 std::vector<CommandSpec> declareCommands()
 {
     return {
         {"info", 1, 1, {}, "info <study.vsim>\n    the study's metadata and artifacts as JSON (works while another process writes it)",
          [](const Arguments& a, const Progress&) { return printStudyInfo(a); }},
-        {"import", 1, 1, {kStudy, value("series"), flag("list"), value("memory-limit-mb"), kWait},
+        {"import", 1, 1, {value("study"), value("series"), flag("list"), value("memory-limit-mb"), kWait},
          "import <dir|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list] [--memory-limit-mb N] [--wait s]\n"
          "    add a DICOM series (the CT with most slices unless --series) or a NIfTI / NRRD / MetaImage volume;\n"
          "    creates the study in a new or empty folder; --list prints the series found as JSON and imports nothing",
          importIntoStudy},
         {"phantom", 1, 1,
-         {value("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),
+         {required("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),
           value("max-diameter"), value("stenosis"), value("blur"), flag("enhanced")},
          "phantom <aaa|stenosis|hepatic-tree|bifurcation> --out <dir> [--size 512x512x400] [--spacing 0.7,0.7,1.0]\n"
          "        [--noise 20] [--seed 1] [--transfer-syntax explicit-le|implicit-le|jpeg-lossless|jpeg-ls|rle]\n"
@@ -78,14 +79,14 @@ std::vector<CommandSpec> declareCommands()
          "    or the mesh's open boundary loops",
          meshWall},
         {"simulate fem", 1, 1,
-         {kStudy, value("protocol"), value("mesh"), value("centerlines"), value("backend"), kParam, value("out"), kWait},
+         {kStudy, required("protocol"), value("mesh"), value("centerlines"), value("backend"), kParam, value("out"), kWait},
          "simulate fem --study <study.vsim> --protocol thesis-rupture|physiological [--mesh ID] [--backend auto|cpu|cuda]\n"
          "             [--param key=value ...] [--out DIR]\n"
          "    wall mechanics: the last frame (stresses, rupture index) and the metrics into the study; the frame\n"
          "    series (.vtu, series.pvd, metrics.json) to DIR (new, empty, or an earlier run folder)",
          simulateFem},
         {"simulate network", 1, 1,
-         {kStudy, value("tip"), value("rate"), value("tip-pressure"), value("void-fraction"), value("tumour"),
+         {kStudy, required("tip"), value("rate"), value("tip-pressure"), value("void-fraction"), value("tumour"),
           value("tumour-label"), value("tumour-value"), repeatable("control"), value("network"),
           value("default-outlets"), value("centerlines"), kParam, value("out"), kWait},
          "simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min|g/min | --tip-pressure mmHg]\n"
@@ -102,14 +103,14 @@ std::vector<CommandSpec> declareCommands()
          "    network-bifurcation, network-confluence); exit 0 only when every figure is within its tolerance",
          validateSolvers},
         {"report", 0, 0,
-         {kStudy, value("out"), value("sections"), value("page"), value("dicom-pdf"), flag("anonymize"),
+         {kStudy, required("out"), value("sections"), value("page"), value("dicom-pdf"), flag("anonymize"),
           value("metrics-csv"), value("metrics-json"), flag("no-validation"), flag("overwrite"), kWait},
          "report --study <study.vsim> --out <report.pdf> [--sections aaa,stenosis,chemoembolization,smoke,runs]\n"
          "       [--page a4|letter] [--dicom-pdf <out.dcm>] [--anonymize] [--metrics-csv F] [--metrics-json F]\n"
          "       [--no-validation] [--overwrite]\n"
          "    the clinical report (PDF); existing output files are replaced only with --overwrite",
          writeReport},
-        {"demo", 0, 0, {value("out"), value("size")},
+        {"demo", 0, 0, {required("out"), value("size")},
          "demo --out <dir> [--size 512x512x400]\n"
          "    the aaa, hepatic-tree and stenosis phantoms through the whole pipeline, each study with its report,\n"
          "    into a new or empty folder",

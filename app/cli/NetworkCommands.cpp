@@ -48,11 +48,6 @@ Eigen::Vector3d point(const std::vector<double>& v) { return {v[0], v[1], v[2]};
 
 int simulateNetwork(const Arguments& arguments, const Progress& progress)
 {
-    const std::string bundle = arguments.option("study");
-    if (bundle.empty() || !arguments.hasOption("tip"))
-        throw Error("usage: vascusim-cli simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min | --tip-pressure mmHg] "
-                    "[--void-fraction 0.1] [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]] [--control x,y,z ...] [--network FILE [--default-outlets "
-                    "murray]] [--centerlines ID] [--param key=value] [--out DIR]");
     if (arguments.hasOption("out")) // before the run: a refused folder costs no time
         claimOutputFolder(arguments.option("out"), "run");
     study::Study study = openStudyForWriting(arguments);

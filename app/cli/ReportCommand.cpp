@@ -48,10 +48,6 @@ std::set<std::string> sectionList(const std::string& text)
 int writeReport(const Arguments& arguments, const Progress& progress)
 {
     const std::string bundle = arguments.option("study"), out = arguments.option("out");
-    if (bundle.empty() || out.empty())
-        throw Error("usage: vascusim-cli report --study <study.vsim> --out <report.pdf> [--sections "
-                    "aaa,stenosis,chemoembolization,smoke,runs] [--page a4|letter] [--dicom-pdf <out.dcm>] "
-                    "[--anonymize] [--metrics-csv <file>] [--metrics-json <file>] [--no-validation]");
     const std::string pageName = arguments.option("page", "a4");
     const report::PageSize page = report::pageSizeFromName(pageName);
     // Every output file is checked before the report is built: an existing one is replaced only with --overwrite.

@@ -12,8 +12,6 @@ namespace vsim::cli {
 
 int validateSolvers(const Arguments& arguments, const Progress& progress)
 {
-    if (arguments.positional.size() != 1)
-        throw Error("validate needs one case name or 'all'");
     const std::string requested = arguments.positional.front();
     const std::vector<std::string> fem = sim::fem::femValidationCases(),
                                    network = sim::network::networkValidationCases();

@@ -37,15 +37,7 @@ int addOtherWall(study::Study& study, const TetMesh& wall, const std::string& na
 
 int meshWall(const Arguments& arguments, const Progress& progress)
 {
-    const std::string bundle = arguments.option("study");
     const std::string kind = arguments.positional.empty() ? std::string() : arguments.positional.front();
-    if (bundle.empty() || (kind != "wall" && kind != "sheet" && kind != "import") ||
-        (kind == "import") != (arguments.positional.size() == 2) || (kind != "import" && arguments.positional.size() != 1))
-        throw Error("usage: vascusim-cli mesh wall --study <study.vsim> [--label ID] [--centerlines ID] "
-                    "[--thickness mm] [--target-vertices N]\n"
-                    "       vascusim-cli mesh sheet --study <study.vsim> [--width 40] [--length 40] [--thickness 0.5] "
-                    "[--cell 1]\n"
-                    "       vascusim-cli mesh import <mesh.vtu> --study <study.vsim>");
     if (kind == "sheet")
     {
         study::Study study = openStudyForWriting(arguments);
@@ -62,10 +54,49 @@ int meshWall(const Arguments& arguments, const Progress& progress)
     }
     if (kind == "import")
     {
-        study::Study study = openStudyForWriting(arguments);
+        mesh::WallBoundarySelection selection;
+        selection.pressureArray = arguments.option("pressure-array");
+        selection.fixedArray = arguments.option("fixed-array");
+        selection.fixOpenEnds = arguments.hasOption("fix-open-ends");
+        if (arguments.hasOption("lumen-point"))
+        {
+            const auto xyz = parseTriple<double>(arguments.option("lumen-point"), ',', "lumen-point");
+            selection.lumenPointMm = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+        }
+        if (!selection.pressureArray.empty() && selection.lumenPointMm)
+            throw UsageError("give the pressure faces by --pressure-array or by --lumen-point, not both");
+        if (!selection.fixedArray.empty() && selection.fixOpenEnds)
+            throw UsageError("give the held nodes by --fixed-array or by --fix-open-ends, not both");
         const std::string file = arguments.positional[1];
-        return addOtherWall(study, app::asWall(study::readTetMeshFile(file)), "Imported wall",
-                            {{"shape", "imported"}, {"source", std::filesystem::path(file).filename().string()}});
+        const mesh::MarkedWall marked = app::asWall(study::readTetMeshFile(file), selection);
+        study::Study study = openStudyForWriting(arguments);
+        study::Provenance provenance;
+        provenance.command = "mesh wall";
+        provenance.parameters = {{"shape", "imported"},
+                                 {"source", std::filesystem::path(file).filename().string()},
+                                 {"pressure_faces", std::to_string(marked.pressureFaces)},
+                                 {"fixed_nodes", std::to_string(marked.fixedNodes)}};
+        for (const auto& [key, value] : std::map<std::string, std::string>{
+                 {"pressure_array", selection.pressureArray}, {"fixed_array", selection.fixedArray}})
+            if (!value.empty())
+                provenance.parameters[key] = value;
+        if (selection.lumenPointMm)
+            provenance.parameters["lumen_point_mm"] = arguments.option("lumen-point");
+        if (selection.fixOpenEnds)
+            provenance.parameters["fixed"] = "open ends";
+        const std::string id = study.addTetMesh(marked.wall, "Imported wall", provenance, marked.warnings);
+        study.save();
+        std::cout << nlohmann::json{{"artifact", id},
+                                    {"nodes", marked.wall.points.size()},
+                                    {"tets", marked.wall.tets.size()},
+                                    {"boundary_faces", marked.boundaryFaces},
+                                    {"pressure_faces", marked.pressureFaces},
+                                    {"open_loops", marked.openLoops},
+                                    {"fixed_nodes", marked.fixedNodes},
+                                    {"warnings", marked.warnings}}
+                         .dump(2)
+                  << "\n";
+        return 0;
     }
     study::Study study = openStudyForWriting(arguments);
     const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
@@ -103,10 +134,7 @@ int meshWall(const Arguments& arguments, const Progress& progress)
 
 int simulateFem(const Arguments& arguments, const Progress& progress)
 {
-    const std::string bundle = arguments.option("study"), protocol = arguments.option("protocol");
-    if (bundle.empty() || arguments.positional != std::vector<std::string>{"fem"} || protocol.empty())
-        throw Error("usage: vascusim-cli simulate fem --study <study.vsim> --protocol thesis-rupture|physiological "
-                    "[--mesh ID] [--centerlines ID] [--backend auto|cpu|cuda] [--param key=value] [--out DIR]");
+    const std::string protocol = arguments.option("protocol");
     if (protocol == "interactive")
         throw Error("the interactive protocol needs the workstation (vascusim): it drags the wall with the mouse");
     if (protocol != "thesis-rupture" && protocol != "physiological")

@@ -6,7 +6,8 @@ namespace vsim::cli {
 
 /// `mesh wall --study S [--label ID] [--centerlines ID] [--thickness mm] [--target-vertices N]`: the tetrahedral
 /// wall around the lumen surface (decimated to N vertices), opened at the centerline ends, into the study;
-/// `mesh sheet` a thin cloth-type sheet; `mesh import FILE.vtu` a mesh from outside (app::asWall).
+/// `mesh sheet` a thin cloth-type sheet; `mesh import FILE.vtu` a mesh from outside with its pressure faces and held
+/// nodes selected (app::asWall).
 int meshWall(const Arguments& arguments, const Progress& progress);
 
 /// `simulate fem --study S --protocol thesis-rupture|physiological [--mesh ID] [--centerlines ID] [--backend

@@ -63,7 +63,7 @@ if(pressure_tip LESS 29.999 OR pressure_tip GREATER 30.001 OR mass_rate LESS 1.8
     message(FATAL_ERROR "injection by pressure (${pressure_tip} mmHg) or by mass rate (${mass_rate} g/min) not kept")
 endif()
 run_cli(1 both simulate network --study ${study} --tip 20,-25,-305 --rate 2 --tip-pressure 30)
-run_cli(1 unit simulate network --study ${study} --tip 20,-25,-305 --rate 2l/h)
+run_cli(2 unit simulate network --study ${study} --tip 20,-25,-305 --rate 2l/h)
 run_cli(1 low simulate network --study ${study} --tip 20,-25,-305 --tip-pressure 5)
 if(NOT both MATCHES "not both" OR NOT unit MATCHES "unknown unit 'l/h'" OR NOT low MATCHES "does not drive any flow")
     message(FATAL_ERROR "a conflicting, malformed or too low injection must be refused:\n${both}\n${unit}\n${low}")

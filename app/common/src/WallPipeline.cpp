@@ -2,8 +2,8 @@
 
 #include "vsim/app/RunRecord.h"
 #include "vsim/core/Error.h"
-#include "vsim/core/PrincipalAxis.h"
 #include "vsim/mesh/SurfaceRemeshing.h"
+#include "vsim/mesh/WallBoundary.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
@@ -73,25 +73,19 @@ TetMesh clothSheet(double widthMm, double lengthMm, double thicknessMm, double c
     return sheet;
 }
 
-TetMesh asWall(TetMesh mesh)
+mesh::MarkedWall asWall(TetMesh mesh, const mesh::WallBoundarySelection& selection)
 {
-    if (mesh.pointFields.count("wall_layer") && mesh.pointFields.count("end_set"))
-        return mesh;
-    const PrincipalAxis axis = principalAxis(mesh.points);
-    const double margin = 0.02 * axis.halfLength; // 1 % of the length
-    std::vector<double> ends(mesh.points.size(), 0.0);
-    std::size_t fixed = 0;
-    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    const bool selected = !selection.pressureArray.empty() || selection.lumenPointMm || !selection.fixedArray.empty() ||
+                          selection.fixOpenEnds;
+    if (!selected && mesh.pointFields.count("wall_layer") && mesh.pointFields.count("end_set"))
     {
-        const double along = (mesh.points[i] - axis.centre).dot(axis.direction);
-        ends[i] = along <= -axis.halfLength + margin ? 1.0 : along >= axis.halfLength - margin ? 2.0 : 0.0;
-        fixed += ends[i] > 0.0;
+        mesh::MarkedWall kept; // a VascuSim wall: its own fields say where the pressure acts and what is held
+        const auto& ends = mesh.pointFields.at("end_set");
+        kept.fixedNodes = std::size_t(std::count_if(ends.begin(), ends.end(), [](double e) { return e > 0.0; }));
+        kept.wall = std::move(mesh);
+        return kept;
     }
-    if (fixed == 0)
-        throw Error("no node lies at the ends of the mesh's long axis to hold it");
-    mesh.pointFields["end_set"] = ends;
-    mesh.pointFields["wall_layer"] = std::vector<double>(mesh.points.size(), 0.0);
-    return mesh;
+    return mesh::markWallBoundary(std::move(mesh), selection);
 }
 
 WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& centerlines, double thicknessMm,

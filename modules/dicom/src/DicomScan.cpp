@@ -1,6 +1,7 @@
 #include "vsim/dicom/DicomScan.h"
 
 #include "DcmtkSetup.h"
+#include "vsim/core/OutputSafety.h"
 #include "vsim/core/ParallelFor.h"
 
 #include <dcmtk/config/osconfig.h>
@@ -74,7 +75,7 @@ std::vector<fs::path> listInputFiles(const fs::path& input)
     std::vector<fs::path> files;
     for (fs::recursive_directory_iterator it(input, fs::directory_options::skip_permission_denied, error), end;
          !error && it != end; it.increment(error))
-        if (it->is_regular_file(error))
+        if (it->is_regular_file(error) && it->path().filename() != vsim::kOwnedFolderMarker) // VascuSim's own marker
             files.push_back(it->path());
     std::sort(files.begin(), files.end());
     return files;

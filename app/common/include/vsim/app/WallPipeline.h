@@ -5,6 +5,7 @@
 
 #include "vsim/core/Parameters.h"
 #include "vsim/core/Progress.h"
+#include "vsim/mesh/WallBoundary.h"
 #include "vsim/mesh/WallMesh.h"
 #include "vsim/sim/fem/FemRun.h"
 #include "vsim/study/Study.h"
@@ -34,11 +35,11 @@ WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& cente
 /// 0), the two edges across x are fixed (end sets 1 and 2).
 TetMesh clothSheet(double widthMm, double lengthMm, double thicknessMm, double cellMm);
 
-/// A tetrahedral mesh from outside (mm) made usable as a wall: its own wall_layer / end_set fields are kept when it
-/// has them; otherwise the nodes within 1 % of its length of either end of its principal axis become end sets 1
-/// and 2, and every node counts as lumen side (pressure then acts on its whole boundary). Throws vsim::Error when
-/// no node would be fixed.
-TetMesh asWall(TetMesh mesh);
+/// A tetrahedral mesh from outside (mm) made usable as a wall: a VascuSim wall (wall_layer and end_set fields) is
+/// kept as it is when nothing is selected; otherwise the pressure faces and held nodes are marked as `selection`
+/// says (mesh::markWallBoundary). Throws vsim::Error naming the options when a mesh without wall fields comes with
+/// no selection, and when no face or node results.
+mesh::MarkedWall asWall(TetMesh mesh, const mesh::WallBoundarySelection& selection);
 
 /// Adds the wall to the study (provenance: label and centerlines, thickness, budget; quality as attributes);
 /// returns its id. The study is not saved.
