@@ -21,6 +21,21 @@
 #include <algorithm>
 
 namespace vsim::gui {
+
+std::optional<std::vector<double>> numbersInText(const QString& text, std::size_t count)
+{
+    std::vector<double> values;
+    for (const QString& part : text.split(',', Qt::SkipEmptyParts))
+    {
+        bool ok = false;
+        values.push_back(part.trimmed().toDouble(&ok));
+        if (!ok)
+            return std::nullopt;
+    }
+    if (!values.empty() && values.size() != count)
+        return std::nullopt;
+    return values;
+}
 namespace {
 
 QString number(double value, int decimals) { return QString::number(value, 'f', decimals); }

@@ -12,6 +12,8 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 class QDoubleSpinBox;
 class QLabel;
@@ -36,6 +38,9 @@ struct DrugDeliveryRequest
 {
     QString tip, tumour, controls;
 };
+
+/// "x, y, z[, r]" (mm) as `count` numbers; empty text gives none; nullopt for a malformed entry.
+std::optional<std::vector<double>> numbersInText(const QString& text, std::size_t count);
 
 class DrugDeliveryPanel : public QWidget
 {

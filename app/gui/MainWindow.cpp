@@ -2,6 +2,7 @@
 
 #include "ArtifactCommands.h"
 #include "DicomImportDialog.h"
+#include "LabelEditSession.h"
 #include "ViewLayout.h"
 #include "vsim/app/DicomStudyImport.h"
 #include "vsim/dicom/DicomImport.h"
@@ -18,6 +19,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QStatusBar>
 #include <QTreeWidget>
 
@@ -37,17 +39,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(&m_document, &StudyDocument::artifactsChanged, this, [this] {
         refreshArtifactTree();
         refreshTitle();
-        // An undo may have taken away the label the overlays show.
-        if (!m_overlayLabelId.empty() && (!m_document.hasStudy() || !m_document.study().hasArtifact(m_overlayLabelId)))
-        {
+        // An undo may have taken away the label being edited; the views show what the study holds now.
+        if (m_labelEdit && m_document.hasStudy() && !m_document.study().hasArtifact(m_labelEdit->sourceId()))
             discardLabelEdits();
-            showLabelOverlay({}, {});
-        }
+        refreshScene();
     });
     connect(&m_document, &StudyDocument::studyReplaced, this, [this] {
         stopInteractiveWall();
         discardLabelEdits();
         showLabelOverlay({}, {});
+        restoreScene();
     });
     connect(m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::refreshTitle);
     connect(&m_tasks, &TaskRunner::started, this, [this](const QString& title) {
@@ -94,6 +95,10 @@ void MainWindow::createDocks()
             showImageArtifact(id);
         if (m_document.study().artifact(id).kind == study::ArtifactKind::Report)
             openReportArtifact(id);
+    });
+    connect(m_artifactTree, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
+        if (column == 0 && item->flags().testFlag(Qt::ItemIsUserCheckable))
+            setArtifactShown(item->data(0, Qt::UserRole).toString().toStdString(), item->checkState(0) == Qt::Checked);
     });
     auto* artifactDock = new QDockWidget(tr("Study"), this);
     artifactDock->setObjectName("studyDock");
@@ -170,6 +175,7 @@ void MainWindow::refreshTitle()
 
 void MainWindow::refreshArtifactTree()
 {
+    const QSignalBlocker quiet(m_artifactTree); // the check boxes are set here, not by the user
     m_artifactTree->clear();
     if (!m_document.hasStudy())
         return;
@@ -177,6 +183,8 @@ void MainWindow::refreshArtifactTree()
     {
         auto* item = new QTreeWidgetItem(m_artifactTree);
         item->setText(0, QString::fromStdString(artifact.name));
+        if (isShowable(artifact))
+            item->setCheckState(0, isArtifactShown(artifact.id) ? Qt::Checked : Qt::Unchecked);
         item->setText(1, QString::fromStdString(study::kindName(artifact.kind)));
         item->setData(0, Qt::UserRole, QString::fromStdString(artifact.id));
         if (artifact.damaged)
@@ -279,8 +287,8 @@ bool MainWindow::openStudy(const QString& bundle)
         },
         [this, bundle, opened, image] {
             const std::vector<std::string> warnings = (*opened)->openWarnings();
+            m_views->showImage(*image); // first: the study's saved view state then applies over it
             m_document.setStudy(std::move(**opened));
-            m_views->showImage(*image);
             rememberRecent(bundle);
             if (!warnings.empty())
             {
@@ -298,8 +306,8 @@ bool MainWindow::newStudy(const QString& bundle)
     {
         study::Study created = study::Study::create(bundle.toStdString(), QFileInfo(bundle).completeBaseName().toStdString());
         created.save();
-        m_document.setStudy(std::move(created));
         m_views->showImage(CtVolume());
+        m_document.setStudy(std::move(created));
         rememberRecent(bundle);
         setBusy(false);
         return true;
@@ -372,8 +380,9 @@ void MainWindow::showDicomImportDialog()
 
 bool MainWindow::saveStudy()
 {
-    if (!m_document.hasStudy())
+    if (!m_document.hasStudy() || m_tasks.isBusy())
         return false;
+    keepViewStateInStudy();
     return m_tasks.run(
         tr("Save study"), [this](const Progress& progress) {
             progress.report(0.0, "writing the study");
@@ -384,8 +393,9 @@ bool MainWindow::saveStudy()
 
 bool MainWindow::saveStudyAs(const QString& bundle)
 {
-    if (!m_document.hasStudy())
+    if (!m_document.hasStudy() || m_tasks.isBusy())
         return false;
+    keepViewStateInStudy();
     return m_tasks.run(
         tr("Save study as"),
         [this, path = bundle.toStdString()](const Progress& progress) {
@@ -440,6 +450,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         {
             try
             {
+                keepViewStateInStudy();
                 m_document.study().save();
             }
             catch (const std::exception& error)

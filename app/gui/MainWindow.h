@@ -2,8 +2,10 @@
 
 #include "DrugDeliveryPanel.h"
 #include "ReportExportDialog.h"
+#include "SceneCache.h"
 #include "StudyDocument.h"
 #include "TaskRunner.h"
+#include "ViewState.h"
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/core/RunStatus.h"
@@ -17,6 +19,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 
 class QDockWidget;
 class QDoubleSpinBox;
@@ -128,11 +131,25 @@ public:
     bool saveStudyAs(const QString& bundle);
     /// Shows the image artifact `id` in the views.
     void showImageArtifact(const std::string& id);
+    /// Shows or hides an artifact's picture (the study tree's check boxes); the views are redrawn.
+    void setArtifactShown(const std::string& id, bool shown);
+    bool isArtifactShown(const std::string& id) const;
+    /// The view state as it would be saved with the study now (hidden artifacts, cursor, window/level, camera).
+    ViewState captureViewState() const;
 
 protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    /// Redraws the views from the study (MainWindowScene.cpp): after steps, undo, visibility changes, reopening.
+    void refreshScene();
+    /// Loads what the scene lacks in the background, then redraws (and applies a pending view state).
+    void prepareScene(const SceneContent& content);
+    void applyViewState(const ViewState& state);
+    /// A study was opened or created: its saved view state and a fresh scene.
+    void restoreScene();
+    /// Puts the current view state into the study's metadata, to be saved with it.
+    void keepViewStateInStudy();
     /// Write access when nobody holds the study's lock; otherwise as the header of openStudy() says. Throws
     /// vsim::Cancelled when the user cancels.
     study::Access askHowToOpenLockedStudy(const QString& bundle, bool& breakLock);
@@ -147,8 +164,6 @@ private:
     void editVesselParameters();
     /// Overlays a label in the three MPRs (an empty one clears them); `artifactId` is what it shows.
     void showLabelOverlay(const LabelVolume& label, const std::string& artifactId);
-    /// Extracts a display surface of `label` in the background and shows it (and nothing else) in 3D.
-    void showLumenSurface(const LabelVolume& label);
     /// Fills the Measurements dock; each row keeps the patient position (mm) it jumps to.
     void showMeasurements(const imaging::VesselMeasurements& measurements);
     /// The newest undamaged artifact of a kind, or an empty string.
@@ -191,6 +206,9 @@ private:
     InteractiveWall* m_interactiveWall = nullptr;
     QDockWidget* m_interactiveDock = nullptr;
     std::string m_overlayLabelId; // the label artifact the MPR overlays show
+    SceneCache m_scene;
+    std::set<std::string> m_hiddenArtifacts;
+    std::optional<ViewState> m_pendingViewState; // applied once a reopened study's views are prepared
     LabelEditSession* m_labelEdit = nullptr;
     QToolBar* m_editToolBar = nullptr;
     QAction* m_paintAction = nullptr;

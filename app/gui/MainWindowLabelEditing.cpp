@@ -123,17 +123,12 @@ void MainWindow::discardLabelEdits()
 {
     if (!m_labelEdit)
         return;
-    const std::string sourceId = m_labelEdit->sourceId();
     m_labelEdit->deleteLater();
     m_labelEdit = nullptr;
     for (viz::SliceOrientation orientation : kOrientations)
         m_views->sliceView(orientation)->setBrush(viz::BrushMode::Off, m_brushRadius->value());
     m_editToolBar->hide();
-    // The overlay shows the study's label again.
-    if (m_document.hasStudy() && m_document.study().hasArtifact(sourceId))
-        showLabelOverlay(m_document.study().loadLabel(sourceId), sourceId);
-    else
-        showLabelOverlay({}, {});
+    refreshScene(); // the overlay shows the study's label again
 }
 
 bool MainWindow::applyLabelEdits()
@@ -147,32 +142,14 @@ bool MainWindow::applyLabelEdits()
     provenance.parameters["erased_voxels"] = std::to_string(m_labelEdit->erasedVoxels());
     const LabelVolume edited = m_labelEdit->label().clone();
     const std::string id = m_document.study().addLabel(edited, "Vessel lumen (edited)", provenance);
-    m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Apply label edits")));
+    m_scene.labels[id] = edited;
     m_labelEdit->deleteLater();
     m_labelEdit = nullptr;
     for (viz::SliceOrientation orientation : kOrientations)
         m_views->sliceView(orientation)->setBrush(viz::BrushMode::Off, m_brushRadius->value());
     m_editToolBar->hide();
-    showLabelOverlay(edited, id);
-    showLumenSurface(edited);
+    m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Apply label edits"))); // redraws
     return true;
-}
-
-void MainWindow::showLumenSurface(const LabelVolume& label)
-{
-    auto surface = std::make_shared<TriangleMesh>();
-    m_tasks.run(
-        tr("Vessel surface"),
-        [label, surface](const Progress& progress) {
-            ParameterSet parameters(mesh::surfaceParameters());
-            parameters.set("target_vertices", 20000); // enough for display
-            *surface = mesh::extractVesselSurface(label, 1, parameters, progress).surface;
-        },
-        [this, surface] {
-            m_views->volumeView()->clearSurfaces();
-            m_views->volumeView()->clearLines();
-            m_views->volumeView()->addSurface(*surface, QColor(220, 60, 50));
-        });
 }
 
 } // namespace vsim::gui

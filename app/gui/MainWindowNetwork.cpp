@@ -18,25 +18,6 @@
 
 
 namespace vsim::gui {
-namespace {
-
-/// "x, y, z[, r]" in mm -> numbers; empty text -> none; nullopt for a malformed entry.
-std::optional<std::vector<double>> numbersIn(const QString& text, std::size_t count)
-{
-    std::vector<double> values;
-    for (const QString& part : text.split(',', Qt::SkipEmptyParts))
-    {
-        bool ok = false;
-        values.push_back(part.trimmed().toDouble(&ok));
-        if (!ok)
-            return std::nullopt;
-    }
-    if (!values.empty() && values.size() != count)
-        return std::nullopt;
-    return values;
-}
-
-} // namespace
 
 void MainWindow::createDrugMenu()
 {
@@ -63,7 +44,7 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
     sim::network::NetworkRunSetup setup;
     setup.parameters = m_networkParameters;
     std::map<std::string, std::string> source;
-    const auto tip = numbersIn(request.tip, 3), tumour = numbersIn(request.tumour, 4);
+    const auto tip = numbersInText(request.tip, 3), tumour = numbersInText(request.tumour, 4);
     if (!tip || !tumour)
     {
         showError(tr("Drug delivery"), tr("The tip needs three numbers (mm) and the tumour four (centre and radius)."));
@@ -83,7 +64,7 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
     }
     for (const QString& point : request.controls.split(';', Qt::SkipEmptyParts))
     {
-        const auto xyz = numbersIn(point, 3);
+        const auto xyz = numbersInText(point, 3);
         if (!xyz || xyz->empty())
         {
             showError(tr("Drug delivery"), tr("Control points are x, y, z in mm, separated by ';'."));
@@ -91,6 +72,8 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
         }
         setup.controlPointsMm.emplace_back((*xyz)[0], (*xyz)[1], (*xyz)[2]);
     }
+    if (!request.controls.trimmed().isEmpty())
+        source["control_points"] = request.controls.toStdString(); // what a reopened study runs again
     m_drugRequest = request;
     auto run = std::make_shared<sim::network::NetworkRunResult>();
     auto warnings = std::make_shared<std::vector<std::string>>();
@@ -107,8 +90,9 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
             if (!labelId.empty())
                 inputs.push_back(labelId);
             const std::string id = app::addNetworkRun(m_document.study(), *run, m_networkParameters, inputs, source);
+            m_scene.networkRuns[id] = run;
+            m_scene.networkRequests[id] = m_drugRequest;
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Drug flow")));
-            showDrugDeliveryRun(run);
         });
 }
 

@@ -26,9 +26,6 @@
 namespace vsim::gui {
 namespace {
 
-const QColor kLumenColour(220, 60, 50);
-const QColor kSkeletonColour(250, 210, 40);
-const QColor kCenterlineColour(60, 220, 90);
 constexpr int kPositionRole = Qt::UserRole + 1;
 
 QTableWidgetItem* number(double value, int decimals)
@@ -177,11 +174,9 @@ bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)
             provenance.parameters["seed_found_automatically"] = outcome->segmentation.seedFound ? "yes" : "no";
             const std::string id = m_document.study().addLabel(outcome->segmentation.label, "Vessel lumen", provenance,
                                                                outcome->segmentation.warnings);
+            m_scene.labels[id] = outcome->segmentation.label; // what the views draw, before they are redrawn
+            m_scene.lumenSurfaces[id] = outcome->surface;
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Segment vessels")));
-            showLabelOverlay(outcome->segmentation.label, id);
-            m_views->volumeView()->clearSurfaces();
-            m_views->volumeView()->clearLines();
-            m_views->volumeView()->addSurface(outcome->surface, kLumenColour);
         });
 }
 
@@ -231,17 +226,13 @@ bool MainWindow::extractSkeletonAndCenterlines()
             centerline.parameters = outcome->centerlineParameters;
             const std::string centerlineId =
                 m_document.study().addSkeleton(outcome->centerlines, "Centerlines", centerline);
+            m_scene.skeletons[skeletonId] = outcome->skeleton.graph;
+            m_scene.skeletons[centerlineId] = outcome->centerlines;
+            m_scene.measurements[centerlineId] = outcome->measurements;
             m_document.undoStack()->beginMacro(tr("Skeleton and centerlines"));
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, skeletonId, tr("Skeleton")));
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, centerlineId, tr("Centerlines")));
             m_document.undoStack()->endMacro();
-            showMeasurements(outcome->measurements);
-            viz::VolumeView3D* view = m_views->volumeView();
-            view->clearLines();
-            view->setVolumeVisible(false);  // the rendered contrast blood would hide the lines inside it
-            view->setSurfaceOpacity(0.35); // the lines run inside the lumen
-            view->addLines(outcome->skeleton.graph, kSkeletonColour, 1.0);
-            view->addLines(outcome->centerlines, kCenterlineColour, 3.0);
         });
 }
 

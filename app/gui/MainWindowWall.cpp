@@ -96,8 +96,8 @@ bool MainWindow::simulateWall(const std::string& protocol)
             const std::string id =
                 app::addWallRun(m_document.study(), *run, protocol, wallId,
                                 protocol == "physiological" ? centerlinesId : std::string(), parameters, backend);
+            m_scene.wallFrames[id] = run->frames.back();
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Wall stress")));
-            showWallStress(run->frames.back(), run->status);
             if (const std::string warning = app::runStatusWarning(run->status); !warning.empty())
                 showError(tr("Wall mechanics"),
                           tr("Read these results with care: %1").arg(QString::fromStdString(warning)));
@@ -209,6 +209,7 @@ void MainWindow::stopInteractiveWall()
         m_interactiveDock->deleteLater();
         m_interactiveDock = nullptr;
     }
+    refreshScene(); // back to what the study holds: the interactive frame was never saved
 }
 
 } // namespace vsim::gui

@@ -10,28 +10,35 @@ TaskRunner::TaskRunner(QObject* parent) : QObject(parent)
 {
     connect(&m_watcher, &QFutureWatcher<void>::finished, this, [this] {
         m_busy = false;
+        const QString title = m_title;
+        // The success step may start the next task (e.g. opening a study, then preparing its views): it runs from
+        // a local copy, and idle is told only when no task follows.
+        const std::function<void()> onSuccess = std::move(m_onSuccess);
+        m_onSuccess = nullptr;
         if (m_wasCancelled)
-            emit cancelled(m_title);
+            emit cancelled(title);
         else if (!m_error.isEmpty())
-            emit failed(m_title, m_error);
+            emit failed(title, m_error);
         else
         {
-            if (m_onSuccess)
+            if (onSuccess)
             {
                 try
                 {
-                    m_onSuccess();
+                    onSuccess();
                 }
                 catch (const std::exception& error)
                 {
-                    emit failed(m_title, QString::fromStdString(error.what()));
-                    emit idle();
+                    emit failed(title, QString::fromStdString(error.what()));
+                    if (!m_busy)
+                        emit idle();
                     return;
                 }
             }
-            emit succeeded(m_title);
+            emit succeeded(title);
         }
-        emit idle();
+        if (!m_busy)
+            emit idle();
     });
 }
 

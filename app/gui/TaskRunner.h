@@ -12,7 +12,8 @@ namespace vsim::gui {
 
 /// Runs one long task at a time off the GUI thread with progress and Cancel. The work function runs on a pool
 /// thread and must not touch widgets; `onSuccess` runs afterwards on the GUI thread. vsim::Error and other
-/// exceptions become failed(); vsim::Cancelled becomes cancelled().
+/// exceptions become failed(); vsim::Cancelled becomes cancelled(). `onSuccess` may start the next task; idle() is
+/// emitted once no task runs.
 class TaskRunner : public QObject
 {
     Q_OBJECT

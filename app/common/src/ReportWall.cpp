@@ -76,7 +76,7 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
         report::MetricTable stress{"Wall stress at blood pressure (physiological protocol)", {}};
         addMetrics(stress, *physiological,
                    {{"pressure_kpa", "Target blood pressure on the lumen", "kPa"},
-                    {"final_pressure_kpa", "Pressure reached (the figures below are at this pressure)", "kPa"},
+                    {"run_reached_pressure_kPa", "Pressure reached (the figures below are at this pressure)", "kPa"},
                     {"peak_von_mises_kpa", "Peak wall stress (von Mises)", "kPa"},
                     {"peak_von_mises_x_mm", "Peak wall stress at x (patient LPS)", "mm"},
                     {"peak_von_mises_y_mm", "Peak wall stress at y", "mm"},

@@ -5,6 +5,7 @@
 #include <QTimer>
 #include <QWheelEvent>
 #include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
@@ -162,6 +163,32 @@ void VtkView::keyReleaseEvent(QKeyEvent* event)
         return QOpenGLWidget::keyReleaseEvent(event);
     d->interactor->SetKeyCode(event->text().at(0).toLatin1());
     d->interactor->InvokeEvent(vtkCommand::KeyReleaseEvent);
+}
+
+CameraState VtkView::cameraState() const
+{
+    vtkCamera* camera = renderer()->GetActiveCamera();
+    CameraState state;
+    camera->GetPosition(state.position.data());
+    camera->GetFocalPoint(state.focalPoint.data());
+    camera->GetViewUp(state.viewUp.data());
+    state.parallelScale = camera->GetParallelScale();
+    state.viewAngle = camera->GetViewAngle();
+    state.parallel = camera->GetParallelProjection() != 0;
+    return state;
+}
+
+void VtkView::setCameraState(const CameraState& state)
+{
+    vtkCamera* camera = renderer()->GetActiveCamera();
+    camera->SetPosition(state.position.data());
+    camera->SetFocalPoint(state.focalPoint.data());
+    camera->SetViewUp(state.viewUp.data());
+    camera->SetParallelScale(state.parallelScale);
+    camera->SetViewAngle(state.viewAngle);
+    camera->SetParallelProjection(state.parallel ? 1 : 0);
+    renderer()->ResetCameraClippingRange();
+    update();
 }
 
 } // namespace vsim::viz

@@ -2,6 +2,7 @@
 
 #include <QOpenGLWidget>
 
+#include <array>
 #include <memory>
 
 class vtkGenericOpenGLRenderWindow;
@@ -9,6 +10,15 @@ class vtkGenericRenderWindowInteractor;
 class vtkRenderer;
 
 namespace vsim::viz {
+
+/// Where a view's camera is (mm, LPS): kept with a study so that a reopened study looks as it was left.
+struct CameraState
+{
+    std::array<double, 3> position{}, focalPoint{}, viewUp{};
+    double parallelScale = 1.0; ///< half the view's height (mm) in parallel projection
+    double viewAngle = 30.0;    ///< degrees, in perspective projection
+    bool parallel = true;
+};
 
 /// The Qt 6 <-> VTK bridge: a QOpenGLWidget that renders a vtkGenericOpenGLRenderWindow into its framebuffer
 /// (VTK's own Qt module is built against Qt 5 in Debian and is never linked). Sizes are in device pixels (HiDPI),
@@ -24,6 +34,9 @@ public:
     vtkRenderer* renderer() const;
     vtkGenericOpenGLRenderWindow* renderWindow() const;
     vtkGenericRenderWindowInteractor* interactor() const;
+    /// The renderer's camera, and setting it (the view is redrawn).
+    CameraState cameraState() const;
+    void setCameraState(const CameraState& state);
     /// Whether mouse and key events are forwarded to the VTK interactor (the 3D view's camera); default true.
     void setForwardEventsToVtk(bool forward) { m_forwardEvents = forward; }
 

@@ -1,0 +1,167 @@
+#include "SceneCache.h"
+
+#include "vsim/app/NetworkPipeline.h"
+#include "vsim/mesh/VesselSurface.h"
+
+namespace vsim::gui {
+namespace {
+
+bool isWallRun(const study::Artifact& a)
+{
+    return a.kind == study::ArtifactKind::TetMesh && a.provenance.command == "simulate fem";
+}
+
+bool isDrugRun(const study::Artifact& a)
+{
+    return a.kind == study::ArtifactKind::Network && a.provenance.command == "simulate network";
+}
+
+/// The drug run's setup as it was run: the study's network from the same centerlines, the recorded parameters,
+/// tip, tumour and control points.
+sim::network::NetworkRunSetup recordedSetup(const study::Study& study, const study::Artifact& run, DrugDeliveryRequest& request,
+                                            std::vector<std::string>& warnings, const Progress& progress)
+{
+    sim::network::NetworkRunSetup setup;
+    const auto& recorded = run.provenance.parameters;
+    for (const ParameterSpec& spec : setup.parameters.specs())
+        if (const auto value = recorded.find(spec.key); value != recorded.end())
+            setup.parameters.setFromText(spec.key + "=" + value->second);
+    if (run.provenance.inputs.empty())
+        throw Error("the drug run records no centerlines to run again from", {{"artifact", run.id}});
+    setup.network = app::buildStudyNetwork(study, run.provenance.inputs.front(), warnings, progress);
+    auto text = [&](const char* key) {
+        const auto found = recorded.find(key);
+        return found == recorded.end() ? QString() : QString::fromStdString(found->second);
+    };
+    request = {text("tip"), text("tumour_mm"), text("control_points")};
+    if (request.tip.contains(','))
+    {
+        const auto tip = numbersInText(request.tip, 3).value_or(std::vector<double>{});
+        if (tip.size() == 3)
+            setup.tipPointMm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
+    }
+    else if (!request.tip.isEmpty())
+        setup.tipNode = request.tip.toInt();
+    if (const auto tumour = numbersInText(request.tumour, 4); tumour && tumour->size() == 4)
+        setup.tumour = sim::network::TumourSphere{Eigen::Vector3d((*tumour)[0], (*tumour)[1], (*tumour)[2]), (*tumour)[3]}.region();
+    if (const QString label = text("tumour_label"); !label.isEmpty())
+    {
+        const QStringList parts = label.split(':');
+        setup.tumour = app::volumeRegion(study, parts[0].toStdString(), parts.size() > 1 ? parts[1].toInt() : 0);
+    }
+    for (const QString& point : request.controls.split(';', Qt::SkipEmptyParts))
+        if (const auto xyz = numbersInText(point, 3); xyz && xyz->size() == 3)
+            setup.controlPointsMm.emplace_back((*xyz)[0], (*xyz)[1], (*xyz)[2]);
+    return setup;
+}
+
+} // namespace
+
+bool isShowable(const study::Artifact& a)
+{
+    return a.kind == study::ArtifactKind::Image || a.kind == study::ArtifactKind::Label ||
+           a.kind == study::ArtifactKind::Skeleton || isWallRun(a) || isDrugRun(a);
+}
+
+SceneContent sceneContent(const study::Study& study, const std::set<std::string>& hidden)
+{
+    SceneContent content;
+    for (const study::Artifact& a : study.artifacts()) // oldest first: later ones take the roles
+    {
+        if (a.damaged)
+            continue;
+        if (a.kind == study::ArtifactKind::Skeleton && a.provenance.command == "centerline")
+            content.measuredCenterlines = a.id;
+        if (hidden.count(a.id) || !isShowable(a))
+            continue;
+        if (a.kind == study::ArtifactKind::Image)
+            content.image = a.id;
+        else if (a.kind == study::ArtifactKind::Label)
+            content.label = a.id, content.main = SceneContent::Main::Vessels;
+        else if (a.kind == study::ArtifactKind::Skeleton)
+        {
+            (a.provenance.command == "centerline" ? content.centerlines : content.skeleton) = a.id;
+            content.main = SceneContent::Main::Vessels;
+        }
+        else if (isWallRun(a))
+            content.wallRun = a.id, content.main = SceneContent::Main::WallRun;
+        else if (isDrugRun(a))
+            content.networkRun = a.id, content.main = SceneContent::Main::NetworkRun;
+    }
+    if (!content.measuredCenterlines.empty() && app::labelOfCenterlines(study, content.measuredCenterlines).empty())
+        content.measuredCenterlines.clear();
+    return content;
+}
+
+bool SceneCache::holds(const SceneContent& c) const
+{
+    auto has = [](const auto& map, const std::string& id) { return id.empty() || map.count(id); };
+    return has(labels, c.label) && has(lumenSurfaces, c.label) && has(skeletons, c.skeleton) &&
+           has(skeletons, c.centerlines) && has(wallFrames, c.wallRun) && has(networkRuns, c.networkRun) &&
+           has(measurements, c.measuredCenterlines);
+}
+
+void SceneCache::keepOnly(const study::Study& study)
+{
+    auto prune = [&](auto& map) {
+        for (auto it = map.begin(); it != map.end();)
+            it = study.hasArtifact(it->first) ? std::next(it) : map.erase(it);
+    };
+    prune(labels), prune(lumenSurfaces), prune(skeletons), prune(wallFrames), prune(networkRuns),
+        prune(networkRequests), prune(measurements);
+}
+
+SceneCache fillSceneCache(const study::Study& study, const SceneContent& c, const SceneCache& cache,
+                          const Progress& progress)
+{
+    SceneCache more;
+    if (!c.label.empty() && !cache.lumenSurfaces.count(c.label))
+    {
+        progress.report(0.0, "vessel surface");
+        const LabelVolume label = cache.labels.count(c.label) ? cache.labels.at(c.label) : study.loadLabel(c.label);
+        more.labels[c.label] = label;
+        ParameterSet parameters(mesh::surfaceParameters());
+        parameters.set("target_vertices", 20000); // enough for display
+        more.lumenSurfaces[c.label] = mesh::extractVesselSurface(label, 1, parameters, progress.subRange(0.0, 0.4)).surface;
+    }
+    for (const std::string& id : {c.skeleton, c.centerlines})
+        if (!id.empty() && !cache.skeletons.count(id))
+            more.skeletons[id] = study.loadSkeleton(id);
+    if (!c.measuredCenterlines.empty() && !cache.measurements.count(c.measuredCenterlines))
+    {
+        progress.report(0.4, "measurements");
+        const std::string labelId = app::labelOfCenterlines(study, c.measuredCenterlines);
+        more.measurements[c.measuredCenterlines] =
+            imaging::measureVessels(study.loadLabel(labelId), study.loadSkeleton(c.measuredCenterlines),
+                                    ParameterSet(imaging::measurementParameters()), progress.subRange(0.4, 0.6));
+    }
+    if (!c.wallRun.empty() && !cache.wallFrames.count(c.wallRun))
+        more.wallFrames[c.wallRun] = study.loadTetMesh(c.wallRun);
+    if (!c.networkRun.empty() && !cache.networkRuns.count(c.networkRun))
+    {
+        progress.report(0.6, "drug run");
+        DrugDeliveryRequest request;
+        std::vector<std::string> warnings;
+        const sim::network::NetworkRunSetup setup =
+            recordedSetup(study, study.artifact(c.networkRun), request, warnings, progress.subRange(0.6, 0.8));
+        auto run = std::make_shared<sim::network::NetworkRunResult>(sim::network::runNetwork(setup, progress.subRange(0.8, 1.0)));
+        run->warnings.insert(run->warnings.begin(), warnings.begin(), warnings.end()); // as the first run had them
+        more.networkRuns[c.networkRun] = std::move(run);
+        more.networkRequests[c.networkRun] = request;
+    }
+    progress.report(1.0, "views ready");
+    return more;
+}
+
+void mergeSceneCache(SceneCache& cache, SceneCache more)
+{
+    cache.labels.merge(more.labels);
+    cache.lumenSurfaces.merge(more.lumenSurfaces);
+    cache.skeletons.merge(more.skeletons);
+    cache.wallFrames.merge(more.wallFrames);
+    cache.networkRuns.merge(more.networkRuns);
+    cache.networkRequests.merge(more.networkRequests);
+    cache.measurements.merge(more.measurements);
+}
+
+} // namespace vsim::gui
