@@ -207,6 +207,7 @@ private:
     QDockWidget* m_interactiveDock = nullptr;
     std::string m_overlayLabelId; // the label artifact the MPR overlays show
     SceneCache m_scene;
+    std::string m_drawnScene; // what refreshScene() drew last (roles, completeness), not drawn twice
     std::set<std::string> m_hiddenArtifacts;
     std::optional<ViewState> m_pendingViewState; // applied once a reopened study's views are prepared
     LabelEditSession* m_labelEdit = nullptr;

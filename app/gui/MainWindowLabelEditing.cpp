@@ -106,6 +106,7 @@ bool MainWindow::startLabelEditing(viz::BrushMode brush, double radiusMm)
     }
     discardLabelEdits();
     m_labelEdit = new LabelEditSession(labelId, source, this);
+    m_drawnScene.clear(); // the session overlays its working copy: the study's scene is drawn again after it
     connect(m_labelEdit, &LabelEditSession::labelChanged, this, [this] {
         for (viz::SliceOrientation orientation : kOrientations)
             m_views->sliceView(orientation)->refreshLabel();

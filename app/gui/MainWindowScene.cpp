@@ -31,13 +31,20 @@ void MainWindow::refreshScene()
 {
     if (!m_document.hasStudy())
         return;
-    m_scene.keepOnly(m_document.study());
     const SceneContent content = sceneContent(m_document.study(), m_hiddenArtifacts);
-    if (!m_scene.holds(content) && !m_tasks.isBusy())
+    const bool complete = m_scene.holds(content);
+    if (!complete && !m_tasks.isBusy())
     {
         prepareScene(content);
         return; // drawn when the missing pieces are in
     }
+    // Drawn already (a save, a rename): drawing again would reset what the user did since, e.g. the camera.
+    const std::string drawn = content.image + "|" + content.label + "|" + content.skeleton + "|" + content.centerlines +
+                              "|" + content.wallRun + "|" + content.networkRun + "|" + content.measuredCenterlines +
+                              "|" + std::to_string(int(content.main)) + (complete ? "|complete" : "|partial");
+    if (drawn == m_drawnScene)
+        return;
+    m_drawnScene = drawn;
     // The MPR overlay: the newest shown label (the label being edited stays while its session runs).
     if (!m_labelEdit)
     {
@@ -175,6 +182,7 @@ bool MainWindow::isArtifactShown(const std::string& id) const { return !m_hidden
 void MainWindow::restoreScene()
 {
     m_scene = SceneCache();
+    m_drawnScene.clear();
     const ViewState state = ViewState::fromJson(
         m_document.hasStudy() && m_document.study().metadata().count(kViewStateKey)
             ? m_document.study().metadata().at(kViewStateKey)

@@ -135,6 +135,7 @@ bool MainWindow::startInteractiveWall()
         return false;
     }
     stopInteractiveWall();
+    m_drawnScene.clear(); // the protocol draws its own frame: the study's scene is drawn again when it closes
     const sim::fem::ElasticMaterial material = sim::fem::femMaterial(m_femParameters);
     const sim::fem::BackwardEulerSettings settings = sim::fem::femIntegrator(m_femParameters);
     viz::VolumeView3D* view = m_views->volumeView();

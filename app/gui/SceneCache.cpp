@@ -101,16 +101,6 @@ bool SceneCache::holds(const SceneContent& c) const
            has(measurements, c.measuredCenterlines);
 }
 
-void SceneCache::keepOnly(const study::Study& study)
-{
-    auto prune = [&](auto& map) {
-        for (auto it = map.begin(); it != map.end();)
-            it = study.hasArtifact(it->first) ? std::next(it) : map.erase(it);
-    };
-    prune(labels), prune(lumenSurfaces), prune(skeletons), prune(wallFrames), prune(networkRuns),
-        prune(networkRequests), prune(measurements);
-}
-
 SceneCache fillSceneCache(const study::Study& study, const SceneContent& c, const SceneCache& cache,
                           const Progress& progress)
 {

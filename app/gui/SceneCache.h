@@ -56,10 +56,9 @@ struct SceneCache
     std::map<std::string, DrugDeliveryRequest> networkRequests; ///< the dock's inputs of each drug run
     std::map<std::string, imaging::VesselMeasurements> measurements; ///< by centerlines id
 
-    /// True when everything `content` shows is here.
+    /// True when everything `content` shows is here. (Entries of artifacts an undo removed stay: ids are never
+    /// reused, and a redo shows them again at once.)
     bool holds(const SceneContent& content) const;
-    /// Forgets what belongs to artifacts the study no longer has (after an undo or a delete).
-    void keepOnly(const study::Study& study);
 };
 
 /// Loads and computes what `content` needs and `cache` lacks, from the study (read only; run it in the background):
