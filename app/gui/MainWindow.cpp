@@ -93,6 +93,8 @@ void MainWindow::createDocks()
             return;
         if (m_document.study().artifact(id).kind == study::ArtifactKind::Image)
             showImageArtifact(id);
+        else if (isShowable(m_document.study().artifact(id)))
+            showOnly(id);
         if (m_document.study().artifact(id).kind == study::ArtifactKind::Report)
             openReportArtifact(id);
     });

@@ -134,6 +134,8 @@ public:
     /// Shows or hides an artifact's picture (the study tree's check boxes); the views are redrawn.
     void setArtifactShown(const std::string& id, bool shown);
     bool isArtifactShown(const std::string& id) const;
+    /// Shows this artifact in its role (a double-click in the study tree): newer ones of its kind and step are hidden.
+    void showOnly(const std::string& id);
     /// The view state as it would be saved with the study now (hidden artifacts, cursor, window/level, camera).
     ViewState captureViewState() const;
 

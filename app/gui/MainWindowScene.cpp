@@ -177,6 +177,20 @@ void MainWindow::setArtifactShown(const std::string& id, bool shown)
     refreshScene();
 }
 
+void MainWindow::showOnly(const std::string& id)
+{
+    // The newest shown artifact of a role is drawn: hide the newer ones of the same kind and step, show this one.
+    const study::Artifact& chosen = m_document.study().artifact(id);
+    bool after = false;
+    for (const study::Artifact& artifact : m_document.study().artifacts())
+    {
+        if (after && artifact.kind == chosen.kind && artifact.provenance.command == chosen.provenance.command)
+            setArtifactShown(artifact.id, false);
+        after = after || artifact.id == id;
+    }
+    setArtifactShown(id, true);
+}
+
 bool MainWindow::isArtifactShown(const std::string& id) const { return !m_hiddenArtifacts.count(id); }
 
 void MainWindow::restoreScene()

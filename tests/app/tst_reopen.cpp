@@ -197,6 +197,11 @@ private slots:
         QVERIFY(second.views()->volumeView()->legendTitle().isEmpty());
         QVERIFY(second.views()->volumeView()->lineCount() > 0); // the centerlines in the lumen
         second.setArtifactShown(wallRun, true);
+        QVERIFY(test::waitForTask(second, 5000) || !second.tasks().isBusy());
+        second.showOnly(drugRun); // a double-click on the drug run brings it back
+        QVERIFY(test::waitForTask(second, 5000) || !second.tasks().isBusy());
+        QCOMPARE(second.views()->volumeView()->legendTitle(), QString("Drug flow (ml/min)"));
+        second.setArtifactShown(drugRun, false);
 
         // The interactive protocol draws its own frame; closing it returns to the saved view.
         QVERIFY(second.startInteractiveWall());
