@@ -163,6 +163,8 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                   {"entropy_curve", entropy},
                                   {"stop_reason", run.stopReason},
                                   {"run_status", nlohmann::json::parse(app::runStatusJson(run.status))},
+                                  {"step_solves", {{"pcg_iterations", run.stepIterations},
+                                                   {"relative_residuals", run.stepResiduals}}},
                                   {"frames", run.frames.size()},
                                   {"frame_times_s", run.frameTimesS},
                                   {"frame_pressures_kpa", [&run] {

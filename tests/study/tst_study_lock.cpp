@@ -134,6 +134,24 @@ private slots:
         waitpid(child, &status, 0);
     }
 
+    void aConfirmedBreakMovesTheLockAsideAndTakesANewOne()
+    {
+        // What the GUI does after the user confirmed that a holder on another host is dead: the old lock file is
+        // kept beside (for the record), a new one is locked. (Here the holder lives: breaking is the user's call.)
+        const fs::path bundle = freshBundle("break.vsim");
+        Study::create(bundle, "break").save();
+        const Study held = Study::open(bundle);
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, Study::open(bundle));
+        Study broken = Study::openBreakingLock(bundle);
+        QVERIFY(!broken.isReadOnly());
+        bool movedAside = false;
+        for (const auto& entry : fs::directory_iterator(bundle))
+            movedAside = movedAside || entry.path().filename().string().rfind("study.lock.broken-", 0) == 0;
+        QVERIFY(movedAside);
+        broken.addLabel(smallLabel(), "after the break", {});
+        broken.save();
+    }
+
     void saveKeepsFilesItDidNotWrite()
     {
         const fs::path bundle = freshBundle("stranger.vsim");

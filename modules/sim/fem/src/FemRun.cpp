@@ -35,6 +35,8 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
         const WallSimulation::StepOutcome outcome = simulation.step();
         status.recordSolve(outcome.report.cgIterations, outcome.report.cgResidual, setup.integrator.cgTolerance,
                            setup.integrator.cgMaxIterations);
+        result.stepIterations.push_back(outcome.report.cgIterations);
+        result.stepResiduals.push_back(outcome.report.cgResidual);
         if (!outcome.guard.empty())
         {
             result.stopReason = outcome.guard + " at step " + std::to_string(step) + " (t = " + std::to_string(time) +

@@ -48,6 +48,9 @@ struct FemRunResult
     /// Every implicit step's PCG solve (iterations, relative residual against the tolerance), how the run stopped
     /// and the pressure it reached (kPa) against the curve's end; its metrics() are in `metrics` too.
     RunStatus status;
+    /// Per implicit step, in order: the PCG iterations and the final relative residual of its solve.
+    std::vector<int> stepIterations;
+    std::vector<double> stepResiduals;
 };
 
 /// Runs the setup. Throws vsim::Error for a mesh that is not a wall (fields missing, no fixed end, no lumen face)
