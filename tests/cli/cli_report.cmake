@@ -47,6 +47,15 @@ endif()
 if(NOT aaa_text MATCHES "Convergence (converged|not converged: [0-9]+ of [0-9]+ solves)")
     message(FATAL_ERROR "the run summary must state the convergence")
 endif()
+# The validation cases ran with other solver settings than the run: the report says which.
+if(NOT aaa_text MATCHES "What differs from the reported run: the run's solves stopped at 100 iterations, the cases' at 20000")
+    message(FATAL_ERROR "the AAA report must say how its validation differs from the wall run")
+endif()
+execute_process(COMMAND pdftotext ${WORK}/demo/hepatic-tree/report.pdf - OUTPUT_VARIABLE hepatic_text)
+string(REGEX REPLACE "[ \n]+" " " hepatic_text "${hepatic_text}")
+if(NOT hepatic_text MATCHES "That is the configuration of the reported run")
+    message(FATAL_ERROR "the drug report must say that its validation ran in the run's configuration")
+endif()
 
 # The thesis tearing protocol on the demo AAA, then its report again: the tearing figures equal the run's.
 set(tear ${WORK}/aaa-tear)

@@ -191,6 +191,13 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(vsim::Error, Study::create(bundle, "someone"));
         QVERIFY(fs::exists(bundle / "thesis.docx"));
         QVERIFY(!fs::exists(bundle / "study.json"));
+        // Save As (File > Save As) into that folder is refused the same way; the study stays where it was.
+        const fs::path mine = freshBundle("mine.vsim");
+        Study study = Study::create(mine, "mine");
+        study.save();
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, study.saveAs(bundle));
+        QVERIFY(fs::exists(bundle / "thesis.docx"));
+        QCOMPARE(study.bundlePath(), mine);
     }
 };
 
