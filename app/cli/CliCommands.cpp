@@ -97,10 +97,16 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress)
     if (bundle.empty() && !list)
         throw UsageError("vascusim-cli import: --study is required (or --list)");
     const fs::path input = arguments.positional[0];
+    std::optional<HounsfieldRescale> rescale;
+    if (arguments.hasOption("rescale"))
+    {
+        const std::vector<double> values = parseNumbers(arguments.option("rescale"), ',', 2, "rescale");
+        rescale = HounsfieldRescale{values[0], values[1]};
+    }
     if (isVolumeFile(input))
     {
         study::Study study = openOrCreateStudy(arguments);
-        const std::string id = study::importVolumeFile(study, input, progress);
+        const std::string id = study::importVolumeFile(study, input, rescale, progress);
         study.save();
         std::cout << "imported " << input.filename().string() << " as " << id << "\n";
         for (const std::string& warning : study.artifact(id).warnings)
@@ -115,7 +121,7 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress)
     options.memoryLimitBytes = std::uint64_t(quantityOption(arguments, "memory-limit-mb", "", 0.0) * 1024.0 * 1024.0);
     study::Study study = openOrCreateStudy(arguments);
     const std::string id =
-        app::importDicomSeriesIntoStudy(study, series, input, options, progress.subRange(0.1, 0.9));
+        app::importDicomSeriesIntoStudy(study, series, input, options, progress.subRange(0.1, 0.9), rescale);
     study.save();
     progress.report(1.0, "saved");
     const auto& artifact = study.artifact(id);

@@ -27,10 +27,13 @@ std::vector<CommandSpec> declareCommands()
     return {
         {"info", 1, 1, {}, "info <study.vsim>\n    the study's metadata and artifacts as JSON (works while another process writes it)",
          [](const Arguments& a, const Progress&) { return printStudyInfo(a); }},
-        {"import", 1, 1, {value("study"), value("series"), flag("list"), value("memory-limit-mb"), kWait},
-         "import <dir|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list] [--memory-limit-mb N] [--wait s]\n"
+        {"import", 1, 1, {value("study"), value("series"), flag("list"), value("memory-limit-mb"), value("rescale"), kWait},
+         "import <dir|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list] [--memory-limit-mb N]\n"
+         "       [--rescale SLOPE,INTERCEPT] [--wait s]\n"
          "    add a DICOM series (the CT with most slices unless --series) or a NIfTI / NRRD / MetaImage volume;\n"
-         "    creates the study in a new or empty folder; --list prints the series found as JSON and imports nothing",
+         "    creates the study in a new or empty folder; values must read as CT in HU (any CT in HU does, a crop\n"
+         "    without air too), else give the rescale HU = SLOPE x stored + INTERCEPT; --list prints the series found\n"
+         "    as JSON and imports nothing",
          importIntoStudy},
         {"phantom", 1, 1,
          {required("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),

@@ -13,6 +13,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QListWidget>
 #include <QMessageBox>
@@ -330,15 +331,45 @@ bool MainWindow::importVolume(const QString& file)
         tr("Import volume"),
         [path = file.toStdString(), imported](const Progress& progress) { *imported = study::readVolumeFile(path, progress); },
         [this, file, imported] {
-            study::Provenance provenance;
-            provenance.command = "import volume";
-            provenance.inputs = {QFileInfo(file).fileName().toStdString()};
-            provenance.parameters = {{"format", imported->format}};
-            const std::string id = m_document.study().addImage(
-                imported->image, QFileInfo(file).completeBaseName().toStdString(), provenance, imported->warnings);
+            const std::string id = addWithRescaleIfAsked(tr("Import volume"), [&](const std::optional<HounsfieldRescale>& rescale) {
+                return study::addImportedVolume(m_document.study(), *imported, file.toStdString(), rescale);
+            });
+            if (id.empty())
+                return;
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Import %1").arg(QFileInfo(file).fileName())));
-            m_views->showImage(imported->image);
+            m_views->showImage(m_document.study().loadImage(id));
         });
+}
+
+std::string MainWindow::addWithRescaleIfAsked(const QString& title,
+                                              const std::function<std::string(const std::optional<HounsfieldRescale>&)>& add)
+{
+    std::optional<HounsfieldRescale> rescale;
+    for (;;)
+    {
+        try
+        {
+            return add(rescale);
+        }
+        catch (const Error& error)
+        {
+            if (error.contextValue("option") != "--rescale")
+            {
+                showError(title, QString::fromStdString(error.message()));
+                return {};
+            }
+            // Not HU: the user may know the rescale (a volume of stored values); nothing was added.
+            bool ok = false;
+            const QString text = QInputDialog::getText(
+                this, tr("Not Hounsfield units"),
+                tr("%1\n\nRescale to HU (HU = slope x stored value + intercept):").arg(QString::fromStdString(error.message())),
+                QLineEdit::Normal, rescale ? QString("%1, %2").arg(rescale->slope).arg(rescale->intercept) : "1, -1024", &ok);
+            const auto numbers = numbersInText(text, 2);
+            if (!ok || !numbers || numbers->size() != 2)
+                return {};
+            rescale = HounsfieldRescale{(*numbers)[0], (*numbers)[1]};
+        }
+    }
 }
 
 bool MainWindow::importDicom(const QString& path, const QString& seriesKey,
@@ -356,17 +387,14 @@ bool MainWindow::importDicom(const QString& path, const QString& seriesKey,
             *volume = dicom::importDicomSeries(app::chooseSeries(*scanned, wanted), {}, progress.subRange(0.2, 1.0));
         },
         [this, path, volume] {
-            try
-            {
-                const std::string id = app::addDicomVolumeToStudy(m_document.study(), *volume, path.toStdString());
-                const QString name = QString::fromStdString(m_document.study().artifact(id).name);
-                m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Import %1").arg(name)));
-                m_views->showImage(volume->image);
-            }
-            catch (const Error& error)
-            {
-                showError(tr("Import DICOM"), QString::fromStdString(error.message()));
-            }
+            const std::string id = addWithRescaleIfAsked(tr("Import DICOM"), [&](const std::optional<HounsfieldRescale>& rescale) {
+                return app::addDicomVolumeToStudy(m_document.study(), *volume, path.toStdString(), rescale);
+            });
+            if (id.empty())
+                return;
+            const QString name = QString::fromStdString(m_document.study().artifact(id).name);
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Import %1").arg(name)));
+            m_views->showImage(m_document.study().loadImage(id));
         });
 }
 

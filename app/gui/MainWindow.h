@@ -6,6 +6,7 @@
 #include "StudyDocument.h"
 #include "TaskRunner.h"
 #include "ViewState.h"
+#include "vsim/core/Hounsfield.h"
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/core/RunStatus.h"
@@ -17,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -155,6 +157,10 @@ private:
     /// Write access when nobody holds the study's lock; otherwise as the header of openStudy() says. Throws
     /// vsim::Cancelled when the user cancels.
     study::Access askHowToOpenLockedStudy(const QString& bundle, bool& breakLock);
+    /// Runs `add` (an import into the study); when it refuses values that are not HU, asks the user for the rescale
+    /// and runs it again with it. Returns the new artifact's id, or "" (the error shown, or the user cancelled).
+    std::string addWithRescaleIfAsked(const QString& title,
+                                      const std::function<std::string(const std::optional<HounsfieldRescale>&)>& add);
     void createMenus();
     void createVesselMenu();
     void createMeasurementDock();

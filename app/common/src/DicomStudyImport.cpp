@@ -1,5 +1,7 @@
 #include "vsim/app/DicomStudyImport.h"
 
+#include "vsim/core/Hounsfield.h"
+#include "vsim/core/Parameters.h"
 #include "vsim/dicom/SeriesGeometry.h"
 #include "vsim/study/Study.h"
 
@@ -81,13 +83,16 @@ json seriesJson(const dicom::DicomSeries& series)
 
 } // namespace
 
-std::string addDicomVolumeToStudy(study::Study& study, const dicom::DicomVolume& volume,
-                                  const std::filesystem::path& source)
+std::string addDicomVolumeToStudy(study::Study& study, dicom::DicomVolume volume, const std::filesystem::path& source,
+                                  const std::optional<HounsfieldRescale>& rescale)
 {
+    acceptAsHounsfield(volume.image, rescale, volume.warnings); // before the study changes: a refusal adds nothing
     adoptStudyMetadata(study, volume.attributes);
     study::Provenance provenance;
     provenance.command = "import dicom";
     provenance.parameters = {{"series", attribute(volume.attributes, "series_key")}};
+    if (rescale)
+        provenance.parameters["rescale"] = numberText(rescale->slope) + "," + numberText(rescale->intercept);
     provenance.inputs = {source.string()};
     std::string name = attribute(volume.attributes, "series_description");
     if (name.empty())
@@ -99,9 +104,9 @@ std::string addDicomVolumeToStudy(study::Study& study, const dicom::DicomVolume&
 
 std::string importDicomSeriesIntoStudy(study::Study& study, const dicom::DicomSeries& series,
                                        const std::filesystem::path& source, const dicom::DicomImportOptions& options,
-                                       const Progress& progress)
+                                       const Progress& progress, const std::optional<HounsfieldRescale>& rescale)
 {
-    return addDicomVolumeToStudy(study, dicom::importDicomSeries(series, options, progress), source);
+    return addDicomVolumeToStudy(study, dicom::importDicomSeries(series, options, progress), source, rescale);
 }
 
 const dicom::DicomSeries& chooseSeries(const dicom::DicomScanResult& scan, const std::string& keyOrUid)

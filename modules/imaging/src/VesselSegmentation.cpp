@@ -2,6 +2,7 @@
 
 #include "LevelSetRefinement.h"
 #include "MaskOps.h"
+#include "vsim/core/Hounsfield.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <itkBinaryThresholdImageFilter.h>
@@ -36,13 +37,12 @@ std::string number(double value, const char* format = "%.0f")
     return buffer;
 }
 
-/// CT in HU has air near -1000 and never stays above -200 everywhere: unscaled stored values and MR do.
+/// The import's test (Hounsfield.h): a crop without air passes, stored values without their rescale and MR do not.
 void requireHounsfieldUnits(const CtVolume& ct)
 {
-    const auto [low, high] = std::minmax_element(ct.data(), ct.data() + ct.size());
-    if (*low > -200 || *high < 100)
-        throw Error("the intensities (" + std::to_string(*low) + " to " + std::to_string(*high) +
-                    ") are not CT Hounsfield units: import a CT series (rescaled to HU), not MR or raw stored values");
+    if (const std::string why = whyNotHounsfield(ct); !why.empty())
+        throw Error("the intensities are not CT Hounsfield units (" + why +
+                    "): import the CT rescaled to HU (vascusim-cli import --rescale SLOPE,INTERCEPT), not MR");
 }
 
 /// The largest component (26-connected) of `mask`; returns its voxels' linear indices.

@@ -1,6 +1,8 @@
 #include "vsim/study/VolumeFileImport.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Hounsfield.h"
+#include "vsim/core/Parameters.h"
 #include "vsim/interop/ItkImage.h"
 #include "vsim/study/Study.h"
 
@@ -136,13 +138,22 @@ ImportedVolume readVolumeFile(const std::filesystem::path& file, const Progress&
     return result;
 }
 
-std::string importVolumeFile(Study& study, const std::filesystem::path& file, const Progress& progress)
+std::string importVolumeFile(Study& study, const std::filesystem::path& file,
+                             const std::optional<HounsfieldRescale>& rescale, const Progress& progress)
 {
-    ImportedVolume imported = readVolumeFile(file, progress);
+    return addImportedVolume(study, readVolumeFile(file, progress), file, rescale);
+}
+
+std::string addImportedVolume(Study& study, ImportedVolume imported, const std::filesystem::path& file,
+                              const std::optional<HounsfieldRescale>& rescale)
+{
+    acceptAsHounsfield(imported.image, rescale, imported.warnings);
     Provenance provenance;
     provenance.command = "import volume";
     provenance.inputs = {file.filename().string()};
     provenance.parameters = {{"format", imported.format}};
+    if (rescale)
+        provenance.parameters["rescale"] = numberText(rescale->slope) + "," + numberText(rescale->intercept);
     return study.addImage(imported.image, file.stem().string(), std::move(provenance), std::move(imported.warnings));
 }
 

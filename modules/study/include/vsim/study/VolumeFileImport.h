@@ -1,9 +1,11 @@
 #pragma once
 
+#include "vsim/core/Hounsfield.h"
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Progress.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +27,13 @@ struct ImportedVolume
 /// that is not 3D or has more than one component, and vsim::Cancelled when cancelled.
 ImportedVolume readVolumeFile(const std::filesystem::path& file, const Progress& progress = {});
 
-/// Reads `file` and adds it to the study as an image artifact with provenance; returns the artifact id.
-std::string importVolumeFile(Study& study, const std::filesystem::path& file, const Progress& progress = {});
+/// Reads `file` and adds it to the study as an image artifact with provenance; returns the artifact id. The values
+/// must read as CT in HU, after `rescale` when given (acceptAsHounsfield); otherwise vsim::Error names --rescale
+/// and nothing is added.
+std::string importVolumeFile(Study& study, const std::filesystem::path& file,
+                             const std::optional<HounsfieldRescale>& rescale = std::nullopt, const Progress& progress = {});
+/// The same for a volume read already (readVolumeFile); `file` names the source in the provenance.
+std::string addImportedVolume(Study& study, ImportedVolume imported, const std::filesystem::path& file,
+                              const std::optional<HounsfieldRescale>& rescale = std::nullopt);
 
 } // namespace vsim::study
