@@ -64,16 +64,6 @@ int printStudyInfo(const Arguments& arguments)
 
 namespace {
 
-bool isVolumeFile(const fs::path& file)
-{
-    const std::string name = file.filename().string();
-    for (const char* extension : {".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"})
-        if (name.size() > std::string(extension).size() &&
-            name.compare(name.size() - std::string(extension).size(), std::string::npos, extension) == 0)
-            return true;
-    return false;
-}
-
 /// The study to import into: opened for writing, or created in a new or empty folder.
 study::Study openOrCreateStudy(const Arguments& arguments)
 {
@@ -96,6 +86,8 @@ int importIntoStudy(const Arguments& arguments, const Progress& progress)
     const bool list = arguments.hasOption("list");
     if (bundle.empty() && !list)
         throw UsageError("vascusim-cli import: --study is required (or --list)");
+    if (arguments.hasOption("as-label"))
+        return importLabelIntoStudy(arguments, progress);
     const fs::path input = arguments.positional[0];
     std::optional<HounsfieldRescale> rescale;
     if (arguments.hasOption("rescale"))

@@ -25,6 +25,9 @@ int printStudyInfo(const Arguments& arguments);
 /// `import <dir|DICOMDIR|file> --study S [--series KEY] [--list] [--memory-limit-mb N]`: DICOM, or a
 /// NIfTI / NRRD / MetaImage volume file.
 int importIntoStudy(const Arguments& arguments, const Progress& progress);
+/// `import <mask> --study S --as-label [--label-value N] [--image ID] [--series KEY]`: a mask from elsewhere as a
+/// label on the study's image grid (ImportLabelCommand.cpp).
+int importLabelIntoStudy(const Arguments& arguments, const Progress& progress);
 /// `phantom <kind> --out DIR [--size CxRxS] [--spacing x,y,z] [--noise HU] [--seed N] [--transfer-syntax T]
 /// [--max-diameter mm] [--stenosis percent] [--blur mm] [--enhanced]`.
 int writePhantomSeries(const Arguments& arguments, const Progress& progress);

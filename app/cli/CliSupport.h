@@ -7,6 +7,7 @@
 #include "vsim/study/Study.h"
 
 #include <array>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -27,6 +28,8 @@ std::string chooseCenterlines(const study::Study& study, const std::string& want
 study::Study openStudyForWriting(const Arguments& arguments);
 /// Opens --study (or `bundle`) for reading: works while another process writes it.
 study::Study openStudyForReading(const std::string& bundle);
+/// True for a NIfTI, NRRD or MetaImage file name (anything else is read as DICOM).
+bool isVolumeFile(const std::filesystem::path& file);
 /// --wait in seconds (a number, "s" allowed), 0 when absent.
 double waitSeconds(const Arguments& arguments);
 

@@ -27,13 +27,15 @@ std::vector<CommandSpec> declareCommands()
     return {
         {"info", 1, 1, {}, "info <study.vsim>\n    the study's metadata and artifacts as JSON (works while another process writes it)",
          [](const Arguments& a, const Progress&) { return printStudyInfo(a); }},
-        {"import", 1, 1, {value("study"), value("series"), flag("list"), value("memory-limit-mb"), value("rescale"), kWait},
+        {"import", 1, 1, {value("study"), value("series"), flag("list"), value("memory-limit-mb"), value("rescale"),
+                           flag("as-label"), value("label-value"), value("image"), kWait},
          "import <dir|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list] [--memory-limit-mb N]\n"
-         "       [--rescale SLOPE,INTERCEPT] [--wait s]\n"
+         "       [--rescale SLOPE,INTERCEPT] [--as-label [--label-value 1] [--image ID]] [--wait s]\n"
          "    add a DICOM series (the CT with most slices unless --series) or a NIfTI / NRRD / MetaImage volume;\n"
          "    creates the study in a new or empty folder; values must read as CT in HU (any CT in HU does, a crop\n"
-         "    without air too), else give the rescale HU = SLOPE x stored + INTERCEPT; --list prints the series found\n"
-         "    as JSON and imports nothing",
+         "    without air too), else give the rescale HU = SLOPE x stored + INTERCEPT; --as-label adds a mask (its\n"
+         "    nonzero voxels) as a label on the study's image grid, refused when the grids do not match; --list\n"
+         "    prints the series found as JSON and imports nothing",
          importIntoStudy},
         {"phantom", 1, 1,
          {required("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),

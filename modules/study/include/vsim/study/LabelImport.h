@@ -1,0 +1,22 @@
+#pragma once
+
+// Labels from elsewhere (reference masks, another program's segmentation) onto a study's image grid, voxel for
+// voxel: never resampled by interpolation. A mask on the image's own grid is taken as it is; a mask on a larger or
+// smaller grid of the same spacing and axes, offset by a whole number of voxels (a crop of the same scan), is cut
+// or padded onto the image's grid, provided none of its labelled voxels falls outside. Anything else is refused
+// with both grids in the message.
+
+#include "vsim/core/ImageVolume.h"
+
+#include <string>
+#include <vector>
+
+namespace vsim::study {
+
+/// The mask's nonzero voxels as label `value` on `image`'s grid (0 elsewhere). `warnings` gains a line when the mask
+/// was cut or padded. Throws vsim::Error naming both grids when they do not match as the header says, and when the
+/// mask has no labelled voxel.
+LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, std::uint8_t value,
+                            std::vector<std::string>& warnings);
+
+} // namespace vsim::study

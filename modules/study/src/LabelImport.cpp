@@ -1,0 +1,73 @@
+#include "vsim/study/LabelImport.h"
+
+#include "vsim/core/Error.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace vsim::study {
+namespace {
+
+constexpr double kToleranceMm = 1e-3; // grids written by different programs agree to about a micrometre
+constexpr double kVoxelTolerance = 1e-3; // an offset "a whole number of voxels" within this share of a voxel
+
+std::string describe(const VolumeGeometry& g)
+{
+    std::ostringstream text;
+    text << g.dims[0] << " x " << g.dims[1] << " x " << g.dims[2] << " voxels of " << g.spacing.x() << " x "
+         << g.spacing.y() << " x " << g.spacing.z() << " mm, origin (" << g.origin.x() << ", " << g.origin.y() << ", "
+         << g.origin.z() << ") mm";
+    return text.str();
+}
+
+} // namespace
+
+LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, std::uint8_t value,
+                            std::vector<std::string>& warnings)
+{
+    const VolumeGeometry& source = mask.geometry();
+    auto refuse = [&](const std::string& why) {
+        return Error("the mask's grid does not match the image's (" + why + "): mask " + describe(source) + "; image " +
+                     describe(image));
+    };
+    if ((source.spacing - image.spacing).cwiseAbs().maxCoeff() > kToleranceMm)
+        throw refuse("another voxel size");
+    if ((source.direction - image.direction).cwiseAbs().maxCoeff() > 1e-4)
+        throw refuse("other axes");
+    // Where the mask's voxel (0,0,0) lies in the image's index space: it must be a whole voxel.
+    const Eigen::Vector3d offset = image.patientToIndex(source.origin);
+    const Eigen::Vector3d whole = offset.array().round();
+    if ((offset - whole).cwiseAbs().maxCoeff() > kVoxelTolerance)
+        throw refuse("origins not a whole number of voxels apart");
+    const int di = int(whole.x()), dj = int(whole.y()), dk = int(whole.z());
+
+    LabelVolume label(image);
+    std::size_t labelled = 0, outside = 0;
+    const std::array<int, 3>& d = source.dims;
+    for (int k = 0; k < d[2]; ++k)
+        for (int j = 0; j < d[1]; ++j)
+            for (int i = 0; i < d[0]; ++i)
+            {
+                if (mask.data()[source.linearIndex(i, j, k)] == 0)
+                    continue;
+                ++labelled;
+                if (!image.contains(i + di, j + dj, k + dk))
+                {
+                    ++outside;
+                    continue;
+                }
+                label.data()[image.linearIndex(i + di, j + dj, k + dk)] = value;
+            }
+    if (labelled == 0)
+        throw Error("the mask has no labelled voxel");
+    if (outside > 0)
+        throw refuse(std::to_string(outside) + " of its " + std::to_string(labelled) +
+                     " labelled voxels lie outside the image");
+    if (di != 0 || dj != 0 || dk != 0 || d != image.dims)
+        warnings.push_back("the mask was on another grid of the same scan (offset " + std::to_string(di) + ", " +
+                           std::to_string(dj) + ", " + std::to_string(dk) +
+                           " voxels): cut to the image's grid, every labelled voxel kept");
+    return label;
+}
+
+} // namespace vsim::study

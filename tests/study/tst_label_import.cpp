@@ -1,0 +1,67 @@
+// Masks onto a study's image grid (study::maskOnImageGrid). Truth: masks built on known grids: the same grid, a
+// larger grid of the same scan offset by whole voxels (the voxel must land where its patient position says), and
+// grids that must be refused (another voxel size, a half-voxel offset, a labelled voxel outside the image).
+#include "vsim/core/Error.h"
+#include "vsim/study/LabelImport.h"
+
+#include <QtTest>
+
+using vsim::study::maskOnImageGrid;
+
+namespace {
+
+vsim::VolumeGeometry grid(std::array<int, 3> dims, Eigen::Vector3d origin, double spacing = 1.5)
+{
+    vsim::VolumeGeometry g;
+    g.dims = dims;
+    g.origin = origin;
+    g.spacing = Eigen::Vector3d::Constant(spacing);
+    return g;
+}
+
+} // namespace
+
+class TestLabelImport : public QObject
+{
+    Q_OBJECT
+private slots:
+    void sameGridAndWholeVoxelOffsetsPlaceEveryVoxel()
+    {
+        const vsim::VolumeGeometry image = grid({10, 12, 8}, {-7.5, 3.0, 100.0});
+        vsim::CtVolume same(image);
+        same.data()[image.linearIndex(2, 3, 4)] = 255;
+        std::vector<std::string> warnings;
+        const vsim::LabelVolume placed = maskOnImageGrid(same, image, 1, warnings);
+        QCOMPARE(int(placed.data()[image.linearIndex(2, 3, 4)]), 1);
+        QVERIFY(warnings.empty());
+
+        // The uncropped scan: 5, 4 and 3 voxels more before the crop's first voxel.
+        const vsim::VolumeGeometry larger = grid({30, 30, 20}, image.origin - Eigen::Vector3d(5, 4, 3) * 1.5);
+        vsim::CtVolume mask(larger);
+        mask.data()[larger.linearIndex(9, 10, 7)] = 1; // = image voxel (4, 6, 4): the same patient position
+        const vsim::LabelVolume cut = maskOnImageGrid(mask, image, 3, warnings);
+        QCOMPARE(int(cut.data()[image.linearIndex(4, 6, 4)]), 3);
+        QVERIFY((larger.indexToPatient({9, 10, 7}) - image.indexToPatient({4, 6, 4})).norm() < 1e-9);
+        QCOMPARE(warnings.size(), std::size_t(1));
+    }
+
+    void mismatchedGridsAreRefused()
+    {
+        const vsim::VolumeGeometry image = grid({10, 12, 8}, {0, 0, 0});
+        std::vector<std::string> warnings;
+        vsim::CtVolume finer(grid({10, 12, 8}, {0, 0, 0}, 0.75));
+        finer.data()[0] = 1;
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(finer, image, 1, warnings));
+        vsim::CtVolume half(grid({10, 12, 8}, {0.75, 0, 0}));
+        half.data()[0] = 1;
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(half, image, 1, warnings));
+        const vsim::VolumeGeometry larger = grid({20, 20, 20}, {-15, 0, 0});
+        vsim::CtVolume outside(larger);
+        outside.data()[larger.linearIndex(0, 0, 0)] = 1; // 10 voxels before the image's first
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(outside, image, 1, warnings));
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(vsim::CtVolume(image), image, 1, warnings)); // empty
+    }
+};
+
+QTEST_APPLESS_MAIN(TestLabelImport)
+#include "tst_label_import.moc"
