@@ -6,6 +6,7 @@
 #include "ViewLayout.h"
 #include "vsim/app/DicomStudyImport.h"
 #include "vsim/dicom/DicomImport.h"
+#include "vsim/study/LabelImport.h"
 #include "vsim/study/StudyLock.h"
 #include "vsim/study/VolumeFileImport.h"
 
@@ -338,6 +339,38 @@ bool MainWindow::importVolume(const QString& file)
                 return;
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Import %1").arg(QFileInfo(file).fileName())));
             m_views->showImage(m_document.study().loadImage(id));
+        });
+}
+
+bool MainWindow::importLabel(const QString& file)
+{
+    if (!m_document.hasStudy())
+        return false;
+    const std::string imageId = newestArtifact(study::ArtifactKind::Image);
+    if (imageId.empty())
+    {
+        showError(tr("Import label"), tr("The study has no CT image for the label's grid: import the CT first."));
+        return false;
+    }
+    auto label = std::make_shared<LabelVolume>();
+    auto warnings = std::make_shared<std::vector<std::string>>();
+    const VolumeGeometry grid = m_document.study().volumeGeometry(imageId);
+    return m_tasks.run(
+        tr("Import label"),
+        [path = file.toStdString(), grid, label, warnings](const Progress& progress) {
+            study::ImportedVolume mask = study::readVolumeFile(path, progress);
+            *warnings = mask.warnings;
+            *label = study::maskOnImageGrid(mask.image, grid, 1, *warnings);
+        },
+        [this, file, imageId, label, warnings] {
+            study::Provenance provenance;
+            provenance.command = "import label";
+            provenance.inputs = {QFileInfo(file).fileName().toStdString(), imageId};
+            provenance.parameters = {{"label_value", "1"}};
+            const std::string id =
+                m_document.study().addLabel(*label, QFileInfo(file).fileName().toStdString(), provenance, *warnings);
+            m_scene.labels[id] = *label;
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Import %1").arg(QFileInfo(file).fileName())));
         });
 }
 

@@ -69,6 +69,9 @@ public:
     bool newStudy(const QString& bundle);
     /// Imports a NIfTI / NRRD / MetaImage file in the background and shows it; undoable.
     bool importVolume(const QString& file);
+    /// Imports a mask file (NIfTI / NRRD / MetaImage) as a label on the newest image's grid in the background
+    /// (study::maskOnImageGrid: refused with a message when the grids do not match); undoable, shown in the MPRs.
+    bool importLabel(const QString& file);
     /// Imports a DICOM series in the background (scanning `path` first unless `scan` is given) and shows it;
     /// `seriesKey` empty picks the CT with most slices. Undoable; progress and Cancel in the status bar.
     bool importDicom(const QString& path, const QString& seriesKey = {},

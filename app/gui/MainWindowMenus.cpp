@@ -45,6 +45,12 @@ void MainWindow::createMenus()
         if (!volume.isEmpty())
             importVolume(volume);
     });
+    m_documentActions << file->addAction(tr("Import &Label..."), this, [this] {
+        const QString mask = QFileDialog::getOpenFileName(this, tr("Import label (a mask on the CT's grid)"), QString(),
+                                                          tr(kVolumeFilter));
+        if (!mask.isEmpty())
+            importLabel(mask);
+    });
     file->addSeparator();
     m_documentActions << file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { saveStudy(); });
     m_documentActions << file->addAction(tr("Save &As..."), QKeySequence::SaveAs, this, [this] {

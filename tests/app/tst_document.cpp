@@ -61,6 +61,34 @@ private slots:
         QCOMPARE(reopened.artifact(id).name, std::string("Arterial"));
         QVERIFY(vsim::test::samePattern(reopened.loadImage(id), 5));
 
+        // A mask on the CT's grid imports as a label (File > Import Label), shown in the MPRs; one on another grid
+        // is refused with a message and adds nothing.
+        vsim::CtVolume mask(truth.geometry());
+        mask.data()[17] = 1;
+        mask.data()[18] = 1;
+        writer->SetInput(vsim::interop::toItk(mask));
+        writer->SetFileName((folder / "mask.nrrd").string());
+        writer->Update();
+        QVERIFY(window->importLabel(QString::fromStdString((folder / "mask.nrrd").string())));
+        QVERIFY(vsim::test::waitForTask(*window));
+        const vsim::study::Artifact label = document.study().artifacts().back();
+        QCOMPARE(label.kind, vsim::study::ArtifactKind::Label);
+        QCOMPARE(int(document.study().loadLabel(label.id).data()[18]), 1);
+        vsim::VolumeGeometry shifted = truth.geometry();
+        shifted.origin.x() += 0.35; // half a voxel
+        vsim::CtVolume misplaced(shifted);
+        misplaced.data()[17] = 1;
+        writer->SetInput(vsim::interop::toItk(misplaced));
+        writer->SetFileName((folder / "misplaced.nrrd").string());
+        writer->Update();
+        QSignalSpy refused(&window->tasks(), &vsim::gui::TaskRunner::failed);
+        QVERIFY(window->importLabel(QString::fromStdString((folder / "misplaced.nrrd").string())));
+        QVERIFY(vsim::test::waitForTask(*window));
+        QCOMPARE(refused.count(), 1);
+        QCOMPARE(document.study().artifacts().size(), std::size_t(2));
+        document.undoStack()->undo(); // the label
+        QCOMPARE(document.study().artifacts().size(), std::size_t(1));
+
         // A broken file: the task fails with a message, the study keeps its one artifact.
         const fs::path junk = folder / "junk.nii";
         std::ofstream(junk) << "not a volume";
