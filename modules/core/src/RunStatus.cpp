@@ -1,6 +1,5 @@
 #include "vsim/core/RunStatus.h"
 
-#include "vsim/core/Error.h"
 
 #include <algorithm>
 #include <cstdio>
