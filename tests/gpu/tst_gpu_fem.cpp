@@ -110,6 +110,11 @@ private slots:
         setup.stepper = cuda::cudaStepperFactory();
         const FemRunResult gpu = runFem(setup);
         QCOMPARE(QString::fromStdString(gpu.stopReason), QString::fromStdString(cpu.stopReason));
+        // The run-status record (issue 14) from the GPU stepper's residuals: the same solves, the same verdict.
+        QCOMPARE(gpu.status.solves, cpu.status.solves);
+        QCOMPARE(gpu.status.converged(), cpu.status.converged());
+        QCOMPARE(gpu.stepResiduals.size(), cpu.stepResiduals.size());
+        qInfo("run status CPU: %s; GPU: %s", cpu.status.convergenceText().c_str(), gpu.status.convergenceText().c_str());
         const double gpuPeak = gpu.metrics.at("peak_von_mises_kpa"), cpuPeak = cpu.metrics.at("peak_von_mises_kpa");
         qInfo("peak von Mises CPU %.6g kPa, GPU %.6g kPa (%.2g relative); mean PCG iterations CPU %.1f, GPU %.1f",
               cpuPeak, gpuPeak, std::abs(gpuPeak - cpuPeak) / cpuPeak, cpu.metrics.at("mean_cg_iterations"),
