@@ -134,119 +134,119 @@
 <context>
     <name>vsim::gui::DrugDeliveryPanel</name>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="33"/>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="93"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="48"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="108"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="39"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="54"/>
         <source>x, y, z mm; empty: the root</source>
         <translation>x, y, z mm; leer: die Wurzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="41"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="56"/>
         <source>x, y, z, radius mm; empty: none</source>
         <translation>x, y, z, Radius mm; leer: keiner</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="43"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="58"/>
         <source>x, y, z; ... mm; empty: the first branches</source>
         <translation>x, y, z; ... mm; leer: die ersten Äste</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="46"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="61"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="47"/>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="48"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="62"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="63"/>
         <source>Pick</source>
         <translation>Wählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="49"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="64"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="50"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="65"/>
         <source>Run</source>
         <translation>Berechnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="59"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="74"/>
         <source>Catheter tip</source>
         <translation>Katheterspitze</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="60"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="75"/>
         <source>Tumour</source>
         <translation>Tumor</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="61"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="76"/>
         <source>Tumour radius (picked)</source>
         <translation>Tumorradius (gewählt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="62"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="77"/>
         <source>Control points</source>
         <translation>Kontrollpunkte</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="73"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="88"/>
         <source>Outlet</source>
         <translation>Auslass</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="73"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="88"/>
         <source>Drug share (%)</source>
         <translation>Wirkstoffanteil (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="73"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="88"/>
         <source>Arrival (s)</source>
         <translation>Ankunft (s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="93"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="108"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="145"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="160"/>
         <source>Tip pressure %1 mmHg; last outlet reached after %2 s.</source>
         <translation>Druck an der Spitze %1 mmHg; letzter Auslass nach %2 s erreicht.</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="148"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="163"/>
         <source>&lt;br&gt;Control point %1: drug %2 ml/min two-phase, %3 ml/min liquid (%4 % lower)</source>
         <translation>&lt;br&gt;Kontrollpunkt %1: Wirkstoff %2 ml/min zweiphasig, %3 ml/min flüssig (%4 % weniger)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="152"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="167"/>
         <source>&lt;br&gt;Tumour share %1 % (%2 outlets).</source>
         <translation>&lt;br&gt;Tumoranteil %1 % (%2 Auslässe).</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="154"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="169"/>
         <source>&lt;br&gt;Best tip: node %1 delivers %2 % to the tumour.</source>
         <translation>&lt;br&gt;Beste Spitze: Knoten %1 bringt %2 % in den Tumor.</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="168"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="183"/>
         <source>never</source>
         <translation>nie</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="191"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="206"/>
         <source>Drug flow (ml/min)</source>
         <translation>Wirkstofffluss (ml/min)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="217"/>
+        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="232"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
@@ -273,7 +273,7 @@
     </message>
     <message>
         <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="57"/>
         <source>Study folder (*.vsim)</source>
         <translation>Studienordner (*.vsim)</translation>
     </message>
@@ -308,212 +308,227 @@
         <translation>Ctrl+I</translation>
     </message>
     <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="48"/>
+        <source>Import &amp;Label...</source>
+        <translation>&amp;Label importieren...</translation>
+    </message>
+    <message>
         <location filename="../app/gui/MainWindowMenus.cpp" line="49"/>
+        <source>Import label (a mask on the CT&apos;s grid)</source>
+        <translation>Label importieren (eine Maske auf dem Raster des CT)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="55"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="50"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="56"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="56"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="62"/>
         <source>Export &amp;Report...</source>
         <translation>&amp;Bericht exportieren...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="56"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="62"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="59"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="65"/>
         <source>&amp;Close Window</source>
         <translation>Fenster &amp;schließen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="60"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="66"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="62"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="68"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="63"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="69"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="65"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="71"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="70"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="76"/>
         <source>Re&amp;name Artifact...</source>
         <translation>Artefakt &amp;umbenennen...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="75"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="81"/>
         <source>Rename artifact</source>
         <translation>Artefakt umbenennen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="75"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="81"/>
         <source>Name:</source>
         <translation>Name:</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="81"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="87"/>
         <source>&amp;Delete Artifact</source>
         <translation>Artefakt &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="91"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="97"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="92"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="98"/>
         <source>Window/Level: &amp;CTA</source>
         <translation>Fenster: &amp;CTA</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="93"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="99"/>
         <source>Window/Level: &amp;Soft Tissue</source>
         <translation>Fenster: &amp;Weichteil</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="94"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="100"/>
         <source>Window/Level: &amp;Bone</source>
         <translation>Fenster: &amp;Knochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="96"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="102"/>
         <source>3D: &amp;Anterior View</source>
         <translation>3D: &amp;Ansicht von vorn</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="101"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="107"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="102"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="108"/>
         <source>&amp;About VascuSim</source>
         <translation>Ü&amp;ber VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="120"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="126"/>
         <source>About VascuSim</source>
         <translation>Über VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="121"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="127"/>
         <source>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patient-specific physics for vascular procedure planning.&lt;/p&gt;&lt;p&gt;Results support planning and need clinical judgement.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</source>
         <translation>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patientenspezifische Physik für die Planung vaskulärer Eingriffe.&lt;/p&gt;&lt;p&gt;Die Ergebnisse unterstützen die Planung und erfordern ärztliches Urteil.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="63"/>
+        <location filename="../app/gui/MainWindow.cpp" line="61"/>
         <source>%1: cancelled, nothing changed</source>
         <translation>%1: abgebrochen, nichts geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="66"/>
+        <location filename="../app/gui/MainWindow.cpp" line="64"/>
         <source>%1: done</source>
         <translation>%1: fertig</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="86"/>
+        <location filename="../app/gui/MainWindow.cpp" line="84"/>
         <source>Artifact</source>
         <translation>Artefakt</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="86"/>
+        <location filename="../app/gui/MainWindow.cpp" line="84"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="86"/>
+        <location filename="../app/gui/MainWindow.cpp" line="84"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="97"/>
+        <location filename="../app/gui/MainWindow.cpp" line="101"/>
         <source>Study</source>
         <translation>Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="105"/>
-        <location filename="../app/gui/MainWindow.cpp" line="111"/>
+        <location filename="../app/gui/MainWindow.cpp" line="109"/>
+        <location filename="../app/gui/MainWindow.cpp" line="115"/>
         <source>Import</source>
         <translation>Importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="105"/>
-        <location filename="../app/gui/MainWindow.cpp" line="113"/>
+        <location filename="../app/gui/MainWindow.cpp" line="109"/>
+        <location filename="../app/gui/MainWindow.cpp" line="117"/>
         <source>Segment</source>
         <translation>Segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="105"/>
-        <location filename="../app/gui/MainWindow.cpp" line="115"/>
+        <location filename="../app/gui/MainWindow.cpp" line="109"/>
+        <location filename="../app/gui/MainWindow.cpp" line="119"/>
         <source>Skeleton &amp;&amp; Centerlines</source>
         <translation>Skelett &amp;&amp; Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="105"/>
-        <location filename="../app/gui/MainWindow.cpp" line="117"/>
+        <location filename="../app/gui/MainWindow.cpp" line="109"/>
+        <location filename="../app/gui/MainWindow.cpp" line="121"/>
         <source>Mesh</source>
         <translation>Netz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="105"/>
-        <location filename="../app/gui/MainWindow.cpp" line="119"/>
+        <location filename="../app/gui/MainWindow.cpp" line="109"/>
+        <location filename="../app/gui/MainWindow.cpp" line="123"/>
         <source>Simulate</source>
         <translation>Simulieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="106"/>
-        <location filename="../app/gui/MainWindow.cpp" line="121"/>
-        <location filename="../app/gui/MainWindowReport.cpp" line="65"/>
-        <location filename="../app/gui/MainWindowReport.cpp" line="69"/>
-        <location filename="../app/gui/MainWindowReport.cpp" line="93"/>
-        <location filename="../app/gui/MainWindowReport.cpp" line="113"/>
+        <location filename="../app/gui/MainWindow.cpp" line="110"/>
+        <location filename="../app/gui/MainWindow.cpp" line="125"/>
+        <location filename="../app/gui/MainWindowReport.cpp" line="76"/>
+        <location filename="../app/gui/MainWindowReport.cpp" line="80"/>
+        <location filename="../app/gui/MainWindowReport.cpp" line="118"/>
+        <location filename="../app/gui/MainWindowReport.cpp" line="140"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="124"/>
+        <location filename="../app/gui/MainWindow.cpp" line="128"/>
         <source>Workflow</source>
         <translation>Arbeitsablauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="136"/>
+        <location filename="../app/gui/MainWindow.cpp" line="140"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="164"/>
+        <location filename="../app/gui/MainWindow.cpp" line="168"/>
         <source>No study</source>
         <translation>Keine Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="165"/>
+        <location filename="../app/gui/MainWindow.cpp" line="170"/>
         <source>%1[*] - VascuSim</source>
         <translation>%1[*] - VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="182"/>
+        <location filename="../app/gui/MainWindow.cpp" line="170"/>
+        <source>%1 (read-only) - VascuSim</source>
+        <translation>%1 (schreibgeschützt) - VascuSim</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="190"/>
         <source>damaged</source>
         <translation>beschädigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MainWindow.cpp" line="187"/>
+        <location filename="../app/gui/MainWindow.cpp" line="195"/>
         <source>%n warning(s)</source>
         <translation>
             <numerusform>%n Warnung</numerusform>
@@ -521,184 +536,248 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="193"/>
+        <location filename="../app/gui/MainWindow.cpp" line="201"/>
         <source>%1, made by &quot;%2&quot; on %3</source>
         <translation>%1, erzeugt von &quot;%2&quot; am %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="205"/>
+        <location filename="../app/gui/MainWindow.cpp" line="213"/>
         <source>%1 failed</source>
         <translation>%1 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="222"/>
+        <location filename="../app/gui/MainWindow.cpp" line="234"/>
+        <source>Opened read-only: the study is being written by %1</source>
+        <translation>Schreibgeschützt geöffnet: die Studie wird von %1 geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="238"/>
+        <source>Study in use</source>
+        <translation>Studie in Gebrauch</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="239"/>
+        <source>The study is being written by %1.
+Open it read-only, or break the lock if you are sure that program no longer runs.</source>
+        <translation>Die Studie wird von %1 geschrieben.
+Schreibgeschützt öffnen, oder die Sperre aufheben, wenn Sie sicher sind, dass dieses Programm nicht mehr läuft.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="242"/>
+        <source>Open Read-Only</source>
+        <translation>Schreibgeschützt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="243"/>
+        <source>Break the Lock...</source>
+        <translation>Sperre aufheben...</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="248"/>
+        <source>Break the lock</source>
+        <translation>Sperre aufheben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="249"/>
+        <source>If %1 still runs, both programs will write the study and results can be lost. Break the lock?</source>
+        <translation>Wenn %1 noch läuft, schreiben beide Programme die Studie, und Ergebnisse können verloren gehen. Sperre aufheben?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindow.cpp" line="276"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="34"/>
         <source>Open study</source>
         <translation>Studie öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="242"/>
+        <location filename="../app/gui/MainWindow.cpp" line="296"/>
         <source>Study opened with problems</source>
         <translation>Studie mit Problemen geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="261"/>
+        <location filename="../app/gui/MainWindow.cpp" line="315"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
         <source>New study</source>
         <translation>Neue Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="272"/>
+        <location filename="../app/gui/MainWindowImport.cpp" line="24"/>
+        <location filename="../app/gui/MainWindowImport.cpp" line="27"/>
         <location filename="../app/gui/MainWindowMenus.cpp" line="44"/>
         <source>Import volume</source>
         <translation>Volumen importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="281"/>
-        <location filename="../app/gui/MainWindow.cpp" line="305"/>
+        <location filename="../app/gui/MainWindowImport.cpp" line="32"/>
+        <location filename="../app/gui/MainWindowImport.cpp" line="65"/>
+        <location filename="../app/gui/MainWindowImport.cpp" line="121"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="293"/>
-        <location filename="../app/gui/MainWindow.cpp" line="310"/>
+        <location filename="../app/gui/MainWindowImport.cpp" line="44"/>
+        <location filename="../app/gui/MainWindowImport.cpp" line="51"/>
+        <source>Import label</source>
+        <translation>Label importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowImport.cpp" line="44"/>
+        <source>The study has no CT image for the label&apos;s grid: import the CT first.</source>
+        <translation>Die Studie hat kein CT-Bild für das Raster des Labels: zuerst das CT importieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowImport.cpp" line="89"/>
+        <source>Not Hounsfield units</source>
+        <translation>Keine Hounsfield-Einheiten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowImport.cpp" line="90"/>
+        <source>%1
+
+Rescale to HU (HU = slope x stored value + intercept):</source>
+        <translation>%1
+
+Umrechnung in HU (HU = Steigung x gespeicherter Wert + Achsenabschnitt):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowImport.cpp" line="107"/>
+        <location filename="../app/gui/MainWindowImport.cpp" line="115"/>
         <source>Import DICOM</source>
         <translation>DICOM importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="330"/>
-        <location filename="../app/gui/MainWindow.cpp" line="399"/>
+        <location filename="../app/gui/MainWindow.cpp" line="326"/>
+        <location filename="../app/gui/MainWindow.cpp" line="397"/>
         <source>Save study</source>
         <translation>Studie speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="342"/>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="51"/>
+        <location filename="../app/gui/MainWindow.cpp" line="339"/>
+        <location filename="../app/gui/MainWindowMenus.cpp" line="57"/>
         <source>Save study as</source>
         <translation>Studie speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="361"/>
+        <location filename="../app/gui/MainWindow.cpp" line="358"/>
         <source>Show image</source>
         <translation>Bild anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="386"/>
+        <location filename="../app/gui/MainWindow.cpp" line="383"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="387"/>
+        <location filename="../app/gui/MainWindow.cpp" line="384"/>
         <source>Save the changes to this study before closing?</source>
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="59"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="56"/>
         <source>Length (mm)</source>
         <translation>Länge (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="59"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="56"/>
         <source>Start r (mm)</source>
         <translation>Anfangs-r (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="59"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="56"/>
         <source>End r (mm)</source>
         <translation>End-r (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="59"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="56"/>
         <source>Segment</source>
         <comment>a vessel segment (noun)</comment>
         <translation>Segment</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="60"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="57"/>
         <source>Reference Ø (mm)</source>
         <translation>Referenz-Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="60"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="57"/>
         <source>Minimal Ø (mm)</source>
         <translation>Minimaler Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="61"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="58"/>
         <source>Stenosis (%)</source>
         <translation>Stenose (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="61"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="58"/>
         <source>Max Ø (mm)</source>
         <translation>Max. Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="73"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="70"/>
         <source>Measurements</source>
         <translation>Messungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="101"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="98"/>
         <source>Maximum diameter %1 mm</source>
         <translation>Maximaler Durchmesser %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="115"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="112"/>
         <source>V&amp;essels</source>
         <translation>&amp;Gefäße</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="116"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="113"/>
         <source>&amp;Segment Vessels</source>
         <translation>Gefäße &amp;segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="118"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="115"/>
         <source>Segment from the &amp;Cursor</source>
         <translation>Ab dem &amp;Cursor segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="121"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="118"/>
         <source>S&amp;keleton and Centerlines</source>
         <translation>S&amp;kelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="124"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="121"/>
         <source>&amp;Edit Label (Brush)</source>
         <translation>Label &amp;bearbeiten (Pinsel)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="125"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="122"/>
         <source>&amp;Parameters...</source>
         <translation>&amp;Parameter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="130"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="127"/>
         <source>Vessel parameters</source>
         <translation>Gefäßparameter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="131"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="128"/>
         <source>Segmentation</source>
         <translation>Segmentierung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="148"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="160"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="180"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="157"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="179"/>
         <source>Segment vessels</source>
         <translation>Gefäße segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="148"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
         <source>The study has no CT image: import one first.</source>
         <translation>Die Studie enthält kein CT-Bild: zuerst eines importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="195"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="208"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="234"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="190"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="203"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="232"/>
         <source>Skeleton and centerlines</source>
         <translation>Skelett und Mittellinien</translation>
     </message>
@@ -754,7 +833,7 @@
     </message>
     <message>
         <location filename="../app/gui/MainWindowLabelEditing.cpp" line="94"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="195"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="190"/>
         <source>The study has no vessel label: segment the vessels first.</source>
         <translation>Die Studie enthält keine Gefäßmaske: zuerst die Gefäße segmentieren.</translation>
     </message>
@@ -765,308 +844,340 @@
         <translation>Label bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="150"/>
+        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="152"/>
         <source>Apply label edits</source>
         <translation>Label-Änderungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="165"/>
         <source>Vessel surface</source>
-        <translation>Gefäßoberfläche</translation>
+        <translation type="vanished">Gefäßoberfläche</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="132"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="235"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="129"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="233"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="133"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="236"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="130"/>
+        <location filename="../app/gui/MainWindowVessels.cpp" line="234"/>
         <source>Centerlines</source>
         <translation>Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="32"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="33"/>
         <source>&amp;Wall</source>
         <translation>&amp;Wand</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="33"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="34"/>
         <source>Build &amp;Wall Mesh</source>
         <translation>&amp;Wandnetz erzeugen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="34"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="35"/>
         <source>Wall Stress at &amp;Blood Pressure</source>
         <translation>Wandspannung bei &amp;Blutdruck</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="36"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="37"/>
         <source>&amp;Thesis Rupture Protocol</source>
         <translation>&amp;Ruptur-Protokoll der Dissertation</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="37"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="38"/>
         <source>&amp;Interactive Protocol</source>
         <translation>&amp;Interaktives Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="39"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="40"/>
         <source>Wall &amp;Parameters...</source>
         <translation>Wand-&amp;Parameter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="40"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="41"/>
         <source>Wall parameters</source>
         <translation>Wandparameter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="41"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="53"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="60"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="67"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="42"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="54"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="61"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="68"/>
         <source>Wall mesh</source>
         <translation>Wandnetz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="41"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="83"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="101"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="129"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="145"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="185"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="42"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="84"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="102"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="134"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="151"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="191"/>
         <source>Wall mechanics</source>
         <translation>Wandmechanik</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="53"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="54"/>
         <source>The wall needs a vessel label and centerlines: run Segment and Skeleton &amp;&amp; Centerlines first.</source>
         <translation>Die Wand braucht ein Gefäßlabel und Mittellinien: zuerst Segmentieren und Skelett &amp;&amp; Mittellinien ausführen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="68"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="69"/>
         <source>Wall: %1 elements, smallest dihedral angle %2 deg</source>
         <translation>Wand: %1 Elemente, kleinster Diederwinkel %2 Grad</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="83"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="129"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="84"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="134"/>
         <source>Build the wall mesh first (Wall &gt; Build Wall Mesh).</source>
         <translation>Zuerst das Wandnetz erzeugen (Wand &gt; Wandnetz erzeugen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="90"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="98"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="91"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="100"/>
         <source>Wall stress</source>
         <translation>Wandspannung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="90"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="91"/>
         <source>Thesis rupture protocol</source>
         <translation>Ruptur-Protokoll der Dissertation</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="101"/>
-        <source>The run stopped early: %1</source>
-        <translation>Die Rechnung endete vorzeitig: %1</translation>
+        <location filename="../app/gui/MainWindowWall.cpp" line="103"/>
+        <source>Read these results with care: %1</source>
+        <translation>Diese Ergebnisse mit Vorsicht lesen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="103"/>
+        <source>The run stopped early: %1</source>
+        <translation type="vanished">Die Rechnung endete vorzeitig: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="105"/>
         <source>Peak wall stress %1 kPa, peak rupture index %2</source>
         <translation>Höchste Wandspannung %1 kPa, höchster Rupturindex %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="119"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="121"/>
+        <source>von Mises (kPa), NOT CONVERGED</source>
+        <translation>von Mises (kPa), NICHT KONVERGIERT</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="122"/>
+        <source>von Mises (kPa), STOPPED EARLY</source>
+        <translation>von Mises (kPa), VORZEITIG BEENDET</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowWall.cpp" line="123"/>
         <source>von Mises (kPa)</source>
         <translation>von Mises (kPa)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="155"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="172"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="161"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="178"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="161"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="167"/>
         <source>0 mmHg</source>
         <translation>0 mmHg</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="162"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="168"/>
         <source>Tear at %1 MPa</source>
         <translation>Reißen bei %1 MPa</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="165"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="171"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="169"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="175"/>
         <source>Drag the wall with the left button in the 3D view.</source>
         <translation>Die Wand in der 3D-Ansicht mit der linken Maustaste ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="172"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="178"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="176"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="182"/>
         <source>%1 mmHg</source>
         <translation>%1 mmHg</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="181"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="187"/>
         <source>%1 frames/s, peak von Mises %2 kPa</source>
         <translation>%1 Bilder/s, höchste von-Mises-Spannung %2 kPa</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="185"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="191"/>
         <source>The simulation paused: %1</source>
         <translation>Die Simulation hält an: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="187"/>
+        <location filename="../app/gui/MainWindowWall.cpp" line="193"/>
         <source>Interactive Wall</source>
         <translation>Interaktive Wand</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="44"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="25"/>
         <source>&amp;Drug</source>
         <translation>&amp;Wirkstoff</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="45"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="26"/>
         <source>Drug &amp;Delivery</source>
         <translation>Wirkstoff&amp;gabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="48"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="29"/>
         <source>Drug &amp;Parameters...</source>
         <translation>Wirkstoff&amp;parameter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="49"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="30"/>
         <source>Drug delivery parameters</source>
         <translation>Parameter der Wirkstoffgabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="49"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="60"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="69"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="78"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="89"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="99"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="30"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="41"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="50"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="59"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="70"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="82"/>
         <source>Drug delivery</source>
         <translation>Wirkstoffgabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="60"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="41"/>
         <source>The network needs centerlines: run Skeleton &amp;&amp; Centerlines first.</source>
         <translation>Das Netzwerk braucht Mittellinien: zuerst Skelett &amp;&amp; Mittellinien ausführen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="69"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="50"/>
         <source>The tip needs three numbers (mm) and the tumour four (centre and radius).</source>
         <translation>Die Spitze braucht drei Zahlen (mm), der Tumor vier (Mitte und Radius).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="78"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="59"/>
         <source>The tumour&apos;s radius must be positive.</source>
         <translation>Der Radius des Tumors muss positiv sein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="89"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="70"/>
         <source>Control points are x, y, z in mm, separated by &apos;;&apos;.</source>
         <translation>Kontrollpunkte sind x, y, z in mm, getrennt durch &apos;;&apos;.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="110"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="95"/>
         <source>Drug flow</source>
         <translation>Wirkstofffluss</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="123"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="107"/>
         <source>Drug Delivery</source>
         <translation>Wirkstoffgabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="131"/>
+        <location filename="../app/gui/MainWindowNetwork.cpp" line="115"/>
         <source>Drug delivery: %1 outlets, last reached after %2 s</source>
         <translation>Wirkstoffgabe: %1 Auslässe, der letzte nach %2 s erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowReport.cpp" line="65"/>
+        <location filename="../app/gui/MainWindowReport.cpp" line="76"/>
         <source>No PDF viewer opened %1.</source>
         <translation>Kein PDF-Betrachter hat %1 geöffnet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowReport.cpp" line="114"/>
+        <location filename="../app/gui/MainWindowReport.cpp" line="100"/>
+        <source>Replace files</source>
+        <translation>Dateien ersetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowReport.cpp" line="101"/>
+        <source>These files exist already:
+%1
+Replace them?</source>
+        <translation>Diese Dateien gibt es schon:
+%1
+Ersetzen?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowReport.cpp" line="141"/>
         <source>Report written to %1</source>
         <translation>Bericht geschrieben nach %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/MainWindowScene.cpp" line="117"/>
+        <source>Preparing the views</source>
+        <translation>Ansichten werden vorbereitet</translation>
     </message>
 </context>
 <context>
     <name>vsim::gui::ReportExportDialog</name>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="16"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="17"/>
         <source>Export Report</source>
         <translation>Bericht exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="18"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="19"/>
         <source>Browse...</source>
         <translation>Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="20"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="21"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="20"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="21"/>
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="28"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="29"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="29"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="30"/>
         <source>Letter</source>
         <translation>Letter</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="30"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="31"/>
         <source>Anonymize (no patient name, ID, birth date or institution)</source>
         <translation>Anonymisieren (ohne Patientenname, ID, Geburtsdatum und Einrichtung)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="31"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="32"/>
         <source>Also as DICOM Encapsulated PDF (a new series of the study)</source>
         <translation>Auch als DICOM Encapsulated PDF (eine neue Serie der Studie)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="32"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="33"/>
         <source>Also the metrics as CSV and JSON</source>
         <translation>Auch die Kennzahlen als CSV und JSON</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="34"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="35"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="38"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="39"/>
         <source>PDF file:</source>
         <translation>PDF-Datei:</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="39"/>
+        <location filename="../app/gui/ReportExportDialog.cpp" line="40"/>
         <source>Paper:</source>
         <translation>Papier:</translation>
     </message>
