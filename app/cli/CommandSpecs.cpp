@@ -33,9 +33,9 @@ std::vector<CommandSpec> declareCommands()
          "       [--rescale SLOPE,INTERCEPT] [--as-label [--label-value 1] [--image ID]] [--wait s]\n"
          "    add a DICOM series (the CT with most slices unless --series) or a NIfTI / NRRD / MetaImage volume;\n"
          "    creates the study in a new or empty folder; values must read as CT in HU (any CT in HU does, a crop\n"
-         "    without air too), else give the rescale HU = SLOPE x stored + INTERCEPT; --as-label adds a mask (its\n"
-         "    nonzero voxels) as a label on the study's image grid, refused when the grids do not match; --list\n"
-         "    prints the series found as JSON and imports nothing",
+         "    without air too), else give the rescale HU = SLOPE x stored + INTERCEPT; --as-label adds a mask as a\n"
+         "    label on the study's image grid (its own labels, or every nonzero voxel as --label-value), refused\n"
+         "    when the grids do not match; --list prints the series found as JSON and imports nothing",
          importIntoStudy},
         {"phantom", 1, 1,
          {required("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),

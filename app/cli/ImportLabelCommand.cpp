@@ -22,9 +22,14 @@ int importLabelIntoStudy(const Arguments& arguments, const Progress& progress)
     study::Study study = openStudyForWriting(arguments);
     const std::string imageId = chooseArtifact(study, arguments.option("image"), study::ArtifactKind::Image,
                                                "the study has no CT image for the label's grid: import the CT first");
-    const double value = quantityOption(arguments, "label-value", "", 1.0);
-    if (value < 1.0 || value > 255.0 || value != std::floor(value))
-        throw Error("--label-value expects a whole number from 1 to 255");
+    std::optional<std::uint8_t> value; // the mask's own labels unless one value is asked for
+    if (arguments.hasOption("label-value"))
+    {
+        const double given = quantityOption(arguments, "label-value", "", 1.0);
+        if (given < 1.0 || given > 255.0 || given != std::floor(given))
+            throw Error("--label-value expects a whole number from 1 to 255");
+        value = std::uint8_t(given);
+    }
     std::vector<std::string> warnings;
     CtVolume mask;
     if (isVolumeFile(input))
@@ -42,11 +47,11 @@ int importLabelIntoStudy(const Arguments& arguments, const Progress& progress)
         warnings = volume.warnings;
     }
     const LabelVolume label =
-        study::maskOnImageGrid(mask, study.volumeGeometry(imageId), std::uint8_t(value), warnings);
+        study::maskOnImageGrid(mask, study.volumeGeometry(imageId), value, warnings);
     study::Provenance provenance;
     provenance.command = "import label";
     provenance.inputs = {input.filename().string(), imageId};
-    provenance.parameters = {{"label_value", std::to_string(int(value))}};
+    provenance.parameters = {{"label_value", value ? std::to_string(int(*value)) : std::string("as in the mask")}};
     const std::string name = input.filename().string();
     const std::string id = study.addLabel(label, name.empty() ? "Imported label" : name, provenance, warnings);
     study.save();

@@ -52,13 +52,13 @@ bool MainWindow::importLabel(const QString& file)
         [path = file.toStdString(), grid, label, warnings](const Progress& progress) {
             study::ImportedVolume mask = study::readVolumeFile(path, progress);
             *warnings = mask.warnings;
-            *label = study::maskOnImageGrid(mask.image, grid, 1, *warnings);
+            *label = study::maskOnImageGrid(mask.image, grid, std::nullopt, *warnings);
         },
         [this, file, imageId, label, warnings] {
             study::Provenance provenance;
             provenance.command = "import label";
             provenance.inputs = {QFileInfo(file).fileName().toStdString(), imageId};
-            provenance.parameters = {{"label_value", "1"}};
+            provenance.parameters = {{"label_value", "as in the mask"}};
             const std::string id =
                 m_document.study().addLabel(*label, QFileInfo(file).fileName().toStdString(), provenance, *warnings);
             m_scene.labels[id] = *label;

@@ -30,9 +30,9 @@ if(balance GREATER 1e-12 OR NOT outlets EQUAL 16 OR fed LESS 1 OR drop LESS 9 OR
                         "best tip ${best}\n${run}")
 endif()
 
-# The tumour as a label: the phantom's truth label (value 2) imported as a volume.
-run_cli(0 imported import ${WORK}/ph/truth-label.nrrd --study ${study})
-string(REGEX MATCH "as (image-[0-9]+)" ignored "${imported}")
+# The tumour as a label: the phantom's truth label (its own values, the tumour 2) imported as a label.
+run_cli(0 imported import ${WORK}/ph/truth-label.nrrd --study ${study} --as-label)
+string(REGEX MATCH "as (label-[0-9]+)" ignored "${imported}")
 set(label_id ${CMAKE_MATCH_1})
 run_cli(0 bylabel simulate network --study ${study} --tip 20,-25,-305 --tumour-label ${label_id} --tumour-value 2)
 string(JSON fed_label GET "${bylabel}" metrics tumour_outlets)

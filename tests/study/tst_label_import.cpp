@@ -34,6 +34,7 @@ private slots:
         const vsim::LabelVolume placed = maskOnImageGrid(same, image, 1, warnings);
         QCOMPARE(int(placed.data()[image.linearIndex(2, 3, 4)]), 1);
         QVERIFY(warnings.empty());
+        QCOMPARE(int(maskOnImageGrid(same, image, std::nullopt, warnings).data()[image.linearIndex(2, 3, 4)]), 255);
 
         // The uncropped scan: 5, 4 and 3 voxels more before the crop's first voxel.
         const vsim::VolumeGeometry larger = grid({30, 30, 20}, image.origin - Eigen::Vector3d(5, 4, 3) * 1.5);
@@ -60,6 +61,10 @@ private slots:
         outside.data()[larger.linearIndex(0, 0, 0)] = 1; // 10 voxels before the image's first
         QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(outside, image, 1, warnings));
         QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(vsim::CtVolume(image), image, 1, warnings)); // empty
+        vsim::CtVolume negative(image);
+        negative.data()[3] = -5; // not a label value: the user must say which to use
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(negative, image, std::nullopt, warnings));
+        QCOMPARE(int(maskOnImageGrid(negative, image, 4, warnings).data()[3]), 4);
     }
 };
 

@@ -22,7 +22,7 @@ std::string describe(const VolumeGeometry& g)
 
 } // namespace
 
-LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, std::uint8_t value,
+LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, std::optional<std::uint8_t> value,
                             std::vector<std::string>& warnings)
 {
     const VolumeGeometry& source = mask.geometry();
@@ -48,15 +48,19 @@ LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, s
         for (int j = 0; j < d[1]; ++j)
             for (int i = 0; i < d[0]; ++i)
             {
-                if (mask.data()[source.linearIndex(i, j, k)] == 0)
+                const std::int16_t own = mask.data()[source.linearIndex(i, j, k)];
+                if (own == 0)
                     continue;
+                if (!value && (own < 1 || own > 255))
+                    throw Error("the mask holds the value " + std::to_string(own) +
+                                ", outside the labels 1..255: give the label value to use (--label-value N)");
                 ++labelled;
                 if (!image.contains(i + di, j + dj, k + dk))
                 {
                     ++outside;
                     continue;
                 }
-                label.data()[image.linearIndex(i + di, j + dj, k + dk)] = value;
+                label.data()[image.linearIndex(i + di, j + dj, k + dk)] = value ? *value : std::uint8_t(own);
             }
     if (labelled == 0)
         throw Error("the mask has no labelled voxel");

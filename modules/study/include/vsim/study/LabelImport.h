@@ -8,15 +8,17 @@
 
 #include "vsim/core/ImageVolume.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace vsim::study {
 
-/// The mask's nonzero voxels as label `value` on `image`'s grid (0 elsewhere). `warnings` gains a line when the mask
-/// was cut or padded. Throws vsim::Error naming both grids when they do not match as the header says, and when the
-/// mask has no labelled voxel.
-LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, std::uint8_t value,
+/// The mask's nonzero voxels on `image`'s grid (0 elsewhere): as `value` when given, else with their own values (a
+/// multi-label mask keeps its labels; they must be 1..255). `warnings` gains a line when the mask was cut or padded.
+/// Throws vsim::Error naming both grids when they do not match as the header says, when the mask has no labelled
+/// voxel, and for own values outside 1..255.
+LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, std::optional<std::uint8_t> value,
                             std::vector<std::string>& warnings);
 
 } // namespace vsim::study
