@@ -54,6 +54,12 @@ void claimOutputFolder(const fs::path& folder, const std::string& purpose)
                     {{"path", folder.string()}});
     if (isOwnedFolder(folder, purpose))
         return;
+    std::ifstream marker(folder / kOwnedFolderMarker);
+    std::string other;
+    if (marker && std::getline(marker, other) && other.rfind("vascusim ", 0) == 0)
+        throw Error("the output folder is VascuSim's " + other.substr(9) + " folder, not a " + purpose +
+                        " folder; choose a new or empty folder",
+                    {{"folder", folder.string()}});
     if (!fs::is_empty(folder, error))
         throw Error("the output folder holds files VascuSim did not write; choose a new or empty folder",
                     {{"folder", folder.string()}});
