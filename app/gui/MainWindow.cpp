@@ -43,7 +43,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(&m_document, &StudyDocument::studyReplaced, this, [this] {
         stopInteractiveWall();
         discardLabelEdits();
-        showLabelOverlay({}, {});
+        showLabelOverlay({});
         restoreScene();
     });
     connect(m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::refreshTitle);

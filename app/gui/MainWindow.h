@@ -173,8 +173,8 @@ private:
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
     void showWallStress(const TetMesh& frame, const RunStatus& status);
     void editVesselParameters();
-    /// Overlays a label in the three MPRs (an empty one clears them); `artifactId` is what it shows.
-    void showLabelOverlay(const LabelVolume& label, const std::string& artifactId);
+    /// Overlays a label in the three MPRs (an empty one clears them).
+    void showLabelOverlay(const LabelVolume& label);
     /// Fills the Measurements dock; each row keeps the patient position (mm) it jumps to.
     void showMeasurements(const imaging::VesselMeasurements& measurements);
     /// The newest undamaged artifact of a kind, or an empty string.
@@ -216,7 +216,6 @@ private:
     QDockWidget* m_drugDock = nullptr;
     InteractiveWall* m_interactiveWall = nullptr;
     QDockWidget* m_interactiveDock = nullptr;
-    std::string m_overlayLabelId; // the label artifact the MPR overlays show
     SceneCache m_scene;
     std::string m_drawnScene; // what refreshScene() drew last (roles, completeness), not drawn twice
     std::set<std::string> m_hiddenArtifacts;

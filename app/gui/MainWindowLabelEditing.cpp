@@ -77,9 +77,8 @@ void MainWindow::createLabelEditToolBar()
     }
 }
 
-void MainWindow::showLabelOverlay(const LabelVolume& label, const std::string& artifactId)
+void MainWindow::showLabelOverlay(const LabelVolume& label)
 {
-    m_overlayLabelId = label.isEmpty() ? std::string() : artifactId;
     for (viz::SliceOrientation orientation : kOrientations)
         m_views->sliceView(orientation)->setLabel(label);
 }
@@ -111,7 +110,7 @@ bool MainWindow::startLabelEditing(viz::BrushMode brush, double radiusMm)
         for (viz::SliceOrientation orientation : kOrientations)
             m_views->sliceView(orientation)->refreshLabel();
     });
-    showLabelOverlay(m_labelEdit->label(), labelId);
+    showLabelOverlay(m_labelEdit->label());
     (brush == viz::BrushMode::Erase ? m_eraseAction : m_paintAction)->setChecked(true);
     m_brushRadius->setValue(radiusMm);
     for (viz::SliceOrientation orientation : kOrientations)

@@ -49,7 +49,7 @@ void MainWindow::refreshScene()
     if (!m_labelEdit)
     {
         const auto label = m_scene.labels.find(content.label);
-        showLabelOverlay(label == m_scene.labels.end() ? LabelVolume() : label->second, content.label);
+        showLabelOverlay(label == m_scene.labels.end() ? LabelVolume() : label->second);
     }
     const auto measured = m_scene.measurements.find(content.measuredCenterlines);
     if (measured != m_scene.measurements.end())

@@ -47,7 +47,6 @@ bool isShowable(const study::Artifact& artifact);
 
 struct SceneCache
 {
-    std::map<std::string, CtVolume> images;
     std::map<std::string, LabelVolume> labels;
     std::map<std::string, TriangleMesh> lumenSurfaces; ///< by label id: the display surface (20k vertices)
     std::map<std::string, SkeletonGraph> skeletons;    ///< skeletons and centerlines
