@@ -132,6 +132,17 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
     const std::string out = arguments.option("out");
     const dicom::PhantomKind kind = dicom::phantomKindFromName(arguments.positional[0]);
     dicom::PhantomOptions options;
+    // Patient-like unless asked otherwise; the bifurcation exists in the analytic style only.
+    options.style = dicom::phantomStyleFromName(
+        arguments.option("style", kind == dicom::PhantomKind::Bifurcation ? "analytic" : "patient"));
+    if (arguments.hasOption("blur") && options.style == dicom::PhantomStyle::Patient)
+        throw UsageError("--blur (a Gaussian sigma) belongs to --style analytic; a patient-style phantom takes --psf-fwhm");
+    if (arguments.hasOption("psf-fwhm") && options.style == dicom::PhantomStyle::Analytic)
+        throw UsageError("--psf-fwhm belongs to --style patient; an analytic phantom takes --blur (sigma, mm)");
+    if (arguments.hasOption("psf-fwhm"))
+        options.psfFwhmMm = quantityOption(arguments, "psf-fwhm", "mm", 0.8);
+    if (arguments.hasOption("noise") && options.style == dicom::PhantomStyle::Patient)
+        options.scannerNoiseHu = quantityOption(arguments, "noise", "HU", 20.0);
     if (arguments.hasOption("size"))
         options.size = parseTriple<int>(arguments.option("size"), 'x', "size");
     if (arguments.hasOption("spacing"))
@@ -147,6 +158,8 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
     dicom::CtSeriesDescription description = dicom::phantomSeriesDescription(kind);
     description.transferSyntax = dicom::transferSyntaxFromName(arguments.option("transfer-syntax", "explicit-le"));
     description.enhancedMultiFrame = arguments.hasOption("enhanced");
+    if (options.style == dicom::PhantomStyle::Patient)
+        description.seriesDescription = "CTA late arterial phase, " + dicom::phantomKindName(kind) + " patient-like phantom";
     const dicom::PhantomFiles files = dicom::writePhantom(kind, options, description, out, progress);
     std::cout << "wrote " << files.series.files.size() << " DICOM files to " << files.dicomFolder.string() << "\n"
               << "truth: " << files.truthJson.string() << ", " << files.truthLabels.string() << "\n";

@@ -39,11 +39,14 @@ std::vector<CommandSpec> declareCommands()
          importIntoStudy},
         {"phantom", 1, 1,
          {required("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),
-          value("max-diameter"), value("stenosis"), value("blur"), flag("enhanced")},
-         "phantom <aaa|stenosis|hepatic-tree|bifurcation> --out <dir> [--size 512x512x400] [--spacing 0.7,0.7,1.0]\n"
-         "        [--noise 20] [--seed 1] [--transfer-syntax explicit-le|implicit-le|jpeg-lossless|jpeg-ls|rle]\n"
-         "        [--max-diameter 55] [--stenosis 50] [--blur mm] [--enhanced]\n"
-         "    write a CT phantom series (<dir>/dicom) with truth.json and truth-label.nrrd into a new or empty folder",
+          value("max-diameter"), value("stenosis"), value("blur"), value("style"), value("psf-fwhm"), flag("enhanced")},
+         "phantom <aaa|stenosis|hepatic-tree|bifurcation> --out <dir> [--style patient|analytic] [--size 512x512x400]\n"
+         "        [--spacing 0.7,0.7,1.0] [--noise HU] [--seed 1] [--psf-fwhm mm] [--blur mm] [--max-diameter 55]\n"
+         "        [--stenosis 50] [--transfer-syntax explicit-le|implicit-le|jpeg-lossless|jpeg-ls|rle] [--enhanced]\n"
+         "    write a CT phantom series (<dir>/dicom) with truth.json and truth-label.nrrd into a new or empty folder;\n"
+         "    patient (default; bifurcation: analytic): anatomy, PSF, correlated noise, thrombus, calcium, the scanner\n"
+         "    drawn from the seed unless --psf-fwhm / --noise are given; analytic: the exact partial-volume model\n"
+         "    (--blur sigma, --noise 20) for tests that need an exact case",
          writePhantomSeries},
         {"segment", 0, 0, {kStudy, value("image"), value("seed"), kParam, kWait},
          "segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value ...] [--wait s]\n"

@@ -8,7 +8,7 @@
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(study ${WORK}/hepatic.vsim)
-run_cli(0 ignored phantom hepatic-tree --out ${WORK}/ph)
+run_cli(0 ignored phantom hepatic-tree --style analytic --out ${WORK}/ph)
 run_cli(0 ignored import ${WORK}/ph/dicom --study ${study})
 run_cli(0 ignored segment --study ${study})
 run_cli(0 ignored skeleton --study ${study})

@@ -6,7 +6,7 @@
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(study ${WORK}/wall.vsim)
-run_cli(0 ignored phantom aaa --out ${WORK}/ph --size 192x192x160 --spacing 1.8,1.8,2.5)
+run_cli(0 ignored phantom aaa --style analytic --out ${WORK}/ph --size 192x192x160 --spacing 1.8,1.8,2.5)
 run_cli(0 ignored import ${WORK}/ph/dicom --study ${study})
 run_cli(0 ignored segment --study ${study})
 run_cli(0 ignored skeleton --study ${study})

@@ -285,6 +285,19 @@ PhantomKind phantomKindFromName(const std::string& name)
     throw Error("unknown phantom kind '" + name + "'; known kinds: aaa, stenosis, hepatic-tree, bifurcation");
 }
 
+std::string phantomStyleName(PhantomStyle style)
+{
+    return style == PhantomStyle::Patient ? "patient" : "analytic";
+}
+
+PhantomStyle phantomStyleFromName(const std::string& name)
+{
+    for (PhantomStyle style : {PhantomStyle::Patient, PhantomStyle::Analytic})
+        if (phantomStyleName(style) == name)
+            return style;
+    throw Error("unknown phantom style '" + name + "'; known styles: patient, analytic");
+}
+
 double VesselSegment::lengthMm() const
 {
     double length = 0.0;
@@ -310,6 +323,10 @@ void PhantomOptions::validate() const
     if (!(aneurysmDiameterMm >= 20.0 && aneurysmDiameterMm <= 120.0))
         throw Error("aneurysm diameter must be 20..120 mm",
                     {{"option", "max-diameter"}, {"value", std::to_string(aneurysmDiameterMm)}});
+    if (psfFwhmMm && !(*psfFwhmMm >= 0.1 && *psfFwhmMm <= 5.0))
+        throw Error("phantom PSF FWHM must be 0.1..5 mm", {{"option", "psf-fwhm"}, {"value", std::to_string(*psfFwhmMm)}});
+    if (scannerNoiseHu && !(*scannerNoiseHu >= 0.0 && *scannerNoiseHu <= 500.0))
+        throw Error("phantom noise must be 0..500 HU", {{"option", "noise"}, {"value", std::to_string(*scannerNoiseHu)}});
     if (!(stenosisPercent >= 0.0 && stenosisPercent <= 95.0))
         throw Error("stenosis must be 0..95 percent",
                     {{"option", "stenosis"}, {"value", std::to_string(stenosisPercent)}});

@@ -43,6 +43,7 @@ std::string phantomTruthJson(const PhantomModel& model, const PhantomOptions& op
         for (const auto& point : segment.points)
             points.push_back(vec(point));
         segments.push_back({{"id", s},
+                            {"name", segment.name},
                             {"from", segment.from},
                             {"to", segment.to},
                             {"parent", segment.parent},

@@ -1,6 +1,7 @@
 #include "vsim/dicom/PhantomWriter.h"
 
 #include "vsim/core/OutputSafety.h"
+#include "vsim/dicom/AnatomyPhantom.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/interop/NrrdFile.h"
 
@@ -26,21 +27,35 @@ PhantomFiles writePhantom(PhantomKind kind, const PhantomOptions& options, const
                           const std::filesystem::path& out, const Progress& progress)
 {
     claimOutputFolder(out, "phantom"); // before the rendering: a refused folder costs no time
-    const PhantomModel model = buildPhantomModel(kind, options);
     PhantomFiles files;
     files.geometry = phantomGeometry(options);
     files.dicomFolder = out / "dicom";
     files.truthJson = out / "truth.json";
     files.truthLabels = out / "truth-label.nrrd";
 
-    const CtVolume ct = renderPhantomCt(model, stackOf(files.geometry), options, progress.subRange(0.0, 0.45));
+    CtVolume ct;
+    LabelVolume labels;
+    std::string truth;
+    if (options.style == PhantomStyle::Patient)
+    {
+        const AnatomyPhantom phantom = buildAnatomyPhantom(kind, options);
+        ct = renderAnatomyCt(phantom, files.geometry, options.seed, progress.subRange(0.0, 0.45));
+        labels = renderAnatomyLabels(phantom, files.geometry, progress.subRange(0.85, 0.97));
+        truth = anatomyTruthJson(phantom, options);
+    }
+    else
+    {
+        const PhantomModel model = buildPhantomModel(kind, options);
+        ct = renderPhantomCt(model, stackOf(files.geometry), options, progress.subRange(0.0, 0.45));
+        labels = renderPhantomLabels(model, files.geometry, progress.subRange(0.85, 0.97));
+        truth = phantomTruthJson(model, options);
+    }
     files.series = writeCtSeries(ct, stackOf(files.geometry), description, files.dicomFolder,
                                  progress.subRange(0.45, 0.85));
-    const LabelVolume labels = renderPhantomLabels(model, files.geometry, progress.subRange(0.85, 0.97));
     interop::writeNrrd(labels, files.truthLabels, true);
-    std::ofstream truth(files.truthJson, std::ios::trunc);
-    truth << phantomTruthJson(model, options);
-    if (!truth.flush())
+    std::ofstream truthFile(files.truthJson, std::ios::trunc);
+    truthFile << truth;
+    if (!truthFile.flush())
         throw Error("cannot write truth.json", {{"file", files.truthJson.string()}});
     progress.report(1.0, "phantom written");
     return files;

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,8 +53,20 @@ inline constexpr std::uint8_t kTumour = 2;
 inline constexpr std::uint8_t kBone = 3;
 } // namespace label
 
+/// How a phantom's CT is made: Analytic (the exact partial-volume model Phi(-d/sigma), uniform tissues: for tests
+/// that need an exact case) or Patient (AnatomyPhantom.h: anatomy and a scanner model no estimator assumes).
+enum class PhantomStyle
+{
+    Analytic,
+    Patient,
+};
+/// "analytic", "patient"; the parser throws vsim::Error naming the known styles.
+std::string phantomStyleName(PhantomStyle style);
+PhantomStyle phantomStyleFromName(const std::string& name);
+
 struct PhantomOptions
 {
+    PhantomStyle style = PhantomStyle::Analytic;
     std::array<int, 3> size{512, 512, 400};      ///< columns, rows, slices
     Eigen::Vector3d spacing{0.7, 0.7, 1.0};      ///< mm: column spacing, row spacing, slice spacing
     double noiseHu = 20.0;                       ///< standard deviation of the Gaussian noise, HU
@@ -61,6 +74,8 @@ struct PhantomOptions
     double blurMm = -1.0;                        ///< partial-volume blur sigma; < 0: half the in-plane spacing
     double aneurysmDiameterMm = 55.0;            ///< aaa: maximum outer lumen diameter of the aneurysm
     double stenosisPercent = 50.0;               ///< stenosis: diameter reduction, percent
+    std::optional<double> psfFwhmMm;             ///< patient style: in-plane PSF FWHM (mm); drawn from the seed if unset
+    std::optional<double> scannerNoiseHu;        ///< patient style: noise (HU); drawn from the seed if unset
     /// Throws vsim::Error naming the option when a value is out of range.
     void validate() const;
     double effectiveBlurMm() const { return blurMm >= 0.0 ? blurMm : 0.25 * (spacing.x() + spacing.y()); }
@@ -97,6 +112,7 @@ struct VesselSegment
     int generation = 0;                   ///< 0 for a root
     std::vector<Eigen::Vector3d> points;  ///< mm, from node `from` to node `to`
     std::vector<double> radii;            ///< mm, one per point
+    std::string name;                     ///< anatomical name ("aorta", "right renal artery", ...) or empty
     double lengthMm() const;
 };
 
