@@ -14,6 +14,7 @@
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselMeasurements.h"
+#include "vsim/imaging/GuidedSegmentation.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/study/Study.h"
@@ -167,38 +168,119 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
 }
 
 
+namespace {
+
+/// Every value of a repeatable point option (x,y,z mm).
+std::vector<Eigen::Vector3d> pointOptions(const Arguments& arguments, const std::string& name)
+{
+    std::vector<Eigen::Vector3d> points;
+    for (const auto& [option, value] : arguments.options)
+        if (option == name)
+        {
+            const auto xyz = parseTriple<double>(value, ',', name);
+            points.emplace_back(xyz[0], xyz[1], xyz[2]);
+        }
+    return points;
+}
+
+std::string pointsText(const std::vector<Eigen::Vector3d>& points)
+{
+    std::string text;
+    for (const Eigen::Vector3d& p : points)
+        text += (text.empty() ? "" : "; ") + numberText(p.x()) + "," + numberText(p.y()) + "," + numberText(p.z());
+    return text;
+}
+
+/// segment --target: the guided segmentation from points.
+imaging::SegmentationResult segmentFromPoints(const Arguments& arguments, const CtVolume& ct,
+                                              study::Provenance& provenance, const Progress& progress)
+{
+    ParameterSet parameters(imaging::guidedSegmentationParameters());
+    applyParameters(arguments, parameters);
+    imaging::SegmentationRequest request;
+    request.target = imaging::segmentationTargetFromName(arguments.option("target"));
+    request.includeMm = pointOptions(arguments, "seed");
+    request.excludeMm = pointOptions(arguments, "exclude");
+    if (request.includeMm.empty())
+        throw UsageError("vascusim-cli segment --target needs at least one --seed x,y,z (mm) inside the vessel");
+    for (const auto& [option, value] : arguments.options)
+        if (option == "stop")
+        {
+            const std::vector<double> v = parseNumbers(value, ',', 6, "stop");
+            request.stops.push_back({Eigen::Vector3d(v[0], v[1], v[2]), Eigen::Vector3d(v[3], v[4], v[5])});
+            if (request.stops.back().normal.norm() < 1e-9)
+                throw UsageError("--stop x,y,z,nx,ny,nz: the normal must not be zero");
+        }
+    if (arguments.hasOption("max-length"))
+        request.maxLengthMm = quantityOption(arguments, "max-length", "mm", 0.0);
+    imaging::SegmentationResult result = imaging::segmentFromPoints(ct, parameters, request, progress);
+    provenance.parameters = parameters.valuesAsText();
+    provenance.parameters["target"] = imaging::segmentationTargetName(request.target);
+    provenance.parameters["include_points_mm"] = pointsText(request.includeMm);
+    provenance.parameters["exclude_points_mm"] = pointsText(request.excludeMm);
+    for (std::size_t n = 0; n < request.stops.size(); ++n)
+        provenance.parameters["stop_plane_" + std::to_string(n + 1)] =
+            pointsText({request.stops[n].pointMm}) + " normal " + pointsText({request.stops[n].normal});
+    if (request.maxLengthMm)
+        provenance.parameters["max_length_mm"] = numberText(*request.maxLengthMm);
+    return result;
+}
+
+/// segment without --target: the layered segmentation from one seed (automatic unless given).
+imaging::SegmentationResult segmentFromSeed(const Arguments& arguments, const CtVolume& ct,
+                                            study::Provenance& provenance, const Progress& progress)
+{
+    for (const char* guidedOnly : {"exclude", "stop", "max-length"})
+        if (arguments.hasOption(guidedOnly))
+            throw UsageError(std::string("vascusim-cli segment: --") + guidedOnly + " needs --target aorta|hepatic|all");
+    const std::vector<Eigen::Vector3d> seeds = pointOptions(arguments, "seed");
+    if (seeds.size() > 1)
+        throw UsageError("vascusim-cli segment: several --seed points need --target aorta|hepatic|all");
+    ParameterSet parameters(imaging::segmentationParameters());
+    applyParameters(arguments, parameters);
+    std::optional<Eigen::Vector3d> seed;
+    if (!seeds.empty())
+        seed = seeds.front();
+    imaging::SegmentationResult result = imaging::segmentVessels(ct, parameters, seed, progress);
+    provenance.parameters = parameters.valuesAsText();
+    provenance.parameters["seed_mm"] = pointsText({result.seedMm});
+    provenance.parameters["seed_found_automatically"] = result.seedFound ? "yes" : "no";
+    return result;
+}
+
+} // namespace
+
 int segmentStudy(const Arguments& arguments, const Progress& progress)
 {
     study::Study study = openStudyForWriting(arguments);
     const std::string imageId = chooseArtifact(study, arguments.option("image"), study::ArtifactKind::Image,
                                                "the study has no CT image: import one first (vascusim-cli import "
                                                "<dicom folder> --study S)");
-    ParameterSet parameters(imaging::segmentationParameters());
-    applyParameters(arguments, parameters);
-    std::optional<Eigen::Vector3d> seed;
-    if (arguments.hasOption("seed"))
-    {
-        const auto xyz = parseTriple<double>(arguments.option("seed"), ',', "seed");
-        seed = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
-    }
     const CtVolume ct = study.loadImage(imageId);
-    const imaging::SegmentationResult result = imaging::segmentVessels(ct, parameters, seed, progress.subRange(0.0, 0.9));
-
     study::Provenance provenance;
     provenance.command = "segment";
     provenance.inputs = {imageId};
-    provenance.parameters = parameters.valuesAsText();
-    provenance.parameters["seed_mm"] = numberText(result.seedMm.x()) + "," + numberText(result.seedMm.y()) + "," +
-                                       numberText(result.seedMm.z());
-    provenance.parameters["seed_found_automatically"] = result.seedFound ? "yes" : "no";
+    const bool guided = arguments.hasOption("target");
+    const imaging::SegmentationResult result =
+        guided ? segmentFromPoints(arguments, ct, provenance, progress.subRange(0.0, 0.9))
+               : segmentFromSeed(arguments, ct, provenance, progress.subRange(0.0, 0.9));
     const std::string id = study.addLabel(result.label, "Vessel lumen", provenance, result.warnings);
     study.save();
     progress.report(1.0, "saved");
-    std::cout << "segmented " << imageId << " as " << id << ": " << numberText(result.figures.at("volume_ml"))
-              << " ml, boundary " << numberText(result.figures.at("threshold_hu")) << " HU (blood "
-              << numberText(result.figures.at("blood_hu")) << " HU, tissue " << numberText(result.figures.at("tissue_hu"))
-              << " HU), seed " << provenance.parameters["seed_mm"] << " mm"
-              << (result.seedFound ? " (found automatically)" : "") << "\n";
+    std::cout << "segmented " << imageId << " as " << id << ": " << numberText(result.figures.at("volume_ml")) << " ml";
+    if (guided)
+        std::cout << " (" << provenance.parameters["target"] << "), window "
+                  << numberText(result.figures.at("lower_hu")) << ".." << numberText(result.figures.at("upper_hu"))
+                  << " HU, " << numberText(result.figures.at("leaks_cut")) << " leak(s) cut, points "
+                  << provenance.parameters["include_points_mm"] << " mm\n";
+    else
+        std::cout << ", boundary " << numberText(result.figures.at("threshold_hu")) << " HU (blood "
+                  << numberText(result.figures.at("blood_hu")) << " HU, tissue "
+                  << numberText(result.figures.at("tissue_hu")) << " HU), seed " << provenance.parameters["seed_mm"]
+                  << " mm" << (result.seedFound ? " (found automatically)" : "") << "\n";
+    for (const auto& [key, value] : result.figures) // each point's window (HU) and lumen radius (mm)
+        if (key.rfind("include_", 0) == 0 || key.rfind("exclude_", 0) == 0)
+            std::cout << "  " << key << " " << numberText(value) << "\n";
     for (const std::string& warning : result.warnings)
         std::cout << "warning: " << warning << "\n";
     return 0;

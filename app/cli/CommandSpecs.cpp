@@ -48,9 +48,14 @@ std::vector<CommandSpec> declareCommands()
          "    drawn from the seed unless --psf-fwhm / --noise are given; analytic: the exact partial-volume model\n"
          "    (--blur sigma, --noise 20) for tests that need an exact case",
          writePhantomSeries},
-        {"segment", 0, 0, {kStudy, value("image"), value("seed"), kParam, kWait},
-         "segment --study <study.vsim> [--image ID] [--seed x,y,z] [--param key=value ...] [--wait s]\n"
-         "    segment the contrast-filled vessels (automatic seed unless given, mm) into a label artifact",
+        {"segment", 0, 0,
+         {kStudy, value("image"), repeatable("seed"), value("target"), repeatable("exclude"), repeatable("stop"),
+          value("max-length"), kParam, kWait},
+         "segment --study <study.vsim> [--image ID] [--target aorta|hepatic|all --seed x,y,z ... [--exclude x,y,z ...]\n"
+         "        [--stop x,y,z,nx,ny,nz ...] [--max-length mm]] [--seed x,y,z] [--param key=value ...] [--wait s]\n"
+         "    with --target: the vessel grown from the include points (--seed, mm, repeatable), competing with the\n"
+         "    exclude points, not past the stop planes (the side the normal points to) nor the path length, leaks cut\n"
+         "    where the cross-section jumps; without: the contrast-filled vessels from one seed (automatic unless given)",
          segmentStudy},
         {"surface", 0, 0, {kStudy, value("label"), value("target-vertices"), value("stl"), flag("overwrite"), kParam, kWait},
          "surface --study <study.vsim> [--label ID] [--target-vertices N] [--stl FILE [--overwrite]] [--param key=value ...]\n"

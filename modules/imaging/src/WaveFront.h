@@ -1,0 +1,52 @@
+#pragma once
+
+// The engine of the guided segmentation (GuidedSegmentation.h): competing geodesic fronts on a work box, advancing
+// in waves whose cross-sections are checked for leaks.
+
+#include "vsim/core/ImageVolume.h"
+#include "vsim/core/Progress.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vsim::imaging::detail {
+
+/// One front: where it starts, which voxels it may take, how far it may go.
+struct FrontSeed
+{
+    Eigen::Vector3d pointMm = Eigen::Vector3d::Zero();
+    bool include = true;            ///< false: an exclude point (claims voxels, never in the label)
+    double lowerHu = 0.0, upperHu = 0.0; ///< the smoothed-HU window of this front
+    double maxLengthMm = 1e9;       ///< path length limit from the point
+    double branchLengthMm = 1e9;    ///< path length allowed into a branch (cross-section < a quarter of the trunk's)
+    double inscribedRadiusMm = 0.0; ///< radius of the largest ball of accepted voxels at the point
+    double boneHu = 1e9;            ///< include fronts refuse voxels touching raw HU above this (bone, calcium)
+};
+
+struct WaveSettings
+{
+    double waveWidthMm = 1.0;       ///< path-length width of one wave
+    double leakAreaFactor = 3.0;    ///< a cross-section this many times its ancestors' median is a leak
+    double leakMinAreaMm2 = 20.0;   ///< smaller cross-sections are never leaks
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> stops; ///< (point, normal): not crossed by includes
+};
+
+struct WaveResult
+{
+    LabelVolume label;              ///< 1 where an include front took the voxel (not cut as a leak)
+    std::size_t waves = 0, leaksCut = 0, workVoxels = 0, limitedVoxels = 0;
+    std::vector<std::string> leakNotes; ///< where each leak was cut and the area jump
+};
+
+/// The smoothed HU (binomial 3 x 3 x 3) at a voxel of the CT.
+double smoothedHu(const CtVolume& ct, int i, int j, int k);
+
+/// Grows every front; the label is on the CT's grid. Throws vsim::Cancelled.
+WaveResult propagateFronts(const CtVolume& ct, const std::vector<FrontSeed>& seeds, const WaveSettings& settings,
+                           const Progress& progress);
+
+} // namespace vsim::imaging::detail
