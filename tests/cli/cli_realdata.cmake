@@ -41,6 +41,14 @@ execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${W
                 label-6 OUTPUT_VARIABLE overlap RESULT_VARIABLE code)
 message(STATUS "liver CT, the automatic segmentation against artery (label-3), portal vein, hepatic veins, bone:\n${overlap}")
 
+# The guided segmentation, target hepatic, from a point in the aorta (the artery mask's largest cross-section at
+# z = 96 mm) and one in the right hepatic artery. Reported, not yet asserted: in this portal-venous phase the fronts
+# still run into the IVC, the renal veins and the liver (issue 15, must-show 3 not met).
+run_cli(0 guided segment --study ${WORK}/liver.vsim --target hepatic --seed 202.6,195.4,96 --seed 124.1,146.4,91.2)
+execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${WORK}/liver.vsim label-7 label-3 label-4
+                label-5 label-6 OUTPUT_VARIABLE overlap)
+message(STATUS "liver CT, guided (hepatic) against artery (label-3), portal vein, hepatic veins, bone:\n${overlap}")
+
 run_cli(0 ignored import ${DATA}/ctpa-totalsegmentator/ct_cropped.nii.gz --study ${WORK}/ctpa.vsim)
 run_cli(0 info info ${WORK}/ctpa.vsim)
 expect_grid("${info}" "[122,102,112]" "^\\[1\\.5,1\\.5,1\\.5\\]$")
@@ -68,3 +76,21 @@ endif()
 execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${WORK}/ctpa.vsim label-2 label-3 label-4
                 OUTPUT_VARIABLE overlap)
 message(STATUS "CT pulmonary angiogram, the automatic segmentation against heart (label-3), pulmonary artery:\n${overlap}")
+
+# The guided segmentation (issue 15, must-show 3): a point in the pulmonary trunk (the centroid of the pulmonary-artery
+# mask's part inside the heart mask), an exclude point in the right ventricle below its outflow tract (the mean of
+# the bright heart-mask voxels outside the pulmonary-artery mask, anterior and 60 mm below the trunk point), 60 mm of
+# path. The issue asks recall >= 0.8 and <= 5 % of the label in the heart outside the pulmonary artery; the second is
+# not met yet (0.136: the right ventricular outflow tract below the valve is grown, and the label's boundary layer
+# lies in the heart mask around the trunk), so it is held at <= 0.15 as a regression guard.
+run_cli(0 guided segment --study ${WORK}/ctpa.vsim --target all --seed 15.3,-161.2,700.7 --exclude 22.6,-208.1,637.5
+        --max-length 60)
+message(STATUS "CT pulmonary angiogram, guided: ${guided}")
+execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${WORK}/ctpa.vsim label-5 label-3 label-4
+                --except label-4 OUTPUT_VARIABLE overlap)
+message(STATUS "CT pulmonary angiogram, the guided segmentation against heart (label-3), pulmonary artery:\n${overlap}")
+string(JSON recall GET "${overlap}" references label-4 recall)
+string(JSON heart_outside GET "${overlap}" references label-3 share_of_label_outside_except)
+if(recall LESS 0.8 OR heart_outside GREATER 0.15)
+    message(FATAL_ERROR "guided CTPA: pulmonary-artery recall ${recall} (>= 0.8), heart outside it ${heart_outside} (<= 0.15)")
+endif()

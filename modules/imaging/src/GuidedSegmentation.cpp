@@ -133,7 +133,7 @@ detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool inc
                 reach.push_back(r);
             }
     std::nth_element(reach.begin(), reach.begin() + std::ptrdiff_t(reach.size() / 2), reach.end());
-    const double shellInner = reach[reach.size() / 2] + 3.0, shellOuter = shellInner + 6.0;
+    const double shellInner = reach[reach.size() / 2] + 1.5, shellOuter = shellInner + 4.0;
     std::vector<double> shell;
     forBall(shellOuter, [&](int i, int j, int k, double d) {
         if (d >= shellInner && d <= shellOuter && (i + j + k) % 2 == 0)

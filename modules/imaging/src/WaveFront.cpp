@@ -13,6 +13,8 @@ namespace {
 using Eigen::Vector3d;
 
 constexpr std::uint8_t kUntouched = 0, kFinal = 1, kBlocked = 2;
+/// Cross-sections under this (a 10 mm vessel) get the raw-HU boundary layer.
+constexpr double kSmallVesselAreaMm2 = 80.0;
 constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
 
 /// The work box: a sub-grid of the CT with its own linear indices.
@@ -108,6 +110,7 @@ public:
             const Vector3d index = m_ct.geometry().patientToIndex(m_seeds[n].pointMm);
             const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
             const std::uint32_t b = m_box.index(i, j, k);
+            m_seedVoxels.push_back(b);
             m_dist[b] = 0.0f;
             m_owner[b] = std::uint8_t(n + 1);
             m_queue.push({0.0f, b});
@@ -316,10 +319,14 @@ private:
     void judgeComponent(int id)
     {
         Component& c = m_components[std::size_t(id)];
-        if (c.parent >= 0) // a side branch: the parent went on elsewhere and this piece is the smaller part
+        if (c.parent >= 0) // a side branch: the parent went on elsewhere (a sibling twice as wide) and this piece is small
         {
             const Component& parent = m_components[std::size_t(c.parent)];
-            c.side = parent.children.size() > 1 && c.areaMm2 < 0.5 * parent.areaMm2;
+            double largestSibling = 0.0;
+            for (int sibling : parent.children)
+                if (sibling != id)
+                    largestSibling = std::max(largestSibling, m_components[std::size_t(sibling)].areaMm2);
+            c.side = largestSibling >= 2.0 * c.areaMm2 && c.areaMm2 < 0.3 * parent.areaMm2;
         }
 
         // The ancestors' cross-sections (up to 12 waves back), once the front has filled the lumen at its point.
@@ -342,7 +349,7 @@ private:
             if (!c.branch && history.size() >= 4)
             {
                 c.trunkAreaMm2 = median(history);
-                if (c.areaMm2 < 0.25 * c.trunkAreaMm2)
+                if (c.side && c.areaMm2 < 0.25 * c.trunkAreaMm2) // a tapering trunk is no branch: it did not split
                     c.branch = true, c.branchStartMm = double(c.wave) * m_settings.waveWidthMm;
             }
         }
@@ -418,17 +425,21 @@ private:
                 const auto [i, j, k] = m_box.voxel(b);
                 out.label.at(i, j, k) = 1;
             }
-        // Boundary refinement: the smoothed HU decides the growth; at the boundary the raw HU decides (the
-        // 3 x 3 x 3 smoothing moves the half level inwards on small convex vessels). One layer of 6-neighbours of
-        // the label whose raw HU lies in the window of the front they touch, not claimed by another front.
+        // Boundary refinement of small vessels: the smoothed HU decides the growth; at the boundary of a vessel
+        // under 10 mm the raw HU decides (the 3 x 3 x 3 smoothing moves the half level inwards on small convex
+        // vessels; on large ones the shift is negligible and a raw layer only adds partial-volume voxels shared with
+        // touching structures). One layer of 6-neighbours whose raw HU lies in the front's window, unclaimed, is
+        // added; boundary voxels whose raw HU is below the window are removed.
         const VolumeGeometry& g = m_ct.geometry();
-        std::vector<std::array<int, 3>> added;
+        std::vector<std::array<int, 3>> added, removed;
         for (std::uint32_t b = 0; b < m_box.count(); ++b)
         {
-            if (m_state[b] != kFinal || m_owner[b] == 0 || !m_seeds[m_owner[b] - 1].include)
+            if (m_state[b] != kFinal || m_owner[b] == 0 || !m_seeds[m_owner[b] - 1].include || m_component[b] < 0 ||
+                m_components[std::size_t(m_component[b])].areaMm2 > kSmallVesselAreaMm2)
                 continue;
             const FrontSeed& seed = m_seeds[m_owner[b] - 1];
             const auto [i, j, k] = m_box.voxel(b);
+            bool boundary = false;
             for (int n = 0; n < 6; ++n)
             {
                 const int ii = i + (n == 0) - (n == 1), jj = j + (n == 2) - (n == 3), kk = k + (n == 4) - (n == 5);
@@ -437,10 +448,15 @@ private:
                     continue;
                 const std::uint32_t q = m_box.index(ii, jj, kk);
                 const double hu = m_ct.at(ii, jj, kk);
+                boundary = boundary || m_state[q] != kFinal;
                 if (m_state[q] == kUntouched && hu >= seed.lowerHu && hu <= seed.upperHu && g.contains(ii, jj, kk))
                     added.push_back({ii, jj, kk});
             }
+            if (boundary && m_ct.at(i, j, k) < seed.lowerHu && b != m_seedVoxels[m_owner[b] - 1])
+                removed.push_back({i, j, k});
         }
+        for (const auto& [i, j, k] : removed)
+            out.label.at(i, j, k) = 0;
         for (const auto& [i, j, k] : added)
             out.label.at(i, j, k) = 1;
         out.waves = waves;
@@ -464,6 +480,7 @@ private:
     std::vector<std::pair<std::array<int, 3>, float>> m_steps;
     std::priority_queue<Node, std::vector<Node>, std::greater<Node>> m_queue;
     std::vector<std::string> m_leakNotes;
+    std::vector<std::uint32_t> m_seedVoxels;
     std::size_t m_limited = 0;
     double m_voxelVolume = 1.0;
 };
