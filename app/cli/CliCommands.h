@@ -33,6 +33,9 @@ int importLabelIntoStudy(const Arguments& arguments, const Progress& progress);
 int writePhantomSeries(const Arguments& arguments, const Progress& progress);
 /// `segment --study S [--image ID] [--seed x,y,z] [--param key=value ...]`: adds a vessel label to the study.
 int segmentStudy(const Arguments& arguments, const Progress& progress);
+/// `sac --study S [--label ID] [--image ID] [--wall-thickness mm]`: the AAA sac (outer contour, thrombus, wall) of
+/// a lumen label as a label artifact, and its figures (SacCommand.cpp).
+int sacStudy(const Arguments& arguments, const Progress& progress);
 /// `surface --study S [--label ID] [--target-vertices N] [--stl FILE] [--param key=value ...]`: adds the lumen
 /// surface of a vessel label to the study (and writes it as STL when asked).
 int surfaceStudy(const Arguments& arguments, const Progress& progress);

@@ -57,6 +57,12 @@ std::vector<CommandSpec> declareCommands()
          "    exclude points, not past the stop planes (the side the normal points to) nor the path length, leaks cut\n"
          "    where the cross-section jumps; without: the contrast-filled vessels from one seed (automatic unless given)",
          segmentStudy},
+        {"sac", 0, 0, {kStudy, value("label"), value("image"), value("wall-thickness"), kWait},
+         "sac --study <study.vsim> [--label ID] [--image ID] [--wall-thickness 1.8mm] [--wait s]\n"
+         "    the AAA sac of an aortic lumen label: outer contour, thrombus and an assumed-thickness wall as a label\n"
+         "    (1 lumen, 4 thrombus, 5 wall); the SVS maximum outer diameter, the sac volume, the neck, each with its\n"
+         "    definition",
+         sacStudy},
         {"surface", 0, 0, {kStudy, value("label"), value("target-vertices"), value("stl"), flag("overwrite"), kParam, kWait},
          "surface --study <study.vsim> [--label ID] [--target-vertices N] [--stl FILE [--overwrite]] [--param key=value ...]\n"
          "    the lumen surface of the newest vessel label (VTP in the study; STL when asked)",

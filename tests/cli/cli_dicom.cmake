@@ -12,7 +12,8 @@ function(run_cli expected_code output_var error_var)
     set(${error_var} "${err}" PARENT_SCOPE)
 endfunction()
 
-run_cli(0 out err phantom aaa --out ${WORK}/aaa --size 96x96x48 --spacing 3.5,3.5,8 --seed 3 --transfer-syntax jpeg-ls)
+run_cli(0 out err phantom aaa --style analytic --out ${WORK}/aaa --size 96x96x48 --spacing 3.5,3.5,8 --seed 3
+        --transfer-syntax jpeg-ls)
 file(GLOB dicom_files ${WORK}/aaa/dicom/*)
 list(LENGTH dicom_files count)
 if(NOT count EQUAL 48 OR NOT EXISTS ${WORK}/aaa/truth.json OR NOT EXISTS ${WORK}/aaa/truth-label.nrrd)

@@ -2,7 +2,7 @@
 # argument and a value with an unknown unit exit with code 2 and one line naming the option and the accepted ones.
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
-set(commands "info x" import phantom segment surface skeleton centerline measure "mesh wall" "mesh sheet" "mesh import"
+set(commands "info x" import phantom segment sac surface skeleton centerline measure "mesh wall" "mesh sheet" "mesh import"
     "simulate fem" "simulate network" "validate x" report demo demo-study)
 foreach(command IN LISTS commands)
     separate_arguments(words UNIX_COMMAND "${command}")

@@ -1,5 +1,8 @@
 #include "AnatomyMeasures.h"
 
+#include "AnatomyBuilder.h"
+#include "AnatomyPainter.h"
+
 #include "vsim/core/Error.h"
 
 #include <algorithm>
@@ -7,6 +10,63 @@
 #include <numbers>
 
 namespace vsim::dicom::detail {
+
+namespace {
+
+/// Volume (mm3) of the rendered outer solid (the union of the outer contour's frustums, sampled as the builder
+/// samples them) between two planes (point, downstream normal), counted on a 0.5 mm grid: the sac's truth by
+/// its definition, from the very solid the image shows.
+double solidVolumeBetween(const AaaProfile& profile, const Eigen::Vector3d& topPoint, const Eigen::Vector3d& topNormal,
+                          const Eigen::Vector3d& bottomPoint, const Eigen::Vector3d& bottomNormal)
+{
+    const SampledCurve curve = sampleCurve([&](double t) { return profile.outerCentre(profile.topZ + t * (profile.bottomZ - profile.topZ)); });
+    std::vector<TubePiece> pieces;
+    double widest = 0.0;
+    for (std::size_t n = 1; n < curve.points.size(); ++n)
+    {
+        pieces.push_back({curve.points[n - 1], curve.points[n], profile.outerRadius(curve.points[n - 1].z()),
+                          profile.outerRadius(curve.points[n].z()), 0.0, 0.0});
+        widest = std::max(widest, pieces.back().ra);
+    }
+    const double zHigh = std::max(topPoint.z(), bottomPoint.z()) + widest, zLow = std::min(topPoint.z(), bottomPoint.z()) - widest;
+    constexpr double kStep = 0.5;
+    double volume = 0.0;
+    for (double z = zLow; z <= zHigh; z += kStep)
+    {
+        std::vector<const TubePiece*> near;
+        Eigen::Vector2d low(1e9, 1e9), high(-1e9, -1e9);
+        for (const TubePiece& piece : pieces)
+        {
+            const double r = std::max(piece.ra, piece.rb);
+            if (z < std::min(piece.a.z(), piece.b.z()) - r || z > std::max(piece.a.z(), piece.b.z()) + r)
+                continue;
+            near.push_back(&piece);
+            const Eigen::Vector2d lowest = piece.a.head<2>().cwiseMin(piece.b.head<2>());
+            const Eigen::Vector2d highest = piece.a.head<2>().cwiseMax(piece.b.head<2>());
+            low = low.cwiseMin(Eigen::Vector2d(lowest.array() - r));
+            high = high.cwiseMax(Eigen::Vector2d(highest.array() + r));
+        }
+        for (double y = low.y(); y <= high.y(); y += kStep)
+            for (double x = low.x(); x <= high.x(); x += kStep)
+            {
+                const Eigen::Vector3d p(x, y, z);
+                if ((p - topPoint).dot(topNormal) < 0.0 || (p - bottomPoint).dot(bottomNormal) > 0.0)
+                    continue;
+                for (const TubePiece* piece : near)
+                {
+                    double t = 0.0;
+                    if (pieceDistance(*piece, p, t) < 0.0)
+                    {
+                        volume += kStep * kStep * kStep;
+                        break;
+                    }
+                }
+            }
+    }
+    return volume;
+}
+
+} // namespace
 
 void measureAaa(const AaaProfile& profile, AnatomyPhantom& phantom)
 {
@@ -40,12 +100,13 @@ void measureAaa(const AaaProfile& profile, AnatomyPhantom& phantom)
         --top;
     while (bottom + 1 < samples.size() && samples[bottom + 1].outerDiameter > threshold)
         ++bottom;
-    double volume = 0.0, thrombus = 0.0;
-    for (std::size_t i = top + 1; i <= bottom; ++i)
-    {
-        const double r = 0.25 * (samples[i].outerDiameter + samples[i - 1].outerDiameter);
-        volume += std::numbers::pi * r * r * (samples[i].arc - samples[i - 1].arc);
-    }
+    const auto tangentAt = [&](std::size_t i) { // downstream direction of the centerline
+        return Eigen::Vector3d(samples[std::min(i + 5, samples.size() - 1)].centre - samples[i >= 5 ? i - 5 : 0].centre)
+            .normalized();
+    };
+    const double volume = solidVolumeBetween(profile, samples[top].centre, tangentAt(top), samples[bottom].centre,
+                                             tangentAt(bottom));
+    double thrombus = 0.0;
     for (const Sample& s : samples)
         thrombus = std::max(thrombus, profile.outerRadius(s.z) - profile.wallMm - profile.lumenRadius(s.z) +
                                           (profile.lumenCentre(s.z) - profile.outerCentre(s.z)).norm());
@@ -81,20 +142,16 @@ void measureAaa(const AaaProfile& profile, AnatomyPhantom& phantom)
     const auto addPoint = [&](const std::string& key, const Eigen::Vector3d& p) {
         m[key + "_x_mm"] = p.x(), m[key + "_y_mm"] = p.y(), m[key + "_z_mm"] = p.z();
     };
-    const auto tangent = [&](std::size_t i) { // downstream direction of the centerline
-        return Eigen::Vector3d(samples[std::min(i + 5, samples.size() - 1)].centre - samples[i >= 5 ? i - 5 : 0].centre)
-            .normalized();
-    };
     addPoint("sac_top", samples[top].centre);
     addPoint("sac_bottom", samples[bottom].centre);
-    addPoint("sac_top_tangent", tangent(top));
-    addPoint("sac_bottom_tangent", tangent(bottom));
+    addPoint("sac_top_tangent", tangentAt(top));
+    addPoint("sac_bottom_tangent", tangentAt(bottom));
     d["sac_top_z_mm"] = "centre of the sac's upper end (its cross-section perpendicular to the centerline); "
                         "sac_*_tangent: the centerline's downstream direction there (unit vector, not mm)";
     m["sac_length_mm"] = samples[bottom].arc - samples[top].arc;
     m["sac_volume_ml"] = volume / 1000.0;
     d["sac_volume_ml"] = "volume inside the outer contour (lumen, thrombus and wall) between the planes "
-                         "perpendicular to the centerline at the sac's ends";
+                         "perpendicular to the centerline at the sac's ends (the rendered solid, counted on a 0.5 mm grid)";
     m["wall_thickness_mm"] = profile.wallMm;
     for (const VesselSegment& segment : phantom.arteries.segments)
         if (segment.name.find("common iliac artery") != std::string::npos)
