@@ -201,8 +201,9 @@ imaging::SegmentationResult segmentFromPoints(const Arguments& arguments, const 
     request.target = imaging::segmentationTargetFromName(arguments.option("target"));
     request.includeMm = pointOptions(arguments, "seed");
     request.excludeMm = pointOptions(arguments, "exclude");
-    if (request.includeMm.empty())
-        throw UsageError("vascusim-cli segment --target needs at least one --seed x,y,z (mm) inside the vessel");
+    if (request.includeMm.empty() && request.target != imaging::SegmentationTarget::Aorta)
+        throw UsageError("vascusim-cli segment --target hepatic|all needs at least one --seed x,y,z (mm) inside the "
+                         "vessel (--target aorta finds the abdominal aorta itself)");
     for (const auto& [option, value] : arguments.options)
         if (option == "stop")
         {
@@ -216,7 +217,10 @@ imaging::SegmentationResult segmentFromPoints(const Arguments& arguments, const 
     imaging::SegmentationResult result = imaging::segmentFromPoints(ct, parameters, request, progress);
     provenance.parameters = parameters.valuesAsText();
     provenance.parameters["target"] = imaging::segmentationTargetName(request.target);
-    provenance.parameters["include_points_mm"] = pointsText(request.includeMm);
+    provenance.parameters["include_points_mm"] = pointsText(request.includeMm.empty()
+                                                                ? std::vector<Eigen::Vector3d>{result.seedMm}
+                                                                : request.includeMm);
+    provenance.parameters["include_point_found_automatically"] = result.seedFound ? "yes" : "no";
     provenance.parameters["exclude_points_mm"] = pointsText(request.excludeMm);
     for (std::size_t n = 0; n < request.stops.size(); ++n)
         provenance.parameters["stop_plane_" + std::to_string(n + 1)] =
@@ -272,7 +276,8 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
         std::cout << " (" << provenance.parameters["target"] << "), window "
                   << numberText(result.figures.at("lower_hu")) << ".." << numberText(result.figures.at("upper_hu"))
                   << " HU, " << numberText(result.figures.at("leaks_cut")) << " leak(s) cut, points "
-                  << provenance.parameters["include_points_mm"] << " mm\n";
+                  << provenance.parameters["include_points_mm"] << " mm"
+                  << (result.seedFound ? " (the aorta found automatically)" : "") << "\n";
     else
         std::cout << ", boundary " << numberText(result.figures.at("threshold_hu")) << " HU (blood "
                   << numberText(result.figures.at("blood_hu")) << " HU, tissue "

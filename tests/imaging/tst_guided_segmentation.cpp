@@ -108,8 +108,8 @@ class GuidedSegmentationTest : public QObject
     Q_OBJECT
 
 private slots:
-    /// Target aorta from one point in the aneurysm: the aorta and common iliac lumen, thrombus, wall, calcium, the
-    /// IVC, the renal vein and the vertebrae touching it left out.
+    /// Target aorta from one point in the aneurysm, then from no point (the automatic abdominal aorta point): the
+    /// aorta and common iliac lumen; thrombus, wall, calcium, the IVC, the renal vein and the vertebrae left out.
     void aaaLumenFromOnePoint()
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
@@ -131,6 +131,20 @@ private slots:
                   thrombus, bone, vein, result.figures.at("leaks_cut"));
             QVERIFY2(o.dice >= 0.95, "the lumen of the aorta and iliacs");
             QVERIFY(thrombus < 0.01 && bone < 0.005 && vein < 0.005);
+
+            // The same without a point: the abdominal aorta found beside the spine.
+            const Eigen::Vector3d found = findAbdominalAortaPoint(c.ct);
+            const Eigen::Vector3d index = c.ct.geometry().patientToIndex(found);
+            const std::uint8_t there = c.truth.at(int(std::lround(index.x())), int(std::lround(index.y())),
+                                                  int(std::lround(index.z())));
+            request.includeMm.clear();
+            const SegmentationResult automatic =
+                segmentFromPoints(c.ct, ParameterSet(guidedSegmentationParameters()), request);
+            const Overlap a = overlap(automatic.label, c.truth, &region);
+            qInfo("  automatic point (%.1f, %.1f, %.1f) mm in truth label %d: Dice %.4f", found.x(), found.y(),
+                  found.z(), int(there), a.dice);
+            QVERIFY(there == label::kVesselLumen && automatic.seedFound);
+            QVERIFY(a.dice >= 0.95);
         }
     }
 

@@ -1,5 +1,6 @@
 #include "vsim/imaging/AneurysmSac.h"
 
+#include "SlicePieces.h"
 #include "WaveFront.h"
 
 #include "vsim/core/Error.h"
@@ -44,36 +45,8 @@ struct Section
 /// The 4-connected pieces of the nonzero lumen voxels of slice k.
 std::vector<std::vector<std::uint32_t>> slicePieces(const LabelVolume& lumen, int k)
 {
-    const VolumeGeometry& g = lumen.geometry();
-    const int nx = g.dims[0], ny = g.dims[1];
-    std::vector<std::uint8_t> seen(std::size_t(nx) * std::size_t(ny), 0);
-    std::vector<std::vector<std::uint32_t>> pieces;
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i)
-        {
-            const std::uint32_t p = std::uint32_t(i + nx * j);
-            if (seen[p] || !lumen.at(i, j, k))
-                continue;
-            std::vector<std::uint32_t> piece{p}, stack{p};
-            seen[p] = 1;
-            while (!stack.empty())
-            {
-                const std::uint32_t q = stack.back();
-                stack.pop_back();
-                const int qi = int(q % std::uint32_t(nx)), qj = int(q / std::uint32_t(nx));
-                for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}})
-                {
-                    const int ii = qi + di, jj = qj + dj;
-                    if (ii < 0 || jj < 0 || ii >= nx || jj >= ny)
-                        continue;
-                    const std::uint32_t r = std::uint32_t(ii + nx * jj);
-                    if (!seen[r] && lumen.at(ii, jj, k))
-                        seen[r] = 1, piece.push_back(r), stack.push_back(r);
-                }
-            }
-            pieces.push_back(std::move(piece));
-        }
-    return pieces;
+    return detail::slicePieces(lumen.geometry().dims[0], lumen.geometry().dims[1],
+                               [&](int i, int j) { return lumen.at(i, j, k) != 0; });
 }
 
 Vector2d centroidOf(const std::vector<std::uint32_t>& pixels, int nx)

@@ -34,24 +34,28 @@ void centreInLumen(const CtVolume& ct, detail::FrontSeed& seed)
 {
     const VolumeGeometry& g = ct.geometry();
     const Vector3d s = g.spacing, index = g.patientToIndex(seed.pointMm);
-    std::array<int, 3> low{}, size{};
+    std::array<int, 3> low{}, extent{};
     for (int a = 0; a < 3; ++a)
     {
         low[a] = std::max(0, int(std::lround(index[a] - 15.0 / s[a])));
-        size[a] = std::min(g.dims[a] - 1, int(std::lround(index[a] + 15.0 / s[a]))) - low[a] + 1;
+        extent[a] = std::min(g.dims[a] - 1, int(std::lround(index[a] + 15.0 / s[a]))) - low[a] + 1;
     }
-    const auto at = [&](int i, int j, int k) { return std::size_t(i) + std::size_t(size[0]) * (std::size_t(j) + std::size_t(size[1]) * std::size_t(k)); };
-    std::vector<float> distance(std::size_t(size[0]) * std::size_t(size[1]) * std::size_t(size[2]));
-    for (int k = 0; k < size[2]; ++k)
-        for (int j = 0; j < size[1]; ++j)
-            for (int i = 0; i < size[0]; ++i)
+    const auto at = [&](int i, int j, int k) {
+        return static_cast<std::size_t>(i) + static_cast<std::size_t>(extent[0]) *
+                   (static_cast<std::size_t>(j) + static_cast<std::size_t>(extent[1]) * static_cast<std::size_t>(k));
+    };
+    std::vector<float> distance(static_cast<std::size_t>(extent[0]) * static_cast<std::size_t>(extent[1]) *
+                                static_cast<std::size_t>(extent[2]));
+    for (int k = 0; k < extent[2]; ++k)
+        for (int j = 0; j < extent[1]; ++j)
+            for (int i = 0; i < extent[0]; ++i)
                 distance[at(i, j, k)] = detail::smoothedHu(ct, i + low[0], j + low[1], k + low[2]) >= seed.lowerHu ? 1e6f : 0.0f;
     // Two-pass chamfer distance with the 26-neighbourhood's true step lengths.
     for (int pass = 0; pass < 2; ++pass)
-        for (int n = 0; n < size[0] * size[1] * size[2]; ++n)
+        for (int n = 0; n < extent[0] * extent[1] * extent[2]; ++n)
         {
-            const int m = pass == 0 ? n : size[0] * size[1] * size[2] - 1 - n;
-            const int i = m % size[0], j = (m / size[0]) % size[1], k = m / (size[0] * size[1]);
+            const int m = pass == 0 ? n : extent[0] * extent[1] * extent[2] - 1 - n;
+            const int i = m % extent[0], j = (m / extent[0]) % extent[1], k = m / (extent[0] * extent[1]);
             float& d = distance[std::size_t(m)];
             if (d == 0.0f)
                 continue;
@@ -62,14 +66,14 @@ void centreInLumen(const CtVolume& ct, detail::FrontSeed& seed)
                         const int ii = i + di, jj = j + dj, kk = k + dk;
                         const bool before = pass == 0 ? (dk < 0 || (dk == 0 && (dj < 0 || (dj == 0 && di < 0))))
                                                       : (dk > 0 || (dk == 0 && (dj > 0 || (dj == 0 && di > 0))));
-                        if (!before || ii < 0 || jj < 0 || kk < 0 || ii >= size[0] || jj >= size[1] || kk >= size[2])
+                        if (!before || ii < 0 || jj < 0 || kk < 0 || ii >= extent[0] || jj >= extent[1] || kk >= extent[2])
                             continue;
                         d = std::min(d, distance[at(ii, jj, kk)] + float(Vector3d(di * s.x(), dj * s.y(), dk * s.z()).norm()));
                     }
         }
-    int ci = std::clamp(int(std::lround(index.x())) - low[0], 0, size[0] - 1);
-    int cj = std::clamp(int(std::lround(index.y())) - low[1], 0, size[1] - 1);
-    int ck = std::clamp(int(std::lround(index.z())) - low[2], 0, size[2] - 1);
+    int ci = std::clamp(int(std::lround(index.x())) - low[0], 0, extent[0] - 1);
+    int cj = std::clamp(int(std::lround(index.y())) - low[1], 0, extent[1] - 1);
+    int ck = std::clamp(int(std::lround(index.z())) - low[2], 0, extent[2] - 1);
     for (bool moved = true; moved;)
     {
         moved = false;
@@ -79,7 +83,7 @@ void centreInLumen(const CtVolume& ct, detail::FrontSeed& seed)
                 for (int di = -1; di <= 1; ++di)
                 {
                     const int ii = ci + di, jj = cj + dj, kk = ck + dk;
-                    if (ii >= 0 && jj >= 0 && kk >= 0 && ii < size[0] && jj < size[1] && kk < size[2] &&
+                    if (ii >= 0 && jj >= 0 && kk >= 0 && ii < extent[0] && jj < extent[1] && kk < extent[2] &&
                         distance[at(ii, jj, kk)] > distance[at(bi, bj, bk)])
                         bi = ii, bj = jj, bk = kk;
                 }
@@ -243,13 +247,17 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
     if (const std::string why = whyNotHounsfield(ct); !why.empty())
         throw Error("the intensities are not CT Hounsfield units (" + why +
                     "): import the CT rescaled to HU (vascusim-cli import --rescale SLOPE,INTERCEPT), not MR");
-    if (request.includeMm.empty())
+    std::vector<Vector3d> includes = request.includeMm;
+    const bool automatic = includes.empty() && request.target == SegmentationTarget::Aorta;
+    if (automatic)
+        includes.push_back(findAbdominalAortaPoint(ct));
+    if (includes.empty())
         throw Error("the guided segmentation needs at least one include point inside the vessel");
-    if (request.includeMm.size() + request.excludeMm.size() > 250)
+    if (includes.size() + request.excludeMm.size() > 250)
         throw Error("at most 250 include and exclude points");
     const double maxLength = request.maxLengthMm.value_or(defaultMaxLength(request.target));
     std::vector<detail::FrontSeed> seeds;
-    for (const Vector3d& p : request.includeMm)
+    for (const Vector3d& p : includes)
     {
         seeds.push_back(seedWindow(ct, p, true));
         seeds.back().maxLengthMm = maxLength;
@@ -284,7 +292,8 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
 
     SegmentationResult result;
     result.label = std::move(waves.label);
-    result.seedMm = request.includeMm.front();
+    result.seedMm = seeds.front().pointMm;
+    result.seedFound = automatic;
     std::size_t voxels = std::size_t(std::count(result.label.data(), result.label.data() + ct.geometry().voxelCount(), 1));
     double lower = 1e9, upper = -1e9;
     for (const detail::FrontSeed& seed : seeds)

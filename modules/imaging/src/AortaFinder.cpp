@@ -1,0 +1,158 @@
+// The automatic abdominal aorta point (GuidedSegmentation.h findAbdominalAortaPoint): slice by slice the round,
+// bright cross-section of 14..56 mm in front of the vertebral body, kept where neighbouring slices agree.
+
+#include "vsim/imaging/GuidedSegmentation.h"
+
+#include "SlicePieces.h"
+
+#include "vsim/core/Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace vsim::imaging {
+namespace {
+
+using Eigen::Vector3d;
+
+constexpr double kContrastHu = 150.0, kBoneCortexHu = 600.0; ///< enhanced blood window (smoothed HU)
+constexpr double kMinAreaMm2 = 150.0, kMaxAreaMm2 = 2500.0;   ///< 14..56 mm equivalent diameter
+constexpr double kRoundness = 0.85;                           ///< share of the equivalent disc inside the piece
+constexpr double kSpineHu = 200.0, kSpineShare = 0.3;         ///< bone behind: that share of a 30 x 30 mm window
+constexpr double kTrackStepMm = 15.0;                         ///< largest shift between sampled slices
+constexpr double kCortexBorderShare = 0.3;                    ///< bone: its core bordered by cortex
+
+struct Candidate
+{
+    int k = 0;
+    Vector3d centreMm = Vector3d::Zero();
+    double meanHu = 0.0;
+};
+
+/// The in-plane 3 x 3 binomial mean of slice k.
+std::vector<float> smoothedSlice(const CtVolume& ct, int k)
+{
+    const VolumeGeometry& g = ct.geometry();
+    const int nx = g.dims[0], ny = g.dims[1];
+    std::vector<float> out(std::size_t(nx) * std::size_t(ny));
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i)
+        {
+            double sum = 0.0;
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di)
+                    sum += double((2 - std::abs(di)) * (2 - std::abs(dj))) *
+                           ct.at(std::clamp(i + di, 0, nx - 1), std::clamp(j + dj, 0, ny - 1), k);
+            out[std::size_t(i) + std::size_t(nx) * std::size_t(j)] = float(sum / 16.0);
+        }
+    return out;
+}
+
+/// The round bright pieces of slice k with bone behind them (patient +y is posterior).
+std::vector<Candidate> sliceCandidates(const CtVolume& ct, int k)
+{
+    const VolumeGeometry& g = ct.geometry();
+    const int nx = g.dims[0], ny = g.dims[1];
+    const double pixelArea = g.spacing.x() * g.spacing.y();
+    const std::vector<float> hu = smoothedSlice(ct, k);
+    const auto inWindow = [&](int i, int j) {
+        const float v = hu[std::size_t(i) + std::size_t(nx) * std::size_t(j)];
+        return v >= kContrastHu && v <= kBoneCortexHu;
+    };
+    std::vector<Candidate> candidates;
+    for (const std::vector<std::uint32_t>& piece : detail::slicePieces(nx, ny, inWindow))
+    {
+        const double area = double(piece.size()) * pixelArea;
+        if (area < kMinAreaMm2 || area > kMaxAreaMm2)
+            continue;
+        double ci = 0.0, cj = 0.0, sumHu = 0.0;
+        for (std::size_t p : piece)
+            ci += double(p % std::size_t(nx)), cj += double(p / std::size_t(nx)), sumHu += hu[p];
+        ci /= double(piece.size()), cj /= double(piece.size());
+        // Roundness: the share of the disc of the same area around the centroid that the piece fills.
+        const double radius = std::sqrt(area / std::numbers::pi);
+        std::size_t inDisc = 0, disc = 0;
+        const int ri = int(std::ceil(radius / g.spacing.x())), rj = int(std::ceil(radius / g.spacing.y()));
+        for (int j = int(cj) - rj; j <= int(cj) + rj; ++j)
+            for (int i = int(ci) - ri; i <= int(ci) + ri; ++i)
+            {
+                if (i < 0 || j < 0 || i >= nx || j >= ny ||
+                    std::hypot((i - ci) * g.spacing.x(), (j - cj) * g.spacing.y()) > radius)
+                    continue;
+                ++disc;
+                const float v = hu[std::size_t(i) + std::size_t(nx) * std::size_t(j)];
+                inDisc += v >= kContrastHu && v <= kBoneCortexHu;
+            }
+        if (disc == 0 || double(inDisc) / double(disc) < kRoundness)
+            continue;
+        // Not bone: a vertebral body's cancellous core is bordered by cortex; an aorta by its wall and fat.
+        std::size_t border = 0, cortex = 0;
+        for (std::size_t p : piece)
+        {
+            const int i = int(p % std::size_t(nx)), j = int(p / std::size_t(nx));
+            for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}})
+            {
+                const int ii = i + di, jj = j + dj;
+                if (ii < 0 || jj < 0 || ii >= nx || jj >= ny)
+                    continue;
+                const float v = hu[std::size_t(ii) + std::size_t(nx) * std::size_t(jj)];
+                if (v >= kContrastHu && v <= kBoneCortexHu)
+                    continue;
+                ++border;
+                cortex += v > kBoneCortexHu;
+            }
+        }
+        if (border == 0 || double(cortex) / double(border) > kCortexBorderShare)
+            continue;
+        // Bone behind: a 30 x 30 mm window from just behind the piece, centred 10 mm towards the midline's side.
+        const Vector3d centre = g.indexToPatient(Vector3d(ci, cj, k));
+        std::size_t bone = 0, behind = 0;
+        for (double dy = radius + 2.0; dy <= radius + 32.0; dy += g.spacing.y())
+            for (double dx = -25.0; dx <= 5.0; dx += g.spacing.x())
+            {
+                const Vector3d index = g.patientToIndex(centre + Vector3d(dx, dy, 0.0));
+                const int i = int(std::lround(index.x())), j = int(std::lround(index.y()));
+                if (i < 0 || j < 0 || i >= nx || j >= ny)
+                    continue;
+                ++behind;
+                bone += hu[std::size_t(i) + std::size_t(nx) * std::size_t(j)] > kSpineHu;
+            }
+        if (behind == 0 || double(bone) / double(behind) < kSpineShare)
+            continue;
+        candidates.push_back({k, centre, sumHu / double(piece.size())});
+    }
+    return candidates;
+}
+
+} // namespace
+
+Eigen::Vector3d findAbdominalAortaPoint(const CtVolume& ct)
+{
+    const VolumeGeometry& g = ct.geometry();
+    const int step = std::max(1, int(std::lround(4.0 / g.spacing.z())));
+    std::vector<Candidate> best; // one per sampled slice: the brightest round piece with bone behind it
+    for (int k = 0; k < g.dims[2]; k += step)
+    {
+        const std::vector<Candidate> found = sliceCandidates(ct, k);
+        if (!found.empty())
+            best.push_back(*std::max_element(found.begin(), found.end(),
+                                             [](const Candidate& a, const Candidate& b) { return a.meanHu < b.meanHu; }));
+    }
+    // The longest run of sampled slices whose pieces line up (each within kTrackStepMm of the last).
+    std::size_t runStart = 0, bestStart = 0, bestLength = 0;
+    for (std::size_t n = 0; n < best.size(); ++n)
+    {
+        if (n > 0 && (best[n].k - best[n - 1].k != step ||
+                      (best[n].centreMm - best[n - 1].centreMm).head<2>().norm() > kTrackStepMm))
+            runStart = n;
+        if (n - runStart + 1 > bestLength)
+            bestLength = n - runStart + 1, bestStart = runStart;
+    }
+    if (bestLength < 3)
+        throw Error("no abdominal aorta found (a round contrast-filled cross-section in front of the spine in three "
+                    "neighbouring slices): give a point inside it with --seed x,y,z");
+    return best[bestStart + bestLength / 2].centreMm;
+}
+
+} // namespace vsim::imaging
