@@ -18,7 +18,7 @@ fs::path ensureDemoStudy(const fs::path& bundle, const Progress& progress)
     // A new, empty or interrupted demo folder (marked by Study::create); a folder of anyone else's is refused.
     study::Study demo = study::Study::create(bundle, "Demo: abdominal aortic aneurysm (aaa phantom)");
     const fs::path scratch = bundle.parent_path() / (bundle.filename().string() + ".phantom");
-    const dicom::PhantomOptions options; // full size, defaults of `vascusim-cli phantom aaa`
+    const dicom::PhantomOptions options; // full size, the analytic style (the CLI defaults to the patient-like one)
     const dicom::PhantomFiles phantom =
         dicom::writePhantom(dicom::PhantomKind::Aaa, options, dicom::phantomSeriesDescription(dicom::PhantomKind::Aaa),
                             scratch, progress.subRange(0.0, 0.6));
