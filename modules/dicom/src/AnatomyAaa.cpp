@@ -21,16 +21,11 @@ double skewedBump(double z, double peak, double above, double below)
     return std::abs(u) >= 1.0 ? 0.0 : 0.5 * (1.0 + std::cos(std::numbers::pi * u));
 }
 
-Vector3d at(const Vector3d& offset)
-{
-    return kPhantomCentre + offset;
-}
-
 } // namespace
 
 AnatomyPhantom buildAnatomyAaa(const PhantomOptions& options, const ScannerSettings& scanner)
 {
-    std::mt19937_64 random(options.seed * 0x9E3779B97F4A7C15ull + 0xAAA);
+    std::mt19937_64 random = anatomyRandom(options.seed, 0xAAA);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     AnatomyPhantom phantom;
     phantom.kind = PhantomKind::Aaa;

@@ -14,6 +14,18 @@ namespace vsim::dicom::detail {
 
 using Eigen::Vector3d;
 
+/// A position given as an offset (mm) from kPhantomCentre, where every phantom is centred.
+inline Vector3d at(const Vector3d& offset)
+{
+    return kPhantomCentre + offset;
+}
+
+/// The anatomy's own random stream: the phantom's seed mixed with a per-kind salt (independent of the scanner's).
+inline std::mt19937_64 anatomyRandom(std::uint64_t seed, std::uint64_t salt)
+{
+    return std::mt19937_64(seed * 0x9E3779B97F4A7C15ull + salt);
+}
+
 /// A curve sampled about every millimetre: positions (mm) and arc length from its start (mm).
 struct SampledCurve
 {

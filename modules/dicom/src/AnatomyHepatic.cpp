@@ -14,11 +14,6 @@
 namespace vsim::dicom::detail {
 namespace {
 
-Vector3d at(const Vector3d& offset)
-{
-    return kPhantomCentre + offset;
-}
-
 constexpr double kPortalPerArteryRadius = 2.6, kPortalMaxRadius = 7.0, kTouchGapMm = 0.1;
 constexpr double kTaper = 0.9, kLengthRatio = 0.75, kBranchAngleDeg = 35.0;
 
@@ -81,7 +76,7 @@ struct Builder
 
 AnatomyPhantom buildAnatomyHepatic(const PhantomOptions& options, const ScannerSettings& scanner)
 {
-    std::mt19937_64 random(options.seed * 0x9E3779B97F4A7C15ull + 0x4E9);
+    std::mt19937_64 random = anatomyRandom(options.seed, 0x4E9);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     AnatomyPhantom phantom;
     phantom.kind = PhantomKind::HepaticTree;

@@ -21,7 +21,7 @@ double raisedCosine(double x, double halfLength)
 
 AnatomyPhantom buildAnatomyStenosis(const PhantomOptions& options, const ScannerSettings& scanner)
 {
-    std::mt19937_64 random(options.seed * 0x9E3779B97F4A7C15ull + 0x57E);
+    std::mt19937_64 random = anatomyRandom(options.seed, 0x57E);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     AnatomyPhantom phantom;
     phantom.kind = PhantomKind::Stenosis;

@@ -18,11 +18,6 @@ constexpr double kDiscHu = 85.0, kCsfHu = 15.0, kLiverHu = 95.0, kSpleenHu = 115
 constexpr double kKidneyMedullaHu = 95.0, kBowelWallHu = 45.0, kGasHu = -950.0, kFluidHu = 15.0;
 constexpr double kVenaCavaHu = 95.0, kRenalVeinHu = 170.0;
 
-Vector3d at(const Vector3d& offset)
-{
-    return kPhantomCentre + offset;
-}
-
 void addSpine(AnatomyPhantom& phantom)
 {
     auto& layers = phantom.layers;
