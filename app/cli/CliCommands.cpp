@@ -14,6 +14,8 @@
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselMeasurements.h"
+#include "vsim/imaging/VesselNames.h"
+#include "vsim/app/SegmentNames.h"
 #include "vsim/imaging/GuidedSegmentation.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
@@ -394,6 +396,15 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress)
         length += edge.length();
     std::cout << "centerlines of " << skeletonId << " as " << id << ": " << centerlines.edges.size()
               << " paths, " << numberText(length) << " mm in all\n";
+    std::string named;
+    std::size_t unnamed = 0;
+    for (const std::string& name : app::segmentNames(study, id, centerlines))
+        if (name == imaging::kUnnamedSegment)
+            ++unnamed;
+        else if (named.find(name) == std::string::npos)
+            named += (named.empty() ? "" : ", ") + name;
+    std::cout << "anatomical names: " << (named.empty() ? "none" : named) << "; " << unnamed
+              << " segment(s) unnamed (vascusim-cli rename-segment names them)\n";
     return 0;
 }
 
@@ -411,9 +422,16 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
     const imaging::VesselMeasurements result = imaging::measureVessels(
         study.loadLabel(labelId), study.loadSkeleton(centerlinesId), parameters, progress.subRange(0.0, 0.95));
 
+    const std::vector<std::string> names =
+        app::segmentNames(study, centerlinesId, study.loadSkeleton(centerlinesId));
+    const auto titleOf = [&](std::size_t index) {
+        const auto& s = result.segments[index];
+        return app::segmentTitle(index < names.size() ? names[index] : imaging::kUnnamedSegment, s.from, s.to);
+    };
     nlohmann::json segments = nlohmann::json::array();
-    for (const imaging::SegmentMeasurements& s : result.segments)
+    for (std::size_t index = 0; index < result.segments.size(); ++index)
     {
+        const imaging::SegmentMeasurements& s = result.segments[index];
         nlohmann::json sections = nlohmann::json::array();
         for (const imaging::CrossSection& c : s.sections)
             sections.push_back({{"arc_mm", c.arcLengthMm},
@@ -423,7 +441,9 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
                                 {"min_diameter_mm", c.minDiameterMm},
                                 {"max_diameter_mm", c.maxDiameterMm},
                                 {"near_junction", c.nearJunction}});
-        segments.push_back({{"from_node", s.from},
+        segments.push_back({{"segment", index},
+                            {"name", index < names.size() ? names[index] : std::string(imaging::kUnnamedSegment)},
+                            {"from_node", s.from},
                             {"to_node", s.to},
                             {"length_mm", s.lengthMm},
                             {"start_radius_mm", s.startRadiusMm},
@@ -452,19 +472,47 @@ int measureStudy(const Arguments& arguments, const Progress& progress)
             throw Error("cannot write the measurements", {{"file", arguments.option("json")}});
     }
     progress.report(1.0, "measured");
-    std::cout << "maximum diameter " << numberText(result.maxDiameterMm) << " mm (largest caliper "
-              << numberText(result.maxCaliperMm) << " mm)\n";
+    std::cout << "maximum lumen diameter " << numberText(result.maxDiameterMm)
+              << " mm (equivalent diameter of the lumen, perpendicular to the centerline; largest caliper "
+              << numberText(result.maxCaliperMm) << " mm; the AAA outer diameter: vascusim-cli sac)\n";
     if (result.worstStenosisSegment >= 0)
     {
         const auto& worst = result.segments[std::size_t(result.worstStenosisSegment)];
-        std::cout << "worst stenosis " << numberText(worst.diameterStenosisPercent) << " % diameter, "
-                  << numberText(worst.areaStenosisPercent) << " % area (nodes " << worst.from << "-" << worst.to
-                  << ", minimal " << numberText(worst.minimalDiameterMm) << " mm of "
-                  << numberText(worst.referenceDiameterMm) << " mm)\n";
+        std::cout << "worst narrowing " << numberText(worst.diameterStenosisPercent) << " % diameter, "
+                  << numberText(worst.areaStenosisPercent) << " % area (" << titleOf(std::size_t(result.worstStenosisSegment))
+                  << ", minimal " << numberText(worst.minimalDiameterMm) << " mm of reference "
+                  << numberText(worst.referenceDiameterMm) << " mm, lumen equivalent diameters)\n";
     }
-    for (const imaging::SegmentMeasurements& s : result.segments)
-        std::cout << "segment " << s.from << "-" << s.to << ": " << numberText(s.lengthMm) << " mm, radii "
+    for (std::size_t index = 0; index < result.segments.size(); ++index)
+    {
+        const imaging::SegmentMeasurements& s = result.segments[index];
+        std::cout << "segment " << index << " " << titleOf(index) << ": " << numberText(s.lengthMm) << " mm, radii "
                   << numberText(s.startRadiusMm) << " -> " << numberText(s.endRadiusMm) << " mm\n";
+    }
+    return 0;
+}
+
+int renameSegmentInStudy(const Arguments& arguments, const Progress& progress)
+{
+    study::Study study = openStudyForWriting(arguments);
+    const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
+    const std::string text = arguments.option("segment");
+    std::size_t consumed = 0;
+    long index = -1;
+    try
+    {
+        index = std::stol(text, &consumed);
+    }
+    catch (const std::exception&)
+    {
+    }
+    if (consumed != text.size() || index < 0)
+        throw Error("--segment takes a segment number as measure lists it (0, 1, ...)", {{"segment", text}});
+    app::renameSegment(study, centerlinesId, std::size_t(index), arguments.option("name"));
+    study.save();
+    progress.report(1.0, "saved");
+    std::cout << "segment " << index << " of " << centerlinesId << " is now named \"" << arguments.option("name")
+              << "\"\n";
     return 0;
 }
 

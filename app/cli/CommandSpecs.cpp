@@ -79,6 +79,11 @@ std::vector<CommandSpec> declareCommands()
          "measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE [--overwrite]] [--param key=value ...]\n"
          "    cross-sections, lengths, radii, maximum diameter, stenosis (reads the study only)",
          measureStudy},
+        {"rename-segment", 0, 0, {kStudy, value("centerlines"), required("segment"), required("name"), kWait},
+         "rename-segment --study <study.vsim> [--centerlines ID] --segment N --name TEXT [--wait s]\n"
+         "    name a centerline segment (N as `measure` lists it) where the automatic anatomical name is wrong or\n"
+         "    \"unnamed\"; kept with the study and used by measure, the workstation and the report",
+         renameSegmentInStudy},
         {"mesh wall", 1, 1,
          {kStudy, value("label"), value("centerlines"), value("thickness"), value("target-vertices"), kWait},
          "mesh wall --study <study.vsim> [--label ID] [--centerlines ID] [--thickness 1.5mm] [--target-vertices 3000]\n"

@@ -109,16 +109,27 @@ if(NOT skeletonised MATCHES "as skeleton-[0-9]+: [0-9]+ endpoints, [0-9]+ juncti
 endif()
 
 run_cli(0 centerlined err centerline --study ${WORK}/aaa.vsim)
-if(NOT centerlined MATCHES "centerlines of skeleton-[0-9]+ as skeleton-[0-9]+: [0-9]+ paths")
+if(NOT centerlined MATCHES "centerlines of skeleton-[0-9]+ as skeleton-[0-9]+: [0-9]+ paths"
+   OR NOT centerlined MATCHES "anatomical names: ")
     message(FATAL_ERROR "centerline output:\n${centerlined}")
 endif()
 run_cli(1 out err centerline --study ${WORK}/aaa.vsim --from 0 --to 999)
 run_cli(0 measured err measure --study ${WORK}/aaa.vsim --json ${WORK}/measurements.json)
 file(READ ${WORK}/measurements.json measurements)
 string(JSON max_diameter GET "${measurements}" max_diameter_mm)
-if(NOT measured MATCHES "maximum diameter" OR max_diameter LESS 40 OR max_diameter GREATER 70)
+if(NOT measured MATCHES "maximum lumen diameter" OR max_diameter LESS 40 OR max_diameter GREATER 70
+   OR NOT measured MATCHES "segment [0-9]+ [a-z ]+( \\(nodes [0-9]+-[0-9]+\\))?: ")
     message(FATAL_ERROR "measure: maximum diameter ${max_diameter} mm (the phantom's is 55 mm):\n${measured}")
 endif()
+# The user's name for a segment: kept with the study, used by measure; a bad number or empty name refused.
+run_cli(0 renamed err rename-segment --study ${WORK}/aaa.vsim --segment 0 --name "graft limb")
+run_cli(0 measured err measure --study ${WORK}/aaa.vsim)
+if(NOT measured MATCHES "segment 0 graft limb: ")
+    message(FATAL_ERROR "measure after rename-segment:\n${measured}")
+endif()
+run_cli(1 out err rename-segment --study ${WORK}/aaa.vsim --segment 999 --name x)
+run_cli(1 out err rename-segment --study ${WORK}/aaa.vsim --segment first --name x)
+run_cli(1 out err rename-segment --study ${WORK}/aaa.vsim --segment 0 --name " ")
 
 # A folder of junk: non-zero exit, one line saying why.
 file(WRITE ${WORK}/junk/a.txt "not DICOM")
