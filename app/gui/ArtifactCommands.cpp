@@ -1,6 +1,7 @@
 #include "ArtifactCommands.h"
 
 #include "StudyDocument.h"
+#include "vsim/app/SegmentNames.h"
 
 namespace vsim::gui {
 
@@ -20,6 +21,26 @@ void RenameArtifactCommand::redo()
 void RenameArtifactCommand::undo()
 {
     m_document.study().renameArtifact(m_id, m_oldName);
+    m_document.notifyChanged();
+}
+
+RenameSegmentCommand::RenameSegmentCommand(StudyDocument& document, std::string centerlinesId, std::size_t segment,
+                                           std::string name)
+    : m_document(document), m_id(std::move(centerlinesId)), m_segment(segment), m_name(std::move(name)),
+      m_oldAttributes(document.study().artifact(m_id).attributes)
+{
+    setText(QObject::tr("Name segment %1 \"%2\"").arg(segment).arg(QString::fromStdString(m_name)));
+}
+
+void RenameSegmentCommand::redo()
+{
+    app::renameSegment(m_document.study(), m_id, m_segment, m_name);
+    m_document.notifyChanged();
+}
+
+void RenameSegmentCommand::undo()
+{
+    m_document.study().setArtifactAttributes(m_id, m_oldAttributes);
     m_document.notifyChanged();
 }
 

@@ -3,6 +3,7 @@
 #include <QString>
 #include <QUndoCommand>
 
+#include <map>
 #include <string>
 
 namespace vsim::gui {
@@ -22,6 +23,22 @@ private:
     std::string m_id;
     std::string m_oldName;
     std::string m_newName;
+};
+
+/// Gives a centerline segment the user's name (app::renameSegment); undo restores the names before.
+class RenameSegmentCommand : public QUndoCommand
+{
+public:
+    RenameSegmentCommand(StudyDocument& document, std::string centerlinesId, std::size_t segment, std::string name);
+    void redo() override;
+    void undo() override;
+
+private:
+    StudyDocument& m_document;
+    std::string m_id;
+    std::size_t m_segment;
+    std::string m_name;
+    std::map<std::string, std::string> m_oldAttributes;
 };
 
 /// Removes an artifact; undo puts it back (its data is kept in memory by the study).

@@ -176,7 +176,10 @@ private:
     /// Overlays a label in the three MPRs (an empty one clears them).
     void showLabelOverlay(const LabelVolume& label);
     /// Fills the Measurements dock; each row keeps the patient position (mm) it jumps to.
-    void showMeasurements(const imaging::VesselMeasurements& measurements);
+    /// The measurement dock: one row per segment titled by its anatomical name (`names`, one per segment) of the
+    /// centerlines `centerlinesId`; double-clicking a name renames the segment (undoable).
+    void showMeasurements(const imaging::VesselMeasurements& measurements, const std::vector<std::string>& names,
+                          const std::string& centerlinesId);
     /// The newest undamaged artifact of a kind, or an empty string.
     std::string newestArtifact(study::ArtifactKind kind) const;
     void createDocks();
@@ -196,6 +199,7 @@ private:
     ViewLayout* m_views = nullptr;
     QTreeWidget* m_artifactTree = nullptr;
     QTableWidget* m_measurementTable = nullptr;
+    std::string m_measuredCenterlines; // the centerlines the measurement dock shows
     QListWidget* m_workflow = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;

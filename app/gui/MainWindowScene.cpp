@@ -5,6 +5,7 @@
 // study and applied when it is opened again.
 
 #include "MainWindow.h"
+#include "vsim/app/SegmentNames.h"
 #include "ViewLayout.h"
 #include "ViewState.h"
 #include "vsim/app/RunRecord.h"
@@ -53,7 +54,12 @@ void MainWindow::refreshScene()
     }
     const auto measured = m_scene.measurements.find(content.measuredCenterlines);
     if (measured != m_scene.measurements.end())
-        showMeasurements(measured->second);
+    {
+        const auto& study = m_document.study();
+        showMeasurements(measured->second,
+                         app::segmentNames(study, content.measuredCenterlines, study.loadSkeleton(content.measuredCenterlines)),
+                         content.measuredCenterlines);
+    }
     else
         m_measurementTable->setRowCount(0);
     if (m_interactiveWall)

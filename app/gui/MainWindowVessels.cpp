@@ -3,6 +3,8 @@
 
 #include "ArtifactCommands.h"
 #include "MainWindow.h"
+#include "StudyDocument.h"
+#include "vsim/app/SegmentNames.h"
 #include "ParameterForm.h"
 #include "ViewLayout.h"
 #include "vsim/imaging/Centerlines.h"
@@ -14,6 +16,7 @@
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QDockWidget>
+#include <QInputDialog>
 #include <QHeaderView>
 #include <QMenu>
 #include <QMenuBar>
@@ -27,6 +30,7 @@ namespace vsim::gui {
 namespace {
 
 constexpr int kPositionRole = Qt::UserRole + 1;
+constexpr int kSegmentRole = Qt::UserRole + 2; // the segment's index, on the rows of segments
 
 QTableWidgetItem* number(double value, int decimals)
 {
@@ -59,6 +63,18 @@ void MainWindow::createMeasurementDock()
     m_measurementTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_measurementTable->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_measurementTable->verticalHeader()->hide();
+    connect(m_measurementTable, &QTableWidget::cellDoubleClicked, this, [this](int row, int column) {
+        const QVariant segment = m_measurementTable->item(row, 0)->data(kSegmentRole);
+        if (column != 0 || !segment.isValid() || m_measuredCenterlines.empty() || m_tasks.isBusy())
+            return;
+        bool ok = false;
+        const QString name = QInputDialog::getText(this, tr("Name Segment"), tr("Anatomical name of the segment:"),
+                                                   QLineEdit::Normal, m_measurementTable->item(row, 0)->text(), &ok)
+                                 .trimmed();
+        if (ok && !name.isEmpty())
+            m_document.undoStack()->push(new RenameSegmentCommand(m_document, m_measuredCenterlines,
+                                                                  std::size_t(segment.toULongLong()), name.toStdString()));
+    });
     connect(m_measurementTable, &QTableWidget::cellClicked, this, [this](int row, int) {
         const QVariant position = m_measurementTable->item(row, 0)->data(kPositionRole);
         if (position.isValid())
@@ -73,13 +89,21 @@ void MainWindow::createMeasurementDock()
     addDockWidget(Qt::BottomDockWidgetArea, dock);
 }
 
-void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurements)
+void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurements, const std::vector<std::string>& names,
+                                  const std::string& centerlinesId)
 {
+    m_measuredCenterlines = centerlinesId;
     m_measurementTable->setRowCount(0);
-    auto addRow = [&](const QString& name, const imaging::SegmentMeasurements& s, const imaging::CrossSection* jump) {
+    auto addRow = [&](const QString& name, const imaging::SegmentMeasurements& s, const imaging::CrossSection* jump,
+                      int segment) {
         const int row = m_measurementTable->rowCount();
         m_measurementTable->insertRow(row);
         auto* label = new QTableWidgetItem(name);
+        if (segment >= 0)
+        {
+            label->setData(kSegmentRole, segment);
+            label->setToolTip(tr("Segment %1 (nodes %2-%3); double-click to rename").arg(segment).arg(s.from).arg(s.to));
+        }
         if (jump)
             label->setData(kPositionRole, QVector3D(float(jump->centre.x()), float(jump->centre.y()), float(jump->centre.z())));
         m_measurementTable->setItem(row, 0, label);
@@ -95,9 +119,14 @@ void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurement
     const auto widest = std::max_element(measurements.segments.begin(), measurements.segments.end(),
                                          [](const auto& a, const auto& b) { return a.maxDiameterMm < b.maxDiameterMm; });
     if (widest != measurements.segments.end())
-        addRow(tr("Maximum diameter %1 mm").arg(measurements.maxDiameterMm, 0, 'f', 1), *widest, sectionOf(*widest, true));
-    for (const imaging::SegmentMeasurements& s : measurements.segments)
-        addRow(QString("%1 - %2").arg(s.from).arg(s.to), s, sectionOf(s, false));
+        addRow(tr("Maximum lumen diameter %1 mm (equivalent, perpendicular)").arg(measurements.maxDiameterMm, 0, 'f', 1),
+               *widest, sectionOf(*widest, true), -1);
+    for (std::size_t index = 0; index < measurements.segments.size(); ++index)
+    {
+        const imaging::SegmentMeasurements& s = measurements.segments[index];
+        addRow(QString::fromStdString(app::segmentTitle(index < names.size() ? names[index] : "unnamed", s.from, s.to)),
+               s, sectionOf(s, false), int(index));
+    }
     m_measurementTable->resizeColumnsToContents();
 }
 

@@ -2,12 +2,15 @@
 // MPRs, lumen surface in the 3D view), then skeleton and centerlines as one undo step, drawn over the surface;
 // parameters from the declarations' form; the brush paints and erases with undo, and its result becomes a new
 // label artifact; without an image the step says what to do first.
+#include "ArtifactCommands.h"
 #include "DicomFixtures.h"
 #include "GuiTestMain.h"
 #include "LabelEditSession.h"
 #include "MainWindow.h"
 #include "ParameterForm.h"
+#include "StudyDocument.h"
 #include "ViewLayout.h"
+#include "vsim/app/SegmentNames.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 #include "vsim/imaging/VesselSegmentation.h"
@@ -66,6 +69,15 @@ private slots:
         const double maximum = table->item(0, 7)->text().toDouble();
         qInfo("measurement table: %d rows, maximum diameter %.2f mm", table->rowCount(), maximum);
         QVERIFY(std::abs(maximum - 55.0) < 4.0);
+        // Segment rows carry their anatomical name (or "unnamed (nodes a-b)"); naming one is one undo step.
+        QVERIFY(!table->item(1, 0)->text().isEmpty() && table->item(1, 0)->toolTip().contains("double-click"));
+        const std::string centerlinesId = artifacts[3].id;
+        const SkeletonGraph centerlines = window.document().study().loadSkeleton(centerlinesId);
+        const std::vector<std::string> automatic = app::segmentNames(window.document().study(), centerlinesId, centerlines);
+        window.document().undoStack()->push(new gui::RenameSegmentCommand(window.document(), centerlinesId, 0, "graft limb"));
+        QCOMPARE(app::segmentNames(window.document().study(), centerlinesId, centerlines)[0], std::string("graft limb"));
+        window.document().undoStack()->undo();
+        QCOMPARE(app::segmentNames(window.document().study(), centerlinesId, centerlines), automatic);
         emit table->cellClicked(0, 0);
         const Eigen::Vector3d cursor = window.views()->sliceView(viz::SliceOrientation::Axial)->cursor();
         QVERIFY(std::abs(cursor.z() - phantom.model.measures.at("aneurysm_centre_z_mm")) < 25.0);
