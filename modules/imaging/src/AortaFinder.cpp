@@ -1,5 +1,7 @@
 // The automatic abdominal aorta point (GuidedSegmentation.h findAbdominalAortaPoint): slice by slice the round,
-// bright cross-section of 14..56 mm in front of the vertebral body, kept where neighbouring slices agree.
+// bright cross-section of 14..56 mm in front of the vertebral body, kept where neighbouring slices agree. A
+// vertebral body's core blurred with its cortex can look the same (round, 150..600 HU, bone behind it: the
+// arches): of two candidates one in front of the other, only the front one is kept.
 
 #include "vsim/imaging/GuidedSegmentation.h"
 
@@ -122,7 +124,16 @@ std::vector<Candidate> sliceCandidates(const CtVolume& ct, int k)
             continue;
         candidates.push_back({k, centre, sumHu / double(piece.size())});
     }
-    return candidates;
+    // The aorta lies in front of the vertebral body: a candidate with another one in front of it (10..70 mm
+    // anterior, within 40 mm to either side) is the vertebral body's blurred core, not blood.
+    std::vector<Candidate> inFront;
+    for (const Candidate& c : candidates)
+        if (std::none_of(candidates.begin(), candidates.end(), [&](const Candidate& other) {
+                const Vector3d d = other.centreMm - c.centreMm;
+                return d.y() <= -10.0 && d.y() >= -70.0 && std::abs(d.x()) <= 40.0;
+            }))
+            inFront.push_back(c);
+    return inFront;
 }
 
 } // namespace

@@ -19,6 +19,8 @@ using Eigen::Vector3d;
 constexpr double kSoftTissueCeilingHu = 200.0;
 /// Voxels touching a voxel this far above a front's window are bone or calcium, not blood.
 constexpr double kBoneMarginHu = 150.0;
+constexpr double kCoreRadiusMm = 5.0;   // include points in lumens at least this wide get a core level (hysteresis)
+constexpr double kCoreFraction = 0.6;  // the core level: this far from the lower level to the blood
 
 std::string mmText(const Vector3d& p)
 {
@@ -186,6 +188,12 @@ detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool inc
         std::nth_element(core.begin(), core.begin() + std::ptrdiff_t(core.size() / 2), core.end());
         const double lumen = core[core.size() / 2];
         seed.lowerHu = tissueHu + 0.5 * (lumen - tissueHu);
+        // An aorta-sized lumen (inscribed radius >= 5 mm) is crossed only through voxels 60 % of the way from the
+        // lower level to its blood: its rim touches the vertebral body, whose cancellous bone (150..250 HU) lies
+        // inside a window that reaches down half-way to fat. Small vessels keep the plain window (their centres
+        // are dimmed by the scanner's blur).
+        if (seed.inscribedRadiusMm >= kCoreRadiusMm)
+            seed.coreHu = seed.lowerHu + kCoreFraction * (lumen - seed.lowerHu);
     }
     return seed;
 }

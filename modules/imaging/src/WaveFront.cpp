@@ -146,7 +146,9 @@ public:
             m_state[v] = kFinal;
             if (seed.include)
                 wave.push_back(v);
-            expand(v, node.dist, seed);
+            float brightest = 0.0f;
+            if (!seed.include || smoothed(v, brightest) >= seed.coreHu)
+                expand(v, node.dist, seed);
             if (++popped % 65536 == 0)
                 progress.report(std::min(0.95, double(currentWave) * m_settings.waveWidthMm /
                                                    std::max(1.0, std::min(1000.0, longestReach()))),

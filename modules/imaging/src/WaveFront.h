@@ -25,6 +25,10 @@ struct FrontSeed
     double branchLengthMm = 1e9;    ///< path length allowed into a branch (cross-section < a quarter of the trunk's)
     double inscribedRadiusMm = 0.0; ///< radius of the largest ball of accepted voxels at the point
     double boneHu = 1e9;            ///< include fronts refuse voxels touching raw HU above this (bone, calcium)
+    /// The front grows on from a voxel only if its smoothed HU reaches this (hysteresis): voxels between lowerHu and
+    /// coreHu are the lumen's partial-volume rim, taken but not crossed, so that a contact with tissue of about
+    /// the rim's HU (cancellous bone beside the aorta) is no bridge. -inf: no core level.
+    double coreHu = -1e30;
 };
 
 struct WaveSettings
