@@ -12,7 +12,9 @@ namespace {
 
 using Eigen::Vector3d;
 
-constexpr std::uint8_t kUntouched = 0, kFinal = 1, kBlocked = 2;
+/// kLimited: beyond a branch limit of the front that reached it; free for the other fronts (a hepatic point's front
+/// meeting the aortic front in the celiac leaves no hole where the aortic one stopped).
+constexpr std::uint8_t kUntouched = 0, kFinal = 1, kBlocked = 2, kLimited = 3;
 /// Cross-sections under this (a 10 mm vessel) get the raw-HU boundary layer.
 constexpr double kSmallVesselAreaMm2 = 80.0;
 constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
@@ -56,6 +58,8 @@ WorkBox workBox(const CtVolume& ct, const std::vector<FrontSeed>& seeds)
     }
     return box;
 }
+
+constexpr std::size_t kJunctionWaves = 6; ///< waves after a jump before it is judged a junction or a leak
 
 struct Component
 {
@@ -122,7 +126,7 @@ public:
             const Node node = m_queue.top();
             m_queue.pop();
             const std::uint32_t v = node.voxel;
-            if (m_state[v] != kUntouched || node.dist > m_dist[v])
+            if ((m_state[v] != kUntouched && m_state[v] != kLimited) || node.dist > m_dist[v] || m_owner[v] == 0)
                 continue;
             const std::size_t waveIndex = std::size_t(node.dist / m_settings.waveWidthMm);
             if (waveIndex > currentWave)
@@ -139,15 +143,20 @@ public:
             }
             if (seed.include && beyondBranchLimit(v, node.dist, seed))
             {
-                m_state[v] = kBlocked;
+                m_state[v] = kLimited;
+                m_dist[v] = std::numeric_limits<float>::infinity();
+                m_owner[v] = 0;
                 ++m_limited;
                 continue;
             }
             m_state[v] = kFinal;
             if (seed.include)
                 wave.push_back(v);
+            // The core level holds in the trunk only: a branch's centre is dimmer (blur, the contrast falling along it).
             float brightest = 0.0f;
-            if (!seed.include || smoothed(v, brightest) >= seed.coreHu)
+            const int component = ancestorComponent(v);
+            const bool inBranch = component >= 0 && m_components[std::size_t(component)].branch;
+            if (!seed.include || inBranch || smoothed(v, brightest) >= seed.coreHu)
                 expand(v, node.dist, seed);
             if (++popped % 65536 == 0)
                 progress.report(std::min(0.95, double(currentWave) * m_settings.waveWidthMm /
@@ -155,6 +164,7 @@ public:
                                 "growing the vessel fronts");
         }
         finishWave(wave, currentWave);
+        judgeSuspects(currentWave, true);
         return result(currentWave + 1);
     }
 
@@ -220,7 +230,9 @@ private:
                 continue;
             const std::uint32_t q = m_box.index(ii, jj, kk);
             const float next = dist + length;
-            if (m_state[q] != kUntouched || next >= m_dist[q] || !accepted(q, next, seed))
+            const bool limited = m_state[q] == kLimited;
+            if ((m_state[q] != kUntouched && !limited) || (limited && seed.branchLengthMm < 1e8) || next >= m_dist[q] ||
+                !accepted(q, next, seed))
                 continue;
             m_dist[q] = next;
             m_owner[q] = m_owner[v];
@@ -297,6 +309,7 @@ private:
             linkComponent(id);
         for (const auto& [r, id] : componentOfRoot)
             judgeComponent(id);
+        judgeSuspects(waveIndex, false);
     }
 
     /// Parent (the component most of its voxels grew from), area, and the parent's children list.
@@ -381,23 +394,64 @@ private:
         }
         if (!sideNeck && c.areaMm2 <= 1.5 * beforeNeck)
             return;
-        // A leak: cut back to where the cross-section began to rise.
+        // A leak, unless the next waves show a junction reached from a branch (a front climbing towards the root
+        // meets the parent and a sibling at once: the jump splits into pieces each of a branch's calibre).
         int top = id;
         for (int a = c.parent; a >= 0 && m_components[std::size_t(a)].areaMm2 > 1.5 * reference;
              a = m_components[std::size_t(a)].parent)
             top = a;
-        Vector3d centre = Vector3d::Zero();
-        for (std::uint32_t v : m_components[std::size_t(top)].voxels)
+        m_suspects.push_back({id, top, reference});
+    }
+
+    /// Judges the suspected leaks kJunctionWaves after they jumped (or at the end, `final`): a junction when the
+    /// jump's descendants in that wave are two or more pieces each within the leak factor of the reference; else
+    /// the rising part is cut back to where it began to rise.
+    void judgeSuspects(std::size_t waveIndex, bool final)
+    {
+        std::vector<Suspect> waiting;
+        for (const Suspect& suspect : m_suspects)
         {
-            const auto [i, j, k] = m_box.voxel(v);
-            centre += Vector3d(i, j, k);
+            const Component& c = m_components[std::size_t(suspect.component)];
+            if (!final && waveIndex < c.wave + kJunctionWaves)
+            {
+                waiting.push_back(suspect);
+                continue;
+            }
+            if (m_components[std::size_t(suspect.top)].blocked)
+                continue;
+            std::vector<int> pieces, stack{suspect.component};
+            while (!stack.empty())
+            {
+                const int n = stack.back();
+                stack.pop_back();
+                const Component& d = m_components[std::size_t(n)];
+                if (d.wave >= c.wave + kJunctionWaves || d.children.empty())
+                {
+                    if (d.wave > c.wave)
+                        pieces.push_back(n);
+                    continue;
+                }
+                stack.insert(stack.end(), d.children.begin(), d.children.end());
+            }
+            const bool junction = pieces.size() >= 2 && std::all_of(pieces.begin(), pieces.end(), [&](int n) {
+                return m_components[std::size_t(n)].areaMm2 <= m_settings.leakAreaFactor * suspect.referenceMm2;
+            });
+            if (junction)
+                continue;
+            Vector3d centre = Vector3d::Zero();
+            for (std::uint32_t v : m_components[std::size_t(suspect.top)].voxels)
+            {
+                const auto [i, j, k] = m_box.voxel(v);
+                centre += Vector3d(i, j, k);
+            }
+            centre = m_ct.geometry().indexToPatient(centre / double(m_components[std::size_t(suspect.top)].voxels.size()));
+            char note[200];
+            std::snprintf(note, sizeof note, "leak cut at (%.1f, %.1f, %.1f) mm: cross-section %.0f mm2 after %.0f mm2",
+                          centre.x(), centre.y(), centre.z(), c.areaMm2, suspect.referenceMm2);
+            m_leakNotes.push_back(note);
+            block(suspect.top);
         }
-        centre = m_ct.geometry().indexToPatient(centre / double(m_components[std::size_t(top)].voxels.size()));
-        char note[200];
-        std::snprintf(note, sizeof note, "leak cut at (%.1f, %.1f, %.1f) mm: cross-section %.0f mm2 after %.0f mm2",
-                      centre.x(), centre.y(), centre.z(), c.areaMm2, reference);
-        m_leakNotes.push_back(note);
-        block(top);
+        m_suspects = std::move(waiting);
     }
 
     void block(int id)
@@ -482,6 +536,12 @@ private:
     std::vector<std::pair<std::array<int, 3>, float>> m_steps;
     std::priority_queue<Node, std::vector<Node>, std::greater<Node>> m_queue;
     std::vector<std::string> m_leakNotes;
+    struct Suspect
+    {
+        int component, top;
+        double referenceMm2;
+    };
+    std::vector<Suspect> m_suspects; ///< leaks awaiting the junction test
     std::vector<std::uint32_t> m_seedVoxels;
     std::size_t m_limited = 0;
     double m_voxelVolume = 1.0;

@@ -27,7 +27,8 @@ struct FrontSeed
     double boneHu = 1e9;            ///< include fronts refuse voxels touching raw HU above this (bone, calcium)
     /// The front grows on from a voxel only if its smoothed HU reaches this (hysteresis): voxels between lowerHu and
     /// coreHu are the lumen's partial-volume rim, taken but not crossed, so that a contact with tissue of about
-    /// the rim's HU (cancellous bone beside the aorta) is no bridge. -inf: no core level.
+    /// the rim's HU (cancellous bone beside the aorta) is no bridge; in the trunk only, not in its branches.
+    /// -inf: no core level.
     double coreHu = -1e30;
 };
 
