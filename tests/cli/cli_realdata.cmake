@@ -42,11 +42,24 @@ execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${W
 message(STATUS "liver CT, the automatic segmentation against artery (label-3), portal vein, hepatic veins, bone:\n${overlap}")
 
 # The guided segmentation, target hepatic, from a point in the aorta (the artery mask's largest cross-section at
-# z = 96 mm) and one in the right hepatic artery. Reported, not yet asserted: in this portal-venous phase the fronts
-# still run into the IVC, the renal veins and the liver (issue 15, must-show 3 not met).
+# z = 96 mm) and one in the right hepatic artery. Asserted: at most 10 % of the label in the portal and hepatic-vein
+# masks (must-show 3). Reported: the recall of the artery mask's voxels farther than 10 mm from the aorta (the
+# must-show asks 0.6; in this portal-venous phase the portal vein, as bright as the artery and touching it at the
+# hilum, makes the hepatic point's front stop within a few millimetres: 0.16 at 5e35a8d+).
 run_cli(0 guided segment --study ${WORK}/liver.vsim --target hepatic --seed 202.6,195.4,96 --seed 124.1,146.4,91.2)
 execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${WORK}/liver.vsim label-7 label-3 label-4
                 label-5 label-6 OUTPUT_VARIABLE overlap)
+string(JSON portal GET "${overlap}" references label-4 share_of_label)
+string(JSON venous GET "${overlap}" references label-5 share_of_label)
+if(portal GREATER 0.05 OR venous GREATER 0.05) # each at most half the must-show's 10 %: 10 % together
+    message(FATAL_ERROR "the hepatic label runs into the veins (portal ${portal}, hepatic veins ${venous}):\n${overlap}")
+endif()
+execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/far_recall.py ${WORK}/liver.vsim label-7 label-3 10
+                OUTPUT_VARIABLE far RESULT_VARIABLE code)
+if(NOT code EQUAL 0)
+    message(FATAL_ERROR "far_recall.py failed:\n${far}")
+endif()
+message(STATUS "liver CT, guided (hepatic): artery-mask voxels over 10 mm from the aorta found:\n${far}")
 message(STATUS "liver CT, guided (hepatic) against artery (label-3), portal vein, hepatic veins, bone:\n${overlap}")
 
 run_cli(0 ignored import ${DATA}/ctpa-totalsegmentator/ct_cropped.nii.gz --study ${WORK}/ctpa.vsim)
@@ -81,8 +94,8 @@ message(STATUS "CT pulmonary angiogram, the automatic segmentation against heart
 # mask's part inside the heart mask), an exclude point in the right ventricle below its outflow tract (the mean of
 # the bright heart-mask voxels outside the pulmonary-artery mask, anterior and 60 mm below the trunk point), 60 mm of
 # path. The issue asks recall >= 0.8 and <= 5 % of the label in the heart outside the pulmonary artery; the second is
-# not met yet (0.136: the right ventricular outflow tract below the valve is grown, and the label's boundary layer
-# lies in the heart mask around the trunk), so it is held at <= 0.15 as a regression guard.
+# not met yet (0.061 since the trunk's core level: the label's boundary layer lies in the heart mask around the trunk,
+# and a little of the outflow tract below the valve is grown; 0.136 before), so it is held at <= 0.08 as a guard.
 run_cli(0 guided segment --study ${WORK}/ctpa.vsim --target all --seed 15.3,-161.2,700.7 --exclude 22.6,-208.1,637.5
         --max-length 60)
 message(STATUS "CT pulmonary angiogram, guided: ${guided}")
@@ -91,6 +104,6 @@ execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${W
 message(STATUS "CT pulmonary angiogram, the guided segmentation against heart (label-3), pulmonary artery:\n${overlap}")
 string(JSON recall GET "${overlap}" references label-4 recall)
 string(JSON heart_outside GET "${overlap}" references label-3 share_of_label_outside_except)
-if(recall LESS 0.8 OR heart_outside GREATER 0.15)
-    message(FATAL_ERROR "guided CTPA: pulmonary-artery recall ${recall} (>= 0.8), heart outside it ${heart_outside} (<= 0.15)")
+if(recall LESS 0.8 OR heart_outside GREATER 0.08)
+    message(FATAL_ERROR "guided CTPA: pulmonary-artery recall ${recall} (>= 0.8), heart outside it ${heart_outside} (<= 0.08)")
 endif()
