@@ -70,6 +70,17 @@ if(NOT code EQUAL 0)
     message(FATAL_ERROR "report with the tearing protocol: ${err}")
 endif()
 
+# The sac needs the aorta's outer edge against fat: the analytic demo AAA (uniform tissue) has none and is refused
+# with the reason; its AAA report then gives lumen diameters and says so.
+run_cli(1 refused sac --study ${WORK}/demo/aaa/aaa.vsim)
+if(NOT refused MATCHES "outer wall could not be traced")
+    message(FATAL_ERROR "sac on the analytic demo: ${refused}")
+endif()
+file(READ ${tear}/metrics.json tear_metrics)
+if(NOT tear_metrics MATCHES "measured_max_diameter_mm" OR tear_metrics MATCHES "max_outer_diameter_mm")
+    message(FATAL_ERROR "the AAA report without a sac must give the lumen diameter only:\n${tear_metrics}")
+endif()
+
 # Each report is kept in its study too (reports/<id>.pdf).
 foreach(case aaa hepatic-tree stenosis)
     file(GLOB kept ${WORK}/demo/${case}/${case}.vsim/reports/*.pdf)

@@ -11,6 +11,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace vsim;
 using namespace vsim::dicom;
@@ -98,6 +99,34 @@ private slots:
         std::fill(lumen.data(), lumen.data() + g.voxelCount(), std::uint8_t(0));
         lumen.at(5, 5, 5) = 1;
         QVERIFY_THROWS_EXCEPTION(Error, measureAneurysmSac(ct, lumen, 1.8));
+    }
+
+    /// No fat around the aorta (uniform 40 HU tissue, as the analytic phantoms have): no outer edge within 60 mm,
+    /// so no contour and no figures (a 120 mm "diameter" was reported before).
+    void refusesAnImageWithoutAnOuterEdge()
+    {
+        VolumeGeometry g;
+        g.dims = {200, 200, 20};
+        g.spacing = {0.8, 0.8, 2.0};
+        CtVolume ct(g);
+        LabelVolume lumen(g);
+        for (int k = 0; k < g.dims[2]; ++k)
+            for (int j = 0; j < g.dims[1]; ++j)
+                for (int i = 0; i < g.dims[0]; ++i)
+                {
+                    const bool inside = std::hypot((i - 100) * 0.8, (j - 100) * 0.8) <= 12.0;
+                    ct.at(i, j, k) = std::int16_t(inside ? 300 : 40);
+                    lumen.at(i, j, k) = inside ? 1 : 0;
+                }
+        try
+        {
+            measureAneurysmSac(ct, lumen, 1.8);
+            QFAIL("an aorta in uniform tissue has no outer contour to measure");
+        }
+        catch (const Error& error)
+        {
+            QVERIFY(std::string(error.what()).find("outer wall could not be traced") != std::string::npos);
+        }
     }
 };
 

@@ -2,10 +2,13 @@
 
 #include "ReportSupport.h"
 #include "vsim/app/WallPipeline.h"
+#include "vsim/imaging/AneurysmSac.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/viz/Snapshot.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <optional>
 
 namespace vsim::app::detail {
 namespace {
@@ -44,6 +47,51 @@ std::string thresholdSentence(double diameterMm)
            versus + ".";
 }
 
+/// The sac's figures (the newest `vascusim-cli sac` label; its provenance holds them) by their definitions, the
+/// repair thresholds against the SVS outer diameter. False when the study has no sac.
+bool addSacGeometry(report::Section& section, const study::Study& study)
+{
+    const study::Artifact* sac = newestRun(study, "sac");
+    if (!sac)
+        return false;
+    const auto& parameters = sac->provenance.parameters;
+    const auto number = [&](const std::string& key) -> std::optional<double> {
+        const std::string text = textOr(parameters, key);
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        return text.empty() || *end != '\0' ? std::nullopt : std::optional<double>(value);
+    };
+    const std::optional<double> outer = number("max_outer_diameter_mm");
+    if (!outer)
+        return false;
+    struct Row
+    {
+        const char *key, *label, *unit;
+        int decimals;
+    };
+    const Row rows[] = {{"max_outer_diameter_mm", "Maximum diameter, outer wall to outer wall (SVS)", "mm", 0},
+                        {"lumen_diameter_at_max_mm", "Lumen diameter there (equivalent)", "mm", -1},
+                        {"max_thrombus_thickness_mm", "Largest thrombus thickness", "mm", -1},
+                        {"sac_volume_ml", "Sac volume", "ml", -1},
+                        {"sac_length_mm", "Sac length", "mm", -1},
+                        {"neck_diameter_mm", "Neck diameter (outer)", "mm", -1},
+                        {"wall_thickness_mm", "Wall thickness (assumed, not measured)", "mm", -1}};
+    report::MetricTable geometry{"The aneurysm sac (" + sac->name + ")", {}};
+    std::string definitions = "Definitions.";
+    for (const Row& row : rows)
+        if (const std::optional<double> value = number(row.key))
+        {
+            geometry.rows.push_back(report::metric(row.key, row.label, *value, row.unit, row.decimals));
+            const auto& known = imaging::aneurysmSacDefinitions();
+            if (const auto definition = known.find(row.key); definition != known.end())
+                definitions += " " + std::string(row.label) + ": " + definition->second + ".";
+        }
+    section.blocks.push_back(geometry);
+    section.blocks.push_back(report::Paragraph{thresholdSentence(*outer)});
+    section.blocks.push_back(report::Paragraph{definitions});
+    return true;
+}
+
 } // namespace
 
 std::optional<report::Section> aaaSection(const study::Study& study, const ReportOptions& options,
@@ -52,24 +100,31 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
 {
     const study::Artifact* physiological = newestRun(study, "simulate fem", "protocol", "physiological");
     const study::Artifact* rupture = newestRun(study, "simulate fem", "protocol", "thesis-rupture");
-    if (!physiological && !rupture)
+    if (!physiological && !rupture && !newestRun(study, "sac"))
         return std::nullopt;
     report::Section section{"aaa", "AAA rupture-risk review", {}};
 
-    // Geometry: the cross-sections of the centerlines the wall run used.
-    const study::Artifact& anyRun = physiological ? *physiological : *rupture;
-    const imaging::VesselMeasurements* measured = sections.of(centerlinesOf(study, anyRun), progress.subRange(0.0, 0.6));
-    report::MetricTable geometry{"Geometry (cross-sections perpendicular to the centerline)", {}};
+    // Geometry: the sac (SVS outer diameter) and the cross-sections of the centerlines the wall run used.
+    const imaging::VesselMeasurements* measured =
+        sections.of(physiological || rupture ? centerlinesOf(study, physiological ? *physiological : *rupture)
+                                             : study.newestArtifact(study::ArtifactKind::Skeleton, "centerline"),
+                    progress.subRange(0.0, 0.6));
+    const bool outerMeasured = addSacGeometry(section, study);
+    report::MetricTable geometry{"The contrast lumen (cross-sections perpendicular to the centerline)", {}};
     if (measured)
     {
-        geometry.rows.push_back(report::metric("measured_max_diameter_mm", "Maximum diameter", measured->maxDiameterMm, "mm", 0));
-        geometry.rows.push_back(report::metric("measured_max_caliper_mm", "Largest caliper width", measured->maxCaliperMm, "mm"));
+        geometry.rows.push_back(report::metric("measured_max_diameter_mm", "Maximum lumen diameter (equivalent)",
+                                               measured->maxDiameterMm, "mm", 0));
+        geometry.rows.push_back(report::metric("measured_max_caliper_mm", "Largest lumen caliper width", measured->maxCaliperMm, "mm"));
         section.blocks.push_back(geometry);
-        section.blocks.push_back(report::Paragraph{thresholdSentence(measured->maxDiameterMm)});
+        if (!outerMeasured)
+            section.blocks.push_back(report::Paragraph{
+                "These are lumen diameters; guidelines measure the aneurysm outer wall to outer wall with the thrombus "
+                "(vascusim-cli sac). Against the lumen: " + thresholdSentence(measured->maxDiameterMm)});
         section.blocks.push_back(aneurysmPlot(*measured));
     }
-    else
-        section.blocks.push_back(report::Paragraph{"No centerlines: the maximum diameter was not measured."});
+    else if (!outerMeasured)
+        section.blocks.push_back(report::Paragraph{"No centerlines and no sac: the maximum diameter was not measured."});
 
     if (physiological)
     {

@@ -78,7 +78,8 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
         if (auto section = detail::aaaSection(study, options, sections, runs, progress.subRange(0.0, 0.4)))
             report.sections.push_back(std::move(*section));
         else
-            report.notRun.push_back("AAA rupture-risk review: the study has no wall-mechanics run (simulate fem).");
+            report.notRun.push_back("AAA rupture-risk review: the study has no AAA sac (vascusim-cli sac) and no "
+                                    "wall-mechanics run (simulate fem).");
     }
     if (wanted("stenosis"))
     {

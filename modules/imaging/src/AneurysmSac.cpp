@@ -24,6 +24,7 @@ constexpr double kBrightLevelHu = 150.0;  ///< bone or another contrast-filled v
 constexpr double kLeftLumenHu = 120.0;    ///< below this the ray has left the lumen's blurred edge
 constexpr double kDenserHu = 35.0;        ///< a rise this far above the wall's level: a touching denser structure
 constexpr double kMaxRadiusMm = 60.0;
+constexpr double kMaxEscapedShare = 0.2; ///< rays without an edge within kMaxRadiusMm, over all sections: no contour
 constexpr double kRayStepMm = 0.25;
 constexpr int kRays = 360;
 constexpr double kMinAorticAreaMm2 = 50.0;
@@ -40,6 +41,7 @@ struct Section
     std::array<double, kRays> lumenEdge{};    ///< where each ray left the lumen (mm)
     Vector3d outerCentreMm = Vector3d::Zero();
     double diameterMm = 0.0, areaMm2 = 0.0, lumenAreaMm2 = 0.0, arcMm = 0.0;
+    int escapedRays = 0;                      ///< rays that met no edge within kMaxRadiusMm
 };
 
 /// The 4-connected pieces of the nonzero lumen voxels of slice k.
@@ -225,6 +227,7 @@ void castRays(const CtVolume& ct, const LabelVolume& lumen, Section& section)
         }
         if (inLumen)
             section.lumenEdge[std::size_t(ray)] = t;
+        section.escapedRays += t >= kMaxRadiusMm;
         raw[std::size_t(ray)] = std::max(outer, section.lumenEdge[std::size_t(ray)]);
     }
     // Rays that escaped into a touching structure of thrombus-like density (an intervertebral disc, the psoas) run
@@ -341,6 +344,25 @@ std::pair<double, double> perpendicularSection(const std::vector<Section>& secti
 
 } // namespace
 
+const std::map<std::string, std::string>& aneurysmSacDefinitions()
+{
+    static const std::map<std::string, std::string> definitions{
+        {"max_outer_diameter_mm", "largest outer-wall to outer-wall caliper perpendicular to the centerline of the outer "
+                                  "contour, thrombus and wall included (SVS 2018)"},
+        {"max_outer_diameter_z_mm", "patient position (LPS) of the centre of that cross-section"},
+        {"lumen_diameter_at_max_mm", "equivalent diameter of the contrast lumen's perpendicular cross-section there"},
+        {"neck_diameter_mm", "narrowest outer diameter within 80 mm above the widest section (the lowest renal artery "
+                             "is not yet used as the landmark)"},
+        {"sac_threshold_diameter_mm", "1.5 x the neck diameter (30 mm without a neck)"},
+        {"wall_thickness_mm", "assumed, not measured: the wall is that shell inside the outer contour"},
+        {"sac_volume_ml", "volume inside the outer contour between the perpendicular planes at the sac's ends"},
+        {"sac_length_mm", "centerline length of the sac (outer diameter over the threshold, contiguous)"},
+        {"max_thrombus_thickness_mm", "largest distance from the lumen to the wall's inner surface along the rays of an "
+                                      "axial section, within the sac"},
+    };
+    return definitions;
+}
+
 AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, double wallThicknessMm,
                                const Progress& progress)
 {
@@ -362,6 +384,16 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
         castRays(ct, lumen, sections[s]);
         progress.report(0.1 + 0.4 * double(s + 1) / double(sections.size()), "outer contour");
     }
+    // The outer wall is the aorta's edge against fat or a denser neighbour; where most rays meet neither within
+    // 60 mm (no fat around the aorta: an analytic phantom, a cachectic patient) there is no contour to measure.
+    std::size_t escaped = 0;
+    for (const Section& section : sections)
+        escaped += std::size_t(section.escapedRays);
+    if (double(escaped) > kMaxEscapedShare * double(sections.size() * kRays))
+        throw Error("the aorta's outer wall could not be traced: in " +
+                    std::to_string(int(std::lround(100.0 * double(escaped) / double(sections.size() * kRays)))) +
+                    " % of the directions no edge against fat or a denser neighbour lies within 60 mm of the lumen "
+                    "(is there fat around the aorta in this image?); the sac is not measured");
     smoothAcrossSections(sections);
     for (std::size_t s = 0; s < sections.size(); ++s)
     {
@@ -437,36 +469,28 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
     const bool isSac = sections[peak].diameterMm > threshold && bottom > top;
 
     auto& f = sac.figures;
-    auto& d = sac.definitions;
     f["max_outer_diameter_mm"] = sections[peak].diameterMm;
-    d["max_outer_diameter_mm"] = "largest outer-wall to outer-wall caliper perpendicular to the centerline of the outer "
-                                 "contour, thrombus and wall included (SVS 2018)";
     sac.maxDiameterCentreMm = centreline[peak];
     f["max_outer_diameter_x_mm"] = centreline[peak].x();
     f["max_outer_diameter_y_mm"] = centreline[peak].y();
     f["max_outer_diameter_z_mm"] = centreline[peak].z();
     f["lumen_diameter_at_max_mm"] = 2.0 * std::sqrt(sections[peak].lumenAreaMm2 / std::numbers::pi);
-    d["lumen_diameter_at_max_mm"] = "equivalent diameter of the contrast lumen's perpendicular cross-section there";
     f["neck_diameter_mm"] = neck;
-    d["neck_diameter_mm"] = "narrowest outer diameter within 80 mm above the widest section (the lowest renal "
-                            "artery is not identified yet)";
     f["sac_threshold_diameter_mm"] = threshold;
-    d["sac_threshold_diameter_mm"] = "1.5 x the neck diameter (30 mm without a neck)";
     f["wall_thickness_mm"] = wallThicknessMm;
-    d["wall_thickness_mm"] = "assumed, not measured: the wall is that shell inside the outer contour";
     if (isSac)
     {
         f["sac_volume_ml"] = volume / 1000.0;
-        d["sac_volume_ml"] = "volume inside the outer contour between the perpendicular planes at the sac's ends";
         f["sac_length_mm"] = sections[bottom].arcMm - sections[top].arcMm;
         f["sac_top_z_mm"] = centreline[top].z();
         f["sac_bottom_z_mm"] = centreline[bottom].z();
         f["max_thrombus_thickness_mm"] = std::max(0.0, thrombus);
-        d["max_thrombus_thickness_mm"] = "largest distance from the lumen to the wall's inner surface along the rays of "
-                                         "an axial section, within the sac";
     }
     else
         sac.warnings.push_back("no sac: the widest outer diameter does not exceed 1.5 x the neck's");
+    for (const auto& [key, value] : f)
+        if (const auto definition = aneurysmSacDefinitions().find(key); definition != aneurysmSacDefinitions().end())
+            sac.definitions[key] = definition->second;
     progress.report(1.0, "sac measured");
     return sac;
 }

@@ -36,7 +36,11 @@ struct AneurysmSac
     std::vector<std::string> warnings;
 };
 
-/// Throws vsim::Error when the lumen label holds no aorta-sized cross-section (>= 50 mm2), vsim::Cancelled.
+/// The definition of each figure measureAneurysmSac reports (by key), as the CLI, the dock and the report print it.
+const std::map<std::string, std::string>& aneurysmSacDefinitions();
+
+/// Throws vsim::Error when the lumen label holds no aorta-sized cross-section (>= 50 mm2) or when over 20 % of the
+/// rays meet no outer edge within 60 mm (no fat around the aorta: no contour to measure), vsim::Cancelled.
 AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, double wallThicknessMm,
                                const Progress& progress = {});
 

@@ -1,0 +1,38 @@
+# The AAA sac from the command line (issue 15 item 3) on a patient-like AAA phantom (256 x 256 x 200, 0.7 x 0.7 x 1
+# mm, seed 2; its anatomy and scanner are not the estimator's model): import, the aorta from the automatic point,
+# the sac (outer contour, thrombus, wall), then the report's AAA section gives the SVS outer diameter (within 2 mm
+# of the phantom's truth, computed from its geometry by the same definition) with its definition, against the
+# repair thresholds. Without a wall run the section says so.
+include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
+file(REMOVE_RECURSE ${WORK})
+
+run_cli(0 ignored phantom aaa --out ${WORK}/phantom --size 256x256x200 --spacing 0.7,0.7,1.0 --seed 2)
+run_cli(0 ignored import ${WORK}/phantom/dicom --study ${WORK}/aaa.vsim)
+run_cli(0 segmented segment --study ${WORK}/aaa.vsim --target aorta)
+run_cli(0 sac sac --study ${WORK}/aaa.vsim)
+message(STATUS "${sac}")
+if(NOT sac MATCHES "max_outer_diameter_mm [0-9.]+  \\(largest outer-wall to outer-wall caliper")
+    message(FATAL_ERROR "sac output:\n${sac}")
+endif()
+run_cli(0 ignored report --study ${WORK}/aaa.vsim --out ${WORK}/report.pdf --metrics-json ${WORK}/metrics.json
+        --sections aaa)
+file(READ ${WORK}/metrics.json metrics)
+file(READ ${WORK}/phantom/truth.json truth)
+string(JSON truth_outer GET "${truth}" measures max_outer_diameter_mm)
+string(REGEX MATCH "\"key\": \"max_outer_diameter_mm\"[^}]*\"value\": ([0-9.]+)" found "${metrics}")
+set(reported ${CMAKE_MATCH_1})
+if(NOT found)
+    message(FATAL_ERROR "the report's metrics hold no max_outer_diameter_mm:\n${metrics}")
+endif()
+execute_process(COMMAND ${PYTHON} -c "import sys; sys.exit(0 if abs(${reported} - ${truth_outer}) <= 2.0 else 1)"
+                RESULT_VARIABLE off)
+message(STATUS "report: maximum outer diameter ${reported} mm, truth ${truth_outer} mm")
+if(NOT off EQUAL 0)
+    message(FATAL_ERROR "the report's outer diameter ${reported} mm is over 2 mm from the truth ${truth_outer} mm")
+endif()
+execute_process(COMMAND pdftotext -layout ${WORK}/report.pdf - OUTPUT_VARIABLE text)
+string(REGEX REPLACE "[ \n]+" " " text "${text}")
+if(NOT text MATCHES "Maximum diameter, outer wall to outer wall \\(SVS\\)" OR NOT text MATCHES "Definitions\\."
+   OR NOT text MATCHES "repair thresholds" OR NOT text MATCHES "wall-stress run was not made")
+    message(FATAL_ERROR "the report's AAA section:\n${text}")
+endif()
