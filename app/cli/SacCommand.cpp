@@ -5,6 +5,7 @@
 #include "CliCommands.h"
 #include "CliSupport.h"
 #include "CommandLine.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/imaging/AneurysmSac.h"
 
 #include <iostream>
@@ -14,21 +15,16 @@ namespace vsim::cli {
 int sacStudy(const Arguments& arguments, const Progress& progress)
 {
     study::Study study = openStudyForWriting(arguments);
-    const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
-                                               "the study has no lumen label: run vascusim-cli segment --target aorta");
+    const std::string labelId = arguments.hasOption("label") ? arguments.option("label") : app::newestLumenLabel(study);
+    if (labelId.empty())
+        throw Error("the study has no lumen label: run vascusim-cli segment --target aorta");
     const std::string imageId = chooseArtifact(study, arguments.option("image"), study::ArtifactKind::Image,
                                                "the study has no CT image");
     const double wall = quantityOption(arguments, "wall-thickness", "mm", 1.8);
     const CtVolume ct = study.loadImage(imageId);
     const LabelVolume lumen = study.loadLabel(labelId);
     const imaging::AneurysmSac sac = imaging::measureAneurysmSac(ct, lumen, wall, progress.subRange(0.0, 0.9));
-    study::Provenance provenance;
-    provenance.command = "sac";
-    provenance.inputs = {imageId, labelId};
-    provenance.parameters = {{"wall_thickness_mm", numberText(wall)}};
-    for (const auto& [key, value] : sac.figures)
-        provenance.parameters[key] = numberText(value);
-    const std::string id = study.addLabel(sac.labels, "AAA sac (lumen 1, thrombus 4, wall 5)", provenance, sac.warnings);
+    const std::string id = app::recordAneurysmSac(study, sac, imageId, labelId, wall);
     study.save();
     progress.report(1.0, "saved");
     std::cout << "AAA sac of " << labelId << " as " << id << ":\n";

@@ -84,6 +84,9 @@ public:
     /// Skeleton and centerlines of the newest vessel label in the background; both added (one undo step) and drawn
     /// over the lumen surface in the 3D view.
     bool extractSkeletonAndCenterlines();
+    /// The AAA sac of the newest lumen label (outer contour, thrombus, assumed-thickness wall) in the background,
+    /// added as an undoable label; its figures head the measurement dock with their definitions.
+    bool measureSac();
     /// Builds the wall mesh (Wall > Build Wall Mesh) in the background; undoable.
     bool buildWallMesh();
     /// Runs a wall protocol ("physiological" or "thesis-rupture") on the newest wall; the last frame is added

@@ -5,6 +5,7 @@
 // study and applied when it is opened again.
 
 #include "MainWindow.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/app/SegmentNames.h"
 #include "ViewLayout.h"
 #include "ViewState.h"
@@ -60,6 +61,8 @@ void MainWindow::refreshScene()
                          app::segmentNames(study, content.measuredCenterlines, study.loadSkeleton(content.measuredCenterlines)),
                          content.measuredCenterlines);
     }
+    else if (!app::newestSacFigures(m_document.study()).empty())
+        showMeasurements({}, {}, {}); // the sac's figures alone
     else
         m_measurementTable->setRowCount(0);
     if (m_interactiveWall)

@@ -4,7 +4,9 @@
 #include "ArtifactCommands.h"
 #include "MainWindow.h"
 #include "StudyDocument.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/app/SegmentNames.h"
+#include "vsim/imaging/AneurysmSac.h"
 #include "ParameterForm.h"
 #include "ViewLayout.h"
 #include "vsim/imaging/Centerlines.h"
@@ -115,7 +117,34 @@ void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurement
         m_measurementTable->setItem(row, 6, number(s.diameterStenosisPercent, 1));
         m_measurementTable->setItem(row, 7, number(s.maxDiameterMm, 2));
     };
-    // First row: the segment holding the maximum diameter, jumping to its widest section.
+    // First the sac's figures (when the study has one), each with its definition as the tooltip; the maximum outer
+    // diameter's row takes the cursor to its section.
+    const std::map<std::string, double> sac = app::newestSacFigures(m_document.study());
+    const std::pair<const char*, QString> sacRows[] = {
+        {"max_outer_diameter_mm", tr("AAA maximum diameter, outer wall to outer wall (SVS): %1 mm")},
+        {"lumen_diameter_at_max_mm", tr("Lumen diameter there (equivalent): %1 mm")},
+        {"max_thrombus_thickness_mm", tr("Largest thrombus thickness: %1 mm")},
+        {"sac_volume_ml", tr("Sac volume: %1 ml")},
+        {"neck_diameter_mm", tr("Neck diameter (outer): %1 mm")},
+        {"wall_thickness_mm", tr("Wall thickness (assumed): %1 mm")}};
+    for (const auto& [key, format] : sacRows)
+    {
+        const auto value = sac.find(key);
+        if (value == sac.end())
+            continue;
+        const int row = m_measurementTable->rowCount();
+        m_measurementTable->insertRow(row);
+        auto* item = new QTableWidgetItem(format.arg(value->second, 0, 'f', 1));
+        const auto& definitions = imaging::aneurysmSacDefinitions();
+        if (const auto definition = definitions.find(key); definition != definitions.end())
+            item->setToolTip(QString::fromStdString(definition->second));
+        if (std::string(key) == "max_outer_diameter_mm" && sac.count("max_outer_diameter_z_mm"))
+            item->setData(kPositionRole, QVector3D(float(sac.at("max_outer_diameter_x_mm")),
+                                                   float(sac.at("max_outer_diameter_y_mm")),
+                                                   float(sac.at("max_outer_diameter_z_mm"))));
+        m_measurementTable->setItem(row, 0, item);
+    }
+    // Then the segment holding the maximum lumen diameter, jumping to its widest section.
     const auto widest = std::max_element(measurements.segments.begin(), measurements.segments.end(),
                                          [](const auto& a, const auto& b) { return a.maxDiameterMm < b.maxDiameterMm; });
     if (widest != measurements.segments.end())
@@ -146,6 +175,7 @@ void MainWindow::createVesselMenu()
     });
     m_documentActions << vessels->addAction(tr("S&keleton and Centerlines"), this,
                                             [this] { extractSkeletonAndCenterlines(); });
+    m_documentActions << vessels->addAction(tr("AAA &Sac (Outer Wall, Thrombus)"), this, [this] { measureSac(); });
     vessels->addSeparator();
     m_documentActions << vessels->addAction(tr("&Edit Label (Brush)"), this, [this] { startLabelEditing(); });
     m_documentActions << vessels->addAction(tr("&Parameters..."), this, [this] { editVesselParameters(); });
@@ -206,6 +236,32 @@ bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)
             m_scene.labels[id] = outcome->segmentation.label; // what the views draw, before they are redrawn
             m_scene.lumenSurfaces[id] = outcome->surface;
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Segment vessels")));
+        });
+}
+
+bool MainWindow::measureSac()
+{
+    if (!m_document.hasStudy())
+        return false;
+    const std::string imageId = newestArtifact(study::ArtifactKind::Image);
+    const std::string labelId = app::newestLumenLabel(m_document.study());
+    if (imageId.empty() || labelId.empty())
+    {
+        showError(tr("AAA sac"), tr("The study needs a CT image and an aortic lumen label: segment the aorta first."));
+        return false;
+    }
+    constexpr double kWallThicknessMm = 1.8; // assumed, as the CLI's default
+    auto sac = std::make_shared<imaging::AneurysmSac>();
+    discardLabelEdits();
+    return m_tasks.run(
+        tr("AAA sac"),
+        [this, imageId, labelId, sac](const Progress& progress) {
+            *sac = imaging::measureAneurysmSac(m_document.study().loadImage(imageId),
+                                               m_document.study().loadLabel(labelId), kWallThicknessMm, progress);
+        },
+        [this, imageId, labelId, sac] {
+            const std::string id = app::recordAneurysmSac(m_document.study(), *sac, imageId, labelId, kWallThicknessMm);
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("AAA sac")));
         });
 }
 

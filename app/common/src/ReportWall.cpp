@@ -1,13 +1,13 @@
 #include "ReportSections.h"
 
 #include "ReportSupport.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/imaging/AneurysmSac.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/viz/Snapshot.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <optional>
 
 namespace vsim::app::detail {
@@ -51,15 +51,11 @@ std::string thresholdSentence(double diameterMm)
 /// repair thresholds against the SVS outer diameter. False when the study has no sac.
 bool addSacGeometry(report::Section& section, const study::Study& study)
 {
-    const study::Artifact* sac = newestRun(study, "sac");
-    if (!sac)
-        return false;
-    const auto& parameters = sac->provenance.parameters;
+    std::string sacId;
+    const std::map<std::string, double> figures = newestSacFigures(study, &sacId);
     const auto number = [&](const std::string& key) -> std::optional<double> {
-        const std::string text = textOr(parameters, key);
-        char* end = nullptr;
-        const double value = std::strtod(text.c_str(), &end);
-        return text.empty() || *end != '\0' ? std::nullopt : std::optional<double>(value);
+        const auto found = figures.find(key);
+        return found == figures.end() ? std::nullopt : std::optional<double>(found->second);
     };
     const std::optional<double> outer = number("max_outer_diameter_mm");
     if (!outer)
@@ -76,7 +72,7 @@ bool addSacGeometry(report::Section& section, const study::Study& study)
                         {"sac_length_mm", "Sac length", "mm", -1},
                         {"neck_diameter_mm", "Neck diameter (outer)", "mm", -1},
                         {"wall_thickness_mm", "Wall thickness (assumed, not measured)", "mm", -1}};
-    report::MetricTable geometry{"The aneurysm sac (" + sac->name + ")", {}};
+    report::MetricTable geometry{"The aneurysm sac (" + study.artifact(sacId).name + ")", {}};
     std::string definitions = "Definitions.";
     for (const Row& row : rows)
         if (const std::optional<double> value = number(row.key))
@@ -100,7 +96,7 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
 {
     const study::Artifact* physiological = newestRun(study, "simulate fem", "protocol", "physiological");
     const study::Artifact* rupture = newestRun(study, "simulate fem", "protocol", "thesis-rupture");
-    if (!physiological && !rupture && !newestRun(study, "sac"))
+    if (!physiological && !rupture && newestSacFigures(study).empty())
         return std::nullopt;
     report::Section section{"aaa", "AAA rupture-risk review", {}};
 
