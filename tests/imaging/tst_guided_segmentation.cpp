@@ -3,6 +3,7 @@
 // include point on the truth centerline: the lumen Dice against the truth labels, leaks into the neighbours, the
 // competition with an exclude point, a stop plane and the path-length limit, and the refusals.
 
+#include "AnatomyCases.h"
 #include "vsim/core/Error.h"
 #include "vsim/dicom/AnatomyPhantom.h"
 #include "vsim/imaging/GuidedSegmentation.h"
@@ -18,37 +19,16 @@ using namespace vsim::imaging;
 
 namespace {
 
-struct Case
-{
-    AnatomyPhantom phantom;
-    CtVolume ct;
-    LabelVolume truth;
-};
+using Case = test::AnatomyCase;
+using test::pointAtZ;
+using test::segmentNamed;
 
 Case makeCase(PhantomKind kind, std::array<int, 3> size, Eigen::Vector3d spacing, std::uint64_t seed,
               const Eigen::Vector3d& centreShiftMm = Eigen::Vector3d::Zero())
 {
-    PhantomOptions options;
-    options.style = PhantomStyle::Patient;
-    options.size = size;
-    options.spacing = spacing;
-    options.seed = seed;
-    Case c{buildAnatomyPhantom(kind, options), {}, {}};
-    VolumeGeometry geometry = phantomGeometry(options);
-    if (kind == PhantomKind::Stenosis) // centre the grid on the femoral artery
-        geometry.origin += Eigen::Vector3d(22, -14, 0);
-    geometry.origin += centreShiftMm;
-    c.ct = renderAnatomyCt(c.phantom, geometry, seed);
-    c.truth = renderAnatomyLabels(c.phantom, geometry);
-    return c;
-}
-
-const VesselSegment& segmentNamed(const AnatomyPhantom& phantom, const std::string& name)
-{
-    for (const VesselSegment& segment : phantom.arteries.segments)
-        if (segment.name == name)
-            return segment;
-    throw Error("no segment " + name);
+    // The stenosis grid is centred on the femoral artery.
+    const Eigen::Vector3d femoral = kind == PhantomKind::Stenosis ? Eigen::Vector3d(22, -14, 0) : Eigen::Vector3d::Zero();
+    return test::makeAnatomyCase(kind, size, spacing, seed, centreShiftMm + femoral, true);
 }
 
 /// The voxels within (lumen radius + margin) of the named segments' centerlines.
@@ -94,13 +74,6 @@ double fractionIn(const LabelVolume& label, const LabelVolume& truth, std::uint8
         if (label.data()[v] == 1)
             ++total, count += truth.data()[v] == value;
     return double(count) / double(std::max<std::size_t>(total, 1));
-}
-
-Eigen::Vector3d pointAtZ(const VesselSegment& segment, double z)
-{
-    return *std::min_element(segment.points.begin(), segment.points.end(), [&](const auto& a, const auto& b) {
-        return std::abs(a.z() - z) < std::abs(b.z() - z);
-    });
 }
 
 } // namespace

@@ -4,7 +4,7 @@
 // PSF and noise, segmented, thinned and traced by the pipeline), three seeds each: every segment's name against
 // the truth segment its points lie on, by length.
 
-#include "vsim/core/Error.h"
+#include "AnatomyCases.h"
 #include "vsim/dicom/AnatomyPhantom.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/GuidedSegmentation.h"
@@ -149,14 +149,6 @@ NamingScore scoreNames(const SkeletonGraph& centerlines, const std::vector<std::
     {
         const double length = centerlines.edges[e].length();
         const std::string expected = truthNameOf(centerlines.edges[e], truth);
-        if (qEnvironmentVariableIsSet("VSIM_NAMES_DEBUG"))
-        {
-            const auto& ed = centerlines.edges[e];
-            qInfo("  edge %zu %d->%d %.1f mm r %.1f (%.0f %.0f %.0f)->(%.0f %.0f %.0f) named %s truth %s", e, ed.from, ed.to,
-                  length, ed.radii[ed.radii.size() / 2], ed.points.front().x(), ed.points.front().y(),
-                  ed.points.front().z(), ed.points.back().x(), ed.points.back().y(), ed.points.back().z(),
-                  names[e].c_str(), expected.c_str());
-        }
         score.totalMm += length;
         if (names[e] == kUnnamedSegment)
             score.unnamedMm += length;
@@ -177,40 +169,8 @@ SkeletonGraph centerlinesOf(const LabelVolume& label)
     return extractCenterlines(label, 1, skeleton.graph, ParameterSet(centerlineParameters()));
 }
 
-struct PhantomCase
-{
-    AnatomyPhantom phantom;
-    CtVolume ct;
-};
-
-PhantomCase makeCase(PhantomKind kind, std::uint64_t seed, std::array<int, 3> size, const Vector3d& spacing,
-                     const Vector3d& shift)
-{
-    PhantomOptions options;
-    options.style = PhantomStyle::Patient;
-    options.size = size;
-    options.spacing = spacing;
-    options.seed = seed;
-    PhantomCase c{buildAnatomyPhantom(kind, options), {}};
-    VolumeGeometry geometry = phantomGeometry(options);
-    geometry.origin += shift;
-    c.ct = renderAnatomyCt(c.phantom, geometry, seed);
-    return c;
-}
-
-const VesselSegment& segmentNamed(const AnatomyPhantom& phantom, const std::string& name)
-{
-    for (const VesselSegment& segment : phantom.arteries.segments)
-        if (segment.name == name)
-            return segment;
-    throw Error("no segment " + name);
-}
-
-Vector3d pointAtZ(const VesselSegment& segment, double z)
-{
-    return *std::min_element(segment.points.begin(), segment.points.end(),
-                             [&](const auto& a, const auto& b) { return std::abs(a.z() - z) < std::abs(b.z() - z); });
-}
+using test::pointAtZ;
+using test::segmentNamed;
 
 void checkPhantomNames(const SkeletonGraph& centerlines, const PhantomModel& truth, const std::set<std::string>& expected,
                        const char* what)
@@ -295,15 +255,12 @@ private slots:
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
         {
-            const PhantomCase c = makeCase(PhantomKind::Aaa, seed, {256, 256, 280}, {0.7, 0.7, 1.0}, {0, 0, 40});
+            const test::AnatomyCase c =
+                test::makeAnatomyCase(PhantomKind::Aaa, {256, 256, 280}, {0.7, 0.7, 1.0}, seed, {0, 0, 40}, false);
             SegmentationRequest request;
             request.target = SegmentationTarget::Aorta;
             request.includeMm = {pointAtZ(segmentNamed(c.phantom, "aorta"), c.phantom.measures.at("max_outer_diameter_z_mm"))};
-            const SegmentationResult seg = segmentFromPoints(c.ct, ParameterSet(guidedSegmentationParameters()), request);
-            const LabelVolume& label = seg.label;
-            if (qEnvironmentVariableIsSet("VSIM_NAMES_DEBUG"))
-                for (const auto& w : seg.warnings)
-                    qInfo("warning: %s", w.c_str());
+            const LabelVolume label = segmentFromPoints(c.ct, ParameterSet(guidedSegmentationParameters()), request).label;
             checkPhantomNames(centerlinesOf(label), c.phantom.arteries,
                               {"aorta", "left common iliac artery", "right common iliac artery", "left renal artery",
                                "celiac trunk", "superior mesenteric artery"},
@@ -317,52 +274,14 @@ private slots:
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
         {
-            const PhantomCase c = makeCase(PhantomKind::HepaticTree, seed, {256, 256, 200}, {0.7, 0.7, 1.0}, {-40, -10, 85});
+            const test::AnatomyCase c = test::makeAnatomyCase(PhantomKind::HepaticTree, {256, 256, 200}, {0.7, 0.7, 1.0},
+                                                              seed, {-40, -10, 85}, false);
             SegmentationRequest request;
             request.target = SegmentationTarget::Hepatic;
             const VesselSegment& proper = segmentNamed(c.phantom, "proper hepatic artery");
             request.includeMm = {pointAtZ(segmentNamed(c.phantom, "aorta"), kPhantomCentre.z() + 60.0),
                                  proper.points[proper.points.size() / 2]};
-            const SegmentationResult seg = segmentFromPoints(c.ct, ParameterSet(guidedSegmentationParameters()), request);
-            const LabelVolume& label = seg.label;
-            if (qEnvironmentVariableIsSet("VSIM_NAMES_DEBUG"))
-            {
-                for (const auto& w : seg.warnings)
-                    qInfo("warning: %s", w.c_str());
-                for (const auto& [k, v] : seg.figures)
-                    qInfo("figure %s %g", k.c_str(), v);
-                const auto& g = label.geometry();
-                std::vector<int> comp(g.voxelCount(), 0);
-                int n = 0;
-                for (std::size_t v = 0; v < g.voxelCount(); ++v)
-                {
-                    if (!label.data()[v] || comp[v])
-                        continue;
-                    ++n;
-                    std::vector<std::size_t> stack{v};
-                    comp[v] = n;
-                    std::size_t count = 0;
-                    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-                    while (!stack.empty())
-                    {
-                        const std::size_t u = stack.back();
-                        stack.pop_back();
-                        ++count;
-                        const int x = int(u % std::size_t(g.dims[0])), y = int(u / std::size_t(g.dims[0]) % std::size_t(g.dims[1])), z = int(u / std::size_t(g.dims[0]) / std::size_t(g.dims[1]));
-                        sum += g.indexToPatient(Eigen::Vector3d(x, y, z));
-                        for (int d = 0; d < 27; ++d)
-                        {
-                            const int a = x + d % 3 - 1, b = y + d / 3 % 3 - 1, cc = z + d / 9 - 1;
-                            if (!g.contains(a, b, cc))
-                                continue;
-                            const std::size_t w = std::size_t(a) + std::size_t(g.dims[0]) * (std::size_t(b) + std::size_t(g.dims[1]) * std::size_t(cc));
-                            if (label.data()[w] && !comp[w])
-                                comp[w] = n, stack.push_back(w);
-                        }
-                    }
-                    qInfo("component %d: %zu voxels around (%.0f %.0f %.0f)", n, count, sum.x() / count, sum.y() / count, sum.z() / count);
-                }
-            }
+            const LabelVolume label = segmentFromPoints(c.ct, ParameterSet(guidedSegmentationParameters()), request).label;
             checkPhantomNames(centerlinesOf(label), c.phantom.arteries,
                               {"celiac trunk", "common hepatic artery", "gastroduodenal artery", "proper hepatic artery",
                                "right hepatic artery", "left hepatic artery", "segmental hepatic artery"},
