@@ -500,8 +500,6 @@ private:
             if ((points[to] - points[exit]).norm() <= 0)
                 continue;
             const Vector3d d = (points[to] - points[exit]).normalized();
-            if (getenv("VSIM_NAMES_DEBUG"))
-                fprintf(stderr, "candidate %d r %.2f parentR %.2f d %.2f %.2f %.2f from (%.0f %.0f %.0f) to (%.0f %.0f %.0f)\n", b.edge, r, radiusAtEnd(b.parent), d.x(), d.y(), d.z(), points[exit].x(), points[exit].y(), points[exit].z(), points[to].x(), points[to].y(), points[to].z());
             const Candidate c{b.edge, d, g_.nodes[std::size_t(start_[std::size_t(b.edge)])].position.z(), r};
             if (std::abs(d.x()) >= 0.5 && std::abs(d.x()) >= 0.8 * std::abs(d.y()))
                 (d.x() > 0 ? left : right).push_back(c);
