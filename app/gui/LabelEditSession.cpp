@@ -58,6 +58,18 @@ QUndoCommand* LabelEditSession::finishStroke()
     return new BrushStrokeCommand(this, std::move(stroke));
 }
 
+QUndoCommand* LabelEditSession::removeIsland(const Eigen::Vector3d& pointMm)
+{
+    imaging::LabelEdit island = imaging::removeIsland(m_label, pointMm);
+    if (island.empty())
+        return nullptr;
+    count(island, +1);
+    emit labelChanged();
+    auto* command = new BrushStrokeCommand(this, std::move(island));
+    command->setText(QObject::tr("Remove island"));
+    return command;
+}
+
 void LabelEditSession::reapply(const imaging::LabelEdit& edit)
 {
     imaging::reapply(m_label, edit);

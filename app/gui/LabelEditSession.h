@@ -27,6 +27,9 @@ public:
     void dab(const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal, double radiusMm, bool erase);
     /// Ends the stroke; returns the undo command that holds it (already applied), or nullptr if nothing changed.
     QUndoCommand* finishStroke();
+    /// Removes the connected piece of the label at `pointMm` (imaging::removeIsland); returns its undo command
+    /// (already applied), or nullptr when no labelled voxel is within 3 mm.
+    QUndoCommand* removeIsland(const Eigen::Vector3d& pointMm);
     /// Voxels set to 1 and to 0 by the strokes in effect now.
     std::size_t paintedVoxels() const { return m_painted; }
     std::size_t erasedVoxels() const { return m_erased; }

@@ -130,6 +130,9 @@ public:
     bool applyLabelEdits();
     /// Ends the session without adding anything (its strokes stay in the undo history, harmless).
     void discardLabelEdits();
+    /// Label Editing > Remove Island: erases the connected piece of the working label at the MPR cursor (one undo
+    /// step); false without a session or with no labelled voxel within 3 mm.
+    bool removeIslandAtCursor();
     /// The Measurements dock's table: one row per centerline (length, radii, diameters, stenosis) and a first row for
     /// the maximum diameter; clicking a row moves the MPR cursor to its narrowest (or widest) section.
     QTableWidget* measurementTable() const { return m_measurementTable; }

@@ -44,6 +44,8 @@ void MainWindow::createLabelEditToolBar()
     m_brushRadius->setValue(3.0);
     m_brushRadius->setSuffix(" mm");
     m_editToolBar->addWidget(m_brushRadius);
+    QAction* island = m_editToolBar->addAction(tr("Remove Island"), this, [this] { removeIslandAtCursor(); });
+    island->setToolTip(tr("Remove the connected piece of the label at the cursor (click it in an MPR view first)"));
     QAction* apply = m_editToolBar->addAction(tr("Apply Edits"), this, [this] { applyLabelEdits(); });
     m_editToolBar->addAction(tr("Discard Edits"), this, [this] { discardLabelEdits(); });
     apply->setToolTip(tr("Add the edited label to the study as a new artifact (the original stays)"));
@@ -116,6 +118,22 @@ bool MainWindow::startLabelEditing(viz::BrushMode brush, double radiusMm)
     for (viz::SliceOrientation orientation : kOrientations)
         m_views->sliceView(orientation)->setBrush(brush == viz::BrushMode::Off ? viz::BrushMode::Paint : brush, radiusMm);
     m_editToolBar->show();
+    return true;
+}
+
+bool MainWindow::removeIslandAtCursor()
+{
+    if (!m_labelEdit)
+        return false;
+    const Eigen::Vector3d cursor = m_views->sliceView(viz::SliceOrientation::Axial)->cursor();
+    QUndoCommand* island = m_labelEdit->removeIsland(cursor);
+    if (!island)
+    {
+        statusBar()->showMessage(tr("No labelled voxel within 3 mm of the cursor"), 5000);
+        return false;
+    }
+    m_document.undoStack()->push(island);
+    statusBar()->showMessage(tr("Island removed: %1 voxels erased in all").arg(m_labelEdit->erasedVoxels()), 5000);
     return true;
 }
 

@@ -193,6 +193,22 @@ private slots:
         mouse(QEvent::MouseButtonPress, middle, Qt::LeftButton);
         mouse(QEvent::MouseButtonRelease, middle, Qt::NoButton);
         QVERIFY(window.labelEditSession()->erasedVoxels() > 0);
+        // Remove Island at the cursor: the painted blob beside the aorta (not connected to it) goes in one undo step.
+        const std::size_t erased = window.labelEditSession()->erasedVoxels();
+        const long lumenVoxels = voxels(window.labelEditSession()->label());
+        window.labelEditSession()->dab(dicom::kPhantomCentre + Eigen::Vector3d(70.0, 0.0, 0.0), Eigen::Vector3d::UnitZ(),
+                                       4.0, false);
+        window.document().undoStack()->push(window.labelEditSession()->finishStroke());
+        const long withBlob = voxels(window.labelEditSession()->label());
+        QVERIFY(withBlob > lumenVoxels);
+        axial->setCursor(dicom::kPhantomCentre + Eigen::Vector3d(70.0, 0.0, 0.0));
+        QVERIFY(window.removeIslandAtCursor());
+        QCOMPARE(voxels(window.labelEditSession()->label()), lumenVoxels);
+        QCOMPARE(window.labelEditSession()->erasedVoxels(), erased + std::size_t(withBlob - lumenVoxels));
+        window.document().undoStack()->undo();
+        QCOMPARE(voxels(window.labelEditSession()->label()), withBlob);
+        axial->setCursor(dicom::kPhantomCentre + Eigen::Vector3d(140.0, 140.0, 0.0)); // air: nothing near
+        QVERIFY(!window.removeIslandAtCursor());
         window.discardLabelEdits();
         QVERIFY(!window.labelEditSession());
         QCOMPARE(window.document().study().artifacts().size(), before);

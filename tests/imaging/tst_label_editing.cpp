@@ -79,6 +79,30 @@ private slots:
         QVERIFY(std::equal(label.data(), label.data() + label.size(), painted.data()));
     }
 
+    /// Remove island: the piece at the point goes, the other stays; undo restores it exactly; a point far from any
+    /// labelled voxel changes nothing.
+    void removeIsland()
+    {
+        VolumeGeometry g;
+        g.dims = {40, 40, 20};
+        g.spacing = {0.8, 0.8, 1.5};
+        LabelVolume label(g);
+        std::fill(label.data(), label.data() + label.size(), std::uint8_t(0));
+        for (int k = 2; k < 18; ++k)
+            for (int j = 5; j < 12; ++j)
+                for (int i = 5; i < 12; ++i)
+                    label.at(i, j, k) = 1, label.at(i + 20, j + 20, k) = 1; // two blocks, apart
+        const LabelVolume original = label.clone();
+        const Eigen::Vector3d inSecond = g.indexToPatient(Eigen::Vector3d(25, 25, 10));
+        const imaging::LabelEdit island = imaging::removeIsland(label, inSecond + Eigen::Vector3d(2.0, 0, 0));
+        QCOMPARE(island.voxels.size(), std::size_t(7 * 7 * 16));
+        QCOMPARE(int(label.at(25, 25, 10)), 0);
+        QCOMPARE(int(label.at(8, 8, 10)), 1);
+        imaging::revert(label, island);
+        QVERIFY(std::equal(label.data(), label.data() + label.size(), original.data()));
+        QVERIFY(imaging::removeIsland(label, g.indexToPatient(Eigen::Vector3d(35, 5, 10))).empty());
+    }
+
     void refusals()
     {
         LabelVolume label = randomLabel(3);

@@ -70,6 +70,57 @@ void reapply(LabelVolume& label, const LabelEdit& edit)
         label.data()[voxel] = edit.after;
 }
 
+LabelEdit removeIsland(LabelVolume& label, const Eigen::Vector3d& pointMm, double searchMm)
+{
+    if (label.isEmpty())
+        throw Error("there is no label to edit");
+    const VolumeGeometry& g = label.geometry();
+    const Eigen::Vector3d index = g.patientToIndex(pointMm);
+    // The start: the labelled voxel nearest to the point within the search radius (at least half a voxel's
+    // diagonal: a point inside a voxel is that far from its centre at most).
+    searchMm = std::max(searchMm, 0.5 * g.spacing.norm());
+    const Eigen::Vector3d reach = (Eigen::Vector3d::Constant(searchMm).array() / g.spacing.array()).ceil();
+    std::size_t start = g.voxelCount();
+    double nearest = searchMm;
+    for (int k = int(std::floor(index.z() - reach.z())); k <= int(std::ceil(index.z() + reach.z())); ++k)
+        for (int j = int(std::floor(index.y() - reach.y())); j <= int(std::ceil(index.y() + reach.y())); ++j)
+            for (int i = int(std::floor(index.x() - reach.x())); i <= int(std::ceil(index.x() + reach.x())); ++i)
+            {
+                if (!g.contains(i, j, k) || !label.at(i, j, k))
+                    continue;
+                const double d = (g.indexToPatient(Eigen::Vector3d(i, j, k)) - pointMm).norm();
+                if (d <= nearest)
+                    nearest = d, start = g.linearIndex(i, j, k);
+            }
+    LabelEdit edit;
+    edit.after = 0;
+    if (start == g.voxelCount())
+        return edit;
+    const std::size_t nx = std::size_t(g.dims[0]), ny = std::size_t(g.dims[1]);
+    std::vector<std::size_t> stack{start};
+    edit.voxels.push_back(start);
+    edit.before.push_back(label.data()[start]);
+    label.data()[start] = 0;
+    while (!stack.empty())
+    {
+        const std::size_t v = stack.back();
+        stack.pop_back();
+        const int i = int(v % nx), j = int(v / nx % ny), k = int(v / (nx * ny));
+        for (int n = 0; n < 27; ++n)
+        {
+            const int ii = i + n % 3 - 1, jj = j + n / 3 % 3 - 1, kk = k + n / 9 - 1;
+            if (!g.contains(ii, jj, kk) || !label.at(ii, jj, kk))
+                continue;
+            const std::size_t w = g.linearIndex(ii, jj, kk);
+            edit.voxels.push_back(w);
+            edit.before.push_back(label.data()[w]);
+            label.data()[w] = 0;
+            stack.push_back(w);
+        }
+    }
+    return edit;
+}
+
 void revert(LabelVolume& label, const LabelEdit& edit)
 {
     for (std::size_t i = 0; i < edit.voxels.size(); ++i)

@@ -31,6 +31,12 @@ struct LabelEdit
 LabelEdit paintDisc(LabelVolume& label, const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal,
                     double radiusMm, std::uint8_t value);
 
+/// "Remove island": clears the 26-connected piece of nonzero voxels at `pointMm` (the nonzero voxel nearest to it
+/// within `searchMm`, or half a voxel's diagonal if that is more), e.g. a vein or bone fragment the segmentation
+/// kept beside the vessel.
+/// Returns the voxels that changed (empty when no labelled voxel is that near).
+LabelEdit removeIsland(LabelVolume& label, const Eigen::Vector3d& pointMm, double searchMm = 3.0);
+
 /// Writes the edit's values again (redo).
 void reapply(LabelVolume& label, const LabelEdit& edit);
 /// Restores the values before the edit (undo).
