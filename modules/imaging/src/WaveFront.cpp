@@ -154,9 +154,7 @@ public:
                 wave.push_back(v);
             // The core level holds in the trunk only: a branch's centre is dimmer (blur, the contrast falling along it).
             float brightest = 0.0f;
-            const int component = ancestorComponent(v);
-            const bool inBranch = component >= 0 && m_components[std::size_t(component)].branch;
-            if (!seed.include || inBranch || smoothed(v, brightest) >= seed.coreHu)
+            if (!seed.include || smoothed(v, brightest) >= seed.coreHu || inBranch(v))
                 expand(v, node.dist, seed);
             if (++popped % 65536 == 0)
                 progress.report(std::min(0.95, double(currentWave) * m_settings.waveWidthMm /
@@ -249,6 +247,13 @@ private:
             if (m_component[std::uint32_t(p)] >= 0)
                 return m_component[std::uint32_t(p)];
         return -1;
+    }
+
+    /// Whether voxel v grew inside a branch (its nearest linked ancestor's component is one).
+    bool inBranch(std::uint32_t v) const
+    {
+        const int c = ancestorComponent(v);
+        return c >= 0 && m_components[std::size_t(c)].branch;
     }
 
     bool beyondBranchLimit(std::uint32_t v, float dist, const FrontSeed& seed) const
