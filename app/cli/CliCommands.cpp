@@ -4,7 +4,9 @@
 
 #include "vsim/app/DemoStudy.h"
 #include "vsim/app/DicomStudyImport.h"
+#include "vsim/app/GuidedSegmentationRecord.h"
 #include "vsim/app/NetworkPipeline.h"
+#include "vsim/app/SegmentNames.h"
 #include "vsim/app/StudySummary.h"
 #include "vsim/app/VersionInfo.h"
 #include "vsim/core/Error.h"
@@ -15,14 +17,13 @@
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/imaging/VesselNames.h"
-#include "vsim/app/SegmentNames.h"
 #include "vsim/imaging/GuidedSegmentation.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/study/Study.h"
+#include "vsim/study/VolumeFileImport.h"
 
 #include <nlohmann/json.hpp>
-#include "vsim/study/VolumeFileImport.h"
 
 #include <algorithm>
 #include <array>
@@ -185,21 +186,13 @@ std::vector<Eigen::Vector3d> pointOptions(const Arguments& arguments, const std:
     return points;
 }
 
-std::string pointsText(const std::vector<Eigen::Vector3d>& points)
-{
-    std::string text;
-    for (const Eigen::Vector3d& p : points)
-        text += (text.empty() ? "" : "; ") + numberText(p.x()) + "," + numberText(p.y()) + "," + numberText(p.z());
-    return text;
-}
-
-/// segment --target: the guided segmentation from points.
-imaging::SegmentationResult segmentFromPoints(const Arguments& arguments, const CtVolume& ct,
-                                              study::Provenance& provenance, const Progress& progress)
+/// segment --target: the guided segmentation from points; the label is recorded with its request.
+std::string segmentFromPoints(const Arguments& arguments, study::Study& study, const std::string& imageId,
+                              const CtVolume& ct, imaging::SegmentationResult& result,
+                              imaging::SegmentationRequest& request, const Progress& progress)
 {
     ParameterSet parameters(imaging::guidedSegmentationParameters());
     applyParameters(arguments, parameters);
-    imaging::SegmentationRequest request;
     request.target = imaging::segmentationTargetFromName(arguments.option("target"));
     request.includeMm = pointOptions(arguments, "seed");
     request.excludeMm = pointOptions(arguments, "exclude");
@@ -216,20 +209,8 @@ imaging::SegmentationResult segmentFromPoints(const Arguments& arguments, const 
         }
     if (arguments.hasOption("max-length"))
         request.maxLengthMm = quantityOption(arguments, "max-length", "mm", 0.0);
-    imaging::SegmentationResult result = imaging::segmentFromPoints(ct, parameters, request, progress);
-    provenance.parameters = parameters.valuesAsText();
-    provenance.parameters["target"] = imaging::segmentationTargetName(request.target);
-    provenance.parameters["include_points_mm"] = pointsText(request.includeMm.empty()
-                                                                ? std::vector<Eigen::Vector3d>{result.seedMm}
-                                                                : request.includeMm);
-    provenance.parameters["include_point_found_automatically"] = result.seedFound ? "yes" : "no";
-    provenance.parameters["exclude_points_mm"] = pointsText(request.excludeMm);
-    for (std::size_t n = 0; n < request.stops.size(); ++n)
-        provenance.parameters["stop_plane_" + std::to_string(n + 1)] =
-            pointsText({request.stops[n].pointMm}) + " normal " + pointsText({request.stops[n].normal});
-    if (request.maxLengthMm)
-        provenance.parameters["max_length_mm"] = numberText(*request.maxLengthMm);
-    return result;
+    result = imaging::segmentFromPoints(ct, parameters, request, progress);
+    return app::recordGuidedSegmentation(study, result, request, parameters, imageId);
 }
 
 /// segment without --target: the layered segmentation from one seed (automatic unless given).
@@ -249,7 +230,7 @@ imaging::SegmentationResult segmentFromSeed(const Arguments& arguments, const Ct
         seed = seeds.front();
     imaging::SegmentationResult result = imaging::segmentVessels(ct, parameters, seed, progress);
     provenance.parameters = parameters.valuesAsText();
-    provenance.parameters["seed_mm"] = pointsText({result.seedMm});
+    provenance.parameters["seed_mm"] = app::pointsText({result.seedMm});
     provenance.parameters["seed_found_automatically"] = result.seedFound ? "yes" : "no";
     return result;
 }
@@ -263,27 +244,35 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
                                                "the study has no CT image: import one first (vascusim-cli import "
                                                "<dicom folder> --study S)");
     const CtVolume ct = study.loadImage(imageId);
-    study::Provenance provenance;
-    provenance.command = "segment";
-    provenance.inputs = {imageId};
     const bool guided = arguments.hasOption("target");
-    const imaging::SegmentationResult result =
-        guided ? segmentFromPoints(arguments, ct, provenance, progress.subRange(0.0, 0.9))
-               : segmentFromSeed(arguments, ct, provenance, progress.subRange(0.0, 0.9));
-    const std::string id = study.addLabel(result.label, "Vessel lumen", provenance, result.warnings);
+    imaging::SegmentationResult result;
+    imaging::SegmentationRequest request;
+    std::string id;
+    if (guided)
+        id = segmentFromPoints(arguments, study, imageId, ct, result, request, progress.subRange(0.0, 0.9));
+    else
+    {
+        study::Provenance provenance;
+        provenance.command = "segment";
+        provenance.inputs = {imageId};
+        result = segmentFromSeed(arguments, ct, provenance, progress.subRange(0.0, 0.9));
+        id = study.addLabel(result.label, "Vessel lumen", provenance, result.warnings);
+    }
     study.save();
     progress.report(1.0, "saved");
     std::cout << "segmented " << imageId << " as " << id << ": " << numberText(result.figures.at("volume_ml")) << " ml";
     if (guided)
-        std::cout << " (" << provenance.parameters["target"] << "), window "
+        std::cout << " (" << imaging::segmentationTargetName(request.target) << "), window "
                   << numberText(result.figures.at("lower_hu")) << ".." << numberText(result.figures.at("upper_hu"))
                   << " HU, " << numberText(result.figures.at("leaks_cut")) << " leak(s) cut, points "
-                  << provenance.parameters["include_points_mm"] << " mm"
+                  << app::pointsText(request.includeMm.empty() ? std::vector<Eigen::Vector3d>{result.seedMm}
+                                                               : request.includeMm)
+                  << " mm"
                   << (result.seedFound ? " (the aorta found automatically)" : "") << "\n";
     else
         std::cout << ", boundary " << numberText(result.figures.at("threshold_hu")) << " HU (blood "
                   << numberText(result.figures.at("blood_hu")) << " HU, tissue "
-                  << numberText(result.figures.at("tissue_hu")) << " HU), seed " << provenance.parameters["seed_mm"]
+                  << numberText(result.figures.at("tissue_hu")) << " HU), seed " << app::pointsText({result.seedMm})
                   << " mm" << (result.seedFound ? " (found automatically)" : "") << "\n";
     for (const auto& [key, value] : result.figures) // each point's window (HU) and lumen radius (mm)
         if (key.rfind("include_", 0) == 0 || key.rfind("exclude_", 0) == 0)

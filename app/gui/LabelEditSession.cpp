@@ -41,10 +41,11 @@ LabelEditSession::LabelEditSession(std::string sourceId, const LabelVolume& sour
 }
 
 void LabelEditSession::dab(const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal, double radiusMm,
-                           bool erase)
+                           std::uint8_t value, bool sphere)
 {
-    // A stroke paints or erases, not both (the brush mode cannot change during a drag; merge() checks it).
-    m_stroke.merge(imaging::paintDisc(m_label, centreMm, planeNormal, radiusMm, erase ? 0 : 1));
+    // A stroke writes one value (the brush mode cannot change during a drag; merge() checks it).
+    m_stroke.merge(sphere ? imaging::paintBall(m_label, centreMm, radiusMm, value)
+                          : imaging::paintDisc(m_label, centreMm, planeNormal, radiusMm, value));
     emit labelChanged();
 }
 

@@ -23,8 +23,10 @@ public:
     const std::string& sourceId() const { return m_sourceId; }
     /// The working copy the views overlay (edited in place).
     const LabelVolume& label() const { return m_label; }
-    /// One dab of the current stroke: writes 1 (paint) or 0 (erase) in a disc of `radiusMm` in the view's plane.
-    void dab(const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal, double radiusMm, bool erase);
+    /// One dab of the current stroke: writes `value` (1 lumen, 4 thrombus, 5 wall; 0 erases) in a disc of
+    /// `radiusMm` in the view's plane, or in a ball of that radius through the slices (`sphere`).
+    void dab(const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal, double radiusMm, std::uint8_t value,
+             bool sphere);
     /// Ends the stroke; returns the undo command that holds it (already applied), or nullptr if nothing changed.
     QUndoCommand* finishStroke();
     /// Removes the connected piece of the label at `pointMm` (imaging::removeIsland); returns its undo command

@@ -30,6 +30,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     setCentralWidget(m_views);
     createDocks();
     createMeasurementDock();
+    createSegmentationPointsDock();
     createStatusBar();
     createMenus();
     connect(&m_document, &StudyDocument::artifactsChanged, this, [this] {

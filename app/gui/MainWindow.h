@@ -12,6 +12,7 @@
 #include "vsim/core/RunStatus.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/dicom/DicomScan.h"
+#include "vsim/imaging/GuidedSegmentation.h"
 #include "vsim/viz/BrushMode.h"
 
 #include <QMainWindow>
@@ -23,6 +24,7 @@
 #include <optional>
 #include <set>
 
+class QComboBox;
 class QDockWidget;
 class QDoubleSpinBox;
 class QLabel;
@@ -45,6 +47,7 @@ namespace vsim::gui {
 
 class InteractiveWall;
 class LabelEditSession;
+class SegmentationPointsPanel;
 class ViewLayout;
 
 /// One study per window (document-oriented): artifact tree, workflow dock, 4-up views, status bar with progress
@@ -81,6 +84,14 @@ public:
     /// Segments the vessels of the newest image in the background (segmentationParameters(); automatic seed
     /// unless `seedMm`), adds the label (undoable), overlays it in the MPRs and shows its surface in 3D.
     bool segmentVessels(const std::optional<Eigen::Vector3d>& seedMm = std::nullopt);
+    /// The guided segmentation (Vessels > Segment from Points: the Segmentation Points dock) of the newest image in
+    /// the background: the label is added (undoable), named after the target, with the request in its provenance;
+    /// a re-run replaces the label of the panel's run before while that is the newest label and unused (one undo
+    /// step). False without a study or image, without an include point (hepatic, all) or while a task runs.
+    bool segmentFromPoints(const imaging::SegmentationRequest& request);
+    /// Shows the Segmentation Points dock; an empty one starts from the points of the newest guided label.
+    void showSegmentationPoints();
+    SegmentationPointsPanel* segmentationPointsPanel() const { return m_pointsPanel; }
     /// Skeleton and centerlines of the newest vessel label in the background; both added (one undo step) and drawn
     /// over the lumen surface in the 3D view.
     bool extractSkeletonAndCenterlines();
@@ -117,6 +128,7 @@ public:
     ParameterSet& femParameters() { return m_femParameters; }
     /// The parameters the vessel steps use (Vessels > Parameters edits them; defaults from the declarations).
     ParameterSet& segmentationParameters() { return m_segmentationParameters; }
+    ParameterSet& guidedSegmentationParameters() { return m_guidedParameters; }
     ParameterSet& skeletonParameters() { return m_skeletonParameters; }
     ParameterSet& centerlineParameters() { return m_centerlineParameters; }
 
@@ -173,6 +185,7 @@ private:
     void createMenus();
     void createVesselMenu();
     void createMeasurementDock();
+    void createSegmentationPointsDock();
     void createLabelEditToolBar();
     void createWallMenu();
     void createDrugMenu();
@@ -216,6 +229,10 @@ private:
     QAction* m_redoAction = nullptr;
 
     ParameterSet m_segmentationParameters;
+    ParameterSet m_guidedParameters;
+    SegmentationPointsPanel* m_pointsPanel = nullptr;
+    QDockWidget* m_pointsDock = nullptr;
+    std::string m_guidedLabelId; // the label of the panel's last run (replaced by a re-run)
     ParameterSet m_skeletonParameters;
     ParameterSet m_centerlineParameters;
     ParameterSet m_wallMeshParameters;
@@ -235,6 +252,8 @@ private:
     QAction* m_paintAction = nullptr;
     QAction* m_eraseAction = nullptr;
     QDoubleSpinBox* m_brushRadius = nullptr;
+    QAction* m_sphereAction = nullptr; // the 3D ball brush instead of the in-plane disc
+    QComboBox* m_paintValue = nullptr;  // the label value painted: lumen 1, thrombus 4, wall 5
 };
 
 } // namespace vsim::gui

@@ -1,5 +1,5 @@
 // Manual correction of the vessel label: the label overlay in the MPRs, the brush tool bar (Paint / Erase /
-// radius / Apply / Discard), one undo step per stroke, and the edited label added as a new artifact.
+// radius / Sphere / the value painted / Remove Island / Apply / Discard), one undo step per stroke, and the edited label added as a new artifact.
 
 #include "ArtifactCommands.h"
 #include "LabelEditSession.h"
@@ -10,6 +10,7 @@
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QActionGroup>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QStatusBar>
@@ -44,6 +45,19 @@ void MainWindow::createLabelEditToolBar()
     m_brushRadius->setValue(3.0);
     m_brushRadius->setSuffix(" mm");
     m_editToolBar->addWidget(m_brushRadius);
+    m_sphereAction = m_editToolBar->addAction(tr("Sphere"));
+    m_sphereAction->setCheckable(true);
+    m_sphereAction->setToolTip(tr("3D brush: paint or erase a ball of the radius through the slices, not a disc in the "
+                                  "view's plane"));
+    m_editToolBar->addWidget(new QLabel(tr(" Paint as "), this));
+    m_paintValue = new QComboBox(this);
+    m_paintValue->setObjectName("paintValue");
+    // The label values of the AAA sac (imaging::AneurysmSac): lumen 1, thrombus 4, wall 5.
+    m_paintValue->addItem(tr("Lumen"), 1);
+    m_paintValue->addItem(tr("Thrombus"), 4);
+    m_paintValue->addItem(tr("Wall"), 5);
+    m_paintValue->setToolTip(tr("The label value the brush paints: the lumen, or the thrombus and wall of an AAA sac label"));
+    m_editToolBar->addWidget(m_paintValue);
     QAction* island = m_editToolBar->addAction(tr("Remove Island"), this, [this] { removeIslandAtCursor(); });
     island->setToolTip(tr("Remove the connected piece of the label at the cursor (click it in an MPR view first)"));
     QAction* apply = m_editToolBar->addAction(tr("Apply Edits"), this, [this] { applyLabelEdits(); });
@@ -63,8 +77,12 @@ void MainWindow::createLabelEditToolBar()
     {
         viz::SliceView* view = m_views->sliceView(orientation);
         connect(view, &viz::SliceView::brushDab, this, [this, view](const Eigen::Vector3d& centre, const Eigen::Vector3d& normal) {
-            if (m_labelEdit)
-                m_labelEdit->dab(centre, normal, view->brushRadius(), view->brush() == viz::BrushMode::Erase);
+            if (!m_labelEdit)
+                return;
+            const bool erase = view->brush() == viz::BrushMode::Erase;
+            m_labelEdit->dab(centre, normal, view->brushRadius(),
+                             erase ? std::uint8_t(0) : std::uint8_t(m_paintValue->currentData().toInt()),
+                             m_sphereAction->isChecked());
         });
         connect(view, &viz::SliceView::brushStrokeFinished, this, [this] {
             if (!m_labelEdit)
@@ -159,7 +177,10 @@ bool MainWindow::applyLabelEdits()
     provenance.parameters["painted_voxels"] = std::to_string(m_labelEdit->paintedVoxels());
     provenance.parameters["erased_voxels"] = std::to_string(m_labelEdit->erasedVoxels());
     const LabelVolume edited = m_labelEdit->label().clone();
-    const std::string id = m_document.study().addLabel(edited, "Vessel lumen (edited)", provenance);
+    std::string name = m_document.study().artifact(m_labelEdit->sourceId()).name;
+    if (name.size() < 9 || name.compare(name.size() - 9, 9, " (edited)") != 0)
+        name += " (edited)";
+    const std::string id = m_document.study().addLabel(edited, name, provenance);
     m_scene.labels[id] = edited;
     m_labelEdit->deleteLater();
     m_labelEdit = nullptr;

@@ -5,6 +5,7 @@
 // study and applied when it is opened again.
 
 #include "MainWindow.h"
+#include "SegmentationPointsPanel.h"
 #include "vsim/app/SacRecord.h"
 #include "vsim/app/SegmentNames.h"
 #include "ViewLayout.h"
@@ -206,6 +207,10 @@ void MainWindow::restoreScene()
 {
     m_scene = SceneCache();
     m_drawnScene.clear();
+    m_guidedLabelId.clear(); // a new study starts without points; its guided label's points come back on request
+    imaging::SegmentationRequest noPoints;
+    noPoints.target = imaging::SegmentationTarget::Aorta;
+    m_pointsPanel->setRequest(noPoints);
     const ViewState state = ViewState::fromJson(
         m_document.hasStudy() && m_document.study().metadata().count(kViewStateKey)
             ? m_document.study().metadata().at(kViewStateKey)

@@ -163,11 +163,14 @@ void MainWindow::createVesselMenu()
 {
     // The parameters the vessel steps run with start at the declared defaults.
     m_segmentationParameters = ParameterSet(imaging::segmentationParameters());
+    m_guidedParameters = ParameterSet(imaging::guidedSegmentationParameters());
     m_skeletonParameters = ParameterSet(imaging::skeletonParameters());
     m_centerlineParameters = ParameterSet(imaging::centerlineParameters());
     createLabelEditToolBar();
 
     QMenu* vessels = menuBar()->addMenu(tr("V&essels"));
+    // The guided segmentation (target aorta / hepatic / all from include and exclude points) in its dock.
+    m_documentActions << vessels->addAction(tr("Segment from &Points..."), this, [this] { showSegmentationPoints(); });
     m_documentActions << vessels->addAction(tr("&Segment Vessels"), this, [this] { segmentVessels(); });
     // Click a vessel in any MPR view (the linked cursor goes there), then segment from that seed.
     m_documentActions << vessels->addAction(tr("Segment from the &Cursor"), this, [this] {
@@ -185,6 +188,7 @@ void MainWindow::editVesselParameters()
 {
     editParametersInDialog(this, tr("Vessel parameters"),
                            {{tr("Segmentation"), &m_segmentationParameters},
+                            {tr("Segmentation from points"), &m_guidedParameters},
                             {tr("Skeleton"), &m_skeletonParameters},
                             {tr("Centerlines"), &m_centerlineParameters}});
 }
@@ -218,10 +222,7 @@ bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)
             const CtVolume ct = m_document.study().loadImage(imageId); // the study is not edited while a task runs
             outcome->segmentation = imaging::segmentVessels(ct, parameters, seedMm, progress.subRange(0.0, 0.8));
             outcome->parameters = parameters.valuesAsText();
-            ParameterSet surface(mesh::surfaceParameters());
-            surface.set("target_vertices", 20000); // enough for display
-            outcome->surface =
-                mesh::extractVesselSurface(outcome->segmentation.label, 1, surface, progress.subRange(0.8, 1.0)).surface;
+            outcome->surface = displaySurface(outcome->segmentation.label, progress.subRange(0.8, 1.0));
         },
         [this, imageId, outcome] {
             study::Provenance provenance;

@@ -57,6 +57,13 @@ sim::network::NetworkRunSetup recordedSetup(const study::Study& study, const stu
 
 } // namespace
 
+TriangleMesh displaySurface(const LabelVolume& label, const Progress& progress)
+{
+    ParameterSet parameters(mesh::surfaceParameters());
+    parameters.set("target_vertices", 20000); // enough for display
+    return mesh::extractVesselSurface(label, 1, parameters, progress).surface;
+}
+
 bool isShowable(const study::Artifact& a)
 {
     return a.kind == study::ArtifactKind::Image || a.kind == study::ArtifactKind::Label ||
@@ -110,9 +117,7 @@ SceneCache fillSceneCache(const study::Study& study, const SceneContent& c, cons
         progress.report(0.0, "vessel surface");
         const LabelVolume label = cache.labels.count(c.label) ? cache.labels.at(c.label) : study.loadLabel(c.label);
         more.labels[c.label] = label;
-        ParameterSet parameters(mesh::surfaceParameters());
-        parameters.set("target_vertices", 20000); // enough for display
-        more.lumenSurfaces[c.label] = mesh::extractVesselSurface(label, 1, parameters, progress.subRange(0.0, 0.4)).surface;
+        more.lumenSurfaces[c.label] = displaySurface(label, progress.subRange(0.0, 0.4));
     }
     for (const std::string& id : {c.skeleton, c.centerlines})
         if (!id.empty() && !cache.skeletons.count(id))

@@ -41,6 +41,9 @@ struct SceneContent
 /// content is the newest shown among the wall runs, drug runs, skeletons / centerlines and labels.
 SceneContent sceneContent(const study::Study& study, const std::set<std::string>& hidden);
 
+/// The lumen surface of label value 1 as the 3D view draws it (about 20,000 vertices).
+TriangleMesh displaySurface(const LabelVolume& label, const Progress& progress = {});
+
 /// True for the artifacts that have a picture and can be shown or hidden (images, labels, skeletons, wall runs,
 /// drug runs).
 bool isShowable(const study::Artifact& artifact);

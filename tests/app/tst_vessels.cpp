@@ -8,6 +8,7 @@
 #include "LabelEditSession.h"
 #include "MainWindow.h"
 #include "ParameterForm.h"
+#include "SegmentationPointsPanel.h"
 #include "StudyDocument.h"
 #include "ViewLayout.h"
 #include "vsim/app/SegmentNames.h"
@@ -20,6 +21,7 @@
 #include "vsim/imaging/VesselSegmentation.h"
 
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -196,11 +198,15 @@ private slots:
         // Remove Island at the cursor: the painted blob beside the aorta (not connected to it) goes in one undo step.
         const std::size_t erased = window.labelEditSession()->erasedVoxels();
         const long lumenVoxels = voxels(window.labelEditSession()->label());
+        // The blob is painted with the 3D sphere brush: a ball of 10 mm (4189 mm3) through the 8 mm slices, within
+        // 25 % on these 98 mm3 voxels.
         window.labelEditSession()->dab(dicom::kPhantomCentre + Eigen::Vector3d(70.0, 0.0, 0.0), Eigen::Vector3d::UnitZ(),
-                                       4.0, false);
+                                       10.0, 1, true);
         window.document().undoStack()->push(window.labelEditSession()->finishStroke());
         const long withBlob = voxels(window.labelEditSession()->label());
-        QVERIFY(withBlob > lumenVoxels);
+        const double blobMm3 = double(withBlob - lumenVoxels) * original.geometry().spacing.prod();
+        qInfo("sphere brush r = 10 mm: %.0f mm3 (4/3 pi r3 = 4189)", blobMm3);
+        QVERIFY(std::abs(blobMm3 / 4188.8 - 1.0) < 0.25);
         axial->setCursor(dicom::kPhantomCentre + Eigen::Vector3d(70.0, 0.0, 0.0));
         QVERIFY(window.removeIslandAtCursor());
         QCOMPARE(voxels(window.labelEditSession()->label()), lumenVoxels);
@@ -287,6 +293,115 @@ private slots:
         QVERIFY(std::abs(cursor.z() - phantom.measures.at("max_outer_diameter_z_mm")) < 5.0);
         window.document().undoStack()->undo();
         QCOMPARE(study.artifacts().back().provenance.command, std::string("segment"));
+    }
+
+    /// Vessels > Segment from Points on a patient-like AAA: an include point placed with a click in the axial view
+    /// (a ring drawn on every MPR through it), Segment, then the point dragged along the aorta: the re-run replaces
+    /// the label in one undo step, within the issue's 5 s; the label is the library's from that point, 95 % of it in
+    /// the truth lumen; the request comes back from a reopened study.
+    void segmentFromPointsWithMarkers()
+    {
+        const fs::path folder = test::freshFolder("gui-vessels", "points-aaa");
+        dicom::PhantomOptions options;
+        options.style = dicom::PhantomStyle::Patient;
+        options.size = {160, 160, 120};
+        options.spacing = {1.1, 1.1, 1.6};
+        options.seed = 2; // seed 3 at these 1.1 mm voxels leaks into the vertebral bodies (noted in the issue)
+        const dicom::AnatomyPhantom phantom = dicom::buildAnatomyPhantom(dicom::PhantomKind::Aaa, options);
+        const VolumeGeometry geometry = dicom::phantomGeometry(options);
+        dicom::writeCtSeries(dicom::renderAnatomyCt(phantom, geometry, options.seed), dicom::stackOf(geometry), {}, folder);
+        const LabelVolume truth = dicom::renderAnatomyLabels(phantom, geometry);
+        gui::MainWindow window;
+        window.resize(1200, 900);
+        window.show();
+        const fs::path bundle = test::freshFolder("gui-vessels", "points-study") / "points.vsim";
+        QVERIFY(window.newStudy(QString::fromStdString(bundle.string())));
+        QVERIFY(window.importDicom(QString::fromStdString(folder.string())));
+        QVERIFY(vsim::test::waitForTask(window));
+        study::Study& study = window.document().study();
+        const Eigen::Vector3d aorta = imaging::findAbdominalAortaPoint(study.loadImage(study.artifacts().front().id));
+
+        window.showSegmentationPoints();
+        gui::SegmentationPointsPanel* panel = window.segmentationPointsPanel();
+        QVERIFY(panel->isVisible());
+        viz::SliceView* axial = window.views()->sliceView(viz::SliceOrientation::Axial);
+        axial->setCursor(aorta);
+        panel->setPlacing(gui::SegmentationPointsPanel::Placing::Include);
+        QVERIFY(axial->placing());
+        const auto click = [&](viz::SliceView* view, QEvent::Type type, QPointF at, Qt::MouseButtons buttons) {
+            QMouseEvent event(type, at, view->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
+            QApplication::sendEvent(view, &event);
+        };
+        const QPointF middle(axial->width() / 2.0, axial->height() / 2.0);
+        click(axial, QEvent::MouseButtonPress, middle, Qt::LeftButton);
+        click(axial, QEvent::MouseButtonRelease, middle, Qt::NoButton);
+        QCOMPARE(panel->request().includeMm.size(), std::size_t(1));
+        QVERIFY((panel->request().includeMm.front() - aorta).norm() < 1.0);
+        QCOMPARE(axial->cursor(), aorta); // placing does not move the cursor
+        QVERIFY(!axial->placing());       // one click, one point
+        for (auto orientation : {viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal, viz::SliceOrientation::Sagittal})
+            QCOMPARE(window.views()->sliceView(orientation)->markers().size(), std::size_t(1));
+        QCOMPARE(panel->pointTable()->item(0, 0)->text(), QString("+1"));
+
+        const std::size_t artifacts = study.artifacts().size();
+        QVERIFY(window.segmentFromPoints(panel->request()));
+        QVERIFY(vsim::test::waitForTask(window));
+        QCOMPARE(study.artifacts().size(), artifacts + 1);
+        const study::Artifact first = study.artifacts().back();
+        QCOMPARE(first.name, std::string("Vessel lumen (aorta)"));
+        // The same label as the library makes from that point; nearly all of it in the truth lumen (the branches
+        // are followed 20 mm only, so the Dice against the whole truth lumen is the imaging test's business).
+        const LabelVolume made = study.loadLabel(first.id);
+        imaging::SegmentationRequest direct;
+        direct.target = imaging::SegmentationTarget::Aorta;
+        direct.includeMm = panel->request().includeMm;
+        const LabelVolume library = imaging::segmentFromPoints(study.loadImage(study.artifacts().front().id),
+                                                               ParameterSet(imaging::guidedSegmentationParameters()),
+                                                               direct)
+                                        .label;
+        QVERIFY(std::equal(made.data(), made.data() + made.size(), library.data()));
+        std::size_t inLumen = 0, labelled = 0;
+        for (std::size_t v = 0; v < made.size(); ++v)
+            if (made.data()[v] == 1)
+                ++labelled, inLumen += truth.data()[v] == dicom::label::kVesselLumen;
+        const double precision = double(inLumen) / double(std::max<std::size_t>(labelled, 1));
+        qInfo("GUI guided segmentation from one placed point (patient-like AAA seed 2, 1.1 mm): %zu voxels, %.3f of "
+              "them in the truth lumen", labelled, precision);
+        QVERIFY(labelled > 10000 && precision > 0.95);
+
+        // Drag the point 20 mm up the aorta in the coronal view: the re-run replaces the label in one undo step.
+        viz::SliceView* coronal = window.views()->sliceView(viz::SliceOrientation::Coronal);
+        coronal->setCursor(aorta);
+        const Eigen::Vector3d moved = aorta + Eigen::Vector3d(0.0, 0.0, 20.0);
+        QElapsedTimer timer;
+        timer.start();
+        click(coronal, QEvent::MouseButtonPress, coronal->widgetAt(aorta), Qt::LeftButton);
+        click(coronal, QEvent::MouseMove, coronal->widgetAt(moved), Qt::LeftButton);
+        click(coronal, QEvent::MouseButtonRelease, coronal->widgetAt(moved), Qt::NoButton);
+        QVERIFY((panel->request().includeMm.front() - moved).norm() < 1.0);
+        QVERIFY(vsim::test::waitForTask(window));
+        const double rerunS = timer.elapsed() / 1000.0;
+        qInfo("re-run after moving the point: %.2f s (issue: <= 5 s)", rerunS);
+        QVERIFY(rerunS <= 5.0);
+        QCOMPARE(study.artifacts().size(), artifacts + 1);
+        QVERIFY(!study.hasArtifact(first.id));
+        const study::Artifact second = study.artifacts().back();
+        QVERIFY(second.provenance.parameters.at("include_points_mm").find(numberText(moved.z())) != std::string::npos);
+        window.document().undoStack()->undo();
+        QVERIFY(study.hasArtifact(first.id) && !study.hasArtifact(second.id));
+        window.document().undoStack()->redo();
+        QVERIFY(study.hasArtifact(second.id) && !study.hasArtifact(first.id));
+
+        // Reopened, the dock shows the points the label was made with.
+        QVERIFY(window.saveStudy());
+        QVERIFY(vsim::test::waitForTask(window));
+        gui::MainWindow reopened;
+        QVERIFY(reopened.openStudy(QString::fromStdString(bundle.string())));
+        QVERIFY(vsim::test::waitForTask(reopened));
+        reopened.showSegmentationPoints();
+        QCOMPARE(reopened.segmentationPointsPanel()->request().includeMm.size(), std::size_t(1));
+        QVERIFY((reopened.segmentationPointsPanel()->request().includeMm.front() - moved).norm() < 0.01);
+        QCOMPARE(reopened.segmentationPointsPanel()->request().target, imaging::SegmentationTarget::Aorta);
     }
 
     void withoutImageSaysWhatToDo()

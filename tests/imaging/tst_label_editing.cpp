@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <random>
+#include <set>
 
 using namespace vsim;
 
@@ -53,6 +54,29 @@ private slots:
         QVERIFY(std::abs(sagittalArea / (M_PI * radius * radius) - 1.0) < 0.08);
         for (std::size_t voxel : sagittal.voxels)
             QCOMPARE(int(voxel % 80), 40);
+    }
+
+    /// The 3D sphere brush: the voxel volume of a ball of radius 6 mm on anisotropic voxels within 3 % of 4/3 pi r^3,
+    /// across the 6 slices of 2 mm it reaches; the values it writes (thrombus 4) are kept as written.
+    void sphereBrushFillsABall()
+    {
+        VolumeGeometry geometry;
+        geometry.dims = {60, 60, 30};
+        geometry.spacing = {0.5, 0.5, 2.0};
+        LabelVolume label(geometry);
+        const Eigen::Vector3d centre = geometry.indexToPatient(Eigen::Vector3d(30.3, 29.6, 15.2));
+        const double radius = 6.0;
+        const imaging::LabelEdit ball = imaging::paintBall(label, centre, radius, 4);
+        const double volume = double(ball.voxels.size()) * 0.5 * 0.5 * 2.0;
+        qInfo("ball r = 6 mm: %zu voxels, %.0f mm3 (4/3 pi r3 = %.0f)", ball.voxels.size(), volume,
+              4.0 / 3.0 * M_PI * radius * radius * radius);
+        QVERIFY(std::abs(volume / (4.0 / 3.0 * M_PI * radius * radius * radius) - 1.0) < 0.03);
+        std::set<int> slices;
+        for (std::size_t voxel : ball.voxels)
+            slices.insert(int(voxel / (60 * 60)));
+        QCOMPARE(int(slices.size()), 6);
+        QCOMPARE(int(label.at(30, 30, 15)), 4);
+        QVERIFY_THROWS_EXCEPTION(Error, imaging::paintBall(label, centre, 0.0, 1));
     }
 
     void undoRedoIsExact()

@@ -24,18 +24,14 @@ void LabelEdit::merge(const LabelEdit& later)
         }
 }
 
-LabelEdit paintDisc(LabelVolume& label, const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal,
-                    double radiusMm, std::uint8_t value)
+namespace {
+
+/// Writes `value` into the voxels of the box of `radiusMm` around `centreMm` that `inside(offset mm)` accepts.
+template <typename Inside>
+LabelEdit paintWhere(LabelVolume& label, const Eigen::Vector3d& centreMm, double radiusMm, std::uint8_t value,
+                     const Inside& inside)
 {
-    if (label.isEmpty())
-        throw Error("there is no label to edit");
-    if (!(radiusMm > 0.0) || planeNormal.norm() < 1e-9)
-        throw Error("the brush needs a positive radius and a plane");
     const VolumeGeometry& geometry = label.geometry();
-    const Eigen::Vector3d normal = planeNormal.normalized();
-    // Half a voxel along the normal, measured with the spacing the normal sees (one slice of the MPR view).
-    const Eigen::Vector3d normalInIndex = geometry.direction.transpose() * normal;
-    const double halfThickness = 0.5 * normalInIndex.cwiseAbs().dot(geometry.spacing) / normalInIndex.cwiseAbs().sum();
     const Eigen::Vector3d centre = geometry.patientToIndex(centreMm);
     LabelEdit edit;
     edit.after = value;
@@ -50,9 +46,7 @@ LabelEdit paintDisc(LabelVolume& label, const Eigen::Vector3d& centreMm, const E
         for (int j = low[1]; j <= high[1]; ++j)
             for (int i = low[0]; i <= high[0]; ++i)
             {
-                const Eigen::Vector3d offset = geometry.indexToPatient(Eigen::Vector3d(i, j, k)) - centreMm;
-                const double along = offset.dot(normal);
-                if (std::abs(along) > halfThickness + 1e-9 || (offset - along * normal).norm() > radiusMm)
+                if (!inside(geometry.indexToPatient(Eigen::Vector3d(i, j, k)) - centreMm))
                     continue;
                 std::uint8_t& voxel = label.at(i, j, k);
                 if (voxel == value)
@@ -62,6 +56,40 @@ LabelEdit paintDisc(LabelVolume& label, const Eigen::Vector3d& centreMm, const E
                 voxel = value;
             }
     return edit;
+}
+
+void checkBrush(const LabelVolume& label, double radiusMm)
+{
+    if (label.isEmpty())
+        throw Error("there is no label to edit");
+    if (!(radiusMm > 0.0))
+        throw Error("the brush needs a positive radius");
+}
+
+} // namespace
+
+LabelEdit paintDisc(LabelVolume& label, const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal,
+                    double radiusMm, std::uint8_t value)
+{
+    checkBrush(label, radiusMm);
+    if (planeNormal.norm() < 1e-9)
+        throw Error("the brush needs a plane");
+    const VolumeGeometry& geometry = label.geometry();
+    const Eigen::Vector3d normal = planeNormal.normalized();
+    // Half a voxel along the normal, measured with the spacing the normal sees (one slice of the MPR view).
+    const Eigen::Vector3d normalInIndex = geometry.direction.transpose() * normal;
+    const double halfThickness = 0.5 * normalInIndex.cwiseAbs().dot(geometry.spacing) / normalInIndex.cwiseAbs().sum();
+    return paintWhere(label, centreMm, radiusMm, value, [&](const Eigen::Vector3d& offset) {
+        const double along = offset.dot(normal);
+        return std::abs(along) <= halfThickness + 1e-9 && (offset - along * normal).norm() <= radiusMm;
+    });
+}
+
+LabelEdit paintBall(LabelVolume& label, const Eigen::Vector3d& centreMm, double radiusMm, std::uint8_t value)
+{
+    checkBrush(label, radiusMm);
+    return paintWhere(label, centreMm, radiusMm, value,
+                      [&](const Eigen::Vector3d& offset) { return offset.norm() <= radiusMm; });
 }
 
 void reapply(LabelVolume& label, const LabelEdit& edit)

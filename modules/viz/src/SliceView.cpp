@@ -1,5 +1,7 @@
 #include "vsim/viz/SliceView.h"
 
+#include "SliceMarkerLayer.h"
+
 #include "vsim/interop/VtkImage.h"
 
 #include <QMouseEvent>
@@ -51,13 +53,14 @@ struct SliceView::Pipeline
     vtkSmartPointer<vtkImageData> scaledIndexImage; // the CT in "index * spacing" space, sharing its voxels
     vtkSmartPointer<vtkImageReslice> reslice = vtkSmartPointer<vtkImageReslice>::New();
     vtkSmartPointer<vtkImageActor> actor = vtkSmartPointer<vtkImageActor>::New();
-    // The label overlay: same reslice axes, nearest neighbour, 0 transparent and 1 translucent red.
+    // The label overlay: same reslice axes, nearest neighbour, translucent colours per value (see the table).
     vtkSmartPointer<vtkImageData> scaledIndexLabel;
     vtkSmartPointer<vtkImageReslice> labelReslice = vtkSmartPointer<vtkImageReslice>::New();
     vtkSmartPointer<vtkImageMapToColors> labelColours = vtkSmartPointer<vtkImageMapToColors>::New();
     vtkSmartPointer<vtkImageActor> labelActor = vtkSmartPointer<vtkImageActor>::New();
     std::array<vtkSmartPointer<vtkTextActor>, 4> edgeLabels; // left, right, top, bottom
     vtkSmartPointer<vtkTextActor> positionLabel;
+    std::unique_ptr<SliceMarkerLayer> markers;
 };
 
 SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
@@ -78,10 +81,16 @@ SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
     p.labelReslice->SetInterpolationModeToNearestNeighbor();
     p.labelReslice->SetBackgroundLevel(0.0);
     auto table = vtkSmartPointer<vtkLookupTable>::New();
-    table->SetNumberOfTableValues(2);
-    table->SetTableRange(0.0, 1.0);
+    // Label values: 0 transparent, 1 lumen (red), 4 thrombus (yellow), 5 wall (blue) as the AAA sac writes them;
+    // 2 and 3 (other tissue classes of the phantoms' truth) orange.
+    table->SetNumberOfTableValues(6);
+    table->SetTableRange(0.0, 5.0);
     table->SetTableValue(0, 0.0, 0.0, 0.0, 0.0);
     table->SetTableValue(1, 1.0, 0.2, 0.15, 0.45);
+    table->SetTableValue(2, 1.0, 0.6, 0.1, 0.45);
+    table->SetTableValue(3, 1.0, 0.6, 0.1, 0.45);
+    table->SetTableValue(4, 1.0, 0.9, 0.2, 0.45);
+    table->SetTableValue(5, 0.3, 0.5, 1.0, 0.45);
     table->Build();
     p.labelColours->SetLookupTable(table);
     p.labelColours->SetOutputFormatToRGBA();
@@ -106,6 +115,7 @@ SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
     p.positionLabel->GetPositionCoordinate()->SetValue(0.01, 0.01);
     p.positionLabel->GetTextProperty()->SetFontSize(12);
     renderer()->AddViewProp(p.positionLabel);
+    p.markers = std::make_unique<SliceMarkerLayer>(renderer());
     setWindowLevel(kCtaPreset);
     updateCamera();
 }
@@ -183,7 +193,7 @@ void SliceView::setBrush(BrushMode brush, double radiusMm)
 {
     m_brush = brush;
     m_brushRadiusMm = std::max(0.1, radiusMm);
-    QWidget::setCursor(m_brush == BrushMode::Off ? Qt::ArrowCursor : Qt::CrossCursor);
+    QWidget::setCursor(m_placing || m_brush != BrushMode::Off ? Qt::CrossCursor : Qt::ArrowCursor);
 }
 
 void SliceView::clearImage()
@@ -220,13 +230,51 @@ void SliceView::setWindowLevel(const WindowLevel& windowLevel)
     emit windowLevelChanged(m_windowLevel.window, m_windowLevel.level);
 }
 
+double SliceView::millimetresPerPixel() const { return m_fieldOfView / std::max(1, height()); }
+
 Eigen::Vector3d SliceView::patientAt(const QPointF& widgetPosition) const
 {
-    const double millimetresPerPixel = m_fieldOfView / std::max(1, height());
-    const double right = (widgetPosition.x() - 0.5 * width()) * millimetresPerPixel;
-    const double up = (0.5 * height() - widgetPosition.y()) * millimetresPerPixel;
+    const double right = (widgetPosition.x() - 0.5 * width()) * millimetresPerPixel();
+    const double up = (0.5 * height() - widgetPosition.y()) * millimetresPerPixel();
     const ScreenAxes axes = screenAxes(m_orientation);
     return m_cursor + right * axes.right + up * axes.up;
+}
+
+QPointF SliceView::widgetAt(const Eigen::Vector3d& pointMm) const
+{
+    const ScreenAxes axes = screenAxes(m_orientation);
+    const Eigen::Vector3d offset = pointMm - m_cursor;
+    return {0.5 * width() + offset.dot(axes.right) / millimetresPerPixel(),
+            0.5 * height() - offset.dot(axes.up) / millimetresPerPixel()};
+}
+
+void SliceView::setMarkers(std::vector<SliceMarker> markers)
+{
+    m_draggedMarker.reset();
+    m_pipeline->markers->setMarkers(std::move(markers));
+    updateMarkers();
+}
+
+const std::vector<SliceMarker>& SliceView::markers() const { return m_pipeline->markers->markers(); }
+
+void SliceView::setPlacing(bool placing)
+{
+    m_placing = placing;
+    QWidget::setCursor(m_placing || m_brush != BrushMode::Off ? Qt::CrossCursor : Qt::ArrowCursor);
+}
+
+void SliceView::updateMarkers()
+{
+    // Markers within one slice spacing (as the normal sees the voxels) of the plane are drawn.
+    double thickness = 1.0;
+    if (hasImage())
+    {
+        const VolumeGeometry& geometry = m_image.geometry();
+        const Eigen::Vector3d normalInIndex = geometry.direction.transpose() * screenAxes(m_orientation).normal();
+        thickness = normalInIndex.cwiseAbs().dot(geometry.spacing) / normalInIndex.cwiseAbs().sum();
+    }
+    m_pipeline->markers->update(m_cursor, screenAxes(m_orientation), thickness, millimetresPerPixel());
+    update();
 }
 
 void SliceView::updateSlice()
@@ -272,7 +320,7 @@ void SliceView::updateSlice()
                                   .arg(index.z(), 0, 'f', 0)
                                   .toLatin1()
                                   .constData());
-    update();
+    updateMarkers();
 }
 
 void SliceView::updateCamera()
@@ -283,8 +331,8 @@ void SliceView::updateCamera()
     camera->SetPosition(0.0, 0.0, 1000.0);
     camera->SetViewUp(0.0, 1.0, 0.0);
     camera->SetParallelScale(0.5 * m_fieldOfView);
-    renderer()->ResetCameraClippingRange(-2000, 2000, -2000, 2000, -1, 1);
-    update();
+    renderer()->ResetCameraClippingRange(-2000, 2000, -2000, 2000, -1, 2);
+    updateMarkers(); // the rings keep their size on screen
 }
 
 void SliceView::resizeGL(int width, int height)
@@ -305,6 +353,15 @@ void SliceView::mousePressEvent(QMouseEvent* event)
         emit brushDab(patientAt(event->position()), screenAxes(m_orientation).normal());
         return;
     }
+    constexpr double kPickPixels = 9.0;
+    m_draggedMarker = m_pipeline->markers->pick(patientAt(event->position()), kPickPixels * millimetresPerPixel());
+    if (m_draggedMarker)
+        return;
+    if (m_placing)
+    {
+        emit pointPlaced(patientAt(event->position()));
+        return;
+    }
     setCursor(patientAt(event->position()));
 }
 
@@ -314,7 +371,12 @@ void SliceView::mouseMoveEvent(QMouseEvent* event)
         return;
     if ((event->buttons() & Qt::LeftButton) && m_stroking)
         emit brushDab(patientAt(event->position()), screenAxes(m_orientation).normal());
-    else if (event->buttons() & Qt::LeftButton)
+    else if ((event->buttons() & Qt::LeftButton) && m_draggedMarker)
+    {
+        m_pipeline->markers->moveMarker(*m_draggedMarker, patientAt(event->position()));
+        updateMarkers();
+    }
+    else if ((event->buttons() & Qt::LeftButton) && !m_placing)
         setCursor(patientAt(event->position()));
     else if (event->buttons() & Qt::RightButton)
     {
@@ -329,6 +391,12 @@ void SliceView::mouseReleaseEvent(QMouseEvent* event)
     {
         m_stroking = false;
         emit brushStrokeFinished();
+    }
+    if (event->button() == Qt::LeftButton && m_draggedMarker)
+    {
+        const int id = *m_draggedMarker;
+        m_draggedMarker.reset();
+        emit markerMoved(id, patientAt(event->position()));
     }
 }
 

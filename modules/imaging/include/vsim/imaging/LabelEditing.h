@@ -1,6 +1,6 @@
 #pragma once
 
-// Manual correction of a label map: a round brush in the plane of an MPR view paints or erases voxels, and every
+// Manual correction of a label map: a round brush in the plane of an MPR view (or a sphere) paints or erases voxels, and every
 // change is recorded so that it can be undone and redone exactly (GUI brush, thesis ch. 4.1 "interactive
 // correction" of the automatic extraction).
 
@@ -30,6 +30,10 @@ struct LabelEdit
 /// slice of a 2D brush). Returns the voxels that changed.
 LabelEdit paintDisc(LabelVolume& label, const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal,
                     double radiusMm, std::uint8_t value);
+
+/// The 3D sphere brush: writes `value` into every voxel whose centre lies within `radiusMm` of `centreMm`
+/// (patient frame, mm), through the slices as well as in them.
+LabelEdit paintBall(LabelVolume& label, const Eigen::Vector3d& centreMm, double radiusMm, std::uint8_t value);
 
 /// "Remove island": clears the 26-connected piece of nonzero voxels at `pointMm` (the nonzero voxel nearest to it
 /// within `searchMm`, or half a voxel's diagonal if that is more), e.g. a vein or bone fragment the segmentation

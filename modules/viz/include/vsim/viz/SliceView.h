@@ -2,10 +2,14 @@
 
 #include "vsim/core/ImageVolume.h"
 #include "vsim/viz/BrushMode.h"
+#include "vsim/viz/SliceMarker.h"
 #include "vsim/viz/SliceOrientation.h"
 #include "vsim/viz/VtkView.h"
 
 #include <QString>
+
+#include <optional>
+#include <vector>
 
 namespace vsim::viz {
 
@@ -13,9 +17,11 @@ namespace vsim::viz {
 /// reslicing at the finest voxel spacing, window/level, LPS orientation letters on the four edges and the slice
 /// position. The cursor sits at the centre of the view; fieldOfView() mm span the view's height.
 /// Mouse: left click/drag moves the cursor in the plane, right drag changes window (x) and level (y), the wheel
-/// steps through slices by the finest spacing. A label map on the CT's grid can be overlaid (voxels of value 1 in
-/// translucent red); in brush mode the left button paints or erases it instead of moving the cursor: the view
-/// only reports where (brushDab), the owner edits the label and calls refreshLabel().
+/// steps through slices by the finest spacing. A label map on the CT's grid can be overlaid (value 1 lumen in
+/// translucent red, 4 thrombus yellow, 5 wall blue); in brush mode the left button paints or erases it instead of moving the cursor: the view
+/// only reports where (brushDab), the owner edits the label and calls refreshLabel(). Markers (SliceMarker) are drawn
+/// where the slice passes them and can be dragged with the left button (markerMoved on release); in placing mode a
+/// left click reports a point (pointPlaced) instead of moving the cursor.
 class SliceView : public VtkView
 {
     Q_OBJECT
@@ -40,6 +46,15 @@ public:
     BrushMode brush() const { return m_brush; }
     double brushRadius() const { return m_brushRadiusMm; }
 
+    /// The markers drawn over the slices (replacing the ones before).
+    void setMarkers(std::vector<SliceMarker> markers);
+    const std::vector<SliceMarker>& markers() const;
+    /// Placing mode: a left click away from a marker emits pointPlaced() and leaves the cursor where it is.
+    void setPlacing(bool placing);
+    bool placing() const { return m_placing; }
+    /// The widget position (logical pixels) of a patient point projected onto the view's plane.
+    QPointF widgetAt(const Eigen::Vector3d& pointMm) const;
+
     /// The cursor (mm, LPS): the slice passes through it and it sits at the centre of the view.
     Eigen::Vector3d cursor() const { return m_cursor; }
     void setCursor(const Eigen::Vector3d& cursor);
@@ -60,6 +75,10 @@ signals:
     /// and brushStrokeFinished().
     void brushDab(const Eigen::Vector3d& centreMm, const Eigen::Vector3d& planeNormal);
     void brushStrokeFinished();
+    /// A left click in placing mode at `pointMm` (in this view's slice).
+    void pointPlaced(const Eigen::Vector3d& pointMm);
+    /// The marker `id` was dragged to `pointMm` (reported once, on release).
+    void markerMoved(int id, const Eigen::Vector3d& pointMm);
 
 protected:
     void resizeGL(int width, int height) override;
@@ -71,6 +90,8 @@ protected:
 private:
     void updateSlice();
     void updateCamera();
+    void updateMarkers();
+    double millimetresPerPixel() const;
 
     struct Pipeline;
     std::unique_ptr<Pipeline> m_pipeline;
@@ -80,6 +101,8 @@ private:
     BrushMode m_brush = BrushMode::Off;
     double m_brushRadiusMm = 3.0;
     bool m_stroking = false;
+    bool m_placing = false;
+    std::optional<int> m_draggedMarker;
     Eigen::Vector3d m_cursor = Eigen::Vector3d::Zero();
     double m_fieldOfView = 300.0;
     WindowLevel m_windowLevel = kCtaPreset;
