@@ -47,6 +47,8 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress);
 /// `measure --study S [--centerlines ID] [--label ID] [--json FILE]`: cross-sections, lengths, radii, maximum
 /// diameter and stenosis along the newest centerlines, printed (and written as JSON when asked).
 int measureStudy(const Arguments& arguments, const Progress& progress);
+/// `export-label --study S [--label ID] --out FILE`: a label as a DICOM SEG (ExportLabelCommand.cpp).
+int exportLabelFromStudy(const Arguments& arguments, const Progress& progress);
 /// `rename-segment --study S [--centerlines ID] --segment N --name TEXT`: the user's name for a segment.
 int renameSegmentInStudy(const Arguments& arguments, const Progress& progress);
 int writeDemoStudy(const Arguments& arguments, const Progress& progress);

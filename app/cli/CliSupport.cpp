@@ -30,16 +30,6 @@ std::string chooseCenterlines(const study::Study& study, const std::string& want
                         "the study has no centerlines: run vascusim-cli centerline first");
 }
 
-bool isVolumeFile(const std::filesystem::path& file)
-{
-    const std::string name = file.filename().string();
-    for (const char* extension : {".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"})
-        if (name.size() > std::string(extension).size() &&
-            name.compare(name.size() - std::string(extension).size(), std::string::npos, extension) == 0)
-            return true;
-    return false;
-}
-
 double waitSeconds(const Arguments& arguments)
 {
     const double seconds = quantityOption(arguments, "wait", "s", 0.0);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "vsim/app/MaskSource.h"
+
 // What several vascusim-cli commands share: picking artifacts and --param.
 
 #include "CliCommands.h"
@@ -28,8 +30,8 @@ std::string chooseCenterlines(const study::Study& study, const std::string& want
 study::Study openStudyForWriting(const Arguments& arguments);
 /// Opens --study (or `bundle`) for reading: works while another process writes it.
 study::Study openStudyForReading(const std::string& bundle);
-/// True for a NIfTI, NRRD or MetaImage file name (anything else is read as DICOM).
-bool isVolumeFile(const std::filesystem::path& file);
+/// True for a NIfTI, NRRD or MetaImage file name (anything else is read as DICOM): app/MaskSource.h.
+using app::isVolumeFile;
 /// --wait in seconds (a number, "s" allowed), 0 when absent.
 double waitSeconds(const Arguments& arguments);
 

@@ -34,8 +34,8 @@ std::vector<CommandSpec> declareCommands()
          "    add a DICOM series (the CT with most slices unless --series) or a NIfTI / NRRD / MetaImage volume;\n"
          "    creates the study in a new or empty folder; values must read as CT in HU (any CT in HU does, a crop\n"
          "    without air too), else give the rescale HU = SLOPE x stored + INTERCEPT; --as-label adds a mask as a\n"
-         "    label on the study's image grid (its own labels, or every nonzero voxel as --label-value), refused\n"
-         "    when the grids do not match; --list prints the series found as JSON and imports nothing",
+         "    label on the study's image grid (a NIfTI / NRRD / MetaImage file, a DICOM SEG or a DICOM mask series;\n"
+         "    its own labels, or every nonzero voxel as --label-value), refused when the grids do not match; --list prints the series found as JSON and imports nothing",
          importIntoStudy},
         {"phantom", 1, 1,
          {required("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),
@@ -79,6 +79,11 @@ std::vector<CommandSpec> declareCommands()
          "measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE [--overwrite]] [--param key=value ...]\n"
          "    cross-sections, lengths, radii, maximum diameter, stenosis (reads the study only)",
          measureStudy},
+        {"export-label", 0, 0, {kStudy, value("label"), required("out"), flag("overwrite")},
+         "export-label --study <study.vsim> [--label ID] --out FILE.dcm [--overwrite]\n"
+         "    a label as a DICOM SEG (one segment per value: lumen 1, a sac's thrombus 4 and wall 5) in the CT's\n"
+         "    study and frame of reference, for PACS, 3D Slicer or a vendor workstation (reads the study only)",
+         exportLabelFromStudy},
         {"rename-segment", 0, 0, {kStudy, value("centerlines"), required("segment"), required("name"), kWait},
          "rename-segment --study <study.vsim> [--centerlines ID] --segment N --name TEXT [--wait s]\n"
          "    name a centerline segment (N as `measure` lists it) where the automatic anatomical name is wrong or\n"

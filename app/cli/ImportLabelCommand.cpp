@@ -1,14 +1,11 @@
 // `import <mask> --study S --as-label`: a reference mask or another program's segmentation (NIfTI, NRRD,
-// MetaImage, or a DICOM mask series) as a label artifact on the study's image grid (study::maskOnImageGrid).
+// MetaImage, a DICOM SEG, or a DICOM mask series) as a label artifact on the study's image grid (study::maskOnImageGrid).
 
 #include "CliCommands.h"
 #include "CliSupport.h"
 #include "CommandLine.h"
-#include "vsim/app/DicomStudyImport.h"
-#include "vsim/dicom/DicomImport.h"
-#include "vsim/dicom/DicomScan.h"
+#include "vsim/app/MaskSource.h"
 #include "vsim/study/LabelImport.h"
-#include "vsim/study/VolumeFileImport.h"
 
 #include <cmath>
 #include <iostream>
@@ -30,28 +27,19 @@ int importLabelIntoStudy(const Arguments& arguments, const Progress& progress)
             throw Error("--label-value expects a whole number from 1 to 255");
         value = std::uint8_t(given);
     }
-    std::vector<std::string> warnings;
-    CtVolume mask;
-    if (isVolumeFile(input))
-    {
-        study::ImportedVolume read = study::readVolumeFile(input, progress.subRange(0.0, 0.8));
-        mask = read.image;
-        warnings = read.warnings;
-    }
-    else
-    {
-        const dicom::DicomScanResult scan = dicom::scanDicom(input, progress.subRange(0.0, 0.2));
-        dicom::DicomVolume volume =
-            dicom::importDicomSeries(app::chooseSeries(scan, arguments.option("series")), {}, progress.subRange(0.2, 0.8));
-        mask = volume.image;
-        warnings = volume.warnings;
-    }
+    app::MaskSource source = app::readMaskSource(input, arguments.option("series"), progress.subRange(0.0, 0.8));
+    std::vector<std::string> warnings = source.warnings;
+    const CtVolume& mask = source.mask;
     const LabelVolume label =
         study::maskOnImageGrid(mask, study.volumeGeometry(imageId), value, warnings);
     study::Provenance provenance;
     provenance.command = "import label";
     provenance.inputs = {input.filename().string(), imageId};
-    provenance.parameters = {{"label_value", value ? std::to_string(int(*value)) : std::string("as in the mask")}};
+    provenance.parameters = {{"label_value", value ? std::to_string(int(*value)) : std::string("as in the mask")},
+                             {"source", source.kind}};
+    for (std::size_t n = 0; n < source.segmentLabels.size(); ++n) // a SEG's segment names by label value
+        if (!source.segmentLabels[n].empty())
+            provenance.parameters["segment_" + std::to_string(n + 1)] = source.segmentLabels[n];
     const std::string name = input.filename().string();
     const std::string id = study.addLabel(label, name.empty() ? "Imported label" : name, provenance, warnings);
     study.save();

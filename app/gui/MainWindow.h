@@ -72,7 +72,8 @@ public:
     bool newStudy(const QString& bundle);
     /// Imports a NIfTI / NRRD / MetaImage file in the background and shows it; undoable.
     bool importVolume(const QString& file);
-    /// Imports a mask file (NIfTI / NRRD / MetaImage) as a label on the newest image's grid in the background
+    /// Imports a mask (NIfTI / NRRD / MetaImage file, a DICOM SEG, or a slice of a DICOM mask series: its folder's
+    /// series) as a label on the newest image's grid in the background
     /// (study::maskOnImageGrid: refused with a message when the grids do not match); undoable, shown in the MPRs.
     bool importLabel(const QString& file);
     /// Imports a DICOM series in the background (scanning `path` first unless `scan` is given) and shows it;

@@ -6,6 +6,8 @@
 #include "MainWindow.h"
 #include "ViewLayout.h"
 #include "vsim/app/DicomStudyImport.h"
+#include "vsim/app/MaskSource.h"
+#include "vsim/dicom/DicomSegmentation.h"
 #include "vsim/dicom/DicomImport.h"
 #include "vsim/study/LabelImport.h"
 #include "vsim/study/VolumeFileImport.h"
@@ -46,19 +48,25 @@ bool MainWindow::importLabel(const QString& file)
     }
     auto label = std::make_shared<LabelVolume>();
     auto warnings = std::make_shared<std::vector<std::string>>();
+    auto kind = std::make_shared<std::string>();
     const VolumeGeometry grid = m_document.study().volumeGeometry(imageId);
     return m_tasks.run(
         tr("Import label"),
-        [path = file.toStdString(), grid, label, warnings](const Progress& progress) {
-            study::ImportedVolume mask = study::readVolumeFile(path, progress);
+        [path = file.toStdString(), grid, label, warnings, kind](const Progress& progress) {
+            // A DICOM mask slice stands for its folder's series (as the CLI's import of a folder).
+            const std::filesystem::path source = app::isVolumeFile(path) || dicom::isDicomSegmentation(path)
+                                                     ? std::filesystem::path(path)
+                                                     : std::filesystem::path(path).parent_path();
+            app::MaskSource mask = app::readMaskSource(source, {}, progress);
             *warnings = mask.warnings;
-            *label = study::maskOnImageGrid(mask.image, grid, std::nullopt, *warnings);
+            *kind = mask.kind;
+            *label = study::maskOnImageGrid(mask.mask, grid, std::nullopt, *warnings);
         },
-        [this, file, imageId, label, warnings] {
+        [this, file, imageId, label, warnings, kind] {
             study::Provenance provenance;
             provenance.command = "import label";
             provenance.inputs = {QFileInfo(file).fileName().toStdString(), imageId};
-            provenance.parameters = {{"label_value", "as in the mask"}};
+            provenance.parameters = {{"label_value", "as in the mask"}, {"source", *kind}};
             const std::string id =
                 m_document.study().addLabel(*label, QFileInfo(file).fileName().toStdString(), provenance, *warnings);
             m_scene.labels[id] = *label;

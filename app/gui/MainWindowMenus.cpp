@@ -46,8 +46,10 @@ void MainWindow::createMenus()
             importVolume(volume);
     });
     m_documentActions << file->addAction(tr("Import &Label..."), this, [this] {
-        const QString mask = QFileDialog::getOpenFileName(this, tr("Import label (a mask on the CT's grid)"), QString(),
-                                                          tr(kVolumeFilter));
+        const QString mask = QFileDialog::getOpenFileName(
+            this, tr("Import label (a mask on the CT's grid)"), QString(),
+            tr("Volumes (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;DICOM SEG or a mask series' slice (*.dcm *.DCM *.IMA);;"
+               "All files (*)"));
         if (!mask.isEmpty())
             importLabel(mask);
     });

@@ -125,7 +125,11 @@ void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurement
         {"lumen_diameter_at_max_mm", tr("Lumen diameter there (equivalent): %1 mm")},
         {"max_thrombus_thickness_mm", tr("Largest thrombus thickness: %1 mm")},
         {"sac_volume_ml", tr("Sac volume: %1 ml")},
-        {"neck_diameter_mm", tr("Neck diameter (outer): %1 mm")},
+        {"neck_diameter_mm", tr("Neck diameter (outer, at the lowest renal artery): %1 mm")},
+        {"neck_length_mm", tr("Neck length: %1 mm")},
+        {"neck_angulation_deg", tr("Neck angulation: %1 degrees")},
+        {"right_common_iliac_diameter_mm", tr("Right common iliac diameter (outer): %1 mm")},
+        {"left_common_iliac_diameter_mm", tr("Left common iliac diameter (outer): %1 mm")},
         {"wall_thickness_mm", tr("Wall thickness (assumed): %1 mm")}};
     for (const auto& [key, format] : sacRows)
     {

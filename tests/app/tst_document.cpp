@@ -5,6 +5,7 @@
 #include "MainWindow.h"
 #include "StudyFixtures.h"
 #include "TestOutput.h"
+#include "vsim/dicom/DicomSegmentation.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <QSignalSpy>
@@ -74,6 +75,20 @@ private slots:
         const vsim::study::Artifact label = document.study().artifacts().back();
         QCOMPARE(label.kind, vsim::study::ArtifactKind::Label);
         QCOMPARE(int(document.study().loadLabel(label.id).data()[18]), 1);
+        // The same as a DICOM SEG (written by DCMTK's dcmseg): the same voxels.
+        vsim::LabelVolume asLabel(truth.geometry());
+        std::fill(asLabel.data(), asLabel.data() + asLabel.size(), std::uint8_t(0));
+        asLabel.data()[17] = asLabel.data()[18] = 1;
+        vsim::dicom::writeDicomSegmentation(asLabel, {"lumen"}, {}, folder / "mask-seg.dcm");
+        QSignalSpy segFailed(&window->tasks(), &vsim::gui::TaskRunner::failed);
+        QVERIFY(window->importLabel(QString::fromStdString((folder / "mask-seg.dcm").string())));
+        QVERIFY(vsim::test::waitForTask(*window));
+        QVERIFY2(segFailed.isEmpty(), segFailed.isEmpty() ? "" : qPrintable(segFailed.front().at(1).toString()));
+        const vsim::study::Artifact fromSeg = document.study().artifacts().back();
+        QCOMPARE(fromSeg.provenance.parameters.at("source"), std::string("DICOM SEG"));
+        const vsim::LabelVolume segLabel = document.study().loadLabel(fromSeg.id);
+        QVERIFY(std::equal(segLabel.data(), segLabel.data() + segLabel.size(), asLabel.data()));
+        document.undoStack()->undo();
         vsim::VolumeGeometry shifted = truth.geometry();
         shifted.origin.x() += 0.35; // half a voxel
         vsim::CtVolume misplaced(shifted);

@@ -2,7 +2,8 @@
 # mm, seed 2; its anatomy and scanner are not the estimator's model): import, the aorta from the automatic point,
 # the sac (outer contour, thrombus, wall), then the report's AAA section gives the SVS outer diameter (within 2 mm
 # of the phantom's truth, computed from its geometry by the same definition) with its definition, against the
-# repair thresholds. Without a wall run the section says so.
+# repair thresholds. Without a wall run the section says so. The sac label goes out as a DICOM SEG and comes
+# back with the same voxels.
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 file(REMOVE_RECURSE ${WORK})
 
@@ -35,4 +36,19 @@ string(REGEX REPLACE "[ \n]+" " " text "${text}")
 if(NOT text MATCHES "Maximum diameter, outer wall to outer wall \\(SVS\\)" OR NOT text MATCHES "Definitions\\."
    OR NOT text MATCHES "repair thresholds" OR NOT text MATCHES "wall-stress run was not made")
     message(FATAL_ERROR "the report's AAA section:\n${text}")
+endif()
+
+# The sac label as a DICOM SEG (lumen, thrombus and wall as three segments), imported back: the same voxels as the
+# label's own NRRD file gives; an existing output file is not overwritten without --overwrite.
+run_cli(0 exported export-label --study ${WORK}/aaa.vsim --out ${WORK}/sac-seg.dcm)
+run_cli(1 again export-label --study ${WORK}/aaa.vsim --out ${WORK}/sac-seg.dcm)
+run_cli(0 fromseg import ${WORK}/sac-seg.dcm --study ${WORK}/aaa.vsim --as-label)
+run_cli(0 fromnrrd import ${WORK}/aaa.vsim/labels/label-3.nrrd --study ${WORK}/aaa.vsim --as-label)
+string(REGEX MATCH "([0-9]+) labelled voxels" ignored "${fromseg}")
+set(seg_voxels ${CMAKE_MATCH_1})
+string(REGEX MATCH "([0-9]+) labelled voxels" ignored "${fromnrrd}")
+set(nrrd_voxels ${CMAKE_MATCH_1})
+message(STATUS "DICOM SEG round trip: ${seg_voxels} voxels (the label's NRRD: ${nrrd_voxels})")
+if(NOT seg_voxels OR NOT seg_voxels EQUAL nrrd_voxels OR NOT again MATCHES "overwrite")
+    message(FATAL_ERROR "DICOM SEG round trip:\n${exported}\n${fromseg}\n${fromnrrd}\n${again}")
 endif()

@@ -1,5 +1,6 @@
 // libFuzzer target: one DICOM file goes through exactly what import does with a file on disk: the header read
-// (lazy values, functional groups), then the pixel decode (every DCMTK codec, GDCM for JPEG 2000, HU rescale).
+// (lazy values, functional groups), then the pixel decode (every DCMTK codec, GDCM for JPEG 2000, HU rescale); a
+// DICOM SEG goes through the label reader instead.
 // The input is handed over as an in-memory file (memfd), so no disk is touched. Any outcome but a crash, a
 // sanitizer report, an out-of-memory or a hang is fine: bad input must end in a vsim::Error.
 //
@@ -9,6 +10,7 @@
 // seed corpus once (a CTest case), so the target always compiles and the seeds stay valid.
 
 #include "vsim/dicom/DicomFile.h"
+#include "vsim/dicom/DicomSegmentation.h"
 
 #include <sys/mman.h>
 #include <unistd.h>
@@ -22,11 +24,17 @@ namespace {
 
 constexpr std::size_t kMaxVoxels = std::size_t(4) << 20; // larger images are refused by the harness, not decoded
 
-/// Reads and decodes one file as the importer does; returns true when it was a decodable image.
+/// Reads and decodes one file as the importer does (a DICOM SEG as `import --as-label` reads it); returns true when
+/// it was a decodable image.
 bool importOneFile(const std::string& path)
 {
     try
     {
+        if (vsim::dicom::isDicomSegmentation(path))
+        {
+            vsim::dicom::readDicomSegmentation(path, kMaxVoxels);
+            return true;
+        }
         const vsim::dicom::DicomImageHeader header = vsim::dicom::readDicomHeader(path);
         if (header.format.pixelsPerFrame() * header.frames.size() > kMaxVoxels)
             return false;

@@ -43,7 +43,7 @@ private slots:
         {
             PhantomOptions options;
             options.style = PhantomStyle::Patient;
-            options.size = {256, 256, 200};
+            options.size = {256, 256, 300}; // from above the renal arteries to 90 mm below the bifurcation
             options.spacing = {0.7, 0.7, 1.0};
             options.seed = seed;
             const AnatomyPhantom phantom = buildAnatomyPhantom(PhantomKind::Aaa, options);
@@ -86,6 +86,22 @@ private slots:
             QVERIFY(std::abs(f.at("max_outer_diameter_mm") - m.at("max_outer_diameter_mm")) <= 2.0);
             QVERIFY(std::abs(f.at("sac_volume_ml") - m.at("sac_volume_ml")) <= 0.05 * m.at("sac_volume_ml"));
             QVERIFY(thrombusDice >= 0.85);
+            // The neck at the lowest renal artery, its length and angulation, the common iliacs.
+            for (const char* key : {"neck_length_mm", "neck_angulation_deg", "left_common_iliac_diameter_mm",
+                                    "right_common_iliac_diameter_mm"})
+                QVERIFY2(f.count(key), key);
+            QVERIFY(std::abs(f.at("neck_diameter_mm") - m.at("neck_diameter_mm")) <= 2.0);
+            QVERIFY(std::abs(f.at("neck_length_mm") - m.at("neck_length_mm")) <= 5.0);
+            QVERIFY(std::abs(f.at("neck_angulation_deg") - m.at("neck_angulation_deg")) <= 5.0);
+            for (const char* key : {"left_common_iliac_diameter_mm", "right_common_iliac_diameter_mm"})
+                QVERIFY2(std::abs(f.at(key) - m.at(key)) <= 3.0, key);
+            const auto figure = [&](const char* key) { return f.count(key) ? f.at(key) : std::nan(""); };
+            qInfo("  neck at the lowest renal artery (z %.1f): length %.1f mm (truth %.1f), angulation %.1f deg (truth "
+                  "%.1f); common iliac outer diameters left %.1f / right %.1f mm (truth %.1f / %.1f)",
+                  figure("lowest_renal_z_mm"), figure("neck_length_mm"), m.at("neck_length_mm"),
+                  figure("neck_angulation_deg"), m.at("neck_angulation_deg"), figure("left_common_iliac_diameter_mm"),
+                  figure("right_common_iliac_diameter_mm"), m.at("left_common_iliac_diameter_mm"),
+                  m.at("right_common_iliac_diameter_mm"));
         }
     }
 

@@ -6,6 +6,10 @@
 
 #include <QtTest>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
+
 using vsim::study::maskOnImageGrid;
 
 namespace {
@@ -44,6 +48,33 @@ private slots:
         QCOMPARE(int(cut.data()[image.linearIndex(4, 6, 4)]), 3);
         QVERIFY((larger.indexToPatient({9, 10, 7}) - image.indexToPatient({4, 6, 4})).norm() < 1e-9);
         QCOMPARE(warnings.size(), std::size_t(1));
+    }
+
+    /// The same lattice stored the other way round (k reversed, as a DICOM SEG's stack along the row x column normal
+    /// can be) and with i and j swapped: every voxel lands at its own patient position; a turned grid is refused.
+    void reorderedAxesPlaceEveryVoxel()
+    {
+        const vsim::VolumeGeometry image = grid({10, 12, 8}, {-7.5, 3.0, 100.0});
+        vsim::VolumeGeometry flipped = image;
+        flipped.dims = {12, 10, 8};
+        flipped.direction << 0, 1, 0, 1, 0, 0, 0, 0, -1; // columns: j, i, -k
+        flipped.origin = image.indexToPatient({0, 0, 7});
+        vsim::CtVolume mask(flipped);
+        std::fill(mask.data(), mask.data() + flipped.voxelCount(), std::int16_t(0));
+        const Eigen::Vector3d inImage(4, 9, 2);
+        const Eigen::Vector3d inMask = flipped.patientToIndex(image.indexToPatient(inImage));
+        mask.data()[flipped.linearIndex(int(std::lround(inMask.x())), int(std::lround(inMask.y())),
+                                        int(std::lround(inMask.z())))] = 7;
+        std::vector<std::string> warnings;
+        const vsim::LabelVolume placed = maskOnImageGrid(mask, image, std::nullopt, warnings);
+        QCOMPARE(int(placed.data()[image.linearIndex(4, 9, 2)]), 7);
+        QCOMPARE(std::count(placed.data(), placed.data() + placed.size(), std::uint8_t(7)), std::ptrdiff_t(1));
+        QVERIFY(!warnings.empty() && warnings.front().find("axis order") != std::string::npos);
+        vsim::VolumeGeometry turned = image;
+        turned.direction = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+        vsim::CtVolume turnedMask(turned);
+        turnedMask.data()[0] = 1;
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(turnedMask, image, 1, warnings));
     }
 
     void mismatchedGridsAreRefused()

@@ -70,7 +70,11 @@ bool addSacGeometry(report::Section& section, const study::Study& study)
                         {"max_thrombus_thickness_mm", "Largest thrombus thickness", "mm", -1},
                         {"sac_volume_ml", "Sac volume", "ml", -1},
                         {"sac_length_mm", "Sac length", "mm", -1},
-                        {"neck_diameter_mm", "Neck diameter (outer)", "mm", -1},
+                        {"neck_diameter_mm", "Neck diameter (outer, at the lowest renal artery)", "mm", -1},
+                        {"neck_length_mm", "Neck length", "mm", -1},
+                        {"neck_angulation_deg", "Neck angulation", "degrees", -1},
+                        {"right_common_iliac_diameter_mm", "Right common iliac diameter (outer)", "mm", -1},
+                        {"left_common_iliac_diameter_mm", "Left common iliac diameter (outer)", "mm", -1},
                         {"wall_thickness_mm", "Wall thickness (assumed, not measured)", "mm", -1}};
     report::MetricTable geometry{"The aneurysm sac (" + study.artifact(sacId).name + ")", {}};
     std::string definitions = "Definitions.";

@@ -1,6 +1,7 @@
 #include "vsim/imaging/AneurysmSac.h"
 
 #include "AorticSections.h"
+#include "SacLandmarks.h"
 
 #include "vsim/core/Error.h"
 
@@ -21,6 +22,7 @@ using namespace detail;
 
 constexpr double kMaxEscapedShare = 0.2; ///< rays without an edge within kMaxRadiusMm, over all sections: no contour
 constexpr double kNeckSearchMm = 80.0;
+constexpr std::pair<double, double> kNeckBelowOriginMm{3.0, 8.0}; ///< where the neck diameter is read (mm below the origin)
 constexpr double kSacNeckFactor = 1.5, kSacFallbackMm = 30.0;
 
 } // namespace
@@ -32,8 +34,17 @@ const std::map<std::string, std::string>& aneurysmSacDefinitions()
                                   "contour, thrombus and wall included (SVS 2018)"},
         {"max_outer_diameter_z_mm", "patient position (LPS) of the centre of that cross-section"},
         {"lumen_diameter_at_max_mm", "equivalent diameter of the contrast lumen's perpendicular cross-section there"},
-        {"neck_diameter_mm", "narrowest outer diameter within 80 mm above the widest section (the lowest renal artery "
-                             "is not yet used as the landmark)"},
+        {"neck_diameter_mm", "outer diameter perpendicular to the centerline at the origin of the lowest renal artery "
+                             "(the median 3 to 8 mm below it, clear of the branch; without the renal arteries in the "
+                             "label: the narrowest within 80 mm above the widest section)"},
+        {"neck_length_mm", "centerline length from the lowest renal artery's origin to the start of the sac"},
+        {"neck_angulation_deg", "angle between the neck axis (lowest renal artery to the sac's start) and the sac axis "
+                                "(the sac's start to its end)"},
+        {"lowest_renal_z_mm", "patient position (LPS z) of the lowest renal artery's origin"},
+        {"left_common_iliac_diameter_mm", "outer diameter of the left common iliac artery perpendicular to its "
+                                          "centerline: the median 10 to 40 mm below the crotch"},
+        {"right_common_iliac_diameter_mm", "outer diameter of the right common iliac artery perpendicular to its "
+                                           "centerline: the median 10 to 40 mm below the crotch"},
         {"sac_threshold_diameter_mm", "1.5 x the neck diameter (30 mm without a neck)"},
         {"wall_thickness_mm", "assumed, not measured: the wall is that shell inside the outer contour"},
         {"sac_volume_ml", "volume inside the outer contour between the perpendicular planes at the sac's ends"},
@@ -128,9 +139,30 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
     for (std::size_t s = 0; s < sections.size(); ++s)
         if (sections[s].diameterMm > sections[peak].diameterMm)
             peak = s;
+    // The neck: the outer diameter at the lowest renal artery's origin; without the renal arteries in the label,
+    // the narrowest outer diameter within 80 mm above the widest section.
+    const std::optional<std::size_t> renal = lowestRenalSection(sections, g, peak);
     double neck = 0.0;
-    for (std::size_t s = peak; s-- > 0 && sections[peak].arcMm - sections[s].arcMm <= kNeckSearchMm;)
-        neck = neck == 0.0 ? sections[s].diameterMm : std::min(neck, sections[s].diameterMm);
+    if (renal)
+    {
+        // At the origin itself the contour bulges along the renal artery: the median of the sections 3 to 8 mm
+        // below it stands for the aorta there.
+        std::vector<double> below;
+        for (std::size_t s = *renal; s < sections.size() && sections[s].arcMm - sections[*renal].arcMm <= kNeckBelowOriginMm.second; ++s)
+            if (sections[s].arcMm - sections[*renal].arcMm >= kNeckBelowOriginMm.first)
+                below.push_back(sections[s].diameterMm);
+        if (below.empty())
+            below.push_back(sections[*renal].diameterMm);
+        std::nth_element(below.begin(), below.begin() + std::ptrdiff_t(below.size() / 2), below.end());
+        neck = below[below.size() / 2];
+    }
+    else
+    {
+        for (std::size_t s = peak; s-- > 0 && sections[peak].arcMm - sections[s].arcMm <= kNeckSearchMm;)
+            neck = neck == 0.0 ? sections[s].diameterMm : std::min(neck, sections[s].diameterMm);
+        sac.warnings.push_back("the lowest renal artery was not found in the lumen label: the neck is the narrowest "
+                               "outer diameter within 80 mm above the widest section");
+    }
     const double threshold = neck > 0.0 ? kSacNeckFactor * neck : kSacFallbackMm;
     std::size_t top = peak, bottom = peak;
     while (top > 0 && sections[top - 1].diameterMm > threshold)
@@ -166,9 +198,20 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
         f["sac_top_z_mm"] = centreline[top].z();
         f["sac_bottom_z_mm"] = centreline[bottom].z();
         f["max_thrombus_thickness_mm"] = std::max(0.0, thrombus);
+        if (renal && *renal < top)
+        {
+            f["neck_length_mm"] = sections[top].arcMm - sections[*renal].arcMm;
+            const Vector3d neckAxis = centreline[top] - centreline[*renal], sacAxis = centreline[bottom] - centreline[top];
+            f["neck_angulation_deg"] =
+                std::acos(std::clamp(neckAxis.normalized().dot(sacAxis.normalized()), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+        }
     }
     else
         sac.warnings.push_back("no sac: the widest outer diameter does not exceed 1.5 x the neck's");
+    if (renal)
+        f["lowest_renal_z_mm"] = centreline[*renal].z();
+    for (const auto& [key, value] : commonIliacDiameters(ct, lumen, sections))
+        f[key] = value;
     for (const auto& [key, value] : f)
         if (const auto definition = aneurysmSacDefinitions().find(key); definition != aneurysmSacDefinitions().end())
             sac.definitions[key] = definition->second;

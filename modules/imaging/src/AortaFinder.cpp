@@ -1,7 +1,7 @@
 // The automatic abdominal aorta point (GuidedSegmentation.h findAbdominalAortaPoint): slice by slice the round,
-// bright cross-section of 14..56 mm in front of the vertebral body, kept where neighbouring slices agree. A
-// vertebral body's core blurred with its cortex can look the same (round, 150..600 HU, bone behind it: the
-// arches): of two candidates one in front of the other, only the front one is kept.
+// bright cross-section of 14..56 mm in front of the vertebral body, the middle of the longest chain of them that
+// line up over the sampled slices. A vertebral body's core blurred with its cortex can look the same (round,
+// 150..600 HU, bone behind it: the arches): of two candidates one in front of the other, only the front one is kept.
 
 #include "vsim/imaging/GuidedSegmentation.h"
 
@@ -23,6 +23,7 @@ constexpr double kMinAreaMm2 = 150.0, kMaxAreaMm2 = 2500.0;   ///< 14..56 mm equ
 constexpr double kRoundness = 0.85;                           ///< share of the equivalent disc inside the piece
 constexpr double kSpineHu = 200.0, kSpineShare = 0.3;         ///< bone behind: that share of a 30 x 30 mm window
 constexpr double kTrackStepMm = 15.0;                         ///< largest shift between sampled slices
+constexpr int kChainGapSamples = 3;                           ///< a chain may skip up to two sampled slices
 constexpr double kCortexBorderShare = 0.3;                    ///< bone: its core bordered by cortex
 
 struct Candidate
@@ -142,28 +143,44 @@ Eigen::Vector3d findAbdominalAortaPoint(const CtVolume& ct)
 {
     const VolumeGeometry& g = ct.geometry();
     const int step = std::max(1, int(std::lround(4.0 / g.spacing.z())));
-    std::vector<Candidate> best; // one per sampled slice: the brightest round piece with bone behind it
+    // Chains of candidates over the sampled slices: a candidate continues the chain of one in the last few sampled
+    // slices within kTrackStepMm (the aorta has no bone behind it at an intervertebral disc, so a sample or two
+    // may miss it). The aorta is the longest chain; of equal ones the brighter (blood against cancellous bone).
+    struct Chain
+    {
+        std::vector<Candidate> members;
+        double sumHu = 0.0;
+    };
+    std::vector<Chain> chains;
     for (int k = 0; k < g.dims[2]; k += step)
-    {
-        const std::vector<Candidate> found = sliceCandidates(ct, k);
-        if (!found.empty())
-            best.push_back(*std::max_element(found.begin(), found.end(),
-                                             [](const Candidate& a, const Candidate& b) { return a.meanHu < b.meanHu; }));
-    }
-    // The longest run of sampled slices whose pieces line up (each within kTrackStepMm of the last).
-    std::size_t runStart = 0, bestStart = 0, bestLength = 0;
-    for (std::size_t n = 0; n < best.size(); ++n)
-    {
-        if (n > 0 && (best[n].k - best[n - 1].k != step ||
-                      (best[n].centreMm - best[n - 1].centreMm).head<2>().norm() > kTrackStepMm))
-            runStart = n;
-        if (n - runStart + 1 > bestLength)
-            bestLength = n - runStart + 1, bestStart = runStart;
-    }
+        for (const Candidate& candidate : sliceCandidates(ct, k))
+        {
+            Chain* continued = nullptr;
+            double nearest = kTrackStepMm;
+            for (Chain& chain : chains)
+            {
+                const Candidate& last = chain.members.back();
+                const double distance = (candidate.centreMm - last.centreMm).head<2>().norm();
+                if (last.k < k && k - last.k <= kChainGapSamples * step && distance <= nearest)
+                    nearest = distance, continued = &chain;
+            }
+            if (!continued)
+                continued = &chains.emplace_back();
+            continued->members.push_back(candidate);
+            continued->sumHu += candidate.meanHu;
+        }
+    const auto extent = [](const Chain& c) { return c.members.back().k - c.members.front().k; };
+    const Chain* longest = nullptr;
+    for (const Chain& chain : chains)
+        if (!longest || extent(chain) > extent(*longest) ||
+            (extent(chain) == extent(*longest) &&
+             chain.sumHu / double(chain.members.size()) > longest->sumHu / double(longest->members.size())))
+            longest = &chain;
+    const std::size_t bestLength = longest ? longest->members.size() : 0;
     if (bestLength < 3)
         throw Error("no abdominal aorta found (a round contrast-filled cross-section in front of the spine in three "
                     "neighbouring slices): give a point inside it with --seed x,y,z");
-    return best[bestStart + bestLength / 2].centreMm;
+    return longest->members[bestLength / 2].centreMm;
 }
 
 } // namespace vsim::imaging

@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -30,16 +31,32 @@ LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, s
         return Error("the mask's grid does not match the image's (" + why + "): mask " + describe(source) + "; image " +
                      describe(image));
     };
-    if ((source.spacing - image.spacing).cwiseAbs().maxCoeff() > kToleranceMm)
-        throw refuse("another voxel size");
-    if ((source.direction - image.direction).cwiseAbs().maxCoeff() > 1e-4)
-        throw refuse("other axes");
+    // Each mask axis must run along an image axis (either way: a stack stored in the other order) with its voxel
+    // size: a signed permutation of the image's lattice.
+    std::array<int, 3> axisOf{}, signOf{};
+    for (int a = 0; a < 3; ++a)
+    {
+        axisOf[a] = -1;
+        for (int b = 0; b < 3; ++b)
+        {
+            const double along = source.direction.col(a).dot(image.direction.col(b));
+            if (std::abs(std::abs(along) - 1.0) <= 1e-4)
+            {
+                axisOf[a] = b, signOf[a] = along > 0.0 ? 1 : -1;
+                if (std::abs(source.spacing[a] - image.spacing[b]) > kToleranceMm)
+                    throw refuse("another voxel size");
+            }
+        }
+        if (axisOf[a] < 0)
+            throw refuse("other axes");
+    }
     // Where the mask's voxel (0,0,0) lies in the image's index space: it must be a whole voxel.
     const Eigen::Vector3d offset = image.patientToIndex(source.origin);
     const Eigen::Vector3d whole = offset.array().round();
     if ((offset - whole).cwiseAbs().maxCoeff() > kVoxelTolerance)
         throw refuse("origins not a whole number of voxels apart");
     const int di = int(whole.x()), dj = int(whole.y()), dk = int(whole.z());
+    const bool sameLattice = axisOf == std::array<int, 3>{0, 1, 2} && signOf == std::array<int, 3>{1, 1, 1};
 
     LabelVolume label(image);
     std::size_t labelled = 0, outside = 0;
@@ -55,18 +72,25 @@ LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, s
                     throw Error("the mask holds the value " + std::to_string(own) +
                                 ", outside the labels 1..255: give the label value to use (--label-value N)");
                 ++labelled;
-                if (!image.contains(i + di, j + dj, k + dk))
+                std::array<int, 3> at{di, dj, dk};
+                const std::array<int, 3> index{i, j, k};
+                for (int a = 0; a < 3; ++a)
+                    at[std::size_t(axisOf[a])] += signOf[a] * index[std::size_t(a)];
+                if (!image.contains(at[0], at[1], at[2]))
                 {
                     ++outside;
                     continue;
                 }
-                label.data()[image.linearIndex(i + di, j + dj, k + dk)] = value ? *value : std::uint8_t(own);
+                label.data()[image.linearIndex(at[0], at[1], at[2])] = value ? *value : std::uint8_t(own);
             }
     if (labelled == 0)
         throw Error("the mask has no labelled voxel");
     if (outside > 0)
         throw refuse(std::to_string(outside) + " of its " + std::to_string(labelled) +
                      " labelled voxels lie outside the image");
+    if (!sameLattice)
+        warnings.push_back("the mask's voxels were stored in another axis order or direction: reordered onto the "
+                           "image's grid, voxel for voxel");
     if (di != 0 || dj != 0 || dk != 0 || d != image.dims)
         warnings.push_back("the mask was on another grid of the same scan (offset " + std::to_string(di) + ", " +
                            std::to_string(dj) + ", " + std::to_string(dk) +

@@ -13,8 +13,10 @@
 // thrombus = the rest outside the lumen. The outer contour's centerline: the contours' centroids, smoothed over
 // +-5 mm; every perpendicular cross-section is resampled at 0.5 mm and its largest caliper is its diameter.
 // The sac: the contiguous part around the widest section whose outer diameter exceeds 1.5 x the neck's, the neck
-// being the narrowest outer diameter in the 80 mm above the widest section (the lowest renal artery is not
-// identified yet; 30 mm when there is no neck). Its volume: the perpendicular areas integrated along the centerline.
+// being the outer diameter at the lowest renal artery's origin (src/SacLandmarks.h; without the renal arteries in
+// the label: the narrowest outer diameter in the 80 mm above the widest section; 30 mm when there is no neck). Its
+// volume: the perpendicular areas integrated along the centerline. Also: neck length and angulation, the common
+// iliac outer diameters.
 
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Progress.h"

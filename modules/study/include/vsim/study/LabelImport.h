@@ -3,8 +3,10 @@
 // Labels from elsewhere (reference masks, another program's segmentation) onto a study's image grid, voxel for
 // voxel: never resampled by interpolation. A mask on the image's own grid is taken as it is; a mask on a larger or
 // smaller grid of the same spacing and axes, offset by a whole number of voxels (a crop of the same scan), is cut
-// or padded onto the image's grid, provided none of its labelled voxels falls outside. Anything else is refused
-// with both grids in the message.
+// or padded onto the image's grid, provided none of its labelled voxels falls outside; its axes may be the image's
+// in another order or direction (a DICOM SEG's stack runs along the row x column normal, a NIfTI mask may be
+// stored flipped): the voxels are reordered, never interpolated. Anything else is refused with both grids in the
+// message.
 
 #include "vsim/core/ImageVolume.h"
 

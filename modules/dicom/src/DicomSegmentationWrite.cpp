@@ -1,0 +1,145 @@
+// Writing a label volume as a BINARY DICOM SEG with DCMTK's dcmseg (DicomSegmentation.h): one segment per label
+// value present, one frame per slice and segment holding any voxel, the plane position per frame, orientation and
+// pixel measures shared.
+
+#include "vsim/dicom/DicomSegmentation.h"
+
+#include "DcmtkSetup.h"
+
+#include "vsim/core/Error.h"
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmfg/fgfracon.h>
+#include <dcmtk/dcmfg/fgpixmsr.h>
+#include <dcmtk/dcmfg/fgplanor.h>
+#include <dcmtk/dcmfg/fgplanpo.h>
+#include <dcmtk/dcmfg/fgseg.h>
+#include <dcmtk/dcmiod/iodmacro.h>
+#include <dcmtk/dcmseg/segdoc.h>
+#include <dcmtk/dcmseg/segment.h>
+
+#include <memory>
+#include <set>
+
+namespace vsim::dicom {
+namespace {
+
+void check(const OFCondition& condition, const std::string& what)
+{
+    if (condition.bad())
+        throw Error("writing the DICOM SEG failed at " + what + ": " + condition.text());
+}
+
+std::string decimal(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+} // namespace
+
+void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::string>& segmentNames,
+                            const SegmentationDescription& description, const std::filesystem::path& file)
+{
+    ensureDcmtkCodecs();
+    const VolumeGeometry& g = label.geometry();
+    if (g.dims[0] > 65535 || g.dims[1] > 65535 || label.isEmpty())
+        throw Error("the label cannot be written as a DICOM SEG (empty, or over 65535 pixels a row)");
+    std::set<int> values;
+    for (std::size_t v = 0; v < g.voxelCount(); ++v)
+        if (label.data()[v])
+            values.insert(label.data()[v]);
+    if (values.empty())
+        throw Error("the label has no labelled voxel to write as a DICOM SEG");
+
+    IODGeneralEquipmentModule::EquipmentInfo equipment("VascuSim", "VascuSim", "1", "VascuSim");
+    ContentIdentificationMacro content("1", "VSIM_LABELS", description.seriesDescription.c_str(), "VascuSim");
+    DcmSegmentation* created = nullptr;
+    check(DcmSegmentation::createBinarySegmentation(created, Uint16(g.dims[1]), Uint16(g.dims[0]), equipment, content),
+          "creation");
+    std::unique_ptr<DcmSegmentation> seg(created);
+    check(seg->getPatient().setPatientName(description.patientName.c_str()), "patient name");
+    check(seg->getPatient().setPatientID(description.patientId.c_str()), "patient ID");
+    char uid[100];
+    check(seg->getStudy().setStudyInstanceUID(description.studyInstanceUid.empty()
+                                                  ? dcmGenerateUniqueIdentifier(uid, SITE_STUDY_UID_ROOT)
+                                                  : description.studyInstanceUid.c_str()),
+          "study UID");
+    check(seg->getFrameOfReference().setFrameOfReferenceUID(description.frameOfReferenceUid.empty()
+                                                                ? dcmGenerateUniqueIdentifier(uid)
+                                                                : description.frameOfReferenceUid.c_str()),
+          "frame of reference");
+    check(seg->getSeries().setSeriesDescription(description.seriesDescription.c_str()), "series description");
+    check(seg->getSeries().setSeriesNumber("900"), "series number");
+
+    FGPixelMeasures measures;
+    check(measures.setPixelSpacing((decimal(g.spacing.y()) + "\\" + decimal(g.spacing.x())).c_str()), "pixel spacing");
+    check(measures.setSliceThickness(decimal(g.spacing.z()).c_str()), "slice thickness");
+    check(measures.setSpacingBetweenSlices(decimal(g.spacing.z()).c_str()), "slice spacing");
+    check(seg->addForAllFrames(measures), "pixel measures");
+    FGPlaneOrientationPatient orientation;
+    const Eigen::Matrix3d& d = g.direction;
+    check(orientation.setImageOrientationPatient(decimal(d(0, 0)).c_str(), decimal(d(1, 0)).c_str(),
+                                                 decimal(d(2, 0)).c_str(), decimal(d(0, 1)).c_str(),
+                                                 decimal(d(1, 1)).c_str(), decimal(d(2, 1)).c_str()),
+          "orientation");
+    check(seg->addForAllFrames(orientation), "orientation");
+
+    const std::size_t slicePixels = std::size_t(g.dims[0]) * std::size_t(g.dims[1]);
+    std::vector<Uint8> frame(slicePixels);
+    for (int value : values)
+    {
+        const std::string name = std::size_t(value) <= segmentNames.size() && !segmentNames[std::size_t(value - 1)].empty()
+                                     ? segmentNames[std::size_t(value - 1)]
+                                     : "segment " + std::to_string(value);
+        DcmSegment* segment = nullptr;
+        // SNOMED CT: category "Tissue" (85756007), type "Artery" (51114001).
+        check(DcmSegment::create(segment, name.c_str(), CodeSequenceMacro("85756007", "SCT", "Tissue"),
+                                 CodeSequenceMacro("51114001", "SCT", "Artery"), DcmSegTypes::SAT_SEMIAUTOMATIC,
+                                 "VascuSim"),
+              "segment " + name);
+        Uint16 number = 0;
+        check(seg->addSegment(segment, number), "segment " + name);
+        for (int k = 0; k < g.dims[2]; ++k)
+        {
+            bool any = false;
+            for (std::size_t n = 0; n < slicePixels; ++n)
+            {
+                frame[n] = label.data()[std::size_t(k) * slicePixels + n] == value ? 1 : 0;
+                any = any || frame[n];
+            }
+            if (!any)
+                continue;
+            FGPlanePosPatient position;
+            const Eigen::Vector3d p = g.indexToPatient(Eigen::Vector3d(0.0, 0.0, k));
+            check(position.setImagePositionPatient(decimal(p.x()).c_str(), decimal(p.y()).c_str(), decimal(p.z()).c_str()),
+                  "frame position");
+            FGFrameContent frameContent;
+            check(frameContent.setDimensionIndexValues(number, 0), "frame content");
+            check(frameContent.setDimensionIndexValues(Uint32(k + 1), 1), "frame content");
+            FGSegmentation identification;
+            check(identification.setReferencedSegmentNumber(number), "frame segment");
+            OFVector<FGBase*> perFrame;
+            perFrame.push_back(&position);
+            perFrame.push_back(&frameContent);
+            perFrame.push_back(&identification);
+            check(seg->addFrame(frame.data(), number, perFrame), "frame");
+        }
+    }
+    IODMultiframeDimensionModule& dimensions = seg->getDimensions();
+    char organisation[100];
+    dcmGenerateUniqueIdentifier(organisation);
+    check(dimensions.addDimensionIndex(DCM_ReferencedSegmentNumber, organisation, DCM_SegmentIdentificationSequence,
+                                       "Segment"),
+          "dimensions");
+    check(dimensions.addDimensionIndex(DCM_ImagePositionPatient, organisation, DCM_PlanePositionSequence, "Position"),
+          "dimensions");
+    auto* item = new IODMultiframeDimensionModule::DimensionOrganizationItem;
+    item->setDimensionOrganizationUID(organisation);
+    dimensions.getDimensionOrganizationSequence().push_back(item);
+    check(seg->saveFile(file.string().c_str(), EXS_LittleEndianExplicit), "saving " + file.filename().string());
+}
+
+} // namespace vsim::dicom

@@ -1,0 +1,133 @@
+// DICOM SEG: a two-segment label on a rotated, anisotropic grid written with DCMTK's dcmseg and read back by our own
+// dataset parser (an independent path): the same voxels on the same grid, the segment names kept, only the slices
+// holding labels stored; DCMTK's own SEG loader accepts what we wrote; a CT slice and a truncated SEG are refused.
+#include "vsim/core/Error.h"
+#include "vsim/dicom/CtSeriesWriter.h"
+#include "vsim/dicom/DicomSegmentation.h"
+#include "vsim/dicom/SliceStack.h"
+
+#include <QtTest>
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmseg/segdoc.h>
+
+#include <Eigen/Geometry>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using namespace vsim;
+
+namespace {
+
+fs::path freshFolder(const std::string& name)
+{
+    const fs::path folder = fs::temp_directory_path() / ("vsim-seg-test-" + name);
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+/// Two balls (values 1 and 2) on a grid turned 10 degrees about z with 0.8 x 0.7 x 1.5 mm voxels.
+LabelVolume twoBalls()
+{
+    VolumeGeometry g;
+    g.dims = {40, 36, 24};
+    g.spacing = {0.8, 0.7, 1.5};
+    g.origin = {-12.0, 30.0, -200.0};
+    g.direction = Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    LabelVolume label(g);
+    std::fill(label.data(), label.data() + g.voxelCount(), std::uint8_t(0));
+    for (int k = 0; k < g.dims[2]; ++k)
+        for (int j = 0; j < g.dims[1]; ++j)
+            for (int i = 0; i < g.dims[0]; ++i)
+            {
+                const Eigen::Vector3d p = g.indexToPatient(Eigen::Vector3d(i, j, k));
+                const Eigen::Vector3d a = g.indexToPatient(Eigen::Vector3d(12, 14, 8));
+                const Eigen::Vector3d b = g.indexToPatient(Eigen::Vector3d(27, 20, 12));
+                if ((p - a).norm() <= 6.0)
+                    label.at(i, j, k) = 1;
+                else if ((p - b).norm() <= 5.0)
+                    label.at(i, j, k) = 2;
+            }
+    return label;
+}
+
+} // namespace
+
+class SegmentationTest : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void roundTrip()
+    {
+        const LabelVolume label = twoBalls();
+        const fs::path file = freshFolder("roundtrip") / "labels.dcm";
+        dicom::writeDicomSegmentation(label, {"aorta", "thrombus"}, {}, file);
+        QVERIFY(dicom::isDicomSegmentation(file));
+
+        // DCMTK's own loader takes it: two segments, one frame per slice and segment holding voxels.
+        DcmSegmentation* loaded = nullptr;
+        QVERIFY(DcmSegmentation::loadFile(file.string().c_str(), loaded).good() && loaded);
+        QCOMPARE(loaded->getNumberOfSegments(), std::size_t(2));
+        const std::size_t dcmtkFrames = loaded->getNumberOfFrames();
+        delete loaded;
+
+        const dicom::SegmentationMask read = dicom::readDicomSegmentation(file);
+        QCOMPARE(read.segmentLabels, (std::vector<std::string>{"aorta", "thrombus"}));
+        QVERIFY(read.warnings.empty());
+        const VolumeGeometry& g = read.mask.geometry();
+        const VolumeGeometry& original = label.geometry();
+        qInfo("%zu frames; read grid %d x %d x %d", dcmtkFrames, g.dims[0], g.dims[1], g.dims[2]);
+        // Only the slices holding labels are stored: the read grid is the original's, cropped in k.
+        QCOMPARE(g.dims[0], original.dims[0]);
+        QCOMPARE(g.dims[1], original.dims[1]);
+        QVERIFY(g.dims[2] < original.dims[2]);
+        QVERIFY((g.spacing - original.spacing).norm() < 1e-4);
+        QVERIFY((g.direction - original.direction).norm() < 1e-5);
+        const Eigen::Vector3d firstIndex = original.patientToIndex(g.origin);
+        QVERIFY(std::abs(firstIndex.x()) < 1e-3 && std::abs(firstIndex.y()) < 1e-3);
+        const int k0 = int(std::lround(firstIndex.z()));
+        std::size_t compared = 0;
+        for (int k = 0; k < original.dims[2]; ++k)
+            for (int j = 0; j < original.dims[1]; ++j)
+                for (int i = 0; i < original.dims[0]; ++i)
+                {
+                    const int kk = k - k0;
+                    const int value = kk >= 0 && kk < g.dims[2] ? read.mask.at(i, j, kk) : 0;
+                    QCOMPARE(value, int(label.at(i, j, k)));
+                    compared += value != 0;
+                }
+        QVERIFY(compared > 1000);
+    }
+
+    void refusals()
+    {
+        const fs::path folder = freshFolder("refusals");
+        // A CT slice is no SEG.
+        VolumeGeometry g;
+        g.dims = {16, 16, 2};
+        CtVolume ct(g);
+        std::fill(ct.data(), ct.data() + g.voxelCount(), std::int16_t(40));
+        const auto written = dicom::writeCtSeries(ct, dicom::stackOf(g), {}, folder / "ct");
+        QVERIFY(!written.files.empty());
+        QVERIFY(!dicom::isDicomSegmentation(written.files.front()));
+        QVERIFY_THROWS_EXCEPTION(Error, dicom::readDicomSegmentation(written.files.front()));
+        // A truncated SEG: refused with a message, not read as a smaller mask.
+        const fs::path whole = folder / "whole.dcm";
+        dicom::writeDicomSegmentation(twoBalls(), {}, {}, whole);
+        const auto size = fs::file_size(whole);
+        fs::copy_file(whole, folder / "cut.dcm");
+        fs::resize_file(folder / "cut.dcm", size - 600);
+        QVERIFY_THROWS_EXCEPTION(Error, dicom::readDicomSegmentation(folder / "cut.dcm"));
+        // Nothing to write.
+        LabelVolume empty(g);
+        std::fill(empty.data(), empty.data() + g.voxelCount(), std::uint8_t(0));
+        QVERIFY_THROWS_EXCEPTION(Error, dicom::writeDicomSegmentation(empty, {}, {}, folder / "empty.dcm"));
+    }
+};
+
+QTEST_GUILESS_MAIN(SegmentationTest)
+#include "tst_segmentation.moc"
