@@ -58,6 +58,11 @@ private slots:
                 return std::abs(a.z() - m.at("max_outer_diameter_z_mm")) < std::abs(b.z() - m.at("max_outer_diameter_z_mm"));
             })};
             const SegmentationResult lumen = segmentFromPoints(ct, ParameterSet(guidedSegmentationParameters()), request);
+            // This crop reaches 90 mm into the pelvis, past vertebral bodies with no aorta in front of them: the
+            // automatic aorta point must still fall in the aortic lumen (it fell in a vertebral body before).
+            const Eigen::Vector3d found = truth.geometry().patientToIndex(findAbdominalAortaPoint(ct));
+            QCOMPARE(int(truth.at(int(std::lround(found.x())), int(std::lround(found.y())), int(std::lround(found.z())))),
+                     int(label::kVesselLumen));
             QElapsedTimer timer;
             timer.start();
             const AneurysmSac sac = measureAneurysmSac(ct, lumen.label, 1.8);

@@ -23,7 +23,7 @@ constexpr double kMinAreaMm2 = 150.0, kMaxAreaMm2 = 2500.0;   ///< 14..56 mm equ
 constexpr double kRoundness = 0.85;                           ///< share of the equivalent disc inside the piece
 constexpr double kSpineHu = 200.0, kSpineShare = 0.3;         ///< bone behind: that share of a 30 x 30 mm window
 constexpr double kTrackStepMm = 15.0;                         ///< largest shift between sampled slices
-constexpr int kChainGapSamples = 3;                           ///< a chain may skip up to two sampled slices
+constexpr double kBoneBehindReachMm = 12.0;                   ///< bone behind looked for this far up and down
 constexpr double kCortexBorderShare = 0.3;                    ///< bone: its core bordered by cortex
 
 struct Candidate
@@ -108,20 +108,29 @@ std::vector<Candidate> sliceCandidates(const CtVolume& ct, int k)
         }
         if (border == 0 || double(cortex) / double(border) > kCortexBorderShare)
             continue;
-        // Bone behind: a 30 x 30 mm window from just behind the piece, centred 10 mm towards the midline's side.
+        // Bone behind: a 30 x 30 mm window from just behind the piece, centred 10 mm towards the midline's side, in
+        // this slice or one within 12 mm (at an intervertebral disc the vertebral bodies are above and below).
         const Vector3d centre = g.indexToPatient(Vector3d(ci, cj, k));
-        std::size_t bone = 0, behind = 0;
-        for (double dy = radius + 2.0; dy <= radius + 32.0; dy += g.spacing.y())
-            for (double dx = -25.0; dx <= 5.0; dx += g.spacing.x())
-            {
-                const Vector3d index = g.patientToIndex(centre + Vector3d(dx, dy, 0.0));
-                const int i = int(std::lround(index.x())), j = int(std::lround(index.y()));
-                if (i < 0 || j < 0 || i >= nx || j >= ny)
-                    continue;
-                ++behind;
-                bone += hu[std::size_t(i) + std::size_t(nx) * std::size_t(j)] > kSpineHu;
-            }
-        if (behind == 0 || double(bone) / double(behind) < kSpineShare)
+        double boneShare = 0.0;
+        const int reachK = int(std::lround(kBoneBehindReachMm / g.spacing.z()));
+        for (int kk = std::max(0, k - reachK); kk <= std::min(g.dims[2] - 1, k + reachK); ++kk)
+        {
+            std::size_t bone = 0, behind = 0;
+            for (double dy = radius + 2.0; dy <= radius + 32.0; dy += g.spacing.y())
+                for (double dx = -25.0; dx <= 5.0; dx += g.spacing.x())
+                {
+                    const Vector3d index = g.patientToIndex(centre + Vector3d(dx, dy, 0.0));
+                    const int i = int(std::lround(index.x())), j = int(std::lround(index.y()));
+                    if (i < 0 || j < 0 || i >= nx || j >= ny)
+                        continue;
+                    ++behind;
+                    bone += kk == k ? hu[std::size_t(i) + std::size_t(nx) * std::size_t(j)] > kSpineHu
+                                    : ct.at(i, j, kk) > kSpineHu;
+                }
+            if (behind > 0)
+                boneShare = std::max(boneShare, double(bone) / double(behind));
+        }
+        if (boneShare < kSpineShare)
             continue;
         candidates.push_back({k, centre, sumHu / double(piece.size())});
     }
@@ -143,9 +152,9 @@ Eigen::Vector3d findAbdominalAortaPoint(const CtVolume& ct)
 {
     const VolumeGeometry& g = ct.geometry();
     const int step = std::max(1, int(std::lround(4.0 / g.spacing.z())));
-    // Chains of candidates over the sampled slices: a candidate continues the chain of one in the last few sampled
-    // slices within kTrackStepMm (the aorta has no bone behind it at an intervertebral disc, so a sample or two
-    // may miss it). The aorta is the longest chain; of equal ones the brighter (blood against cancellous bone).
+    // Chains of candidates over the sampled slices: a candidate continues the chain of one in the sampled slice
+    // before within kTrackStepMm. The aorta is the longest chain (vertebral bodies break at every disc, the aorta
+    // does not: its bone behind is looked for 12 mm up and down); of equal ones the brighter.
     struct Chain
     {
         std::vector<Candidate> members;
@@ -161,7 +170,7 @@ Eigen::Vector3d findAbdominalAortaPoint(const CtVolume& ct)
             {
                 const Candidate& last = chain.members.back();
                 const double distance = (candidate.centreMm - last.centreMm).head<2>().norm();
-                if (last.k < k && k - last.k <= kChainGapSamples * step && distance <= nearest)
+                if (k - last.k == step && distance <= nearest)
                     nearest = distance, continued = &chain;
             }
             if (!continued)

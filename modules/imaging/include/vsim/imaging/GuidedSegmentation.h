@@ -70,8 +70,9 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
 /// The automatic abdominal aorta point (src/AortaFinder.cpp): in slices 4 mm apart, the round pieces of enhanced
 /// blood (smoothed 150..600 HU, 14..56 mm, filling 85 % of their equivalent disc, not bordered by cortex over
 /// 600 HU as a vertebral body's core is) with bone behind them (the vertebral body: 30 % of a 30 x 30 mm window over
-/// 200 HU) and none in front; the middle of the longest chain of such pieces lining up (a chain may skip two sampled
-/// slices; of equal chains the brighter). Throws vsim::Error, naming --seed, when no chain of three is found.
+/// 200 HU, in the slice or one within 12 mm: at a disc) and none in front; the middle of the longest chain of such
+/// pieces lining up slice after slice (of equal chains the brighter). Throws vsim::Error, naming --seed, when no
+/// chain of three is found.
 Eigen::Vector3d findAbdominalAortaPoint(const CtVolume& ct);
 
 } // namespace vsim::imaging
