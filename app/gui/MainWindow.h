@@ -202,6 +202,8 @@ private:
                           const std::string& centerlinesId);
     /// The newest undamaged artifact of a kind, or an empty string.
     std::string newestArtifact(study::ArtifactKind kind) const;
+    /// The newest image for a step; "" without a study, or (saying so to the user) without an image.
+    std::string newestImageOrSay(const QString& step);
     void createDocks();
     void createStatusBar();
     void refreshArtifactTree();

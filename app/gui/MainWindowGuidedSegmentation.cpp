@@ -79,14 +79,9 @@ void MainWindow::showSegmentationPoints()
 
 bool MainWindow::segmentFromPoints(const imaging::SegmentationRequest& request)
 {
-    if (!m_document.hasStudy())
-        return false;
-    const std::string imageId = newestArtifact(study::ArtifactKind::Image);
+    const std::string imageId = newestImageOrSay(tr("Segment from points"));
     if (imageId.empty())
-    {
-        showError(tr("Segment from points"), tr("The study has no CT image: import one first."));
         return false;
-    }
     if (request.includeMm.empty() && request.target != imaging::SegmentationTarget::Aorta)
     {
         showError(tr("Segment from points"),

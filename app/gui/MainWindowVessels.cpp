@@ -202,16 +202,19 @@ std::string MainWindow::newestArtifact(study::ArtifactKind kind) const
     return m_document.study().newestArtifact(kind);
 }
 
+std::string MainWindow::newestImageOrSay(const QString& step)
+{
+    const std::string imageId = m_document.hasStudy() ? newestArtifact(study::ArtifactKind::Image) : std::string();
+    if (imageId.empty() && m_document.hasStudy())
+        showError(step, tr("The study has no CT image: import one first."));
+    return imageId;
+}
+
 bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)
 {
-    if (!m_document.hasStudy())
-        return false;
-    const std::string imageId = newestArtifact(study::ArtifactKind::Image);
+    const std::string imageId = newestImageOrSay(tr("Segment vessels"));
     if (imageId.empty())
-    {
-        showError(tr("Segment vessels"), tr("The study has no CT image: import one first."));
         return false;
-    }
     struct Outcome
     {
         imaging::SegmentationResult segmentation;

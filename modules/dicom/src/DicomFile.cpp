@@ -1,6 +1,7 @@
 #include "vsim/dicom/DicomFile.h"
 
 #include "DcmtkSetup.h"
+#include "FunctionalGroups.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -22,6 +23,8 @@
 
 namespace vsim::dicom {
 namespace {
+
+using detail::functionalGroup;
 
 constexpr Uint32 kHeaderReadLength = 4096; // bytes; longer values (pixel data) stay on disk until accessed
 
@@ -95,17 +98,6 @@ void readPlaneAttributes(DcmItem& item, FrameGeometry& geometry)
         geometry.rescaleSlope = v[0];
     if (decimals(item, DCM_RescaleIntercept, v, 1))
         geometry.rescaleIntercept = v[0];
-}
-
-/// Functional groups (Enhanced CT/MR): a macro is taken from the frame's own item, else from the shared one.
-DcmItem* functionalGroup(DcmItem* perFrame, DcmItem* shared, const DcmTagKey& sequence)
-{
-    DcmItem* item = nullptr;
-    if (perFrame && perFrame->findAndGetSequenceItem(sequence, item, 0).good() && item)
-        return item;
-    if (shared && shared->findAndGetSequenceItem(sequence, item, 0).good() && item)
-        return item;
-    return nullptr;
 }
 
 std::vector<FrameGeometry> readFrames(DcmDataset& dataset, int frameCount)

@@ -4,6 +4,7 @@
 #include "vsim/dicom/DicomSegmentation.h"
 
 #include "DcmtkSetup.h"
+#include "FunctionalGroups.h"
 
 #include "vsim/core/Error.h"
 
@@ -22,18 +23,9 @@
 namespace vsim::dicom {
 namespace {
 
-using Eigen::Vector3d;
+using detail::functionalGroup;
 
-/// The item of functional group `group` that applies to a frame: its per-frame item, else the shared one.
-DcmItem* functionalGroup(DcmItem* perFrame, DcmItem* shared, const DcmTagKey& group)
-{
-    DcmItem* item = nullptr;
-    if (perFrame && perFrame->findAndGetSequenceItem(group, item, 0).good() && item)
-        return item;
-    if (shared && shared->findAndGetSequenceItem(group, item, 0).good() && item)
-        return item;
-    return nullptr;
-}
+using Eigen::Vector3d;
 
 std::vector<double> numbers(DcmItem* item, const DcmTagKey& tag, unsigned long count, const std::string& what)
 {
