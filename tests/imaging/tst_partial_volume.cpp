@@ -2,17 +2,22 @@
 // 0.7 x 0.7 x 1 mm, 20 HU noise), segmented, skeletonised and centerlined with the default parameters, against the truth
 // segments' mean radii: the root within 2 %, the mean error within 3 % and every segment within 8 % (measured
 // 2026-11-22: 0.1 %, 1.1 %, 4.5 %), and a smaller mean error than the label's cross-sections (8.4 %: the
-// threshold shrinks thin vessels).
+// threshold shrinks thin vessels). That phantom's image is made with the fit's own edge model; the patient-like
+// hepatic tree (PSF, slice profile, correlated noise) checks the tips without that crime.
 
+#include "AnatomyCases.h"
 #include "PhantomGrids.h"
 #include "vsim/dicom/PhantomRender.h"
 #include "vsim/imaging/Centerlines.h"
+#include "vsim/imaging/GuidedSegmentation.h"
 #include "vsim/imaging/PartialVolumeRadii.h"
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/imaging/VesselSegmentation.h"
 
 #include <QtTest>
+
+#include <set>
 
 using namespace vsim;
 using namespace vsim::dicom;
@@ -30,6 +35,58 @@ private slots:
         catch (const std::exception& error)
         {
             QFAIL(error.what());
+        }
+    }
+
+    /// Issue 15 must-show 2: the hepatic tips' radii on the patient-like phantom (anatomy, PSF-convolved, correlated
+    /// noise: not the fit's edge model), from the guided segmentation (target hepatic, the aorta and the proper
+    /// hepatic artery), its skeleton and centerlines. Reported: how many of the truth's segmental arteries the
+    /// centerlines reach and measure, and their mean-radius errors. The issue asks 5 %; measured 2026-11-24 on seed
+    /// 1: 5 of 28 reached, -15..-18 % on the 1.3-1.4 mm tips (the blurred-tube fit's edge model is not this
+    /// scanner's; the volume integral alone reads -5..-13 %). Not met: held at a mean error under 25 % as a guard.
+    void patientLikeHepaticTips()
+    {
+        for (std::uint64_t seed : {1u, 2u, 3u})
+        {
+            const test::AnatomyCase c = test::makeAnatomyCase(PhantomKind::HepaticTree, {256, 256, 200}, {0.7, 0.7, 1.0},
+                                                              seed, Eigen::Vector3d(-40, -10, 85), false);
+            imaging::SegmentationRequest request;
+            request.target = imaging::SegmentationTarget::Hepatic;
+            const VesselSegment& proper = test::segmentNamed(c.phantom, "proper hepatic artery");
+            request.includeMm = {test::pointAtZ(test::segmentNamed(c.phantom, "aorta"), kPhantomCentre.z() + 60.0),
+                                 proper.points[proper.points.size() / 2]};
+            const LabelVolume label =
+                imaging::segmentFromPoints(c.ct, ParameterSet(imaging::guidedSegmentationParameters()), request).label;
+            const auto skeleton = imaging::extractSkeleton(label, 1, ParameterSet(imaging::skeletonParameters()));
+            const SkeletonGraph centerlines =
+                imaging::extractCenterlines(label, 1, skeleton.graph, ParameterSet(imaging::centerlineParameters()));
+            const std::vector<imaging::PartialVolumeRadius> radii = imaging::partialVolumeRadii(c.ct, centerlines);
+            std::set<const VesselSegment*> tips, reached;
+            for (const VesselSegment& segment : c.phantom.arteries.segments)
+                if (segment.name == "segmental hepatic artery")
+                    tips.insert(&segment);
+            double sum = 0.0, worst = 0.0;
+            int measured = 0;
+            for (std::size_t e = 0; e < centerlines.edges.size(); ++e)
+            {
+                const VesselSegment* truth = &test::nearestTruthSegment(
+                    c.phantom.arteries, centerlines.nodes[std::size_t(centerlines.edges[e].from)].position,
+                    centerlines.nodes[std::size_t(centerlines.edges[e].to)].position);
+                if (!tips.count(truth) || !radii[e].measured || reached.count(truth))
+                    continue;
+                reached.insert(truth);
+                const double expected = 0.5 * (truth->radii.front() + truth->radii.back());
+                const double signedError = radii[e].meanRadiusMm / expected - 1.0, error = std::abs(signedError);
+                qInfo("  tip: measured %.2f mm over %.1f mm of centerline, truth mean %.2f mm (%+.1f %%)",
+                      radii[e].meanRadiusMm, radii[e].usedLengthMm, expected, 100.0 * signedError);
+                sum += error, worst = std::max(worst, error), ++measured;
+            }
+            qInfo("seed %llu: %d of %zu segmental hepatic arteries reached and measured; mean-radius error mean %.1f %%, "
+                  "worst %.1f %% (issue: within 5 %%)",
+                  (unsigned long long)seed, measured, tips.size(), measured ? 100.0 * sum / measured : 0.0,
+                  100.0 * worst);
+            QVERIFY(measured >= 1);
+            QVERIFY(sum / measured <= 0.25);
         }
     }
 
