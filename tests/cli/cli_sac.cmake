@@ -52,3 +52,22 @@ message(STATUS "DICOM SEG round trip: ${seg_voxels} voxels (the label's NRRD: ${
 if(NOT seg_voxels OR NOT seg_voxels EQUAL nrrd_voxels OR NOT again MATCHES "overwrite")
     message(FATAL_ERROR "DICOM SEG round trip:\n${exported}\n${fromseg}\n${fromnrrd}\n${again}")
 endif()
+# Value for value (lumen 1, thrombus 4, wall 5), not only the same voxels: the two imported labels' files.
+string(REGEX MATCH "as (label-[0-9]+)" ignored "${fromseg}")
+set(seg_id ${CMAKE_MATCH_1})
+string(REGEX MATCH "as (label-[0-9]+)" ignored "${fromnrrd}")
+set(nrrd_id ${CMAKE_MATCH_1})
+execute_process(COMMAND ${PYTHON} -c "
+import gzip, sys
+def body(path):
+    data = open(path, 'rb').read()
+    header, payload = data.split(b'\\n\\n', 1)
+    return gzip.decompress(payload) if b'gzip' in header else payload
+a, b = body(sys.argv[1]), body(sys.argv[2])
+print(sorted(set(a)), sorted(set(b)))
+sys.exit(0 if a == b else 1)" ${WORK}/aaa.vsim/labels/${seg_id}.nrrd ${WORK}/aaa.vsim/labels/${nrrd_id}.nrrd
+    RESULT_VARIABLE differ OUTPUT_VARIABLE values)
+message(STATUS "label values, SEG and NRRD imports: ${values}")
+if(NOT differ EQUAL 0)
+    message(FATAL_ERROR "the SEG round trip changed label values: ${values}")
+endif()

@@ -1,6 +1,6 @@
-// DICOM SEG: a two-segment label on a rotated, anisotropic grid written with DCMTK's dcmseg and read back by our own
-// dataset parser (an independent path): the same voxels on the same grid, the segment names kept, only the slices
-// holding labels stored; DCMTK's own SEG loader accepts what we wrote; a CT slice and a truncated SEG are refused.
+// DICOM SEG: a label of values 1 and 4 on a rotated, anisotropic grid written with DCMTK's dcmseg and read back by
+// our own dataset parser (an independent path): the same voxels and values on the same grid, the segment names kept,
+// only the slices holding labels stored; DCMTK's own SEG loader accepts what we wrote; a CT slice and a truncated SEG are refused.
 #include "vsim/core/Error.h"
 #include "vsim/dicom/CtSeriesWriter.h"
 #include "vsim/dicom/DicomSegmentation.h"
@@ -29,7 +29,8 @@ fs::path freshFolder(const std::string& name)
     return folder;
 }
 
-/// Two balls (values 1 and 2) on a grid turned 10 degrees about z with 0.8 x 0.7 x 1.5 mm voxels.
+/// Two balls (values 1 and 4, as a sac's lumen and thrombus) on a grid turned 10 degrees about z with 0.8 x 0.7 x
+/// 1.5 mm voxels.
 LabelVolume twoBalls()
 {
     VolumeGeometry g;
@@ -49,7 +50,7 @@ LabelVolume twoBalls()
                 if ((p - a).norm() <= 6.0)
                     label.at(i, j, k) = 1;
                 else if ((p - b).norm() <= 5.0)
-                    label.at(i, j, k) = 2;
+                    label.at(i, j, k) = 4;
             }
     return label;
 }
@@ -65,18 +66,20 @@ private slots:
     {
         const LabelVolume label = twoBalls();
         const fs::path file = freshFolder("roundtrip") / "labels.dcm";
-        dicom::writeDicomSegmentation(label, {"aorta", "thrombus"}, {}, file);
+        dicom::writeDicomSegmentation(label, {"aorta", "", "", "thrombus"}, {}, file);
         QVERIFY(dicom::isDicomSegmentation(file));
 
-        // DCMTK's own loader takes it: two segments, one frame per slice and segment holding voxels.
+        // DCMTK's own loader takes it: segments 1..4 (2 and 3 without frames), one frame per slice and segment
+        // holding voxels.
         DcmSegmentation* loaded = nullptr;
         QVERIFY(DcmSegmentation::loadFile(file.string().c_str(), loaded).good() && loaded);
-        QCOMPARE(loaded->getNumberOfSegments(), std::size_t(2));
+        QCOMPARE(loaded->getNumberOfSegments(), std::size_t(4));
         const std::size_t dcmtkFrames = loaded->getNumberOfFrames();
         delete loaded;
 
         const dicom::SegmentationMask read = dicom::readDicomSegmentation(file);
-        QCOMPARE(read.segmentLabels, (std::vector<std::string>{"aorta", "thrombus"}));
+        QCOMPARE(read.segmentLabels, (std::vector<std::string>{"aorta", "unused label value 2", "unused label value 3",
+                                                                "thrombus"}));
         QVERIFY(read.warnings.empty());
         const VolumeGeometry& g = read.mask.geometry();
         const VolumeGeometry& original = label.geometry();

@@ -1,5 +1,5 @@
-// Writing a label volume as a BINARY DICOM SEG with DCMTK's dcmseg (DicomSegmentation.h): one segment per label
-// value present, one frame per slice and segment holding any voxel, the plane position per frame, orientation and
+// Writing a label volume as a BINARY DICOM SEG with DCMTK's dcmseg (DicomSegmentation.h): segment N for label
+// value N, one frame per slice and segment holding any voxel, the plane position per frame, orientation and
 // pixel measures shared.
 
 #include "vsim/dicom/DicomSegmentation.h"
@@ -89,9 +89,13 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
 
     const std::size_t slicePixels = std::size_t(g.dims[0]) * std::size_t(g.dims[1]);
     std::vector<Uint8> frame(slicePixels);
-    for (int value : values)
+    // Segment N holds label value N, so that the values come back as they were (a sac's thrombus 4 and wall 5):
+    // values between that the label does not use get a segment without frames.
+    for (int value = 1; value <= *values.rbegin(); ++value)
     {
-        const std::string name = std::size_t(value) <= segmentNames.size() && !segmentNames[std::size_t(value - 1)].empty()
+        const bool used = values.count(value) > 0;
+        const std::string name = !used ? "unused label value " + std::to_string(value)
+                                 : std::size_t(value) <= segmentNames.size() && !segmentNames[std::size_t(value - 1)].empty()
                                      ? segmentNames[std::size_t(value - 1)]
                                      : "segment " + std::to_string(value);
         DcmSegment* segment = nullptr;
@@ -102,6 +106,11 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
               "segment " + name);
         Uint16 number = 0;
         check(seg->addSegment(segment, number), "segment " + name);
+        if (number != value)
+            throw Error("writing the DICOM SEG failed: segment " + std::to_string(number) + " for label value " +
+                        std::to_string(value));
+        if (!used)
+            continue;
         for (int k = 0; k < g.dims[2]; ++k)
         {
             bool any = false;

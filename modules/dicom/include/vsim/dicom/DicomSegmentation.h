@@ -41,8 +41,9 @@ struct SegmentationDescription
     std::string patientName = "ANONYMOUS", patientId = "VSIM";
 };
 
-/// Writes `label` (values 1..N; one segment per value present, named by `segmentNames[value - 1]` or "segment N")
-/// as a BINARY DICOM SEG with one frame per slice and segment that holds any voxel. Throws vsim::Error.
+/// Writes `label` (values 1..N) as a BINARY DICOM SEG: segment N holds value N (named by `segmentNames[N - 1]` or
+/// "segment N"; a value the label does not use gets a segment without frames, so that the values read back as
+/// they were), one frame per slice and segment that holds any voxel. Throws vsim::Error.
 void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::string>& segmentNames,
                             const SegmentationDescription& description, const std::filesystem::path& file);
 
