@@ -90,20 +90,21 @@ execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${W
                 OUTPUT_VARIABLE overlap)
 message(STATUS "CT pulmonary angiogram, the automatic segmentation against heart (label-3), pulmonary artery:\n${overlap}")
 
-# The guided segmentation (issue 15, must-show 3): a point in the pulmonary trunk (the centroid of the pulmonary-artery
-# mask's part inside the heart mask), an exclude point in the right ventricle below its outflow tract (the mean of
-# the bright heart-mask voxels outside the pulmonary-artery mask, anterior and 60 mm below the trunk point), 60 mm of
-# path. The issue asks recall >= 0.8 and <= 5 % of the label in the heart outside the pulmonary artery; the second is
-# not met yet (0.061 since the trunk's core level: the label's boundary layer lies in the heart mask around the trunk,
-# and a little of the outflow tract below the valve is grown; 0.136 before), so it is held at <= 0.08 as a guard.
-run_cli(0 guided segment --study ${WORK}/ctpa.vsim --target all --seed 15.3,-161.2,700.7 --exclude 22.6,-208.1,637.5
-        --max-length 60)
+# The guided segmentation (issue 15, must-show 3), as a reader would place it: a point in the middle of the pulmonary
+# trunk (30 mm above the valve, the proximal end of the pulmonary-artery mask), an exclude point in the right
+# ventricular outflow tract 15 mm below the valve (on the trunk's axis extended), and a stop plane at each hilum (where
+# the mask's left and right pulmonary arteries end, normal pointing lateral; the path limit then only a backstop).
+# Fronts that compete meet half-way along the blood between their points (the valve is no narrowing here), so an
+# exclude point deep in the ventricle (60 mm below the trunk point) let the label grow 6 mm of the outflow tract:
+# 6.1 % of it in the heart outside the pulmonary artery. The issue asks recall >= 0.8 and <= 5 %.
+run_cli(0 guided segment --study ${WORK}/ctpa.vsim --target all --seed 24,-172,698 --exclude 38.6,-208.5,675.4
+        --stop -49.1,-146.5,691.4,-1,0,0 --stop 49.6,-129.3,694.2,1,0,0 --max-length 150)
 message(STATUS "CT pulmonary angiogram, guided: ${guided}")
 execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/label_overlap.py ${WORK}/ctpa.vsim label-5 label-3 label-4
                 --except label-4 OUTPUT_VARIABLE overlap)
 message(STATUS "CT pulmonary angiogram, the guided segmentation against heart (label-3), pulmonary artery:\n${overlap}")
 string(JSON recall GET "${overlap}" references label-4 recall)
 string(JSON heart_outside GET "${overlap}" references label-3 share_of_label_outside_except)
-if(recall LESS 0.8 OR heart_outside GREATER 0.08)
-    message(FATAL_ERROR "guided CTPA: pulmonary-artery recall ${recall} (>= 0.8), heart outside it ${heart_outside} (<= 0.08)")
+if(recall LESS 0.8 OR heart_outside GREATER 0.05)
+    message(FATAL_ERROR "guided CTPA: pulmonary-artery recall ${recall} (>= 0.8), heart outside it ${heart_outside} (<= 0.05)")
 endif()
