@@ -165,6 +165,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                   {"run_status", nlohmann::json::parse(app::runStatusJson(run.status))},
                                   {"step_solves", {{"pcg_iterations", run.stepIterations},
                                                    {"relative_residuals", run.stepResiduals}}},
+                                  {"equilibrium_force_residuals", run.equilibriumResiduals},
                                   {"frames", run.frames.size()},
                                   {"frame_times_s", run.frameTimesS},
                                   {"frame_pressures_kpa", [&run] {

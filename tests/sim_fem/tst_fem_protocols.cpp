@@ -57,6 +57,18 @@ private slots:
               run.metrics.at("max_displacement_mm"));
         QVERIFY(std::abs(sum / count / expected - 1.0) < 0.05);
         QVERIFY(run.metrics.at("peak_rupture_index") > 0.0 && run.metrics.at("peak_rupture_index") < 1.0);
+
+        // The figures are the converged static equilibrium's: the force residual history falls below 1e-6 and the
+        // run status says so (the damped path's steps stop at their iteration budget, recorded apart).
+        QString history;
+        for (double r : run.equilibriumResiduals)
+            history += QString::number(r, 'e', 1) + " ";
+        qInfo("equilibrium: %g updates, force residual %s; path: %g steps, %g at the CG cap; %s",
+              run.metrics.at("equilibrium_updates"), qPrintable(history), run.metrics.at("path_steps"),
+              run.metrics.at("path_capped_steps"), run.status.convergenceText().c_str());
+        QVERIFY(!run.equilibriumResiduals.empty() && run.equilibriumResiduals.back() <= 1e-6);
+        QVERIFY(run.status.converged() && run.metrics.at("run_force_residual") <= 1e-6);
+        QVERIFY(run.metrics.at("run_worst_residual") <= 1e-8);
     }
 
     void wallStrengthModel()

@@ -49,6 +49,9 @@ std::string validationAgainstRun(const ValidationConfiguration& validation, cons
     if (backend != validation.backend)
         differences.push_back("the run used the " + backend + " backend, the cases the " + validation.backend);
     const RunStatus status = runStatusOf(run);
+    if (status.solves > 0 && status.iterationCap == 0 && validation.iterationCap > 0)
+        differences.push_back("the run's linear solves were direct (factorised), the cases' iterative (at most " +
+                              std::to_string(validation.iterationCap) + " iterations)");
     if (status.iterationCap > 0 && status.iterationCap < validation.iterationCap)
         differences.push_back("the run's solves stopped at " + std::to_string(status.iterationCap) +
                               " iterations, the cases' at " + std::to_string(validation.iterationCap));

@@ -44,14 +44,22 @@ void RunStatus::recordSolve(int solveIterations, double residual, double solveTo
 
 std::string RunStatus::convergenceText() const
 {
+    const std::string force = forceResidual < 0.0 ? std::string()
+                                                   : "force residual " + shortNumber(forceResidual) + " (tolerance " +
+                                                         shortNumber(forceTolerance) + ")";
     if (converged())
-        return "converged";
-    std::string text = "not converged: " + std::to_string(unconvergedSolves) + " of " + std::to_string(solves) +
-                       " solves ended above their tolerance";
-    if (iterationCap > 0)
-        text += " at the " + std::to_string(iterationCap) + "-iteration cap";
-    return text + ", worst relative residual " + shortNumber(worstResidual) + " (tolerance " + shortNumber(tolerance) +
-           ")";
+        return force.empty() ? "converged" : "converged, " + force;
+    std::string text = "not converged: ";
+    if (unconvergedSolves > 0)
+    {
+        text += std::to_string(unconvergedSolves) + " of " + std::to_string(solves) + " solves ended above their tolerance";
+        if (iterationCap > 0)
+            text += " at the " + std::to_string(iterationCap) + "-iteration cap";
+        text += ", worst relative residual " + shortNumber(worstResidual) + " (tolerance " + shortNumber(tolerance) + ")";
+        if (!force.empty())
+            text += "; ";
+    }
+    return text + force;
 }
 
 std::string RunStatus::stopText() const
@@ -79,6 +87,8 @@ std::map<std::string, double> RunStatus::metrics() const
                                          {"run_tolerance", tolerance},
                                          {"run_final_residual", finalResidual},
                                          {"run_worst_residual", worstResidual}};
+    if (forceResidual >= 0.0)
+        values["run_force_residual"] = forceResidual, values["run_force_tolerance"] = forceTolerance;
     if (!reachedQuantity.empty())
     {
         values["run_reached_" + reachedQuantity + "_" + reachedUnit] = reached;
@@ -115,6 +125,8 @@ RunStatus RunStatus::fromRecords(const std::map<std::string, double>& metrics,
     status.tolerance = number("run_tolerance", 0);
     status.finalResidual = number("run_final_residual", 0);
     status.worstResidual = number("run_worst_residual", 0);
+    status.forceResidual = number("run_force_residual", -1);
+    status.forceTolerance = number("run_force_tolerance", 0);
     for (RunStatus::StoppedBy by : {StoppedBy::End, StoppedBy::EndCondition, StoppedBy::Guard, StoppedBy::Cancel})
         if (stoppedByName(by) == text("run_stopped_by"))
             status.stoppedBy = by;

@@ -4,6 +4,12 @@
 
 namespace vsim::sim::fem {
 
+std::uint32_t BlockSparseMatrix::slotOf(std::size_t row, std::size_t column) const
+{
+    const auto begin = m_columns.begin() + m_rowStart[row], end = m_columns.begin() + m_rowStart[row + 1];
+    return std::uint32_t(std::lower_bound(begin, end, std::uint32_t(column)) - m_columns.begin());
+}
+
 BlockSparseMatrix::BlockSparseMatrix(std::size_t nodeCount, const std::vector<std::array<int, 4>>& tets)
 {
     std::vector<std::vector<std::uint32_t>> neighbours(nodeCount);
@@ -25,10 +31,7 @@ BlockSparseMatrix::BlockSparseMatrix(std::size_t nodeCount, const std::vector<st
     for (const auto& row : neighbours)
         m_columns.insert(m_columns.end(), row.begin(), row.end());
     m_blocks.assign(m_columns.size(), Eigen::Matrix3d::Zero());
-    auto find = [&](std::size_t row, std::uint32_t column) {
-        const auto begin = m_columns.begin() + m_rowStart[row], end = m_columns.begin() + m_rowStart[row + 1];
-        return std::uint32_t(std::lower_bound(begin, end, column) - m_columns.begin());
-    };
+    auto find = [&](std::size_t row, std::uint32_t column) { return slotOf(row, column); };
     m_diagonalSlot.resize(nodeCount);
     for (std::size_t n = 0; n < nodeCount; ++n)
         m_diagonalSlot[n] = find(n, std::uint32_t(n));

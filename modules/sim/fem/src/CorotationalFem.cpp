@@ -206,6 +206,54 @@ void CorotationalFem::assemble(BlockSparseMatrix& matrix, double massFactor, dou
         matrix.diagonal(n).diagonal().array() += massFactor * m_mass[Eigen::Index(3 * n)];
 }
 
+void CorotationalFem::addRotationStiffness(BlockSparseMatrix& matrix) const
+{
+    if (m_svk)
+        return;
+    if (matrix.nodeCount() != nodeCount() || matrix.blockCount() != m_pattern.blockCount())
+        throw Error("the matrix does not have this mesh's pattern");
+    const auto skew = [](const Eigen::Vector3d& v) {
+        Eigen::Matrix3d m;
+        m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+        return m;
+    };
+    for (std::size_t e = 0; e < m_tets.size(); ++e)
+    {
+        if (m_inverted[e])
+            continue;
+        const auto& tet = m_tets[e];
+        const Eigen::Matrix3d r = m_rotations[e].toRotationMatrix();
+        const Matrix12d& k = m_elements[e].stiffness;
+        Vector12d rotated; // R^T x per node
+        for (int a = 0; a < 4; ++a)
+            rotated.segment<3>(3 * a) = r.transpose() * m_positions.segment<3>(3 * tet[std::size_t(a)]);
+        const Vector12d ku = k.lazyProduct(corotatedDisplacement(e, r));
+        // S = R^T F with F = sum_a x_a g_a^T.
+        Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
+        for (int a = 0; a < 4; ++a)
+            s += rotated.segment<3>(3 * a) * m_elements[e].gradients.row(a);
+        const Eigen::Matrix3d lambda = s.trace() * Eigen::Matrix3d::Identity() - s;
+        if (std::abs(lambda.determinant()) < 1e-12)
+            continue;
+        const Eigen::Matrix3d lambdaInverse = lambda.inverse();
+        // C (12 x 3): node a's rows -[K u]_a x + sum_m K_am [R^T x_m]x.
+        Eigen::Matrix<double, 12, 3> c;
+        for (int a = 0; a < 4; ++a)
+        {
+            Eigen::Matrix3d rows = -skew(ku.segment<3>(3 * a));
+            for (int m = 0; m < 4; ++m)
+                rows += k.block<3, 3>(3 * a, 3 * m) * skew(rotated.segment<3>(3 * m));
+            c.block<3, 3>(3 * a, 0) = rows;
+        }
+        for (int b = 0; b < 4; ++b)
+        {
+            const Eigen::Matrix3d spin = lambdaInverse * skew(m_elements[e].gradients.row(b).transpose()) * r.transpose();
+            for (int a = 0; a < 4; ++a)
+                matrix.block(m_pattern.slot(e, a, b)) += r * (c.block<3, 3>(3 * a, 0) * spin);
+        }
+    }
+}
+
 std::vector<double> CorotationalFem::elementEnergies() const
 {
     std::vector<double> energies(m_tets.size());

@@ -68,6 +68,32 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
     const double lastTime = stepsRun * h;
     if (!result.stopReason.empty() && result.frameTimesS.back() != lastTime)
         addFrame(lastTime, setup.pressurePa(lastTime)); // the last good state
+    if (setup.equilibriumTolerance > 0.0 && result.stopReason.empty())
+    {
+        progress.report(1.0, "equilibrium");
+        const RunStatus path = status;
+        result.metrics["path_steps"] = double(stepsRun);
+        result.metrics["path_capped_steps"] = double(path.unconvergedSolves);
+        result.metrics["path_mean_cg_iterations"] = path.solves ? double(path.iterations) / double(path.solves) : 0.0;
+        std::string failure;
+        const StaticSolveReport equilibrium =
+            simulation.equilibrate(setup.equilibriumTolerance, setup.equilibriumMaxUpdates, &failure);
+        status = RunStatus{};
+        status.stoppedBy = path.stoppedBy;
+        status.stopMessage = path.stopMessage;
+        for (int update = 0; update < equilibrium.updates; ++update) // direct solves: each checked A x - b
+            status.recordSolve(0, equilibrium.worstLinearResidual, 1e-8, 0);
+        status.forceResidual = equilibrium.residualHistory.empty() ? 1.0 : equilibrium.forceResidual;
+        status.forceTolerance = setup.equilibriumTolerance;
+        result.equilibriumResiduals = equilibrium.residualHistory;
+        result.metrics["equilibrium_updates"] = double(equilibrium.updates);
+        if (!failure.empty())
+            status.stopMessage = "the equilibrium solve failed: " + failure + "; the figures are the load path's";
+        else
+        {
+            result.frames.back() = simulation.frame();
+        }
+    }
 
     const TetMesh& last = result.frames.back();
     const auto& vonMises = last.cellFields.at("von_mises_kpa");

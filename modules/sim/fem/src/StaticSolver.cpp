@@ -2,10 +2,12 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/fem/ConjugateGradient.h"
+#include "vsim/sim/fem/SparseDirect.h"
 
-
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 namespace vsim::sim::fem {
 namespace {
@@ -21,43 +23,101 @@ double freeNorm(const Eigen::VectorXd& v, const std::vector<std::uint8_t>& const
 
 } // namespace
 
-StaticSolveReport solveStatic(CorotationalFem& model, const Eigen::VectorXd& externalForces,
-                              const std::vector<std::uint8_t>& constrained, double tolerance, int maxUpdates,
-                              int cgMaxIterations)
+StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& external,
+                              const std::vector<std::uint8_t>& constrained, const StaticSolveSettings& settings,
+                              const ExternalStiffness& externalStiffness)
 {
     StaticSolveReport report;
     BlockSparseMatrix stiffness = model.makeMatrix();
-    const Eigen::VectorXd external =
-        externalForces.size() == 0 ? Eigen::VectorXd::Zero(model.positions().size()) : externalForces;
-    double reference = freeNorm(external, constrained);
-    for (; report.updates < maxUpdates; ++report.updates)
+    std::unique_ptr<SparseDirect> direct;
+    if (settings.linear != LinearSolver::ConjugateGradient)
+        direct = std::make_unique<SparseDirect>(stiffness, constrained,
+                                                settings.linear == LinearSolver::SparseLu ? SparseDirect::Kind::GeneralLu
+                                                                                          : SparseDirect::Kind::SymmetricLdlt);
+    // The state at the model's positions: its element pass, inverted elements and residual force.
+    Eigen::VectorXd residual;
+    const auto evaluate = [&]() {
+        const std::size_t inverted = model.updateElements();
+        const Eigen::VectorXd load =
+            external ? external(model.positions()) : Eigen::VectorXd::Zero(model.positions().size());
+        residual = model.elasticForces() + load;
+        return std::make_pair(inverted, freeNorm(residual, constrained));
+    };
+    auto [inverted, norm] = evaluate();
+    if (inverted > 0)
     {
-        if (const std::size_t inverted = model.updateElements(); inverted > 0)
-        {
-            const Eigen::Vector3d where = 1e3 * model.firstInvertedCentroid();
-            char place[96];
-            std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
-            throw Error(std::to_string(inverted) + " elements inverted during the static solve" + place +
-                        ": the load is too large for the mesh, or the constraints do not hold it");
-        }
-        const Eigen::VectorXd residual = model.elasticForces() + external;
-        const double norm = freeNorm(residual, constrained);
-        if (reference == 0.0)
-            reference = norm; // only prescribed displacements drive it
+        const Eigen::Vector3d where = 1e3 * model.firstInvertedCentroid();
+        char place[96];
+        std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
+        throw Error(std::to_string(inverted) + " elements are inverted at the start of the static solve" + place);
+    }
+    double reference = external ? freeNorm(external(model.positions()), constrained) : 0.0;
+    if (reference == 0.0)
+        reference = norm; // only prescribed displacements drive it
+    for (;; ++report.updates)
+    {
         report.forceResidual = reference > 0.0 ? norm / reference : 0.0;
-        if (report.forceResidual <= tolerance)
+        report.residualHistory.push_back(report.forceResidual);
+        if (report.forceResidual <= settings.tolerance)
         {
             report.converged = true;
             break;
         }
+        if (report.updates >= settings.maxUpdates)
+            break;
         model.assemble(stiffness, 0.0, 1.0);
+        if (settings.rotationStiffness)
+            model.addRotationStiffness(stiffness);
+        if (externalStiffness)
+            externalStiffness(model.positions(), stiffness);
         Eigen::VectorXd delta = Eigen::VectorXd::Zero(residual.size());
-        const ConjugateGradientResult cg =
-            solveConjugateGradient(stiffness, residual, delta, constrained, 0.1 * tolerance, cgMaxIterations);
-        report.cgIterations += cg.iterations;
-        model.positions() += delta;
+        if (direct)
+        {
+            if (!direct->factorize(stiffness))
+                throw Error("the tangent stiffness could not be factorised (a part of the wall is not held by the "
+                            "fixed ends, or the load is past the wall's limit)");
+            report.worstLinearResidual = std::max(report.worstLinearResidual, direct->solve(residual, delta));
+        }
+        else
+        {
+            const ConjugateGradientResult cg = solveConjugateGradient(stiffness, residual, delta, constrained,
+                                                                      0.1 * settings.tolerance, settings.cgMaxIterations);
+            report.cgIterations += cg.iterations;
+            report.worstLinearResidual = std::max(report.worstLinearResidual, cg.relativeResidual);
+        }
+        // Backtracking: the full step unless it inverts an element or does not lower the residual force (Armijo
+        // on its norm); halved up to 12 times, else the smallest step that inverts nothing is taken.
+        const Eigen::VectorXd start = model.positions();
+        double step = 1.0;
+        for (int halving = 0;; ++halving, step *= 0.5)
+        {
+            model.positions() = start + step * delta;
+            const auto [trialInverted, trialNorm] = evaluate();
+            if ((trialInverted == 0 && trialNorm <= (1.0 - 1e-4 * step) * norm) || (halving >= 12 && trialInverted == 0))
+            {
+                norm = trialNorm;
+                break;
+            }
+            if (halving >= 20)
+            {
+                model.positions() = start;
+                evaluate();
+                throw Error("no step along the Newton direction keeps every element uninverted");
+            }
+        }
+        report.smallestStep = std::min(report.smallestStep, step);
     }
     return report;
+}
+
+StaticSolveReport solveStatic(CorotationalFem& model, const Eigen::VectorXd& externalForces,
+                              const std::vector<std::uint8_t>& constrained, double tolerance, int maxUpdates,
+                              int cgMaxIterations)
+{
+    ExternalForces fixed;
+    if (externalForces.size() > 0)
+        fixed = [&externalForces](const Eigen::VectorXd&) { return externalForces; };
+    return solveStatic(model, fixed, constrained, {tolerance, maxUpdates, LinearSolver::ConjugateGradient, cgMaxIterations});
 }
 
 } // namespace vsim::sim::fem

@@ -20,6 +20,26 @@ void addPressureForces(const std::vector<std::array<int, 3>>& faces, const Eigen
     }
 }
 
+void subtractPressureStiffness(const std::vector<std::array<int, 3>>& faces, const Eigen::VectorXd& positions,
+                               double pressurePa, BlockSparseMatrix& tangent)
+{
+    const auto skew = [](const Eigen::Vector3d& v) {
+        Eigen::Matrix3d m;
+        m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+        return m;
+    };
+    for (const auto& face : faces)
+    {
+        const Eigen::Vector3d x0 = positions.segment<3>(3 * face[0]), x1 = positions.segment<3>(3 * face[1]),
+                              x2 = positions.segment<3>(3 * face[2]);
+        const std::array<Eigen::Matrix3d, 3> block{skew(x2 - x1), skew(x0 - x2), skew(x1 - x0)};
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                tangent.block(tangent.slotOf(std::size_t(face[std::size_t(a)]), std::size_t(face[std::size_t(b)]))) +=
+                    (pressurePa / 6.0) * block[std::size_t(b)];
+    }
+}
+
 void addGravityForces(const Eigen::VectorXd& mass, const Eigen::Vector3d& gravity, Eigen::VectorXd& forces)
 {
     for (Eigen::Index i = 0; i < mass.size(); i += 3)

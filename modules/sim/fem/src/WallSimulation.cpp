@@ -140,6 +140,40 @@ void WallSimulation::dragTo(const Eigen::Vector3d& targetMm)
         m_contacts.springs.front().anchor = units::mmToM(1.0) * targetMm;
 }
 
+StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, std::string* failure)
+{
+    const Eigen::VectorXd lastPositions = m_model.positions();
+    const std::vector<std::array<int, 3>> faces = pressureFaces();
+    const ExternalForces pressure = [&](const Eigen::VectorXd& positions) {
+        Eigen::VectorXd forces = Eigen::VectorXd::Zero(positions.size());
+        addPressureForces(faces, positions, m_pressure, forces);
+        return forces;
+    };
+    const ExternalStiffness pressureStiffness = [&](const Eigen::VectorXd& positions, BlockSparseMatrix& tangent) {
+        subtractPressureStiffness(faces, positions, m_pressure, tangent);
+    };
+    StaticSolveReport report;
+    try
+    {
+        StaticSolveSettings settings{tolerance, maxUpdates, LinearSolver::SparseLu, 0};
+        settings.rotationStiffness = true;
+        report = solveStatic(m_model, pressure, m_fixed, settings, pressureStiffness);
+    }
+    catch (const Error& error)
+    {
+        m_model.positions() = lastPositions;
+        m_model.updateElements();
+        if (failure)
+            *failure = error.what();
+        report.converged = false;
+        return report;
+    }
+    m_model.velocities().setZero();
+    if (m_stepper)
+        setStepper(m_stepperFactory); // the stepper's state is the one before the solve
+    return report;
+}
+
 WallSimulation::StepOutcome WallSimulation::step()
 {
     StepOutcome outcome;

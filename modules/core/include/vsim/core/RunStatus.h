@@ -27,6 +27,10 @@ struct RunStatus
     double tolerance = 0.0;      ///< relative residual a solve must reach
     double finalResidual = 0.0;  ///< relative residual of the last solve
     double worstResidual = 0.0;  ///< largest relative residual of any solve
+    /// Nonlinear solvers whose figures come from an equilibrium: ||f_int - f_ext|| / ||f_ext|| of the final state
+    /// against forceTolerance; -1 when the run computes none.
+    double forceResidual = -1.0;
+    double forceTolerance = 0.0;
     StoppedBy stoppedBy = StoppedBy::End;
     std::string stopMessage;     ///< why it stopped early (guard, end condition), for people
     std::string reachedQuantity; ///< "pressure" or "time"
@@ -36,8 +40,8 @@ struct RunStatus
 
     /// Records one solve: its iterations and its final relative residual against `tolerance` (cap 0: direct).
     void recordSolve(int solveIterations, double residual, double solveTolerance, int cap);
-    /// True when every solve reached its tolerance.
-    bool converged() const { return unconvergedSolves == 0; }
+    /// True when every solve reached its tolerance, and the force residual its own (where there is one).
+    bool converged() const { return unconvergedSolves == 0 && (forceResidual < 0.0 || forceResidual <= forceTolerance); }
     /// True when the run reached its target (ran to its end or a physical end condition).
     bool complete() const { return stoppedBy == StoppedBy::End || stoppedBy == StoppedBy::EndCondition; }
     /// "converged" or "not converged: 200 of 200 solves ended at the 100-iteration cap, worst relative residual
@@ -47,7 +51,8 @@ struct RunStatus
     std::string stopText() const;
 
     /// The record as run metrics (run_converged 0/1, run_solves, run_unconverged_solves, run_mean_iterations,
-    /// run_iteration_cap, run_tolerance, run_final_residual, run_worst_residual, run_complete 0/1,
+    /// run_iteration_cap, run_tolerance, run_final_residual, run_worst_residual, run_complete 0/1, with a force
+    /// residual run_force_residual and run_force_tolerance,
     /// run_reached_<quantity>_<unit>, run_target_<quantity>_<unit>), for the study's attributes and metrics.json.
     std::map<std::string, double> metrics() const;
     /// The record as text attributes (run_stopped_by, run_stop_message, run_convergence).

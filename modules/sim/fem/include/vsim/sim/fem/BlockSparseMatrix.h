@@ -24,6 +24,8 @@ public:
     void setZero();
     /// The slot of block (row, column) for element `tet`'s local nodes (a, b) (0..3 each).
     std::uint32_t slot(std::size_t tet, int a, int b) const { return m_elementSlots[tet][std::size_t(4 * a + b)]; }
+    /// The slot of block (row, column), which must be in the pattern (two nodes of one element).
+    std::uint32_t slotOf(std::size_t row, std::size_t column) const;
     Eigen::Matrix3d& block(std::uint32_t slot) { return m_blocks[slot]; }
     const Eigen::Matrix3d& block(std::uint32_t slot) const { return m_blocks[slot]; }
     /// The diagonal block of node `node`.

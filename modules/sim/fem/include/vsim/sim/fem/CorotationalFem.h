@@ -62,6 +62,13 @@ public:
     Eigen::Vector3d firstInvertedCentroid() const;
     /// Elastic forces (N) of the last element pass, gathered per node.
     Eigen::VectorXd elasticForces() const;
+    /// Adds what R K R^T leaves out of the co-rotational tangent d(R K (R^T x - X)) / dx: the derivative of the
+    /// element rotations, R (-[K u]x + K [R^T x]x) Lambda^-1 [g_b]x R^T per block (a, b), with u = R^T x - X,
+    /// Lambda = tr(S) I - S, S = R^T F and g_b the shape-function gradients (the polar decomposition's
+    /// derivative, material spin omega = Lambda^-1 axial(R^T dF - dF^T R)). Not symmetric away from equilibrium;
+    /// nothing for the St. Venant-Kirchhoff model (its tangent is already consistent) or inverted elements. Uses the
+    /// last element pass; `matrix` must have this mesh's pattern.
+    void addRotationStiffness(BlockSparseMatrix& matrix) const;
     /// Writes c_mass M + c_stiffness R K R^T (the last element pass) into `matrix`, which must have this mesh's
     /// pattern (makeMatrix()); gathered per matrix block, in parallel.
     void assemble(BlockSparseMatrix& matrix, double massFactor, double stiffnessFactor) const;

@@ -34,6 +34,12 @@ struct FemRunSetup
     double tearStressPa = 0.0;     ///< largest principal stress that tears an element
     double entropyEnd = 0.0;       ///< stop once the fracture entropy passes this (nats); 0: never
     StepperFactory stepper;        ///< where the implicit steps run (the CUDA backend); empty: this CPU
+    /// > 0: the damped steps are only the load path; at the end the static equilibrium at the final pressure is
+    /// solved to this relative force residual (WallSimulation::equilibrate) and the last frame is that state. The
+    /// run status then records the equilibrium's linear solves and force residual, and the path's capped
+    /// conjugate-gradient steps go to the metrics as path_* (a fixed budget, not the figures' convergence).
+    double equilibriumTolerance = 0.0;
+    int equilibriumMaxUpdates = 50;
 };
 
 struct FemRunResult
@@ -51,6 +57,8 @@ struct FemRunResult
     /// Per implicit step, in order: the PCG iterations and the final relative residual of its solve.
     std::vector<int> stepIterations;
     std::vector<double> stepResiduals;
+    /// The relative force residual before each equilibrium update and at the end (empty without one).
+    std::vector<double> equilibriumResiduals;
 };
 
 /// Runs the setup. Throws vsim::Error for a mesh that is not a wall (fields missing, no fixed end, no lumen face)

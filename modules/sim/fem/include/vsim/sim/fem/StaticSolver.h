@@ -1,29 +1,63 @@
 #pragma once
 
-// Static equilibrium of the co-rotational model: f_elastic(x) + f_external = 0 for the free components, by
-// repeated linearised solves R K R^T dx = f (rotations updated between them) by block-Jacobi conjugate gradients.
-// Constrained components keep the positions they have (prescribed displacements
-// are set before the call).
+// Static equilibrium of the co-rotational model: f_elastic(x) + f_external(x) = 0 for the free components, by
+// repeated linearised solves T dx = f with T = R K R^T, optionally + the rotations' derivative (then a full Newton
+// iteration) - d f_ext / dx (a follower load's stiffness), rotations and loads updated between them, each by
+// block-Jacobi conjugate gradients or a sparse direct factorisation (SparseDirect.h), with a backtracking line search. Constrained components keep the
+// positions they have (prescribed displacements are set before the call).
 
 #include "vsim/sim/fem/CorotationalFem.h"
 
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace vsim::sim::fem {
 
 struct StaticSolveReport
 {
-    int updates = 0;           ///< linearised solves
-    int cgIterations = 0;      ///< summed over the solves
+    int updates = 0;            ///< linearised solves
+    int cgIterations = 0;       ///< summed over the solves (0 for the direct solver)
     double forceResidual = 0.0; ///< |free residual force| / |free external force| (or / first residual) at the end
+    double worstLinearResidual = 0.0; ///< largest relative residual of a linear solve (direct: its check A x - b)
+    std::vector<double> residualHistory; ///< the relative force residual before each update and at the end
+    double smallestStep = 1.0;  ///< the smallest fraction of a Newton step the line search took
     bool converged = false;
 };
 
-/// Solves for equilibrium to `tolerance` (relative force residual) in at most `maxUpdates` linearised solves
-/// of at most `cgMaxIterations` each. Throws vsim::Error when an element inverts.
+enum class LinearSolver
+{
+    ConjugateGradient, ///< block-Jacobi PCG to 0.1 x the force tolerance, at most cgMaxIterations (symmetric only)
+    SparseLdlt,        ///< simplicial LDL^T with AMD ordering, factorised per update (symmetric tangent)
+    SparseLu           ///< supernodal LU with COLAMD ordering (the tangent with a follower load's stiffness)
+};
+
+struct StaticSolveSettings
+{
+    double tolerance = 1e-9; ///< relative force residual to reach
+    int maxUpdates = 20;
+    LinearSolver linear = LinearSolver::ConjugateGradient;
+    int cgMaxIterations = 20000;
+    /// Adds the derivative of the element rotations to the tangent (CorotationalFem::addRotationStiffness): a
+    /// full Newton iteration (quadratic convergence) with a direct solver that takes a non-symmetric matrix.
+    bool rotationStiffness = false;
+};
+
+/// External forces (N, 3 per node) at the given positions (m): a follower pressure depends on them.
+using ExternalForces = std::function<Eigen::VectorXd(const Eigen::VectorXd& positions)>;
+/// Subtracts d f_ext / dx at the given positions from the tangent (a follower load's stiffness).
+using ExternalStiffness = std::function<void(const Eigen::VectorXd& positions, BlockSparseMatrix& tangent)>;
+
+/// Solves for equilibrium under `external` (empty: no load, prescribed displacements alone), each step shortened
+/// (halved) until it inverts no element and lowers the residual force. Throws vsim::Error when an element is
+/// inverted at the start or the direct factorisation fails.
+StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& external,
+                              const std::vector<std::uint8_t>& constrained, const StaticSolveSettings& settings,
+                              const ExternalStiffness& externalStiffness = {});
+
+/// The same under fixed external forces (empty: none), by conjugate gradients.
 StaticSolveReport solveStatic(CorotationalFem& model, const Eigen::VectorXd& externalForces,
                               const std::vector<std::uint8_t>& constrained, double tolerance = 1e-9,
                               int maxUpdates = 20, int cgMaxIterations = 20000);

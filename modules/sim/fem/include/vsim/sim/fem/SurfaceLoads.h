@@ -3,6 +3,8 @@
 // Loads on the wall model (SI): a pressure acting on a set of boundary faces (a follower load: it acts along the
 // current normals), and gravity on the lumped masses.
 
+#include "vsim/sim/fem/BlockSparseMatrix.h"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -17,6 +19,12 @@ namespace vsim::sim::fem {
 /// into the solid, as blood pressure on the lumen side of the wall does).
 void addPressureForces(const std::vector<std::array<int, 3>>& faces, const Eigen::VectorXd& positions,
                        double pressurePa, Eigen::VectorXd& forces);
+
+/// Subtracts the pressure forces' derivative d f / d x (the load stiffness of the follower pressure, not
+/// symmetric face by face) from `tangent`, whose pattern holds every face's node pairs: block (a, b) of a face
+/// gains (p / 6) [e_b]x with e_0 = x2 - x1, e_1 = x0 - x2, e_2 = x1 - x0 (f_a = -p (x1 - x0) x (x2 - x0) / 6).
+void subtractPressureStiffness(const std::vector<std::array<int, 3>>& faces, const Eigen::VectorXd& positions,
+                               double pressurePa, BlockSparseMatrix& tangent);
 
 /// Adds m g to `forces` for lumped masses `mass` (kg per component) and gravity `gravity` (m/s^2).
 void addGravityForces(const Eigen::VectorXd& mass, const Eigen::Vector3d& gravity, Eigen::VectorXd& forces);

@@ -10,6 +10,7 @@
 #include "vsim/sim/fem/Contacts.h"
 #include "vsim/sim/fem/CorotationalFem.h"
 #include "vsim/sim/fem/ImplicitStepper.h"
+#include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/sim/fem/Tearing.h"
 
 #include <functional>
@@ -51,6 +52,11 @@ public:
     };
     /// One implicit step at the current pressure, contacts and tearing.
     StepOutcome step();
+    /// Static equilibrium at the current pressure from the current state: the follower pressure on the current
+    /// shape, fixed ends, no contacts, by the Newton solve of StaticSolver.h with the pressure's load stiffness in the
+    /// tangent (each linear solve by SparseDirect's LU); velocities zeroed. When an element inverts the state is restored, the report is not
+    /// converged and `failure` (when given) says where.
+    StaticSolveReport equilibrate(double tolerance, int maxUpdates, std::string* failure = nullptr);
 
     double time() const { return m_time; }
     const CorotationalFem& model() const { return m_model; }
