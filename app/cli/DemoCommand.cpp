@@ -93,8 +93,9 @@ int runDemo(const Arguments& arguments, const Progress& progress)
         if (kind == "aaa")
         {
             step({"mesh", "wall", "--study", study}, stage(0.55, 0.6));
-            step({"simulate", "fem", "--study", study, "--protocol", "physiological", "--backend", "auto", "--out",
-                  (folder / "wall-run").string()},
+            // The demo patient is a man without a family history of AAA: stated, as the strength model needs both.
+            step({"simulate", "fem", "--study", study, "--protocol", "physiological", "--backend", "auto", "--param",
+                  "female=0", "--param", "family_history=0", "--out", (folder / "wall-run").string()},
                  stage(0.6, 0.85));
         }
         if (kind == "hepatic-tree")

@@ -102,10 +102,20 @@ bool MainWindow::simulateWall(const std::string& protocol)
                 showError(tr("Wall mechanics"),
                           tr("Read these results with care: %1").arg(QString::fromStdString(warning)));
             else if (protocol == "physiological")
-                statusBar()->showMessage(tr("Peak wall stress %1 kPa, peak rupture index %2")
-                                             .arg(run->metrics.at("peak_von_mises_kpa"), 0, 'f', 0)
-                                             .arg(run->metrics.at("peak_rupture_index"), 0, 'f', 2),
-                                         10000);
+            {
+                // The sac's figures when the study has a sac; the rupture index only when sex and family history
+                // were given.
+                const auto& m = run->metrics;
+                const bool sac = m.count("sac_pws_p99_kpa") > 0;
+                QString text = sac ? tr("Peak wall stress in the sac %1 kPa (99th percentile)")
+                                         .arg(m.at("sac_pws_p99_kpa"), 0, 'f', 0)
+                                   : tr("Highest wall stress %1 kPa (no sac measured)").arg(m.at("peak_von_mises_kpa"), 0, 'f', 0);
+                if (sac && m.count("sac_pwri_p99"))
+                    text += tr(", rupture index %1").arg(m.at("sac_pwri_p99"), 0, 'f', 2);
+                else if (!m.count("peak_rupture_index"))
+                    text += tr("; no rupture index: give the patient's sex and family history");
+                statusBar()->showMessage(text, 10000);
+            }
         });
 }
 

@@ -92,7 +92,11 @@ endforeach()
 # Which sections each study got, and what it says was not run.
 file(READ ${WORK}/demo/aaa/metrics.json aaa)
 file(READ ${WORK}/demo/stenosis/metrics.json stenosis)
-if(NOT aaa MATCHES "\"section\": \"aaa\"" OR NOT aaa MATCHES "peak_rupture_index" OR NOT stenosis MATCHES "diameter_stenosis_percent"
+# Issue 16: the analytic demo AAA has no sac (no fat around the aorta), so its report gives stress only (no rupture
+# index, whose regression holds for the sac).
+if(NOT aaa MATCHES "\"section\": \"aaa\"" OR NOT aaa MATCHES "peak_von_mises_kpa" OR aaa MATCHES "rupture_index"
+   OR NOT aaa_text MATCHES "No sac was measured \\(vascusim-cli sac\\), so no rupture index is given"
+   OR NOT stenosis MATCHES "diameter_stenosis_percent"
    OR NOT stenosis MATCHES "no wall-mechanics run")
     message(FATAL_ERROR "demo reports: the AAA or stenosis section is missing\n${aaa}\n${stenosis}")
 endif()

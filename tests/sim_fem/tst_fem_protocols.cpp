@@ -6,6 +6,7 @@
 #include "WallFixtures.h"
 #include "vsim/core/Units.h"
 #include "vsim/mesh/WallMesh.h"
+#include "vsim/core/Error.h"
 #include "vsim/sim/fem/FemProtocols.h"
 
 #include <QtTest>
@@ -34,6 +35,8 @@ private slots:
         const double radius = 5.0, thickness = 1.5;
         const TetMesh wall = tubeWall(radius, 60.0, 64);
         ParameterSet parameters(femParameters());
+        parameters.set("female", 0); // the strength model's patient, given (never assumed)
+        parameters.set("family_history", 0);
         const FemRunResult run = runPhysiological(wall, test::cylinderCenterline(radius, 60.0), parameters);
         QVERIFY2(run.stopReason.empty(), run.stopReason.c_str());
         const TetMesh& last = run.frames.back();
@@ -69,6 +72,56 @@ private slots:
         QVERIFY(!run.equilibriumResiduals.empty() && run.equilibriumResiduals.back() <= 1e-6);
         QVERIFY(run.status.converged() && run.metrics.at("run_force_residual") <= 1e-6);
         QVERIFY(run.metrics.at("run_worst_residual") <= 1e-8);
+
+        // Without the patient's sex and family history no rupture index (stress only), and the run says so.
+        const FemRunResult unknown = runPhysiological(wall, test::cylinderCenterline(radius, 60.0), ParameterSet(femParameters()));
+        QVERIFY(unknown.metrics.at("rupture_index_computed") == 0.0 && !unknown.metrics.count("peak_rupture_index"));
+        QVERIFY(!unknown.frames.back().cellFields.count("rupture_index"));
+        QVERIFY(run.metrics.at("rupture_index_computed") == 1.0);
+    }
+
+    /// The sac's figures on a tube with a known field: element value = z (mm) plus a spike at z = 55 mm outside
+    /// the "sac" (z 20..40 mm, the patient's left half only). The spike does not set them; the 99th percentile of
+    /// z over the sac's elements, the nodal maximum at its upper end, 40 mm along the centerline from z = 0, at
+    /// 3 o'clock (the patient's left, +x in LPS). Clock positions of the four sides.
+    void sacPeaksIgnoreWhatLiesOutside()
+    {
+        const TetMesh wall = tubeWall(5.0, 60.0, 32);
+        const SkeletonGraph centerline = test::cylinderCenterline(5.0, 60.0);
+        std::vector<double> field(wall.tets.size());
+        std::vector<double> inside;
+        SacRegion sac;
+        sac.contains = [](const Eigen::Vector3d& p) { return p.z() >= 20.0 && p.z() <= 40.0 && p.x() > 0.0; };
+        sac.referenceMm = Eigen::Vector3d(0, 0, 0);
+        for (std::size_t t = 0; t < wall.tets.size(); ++t)
+        {
+            Eigen::Vector3d c = Eigen::Vector3d::Zero();
+            for (int node : wall.tets[t])
+                c += 0.25 * wall.points[std::size_t(node)];
+            field[t] = c.z() + (std::abs(c.z() - 55.0) < 2.0 ? 1000.0 : 0.0);
+            if (sac.contains(c))
+                inside.push_back(field[t]);
+        }
+        std::sort(inside.begin(), inside.end());
+        const SacPeak peak = peakInSac(wall, field, sac, centerline);
+        qInfo("sac: %zu elements, P99 %.2f (sorted list %.2f), nodal max %.2f at (%.1f, %.1f, %.1f) mm, %.1f mm along, "
+              "%.2f h", peak.elements, peak.percentile99, inside[std::size_t(std::ceil(0.99 * inside.size())) - 1],
+              peak.nodalMax, peak.whereMm.x(), peak.whereMm.y(), peak.whereMm.z(), peak.alongCenterlineMm, peak.clockHours);
+        QCOMPARE(peak.elements, inside.size());
+        QCOMPARE(peak.percentile99, inside[std::size_t(std::ceil(0.99 * inside.size())) - 1]);
+        QVERIFY(peak.nodalMax < 41.0 && peak.nodalMax > 38.0);
+        QVERIFY(std::abs(peak.whereMm.z() - 40.0) <= 1.0 && peak.whereMm.x() > 0.0);
+        QVERIFY(std::abs(peak.alongCenterlineMm - peak.whereMm.z()) <= 1.0);
+        QVERIFY(peak.clockHours > 1.0 && peak.clockHours < 5.0); // the patient's left half: 0..6 h, around 3
+        // LPS: anterior -y is 12 o'clock, the patient's left +x 3, posterior +y 6, the right -x 9.
+        QCOMPARE(clockPosition(centerline, Eigen::Vector3d(0, -6, 30)), 12.0);
+        QCOMPARE(clockPosition(centerline, Eigen::Vector3d(6, 0, 30)), 3.0);
+        QCOMPARE(clockPosition(centerline, Eigen::Vector3d(0, 6, 30)), 6.0);
+        QCOMPARE(clockPosition(centerline, Eigen::Vector3d(-6, 0, 30)), 9.0);
+        QCOMPARE(distanceAlongCenterline(centerline, Eigen::Vector3d(0, 0, 10), Eigen::Vector3d(1, 0, 45)), 35.0);
+        SacRegion elsewhere = sac;
+        elsewhere.contains = [](const Eigen::Vector3d& p) { return p.z() > 100.0; };
+        QVERIFY_THROWS_EXCEPTION(Error, peakInSac(wall, field, elsewhere, centerline));
     }
 
     void wallStrengthModel()

@@ -129,37 +129,59 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
     if (physiological)
     {
         report::MetricTable stress{"Wall stress at blood pressure (physiological protocol)", {}};
+        // Inside the sac: the figures a reader takes as the aneurysm's (issue 16); outside it, stress only.
+        const bool sacFigures = runMetric(*physiological, "sac_pws_p99_kpa", "", "", 1.0).has_value();
         addMetrics(stress, *physiological,
                    {{"pressure_kpa", "Target blood pressure on the lumen", "kPa"},
                     {"run_reached_pressure_kPa", "Pressure reached (the figures below are at this pressure)", "kPa"},
-                    {"peak_von_mises_kpa", "Peak wall stress (von Mises)", "kPa"},
-                    {"peak_von_mises_x_mm", "Peak wall stress at x (patient LPS)", "mm"},
-                    {"peak_von_mises_y_mm", "Peak wall stress at y", "mm"},
-                    {"peak_von_mises_z_mm", "Peak wall stress at z", "mm"},
-                    {"peak_max_principal_kpa", "Peak largest principal stress", "kPa"},
-                    {"max_displacement_mm", "Largest wall displacement", "mm"},
-                    {"peak_rupture_index", "Peak wall rupture index (stress / strength)", ""},
-                    {"strength_at_peak_rupture_index_kpa", "Wall strength at the peak rupture index", "kPa"},
-                    {"peak_rupture_index_x_mm", "Peak rupture index at x (patient LPS)", "mm"},
-                    {"peak_rupture_index_y_mm", "Peak rupture index at y", "mm"},
-                    {"peak_rupture_index_z_mm", "Peak rupture index at z", "mm"}});
+                    {"sac_pws_p99_kpa", "Peak wall stress in the sac (von Mises, 99th percentile of its elements)", "kPa"},
+                    {"sac_pws_nodal_max_kpa", "Peak wall stress in the sac (von Mises, largest nodal value)", "kPa"},
+                    {"sac_pws_along_centerline_mm", "  its place: along the centerline below the lowest renal artery", "mm"},
+                    {"sac_pws_clock_h", "  its clock position (seen from the feet; 12 anterior, 3 patient's left)", "h"},
+                    {"sac_pwri_p99", "Peak wall rupture index in the sac (stress / strength, 99th percentile)", ""},
+                    {"sac_pwri_nodal_max", "Peak wall rupture index in the sac (largest nodal value)", ""},
+                    {"sac_pwri_along_centerline_mm", "  its place: along the centerline below the lowest renal artery", "mm"},
+                    {"sac_pwri_clock_h", "  its clock position", "h"},
+                    {"peak_von_mises_kpa", sacFigures ? "Highest element stress on the whole wall (von Mises; a branch "
+                                                        "ostium or the iliac crotch may set it)"
+                                                      : "Highest element stress on the whole wall (von Mises)", "kPa"},
+                    {"peak_von_mises_x_mm", "  at x (patient LPS)", "mm"},
+                    {"peak_von_mises_y_mm", "  at y", "mm"},
+                    {"peak_von_mises_z_mm", "  at z", "mm"},
+                    {"peak_max_principal_kpa", "Highest largest principal stress on the whole wall", "kPa"},
+                    {"max_displacement_mm", "Largest wall displacement", "mm"}});
         const auto note = markRunStatus(stress, *physiological);
         section.blocks.push_back(stress);
         if (note)
             section.blocks.push_back(*note);
         auto value = [&](const char* key) { return textOr(physiological->provenance.parameters, key, "?"); };
+        auto given = [&](const char* key, const char* yes, const char* no) {
+            const std::string v = value(key);
+            return v == "1" ? std::string(yes) : v == "0" ? std::string(no) : std::string("not given");
+        };
+        const bool indexComputed = runMetric(*physiological, "peak_rupture_index", "", "", 1.0).has_value();
         section.blocks.push_back(report::Paragraph{
             "Strength model: Vande Geest et al. 2006 (wall strength from the local thrombus thickness, the local "
             "diameter over the non-aneurysmal reference, family history and sex), with thrombus " +
-            value("thrombus_mm") + " mm, reference diameter " + value("reference_diameter_mm") + " mm, female " +
-            value("female") + ", family history " + value("family_history") +
-            ". A rupture index of 1 means the stress reaches the estimated strength."});
+            value("thrombus_mm") + " mm, reference diameter " + value("reference_diameter_mm") + " mm, sex " +
+            given("female", "female", "male") + ", family history of AAA " + given("family_history", "yes", "no") +
+            ". " +
+            (!indexComputed ? std::string("Sex and family history were not both given, so no rupture index is "
+                                          "reported (neither is assumed).")
+             : sacFigures   ? std::string("A rupture index of 1 means the stress reaches the estimated strength; it "
+                                          "is given inside the aneurysm sac only (the regression was fitted to sacs).")
+                            : std::string("No sac was measured (vascusim-cli sac), so no rupture index is given: the "
+                                          "regression holds for the aneurysm sac only."))});
         const std::string caption = "Wall stress (von Mises, kPa; the elements' values averaged to the surface points) "
                                     "at blood pressure, seen from the front";
         section.blocks.push_back(snapshotOrNote(caption, options, [&] {
             const TriangleMesh surface = frameSurface(study.loadTetMesh(physiological->id), "von_mises_kpa");
             const auto& values = surface.pointFields.at("von_mises_kpa");
-            const double high = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
+            // The colour scale covers the figures printed above (the surface average runs below the element peaks).
+            double high = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
+            for (const char* key : {"sac_pws_p99_kpa", "sac_pws_nodal_max_kpa"})
+                if (const auto figure = runMetric(*physiological, key, "", "", 1.0))
+                    high = std::max(high, figure->value);
             return viz::snapshotSurface(surface, "von_mises_kpa", {"von Mises [kPa]", 0.0, high},
                                         QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4));
         }));

@@ -1,6 +1,7 @@
 #include "vsim/app/WallPipeline.h"
 
 #include "vsim/app/RunRecord.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/core/Error.h"
 #include "vsim/mesh/SurfaceRemeshing.h"
 #include "vsim/mesh/WallBoundary.h"
@@ -162,7 +163,11 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
     if (protocol == "thesis-rupture")
         run = sim::fem::runThesisRupture(wall, parameters, progress, backend.stepper);
     else if (protocol == "physiological")
-        run = sim::fem::runPhysiological(wall, study.loadSkeleton(centerlinesId), parameters, progress, backend.stepper);
+    {
+        const SkeletonGraph centerlines = study.loadSkeleton(centerlinesId);
+        const std::optional<sim::fem::SacRegion> sac = newestSacRegion(study, centerlines);
+        run = sim::fem::runPhysiological(wall, centerlines, parameters, progress, backend.stepper, sac ? &*sac : nullptr);
+    }
     else
         throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
     run.metrics["wall_clock_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

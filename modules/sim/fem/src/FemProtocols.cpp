@@ -66,10 +66,13 @@ std::vector<ParameterSpec> femParameters()
         {"settle_time_step_ms", "Settling time step", "ms", 10, 0.1, 100, physiological,
          "Backward Euler step while settling (the steady state does not depend on it)."},
         {"equilibrium_tolerance", "Equilibrium tolerance", "", 1e-6, 0, 1e-2, physiological,
-         "After settling, the static equilibrium at the pressure is solved (sparse LDL^T, quasi-Newton) until "
-         "||f_int - f_ext|| / ||f_ext|| is below this; the figures are that state's. 0: the settled state as it is."},
-        {"female", "Female", "", 0, 0, 1, patient, "1 for a female patient (Vande Geest 2006 SEX = +0.5).", ParameterSpec::Kind::Integer},
-        {"family_history", "Family history of AAA", "", 0, 0, 1, patient, "1 with a family history (HIST = +0.5).",
+         "After the load path, the static equilibrium at the pressure is solved (Newton, sparse LU) until "
+         "||f_int - f_ext|| / ||f_ext|| is below this; the figures are that state's. 0: the path's last state."},
+        {"female", "Female", "", -1, -1, 1, patient,
+         "1 female, 0 male (Vande Geest 2006 SEX = +-0.5); -1 not given: no rupture index (never assumed).",
+         ParameterSpec::Kind::Integer},
+        {"family_history", "Family history of AAA", "", -1, -1, 1, patient,
+         "1 with, 0 without a family history (HIST = +-0.5); -1 not given: no rupture index (never assumed).",
          ParameterSpec::Kind::Integer},
         {"thrombus_mm", "Thrombus thickness", "mm", 0, 0, 50, patient, "Local intraluminal thrombus thickness (ILT)."},
         {"reference_diameter_mm", "Reference diameter", "mm", 20, 5, 50, patient,
@@ -134,37 +137,18 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const 
     return runFem(setup, progress);
 }
 
-FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& p,
-                              const Progress& progress, const StepperFactory& stepper)
-{
-    FemRunSetup setup;
-    setup.stepper = stepper;
-    setup.wall = wall;
-    setup.material = femMaterial(p);
-    setup.integrator = femIntegrator(p);
-    // The load path by pseudo-time (the damped wall follows the pressure ramp; its frames are the run's series),
-    // then the static equilibrium at the pressure by Newton's method (WallSimulation::equilibrate): the figures.
-    const double pressure = units::mmHgToPa(p.get("pressure_mmhg")), settle = p.get("settle_time_s");
-    setup.integrator.timeStep = 1e-3 * p.get("settle_time_step_ms");
-    setup.pressurePa = [=](double t) { return pressure * std::clamp(t / (0.25 * settle), 0.0, 1.0); };
-    setup.steps = std::max(1, int(std::lround(settle / setup.integrator.timeStep)));
-    setup.frameEvery = std::max(1, setup.steps / 20);
-    setup.equilibriumTolerance = p.get("equilibrium_tolerance");
-    FemRunResult result = runFem(setup, progress);
+namespace {
 
-    // Wall strength per element (local diameter from the nearest centerline point) and the rupture index.
-    if (centerlines.edges.empty())
-        throw Error("the physiological protocol needs centerlines (for the local diameter)");
-    const TetMesh& last = result.frames.back();
+/// Vande Geest 2006 strength per element (the local diameter from the nearest centerline point over the reference)
+/// and the rupture index stress / strength as cell fields of the last frame, the peak's metrics; returns the index.
+std::vector<double> addRuptureIndex(FemRunResult& result, const SkeletonGraph& centerlines, const ParameterSet& p)
+{
+    TetMesh& last = result.frames.back();
     const auto& stress = last.cellFields.at("von_mises_kpa");
     const double reference = p.get("reference_diameter_mm");
     const bool female = p.get("female") > 0.5, history = p.get("family_history") > 0.5;
     const double thrombusCm = 0.1 * p.get("thrombus_mm");
     std::vector<double> strength(last.tets.size()), index(last.tets.size());
-    double maxDiameter = 0.0;
-    for (const auto& edge : centerlines.edges)
-        for (double r : edge.radii)
-            maxDiameter = std::max(maxDiameter, 2.0 * r);
     for (std::size_t t = 0; t < last.tets.size(); ++t)
     {
         Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -182,17 +166,73 @@ FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerli
     Eigen::Vector3d where = Eigen::Vector3d::Zero();
     for (int node : last.tets[peak])
         where += 0.25 * last.points[std::size_t(node)];
-    result.frames.back().cellFields["wall_strength_kpa"] = strength;
-    for (double& s : result.frames.back().cellFields["wall_strength_kpa"])
-        s *= 1e-3;
-    result.frames.back().cellFields["rupture_index"] = index;
     result.metrics["peak_rupture_index"] = index[peak];
     result.metrics["peak_rupture_index_x_mm"] = where.x();
     result.metrics["peak_rupture_index_y_mm"] = where.y();
     result.metrics["peak_rupture_index_z_mm"] = where.z();
     result.metrics["strength_at_peak_rupture_index_kpa"] = strength[peak] * 1e-3;
+    for (double& s : strength)
+        s *= 1e-3;
+    last.cellFields["wall_strength_kpa"] = std::move(strength);
+    last.cellFields["rupture_index"] = index;
+    return index;
+}
+
+} // namespace
+
+FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& p,
+                              const Progress& progress, const StepperFactory& stepper, const SacRegion* sac)
+{
+    FemRunSetup setup;
+    setup.stepper = stepper;
+    setup.wall = wall;
+    setup.material = femMaterial(p);
+    setup.integrator = femIntegrator(p);
+    // The load path by pseudo-time (the damped wall follows the pressure ramp; its frames are the run's series),
+    // then the static equilibrium at the pressure by Newton's method (WallSimulation::equilibrate): the figures.
+    const double pressure = units::mmHgToPa(p.get("pressure_mmhg")), settle = p.get("settle_time_s");
+    setup.integrator.timeStep = 1e-3 * p.get("settle_time_step_ms");
+    setup.pressurePa = [=](double t) { return pressure * std::clamp(t / (0.25 * settle), 0.0, 1.0); };
+    setup.steps = std::max(1, int(std::lround(settle / setup.integrator.timeStep)));
+    setup.frameEvery = std::max(1, setup.steps / 20);
+    setup.equilibriumTolerance = p.get("equilibrium_tolerance");
+    if (centerlines.edges.empty())
+        throw Error("the physiological protocol needs centerlines (for the local diameter)");
+    FemRunResult result = runFem(setup, progress);
+
+    // Wall strength per element (local diameter from the nearest centerline point) and the rupture index, when the
+    // patient's sex and family history are given (the strength model needs both; neither is assumed).
+    double maxDiameter = 0.0;
+    for (const auto& edge : centerlines.edges)
+        for (double r : edge.radii)
+            maxDiameter = std::max(maxDiameter, 2.0 * r);
+    const bool patientGiven = p.get("female") >= 0.0 && p.get("family_history") >= 0.0;
+    result.metrics["rupture_index_computed"] = patientGiven ? 1.0 : 0.0;
+    std::vector<double> index;
+    if (patientGiven)
+        index = addRuptureIndex(result, centerlines, p);
     result.metrics["max_diameter_mm"] = maxDiameter;
     result.metrics["pressure_kpa"] = pressure * 1e-3;
+    if (sac)
+    {
+        const TetMesh& frame = result.frames.back();
+        const SacPeak stressPeak = peakInSac(frame, frame.cellFields.at("von_mises_kpa"), *sac, centerlines);
+        result.metrics["sac_elements"] = double(stressPeak.elements);
+        std::vector<std::pair<std::string, SacPeak>> peaks{{"sac_pws", stressPeak}};
+        if (!index.empty())
+            peaks.push_back({"sac_pwri", peakInSac(frame, index, *sac, centerlines)});
+        for (const auto& [prefix, peak] : peaks)
+        {
+            const std::string unit = prefix == "sac_pws" ? "_kpa" : "";
+            result.metrics[prefix + "_p99" + unit] = peak.percentile99;
+            result.metrics[prefix + "_nodal_max" + unit] = peak.nodalMax;
+            result.metrics[prefix + "_x_mm"] = peak.whereMm.x();
+            result.metrics[prefix + "_y_mm"] = peak.whereMm.y();
+            result.metrics[prefix + "_z_mm"] = peak.whereMm.z();
+            result.metrics[prefix + "_along_centerline_mm"] = peak.alongCenterlineMm;
+            result.metrics[prefix + "_clock_h"] = peak.clockHours;
+        }
+    }
     return result;
 }
 

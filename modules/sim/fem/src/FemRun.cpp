@@ -78,20 +78,27 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
         std::string failure;
         const StaticSolveReport equilibrium =
             simulation.equilibrate(setup.equilibriumTolerance, setup.equilibriumMaxUpdates, &failure);
+        // The figures' status is the equilibrium's: its direct solves (each recorded at the worst check
+        // |A x - b| / |b| of the solve) and the force residual of the state the figures come from.
         status = RunStatus{};
-        status.stoppedBy = path.stoppedBy;
-        status.stopMessage = path.stopMessage;
-        for (int update = 0; update < equilibrium.updates; ++update) // direct solves: each checked A x - b
+        for (int update = 0; update < equilibrium.updates; ++update)
             status.recordSolve(0, equilibrium.worstLinearResidual, 1e-8, 0);
-        status.forceResidual = equilibrium.residualHistory.empty() ? 1.0 : equilibrium.forceResidual;
         status.forceTolerance = setup.equilibriumTolerance;
         result.equilibriumResiduals = equilibrium.residualHistory;
         result.metrics["equilibrium_updates"] = double(equilibrium.updates);
-        if (!failure.empty())
-            status.stopMessage = "the equilibrium solve failed: " + failure + "; the figures are the load path's";
+        if (failure.empty())
+        {
+            status.forceResidual = equilibrium.forceResidual;
+            result.frames.back() = simulation.frame();
+        }
         else
         {
-            result.frames.back() = simulation.frame();
+            // The path's state is kept: its own residual (the first of the history) goes with its figures; none
+            // computed (the solve failed before its first residual) counts as 100 %.
+            status.forceResidual = equilibrium.residualHistory.empty() ? 1.0 : equilibrium.residualHistory.front();
+            status.stoppedBy = RunStatus::StoppedBy::Guard;
+            status.stopMessage = "the equilibrium solve failed (" + failure + "); the figures are the load path's";
+            result.stopReason = status.stopMessage;
         }
     }
 

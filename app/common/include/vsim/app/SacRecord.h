@@ -4,6 +4,7 @@
 // 4 thrombus, 5 wall) with the figures in the provenance (the report and the measurement dock read them there).
 
 #include "vsim/imaging/AneurysmSac.h"
+#include "vsim/sim/fem/SacPeaks.h"
 #include "vsim/study/Study.h"
 
 #include <map>
@@ -18,6 +19,12 @@ std::string recordAneurysmSac(study::Study& study, const imaging::AneurysmSac& s
 
 /// The newest sac artifact's figures (key -> value, units in the keys); empty when the study has none.
 std::map<std::string, double> newestSacFigures(const study::Study& study, std::string* sacId = nullptr);
+
+/// The newest sac as the wall solver's region (sim/fem SacPeaks.h): points in its labels (1, 4, 5) between its upper
+/// and lower ends (sac_top_z_mm, sac_bottom_z_mm), the distance along the centerline counted from the aorta at the
+/// lowest renal artery's origin (the widest centerline point within 3 mm of lowest_renal_z_mm; the sac's upper end
+/// without it); nothing when the study has no sac.
+std::optional<sim::fem::SacRegion> newestSacRegion(const study::Study& study, const SkeletonGraph& centerlines);
 
 /// The newest label that is a lumen (not a sac's labels); "" when none.
 std::string newestLumenLabel(const study::Study& study);

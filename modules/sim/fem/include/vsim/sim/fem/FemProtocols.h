@@ -16,6 +16,7 @@
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/FemRun.h"
+#include "vsim/sim/fem/SacPeaks.h"
 
 #include <map>
 #include <string>
@@ -41,9 +42,12 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& parameter
                               const StepperFactory& stepper = {});
 
 /// The physiological protocol; `centerlines` (mm, with radii) give each element's local diameter for the
-/// strength model. Adds metrics peak_rupture_index, its location, the strength there and max_diameter_mm.
+/// strength model. Adds metrics peak_rupture_index, its location, the strength there and max_diameter_mm; with a
+/// `sac`, the figures inside it (SacPeaks.h): sac_elements, sac_pws_{p99,nodal_max}_kpa and
+/// sac_pwri_{p99,nodal_max}, each nodal maximum's _x/_y/_z_mm, _along_centerline_mm and _clock_h.
 FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& parameters,
-                              const Progress& progress = {}, const StepperFactory& stepper = {});
+                              const Progress& progress = {}, const StepperFactory& stepper = {},
+                              const SacRegion* sac = nullptr);
 
 /// AAA wall strength (Pa) by Vande Geest et al. 2006: 71.9 - 37.9 (ILT^1/2 - 0.81) - 15.6 (NORD - 2.46)
 /// - 21.3 HIST + 19.3 SEX N/cm^2, with ILT the local thrombus thickness (cm), NORD the local diameter over the

@@ -1,0 +1,51 @@
+#pragma once
+
+// The wall-stress figures a clinician reads, inside the aneurysm sac only (issue 16): over the elements whose
+// centroid lies in the sac (as the AAA measurement defines it: the aortic outer contour between the neck and the
+// bifurcation), the 99th percentile of the element values and the maximum of the nodal (volume-weighted) field,
+// with the place of that maximum as the distance along the centerline from a reference (the aorta at the lowest
+// renal artery's origin) and a clock position (viewed from the feet as an axial image is read: 12 anterior, 3 the
+// patient's left, 6 posterior, 9 the patient's right). A branch ostium or the iliac crotch outside the sac does not
+// set them (the peak of the demo AAA sat at the left renal ostium, 100 mm above the sac).
+
+#include "vsim/core/SkeletonGraph.h"
+#include "vsim/core/TetMesh.h"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+struct SacRegion
+{
+    /// Whether a point (mm, patient frame) lies in the sac.
+    std::function<bool(const Eigen::Vector3d& pointMm)> contains;
+    /// Where the distance along the centerline starts (mm): the aorta at the lowest renal artery's origin.
+    Eigen::Vector3d referenceMm = Eigen::Vector3d::Zero();
+};
+
+struct SacPeak
+{
+    std::size_t elements = 0;      ///< elements in the sac
+    double percentile99 = 0.0;     ///< of the element values in the sac
+    double nodalMax = 0.0;         ///< the largest nodal (volume-weighted mean of the adjacent elements) value
+    Eigen::Vector3d whereMm = Eigen::Vector3d::Zero(); ///< the node of nodalMax
+    double alongCenterlineMm = 0.0; ///< path length along the centerline from the reference to the nearest point
+    double clockHours = 0.0;       ///< 0 < h <= 12, of the node around the centerline
+};
+
+/// Throws vsim::Error when no element lies in the sac (the sac does not belong to this wall) or the field's size
+/// is not the mesh's element count.
+SacPeak peakInSac(const TetMesh& frameMm, const std::vector<double>& elementValues, const SacRegion& sac,
+                  const SkeletonGraph& centerlines);
+
+/// Path length (mm) along the centerline graph between the points nearest to `fromMm` and `toMm`; -1 when they
+/// are not connected.
+double distanceAlongCenterline(const SkeletonGraph& centerlines, const Eigen::Vector3d& fromMm, const Eigen::Vector3d& toMm);
+
+/// The clock position (0 < h <= 12) of `pointMm` around the centerline point nearest to it, seen from the feet.
+double clockPosition(const SkeletonGraph& centerlines, const Eigen::Vector3d& pointMm);
+
+} // namespace vsim::sim::fem
