@@ -18,7 +18,7 @@ PACKAGES=(
     # headless GUI tests and report checks
     xvfb xauth libgl1-mesa-dri mesa-utils poppler-utils
     # reference tools used by tests and benchmarks
-    dcm2niix python3-numpy python3-skimage
+    dcm2niix python3-numpy python3-skimage calculix-ccx
 )
 
 missing=()
