@@ -5,7 +5,10 @@
 // vanishes) by SparseDirect, stresses D B u per element. Compared: displacement relative L2 difference, the 99th
 // percentile of the element von Mises stress (both <= 2 %, the issue's tolerance), and the two solve times.
 //
-//   bench_fem_calculix <work folder> [wall.vtu] [pressure_mmhg=120]
+//   bench_fem_calculix <work folder> [wall.vtu | -] [linear | nonlinear] [pressure_mmhg=120]
+//
+// nonlinear: St. Venant-Kirchhoff (our material_model 1) under the follower pressure by Newton's method, against
+// CalculiX's NLGEOM with *ELASTIC (St. Venant-Kirchhoff there too) and its follower *DLOAD; Cauchy stresses.
 //
 // Without a wall file: the mesher's wall (1.5 mm, one layer of three tets per prism) around a capped cylinder of
 // radius 10 mm and length 100 mm, both ends fixed. Prints one JSON object; exit 1 beyond the tolerances, 0 with
@@ -16,6 +19,7 @@
 #include "vsim/mesh/WallMesh.h"
 #include "vsim/sim/fem/CorotationalFem.h"
 #include "vsim/sim/fem/SparseDirect.h"
+#include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 #include "vsim/sim/fem/TetElement.h"
 #include "vsim/study/MeshFileImport.h"
@@ -76,13 +80,14 @@ int c3d4Face(const std::array<int, 4>& tet, const std::array<int, 3>& face)
 
 struct Problem
 {
+    bool nonlinear = false; // St. Venant-Kirchhoff with a follower pressure (CalculiX: NLGEOM), else linear
     TetMesh wall; // mm
     std::vector<std::uint8_t> fixed;
     std::vector<std::array<int, 3>> lumen;
     double pressurePa = 0.0;
 };
 
-void writeCalculixInput(const Problem& problem, const fs::path& file)
+void writeCalculixInput(const Problem& problem, bool nonlinear, const fs::path& file)
 {
     std::ofstream out(file);
     out.precision(12);
@@ -101,7 +106,12 @@ void writeCalculixInput(const Problem& problem, const fs::path& file)
         if (problem.fixed[3 * n])
             out << n + 1 << ",\n";
     out << "*BOUNDARY\nFIXED, 1, 3\n*MATERIAL, NAME=WALL\n*ELASTIC\n" << kYoungMpa << ", " << kPoisson
-        << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=WALL\n*STEP\n*STATIC\n*DLOAD\n";
+        << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=WALL\n"
+        << (nonlinear ? "*STEP, NLGEOM, INC=200\n*STATIC\n0.25, 1.\n"
+                        // Residual (R_n) and correction (C_n) criteria tightened from 0.5 % and 1 % (defaults) to 1e-7.
+                        "*CONTROLS, PARAMETERS=FIELD\n1.e-7, 1.e-7\n"
+                      : "*STEP\n*STATIC\n")
+        << "*DLOAD\n";
     // Each lumen face belongs to one element: find it through the faces' node sets.
     std::map<std::set<int>, std::size_t> owner;
     for (std::size_t t = 0; t < problem.wall.tets.size(); ++t)
@@ -138,10 +148,11 @@ void readCalculixResults(const fs::path& file, std::size_t nodes, std::size_t el
     std::size_t displacements = 0, stresses = 0;
     while (std::getline(in, line))
     {
+        // NLGEOM prints every increment: each header starts the block again, the last one is the result.
         if (line.find("displacements") != std::string::npos)
-            block = "u";
+            block = "u", displacements = 0;
         else if (line.find("stresses") != std::string::npos)
-            block = "s";
+            block = "s", stresses = 0;
         std::istringstream fields(line);
         if (block == "u")
         {
@@ -182,11 +193,17 @@ int main(int argc, char** argv)
 {
     if (argc < 2)
     {
-        std::fprintf(stderr, "usage: bench_fem_calculix <work folder> [wall.vtu] [pressure_mmhg=120]\n");
+        std::fprintf(stderr, "usage: bench_fem_calculix <work folder> [wall.vtu | -] [linear | nonlinear] [pressure_mmhg=120]\n");
         return 2;
     }
     const fs::path work = argv[1];
-    const double pressurePa = (argc > 3 ? std::atof(argv[3]) : 120.0) * 133.322387415;
+    const bool nonlinear = argc > 3 && std::string(argv[3]) == "nonlinear";
+    if (argc > 3 && !nonlinear && std::string(argv[3]) != "linear")
+    {
+        std::fprintf(stderr, "bench_fem_calculix: the third argument is linear or nonlinear, not '%s'\n", argv[3]);
+        return 2;
+    }
+    const double pressurePa = (argc > 4 ? std::atof(argv[4]) : 120.0) * 133.322387415;
     if (std::system("command -v ccx > /dev/null 2>&1") != 0)
     {
         std::printf("{\"bench\": \"fem_calculix\", \"skipped\": \"SKIP: ccx not found (Debian package calculix-ccx)\"}\n");
@@ -195,6 +212,7 @@ int main(int argc, char** argv)
     try
     {
         Problem problem = defaultProblem(pressurePa);
+        problem.nonlinear = nonlinear;
         std::string source = "mesher wall around a capped cylinder r 10 mm, 100 mm";
         if (argc > 2 && std::string(argv[2]) != "-")
         {
@@ -208,7 +226,9 @@ int main(int argc, char** argv)
                 problem.fixed[3 * n] = problem.fixed[3 * n + 1] = problem.fixed[3 * n + 2] = 1;
         problem.lumen = mesh::lumenFaces(problem.wall);
 
-        // Ours: K u = f on the rest shape (SI inside), one sparse LDL^T solve.
+        // Ours (SI inside). Linear: K u = f on the rest shape, one sparse LDL^T solve, stresses D B u. Nonlinear:
+        // the St. Venant-Kirchhoff model under the follower pressure by Newton's method (consistent tangent + load
+        // stiffness, sparse LU) to a force residual of 1e-10, Cauchy stresses.
         const auto ourStart = std::chrono::steady_clock::now();
         std::vector<Eigen::Vector3d> rest;
         for (const auto& p : problem.wall.points)
@@ -216,31 +236,63 @@ int main(int argc, char** argv)
         ElasticMaterial material;
         material.youngModulusPa = kYoungMpa * 1e6;
         material.poissonRatio = kPoisson;
+        if (problem.nonlinear)
+            material.model = ElasticMaterial::Model::StVenantKirchhoff;
         CorotationalFem model(rest, problem.wall.tets, material);
-        model.updateElements();
-        BlockSparseMatrix stiffness = model.makeMatrix();
-        model.assemble(stiffness, 0.0, 1.0);
-        Eigen::VectorXd force = Eigen::VectorXd::Zero(model.positions().size()), u;
-        addPressureForces(problem.lumen, model.positions(), problem.pressurePa, force);
-        SparseDirect direct(stiffness, problem.fixed, SparseDirect::Kind::SymmetricLdlt);
-        if (!direct.factorize(stiffness))
-            throw Error("the stiffness could not be factorised");
-        const double linearResidual = direct.solve(force, u);
-        const Eigen::Matrix<double, 6, 6> d = material.elasticityMatrix();
+        Eigen::VectorXd u;
+        double linearResidual = 0.0;
+        int newtonUpdates = 0;
         std::vector<double> ourVonMises(problem.wall.tets.size());
-        for (std::size_t t = 0; t < problem.wall.tets.size(); ++t)
+        if (problem.nonlinear)
         {
-            Eigen::Matrix<double, 12, 1> ue;
-            for (int a = 0; a < 4; ++a)
-                ue.segment<3>(3 * a) = u.segment<3>(3 * problem.wall.tets[t][std::size_t(a)]);
-            const Eigen::Matrix<double, 6, 1> stress = d * (strainDisplacement(model.elements()[t].gradients) * ue);
-            ourVonMises[t] = vonMises(stress) * 1e-6; // MPa
+            const ExternalForces pressure = [&](const Eigen::VectorXd& x) {
+                Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
+                addPressureForces(problem.lumen, x, problem.pressurePa, f);
+                return f;
+            };
+            const ExternalStiffness pressureStiffness = [&](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) {
+                subtractPressureStiffness(problem.lumen, x, problem.pressurePa, tangent);
+            };
+            const StaticSolveReport report = solveStatic(
+                model, pressure, problem.fixed, {1e-10, 50, LinearSolver::SparseLu, 0}, pressureStiffness);
+            if (!report.converged)
+                throw Error("our Newton solve did not converge: force residual " + std::to_string(report.forceResidual));
+            linearResidual = report.worstLinearResidual;
+            newtonUpdates = report.updates;
+            Eigen::VectorXd x0(model.positions().size());
+            for (std::size_t n = 0; n < rest.size(); ++n)
+                x0.segment<3>(Eigen::Index(3 * n)) = rest[n];
+            u = model.positions() - x0;
+            const ElementStresses stresses = model.elementStresses();
+            for (std::size_t t = 0; t < ourVonMises.size(); ++t)
+                ourVonMises[t] = stresses.vonMises[t] * 1e-6; // MPa
+        }
+        else
+        {
+            model.updateElements();
+            BlockSparseMatrix stiffness = model.makeMatrix();
+            model.assemble(stiffness, 0.0, 1.0);
+            Eigen::VectorXd force = Eigen::VectorXd::Zero(model.positions().size());
+            addPressureForces(problem.lumen, model.positions(), problem.pressurePa, force);
+            SparseDirect direct(stiffness, problem.fixed, SparseDirect::Kind::SymmetricLdlt);
+            if (!direct.factorize(stiffness))
+                throw Error("the stiffness could not be factorised");
+            linearResidual = direct.solve(force, u);
+            const Eigen::Matrix<double, 6, 6> d = material.elasticityMatrix();
+            for (std::size_t t = 0; t < problem.wall.tets.size(); ++t)
+            {
+                Eigen::Matrix<double, 12, 1> ue;
+                for (int a = 0; a < 4; ++a)
+                    ue.segment<3>(3 * a) = u.segment<3>(3 * problem.wall.tets[t][std::size_t(a)]);
+                const Eigen::Matrix<double, 6, 1> stress = d * (strainDisplacement(model.elements()[t].gradients) * ue);
+                ourVonMises[t] = vonMises(stress) * 1e-6; // MPa
+            }
         }
         const double ourSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - ourStart).count();
 
         // CalculiX on the same problem.
         fs::create_directories(work);
-        writeCalculixInput(problem, work / "job.inp");
+        writeCalculixInput(problem, problem.nonlinear, work / "job.inp");
         const auto ccxStart = std::chrono::steady_clock::now();
         const std::string command = "cd '" + work.string() + "' && OMP_NUM_THREADS=2 ccx -i job > ccx.log 2>&1";
         if (std::system(command.c_str()) != 0)
@@ -255,11 +307,13 @@ int main(int argc, char** argv)
         const double ourP99 = percentile99(ourVonMises), ccxP99 = percentile99(ccxVonMises);
         const double p99Difference = std::abs(ourP99 / ccxP99 - 1.0);
         std::printf("{\"bench\": \"fem_calculix\", \"mesh\": \"%s\", \"nodes\": %zu, \"tets\": %zu, \"element\": \"C3D4 "
-                    "(linear tetrahedron), linear elastic, E %.2f MPa, nu %.2f\", \"pressure_kpa\": %.3f, "
+                    "(linear tetrahedron), %s, E %.2f MPa, nu %.2f\", \"newton_updates\": %d, \"pressure_kpa\": %.3f, "
                     "\"displacement_relative_l2\": %.3e, \"p99_von_mises_kpa\": {\"vascusim\": %.3f, \"calculix\": %.3f}, "
                     "\"p99_relative_difference\": %.3e, \"max_displacement_mm\": {\"vascusim\": %.5f, \"calculix\": %.5f}, "
                     "\"vascusim_linear_residual\": %.1e, \"seconds\": {\"vascusim\": %.3f, \"calculix\": %.3f}}\n",
-                    source.c_str(), problem.wall.points.size(), problem.wall.tets.size(), kYoungMpa, kPoisson,
+                    source.c_str(), problem.wall.points.size(), problem.wall.tets.size(),
+                    nonlinear ? "St. Venant-Kirchhoff, follower pressure (CalculiX NLGEOM)" : "linear elastic", kYoungMpa,
+                    kPoisson, newtonUpdates,
                     problem.pressurePa * 1e-3, displacementDifference, ourP99 * 1e3, ccxP99 * 1e3, p99Difference,
                     1e3 * largestNodal(u), largestNodal(ccxDisplacement), linearResidual, ourSeconds,
                     ccxSeconds);
