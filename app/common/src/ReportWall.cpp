@@ -160,10 +160,17 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
             return v == "1" ? std::string(yes) : v == "0" ? std::string(no) : std::string("not given");
         };
         const bool indexComputed = runMetric(*physiological, "peak_rupture_index", "", "", 1.0).has_value();
+        const auto fromSac = runMetric(*physiological, "strength_from_sac_elements", "", "", 1.0);
+        const std::string geometry =
+            fromSac && fromSac->value > 0.0
+                ? "inside the sac the thrombus crossed along each element's radius from the centerline and the outer "
+                  "wall-to-wall chord through the centerline there (the sac's labels), elsewhere the centerline "
+                  "diameter and a thrombus of " + value("thrombus_mm") + " mm; reference diameter "
+                : "thrombus " + value("thrombus_mm") + " mm (assumed), the centerline diameter; reference diameter ";
         section.blocks.push_back(report::Paragraph{
             "Strength model: Vande Geest et al. 2006 (wall strength from the local thrombus thickness, the local "
-            "diameter over the non-aneurysmal reference, family history and sex), with thrombus " +
-            value("thrombus_mm") + " mm, reference diameter " + value("reference_diameter_mm") + " mm, sex " +
+            "diameter over the non-aneurysmal reference, family history and sex), with " + geometry +
+            value("reference_diameter_mm") + " mm, sex " +
             given("female", "female", "male") + ", family history of AAA " + given("family_history", "yes", "no") +
             ". " +
             (!indexComputed ? std::string("Sex and family history were not both given, so no rupture index is "

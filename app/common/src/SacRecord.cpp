@@ -71,6 +71,38 @@ std::optional<sim::fem::SacRegion> newestSacRegion(const study::Study& study, co
         const std::uint8_t value = labels->at(i, j, k);
         return value == 1 || value == 4 || value == 5;
     };
+    // The sac's geometry along an element's radius from the nearest centerline point: the outer-wall chord
+    // through that point (both ways to the first voxel outside the labels) and the thrombus crossed outwards,
+    // in steps of a quarter of the smallest voxel side.
+    const auto graph = std::make_shared<SkeletonGraph>(centerlines);
+    region.local = [labels, graph](const Eigen::Vector3d& p) {
+        const sim::fem::CenterlinePlace place = sim::fem::nearestCenterlinePlace(*graph, p);
+        Eigen::Vector3d radial = p - place.pointMm;
+        radial -= radial.dot(place.direction) * place.direction;
+        sim::fem::LocalSac local;
+        if (radial.norm() < 1e-6)
+            return local;
+        radial.normalize();
+        const double step = 0.25 * labels->geometry().spacing.minCoeff();
+        const auto valueAt = [&](const Eigen::Vector3d& q) {
+            const Eigen::Vector3d index = labels->geometry().patientToIndex(q);
+            const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
+            return labels->geometry().contains(i, j, k) ? labels->at(i, j, k) : std::uint8_t(0);
+        };
+        for (const double sign : {1.0, -1.0})
+            for (double r = 0.0; r < 100.0; r += step)
+            {
+                const std::uint8_t value = valueAt(place.pointMm + sign * r * radial);
+                if (value != 1 && value != 4 && value != 5)
+                {
+                    local.outerDiameterMm += r;
+                    break;
+                }
+                if (sign > 0.0 && value == 4)
+                    local.thrombusMm += step;
+            }
+        return local;
+    };
     const auto renal = figures.find("lowest_renal_z_mm");
     const double referenceZ = renal != figures.end() ? renal->second : std::max(top, bottom);
     double widest = -1.0;

@@ -139,9 +139,12 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const 
 
 namespace {
 
-/// Vande Geest 2006 strength per element (the local diameter from the nearest centerline point over the reference)
-/// and the rupture index stress / strength as cell fields of the last frame, the peak's metrics; returns the index.
-std::vector<double> addRuptureIndex(FemRunResult& result, const SkeletonGraph& centerlines, const ParameterSet& p)
+/// Vande Geest 2006 strength per element and the rupture index stress / strength as cell fields of the last frame,
+/// the peak's metrics; returns the index. Inside the sac (with its local geometry) ILT and NORD are the sac's
+/// thrombus along the element's radius and its outer diameter there over the reference; elsewhere the diameter is
+/// the nearest centerline point's and the thrombus `thrombus_mm`.
+std::vector<double> addRuptureIndex(FemRunResult& result, const SkeletonGraph& centerlines, const ParameterSet& p,
+                                    const SacRegion* sac)
 {
     TetMesh& last = result.frames.back();
     const auto& stress = last.cellFields.at("von_mises_kpa");
@@ -149,11 +152,20 @@ std::vector<double> addRuptureIndex(FemRunResult& result, const SkeletonGraph& c
     const bool female = p.get("female") > 0.5, history = p.get("family_history") > 0.5;
     const double thrombusCm = 0.1 * p.get("thrombus_mm");
     std::vector<double> strength(last.tets.size()), index(last.tets.size());
+    std::size_t fromSac = 0;
     for (std::size_t t = 0; t < last.tets.size(); ++t)
     {
         Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
         for (int node : last.tets[t])
             centroid += 0.25 * last.points[std::size_t(node)];
+        if (sac && sac->local && sac->contains && sac->contains(centroid))
+            if (const LocalSac here = sac->local(centroid); here.outerDiameterMm > 0.0)
+            {
+                strength[t] = vandeGeestWallStrength(0.1 * here.thrombusMm, here.outerDiameterMm / reference, history, female);
+                index[t] = stress[t] * 1e3 / strength[t];
+                ++fromSac;
+                continue;
+            }
         double nearest = 1e300, radius = 0.0;
         for (const auto& edge : centerlines.edges)
             for (std::size_t i = 0; i < edge.points.size(); ++i)
@@ -171,6 +183,7 @@ std::vector<double> addRuptureIndex(FemRunResult& result, const SkeletonGraph& c
     result.metrics["peak_rupture_index_y_mm"] = where.y();
     result.metrics["peak_rupture_index_z_mm"] = where.z();
     result.metrics["strength_at_peak_rupture_index_kpa"] = strength[peak] * 1e-3;
+    result.metrics["strength_from_sac_elements"] = double(fromSac);
     for (double& s : strength)
         s *= 1e-3;
     last.cellFields["wall_strength_kpa"] = std::move(strength);
@@ -210,7 +223,7 @@ FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerli
     result.metrics["rupture_index_computed"] = patientGiven ? 1.0 : 0.0;
     std::vector<double> index;
     if (patientGiven)
-        index = addRuptureIndex(result, centerlines, p);
+        index = addRuptureIndex(result, centerlines, p, sac);
     result.metrics["max_diameter_mm"] = maxDiameter;
     result.metrics["pressure_kpa"] = pressure * 1e-3;
     if (sac)

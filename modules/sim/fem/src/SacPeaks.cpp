@@ -90,23 +90,28 @@ double distanceAlongCenterline(const SkeletonGraph& centerlines, const Eigen::Ve
     return -1.0;
 }
 
-double clockPosition(const SkeletonGraph& centerlines, const Eigen::Vector3d& pointMm)
+CenterlinePlace nearestCenterlinePlace(const SkeletonGraph& centerlines, const Eigen::Vector3d& pointMm)
 {
-    // The nearest centerline point and the local direction (+-2 points) along its edge.
     double best = 1e300;
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero(), along = Eigen::Vector3d::UnitZ();
+    CenterlinePlace place;
     for (const auto& edge : centerlines.edges)
         for (std::size_t i = 0; i < edge.points.size(); ++i)
             if (const double d = (edge.points[i] - pointMm).squaredNorm(); d < best)
             {
                 best = d;
-                centre = edge.points[i];
+                place.pointMm = edge.points[i];
                 const std::size_t lo = i >= 2 ? i - 2 : 0, hi = std::min(edge.points.size() - 1, i + 2);
                 if (hi > lo)
-                    along = (edge.points[hi] - edge.points[lo]).normalized();
+                    place.direction = (edge.points[hi] - edge.points[lo]).normalized();
             }
-    Eigen::Vector3d offset = pointMm - centre;
-    offset -= offset.dot(along) * along;
+    return place;
+}
+
+double clockPosition(const SkeletonGraph& centerlines, const Eigen::Vector3d& pointMm)
+{
+    const CenterlinePlace place = nearestCenterlinePlace(centerlines, pointMm);
+    Eigen::Vector3d offset = pointMm - place.pointMm;
+    offset -= offset.dot(place.direction) * place.direction;
     // LPS: anterior is -y, the patient's left +x; from the feet anterior is up and the patient's left on the right.
     const double angle = std::atan2(offset.x(), -offset.y()); // 0 anterior, +pi/2 the patient's left
     double hours = angle * 6.0 / M_PI;

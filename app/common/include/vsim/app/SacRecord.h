@@ -23,7 +23,8 @@ std::map<std::string, double> newestSacFigures(const study::Study& study, std::s
 /// The newest sac as the wall solver's region (sim/fem SacPeaks.h): points in its labels (1, 4, 5) between its upper
 /// and lower ends (sac_top_z_mm, sac_bottom_z_mm), the distance along the centerline counted from the aorta at the
 /// lowest renal artery's origin (the widest centerline point within 3 mm of lowest_renal_z_mm; the sac's upper end
-/// without it); nothing when the study has no sac.
+/// without it), and the sac's local outer diameter and thrombus thickness along a point's radius (for the wall
+/// strength); nothing when the study has no sac.
 std::optional<sim::fem::SacRegion> newestSacRegion(const study::Study& study, const SkeletonGraph& centerlines);
 
 /// The newest label that is a lumen (not a sac's labels); "" when none.

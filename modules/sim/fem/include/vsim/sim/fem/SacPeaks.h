@@ -18,10 +18,19 @@
 
 namespace vsim::sim::fem {
 
+/// The sac's own geometry at a wall point, for the strength model (Vande Geest 2006: ILT and NORD).
+struct LocalSac
+{
+    double outerDiameterMm = 0.0; ///< outer wall to outer wall through the centerline, along the point's radius
+    double thrombusMm = 0.0;      ///< intraluminal thrombus crossed along that radius
+};
+
 struct SacRegion
 {
     /// Whether a point (mm, patient frame) lies in the sac.
     std::function<bool(const Eigen::Vector3d& pointMm)> contains;
+    /// The sac's geometry at a point in it; empty: the strength takes the centerline radius and `thrombus_mm`.
+    std::function<LocalSac(const Eigen::Vector3d& pointMm)> local;
     /// Where the distance along the centerline starts (mm): the aorta at the lowest renal artery's origin.
     Eigen::Vector3d referenceMm = Eigen::Vector3d::Zero();
 };
@@ -44,6 +53,14 @@ SacPeak peakInSac(const TetMesh& frameMm, const std::vector<double>& elementValu
 /// Path length (mm) along the centerline graph between the points nearest to `fromMm` and `toMm`; -1 when they
 /// are not connected.
 double distanceAlongCenterline(const SkeletonGraph& centerlines, const Eigen::Vector3d& fromMm, const Eigen::Vector3d& toMm);
+
+/// The centerline point nearest to `pointMm` and the unit direction along its edge there (over +-2 points).
+struct CenterlinePlace
+{
+    Eigen::Vector3d pointMm = Eigen::Vector3d::Zero();
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
+};
+CenterlinePlace nearestCenterlinePlace(const SkeletonGraph& centerlines, const Eigen::Vector3d& pointMm);
 
 /// The clock position (0 < h <= 12) of `pointMm` around the centerline point nearest to it, seen from the feet.
 double clockPosition(const SkeletonGraph& centerlines, const Eigen::Vector3d& pointMm);
