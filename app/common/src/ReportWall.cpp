@@ -161,6 +161,12 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
         };
         const bool indexComputed = runMetric(*physiological, "peak_rupture_index", "", "", 1.0).has_value();
         const auto fromSac = runMetric(*physiological, "strength_from_sac_elements", "", "", 1.0);
+        const auto referenceUsed = runMetric(*physiological, "reference_diameter_used_mm", "", "", 1.0);
+        const bool neckReference = value("reference_diameter_mm") == "0";
+        const std::string referenceText =
+            referenceUsed ? referenceUsed->text + " mm" + (neckReference ? " (the sac's neck outer diameter, or 20 mm without a sac)" : "")
+            : neckReference ? std::string("the sac's neck outer diameter (20 mm without a sac)")
+                            : value("reference_diameter_mm") + " mm";
         const std::string geometry =
             fromSac && fromSac->value > 0.0
                 ? "inside the sac the thrombus crossed along each element's radius from the centerline and the outer "
@@ -170,7 +176,7 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
         section.blocks.push_back(report::Paragraph{
             "Strength model: Vande Geest et al. 2006 (wall strength from the local thrombus thickness, the local "
             "diameter over the non-aneurysmal reference, family history and sex), with " + geometry +
-            value("reference_diameter_mm") + " mm, sex " +
+            referenceText + ", sex " +
             given("female", "female", "male") + ", family history of AAA " + given("family_history", "yes", "no") +
             ". " +
             (!indexComputed ? std::string("Sex and family history were not both given, so no rupture index is "

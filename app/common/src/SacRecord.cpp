@@ -103,6 +103,8 @@ std::optional<sim::fem::SacRegion> newestSacRegion(const study::Study& study, co
             }
         return local;
     };
+    if (const auto neck = figures.find("neck_diameter_mm"); neck != figures.end())
+        region.neckDiameterMm = neck->second;
     const auto renal = figures.find("lowest_renal_z_mm");
     const double referenceZ = renal != figures.end() ? renal->second : std::max(top, bottom);
     double widest = -1.0;

@@ -75,8 +75,9 @@ std::vector<ParameterSpec> femParameters()
          "1 with, 0 without a family history (HIST = +-0.5); -1 not given: no rupture index (never assumed).",
          ParameterSpec::Kind::Integer},
         {"thrombus_mm", "Thrombus thickness", "mm", 0, 0, 50, patient, "Local intraluminal thrombus thickness (ILT)."},
-        {"reference_diameter_mm", "Reference diameter", "mm", 20, 5, 50, patient,
-         "Non-aneurysmal aortic diameter for the normalised diameter (NORD)."},
+        {"reference_diameter_mm", "Reference diameter", "mm", 0, 0, 50, patient,
+         "Non-aneurysmal aortic diameter for the normalised diameter (NORD); 0: the sac's neck outer diameter (the "
+         "patient's own, from vascusim-cli sac), 20 mm without a sac."},
     };
 }
 
@@ -139,6 +140,8 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const 
 
 namespace {
 
+constexpr double kDefaultReferenceDiameterMm = 20.0; ///< NORD's reference without a given one or a sac's neck
+
 /// Vande Geest 2006 strength per element and the rupture index stress / strength as cell fields of the last frame,
 /// the peak's metrics; returns the index. Inside the sac (with its local geometry) ILT and NORD are the sac's
 /// thrombus along the element's radius and its outer diameter there over the reference; elsewhere the diameter is
@@ -148,7 +151,10 @@ std::vector<double> addRuptureIndex(FemRunResult& result, const SkeletonGraph& c
 {
     TetMesh& last = result.frames.back();
     const auto& stress = last.cellFields.at("von_mises_kpa");
-    const double reference = p.get("reference_diameter_mm");
+    const double reference = p.get("reference_diameter_mm") > 0.0 ? p.get("reference_diameter_mm")
+                             : sac && sac->neckDiameterMm > 0.0  ? sac->neckDiameterMm
+                                                                 : kDefaultReferenceDiameterMm;
+    result.metrics["reference_diameter_used_mm"] = reference;
     const bool female = p.get("female") > 0.5, history = p.get("family_history") > 0.5;
     const double thrombusCm = 0.1 * p.get("thrombus_mm");
     std::vector<double> strength(last.tets.size()), index(last.tets.size());

@@ -33,6 +33,8 @@ struct SacRegion
     std::function<LocalSac(const Eigen::Vector3d& pointMm)> local;
     /// Where the distance along the centerline starts (mm): the aorta at the lowest renal artery's origin.
     Eigen::Vector3d referenceMm = Eigen::Vector3d::Zero();
+    /// The neck's outer diameter (mm; 0: not measured): the strength's non-aneurysmal reference unless one is given.
+    double neckDiameterMm = 0.0;
 };
 
 struct SacPeak
