@@ -253,8 +253,11 @@ int main(int argc, char** argv)
             const ExternalStiffness pressureStiffness = [&](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) {
                 subtractPressureStiffness(problem.lumen, x, problem.pressurePa, tangent);
             };
-            const StaticSolveReport report = solveStatic(
-                model, pressure, problem.fixed, {1e-10, 50, LinearSolver::SparseLu, 0}, pressureStiffness);
+            StaticSolveSettings settings;
+            settings.tolerance = 1e-10;
+            settings.maxUpdates = 50;
+            settings.linear = LinearSolver::SparseLu;
+            const StaticSolveReport report = solveStatic(model, pressure, problem.fixed, settings, pressureStiffness);
             if (!report.converged)
                 throw Error("our Newton solve did not converge: force residual " + std::to_string(report.forceResidual));
             linearResidual = report.worstLinearResidual;

@@ -7,6 +7,7 @@
 #include "vsim/core/Units.h"
 #include "vsim/mesh/WallMesh.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Progress.h"
 #include "vsim/sim/fem/FemProtocols.h"
 
 #include <QtTest>
@@ -73,8 +74,23 @@ private slots:
         QVERIFY(run.status.converged() && run.metrics.at("run_force_residual") <= 1e-6);
         QVERIFY(run.metrics.at("run_worst_residual") <= 1e-8);
 
+        // A cancel during the equilibrium ends the run (vsim::Cancelled), as one during the path does; the
+        // progress bar names the equilibrium's updates. (Short paths from here on: 10 steps.)
+        parameters.set("settle_time_s", 0.1);
+        CancellationToken token;
+        std::vector<std::string> stages;
+        const Progress cancelling([&](double, const std::string& stage) {
+            stages.push_back(stage);
+            if (stage.rfind("equilibrium", 0) == 0)
+                token.cancel();
+        }, token);
+        QVERIFY_THROWS_EXCEPTION(Cancelled, runPhysiological(wall, test::cylinderCenterline(radius, 60.0), parameters, cancelling));
+        QVERIFY(!stages.empty() && stages.back().rfind("equilibrium: update 0, force residual", 0) == 0);
+
         // Without the patient's sex and family history no rupture index (stress only), and the run says so.
-        const FemRunResult unknown = runPhysiological(wall, test::cylinderCenterline(radius, 60.0), ParameterSet(femParameters()));
+        ParameterSet notGiven(femParameters());
+        notGiven.set("settle_time_s", 0.1);
+        const FemRunResult unknown = runPhysiological(wall, test::cylinderCenterline(radius, 60.0), notGiven);
         QVERIFY(unknown.metrics.at("rupture_index_computed") == 0.0 && !unknown.metrics.count("peak_rupture_index"));
         QVERIFY(!unknown.frames.back().cellFields.count("rupture_index"));
         QVERIFY(run.metrics.at("rupture_index_computed") == 1.0);

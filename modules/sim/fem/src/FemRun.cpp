@@ -7,8 +7,11 @@
 
 namespace vsim::sim::fem {
 
-FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
+FemRunResult runFem(const FemRunSetup& setup, const Progress& overall)
 {
+    // With an equilibrium after the path, the path takes the first 70 % of the progress bar.
+    const double pathShare = setup.equilibriumTolerance > 0.0 ? 0.7 : 1.0;
+    const Progress progress = overall.subRange(0.0, pathShare);
     if (!setup.pressurePa)
         throw Error("the run has no pressure curve");
     WallSimulation simulation(setup.wall, setup.material, setup.integrator, setup.loaded);
@@ -70,14 +73,14 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
         addFrame(lastTime, setup.pressurePa(lastTime)); // the last good state
     if (setup.equilibriumTolerance > 0.0 && result.stopReason.empty())
     {
-        progress.report(1.0, "equilibrium");
         const RunStatus path = status;
         result.metrics["path_steps"] = double(stepsRun);
         result.metrics["path_capped_steps"] = double(path.unconvergedSolves);
         result.metrics["path_mean_cg_iterations"] = path.solves ? double(path.iterations) / double(path.solves) : 0.0;
         std::string failure;
         const StaticSolveReport equilibrium =
-            simulation.equilibrate(setup.equilibriumTolerance, setup.equilibriumMaxUpdates, &failure);
+            simulation.equilibrate(setup.equilibriumTolerance, setup.equilibriumMaxUpdates, &failure,
+                                   overall.subRange(pathShare, 1.0));
         // The figures' status is the equilibrium's: its direct solves (each recorded at the worst check
         // |A x - b| / |b| of the solve) and the force residual of the state the figures come from.
         status = RunStatus{};

@@ -58,6 +58,8 @@ StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& exte
     {
         report.forceResidual = reference > 0.0 ? norm / reference : 0.0;
         report.residualHistory.push_back(report.forceResidual);
+        if (settings.afterResidual)
+            settings.afterResidual(report.updates, report.forceResidual);
         if (report.forceResidual <= settings.tolerance)
         {
             report.converged = true;
@@ -117,7 +119,11 @@ StaticSolveReport solveStatic(CorotationalFem& model, const Eigen::VectorXd& ext
     ExternalForces fixed;
     if (externalForces.size() > 0)
         fixed = [&externalForces](const Eigen::VectorXd&) { return externalForces; };
-    return solveStatic(model, fixed, constrained, {tolerance, maxUpdates, LinearSolver::ConjugateGradient, cgMaxIterations});
+    StaticSolveSettings settings;
+    settings.tolerance = tolerance;
+    settings.maxUpdates = maxUpdates;
+    settings.cgMaxIterations = cgMaxIterations;
+    return solveStatic(model, fixed, constrained, settings);
 }
 
 } // namespace vsim::sim::fem

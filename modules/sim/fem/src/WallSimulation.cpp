@@ -5,6 +5,7 @@
 #include "vsim/sim/fem/SurfaceLoads.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -140,7 +141,8 @@ void WallSimulation::dragTo(const Eigen::Vector3d& targetMm)
         m_contacts.springs.front().anchor = units::mmToM(1.0) * targetMm;
 }
 
-StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, std::string* failure)
+StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, std::string* failure,
+                                              const Progress& progress)
 {
     const Eigen::VectorXd lastPositions = m_model.positions();
     const std::vector<std::array<int, 3>> faces = pressureFaces();
@@ -155,9 +157,26 @@ StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, 
     StaticSolveReport report;
     try
     {
-        StaticSolveSettings settings{tolerance, maxUpdates, LinearSolver::SparseLu, 0};
+        StaticSolveSettings settings;
+        settings.tolerance = tolerance;
+        settings.maxUpdates = maxUpdates;
+        settings.linear = LinearSolver::SparseLu;
         settings.rotationStiffness = true;
+        settings.afterResidual = [&](int updates, double residual) {
+            progress.throwIfCancelled();
+            // Newton's residual falls from about 1e-1 to the tolerance: progress on its logarithm.
+            const double done = std::log10(std::max(residual, tolerance)) / std::log10(tolerance);
+            char text[64];
+            std::snprintf(text, sizeof text, "equilibrium: update %d, force residual %.1e", updates, residual);
+            progress.report(std::clamp(done, 0.0, 1.0), text);
+        };
         report = solveStatic(m_model, pressure, m_fixed, settings, pressureStiffness);
+    }
+    catch (const Cancelled&)
+    {
+        m_model.positions() = lastPositions;
+        m_model.updateElements();
+        throw;
     }
     catch (const Error& error)
     {

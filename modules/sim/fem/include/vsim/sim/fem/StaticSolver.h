@@ -34,6 +34,7 @@ enum class LinearSolver
     SparseLu           ///< supernodal LU with COLAMD ordering (the tangent with a follower load's stiffness)
 };
 
+/// Settings of solveStatic; set the members by name (the defaults are the validation cases').
 struct StaticSolveSettings
 {
     double tolerance = 1e-9; ///< relative force residual to reach
@@ -43,6 +44,9 @@ struct StaticSolveSettings
     /// Adds the derivative of the element rotations to the tangent (CorotationalFem::addRotationStiffness): a
     /// full Newton iteration (quadratic convergence) with a direct solver that takes a non-symmetric matrix.
     bool rotationStiffness = false;
+    /// Called with the update count and the relative force residual each time a residual is computed (progress;
+    /// it may throw vsim::Cancelled, which leaves the model at the last state evaluated).
+    std::function<void(int updates, double forceResidual)> afterResidual;
 };
 
 /// External forces (N, 3 per node) at the given positions (m): a follower pressure depends on them.

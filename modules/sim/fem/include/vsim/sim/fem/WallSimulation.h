@@ -5,6 +5,7 @@
 // driver (FemRun.h) loops over it with a pressure curve; the workstation's interactive protocol steps it on a
 // timer while the user drags the wall and moves the pressure slider. Input mesh in mm, state in SI.
 
+#include "vsim/core/Progress.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/Contacts.h"
@@ -53,10 +54,12 @@ public:
     /// One implicit step at the current pressure, contacts and tearing.
     StepOutcome step();
     /// Static equilibrium at the current pressure from the current state: the follower pressure on the current
-    /// shape, fixed ends, no contacts, by the Newton solve of StaticSolver.h with the pressure's load stiffness in the
-    /// tangent (each linear solve by SparseDirect's LU); velocities zeroed. When an element inverts the state is restored, the report is not
-    /// converged and `failure` (when given) says where.
-    StaticSolveReport equilibrate(double tolerance, int maxUpdates, std::string* failure = nullptr);
+    /// shape, fixed ends, no contacts, by the Newton solve of StaticSolver.h (the rotations' derivative and the
+    /// pressure's load stiffness in the tangent, each linear solve by SparseDirect's LU); velocities zeroed. When an
+    /// element inverts the state is restored, the report is not converged and `failure` (when given) says where.
+    /// `progress` follows the updates; a cancel restores the state and throws vsim::Cancelled.
+    StaticSolveReport equilibrate(double tolerance, int maxUpdates, std::string* failure = nullptr,
+                                  const Progress& progress = {});
 
     double time() const { return m_time; }
     const CorotationalFem& model() const { return m_model; }
