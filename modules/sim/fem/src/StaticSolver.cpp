@@ -35,11 +35,10 @@ StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& exte
                                                 settings.linear == LinearSolver::SparseLu ? SparseDirect::Kind::GeneralLu
                                                                                           : SparseDirect::Kind::SymmetricLdlt);
     // The state at the model's positions: its element pass, inverted elements and residual force.
-    Eigen::VectorXd residual;
+    Eigen::VectorXd residual, load;
     const auto evaluate = [&]() {
         const std::size_t inverted = model.updateElements();
-        const Eigen::VectorXd load =
-            external ? external(model.positions()) : Eigen::VectorXd::Zero(model.positions().size());
+        load = external ? external(model.positions()) : Eigen::VectorXd::Zero(model.positions().size());
         residual = model.elasticForces() + load;
         return std::make_pair(inverted, freeNorm(residual, constrained));
     };
@@ -51,7 +50,7 @@ StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& exte
         std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
         throw Error(std::to_string(inverted) + " elements are inverted at the start of the static solve" + place);
     }
-    double reference = external ? freeNorm(external(model.positions()), constrained) : 0.0;
+    double reference = freeNorm(load, constrained); // the load at the start (a follower load changes after)
     if (reference == 0.0)
         reference = norm; // only prescribed displacements drive it
     for (;; ++report.updates)
