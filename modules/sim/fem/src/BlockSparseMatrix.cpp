@@ -12,6 +12,18 @@ std::uint32_t BlockSparseMatrix::slotOf(std::size_t row, std::size_t column) con
 
 BlockSparseMatrix::BlockSparseMatrix(std::size_t nodeCount, const std::vector<std::array<int, 4>>& tets)
 {
+    build(nodeCount, tets);
+}
+
+BlockSparseMatrix::BlockSparseMatrix(std::size_t nodeCount, const std::vector<std::array<int, 10>>& tets)
+{
+    build(nodeCount, tets);
+}
+
+template <std::size_t N>
+void BlockSparseMatrix::build(std::size_t nodeCount, const std::vector<std::array<int, N>>& tets)
+{
+    m_nodesPerElement = N;
     std::vector<std::vector<std::uint32_t>> neighbours(nodeCount);
     for (std::size_t n = 0; n < nodeCount; ++n)
         neighbours[n].push_back(std::uint32_t(n));
@@ -35,11 +47,11 @@ BlockSparseMatrix::BlockSparseMatrix(std::size_t nodeCount, const std::vector<st
     m_diagonalSlot.resize(nodeCount);
     for (std::size_t n = 0; n < nodeCount; ++n)
         m_diagonalSlot[n] = find(n, std::uint32_t(n));
-    m_elementSlots.resize(tets.size());
+    m_elementSlots.resize(tets.size() * N * N);
     for (std::size_t t = 0; t < tets.size(); ++t)
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b)
-                m_elementSlots[t][std::size_t(4 * a + b)] = find(std::size_t(tets[t][std::size_t(a)]), std::uint32_t(tets[t][std::size_t(b)]));
+        for (std::size_t a = 0; a < N; ++a)
+            for (std::size_t b = 0; b < N; ++b)
+                m_elementSlots[(t * N + a) * N + b] = find(std::size_t(tets[t][a]), std::uint32_t(tets[t][b]));
 }
 
 void BlockSparseMatrix::setZero()

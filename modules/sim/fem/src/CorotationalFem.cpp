@@ -308,33 +308,13 @@ Eigen::Matrix3d CorotationalFem::elementStress(std::size_t e) const
     return r * local * r.transpose();
 }
 
-namespace {
-
-double vonMisesOf(const Eigen::Matrix3d& s)
-{
-    return std::sqrt(0.5 * ((s(0, 0) - s(1, 1)) * (s(0, 0) - s(1, 1)) + (s(1, 1) - s(2, 2)) * (s(1, 1) - s(2, 2)) +
-                            (s(2, 2) - s(0, 0)) * (s(2, 2) - s(0, 0))) +
-                     3.0 * (s(0, 1) * s(0, 1) + s(1, 2) * s(1, 2) + s(2, 0) * s(2, 0)));
-}
-
-} // namespace
-
 ElementStresses CorotationalFem::elementStresses() const
 {
-    ElementStresses out;
-    out.vonMises.resize(m_tets.size());
-    out.maxPrincipal.resize(m_tets.size());
-    out.tensors.resize(m_tets.size());
+    std::vector<Eigen::Matrix3d> tensors(m_tets.size());
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(m_tets.size()); ++t)
-    {
-        const std::size_t e = std::size_t(t);
-        out.tensors[e] = elementStress(e);
-        out.vonMises[e] = vonMisesOf(out.tensors[e]);
-        out.maxPrincipal[e] =
-            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(out.tensors[e], Eigen::EigenvaluesOnly).eigenvalues()[2];
-    }
-    return out;
+        tensors[std::size_t(t)] = elementStress(std::size_t(t));
+    return elementStressesFrom(std::move(tensors));
 }
 
 std::vector<double> CorotationalFem::elementVonMises() const

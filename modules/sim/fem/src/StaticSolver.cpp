@@ -21,9 +21,38 @@ double freeNorm(const Eigen::VectorXd& v, const std::vector<std::uint8_t>& const
     return std::sqrt(sum);
 }
 
+/// The co-rotational model seen by the static solve.
+class CorotationalStatic : public StaticModel
+{
+public:
+    explicit CorotationalStatic(CorotationalFem& model) : m_model(model) {}
+    Eigen::VectorXd& positions() override { return m_model.positions(); }
+    std::size_t updateElements() override { return m_model.updateElements(); }
+    Eigen::VectorXd elasticForces() const override { return m_model.elasticForces(); }
+    Eigen::Vector3d firstInvertedCentroid() const override { return m_model.firstInvertedCentroid(); }
+    BlockSparseMatrix makeMatrix() const override { return m_model.makeMatrix(); }
+    void assembleTangent(BlockSparseMatrix& matrix, bool consistent) const override
+    {
+        m_model.assemble(matrix, 0.0, 1.0);
+        if (consistent)
+            m_model.addRotationStiffness(matrix);
+    }
+
+private:
+    CorotationalFem& m_model;
+};
+
 } // namespace
 
 StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& external,
+                              const std::vector<std::uint8_t>& constrained, const StaticSolveSettings& settings,
+                              const ExternalStiffness& externalStiffness)
+{
+    CorotationalStatic adapter(model);
+    return solveStatic(adapter, external, constrained, settings, externalStiffness);
+}
+
+StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external,
                               const std::vector<std::uint8_t>& constrained, const StaticSolveSettings& settings,
                               const ExternalStiffness& externalStiffness)
 {
@@ -66,9 +95,7 @@ StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& exte
         }
         if (report.updates >= settings.maxUpdates)
             break;
-        model.assemble(stiffness, 0.0, 1.0);
-        if (settings.rotationStiffness)
-            model.addRotationStiffness(stiffness);
+        model.assembleTangent(stiffness, settings.rotationStiffness);
         if (externalStiffness)
             externalStiffness(model.positions(), stiffness);
         Eigen::VectorXd delta = Eigen::VectorXd::Zero(residual.size());

@@ -1,7 +1,8 @@
 #include "vsim/sim/fem/SurfaceLoads.h"
 
-#include <Eigen/Geometry>
+#include "vsim/sim/fem/QuadraticTet.h"
 
+#include <Eigen/Geometry>
 
 namespace vsim::sim::fem {
 
@@ -20,14 +21,29 @@ void addPressureForces(const std::vector<std::array<int, 3>>& faces, const Eigen
     }
 }
 
+namespace {
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v)
+{
+    Eigen::Matrix3d m;
+    m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+    return m;
+}
+
+/// The face's 6 node positions as columns.
+Eigen::Matrix<double, 3, 6> facePositions(const std::array<int, 6>& face, const Eigen::VectorXd& positions)
+{
+    Eigen::Matrix<double, 3, 6> x;
+    for (int a = 0; a < 6; ++a)
+        x.col(a) = positions.segment<3>(3 * face[std::size_t(a)]);
+    return x;
+}
+
+} // namespace
+
 void subtractPressureStiffness(const std::vector<std::array<int, 3>>& faces, const Eigen::VectorXd& positions,
                                double pressurePa, BlockSparseMatrix& tangent)
 {
-    const auto skew = [](const Eigen::Vector3d& v) {
-        Eigen::Matrix3d m;
-        m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-        return m;
-    };
     for (const auto& face : faces)
     {
         const Eigen::Vector3d x0 = positions.segment<3>(3 * face[0]), x1 = positions.segment<3>(3 * face[1]),
@@ -37,6 +53,46 @@ void subtractPressureStiffness(const std::vector<std::array<int, 3>>& faces, con
             for (int b = 0; b < 3; ++b)
                 tangent.block(tangent.slotOf(std::size_t(face[std::size_t(a)]), std::size_t(face[std::size_t(b)]))) +=
                     (pressurePa / 6.0) * block[std::size_t(b)];
+    }
+}
+
+void addPressureForces(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
+                       double pressurePa, Eigen::VectorXd& forces)
+{
+    for (const auto& face : faces)
+    {
+        const Eigen::Matrix<double, 3, 6> x = facePositions(face, positions);
+        for (const Eigen::Vector3d& q : triangleQuadraturePoints())
+        {
+            const QuadraticTriangleShape shape = quadraticTriangleShape(q.x(), q.y());
+            const Eigen::Vector3d areaNormal = (x * shape.dXi).cross(x * shape.dEta);
+            for (int a = 0; a < 6; ++a)
+                forces.segment<3>(3 * face[std::size_t(a)]) -= pressurePa * q.z() * shape.n[a] * areaNormal;
+        }
+    }
+}
+
+void subtractPressureStiffness(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
+                               double pressurePa, BlockSparseMatrix& tangent)
+{
+    for (const auto& face : faces)
+    {
+        const Eigen::Matrix<double, 3, 6> x = facePositions(face, positions);
+        std::array<Eigen::Matrix3d, 36> blocks;
+        blocks.fill(Eigen::Matrix3d::Zero());
+        for (const Eigen::Vector3d& q : triangleQuadraturePoints())
+        {
+            const QuadraticTriangleShape shape = quadraticTriangleShape(q.x(), q.y());
+            const Eigen::Matrix3d xXi = skew(x * shape.dXi), xEta = skew(x * shape.dEta);
+            for (int a = 0; a < 6; ++a)
+                for (int b = 0; b < 6; ++b)
+                    blocks[std::size_t(6 * a + b)] +=
+                        (pressurePa * q.z() * shape.n[a]) * (shape.dEta[b] * xXi - shape.dXi[b] * xEta);
+        }
+        for (int a = 0; a < 6; ++a)
+            for (int b = 0; b < 6; ++b)
+                tangent.block(tangent.slotOf(std::size_t(face[std::size_t(a)]), std::size_t(face[std::size_t(b)]))) +=
+                    blocks[std::size_t(6 * a + b)];
     }
 }
 

@@ -9,6 +9,7 @@
 
 #include "vsim/sim/fem/BlockSparseMatrix.h"
 #include "vsim/sim/fem/ElasticMaterial.h"
+#include "vsim/sim/fem/ElementStresses.h"
 #include "vsim/sim/fem/TetElement.h"
 
 #include <Eigen/Core>
@@ -19,15 +20,6 @@
 #include <vector>
 
 namespace vsim::sim::fem {
-
-/// Stresses per element (Pa): the Cauchy stress (co-rotational: the linear law's in the element's rotated frame,
-/// turned back; St. Venant-Kirchhoff: F S F^T / det F), its von Mises value and largest principal value.
-struct ElementStresses
-{
-    std::vector<double> vonMises;
-    std::vector<double> maxPrincipal;
-    std::vector<Eigen::Matrix3d> tensors; ///< in the patient frame (rotated back)
-};
 
 class CorotationalFem
 {

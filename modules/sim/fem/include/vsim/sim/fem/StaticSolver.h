@@ -1,10 +1,11 @@
 #pragma once
 
-// Static equilibrium of the co-rotational model: f_elastic(x) + f_external(x) = 0 for the free components, by
-// repeated linearised solves T dx = f with T = R K R^T, optionally + the rotations' derivative (then a full Newton
-// iteration) - d f_ext / dx (a follower load's stiffness), rotations and loads updated between them, each by
-// block-Jacobi conjugate gradients or a sparse direct factorisation (SparseDirect.h), with a backtracking line search. Constrained components keep the
-// positions they have (prescribed displacements are set before the call).
+// Static equilibrium f_elastic(x) + f_external(x) = 0 for the free components, by repeated linearised solves
+// T dx = f, with T the model's tangent (the co-rotational model: R K R^T, optionally + the rotations' derivative,
+// then a full Newton iteration; the quadratic hyperelastic model: its consistent tangent) - d f_ext / dx (a
+// follower load's stiffness), the element pass and the loads updated between them, each by block-Jacobi conjugate
+// gradients or a sparse direct factorisation (SparseDirect.h), with a backtracking line search. Constrained
+// components keep the positions they have (prescribed displacements are set before the call).
 
 #include "vsim/sim/fem/CorotationalFem.h"
 
@@ -15,6 +16,26 @@
 #include <vector>
 
 namespace vsim::sim::fem {
+
+/// What the static solve needs of a model (CorotationalFem through an adapter, QuadraticFem directly).
+class StaticModel
+{
+public:
+    virtual ~StaticModel() = default;
+    /// Current positions, 3 entries per node (m).
+    virtual Eigen::VectorXd& positions() = 0;
+    /// The element pass at the current positions; returns the number of inverted elements.
+    virtual std::size_t updateElements() = 0;
+    /// Elastic forces (N) of the last element pass.
+    virtual Eigen::VectorXd elasticForces() const = 0;
+    /// Centroid (m) of the first inverted element of the last pass; NaN when none.
+    virtual Eigen::Vector3d firstInvertedCentroid() const = 0;
+    /// The pattern of the model's matrices.
+    virtual BlockSparseMatrix makeMatrix() const = 0;
+    /// Writes the tangent -d f_elastic / dx of the last element pass into `matrix` (the pattern's); `consistent`:
+    /// the full derivative where the model's usual one leaves a part out (the co-rotational rotations).
+    virtual void assembleTangent(BlockSparseMatrix& matrix, bool consistent) const = 0;
+};
 
 struct StaticSolveReport
 {
@@ -41,8 +62,9 @@ struct StaticSolveSettings
     int maxUpdates = 20;
     LinearSolver linear = LinearSolver::ConjugateGradient;
     int cgMaxIterations = 20000;
-    /// Adds the derivative of the element rotations to the tangent (CorotationalFem::addRotationStiffness): a
-    /// full Newton iteration (quadratic convergence) with a direct solver that takes a non-symmetric matrix.
+    /// The model's consistent tangent (co-rotational: + the derivative of the element rotations,
+    /// CorotationalFem::addRotationStiffness): a full Newton iteration (quadratic convergence), with a direct
+    /// solver that takes a non-symmetric matrix where the tangent is not symmetric.
     bool rotationStiffness = false;
     /// Called with the update count and the relative force residual each time a residual is computed (progress;
     /// it may throw vsim::Cancelled, which leaves the model at the last state evaluated).
@@ -57,6 +79,10 @@ using ExternalStiffness = std::function<void(const Eigen::VectorXd& positions, B
 /// Solves for equilibrium under `external` (empty: no load, prescribed displacements alone), each step shortened
 /// (halved) until it inverts no element and lowers the residual force. Throws vsim::Error when an element is
 /// inverted at the start or the direct factorisation fails.
+StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external,
+                              const std::vector<std::uint8_t>& constrained, const StaticSolveSettings& settings,
+                              const ExternalStiffness& externalStiffness = {});
+/// The same for the co-rotational model.
 StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& external,
                               const std::vector<std::uint8_t>& constrained, const StaticSolveSettings& settings,
                               const ExternalStiffness& externalStiffness = {});

@@ -26,6 +26,15 @@ void addPressureForces(const std::vector<std::array<int, 3>>& faces, const Eigen
 void subtractPressureStiffness(const std::vector<std::array<int, 3>>& faces, const Eigen::VectorXd& positions,
                                double pressurePa, BlockSparseMatrix& tangent);
 
+/// The same on 6-node (quadratic) faces (corners, then the midpoints of edges 01, 12, 20), integrated on the
+/// current, curved face: f_a = -p int N_a (x_xi x x_eta) dxi deta (6-point rule of degree 4: exact for straight
+/// edges, where the integrand is quadratic in (xi, eta) times N_a).
+void addPressureForces(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
+                       double pressurePa, Eigen::VectorXd& forces);
+/// Its load stiffness: block (a, b) gains p int N_a (dN_b/deta [x_xi]x - dN_b/dxi [x_eta]x).
+void subtractPressureStiffness(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
+                               double pressurePa, BlockSparseMatrix& tangent);
+
 /// Adds m g to `forces` for lumped masses `mass` (kg per component) and gravity `gravity` (m/s^2).
 void addGravityForces(const Eigen::VectorXd& mass, const Eigen::Vector3d& gravity, Eigen::VectorXd& forces);
 
