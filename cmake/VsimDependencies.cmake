@@ -30,3 +30,15 @@ add_library(vsim::itk ALIAS vsim_itk)
 # ITK image IOs are chosen explicitly in code (NrrdImageIO, NiftiImageIO, ...), so no factory registration is needed.
 
 find_package(DCMTK REQUIRED)
+
+# SuiteSparse (Debian libsuitesparse-dev): CHOLMOD's supernodal Cholesky and UMFPACK's multifrontal LU for the
+# converged wall solves (modules/sim/fem SparseDirect), on OpenBLAS where installed (libopenblas0-pthread).
+find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+foreach(component cholmod umfpack amd colamd camd ccolamd suitesparseconfig)
+    find_library(SUITESPARSE_${component}_LIBRARY ${component} REQUIRED)
+    list(APPEND SUITESPARSE_LIBRARIES ${SUITESPARSE_${component}_LIBRARY})
+endforeach()
+add_library(vsim_suitesparse INTERFACE)
+target_include_directories(vsim_suitesparse SYSTEM INTERFACE ${SUITESPARSE_INCLUDE_DIR})
+target_link_libraries(vsim_suitesparse INTERFACE ${SUITESPARSE_LIBRARIES})
+add_library(vsim::suitesparse ALIAS vsim_suitesparse)

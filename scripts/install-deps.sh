@@ -19,6 +19,8 @@ PACKAGES=(
     xvfb xauth libgl1-mesa-dri mesa-utils poppler-utils
     # reference tools used by tests and benchmarks
     dcm2niix python3-numpy python3-skimage calculix-ccx
+    # sparse direct solvers of the wall analysis (CHOLMOD, UMFPACK) and a fast BLAS under them
+    libsuitesparse-dev libopenblas0-pthread
 )
 
 missing=()

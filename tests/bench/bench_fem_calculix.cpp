@@ -1,23 +1,32 @@
-// The wall solver against CalculiX 2.20 (issue 16 item 4), linear run: the same mesh, material, fixed ends and
-// lumen pressure written as a CalculiX input (C3D4, *STATIC without NLGEOM, *DLOAD on the lumen faces), `ccx`
-// run, its element stresses and nodal displacements read from job.dat; our side the same linear problem
-// (K u = f on the rest shape: the first Newton update from rest, where R = I and the rotations' part of the tangent
-// vanishes) by SparseDirect, stresses D B u per element. Compared: displacement relative L2 difference, the 99th
-// percentile of the element von Mises stress (both <= 2 %, the issue's tolerance), and the two solve times.
+// The wall solver against CalculiX 2.20 (issue 16 item 4): the same mesh, material, fixed ends and lumen pressure
+// written as a CalculiX input (CalculixJob.h), `ccx` run, its nodal displacements and element stresses (the mean
+// over the element's integration points) read from job.dat, and ours on the same problem. Compared: displacement
+// relative L2 difference, the 99th percentile of the element von Mises stress (both <= 2 %, the issue's
+// tolerance), and the two solve times.
 //
-//   bench_fem_calculix <work folder> [wall.vtu | -] [linear | nonlinear] [pressure_mmhg=120]
+//   bench_fem_calculix <work folder> [wall.vtu | -] [linear | nonlinear | raghavan-vorp] [c3d4 | c3d10] [pressure_mmhg=120]
 //
-// nonlinear: St. Venant-Kirchhoff (our material_model 1) under the follower pressure by Newton's method, against
-// CalculiX's NLGEOM with *ELASTIC (St. Venant-Kirchhoff there too) and its follower *DLOAD; Cauchy stresses.
+// linear         linear elasticity (E 4.23 MPa, nu 0.23) on the rest shape: ours K u = f, one sparse Cholesky solve
+//                (for linear tets the first Newton update from rest, where R = I), stresses D B u; CalculiX *STATIC.
+// nonlinear      St. Venant-Kirchhoff (the same E, nu) under the follower pressure by Newton's method (consistent
+//                tangent + load stiffness, sparse LU) to a force residual of 1e-10; CalculiX NLGEOM with *ELASTIC
+//                (St. Venant-Kirchhoff there too) and its follower *DLOAD; Cauchy stresses.
+// raghavan-vorp  the clinical wall law (Raghavan & Vorp 2000, nu 0.49: Hyperelastic.h) the same way; CalculiX's
+//                *HYPERELASTIC, REDUCED POLYNOMIAL, N=2 with C10 = alpha, C20 = beta, D1 = 2 / kappa. C3D10 only.
+// c3d4 / c3d10   linear tets (CorotationalFem) or quadratic ones (QuadraticFem: the wall mesh's tets with edge
+//                midpoints; a midpoint is fixed where both its corners are).
 //
 // Without a wall file: the mesher's wall (1.5 mm, one layer of three tets per prism) around a capped cylinder of
 // radius 10 mm and length 100 mm, both ends fixed. Prints one JSON object; exit 1 beyond the tolerances, 0 with
 // "SKIP" when ccx is not installed (Debian package calculix-ccx).
 
+#include "CalculixJob.h"
 #include "WallFixtures.h"
 #include "vsim/core/Error.h"
 #include "vsim/mesh/WallMesh.h"
 #include "vsim/sim/fem/CorotationalFem.h"
+#include "vsim/sim/fem/Hyperelastic.h"
+#include "vsim/sim/fem/QuadraticFem.h"
 #include "vsim/sim/fem/SparseDirect.h"
 #include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
@@ -67,113 +76,182 @@ double percentile99(std::vector<double> values)
     return values[k];
 }
 
-/// CalculiX's C3D4 face numbers: S1 = 1-2-3, S2 = 1-4-2, S3 = 2-4-3, S4 = 3-4-1 (local corners 0..3).
-int c3d4Face(const std::array<int, 4>& tet, const std::array<int, 3>& face)
-{
-    static const int corners[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
-    const std::set<int> wanted(face.begin(), face.end());
-    for (int f = 0; f < 4; ++f)
-        if (std::set<int>{tet[std::size_t(corners[f][0])], tet[std::size_t(corners[f][1])], tet[std::size_t(corners[f][2])]} == wanted)
-            return f + 1;
-    return 0;
-}
+enum class Law { Linear, StVenantKirchhoff, RaghavanVorp };
 
 struct Problem
 {
-    bool nonlinear = false; // St. Venant-Kirchhoff with a follower pressure (CalculiX: NLGEOM), else linear
+    Law law = Law::Linear;
+    bool quadratic = false;
     TetMesh wall; // mm
-    std::vector<std::uint8_t> fixed;
+    std::vector<std::uint8_t> fixed; // 3 per corner node
     std::vector<std::array<int, 3>> lumen;
     double pressurePa = 0.0;
 };
 
-void writeCalculixInput(const Problem& problem, bool nonlinear, const fs::path& file)
+/// Our solution: displacement (m, 3 per node of the element order's mesh), element von Mises (MPa), Newton
+/// updates, the worst linear residual.
+struct Solution
 {
-    std::ofstream out(file);
-    out.precision(12);
-    out << "** VascuSim bench_fem_calculix: mm, N, MPa\n*NODE, NSET=NALL\n";
-    for (std::size_t n = 0; n < problem.wall.points.size(); ++n)
-        out << n + 1 << ", " << problem.wall.points[n].x() << ", " << problem.wall.points[n].y() << ", "
-            << problem.wall.points[n].z() << "\n";
-    out << "*ELEMENT, TYPE=C3D4, ELSET=EALL\n";
-    for (std::size_t t = 0; t < problem.wall.tets.size(); ++t)
-    {
-        const auto& tet = problem.wall.tets[t];
-        out << t + 1 << ", " << tet[0] + 1 << ", " << tet[1] + 1 << ", " << tet[2] + 1 << ", " << tet[3] + 1 << "\n";
-    }
-    out << "*NSET, NSET=FIXED\n";
-    for (std::size_t n = 0; n < problem.wall.points.size(); ++n)
-        if (problem.fixed[3 * n])
-            out << n + 1 << ",\n";
-    out << "*BOUNDARY\nFIXED, 1, 3\n*MATERIAL, NAME=WALL\n*ELASTIC\n" << kYoungMpa << ", " << kPoisson
-        << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=WALL\n"
-        << (nonlinear ? "*STEP, NLGEOM, INC=200\n*STATIC\n0.25, 1.\n"
-                        // Residual (R_n) and correction (C_n) criteria tightened from 0.5 % and 1 % (defaults) to 1e-7.
-                        "*CONTROLS, PARAMETERS=FIELD\n1.e-7, 1.e-7\n"
-                      : "*STEP\n*STATIC\n")
-        << "*DLOAD\n";
-    // Each lumen face belongs to one element: find it through the faces' node sets.
-    std::map<std::set<int>, std::size_t> owner;
-    for (std::size_t t = 0; t < problem.wall.tets.size(); ++t)
-    {
-        const auto& tet = problem.wall.tets[t];
-        for (int skip = 0; skip < 4; ++skip)
-        {
-            std::set<int> face;
-            for (int k = 0; k < 4; ++k)
-                if (k != skip)
-                    face.insert(tet[std::size_t(k)]);
-            owner[face] = t;
-        }
-    }
-    for (const auto& face : problem.lumen)
-    {
-        const std::size_t t = owner.at(std::set<int>(face.begin(), face.end()));
-        out << t + 1 << ", P" << c3d4Face(problem.wall.tets[t], face) << ", " << problem.pressurePa * 1e-6 << "\n";
-    }
-    out << "*NODE PRINT, NSET=NALL\nU\n*EL PRINT, ELSET=EALL\nS\n*END STEP\n";
+    Eigen::VectorXd displacement;
+    std::vector<double> vonMisesMpa;
+    int newtonUpdates = 0;
+    double linearResidual = 0.0;
+};
+
+std::vector<Eigen::Vector3d> inMetres(const std::vector<Eigen::Vector3d>& mm)
+{
+    std::vector<Eigen::Vector3d> m;
+    for (const auto& p : mm)
+        m.push_back(1e-3 * p);
+    return m;
 }
 
-/// job.dat: "displacements (vx,vy,vz) for set NALL ..." then "node ux uy uz" lines; "stresses (elem, integ.pnt.,
-/// sxx,syy,szz,sxy,sxz,syz) ..." then "element point six values" lines.
-void readCalculixResults(const fs::path& file, std::size_t nodes, std::size_t elements, Eigen::VectorXd& displacementMm,
-                         std::vector<double>& vonMisesMpa)
+/// Newton's method to 1e-10 under the follower pressure on `faces` (3- or 6-node).
+template <typename Model, typename Faces>
+StaticSolveReport solveUnderPressure(Model& model, const Faces& faces, double pressurePa, const std::vector<std::uint8_t>& fixed)
 {
-    std::ifstream in(file);
-    if (!in)
-        throw Error("CalculiX wrote no " + file.string());
-    displacementMm = Eigen::VectorXd::Zero(Eigen::Index(3 * nodes));
-    vonMisesMpa.assign(elements, 0.0);
-    std::string line, block;
-    std::size_t displacements = 0, stresses = 0;
-    while (std::getline(in, line))
+    StaticSolveSettings settings;
+    settings.tolerance = 1e-10;
+    settings.maxUpdates = 50;
+    settings.linear = LinearSolver::SparseLu;
+    settings.rotationStiffness = true;
+    const StaticSolveReport report = solveStatic(
+        model,
+        [&](const Eigen::VectorXd& x) {
+            Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
+            addPressureForces(faces, x, pressurePa, f);
+            return f;
+        },
+        fixed, settings,
+        [&](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) { subtractPressureStiffness(faces, x, pressurePa, tangent); });
+    if (!report.converged)
+        throw Error("our Newton solve did not converge: force residual " + std::to_string(report.forceResidual));
+    return report;
+}
+
+/// K u = f on the rest shape by sparse Cholesky; returns the solve's relative residual.
+template <typename Faces>
+double solveLinear(const BlockSparseMatrix& stiffness, const Faces& faces, const Eigen::VectorXd& rest, double pressurePa,
+                   const std::vector<std::uint8_t>& fixed, Eigen::VectorXd& u)
+{
+    Eigen::VectorXd force = Eigen::VectorXd::Zero(rest.size());
+    addPressureForces(faces, rest, pressurePa, force);
+    SparseDirect direct(stiffness, fixed, SparseDirect::Kind::SymmetricCholesky);
+    if (!direct.factorize(stiffness))
+        throw Error("the stiffness could not be factorised");
+    return direct.solve(force, u);
+}
+
+Solution solveLinearTets(const Problem& problem)
+{
+    ElasticMaterial material;
+    material.youngModulusPa = kYoungMpa * 1e6;
+    material.poissonRatio = kPoisson;
+    if (problem.law == Law::StVenantKirchhoff)
+        material.model = ElasticMaterial::Model::StVenantKirchhoff;
+    CorotationalFem model(inMetres(problem.wall.points), problem.wall.tets, material);
+    const Eigen::VectorXd rest = model.positions();
+    Solution out;
+    out.vonMisesMpa.resize(problem.wall.tets.size());
+    if (problem.law == Law::Linear)
     {
-        // NLGEOM prints every increment: each header starts the block again, the last one is the result.
-        if (line.find("displacements") != std::string::npos)
-            block = "u", displacements = 0;
-        else if (line.find("stresses") != std::string::npos)
-            block = "s", stresses = 0;
-        std::istringstream fields(line);
-        if (block == "u")
+        model.updateElements();
+        BlockSparseMatrix stiffness = model.makeMatrix();
+        model.assemble(stiffness, 0.0, 1.0);
+        out.linearResidual = solveLinear(stiffness, problem.lumen, rest, problem.pressurePa, problem.fixed, out.displacement);
+        const Eigen::Matrix<double, 6, 6> d = material.elasticityMatrix();
+        for (std::size_t t = 0; t < problem.wall.tets.size(); ++t)
         {
-            long node;
-            double ux, uy, uz;
-            if (fields >> node >> ux >> uy >> uz && node >= 1 && std::size_t(node) <= nodes)
-                displacementMm.segment<3>(Eigen::Index(3 * (node - 1))) = Eigen::Vector3d(ux, uy, uz), ++displacements;
+            Eigen::Matrix<double, 12, 1> ue;
+            for (int a = 0; a < 4; ++a)
+                ue.segment<3>(3 * a) = out.displacement.segment<3>(3 * problem.wall.tets[t][std::size_t(a)]);
+            out.vonMisesMpa[t] = vonMises(d * (strainDisplacement(model.elements()[t].gradients) * ue)) * 1e-6;
         }
-        else if (block == "s")
-        {
-            long element, point;
-            Eigen::Matrix<double, 6, 1> s;
-            if (fields >> element >> point >> s[0] >> s[1] >> s[2] >> s[3] >> s[4] >> s[5] && element >= 1 &&
-                std::size_t(element) <= elements)
-                vonMisesMpa[std::size_t(element - 1)] = vonMises(s), ++stresses;
-        }
+        return out;
     }
-    if (displacements != nodes || stresses != elements)
-        throw Error("CalculiX's results are incomplete: " + std::to_string(displacements) + " of " +
-                    std::to_string(nodes) + " displacements, " + std::to_string(stresses) + " of " +
-                    std::to_string(elements) + " element stresses");
+    const StaticSolveReport report = solveUnderPressure(model, problem.lumen, problem.pressurePa, problem.fixed);
+    out.newtonUpdates = report.updates, out.linearResidual = report.worstLinearResidual;
+    out.displacement = model.positions() - rest;
+    const ElementStresses stresses = model.elementStresses();
+    for (std::size_t t = 0; t < out.vonMisesMpa.size(); ++t)
+        out.vonMisesMpa[t] = stresses.vonMises[t] * 1e-6;
+    return out;
+}
+
+HyperelasticMaterial quadraticLaw(Law law)
+{
+    return law == Law::RaghavanVorp ? HyperelasticMaterial::raghavanVorp2000(0.49)
+                                    : HyperelasticMaterial::stVenantKirchhoff(kYoungMpa * 1e6, kPoisson);
+}
+
+/// A midpoint node is held where both its corners are.
+std::vector<std::uint8_t> quadraticFixed(const QuadraticTetMesh& mesh, const std::vector<std::uint8_t>& cornerFixed)
+{
+    std::vector<std::uint8_t> fixed(3 * mesh.points.size(), 0);
+    std::copy(cornerFixed.begin(), cornerFixed.end(), fixed.begin());
+    for (const auto& element : mesh.elements)
+        for (int e = 0; e < 6; ++e)
+        {
+            const int a = element[std::size_t(kQuadraticEdges[e][0])], b = element[std::size_t(kQuadraticEdges[e][1])];
+            if (cornerFixed[std::size_t(3 * a)] && cornerFixed[std::size_t(3 * b)])
+                for (int k = 0; k < 3; ++k)
+                    fixed[std::size_t(3 * element[std::size_t(4 + e)] + k)] = 1;
+        }
+    return fixed;
+}
+
+Solution solveQuadraticTets(const Problem& problem, const QuadraticTetMesh& mesh, const std::vector<std::uint8_t>& fixed)
+{
+    const HyperelasticMaterial law = quadraticLaw(problem.law);
+    QuadraticTetMesh metres = mesh;
+    for (Eigen::Vector3d& p : metres.points)
+        p *= 1e-3;
+    QuadraticFem model(metres, {law});
+    const std::vector<std::array<int, 6>> faces = quadraticFaces(mesh, problem.lumen);
+    const Eigen::VectorXd rest = model.positions();
+    Solution out;
+    out.vonMisesMpa.resize(mesh.elements.size());
+    if (problem.law == Law::Linear)
+    {
+        model.updateElements();
+        BlockSparseMatrix stiffness = model.makeMatrix();
+        model.assembleTangent(stiffness, true); // at rest: the linear elastic stiffness
+        out.linearResidual = solveLinear(stiffness, faces, rest, problem.pressurePa, fixed, out.displacement);
+        // Linear stress D eps per quadrature point, averaged over the element's four.
+        Matrix6d d;
+        law.stress(Eigen::Matrix3d::Identity(), &d);
+        for (std::size_t e = 0; e < mesh.elements.size(); ++e)
+        {
+            const auto& element = mesh.elements[e];
+            Eigen::Matrix3d edges;
+            for (int c = 1; c < 4; ++c)
+                edges.col(c - 1) = rest.segment<3>(3 * element[std::size_t(c)]) - rest.segment<3>(3 * element[0]);
+            Eigen::Matrix<double, 4, 3> g;
+            g.bottomRows<3>() = edges.inverse();
+            g.row(0) = -g.bottomRows<3>().colwise().sum();
+            Eigen::Matrix3d mean = Eigen::Matrix3d::Zero();
+            for (const Eigen::Vector4d& l : tetQuadraturePoints())
+            {
+                const Eigen::Matrix<double, 10, 3> grads = quadraticShapeGradients(g, l);
+                Eigen::Matrix3d gradU = Eigen::Matrix3d::Zero();
+                for (int a = 0; a < 10; ++a)
+                    gradU += out.displacement.segment<3>(3 * element[std::size_t(a)]) * grads.row(a);
+                const Eigen::Matrix3d strain = 0.5 * (gradU + gradU.transpose());
+                Vector6d engineering = toVoigt(strain);
+                engineering.tail<3>() *= 2.0;
+                mean += 0.25 * fromVoigt(d * engineering);
+            }
+            out.vonMisesMpa[e] = vonMisesOf(mean) * 1e-6;
+        }
+        return out;
+    }
+    const StaticSolveReport report = solveUnderPressure(model, faces, problem.pressurePa, fixed);
+    out.newtonUpdates = report.updates, out.linearResidual = report.worstLinearResidual;
+    out.displacement = model.positions() - rest;
+    const ElementStresses stresses = model.elementStresses();
+    for (std::size_t e = 0; e < out.vonMisesMpa.size(); ++e)
+        out.vonMisesMpa[e] = stresses.vonMises[e] * 1e-6;
+    return out;
 }
 
 Problem defaultProblem(double pressurePa)
@@ -191,19 +269,25 @@ Problem defaultProblem(double pressurePa)
 
 int main(int argc, char** argv)
 {
+    const char* usage = "usage: bench_fem_calculix <work folder> [wall.vtu | -] [linear | nonlinear | raghavan-vorp] "
+                        "[c3d4 | c3d10] [pressure_mmhg=120]\n";
     if (argc < 2)
     {
-        std::fprintf(stderr, "usage: bench_fem_calculix <work folder> [wall.vtu | -] [linear | nonlinear] [pressure_mmhg=120]\n");
+        std::fprintf(stderr, "%s", usage);
         return 2;
     }
     const fs::path work = argv[1];
-    const bool nonlinear = argc > 3 && std::string(argv[3]) == "nonlinear";
-    if (argc > 3 && !nonlinear && std::string(argv[3]) != "linear")
+    const std::string lawName = argc > 3 ? argv[3] : "linear", elementName = argc > 4 ? argv[4] : "c3d4";
+    const std::map<std::string, Law> laws{{"linear", Law::Linear}, {"nonlinear", Law::StVenantKirchhoff},
+                                          {"raghavan-vorp", Law::RaghavanVorp}};
+    if (!laws.count(lawName) || (elementName != "c3d4" && elementName != "c3d10") ||
+        (lawName == "raghavan-vorp" && elementName == "c3d4"))
     {
-        std::fprintf(stderr, "bench_fem_calculix: the third argument is linear or nonlinear, not '%s'\n", argv[3]);
+        std::fprintf(stderr, "bench_fem_calculix: '%s %s' is not a run (raghavan-vorp needs c3d10)\n%s", lawName.c_str(),
+                     elementName.c_str(), usage);
         return 2;
     }
-    const double pressurePa = (argc > 4 ? std::atof(argv[4]) : 120.0) * 133.322387415;
+    const double pressurePa = (argc > 5 ? std::atof(argv[5]) : 120.0) * 133.322387415;
     if (std::system("command -v ccx > /dev/null 2>&1") != 0)
     {
         std::printf("{\"bench\": \"fem_calculix\", \"skipped\": \"SKIP: ccx not found (Debian package calculix-ccx)\"}\n");
@@ -212,7 +296,8 @@ int main(int argc, char** argv)
     try
     {
         Problem problem = defaultProblem(pressurePa);
-        problem.nonlinear = nonlinear;
+        problem.law = laws.at(lawName);
+        problem.quadratic = elementName == "c3d10";
         std::string source = "mesher wall around a capped cylinder r 10 mm, 100 mm";
         if (argc > 2 && std::string(argv[2]) != "-")
         {
@@ -226,100 +311,82 @@ int main(int argc, char** argv)
                 problem.fixed[3 * n] = problem.fixed[3 * n + 1] = problem.fixed[3 * n + 2] = 1;
         problem.lumen = mesh::lumenFaces(problem.wall);
 
-        // Ours (SI inside). Linear: K u = f on the rest shape, one sparse LDL^T solve, stresses D B u. Nonlinear:
-        // the St. Venant-Kirchhoff model under the follower pressure by Newton's method (consistent tangent + load
-        // stiffness, sparse LU) to a force residual of 1e-10, Cauchy stresses.
-        const auto ourStart = std::chrono::steady_clock::now();
-        std::vector<Eigen::Vector3d> rest;
-        for (const auto& p : problem.wall.points)
-            rest.push_back(1e-3 * p);
-        ElasticMaterial material;
-        material.youngModulusPa = kYoungMpa * 1e6;
-        material.poissonRatio = kPoisson;
-        if (problem.nonlinear)
-            material.model = ElasticMaterial::Model::StVenantKirchhoff;
-        CorotationalFem model(rest, problem.wall.tets, material);
-        Eigen::VectorXd u;
-        double linearResidual = 0.0;
-        int newtonUpdates = 0;
-        std::vector<double> ourVonMises(problem.wall.tets.size());
-        if (problem.nonlinear)
+        // The job, both sides on the same nodes (quadratic: the corners, then the edge midpoints).
+        bench::CalculixJob job;
+        QuadraticTetMesh quadratic;
+        std::vector<std::uint8_t> fixed = problem.fixed;
+        if (problem.quadratic)
         {
-            const ExternalForces pressure = [&](const Eigen::VectorXd& x) {
-                Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
-                addPressureForces(problem.lumen, x, problem.pressurePa, f);
-                return f;
-            };
-            const ExternalStiffness pressureStiffness = [&](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) {
-                subtractPressureStiffness(problem.lumen, x, problem.pressurePa, tangent);
-            };
-            StaticSolveSettings settings;
-            settings.tolerance = 1e-10;
-            settings.maxUpdates = 50;
-            settings.linear = LinearSolver::SparseLu;
-            const StaticSolveReport report = solveStatic(model, pressure, problem.fixed, settings, pressureStiffness);
-            if (!report.converged)
-                throw Error("our Newton solve did not converge: force residual " + std::to_string(report.forceResidual));
-            linearResidual = report.worstLinearResidual;
-            newtonUpdates = report.updates;
-            Eigen::VectorXd x0(model.positions().size());
-            for (std::size_t n = 0; n < rest.size(); ++n)
-                x0.segment<3>(Eigen::Index(3 * n)) = rest[n];
-            u = model.positions() - x0;
-            const ElementStresses stresses = model.elementStresses();
-            for (std::size_t t = 0; t < ourVonMises.size(); ++t)
-                ourVonMises[t] = stresses.vonMises[t] * 1e-6; // MPa
+            quadratic = quadraticFromLinear(problem.wall.points, problem.wall.tets);
+            fixed = quadraticFixed(quadratic, problem.fixed);
+            job.nodesMm = quadratic.points;
+            for (const auto& element : quadratic.elements)
+                job.elements.emplace_back(element.begin(), element.end());
         }
         else
         {
-            model.updateElements();
-            BlockSparseMatrix stiffness = model.makeMatrix();
-            model.assemble(stiffness, 0.0, 1.0);
-            Eigen::VectorXd force = Eigen::VectorXd::Zero(model.positions().size());
-            addPressureForces(problem.lumen, model.positions(), problem.pressurePa, force);
-            SparseDirect direct(stiffness, problem.fixed, SparseDirect::Kind::SymmetricLdlt);
-            if (!direct.factorize(stiffness))
-                throw Error("the stiffness could not be factorised");
-            linearResidual = direct.solve(force, u);
-            const Eigen::Matrix<double, 6, 6> d = material.elasticityMatrix();
-            for (std::size_t t = 0; t < problem.wall.tets.size(); ++t)
-            {
-                Eigen::Matrix<double, 12, 1> ue;
-                for (int a = 0; a < 4; ++a)
-                    ue.segment<3>(3 * a) = u.segment<3>(3 * problem.wall.tets[t][std::size_t(a)]);
-                const Eigen::Matrix<double, 6, 1> stress = d * (strainDisplacement(model.elements()[t].gradients) * ue);
-                ourVonMises[t] = vonMises(stress) * 1e-6; // MPa
-            }
+            job.nodesMm = problem.wall.points;
+            for (const auto& tet : problem.wall.tets)
+                job.elements.emplace_back(tet.begin(), tet.end());
         }
+        for (std::size_t n = 0; n < job.nodesMm.size(); ++n)
+            job.fixedNodes.push_back(fixed[3 * n]);
+        std::map<std::set<int>, std::size_t> owner; // each lumen face belongs to one element
+        for (std::size_t t = 0; t < problem.wall.tets.size(); ++t)
+            for (int skip = 0; skip < 4; ++skip)
+            {
+                std::set<int> face;
+                for (int k = 0; k < 4; ++k)
+                    if (k != skip)
+                        face.insert(problem.wall.tets[t][std::size_t(k)]);
+                owner[face] = t;
+            }
+        for (const auto& face : problem.lumen)
+        {
+            const std::size_t t = owner.at(std::set<int>(face.begin(), face.end()));
+            job.pressureFaces.push_back({t, bench::calculixFace(problem.wall.tets[t], face)});
+        }
+        job.pressurePa = pressurePa;
+        job.nlgeom = problem.law != Law::Linear;
+        if (problem.law == Law::RaghavanVorp)
+        {
+            const HyperelasticMaterial law = quadraticLaw(problem.law);
+            job.material = bench::CalculixJob::Material::ReducedPolynomial;
+            job.c10Mpa = law.c10 * 1e-6, job.c20Mpa = law.c20 * 1e-6, job.d1PerMpa = 2.0 / (law.bulkModulus * 1e-6);
+        }
+        else
+            job.youngMpa = kYoungMpa, job.poisson = kPoisson;
+
+        const auto ourStart = std::chrono::steady_clock::now();
+        const Solution ours = problem.quadratic ? solveQuadraticTets(problem, quadratic, fixed) : solveLinearTets(problem);
         const double ourSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - ourStart).count();
 
-        // CalculiX on the same problem.
         fs::create_directories(work);
-        writeCalculixInput(problem, problem.nonlinear, work / "job.inp");
+        bench::writeCalculixInput(job, work / "job.inp");
         const auto ccxStart = std::chrono::steady_clock::now();
         const std::string command = "cd '" + work.string() + "' && OMP_NUM_THREADS=2 ccx -i job > ccx.log 2>&1";
         if (std::system(command.c_str()) != 0)
             throw Error("ccx failed: see " + (work / "ccx.log").string());
         const double ccxSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - ccxStart).count();
-        Eigen::VectorXd ccxDisplacement;
-        std::vector<double> ccxVonMises;
-        readCalculixResults(work / "job.dat", problem.wall.points.size(), problem.wall.tets.size(), ccxDisplacement,
-                            ccxVonMises);
+        const bench::CalculixResults ccx = bench::readCalculixResults(work / "job.dat", job.nodesMm.size(), job.elements.size());
 
-        const double displacementDifference = (1e3 * u - ccxDisplacement).norm() / ccxDisplacement.norm();
-        const double ourP99 = percentile99(ourVonMises), ccxP99 = percentile99(ccxVonMises);
+        const double displacementDifference = (1e3 * ours.displacement - ccx.displacementMm).norm() / ccx.displacementMm.norm();
+        const double ourP99 = percentile99(ours.vonMisesMpa), ccxP99 = percentile99(ccx.vonMisesMpa);
         const double p99Difference = std::abs(ourP99 / ccxP99 - 1.0);
-        std::printf("{\"bench\": \"fem_calculix\", \"mesh\": \"%s\", \"nodes\": %zu, \"tets\": %zu, \"element\": \"C3D4 "
-                    "(linear tetrahedron), %s, E %.2f MPa, nu %.2f\", \"newton_updates\": %d, \"pressure_kpa\": %.3f, "
+        const char* lawText = problem.law == Law::Linear ? "linear elastic, E 4.23 MPa, nu 0.23"
+                              : problem.law == Law::StVenantKirchhoff
+                                  ? "St. Venant-Kirchhoff, E 4.23 MPa, nu 0.23, follower pressure (CalculiX NLGEOM)"
+                                  : "Raghavan-Vorp 2000, nu 0.49, follower pressure (CalculiX NLGEOM, REDUCED POLYNOMIAL N=2)";
+        std::printf("{\"bench\": \"fem_calculix\", \"mesh\": \"%s\", \"nodes\": %zu, \"elements\": %zu, \"element\": \"%s\", "
+                    "\"material\": \"%s\", \"newton_updates\": %d, \"pressure_kpa\": %.3f, "
                     "\"displacement_relative_l2\": %.3e, \"p99_von_mises_kpa\": {\"vascusim\": %.3f, \"calculix\": %.3f}, "
                     "\"p99_relative_difference\": %.3e, \"max_displacement_mm\": {\"vascusim\": %.5f, \"calculix\": %.5f}, "
                     "\"vascusim_linear_residual\": %.1e, \"seconds\": {\"vascusim\": %.3f, \"calculix\": %.3f}}\n",
-                    source.c_str(), problem.wall.points.size(), problem.wall.tets.size(),
-                    nonlinear ? "St. Venant-Kirchhoff, follower pressure (CalculiX NLGEOM)" : "linear elastic", kYoungMpa,
-                    kPoisson, newtonUpdates,
-                    problem.pressurePa * 1e-3, displacementDifference, ourP99 * 1e3, ccxP99 * 1e3, p99Difference,
-                    1e3 * largestNodal(u), largestNodal(ccxDisplacement), linearResidual, ourSeconds,
-                    ccxSeconds);
+                    source.c_str(), job.nodesMm.size(), job.elements.size(),
+                    problem.quadratic ? "C3D10 (quadratic tetrahedron)" : "C3D4 (linear tetrahedron)", lawText,
+                    ours.newtonUpdates, pressurePa * 1e-3, displacementDifference, ourP99 * 1e3, ccxP99 * 1e3,
+                    p99Difference, 1e3 * largestNodal(ours.displacement), largestNodal(ccx.displacementMm),
+                    ours.linearResidual, ourSeconds, ccxSeconds);
         return displacementDifference <= 0.02 && p99Difference <= 0.02 ? 0 : 1;
     }
     catch (const std::exception& error)

@@ -1,9 +1,20 @@
 #include "vsim/sim/fem/SparseDirect.h"
 
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+
 namespace vsim::sim::fem {
 
+struct SparseDirect::Factors
+{
+    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> cholesky;
+    Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu;
+};
+
+SparseDirect::~SparseDirect() = default;
+
 SparseDirect::SparseDirect(const BlockSparseMatrix& pattern, const std::vector<std::uint8_t>& constrained, Kind kind)
-    : m_kind(kind)
+    : m_kind(kind), m_factors(std::make_unique<Factors>())
 {
     const std::size_t dofs = 3 * pattern.nodeCount();
     m_freeIndex.assign(dofs, -1);
@@ -14,7 +25,7 @@ SparseDirect::SparseDirect(const BlockSparseMatrix& pattern, const std::vector<s
 
 Eigen::SparseMatrix<double> SparseDirect::copy(const BlockSparseMatrix& matrix) const
 {
-    const bool lowerOnly = m_kind == Kind::SymmetricLdlt;
+    const bool lowerOnly = m_kind == Kind::SymmetricCholesky;
     std::vector<Eigen::Triplet<double>> entries;
     entries.reserve(matrix.blockCount() * (lowerOnly ? 5 : 9));
     const auto& rowStart = matrix.rowStart();
@@ -42,18 +53,18 @@ Eigen::SparseMatrix<double> SparseDirect::copy(const BlockSparseMatrix& matrix) 
 bool SparseDirect::factorize(const BlockSparseMatrix& matrix)
 {
     m_matrix = copy(matrix);
-    if (m_kind == Kind::SymmetricLdlt)
+    m_matrix.makeCompressed();
+    if (m_kind == Kind::SymmetricCholesky)
     {
         if (!m_analysed)
-            m_ldlt.analyzePattern(m_matrix), m_analysed = true;
-        m_ldlt.factorize(m_matrix);
-        return m_ldlt.info() == Eigen::Success;
+            m_factors->cholesky.analyzePattern(m_matrix), m_analysed = true;
+        m_factors->cholesky.factorize(m_matrix);
+        return m_factors->cholesky.info() == Eigen::Success;
     }
-    m_matrix.makeCompressed();
     if (!m_analysed)
-        m_lu.analyzePattern(m_matrix), m_analysed = true;
-    m_lu.factorize(m_matrix);
-    return m_lu.info() == Eigen::Success;
+        m_factors->lu.analyzePattern(m_matrix), m_analysed = true;
+    m_factors->lu.factorize(m_matrix);
+    return m_factors->lu.info() == Eigen::Success;
 }
 
 double SparseDirect::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const
@@ -62,14 +73,14 @@ double SparseDirect::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const
     for (std::size_t f = 0; f < m_freeDofs.size(); ++f)
         freeB[Eigen::Index(f)] = b[Eigen::Index(m_freeDofs[f])];
     Eigen::VectorXd freeX, check;
-    if (m_kind == Kind::SymmetricLdlt)
+    if (m_kind == Kind::SymmetricCholesky)
     {
-        freeX = m_ldlt.solve(freeB);
+        freeX = m_factors->cholesky.solve(freeB);
         check = m_matrix.selfadjointView<Eigen::Lower>() * freeX - freeB;
     }
     else
     {
-        freeX = m_lu.solve(freeB);
+        freeX = m_factors->lu.solve(freeB);
         check = m_matrix * freeX - freeB;
     }
     x = Eigen::VectorXd::Zero(b.size());

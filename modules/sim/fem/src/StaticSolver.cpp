@@ -62,7 +62,7 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
     if (settings.linear != LinearSolver::ConjugateGradient)
         direct = std::make_unique<SparseDirect>(stiffness, constrained,
                                                 settings.linear == LinearSolver::SparseLu ? SparseDirect::Kind::GeneralLu
-                                                                                          : SparseDirect::Kind::SymmetricLdlt);
+                                                                                          : SparseDirect::Kind::SymmetricCholesky);
     // The state at the model's positions: its element pass, inverted elements and residual force.
     Eigen::VectorXd residual, load;
     const auto evaluate = [&]() {

@@ -51,8 +51,8 @@ struct StaticSolveReport
 enum class LinearSolver
 {
     ConjugateGradient, ///< block-Jacobi PCG to 0.1 x the force tolerance, at most cgMaxIterations (symmetric only)
-    SparseLdlt,        ///< simplicial LDL^T with AMD ordering, factorised per update (symmetric tangent)
-    SparseLu           ///< supernodal LU with COLAMD ordering (the tangent with a follower load's stiffness)
+    SparseCholesky,    ///< CHOLMOD supernodal Cholesky, ordering once, factorised per update (symmetric positive definite)
+    SparseLu           ///< UMFPACK multifrontal LU (the tangent with a follower load's stiffness)
 };
 
 /// Settings of solveStatic; set the members by name (the defaults are the validation cases').
