@@ -146,7 +146,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                             "the study has no wall mesh: run vascusim-cli mesh wall first");
     ParameterSet parameters(sim::fem::femParameters());
     applyParameters(arguments, parameters);
-    const app::WallBackend backend = app::chooseWallBackend(arguments.option("backend", "auto"), parameters);
+    const app::WallBackend backend = app::chooseWallBackend(arguments.option("backend", "auto"), protocol, parameters);
     const std::string centerlinesId =
         protocol == "physiological" ? chooseCenterlines(study, arguments.option("centerlines")) : std::string();
     const sim::fem::FemRunResult run =

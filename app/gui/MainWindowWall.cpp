@@ -86,7 +86,7 @@ bool MainWindow::simulateWall(const std::string& protocol)
     }
     auto run = std::make_shared<sim::fem::FemRunResult>();
     const ParameterSet parameters = m_femParameters;
-    const app::WallBackend backend = app::chooseWallBackend("auto", parameters); // the GPU when there is one
+    const app::WallBackend backend = app::chooseWallBackend("auto", protocol, parameters); // the GPU when there is one
     return m_tasks.run(
         protocol == "physiological" ? tr("Wall stress") : tr("Thesis rupture protocol"),
         [this, protocol, wallId, centerlinesId, parameters, backend, run](const Progress& progress) {

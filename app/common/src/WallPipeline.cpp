@@ -129,7 +129,7 @@ std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const s
     return id;
 }
 
-WallBackend chooseWallBackend(const std::string& requested, const ParameterSet& parameters)
+WallBackend chooseWallBackend(const std::string& requested, const std::string& protocol, const ParameterSet& parameters)
 {
     if (requested != "auto" && requested != "cpu" && requested != "cuda")
         throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
@@ -140,12 +140,14 @@ WallBackend chooseWallBackend(const std::string& requested, const ParameterSet& 
     const std::vector<cuda::DeviceInfo> devices = cuda::devices();
     if (devices.empty())
         unavailable = "there is no CUDA device";
+    else if (sim::fem::femUsesQuadraticWall(protocol, parameters))
+        unavailable = "the quadratic hyperelastic wall (wall_model 1) runs on the CPU: its GPU solver is not built yet";
     else if (sim::fem::femMaterial(parameters).model != sim::fem::ElasticMaterial::Model::CorotationalLinear)
         unavailable = "the CUDA backend runs the co-rotational linear model only";
     if (unavailable.empty())
         return {"cuda", cuda::deviceSummary(), cuda::cudaStepperFactory()};
 #else
-    (void)parameters;
+    (void)protocol, (void)parameters;
     unavailable = "this build has no CUDA backend (nvcc was not found when it was configured)";
 #endif
     if (requested == "cuda")

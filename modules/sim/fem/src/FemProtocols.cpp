@@ -3,6 +3,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/PrincipalAxis.h"
 #include "vsim/core/Units.h"
+#include "vsim/sim/fem/StaticWallRun.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -60,14 +61,25 @@ std::vector<ParameterSpec> femParameters()
         {"entropy_end", "Fracture entropy end", "nats", 3.9, 0, 20, thesis,
          "Stop once the fracture entropy passes this (3.9: about 50 torn elements' worth)."},
         {"pressure_mmhg", "Blood pressure", "mmHg", 120, 1, 400, physiological, "Systolic pressure on the lumen."},
+        {"wall_model", "Wall model", "", 1, 0, 1, physiological,
+         "1: quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall (nearly incompressible), "
+         "static equilibrium by load increments and Newton's method (CPU); 0: the Material group's law on linear "
+         "tets, a damped load path then the equilibrium (the earlier analysis; GPU path possible).",
+         ParameterSpec::Kind::Integer},
+        {"wall_poisson_ratio", "Wall Poisson's ratio", "", 0.49, 0.45, 0.499, physiological,
+         "Near incompressibility of the hyperelastic wall: its bulk modulus from the small-strain shear modulus "
+         "(wall model 1)."},
+        {"load_increments", "Load increments", "", 1, 1, 100, physiological,
+         "Pressure increments, each solved to equilibrium; one that fails is retried at half the size (wall "
+         "model 1).", ParameterSpec::Kind::Integer},
         {"settle_time_s", "Load path time", "s", 0.5, 0.1, 100, physiological,
-         "Simulated time of the damped load path: the pressure ramps up over its first quarter (beta = 0.22 s). The "
+         "Wall model 0: simulated time of the damped load path: the pressure ramps up over its first quarter (beta = 0.22 s). The "
          "figures are those of the static equilibrium solved after it, which does not depend on the path."},
         {"settle_time_step_ms", "Settling time step", "ms", 10, 0.1, 100, physiological,
-         "Backward Euler step while settling (the steady state does not depend on it)."},
+         "Wall model 0: backward Euler step while settling (the steady state does not depend on it)."},
         {"equilibrium_tolerance", "Equilibrium tolerance", "", 1e-6, 0, 1e-2, physiological,
-         "After the load path, the static equilibrium at the pressure is solved (Newton, sparse LU) until "
-         "||f_int - f_ext|| / ||f_ext|| is below this; the figures are that state's. 0: the path's last state."},
+         "The static equilibrium at the pressure is solved (Newton, sparse LU) until ||f_int - f_ext|| / ||f_ext|| "
+         "is below this; the figures are that state's. 0 (wall model 0 only): the damped path's last state."},
         {"female", "Female", "", -1, -1, 1, patient,
          "1 female, 0 male (Vande Geest 2006 SEX = +-0.5); -1 not given: no rupture index (never assumed).",
          ParameterSpec::Kind::Integer},
@@ -99,12 +111,28 @@ std::vector<ParameterSpec> femProtocolParameters(const std::string& protocol)
     return used;
 }
 
+bool femUsesQuadraticWall(const std::string& protocol, const ParameterSet& parameters)
+{
+    return protocol == "physiological" && parameters.get("wall_model") > 0.5;
+}
+
 std::map<std::string, std::string> femProtocolValues(const ParameterSet& parameters, const std::string& protocol)
 {
+    // The quadratic hyperelastic wall has its own law and no time stepping: the Material and Integration groups
+    // and the load path's settings do not enter it; the linear one has no increments or wall Poisson's ratio.
+    const bool quadratic = femUsesQuadraticWall(protocol, parameters);
+    const std::vector<std::string> linearOnly = {"settle_time_s", "settle_time_step_ms"},
+                                   quadraticOnly = {"wall_poisson_ratio", "load_increments"};
     const std::map<std::string, std::string> all = parameters.valuesAsText();
     std::map<std::string, std::string> used;
     for (const ParameterSpec& spec : femProtocolParameters(protocol))
+    {
+        const auto& skip = quadratic ? linearOnly : quadraticOnly;
+        if (std::find(skip.begin(), skip.end(), spec.key) != skip.end() ||
+            (quadratic && (spec.group == "Material" || spec.group == "Integration")))
+            continue;
         used[spec.key] = all.at(spec.key);
+    }
     return used;
 }
 
@@ -199,8 +227,10 @@ std::vector<double> addRuptureIndex(FemRunResult& result, const SkeletonGraph& c
 
 } // namespace
 
-FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& p,
-                              const Progress& progress, const StepperFactory& stepper, const SacRegion* sac)
+namespace {
+
+FemRunResult runLinearPhysiological(const TetMesh& wall, const ParameterSet& p, double pressure, const Progress& progress,
+                                    const StepperFactory& stepper)
 {
     FemRunSetup setup;
     setup.stepper = stepper;
@@ -209,16 +239,18 @@ FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerli
     setup.integrator = femIntegrator(p);
     // The load path by pseudo-time (the damped wall follows the pressure ramp; its frames are the run's series),
     // then the static equilibrium at the pressure by Newton's method (WallSimulation::equilibrate): the figures.
-    const double pressure = units::mmHgToPa(p.get("pressure_mmhg")), settle = p.get("settle_time_s");
+    const double settle = p.get("settle_time_s");
     setup.integrator.timeStep = 1e-3 * p.get("settle_time_step_ms");
     setup.pressurePa = [=](double t) { return pressure * std::clamp(t / (0.25 * settle), 0.0, 1.0); };
     setup.steps = std::max(1, int(std::lround(settle / setup.integrator.timeStep)));
     setup.frameEvery = std::max(1, setup.steps / 20);
     setup.equilibriumTolerance = p.get("equilibrium_tolerance");
-    if (centerlines.edges.empty())
-        throw Error("the physiological protocol needs centerlines (for the local diameter)");
-    FemRunResult result = runFem(setup, progress);
+    return runFem(setup, progress);
+}
 
+void addWallStrength(FemRunResult& result, const SkeletonGraph& centerlines, const ParameterSet& p,
+                     const SacRegion* sac, double pressure)
+{
     // Wall strength per element (local diameter from the nearest centerline point) and the rupture index, when the
     // patient's sex and family history are given (the strength model needs both; neither is assumed).
     double maxDiameter = 0.0;
@@ -252,6 +284,32 @@ FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerli
             result.metrics[prefix + "_clock_h"] = peak.clockHours;
         }
     }
+}
+
+} // namespace
+
+FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& p,
+                              const Progress& progress, const StepperFactory& stepper, const SacRegion* sac)
+{
+    if (centerlines.edges.empty())
+        throw Error("the physiological protocol needs centerlines (for the local diameter)");
+    const double pressure = units::mmHgToPa(p.get("pressure_mmhg"));
+    FemRunResult result;
+    if (femUsesQuadraticWall("physiological", p))
+    {
+        StaticWallSetup setup;
+        setup.wall = wall;
+        setup.materials = {HyperelasticMaterial::raghavanVorp2000(p.get("wall_poisson_ratio"))};
+        setup.pressurePa = pressure;
+        setup.loadIncrements = int(p.get("load_increments"));
+        setup.tolerance = p.get("equilibrium_tolerance");
+        if (!(setup.tolerance > 0.0))
+            throw Error("equilibrium_tolerance 0 (the damped path's last state) needs wall_model 0");
+        result = runStaticWall(setup, progress);
+    }
+    else
+        result = runLinearPhysiological(wall, p, pressure, progress, stepper);
+    addWallStrength(result, centerlines, p, sac, pressure);
     return result;
 }
 

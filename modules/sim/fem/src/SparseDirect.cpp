@@ -36,7 +36,10 @@ Eigen::SparseMatrix<double> SparseDirect::copy(const BlockSparseMatrix& matrix) 
             const std::size_t column = columns[s];
             if (lowerOnly && column > row)
                 continue;
-            const Eigen::Matrix3d& block = matrix.blocks()[s];
+            // The Cholesky kind factorises the symmetric part (A + A^T) / 2 (A itself when A is symmetric).
+            const Eigen::Matrix3d block =
+                lowerOnly ? Eigen::Matrix3d(0.5 * (matrix.blocks()[s] + matrix.block(matrix.slotOf(column, row)).transpose()))
+                          : matrix.blocks()[s];
             for (int a = 0; a < 3; ++a)
                 for (int b = 0; b < 3; ++b)
                 {

@@ -113,9 +113,49 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
             report.cgIterations += cg.iterations;
             report.worstLinearResidual = std::max(report.worstLinearResidual, cg.relativeResidual);
         }
+        const Eigen::VectorXd start = model.positions();
+        const double slope = delta.dot(residual); // the energy's decrease rate along delta (> 0: a descent)
+        if (settings.directionalLineSearch && slope > 0.0)
+        {
+            // Matthies & Strang 1979: the step where the residual force has no component along the direction (the
+            // potential energy's minimum on the line), by regula falsi from g(0) = delta . R > 0, accepted once
+            // |g| <= g(0) / 2; steps that invert an element are halved. A stiffening wall law (Raghavan-Vorp)
+            // makes the full step from rest overshoot many-fold, where the residual norm's backtracking crawls.
+            double low = 0.0, lowSlope = slope, high = -1.0, highSlope = 0.0, step = 1.0;
+            for (int trial = 0;; ++trial)
+            {
+                model.positions() = start + step * delta;
+                const auto [trialInverted, trialNorm] = evaluate();
+                if (trialInverted > 0)
+                {
+                    if (trial >= 40)
+                    {
+                        model.positions() = start;
+                        evaluate();
+                        throw Error("no step along the Newton direction keeps every element uninverted");
+                    }
+                    high = -1.0; // no sign information: shorten
+                    step = low + 0.5 * (step - low);
+                    continue;
+                }
+                const double g = delta.dot(residual);
+                const bool beyond = g > 0.0 && high < 0.0 && step >= 1.0; // still descending at the full step
+                if (std::abs(g) <= 0.5 * slope || beyond || trial >= 10)
+                {
+                    norm = trialNorm;
+                    break;
+                }
+                if (g > 0.0)
+                    low = step, lowSlope = g;
+                else
+                    high = step, highSlope = g;
+                step = high < 0.0 ? std::min(1.0, 2.0 * step) : low + (high - low) * lowSlope / (lowSlope - highSlope);
+            }
+            report.smallestStep = std::min(report.smallestStep, step);
+            continue;
+        }
         // Backtracking: the full step unless it inverts an element or does not lower the residual force (Armijo
         // on its norm); halved up to 12 times, else the smallest step that inverts nothing is taken.
-        const Eigen::VectorXd start = model.positions();
         double step = 1.0;
         for (int halving = 0;; ++halving, step *= 0.5)
         {

@@ -12,18 +12,9 @@
 namespace vsim::sim::fem {
 namespace {
 
-const std::vector<double>& field(const TetMesh& wall, const char* name)
-{
-    const auto found = wall.pointFields.find(name);
-    if (found == wall.pointFields.end())
-        throw Error("the tetrahedral mesh is not a vessel wall (wall_layer / end_set fields missing): build it with "
-                    "'mesh wall'");
-    return found->second;
-}
-
 CorotationalFem modelOf(const TetMesh& wall, const ElasticMaterial& material)
 {
-    field(wall, "wall_layer"), field(wall, "end_set");
+    requireWallFields(wall);
     std::vector<Eigen::Vector3d> rest(wall.points.size());
     for (std::size_t i = 0; i < rest.size(); ++i)
         rest[i] = units::mmToM(1.0) * wall.points[i];
@@ -55,38 +46,9 @@ WallSimulation::WallSimulation(const TetMesh& wall, const ElasticMaterial& mater
                                const std::function<bool(const Eigen::Vector3d&)>& loaded)
     : m_model(modelOf(wall, material)), m_settings(settings), m_integrator(m_model, settings)
 {
-    const std::vector<double>& layer = field(wall, "wall_layer");
-    const std::vector<double>& endSet = field(wall, "end_set");
-    m_fixed.assign(3 * m_model.nodeCount(), 0);
-    std::size_t fixedNodes = 0;
-    for (std::size_t i = 0; i < m_model.nodeCount(); ++i)
-        if (endSet[i] > 0.0)
-        {
-            m_fixed[3 * i] = m_fixed[3 * i + 1] = m_fixed[3 * i + 2] = 1;
-            ++fixedNodes;
-        }
-    if (fixedNodes == 0)
-        throw Error("the wall has no fixed end (end_set is 0 everywhere): build it from centerlines with ends");
-    std::vector<std::size_t> owners;
-    const std::vector<std::array<int, 3>> boundary = boundaryFaces(wall.tets, &owners);
-    for (std::size_t f = 0; f < boundary.size(); ++f)
-    {
-        const auto& face = boundary[f];
-        if (layer[std::size_t(face[0])] != 0.0 || layer[std::size_t(face[1])] != 0.0 || layer[std::size_t(face[2])] != 0.0)
-            continue;
-        const Eigen::Vector3d centroid =
-            (wall.points[std::size_t(face[0])] + wall.points[std::size_t(face[1])] + wall.points[std::size_t(face[2])]) / 3.0;
-        if (loaded && !loaded(centroid))
-            continue;
-        // The face is opposite the owner's one corner that is not on it.
-        const auto& tet = wall.tets[owners[f]];
-        int opposite = 0;
-        while (std::find(face.begin(), face.end(), tet[std::size_t(opposite)]) != face.end())
-            ++opposite;
-        m_faces.push_back({owners[f], opposite});
-    }
-    if (m_faces.empty())
-        throw Error("no lumen face carries the pressure");
+    WallBoundaryConditions conditions = wallBoundaryConditions(wall, loaded);
+    m_fixed = std::move(conditions.fixed);
+    m_faces = std::move(conditions.lumenFaces);
     m_originalElement.resize(m_model.elementCount());
     for (std::size_t t = 0; t < m_originalElement.size(); ++t)
         m_originalElement[t] = t;
@@ -94,15 +56,7 @@ WallSimulation::WallSimulation(const TetMesh& wall, const ElasticMaterial& mater
 
 std::vector<std::array<int, 3>> WallSimulation::pressureFaces() const
 {
-    std::vector<std::array<int, 3>> nodes;
-    nodes.reserve(m_faces.size());
-    for (const ElementFace& face : m_faces)
-    {
-        const auto& tet = m_model.tets()[face.element];
-        nodes.push_back({tet[std::size_t(kTetFaces[face.opposite][0])], tet[std::size_t(kTetFaces[face.opposite][1])],
-                         tet[std::size_t(kTetFaces[face.opposite][2])]});
-    }
-    return nodes;
+    return WallBoundaryConditions{{}, m_faces}.faceNodes(m_model.tets());
 }
 
 void WallSimulation::setStepper(StepperFactory factory)
@@ -248,8 +202,8 @@ void WallSimulation::tear(const std::vector<std::size_t>& over)
     std::vector<long> newElementOf(m_model.elementCount(), -1);
     for (std::size_t e = 0; e < detached.oldElementOf.size(); ++e)
         newElementOf[detached.oldElementOf[e]] = long(e);
-    std::vector<ElementFace> kept;
-    for (const ElementFace& face : m_faces)
+    std::vector<WallBoundaryConditions::Face> kept;
+    for (const WallBoundaryConditions::Face& face : m_faces)
         if (newElementOf[face.element] >= 0)
             kept.push_back({std::size_t(newElementOf[face.element]), face.opposite});
     m_faces = std::move(kept);

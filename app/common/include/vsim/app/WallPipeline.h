@@ -54,9 +54,10 @@ struct WallBackend
     sim::fem::StepperFactory stepper; ///< empty for the CPU
 };
 
-/// Resolves `requested`: "cpu"; "cuda" (throws vsim::Error when this build has no CUDA backend, there is no device,
-/// or the material model is not the co-rotational one); "auto": the GPU when "cuda" would work, else the CPU.
-WallBackend chooseWallBackend(const std::string& requested, const ParameterSet& parameters);
+/// Resolves `requested` for `protocol`: "cpu"; "cuda" (throws vsim::Error when this build has no CUDA backend,
+/// there is no device, the run is the quadratic hyperelastic wall, or the material model is not the co-rotational
+/// one); "auto": the GPU when "cuda" would work, else the CPU.
+WallBackend chooseWallBackend(const std::string& requested, const std::string& protocol, const ParameterSet& parameters);
 
 /// Runs `protocol` ("thesis-rupture" or "physiological") on the wall artifact `wallId` (centerlines needed by the
 /// physiological protocol) on `backend`. Throws vsim::Error for an unknown protocol.

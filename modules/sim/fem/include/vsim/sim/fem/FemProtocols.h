@@ -6,8 +6,8 @@
 //                  tear strength, stopping on the fracture entropy; reports the tearing onset pressure (thesis:
 //                  10.4 MPa) and the entropy curve. These pressures are about 600 times systolic: a reproduction,
 //                  not physiology (SEED-NOTES.md).
-//  physiological   wall stress at the patient's pressure (default 120 mmHg), quasi-static, ends fixed: peak wall
-//                  stress and where, and the peak rupture potential index against the wall strength of Vande Geest
+//  physiological   wall stress at the patient's pressure (default 120 mmHg), static equilibrium, ends fixed (by
+//                  default quadratic tets with the Raghavan-Vorp 2000 wall, StaticWallRun.h): peak wall stress and where, and the peak rupture potential index against the wall strength of Vande Geest
 //                  et al. 2006 (J Biomech Eng 128:1055, "Towards a noninvasive method for determination of
 //                  patient-specific wall strength distribution in AAA").
 
@@ -30,7 +30,10 @@ std::vector<ParameterSpec> femParameters();
 /// steps with settle_time_step_ms instead of time_step_ms and has no ramp or tearing, the thesis protocol has no
 /// blood pressure or strength inputs. Throws vsim::Error for an unknown protocol.
 std::vector<ParameterSpec> femProtocolParameters(const std::string& protocol);
-/// The values (as provenance text) of the parameters `protocol` uses, nothing else.
+/// Whether `protocol` with these parameters runs the quadratic hyperelastic wall (StaticWallRun.h, CPU only):
+/// the physiological protocol with wall_model 1.
+bool femUsesQuadraticWall(const std::string& protocol, const ParameterSet& parameters);
+/// The values (as provenance text) of the parameters `protocol` uses with these values, nothing else.
 std::map<std::string, std::string> femProtocolValues(const ParameterSet& parameters, const std::string& protocol);
 /// The material and the integrator settings of a parameter set (SI).
 ElasticMaterial femMaterial(const ParameterSet& parameters);

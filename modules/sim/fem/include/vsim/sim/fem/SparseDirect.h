@@ -23,7 +23,7 @@ class SparseDirect
 public:
     enum class Kind
     {
-        SymmetricCholesky, ///< reads the lower triangle; the matrix must be symmetric positive definite (Cholesky)
+        SymmetricCholesky, ///< Cholesky of the symmetric part (A + A^T) / 2, which must be positive definite
         GeneralLu      ///< any non-singular matrix
     };
     /// The free degrees of freedom: `constrained` (3 per node, 1 = fixed; empty: none) of the matrix's nodes.

@@ -51,7 +51,7 @@ struct StaticSolveReport
 enum class LinearSolver
 {
     ConjugateGradient, ///< block-Jacobi PCG to 0.1 x the force tolerance, at most cgMaxIterations (symmetric only)
-    SparseCholesky,    ///< CHOLMOD supernodal Cholesky, ordering once, factorised per update (symmetric positive definite)
+    SparseCholesky,    ///< CHOLMOD supernodal Cholesky of the tangent's symmetric part, ordering once, per update
     SparseLu           ///< UMFPACK multifrontal LU (the tangent with a follower load's stiffness)
 };
 
@@ -66,6 +66,9 @@ struct StaticSolveSettings
     /// CorotationalFem::addRotationStiffness): a full Newton iteration (quadratic convergence), with a direct
     /// solver that takes a non-symmetric matrix where the tangent is not symmetric.
     bool rotationStiffness = false;
+    /// Line search: the step where the residual has no component along the Newton direction (Matthies & Strang
+    /// 1979; for stiffening hyperelastic laws) instead of backtracking on the residual norm.
+    bool directionalLineSearch = false;
     /// Called with the update count and the relative force residual each time a residual is computed (progress;
     /// it may throw vsim::Cancelled, which leaves the model at the last state evaluated).
     std::function<void(int updates, double forceResidual)> afterResidual;

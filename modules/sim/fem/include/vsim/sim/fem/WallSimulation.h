@@ -13,6 +13,7 @@
 #include "vsim/sim/fem/ImplicitStepper.h"
 #include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/sim/fem/Tearing.h"
+#include "vsim/sim/fem/WallBoundaryConditions.h"
 
 #include <functional>
 #include <memory>
@@ -69,11 +70,6 @@ public:
     TetMesh frame() const;
 
 private:
-    struct ElementFace
-    {
-        std::size_t element;
-        int opposite;
-    };
     std::vector<std::array<int, 3>> pressureFaces() const;
     void tear(const std::vector<std::size_t>& over);
     /// One step on the stepper: the state comes back and the element pass runs here (stresses, tearing, guards).
@@ -85,7 +81,7 @@ private:
     StepperFactory m_stepperFactory;
     std::unique_ptr<ImplicitStepper> m_stepper; // made from the current model; remade when it changes
     std::vector<std::uint8_t> m_fixed;
-    std::vector<ElementFace> m_faces;
+    std::vector<WallBoundaryConditions::Face> m_faces;
     std::vector<std::size_t> m_originalElement; // the wall mesh's element each tet came from (prism = index / 3)
     Contacts m_contacts;
     FractureEntropy m_entropy;

@@ -1,0 +1,43 @@
+#pragma once
+
+// The converged wall analysis (issue 16): the wall mesh's tets made quadratic (10 nodes), hyperelastic laws per
+// element (the Raghavan-Vorp 2000 wall by default, Hyperelastic.h), ends held, the lumen pressure as a follower
+// load on the 6-node lumen faces, applied in load increments (one by default; one that fails is retried at half
+// the size), each solved to static equilibrium by Newton's method (consistent tangent + the pressure's load
+// stiffness, UMFPACK LU, the line search of Matthies & Strang 1979): intermediate increments to
+// `intermediateTolerance`, the last to `tolerance` (||f_int - f_ext|| / ||f_ext||). The frames are
+// the rest state and each increment's equilibrium, on the linear wall mesh (corner displacements, each element's
+// mean Cauchy stress over its four quadrature points). The run status records every Newton update's linear
+// solve and the final force residual. The unloaded reference is the imaged (loaded) geometry: CT shows the
+// vessel at its pressure, so the figures overestimate the stretch a little (stated in the report).
+
+#include "vsim/core/Progress.h"
+#include "vsim/core/TetMesh.h"
+#include "vsim/sim/fem/FemRun.h"
+#include "vsim/sim/fem/Hyperelastic.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace vsim::sim::fem {
+
+struct StaticWallSetup
+{
+    TetMesh wall;                                   ///< mm; point fields wall_layer and end_set
+    std::vector<HyperelasticMaterial> materials;    ///< [0]: the wall
+    std::vector<std::uint8_t> elementMaterial;      ///< per tet, an index into materials; empty: all the wall
+    double pressurePa = 0.0;
+    int loadIncrements = 1;                         ///< first try; halved where one fails
+    double tolerance = 1e-6;                        ///< the last increment's relative force residual
+    double intermediateTolerance = 1e-3;
+    int maxUpdatesPerIncrement = 30;
+};
+
+/// Runs the setup. Throws vsim::Error for a mesh that is not a wall or a bad material, vsim::Cancelled when
+/// cancelled (progress follows the Newton updates). An increment that does not converge (or inverts every step)
+/// even at 1/64 of the pressure stops the run as a guard with the last converged frame kept and the residual it
+/// reached in the status. Metrics as runFem's, with element_order 2, quadratic_nodes, load_increments (those
+/// converged), load_cutbacks and equilibrium_updates.
+FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progress = {});
+
+} // namespace vsim::sim::fem
