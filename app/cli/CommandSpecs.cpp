@@ -90,9 +90,13 @@ std::vector<CommandSpec> declareCommands()
          "    \"unnamed\"; kept with the study and used by measure, the workstation and the report",
          renameSegmentInStudy},
         {"mesh wall", 1, 1,
-         {kStudy, value("label"), value("centerlines"), value("thickness"), value("target-vertices"), kWait},
+         {kStudy, value("label"), value("centerlines"), value("thickness"), value("target-vertices"), flag("thrombus"),
+          kWait},
          "mesh wall --study <study.vsim> [--label ID] [--centerlines ID] [--thickness 1.5mm] [--target-vertices 3000]\n"
-         "    tetrahedral vessel wall (one layer) around the lumen, opened at the centerline ends (fixed sets)",
+         "          [--thrombus]\n"
+         "    tetrahedral vessel wall (one layer) around the lumen, opened at the centerline ends (fixed sets);\n"
+         "    --thrombus: the intraluminal thrombus of the study's AAA sac (vascusim-cli sac) as its own layer inside\n"
+         "    the sac (for simulate fem --param wall_model=1)",
          meshWall},
         {"mesh sheet", 1, 1,
          {kStudy, value("width"), value("length"), value("thickness"), value("cell"), kWait},

@@ -5,6 +5,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/study/MeshFileImport.h"
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <iostream>
 
 namespace vsim::cli {
@@ -104,10 +106,20 @@ int meshWall(const Arguments& arguments, const Progress& progress)
                                                "the study has no vessel label: run vascusim-cli segment first");
     const double thickness = quantityOption(arguments, "thickness", "mm", 1.5);
     const double targetVertices = quantityOption(arguments, "target-vertices", "", 3000.0);
-    const app::WallMeshBuild build = app::buildWallMesh(study.loadLabel(labelId), study.loadSkeleton(centerlinesId),
-                                                        thickness, targetVertices, progress.subRange(0.0, 0.95));
+    std::string sacId;
+    if (arguments.hasOption("thrombus"))
+    {
+        app::newestSacFigures(study, &sacId);
+        if (sacId.empty())
+            throw Error("--thrombus needs the study's AAA sac: run vascusim-cli sac first");
+    }
+    const std::optional<LabelVolume> sacLabels =
+        sacId.empty() ? std::nullopt : std::optional<LabelVolume>(study.loadLabel(sacId));
+    const app::WallMeshBuild build =
+        app::buildWallMesh(study.loadLabel(labelId), study.loadSkeleton(centerlinesId), thickness, targetVertices,
+                           progress.subRange(0.0, 0.95), sacLabels ? &*sacLabels : nullptr);
     const mesh::WallMesh& wall = build.wall;
-    const std::string id = app::addWallMesh(study, build, labelId, centerlinesId, thickness, targetVertices);
+    const std::string id = app::addWallMesh(study, build, labelId, centerlinesId, thickness, targetVertices, sacId);
     study.save();
     progress.report(1.0, "saved");
     nlohmann::json ends = nlohmann::json::array();
@@ -125,6 +137,9 @@ int meshWall(const Arguments& arguments, const Progress& progress)
                                 {"worst_element_mm", {wall.worstElementMm.x(), wall.worstElementMm.y(), wall.worstElementMm.z()}},
                                 {"mean_min_dihedral_deg", wall.meanMinDihedralDeg},
                                 {"inverted_elements", wall.inverted},
+                                {"thrombus_from", sacId.empty() ? "none" : sacId},
+                                {"thrombus_elements", wall.thrombusElements},
+                                {"max_thrombus_mm", wall.maxThrombusMm},
                                 {"end_nodes", ends},
                                 {"warnings", wall.warnings}}
                      .dump(2)

@@ -1,7 +1,10 @@
 // The vessel wall mesh: on a capped cylinder (radius 5 mm, 1.5 mm wall) the open wall's volume equals
 // pi ((r + t)^2 - r^2) L within 1 % and both open ends are planar fixed sets; on the aaa phantom (lumen surface
 // of the truth label decimated to about 3,000 vertices, centerlines from its skeleton) the wall opens at the five
-// vessel ends, every element is positive and the dihedral angles are reported. Bad input is refused.
+// vessel ends, every element is positive and the dihedral angles are reported. With a sac's outer wall the thrombus
+// is its own layer: on the cylinder with an outer contour 6 mm out over z 20..40 mm (thrombus 4.5 mm) the thrombus
+// elements fill that stretch and their volume is the annulus's, the wall keeps its thickness everywhere, and the
+// pressure still acts on the lumen alone. Bad input is refused.
 
 #include "PhantomGrids.h"
 #include "WallFixtures.h"
@@ -60,6 +63,59 @@ private slots:
         }
         const double lumenArea = 2.0 * 96 * radius * std::sin(M_PI / 96) * open;
         QVERIFY(std::abs(area / lumenArea - 1.0) < 1e-9);
+    }
+
+    void thrombusLayerInsideTheSac()
+    {
+        const double radius = 5.0, length = 60.0, thickness = 1.5, outer = 6.0; // outer wall 6 mm from the lumen
+        const TriangleMesh lumen = test::cappedCylinder(radius, length, 96);
+        const std::vector<mesh::VesselEnd> ends{{Eigen::Vector3d(0, 0, 0), -Eigen::Vector3d::UnitZ(), radius},
+                                                {Eigen::Vector3d(0, 0, length), Eigen::Vector3d::UnitZ(), radius}};
+        // The "sac": z 20..40 mm; elsewhere no sac (negative).
+        const mesh::OuterWallDistance sac = [&](const Eigen::Vector3d& p, const Eigen::Vector3d&) {
+            return p.z() >= 20.0 && p.z() <= 40.0 ? outer : -1.0;
+        };
+        const mesh::WallMesh wall = mesh::buildWallMesh(lumen, ends, thickness, sac);
+        wall.mesh.validate();
+        QCOMPARE(wall.inverted, std::size_t(0));
+        const auto& material = wall.mesh.cellFields.at("material");
+        double thrombusVolume = 0.0, wallVolume = 0.0, zMin = 1e9, zMax = -1e9;
+        for (std::size_t t = 0; t < wall.mesh.tets.size(); ++t)
+        {
+            const auto& tet = wall.mesh.tets[t];
+            const auto& p = wall.mesh.points;
+            const double volume = (p[std::size_t(tet[1])] - p[std::size_t(tet[0])])
+                                      .cross(p[std::size_t(tet[2])] - p[std::size_t(tet[0])])
+                                      .dot(p[std::size_t(tet[3])] - p[std::size_t(tet[0])]) / 6.0;
+            if (material[t] > 0.5)
+            {
+                thrombusVolume += volume;
+                for (int node : tet)
+                    zMin = std::min(zMin, p[std::size_t(node)].z()), zMax = std::max(zMax, p[std::size_t(node)].z());
+            }
+            else
+                wallVolume += volume;
+        }
+        // The outer distances are smoothed over two 1-rings (rings 1 mm apart along z), so the sac's ends ramp over
+        // a few mm; in its middle the thrombus is 4.5 mm and the annulus r 5..9.5 mm.
+        const double polygon = std::sin(2.0 * M_PI / 96) * 96 / (2.0 * M_PI);
+        const double annulus = polygon * M_PI * ((radius + outer - thickness) * (radius + outer - thickness) - radius * radius);
+        qInfo("thrombus layer: %zu of %zu elements over z %.1f..%.1f mm, volume %.0f mm3 (the 20 mm annulus %.0f), "
+              "thickest %.2f mm; wall volume %.0f mm3; min dihedral %.1f deg", wall.thrombusElements,
+              wall.mesh.tets.size(), zMin, zMax, thrombusVolume, annulus * 20.0, wall.maxThrombusMm, wallVolume,
+              wall.minDihedralDeg);
+        QVERIFY(wall.thrombusElements > 0 && zMin > 15.0 && zMax < 45.0);
+        QVERIFY(std::abs(wall.maxThrombusMm - (outer - thickness)) < 1e-6);
+        QVERIFY(std::abs(thrombusVolume / (annulus * 20.0) - 1.0) < 0.15);
+        // The wall: 1.5 mm outside the thrombus, and two layers of 0.75 mm + 0.75 mm elsewhere (wall material).
+        const double wallOnly = polygon * M_PI * ((radius + thickness) * (radius + thickness) - radius * radius);
+        const double wallInSac =
+            polygon * M_PI * ((radius + outer) * (radius + outer) - (radius + outer - thickness) * (radius + outer - thickness));
+        QVERIFY(std::abs(wallVolume / (wallOnly * 30.0 + wallInSac * 20.0) - 1.0) < 0.15);
+        // Layers 0, 0.5 and 1; the pressure on the lumen only (its area as without the thrombus).
+        const auto& layer = wall.mesh.pointFields.at("wall_layer");
+        QCOMPARE(std::count(layer.begin(), layer.end(), 0.5), std::count(layer.begin(), layer.end(), 0.0));
+        QCOMPARE(mesh::lumenFaces(wall.mesh).size(), mesh::lumenFaces(mesh::buildWallMesh(lumen, ends, thickness).mesh).size());
     }
 
     void aaaPhantomWall()

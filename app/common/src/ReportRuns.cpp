@@ -26,8 +26,14 @@ struct SolverInfo
 SolverInfo solverOf(const study::Artifact& run)
 {
     if (run.provenance.command == "simulate fem")
-        return {"Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), lumped "
-                "mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. 4).",
+        return {textOr(run.provenance.parameters, "wall_model", "0") == "1"
+                    ? "Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan & Vorp 2000 hyperelastic AAA "
+                      "wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; "
+                      "the static equilibrium by Newton's method (sparse LU) to the force tolerance. The imaged "
+                      "geometry is taken as unloaded (CT shows the vessel at its pressure); no thrombus layer yet."
+                    : "Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), "
+                      "lumped mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. "
+                      "4); the physiological protocol's figures from the static equilibrium after the load path.",
                 sim::fem::femProtocolParameters(textOr(run.provenance.parameters, "protocol", "physiological")),
                 sim::fem::femParameters(), sim::fem::femValidationCases(),
                 [](const std::string& name, const Progress& p) { return sim::fem::runFemValidation(name, p); },

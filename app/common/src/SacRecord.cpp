@@ -117,6 +117,27 @@ std::optional<sim::fem::SacRegion> newestSacRegion(const study::Study& study, co
     return region;
 }
 
+std::function<double(const Eigen::Vector3d&, const Eigen::Vector3d&)> sacOuterWallDistance(const LabelVolume& sacLabels)
+{
+    const auto labels = std::make_shared<LabelVolume>(sacLabels);
+    return [labels](const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
+        const double step = 0.25 * labels->geometry().spacing.minCoeff();
+        const Eigen::Vector3d direction = normal.normalized();
+        bool crossed = false;
+        for (double r = 0.0; r < 40.0; r += step)
+        {
+            const Eigen::Vector3d index = labels->geometry().patientToIndex(point + r * direction);
+            const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
+            const std::uint8_t value = labels->geometry().contains(i, j, k) ? labels->at(i, j, k) : std::uint8_t(0);
+            if (value == 4 || value == 5)
+                crossed = true;
+            else if (value != 1 && (crossed || r > 5.0))
+                return crossed ? r : -1.0;
+        }
+        return -1.0;
+    };
+}
+
 std::string newestLumenLabel(const study::Study& study)
 {
     std::string newest;

@@ -90,7 +90,7 @@ mesh::MarkedWall asWall(TetMesh mesh, const mesh::WallBoundarySelection& selecti
 }
 
 WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& centerlines, double thicknessMm,
-                            double targetVertices, const Progress& progress)
+                            double targetVertices, const Progress& progress, const LabelVolume* sacLabels)
 {
     ParameterSet surfaceParameters(mesh::surfaceParameters());
     surfaceParameters.set("target_vertices", targetVertices);
@@ -106,26 +106,33 @@ WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& cente
     progress.report(0.9, "wall");
     build.lumenVertices = lumen.points.size();
     build.smallestSurfaceAngleDeg = mesh::minTriangleAngle(lumen);
-    build.wall = mesh::buildWallMesh(lumen, mesh::vesselEnds(centerlines), thicknessMm);
+    build.wall = mesh::buildWallMesh(lumen, mesh::vesselEnds(centerlines), thicknessMm,
+                                     sacLabels ? sacOuterWallDistance(*sacLabels) : mesh::OuterWallDistance{});
     progress.report(1.0, "wall");
     return build;
 }
 
 std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const std::string& labelId,
-                        const std::string& centerlinesId, double thicknessMm, double targetVertices)
+                        const std::string& centerlinesId, double thicknessMm, double targetVertices,
+                        const std::string& sacId)
 {
     study::Provenance provenance;
     provenance.command = "mesh wall";
     provenance.inputs = {labelId, centerlinesId};
     provenance.parameters = {{"thickness_mm", numberText(thicknessMm)},
                              {"target_vertices", numberText(targetVertices)},
-                             {"remesh_edge_mm", numberText(build.remeshEdgeMm)}};
+                             {"remesh_edge_mm", numberText(build.remeshEdgeMm)},
+                             {"thrombus_from", sacId.empty() ? "none" : sacId}};
+    if (!sacId.empty())
+        provenance.inputs.push_back(sacId);
     const std::string id = study.addTetMesh(build.wall.mesh, "Vessel wall", provenance, build.wall.warnings);
     study.setArtifactAttributes(id, {{"min_dihedral_deg", numberText(build.wall.minDihedralDeg)},
                                      {"mean_min_dihedral_deg", numberText(build.wall.meanMinDihedralDeg)},
                                      {"elements_under_5_deg", std::to_string(build.wall.slivers)},
                                      {"inverted_elements", std::to_string(build.wall.inverted)},
-                                     {"ends", std::to_string(build.wall.endNodes.size())}});
+                                     {"ends", std::to_string(build.wall.endNodes.size())},
+                                     {"thrombus_elements", std::to_string(build.wall.thrombusElements)},
+                                     {"max_thrombus_mm", numberText(build.wall.maxThrombusMm)}});
     return id;
 }
 

@@ -178,7 +178,8 @@ double minDihedralAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
     return smallest;
 }
 
-WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm)
+WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm,
+                       const OuterWallDistance& outerWall)
 {
     if (lumen.triangles.empty())
         throw Error("the lumen surface is empty: extract the surface first");
@@ -212,45 +213,90 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
             if (averaged[v].norm() > 0.0)
                 normal[v] = averaged[v].normalized();
     }
+    // The layers' offsets along the normals: one layer of the wall thickness, or with the sac's outer wall the
+    // thrombus-wall interface and the outer surface (the outer distances smoothed over two 1-rings: the label's
+    // voxel steps would otherwise ripple the outer surface).
+    const int layers = outerWall ? 2 : 1;
+    std::vector<std::array<double, 2>> offset(surface.points.size(), {thicknessMm, thicknessMm});
+    std::vector<double> thrombus(surface.points.size(), 0.0);
+    if (outerWall)
+    {
+        std::vector<double> outer(surface.points.size());
+        for (int v = 0; v < n; ++v)
+            outer[std::size_t(v)] = std::max(thicknessMm, outerWall(surface.points[std::size_t(v)], normal[std::size_t(v)]));
+        for (int pass = 0; pass < 2; ++pass)
+        {
+            std::vector<double> sum(outer.size(), 0.0);
+            std::vector<int> count(outer.size(), 0);
+            for (const auto& t : surface.triangles)
+                for (int k = 0; k < 3; ++k)
+                    for (int other = 0; other < 3; ++other)
+                        sum[std::size_t(t[std::size_t(k)])] += outer[std::size_t(t[std::size_t(other)])], ++count[std::size_t(t[std::size_t(k)])];
+            for (std::size_t v = 0; v < outer.size(); ++v)
+                if (count[v] > 0)
+                    outer[v] = sum[v] / count[v];
+        }
+        for (std::size_t v = 0; v < outer.size(); ++v)
+        {
+            thrombus[v] = outer[v] - thicknessMm;
+            offset[v] = {std::max(thrombus[v], 0.5 * thicknessMm), outer[v]};
+            wall.maxThrombusMm = std::max(wall.maxThrombusMm, thrombus[v]);
+        }
+    }
     wall.mesh.points = surface.points;
-    wall.mesh.points.resize(2 * surface.points.size());
+    wall.mesh.points.resize(std::size_t(layers + 1) * surface.points.size());
     for (int v = 0; v < n; ++v)
     {
         const Eigen::Vector3d direction = normal[std::size_t(v)];
         if (direction.norm() == 0.0)
             throw Error("a lumen vertex has no normal (degenerate surface)");
-        wall.mesh.points[std::size_t(n + v)] = surface.points[std::size_t(v)] + thicknessMm * direction.normalized();
+        for (int l = 1; l <= layers; ++l)
+            wall.mesh.points[std::size_t(l * n + v)] =
+                surface.points[std::size_t(v)] + offset[std::size_t(v)][std::size_t(l == layers ? 1 : 0)] * direction.normalized();
     }
     // Prisms (a, b, c) -> (a', b', c') into three tets; rotate so that the smallest index comes first (Dompierre
     // et al. 1999): with inner indices below outer ones, the quad diagonals follow the smaller inner index.
-    for (const auto& triangle : surface.triangles)
-    {
-        std::array<int, 3> t = triangle;
-        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-        const int v0 = t[0], v1 = t[1], v2 = t[2], v3 = v0 + n, v4 = v1 + n, v5 = v2 + n;
-        const std::array<std::array<int, 4>, 3> tets =
-            v1 < v2 ? std::array<std::array<int, 4>, 3>{{{v0, v1, v2, v5}, {v0, v1, v5, v4}, {v0, v4, v5, v3}}}
-                    : std::array<std::array<int, 4>, 3>{{{v0, v1, v2, v4}, {v0, v4, v2, v5}, {v0, v4, v5, v3}}};
-        for (std::array<int, 4> tet : tets)
+    std::vector<double> material;
+    for (int l = 0; l < layers; ++l)
+        for (const auto& triangle : surface.triangles)
         {
-            if (signedVolume(wall.mesh.points, tet) < 0.0)
-                std::swap(tet[1], tet[2]);
-            if (signedVolume(wall.mesh.points, tet) <= 0.0)
-                ++wall.inverted;
-            wall.mesh.tets.push_back(tet);
+            std::array<int, 3> t = triangle;
+            std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+            const int v0 = t[0] + l * n, v1 = t[1] + l * n, v2 = t[2] + l * n, v3 = v0 + n, v4 = v1 + n, v5 = v2 + n;
+            const std::array<std::array<int, 4>, 3> tets =
+                v1 < v2 ? std::array<std::array<int, 4>, 3>{{{v0, v1, v2, v5}, {v0, v1, v5, v4}, {v0, v4, v5, v3}}}
+                        : std::array<std::array<int, 4>, 3>{{{v0, v1, v2, v4}, {v0, v4, v2, v5}, {v0, v4, v5, v3}}};
+            // The inner layer is thrombus where the prism's lumen corners have 1.5 wall thicknesses to the outer
+            // wall on average (half a wall thickness of thrombus at least).
+            const double meanThrombus = (thrombus[std::size_t(t[0])] + thrombus[std::size_t(t[1])] + thrombus[std::size_t(t[2])]) / 3.0;
+            const bool isThrombus = layers == 2 && l == 0 && meanThrombus >= 0.5 * thicknessMm;
+            for (std::array<int, 4> tet : tets)
+            {
+                if (signedVolume(wall.mesh.points, tet) < 0.0)
+                    std::swap(tet[1], tet[2]);
+                if (signedVolume(wall.mesh.points, tet) <= 0.0)
+                    ++wall.inverted;
+                wall.mesh.tets.push_back(tet);
+                material.push_back(isThrombus ? 1.0 : 0.0);
+                wall.thrombusElements += isThrombus;
+            }
         }
-    }
+    if (outerWall)
+        wall.mesh.cellFields["material"] = material;
     std::vector<double> layer(wall.mesh.points.size(), 0.0), endSet(wall.mesh.points.size(), 0.0);
     wall.endNodes.assign(ends.size(), {});
     for (int v = 0; v < n; ++v)
     {
-        layer[std::size_t(n + v)] = 1.0;
+        for (int l = 1; l <= layers; ++l)
+            layer[std::size_t(l * n + v)] = double(l) / layers;
         if (endOf[std::size_t(v)] >= 0)
         {
             const int end = endOf[std::size_t(v)];
-            endSet[std::size_t(v)] = endSet[std::size_t(n + v)] = double(end + 1);
-            wall.endNodes[std::size_t(end)].push_back(v);
-            wall.endNodes[std::size_t(end)].push_back(n + v);
+            for (int l = 0; l <= layers; ++l)
+            {
+                endSet[std::size_t(l * n + v)] = double(end + 1);
+                wall.endNodes[std::size_t(end)].push_back(l * n + v);
+            }
         }
     }
     wall.mesh.pointFields["wall_layer"] = layer;

@@ -61,10 +61,12 @@ std::vector<ParameterSpec> femParameters()
         {"entropy_end", "Fracture entropy end", "nats", 3.9, 0, 20, thesis,
          "Stop once the fracture entropy passes this (3.9: about 50 torn elements' worth)."},
         {"pressure_mmhg", "Blood pressure", "mmHg", 120, 1, 400, physiological, "Systolic pressure on the lumen."},
-        {"wall_model", "Wall model", "", 1, 0, 1, physiological,
-         "1: quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall (nearly incompressible), "
-         "static equilibrium by load increments and Newton's method (CPU); 0: the Material group's law on linear "
-         "tets, a damped load path then the equilibrium (the earlier analysis; GPU path possible).",
+        {"wall_model", "Wall model", "", 0, 0, 1, physiological,
+         "1: quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall (nearly incompressible) "
+         "and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and "
+         "Newton's method (CPU; about 4 s per Newton update per 15,000 tets on 2 cores); 0: the Material group's "
+         "law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default "
+         "once its solve is fast enough for the workstation's walls.",
          ParameterSpec::Kind::Integer},
         {"wall_poisson_ratio", "Wall Poisson's ratio", "", 0.49, 0.45, 0.499, physiological,
          "Near incompressibility of the hyperelastic wall: its bulk modulus from the small-strain shear modulus "
@@ -187,8 +189,11 @@ std::vector<double> addRuptureIndex(FemRunResult& result, const SkeletonGraph& c
     const double thrombusCm = 0.1 * p.get("thrombus_mm");
     std::vector<double> strength(last.tets.size()), index(last.tets.size());
     std::size_t fromSac = 0;
+    const auto material = last.cellFields.find("material");
     for (std::size_t t = 0; t < last.tets.size(); ++t)
     {
+        if (material != last.cellFields.end() && material->second[t] > 0.5)
+            continue; // thrombus: no wall strength, index 0
         Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
         for (int node : last.tets[t])
             centroid += 0.25 * last.points[std::size_t(node)];
@@ -232,6 +237,10 @@ namespace {
 FemRunResult runLinearPhysiological(const TetMesh& wall, const ParameterSet& p, double pressure, const Progress& progress,
                                     const StepperFactory& stepper)
 {
+    if (const auto material = wall.cellFields.find("material"); material != wall.cellFields.end() &&
+        std::any_of(material->second.begin(), material->second.end(), [](double m) { return m > 0.5; }))
+        throw Error("this wall has an intraluminal thrombus layer, which the linear wall model (wall_model 0) cannot "
+                    "tell from the wall: run wall_model 1, or build the wall without --thrombus");
     FemRunSetup setup;
     setup.stepper = stepper;
     setup.wall = wall;
@@ -299,7 +308,12 @@ FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerli
     {
         StaticWallSetup setup;
         setup.wall = wall;
-        setup.materials = {HyperelasticMaterial::raghavanVorp2000(p.get("wall_poisson_ratio"))};
+        // The wall, and the intraluminal thrombus where the mesh has it (mesh wall with the sac: material 1).
+        setup.materials = {HyperelasticMaterial::raghavanVorp2000(p.get("wall_poisson_ratio")),
+                           HyperelasticMaterial::wang2001Thrombus(p.get("wall_poisson_ratio"))};
+        if (const auto material = wall.cellFields.find("material"); material != wall.cellFields.end())
+            for (double m : material->second)
+                setup.elementMaterial.push_back(m > 0.5 ? 1 : 0);
         setup.pressurePa = pressure;
         setup.loadIncrements = int(p.get("load_increments"));
         setup.tolerance = p.get("equilibrium_tolerance");

@@ -128,8 +128,11 @@ SacPeak peakInSac(const TetMesh& frameMm, const std::vector<double>& elementValu
     std::vector<double> inside;
     std::vector<double> nodalSum(frameMm.points.size(), 0.0), nodalVolume(frameMm.points.size(), 0.0);
     std::vector<char> sacNode(frameMm.points.size(), 0);
+    const auto material = frameMm.cellFields.find("material"); // the wall's figures: thrombus (1) left out
     for (std::size_t t = 0; t < frameMm.tets.size(); ++t)
     {
+        if (material != frameMm.cellFields.end() && material->second[t] > 0.5)
+            continue;
         const auto& tet = frameMm.tets[t];
         const auto corner = [&](int k) { return frameMm.points[std::size_t(tet[std::size_t(k)])]; };
         const double volume = std::abs((corner(1) - corner(0)).cross(corner(2) - corner(0)).dot(corner(3) - corner(0))) / 6.0;

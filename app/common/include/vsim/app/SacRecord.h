@@ -7,6 +7,7 @@
 #include "vsim/sim/fem/SacPeaks.h"
 #include "vsim/study/Study.h"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -26,6 +27,12 @@ std::map<std::string, double> newestSacFigures(const study::Study& study, std::s
 /// without it), and the sac's local outer diameter and thrombus thickness along a point's radius (for the wall
 /// strength); nothing when the study has no sac.
 std::optional<sim::fem::SacRegion> newestSacRegion(const study::Study& study, const SkeletonGraph& centerlines);
+
+/// The sac label's outer wall seen from a lumen vertex (mesh::OuterWallDistance): the distance along the normal
+/// to the first point outside its labels (1, 4, 5) once thrombus or wall (4, 5) was crossed, in steps of a quarter
+/// of the smallest voxel side up to 40 mm; -1 where the normal meets no thrombus or wall within 5 mm (outside the
+/// sac).
+std::function<double(const Eigen::Vector3d&, const Eigen::Vector3d&)> sacOuterWallDistance(const LabelVolume& sacLabels);
 
 /// The newest label that is a lumen (not a sac's labels); "" when none.
 std::string newestLumenLabel(const study::Study& study);

@@ -26,9 +26,10 @@ struct WallMeshBuild
 };
 
 /// Lumen surface of `label` decimated to `targetVertices`, remeshed (edges of the budget, 0.8 of the local radius
-/// in thin vessels), and the wall of `thicknessMm` opened at the centerline ends.
+/// in thin vessels), and the wall of `thicknessMm` opened at the centerline ends; with the AAA sac's labels
+/// (`sacLabels`: 1 lumen, 4 thrombus, 5 wall) the intraluminal thrombus as its own layer inside the sac.
 WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& centerlines, double thicknessMm,
-                            double targetVertices, const Progress& progress = {});
+                            double targetVertices, const Progress& progress = {}, const LabelVolume* sacLabels = nullptr);
 
 /// A thin "cloth-type" sheet (thesis ch. 4.7.3: 0.5 mm; 5 / 20 / 100 MPa) of width x length mm in the x-y plane,
 /// `cellMm` cells, one element layer of `thicknessMm`, as a wall: the lower face is the loaded side (wall_layer
@@ -44,7 +45,8 @@ mesh::MarkedWall asWall(TetMesh mesh, const mesh::WallBoundarySelection& selecti
 /// Adds the wall to the study (provenance: label and centerlines, thickness, budget; quality as attributes);
 /// returns its id. The study is not saved.
 std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const std::string& labelId,
-                        const std::string& centerlinesId, double thicknessMm, double targetVertices);
+                        const std::string& centerlinesId, double thicknessMm, double targetVertices,
+                        const std::string& sacId = {});
 
 /// Where a wall run's implicit steps run.
 struct WallBackend

@@ -6,6 +6,10 @@
 // through the wall. The closed ends of the segmented lumen are cut open one vessel radius inside each centerline
 // endpoint (triangles beyond the cut plane are removed, so the open rim follows the triangles); the nodes of each
 // open end form a fixed set. All in mm (patient frame).
+// With the aneurysm sac's outer wall (an OuterWallDistance from the sac label) the wall is two prism layers: the
+// wall of the given thickness inside the outer contour, and between it and the lumen the intraluminal thrombus
+// (cell field "material" 1; the wall 0). Where the outer contour lies less than 1.5 wall thicknesses from the lumen
+// (no thrombus to speak of, or outside the sac) both layers are wall, the inner one half a wall thickness.
 
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TetMesh.h"
@@ -14,6 +18,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,9 +35,14 @@ struct VesselEnd
 /// The ends of a centerline graph: its degree-1 nodes, with the direction of the last few mm of their edge.
 std::vector<VesselEnd> vesselEnds(const SkeletonGraph& centerlines);
 
+/// The sac's outer wall seen from the lumen: for a lumen vertex (mm) and its outward unit normal the distance (mm)
+/// along the normal to the outer wall surface, negative where the vertex is not in the sac.
+using OuterWallDistance = std::function<double(const Eigen::Vector3d& pointMm, const Eigen::Vector3d& normal)>;
+
 struct WallMesh
 {
-    /// The wall (mm). Point fields: "wall_layer" (0 lumen side, 1 outside), "end_set" (0 free, k for end k - 1).
+    /// The wall (mm). Point fields: "wall_layer" (0 lumen side, 0.5 the thrombus-wall interface, 1 outside),
+    /// "end_set" (0 free, k for end k - 1); with a thrombus layer the cell field "material" (0 wall, 1 thrombus).
     TetMesh mesh;
     std::vector<std::vector<int>> endNodes; ///< per end, its nodes (both layers)
     double minDihedralDeg = 0.0;            ///< smallest dihedral angle of any element
@@ -40,12 +50,16 @@ struct WallMesh
     std::size_t slivers = 0;                ///< elements with a dihedral angle under 5 degrees
     Eigen::Vector3d worstElementMm = Eigen::Vector3d::Zero(); ///< centroid of the element with the smallest angle
     std::size_t inverted = 0;               ///< elements that could not be oriented positively (offset folded)
+    std::size_t thrombusElements = 0;       ///< elements of the thrombus material
+    double maxThrombusMm = 0.0;             ///< thickest thrombus layer (mm)
     std::vector<std::string> warnings;
 };
 
 /// Builds the wall of `lumen` (closed or open, outward-oriented triangles, mm) with `thicknessMm`, opening it at
-/// `ends`. Throws vsim::Error for an empty surface, a thickness outside 0.1..10 mm, or an end that cuts nothing.
-WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm);
+/// `ends`; with `outerWall` the thrombus layer inside the sac (above). Throws vsim::Error for an empty surface, a
+/// thickness outside 0.1..10 mm, or an end that cuts nothing.
+WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm,
+                       const OuterWallDistance& outerWall = {});
 
 /// The faces of the wall on the lumen side, oriented out of the solid (into the lumen): where blood pressure acts.
 std::vector<std::array<int, 3>> lumenFaces(const TetMesh& wall);

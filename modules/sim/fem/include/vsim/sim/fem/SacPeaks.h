@@ -49,6 +49,7 @@ struct SacPeak
 
 /// Throws vsim::Error when no element lies in the sac (the sac does not belong to this wall) or the field's size
 /// is not the mesh's element count.
+/// Elements of the thrombus (cell field "material" 1, where the frame has one) are left out: the wall's figures.
 SacPeak peakInSac(const TetMesh& frameMm, const std::vector<double>& elementValues, const SacRegion& sac,
                   const SkeletonGraph& centerlines);
 

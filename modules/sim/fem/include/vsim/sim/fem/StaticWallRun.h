@@ -24,20 +24,21 @@ namespace vsim::sim::fem {
 struct StaticWallSetup
 {
     TetMesh wall;                                   ///< mm; point fields wall_layer and end_set
-    std::vector<HyperelasticMaterial> materials;    ///< [0]: the wall
+    std::vector<HyperelasticMaterial> materials;    ///< [0]: the wall, [1]: the thrombus (where elements have it)
     std::vector<std::uint8_t> elementMaterial;      ///< per tet, an index into materials; empty: all the wall
     double pressurePa = 0.0;
     int loadIncrements = 1;                         ///< first try; halved where one fails
     double tolerance = 1e-6;                        ///< the last increment's relative force residual
     double intermediateTolerance = 1e-3;
-    int maxUpdatesPerIncrement = 30;
+    int maxUpdatesPerIncrement = 15;                ///< Newton converges in 5-10 or not at all
 };
 
 /// Runs the setup. Throws vsim::Error for a mesh that is not a wall or a bad material, vsim::Cancelled when
 /// cancelled (progress follows the Newton updates). An increment that does not converge (or inverts every step)
-/// even at 1/64 of the pressure stops the run as a guard with the last converged frame kept and the residual it
-/// reached in the status. Metrics as runFem's, with element_order 2, quadratic_nodes, load_increments (those
-/// converged), load_cutbacks and equilibrium_updates.
+/// even at 1/16 of the pressure stops the run as a guard with the last converged frame kept and the residual it
+/// reached in the status. Metrics as runFem's (the peaks over the wall's elements, material 0), with element_order
+/// 2, quadratic_nodes, thrombus_elements, load_increments (those converged), load_cutbacks and equilibrium_updates.
+/// The frames carry the wall's "material" cell field when it has one.
 FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progress = {});
 
 } // namespace vsim::sim::fem
