@@ -1,8 +1,8 @@
 # Mesh convergence of the wall stress in the sac (issue 16 item 5), label bench: the patient-like AAA phantom of
 # cli_sac (256 x 256 x 200, 0.7 x 0.7 x 1 mm, seed 2) through the command line (import, aorta, sac, skeleton,
 # centerlines), its wall meshed at three refinements (lumen surface target vertices VERTICES, default
-# 1500;3000;6000; the wall one prism layer of 1.5 mm throughout), the default physiological analysis (quadratic
-# tets, Raghavan-Vorp 2000, 120 mmHg, force residual 1e-6) on each: the sac's 99th-percentile and nodal-maximum von
+# 1500;3000;6000; the wall one prism layer of 1.5 mm throughout, no thrombus layer), the quadratic physiological
+# analysis (wall_model 1: quadratic tets, Raghavan-Vorp 2000, 120 mmHg, force residual 1e-6) on each: the sac's 99th-percentile and nodal-maximum von
 # Mises stress, their change between refinements (the issue asks <= 5 % between the two finest), elements, smallest
 # dihedral angle, Newton updates and time. Prints one JSON object; exit 1 when a run does not converge.
 #   cmake -DCLI=<vascusim-cli> -DWORK=<folder> [-DVERTICES="1500;3000;6000"] -P bench_fem_mesh_convergence.cmake
@@ -26,7 +26,7 @@ foreach(vertices ${VERTICES})
     string(JSON tets GET "${wall}" tets)
     string(JSON dihedral GET "${wall}" min_dihedral_deg)
     string(TIMESTAMP start "%s")
-    run_cli(0 run simulate fem --study ${WORK}/aaa.vsim --protocol physiological --mesh ${mesh_id})
+    run_cli(0 run simulate fem --study ${WORK}/aaa.vsim --protocol physiological --mesh ${mesh_id} --param wall_model=1)
     string(TIMESTAMP stop "%s")
     math(EXPR seconds "${stop} - ${start}")
     foreach(key sac_pws_p99_kpa sac_pws_nodal_max_kpa run_force_residual equilibrium_updates quadratic_nodes sac_elements
