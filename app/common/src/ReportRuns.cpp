@@ -30,7 +30,8 @@ SolverInfo solverOf(const study::Artifact& run)
                     ? "Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan & Vorp 2000 hyperelastic AAA "
                       "wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; "
                       "the static equilibrium by Newton's method (sparse LU) to the force tolerance. The imaged "
-                      "geometry is taken as unloaded (CT shows the vessel at its pressure); no thrombus layer yet."
+                      "geometry is taken as unloaded (CT shows the vessel at its pressure); the intraluminal thrombus, where the "
+                      "wall mesh has it, as its own layer (Wang et al. 2001)."
                     : "Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), "
                       "lumped mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. "
                       "4); the physiological protocol's figures from the static equilibrium after the load path.",
