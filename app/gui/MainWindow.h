@@ -191,7 +191,9 @@ private:
     void createWallMenu();
     void createDrugMenu();
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
-    void showWallStress(const TetMesh& frame, const RunStatus& status);
+    /// The wall-stress frame of run artifact `run` in the 3D view: its legend says when it did not converge, the
+    /// sac's PWS and PWRI are called out.
+    void showWallStress(const TetMesh& frame, const study::Artifact& run);
     void editVesselParameters();
     /// Overlays a label in the three MPRs (an empty one clears them).
     void showLabelOverlay(const LabelVolume& label);

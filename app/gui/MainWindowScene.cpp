@@ -85,7 +85,7 @@ void MainWindow::refreshScene()
     {
     case SceneContent::Main::WallRun:
         if (const auto frame = m_scene.wallFrames.find(content.wallRun); frame != m_scene.wallFrames.end())
-            showWallStress(frame->second, app::runStatusOf(m_document.study().artifact(content.wallRun)));
+            showWallStress(frame->second, m_document.study().artifact(content.wallRun));
         volume = false;
         break;
     case SceneContent::Main::NetworkRun:

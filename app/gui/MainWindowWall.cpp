@@ -23,6 +23,7 @@
 #include <QStatusBar>
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace vsim::gui {
 
@@ -119,11 +120,16 @@ bool MainWindow::simulateWall(const std::string& protocol)
         });
 }
 
-void MainWindow::showWallStress(const TetMesh& frame, const RunStatus& status)
+void MainWindow::showWallStress(const TetMesh& frame, const study::Artifact& run)
 {
+    const RunStatus status = app::runStatusOf(run);
     const TriangleMesh surface = app::frameSurface(frame, "von_mises_kpa");
     const auto& stress = surface.pointFields.at("von_mises_kpa");
-    const double high = stress.empty() ? 1.0 : *std::max_element(stress.begin(), stress.end());
+    double high = stress.empty() ? 1.0 : *std::max_element(stress.begin(), stress.end());
+    // The colour scale covers the sac's figures (the surface average runs below the element peaks), as the report's.
+    for (const char* key : {"sac_pws_p99_kpa", "sac_pws_nodal_max_kpa"})
+        if (const auto figure = run.attributes.find(key); figure != run.attributes.end())
+            high = std::max(high, std::atof(figure->second.c_str()));
     viz::VolumeView3D* view = m_views->volumeView();
     view->clearSurfaces();
     view->clearLines();
@@ -132,6 +138,7 @@ void MainWindow::showWallStress(const TetMesh& frame, const RunStatus& status)
                           : !status.complete() ? tr("von Mises (kPa), STOPPED EARLY")
                                                : tr("von Mises (kPa)");
     view->showFieldSurface(surface, "von_mises_kpa", 0.0, std::max(high, 1e-6), title);
+    view->showCallouts(app::sacPeakCallouts(run)); // where the sac's PWS and PWRI are
 }
 
 bool MainWindow::startInteractiveWall()

@@ -197,25 +197,9 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
             for (const char* key : {"sac_pws_p99_kpa", "sac_pws_nodal_max_kpa"})
                 if (const auto figure = runMetric(*physiological, key, "", "", 1.0))
                     high = std::max(high, figure->value);
-            // The sac's peaks called out where they are (the nodal maxima's places).
-            std::vector<viz::SnapshotMark> marks;
-            for (const auto& [prefix, name, unit] : {std::tuple<std::string, std::string, std::string>{"sac_pws", "PWS", " kPa"},
-                                                     {"sac_pwri", "PWRI", ""}})
-            {
-                const auto x = runMetric(*physiological, prefix + "_x_mm", "", "", 1.0),
-                           y = runMetric(*physiological, prefix + "_y_mm", "", "", 1.0),
-                           z = runMetric(*physiological, prefix + "_z_mm", "", "", 1.0),
-                           value = runMetric(*physiological, prefix + "_nodal_max" + (unit.empty() ? "" : "_kpa"), "", "", 1.0),
-                           clock = runMetric(*physiological, prefix + "_clock_h", "", "", 1.0);
-                // Seen from the front, 3 to 9 o'clock (seen from the feet) is the far, posterior side.
-                const bool behind = clock && clock->value > 3.0 && clock->value < 9.0;
-                if (x && y && z && value)
-                    marks.push_back({Eigen::Vector3d(x->value, y->value, z->value),
-                                     name + " " + value->text + unit + (clock ? ", " + clock->text + " h" : "") +
-                                         (behind ? " (posterior)" : "")});
-            }
             return viz::snapshotSurface(surface, "von_mises_kpa", {"von Mises [kPa]", 0.0, high},
-                                        QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4), marks);
+                                        QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4),
+                                        sacPeakCallouts(*physiological));
         }));
         runs.push_back(physiological);
     }

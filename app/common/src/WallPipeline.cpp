@@ -1,5 +1,6 @@
 #include "vsim/app/WallPipeline.h"
 
+#include "ReportSupport.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/app/SacRecord.h"
 #include "vsim/core/Error.h"
@@ -19,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace vsim::app {
 std::vector<ParameterSpec> wallMeshParameters()
@@ -134,6 +136,25 @@ std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const s
                                      {"thrombus_elements", std::to_string(build.wall.thrombusElements)},
                                      {"max_thrombus_mm", numberText(build.wall.maxThrombusMm)}});
     return id;
+}
+
+std::vector<viz::Callout> sacPeakCallouts(const study::Artifact& run)
+{
+    std::vector<viz::Callout> callouts;
+    for (const auto& [prefix, name, unit] : {std::tuple<std::string, std::string, std::string>{"sac_pws", "PWS", " kPa"},
+                                             {"sac_pwri", "PWRI", ""}})
+    {
+        const auto metric = [&](const std::string& key) { return detail::runMetric(run, prefix + key, "", "", 1.0); };
+        const auto x = metric("_x_mm"), y = metric("_y_mm"), z = metric("_z_mm"),
+                   value = metric(unit.empty() ? "_nodal_max" : "_nodal_max_kpa"), hours = metric("_clock_h");
+        if (!x || !y || !z || !value)
+            continue;
+        const bool behind = hours && hours->value > 3.0 && hours->value < 9.0; // the far side seen from the front
+        callouts.push_back({Eigen::Vector3d(x->value, y->value, z->value),
+                            name + " " + value->text + unit + (hours ? ", " + hours->text + " h" : "") +
+                                (behind ? " (posterior)" : "")});
+    }
+    return callouts;
 }
 
 WallBackend chooseWallBackend(const std::string& requested, const std::string& protocol, const ParameterSet& parameters)

@@ -3,7 +3,9 @@
 #include "vsim/core/Error.h"
 #include "vsim/interop/VtkMesh.h"
 
+#include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -12,7 +14,11 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkProperty2D.h>
 #include <vtkScalarBarActor.h>
+#include <vtkSphereSource.h>
+#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTubeFilter.h>
 
@@ -90,6 +96,49 @@ vtkSmartPointer<vtkPolyData> fieldTubes(const std::vector<std::vector<Eigen::Vec
     tubes->CappingOn();
     tubes->Update();
     return tubes->GetOutput();
+}
+
+std::vector<vtkSmartPointer<vtkProp>> calloutProps(const std::vector<Callout>& callouts, int fontSize, int widthPixels,
+                                                   int heightPixels)
+{
+    std::vector<vtkSmartPointer<vtkProp>> props;
+    for (std::size_t m = 0; m < callouts.size(); ++m)
+    {
+        // A caption left of the surface at the point's height (display offset from the point), its line to it.
+        auto caption = vtkSmartPointer<vtkCaptionActor2D>::New();
+        const Eigen::Vector3d& p = callouts[m].pointMm;
+        caption->SetAttachmentPoint(p.x(), p.y(), p.z());
+        caption->SetCaption(callouts[m].text.c_str());
+        caption->BorderOff();
+        caption->LeaderOn();
+        caption->ThreeDimensionalLeaderOff();
+        caption->GetProperty()->SetColor(0.0, 0.0, 0.0);
+        caption->GetProperty()->SetLineWidth(2.0f);
+        vtkTextProperty* text = caption->GetCaptionTextProperty();
+        text->SetColor(0.0, 0.0, 0.0);
+        text->SetFontSize(fontSize);
+        text->ShadowOff();
+        text->ItalicOff();
+        text->BoldOn();
+        caption->GetTextActor()->SetTextScaleModeToNone();
+        caption->SetPosition(-0.38 * widthPixels, -0.02 * heightPixels - 0.03 * double(m) * heightPixels);
+        caption->SetWidth(0.3);
+        caption->SetHeight(0.06);
+        props.push_back(caption);
+        // A dark ball on the point, seen where the point faces the viewer (mm: 2.5).
+        auto ball = vtkSmartPointer<vtkSphereSource>::New();
+        ball->SetCenter(p.x(), p.y(), p.z());
+        ball->SetRadius(2.5);
+        ball->SetThetaResolution(16);
+        ball->SetPhiResolution(16);
+        auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+        mapper->SetInputConnection(ball->GetOutputPort());
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        actor->GetProperty()->SetColor(0.1, 0.1, 0.1);
+        props.push_back(actor);
+    }
+    return props;
 }
 
 vtkSmartPointer<vtkScalarBarActor> newLegend()

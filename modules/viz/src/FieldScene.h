@@ -4,6 +4,7 @@
 // a surface or a vessel tree carrying a field, its blue-to-red mapper, the colour legend, the anterior camera.
 
 #include "vsim/core/TriangleMesh.h"
+#include "vsim/viz/Callout.h"
 
 #include <Eigen/Core>
 
@@ -14,6 +15,7 @@
 #include <vector>
 
 class vtkCamera;
+class vtkProp;
 class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkScalarBarActor;
@@ -31,6 +33,11 @@ vtkSmartPointer<vtkPolyData> fieldSurface(const TriangleMesh& surface, const std
 vtkSmartPointer<vtkPolyData> fieldTubes(const std::vector<std::vector<Eigen::Vector3d>>& lines,
                                         const std::vector<double>& values,
                                         const std::vector<std::array<double, 2>>& radiiMm);
+
+/// The props of `callouts` (Callout.h) for a view `widthPixels` x `heightPixels` with text of `fontSize`: per
+/// callout a caption (2D, with its line) and a ball (3D).
+std::vector<vtkSmartPointer<vtkProp>> calloutProps(const std::vector<Callout>& callouts, int fontSize, int widthPixels,
+                                                   int heightPixels);
 
 /// A vertical colour legend with five labels.
 vtkSmartPointer<vtkScalarBarActor> newLegend();

@@ -4,11 +4,6 @@
 #include "vsim/core/Error.h"
 
 #include <vtkActor.h>
-#include <vtkCaptionActor2D.h>
-#include <vtkProperty.h>
-#include <vtkProperty2D.h>
-#include <vtkSphereSource.h>
-#include <vtkTextActor.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -29,7 +24,7 @@ namespace {
 
 /// Renders `polyData` (its scalars in point or cell data) offscreen from the front, framed with a margin.
 QImage render(vtkPolyData* polyData, bool cellScalars, const SnapshotColouring& colouring, QSize pixels,
-              const std::vector<SnapshotMark>& marks = {})
+              const std::vector<Callout>& callouts = {})
 {
     if (!canRenderSnapshots())
         throw Error("3D snapshots need a display (set DISPLAY, or run under xvfb-run)");
@@ -60,41 +55,8 @@ QImage render(vtkPolyData* polyData, bool cellScalars, const SnapshotColouring& 
     legend->SetLabelFormat("%.3g");
     legend->SetPosition(0.86, 0.15);
     renderer->AddViewProp(legend);
-    for (std::size_t m = 0; m < marks.size(); ++m)
-    {
-        // A caption left of the surface at the point's height, a line from it to the point.
-        auto caption = vtkSmartPointer<vtkCaptionActor2D>::New();
-        const Eigen::Vector3d& p = marks[m].pointMm;
-        caption->SetAttachmentPoint(p.x(), p.y(), p.z());
-        caption->SetCaption(marks[m].text.c_str());
-        caption->BorderOff();
-        caption->LeaderOn();
-        caption->ThreeDimensionalLeaderOff();
-        caption->GetProperty()->SetColor(0.0, 0.0, 0.0);
-        caption->GetProperty()->SetLineWidth(2.0f);
-        caption->GetCaptionTextProperty()->SetColor(0.0, 0.0, 0.0);
-        caption->GetCaptionTextProperty()->SetFontSize(fontSize);
-        caption->GetCaptionTextProperty()->ShadowOff();
-        caption->GetCaptionTextProperty()->ItalicOff();
-        caption->GetCaptionTextProperty()->BoldOn();
-        caption->GetTextActor()->SetTextScaleModeToNone();
-        caption->SetPosition(-0.38 * pixels.width(), -0.02 * pixels.height() - 0.03 * double(m) * pixels.height());
-        caption->SetWidth(0.3);
-        caption->SetHeight(0.06);
-        renderer->AddViewProp(caption);
-        // And a dark ball on the point (seen where the point faces the viewer).
-        auto ball = vtkSmartPointer<vtkSphereSource>::New();
-        ball->SetCenter(p.x(), p.y(), p.z());
-        ball->SetRadius(2.5);
-        ball->SetThetaResolution(16);
-        ball->SetPhiResolution(16);
-        auto ballMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-        ballMapper->SetInputConnection(ball->GetOutputPort());
-        auto ballActor = vtkSmartPointer<vtkActor>::New();
-        ballActor->SetMapper(ballMapper);
-        ballActor->GetProperty()->SetColor(0.1, 0.1, 0.1);
-        renderer->AddActor(ballActor);
-    }
+    for (const vtkSmartPointer<vtkProp>& prop : detail::calloutProps(callouts, fontSize, pixels.width(), pixels.height()))
+        renderer->AddViewProp(prop);
 
     double bounds[6];
     polyData->GetBounds(bounds);
@@ -140,10 +102,10 @@ bool canRenderSnapshots()
 }
 
 QImage snapshotSurface(const TriangleMesh& surface, const std::string& field, const SnapshotColouring& colouring,
-                       QSize pixels, const std::vector<SnapshotMark>& marks)
+                       QSize pixels, const std::vector<Callout>& callouts)
 {
     vtkSmartPointer<vtkPolyData> polyData = detail::fieldSurface(surface, field);
-    return render(polyData, false, colouring, pixels, marks);
+    return render(polyData, false, colouring, pixels, callouts);
 }
 
 QImage snapshotTubes(const std::vector<std::vector<Eigen::Vector3d>>& lines, const std::vector<double>& values,

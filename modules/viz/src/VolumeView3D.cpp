@@ -50,6 +50,8 @@ struct VolumeView3D::Scene
     vtkSmartPointer<vtkVolume> volume = vtkSmartPointer<vtkVolume>::New();
     std::vector<vtkSmartPointer<vtkActor>> surfaces;
     std::vector<vtkSmartPointer<vtkActor>> lines;
+    std::vector<vtkSmartPointer<vtkProp>> callouts;
+    std::size_t calloutCount = 0;
     vtkSmartPointer<vtkActor> fieldSurface, fieldLines, tubelets;
     vtkSmartPointer<vtkRenderer> overlay; // layer 1: the tubelets on top of the vessels
     int tubeletQuads = 0;
@@ -123,8 +125,23 @@ void VolumeView3D::addSurface(const TriangleMesh& surface, const QColor& colour)
     update();
 }
 
+void VolumeView3D::showCallouts(const std::vector<Callout>& callouts)
+{
+    for (const auto& prop : m_scene->callouts)
+        renderer()->RemoveViewProp(prop);
+    const int fontSize = std::max(12, height() / 45);
+    m_scene->callouts = detail::calloutProps(callouts, fontSize, width(), height());
+    for (const auto& prop : m_scene->callouts)
+        renderer()->AddViewProp(prop);
+    m_scene->calloutCount = callouts.size();
+    update();
+}
+
+std::size_t VolumeView3D::calloutCount() const { return m_scene->calloutCount; }
+
 void VolumeView3D::clearSurfaces()
 {
+    showCallouts({});
     for (const auto& actor : m_scene->surfaces)
         renderer()->RemoveActor(actor);
     m_scene->surfaces.clear();

@@ -3,6 +3,7 @@
 // The wall-mechanics steps as the CLI and the workstation both run them: the wall mesh of a study's vessel label
 // and centerlines, and a wall run added to the study, each with its provenance.
 
+#include "vsim/viz/Callout.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/core/Progress.h"
 #include "vsim/mesh/WallBoundary.h"
@@ -55,6 +56,11 @@ struct WallBackend
     std::string device;               ///< the GPU, for "cuda"
     sim::fem::StepperFactory stepper; ///< empty for the CPU
 };
+
+/// The sac's PWS and PWRI nodal maxima of a physiological run artifact as callouts for 3D pictures: "PWS 242 kPa,
+/// 4.04 h (posterior)" (3 to 9 o'clock seen from the feet is the far side from the front); none without the sac's
+/// figures.
+std::vector<viz::Callout> sacPeakCallouts(const study::Artifact& run);
 
 /// Resolves `requested` for `protocol`: "cpu"; "cuda" (throws vsim::Error when this build has no CUDA backend,
 /// there is no device, the run is the quadratic hyperelastic wall, or the material model is not the co-rotational

@@ -6,6 +6,7 @@
 // xvfb-run on a server): canRenderSnapshots() says whether there is one, and the snapshots throw vsim::Error without.
 
 #include "vsim/core/TriangleMesh.h"
+#include "vsim/viz/Callout.h"
 
 #include <Eigen/Core>
 
@@ -24,20 +25,12 @@ struct SnapshotColouring
     double low = 0.0, high = 1.0;
 };
 
-/// A place called out on a snapshot: a caption left of the surface at the point's height with a line to it, and
-/// a dark ball on the point (hidden where the point lies on the far side: say so in the text).
-struct SnapshotMark
-{
-    Eigen::Vector3d pointMm = Eigen::Vector3d::Zero();
-    std::string text; ///< "PWS 242 kPa"
-};
-
 /// Whether this process can open an offscreen OpenGL context (a display is set).
 bool canRenderSnapshots();
 
-/// The surface coloured by its point field `field`, with `marks` called out.
+/// The surface coloured by its point field `field`, with `callouts`.
 QImage snapshotSurface(const TriangleMesh& surface, const std::string& field, const SnapshotColouring& colouring,
-                       QSize pixels, const std::vector<SnapshotMark>& marks = {});
+                       QSize pixels, const std::vector<Callout>& callouts = {});
 
 /// Polylines (mm) as tubes of their radii (mm, linear along each), each coloured by its value.
 QImage snapshotTubes(const std::vector<std::vector<Eigen::Vector3d>>& lines, const std::vector<double>& values,

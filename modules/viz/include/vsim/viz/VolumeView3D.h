@@ -3,6 +3,7 @@
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TriangleMesh.h"
+#include "vsim/viz/Callout.h"
 #include "vsim/viz/VtkView.h"
 
 #include <QColor>
@@ -38,6 +39,10 @@ public:
     /// titled `legendTitle` (units included); replaces any earlier coloured surface.
     void showFieldSurface(const TriangleMesh& surface, const std::string& field, double low, double high,
                           const QString& legendTitle);
+    /// Calls out places (Callout.h: the wall's peak stress and rupture index), replacing earlier callouts; cleared
+    /// with the surfaces.
+    void showCallouts(const std::vector<Callout>& callouts);
+    std::size_t calloutCount() const;
     /// The legend's title, empty when no coloured surface is shown.
     QString legendTitle() const;
     /// Opacity of every surface (0..1): lowered so that skeletons and centerlines inside show through.
