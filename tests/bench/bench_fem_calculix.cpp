@@ -116,15 +116,8 @@ StaticSolveReport solveUnderPressure(Model& model, const Faces& faces, double pr
     settings.linear = LinearSolver::SparseLu;
     settings.rotationStiffness = true;
     settings.directionalLineSearch = true;
-    const StaticSolveReport report = solveStatic(
-        model,
-        [&](const Eigen::VectorXd& x) {
-            Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
-            addPressureForces(faces, x, pressurePa, f);
-            return f;
-        },
-        fixed, settings,
-        [&](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) { subtractPressureStiffness(faces, x, pressurePa, tangent); });
+    const FollowerPressure load = followerPressure(faces, pressurePa);
+    const StaticSolveReport report = solveStatic(model, load.forces, fixed, settings, load.stiffness);
     if (!report.converged)
         throw Error("our Newton solve did not converge: force residual " + std::to_string(report.forceResidual));
     return report;
@@ -183,22 +176,6 @@ HyperelasticMaterial quadraticLaw(Law law)
 {
     return law == Law::RaghavanVorp ? HyperelasticMaterial::raghavanVorp2000(0.49)
                                     : HyperelasticMaterial::stVenantKirchhoff(kYoungMpa * 1e6, kPoisson);
-}
-
-/// A midpoint node is held where both its corners are.
-std::vector<std::uint8_t> quadraticFixed(const QuadraticTetMesh& mesh, const std::vector<std::uint8_t>& cornerFixed)
-{
-    std::vector<std::uint8_t> fixed(3 * mesh.points.size(), 0);
-    std::copy(cornerFixed.begin(), cornerFixed.end(), fixed.begin());
-    for (const auto& element : mesh.elements)
-        for (int e = 0; e < 6; ++e)
-        {
-            const int a = element[std::size_t(kQuadraticEdges[e][0])], b = element[std::size_t(kQuadraticEdges[e][1])];
-            if (cornerFixed[std::size_t(3 * a)] && cornerFixed[std::size_t(3 * b)])
-                for (int k = 0; k < 3; ++k)
-                    fixed[std::size_t(3 * element[std::size_t(4 + e)] + k)] = 1;
-        }
-    return fixed;
 }
 
 Solution solveQuadraticTets(const Problem& problem, const QuadraticTetMesh& mesh, const std::vector<std::uint8_t>& fixed)
@@ -319,7 +296,7 @@ int main(int argc, char** argv)
         if (problem.quadratic)
         {
             quadratic = quadraticFromLinear(problem.wall.points, problem.wall.tets);
-            fixed = quadraticFixed(quadratic, problem.fixed);
+            fixed = quadraticConstraints(quadratic, problem.fixed);
             job.nodesMm = quadratic.points;
             for (const auto& element : quadratic.elements)
                 job.elements.emplace_back(element.begin(), element.end());

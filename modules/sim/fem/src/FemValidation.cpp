@@ -273,15 +273,8 @@ ValidationResult lameQuadraticTest(const Progress&)
     settings.tolerance = 1e-8; // near incompressibility round-off floors the residual at about 5e-10
     settings.linear = LinearSolver::SparseLu;
     settings.rotationStiffness = true;
-    const StaticSolveReport report = solveStatic(
-        model,
-        [&](const Eigen::VectorXd& x) {
-            Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
-            addPressureForces(faces, x, pressure, f);
-            return f;
-        },
-        constrained, settings,
-        [&](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) { subtractPressureStiffness(faces, x, pressure, tangent); });
+    const FollowerPressure load = followerPressure(faces, pressure);
+    const StaticSolveReport report = solveStatic(model, load.forces, constrained, settings, load.stiffness);
     result.figures.push_back({"force residual after " + std::to_string(report.updates) + " Newton updates",
                               report.forceResidual, 0.0, 1e-8, ""});
 

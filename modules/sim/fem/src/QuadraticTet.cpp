@@ -55,6 +55,21 @@ std::vector<std::array<int, 6>> quadraticFaces(const QuadraticTetMesh& mesh,
     return faces;
 }
 
+std::vector<std::uint8_t> quadraticConstraints(const QuadraticTetMesh& mesh, const std::vector<std::uint8_t>& corners)
+{
+    std::vector<std::uint8_t> held(3 * mesh.points.size(), 0);
+    std::copy(corners.begin(), corners.end(), held.begin());
+    for (const auto& element : mesh.elements)
+        for (int e = 0; e < 6; ++e)
+        {
+            const int a = element[std::size_t(kQuadraticEdges[e][0])], b = element[std::size_t(kQuadraticEdges[e][1])];
+            for (int k = 0; k < 3; ++k)
+                if (corners[std::size_t(3 * a + k)] && corners[std::size_t(3 * b + k)])
+                    held[std::size_t(3 * element[std::size_t(4 + e)] + k)] = 1;
+        }
+    return held;
+}
+
 const std::array<Eigen::Vector4d, 4>& tetQuadraturePoints()
 {
     // (5 + 3 sqrt 5) / 20 and (5 - sqrt 5) / 20: exact for quadratic integrands.

@@ -41,20 +41,6 @@ TetMesh frameOf(const TetMesh& wall, const QuadraticFem& model)
     return frame;
 }
 
-/// Held degrees of freedom of the quadratic mesh: the wall's held corners and every edge midpoint between two.
-std::vector<std::uint8_t> quadraticHeld(const QuadraticTetMesh& mesh, const std::vector<std::uint8_t>& corners)
-{
-    std::vector<std::uint8_t> held(3 * mesh.points.size(), 0);
-    std::copy(corners.begin(), corners.end(), held.begin());
-    for (const auto& element : mesh.elements)
-        for (int e = 0; e < 6; ++e)
-            if (corners[std::size_t(3 * element[std::size_t(kQuadraticEdges[e][0])])] &&
-                corners[std::size_t(3 * element[std::size_t(kQuadraticEdges[e][1])])])
-                for (int k = 0; k < 3; ++k)
-                    held[std::size_t(3 * element[std::size_t(4 + e)] + k)] = 1;
-    return held;
-}
-
 } // namespace
 
 FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progress)
@@ -66,7 +52,7 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
     for (std::size_t i = 0; i < metres.size(); ++i)
         metres[i] = units::mmToM(1.0) * setup.wall.points[i];
     QuadraticFem model(quadraticFromLinear(metres, setup.wall.tets), setup.materials, setup.elementMaterial);
-    const std::vector<std::uint8_t> held = quadraticHeld(model.mesh(), conditions.fixed);
+    const std::vector<std::uint8_t> held = quadraticConstraints(model.mesh(), conditions.fixed);
     const std::vector<std::array<int, 6>> faces = quadraticFaces(model.mesh(), conditions.faceNodes(setup.wall.tets));
 
     FemRunResult result;
@@ -105,15 +91,8 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
         std::string failure;
         try
         {
-            report = solveStatic(
-                model,
-                [&](const Eigen::VectorXd& x) {
-                    Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
-                    addPressureForces(faces, x, pressure, f);
-                    return f;
-                },
-                held, settings,
-                [&](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) { subtractPressureStiffness(faces, x, pressure, tangent); });
+            const FollowerPressure load = followerPressure(faces, pressure);
+            report = solveStatic(model, load.forces, held, settings, load.stiffness);
         }
         catch (const Cancelled&)
         {

@@ -96,6 +96,35 @@ void subtractPressureStiffness(const std::vector<std::array<int, 6>>& faces, con
     }
 }
 
+namespace {
+
+template <std::size_t N>
+FollowerPressure followerPressureOn(const std::vector<std::array<int, N>>& faces, double pressurePa)
+{
+    FollowerPressure load;
+    load.forces = [faces, pressurePa](const Eigen::VectorXd& x) {
+        Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
+        addPressureForces(faces, x, pressurePa, f);
+        return f;
+    };
+    load.stiffness = [faces, pressurePa](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) {
+        subtractPressureStiffness(faces, x, pressurePa, tangent);
+    };
+    return load;
+}
+
+} // namespace
+
+FollowerPressure followerPressure(const std::vector<std::array<int, 3>>& faces, double pressurePa)
+{
+    return followerPressureOn(faces, pressurePa);
+}
+
+FollowerPressure followerPressure(const std::vector<std::array<int, 6>>& faces, double pressurePa)
+{
+    return followerPressureOn(faces, pressurePa);
+}
+
 void addGravityForces(const Eigen::VectorXd& mass, const Eigen::Vector3d& gravity, Eigen::VectorXd& forces)
 {
     for (Eigen::Index i = 0; i < mass.size(); i += 3)

@@ -37,6 +37,10 @@ QuadraticTetMesh quadraticFromLinear(const std::vector<Eigen::Vector3d>& points,
 std::vector<std::array<int, 6>> quadraticFaces(const QuadraticTetMesh& mesh,
                                                const std::vector<std::array<int, 3>>& cornerFaces);
 
+/// Constraints (3 per node, 1 = held) of the quadratic mesh from its corners' (`cornerConstraints`, 3 per corner
+/// node): corners keep theirs, an edge midpoint is held where both its corners are.
+std::vector<std::uint8_t> quadraticConstraints(const QuadraticTetMesh& mesh, const std::vector<std::uint8_t>& cornerConstraints);
+
 /// The 4-point rule of degree 2: barycentric coordinates (L0..L3) of the points; each weighs a quarter of the
 /// element's volume.
 const std::array<Eigen::Vector4d, 4>& tetQuadraturePoints();

@@ -4,6 +4,7 @@
 // current normals), and gravity on the lumped masses.
 
 #include "vsim/sim/fem/BlockSparseMatrix.h"
+#include "vsim/sim/fem/StaticSolver.h"
 
 #include <Eigen/Core>
 
@@ -34,6 +35,16 @@ void addPressureForces(const std::vector<std::array<int, 6>>& faces, const Eigen
 /// Its load stiffness: block (a, b) gains p int N_a (dN_b/deta [x_xi]x - dN_b/dxi [x_eta]x).
 void subtractPressureStiffness(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
                                double pressurePa, BlockSparseMatrix& tangent);
+
+/// A follower pressure on `faces` (3- or 6-node) as the static solver's load and its load stiffness (StaticSolver.h);
+/// the faces are copied.
+struct FollowerPressure
+{
+    ExternalForces forces;
+    ExternalStiffness stiffness;
+};
+FollowerPressure followerPressure(const std::vector<std::array<int, 3>>& faces, double pressurePa);
+FollowerPressure followerPressure(const std::vector<std::array<int, 6>>& faces, double pressurePa);
 
 /// Adds m g to `forces` for lumped masses `mass` (kg per component) and gravity `gravity` (m/s^2).
 void addGravityForces(const Eigen::VectorXd& mass, const Eigen::Vector3d& gravity, Eigen::VectorXd& forces);
