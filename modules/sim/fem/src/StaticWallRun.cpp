@@ -175,4 +175,45 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
     return result;
 }
 
+FemRunResult runStaticWallFromZeroPressure(const StaticWallSetup& setup, int maxIterations, double toleranceMm,
+                                           const Progress& progress)
+{
+    const std::vector<Eigen::Vector3d>& imaged = setup.wall.points;
+    StaticWallSetup unloaded = setup;
+    FemRunResult run;
+    double mismatch = 0.0;
+    int iteration = 0;
+    for (; iteration < maxIterations; ++iteration)
+    {
+        run = runStaticWall(unloaded, progress.subRange(double(iteration) / maxIterations,
+                                                        double(iteration + 1) / maxIterations));
+        if (!run.status.complete() || !run.status.converged())
+            return run;
+        // The loaded shape of this reference against the image (corner nodes; mm).
+        const TetMesh& loaded = run.frames.back();
+        const auto& dx = loaded.pointFields.at("displacement_x_mm");
+        const auto& dy = loaded.pointFields.at("displacement_y_mm");
+        const auto& dz = loaded.pointFields.at("displacement_z_mm");
+        mismatch = 0.0;
+        std::vector<Eigen::Vector3d> next = unloaded.wall.points;
+        for (std::size_t n = 0; n < next.size(); ++n)
+        {
+            const Eigen::Vector3d off = unloaded.wall.points[n] + Eigen::Vector3d(dx[n], dy[n], dz[n]) - imaged[n];
+            mismatch = std::max(mismatch, off.norm());
+            next[n] -= off;
+        }
+        if (mismatch <= toleranceMm)
+            break;
+        unloaded.wall.points = std::move(next);
+    }
+    // The figures on the imaged geometry: the frames' points are the image, their displacements from the
+    // unloaded reference.
+    for (TetMesh& frame : run.frames)
+        frame.points = imaged;
+    run.metrics["zero_pressure_iterations"] = double(std::min(iteration + 1, maxIterations));
+    run.metrics["zero_pressure_mismatch_mm"] = mismatch;
+    run.metrics["zero_pressure_converged"] = mismatch <= toleranceMm ? 1.0 : 0.0;
+    return run;
+}
+
 } // namespace vsim::sim::fem

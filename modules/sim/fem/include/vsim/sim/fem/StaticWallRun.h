@@ -33,6 +33,16 @@ struct StaticWallSetup
     int maxUpdatesPerIncrement = 15;                ///< Newton converges in 5-10 or not at all
 };
 
+/// The unloaded (zero-pressure) geometry by the backward displacement method (Bols et al. 2013, J Comput Appl Math
+/// 246:10, "A computational method to assess the in vivo stresses and unloaded configuration of patient-specific
+/// blood vessels"): the reference X is moved by the mismatch of its loaded shape with the image, X <- X - (x(X) -
+/// x_image), each x(X) a full runStaticWall, until the largest mismatch is under `toleranceMm` or `maxIterations`
+/// runs. The result is the last run's with the frames' points the imaged geometry (the displacement fields from the
+/// unloaded reference) and metrics zero_pressure_iterations, zero_pressure_mismatch_mm (largest, at the end) and
+/// zero_pressure_converged (0/1); a run that fails is returned as it is.
+FemRunResult runStaticWallFromZeroPressure(const StaticWallSetup& setup, int maxIterations, double toleranceMm,
+                                           const Progress& progress = {});
+
 /// Runs the setup. Throws vsim::Error for a mesh that is not a wall or a bad material, vsim::Cancelled when
 /// cancelled (progress follows the Newton updates). An increment that does not converge (or inverts every step)
 /// even at 1/16 of the pressure stops the run as a guard with the last converged frame kept and the residual it
