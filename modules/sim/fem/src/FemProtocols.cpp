@@ -175,6 +175,9 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const 
 namespace {
 
 constexpr double kDefaultReferenceDiameterMm = 20.0; ///< NORD's reference without a given one or a sac's neck
+/// The band next to the wall's held ends left out of the sac's peaks (mm): a clamped shell's bending boundary layer
+/// decays over about 2.4 sqrt(R t), 15 mm for R 25 mm and t 1.5 mm; 10 mm keeps most of a short sac.
+constexpr double kHeldEndBandMm = 10.0;
 
 /// Vande Geest 2006 strength per element and the rupture index stress / strength as cell fields of the last frame,
 /// the peak's metrics; returns the index. Inside the sac (with its local geometry) ILT and NORD are the sac's
@@ -261,8 +264,8 @@ FemRunResult runLinearPhysiological(const TetMesh& wall, const ParameterSet& p, 
     return runFem(setup, progress);
 }
 
-void addWallStrength(FemRunResult& result, const SkeletonGraph& centerlines, const ParameterSet& p,
-                     const SacRegion* sac, double pressure)
+void addWallStrength(FemRunResult& result, const TetMesh& wall, const SkeletonGraph& centerlines,
+                     const ParameterSet& p, const SacRegion* sac, double pressure)
 {
     // Wall strength per element (local diameter from the nearest centerline point) and the rupture index, when the
     // patient's sex and family history are given (the strength model needs both; neither is assumed).
@@ -280,11 +283,33 @@ void addWallStrength(FemRunResult& result, const SkeletonGraph& centerlines, con
     if (sac)
     {
         const TetMesh& frame = result.frames.back();
-        const SacPeak stressPeak = peakInSac(frame, frame.cellFields.at("von_mises_kpa"), *sac, centerlines);
+        // The held ends clamp the wall: their bending boundary layer (Saint-Venant) is no property of the sac. The
+        // sac's peaks leave out elements within kHeldEndBandMm of a held node (where the image ends near the sac).
+        std::vector<Eigen::Vector3d> held;
+        const auto& endSet = wall.pointFields.at("end_set");
+        for (std::size_t n = 0; n < wall.points.size(); ++n)
+            if (endSet[n] > 0.0)
+                held.push_back(wall.points[n]);
+        std::size_t nearEnds = 0;
+        SacRegion away = *sac;
+        away.contains = [&](const Eigen::Vector3d& p) {
+            if (!sac->contains(p))
+                return false;
+            for (const Eigen::Vector3d& h : held)
+                if ((h - p).squaredNorm() < kHeldEndBandMm * kHeldEndBandMm)
+                {
+                    ++nearEnds;
+                    return false;
+                }
+            return true;
+        };
+        const SacPeak stressPeak = peakInSac(frame, frame.cellFields.at("von_mises_kpa"), away, centerlines);
+        result.metrics["sac_elements_near_held_ends"] = double(nearEnds);
+        result.metrics["held_end_band_mm"] = kHeldEndBandMm;
         result.metrics["sac_elements"] = double(stressPeak.elements);
         std::vector<std::pair<std::string, SacPeak>> peaks{{"sac_pws", stressPeak}};
         if (!index.empty())
-            peaks.push_back({"sac_pwri", peakInSac(frame, index, *sac, centerlines)});
+            peaks.push_back({"sac_pwri", peakInSac(frame, index, away, centerlines)});
         for (const auto& [prefix, peak] : peaks)
         {
             const std::string unit = prefix == "sac_pws" ? "_kpa" : "";
@@ -329,7 +354,7 @@ FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerli
     }
     else
         result = runLinearPhysiological(wall, p, pressure, progress, stepper);
-    addWallStrength(result, centerlines, p, sac, pressure);
+    addWallStrength(result, wall, centerlines, p, sac, pressure);
     return result;
 }
 

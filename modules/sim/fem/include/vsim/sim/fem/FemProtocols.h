@@ -47,7 +47,8 @@ FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& parameter
 /// The physiological protocol; `centerlines` (mm, with radii) give each element's local diameter for the
 /// strength model. Adds metrics peak_rupture_index, its location, the strength there and max_diameter_mm; with a
 /// `sac`, the figures inside it (SacPeaks.h): sac_elements, sac_pws_{p99,nodal_max}_kpa and
-/// sac_pwri_{p99,nodal_max}, each nodal maximum's _x/_y/_z_mm, _along_centerline_mm and _clock_h.
+/// sac_pwri_{p99,nodal_max}, each nodal maximum's _x/_y/_z_mm, _along_centerline_mm and _clock_h; the sac's peaks
+/// leave out the elements within held_end_band_mm (10 mm) of the wall's held ends (sac_elements_near_held_ends).
 FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerlines, const ParameterSet& parameters,
                               const Progress& progress = {}, const StepperFactory& stepper = {},
                               const SacRegion* sac = nullptr);
