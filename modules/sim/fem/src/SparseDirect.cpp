@@ -21,42 +21,70 @@ SparseDirect::SparseDirect(const BlockSparseMatrix& pattern, const std::vector<s
     for (std::size_t d = 0; d < dofs; ++d)
         if (constrained.empty() || !constrained[d])
             m_freeIndex[d] = std::int64_t(m_freeDofs.size()), m_freeDofs.push_back(std::int64_t(d));
+    // The copy's pattern, column by column: the mesh pattern is symmetric, so column (n, b)'s blocks are (m, n) for
+    // the neighbours m of block row n, in increasing order, which keeps the rows 3 m + a sorted. The Cholesky kind
+    // keeps the lower triangle.
+    const bool lowerOnly = m_kind == Kind::SymmetricCholesky;
+    const auto& rowStart = pattern.rowStart();
+    const auto& columns = pattern.columns();
+    using Index = Eigen::SparseMatrix<double>::StorageIndex;
+    std::vector<Index> outer(1, 0), inner;
+    for (std::int64_t dof : m_freeDofs)
+    {
+        const std::size_t n = std::size_t(dof) / 3;
+        const std::uint8_t b = std::uint8_t(dof % 3);
+        for (std::uint32_t s = rowStart[n]; s < rowStart[n + 1]; ++s)
+        {
+            const std::size_t m = columns[s];
+            for (std::uint8_t a = 0; a < 3; ++a)
+            {
+                const std::int64_t row = m_freeIndex[3 * m + a];
+                if (row < 0 || (lowerOnly && row < m_freeIndex[std::size_t(dof)]))
+                    continue;
+                m_sources.push_back({pattern.slotOf(m, n), s, a, b});
+                inner.push_back(Index(row));
+            }
+        }
+        outer.push_back(Index(inner.size()));
+    }
+    const Eigen::Index free = Eigen::Index(m_freeDofs.size());
+    m_matrix.resize(free, free);
+    m_matrix.resizeNonZeros(Eigen::Index(inner.size()));
+    std::copy(outer.begin(), outer.end(), m_matrix.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), m_matrix.innerIndexPtr());
+    // GMRES refines the solves it is preconditioned with, and a direct solve checks its own residual: no
+    // iterative refinement inside UMFPACK (by default up to two, each a solve and a product more).
+    m_factors->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+    m_factors->cholesky.cholmod().print = 0; // a matrix that is not positive definite is reported by the return value
 }
 
-Eigen::SparseMatrix<double> SparseDirect::copy(const BlockSparseMatrix& matrix) const
+void SparseDirect::copyValues(const BlockSparseMatrix& matrix)
 {
-    const bool lowerOnly = m_kind == Kind::SymmetricCholesky;
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(matrix.blockCount() * (lowerOnly ? 5 : 9));
-    const auto& rowStart = matrix.rowStart();
-    const auto& columns = matrix.columns();
-    for (std::size_t row = 0; row + 1 < rowStart.size(); ++row)
-        for (std::uint32_t s = rowStart[row]; s < rowStart[row + 1]; ++s)
+    const auto& blocks = matrix.blocks();
+    double* values = m_matrix.valuePtr();
+    const std::ptrdiff_t count = std::ptrdiff_t(m_sources.size());
+    // The Cholesky kind factorises the symmetric part (A + A^T) / 2 (A itself when A is symmetric).
+    if (m_kind == Kind::SymmetricCholesky)
+    {
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t k = 0; k < count; ++k)
         {
-            const std::size_t column = columns[s];
-            if (lowerOnly && column > row)
-                continue;
-            // The Cholesky kind factorises the symmetric part (A + A^T) / 2 (A itself when A is symmetric).
-            const Eigen::Matrix3d block =
-                lowerOnly ? Eigen::Matrix3d(0.5 * (matrix.blocks()[s] + matrix.block(matrix.slotOf(column, row)).transpose()))
-                          : matrix.blocks()[s];
-            for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b)
-                {
-                    const std::int64_t r = m_freeIndex[3 * row + std::size_t(a)], c = m_freeIndex[3 * column + std::size_t(b)];
-                    if (r >= 0 && c >= 0 && (!lowerOnly || r >= c))
-                        entries.emplace_back(Eigen::Index(r), Eigen::Index(c), block(a, b));
-                }
+            const Source& s = m_sources[std::size_t(k)];
+            values[k] = 0.5 * (blocks[s.slot](s.row, s.column) + blocks[s.transposedSlot](s.column, s.row));
         }
-    Eigen::SparseMatrix<double> out(Eigen::Index(m_freeDofs.size()), Eigen::Index(m_freeDofs.size()));
-    out.setFromTriplets(entries.begin(), entries.end());
-    return out;
+        return;
+    }
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t k = 0; k < count; ++k)
+    {
+        const Source& s = m_sources[std::size_t(k)];
+        values[k] = blocks[s.slot](s.row, s.column);
+    }
 }
 
 bool SparseDirect::factorize(const BlockSparseMatrix& matrix)
 {
-    m_matrix = copy(matrix);
-    m_matrix.makeCompressed();
+    copyValues(matrix);
     if (m_kind == Kind::SymmetricCholesky)
     {
         if (!m_analysed)
@@ -70,25 +98,30 @@ bool SparseDirect::factorize(const BlockSparseMatrix& matrix)
     return m_factors->lu.info() == Eigen::Success;
 }
 
-double SparseDirect::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const
+void SparseDirect::solveOnly(const Eigen::VectorXd& b, Eigen::VectorXd& x) const
 {
     Eigen::VectorXd freeB(Eigen::Index(m_freeDofs.size()));
     for (std::size_t f = 0; f < m_freeDofs.size(); ++f)
         freeB[Eigen::Index(f)] = b[Eigen::Index(m_freeDofs[f])];
-    Eigen::VectorXd freeX, check;
-    if (m_kind == Kind::SymmetricCholesky)
-    {
-        freeX = m_factors->cholesky.solve(freeB);
-        check = m_matrix.selfadjointView<Eigen::Lower>() * freeX - freeB;
-    }
-    else
-    {
-        freeX = m_factors->lu.solve(freeB);
-        check = m_matrix * freeX - freeB;
-    }
+    const Eigen::VectorXd freeX = m_kind == Kind::SymmetricCholesky ? Eigen::VectorXd(m_factors->cholesky.solve(freeB))
+                                                                    : Eigen::VectorXd(m_factors->lu.solve(freeB));
     x = Eigen::VectorXd::Zero(b.size());
     for (std::size_t f = 0; f < m_freeDofs.size(); ++f)
         x[Eigen::Index(m_freeDofs[f])] = freeX[Eigen::Index(f)];
+}
+
+double SparseDirect::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const
+{
+    solveOnly(b, x);
+    Eigen::VectorXd freeB(Eigen::Index(m_freeDofs.size())), freeX(Eigen::Index(m_freeDofs.size()));
+    for (std::size_t f = 0; f < m_freeDofs.size(); ++f)
+    {
+        freeB[Eigen::Index(f)] = b[Eigen::Index(m_freeDofs[f])];
+        freeX[Eigen::Index(f)] = x[Eigen::Index(m_freeDofs[f])];
+    }
+    const Eigen::VectorXd check = (m_kind == Kind::SymmetricCholesky
+                                       ? Eigen::VectorXd(m_matrix.selfadjointView<Eigen::Lower>() * freeX)
+                                       : Eigen::VectorXd(m_matrix * freeX)) - freeB;
     const double norm = freeB.norm();
     return norm > 0.0 ? check.norm() / norm : check.norm();
 }

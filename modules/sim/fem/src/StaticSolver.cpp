@@ -1,13 +1,11 @@
 #include "vsim/sim/fem/StaticSolver.h"
 
 #include "vsim/core/Error.h"
-#include "vsim/sim/fem/ConjugateGradient.h"
-#include "vsim/sim/fem/SparseDirect.h"
+#include "vsim/sim/fem/TangentSolver.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 
 namespace vsim::sim::fem {
 namespace {
@@ -58,11 +56,7 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
 {
     StaticSolveReport report;
     BlockSparseMatrix stiffness = model.makeMatrix();
-    std::unique_ptr<SparseDirect> direct;
-    if (settings.linear != LinearSolver::ConjugateGradient)
-        direct = std::make_unique<SparseDirect>(stiffness, constrained,
-                                                settings.linear == LinearSolver::SparseLu ? SparseDirect::Kind::GeneralLu
-                                                                                          : SparseDirect::Kind::SymmetricCholesky);
+    TangentSolver linear(stiffness, constrained, settings);
     // The state at the model's positions: its element pass, inverted elements and residual force.
     Eigen::VectorXd residual, load;
     const auto evaluate = [&]() {
@@ -98,21 +92,14 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
         model.assembleTangent(stiffness, settings.rotationStiffness);
         if (externalStiffness)
             externalStiffness(model.positions(), stiffness);
-        Eigen::VectorXd delta = Eigen::VectorXd::Zero(residual.size());
-        if (direct)
-        {
-            if (!direct->factorize(stiffness))
-                throw Error("the tangent stiffness could not be factorised (a part of the wall is not held by the "
-                            "fixed ends, or the load is past the wall's limit)");
-            report.worstLinearResidual = std::max(report.worstLinearResidual, direct->solve(residual, delta));
-        }
-        else
-        {
-            const ConjugateGradientResult cg = solveConjugateGradient(stiffness, residual, delta, constrained,
-                                                                      0.1 * settings.tolerance, settings.cgMaxIterations);
-            report.cgIterations += cg.iterations;
-            report.worstLinearResidual = std::max(report.worstLinearResidual, cg.relativeResidual);
-        }
+        Eigen::VectorXd delta;
+        const TangentSolveResult solved =
+            linear.solve(stiffness, residual, delta, linear.needsPreconditioner(report.forceResidual));
+        report.cgIterations += solved.iterations;
+        report.factorisations += solved.factorised ? 1 : 0;
+        report.worstLinearResidual = std::max(report.worstLinearResidual, solved.relativeResidual);
+        report.linearIterations.push_back(solved.iterations);
+        report.linearResiduals.push_back(solved.relativeResidual);
         const Eigen::VectorXd start = model.positions();
         const double slope = delta.dot(residual); // the energy's decrease rate along delta (> 0: a descent)
         if (settings.directionalLineSearch && slope > 0.0)

@@ -67,7 +67,7 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
     // Load increments of 1 / loadIncrements; one that fails (no convergence, an element inverted on every step)
     // is undone and retried at half the size, down to 1/16 of the pressure.
     double reached = 0.0, increment = 1.0 / setup.loadIncrements;
-    int totalUpdates = 0, cutbacks = 0;
+    int totalUpdates = 0, cutbacks = 0, factorisations = 0;
     while (reached < 1.0)
     {
         const double factor = std::min(1.0, reached + increment), pressure = factor * setup.pressurePa;
@@ -75,7 +75,8 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
         StaticSolveSettings settings;
         settings.tolerance = last ? setup.tolerance : std::max(setup.tolerance, setup.intermediateTolerance);
         settings.maxUpdates = setup.maxUpdatesPerIncrement;
-        settings.linear = LinearSolver::SparseLu;
+        settings.linear = setup.linear;
+        settings.linearTolerance = 1e-8;
         settings.rotationStiffness = true;
         settings.directionalLineSearch = true;
         const Progress stage = progress.subRange(reached, factor);
@@ -103,8 +104,11 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
         {
             failure = error.what();
         }
-        for (int update = 0; update < report.updates; ++update)
-            status.recordSolve(0, report.worstLinearResidual, 1e-8, 0);
+        const bool krylov = setup.linear == LinearSolver::CholeskyGmres;
+        for (std::size_t update = 0; update < report.linearResiduals.size(); ++update)
+            status.recordSolve(report.linearIterations[update], report.linearResiduals[update], 1e-8,
+                               krylov ? settings.gmresMaxIterations : 0);
+        factorisations += report.factorisations;
         totalUpdates += report.updates;
         result.equilibriumResiduals.insert(result.equilibriumResiduals.end(), report.residualHistory.begin(),
                                            report.residualHistory.end());
@@ -165,6 +169,7 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
     result.metrics["quadratic_nodes"] = double(model.nodeCount());
     result.metrics["load_increments"] = double(result.frames.size() - 1);
     result.metrics["equilibrium_updates"] = double(totalUpdates);
+    result.metrics["equilibrium_factorisations"] = double(factorisations);
     result.metrics["final_pressure_kpa"] = reached * setup.pressurePa * 1e-3;
     status.reachedQuantity = "pressure";
     status.reachedUnit = "kPa";

@@ -1,8 +1,9 @@
 #pragma once
 
 // A direct solve of an assembled 3x3-block matrix on the free degrees of freedom: the matrix copied into a
-// compressed-column matrix with the constrained rows and columns left out, a fill-reducing ordering found once for
-// the pattern, and a factorisation per matrix by SuiteSparse: CHOLMOD's supernodal Cholesky for a symmetric
+// compressed-column matrix with the constrained rows and columns left out (the copy's pattern and the block entry
+// behind each value found once), a fill-reducing ordering found once for the pattern, and a factorisation per
+// matrix by SuiteSparse: CHOLMOD's supernodal Cholesky for a symmetric
 // positive definite matrix, UMFPACK's multifrontal LU for the tangent with the follower pressure's load
 // stiffness, which is not symmetric (both on BLAS). The converged equilibrium of the physiological analysis
 // (issue 16) needs it: conjugate gradients on a thin wall stall far above 1e-8, and Eigen's own simplicial LDL^T
@@ -36,16 +37,27 @@ public:
     bool factorize(const BlockSparseMatrix& matrix);
     /// x = A^-1 b on the free components; constrained components of x are 0. Returns ||A x - b|| / ||b|| (free).
     double solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+    /// The same without the residual check (a preconditioner's solve).
+    void solveOnly(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
     std::size_t freeCount() const { return m_freeDofs.size(); }
+    Kind kind() const { return m_kind; }
 
 private:
     struct Factors;
-    Eigen::SparseMatrix<double> copy(const BlockSparseMatrix& matrix) const;
+    /// Per stored value of the copy: the slots of block (row node, column node) and of its transpose, and the
+    /// entry in the first.
+    struct Source
+    {
+        std::uint32_t slot, transposedSlot;
+        std::uint8_t row, column;
+    };
+    void copyValues(const BlockSparseMatrix& matrix);
 
     Kind m_kind;
     std::vector<std::int64_t> m_freeIndex; // per degree of freedom: its free index, -1 when constrained
     std::vector<std::int64_t> m_freeDofs;  // per free index: the degree of freedom
-    Eigen::SparseMatrix<double> m_matrix;
+    Eigen::SparseMatrix<double> m_matrix; // the free part (the Cholesky kind: the lower triangle of its symmetric part)
+    std::vector<Source> m_sources;
     std::unique_ptr<Factors> m_factors;
     bool m_analysed = false;
 };

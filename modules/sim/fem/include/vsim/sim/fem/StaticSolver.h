@@ -4,8 +4,9 @@
 // T dx = f, with T the model's tangent (the co-rotational model: R K R^T, optionally + the rotations' derivative,
 // then a full Newton iteration; the quadratic hyperelastic model: its consistent tangent) - d f_ext / dx (a
 // follower load's stiffness), the element pass and the loads updated between them, each by block-Jacobi conjugate
-// gradients or a sparse direct factorisation (SparseDirect.h), with a backtracking line search. Constrained
-// components keep the positions they have (prescribed displacements are set before the call).
+// gradients, a sparse direct factorisation (SparseDirect.h) or GMRES with a kept Cholesky preconditioner
+// (TangentSolver.h), with a line search. Constrained components keep the positions they have (prescribed
+// displacements are set before the call).
 
 #include "vsim/sim/fem/CorotationalFem.h"
 
@@ -40,10 +41,13 @@ public:
 struct StaticSolveReport
 {
     int updates = 0;            ///< linearised solves
-    int cgIterations = 0;       ///< summed over the solves (0 for the direct solver)
+    int cgIterations = 0;       ///< Krylov iterations summed over the solves (0 for the direct solvers)
+    int factorisations = 0;     ///< sparse factorisations (direct solvers and the GMRES preconditioner)
     double forceResidual = 0.0; ///< |free residual force| / |free external force| (or / first residual) at the end
     double worstLinearResidual = 0.0; ///< largest relative residual of a linear solve (direct: its check A x - b)
     std::vector<double> residualHistory; ///< the relative force residual before each update and at the end
+    std::vector<int> linearIterations;   ///< per update: the Krylov iterations of its linear solve (0: direct)
+    std::vector<double> linearResiduals; ///< per update: its linear solve's relative residual
     double smallestStep = 1.0;  ///< the smallest fraction of a Newton step the line search took
     bool converged = false;
 };
@@ -52,7 +56,9 @@ enum class LinearSolver
 {
     ConjugateGradient, ///< block-Jacobi PCG to 0.1 x the force tolerance, at most cgMaxIterations (symmetric only)
     SparseCholesky,    ///< CHOLMOD supernodal Cholesky of the tangent's symmetric part, ordering once, per update
-    SparseLu           ///< UMFPACK multifrontal LU (the tangent with a follower load's stiffness)
+    SparseLu,          ///< UMFPACK multifrontal LU (the tangent with a follower load's stiffness)
+    CholeskyGmres      ///< GMRES on the full tangent to linearTolerance, preconditioned by CHOLMOD's Cholesky of
+                       ///< the model's tangent (TangentSolver.h), kept across updates near equilibrium
 };
 
 /// Settings of solveStatic; set the members by name (the defaults are the validation cases').
@@ -62,6 +68,10 @@ struct StaticSolveSettings
     int maxUpdates = 20;
     LinearSolver linear = LinearSolver::ConjugateGradient;
     int cgMaxIterations = 20000;
+    double linearTolerance = 1e-8; ///< CholeskyGmres: each linear solve's relative residual |T dx - f| / |f|
+    int gmresMaxIterations = 200;
+    int reuseIterations = 12;      ///< CholeskyGmres: refactorise after a solve that needed more
+    double reuseBelow = 0.1;       ///< CholeskyGmres: keep a factorisation only below this force residual
     /// The model's consistent tangent (co-rotational: + the derivative of the element rotations,
     /// CorotationalFem::addRotationStiffness): a full Newton iteration (quadratic convergence), with a direct
     /// solver that takes a non-symmetric matrix where the tangent is not symmetric.

@@ -4,7 +4,8 @@
 // element (the Raghavan-Vorp 2000 wall by default, Hyperelastic.h), ends held, the lumen pressure as a follower
 // load on the 6-node lumen faces, applied in load increments (one by default; one that fails is retried at half
 // the size), each solved to static equilibrium by Newton's method (consistent tangent + the pressure's load
-// stiffness, UMFPACK LU, the line search of Matthies & Strang 1979): intermediate increments to
+// stiffness, each linear solve to 1e-8 by GMRES with a kept CHOLMOD or UMFPACK preconditioner, TangentSolver.h;
+// the line search of Matthies & Strang 1979): intermediate increments to
 // `intermediateTolerance`, the last to `tolerance` (||f_int - f_ext|| / ||f_ext||). The frames are
 // the rest state and each increment's equilibrium, on the linear wall mesh (corner displacements, each element's
 // mean Cauchy stress over its four quadrature points). The run status records every Newton update's linear
@@ -15,6 +16,7 @@
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/FemRun.h"
 #include "vsim/sim/fem/Hyperelastic.h"
+#include "vsim/sim/fem/StaticSolver.h"
 
 #include <cstdint>
 #include <vector>
@@ -31,6 +33,8 @@ struct StaticWallSetup
     double tolerance = 1e-6;                        ///< the last increment's relative force residual
     double intermediateTolerance = 1e-3;
     int maxUpdatesPerIncrement = 15;                ///< Newton converges in 5-10 or not at all
+    /// Each Newton update's linear solve: GMRES to 1e-8 with a kept CHOLMOD preconditioner, or UMFPACK LU.
+    LinearSolver linear = LinearSolver::CholeskyGmres;
 };
 
 /// The unloaded (zero-pressure) geometry by the backward displacement method (Bols et al. 2013, J Comput Appl Math
@@ -47,7 +51,8 @@ FemRunResult runStaticWallFromZeroPressure(const StaticWallSetup& setup, int max
 /// cancelled (progress follows the Newton updates). An increment that does not converge (or inverts every step)
 /// even at 1/16 of the pressure stops the run as a guard with the last converged frame kept and the residual it
 /// reached in the status. Metrics as runFem's (the peaks over the wall's elements, material 0), with element_order
-/// 2, quadratic_nodes, thrombus_elements, load_increments (those converged), load_cutbacks and equilibrium_updates.
+/// 2, quadratic_nodes, thrombus_elements, load_increments (those converged), load_cutbacks, equilibrium_updates
+/// and equilibrium_factorisations.
 /// The frames carry the wall's "material" cell field when it has one.
 FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progress = {});
 
