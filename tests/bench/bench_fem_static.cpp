@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
 using namespace vsim;
@@ -32,7 +31,6 @@ int main(int argc, char** argv)
         for (double m : material->second)
             setup.elementMaterial.push_back(m > 0.5 ? 1 : 0);
     setup.pressurePa = 120.0 * 133.322387415;
-    if (const char* inc = std::getenv("VSIM_INC")) setup.loadIncrements = std::atoi(inc);
     int status = 0;
     double firstPeak = -1.0;
     for (int a = 2; a < (argc > 2 ? argc : 3); ++a)

@@ -61,6 +61,20 @@ endif()
 string(JSON tube_id GET "${tube}" artifact)
 run_cli(0 tube_run simulate fem --study ${study} --protocol thesis-rupture --mesh ${tube_id} --param ramp_steps=5
         --param pressure_start_mpa=0.01 --param pressure_end_mpa=0.02)
+# Issue 16: quasi-static tearing from the command line: hoop stress p r / t = 6.7 p, tear strength 0.4 MPa, so the
+# onset lies near 60 kPa, bracketed to 0.5 %, one element released per equilibrium.
+run_cli(0 quasi simulate fem --study ${study} --protocol thesis-rupture --mesh ${tube_id} --param quasi_static=1
+        --param pressure_start_mpa=0 --param pressure_end_mpa=0.1 --param ramp_increment_mpa=0.02
+        --param tear_strength_mpa=0.4 --param loaded_fraction=1 --param entropy_end=1)
+string(JSON onset GET "${quasi}" metrics tear_onset_pressure_mpa)
+string(JSON bracket GET "${quasi}" metrics tear_onset_bracket_mpa)
+string(JSON torn GET "${quasi}" metrics torn_elements)
+message(STATUS "quasi-static tearing: onset ${onset} MPa (bracket ${bracket} MPa), ${torn} elements torn")
+execute_process(COMMAND ${Python3_EXECUTABLE} -c "import sys; sys.exit(0 if 0.04 < ${onset} < 0.08 and ${bracket} <= 0.005 * ${onset} and ${torn} >= 1 else 1)"
+                RESULT_VARIABLE wrong)
+if(NOT wrong EQUAL 0)
+    message(FATAL_ERROR "quasi-static tearing on the tube:\n${quasi}")
+endif()
 run_cli(1 junk mesh import ${WORK}/ph/truth.json --study ${study})
 run_cli(1 unknown simulate fem --study ${study} --protocol nothing)
 # This test runs where there is no GPU (auto then means the CPU, above); the device tool runs tst_gpu_fem.

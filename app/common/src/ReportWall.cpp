@@ -217,6 +217,15 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
         section.blocks.push_back(tearing);
         if (note)
             section.blocks.push_back(*note);
+        const bool quasiStatic = textOr(rupture->provenance.parameters, "quasi_static", "0") == "1";
+        section.blocks.push_back(report::Paragraph{
+            "Research protocol: the thesis's ramp pressures (by default 8-12 MPa, about 600 times systolic) are not "
+            "physiological, and its tear strength is no measured wall strength; these figures reproduce the thesis's "
+            "experiment and say nothing about this patient's rupture risk. " +
+            std::string(quasiStatic ? "Tearing was quasi-static: the wall in equilibrium at each pressure, the onset "
+                                      "bracketed by bisection to 0.5 %, one element released per equilibrium."
+                                    : "Tearing followed the thesis's damped ramp: the wall lags the load, so the "
+                                      "onset pressure depends on the ramp's rate.")});
         runs.push_back(rupture);
     }
     else

@@ -170,6 +170,8 @@ WallBackend chooseWallBackend(const std::string& requested, const std::string& p
         unavailable = "there is no CUDA device";
     else if (sim::fem::femUsesQuadraticWall(protocol, parameters))
         unavailable = "the quadratic hyperelastic wall (wall_model 1) runs on the CPU: its GPU solver is not built yet";
+    else if (sim::fem::femUsesQuasiStaticTearing(protocol, parameters))
+        unavailable = "quasi-static tearing (quasi_static 1) runs on the CPU: the GPU has no static solver yet";
     else if (sim::fem::femMaterial(parameters).model != sim::fem::ElasticMaterial::Model::CorotationalLinear)
         unavailable = "the CUDA backend runs the co-rotational linear model only";
     if (unavailable.empty())

@@ -3,6 +3,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/PrincipalAxis.h"
 #include "vsim/core/Units.h"
+#include "vsim/sim/fem/QuasiStaticTearing.h"
 #include "vsim/sim/fem/StaticWallRun.h"
 
 #include <Eigen/Eigenvalues>
@@ -53,18 +54,27 @@ std::vector<ParameterSpec> femParameters()
          ParameterSpec::Kind::Integer},
         {"pressure_start_mpa", "Ramp start", "MPa", 8, 0, 100, thesis, "Mid-vessel pressure at the start of the ramp."},
         {"pressure_end_mpa", "Ramp end", "MPa", 12, 0, 100, thesis, "Mid-vessel pressure at the end of the ramp."},
-        {"ramp_steps", "Ramp steps", "", 400, 1, 1000000, thesis, "Time steps of the ramp.", ParameterSpec::Kind::Integer},
+        {"ramp_steps", "Ramp steps", "", 400, 1, 1000000, thesis, "Time steps of the damped ramp (quasi_static 0).",
+         ParameterSpec::Kind::Integer},
+        {"ramp_increment_mpa", "Ramp increment", "MPa", 0.25, 1e-4, 100, thesis,
+         "Pressure step between the equilibria of the quasi-static ramp (the onset is then found by bisection to "
+         "0.5 % whatever the step)."},
         {"loaded_fraction", "Loaded length", "", 1.0 / 3.0, 0.05, 1, thesis,
          "Share of the wall's length (about its middle, along its principal axis) that the pressure acts on."},
         {"tear_strength_mpa", "Tear strength", "MPa", 100, 0.01, 100000, thesis,
          "Largest principal stress at which an element tears (the thesis's tear factor; it does not print a value)."},
+        {"quasi_static", "Quasi-static tearing", "", 0, 0, 1, thesis,
+         "1: the wall in static equilibrium at each pressure of the ramp, the tearing onset bracketed by bisection to "
+         "0.5 %, one element released per equilibrium (does not depend on the ramp; CPU); 0: the thesis's damped "
+         "ramp, every element over the limit torn in the same step (the onset lags the ramp).",
+         ParameterSpec::Kind::Integer},
         {"entropy_end", "Fracture entropy end", "nats", 3.9, 0, 20, thesis,
          "Stop once the fracture entropy passes this (3.9: about 50 torn elements' worth)."},
         {"pressure_mmhg", "Blood pressure", "mmHg", 120, 1, 400, physiological, "Systolic pressure on the lumen."},
         {"wall_model", "Wall model", "", 0, 0, 1, physiological,
          "1: quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall (nearly incompressible) "
          "and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and "
-         "Newton's method (CPU; about 4 s per Newton update per 15,000 tets on 2 cores); 0: the Material group's "
+         "Newton's method (CPU; on 2 cores about 20 s for 15,000 tets, 70 s for 30,000 with a thrombus layer); 0: the Material group's "
          "law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default "
          "once its solve is fast enough for the workstation's walls.",
          ParameterSpec::Kind::Integer},
@@ -84,7 +94,7 @@ std::vector<ParameterSpec> femParameters()
         {"settle_time_step_ms", "Settling time step", "ms", 10, 0.1, 100, physiological,
          "Wall model 0: backward Euler step while settling (the steady state does not depend on it)."},
         {"equilibrium_tolerance", "Equilibrium tolerance", "", 1e-6, 0, 1e-2, physiological,
-         "The static equilibrium at the pressure is solved (Newton, sparse LU) until ||f_int - f_ext|| / ||f_ext|| "
+         "The static equilibrium at the pressure is solved (Newton; GMRES with a sparse Cholesky or LU preconditioner) until ||f_int - f_ext|| / ||f_ext|| "
          "is below this; the figures are that state's. 0 (wall model 0 only): the damped path's last state."},
         {"female", "Female", "", -1, -1, 1, patient,
          "1 female, 0 male (Vande Geest 2006 SEX = +-0.5); -1 not given: no rupture index (never assumed).",
@@ -122,6 +132,11 @@ bool femUsesQuadraticWall(const std::string& protocol, const ParameterSet& param
     return protocol == "physiological" && parameters.get("wall_model") > 0.5;
 }
 
+bool femUsesQuasiStaticTearing(const std::string& protocol, const ParameterSet& parameters)
+{
+    return protocol == "thesis-rupture" && parameters.get("quasi_static") > 0.5;
+}
+
 std::map<std::string, std::string> femProtocolValues(const ParameterSet& parameters, const std::string& protocol)
 {
     // The quadratic hyperelastic wall has its own law and no time stepping: the Material and Integration groups
@@ -153,18 +168,32 @@ double vandeGeestWallStrength(double thrombusCm, double normalizedDiameter, bool
 FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& p, const Progress& progress,
                               const StepperFactory& stepper)
 {
+    const PrincipalAxis axis = principalAxis(wall.points);
+    const double half = 0.5 * p.get("loaded_fraction") * 2.0 * axis.halfLength;
+    const auto loaded = [=](const Eigen::Vector3d& c) { return std::abs((c - axis.centre).dot(axis.direction)) <= half; };
+    const double start = units::mpaToPa(p.get("pressure_start_mpa")), end = units::mpaToPa(p.get("pressure_end_mpa"));
+    if (femUsesQuasiStaticTearing("thesis-rupture", p))
+    {
+        QuasiStaticTearingSetup setup;
+        setup.wall = wall;
+        setup.material = femMaterial(p);
+        setup.loaded = loaded;
+        setup.startPa = start;
+        setup.endPa = end;
+        setup.incrementPa = units::mpaToPa(p.get("ramp_increment_mpa"));
+        setup.tearStressPa = units::mpaToPa(p.get("tear_strength_mpa"));
+        setup.entropyEnd = p.get("entropy_end");
+        return runQuasiStaticTearing(setup, progress);
+    }
     FemRunSetup setup;
     setup.stepper = stepper;
     setup.wall = wall;
     setup.material = femMaterial(p);
     setup.integrator = femIntegrator(p);
-    const double start = units::mpaToPa(p.get("pressure_start_mpa")), end = units::mpaToPa(p.get("pressure_end_mpa"));
     setup.steps = int(p.get("ramp_steps"));
     const double duration = setup.steps * setup.integrator.timeStep;
     setup.pressurePa = [=](double t) { return start + (end - start) * std::clamp(t / duration, 0.0, 1.0); };
-    const PrincipalAxis axis = principalAxis(wall.points);
-    const double half = 0.5 * p.get("loaded_fraction") * 2.0 * axis.halfLength;
-    setup.loaded = [=](const Eigen::Vector3d& c) { return std::abs((c - axis.centre).dot(axis.direction)) <= half; };
+    setup.loaded = loaded;
     setup.frameEvery = std::max(1, setup.steps / 40);
     setup.tearing = true;
     setup.tearStressPa = units::mpaToPa(p.get("tear_strength_mpa"));

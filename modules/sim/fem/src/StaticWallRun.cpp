@@ -141,30 +141,12 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
     result.metrics["load_cutbacks"] = double(cutbacks);
 
     // The wall's peaks (the thrombus, material 1, carries little stress and is not the wall).
-    const TetMesh& lastFrame = result.frames.back();
-    const auto& vonMises = lastFrame.cellFields.at("von_mises_kpa");
-    const auto& principal = lastFrame.cellFields.at("max_principal_kpa");
-    std::size_t peak = 0;
-    double largestPrincipal = -1e300;
-    for (std::size_t t = 0; t < vonMises.size(); ++t)
-        if (setup.elementMaterial.empty() || setup.elementMaterial[t] == 0)
-        {
-            if (vonMises[t] > vonMises[peak] || (!setup.elementMaterial.empty() && setup.elementMaterial[peak] != 0))
-                peak = t;
-            largestPrincipal = std::max(largestPrincipal, principal[t]);
-        }
-    Eigen::Vector3d where = Eigen::Vector3d::Zero();
-    for (int node : lastFrame.tets[peak])
-        where += 0.25 * lastFrame.points[std::size_t(node)];
-    const auto& displacement = lastFrame.pointFields.at("displacement_mm");
-    result.metrics["peak_von_mises_kpa"] = vonMises[peak];
-    result.metrics["peak_von_mises_x_mm"] = where.x();
-    result.metrics["peak_von_mises_y_mm"] = where.y();
-    result.metrics["peak_von_mises_z_mm"] = where.z();
-    result.metrics["peak_max_principal_kpa"] = largestPrincipal;
+    std::vector<std::uint8_t> wallElements;
+    for (std::uint8_t material : setup.elementMaterial)
+        wallElements.push_back(material == 0 ? 1 : 0);
+    addPeakMetrics(result, wallElements);
     result.metrics["thrombus_elements"] =
         double(std::count(setup.elementMaterial.begin(), setup.elementMaterial.end(), std::uint8_t(1)));
-    result.metrics["max_displacement_mm"] = *std::max_element(displacement.begin(), displacement.end());
     result.metrics["element_order"] = 2.0;
     result.metrics["quadratic_nodes"] = double(model.nodeCount());
     result.metrics["load_increments"] = double(result.frames.size() - 1);

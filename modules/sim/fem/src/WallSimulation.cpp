@@ -114,7 +114,7 @@ StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, 
         StaticSolveSettings settings;
         settings.tolerance = tolerance;
         settings.maxUpdates = maxUpdates;
-        settings.linear = LinearSolver::SparseLu;
+        settings.linear = LinearSolver::CholeskyGmres;
         settings.rotationStiffness = true;
         settings.afterResidual = [&](int updates, double residual) {
             progress.throwIfCancelled();
@@ -191,6 +191,23 @@ WallSimulation::StepOutcome WallSimulation::step()
         }
     }
     return outcome;
+}
+
+std::vector<std::size_t> WallSimulation::elementsOverTearStrength() const
+{
+    return m_tearStrength > 0.0 ? elementsOverStrength(m_model.elementStresses(), m_tearStrength) : std::vector<std::size_t>{};
+}
+
+void WallSimulation::restore(const Eigen::VectorXd& positions)
+{
+    if (positions.size() != m_model.positions().size())
+        throw Error("the saved wall state has " + std::to_string(positions.size() / 3) + " nodes, the wall " +
+                    std::to_string(m_model.nodeCount()));
+    m_model.positions() = positions;
+    m_model.velocities().setZero();
+    m_model.updateElements();
+    if (m_stepper)
+        setStepper(m_stepperFactory);
 }
 
 void WallSimulation::tear(const std::vector<std::size_t>& over)

@@ -4,7 +4,10 @@
 //  thesis-rupture  the thesis's experiment (ch. 4.7): E = 4.23 MPa, nu = 0.23, both ends fixed, a pressure ramp
 //                  8 -> 12 MPa on the middle third of the lumen ("mid-vessel boundary pressure"), tearing at the
 //                  tear strength, stopping on the fracture entropy; reports the tearing onset pressure (thesis:
-//                  10.4 MPa) and the entropy curve. These pressures are about 600 times systolic: a reproduction,
+//                  10.4 MPa) and the entropy curve, by the thesis's damped ramp; quasi_static 1 tears
+//                  quasi-statically instead (QuasiStaticTearing.h: equilibrium at each pressure, the onset by
+//                  bisection, one element released per equilibrium), which at the thesis's pressures finds no
+//                  equilibrium (they are beyond what the wall holds). These pressures are about 600 times systolic: a reproduction,
 //                  not physiology (SEED-NOTES.md).
 //  physiological   wall stress at the patient's pressure (default 120 mmHg), static equilibrium, ends fixed (by
 //                  default quadratic tets with the Raghavan-Vorp 2000 wall, StaticWallRun.h): peak wall stress and where, and the peak rupture potential index against the wall strength of Vande Geest
@@ -33,6 +36,9 @@ std::vector<ParameterSpec> femProtocolParameters(const std::string& protocol);
 /// Whether `protocol` with these parameters runs the quadratic hyperelastic wall (StaticWallRun.h, CPU only):
 /// the physiological protocol with wall_model 1.
 bool femUsesQuadraticWall(const std::string& protocol, const ParameterSet& parameters);
+/// Whether `protocol` with these parameters tears quasi-statically (QuasiStaticTearing.h, CPU only): the thesis
+/// protocol with quasi_static 1.
+bool femUsesQuasiStaticTearing(const std::string& protocol, const ParameterSet& parameters);
 /// The values (as provenance text) of the parameters `protocol` uses with these values, nothing else.
 std::map<std::string, std::string> femProtocolValues(const ParameterSet& parameters, const std::string& protocol);
 /// The material and the integrator settings of a parameter set (SI).
@@ -40,7 +46,8 @@ ElasticMaterial femMaterial(const ParameterSet& parameters);
 BackwardEulerSettings femIntegrator(const ParameterSet& parameters);
 
 /// The thesis protocol on a wall mesh (mm).
-/// `stepper`: where the implicit steps run (FemRunSetup::stepper; empty: this CPU), in both protocols.
+/// `stepper`: where the implicit steps run (FemRunSetup::stepper; empty: this CPU), in both protocols (not used by
+/// the quasi-static tearing, which runs on the CPU).
 FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& parameters, const Progress& progress = {},
                               const StepperFactory& stepper = {});
 

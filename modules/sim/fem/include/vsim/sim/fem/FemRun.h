@@ -12,6 +12,7 @@
 #include "vsim/sim/fem/ElasticMaterial.h"
 #include "vsim/sim/fem/ImplicitStepper.h"
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -60,6 +61,11 @@ struct FemRunResult
     /// The relative force residual before each equilibrium update and at the end (empty without one).
     std::vector<double> equilibriumResiduals;
 };
+
+/// The last frame's peaks as metrics: peak_von_mises_kpa and its element's centroid peak_von_mises_{x,y,z}_mm,
+/// peak_max_principal_kpa, max_displacement_mm; over the elements `counted` marks (empty: all; the wall, not the
+/// thrombus).
+void addPeakMetrics(FemRunResult& result, const std::vector<std::uint8_t>& counted = {});
 
 /// Runs the setup. Throws vsim::Error for a mesh that is not a wall (fields missing, no fixed end, no lumen face)
 /// and vsim::Cancelled when cancelled; a run that a guard stops returns normally with `stopReason` set.

@@ -56,11 +56,21 @@ public:
     StepOutcome step();
     /// Static equilibrium at the current pressure from the current state: the follower pressure on the current
     /// shape, fixed ends, no contacts, by the Newton solve of StaticSolver.h (the rotations' derivative and the
-    /// pressure's load stiffness in the tangent, each linear solve by SparseDirect's LU); velocities zeroed. When an
+    /// pressure's load stiffness in the tangent, each linear solve by GMRES to 1e-8 with a Cholesky or LU
+    /// preconditioner, TangentSolver.h); velocities zeroed. When an
     /// element inverts the state is restored, the report is not converged and `failure` (when given) says where.
     /// `progress` follows the updates; a cancel restores the state and throws vsim::Cancelled.
     StaticSolveReport equilibrate(double tolerance, int maxUpdates, std::string* failure = nullptr,
                                   const Progress& progress = {});
+
+    /// The elements (current indices) whose largest principal stress passes the tear strength, most stressed first.
+    std::vector<std::size_t> elementsOverTearStrength() const;
+    /// Tears `elements` (current indices; the fracture entropy counts them), splitting the nodes they separated.
+    void tearElements(const std::vector<std::size_t>& elements) { tear(elements); }
+    /// The wall mesh's element that current element `element` is (tearing renumbers them).
+    std::size_t originalElement(std::size_t element) const { return m_originalElement[element]; }
+    /// Puts the wall at `positions` (m, 3 per node of the current model) at rest: a state saved from positions().
+    void restore(const Eigen::VectorXd& positions);
 
     double time() const { return m_time; }
     const CorotationalFem& model() const { return m_model; }
