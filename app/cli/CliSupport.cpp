@@ -3,6 +3,7 @@
 #include "CommandLine.h"
 #include "vsim/core/Error.h"
 
+#include <iostream>
 #include <sstream>
 
 namespace vsim::cli {
@@ -51,6 +52,14 @@ study::Study openStudyForReading(const std::string& bundle)
     if (bundle.empty())
         throw UsageError("--study <study.vsim> is required");
     return study::Study::open(bundle, study::Access::ReadOnly);
+}
+
+int runExitCode(const RunStatus& status, const std::string& artifact)
+{
+    if (status.stoppedBy != RunStatus::StoppedBy::Guard)
+        return 0;
+    std::cerr << "vascusim-cli: the run " << status.stopText() << "; its last good state is saved as " << artifact << "\n";
+    return 3;
 }
 
 void applyParameters(const Arguments& arguments, ParameterSet& parameters)

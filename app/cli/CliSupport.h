@@ -6,6 +6,7 @@
 
 #include "CliCommands.h"
 #include "vsim/core/Parameters.h"
+#include "vsim/core/RunStatus.h"
 #include "vsim/study/Study.h"
 
 #include <array>
@@ -34,6 +35,10 @@ study::Study openStudyForReading(const std::string& bundle);
 using app::isVolumeFile;
 /// --wait in seconds (a number, "s" allowed), 0 when absent.
 double waitSeconds(const Arguments& arguments);
+
+/// The exit code of a simulation command whose run is saved as `artifact`: 3, with one line on stderr saying where
+/// it stopped, when a guard stopped it (diverging, inverted elements; its last good state is what was saved), else 0.
+int runExitCode(const RunStatus& status, const std::string& artifact);
 
 /// Applies every --param key=value to the set.
 void applyParameters(const Arguments& arguments, ParameterSet& parameters);

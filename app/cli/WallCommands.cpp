@@ -199,7 +199,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
     nlohmann::json printed = document;
     printed["artifact"] = id;
     std::cout << printed.dump(2) << "\n";
-    return 0;
+    return runExitCode(run.status, id);
 }
 
 } // namespace vsim::cli

@@ -1,6 +1,7 @@
 // vascusim-cli: the headless twin of the workstation. Every step the GUI offers is a command here, with the same
 // parameters, writing into the same study bundle. Exit codes: 0 success, 1 an error (one line on stderr naming
-// what was wrong), 2 usage, 130 cancelled (Ctrl-C).
+// what was wrong), 2 usage, 3 a simulation stopped by a guard (diverging, inverted elements: its last good state
+// is saved and printed, and one line on stderr says where it stopped), 130 cancelled (Ctrl-C).
 
 #include "CliCommands.h"
 #include "CommandLine.h"

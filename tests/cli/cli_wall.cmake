@@ -96,8 +96,13 @@ string(JSON convergence GET "${capped}" run_status convergence)
 if(converged OR NOT convergence MATCHES "^not converged: [0-9]+ of [0-9]+ solves ended above their tolerance at the 2-iteration cap")
     message(FATAL_ERROR "a capped run must be marked not converged:\n${capped}")
 endif()
-run_cli(0 guarded simulate fem --study ${study} --protocol thesis-rupture --param young_modulus_mpa=0.01
-        --param pressure_start_mpa=50 --param pressure_end_mpa=60 --param ramp_steps=20)
+# A guard-stopped run exits 3 with one line on stderr; its last good state is saved and printed.
+execute_process(COMMAND ${CLI} simulate fem --study ${study} --protocol thesis-rupture --param young_modulus_mpa=0.01
+                --param pressure_start_mpa=50 --param pressure_end_mpa=60 --param ramp_steps=20
+                RESULT_VARIABLE code OUTPUT_VARIABLE guarded ERROR_VARIABLE guarded_error)
+if(NOT code EQUAL 3 OR NOT guarded_error MATCHES "the run stopped by a guard at pressure .* its last good state is saved as tetmesh-")
+    message(FATAL_ERROR "a guard-stopped run must exit 3 and say so on stderr (exit ${code}):\n${guarded_error}")
+endif()
 string(JSON stopped_by GET "${guarded}" run_status stopped_by)
 string(JSON stop GET "${guarded}" run_status stop)
 if(NOT stopped_by STREQUAL "guard" OR NOT stop MATCHES "^stopped by a guard at pressure [0-9.]+ of 60000.0 kPa")
