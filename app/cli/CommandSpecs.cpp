@@ -94,7 +94,8 @@ std::vector<CommandSpec> declareCommands()
           kWait},
          "mesh wall --study <study.vsim> [--label ID] [--centerlines ID] [--thickness 1.5mm] [--target-vertices 3000]\n"
          "          [--thrombus]\n"
-         "    tetrahedral vessel wall (one layer) around the lumen, opened at the centerline ends (fixed sets);\n"
+         "    tetrahedral vessel wall (one layer) around the lumen, opened at the centerline ends (fixed sets); the\n"
+         "    thickness an assumption (1.5 mm: the uniform AAA wall of Raghavan et al. 2000, J Vasc Surg 31:760);\n"
          "    --thrombus: the intraluminal thrombus of the study's AAA sac (vascusim-cli sac) as its own layer inside\n"
          "    the sac (for simulate fem --param wall_model=1)",
          meshWall},

@@ -9,7 +9,8 @@
 // linear         linear elasticity (E 4.23 MPa, nu 0.23) on the rest shape: ours K u = f, one sparse Cholesky solve
 //                (for linear tets the first Newton update from rest, where R = I), stresses D B u; CalculiX *STATIC.
 // nonlinear      St. Venant-Kirchhoff (the same E, nu) under the follower pressure by Newton's method (consistent
-//                tangent + load stiffness, sparse LU, line search along the direction) to a force residual of 1e-10; CalculiX NLGEOM with *ELASTIC
+//                tangent + load stiffness, each linear solve by GMRES with the kept Cholesky / LU preconditioner of
+//                TangentSolver.h, line search along the direction) to a force residual of 1e-10; CalculiX NLGEOM with *ELASTIC
 //                (St. Venant-Kirchhoff there too) and its follower *DLOAD; Cauchy stresses.
 // raghavan-vorp  the clinical wall law (Raghavan & Vorp 2000, nu 0.49: Hyperelastic.h) the same way; CalculiX's
 //                *HYPERELASTIC, REDUCED POLYNOMIAL, N=2 with C10 = alpha, C20 = beta, D1 = 2 / kappa. C3D10 only.
@@ -113,7 +114,7 @@ StaticSolveReport solveUnderPressure(Model& model, const Faces& faces, double pr
     StaticSolveSettings settings;
     settings.tolerance = 1e-10;
     settings.maxUpdates = 50;
-    settings.linear = LinearSolver::SparseLu;
+    settings.linear = LinearSolver::CholeskyGmres; // the clinical analysis's solver (StaticWallRun)
     settings.rotationStiffness = true;
     settings.directionalLineSearch = true;
     const FollowerPressure load = followerPressure(faces, pressurePa);

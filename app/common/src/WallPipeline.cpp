@@ -27,7 +27,9 @@ std::vector<ParameterSpec> wallMeshParameters()
 {
     const std::string group = "Wall mesh";
     return {
-        {"thickness_mm", "Wall thickness", "mm", 1.5, 0.1, 10, group, "Offset of the lumen surface (one element layer)."},
+        {"thickness_mm", "Wall thickness", "mm", 1.5, 0.1, 10, group,
+         "Offset of the lumen surface (one element layer); an assumption, CT does not resolve the wall: 1.5 mm, the "
+         "uniform AAA wall of Raghavan et al. 2000 (J Vasc Surg 31:760)."},
         {"target_vertices", "Vertex budget", "", 3000, 200, 200000, group,
          "Sets the largest edge (thin vessels get 0.8 of their radius); thesis meshes: 1,427-2,251 vertices.",
          ParameterSpec::Kind::Integer},
