@@ -24,6 +24,24 @@ TetMesh tubeWall(double radius, double length, int around)
     return mesh::buildWallMesh(test::cappedCylinder(radius, length, around), ends, 1.5).mesh;
 }
 
+/// Mean of the largest principal stress (kPa) over the elements whose centroid lies within `halfWidth` mm of
+/// height `z` mm (the tube's hoop stress there).
+double meanHoopNear(const TetMesh& frame, double z, double halfWidth)
+{
+    const auto& hoop = frame.cellFields.at("max_principal_kpa");
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t t = 0; t < frame.tets.size(); ++t)
+    {
+        double centroid = 0.0;
+        for (int node : frame.tets[t])
+            centroid += 0.25 * frame.points[std::size_t(node)].z();
+        if (std::abs(centroid - z) < halfWidth)
+            sum += hoop[t], ++count;
+    }
+    return sum / count;
+}
+
 } // namespace
 
 class FemProtocols : public QObject
@@ -41,18 +59,7 @@ private slots:
         // The mid-section's inner radius is the polygon's (64 sides): use its inscribed radius for a.
         const double a = radius * std::cos(M_PI / 64), pressureKpa = units::mmHgToPa(120.0) * 1e-3;
         const auto midSection = [&](const TetMesh& last, double& hoopMean, double& innerMm, double& outerMm) {
-            const auto& hoop = last.cellFields.at("max_principal_kpa");
-            double sum = 0.0;
-            int count = 0;
-            for (std::size_t t = 0; t < last.tets.size(); ++t)
-            {
-                double z = 0.0;
-                for (int node : last.tets[t])
-                    z += 0.25 * last.points[std::size_t(node)].z();
-                if (std::abs(z - 30.0) < 5.0)
-                    sum += hoop[t], ++count;
-            }
-            hoopMean = sum / count;
+            hoopMean = meanHoopNear(last, 30.0, 5.0);
             // Deformed radii at the mid-section (the polygon's vertices, mean over each side of the wall).
             double inner = 0.0, outer = 0.0;
             int innerCount = 0, outerCount = 0;
@@ -155,21 +162,7 @@ private slots:
         parameters.set("zero_pressure_geometry", 1);
         const FemRunResult unloaded = runPhysiological(wall, test::cylinderCenterline(radius, 40.0), parameters);
         QVERIFY2(unloaded.stopReason.empty(), unloaded.stopReason.c_str());
-        const auto midHoop = [&](const FemRunResult& run) {
-            const TetMesh& last = run.frames.back();
-            const auto& hoop = last.cellFields.at("max_principal_kpa");
-            double sum = 0.0;
-            int count = 0;
-            for (std::size_t t = 0; t < last.tets.size(); ++t)
-            {
-                double z = 0.0;
-                for (int node : last.tets[t])
-                    z += 0.25 * last.points[std::size_t(node)].z();
-                if (std::abs(z - 20.0) < 4.0)
-                    sum += hoop[t], ++count;
-            }
-            return sum / count;
-        };
+        const auto midHoop = [](const FemRunResult& run) { return meanHoopNear(run.frames.back(), 20.0, 4.0); };
         const double a = radius * std::cos(M_PI / 32), statics = units::mmHgToPa(120.0) * 1e-3 * a / thickness;
         qInfo("zero-pressure geometry: %g full solves, largest mismatch with the image %.4f mm; mid-section hoop %.2f kPa "
               "(image statics p a / t %.2f kPa), taking the image as unloaded %.2f kPa (%+.1f %%); sac-less peak von "

@@ -96,6 +96,11 @@ private slots:
             QVERIFY(coarse.status.forceResidual >= 0.0 && coarse.status.forceResidual <= 1e-8);
             QVERIFY(coarse.status.unconvergedSolves <= coarse.status.solves / 20);
             QCOMPARE(coarse.entropyCurve.size(), std::size_t(coarse.metrics.at("torn_elements")));
+            // Frames are equilibria: the first, the onset's before any release, after the releases; the last is
+            // the run's final pressure.
+            QVERIFY(coarse.frames.size() >= 3);
+            QCOMPARE(coarse.framePressuresPa.back() * 1e-3, coarse.metrics.at("final_pressure_kpa"));
+            QCOMPARE(coarse.framePressuresPa[1] * 1e-6, onsetCoarse);
         }
     }
 

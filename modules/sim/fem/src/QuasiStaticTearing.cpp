@@ -36,8 +36,11 @@ FemRunResult runQuasiStaticTearing(const QuasiStaticTearingSetup& setup, const P
     status.reachedUnit = "kPa";
     status.target = setup.endPa * 1e-3;
     int solves = 0, failed = 0;
-    const auto addFrame = [&](double pressure) {
-        result.frames.push_back(wall.frame());
+    // The frames show converged equilibria only; the last one the run reached is kept for its end.
+    TetMesh lastGood = wall.frame(); // the rest state: the equilibrium without pressure
+    double lastGoodPressure = 0.0;
+    const auto addFrame = [&](const TetMesh& frame, double pressure) {
+        result.frames.push_back(frame);
         result.frameTimesS.push_back(double(solves)); // pseudo-time: the equilibria solved so far
         result.framePressuresPa.push_back(pressure);
     };
@@ -55,6 +58,8 @@ FemRunResult runQuasiStaticTearing(const QuasiStaticTearingSetup& setup, const P
             for (std::size_t u = 0; u < report.linearResiduals.size(); ++u)
                 status.recordSolve(report.linearIterations[u], report.linearResiduals[u], 1e-8, 0);
             status.forceResidual = report.forceResidual;
+            lastGood = wall.frame();
+            lastGoodPressure = pressure;
             return true;
         }
         ++failed;
@@ -76,7 +81,7 @@ FemRunResult runQuasiStaticTearing(const QuasiStaticTearingSetup& setup, const P
     else if (!wall.elementsOverTearStrength().empty())
         stop(RunStatus::StoppedBy::Guard, "elements are over the tear strength already at the ramp's start " +
                                               megapascals(safe) + ": start lower");
-    addFrame(safe);
+    addFrame(lastGood, lastGoodPressure);
     Eigen::VectorXd safeState = wall.model().positions();
     while (status.stoppedBy == RunStatus::StoppedBy::End && safe < setup.endPa)
     {
@@ -115,7 +120,7 @@ FemRunResult runQuasiStaticTearing(const QuasiStaticTearingSetup& setup, const P
         if (onset < 0.0)
         {
             onset = over, bracket = over - safe;
-            addFrame(safe);
+            addFrame(lastGood, over); // the onset's equilibrium, before any release
         }
         // Release the most stressed element and re-solve, one at a time, until none is over its strength.
         for (std::vector<std::size_t> overStrength = wall.elementsOverTearStrength(); !overStrength.empty();
@@ -144,15 +149,17 @@ FemRunResult runQuasiStaticTearing(const QuasiStaticTearingSetup& setup, const P
                 break;
             }
         }
+        if (status.stoppedBy != RunStatus::StoppedBy::End)
+            break;
         safe = over;
         safeState = wall.model().positions();
-        addFrame(safe);
+        addFrame(lastGood, safe);
     }
-    if (result.framePressuresPa.back() != safe || result.frames.size() < 2)
-        addFrame(safe);
+    if (result.framePressuresPa.back() != lastGoodPressure || result.frames.back().tets.size() != lastGood.tets.size())
+        addFrame(lastGood, lastGoodPressure);
 
     addPeakMetrics(result);
-    result.metrics["final_pressure_kpa"] = safe * 1e-3;
+    result.metrics["final_pressure_kpa"] = lastGoodPressure * 1e-3;
     result.metrics["tear_onset_pressure_mpa"] = onset >= 0.0 ? onset * 1e-6 : -1.0;
     result.metrics["tear_onset_bracket_mpa"] = bracket * 1e-6;
     result.metrics["first_torn_element"] = onset >= 0.0 ? double(firstTorn) : -1.0;
@@ -160,7 +167,7 @@ FemRunResult runQuasiStaticTearing(const QuasiStaticTearingSetup& setup, const P
     result.metrics["fracture_entropy"] = wall.entropy().value();
     result.metrics["equilibrium_solves"] = double(solves);
     result.metrics["failed_equilibria"] = double(failed);
-    status.reached = safe * 1e-3;
+    status.reached = lastGoodPressure * 1e-3;
     for (const auto& [key, value] : status.metrics())
         result.metrics[key] = value;
     return result;

@@ -73,11 +73,10 @@ void TangentSolver::factoriseLu(const BlockSparseMatrix& tangent)
 GmresResult TangentSolver::gmres(const BlockSparseMatrix& tangent, const Eigen::VectorXd& f, Eigen::VectorXd& dx,
                                  int budget)
 {
-    const GmresResult result = solveGmres(
+    return solveGmres(
         tangent, f, dx, m_constrained,
         [this](const Eigen::VectorXd& r, Eigen::VectorXd& z) { m_preconditioner->solveOnly(r, z); },
         m_settings.linearTolerance, budget);
-    return result;
 }
 
 TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const Eigen::VectorXd& f, Eigen::VectorXd& dx,

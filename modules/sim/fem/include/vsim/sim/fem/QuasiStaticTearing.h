@@ -38,8 +38,9 @@ struct QuasiStaticTearingSetup
 };
 
 /// Runs the setup. Throws vsim::Error for a bad setup or a mesh that is not a wall, vsim::Cancelled when
-/// cancelled. Frames (as runFem's): the first equilibrium, the last one before the first tear, the state after
-/// each pressure's releases, and the last state. Metrics as runFem's (peaks of the last frame) and
+/// cancelled. Frames (as runFem's), converged equilibria only: the first, the onset's before any release, the one
+/// after each pressure's releases, and the last the run reached (its pressure is final_pressure_kpa and the status's
+/// reached pressure). Metrics as runFem's (peaks of the last frame) and
 /// tear_onset_pressure_mpa (the bracket's upper end; -1 without a tear), tear_onset_bracket_mpa (its width),
 /// first_torn_element (the wall mesh's index), torn_elements, fracture_entropy, equilibrium_solves and
 /// failed_equilibria. The run status records the linear solves of the converged equilibria (the states the frames
