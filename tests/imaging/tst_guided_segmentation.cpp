@@ -144,59 +144,21 @@ private slots:
                   fractionIn(result.label, c.truth, label::kWall), vein);
             for (const std::string& warning : result.warnings)
                 qInfo("  %s", warning.c_str());
-            // The issue asks 0.95; on these 3 mm lumens at 0.5 mm voxels the noise (up to 30 HU, correlated) flips
-            // boundary voxels: 0.943..0.963 over the seeds. A level-set boundary (curvature-smoothed half level)
-            // was tried: stenosis 0.946..0.965, but the AAA and hepatic cases lost (RESULTS.md). Held at 0.94.
-            QVERIFY2(o.dice >= 0.94, "the lumen through the stenosis");
+            // The issue asks 0.95: 0.952..0.969 over the seeds with the boundary at the local half level (one
+            // window for the whole artery gave 0.943..0.963: its level sat above the edge beside the dark wall).
+            QVERIFY2(o.dice >= 0.95, "the lumen through the stenosis");
             QVERIFY(calcium < 0.02 && vein < 0.005);
         }
     }
 
     /// Target hepatic from a point in the aorta and one in the proper hepatic artery: the tree from the celiac
     /// trunk without the aorta, recall by radius class, and the share of the label in the touching portal vein. The
-    /// issue asks Dice >= 0.90; the tips under 1 mm are not reached yet (reported, held at 0.7 as a guard).
+    /// issue asks Dice >= 0.90 on three seeds; the tips under 1 mm are not reached yet (reported, held at 0.85 as a
+    /// guard: 0.875 before the local half-level boundary).
     void hepaticTreeFromTwoPoints()
     {
-        // The grid around the liver hilum and the tree (180 x 180 x 200 mm).
-        const Case c = makeCase(PhantomKind::HepaticTree, {256, 256, 200}, {0.7, 0.7, 1.0}, 1, Eigen::Vector3d(-40, -10, 85));
-        SegmentationRequest request;
-        request.target = SegmentationTarget::Hepatic;
-        const VesselSegment& proper = segmentNamed(c.phantom, "proper hepatic artery");
-        request.includeMm = {pointAtZ(segmentNamed(c.phantom, "aorta"), kPhantomCentre.z() + 60.0),
-                             proper.points[proper.points.size() / 2]};
-        const SegmentationResult result = segmentFromPoints(c.ct, ParameterSet(guidedSegmentationParameters()), request);
-        const VolumeGeometry& g = c.ct.geometry();
-        const LabelVolume aorta = nearSegments(c.phantom, g, {"aorta"}, 2.0);
-        std::set<std::string> tree{"celiac trunk", "common hepatic artery", "gastroduodenal artery",
-                                   "proper hepatic artery", "right hepatic artery", "left hepatic artery",
-                                   "segmental hepatic artery"};
-        LabelVolume region = nearSegments(c.phantom, g, tree, 1.0);
-        for (std::size_t v = 0; v < g.voxelCount(); ++v)
-            region.data()[v] = region.data()[v] && !aorta.data()[v];
-        const Overlap o = overlap(result.label, c.truth, &region);
-        qInfo("hepatic tree without the aorta: Dice %.3f (recall %.3f, precision %.3f); label in the portal vein %.4f",
-              o.dice, o.recall, o.precision, fractionIn(result.label, c.truth, label::kPortalVein));
-        for (const auto& [low, high] : {std::pair{2.0, 9.0}, std::pair{1.0, 2.0}, std::pair{0.0, 1.0}})
-        {
-            std::set<std::string> names;
-            AnatomyPhantom subset = c.phantom;
-            subset.arteries.segments.clear();
-            for (const VesselSegment& segment : c.phantom.arteries.segments)
-            {
-                const double mean = 0.5 * (segment.radii.front() + segment.radii.back());
-                if (tree.count(segment.name) && mean > low && mean <= high)
-                    subset.arteries.segments.push_back(segment);
-            }
-            for (VesselSegment& segment : subset.arteries.segments)
-                names.insert(segment.name = segment.name + " (class)");
-            LabelVolume classRegion = nearSegments(subset, g, names, 0.0);
-            for (std::size_t v = 0; v < g.voxelCount(); ++v)
-                classRegion.data()[v] = classRegion.data()[v] && !aorta.data()[v];
-            qInfo("  radius %.0f..%.0f mm: %zu segments, recall %.3f", low, high, subset.arteries.segments.size(),
-                  overlap(result.label, c.truth, &classRegion).recall);
-        }
-        QVERIFY(fractionIn(result.label, c.truth, label::kPortalVein) <= 0.02);
-        QVERIFY(o.dice >= 0.7);
+        for (std::uint64_t seed : {1u, 2u, 3u})
+            hepaticTreeOnSeed(seed);
     }
 
     /// The fronts stop where asked: the path length, a stop plane, and an exclude point that claims the vessel
@@ -250,6 +212,51 @@ private slots:
         request.includeMm = {kPhantomCentre + Eigen::Vector3d(0, 30, 0)};             // in muscle
         QVERIFY_THROWS_EXCEPTION(Error, segmentFromPoints(c.ct, parameters, request));
         QVERIFY_THROWS_EXCEPTION(Error, segmentationTargetFromName("liver"));
+    }
+
+private:
+    void hepaticTreeOnSeed(std::uint64_t seed)
+    {
+        // The grid around the liver hilum and the tree (180 x 180 x 200 mm).
+        const Case c = makeCase(PhantomKind::HepaticTree, {256, 256, 200}, {0.7, 0.7, 1.0}, seed, Eigen::Vector3d(-40, -10, 85));
+        SegmentationRequest request;
+        request.target = SegmentationTarget::Hepatic;
+        const VesselSegment& proper = segmentNamed(c.phantom, "proper hepatic artery");
+        request.includeMm = {pointAtZ(segmentNamed(c.phantom, "aorta"), kPhantomCentre.z() + 60.0),
+                             proper.points[proper.points.size() / 2]};
+        const SegmentationResult result = segmentFromPoints(c.ct, ParameterSet(guidedSegmentationParameters()), request);
+        const VolumeGeometry& g = c.ct.geometry();
+        const LabelVolume aorta = nearSegments(c.phantom, g, {"aorta"}, 2.0);
+        std::set<std::string> tree{"celiac trunk", "common hepatic artery", "gastroduodenal artery",
+                                   "proper hepatic artery", "right hepatic artery", "left hepatic artery",
+                                   "segmental hepatic artery"};
+        LabelVolume region = nearSegments(c.phantom, g, tree, 1.0);
+        for (std::size_t v = 0; v < g.voxelCount(); ++v)
+            region.data()[v] = region.data()[v] && !aorta.data()[v];
+        const Overlap o = overlap(result.label, c.truth, &region);
+        qInfo("seed %llu: hepatic tree without the aorta: Dice %.3f (recall %.3f, precision %.3f); label in the portal "
+              "vein %.4f", (unsigned long long)seed, o.dice, o.recall, o.precision, fractionIn(result.label, c.truth, label::kPortalVein));
+        for (const auto& [low, high] : {std::pair{2.0, 9.0}, std::pair{1.0, 2.0}, std::pair{0.0, 1.0}})
+        {
+            std::set<std::string> names;
+            AnatomyPhantom subset = c.phantom;
+            subset.arteries.segments.clear();
+            for (const VesselSegment& segment : c.phantom.arteries.segments)
+            {
+                const double mean = 0.5 * (segment.radii.front() + segment.radii.back());
+                if (tree.count(segment.name) && mean > low && mean <= high)
+                    subset.arteries.segments.push_back(segment);
+            }
+            for (VesselSegment& segment : subset.arteries.segments)
+                names.insert(segment.name = segment.name + " (class)");
+            LabelVolume classRegion = nearSegments(subset, g, names, 0.0);
+            for (std::size_t v = 0; v < g.voxelCount(); ++v)
+                classRegion.data()[v] = classRegion.data()[v] && !aorta.data()[v];
+            qInfo("  radius %.0f..%.0f mm: %zu segments, recall %.3f", low, high, subset.arteries.segments.size(),
+                  overlap(result.label, c.truth, &classRegion).recall);
+        }
+        QVERIFY(fractionIn(result.label, c.truth, label::kPortalVein) <= 0.02);
+        QVERIFY(o.dice >= 0.85);
     }
 };
 
