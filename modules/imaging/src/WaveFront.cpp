@@ -17,7 +17,7 @@ using Eigen::Vector3d;
 /// kLimited: beyond a branch limit of the front that reached it; free for the other fronts (a hepatic point's front
 /// meeting the aortic front in the celiac leaves no hole where the aortic one stopped).
 constexpr std::uint8_t kUntouched = 0, kFinal = 1, kBlocked = 2, kLimited = 3;
-/// Cross-sections under this (a 10 mm vessel) get the raw-HU boundary layer.
+/// Cross-sections under this (a 10 mm vessel) get the local half-level boundary (LocalHalfLevel.h).
 constexpr double kSmallVesselAreaMm2 = 80.0;
 constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
 
