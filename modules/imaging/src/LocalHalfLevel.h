@@ -2,7 +2,8 @@
 
 // The boundary of a vessel label moved to the local half level of the scanner-blurred edge: half-way between the
 // vessel's own plateau (its brightest smoothed HU within 2 mm) and the background just outside it (the median HU of
-// the voxels 2 to 3.5 mm from the candidate that lie at least two voxels from the label). A blurred step edge
+// the voxels 1 to 2.5 mm from the candidate that lie at least a voxel from the label: the tissue the edge blurs
+// with, a dark arterial wall included). A blurred step edge
 // crosses the half-way level at the step whatever the blur's width; a thin vessel's blurred peak is lower than its
 // blood, and half of that peak (the full width at half maximum) is close to its diameter while the radius exceeds
 // the blur's sigma. One window for a whole tree puts the edge too far in where the vessel runs in fat and too far

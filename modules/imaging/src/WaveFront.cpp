@@ -489,7 +489,7 @@ private:
                 out.label.at(i, j, k) = 1;
             }
         // Boundary refinement of small vessels (cross-sections under kSmallVesselAreaMm2): the smoothed HU and one
-        // window decided the growth; the boundary moves to the local half level (LocalHalfLevel.h), two voxels at
+        // window decided the growth; the boundary moves to the local half level (LocalHalfLevel.h), one voxel at
         // most. Wide vessels keep the window's boundary (the blur's shift there is negligible, and their rims touch
         // bone and other vessels). Voxels another front claimed, cut leaks and the points stay as they are.
         const auto smallVessel = [&](std::uint32_t b) {
