@@ -41,9 +41,10 @@ private slots:
     /// Issue 15 must-show 2: the hepatic tips' radii on the patient-like phantom (anatomy, PSF-convolved, correlated
     /// noise: not the fit's edge model), from the guided segmentation (target hepatic, the aorta and the proper
     /// hepatic artery), its skeleton and centerlines. Reported: how many of the truth's segmental arteries the
-    /// centerlines reach and measure, and their mean-radius errors. The issue asks 5 %; measured 2026-11-24 on seed
-    /// 1: 5 of 28 reached, -15..-18 % on the 1.3-1.4 mm tips (the blurred-tube fit's edge model is not this
-    /// scanner's; the volume integral alone reads -5..-13 %). Not met: held at a mean error under 25 % as a guard.
+    /// centerlines reach and measure, and their mean-radius errors. The issue asks 5 %; measured 2026-11-24: 4-5 of
+    /// 28 reached, mean error 11.2 / 13.0 / 15.6 % on seeds 1-3 with each tube's own blood and the shell's dominant
+    /// level (15.6-22.2 % before; the blurred-tube fit's edge model is not this scanner's: the volume integral
+    /// alone reads 5.2 / 3.0 / 7.1 %). Not met: held at a mean error under 20 % as a guard.
     void patientLikeHepaticTips()
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
@@ -86,7 +87,7 @@ private slots:
                   (unsigned long long)seed, measured, tips.size(), measured ? 100.0 * sum / measured : 0.0,
                   100.0 * worst);
             QVERIFY(measured >= 1);
-            QVERIFY(sum / measured <= 0.25);
+            QVERIFY(sum / measured <= 0.20);
         }
     }
 

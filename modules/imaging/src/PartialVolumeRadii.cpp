@@ -21,6 +21,9 @@ using detail::TissueProfile;
 constexpr double kFirstMarginMm = 2.0; // pass 1: beyond the distance radius (its threshold bias and the blur)
 constexpr double kBlurMarginMm = 1.0;  // pass 2: beyond the lumen found, plus half a voxel (3 sigma of the blur)
 constexpr double kShellMm = 1.5;       // tissue sampled this far beyond the tube
+/// Tubes this wide read their own blood in their core (within 0.4 radii of the axis: over 99 % of the contrast
+/// through a blur of sigma 0.5 mm); thinner ones take it from the nearest such tube along the tree.
+constexpr double kOwnBloodRadiusMm = 1.8;
 
 struct Owner
 {
@@ -110,7 +113,7 @@ struct TubeVoxels
     const std::vector<double>& lower;
     const std::vector<double>& upper;
     const std::unordered_map<std::size_t, Owner>& owners;
-    double blood;
+    const std::vector<double>& blood; ///< per tube, HU
     const std::vector<TissueProfile>& tissue;
 };
 
@@ -144,7 +147,7 @@ public:
             if (result_[e].measured)
             {
                 const auto [a, b] = detail::lumenLine(samples[e], pointAt(path(e), v_.arcs[e], from[e]),
-                                                      pointAt(path(e), v_.arcs[e], to[e]), v_.blood);
+                                                      pointAt(path(e), v_.arcs[e], to[e]), v_.blood[e]);
                 fitThin(e, samples[e], from[e], to[e], a, b);
             }
         refitWithNeighbours();
@@ -164,7 +167,7 @@ private:
         if (widest == edges_)
             return false;
         const detail::TubeFit reference =
-            detail::fitReferenceTube(samples[widest], path(widest), v_.arcs[widest], from[widest], to[widest], v_.blood,
+            detail::fitReferenceTube(samples[widest], path(widest), v_.arcs[widest], from[widest], to[widest], v_.blood[widest],
                                      volumeRadius_[widest], v_.tissue[widest].overall(), 0.5 * v_.ct.geometry().spacing.x());
         sigma_ = reference.sigma;
         return reference.ok && sigma_ > 0.05 && sigma_ < 3.0;
@@ -175,7 +178,7 @@ private:
     void fitThin(std::size_t e, const detail::TubeSamples& s, double lo, double hi, const Eigen::Vector3d& a,
                  const Eigen::Vector3d& b)
     {
-        const detail::TubeFit fit = detail::fitThinTube(s, a, b, v_.blood, result_[e].meanRadiusMm, sigma_);
+        const detail::TubeFit fit = detail::fitThinTube(s, a, b, v_.blood[e], result_[e].meanRadiusMm, sigma_);
         const double mean = 0.5 * (fit.r1 + fit.r2);
         if (!fit.ok || !(mean > 0.5 * volumeRadius_[e] && mean < 2.0 * volumeRadius_[e]))
             return;
@@ -248,9 +251,47 @@ private:
     std::vector<detail::TubeModel> models_;
 };
 
+/// Each tube's blood (HU): the median of its own core where it is at least kOwnBloodRadiusMm wide, else that of
+/// the nearest such tube, counted in tubes along the tree (wider tubes first); where no such tube connects, the
+/// widest tubes' cores together (those at least 0.6 times the widest radius).
+std::vector<double> bloodAlongTree(const SkeletonGraph& centerlines, const std::vector<double>& radius,
+                                   const std::vector<std::vector<double>>& cores)
+{
+    const std::size_t edges = centerlines.edges.size();
+    const double widest = *std::max_element(radius.begin(), radius.end());
+    std::vector<double> pooled;
+    for (std::size_t e = 0; e < edges; ++e)
+        if (radius[e] >= 0.6 * widest)
+            pooled.insert(pooled.end(), cores[e].begin(), cores[e].end());
+    const double fallback = median(pooled);
+    std::vector<double> blood(edges, std::nan(""));
+    std::vector<std::size_t> frontier;
+    for (std::size_t e = 0; e < edges; ++e)
+        if (radius[e] >= kOwnBloodRadiusMm && cores[e].size() >= 20)
+            blood[e] = median(cores[e]), frontier.push_back(e);
+    while (!frontier.empty())
+    {
+        std::sort(frontier.begin(), frontier.end(), [&](std::size_t a, std::size_t b) { return radius[a] > radius[b]; });
+        std::vector<std::size_t> next;
+        for (std::size_t e : frontier)
+            for (std::size_t n = 0; n < edges; ++n)
+            {
+                const auto& a = centerlines.edges[e];
+                const auto& b = centerlines.edges[n];
+                if (std::isnan(blood[n]) && (a.from == b.from || a.from == b.to || a.to == b.from || a.to == b.to))
+                    blood[n] = blood[e], next.push_back(n);
+            }
+        frontier = std::move(next);
+    }
+    for (double& b : blood)
+        if (std::isnan(b))
+            b = fallback;
+    return blood;
+}
+
 /// One pass: every voxel within tube[e] + kShellMm of a centerline to its nearest one; the lumen volume of each
-/// tube (between the clearances, in two halves) from the contrast against its shell's tissue and the blood of the
-/// widest vessels' cores.
+/// tube (between the clearances, in two halves) from the contrast against its shell's tissue and its blood
+/// (bloodAlongTree).
 std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonGraph& centerlines,
                                              const std::vector<std::vector<double>>& arcs, const std::vector<double>& length,
                                              const std::vector<double>& radius, const std::vector<double>& tube,
@@ -302,20 +343,21 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
         lower[e] = clearance(centerlines.edges[e].from, e);
         upper[e] = length[e] - clearance(centerlines.edges[e].to, e);
     }
-    // Blood: the cores of the widest vessels. Tissue: each tube's shell, away from every tube, along its length.
-    std::vector<double> core;
+    // Blood: each wide tube's core; the contrast falls along the arteries (by 10 % or more from the aorta to the
+    // segmental arteries), so the aorta's blood would read thin distal vessels' contrast, and radii, low. Tissue:
+    // each tube's shell, away from every tube, along its length.
+    std::vector<std::vector<double>> cores(edges);
     std::vector<std::vector<std::pair<float, float>>> shell(edges);
-    const double widest = *std::max_element(radius.begin(), radius.end());
     for (const auto& [index, owner] : owners)
     {
         const double hu = ct.data()[index];
         const std::size_t e = std::size_t(owner.edge);
-        if (radius[e] >= 0.6 * widest && owner.distance <= 0.4 * radius[e])
-            core.push_back(hu);
+        if (owner.distance <= 0.4 * radius[e])
+            cores[e].push_back(hu);
         if (!owner.inTube)
             shell[e].emplace_back(owner.arc, float(hu));
     }
-    const double blood = median(core);
+    const std::vector<double> blood = bloodAlongTree(centerlines, radius, cores);
     std::vector<TissueProfile> tissue(edges);
     for (std::size_t e = 0; e < edges; ++e)
         tissue[e] = TissueProfile(std::move(shell[e]), length[e]);
@@ -327,9 +369,9 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
         if (owner.distance > tube[e] || owner.arc < lower[e] || owner.arc > upper[e])
             continue;
         const double level = tissue[e].at(owner.arc);
-        if (blood > level)
+        if (blood[e] > level)
             sums[2 * e + (owner.arc >= 0.5 * (lower[e] + upper[e]) ? 1 : 0)] +=
-                (ct.data()[index] - level) / (blood - level) * voxelVolume;
+                (ct.data()[index] - level) / (blood[e] - level) * voxelVolume;
     }
     std::vector<PartialVolumeRadius> result(edges);
     for (std::size_t e = 0; e < edges; ++e)

@@ -27,8 +27,9 @@ struct PartialVolumeRadius
 
 /// One radius estimate per centerline edge. Each voxel within a tube around the centerlines belongs to the nearest
 /// one; lengths within a clearance of a junction (3 radii of the widest vessel there + 1 mm) or a free end (1
-/// radius + 1 mm) are left out; tissue is the median of each tube's surrounding 1.5 mm shell within 2 mm along it,
-/// blood the core of the widest vessels (median). Two passes of the volume integral (the second with the tube
+/// radius + 1 mm) are left out; tissue is the dominant level of each tube's surrounding 1.5 mm shell within 2 mm
+/// along it (a touching vein drops out), blood the median of the tube's own core where it is 1.8 mm wide or more,
+/// else that of the nearest such tube along the tree (the contrast falls along the arteries). Two passes of the volume integral (the second with the tube
 /// tightened to the lumen found), then blurred-tube fits to the voxels (the blur's sigma fitted on the widest
 /// vessel): each tube's middle alone, then each nearly straight tube from its forks with its neighbours' fitted
 /// tubes filling the merged lumens there. Throws vsim::Error for empty centerlines.
