@@ -102,8 +102,12 @@ int meshWall(const Arguments& arguments, const Progress& progress)
     }
     study::Study study = openStudyForWriting(arguments);
     const std::string centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
-    const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
-                                               "the study has no vessel label: run vascusim-cli segment first");
+    // Without --label: the lumen the centerlines were traced from, so that the wall's provenance names its input.
+    const std::string labelId = arguments.hasOption("label")
+                                    ? chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label, {})
+                                    : app::lumenLabelOfCenterlines(study, centerlinesId);
+    if (labelId.empty())
+        throw Error("the study has no vessel label: run vascusim-cli segment first");
     const double thickness = quantityOption(arguments, "thickness", "mm", 1.5);
     const double targetVertices = quantityOption(arguments, "target-vertices", "", 3000.0);
     std::string sacId;
@@ -126,6 +130,8 @@ int meshWall(const Arguments& arguments, const Progress& progress)
     for (const auto& nodes : wall.endNodes)
         ends.push_back(nodes.size());
     std::cout << nlohmann::json{{"artifact", id},
+                                {"lumen_label", labelId},
+                                {"centerlines", centerlinesId},
                                 {"nodes", wall.mesh.points.size()},
                                 {"tets", wall.mesh.tets.size()},
                                 {"thickness_mm", thickness},

@@ -1,4 +1,5 @@
-// The wall-mechanics steps of the workflow: the wall mesh around the newest vessel label and centerlines, and the
+// The wall-mechanics steps of the workflow: the wall mesh around the newest centerlines and the lumen label they were
+// traced from, and the
 // wall runs (physiological wall stress with the rupture index, the thesis rupture protocol) in the task runner,
 // added to the study (undoable) and shown in 3D coloured by stress with a legend.
 
@@ -8,6 +9,7 @@
 #include "ParameterForm.h"
 #include "ViewLayout.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/viz/VolumeView3D.h"
@@ -52,8 +54,9 @@ bool MainWindow::buildWallMesh()
 {
     if (!m_document.hasStudy())
         return false;
-    const std::string labelId = newestArtifact(study::ArtifactKind::Label);
     const std::string centerlinesId = m_document.study().newestArtifact(study::ArtifactKind::Skeleton, "centerline");
+    // The lumen the centerlines were traced from (not the newest label: that may be the AAA sac's).
+    const std::string labelId = centerlinesId.empty() ? std::string() : app::lumenLabelOfCenterlines(m_document.study(), centerlinesId);
     if (labelId.empty() || centerlinesId.empty())
     {
         showError(tr("Wall mesh"), tr("The wall needs a vessel label and centerlines: run Segment and Skeleton && "

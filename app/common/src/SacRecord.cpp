@@ -147,4 +147,25 @@ std::string newestLumenLabel(const study::Study& study)
     return newest;
 }
 
+std::string lumenLabelOfCenterlines(const study::Study& study, const std::string& centerlinesId)
+{
+    std::vector<std::string> pending{centerlinesId};
+    for (std::size_t n = 0; n < pending.size() && n < 8; ++n)
+    {
+        if (!study.hasArtifact(pending[n]))
+            continue;
+        for (const std::string& input : study.artifact(pending[n]).provenance.inputs)
+        {
+            if (!study.hasArtifact(input))
+                continue;
+            const study::Artifact& artifact = study.artifact(input);
+            if (artifact.kind == study::ArtifactKind::Label && !artifact.damaged && artifact.provenance.command != kSacCommand)
+                return artifact.id;
+            if (artifact.kind == study::ArtifactKind::Skeleton)
+                pending.push_back(artifact.id);
+        }
+    }
+    return newestLumenLabel(study);
+}
+
 } // namespace vsim::app

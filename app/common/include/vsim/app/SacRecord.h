@@ -37,4 +37,9 @@ std::function<double(const Eigen::Vector3d&, const Eigen::Vector3d&)> sacOuterWa
 /// The newest label that is a lumen (not a sac's labels); "" when none.
 std::string newestLumenLabel(const study::Study& study);
 
+/// The label the centerlines were traced from (a label among their provenance inputs, through the skeleton they came
+/// from); else newestLumenLabel. A wall built from other centerlines' label, or from an imported copy of a sac
+/// label, would name the wrong input in its provenance.
+std::string lumenLabelOfCenterlines(const study::Study& study, const std::string& centerlinesId);
+
 } // namespace vsim::app
