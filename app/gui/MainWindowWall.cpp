@@ -25,6 +25,7 @@
 #include <QStatusBar>
 
 #include <algorithm>
+#include <optional>
 #include <cstdlib>
 
 namespace vsim::gui {
@@ -63,16 +64,31 @@ bool MainWindow::buildWallMesh()
                                       "Centerlines first."));
         return false;
     }
+    std::string sacId;
+    if (m_wallMeshParameters.get("thrombus_layer") > 0.5)
+    {
+        app::newestSacFigures(m_document.study(), &sacId);
+        if (sacId.empty())
+        {
+            showError(tr("Wall mesh"), tr("The thrombus layer needs the AAA sac: run Vessels > AAA Sac first, or set "
+                                          "Thrombus layer to 0 in the wall mesh parameters."));
+            return false;
+        }
+    }
     auto build = std::make_shared<app::WallMeshBuild>();
     const double thickness = m_wallMeshParameters.get("thickness_mm"), budget = m_wallMeshParameters.get("target_vertices");
     return m_tasks.run(
         tr("Wall mesh"),
-        [this, labelId, centerlinesId, thickness, budget, build](const Progress& progress) {
+        [this, labelId, centerlinesId, sacId, thickness, budget, build](const Progress& progress) {
+            const std::optional<LabelVolume> sacLabels =
+                sacId.empty() ? std::nullopt : std::optional<LabelVolume>(m_document.study().loadLabel(sacId));
             *build = app::buildWallMesh(m_document.study().loadLabel(labelId),
-                                        m_document.study().loadSkeleton(centerlinesId), thickness, budget, progress);
+                                        m_document.study().loadSkeleton(centerlinesId), thickness, budget, progress,
+                                        sacLabels ? &*sacLabels : nullptr);
         },
-        [this, labelId, centerlinesId, thickness, budget, build] {
-            const std::string id = app::addWallMesh(m_document.study(), *build, labelId, centerlinesId, thickness, budget);
+        [this, labelId, centerlinesId, sacId, thickness, budget, build] {
+            const std::string id =
+                app::addWallMesh(m_document.study(), *build, labelId, centerlinesId, thickness, budget, sacId);
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Wall mesh")));
             statusBar()->showMessage(tr("Wall: %1 elements, smallest dihedral angle %2 deg")
                                          .arg(build->wall.mesh.tets.size())

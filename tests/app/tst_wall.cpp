@@ -40,12 +40,22 @@ private slots:
         QVERIFY(vsim::test::runVesselSteps(window, folder.string()));
 
         window.wallMeshParameters().set("target_vertices", 1500);
+        // The thrombus layer needs the AAA sac, which this analytic phantom (no fat around the aorta) cannot give:
+        // refused with the reason, nothing added.
+        const std::size_t artifactsBefore = window.document().study().artifacts().size();
+        window.wallMeshParameters().set("thrombus_layer", 1);
+        QVERIFY(!window.buildWallMesh());
+        QCOMPARE(window.document().study().artifacts().size(), artifactsBefore);
+        window.wallMeshParameters().set("thrombus_layer", 0);
         QVERIFY(window.buildWallMesh());
         QVERIFY(vsim::test::waitForTask(window));
         QCOMPARE(failed.count(), 0);
         const study::Artifact wall = window.document().study().artifacts().back();
         QCOMPARE(wall.kind, study::ArtifactKind::TetMesh);
         QCOMPARE(wall.provenance.command, std::string("mesh wall"));
+        // Built from the lumen the centerlines were traced from (the segmentation's label).
+        const std::string centerlinesId = window.document().study().newestArtifact(study::ArtifactKind::Skeleton, "centerline");
+        QCOMPARE(wall.provenance.inputs.front(), window.document().study().artifact(centerlinesId).provenance.inputs.back());
         QCOMPARE(wall.attributes.at("inverted_elements"), std::string("0"));
 
         window.femParameters().set("settle_time_s", 0.2); // 20 pseudo-time steps keep the test short

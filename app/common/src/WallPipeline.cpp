@@ -33,6 +33,10 @@ std::vector<ParameterSpec> wallMeshParameters()
         {"target_vertices", "Vertex budget", "", 3000, 200, 200000, group,
          "Sets the largest edge (thin vessels get 0.8 of their radius); thesis meshes: 1,427-2,251 vertices.",
          ParameterSpec::Kind::Integer},
+        {"thrombus_layer", "Thrombus layer", "", 0, 0, 1, group,
+         "1: the AAA sac's intraluminal thrombus as its own element layer between the lumen and the wall (needs the "
+         "sac: Vessels > AAA Sac; run with the Raghavan-Vorp wall model). The CLI's mesh wall --thrombus.",
+         ParameterSpec::Kind::Integer},
     };
 }
 
