@@ -21,7 +21,7 @@ using detail::TissueProfile;
 constexpr double kFirstMarginMm = 2.0; // pass 1: beyond the distance radius (its threshold bias and the blur)
 constexpr double kBlurMarginMm = 1.0;  // pass 2: beyond the lumen found, plus half a voxel (3 sigma of the blur)
 constexpr double kShellMm = 1.5;       // tissue sampled this far beyond the tube
-/// Tubes this wide read their own blood in their core (within 0.4 radii of the axis: over 99 % of the contrast
+/// Tubes this wide read their own blood in their core (within 0.4 radii of the axis: over 98 % of the contrast
 /// through a blur of sigma 0.5 mm); thinner ones take it from the nearest such tube along the tree.
 constexpr double kOwnBloodRadiusMm = 1.8;
 
