@@ -1,7 +1,9 @@
 """Recall of an artery mask's voxels farther than MARGIN mm from the aorta (issue 15 must-show 3: the aorta alone is
 most of the liver CT's artery mask, so Dice against the whole mask says little). Usage:
-far_recall.py STUDY.vsim LABEL_ID ARTERY_MASK_ID [MARGIN_MM] -> JSON on stdout, with the median CT HU of the far
-voxels and of the mask's aorta (the study's image-1, signed 16-bit): how much contrast the far arteries carry.
+far_recall.py STUDY.vsim LABEL_ID ARTERY_MASK_ID [MARGIN_MM [LIVER_MASK_ID]] -> JSON on stdout, with the median
+CT HU of the far voxels and of the mask's aorta (the study's image-1, signed 16-bit): how much contrast the far
+arteries carry; with a liver mask also the liver's median HU and robust standard deviation (1.4826 x the median
+absolute deviation, artery-mask voxels left out) and the far arteries' contrast-to-noise ratio per voxel.
 The aorta: in every axial slice the largest 8-connected piece of the artery mask of 150 mm2 or more (a vertical
 vessel of 14 mm or more); a voxel's distance to it is its in-plane distance to that piece's centroid less the
 piece's equivalent radius, in the same slice or, where the slice has no such piece, the nearest slice that has one.
@@ -63,6 +65,7 @@ def aorta_per_slice(mask, sizes, spacing, min_area_mm2=150.0):
 def main():
     bundle, label_id, artery_id = sys.argv[1:4]
     margin = float(sys.argv[4]) if len(sys.argv) > 4 else 10.0
+    liver_id = sys.argv[5] if len(sys.argv) > 5 else None
     label, sizes, spacing = read_nrrd(bundle, label_id)
     artery, artery_sizes, _ = read_nrrd(bundle, artery_id)
     if artery_sizes != sizes:
@@ -93,10 +96,20 @@ def main():
             far_hu.append(hu[index])
             far += 1
             found += 1 if label[index] else 0
-    print(json.dumps({"label": label_id, "artery_mask": artery_id, "margin_mm": margin, "aorta_slices": len(slices),
-                      "far_voxels": far, "far_recall": found / max(1, far),
-                      "far_median_hu": sorted(far_hu)[len(far_hu) // 2] if far_hu else None,
-                      "aorta_median_hu": sorted(aorta_hu)[len(aorta_hu) // 2] if aorta_hu else None}, indent=1))
+    median = lambda values: sorted(values)[len(values) // 2] if values else None
+    out = {"label": label_id, "artery_mask": artery_id, "margin_mm": margin, "aorta_slices": len(slices),
+           "far_voxels": far, "far_recall": found / max(1, far), "far_median_hu": median(far_hu),
+           "aorta_median_hu": median(aorta_hu)}
+    if liver_id:
+        liver, liver_sizes, _ = read_nrrd(bundle, liver_id)
+        if liver_sizes != sizes:
+            sys.exit(f"{liver_id} is on another grid than {label_id}")
+        parenchyma = [hu[index] for index, value in enumerate(liver) if value and not artery[index]]
+        level = median(parenchyma)
+        spread = 1.4826 * median([abs(v - level) for v in parenchyma])
+        out.update({"liver_median_hu": level, "liver_sd_hu": spread,
+                    "far_contrast_to_noise": (out["far_median_hu"] - level) / spread if spread else None})
+    print(json.dumps(out, indent=1))
 
 
 if __name__ == "__main__":
