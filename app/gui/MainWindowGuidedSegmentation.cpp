@@ -53,9 +53,11 @@ void MainWindow::createSegmentationPointsDock()
     for (viz::SliceOrientation orientation : kOrientations)
     {
         viz::SliceView* view = m_views->sliceView(orientation);
-        connect(view, &viz::SliceView::pointPlaced, this, [this](const Eigen::Vector3d& point) {
-            const bool include = m_pointsPanel->placing() == SegmentationPointsPanel::Placing::Include;
-            m_pointsPanel->addPoint(point, include);
+        connect(view, &viz::SliceView::pointPlaced, this, [this, orientation](const Eigen::Vector3d& point) {
+            if (m_pointsPanel->placing() == SegmentationPointsPanel::Placing::Stop)
+                m_pointsPanel->addStop(point, viz::screenAxes(orientation).normal()); // the view's plane
+            else
+                m_pointsPanel->addPoint(point, m_pointsPanel->placing() == SegmentationPointsPanel::Placing::Include);
             m_pointsPanel->setPlacing(SegmentationPointsPanel::Placing::None); // one click, one point (as Slicer)
         });
         connect(view, &viz::SliceView::markerMoved, this,

@@ -15,9 +15,12 @@ namespace {
 
 constexpr std::array<double, 3> kIncludeRgb{0.2, 1.0, 0.3};
 constexpr std::array<double, 3> kExcludeRgb{1.0, 0.3, 0.3};
+constexpr std::array<double, 3> kStopRgb{1.0, 0.85, 0.2};
 
 /// The point's tag as drawn and listed: "+2" for the second include point, "x1" for the first exclude point.
 QString tagOf(bool include, int number) { return QString("%1%2").arg(include ? "+" : "x").arg(number); }
+/// A stop plane's tag: "|1" for the first.
+QString stopTag(int number) { return QString("|%1").arg(number); }
 
 } // namespace
 
@@ -50,7 +53,10 @@ SegmentationPointsPanel::SegmentationPointsPanel(QWidget* parent) : QWidget(pare
                                   "move it)"));
     m_placeExclude->setToolTip(tr("Click in what must stay out (heart chamber, vein, kidney, bone) to add an exclude "
                                   "point"));
-    for (QPushButton* button : {m_placeInclude, m_placeExclude})
+    m_placeStop = new QPushButton(tr("Place Stop"), this);
+    m_placeStop->setToolTip(tr("Click in a slice view where the vessel must end: a stop plane in that view's plane "
+                               "through the point; the fronts do not cross it away from the include points"));
+    for (QPushButton* button : {m_placeInclude, m_placeExclude, m_placeStop})
     {
         button->setCheckable(true);
         placing->addWidget(button);
@@ -59,12 +65,14 @@ SegmentationPointsPanel::SegmentationPointsPanel(QWidget* parent) : QWidget(pare
             [this](bool on) { setPlacing(on ? Placing::Include : Placing::None); });
     connect(m_placeExclude, &QPushButton::clicked, this,
             [this](bool on) { setPlacing(on ? Placing::Exclude : Placing::None); });
+    connect(m_placeStop, &QPushButton::clicked, this, [this](bool on) { setPlacing(on ? Placing::Stop : Placing::None); });
     layout->addLayout(placing);
 
     m_table = new QTableWidget(0, 4, this);
     m_table->setObjectName("segmentationPoints");
     m_table->setHorizontalHeaderLabels({tr("Point"), tr("x (mm)"), tr("y (mm)"), tr("z (mm)")});
-    m_table->horizontalHeaderItem(0)->setToolTip(tr("+N include point, xN exclude point"));
+    m_table->horizontalHeaderItem(0)->setToolTip(tr("+N include point, xN exclude point, |N stop plane (its normal in "
+                                                    "the tag's tooltip)"));
     for (int column = 1; column < 4; ++column)
         m_table->horizontalHeaderItem(column)->setToolTip(tr("Patient frame (LPS), mm"));
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -83,6 +91,7 @@ SegmentationPointsPanel::SegmentationPointsPanel(QWidget* parent) : QWidget(pare
     auto* clear = new QPushButton(tr("Clear"), this);
     connect(clear, &QPushButton::clicked, this, [this] {
         m_points.clear();
+        m_stops.clear();
         refreshTable();
     });
     m_segment = new QPushButton(tr("Segment"), this);
@@ -131,11 +140,28 @@ void SegmentationPointsPanel::addPoint(const Eigen::Vector3d& pointMm, bool incl
     m_table->selectRow(int(m_points.size()) - 1);
 }
 
+void SegmentationPointsPanel::addStop(const Eigen::Vector3d& pointMm, const Eigen::Vector3d& planeNormal)
+{
+    Eigen::Vector3d normal = planeNormal.normalized(), centroid = Eigen::Vector3d::Zero();
+    int includes = 0;
+    for (const Point& point : m_points)
+        if (point.include)
+            centroid += point.mm, ++includes;
+    if (includes > 0 && (centroid / includes - pointMm).dot(normal) > 0.0)
+        normal = -normal;
+    m_stops.push_back({pointMm, normal});
+    refreshTable();
+    m_table->selectRow(int(m_points.size() + m_stops.size()) - 1);
+}
+
 void SegmentationPointsPanel::movePoint(int id, const Eigen::Vector3d& pointMm)
 {
-    if (id < 0 || id >= int(m_points.size()))
+    if (id < 0 || id >= int(m_points.size() + m_stops.size()))
         return;
-    m_points[std::size_t(id)].mm = pointMm;
+    if (id < int(m_points.size()))
+        m_points[std::size_t(id)].mm = pointMm;
+    else
+        m_stops[std::size_t(id) - m_points.size()].pointMm = pointMm;
     refreshTable();
     m_table->selectRow(id);
     if (rerunsOnMove())
@@ -144,9 +170,12 @@ void SegmentationPointsPanel::movePoint(int id, const Eigen::Vector3d& pointMm)
 
 void SegmentationPointsPanel::removePoint(int id)
 {
-    if (id < 0 || id >= int(m_points.size()))
+    if (id < 0 || id >= int(m_points.size() + m_stops.size()))
         return;
-    m_points.erase(m_points.begin() + id);
+    if (id < int(m_points.size()))
+        m_points.erase(m_points.begin() + id);
+    else
+        m_stops.erase(m_stops.begin() + (id - int(m_points.size())));
     refreshTable();
 }
 
@@ -164,6 +193,15 @@ std::vector<viz::SliceMarker> SegmentationPointsPanel::markers() const
         marker.text = tagOf(point.include, point.include ? ++includes : ++excludes).toStdString();
         markers.push_back(marker);
     }
+    for (std::size_t n = 0; n < m_stops.size(); ++n)
+    {
+        viz::SliceMarker marker;
+        marker.id = int(m_points.size() + n);
+        marker.pointMm = m_stops[n].pointMm;
+        marker.rgb = kStopRgb;
+        marker.text = stopTag(int(n) + 1).toStdString();
+        markers.push_back(marker);
+    }
     return markers;
 }
 
@@ -172,6 +210,7 @@ void SegmentationPointsPanel::setPlacing(Placing placing)
     m_placing = placing;
     m_placeInclude->setChecked(placing == Placing::Include);
     m_placeExclude->setChecked(placing == Placing::Exclude);
+    m_placeStop->setChecked(placing == Placing::Stop);
     emit placingChanged(placing);
 }
 
@@ -179,13 +218,20 @@ bool SegmentationPointsPanel::rerunsOnMove() const { return m_rerun->isChecked()
 
 void SegmentationPointsPanel::refreshTable()
 {
-    m_table->setRowCount(int(m_points.size()));
     const std::vector<viz::SliceMarker> tags = markers();
-    for (std::size_t n = 0; n < m_points.size(); ++n)
+    m_table->setRowCount(int(tags.size()));
+    for (std::size_t n = 0; n < tags.size(); ++n)
     {
-        m_table->setItem(int(n), 0, new QTableWidgetItem(QString::fromStdString(tags[n].text)));
+        auto* tag = new QTableWidgetItem(QString::fromStdString(tags[n].text));
+        if (n >= m_points.size())
+        {
+            const Eigen::Vector3d& normal = m_stops[n - m_points.size()].normal;
+            tag->setToolTip(tr("Stop plane, normal (%1, %2, %3) towards the side the fronts do not enter")
+                                .arg(normal.x(), 0, 'f', 2).arg(normal.y(), 0, 'f', 2).arg(normal.z(), 0, 'f', 2));
+        }
+        m_table->setItem(int(n), 0, tag);
         for (int axis = 0; axis < 3; ++axis)
-            m_table->setItem(int(n), axis + 1, new QTableWidgetItem(QString::number(m_points[n].mm[axis], 'f', 1)));
+            m_table->setItem(int(n), axis + 1, new QTableWidgetItem(QString::number(tags[n].pointMm[axis], 'f', 1)));
     }
     emit pointsChanged();
 }

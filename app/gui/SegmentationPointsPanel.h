@@ -24,7 +24,7 @@ class SegmentationPointsPanel : public QWidget
 {
     Q_OBJECT
 public:
-    enum class Placing { None, Include, Exclude };
+    enum class Placing { None, Include, Exclude, Stop };
 
     explicit SegmentationPointsPanel(QWidget* parent = nullptr);
 
@@ -33,7 +33,11 @@ public:
     /// Shows a request (e.g. the one a label was made with); the points' markers are redrawn.
     void setRequest(const imaging::SegmentationRequest& request);
     void addPoint(const Eigen::Vector3d& pointMm, bool include);
-    /// Marker ids are the points' rows: moves or removes the point of row `id`.
+    /// A stop plane through `pointMm` with the plane's normal (the clicked view's); the normal is turned away from the
+    /// include points' centroid, so the fronts stop on the far side of the plane from the points.
+    void addStop(const Eigen::Vector3d& pointMm, const Eigen::Vector3d& planeNormal);
+    /// Marker ids are the points' rows (include and exclude points, then stop planes): moves or removes the point of
+    /// row `id` (a stop plane moves with its point).
     void movePoint(int id, const Eigen::Vector3d& pointMm);
     void removePoint(int id);
     std::vector<viz::SliceMarker> markers() const;
@@ -60,13 +64,14 @@ private:
     void refreshTable();
 
     std::vector<Point> m_points;
-    std::vector<imaging::StopPlane> m_stops;
+    std::vector<imaging::StopPlane> m_stops; ///< listed and drawn after the points
     Placing m_placing = Placing::None;
     QComboBox* m_target = nullptr;
     QDoubleSpinBox* m_maxLength = nullptr;
     QTableWidget* m_table = nullptr;
     QPushButton* m_placeInclude = nullptr;
     QPushButton* m_placeExclude = nullptr;
+    QPushButton* m_placeStop = nullptr;
     QPushButton* m_segment = nullptr;
     QCheckBox* m_rerun = nullptr;
 };

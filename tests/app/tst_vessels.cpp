@@ -414,6 +414,33 @@ private slots:
         QCOMPARE(reopened.segmentationPointsPanel()->request().includeMm.size(), std::size_t(1));
         QVERIFY((reopened.segmentationPointsPanel()->request().includeMm.front() - moved).norm() < 0.01);
         QCOMPARE(reopened.segmentationPointsPanel()->request().target, imaging::SegmentationTarget::Aorta);
+
+        // A stop plane clicked in the axial view 30 mm below the aorta point: the axial plane there, its normal
+        // turned away from the include point (inferior), listed as |1 and drawn in every view; the label then ends
+        // at it.
+        const Eigen::Vector3d stopAt = aorta - Eigen::Vector3d(0.0, 0.0, 30.0);
+        axial->setCursor(stopAt);
+        panel->setPlacing(gui::SegmentationPointsPanel::Placing::Stop);
+        click(axial, QEvent::MouseButtonPress, middle, Qt::LeftButton);
+        click(axial, QEvent::MouseButtonRelease, middle, Qt::NoButton);
+        const imaging::SegmentationRequest stopped = panel->request();
+        QCOMPARE(stopped.stops.size(), std::size_t(1));
+        QVERIFY((stopped.stops.front().pointMm - stopAt).norm() < 1.0);
+        QVERIFY((stopped.stops.front().normal - Eigen::Vector3d(0.0, 0.0, -1.0)).norm() < 1e-9);
+        QCOMPARE(panel->pointTable()->item(1, 0)->text(), QString("|1"));
+        QCOMPARE(axial->markers().size(), std::size_t(2));
+        QVERIFY(window.segmentFromPoints(stopped));
+        QVERIFY(vsim::test::waitForTask(window));
+        const LabelVolume ended = study.loadLabel(study.artifacts().back().id);
+        double lowest = 1e9;
+        for (int k = 0; k < ended.geometry().dims[2]; ++k)
+            for (int j = 0; j < ended.geometry().dims[1]; ++j)
+                for (int i = 0; i < ended.geometry().dims[0]; ++i)
+                    if (ended.at(i, j, k))
+                        lowest = std::min(lowest, ended.geometry().indexToPatient(Eigen::Vector3d(i, j, k)).z());
+        const double planeZ = stopped.stops.front().pointMm.z(); // on the shown slice
+        qInfo("stop plane at z %.1f mm: the label's lowest voxel at z %.1f mm", planeZ, lowest);
+        QVERIFY(lowest >= planeZ - 0.01 && lowest < planeZ + 3.0);
     }
 
     void withoutImageSaysWhatToDo()

@@ -502,7 +502,13 @@ private:
                 j >= m_box.low[1] + m_box.size[1] || k >= m_box.low[2] + m_box.size[2])
                 return false;
             const std::uint32_t b = m_box.index(i, j, k);
-            return out.label.at(i, j, k) ? smallVessel(b) : m_state[b] == kUntouched;
+            if (out.label.at(i, j, k))
+                return smallVessel(b);
+            const Vector3d p = m_ct.geometry().indexToPatient(Vector3d(i, j, k));
+            for (const auto& [point, normal] : m_settings.stops) // nothing is added beyond a stop plane
+                if ((p - point).dot(normal) > 0.0)
+                    return false;
+            return m_state[b] == kUntouched;
         };
         moveToLocalHalfLevel(m_ct, out.label, m_box.low, m_box.size, mayMove, 1);
         out.waves = waves;
