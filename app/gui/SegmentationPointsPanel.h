@@ -28,7 +28,7 @@ public:
 
     explicit SegmentationPointsPanel(QWidget* parent = nullptr);
 
-    /// The request as the panel holds it (stop planes as they were set by setRequest()).
+    /// The request as the panel holds it (stop planes from setRequest() or Place Stop).
     imaging::SegmentationRequest request() const;
     /// Shows a request (e.g. the one a label was made with); the points' markers are redrawn.
     void setRequest(const imaging::SegmentationRequest& request);
