@@ -198,6 +198,16 @@ private:
         return m_smooth[b];
     }
 
+    /// Whether a voxel lies beyond a stop plane (on its normal's side), where include fronts never go.
+    bool beyondStop(int i, int j, int k) const
+    {
+        const Vector3d p = m_ct.geometry().indexToPatient(Vector3d(i, j, k));
+        for (const auto& [point, normal] : m_settings.stops)
+            if ((p - point).dot(normal) > 0.0)
+                return true;
+        return false;
+    }
+
     bool accepted(std::uint32_t b, float dist, const FrontSeed& seed)
     {
         float brightest = 0.0f;
@@ -212,11 +222,7 @@ private:
             return false;
         }
         const auto [i, j, k] = m_box.voxel(b);
-        const Vector3d p = m_ct.geometry().indexToPatient(Vector3d(i, j, k));
-        for (const auto& [point, normal] : m_settings.stops)
-            if ((p - point).dot(normal) > 0.0)
-                return false;
-        return true;
+        return !beyondStop(i, j, k);
     }
 
     void expand(std::uint32_t v, float dist, const FrontSeed& seed)
@@ -504,11 +510,7 @@ private:
             const std::uint32_t b = m_box.index(i, j, k);
             if (out.label.at(i, j, k))
                 return smallVessel(b);
-            const Vector3d p = m_ct.geometry().indexToPatient(Vector3d(i, j, k));
-            for (const auto& [point, normal] : m_settings.stops) // nothing is added beyond a stop plane
-                if ((p - point).dot(normal) > 0.0)
-                    return false;
-            return m_state[b] == kUntouched;
+            return m_state[b] == kUntouched && !beyondStop(i, j, k); // nothing is added beyond a stop plane
         };
         moveToLocalHalfLevel(m_ct, out.label, m_box.low, m_box.size, mayMove, 1);
         out.waves = waves;
