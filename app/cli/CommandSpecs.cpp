@@ -131,10 +131,11 @@ std::vector<CommandSpec> declareCommands()
          "    two-phase vs liquid, tumour share and the best tip positions",
          simulateNetwork},
         {"validate", 1, 1, {},
-         "validate <case|fem|network|all>\n"
+         "validate <case|fem|network|heat|all>\n"
          "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"
-         "    fem-damping) and the drug network (network-cylinder, network-cone, network-conservation,\n"
-         "    network-bifurcation, network-confluence); exit 0 only when every figure is within its tolerance",
+         "    fem-lame-quadratic, fem-damping), the drug network (network-cylinder, network-cone,\n"
+         "    network-conservation, network-bifurcation, network-confluence) and the run driver's template solver\n"
+         "    (heat-decay); exit 0 only when every figure is within its tolerance",
          validateSolvers},
         {"report", 0, 0,
          {kStudy, required("out"), value("sections"), value("page"), value("dicom-pdf"), flag("anonymize"),

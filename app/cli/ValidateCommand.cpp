@@ -2,35 +2,60 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/fem/FemValidation.h"
+#include "vsim/sim/heat/HeatValidation.h"
 #include "vsim/sim/network/NetworkValidation.h"
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <iostream>
 
 namespace vsim::cli {
 
+namespace {
+
+/// One solver's validation cases and how to run one of them.
+struct CaseFamily
+{
+    std::string name; ///< as given on the command line: "fem", "network", "heat"
+    std::vector<std::string> cases;
+    std::function<ValidationResult(const std::string&, const Progress&)> run;
+};
+
+std::vector<CaseFamily> caseFamilies()
+{
+    return {{"fem", sim::fem::femValidationCases(), [](const std::string& c, const Progress& p) { return sim::fem::runFemValidation(c, p); }},
+            {"network", sim::network::networkValidationCases(),
+             [](const std::string& c, const Progress& p) { return sim::network::runNetworkValidation(c, p); }},
+            {"heat", sim::heat::heatValidationCases(),
+             [](const std::string& c, const Progress& p) { return sim::heat::runHeatValidation(c, p); }}};
+}
+
+} // namespace
+
 int validateSolvers(const Arguments& arguments, const Progress& progress)
 {
     const std::string requested = arguments.positional.front();
-    const std::vector<std::string> fem = sim::fem::femValidationCases(),
-                                   network = sim::network::networkValidationCases();
-    std::vector<std::string> names{requested};
-    if (requested == "fem" || requested == "network" || requested == "all")
+    std::vector<std::pair<std::string, const CaseFamily*>> runs; // case, its family
+    const std::vector<CaseFamily> families = caseFamilies();
+    std::string familyNames, cases;
+    for (const CaseFamily& family : families)
     {
-        names.clear();
-        if (requested != "network")
-            names.insert(names.end(), fem.begin(), fem.end());
-        if (requested != "fem")
-            names.insert(names.end(), network.begin(), network.end());
+        for (const std::string& name : family.cases)
+        {
+            if (requested == "all" || requested == family.name || requested == name)
+                runs.emplace_back(name, &family);
+            cases += ", " + name;
+        }
+        familyNames += ", " + family.name;
     }
+    if (runs.empty())
+        throw Error("unknown validation case '" + requested + "' (known: all" + familyNames + cases + ")");
     std::vector<std::string> failures;
-    for (std::size_t i = 0; i < names.size(); ++i)
+    for (std::size_t i = 0; i < runs.size(); ++i)
     {
-        const Progress part = progress.subRange(double(i) / names.size(), double(i + 1) / names.size());
-        const ValidationResult result = names[i].rfind("network-", 0) == 0
-                                            ? sim::network::runNetworkValidation(names[i], part)
-                                            : sim::fem::runFemValidation(names[i], part);
+        const Progress part = progress.subRange(double(i) / runs.size(), double(i + 1) / runs.size());
+        const ValidationResult result = runs[i].second->run(runs[i].first, part);
         nlohmann::json figures = nlohmann::json::array();
         for (const ValidationFigure& figure : result.figures)
         {
