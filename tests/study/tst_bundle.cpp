@@ -170,7 +170,7 @@ private slots:
             std::ifstream in(bundle / "study.json");
             text.assign(std::istreambuf_iterator<char>(in), {});
         }
-        const auto position = text.find("\"schema_version\": 1");
+        const auto position = text.find("\"schema_version\": 2");
         QVERIFY(position != std::string::npos);
         text.replace(position, 19, "\"schema_version\": 99");
         std::ofstream(bundle / "study.json") << text;

@@ -15,14 +15,14 @@ std::string kindName(ArtifactKind kind)
     case ArtifactKind::Skeleton: return "skeleton";
     case ArtifactKind::Network: return "network";
     case ArtifactKind::Report: return "report";
+    case ArtifactKind::Run: return "run";
     }
     return "unknown";
 }
 
 ArtifactKind kindFromName(const std::string& name)
 {
-    for (ArtifactKind kind : {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface, ArtifactKind::TetMesh,
-                              ArtifactKind::Skeleton, ArtifactKind::Network, ArtifactKind::Report})
+    for (ArtifactKind kind : kArtifactKinds)
         if (kindName(kind) == name)
             return kind;
     throw Error("unknown artifact kind '" + name + "'", {{"kind", name}});

@@ -1,6 +1,7 @@
 #include "ArtifactFiles.h"
 
 #include "BundleFiles.h"
+#include "RunFiles.h"
 #include "vsim/core/Error.h"
 #include "vsim/interop/NrrdFile.h"
 #include "vsim/interop/VtkMesh.h"
@@ -96,10 +97,8 @@ auto readVtkXml(const std::filesystem::path& file)
 
 ArtifactKind kindOf(const ArtifactData& data)
 {
-    static constexpr ArtifactKind kinds[] = {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface,
-                                             ArtifactKind::TetMesh, ArtifactKind::Skeleton, ArtifactKind::Network,
-                                             ArtifactKind::Report};
-    return kinds[data.index()];
+    static_assert(std::size(kArtifactKinds) == std::variant_size_v<ArtifactData>);
+    return kArtifactKinds[data.index()];
 }
 
 std::string fileExtension(ArtifactKind kind)
@@ -111,7 +110,8 @@ std::string fileExtension(ArtifactKind kind)
     case ArtifactKind::Surface: return ".vtp";
     case ArtifactKind::TetMesh: return ".vtu";
     case ArtifactKind::Skeleton:
-    case ArtifactKind::Network: return ".json";
+    case ArtifactKind::Network:
+    case ArtifactKind::Run: return ".json";
     case ArtifactKind::Report: return ".pdf";
     }
     return {};
@@ -128,8 +128,16 @@ std::string folderName(ArtifactKind kind)
     case ArtifactKind::Skeleton: return "skeletons";
     case ArtifactKind::Network: return "networks";
     case ArtifactKind::Report: return "reports";
+    case ArtifactKind::Run: return "runs";
     }
     return {};
+}
+
+std::filesystem::path artifactFilePath(ArtifactKind kind, const std::string& id)
+{
+    if (kind == ArtifactKind::Run)
+        return std::filesystem::path(folderName(kind)) / id / "run.json";
+    return std::filesystem::path(folderName(kind)) / (id + fileExtension(kind));
 }
 
 void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& file)
@@ -161,6 +169,7 @@ void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& fi
             throw Error("cannot write the report", {{"file", file.string()}});
         break;
     }
+    case ArtifactKind::Run: writeRunFolder(std::get<SolverRun>(data), file); break;
     }
     syncFile(file);
 }
@@ -191,6 +200,7 @@ ArtifactData readArtifactFile(ArtifactKind kind, const std::filesystem::path& fi
         }
     case ArtifactKind::Network: return readNetworkFile(file);
     case ArtifactKind::Report: return Document{readTextFile(file)};
+    case ArtifactKind::Run: return readRunFolder(file, true);
     }
     throw Error("unknown artifact kind");
 }

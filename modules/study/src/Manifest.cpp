@@ -66,7 +66,7 @@ Manifest manifestFromText(const std::string& text)
             throw Error("the study was written by a newer VascuSim (schema " + std::to_string(schema) +
                             "); this build reads schema " + std::to_string(kSchemaVersion) + " and older",
                         {{"software_version", document.value("software_version", "unknown")}});
-        // Schema 1 is the first; migrations from older schemas go here as they appear.
+        // Schema 2 only adds the run kind: a schema 1 manifest reads as it is. Migrations go here as they appear.
         Manifest manifest;
         manifest.name = document.at("name").get<std::string>();
         manifest.metadata = document.at("metadata").get<std::map<std::string, std::string>>();

@@ -3,6 +3,7 @@
 #include "ArtifactFiles.h"
 #include "BundleFiles.h"
 #include "Manifest.h"
+#include "RunFiles.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/core/Version.h"
@@ -20,9 +21,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kManifestFile = "study.json";
-constexpr ArtifactKind kAllKinds[] = {ArtifactKind::Image, ArtifactKind::Label, ArtifactKind::Surface,
-                                      ArtifactKind::TetMesh, ArtifactKind::Skeleton, ArtifactKind::Network,
-                                      ArtifactKind::Report};
 
 /// Checks an artifact's file against the manifest; returns why it is damaged, or an empty string.
 std::string checkArtifactFile(const fs::path& bundle, const Artifact& artifact)
@@ -35,6 +33,8 @@ std::string checkArtifactFile(const fs::path& bundle, const Artifact& artifact)
         return "file size differs from the manifest: " + artifact.file;
     if (fileChecksum(file) != artifact.checksum)
         return "file checksum differs from the manifest (damaged): " + artifact.file;
+    if (artifact.kind == ArtifactKind::Run)
+        return checkRunFrames(file);
     return {};
 }
 
@@ -57,9 +57,14 @@ std::vector<fs::path> unreferencedFiles(const fs::path& bundle, const Manifest& 
     for (const Artifact& artifact : manifest.artifacts)
         referenced.insert(bundle / artifact.file);
     std::vector<fs::path> leftovers;
-    for (ArtifactKind kind : kAllKinds)
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(bundle / folderName(ArtifactKind::Run), error))
+        if (entry.is_directory() && isArtifactFileName(ArtifactKind::Run, entry.path().filename().string() + ".json") &&
+            !referenced.count(entry.path() / "run.json"))
+            for (const fs::path& file : runFolderFiles(entry.path()))
+                leftovers.push_back(file);
+    for (ArtifactKind kind : kArtifactKinds)
     {
-        std::error_code error;
         for (const auto& entry : fs::directory_iterator(bundle / folderName(kind), error))
             if (entry.is_regular_file() && !referenced.count(entry.path()) &&
                 isArtifactFileName(kind, entry.path().filename().string()))
@@ -68,6 +73,19 @@ std::vector<fs::path> unreferencedFiles(const fs::path& bundle, const Manifest& 
     if (fs::exists(bundle / (std::string(kManifestFile) + ".tmp")))
         leftovers.push_back(bundle / (std::string(kManifestFile) + ".tmp"));
     return leftovers;
+}
+
+/// Removes the run folders (and their frames/ folders) that removing a run's files left empty.
+void removeEmptyRunFolders(const fs::path& bundle)
+{
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator(bundle / folderName(ArtifactKind::Run), error))
+        if (entry.is_directory() && isArtifactFileName(ArtifactKind::Run, entry.path().filename().string() + ".json"))
+        {
+            std::error_code notEmpty; // remove() leaves a folder that still holds anything
+            fs::remove(entry.path() / "frames", notEmpty);
+            fs::remove(entry.path(), notEmpty);
+        }
 }
 
 } // namespace
@@ -253,6 +271,14 @@ std::string Study::addNetwork(const VesselNetwork& network, const std::string& n
     return m_state->add(network, name, std::move(provenance), std::move(warnings));
 }
 
+std::string Study::addRun(const SolverRun& run, const std::string& name, Provenance provenance,
+                          std::vector<std::string> warnings)
+{
+    if (run.frames.empty() || run.frames.size() != run.keptFrameNumbers.size())
+        throw Error("a run added to the study needs its frames");
+    return m_state->add(run, name, std::move(provenance), std::move(warnings));
+}
+
 std::string Study::addReport(const std::string& pdf, const std::string& name, Provenance provenance,
                              std::vector<std::string> warnings)
 {
@@ -288,6 +314,33 @@ VesselNetwork Study::loadNetwork(const std::string& id) const
 std::string Study::loadReport(const std::string& id) const
 {
     return std::get<Document>(m_state->load(id, ArtifactKind::Report)).bytes;
+}
+
+SolverRun Study::loadRun(const std::string& id, bool withFrames) const
+{
+    const Artifact& entry = m_state->find(id);
+    if (entry.kind != ArtifactKind::Run || m_state->pending.count(id) || withFrames)
+        return std::get<SolverRun>(m_state->load(id, ArtifactKind::Run));
+    if (entry.damaged)
+        throw Error("artifact '" + entry.name + "' is damaged: " + entry.damage, {{"artifact", id}});
+    return readRunFolder(m_state->bundle / entry.file, false);
+}
+
+RunFrame Study::loadRunFrame(const std::string& id, std::size_t index) const
+{
+    const Artifact& entry = m_state->find(id);
+    if (entry.kind != ArtifactKind::Run)
+        throw Error("artifact '" + id + "' is a " + kindName(entry.kind) + ", not a run", {{"artifact", id}});
+    if (const auto found = m_state->pending.find(id); found != m_state->pending.end())
+    {
+        const SolverRun& run = std::get<SolverRun>(found->second);
+        if (index >= run.frames.size())
+            throw Error("the run has no frame " + std::to_string(index) + " (it kept " + std::to_string(run.frames.size()) + ")");
+        return run.frames[index];
+    }
+    if (entry.damaged)
+        throw Error("artifact '" + entry.name + "' is damaged: " + entry.damage, {{"artifact", id}});
+    return readRunFrame(m_state->bundle / entry.file, index);
 }
 
 VolumeGeometry Study::volumeGeometry(const std::string& id) const
@@ -362,7 +415,7 @@ void Study::save()
         const auto data = state.pending.find(artifact.id);
         if (data == state.pending.end())
             continue;
-        const fs::path relative = fs::path(folderName(artifact.kind)) / (artifact.id + fileExtension(artifact.kind));
+        const fs::path relative = artifactFilePath(artifact.kind, artifact.id);
         fs::create_directories(state.bundle / relative.parent_path());
         writeArtifactFile(data->second, state.bundle / relative);
         artifact.file = relative.string();
@@ -371,9 +424,12 @@ void Study::save()
         artifact.damaged = false;
         artifact.damage.clear();
     }
-    for (ArtifactKind kind : kAllKinds)
+    for (ArtifactKind kind : kArtifactKinds)
         if (fs::exists(state.bundle / folderName(kind)))
             syncDirectory(state.bundle / folderName(kind));
+    for (const Artifact& artifact : next.artifacts)
+        if (artifact.kind == ArtifactKind::Run && state.pending.count(artifact.id))
+            syncDirectory(state.bundle / artifactFilePath(artifact.kind, artifact.id).parent_path());
     // The commit point: until this rename the bundle holds the previous study.
     const std::string manifestText = manifestToText(next);
     writeFileAtomically(manifestPath, manifestText);
@@ -385,6 +441,7 @@ void Study::save()
     state.openWarnings.clear();
     for (const fs::path& leftover : unreferencedFiles(state.bundle, state.manifest))
         fs::remove(leftover);
+    removeEmptyRunFolders(state.bundle);
 }
 
 void Study::saveAs(const fs::path& bundle)
@@ -399,9 +456,16 @@ void Study::saveAs(const fs::path& bundle)
     {
         if (state.pending.count(artifact.id) || artifact.file.empty() || !fs::exists(state.bundle / artifact.file))
             continue;
-        fs::create_directories((bundle / artifact.file).parent_path());
-        fs::copy_file(state.bundle / artifact.file, bundle / artifact.file, fs::copy_options::overwrite_existing);
-        syncFile(bundle / artifact.file);
+        const std::vector<fs::path> files = artifact.kind == ArtifactKind::Run
+                                                ? runFolderFiles((state.bundle / artifact.file).parent_path())
+                                                : std::vector<fs::path>{state.bundle / artifact.file};
+        for (const fs::path& file : files)
+        {
+            const fs::path target = bundle / fs::relative(file, state.bundle);
+            fs::create_directories(target.parent_path());
+            fs::copy_file(file, target, fs::copy_options::overwrite_existing);
+            syncFile(target);
+        }
     }
     state.bundle = bundle;
     state.lock.emplace(std::move(lock)); // releases the old bundle's lock

@@ -2,6 +2,7 @@
 
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/SkeletonGraph.h"
+#include "vsim/core/SolverRun.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/core/TriangleMesh.h"
 #include "vsim/core/VesselNetwork.h"
@@ -15,8 +16,9 @@
 
 namespace vsim::study {
 
-/// Schema version written into study.json; bump it with a migration in Manifest.cpp.
-inline constexpr int kSchemaVersion = 1;
+/// Schema version written into study.json; bump it with a migration in Manifest.cpp. Schema 2 adds the run kind
+/// (runs/<id>/); a schema 1 study reads unchanged.
+inline constexpr int kSchemaVersion = 2;
 
 /// How a study is opened: for writing (its lock held until the Study is destroyed) or for reading only.
 enum class Access
@@ -26,7 +28,7 @@ enum class Access
 };
 
 /// The document: one patient's study as a `<name>.vsim/` bundle (study.json + images/, labels/, surfaces/,
-/// meshes/, skeletons/, networks/, reports/). Artifacts added since the last save are held in memory until save(), which is atomic:
+/// meshes/, skeletons/, networks/, reports/, runs/). Artifacts added since the last save are held in memory until save(), which is atomic:
 /// new files are written and synced first, the manifest is replaced by rename last, and files no longer
 /// referenced are removed after that (only files of VascuSim's own artifact names). A kill at any moment leaves
 /// the old or the new study. One writer at a time: a study opened for writing holds the bundle's StudyLock.
@@ -85,6 +87,11 @@ public:
     std::string addReport(const std::string& pdf, const std::string& name, Provenance provenance,
                           std::vector<std::string> warnings = {});
 
+    /// A simulation run (runs/<id>/: run.json, frames, series.pvd) with its frames in memory until save(). Throws
+    /// vsim::Error for a run without its frames (one whose frames were only streamed).
+    std::string addRun(const SolverRun& run, const std::string& name, Provenance provenance,
+                       std::vector<std::string> warnings = {});
+
     /// Loads an artifact's data (from memory if unsaved, else from its file). Throws vsim::Error for an unknown
     /// id, a kind mismatch, or a damaged artifact.
     CtVolume loadImage(const std::string& id) const;
@@ -95,6 +102,11 @@ public:
     VesselNetwork loadNetwork(const std::string& id) const;
     /// The PDF bytes of a report artifact.
     std::string loadReport(const std::string& id) const;
+    /// A run: its record (axis, status, metrics, provenance, which frames were kept) and, with `withFrames`, every
+    /// kept frame.
+    SolverRun loadRun(const std::string& id, bool withFrames = true) const;
+    /// Kept frame `index` of a run (0 = the first), read alone (the time player). Throws vsim::Error out of range.
+    RunFrame loadRunFrame(const std::string& id, std::size_t index) const;
 
     /// The geometry of an image or label artifact, read from the file header only (no voxels).
     /// Throws vsim::Error for another kind or a damaged artifact.
