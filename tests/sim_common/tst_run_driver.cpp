@@ -41,7 +41,7 @@ public:
     void initialize(const SimulationInput&, const ParameterSet&) override { m_step = 0; }
     RunAxis axis() const override { return {"time", "s", 10.0}; }
     double position() const override { return m_step; }
-    StepOutcome step(RunStatus& status) override
+    StepOutcome step(RunStatus& status, const Progress&) override
     {
         ++m_step;
         status.recordSolve(3, 1e-9, 1e-8, 100);

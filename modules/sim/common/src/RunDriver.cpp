@@ -143,7 +143,6 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
     solver.initialize(input, parameters);
     run.axis = solver.axis();
     RunStatus& status = run.status;
-    status.reachedQuantity = run.axis.quantity, status.reachedUnit = run.axis.unit, status.target = run.axis.target;
 
     std::string why;
     bool stateBroken = false; // a frame showed values that are not finite: no later snapshot is good
@@ -163,9 +162,14 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
                          " steps (a collapsing time step?)");
                 break;
             }
-            const StepOutcome outcome = solver.step(status);
+            const double before = solver.position();
+            const StepOutcome outcome = solver.step(status, progress);
             if (outcome.kind == StepOutcome::Kind::Guard)
             {
+                // A guard after the step itself went through (the wall's equilibrium after its last path step)
+                // leaves the state of that step: it counts.
+                if (solver.position() != before)
+                    ++run.steps;
                 stop(status, RunStatus::StoppedBy::Guard, outcome.message);
                 break;
             }
@@ -183,8 +187,8 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
                 }
             if (ends)
                 break;
-            progress.report(run.axis.target > 0.0 ? std::clamp(solver.position() / run.axis.target, 0.0, 1.0) : 1.0,
-                            solver.name());
+            const double fraction = run.axis.target > 0.0 ? std::clamp(solver.position() / run.axis.target, 0.0, 1.0) : 1.0;
+            progress.report(fraction * solver.axisProgressShare(), solver.name());
         }
     }
     catch (const Cancelled&)
@@ -196,7 +200,9 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
         if (!stateBroken && frames.lastStep() != run.steps)
             frames.take(solver.snapshot(), run.steps, solver.position(), true, why);
     frames.finish();
-    status.reached = solver.position();
+    // After the loop: a solver may have replaced the status by its final solve's (the wall's equilibrium).
+    status.reachedQuantity = run.axis.quantity, status.reachedUnit = run.axis.unit;
+    status.reached = solver.position(), status.target = run.axis.target;
 
     run.metrics = solver.metrics();
     for (const auto& [key, value] : status.metrics())

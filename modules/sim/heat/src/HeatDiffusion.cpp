@@ -54,7 +54,7 @@ double HeatDiffusionSolver::exact(int i, int j, int k, double timeS) const
            std::sin(pi * j / cells) * std::sin(pi * k / cells);
 }
 
-StepOutcome HeatDiffusionSolver::step(RunStatus&)
+StepOutcome HeatDiffusionSolver::step(RunStatus&, const Progress&)
 {
     const double dt = std::min(m_stepS, m_endTimeS - m_timeS);
     const double c = dt * m_diffusivityM2S / (m_spacingM * m_spacingM);

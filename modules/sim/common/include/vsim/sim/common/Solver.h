@@ -6,6 +6,7 @@
 // its physics. `modules/sim/heat` is the smallest example (sim/common/README.md).
 
 #include "vsim/core/Parameters.h"
+#include "vsim/core/Progress.h"
 #include "vsim/core/RunStatus.h"
 #include "vsim/core/SimulationData.h"
 #include "vsim/core/SolverRun.h"
@@ -48,9 +49,13 @@ public:
     virtual RunAxis axis() const = 0;
     /// Where the run stands on its axis (in the axis unit).
     virtual double position() const = 0;
+    /// The share of the progress bar that the axis fills (the rest is a final solve after the axis's end, as the
+    /// wall's equilibrium after its load path); 1 by default.
+    virtual double axisProgressShare() const { return 1.0; }
     /// Advances by one step; each linear or nonlinear solve it makes is recorded in `status` (recordSolve), and a
-    /// final force residual where the solver has one.
-    virtual StepOutcome step(RunStatus& status) = 0;
+    /// final force residual where the solver has one. `progress` is the run's: a long step checks it for a cancel
+    /// (vsim::Cancelled, the state put back to the last good one) and reports past axisProgressShare().
+    virtual StepOutcome step(RunStatus& status, const Progress& progress) = 0;
     /// The current state as a frame (mm, fields with units in their names).
     virtual SimulationData snapshot() const = 0;
     /// The solver's figures of the current state, with units in their keys ("peak_temperature_rise_k").

@@ -25,7 +25,7 @@ public:
     double position() const override { return m_timeS; }
     /// One forward-Euler step (the last one shortened to land on the end time). A rise above the initial maximum
     /// breaks the maximum principle (an unstable step): a guard, the field left as it was.
-    StepOutcome step(RunStatus& status) override;
+    StepOutcome step(RunStatus& status, const Progress& progress) override;
     /// The field "temperature_rise_k" on the (cells + 1)^3 nodes, mm.
     SimulationData snapshot() const override;
     /// peak_temperature_rise_k, analytic_peak_temperature_rise_k, relative_l2_error (against the exact solution,
