@@ -197,15 +197,16 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
                                    }()},
                                   {"parameters", sim::fem::femProtocolValues(parameters, protocol)}};
 
-    const std::string id = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters, backend);
+    const app::WallRunIds ids = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters, backend);
     study.save();
     if (arguments.hasOption("out"))
         study::writeRunSeries(arguments.option("out"), run.frames, run.frameTimesS, document.dump(2));
     progress.report(1.0, "saved");
     nlohmann::json printed = document;
-    printed["artifact"] = id;
+    printed["artifact"] = ids.stress;
+    printed["run_artifact"] = ids.run;
     std::cout << printed.dump(2) << "\n";
-    return runExitCode(run.status, id);
+    return runExitCode(run.status, ids.stress);
 }
 
 } // namespace vsim::cli

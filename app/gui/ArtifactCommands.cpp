@@ -63,26 +63,34 @@ void RemoveArtifactCommand::undo()
 }
 
 AddedArtifactCommand::AddedArtifactCommand(StudyDocument& document, std::string id, const QString& description)
-    : m_document(document), m_id(std::move(id))
+    : AddedArtifactCommand(document, std::vector<std::string>{std::move(id)}, description)
+{
+}
+
+AddedArtifactCommand::AddedArtifactCommand(StudyDocument& document, std::vector<std::string> ids,
+                                           const QString& description)
+    : m_document(document), m_ids(std::move(ids))
 {
     setText(description);
 }
 
 void AddedArtifactCommand::redo()
 {
-    if (m_firstRedo) // the task already added it
+    if (m_firstRedo) // the task already added them
     {
         m_firstRedo = false;
         m_document.notifyChanged();
         return;
     }
-    m_document.study().restoreArtifact(m_id);
+    for (const std::string& id : m_ids)
+        m_document.study().restoreArtifact(id);
     m_document.notifyChanged();
 }
 
 void AddedArtifactCommand::undo()
 {
-    m_document.study().removeArtifact(m_id);
+    for (auto id = m_ids.rbegin(); id != m_ids.rend(); ++id)
+        m_document.study().removeArtifact(*id);
     m_document.notifyChanged();
 }
 

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace vsim::gui {
 
@@ -54,17 +55,19 @@ private:
     std::string m_id;
 };
 
-/// Records an artifact that a task has just added, so that undo removes it and redo brings it back.
+/// Records the artifacts that a task has just added (a wall run: its stress mesh and its Run), so that undo removes
+/// them and redo brings them back.
 class AddedArtifactCommand : public QUndoCommand
 {
 public:
     AddedArtifactCommand(StudyDocument& document, std::string id, const QString& description);
+    AddedArtifactCommand(StudyDocument& document, std::vector<std::string> ids, const QString& description);
     void redo() override;
     void undo() override;
 
 private:
     StudyDocument& m_document;
-    std::string m_id;
+    std::vector<std::string> m_ids;
     bool m_firstRedo = true;
 };
 

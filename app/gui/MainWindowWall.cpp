@@ -117,11 +117,13 @@ bool MainWindow::simulateWall(const std::string& protocol)
             *run = app::runWallProtocol(m_document.study(), protocol, wallId, centerlinesId, parameters, backend, progress);
         },
         [this, protocol, wallId, centerlinesId, parameters, backend, run] {
-            const std::string id =
+            const app::WallRunIds ids =
                 app::addWallRun(m_document.study(), *run, protocol, wallId,
                                 protocol == "physiological" ? centerlinesId : std::string(), parameters, backend);
+            const std::string& id = ids.stress;
             m_scene.wallFrames[id] = run->frames.back();
-            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Wall stress")));
+            m_document.undoStack()->push(
+                new AddedArtifactCommand(m_document, std::vector<std::string>{ids.run, ids.stress}, tr("Wall stress")));
             if (const std::string warning = app::runStatusWarning(run->status); !warning.empty())
                 showError(tr("Wall mechanics"),
                           tr("Read these results with care: %1").arg(QString::fromStdString(warning)));

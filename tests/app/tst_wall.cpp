@@ -76,9 +76,19 @@ private slots:
         QVERIFY(converged);
         QCOMPARE(window.views()->volumeView()->legendTitle(),
                  converged ? QString("von Mises (kPa)") : QString("von Mises (kPa), NOT CONVERGED"));
+        // Issue 17: the whole run is kept beside the stress (a Run artifact: every frame, the same status).
+        const study::Artifact& runArtifact = window.document().study().artifact(stress.attributes.at("run_artifact"));
+        QCOMPARE(runArtifact.kind, study::ArtifactKind::Run);
+        const SolverRun run = window.document().study().loadRun(runArtifact.id);
+        QVERIFY(run.frames.size() >= 2);
+        QCOMPARE(run.status.converged(), converged);
+        QCOMPARE(run.axis.unit, std::string("s")); // the damped path's simulated time (wall_model 0)
+        for (std::size_t f = 1; f < run.frames.size(); ++f)
+            QVERIFY(run.frames[f].position > run.frames[f - 1].position);
         const std::size_t before = window.document().study().artifacts().size();
-        window.document().undoStack()->undo();
-        QCOMPARE(window.document().study().artifacts().size(), before - 1);
+        window.document().undoStack()->undo(); // the stress and its run go together
+        QCOMPARE(window.document().study().artifacts().size(), before - 2);
+        QVERIFY(!window.document().study().hasArtifact(runArtifact.id));
 
         // The interactive protocol: pressure from the slider, a point of the wall dragged 3 mm outward.
         QVERIFY(window.startInteractiveWall());

@@ -28,6 +28,15 @@ if(NOT peak GREATER 0 OR NOT index LESS 1 OR NOT stop STREQUAL "" OR NOT backend
    OR NOT EXISTS ${WORK}/run/frames/frame_0000.vtu OR NOT EXISTS ${WORK}/run/metrics.json)
     message(FATAL_ERROR "simulate fem physiological: peak ${peak} kPa, index ${index}, stop '${stop}'\n${run}")
 endif()
+# Issue 17: the whole run is in the study as a Run artifact that ParaView opens (runs/<id>/series.pvd).
+string(JSON run_id GET "${run}" run_artifact)
+string(JSON frame_count GET "${run}" frames)
+file(GLOB run_frames ${study}/runs/${run_id}/frames/frame_*.vtu)
+list(LENGTH run_frames run_frame_count)
+if(NOT EXISTS ${study}/runs/${run_id}/run.json OR NOT EXISTS ${study}/runs/${run_id}/series.pvd
+   OR NOT run_frame_count EQUAL frame_count)
+    message(FATAL_ERROR "simulate fem must keep its run in the study (${run_id}: ${run_frame_count} of ${frame_count} frames)")
+endif()
 # Issue 16: the figures are the static equilibrium's, solved to a force residual of 1e-6 after the damped path.
 string(JSON converged GET "${run}" run_status converged)
 string(JSON convergence GET "${run}" run_status convergence)

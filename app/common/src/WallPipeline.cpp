@@ -212,9 +212,9 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
     return run;
 }
 
-std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
-                       const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters,
-                       const WallBackend& backend)
+WallRunIds addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
+                      const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters,
+                      const WallBackend& backend)
 {
     study::Provenance provenance;
     provenance.command = "simulate fem";
@@ -231,9 +231,18 @@ std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, c
         warnings.push_back("stopped early: " + run.stopReason);
     if (const std::string status = runStatusWarning(run.status); !status.empty())
         warnings.push_back(status);
-    const std::string id = study.addTetMesh(run.frames.back(), "Wall stress (" + protocol + ")", provenance, warnings);
-    study.setArtifactAttributes(id, runAttributes(run.metrics, run.status));
-    return id;
+    SolverRun record = sim::fem::runOf(run);
+    record.provenance.parameters = provenance.parameters;
+    record.provenance.inputs = {{"wall", wallId}};
+    if (!centerlinesId.empty())
+        record.provenance.inputs["centerlines"] = centerlinesId;
+    WallRunIds ids;
+    ids.run = study.addRun(record, "Wall run (" + protocol + ")", provenance, warnings);
+    ids.stress = study.addTetMesh(run.frames.back(), "Wall stress (" + protocol + ")", provenance, warnings);
+    std::map<std::string, std::string> attributes = runAttributes(run.metrics, run.status);
+    attributes["run_artifact"] = ids.run;
+    study.setArtifactAttributes(ids.stress, attributes);
+    return ids;
 }
 
 } // namespace vsim::app

@@ -52,6 +52,7 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
     for (RunFrame& frame : run.frames)
     {
         result.frames.push_back(std::get<TetMesh>(std::move(frame.data)));
+        frame.data = TetMesh{};
         result.frameTimesS.push_back(frame.position);
         result.framePressuresPa.push_back(solver.pressureAt(frame.position));
     }
@@ -72,7 +73,31 @@ FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
     status.target = solver.pressureAt(setup.steps * setup.integrator.timeStep) * 1e-3;
     for (const auto& [key, value] : status.metrics())
         result.metrics[key] = value;
+    result.record = std::move(run);
     return result;
+}
+
+SolverRun runOf(const FemRunResult& result)
+{
+    SolverRun run = result.record;
+    if (run.frames.size() != result.frames.size())
+    {
+        run.axis = {"pressure", "kPa", result.status.target};
+        run.frames.clear(), run.keptFrameNumbers.clear();
+        for (std::size_t f = 0; f < result.frames.size(); ++f)
+        {
+            RunFrame& frame = run.frames.emplace_back();
+            frame.number = int(f), frame.step = long(f), frame.position = result.framePressuresPa[f] * 1e-3;
+            run.keptFrameNumbers.push_back(int(f));
+        }
+        run.framesTaken = int(result.frames.size());
+        run.provenance.solver = "fem";
+    }
+    for (std::size_t f = 0; f < result.frames.size(); ++f)
+        run.frames[f].data = result.frames[f];
+    run.status = result.status;
+    run.metrics = result.metrics;
+    return run;
 }
 
 } // namespace vsim::sim::fem

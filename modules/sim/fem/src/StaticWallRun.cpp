@@ -23,6 +23,7 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
     {
         const double loadFactor = frame.position / (setup.pressurePa * 1e-3);
         result.frames.push_back(std::get<TetMesh>(std::move(frame.data)));
+        frame.data = TetMesh{};
         result.frameTimesS.push_back(loadFactor); // pseudo-time: the load factor
         result.framePressuresPa.push_back(loadFactor * setup.pressurePa);
     }
@@ -38,6 +39,7 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
     addPeakMetrics(result, wallElements);
     for (const auto& [key, value] : result.status.metrics())
         result.metrics[key] = value;
+    result.record = std::move(run);
     return result;
 }
 

@@ -73,11 +73,17 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
                                        const std::string& centerlinesId, const ParameterSet& parameters,
                                        const WallBackend& backend = {}, const Progress& progress = {});
 
-/// Adds a run's last frame to the study ("Wall stress (protocol)", metrics as attributes, warnings and an early
-/// stop as warnings, the backend in the provenance); returns its id. The study is not saved.
-std::string addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
-                       const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters,
-                       const WallBackend& backend = {});
+/// Adds a run to the study: its last frame ("Wall stress (protocol)", metrics as attributes, warnings and an early
+/// stop as warnings, the backend in the provenance) and the whole run ("Wall run (protocol)", a Run artifact with
+/// the same provenance; the stress artifact's attribute run_artifact names it). The study is not saved.
+struct WallRunIds
+{
+    std::string stress; ///< the last frame with its metrics ("Wall stress (<protocol>)"): the report's
+    std::string run;    ///< the whole run (a Run artifact: every frame, the record), for the player and ParaView
+};
+WallRunIds addWallRun(study::Study& study, const sim::fem::FemRunResult& run, const std::string& protocol,
+                      const std::string& wallId, const std::string& centerlinesId, const ParameterSet& parameters,
+                      const WallBackend& backend = {});
 
 /// The boundary of a run frame (mm) with the cell field `cellField` carried to its points (mean over the
 /// boundary faces around each point), for colouring.

@@ -7,6 +7,7 @@
 
 #include "vsim/core/Progress.h"
 #include "vsim/core/RunStatus.h"
+#include "vsim/core/SolverRun.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/ElasticMaterial.h"
@@ -60,7 +61,14 @@ struct FemRunResult
     std::vector<double> stepResiduals;
     /// The relative force residual before each equilibrium update and at the end (empty without one).
     std::vector<double> equilibriumResiduals;
+    /// The run driver's record of the run (axis, which frames it kept at which step and position, provenance); its
+    /// frames hold no data (that is `frames`): runOf() puts them together.
+    SolverRun record;
 };
+
+/// The run as the study keeps it (a Run artifact): the record with the frames, the status and the metrics. A
+/// result without a driver record (quasi-static tearing) gets one frame per pressure on the pressure axis.
+SolverRun runOf(const FemRunResult& result);
 
 /// The last frame's peaks as metrics: peak_von_mises_kpa and its element's centroid peak_von_mises_{x,y,z}_mm,
 /// peak_max_principal_kpa, max_displacement_mm; over the elements `counted` marks (empty: all; the wall, not the
