@@ -112,12 +112,13 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
     sim::network::NetworkRunResult run = sim::network::runNetwork(setup, progress.subRange(0.3, 0.95));
     run.warnings.insert(run.warnings.begin(), warnings.begin(), warnings.end());
     const std::string document = app::networkRunDocument(run, setup.parameters, source);
-    const std::string id = app::addNetworkRun(study, run, setup.parameters, inputs, source);
+    const app::NetworkRunIds ids = app::addNetworkRun(study, run, setup.parameters, inputs, source);
     study.save();
     if (arguments.hasOption("out"))
         app::writeNetworkRun(arguments.option("out"), run, document);
     progress.report(1.0, "saved");
-    std::cout << document.substr(0, document.size() - 1) << ",\n  \"artifact\": \"" << id << "\"\n}\n";
+    std::cout << document.substr(0, document.size() - 1) << ",\n  \"artifact\": \"" << ids.network
+              << "\",\n  \"run_artifact\": \"" << ids.run << "\"\n}\n";
     return 0;
 }
 

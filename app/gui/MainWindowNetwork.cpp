@@ -89,10 +89,11 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
             std::vector<std::string> inputs{centerlinesId};
             if (!labelId.empty())
                 inputs.push_back(labelId);
-            const std::string id = app::addNetworkRun(m_document.study(), *run, m_networkParameters, inputs, source);
-            m_scene.networkRuns[id] = run;
-            m_scene.networkRequests[id] = m_drugRequest;
-            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Drug flow")));
+            const app::NetworkRunIds ids = app::addNetworkRun(m_document.study(), *run, m_networkParameters, inputs, source);
+            m_scene.networkRuns[ids.network] = run;
+            m_scene.networkRequests[ids.network] = m_drugRequest;
+            m_document.undoStack()->push(
+                new AddedArtifactCommand(m_document, std::vector<std::string>{ids.run, ids.network}, tr("Drug flow")));
         });
 }
 

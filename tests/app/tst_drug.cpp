@@ -63,6 +63,10 @@ private slots:
         QCOMPARE(run.kind, study::ArtifactKind::Network);
         QCOMPARE(run.provenance.command, std::string("simulate network"));
         QVERIFY(std::stod(run.attributes.at("conservation_error")) <= 1e-12);
+        // Issue 17: the filling over time is kept beside the network as a Run of 101 frames.
+        const SolverRun filling = window.document().study().loadRun(run.attributes.at("run_artifact"), false);
+        QCOMPARE(filling.keptFrameNumbers.size(), std::size_t(101));
+        QCOMPARE(filling.axis.unit, std::string("s"));
         QCOMPARE(window.views()->volumeView()->legendTitle(), QString("Drug flow (ml/min)"));
         gui::DrugDeliveryPanel* panel = window.drugDeliveryPanel();
         QVERIFY(panel);
@@ -125,8 +129,8 @@ private slots:
         QVERIFY(!window.document().study().hasArtifact(kept.id));
 
         const std::size_t before = window.document().study().artifacts().size();
-        window.document().undoStack()->undo();
-        QCOMPARE(window.document().study().artifacts().size(), before - 1);
+        window.document().undoStack()->undo(); // the network and its filling run go together
+        QCOMPARE(window.document().study().artifacts().size(), before - 2);
     }
 };
 

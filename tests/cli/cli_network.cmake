@@ -25,6 +25,13 @@ foreach(file network.json segments.csv outlets.csv filling.csv metrics.json)
         message(FATAL_ERROR "simulate network did not write ${file}")
     endif()
 endforeach()
+# Issue 17: the filling over time is in the study as a Run of 101 frames that ParaView opens.
+string(JSON run_id GET "${run}" run_artifact)
+file(GLOB filling_frames ${study}/runs/${run_id}/frames/frame_*.vtp)
+list(LENGTH filling_frames filling_frame_count)
+if(NOT EXISTS ${study}/runs/${run_id}/series.pvd OR NOT filling_frame_count EQUAL 101)
+    message(FATAL_ERROR "simulate network must keep its filling run (${run_id}: ${filling_frame_count} frames)")
+endif()
 if(balance GREATER 1e-12 OR NOT outlets EQUAL 16 OR fed LESS 1 OR drop LESS 9 OR drop GREATER 11 OR best LESS 0.2)
     message(FATAL_ERROR "simulate network: balance ${balance}, ${outlets} outlets, ${fed} tumour outlets, drop ${drop} %, "
                         "best tip ${best}\n${run}")

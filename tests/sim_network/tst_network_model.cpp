@@ -7,6 +7,7 @@
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/ConicalPipe.h"
 #include "vsim/sim/network/Filling.h"
+#include "vsim/sim/network/FillingSolver.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/sim/network/NetworkRun.h"
 #include "vsim/sim/network/Tracers.h"
@@ -225,6 +226,35 @@ private slots:
         QVERIFY(trails.size() >= 10);
         for (const auto& trail : trails)
             QVERIFY(trail.size() >= 2 && trail.front().z() >= trail.back().z()); // the tree runs to +z: head first
+    }
+
+    // Issue 17: the filling on the run driver: 101 frames in equal times to the last arrival, each frame's
+    // filled_length_mm the closed-form filled lengths at its time, empty at 0 and every segment on the way to an
+    // outlet full at the end; the status is the steady solves'.
+    void fillingRunOnTheDriver()
+    {
+        NetworkRunSetup setup;
+        setup.network = binaryTree();
+        const NetworkRunResult r = runNetwork(setup);
+        const SolverRun run = fillingRun(r, 100);
+        QCOMPARE(run.frames.size(), std::size_t(101));
+        QCOMPARE(run.status.stoppedBy, RunStatus::StoppedBy::End);
+        QCOMPARE(run.status.solves, r.status.solves);
+        QVERIFY(run.status.converged());
+        QCOMPARE(run.axis.target, r.filling.lastArrival);
+        std::vector<double> expected;
+        for (const RunFrame& frame : run.frames)
+        {
+            QVERIFY(std::abs(frame.position - frame.step * r.filling.lastArrival / 100.0) <= 1e-12 * r.filling.lastArrival);
+            filledLengths(r.network, r.twoPhase, r.filling, frame.position, expected);
+            const VesselNetwork& n = std::get<VesselNetwork>(frame.data);
+            QCOMPARE(n.segmentFields.at("filled_length_mm"), expected);
+            QCOMPARE(n.segmentFields.at("flow_ml_min"), r.network.segmentFields.at("flow_ml_min"));
+        }
+        for (double length : std::get<VesselNetwork>(run.frames.front().data).segmentFields.at("filled_length_mm"))
+            QCOMPARE(length, 0.0);
+        for (double fraction : std::get<VesselNetwork>(run.frames.back().data).segmentFields.at("filled_fraction"))
+            QCOMPARE(fraction, 1.0);
     }
 
     void badInputIsNamed()

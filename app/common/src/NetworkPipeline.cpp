@@ -5,6 +5,7 @@
 #include "vsim/core/Units.h"
 #include "vsim/imaging/PartialVolumeRadii.h"
 #include "vsim/imaging/VesselMeasurements.h"
+#include "vsim/sim/network/FillingSolver.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/study/NetworkFile.h"
 
@@ -158,7 +159,7 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
         .dump(2);
 }
 
-std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
+NetworkRunIds addNetworkRun(study::Study& study, const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
                           const std::vector<std::string>& inputs, const std::map<std::string, std::string>& source,
                           const std::vector<std::string>& moreWarnings)
 {
@@ -172,8 +173,15 @@ std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunRes
     warnings.insert(warnings.end(), run.warnings.begin(), run.warnings.end());
     if (const std::string status = runStatusWarning(run.status); !status.empty())
         warnings.push_back(status);
-    const std::string id = study.addNetwork(run.network, "Drug flow", provenance, warnings);
+    SolverRun filling = sim::network::fillingRun(run);
+    filling.provenance.parameters = provenance.parameters;
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+        filling.provenance.inputs[i == 0 ? "centerlines" : "input " + std::to_string(i + 1)] = inputs[i];
+    NetworkRunIds ids;
+    ids.run = study.addRun(filling, "Drug filling", provenance, warnings);
+    const std::string id = ids.network = study.addNetwork(run.network, "Drug flow", provenance, warnings);
     std::map<std::string, std::string> attributes = runAttributes(run.metrics, run.status);
+    attributes["run_artifact"] = ids.run;
     // The best tip positions, for the report.
     for (std::size_t i = 0; i < run.ranking.size() && i < kRankedTipsKept; ++i)
     {
@@ -188,7 +196,7 @@ std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunRes
         attributes[prefix + "depth"] = std::to_string(c.depth);
     }
     study.setArtifactAttributes(id, attributes);
-    return id;
+    return ids;
 }
 
 void writeNetworkRun(const std::filesystem::path& folder, const sim::network::NetworkRunResult& run,

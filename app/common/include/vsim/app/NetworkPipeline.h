@@ -47,9 +47,15 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
 inline constexpr std::size_t kRankedTipsKept = 5;
 
 /// Adds the solved network ("Drug flow") with its per-segment fields to the study, the metrics as attributes and
-/// `source` (inputs, tip, tumour) in the provenance, the run's warnings and `moreWarnings`; returns its id. The
-/// study is not saved.
-std::string addNetworkRun(study::Study& study, const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
+/// `source` (inputs, tip, tumour) in the provenance, the run's warnings and `moreWarnings`, and its filling over time
+/// ("Drug filling", a Run artifact of 101 frames: sim::network::fillingRun; the network's attribute run_artifact
+/// names it). The study is not saved.
+struct NetworkRunIds
+{
+    std::string network; ///< the solved network (the report's and the panel's)
+    std::string run;     ///< the filling over time (the player's and ParaView's)
+};
+NetworkRunIds addNetworkRun(study::Study& study, const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
                           const std::vector<std::string>& inputs, const std::map<std::string, std::string>& source,
                           const std::vector<std::string>& moreWarnings = {});
 
