@@ -94,6 +94,8 @@ void MainWindow::createDocks()
             showOnly(id);
         if (m_document.study().artifact(id).kind == study::ArtifactKind::Report)
             openReportArtifact(id);
+        if (m_document.study().artifact(id).kind == study::ArtifactKind::Run)
+            openRunPlayer(id);
     });
     connect(m_artifactTree, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
         if (column == 0 && item->flags().testFlag(Qt::ItemIsUserCheckable))

@@ -10,6 +10,7 @@
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/core/RunStatus.h"
+#include "vsim/core/SolverRun.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/imaging/GuidedSegmentation.h"
@@ -46,6 +47,7 @@ struct NetworkRunResult;
 namespace vsim::gui {
 
 class InteractiveWall;
+class RunPlayer;
 class LabelEditSession;
 class SegmentationPointsPanel;
 class ViewLayout;
@@ -115,6 +117,11 @@ public:
     /// the outlets and the filling player. False without centerlines or for malformed input.
     bool simulateDrugDelivery(const DrugDeliveryRequest& request);
     DrugDeliveryPanel* drugDeliveryPanel() const { return m_drugPanel; }
+    /// Loads Run artifact `id` in the background (double-click in the study tree) and plays it in the Run Player
+    /// dock: each frame drawn in 3D coloured by the player's field, its legend naming the field, the frame, and the
+    /// run's status when it did not converge or stopped early. False without a study or for another kind.
+    bool openRunPlayer(const std::string& id);
+    RunPlayer* runPlayer() const { return m_runPlayer; }
     /// Writes the study's report in the background (File > Export Report): the PDF, and beside it the DICOM
     /// Encapsulated PDF and the metrics when asked; 3D snapshots are rendered on the GUI thread. False without a
     /// study, without a path, or while a task runs.
@@ -191,6 +198,9 @@ private:
     void createWallMenu();
     void createDrugMenu();
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
+    /// The player's current frame of the played run in the 3D view (MainWindowRuns.cpp).
+    void drawRunFrame();
+    void closeRunPlayer();
     /// The wall-stress frame of run artifact `run` in the 3D view: its legend says when it did not converge, the
     /// sac's PWS and PWRI are called out.
     void showWallStress(const TetMesh& frame, const study::Artifact& run);
@@ -248,6 +258,10 @@ private:
     QDockWidget* m_drugDock = nullptr;
     InteractiveWall* m_interactiveWall = nullptr;
     QDockWidget* m_interactiveDock = nullptr;
+    RunPlayer* m_runPlayer = nullptr;
+    QDockWidget* m_runDock = nullptr;
+    std::shared_ptr<const SolverRun> m_playedRun; // the Run artifact the player plays, all its kept frames
+    std::string m_playedRunId;
     SceneCache m_scene;
     std::string m_drawnScene; // what refreshScene() drew last (roles, completeness), not drawn twice
     std::set<std::string> m_hiddenArtifacts;

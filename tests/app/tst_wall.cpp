@@ -8,11 +8,13 @@
 #include "GuiTestMain.h"
 #include "InteractiveWall.h"
 #include "MainWindow.h"
+#include "RunPlayer.h"
 #include "TubeWall.h"
 #include "ViewLayout.h"
 #include "vsim/core/Units.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QDockWidget>
 #include <QSlider>
 
 #include <QElapsedTimer>
@@ -85,6 +87,32 @@ private slots:
         QCOMPARE(run.axis.unit, std::string("s")); // the damped path's simulated time (wall_model 0)
         for (std::size_t f = 1; f < run.frames.size(); ++f)
             QVERIFY(run.frames[f].position > run.frames[f - 1].position);
+        // The one time player on that run: every kept frame, the legend naming the field and the frame, play with
+        // loop moves on, the run's range fixed; closing it brings the stress picture back.
+        QVERIFY(window.openRunPlayer(runArtifact.id));
+        QVERIFY(vsim::test::waitForTask(window));
+        gui::RunPlayer* player = window.runPlayer();
+        QVERIFY(player);
+        QCOMPARE(player->frameCount(), int(run.frames.size()));
+        QCOMPARE(player->field(), QString("von_mises_kpa"));
+        QVERIFY2(window.views()->volumeView()->legendTitle().startsWith("von_mises_kpa, frame 1 / "),
+                 qPrintable(window.views()->volumeView()->legendTitle()));
+        player->setFrame(player->frameCount() / 2);
+        window.grab().save(QString::fromStdString(
+            (std::filesystem::path(vsim::test::outputFolder("gui").toStdString()) / "run-player-wall-mid.png").string()));
+        player->setLoop(true);
+        player->setSpeed(4.0);
+        const int from = player->frame();
+        player->play();
+        QTRY_VERIFY_WITH_TIMEOUT(player->frame() != from, 3000);
+        player->pause();
+        QVERIFY(!player->isPlaying());
+        player->setFrame(player->frameCount() - 1);
+        QVERIFY(window.views()->volumeView()->legendTitle().contains(
+            QString("frame %1 / %1").arg(player->frameCount())));
+        window.findChild<QDockWidget*>("runPlayerDock")->close();
+        QTRY_COMPARE(window.views()->volumeView()->legendTitle(), QString("von Mises (kPa)"));
+
         const std::size_t before = window.document().study().artifacts().size();
         window.document().undoStack()->undo(); // the stress and its run go together
         QCOMPARE(window.document().study().artifacts().size(), before - 2);
