@@ -10,6 +10,7 @@
 #include "DrugDeliveryPanel.h"
 #include "GuiTestMain.h"
 #include "MainWindow.h"
+#include "RunPlayer.h"
 #include "ViewLayout.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
@@ -202,6 +203,28 @@ private slots:
         QVERIFY(test::waitForTask(second, 5000) || !second.tasks().isBusy());
         QCOMPARE(second.views()->volumeView()->legendTitle(), QString("Drug flow (ml/min)"));
         second.setArtifactShown(drugRun, false);
+
+        // Issue 17: both runs reopen as Run artifacts and play in the one player (pictures mid-run in the test
+        // output): the wall's frames coloured by von Mises stress, the drug's filling by the filled fraction.
+        for (const auto& [stressOrNetwork, field, picture] :
+             {std::tuple{wallRun, "von_mises_kpa", "run-player-wall.png"},
+              std::tuple{drugRun, "filled_fraction", "run-player-drug.png"}})
+        {
+            const std::string runId = second.document().study().artifact(stressOrNetwork).attributes.at("run_artifact");
+            const SolverRun record = second.document().study().loadRun(runId, false);
+            QVERIFY(second.openRunPlayer(runId));
+            QVERIFY(test::waitForTask(second));
+            gui::RunPlayer* player = second.runPlayer();
+            QCOMPARE(player->frameCount(), int(record.keptFrameNumbers.size()));
+            QCOMPARE(player->field(), QString(field));
+            player->setFrame(player->frameCount() / 2);
+            QVERIFY2(second.views()->volumeView()->legendTitle().startsWith(QString(field) + ", frame " +
+                                                                             QString::number(player->frameCount() / 2 + 1)),
+                     qPrintable(second.views()->volumeView()->legendTitle()));
+            second.grab().save(QString::fromStdString((pictures / picture).string()));
+        }
+        second.findChild<QDockWidget*>("runPlayerDock")->close();
+        QTRY_COMPARE(second.views()->volumeView()->legendTitle(), wallLegend);
 
         // The interactive protocol draws its own frame; closing it returns to the saved view.
         QVERIFY(second.startInteractiveWall());
