@@ -177,7 +177,7 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
             if (outcome.kind == StepOutcome::Kind::EndCondition)
                 stop(status, RunStatus::StoppedBy::EndCondition, outcome.message);
             const bool ends = outcome.kind != StepOutcome::Kind::Continue || reached(solver.position(), run.axis.target);
-            if (frames.due(run.steps, solver.position()) || ends)
+            if (frames.due(run.steps, solver.position()) || ends || outcome.keyFrame)
                 if (!frames.take(solver.snapshot(), run.steps, solver.position(), ends, why))
                 {
                     // The state is broken and the solver did not see it: the frame before stays the last.

@@ -30,6 +30,9 @@ struct StepOutcome
     };
     Kind kind = Kind::Continue;
     std::string message;
+    /// The solver asks for a frame of this state whatever the schedule (an event: a tear's onset, the state after
+    /// a release).
+    bool keyFrame = false;
 
     static StepOutcome guard(std::string why) { return {Kind::Guard, std::move(why)}; }
 };
