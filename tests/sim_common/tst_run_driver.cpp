@@ -35,7 +35,7 @@ double peakOf(const RunFrame& frame)
 class BreakingSolver : public Solver
 {
 public:
-    explicit BreakingSolver(int breakAt) : m_breakAt(breakAt) {}
+    explicit BreakingSolver(int breakAt, int keyFrameAt = -1) : m_breakAt(breakAt), m_keyFrameAt(keyFrameAt) {}
     std::string name() const override { return "breaking"; }
     std::vector<ParameterSpec> parameters() const override { return {}; }
     void initialize(const SimulationInput&, const ParameterSet&) override { m_step = 0; }
@@ -45,7 +45,9 @@ public:
     {
         ++m_step;
         status.recordSolve(3, 1e-9, 1e-8, 100);
-        return {};
+        StepOutcome outcome;
+        outcome.keyFrame = m_step == m_keyFrameAt;
+        return outcome;
     }
     SimulationData snapshot() const override
     {
@@ -58,7 +60,7 @@ public:
     std::map<std::string, double> metrics() const override { return {{"steps_taken", double(m_step)}}; }
 
 private:
-    int m_breakAt = 0;
+    int m_breakAt = 0, m_keyFrameAt = -1;
     int m_step = 0;
 };
 
@@ -166,6 +168,16 @@ private slots:
         QCOMPARE(run.frames.back().step, 3L); // the frame before the broken one
         QCOMPARE(run.status.solves, 4L);
         QVERIFY(run.status.converged());
+    }
+
+    void keyFramesBetweenTheSchedule()
+    {
+        BreakingSolver solver(100, 4); // never breaks; asks for a frame after step 4
+        const SolverRun run = runSolver(solver, {}, ParameterSet(std::vector<ParameterSpec>{}), RunControl{});
+        QCOMPARE(run.status.stoppedBy, RunStatus::StoppedBy::End);
+        QCOMPARE(run.frames.size(), std::size_t(3)); // the first, the key frame, the last
+        QCOMPARE(run.frames[1].step, 4L);
+        QCOMPARE(run.frames[2].step, 10L);
     }
 
     void stepLimitStopsTheRun()
