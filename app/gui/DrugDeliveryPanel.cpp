@@ -1,5 +1,7 @@
 #include "DrugDeliveryPanel.h"
 
+#include "RunPlayer.h"
+
 #include "NetworkProjectionView.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/Tracers.h"
@@ -9,13 +11,10 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
-#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSlider>
 #include <QTableWidget>
 #include <QTextBrowser>
-#include <QTimer>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -44,9 +43,7 @@ QString number(double value, int decimals) { return QString::number(value, 'f', 
 
 DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     : QWidget(parent), m_view(view), m_summary(new QTextBrowser(this)), m_outlets(new QTableWidget(this)),
-      m_projection(new NetworkProjectionView(this)), m_slider(new QSlider(Qt::Horizontal, this)),
-      m_play(new QPushButton(tr("Play"), this)), m_time(new QLabel(this)), m_timer(new QTimer(this)),
-      m_tip(new QLineEdit(this)), m_tumour(new QLineEdit(this)), m_controls(new QLineEdit(this)),
+      m_projection(new NetworkProjectionView(this)), m_player(new RunPlayer(this)), m_tip(new QLineEdit(this)), m_tumour(new QLineEdit(this)), m_controls(new QLineEdit(this)),
       m_tumourRadius(new QDoubleSpinBox(this))
 {
     // The next run: fields to type in or pick on the tree.
@@ -90,32 +87,15 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     m_outlets->horizontalHeader()->setStretchLastSection(true);
     m_outlets->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_outlets->setObjectName("drugOutletTable");
-    m_slider->setObjectName("drugTimeSlider");
-    m_play->setObjectName("drugPlay");
-    m_play->setCheckable(true);
-    auto* player = new QHBoxLayout;
-    player->addWidget(m_play);
-    player->addWidget(m_slider, 1);
-    player->addWidget(m_time);
+    m_player->setObjectName("drugPlayer");
+    m_player->setSpeed(4.0); // 40 filling steps a second
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(setup);
     layout->addWidget(m_summary);
-    layout->addLayout(player);
+    layout->addWidget(m_player);
     layout->addWidget(m_projection, 2);
     layout->addWidget(m_outlets, 1);
-    connect(m_slider, &QSlider::valueChanged, this, &DrugDeliveryPanel::showStep);
-    connect(m_play, &QPushButton::toggled, this, [this](bool on) {
-        m_play->setText(on ? tr("Pause") : tr("Play"));
-        if (on && m_slider->value() == m_slider->maximum())
-            m_slider->setValue(0);
-        on ? m_timer->start(30) : m_timer->stop();
-    });
-    connect(m_timer, &QTimer::timeout, this, [this] {
-        const int step = m_slider->value() + std::max(1, m_slider->maximum() / 400); // about 12 s a run
-        m_slider->setValue(std::min(step, m_slider->maximum()));
-        if (m_slider->value() == m_slider->maximum())
-            m_play->setChecked(false);
-    });
+    connect(m_player, &RunPlayer::frameChanged, this, &DrugDeliveryPanel::showStep);
 }
 
 DrugDeliveryPanel::~DrugDeliveryPanel()
@@ -211,9 +191,11 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
     if (!lines.empty()) // frame the tree from the front
         m_view->showAnteriorView(0.5 * (low + top), 1.2 * std::max((top - low).x(), (top - low).z()));
     m_projection->setNetwork(r.network, drug, 0.0, high);
-    m_slider->setRange(0, std::max(1, fillingSteps));
-    m_slider->setValue(0);
-    showStep(0);
+    const int steps = std::max(1, fillingSteps);
+    std::vector<double> times;
+    for (int step = 0; step <= steps; ++step)
+        times.push_back(r.filling.lastArrival * double(step) / double(steps));
+    m_player->setFrames(times, tr("time"), tr("s"), {}); // shows step 0; no field to choose: the tracers' tubelets
 }
 
 void DrugDeliveryPanel::showStep(int step)
@@ -221,7 +203,7 @@ void DrugDeliveryPanel::showStep(int step)
     if (!m_run)
         return;
     const double last = m_run->filling.lastArrival;
-    m_timeS = last * double(step) / double(std::max(1, m_slider->maximum()));
+    m_timeS = last * double(step) / double(std::max(1, m_player->frameCount() - 1));
     // About 200 tracers over the filling, trails a fortieth of it long.
     sim::network::TracerSettings tracers;
     tracers.releaseEveryS = std::max(1e-3, last / 200.0);
@@ -229,7 +211,6 @@ void DrugDeliveryPanel::showStep(int step)
     const auto trails = sim::network::tracerTrails(m_run->network, m_run->twoPhase, m_timeS, tracers);
     m_view->showTubelets(trails, 1.2, QColor(255, 235, 90));
     m_projection->setTrails(trails);
-    m_time->setText(tr("%1 s").arg(number(m_timeS, 1)));
 }
 
 } // namespace vsim::gui

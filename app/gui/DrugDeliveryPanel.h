@@ -16,13 +16,10 @@
 #include <vector>
 
 class QDoubleSpinBox;
-class QLabel;
 class QLineEdit;
 class QPushButton;
-class QSlider;
 class QTableWidget;
 class QTextBrowser;
-class QTimer;
 
 namespace vsim::viz {
 class VolumeView3D;
@@ -31,6 +28,7 @@ class VolumeView3D;
 namespace vsim::gui {
 
 class NetworkProjectionView;
+class RunPlayer;
 
 /// Where the next run injects and what it looks at: the tip ("x, y, z" mm; empty: the root), the tumour sphere
 /// ("x, y, z, r"; empty: none) and control points ("x, y, z; ..."; empty: the first junction's branches).
@@ -70,8 +68,8 @@ public:
     double currentTimeS() const { return m_timeS; }
     QTableWidget* outletTable() const { return m_outlets; }
     NetworkProjectionView* projection() const { return m_projection; }
-    QSlider* timeSlider() const { return m_slider; }
-    QPushButton* playButton() const { return m_play; }
+    /// The filling's player: the workstation's one time player (RunPlayer) over the run's filling steps.
+    RunPlayer* player() const { return m_player; }
 
 signals:
     /// Run pressed: the request as typed or picked.
@@ -88,10 +86,7 @@ private:
     QTextBrowser* m_summary;
     QTableWidget* m_outlets;
     NetworkProjectionView* m_projection;
-    QSlider* m_slider;
-    QPushButton* m_play;
-    QLabel* m_time;
-    QTimer* m_timer;
+    RunPlayer* m_player;
     double m_timeS = 0.0;
 };
 

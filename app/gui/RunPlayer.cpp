@@ -68,6 +68,8 @@ void RunPlayer::setFrames(std::vector<double> positions, const QString& quantity
         const QSignalBlocker blockField(m_field), blockSlider(m_slider);
         m_field->clear();
         m_field->addItems(fields);
+        m_field->setVisible(!fields.isEmpty()); // a player of one picture (the drug dock's tracers) has none
+        m_perFrame->setVisible(!fields.isEmpty());
         m_slider->setRange(0, std::max(0, frameCount() - 1));
         m_slider->setValue(0);
     }

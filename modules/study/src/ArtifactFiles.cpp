@@ -2,6 +2,7 @@
 
 #include "BundleFiles.h"
 #include "RunFiles.h"
+#include "VtkXmlFiles.h"
 #include "vsim/core/Error.h"
 #include "vsim/interop/NrrdFile.h"
 #include "vsim/interop/VtkMesh.h"
@@ -69,31 +70,10 @@ SkeletonGraph skeletonFromJson(const json& document)
     return skeleton;
 }
 
-template <typename Writer, typename DataSet>
-void writeVtkXml(DataSet* data, const std::filesystem::path& file)
-{
-    auto writer = vtkSmartPointer<Writer>::New();
-    writer->SetInputData(data);
-    writer->SetFileName(file.c_str());
-    writer->SetDataModeToBinary();
-    if (writer->Write() != 1)
-        throw Error("cannot write VTK XML file", {{"file", file.string()}});
-}
-
-template <typename Reader>
-auto readVtkXml(const std::filesystem::path& file)
-{
-    if (!std::filesystem::exists(file))
-        throw Error("file does not exist", {{"file", file.string()}});
-    auto reader = vtkSmartPointer<Reader>::New();
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    if (reader->GetErrorCode() != 0 || !reader->GetOutput())
-        throw Error("cannot read VTK XML file", {{"file", file.string()}});
-    return vtkSmartPointer<std::remove_pointer_t<decltype(reader->GetOutput())>>(reader->GetOutput());
-}
-
 } // namespace
+
+using detail::readVtkXml;
+using detail::writeVtkXml;
 
 ArtifactKind kindOf(const ArtifactData& data)
 {

@@ -1,6 +1,7 @@
 #include "RunFiles.h"
 
 #include "BundleFiles.h"
+#include "VtkXmlFiles.h"
 #include "vsim/core/Error.h"
 #include "vsim/interop/VtkMesh.h"
 #include "vsim/interop/VtkSimulationData.h"
@@ -36,39 +37,14 @@ std::string extensionOf(const SimulationData& data)
     return std::holds_alternative<TetMesh>(data) ? ".vtu" : std::holds_alternative<VesselNetwork>(data) ? ".vtp" : ".vti";
 }
 
-template <typename Writer, typename DataSet>
-void writeXml(DataSet* data, const fs::path& file)
-{
-    auto writer = vtkSmartPointer<Writer>::New();
-    writer->SetInputData(data);
-    writer->SetFileName(file.c_str());
-    writer->SetDataModeToAppended();
-    writer->SetCompressorTypeToZLib();
-    if (writer->Write() != 1)
-        throw Error("cannot write a run frame", {{"file", file.string()}});
-}
-
-template <typename Reader>
-auto readXml(const fs::path& file)
-{
-    if (!fs::exists(file))
-        throw Error("a run frame is missing", {{"file", file.string()}});
-    auto reader = vtkSmartPointer<Reader>::New();
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    if (reader->GetErrorCode() != 0 || !reader->GetOutput())
-        throw Error("cannot read a run frame", {{"file", file.string()}});
-    return vtkSmartPointer<std::remove_pointer_t<decltype(reader->GetOutput())>>(reader->GetOutput());
-}
-
 void writeFrame(const SimulationData& data, const fs::path& file)
 {
     if (const auto* mesh = std::get_if<TetMesh>(&data))
-        writeXml<vtkXMLUnstructuredGridWriter>(interop::toVtk(*mesh).Get(), file);
+        detail::writeVtkXml<vtkXMLUnstructuredGridWriter>(interop::toVtk(*mesh).Get(), file, true);
     else if (const auto* network = std::get_if<VesselNetwork>(&data))
-        writeXml<vtkXMLPolyDataWriter>(interop::toVtk(*network).Get(), file);
+        detail::writeVtkXml<vtkXMLPolyDataWriter>(interop::toVtk(*network).Get(), file, true);
     else
-        writeXml<vtkXMLImageDataWriter>(interop::toVtk(std::get<GridFields>(data)).Get(), file);
+        detail::writeVtkXml<vtkXMLImageDataWriter>(interop::toVtk(std::get<GridFields>(data)).Get(), file, true);
     syncFile(file);
 }
 
@@ -76,11 +52,11 @@ SimulationData readFrame(const fs::path& file)
 {
     const std::string extension = file.extension().string();
     if (extension == ".vtu")
-        return interop::tetMeshFromVtk(readXml<vtkXMLUnstructuredGridReader>(file).Get());
+        return interop::tetMeshFromVtk(detail::readVtkXml<vtkXMLUnstructuredGridReader>(file).Get());
     if (extension == ".vtp")
-        return interop::networkFromVtk(readXml<vtkXMLPolyDataReader>(file).Get());
+        return interop::networkFromVtk(detail::readVtkXml<vtkXMLPolyDataReader>(file).Get());
     if (extension == ".vti")
-        return interop::gridFieldsFromVtk(readXml<vtkXMLImageDataReader>(file).Get());
+        return interop::gridFieldsFromVtk(detail::readVtkXml<vtkXMLImageDataReader>(file).Get());
     throw Error("a run frame of an unknown format", {{"file", file.string()}});
 }
 
