@@ -200,7 +200,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
     const app::WallRunIds ids = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters, backend);
     study.save();
     if (arguments.hasOption("out"))
-        study::writeRunSeries(arguments.option("out"), run.frames, run.frameTimesS, document.dump(2));
+        study::writeRunSeries(arguments.option("out"), sim::fem::runOf(run), document.dump(2));
     progress.report(1.0, "saved");
     nlohmann::json printed = document;
     printed["artifact"] = ids.stress;

@@ -25,7 +25,7 @@ string(JSON index GET "${run}" metrics peak_rupture_index)
 string(JSON stop GET "${run}" stop_reason)
 string(JSON backend GET "${run}" backend)
 if(NOT peak GREATER 0 OR NOT index LESS 1 OR NOT stop STREQUAL "" OR NOT backend STREQUAL "cpu" OR NOT EXISTS ${WORK}/run/series.pvd
-   OR NOT EXISTS ${WORK}/run/frames/frame_0000.vtu OR NOT EXISTS ${WORK}/run/metrics.json)
+   OR NOT EXISTS ${WORK}/run/frames/frame_000000.vtu OR NOT EXISTS ${WORK}/run/metrics.json OR NOT EXISTS ${WORK}/run/run.json)
     message(FATAL_ERROR "simulate fem physiological: peak ${peak} kPa, index ${index}, stop '${stop}'\n${run}")
 endif()
 # Issue 17: the whole run is in the study as a Run artifact that ParaView opens (runs/<id>/series.pvd).
