@@ -91,7 +91,7 @@ StepOutcome QuasiStaticTearingSolver::step(RunStatus& status, const Progress& pr
     }
     if (m_releasePending)
         return record(release(status, progress));
-    progress.report(0.0, "quasi-static tearing at " + megapascals(m_safe));
+    progress.report(m_safe / m_setup.endPa, "quasi-static tearing at " + megapascals(m_safe)); // the axis's share
     m_over = std::min(m_setup.endPa, m_safe + m_setup.incrementPa);
     if (!equilibrium(m_over, status, progress))
         return record(StepOutcome::guard("the equilibrium at " + megapascals(m_over) + " failed: " + m_failure));
