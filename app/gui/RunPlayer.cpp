@@ -142,7 +142,11 @@ void RunPlayer::setLoop(bool loop) { m_loop->setChecked(loop); }
 void RunPlayer::advance()
 {
     if (m_frame + 1 < frameCount())
+    {
         setFrame(m_frame + 1);
+        if (m_frame + 1 == frameCount() && !loops())
+            pause(); // stopped as the last frame shows, not a tick later
+    }
     else if (loops())
         setFrame(0);
     else
