@@ -10,8 +10,6 @@
 #include "vsim/study/StudyLock.h"
 
 #include <algorithm>
-#include <chrono>
-#include <ctime>
 #include <optional>
 #include <set>
 
@@ -471,16 +469,6 @@ void Study::saveAs(const fs::path& bundle)
     state.lock.emplace(std::move(lock)); // releases the old bundle's lock
     state.manifestOnDisk.clear();
     save();
-}
-
-std::string utcTimestamp()
-{
-    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    return text;
 }
 
 } // namespace vsim::study

@@ -1,23 +1,14 @@
 #include "vsim/sim/common/RunDriver.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/UtcTime.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 
 namespace vsim::sim {
 namespace {
-
-std::string utcNow()
-{
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    return text;
-}
 
 /// True when `position` has reached `target` (to a relative 1e-9, so that sums of time steps land on it).
 bool reached(double position, double target)
@@ -134,7 +125,7 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
 {
     const auto started = std::chrono::steady_clock::now();
     SolverRun run;
-    run.provenance = {solver.name(), parameters.valuesAsText(), input.sources, utcNow(), 0.0};
+    run.provenance = {solver.name(), parameters.valuesAsText(), input.sources, utcTimestamp(), 0.0};
     run.provenance.parameters["frame_every_steps"] = std::to_string(control.frameEverySteps);
     run.provenance.parameters["frame_every"] = numberText(control.frameEvery);
     run.provenance.parameters["keep_every"] = std::to_string(control.keepEvery);

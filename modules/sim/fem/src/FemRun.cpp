@@ -1,7 +1,7 @@
 #include "vsim/sim/fem/FemRun.h"
 
 #include "vsim/core/Error.h"
-#include "vsim/sim/common/RunDriver.h"
+#include "WallDriverRun.h"
 #include "vsim/sim/fem/WallPathSolver.h"
 
 #include <algorithm>
@@ -36,26 +36,45 @@ void addPeakMetrics(FemRunResult& result, const std::vector<std::uint8_t>& count
     result.metrics["max_displacement_mm"] = *std::max_element(displacement.begin(), displacement.end());
 }
 
+namespace detail {
+
+SolverRun runOnWall(Solver& solver, const TetMesh& wall, const RunControl& control, const Progress& progress)
+{
+    SimulationInput input;
+    input.data.emplace("wall", wall);
+    SolverRun run = runSolver(solver, input, ParameterSet(std::vector<ParameterSpec>{}), control, progress);
+    if (run.status.stoppedBy == RunStatus::StoppedBy::Cancel)
+        throw Cancelled();
+    return run;
+}
+
+void moveFrames(SolverRun& run, FemRunResult& result,
+                const std::function<std::pair<double, double>(const RunFrame&)>& timeAndPressure)
+{
+    for (RunFrame& frame : run.frames)
+    {
+        const auto [time, pressure] = timeAndPressure(frame);
+        result.frames.push_back(std::get<TetMesh>(std::move(frame.data)));
+        frame.data = TetMesh{};
+        result.frameTimesS.push_back(time);
+        result.framePressuresPa.push_back(pressure);
+    }
+}
+
+} // namespace detail
+
 FemRunResult runFem(const FemRunSetup& setup, const Progress& progress)
 {
     WallPathSolver solver(setup, {});
     RunControl control;
     control.frameEverySteps = std::max(1, setup.frameEvery);
     control.maxSteps = long(setup.steps);
-    SimulationInput input;
-    input.data.emplace("wall", setup.wall);
-    SolverRun run = runSolver(solver, input, ParameterSet(std::vector<ParameterSpec>{}), control, progress);
-    if (run.status.stoppedBy == RunStatus::StoppedBy::Cancel)
-        throw Cancelled();
+    SolverRun run = detail::runOnWall(solver, setup.wall, control, progress);
 
     FemRunResult result;
-    for (RunFrame& frame : run.frames)
-    {
-        result.frames.push_back(std::get<TetMesh>(std::move(frame.data)));
-        frame.data = TetMesh{};
-        result.frameTimesS.push_back(frame.position);
-        result.framePressuresPa.push_back(solver.pressureAt(frame.position));
-    }
+    detail::moveFrames(run, result, [&](const RunFrame& frame) {
+        return std::pair{frame.position, solver.pressureAt(frame.position)};
+    });
     result.stopReason = solver.stopReason();
     result.stepIterations = solver.stepIterations();
     result.stepResiduals = solver.stepResiduals();

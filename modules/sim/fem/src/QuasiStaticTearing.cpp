@@ -1,7 +1,7 @@
 #include "vsim/sim/fem/QuasiStaticTearing.h"
 
 #include "vsim/core/Error.h"
-#include "vsim/sim/common/RunDriver.h"
+#include "WallDriverRun.h"
 #include "vsim/sim/fem/QuasiStaticTearingSolver.h"
 
 #include <algorithm>
@@ -12,20 +12,12 @@ FemRunResult runQuasiStaticTearing(const QuasiStaticTearingSetup& setup, const P
     QuasiStaticTearingSolver solver(setup);
     RunControl control; // key frames only (and the first and the last)
     control.maxSteps = 4L * long((setup.endPa - setup.startPa) / std::max(setup.incrementPa, 1e-300)) + 16L + 2L * setup.maxTears;
-    SimulationInput input;
-    input.data.emplace("wall", setup.wall);
-    SolverRun run = runSolver(solver, input, ParameterSet(std::vector<ParameterSpec>{}), control, progress);
-    if (run.status.stoppedBy == RunStatus::StoppedBy::Cancel)
-        throw Cancelled();
+    SolverRun run = detail::runOnWall(solver, setup.wall, control, progress);
 
     FemRunResult result;
-    for (RunFrame& frame : run.frames)
-    {
-        result.frames.push_back(std::get<TetMesh>(std::move(frame.data)));
-        frame.data = TetMesh{};
-        result.frameTimesS.push_back(double(solver.solvesAfter(frame.step))); // pseudo-time: the equilibria solved
-        result.framePressuresPa.push_back(solver.pressureAfter(frame.step));
-    }
+    detail::moveFrames(run, result, [&](const RunFrame& frame) { // pseudo-time: the equilibria solved
+        return std::pair{double(solver.solvesAfter(frame.step)), solver.pressureAfter(frame.step)};
+    });
     result.status = run.status;
     // The figures are the last converged equilibrium's: its pressure is what the run reached.
     result.status.reached = solver.lastGoodPressurePa() * 1e-3;

@@ -1,7 +1,7 @@
 #include "vsim/sim/fem/StaticWallRun.h"
 
 #include "vsim/core/Error.h"
-#include "vsim/sim/common/RunDriver.h"
+#include "WallDriverRun.h"
 #include "vsim/sim/fem/StaticWallSolver.h"
 
 namespace vsim::sim::fem {
@@ -12,21 +12,13 @@ FemRunResult runStaticWall(const StaticWallSetup& setup, const Progress& progres
     RunControl control;
     control.frameEverySteps = 1; // every converged increment
     control.maxSteps = 64L * setup.loadIncrements;
-    SimulationInput input;
-    input.data.emplace("wall", setup.wall);
-    SolverRun run = runSolver(solver, input, ParameterSet(std::vector<ParameterSpec>{}), control, progress);
-    if (run.status.stoppedBy == RunStatus::StoppedBy::Cancel)
-        throw Cancelled();
+    SolverRun run = detail::runOnWall(solver, setup.wall, control, progress);
 
     FemRunResult result;
-    for (RunFrame& frame : run.frames)
-    {
+    detail::moveFrames(run, result, [&](const RunFrame& frame) {
         const double loadFactor = frame.position / (setup.pressurePa * 1e-3);
-        result.frames.push_back(std::get<TetMesh>(std::move(frame.data)));
-        frame.data = TetMesh{};
-        result.frameTimesS.push_back(loadFactor); // pseudo-time: the load factor
-        result.framePressuresPa.push_back(loadFactor * setup.pressurePa);
-    }
+        return std::pair{loadFactor, loadFactor * setup.pressurePa}; // pseudo-time: the load factor
+    });
     result.status = run.status;
     if (result.status.stoppedBy == RunStatus::StoppedBy::Guard)
         result.stopReason = result.status.stopMessage;

@@ -5,6 +5,7 @@
 #include "vsim/core/SolverRun.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/core/TriangleMesh.h"
+#include "vsim/core/UtcTime.h"
 #include "vsim/core/VesselNetwork.h"
 #include "vsim/study/Artifact.h"
 
@@ -136,7 +137,7 @@ private:
     std::unique_ptr<State> m_state;
 };
 
-/// Returns the current time as ISO 8601 UTC, e.g. "2026-11-22T09:30:00Z".
-std::string utcTimestamp();
+/// The current time as ISO 8601 UTC (vsim/core/UtcTime.h).
+using vsim::utcTimestamp;
 
 } // namespace vsim::study
