@@ -4,6 +4,7 @@
 #include "vsim/sim/fem/FemValidation.h"
 #include "vsim/sim/heat/HeatValidation.h"
 #include "vsim/sim/network/NetworkValidation.h"
+#include "vsim/sim/sph/SphValidation.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,7 +18,7 @@ namespace {
 /// One solver's validation cases and how to run one of them.
 struct CaseFamily
 {
-    std::string name; ///< as given on the command line: "fem", "network", "heat"
+    std::string name; ///< as given on the command line: "fem", "network", "heat", "sph"
     std::vector<std::string> cases;
     std::function<ValidationResult(const std::string&, const Progress&)> run;
 };
@@ -28,7 +29,9 @@ std::vector<CaseFamily> caseFamilies()
             {"network", sim::network::networkValidationCases(),
              [](const std::string& c, const Progress& p) { return sim::network::runNetworkValidation(c, p); }},
             {"heat", sim::heat::heatValidationCases(),
-             [](const std::string& c, const Progress& p) { return sim::heat::runHeatValidation(c, p); }}};
+             [](const std::string& c, const Progress& p) { return sim::heat::runHeatValidation(c, p); }},
+            {"sph", sim::sph::sphValidationCases(),
+             [](const std::string& c, const Progress& p) { return sim::sph::runSphValidation(c, p); }}};
 }
 
 } // namespace

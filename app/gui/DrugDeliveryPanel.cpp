@@ -173,9 +173,7 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
         if (!r.twoPhase.orientation.active(int(s)))
             continue;
         const auto& segment = r.network.segments[s];
-        lines.push_back(segment.pathMm.size() >= 2 ? segment.pathMm
-                                                   : std::vector<Eigen::Vector3d>{r.network.nodes[std::size_t(segment.from)].positionMm,
-                                                                                  r.network.nodes[std::size_t(segment.to)].positionMm});
+        lines.push_back(r.network.segmentPath(s));
         values.push_back(drug[s]);
         radii.push_back({segment.startRadiusMm, segment.endRadiusMm});
     }

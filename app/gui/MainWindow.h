@@ -47,6 +47,7 @@ struct NetworkRunResult;
 namespace vsim::gui {
 
 class InteractiveWall;
+class LinePlot;
 class RunPlayer;
 class LabelEditSession;
 class SegmentationPointsPanel;
@@ -122,6 +123,8 @@ public:
     /// run's status when it did not converge or stopped early. False without a study or for another kind.
     bool openRunPlayer(const std::string& id);
     RunPlayer* runPlayer() const { return m_runPlayer; }
+    /// The Run Player's plot: the played field's peak and median per frame, its cursor on the current frame.
+    LinePlot* runPlot() const { return m_runPlot; }
     /// Writes the study's report in the background (File > Export Report): the PDF, and beside it the DICOM
     /// Encapsulated PDF and the metrics when asked; 3D snapshots are rendered on the GUI thread. False without a
     /// study, without a path, or while a task runs.
@@ -200,6 +203,7 @@ private:
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
     /// The player's current frame of the played run in the 3D view (MainWindowRuns.cpp).
     void drawRunFrame();
+    void plotRunHistory();
     void closeRunPlayer();
     /// The wall-stress frame of run artifact `run` in the 3D view: its legend says when it did not converge, the
     /// sac's PWS and PWRI are called out.
@@ -259,6 +263,7 @@ private:
     InteractiveWall* m_interactiveWall = nullptr;
     QDockWidget* m_interactiveDock = nullptr;
     RunPlayer* m_runPlayer = nullptr;
+    LinePlot* m_runPlot = nullptr;
     QDockWidget* m_runDock = nullptr;
     std::shared_ptr<const SolverRun> m_playedRun; // the Run artifact the player plays, all its kept frames
     std::string m_playedRunId;

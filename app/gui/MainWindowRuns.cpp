@@ -1,14 +1,20 @@
-// The Run Player dock (issue 17): any Run artifact of the study played frame by frame in the 3D view: a wall run's
-// surface coloured by a cell field, a drug run's tree coloured by a segment field. One player for every solver; the
-// legend's range is the run's (fixed while playing) or each frame's.
+// The Run Player dock (issue 17): any Run artifact of the study played frame by frame. Every view follows the frame:
+// the 3D view colours a wall run's surface by a cell field, a drug run's tree by a segment field or a blood-flow
+// run's particles by a particle field; the three slice views show the frame cut by their planes (a grid's too, and
+// the particles within the slice's thickness); the dock's plot draws the field's peak and median over the run with a
+// cursor on the frame (a click in it scrubs). One player for every solver; the legend's range is the run's (fixed
+// while playing) or each frame's.
 
+#include "LinePlot.h"
 #include "MainWindow.h"
 #include "RunPlayer.h"
 #include "ViewLayout.h"
 #include "vsim/app/WallPipeline.h"
+#include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QDockWidget>
+#include <QVBoxLayout>
 #include <QStatusBar>
 
 #include <algorithm>
@@ -29,10 +35,12 @@ QStringList fieldsOf(const SimulationData& data)
         add(mesh->cellFields);
     else if (const auto* network = std::get_if<VesselNetwork>(&data))
         add(network->segmentFields);
+    else if (const auto* particles = std::get_if<ParticleSet>(&data))
+        add(particles->fields);
     else
         add(std::get<GridFields>(data).fields);
     // The figures people look for first.
-    for (const char* first : {"von_mises_kpa", "filled_fraction"})
+    for (const char* first : {"von_mises_kpa", "filled_fraction", "speed_m_s"})
         if (fields.removeAll(first) > 0)
             fields.prepend(first);
     return fields;
@@ -51,12 +59,29 @@ std::vector<double> valuesOf(const SimulationData& data, const std::string& fiel
         const auto found = network->segmentFields.find(field);
         return found == network->segmentFields.end() ? std::vector<double>() : found->second;
     }
+    if (const auto* particles = std::get_if<ParticleSet>(&data))
+    {
+        const auto found = particles->fields.find(field);
+        return found == particles->fields.end() ? std::vector<double>() : found->second;
+    }
     const auto& fields = std::get<GridFields>(data).fields;
     const auto found = fields.find(field);
     if (found == fields.end())
         return {};
     return std::vector<double>(found->second.data(), found->second.data() + found->second.size());
 }
+
+double median(std::vector<double> values)
+{
+    if (values.empty())
+        return std::numeric_limits<double>::quiet_NaN();
+    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
+constexpr viz::SliceOrientation kSliceOrientations[] = {viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal,
+                                                        viz::SliceOrientation::Sagittal};
 
 void widen(std::pair<double, double>& range, const std::vector<double>& values)
 {
@@ -76,12 +101,25 @@ bool MainWindow::openRunPlayer(const std::string& id)
                        [this, id, run] {
                            if (!m_runPlayer)
                            {
-                               m_runPlayer = new RunPlayer(this);
+                               auto* panel = new QWidget(this);
+                               m_runPlayer = new RunPlayer(panel);
+                               m_runPlot = new LinePlot(panel);
+                               m_runPlot->setObjectName("runPlot");
+                               m_runPlot->setToolTip(tr("Click or drag to go to a frame"));
+                               auto* layout = new QVBoxLayout(panel);
+                               layout->setContentsMargins(0, 0, 0, 0);
+                               layout->addWidget(m_runPlayer);
+                               layout->addWidget(m_runPlot, 1);
                                connect(m_runPlayer, &RunPlayer::frameChanged, this, [this] { drawRunFrame(); });
-                               connect(m_runPlayer, &RunPlayer::appearanceChanged, this, [this] { drawRunFrame(); });
+                               connect(m_runPlayer, &RunPlayer::appearanceChanged, this, [this] {
+                                   plotRunHistory();
+                                   drawRunFrame();
+                               });
+                               connect(m_runPlot, &LinePlot::clicked, this,
+                                       [this](double x) { m_runPlayer->setFrame(m_runPlayer->frameNearest(x)); });
                                m_runDock = new QDockWidget(tr("Run Player"), this);
                                m_runDock->setObjectName("runPlayerDock");
-                               m_runDock->setWidget(m_runPlayer);
+                               m_runDock->setWidget(panel);
                                addDockWidget(Qt::BottomDockWidgetArea, m_runDock);
                                connect(m_runDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
                                    if (!visible)
@@ -101,8 +139,32 @@ bool MainWindow::openRunPlayer(const std::string& id)
                            m_runPlayer->setFrames(positions, QString::fromStdString(run->axis.quantity),
                                                   QString::fromStdString(run->axis.unit),
                                                   run->frames.empty() ? QStringList() : fieldsOf(run->frames.front().data));
+                           plotRunHistory();
                            drawRunFrame();
                        });
+}
+
+void MainWindow::plotRunHistory()
+{
+    if (!m_playedRun || !m_runPlot)
+        return;
+    const std::string field = m_runPlayer->field().toStdString();
+    LinePlot::Curve peak{tr("peak"), QColor(200, 40, 30), {}, {}}, middle{tr("median"), QColor(40, 90, 200), {}, {}};
+    for (const RunFrame& frame : m_playedRun->frames)
+    {
+        const std::vector<double> values = valuesOf(frame.data, field);
+        peak.x.push_back(frame.position), middle.x.push_back(frame.position);
+        peak.y.push_back(values.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                        : *std::max_element(values.begin(), values.end()));
+        middle.y.push_back(median(values));
+    }
+    const SimulationData& first = m_playedRun->frames.front().data;
+    const QString over = std::holds_alternative<VesselNetwork>(first) ? tr("segments")
+                         : std::holds_alternative<ParticleSet>(first) ? tr("particles")
+                         : std::holds_alternative<GridFields>(first)  ? tr("voxels")
+                                                                      : tr("cells");
+    m_runPlot->setAxes(m_runPlayer->axisTitle(), tr("%1 over the %2 of each frame").arg(m_runPlayer->field(), over));
+    m_runPlot->setCurves({peak, middle});
 }
 
 void MainWindow::drawRunFrame()
@@ -129,6 +191,16 @@ void MainWindow::drawRunFrame()
     else if (!status.complete())
         title += tr(", STOPPED EARLY");
 
+    m_runPlot->setCursor(frame.position);
+    for (viz::SliceOrientation orientation : kSliceOrientations)
+    {
+        viz::SliceView* slice = m_views->sliceView(orientation);
+        if (valuesOf(frame.data, field).empty())
+            slice->clearField();
+        else
+            slice->setField(frame.data, field, range.first, range.second);
+    }
+
     viz::VolumeView3D* view = m_views->volumeView();
     view->clearSurfaces();
     view->clearLines();
@@ -143,18 +215,20 @@ void MainWindow::drawRunFrame()
     {
         std::vector<std::vector<Eigen::Vector3d>> lines;
         std::vector<std::array<double, 2>> radii;
-        for (const VesselNetwork::Segment& segment : network->segments)
+        for (std::size_t s = 0; s < network->segments.size(); ++s)
         {
-            lines.push_back(segment.pathMm.size() >= 2
-                                ? segment.pathMm
-                                : std::vector<Eigen::Vector3d>{network->nodes[std::size_t(segment.from)].positionMm,
-                                                               network->nodes[std::size_t(segment.to)].positionMm});
-            radii.push_back({segment.startRadiusMm, segment.endRadiusMm});
+            lines.push_back(network->segmentPath(s));
+            radii.push_back({network->segments[s].startRadiusMm, network->segments[s].endRadiusMm});
         }
         view->showFieldLines(lines, valuesOf(frame.data, field), range.first, range.second, 3.0, title, radii);
     }
+    else if (const auto* particles = std::get_if<ParticleSet>(&frame.data))
+    {
+        if (particles->fields.count(field))
+            view->showFieldPoints(particles->positionsMm, particles->fields.at(field), range.first, range.second, 4.0, title);
+    }
     else
-        statusBar()->showMessage(tr("Voxel-grid frames are not drawn here: open the run's series.pvd in ParaView"), 8000);
+        statusBar()->showMessage(tr("Voxel-grid frames are drawn in the slice views only"), 8000);
 }
 
 void MainWindow::closeRunPlayer()
@@ -165,6 +239,8 @@ void MainWindow::closeRunPlayer()
     m_playedRun.reset();
     m_playedRunId.clear();
     m_views->volumeView()->clearFieldLines();
+    for (viz::SliceOrientation orientation : kSliceOrientations)
+        m_views->sliceView(orientation)->clearField();
     m_drawnScene.clear(); // the study's own 3D content again
     refreshScene();
 }

@@ -78,6 +78,17 @@ void RunPlayer::setFrames(std::vector<double> positions, const QString& quantity
 }
 
 bool RunPlayer::isPlaying() const { return m_timer->isActive(); }
+
+int RunPlayer::frameNearest(double position) const
+{
+    int nearest = 0;
+    for (int f = 1; f < frameCount(); ++f)
+        if (std::abs(m_positions[std::size_t(f)] - position) < std::abs(m_positions[std::size_t(nearest)] - position))
+            nearest = f;
+    return nearest;
+}
+
+QString RunPlayer::axisTitle() const { return m_unit.isEmpty() ? m_quantity : QString("%1 (%2)").arg(m_quantity, m_unit); }
 double RunPlayer::speed() const { return m_speed->currentData().toDouble(); }
 bool RunPlayer::loops() const { return m_loop->isChecked(); }
 QString RunPlayer::field() const { return m_field->currentText(); }

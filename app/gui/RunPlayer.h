@@ -34,6 +34,11 @@ public:
 
     int frame() const { return m_frame; }
     int frameCount() const { return int(m_positions.size()); }
+    /// The frames' positions on the run's axis, and the frame nearest to `position`.
+    const std::vector<double>& positions() const { return m_positions; }
+    int frameNearest(double position) const;
+    /// "pressure (kPa)", "time (s)".
+    QString axisTitle() const;
     bool isPlaying() const;
     double speed() const;
     bool loops() const;

@@ -221,6 +221,19 @@ private slots:
             QVERIFY2(second.views()->volumeView()->legendTitle().startsWith(QString(field) + ", frame " +
                                                                              QString::number(player->frameCount() / 2 + 1)),
                      qPrintable(second.views()->volumeView()->legendTitle()));
+            // The slices through a point of the frame (inside a tet of the wall, on the tree's first segment) cut it.
+            const SimulationData middle = second.document().study().loadRunFrame(runId, std::size_t(player->frameCount() / 2)).data;
+            Eigen::Vector3d inside = Eigen::Vector3d::Zero();
+            if (const auto* mesh = std::get_if<TetMesh>(&middle))
+                for (int corner : mesh->tets.front())
+                    inside += 0.25 * mesh->points[std::size_t(corner)];
+            else
+            {
+                const std::vector<Eigen::Vector3d> path = std::get<VesselNetwork>(middle).segmentPath(0);
+                inside = 0.5 * (path[0] + path[1]); // on the centerline: inside the tube
+            }
+            second.views()->sliceView(viz::SliceOrientation::Axial)->setCursor(inside);
+            QVERIFY2(second.views()->sliceView(viz::SliceOrientation::Axial)->fieldCellsShown() > 0, field);
             second.grab().save(QString::fromStdString((pictures / picture).string()));
         }
         second.findChild<QDockWidget*>("runPlayerDock")->close();

@@ -7,11 +7,13 @@
 #include "DicomFixtures.h"
 #include "GuiTestMain.h"
 #include "InteractiveWall.h"
+#include "LinePlot.h"
 #include "MainWindow.h"
 #include "RunPlayer.h"
 #include "TubeWall.h"
 #include "ViewLayout.h"
 #include "vsim/core/Units.h"
+#include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QDockWidget>
@@ -19,6 +21,7 @@
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
+#include <QTest>
 
 namespace fs = std::filesystem;
 using namespace vsim;
@@ -97,7 +100,27 @@ private slots:
         QCOMPARE(player->field(), QString("von_mises_kpa"));
         QVERIFY2(window.views()->volumeView()->legendTitle().startsWith("von_mises_kpa, frame 1 / "),
                  qPrintable(window.views()->volumeView()->legendTitle()));
-        player->setFrame(player->frameCount() / 2);
+        const int middle = player->frameCount() / 2;
+        player->setFrame(middle);
+        // Every view follows the frame: the slices through a point inside the wall show its cut, coloured by the
+        // field; the plot's cursor sits on the frame's pressure or time, and a click in the plot goes to a frame.
+        const TetMesh middleWall = std::get<TetMesh>(window.document().study().loadRunFrame(runArtifact.id, std::size_t(middle)).data);
+        Eigen::Vector3d insideWall = Eigen::Vector3d::Zero();
+        for (int corner : middleWall.tets.front())
+            insideWall += 0.25 * middleWall.points[std::size_t(corner)];
+        window.views()->sliceView(viz::SliceOrientation::Axial)->setCursor(insideWall);
+        for (auto orientation : {viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal, viz::SliceOrientation::Sagittal})
+            QVERIFY2(window.views()->sliceView(orientation)->fieldCellsShown() > 0, "a slice through the wall shows no cut");
+        gui::LinePlot* plot = window.runPlot();
+        QVERIFY(plot);
+        QCOMPARE(plot->curves().size(), std::size_t(2)); // peak and median per frame
+        QCOMPARE(plot->curves().front().x.size(), run.frames.size());
+        for (std::size_t f = 0; f < run.frames.size(); ++f)
+            QVERIFY(plot->curves()[0].y[f] >= plot->curves()[1].y[f]);
+        QCOMPARE(*plot->cursor(), run.frames[std::size_t(middle)].position);
+        QTest::mouseClick(plot, Qt::LeftButton, {}, QPoint(int(std::lround(plot->widgetXOf(run.frames[1].position))), plot->height() / 2));
+        QCOMPARE(player->frame(), 1);
+        player->setFrame(middle);
         window.grab().save(QString::fromStdString(
             (std::filesystem::path(vsim::test::outputFolder("gui").toStdString()) / "run-player-wall-mid.png").string()));
         player->setLoop(true);
@@ -112,6 +135,7 @@ private slots:
             QString("frame %1 / %1").arg(player->frameCount())));
         window.findChild<QDockWidget*>("runPlayerDock")->close();
         QTRY_COMPARE(window.views()->volumeView()->legendTitle(), QString("von Mises (kPa)"));
+        QCOMPARE(window.views()->sliceView(viz::SliceOrientation::Axial)->fieldCellsShown(), 0LL);
 
         const std::size_t before = window.document().study().artifacts().size();
         window.document().undoStack()->undo(); // the stress and its run go together

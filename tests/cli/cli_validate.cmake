@@ -1,6 +1,6 @@
-# `vascusim-cli validate` as a user runs it: the cheap analytic cases pass with exit 0 and print their figures;
-# an unknown case exits 1 naming the known ones. (tst_fem_validation runs all of the wall's, the cantilever included.)
-foreach(case fem-patch fem-rotation fem-lame)
+# `vascusim-cli validate` as a user runs it: the cheap analytic cases (the wall's, the SPH kernel's and FPM's) pass
+# with exit 0 and print their figures; an unknown case exits 1 naming the known ones. (tst_fem_validation runs all of the wall's, the cantilever included.)
+foreach(case fem-patch fem-rotation fem-lame sph-kernel sph-fpm)
     execute_process(COMMAND ${CLI} validate ${case} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
     if(NOT code EQUAL 0)
         message(FATAL_ERROR "validate ${case}: exit ${code}\n${out}\n${err}")

@@ -132,15 +132,14 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(vsim::Error, graph.validate());
     }
 
-    void particleSetKeepsArraysConsistent()
+    void particleSetKeepsFieldsConsistent()
     {
         vsim::ParticleSet particles;
-        particles.resize(5);
-        for (double& mass : particles.masses)
-            mass = 2e-6;
+        particles.positionsMm.assign(5, Eigen::Vector3d(1.0, 2.0, 3.0));
+        particles.fields["speed_m_s"].assign(5, 0.25);
         particles.validate();
-        QVERIFY(std::abs(particles.totalMass() - 1e-5) < 1e-20);
-        particles.masses.pop_back();
+        QCOMPARE(particles.size(), std::size_t(5));
+        particles.fields["pressure_pa"].assign(4, 0.0);
         QVERIFY_THROWS_EXCEPTION(vsim::Error, particles.validate());
     }
 };

@@ -70,6 +70,22 @@ class RunDriver : public QObject
 {
     Q_OBJECT
 private slots:
+    /// The guard's finder names the first value that is not finite in every kind of frame (particles included).
+    void firstNonFiniteNamesTheValue()
+    {
+        ParticleSet particles;
+        particles.positionsMm = {{0, 0, 0}, {1, 0, 0}};
+        particles.fields["speed_m_s"] = {0.5, 0.25};
+        QVERIFY(!firstNonFinite(particles));
+        particles.fields["speed_m_s"][1] = std::nan("");
+        QCOMPARE(*firstNonFinite(particles), std::string("particle field speed_m_s at particle 1"));
+        particles.positionsMm[0].y() = INFINITY;
+        QCOMPARE(*firstNonFinite(particles), std::string("particle 0's position"));
+        particles.fields["pressure_pa"] = {1.0};
+        QVERIFY_THROWS_EXCEPTION(Error, particles.validate());
+        QCOMPARE(dataKindName(particles), std::string("particle set"));
+    }
+
     void framesEveryStepsKeepEveryNth()
     {
         heat::HeatDiffusionSolver solver;

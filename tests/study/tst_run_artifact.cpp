@@ -93,6 +93,17 @@ VesselNetwork network(double flow)
     return n;
 }
 
+/// Particles of a blood-flow frame: positions (mm) and their speed and pressure.
+ParticleSet particles(double shift)
+{
+    ParticleSet set;
+    for (int i = 0; i < 5; ++i)
+        set.positionsMm.push_back(Eigen::Vector3d(0.25 * i + shift, -0.5 * i, 1.0 / 3.0 + i));
+    set.fields["speed_m_s"] = {0.1, 0.2, 0.3, 0.4, 0.5 + shift};
+    set.fields["pressure_pa"] = {1333.0, 1200.5, 1100.25, 1000.0, -1.0 / 7.0};
+    return set;
+}
+
 void compareRecords(const SolverRun& read, const SolverRun& written)
 {
     QCOMPARE(read.axis.quantity, written.axis.quantity);
@@ -125,13 +136,15 @@ private slots:
         const SolverRun heat = heatRun();
         const SolverRun wall = twoFrameRun(tet(1.0), tet(1.25));
         const SolverRun drug = twoFrameRun(network(2.0), network(3.0));
-        std::string heatId, wallId, drugId;
+        const SolverRun blood = twoFrameRun(particles(0.0), particles(0.5));
+        std::string heatId, wallId, drugId, bloodId;
         {
             Study study = Study::create(bundle, "Runs");
             const study::Provenance provenance{"simulate heat", {}, {}, "", ""};
             heatId = study.addRun(heat, "Heat (template)", provenance);
             wallId = study.addRun(wall, "Wall stress", provenance);
             drugId = study.addRun(drug, "Drug filling", provenance);
+            bloodId = study.addRun(blood, "Blood flow", provenance);
             QCOMPARE(study.loadRunFrame(heatId, 1).number, heat.frames[1].number); // from memory before the save
             study.save();
         }
@@ -187,6 +200,13 @@ private slots:
         QCOMPARE(read.outlets.size(), std::size_t(2));
         QCOMPARE(read.outlets[1].resistance, 8e10);
         read.validate();
+
+        // Particles are polydata too (.vtp, vertices and no lines): read back as particles, to the last bit.
+        const SolverRun bloodRead = study.loadRun(bloodId);
+        compareRecords(bloodRead, blood);
+        const ParticleSet& flowing = std::get<ParticleSet>(bloodRead.frames[1].data);
+        QCOMPARE(flowing.positionsMm, particles(0.5).positionsMm);
+        QCOMPARE(flowing.fields, particles(0.5).fields);
     }
 
     /// ParaView's view of the run: series.pvd lists the kept frames at their positions, each a VTK XML file with

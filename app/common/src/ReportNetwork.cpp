@@ -173,10 +173,7 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
         for (std::size_t s = 0; s < network.segments.size(); ++s)
         {
             const auto& segment = network.segments[s];
-            lines.push_back(segment.pathMm.size() >= 2
-                                ? segment.pathMm
-                                : std::vector<Eigen::Vector3d>{network.nodes[std::size_t(segment.from)].positionMm,
-                                                               network.nodes[std::size_t(segment.to)].positionMm});
+            lines.push_back(network.segmentPath(s));
             values.push_back(drug[s]);
             radii.push_back({segment.startRadiusMm, segment.endRadiusMm});
         }

@@ -12,6 +12,7 @@ struct KindName
     std::string operator()(const TetMesh&) const { return detail::kindOf<TetMesh>(); }
     std::string operator()(const VesselNetwork&) const { return detail::kindOf<VesselNetwork>(); }
     std::string operator()(const GridFields&) const { return detail::kindOf<GridFields>(); }
+    std::string operator()(const ParticleSet&) const { return detail::kindOf<ParticleSet>(); }
 };
 
 template <class Points>
@@ -63,9 +64,16 @@ struct NonFinite
                 }
         return std::nullopt;
     }
+    std::optional<std::string> operator()(const ParticleSet& particles) const
+    {
+        if (auto where = nonFinitePoint(particles.positionsMm, "particle"))
+            return where;
+        return nonFiniteField(particles.fields, "particle field", "particle");
+    }
 };
 
 } // namespace
+
 
 std::string dataKindName(const SimulationData& data)
 {

@@ -20,6 +20,14 @@ int findSet(std::vector<int>& parent, int x)
 
 } // namespace
 
+std::vector<Eigen::Vector3d> VesselNetwork::segmentPath(std::size_t segment) const
+{
+    const Segment& s = segments.at(segment);
+    if (s.pathMm.size() >= 2)
+        return s.pathMm;
+    return {nodes.at(std::size_t(s.from)).positionMm, nodes.at(std::size_t(s.to)).positionMm};
+}
+
 std::vector<std::vector<int>> VesselNetwork::incidentSegments() const
 {
     std::vector<std::vector<int>> incident(nodes.size());

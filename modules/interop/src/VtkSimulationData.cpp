@@ -182,4 +182,29 @@ GridFields gridFieldsFromVtk(vtkImageData* image)
     return grid;
 }
 
+vtkSmartPointer<vtkPolyData> toVtk(const ParticleSet& particles)
+{
+    particles.validate();
+    auto vertices = vtkSmartPointer<vtkCellArray>::New();
+    for (vtkIdType i = 0; i < vtkIdType(particles.positionsMm.size()); ++i)
+        vertices->InsertNextCell(1, &i);
+    auto polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(pointsToVtk(particles.positionsMm));
+    polyData->SetVerts(vertices);
+    fieldsToVtk(particles.fields, polyData->GetPointData());
+    return polyData;
+}
+
+ParticleSet particlesFromVtk(vtkPolyData* polyData)
+{
+    if (!polyData || polyData->GetNumberOfLines() > 0 || polyData->GetNumberOfPolys() > 0 || polyData->GetNumberOfStrips() > 0)
+        throw Error("not a particle frame: it has lines or polygons");
+    ParticleSet particles;
+    if (polyData->GetPoints())
+        particles.positionsMm = pointsFromVtk(polyData->GetPoints());
+    particles.fields = fieldsFromVtk(polyData->GetPointData(), {});
+    particles.validate();
+    return particles;
+}
+
 } // namespace vsim::interop

@@ -32,9 +32,10 @@ using nlohmann::json;
 constexpr int kRunFormatVersion = 1;
 const std::regex kFrameName("frame_[0-9]{6}\\.(vtu|vtp|vti)");
 
+/// A tet mesh as an unstructured grid, a network or particles as polydata, a grid as image data.
 std::string extensionOf(const SimulationData& data)
 {
-    return std::holds_alternative<TetMesh>(data) ? ".vtu" : std::holds_alternative<VesselNetwork>(data) ? ".vtp" : ".vti";
+    return std::holds_alternative<TetMesh>(data) ? ".vtu" : std::holds_alternative<GridFields>(data) ? ".vti" : ".vtp";
 }
 
 void writeFrame(const SimulationData& data, const fs::path& file)
@@ -43,6 +44,8 @@ void writeFrame(const SimulationData& data, const fs::path& file)
         detail::writeVtkXml<vtkXMLUnstructuredGridWriter>(interop::toVtk(*mesh).Get(), file, true);
     else if (const auto* network = std::get_if<VesselNetwork>(&data))
         detail::writeVtkXml<vtkXMLPolyDataWriter>(interop::toVtk(*network).Get(), file, true);
+    else if (const auto* particles = std::get_if<ParticleSet>(&data))
+        detail::writeVtkXml<vtkXMLPolyDataWriter>(interop::toVtk(*particles).Get(), file, true);
     else
         detail::writeVtkXml<vtkXMLImageDataWriter>(interop::toVtk(std::get<GridFields>(data)).Get(), file, true);
     syncFile(file);
@@ -53,8 +56,13 @@ SimulationData readFrame(const fs::path& file)
     const std::string extension = file.extension().string();
     if (extension == ".vtu")
         return interop::tetMeshFromVtk(detail::readVtkXml<vtkXMLUnstructuredGridReader>(file).Get());
-    if (extension == ".vtp")
-        return interop::networkFromVtk(detail::readVtkXml<vtkXMLPolyDataReader>(file).Get());
+    if (extension == ".vtp") // a network has lines, particles have none
+    {
+        const vtkSmartPointer<vtkPolyData> polyData = detail::readVtkXml<vtkXMLPolyDataReader>(file);
+        if (polyData->GetNumberOfLines() > 0)
+            return interop::networkFromVtk(polyData.Get());
+        return interop::particlesFromVtk(polyData.Get());
+    }
     if (extension == ".vti")
         return interop::gridFieldsFromVtk(detail::readVtkXml<vtkXMLImageDataReader>(file).Get());
     throw Error("a run frame of an unknown format", {{"file", file.string()}});

@@ -26,15 +26,20 @@
 
 namespace vsim::viz::detail {
 
-vtkSmartPointer<vtkPolyDataMapper> fieldMapper(vtkPolyData* polyData, double low, double high)
+vtkSmartPointer<vtkLookupTable> fieldLookupTable(double low, double high)
 {
     auto table = vtkSmartPointer<vtkLookupTable>::New();
     table->SetHueRange(0.667, 0.0);
     table->SetTableRange(low, high);
     table->Build();
+    return table;
+}
+
+vtkSmartPointer<vtkPolyDataMapper> fieldMapper(vtkPolyData* polyData, double low, double high)
+{
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     mapper->SetInputData(polyData);
-    mapper->SetLookupTable(table);
+    mapper->SetLookupTable(fieldLookupTable(low, high));
     mapper->SetScalarRange(low, high);
     mapper->ScalarVisibilityOn();
     return mapper;

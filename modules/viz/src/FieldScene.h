@@ -15,12 +15,16 @@
 #include <vector>
 
 class vtkCamera;
+class vtkLookupTable;
 class vtkProp;
 class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkScalarBarActor;
 
 namespace vsim::viz::detail {
+
+/// The blue (low) to red (high) colour table over [low, high] of every field view.
+vtkSmartPointer<vtkLookupTable> fieldLookupTable(double low, double high);
 
 /// A mapper colouring its scalars blue (low) to red (high) over [low, high].
 vtkSmartPointer<vtkPolyDataMapper> fieldMapper(vtkPolyData* polyData, double low, double high);

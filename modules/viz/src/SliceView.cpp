@@ -1,5 +1,6 @@
 #include "vsim/viz/SliceView.h"
 
+#include "SliceFieldLayer.h"
 #include "SliceMarkerLayer.h"
 
 #include "vsim/interop/VtkImage.h"
@@ -61,6 +62,7 @@ struct SliceView::Pipeline
     std::array<vtkSmartPointer<vtkTextActor>, 4> edgeLabels; // left, right, top, bottom
     vtkSmartPointer<vtkTextActor> positionLabel;
     std::unique_ptr<SliceMarkerLayer> markers;
+    std::unique_ptr<SliceFieldLayer> field;
 };
 
 SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
@@ -116,6 +118,7 @@ SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
     p.positionLabel->GetTextProperty()->SetFontSize(12);
     renderer()->AddViewProp(p.positionLabel);
     p.markers = std::make_unique<SliceMarkerLayer>(renderer());
+    p.field = std::make_unique<SliceFieldLayer>(renderer());
     setWindowLevel(kCtaPreset);
     updateCamera();
 }
@@ -188,6 +191,21 @@ void SliceView::refreshLabel()
         m_pipeline->scaledIndexLabel->Modified();
     update();
 }
+
+void SliceView::setField(const SimulationData& frame, const std::string& field, double low, double high)
+{
+    m_pipeline->field->setField(frame, field, low, high);
+    m_pipeline->field->update(m_cursor, screenAxes(m_orientation), sliceThickness());
+    update();
+}
+
+void SliceView::clearField()
+{
+    m_pipeline->field->clear();
+    update();
+}
+
+long long SliceView::fieldCellsShown() const { return m_pipeline->field->cellsShown(); }
 
 void SliceView::setBrush(BrushMode brush, double radiusMm)
 {
@@ -263,17 +281,19 @@ void SliceView::setPlacing(bool placing)
     QWidget::setCursor(m_placing || m_brush != BrushMode::Off ? Qt::CrossCursor : Qt::ArrowCursor);
 }
 
+double SliceView::sliceThickness() const
+{
+    if (!hasImage())
+        return 1.0;
+    const VolumeGeometry& geometry = m_image.geometry();
+    const Eigen::Vector3d normalInIndex = geometry.direction.transpose() * screenAxes(m_orientation).normal();
+    return normalInIndex.cwiseAbs().dot(geometry.spacing) / normalInIndex.cwiseAbs().sum();
+}
+
 void SliceView::updateMarkers()
 {
     // Markers within one slice spacing (as the normal sees the voxels) of the plane are drawn.
-    double thickness = 1.0;
-    if (hasImage())
-    {
-        const VolumeGeometry& geometry = m_image.geometry();
-        const Eigen::Vector3d normalInIndex = geometry.direction.transpose() * screenAxes(m_orientation).normal();
-        thickness = normalInIndex.cwiseAbs().dot(geometry.spacing) / normalInIndex.cwiseAbs().sum();
-    }
-    m_pipeline->markers->update(m_cursor, screenAxes(m_orientation), thickness, millimetresPerPixel());
+    m_pipeline->markers->update(m_cursor, screenAxes(m_orientation), sliceThickness(), millimetresPerPixel());
     update();
 }
 
@@ -320,6 +340,8 @@ void SliceView::updateSlice()
                                   .arg(index.z(), 0, 'f', 0)
                                   .toLatin1()
                                   .constData());
+    if (!p.field->isEmpty())
+        p.field->update(m_cursor, axes, sliceThickness());
     updateMarkers();
 }
 

@@ -225,6 +225,37 @@ void VolumeView3D::showFieldLines(const std::vector<std::vector<Eigen::Vector3d>
     showLegend(mapper->GetLookupTable(), legendTitle);
 }
 
+void VolumeView3D::showFieldPoints(const std::vector<Eigen::Vector3d>& points, const std::vector<double>& values,
+                                   double low, double high, double sizePixels, const QString& legendTitle)
+{
+    if (values.size() != points.size())
+        throw Error("field points need one value per point");
+    auto vertices = vtkSmartPointer<vtkCellArray>::New();
+    for (vtkIdType i = 0; i < vtkIdType(points.size()); ++i)
+        vertices->InsertNextCell(1, &i);
+    auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+    scalars->SetName("value");
+    for (double v : values)
+        scalars->InsertNextValue(v);
+    auto polyData = vtkSmartPointer<vtkPolyData>::New();
+    auto vtkPointsMm = vtkSmartPointer<vtkPoints>::New();
+    vtkPointsMm->SetDataTypeToDouble();
+    for (const Eigen::Vector3d& p : points)
+        vtkPointsMm->InsertNextPoint(p.data());
+    polyData->SetPoints(vtkPointsMm);
+    polyData->SetVerts(vertices);
+    polyData->GetPointData()->SetScalars(scalars);
+    clearFieldLines();
+    vtkSmartPointer<vtkPolyDataMapper> mapper = fieldMapper(polyData, low, high);
+    mapper->SetScalarModeToUsePointData();
+    m_scene->fieldLines = vtkSmartPointer<vtkActor>::New();
+    m_scene->fieldLines->SetMapper(mapper);
+    m_scene->fieldLines->GetProperty()->SetPointSize(float(sizePixels));
+    m_scene->fieldLines->GetProperty()->SetRenderPointsAsSpheres(true);
+    renderer()->AddActor(m_scene->fieldLines);
+    showLegend(mapper->GetLookupTable(), legendTitle);
+}
+
 void VolumeView3D::clearFieldLines()
 {
     if (m_scene->fieldLines)

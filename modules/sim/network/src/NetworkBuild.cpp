@@ -20,13 +20,6 @@ double median(std::vector<double> values)
     return values[values.size() / 2];
 }
 
-std::vector<Eigen::Vector3d> pathOf(const VesselNetwork& network, const VesselNetwork::Segment& segment)
-{
-    if (segment.pathMm.size() >= 2)
-        return segment.pathMm;
-    return {network.nodes[std::size_t(segment.from)].positionMm, network.nodes[std::size_t(segment.to)].positionMm};
-}
-
 double polylineLength(const std::vector<Eigen::Vector3d>& path)
 {
     double length = 0.0;
@@ -144,7 +137,7 @@ std::pair<int, double> nearestSegment(const VesselNetwork& network, const Eigen:
     {
         if (eligible && !eligible(int(s)))
             continue;
-        const double distance = nearestOnPath(pathOf(network, network.segments[s]), pointMm).distance;
+        const double distance = nearestOnPath(network.segmentPath(s), pointMm).distance;
         if (distance < best.second)
             best = {int(s), distance};
     }
@@ -153,7 +146,7 @@ std::pair<int, double> nearestSegment(const VesselNetwork& network, const Eigen:
 
 Eigen::Vector3d segmentMiddle(const VesselNetwork& network, int segment)
 {
-    const std::vector<Eigen::Vector3d> path = pathOf(network, network.segments[std::size_t(segment)]);
+    const std::vector<Eigen::Vector3d> path = network.segmentPath(std::size_t(segment));
     const double half = 0.5 * polylineLength(path);
     double arc = 0.0;
     for (std::size_t i = 1; i < path.size(); ++i)
@@ -187,7 +180,7 @@ int placeNode(VesselNetwork& network, const Eigen::Vector3d& pointMm, double sna
     if (nodeDistance <= snapMm)
         return nearestNode;
     VesselNetwork::Segment& segment = network.segments[std::size_t(s)];
-    const std::vector<Eigen::Vector3d> path = pathOf(network, segment);
+    const std::vector<Eigen::Vector3d> path = network.segmentPath(std::size_t(s));
     const PathPoint at = nearestOnPath(path, pointMm);
     const double pathLength = polylineLength(path), fraction = pathLength > 0.0 ? at.arc / pathLength : 0.5;
     if (fraction <= 1e-6) // the nearest point is an end of the segment: that node

@@ -9,13 +9,6 @@
 namespace vsim::sim::network {
 namespace {
 
-std::vector<Eigen::Vector3d> pathOf(const VesselNetwork& network, const VesselNetwork::Segment& segment)
-{
-    if (segment.pathMm.size() >= 2)
-        return segment.pathMm;
-    return {network.nodes[std::size_t(segment.from)].positionMm, network.nodes[std::size_t(segment.to)].positionMm};
-}
-
 /// The point `fraction` (0..1) of the way along a polyline.
 Eigen::Vector3d alongPath(const std::vector<Eigen::Vector3d>& path, double fraction)
 {
@@ -70,7 +63,7 @@ bool tracerPosition(const VesselNetwork& network, const FlowSolution& flow, int 
         if (q * remaining < volume)
         {
             const double fraction = filledLength(r1, r2, length, q * remaining) / length;
-            std::vector<Eigen::Vector3d> path = pathOf(network, segment);
+            std::vector<Eigen::Vector3d> path = network.segmentPath(std::size_t(s));
             if (!forward)
                 std::reverse(path.begin(), path.end());
             positionMm = alongPath(path, fraction);

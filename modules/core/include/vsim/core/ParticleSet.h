@@ -1,26 +1,24 @@
 #pragma once
 
+// Particles as a run's frame shows them (SimulationData.h): positions in mm in the patient frame (LPS) and
+// per-particle fields, each with one value per particle and its unit in its name ("speed_m_s", "pressure_pa"; a
+// vector as one field per component, "velocity_x_m_s"). A particle solver keeps its own state in SI and writes this.
+
 #include <Eigen/Core>
 
+#include <map>
+#include <string>
 #include <vector>
 
 namespace vsim {
 
-/// Particles of a meshfree solver, structure of arrays so that CPU loops and GPU copies stay contiguous.
-/// SI units (solvers convert from the patient frame in mm at their boundary).
 struct ParticleSet
 {
-    std::vector<Eigen::Vector3d> positions;  ///< m
-    std::vector<Eigen::Vector3d> velocities; ///< m/s
-    std::vector<double> masses;              ///< kg
-    std::vector<double> densities;           ///< kg/m^3
+    std::vector<Eigen::Vector3d> positionsMm;
+    std::map<std::string, std::vector<double>> fields;
 
-    std::size_t size() const { return positions.size(); }
-    /// Resizes every array; new particles are at rest at the origin with zero mass and density.
-    void resize(std::size_t count);
-    /// Total mass in kg.
-    double totalMass() const;
-    /// Throws vsim::Error when the arrays differ in length or a value is not finite or a mass is negative.
+    std::size_t size() const { return positionsMm.size(); }
+    /// Throws vsim::Error naming a field whose length is not the particle count.
     void validate() const;
 };
 

@@ -1,11 +1,13 @@
 #pragma once
 
 // What a solver reads and what its frames hold, in one type the run driver (sim/common), the Run artifact's writer
-// (study) and the time player share: a tetrahedral mesh with point and cell fields (the wall), a vessel network with segment fields (the
-// drug network) or named real fields on one voxel grid (the template solver; the smoke grid to come). Geometry in mm
+// (study) and the time player share: a tetrahedral mesh with point and cell fields (the wall), a vessel network with
+// segment fields (the drug network), named real fields on one voxel grid (the template solver; the smoke grid to come)
+// or particles with per-particle fields (SPH blood flow). Geometry in mm
 // in the patient frame, as the study keeps it; each field names its unit in its key ("temperature_rise_k").
 
 #include "vsim/core/ImageVolume.h"
+#include "vsim/core/ParticleSet.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/core/VesselNetwork.h"
 
@@ -23,9 +25,9 @@ struct GridFields
     std::map<std::string, RealVolume> fields;
 };
 
-using SimulationData = std::variant<TetMesh, VesselNetwork, GridFields>;
+using SimulationData = std::variant<TetMesh, VesselNetwork, GridFields, ParticleSet>;
 
-/// "tet mesh", "vessel network", "voxel grid": for messages.
+/// "tet mesh", "vessel network", "voxel grid", "particle set": for messages.
 std::string dataKindName(const SimulationData& data);
 
 /// The first value that is not finite, for the driver's guard: e.g. "temperature_rise_k at voxel (3, 4, 5)" or
@@ -49,6 +51,7 @@ template <class T> constexpr const char* kindOf();
 template <> constexpr const char* kindOf<TetMesh>() { return "tet mesh"; }
 template <> constexpr const char* kindOf<VesselNetwork>() { return "vessel network"; }
 template <> constexpr const char* kindOf<GridFields>() { return "voxel grid"; }
+template <> constexpr const char* kindOf<ParticleSet>() { return "particle set"; }
 } // namespace detail
 
 template <class T>

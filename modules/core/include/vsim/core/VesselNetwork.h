@@ -51,6 +51,8 @@ struct VesselNetwork
     /// Results per segment (e.g. "flow_ml_min"), each with one value per segment.
     std::map<std::string, std::vector<double>> segmentFields;
 
+    /// The segment's centerline for display (mm): its path, or the straight line between its nodes when it has none.
+    std::vector<Eigen::Vector3d> segmentPath(std::size_t segment) const;
     /// Segments meeting at every node.
     std::vector<std::vector<int>> incidentSegments() const;
     /// Nodes with exactly one segment.

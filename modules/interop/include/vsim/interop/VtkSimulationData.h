@@ -8,7 +8,8 @@
 // radii, length and resistance as cell arrays (segment_start_radius_mm, segment_end_radius_mm, segment_length_mm,
 // segment_resistance_pa_s_m3) beside its result fields, and the root and outlet conditions as field data. Node names
 // are not kept. A voxel grid is a vtkImageData with its geometry (direction included) and one float point array per
-// field.
+// field. A particle set is a vtkPolyData of one vertex cell per particle with its fields as double point arrays (and
+// no lines: that is how a run's reader tells it from a network).
 
 #include "vsim/core/SimulationData.h"
 
@@ -26,5 +27,9 @@ VesselNetwork networkFromVtk(vtkPolyData* polyData);
 vtkSmartPointer<vtkImageData> toVtk(const GridFields& grid);
 /// Throws vsim::Error for a dataset without point arrays or with a multi-component one.
 GridFields gridFieldsFromVtk(vtkImageData* image);
+
+vtkSmartPointer<vtkPolyData> toVtk(const ParticleSet& particles);
+/// Throws vsim::Error for a dataset with lines or polygons, or a point array of more than one component.
+ParticleSet particlesFromVtk(vtkPolyData* polyData);
 
 } // namespace vsim::interop

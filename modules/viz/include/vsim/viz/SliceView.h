@@ -1,6 +1,7 @@
 #pragma once
 
 #include "vsim/core/ImageVolume.h"
+#include "vsim/core/SimulationData.h"
 #include "vsim/viz/BrushMode.h"
 #include "vsim/viz/SliceMarker.h"
 #include "vsim/viz/SliceOrientation.h"
@@ -21,7 +22,8 @@ namespace vsim::viz {
 /// translucent red, 4 thrombus yellow, 5 wall blue); in brush mode the left button paints or erases it instead of moving the cursor: the view
 /// only reports where (brushDab), the owner edits the label and calls refreshLabel(). Markers (SliceMarker) are drawn
 /// where the slice passes them and can be dragged with the left button (markerMoved on release); in placing mode a
-/// left click reports a point (pointPlaced) instead of moving the cursor.
+/// left click reports a point (pointPlaced) instead of moving the cursor. A played run's frame can be shown cut by the
+/// slice (setField).
 class SliceView : public VtkView
 {
     Q_OBJECT
@@ -40,6 +42,13 @@ public:
     /// Redraws the overlay after its voxels changed in place.
     void refreshLabel();
     bool hasLabel() const { return !m_label.isEmpty(); }
+
+    /// A run frame's `field` drawn where this slice cuts it (a mesh's section, a tree's rings, a grid's plane),
+    /// coloured blue to red over [low, high]; it follows the cursor. Throws vsim::Error when the frame has no such field.
+    void setField(const SimulationData& frame, const std::string& field, double low, double high);
+    void clearField();
+    /// Cells of the frame's cut drawn in the current slice (0 when none is shown).
+    long long fieldCellsShown() const;
 
     /// Brush mode and radius (mm): with a brush the left button reports dabs instead of moving the cursor.
     void setBrush(BrushMode brush, double radiusMm);
@@ -92,6 +101,8 @@ private:
     void updateCamera();
     void updateMarkers();
     double millimetresPerPixel() const;
+    /// The slice's thickness along its normal (mm): the voxel spacing as the normal sees it, 1 without an image.
+    double sliceThickness() const;
 
     struct Pipeline;
     std::unique_ptr<Pipeline> m_pipeline;

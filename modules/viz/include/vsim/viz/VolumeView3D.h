@@ -59,6 +59,10 @@ public:
     void showFieldLines(const std::vector<std::vector<Eigen::Vector3d>>& lines, const std::vector<double>& values,
                         double low, double high, double widthPixels, const QString& legendTitle,
                         const std::vector<std::array<double, 2>>& radiiMm = {});
+    /// Points (mm, LPS: particles) each coloured by one value over [low, high], `sizePixels` wide, with the legend;
+    /// they replace earlier field lines and clearFieldLines() removes them.
+    void showFieldPoints(const std::vector<Eigen::Vector3d>& points, const std::vector<double>& values, double low,
+                         double high, double sizePixels, const QString& legendTitle);
     void clearFieldLines();
     /// Virtual tubelets (thesis ch. 6.3, after Schirski et al.): along every trail (mm, head first), quads of
     /// `widthMm` turned to face the camera, opaque at the head and fading to clear at the tail; replaces earlier

@@ -1,0 +1,93 @@
+#pragma once
+
+// Neighbour search on a uniform grid whose cell is the kernel's support (issue 18): each build counts the
+// particles per cell, prefix-sums the counts (a counting sort) and lists the particles cell by cell, so that
+// the neighbours of a particle lie in the 27 cells around its own. order() is that list (the permutation that
+// sorts the particles by cell); the solver reorders its particle arrays by it now and then, so that
+// neighbours lie near in memory, and builds again. The CUDA backend builds the same structure (cell index,
+// counting sort, reorder) on the device.
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace vsim::sim::sph
+{
+
+class NeighbourGrid
+{
+public:
+    /// `cellSizeM` > 0: the kernel support (2h).
+    explicit NeighbourGrid(double cellSizeM);
+
+    /// Sorts `positionsM` by cell. Throws vsim::Error when a position is not finite or the particles spread
+    /// over more cells than kMaxCells (a run whose particles fled: the solver's guard catches it first).
+    void build(const std::vector<Eigen::Vector3d>& positionsM);
+    /// sorted index -> index in the positions given to build().
+    const std::vector<int>& order() const { return m_order; }
+    /// Reorders `values` (one per particle, in build()'s order) into the sorted order.
+    template <class T> void reorder(std::vector<T>& values) const;
+
+    /// Calls f(j, rij, r) for every particle j != i within the cell size of particle i, with rij = x_i - x_j
+    /// (m) and r = |rij|; `positionsM` and the indices are those given to build().
+    template <class F>
+    void forEachNeighbour(const std::vector<Eigen::Vector3d>& positionsM, int i, F&& f) const;
+
+    double cellSize() const { return m_cellSize; }
+    std::array<int, 3> dims() const { return m_dims; }
+    static constexpr std::int64_t kMaxCells = 1LL << 27;
+
+private:
+    std::array<int, 3> cellOf(const Eigen::Vector3d& positionM) const;
+    std::int64_t cellIndex(const std::array<int, 3>& cell) const
+    {
+        return cell[0] + std::int64_t(m_dims[0]) * (cell[1] + std::int64_t(m_dims[1]) * cell[2]);
+    }
+
+    double m_cellSize;
+    Eigen::Vector3d m_origin = Eigen::Vector3d::Zero();
+    std::array<int, 3> m_dims{0, 0, 0};
+    std::vector<int> m_cellStart; ///< first sorted particle of each cell; one more entry: the particle count
+    std::vector<int> m_order;
+};
+
+template <class T> void NeighbourGrid::reorder(std::vector<T>& values) const
+{
+    std::vector<T> sorted;
+    sorted.reserve(m_order.size());
+    for (int original : m_order)
+        sorted.push_back(values[std::size_t(original)]);
+    values.swap(sorted);
+}
+
+template <class F>
+void NeighbourGrid::forEachNeighbour(const std::vector<Eigen::Vector3d>& positionsM, int i, F&& f) const
+{
+    const Eigen::Vector3d& xi = positionsM[std::size_t(i)];
+    const std::array<int, 3> c = cellOf(xi);
+    const double reach2 = m_cellSize * m_cellSize;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+            {
+                const std::array<int, 3> n{c[0] + dx, c[1] + dy, c[2] + dz};
+                if (n[0] < 0 || n[1] < 0 || n[2] < 0 || n[0] >= m_dims[0] || n[1] >= m_dims[1] ||
+                    n[2] >= m_dims[2])
+                    continue;
+                const std::int64_t cell = cellIndex(n);
+                for (int s = m_cellStart[std::size_t(cell)]; s < m_cellStart[std::size_t(cell) + 1]; ++s)
+                {
+                    const int j = m_order[std::size_t(s)];
+                    if (j == i)
+                        continue;
+                    const Eigen::Vector3d rij = xi - positionsM[std::size_t(j)];
+                    const double r2 = rij.squaredNorm();
+                    if (r2 < reach2)
+                        f(j, rij, std::sqrt(r2));
+                }
+            }
+}
+
+} // namespace vsim::sim::sph

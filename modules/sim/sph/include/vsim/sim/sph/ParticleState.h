@@ -1,0 +1,32 @@
+#pragma once
+
+// The SPH solver's particles, structure of arrays in SI (m, m/s, kg/m^3, kg) so that the CPU loops and the
+// GPU copies stay contiguous. Wall particles (the dynamic boundary: frozen, their density evolving with the
+// fluid's) carry wall = 1. `id` is each particle's number at the start: frames and tracking follow it through
+// the reordering.
+
+#include "vsim/sim/sph/NeighbourGrid.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace vsim::sim::sph
+{
+
+struct ParticleState
+{
+    std::vector<Eigen::Vector3d> position, velocity;
+    std::vector<double> density, mass;
+    std::vector<std::uint8_t> wall;
+    std::vector<int> id;
+
+    std::size_t size() const { return position.size(); }
+    /// Appends a particle at rest.
+    void add(const Eigen::Vector3d& positionM, double densityKgM3, double massKg, bool isWall);
+    /// Puts every array in the grid's sorted order (the grid built on `position`).
+    void reorder(const NeighbourGrid& grid);
+};
+
+} // namespace vsim::sim::sph

@@ -1,0 +1,33 @@
+#pragma once
+
+// The Liu quartic smoothing kernel in 3D (thesis eq. 5.13 with its printed 8/9 corrected to 9/8,
+// SEED-NOTES.md):
+//   W(r, h) = 315 / (208 pi h^3) (2/3 - 9/8 q^2 + 19/24 q^3 - 5/32 q^4),  q = r / h in [0, 2], 0 beyond.
+// It integrates to 1 over space, vanishes with its first derivative at r = 2h (the support), and is C1 there.
+// Lengths in m (SI inside the solver), W in 1/m^3, its gradient in 1/m^4.
+
+#include <Eigen/Core>
+
+namespace vsim::sim::sph
+{
+
+class QuarticKernel
+{
+public:
+    /// `smoothingLengthM` h > 0 (the support radius is 2h).
+    explicit QuarticKernel(double smoothingLengthM);
+
+    double smoothingLength() const { return m_h; }
+    double support() const { return 2.0 * m_h; }
+    /// W at distance r (m).
+    double value(double r) const;
+    /// dW/dr at distance r (m); 0 at r = 0 and beyond the support.
+    double derivative(double r) const;
+    /// grad_i W(x_i - x_j) for rij = x_i - x_j: dW/dr rij / r (the zero vector at r = 0).
+    Eigen::Vector3d gradient(const Eigen::Vector3d& rij) const;
+
+private:
+    double m_h, m_norm; ///< h (m), 315 / (208 pi h^3)
+};
+
+} // namespace vsim::sim::sph

@@ -1,0 +1,54 @@
+#pragma once
+
+// The rates of the weakly compressible SPH equations (issue 18; thesis ch. 5.3) at every particle, each
+// summed over its own neighbours (a gather: every particle writes only its own sums, the layout the GPU
+// backend shares):
+//  continuity (thesis 5.26):  drho_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij + D_i, with the delta-SPH
+//  density
+//      diffusion D_i = delta h c0 sum_j V_j psi_ij . grad_i W_ij over fluid neighbours j,
+//      psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / |x_ij|^2 - (G_i + G_j) (Antuono et al. 2010), G the
+//      renormalised density gradient G_i = (M_i^T)^-1 sum_j V_j (rho_j - rho_i) grad_i W_ij, M_i = sum_j V_j
+//      (x_j - x_i) (x) grad_i W_ij over the fluid: psi vanishes for a linear density (a fluid at rest under
+//      gravity is not diffused, also at its free surface, where Molteni & Colagrossi's 2009 term without G
+//      makes the pressure drift);
+//  momentum:  a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad_i W_ij
+//                   + sum_j m_j (mu_i + mu_j) (x_ij . grad_i W_ij) / (rho_i rho_j (|x_ij|^2 + 0.01 h^2)) v_ij
+//                   + g,
+//      the viscous term of Morris et al. 1997 in the form of Lo & Shao 2002 (no slip at the wall particles,
+//      which stand still). Wall particles (the dynamic boundary of Crespo et al. 2007) get a density rate
+//      from the fluid around them and no acceleration.
+
+#include "vsim/sim/sph/FluidModel.h"
+#include "vsim/sim/sph/NeighbourGrid.h"
+#include "vsim/sim/sph/ParticleState.h"
+#include "vsim/sim/sph/QuarticKernel.h"
+
+#include <vector>
+
+namespace vsim::sim::sph
+{
+
+struct SphRates
+{
+    std::vector<Eigen::Vector3d> acceleration; ///< m/s^2 (zero at wall particles)
+    std::vector<double> densityRate;           ///< kg/(m^3 s)
+    std::vector<Eigen::Vector3d>
+        densityGradient;              ///< G_i, kg/m^4 (fluid particles; zero where M_i is singular)
+    double largestAcceleration = 0.0; ///< m/s^2, over the fluid
+    double largestViscousRate = 0.0;  ///< max_ij |h v_ij . x_ij / (r^2 + 0.01 h^2)|, m/s (Monaghan's CFL)
+};
+
+/// The pressure of every particle from its density (Tait).
+std::vector<double> pressures(const ParticleState& particles, const FluidModel& fluid);
+
+/// Fills `rates` for the particles (sorted by `grid`, built on their positions).
+void computeRates(const ParticleState& particles, const std::vector<double>& pressure,
+                  const NeighbourGrid& grid, const QuarticKernel& kernel, const FluidModel& fluid,
+                  SphRates& rates);
+
+/// The explicit step's limit: CFL x min(min_i sqrt(h / |a_i|), h / (c0 + largestViscousRate)), and the
+/// viscous limit 0.125 h^2 rho0 / mu (Morris et al. 1997); s.
+double stableTimeStep(const SphRates& rates, const QuarticKernel& kernel, const FluidModel& fluid,
+                      double cfl);
+
+} // namespace vsim::sim::sph

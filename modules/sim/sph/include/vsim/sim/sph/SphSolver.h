@@ -1,0 +1,66 @@
+#pragma once
+
+// The weakly compressible SPH solver on the run driver (issue 18; thesis ch. 5.1-5.4): particles given as the
+// input "particles" (a ParticleSet in mm with the field "wall", 1 at the dynamic-boundary particles, and
+// optionally "pressure_pa" to start from and "velocity_x_m_s" .. "velocity_z_m_s"), stepped by leapfrog
+// (kick-drift-kick: one rate evaluation per step) with the adaptive time step of SphRates.h. Guards: a value
+// that is not finite, a density more than `density_guard` from the rest density (the weak compressibility
+// broken: a sound speed too low for the flow, or particles piling up), a particle leaving the domain's box
+// grown by `escape_margin_mm`.
+
+#include "vsim/sim/common/Solver.h"
+#include "vsim/sim/sph/FluidModel.h"
+#include "vsim/sim/sph/NeighbourGrid.h"
+#include "vsim/sim/sph/ParticleState.h"
+#include "vsim/sim/sph/QuarticKernel.h"
+#include "vsim/sim/sph/SphRates.h"
+
+#include <memory>
+
+namespace vsim::sim::sph
+{
+
+/// spacing_mm, smoothing_ratio, density_kg_m3, viscosity_pa_s, sound_speed_m_s, delta_sph, cfl,
+/// gravity_{x,y,z}_m_s2 (patient frame, LPS: a supine patient's is +y), end_time_s, density_guard,
+/// escape_margin_mm, reorder_every.
+std::vector<ParameterSpec> sphParameters();
+
+class SphSolver : public Solver
+{
+public:
+    std::string name() const override { return "sph"; }
+    std::vector<ParameterSpec> parameters() const override { return sphParameters(); }
+    void initialize(const SimulationInput& input, const ParameterSet& parameters) override;
+    RunAxis axis() const override { return {"time", "s", m_endTimeS}; }
+    double position() const override { return m_timeS; }
+    StepOutcome step(RunStatus& status, const Progress& progress) override;
+    /// Every particle (mm) with speed_m_s, velocity_{x,y,z}_m_s, pressure_pa, density_kg_m3 and wall, in the
+    /// order the particles were given.
+    SimulationData snapshot() const override;
+    /// particles, fluid_particles, time_step_s (the last), steps, largest_speed_m_s,
+    /// largest_density_variation
+    /// (|rho / rho0 - 1| over the fluid), kinetic_energy_j.
+    std::map<std::string, double> metrics() const override;
+
+    const ParticleState& particles() const { return m_particles; }
+    const FluidModel& fluid() const { return m_fluid; }
+    const QuarticKernel& kernel() const { return *m_kernel; }
+    /// The pressure of every particle (Pa), in the particles' current order.
+    std::vector<double> pressure() const { return pressures(m_particles, m_fluid); }
+
+private:
+    void updateRates();
+
+    FluidModel m_fluid;
+    std::unique_ptr<QuarticKernel> m_kernel;
+    std::unique_ptr<NeighbourGrid> m_grid;
+    ParticleState m_particles;
+    SphRates m_rates;
+    double m_timeS = 0.0, m_endTimeS = 0.0, m_stepS = 0.0, m_cfl = 0.2, m_densityGuard = 0.03;
+    Eigen::Vector3d m_boxLow = Eigen::Vector3d::Zero(),
+                    m_boxHigh = Eigen::Vector3d::Zero(); ///< m, with the margin
+    long m_steps = 0;
+    int m_reorderEvery = 20;
+};
+
+} // namespace vsim::sim::sph

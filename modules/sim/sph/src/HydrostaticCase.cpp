@@ -1,0 +1,125 @@
+// sph-hydrostatic: water at rest in an open tank under gravity (issue 18). A column of fluid particles on a 1
+// mm lattice, 6 x 6 across and 16 deep, in a tank of four layers of wall particles (the dynamic boundary),
+// started from the hydrostatic density and let settle on the run driver with a damping viscosity. The
+// pressure of the particles in the middle of the column, from 2h below the surface to the bottom, against
+// rho0 g d, d their depth below the settled free surface (the top layer's mean height plus half a spacing);
+// rho0 g d is taken with the density the equation of state gives at each depth (dp/dd = rho(p) g integrated
+// exactly: 0.5 % above rho0 g d at the bottom for this sound speed).
+
+#include "SphCases.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/sim/common/RunDriver.h"
+#include "vsim/sim/sph/SphSolver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsim::sim::sph::detail
+{
+namespace
+{
+
+constexpr int kAcross = 6, kDeep = 16, kWallLayers = 4; // the walls as deep as the support (2h = 4 spacings)
+constexpr double kSpacingMm = 1.0, kGravity = 9.81, kDensity = 1000.0;
+
+/// The tank and its water (mm, z up), each fluid particle at its hydrostatic pressure, each wall particle at
+/// the pressure of its depth below the surface.
+ParticleSet tank()
+{
+    ParticleSet set;
+    auto& wall = set.fields["wall"];
+    auto& pressure = set.fields["pressure_pa"];
+    const double surfaceMm = kDeep * kSpacingMm;
+    for (int k = -kWallLayers; k < kDeep + 1; ++k)
+        for (int j = -kWallLayers; j < kAcross + kWallLayers; ++j)
+            for (int i = -kWallLayers; i < kAcross + kWallLayers; ++i)
+            {
+                const bool inside = i >= 0 && j >= 0 && i < kAcross && j < kAcross && k >= 0;
+                if (inside && k >= kDeep)
+                    continue; // the air above the water
+                const Eigen::Vector3d x = kSpacingMm * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5);
+                set.positionsMm.push_back(x);
+                wall.push_back(inside ? 0.0 : 1.0);
+                pressure.push_back(kDensity * kGravity * std::max(0.0, surfaceMm - x.z()) * 1e-3);
+            }
+    return set;
+}
+
+} // namespace
+
+ValidationResult hydrostaticCase(const Progress& progress)
+{
+    ValidationResult result;
+    result.name = "sph-hydrostatic";
+    result.description =
+        "water at rest in an open tank (6 x 6 x 16 particles of 1 mm, 4 wall layers) after 0.3 s under "
+        "gravity: the pressure in the middle of the column, 2h below the surface and deeper, against the "
+        "hydrostatic "
+        "pressure of the model's fluid";
+    SimulationInput input;
+    input.data["particles"] = tank();
+    ParameterSet parameters(sphParameters());
+    const double depthM = kDeep * kSpacingMm * 1e-3;
+    parameters.set("spacing_mm", kSpacingMm);
+    parameters.set("density_kg_m3", kDensity);
+    parameters.set("viscosity_pa_s", 0.5); // damps the settling sloshes within the run (no effect at rest)
+    parameters.set("sound_speed_m_s", 10.0 * std::sqrt(kGravity * depthM));
+    parameters.set("gravity_z_m_s2", -kGravity);
+    parameters.set("end_time_s", 0.3);
+    SphSolver solver;
+    RunControl control;
+    control.keepFramesInMemory = false;
+    const SolverRun run = runSolver(solver, input, parameters, control, progress);
+    if (!run.status.complete())
+        throw Error("sph-hydrostatic: the run stopped: " + run.status.stopText());
+
+    const ParticleState& particles = solver.particles();
+    const std::vector<double> pressure = solver.pressure();
+    double topSum = 0.0;
+    int topCount = 0;
+    double highest = -INFINITY;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (!particles.wall[i])
+            highest = std::max(highest, particles.position[i].z());
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (!particles.wall[i] && particles.position[i].z() > highest - 0.5 * kSpacingMm * 1e-3)
+            topSum += particles.position[i].z(), ++topCount;
+    const double surface = topSum / topCount + 0.5 * kSpacingMm * 1e-3;
+    const double centre = 0.5 * kAcross * kSpacingMm * 1e-3, h = solver.kernel().smoothingLength();
+    double worst = 0.0, squares = 0.0, bottomRatio = 0.0, bottomDepth = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+    {
+        const Eigen::Vector3d& x = particles.position[i];
+        const double depth = surface - x.z();
+        if (particles.wall[i] ||
+            std::max(std::abs(x.x() - centre), std::abs(x.y() - centre)) > kSpacingMm * 1e-3 ||
+            depth < 2.0 * h)
+            continue;
+        // The model's own hydrostatics: dp/dd = rho(p) g with Tait's rho(p), integrated exactly.
+        const double b = solver.fluid().stiffness(), gamma = solver.fluid().gamma;
+        const double expected = b * (std::pow(1.0 + (gamma - 1.0) / gamma * kDensity * kGravity * depth / b,
+                                              gamma / (gamma - 1.0)) -
+                                     1.0);
+        const double error = (pressure[i] - expected) / expected;
+        worst = std::max(worst, std::abs(error));
+        squares += error * error, ++count;
+        if (depth > bottomDepth)
+            bottomDepth = depth, bottomRatio = pressure[i] / expected;
+    }
+    result.figures.push_back(
+        {"pressure at the deepest middle particle / hydrostatic", bottomRatio, 1.0, 0.02, ""});
+    result.figures.push_back({"RMS relative pressure error over the middle column",
+                              std::sqrt(squares / std::max(1, count)), 0.0, 0.02, ""});
+    result.figures.push_back(
+        {"largest relative pressure error over the middle column", worst, 0.0, 0.02, ""});
+    result.figures.push_back({"largest speed / sqrt(g H) (settled)",
+                              run.metrics.at("largest_speed_m_s") / std::sqrt(kGravity * depthM), 0.0, 0.01,
+                              ""});
+    result.description += " (" + std::to_string(count) + " particles compared, " +
+                          std::to_string(long(run.metrics.at("steps"))) + " steps)";
+    return result;
+}
+
+} // namespace vsim::sim::sph::detail

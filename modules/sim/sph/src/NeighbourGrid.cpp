@@ -1,0 +1,63 @@
+#include "vsim/sim/sph/NeighbourGrid.h"
+
+#include "vsim/core/Error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsim::sim::sph
+{
+
+NeighbourGrid::NeighbourGrid(double cellSizeM) : m_cellSize(cellSizeM)
+{
+    if (!(cellSizeM > 0.0) || !std::isfinite(cellSizeM))
+        throw Error("the neighbour grid's cell must be a positive length");
+}
+
+std::array<int, 3> NeighbourGrid::cellOf(const Eigen::Vector3d& positionM) const
+{
+    std::array<int, 3> cell{};
+    for (int a = 0; a < 3; ++a)
+        cell[std::size_t(a)] = std::clamp(int(std::floor((positionM[a] - m_origin[a]) / m_cellSize)), 0,
+                                          m_dims[std::size_t(a)] - 1);
+    return cell;
+}
+
+void NeighbourGrid::build(const std::vector<Eigen::Vector3d>& positionsM)
+{
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(0.0), high = Eigen::Vector3d::Constant(0.0);
+    if (!positionsM.empty())
+        low = high = positionsM.front();
+    for (const Eigen::Vector3d& p : positionsM)
+    {
+        if (!p.allFinite())
+            throw Error("a particle's position is not finite: the neighbour grid cannot place it");
+        low = low.cwiseMin(p), high = high.cwiseMax(p);
+    }
+    m_origin = low;
+    std::int64_t cells = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+        m_dims[std::size_t(a)] = int(std::floor((high[a] - low[a]) / m_cellSize)) + 1;
+        cells *= m_dims[std::size_t(a)];
+        if (cells > kMaxCells)
+            throw Error("the particles spread over more than " + std::to_string(kMaxCells) +
+                        " neighbour cells");
+    }
+    // Counting sort: count per cell, prefix sum, place.
+    std::vector<std::int64_t> cellOfParticle(positionsM.size());
+    m_cellStart.assign(std::size_t(cells) + 1, 0);
+    for (std::size_t i = 0; i < positionsM.size(); ++i)
+    {
+        cellOfParticle[i] = cellIndex(cellOf(positionsM[i]));
+        ++m_cellStart[std::size_t(cellOfParticle[i]) + 1];
+    }
+    for (std::size_t c = 1; c < m_cellStart.size(); ++c)
+        m_cellStart[c] += m_cellStart[c - 1];
+    std::vector<int> next(m_cellStart.begin(), m_cellStart.end() - 1);
+    m_order.assign(positionsM.size(), 0);
+    for (std::size_t i = 0; i < positionsM.size(); ++i) // stable: the particles of a cell keep their order
+        m_order[std::size_t(next[std::size_t(cellOfParticle[i])]++)] = int(i);
+}
+
+} // namespace vsim::sim::sph

@@ -1,0 +1,33 @@
+#include "vsim/sim/sph/SphValidation.h"
+
+#include "SphCases.h"
+
+#include "vsim/core/Error.h"
+
+#include <chrono>
+
+namespace vsim::sim::sph
+{
+
+std::vector<std::string> sphValidationCases()
+{
+    return {"sph-kernel", "sph-fpm", "sph-hydrostatic"};
+}
+
+ValidationResult runSphValidation(const std::string& name, const Progress& progress)
+{
+    const auto start = std::chrono::steady_clock::now();
+    ValidationResult result;
+    if (name == "sph-kernel")
+        result = detail::kernelCase();
+    else if (name == "sph-fpm")
+        result = detail::fpmCase(progress);
+    else if (name == "sph-hydrostatic")
+        result = detail::hydrostaticCase(progress);
+    else
+        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic)");
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace vsim::sim::sph
