@@ -8,10 +8,8 @@
 #include <cmath>
 #include <limits>
 
-namespace vsim::gui
-{
-namespace
-{
+namespace vsim::gui {
+namespace {
 
 /// "12.5", "0.0031", "1647", "1.2e+05": short tick labels.
 QString tickText(double value)

@@ -12,8 +12,7 @@
 #include <optional>
 #include <vector>
 
-namespace vsim::gui
-{
+namespace vsim::gui {
 
 class LinePlot : public QWidget
 {

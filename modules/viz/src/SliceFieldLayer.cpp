@@ -28,10 +28,8 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vsim::viz
-{
-namespace
-{
+namespace vsim::viz {
+namespace {
 
 constexpr double kInFront =
     0.75; // z of the cut: in front of the CT (0) and the labels (0.5), behind markers (1)

@@ -23,8 +23,7 @@ class vtkRenderer;
 class vtkTransform;
 class vtkTransformFilter;
 
-namespace vsim::viz
-{
+namespace vsim::viz {
 
 class SliceFieldLayer
 {

@@ -2,8 +2,7 @@
 
 #include <cmath>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 void FpmSystem::add(const Eigen::Vector3d& rij, double volumeM3, double value)
 {

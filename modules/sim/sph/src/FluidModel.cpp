@@ -2,8 +2,7 @@
 
 #include <cmath>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 double FluidModel::pressure(double density) const
 {

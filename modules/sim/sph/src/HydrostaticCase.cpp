@@ -15,10 +15,8 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vsim::sim::sph::detail
-{
-namespace
-{
+namespace vsim::sim::sph::detail {
+namespace {
 
 constexpr int kAcross = 6, kDeep = 16, kWallLayers = 4; // the walls as deep as the support (2h = 4 spacings)
 constexpr double kSpacingMm = 1.0, kGravity = 9.81, kDensity = 1000.0;

@@ -12,10 +12,8 @@
 #include <numbers>
 #include <random>
 
-namespace vsim::sim::sph::detail
-{
-namespace
-{
+namespace vsim::sim::sph::detail {
+namespace {
 
 constexpr double kSpacingM = 1e-3;      // particle spacing of the cases (1 mm)
 constexpr double kSmoothingRatio = 2.0; // h / spacing, as the solver's default
@@ -93,8 +91,7 @@ ValidationResult kernelCase()
     return result;
 }
 
-namespace
-{
+namespace {
 
 struct FpmErrors
 {

@@ -5,21 +5,25 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
-NeighbourGrid::NeighbourGrid(double cellSizeM) : m_cellSize(cellSizeM)
+NeighbourGrid::NeighbourGrid(double cellSizeM, const Eigen::Vector3d& periodicLengthM)
+    : m_cellSize(cellSizeM), m_period(periodicLengthM)
 {
     if (!(cellSizeM > 0.0) || !std::isfinite(cellSizeM))
         throw Error("the neighbour grid's cell must be a positive length");
+    for (int a = 0; a < 3; ++a)
+        if (!(m_period[a] >= 0.0) || (m_period[a] > 0.0 && m_period[a] < 3.0 * cellSizeM))
+            throw Error("a periodic axis must be at least three kernel supports long (" +
+                        std::to_string(3e3 * cellSizeM) + " mm)");
 }
 
 std::array<int, 3> NeighbourGrid::cellOf(const Eigen::Vector3d& positionM) const
 {
     std::array<int, 3> cell{};
     for (int a = 0; a < 3; ++a)
-        cell[std::size_t(a)] = std::clamp(int(std::floor((positionM[a] - m_origin[a]) / m_cellSize)), 0,
-                                          m_dims[std::size_t(a)] - 1);
+        cell[std::size_t(a)] =
+            std::clamp(int(std::floor((positionM[a] - m_origin[a]) / m_cell[a])), 0, m_dims[std::size_t(a)] - 1);
     return cell;
 }
 
@@ -38,7 +42,17 @@ void NeighbourGrid::build(const std::vector<Eigen::Vector3d>& positionsM)
     std::int64_t cells = 1;
     for (int a = 0; a < 3; ++a)
     {
-        m_dims[std::size_t(a)] = int(std::floor((high[a] - low[a]) / m_cellSize)) + 1;
+        if (m_period[a] > 0.0) // whole cells over the period, each at least the support
+        {
+            m_origin[a] = 0.0;
+            m_dims[std::size_t(a)] = int(std::floor(m_period[a] / m_cellSize));
+            m_cell[a] = m_period[a] / m_dims[std::size_t(a)];
+        }
+        else
+        {
+            m_cell[a] = m_cellSize;
+            m_dims[std::size_t(a)] = int(std::floor((high[a] - low[a]) / m_cellSize)) + 1;
+        }
         cells *= m_dims[std::size_t(a)];
         if (cells > kMaxCells)
             throw Error("the particles spread over more than " + std::to_string(kMaxCells) +

@@ -1,9 +1,9 @@
 #include "vsim/sim/sph/ParticleState.h"
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
-void ParticleState::add(const Eigen::Vector3d& positionM, double densityKgM3, double massKg, bool isWall)
+void ParticleState::add(const Eigen::Vector3d& positionM, double densityKgM3, double massKg, bool isWall,
+                        double wallDepthM)
 {
     id.push_back(int(position.size()));
     position.push_back(positionM);
@@ -11,6 +11,7 @@ void ParticleState::add(const Eigen::Vector3d& positionM, double densityKgM3, do
     density.push_back(densityKgM3);
     mass.push_back(massKg);
     wall.push_back(isWall ? 1 : 0);
+    wallDepth.push_back(isWall ? wallDepthM : -1.0);
 }
 
 void ParticleState::reorder(const NeighbourGrid& grid)
@@ -20,6 +21,7 @@ void ParticleState::reorder(const NeighbourGrid& grid)
     grid.reorder(density);
     grid.reorder(mass);
     grid.reorder(wall);
+    grid.reorder(wallDepth);
     grid.reorder(id);
 }
 

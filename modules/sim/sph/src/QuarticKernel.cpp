@@ -5,8 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 QuarticKernel::QuarticKernel(double smoothingLengthM)
     : m_h(smoothingLengthM),

@@ -5,8 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 std::vector<ParameterSpec> sphParameters()
 {
@@ -43,6 +42,10 @@ std::vector<ParameterSpec> sphParameters()
          "the run stops when a particle leaves the particles' starting box grown by this", K::Real},
         {"reorder_every", "Reorder every", "steps", 20, 1, 1e6, "Numerics",
          "the particles are sorted by neighbour cell every so many steps", K::Integer},
+            {"periodic_x_mm", "Periodic length x", "mm", 0.0, 0.0, 1e4, "Domain",
+         "validation channels: > 0 makes the domain [0, L) wrap around along x (0: open)", K::Real},
+        {"periodic_y_mm", "Periodic length y", "mm", 0.0, 0.0, 1e4, "Domain", "as periodic_x_mm, along y", K::Real},
+        {"periodic_z_mm", "Periodic length z", "mm", 0.0, 0.0, 1e4, "Domain", "as periodic_x_mm, along z", K::Real},
     };
 }
 
@@ -54,7 +57,9 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
         throw Error("the SPH input's particles need the field 'wall' (1 at wall particles, 0 in the fluid)");
     const double spacing = parameters.get("spacing_mm") * 1e-3;
     m_kernel = std::make_unique<QuarticKernel>(parameters.get("smoothing_ratio") * spacing);
-    m_grid = std::make_unique<NeighbourGrid>(m_kernel->support());
+    const Eigen::Vector3d period =
+        1e-3 * Eigen::Vector3d(parameters.get("periodic_x_mm"), parameters.get("periodic_y_mm"), parameters.get("periodic_z_mm"));
+    m_grid = std::make_unique<NeighbourGrid>(m_kernel->support(), period);
     m_fluid.restDensity = parameters.get("density_kg_m3");
     m_fluid.viscosity = parameters.get("viscosity_pa_s");
     m_fluid.soundSpeed = parameters.get("sound_speed_m_s");
@@ -72,21 +77,26 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     const auto pressure = given.fields.find("pressure_pa");
     const auto vx = given.fields.find("velocity_x_m_s"), vy = given.fields.find("velocity_y_m_s"),
                vz = given.fields.find("velocity_z_m_s");
+    const auto depth = given.fields.find("wall_depth_mm");
     if (given.size() == 0)
         throw Error("the SPH input has no particles");
-    m_boxLow = m_boxHigh = given.positionsMm.front() * 1e-3;
+    m_boxLow = m_boxHigh = m_grid->wrap(given.positionsMm.front() * 1e-3);
     for (std::size_t i = 0; i < given.size(); ++i)
     {
-        const Eigen::Vector3d x = given.positionsMm[i] * 1e-3;
+        const Eigen::Vector3d x = m_grid->wrap(given.positionsMm[i] * 1e-3);
         const double rho =
             pressure == given.fields.end() ? m_fluid.restDensity : m_fluid.densityAt(pressure->second[i]);
-        m_particles.add(x, rho, mass, given.fields.at("wall")[i] > 0.5);
+        m_particles.add(x, rho, mass, given.fields.at("wall")[i] > 0.5,
+                        depth == given.fields.end() ? -1.0 : depth->second[i] * 1e-3);
         if (vx != given.fields.end() && vy != given.fields.end() && vz != given.fields.end())
             m_particles.velocity.back() = {vx->second[i], vy->second[i], vz->second[i]};
         m_boxLow = m_boxLow.cwiseMin(x), m_boxHigh = m_boxHigh.cwiseMax(x);
     }
     const double margin = parameters.get("escape_margin_mm") * 1e-3;
     m_boxLow.array() -= margin, m_boxHigh.array() += margin;
+    for (int a = 0; a < 3; ++a) // nothing escapes along a periodic axis
+        if (period[a] > 0.0)
+            m_boxLow[a] = -INFINITY, m_boxHigh[a] = INFINITY;
     m_grid->build(m_particles.position);
     m_particles.reorder(*m_grid); // neighbours near in memory
     m_grid->build(m_particles.position);
@@ -114,7 +124,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
         if (p.wall[i])
             continue;
         p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
-        p.position[i] += dt * p.velocity[i];
+        p.position[i] = m_grid->wrap(p.position[i] + dt * p.velocity[i]);
     }
     auto putBack = [&](std::string why)
     {

@@ -6,12 +6,11 @@
 
 #include <chrono>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 std::vector<std::string> sphValidationCases()
 {
-    return {"sph-kernel", "sph-fpm", "sph-hydrostatic"};
+    return {"sph-kernel", "sph-fpm", "sph-hydrostatic", "sph-poiseuille"};
 }
 
 ValidationResult runSphValidation(const std::string& name, const Progress& progress)
@@ -24,8 +23,10 @@ ValidationResult runSphValidation(const std::string& name, const Progress& progr
         result = detail::fpmCase(progress);
     else if (name == "sph-hydrostatic")
         result = detail::hydrostaticCase(progress);
+    else if (name == "sph-poiseuille")
+        result = detail::poiseuilleCase(progress);
     else
-        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic)");
+        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille)");
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

@@ -12,8 +12,7 @@
 
 #include <optional>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 struct CorrectedField
 {

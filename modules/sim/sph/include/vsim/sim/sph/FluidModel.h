@@ -7,8 +7,7 @@
 
 #include <Eigen/Core>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 struct FluidModel
 {

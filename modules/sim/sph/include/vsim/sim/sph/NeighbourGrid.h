@@ -4,23 +4,25 @@
 // particles per cell, prefix-sums the counts (a counting sort) and lists the particles cell by cell, so that
 // the neighbours of a particle lie in the 27 cells around its own. order() is that list (the permutation that
 // sorts the particles by cell); the solver reorders its particle arrays by it now and then, so that
-// neighbours lie near in memory, and builds again. The CUDA backend builds the same structure (cell index,
-// counting sort, reorder) on the device.
+// neighbours lie near in memory, and builds again. An axis can be periodic over [0, L) (the validation
+// channels): its cells wrap around and the offsets between particles are the nearest images. The CUDA backend
+// builds the same structure (cell index, counting sort, reorder) on the device.
 
 #include <Eigen/Core>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 class NeighbourGrid
 {
 public:
-    /// `cellSizeM` > 0: the kernel support (2h).
-    explicit NeighbourGrid(double cellSizeM);
+    /// `cellSizeM` > 0: the kernel support (2h). `periodicLengthM[a]` > 0 makes axis a periodic over [0, L) (L at
+    /// least three cells: throws vsim::Error otherwise); 0 leaves it open.
+    explicit NeighbourGrid(double cellSizeM, const Eigen::Vector3d& periodicLengthM = Eigen::Vector3d::Zero());
 
     /// Sorts `positionsM` by cell. Throws vsim::Error when a position is not finite or the particles spread
     /// over more cells than kMaxCells (a run whose particles fled: the solver's guard catches it first).
@@ -36,6 +38,24 @@ public:
     void forEachNeighbour(const std::vector<Eigen::Vector3d>& positionsM, int i, F&& f) const;
 
     double cellSize() const { return m_cellSize; }
+    /// x_i - x_j, as the nearest image across the periodic axes.
+    Eigen::Vector3d offset(const Eigen::Vector3d& xi, const Eigen::Vector3d& xj) const
+    {
+        Eigen::Vector3d rij = xi - xj;
+        for (int a = 0; a < 3; ++a)
+            if (m_period[a] > 0.0)
+                rij[a] -= m_period[a] * std::round(rij[a] / m_period[a]);
+        return rij;
+    }
+    /// `positionM` brought back into [0, L) along the periodic axes.
+    Eigen::Vector3d wrap(Eigen::Vector3d positionM) const
+    {
+        for (int a = 0; a < 3; ++a)
+            if (m_period[a] > 0.0)
+                positionM[a] -= m_period[a] * std::floor(positionM[a] / m_period[a]);
+        return positionM;
+    }
+    const Eigen::Vector3d& periodicLength() const { return m_period; }
     std::array<int, 3> dims() const { return m_dims; }
     static constexpr std::int64_t kMaxCells = 1LL << 27;
 
@@ -47,6 +67,8 @@ private:
     }
 
     double m_cellSize;
+    Eigen::Vector3d m_period;                         ///< m per axis; 0: open
+    Eigen::Vector3d m_cell = Eigen::Vector3d::Zero(); ///< the cell's edge per axis (a period's share, >= the support)
     Eigen::Vector3d m_origin = Eigen::Vector3d::Zero();
     std::array<int, 3> m_dims{0, 0, 0};
     std::vector<int> m_cellStart; ///< first sorted particle of each cell; one more entry: the particle count
@@ -72,9 +94,15 @@ void NeighbourGrid::forEachNeighbour(const std::vector<Eigen::Vector3d>& positio
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx)
             {
-                const std::array<int, 3> n{c[0] + dx, c[1] + dy, c[2] + dz};
-                if (n[0] < 0 || n[1] < 0 || n[2] < 0 || n[0] >= m_dims[0] || n[1] >= m_dims[1] ||
-                    n[2] >= m_dims[2])
+                std::array<int, 3> n{c[0] + dx, c[1] + dy, c[2] + dz};
+                bool outside = false;
+                for (std::size_t a = 0; a < 3; ++a)
+                {
+                    if (m_period[int(a)] > 0.0)
+                        n[a] = (n[a] + m_dims[a]) % m_dims[a];
+                    outside = outside || n[a] < 0 || n[a] >= m_dims[a];
+                }
+                if (outside)
                     continue;
                 const std::int64_t cell = cellIndex(n);
                 for (int s = m_cellStart[std::size_t(cell)]; s < m_cellStart[std::size_t(cell) + 1]; ++s)
@@ -82,7 +110,7 @@ void NeighbourGrid::forEachNeighbour(const std::vector<Eigen::Vector3d>& positio
                     const int j = m_order[std::size_t(s)];
                     if (j == i)
                         continue;
-                    const Eigen::Vector3d rij = xi - positionsM[std::size_t(j)];
+                    const Eigen::Vector3d rij = offset(xi, positionsM[std::size_t(j)]);
                     const double r2 = rij.squaredNorm();
                     if (r2 < reach2)
                         f(j, rij, std::sqrt(r2));

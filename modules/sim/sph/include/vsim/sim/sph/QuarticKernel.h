@@ -8,8 +8,7 @@
 
 #include <Eigen/Core>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 class QuarticKernel
 {

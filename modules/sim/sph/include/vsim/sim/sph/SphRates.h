@@ -12,11 +12,15 @@
 //      gravity is not diffused, also at its free surface, where Molteni & Colagrossi's 2009 term without G
 //      makes the pressure drift);
 //  momentum:  a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad_i W_ij
-//                   + sum_j m_j (mu_i + mu_j) (x_ij . grad_i W_ij) / (rho_i rho_j (|x_ij|^2 + 0.01 h^2)) v_ij
+//                   + sum_j m_j (mu_i + mu_j) (x_ij . grad_i W_ij) / (rho_i rho_j (|x_ij|^2 + 0.001 h^2)) v_ij
 //                   + g,
-//      the viscous term of Morris et al. 1997 in the form of Lo & Shao 2002 (no slip at the wall particles,
-//      which stand still). Wall particles (the dynamic boundary of Crespo et al. 2007) get a density rate
-//      from the fluid around them and no acceleration.
+//      the viscous term of Morris et al. 1997 in the form of Lo & Shao 2002. No slip: a wall particle j of
+//      known depth d_j below the wall's surface takes the velocity -(d_j / d_i) v_i in i's viscous term, so
+//      that v_ij = beta v_i, beta = min(10, 1 + d_j / d_i), d_i i's distance to the surface (Morris et al.
+//      1997; d_i = min over wall neighbours of |x_ij| - d_j); without depths the wall particles stand still
+//      (the plain dynamic boundary, whose no-slip plane lies about 0.75 spacings too deep: sph-poiseuille's
+//      peak 15 % high). Wall particles (the dynamic boundary of Crespo et al. 2007) get a density rate from
+//      the fluid around them and no acceleration.
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
@@ -25,17 +29,18 @@
 
 #include <vector>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 struct SphRates
 {
     std::vector<Eigen::Vector3d> acceleration; ///< m/s^2 (zero at wall particles)
     std::vector<double> densityRate;           ///< kg/(m^3 s)
-    std::vector<Eigen::Vector3d>
-        densityGradient;              ///< G_i, kg/m^4 (fluid particles; zero where M_i is singular)
+    /// G_i, kg/m^4 (fluid particles; zero where M_i is singular).
+    std::vector<Eigen::Vector3d> densityGradient;
+    /// d_i, m (fluid particles; infinite without a wall neighbour of known depth).
+    std::vector<double> wallDistance;
     double largestAcceleration = 0.0; ///< m/s^2, over the fluid
-    double largestViscousRate = 0.0;  ///< max_ij |h v_ij . x_ij / (r^2 + 0.01 h^2)|, m/s (Monaghan's CFL)
+    double largestViscousRate = 0.0;  ///< max_ij |h v_ij . x_ij / (r^2 + 0.001 h^2)|, m/s (Monaghan's CFL)
 };
 
 /// The pressure of every particle from its density (Tait).

@@ -2,7 +2,8 @@
 
 // The weakly compressible SPH solver on the run driver (issue 18; thesis ch. 5.1-5.4): particles given as the
 // input "particles" (a ParticleSet in mm with the field "wall", 1 at the dynamic-boundary particles, and
-// optionally "pressure_pa" to start from and "velocity_x_m_s" .. "velocity_z_m_s"), stepped by leapfrog
+// optionally "wall_depth_mm", a wall particle's depth below the wall's surface for the no-slip velocity of
+// SphRates.h, "pressure_pa" to start from and "velocity_x_m_s" .. "velocity_z_m_s"), stepped by leapfrog
 // (kick-drift-kick: one rate evaluation per step) with the adaptive time step of SphRates.h. Guards: a value
 // that is not finite, a density more than `density_guard` from the rest density (the weak compressibility
 // broken: a sound speed too low for the flow, or particles piling up), a particle leaving the domain's box
@@ -17,12 +18,11 @@
 
 #include <memory>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 /// spacing_mm, smoothing_ratio, density_kg_m3, viscosity_pa_s, sound_speed_m_s, delta_sph, cfl,
 /// gravity_{x,y,z}_m_s2 (patient frame, LPS: a supine patient's is +y), end_time_s, density_guard,
-/// escape_margin_mm, reorder_every.
+/// escape_margin_mm, reorder_every, periodic_{x,y,z}_mm (validation channels).
 std::vector<ParameterSpec> sphParameters();
 
 class SphSolver : public Solver

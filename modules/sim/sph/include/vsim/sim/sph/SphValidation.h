@@ -20,8 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace vsim::sim::sph
-{
+namespace vsim::sim::sph {
 
 std::vector<std::string> sphValidationCases();
 /// Runs one case. Throws vsim::Error for an unknown name (listing the known ones).
