@@ -98,10 +98,11 @@ private slots:
     /// Periodic along x (a channel's flow direction): neighbours across the seam found as nearest images.
     void periodicNeighbours()
     {
-        const double reach = 1e-3, period = 4.5e-3;
-        NeighbourGrid grid(reach, Eigen::Vector3d(period, 0.0, 0.0));
-        for (unsigned seed : {4u, 5u, 6u})
+        const double reach = 1e-3;
+        // Three seeds, each with its period: roomy, the shortest allowed (five cells of half the reach), between.
+        for (const auto [seed, period] : {std::pair{4u, 4.5e-3}, std::pair{5u, 2.5e-3}, std::pair{6u, 3.3e-3}})
         {
+            NeighbourGrid grid(reach, Eigen::Vector3d(period, 0.0, 0.0));
             std::mt19937 random(seed);
             std::uniform_real_distribution<double> along(0.0, period), across(-2e-3, 2e-3);
             std::vector<Eigen::Vector3d> positions;
@@ -131,8 +132,8 @@ private slots:
             }
             QVERIFY(acrossTheSeam > 0);
         }
-        QCOMPARE(grid.wrap(Eigen::Vector3d(-0.5e-3, 7.0, 0.0)).x(), period - 0.5e-3);
-        QVERIFY_THROWS_EXCEPTION(Error, NeighbourGrid(reach, Eigen::Vector3d(2.5e-3, 0.0, 0.0)));
+        QCOMPARE(NeighbourGrid(reach, Eigen::Vector3d(4.5e-3, 0.0, 0.0)).wrap(Eigen::Vector3d(-0.5e-3, 7.0, 0.0)).x(), 4.0e-3);
+        QVERIFY_THROWS_EXCEPTION(Error, NeighbourGrid(reach, Eigen::Vector3d(2.4e-3, 0.0, 0.0)));
     }
 
     /// The particle machinery's analytic cases (the flow cases run in tst_sph_flow_validation).

@@ -7,15 +7,16 @@
 
 namespace vsim::sim::sph {
 
-NeighbourGrid::NeighbourGrid(double cellSizeM, const Eigen::Vector3d& periodicLengthM)
-    : m_cellSize(cellSizeM), m_period(periodicLengthM)
+NeighbourGrid::NeighbourGrid(double reachM, const Eigen::Vector3d& periodicLengthM)
+    : m_reach(reachM), m_cellSize(reachM / kCellsPerReach), m_period(periodicLengthM)
 {
-    if (!(cellSizeM > 0.0) || !std::isfinite(cellSizeM))
-        throw Error("the neighbour grid's cell must be a positive length");
+    if (!(reachM > 0.0) || !std::isfinite(reachM))
+        throw Error("the neighbour grid's reach must be a positive length");
+    // A periodic axis needs 2 k + 1 cells, so that a query visits each cell once.
     for (int a = 0; a < 3; ++a)
-        if (!(m_period[a] >= 0.0) || (m_period[a] > 0.0 && m_period[a] < 3.0 * cellSizeM))
-            throw Error("a periodic axis must be at least three kernel supports long (" +
-                        std::to_string(3e3 * cellSizeM) + " mm)");
+        if (!(m_period[a] >= 0.0) || (m_period[a] > 0.0 && m_period[a] < (2 * kCellsPerReach + 1) * m_cellSize))
+            throw Error("a periodic axis must be at least 2.5 kernel supports long (" +
+                        std::to_string(2.5e3 * reachM) + " mm)");
 }
 
 std::array<int, 3> NeighbourGrid::cellOf(const Eigen::Vector3d& positionM) const
@@ -42,7 +43,7 @@ void NeighbourGrid::build(const std::vector<Eigen::Vector3d>& positionsM)
     std::int64_t cells = 1;
     for (int a = 0; a < 3; ++a)
     {
-        if (m_period[a] > 0.0) // whole cells over the period, each at least the support
+        if (m_period[a] > 0.0) // whole cells over the period, each at least half the support
         {
             m_origin[a] = 0.0;
             m_dims[std::size_t(a)] = int(std::floor(m_period[a] / m_cellSize));

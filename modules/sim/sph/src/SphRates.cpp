@@ -53,7 +53,7 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
             }
             if (!densityGradients)
                 return;
-            const Eigen::Vector3d gradW = kernel.gradient(rij);
+            const Eigen::Vector3d gradW = kernel.gradient(rij, r);
             const double volume = particles.mass[sj] / particles.density[sj];
             moment.noalias() -= volume * rij * gradW.transpose(); // (x_j - x_i) (x) grad_i W_ij
             sum += volume * (particles.density[sj] - particles.density[si]) * gradW;
@@ -73,7 +73,11 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                   SphRates& rates)
 {
     const int n = int(particles.size());
-    fluidNeighbourhood(particles, grid, kernel, fluid.densityDiffusion > 0.0, rates);
+    const bool wallDepths = std::any_of(particles.wallDepth.begin(), particles.wallDepth.end(), [](double d) { return d >= 0.0; });
+    if (fluid.densityDiffusion > 0.0 || wallDepths)
+        fluidNeighbourhood(particles, grid, kernel, fluid.densityDiffusion > 0.0, rates);
+    else
+        rates.densityGradient.assign(std::size_t(n), Eigen::Vector3d::Zero()), rates.wallDistance.assign(std::size_t(n), INFINITY);
     rates.acceleration.assign(std::size_t(n), Eigen::Vector3d::Zero());
     rates.densityRate.assign(std::size_t(n), 0.0);
     const double h = kernel.smoothingLength(), eta2 = kEtaSquared * h * h;
@@ -97,7 +101,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                 const bool wallJ = particles.wall[sj] != 0;
                 if (wallI && wallJ)
                     return; // frozen walls do not act on each other
-                const Eigen::Vector3d gradW = kernel.gradient(rij);
+                const Eigen::Vector3d gradW = kernel.gradient(rij, r);
                 const Eigen::Vector3d vij = vi - particles.velocity[sj];
                 const double mJ = particles.mass[sj], rhoJ = particles.density[sj];
                 densityRate += mJ * vij.dot(gradW);

@@ -1,6 +1,6 @@
 #pragma once
 
-// Neighbour search on a uniform grid whose cell is the kernel's support (issue 18): each build counts the
+// Neighbour search on a uniform grid whose cell is half the kernel's support (issue 18): each build counts the
 // particles per cell, prefix-sums the counts (a counting sort) and lists the particles cell by cell, so that
 // the neighbours of a particle lie in the 27 cells around its own. order() is that list (the permutation that
 // sorts the particles by cell); the solver reorders its particle arrays by it now and then, so that
@@ -20,9 +20,10 @@ namespace vsim::sim::sph {
 class NeighbourGrid
 {
 public:
-    /// `cellSizeM` > 0: the kernel support (2h). `periodicLengthM[a]` > 0 makes axis a periodic over [0, L) (L at
-    /// least three cells: throws vsim::Error otherwise); 0 leaves it open.
-    explicit NeighbourGrid(double cellSizeM, const Eigen::Vector3d& periodicLengthM = Eigen::Vector3d::Zero());
+    /// `reachM` > 0: the kernel support (2h); the cells are half of it (a query scans 5 x 5 x 5 cells: 42 % fewer
+    /// candidates than 3 x 3 x 3 cells of the whole reach). `periodicLengthM[a]` > 0 makes axis a periodic over
+    /// [0, L) (L at least 2.5 reaches: throws vsim::Error otherwise); 0 leaves it open.
+    explicit NeighbourGrid(double reachM, const Eigen::Vector3d& periodicLengthM = Eigen::Vector3d::Zero());
 
     /// Sorts `positionsM` by cell. Throws vsim::Error when a position is not finite or the particles spread
     /// over more cells than kMaxCells (a run whose particles fled: the solver's guard catches it first).
@@ -37,7 +38,8 @@ public:
     template <class F>
     void forEachNeighbour(const std::vector<Eigen::Vector3d>& positionsM, int i, F&& f) const;
 
-    double cellSize() const { return m_cellSize; }
+    double reach() const { return m_reach; }
+    static constexpr int kCellsPerReach = 2;
     /// x_i - x_j, as the nearest image across the periodic axes.
     Eigen::Vector3d offset(const Eigen::Vector3d& xi, const Eigen::Vector3d& xj) const
     {
@@ -66,7 +68,7 @@ private:
         return cell[0] + std::int64_t(m_dims[0]) * (cell[1] + std::int64_t(m_dims[1]) * cell[2]);
     }
 
-    double m_cellSize;
+    double m_reach, m_cellSize;
     Eigen::Vector3d m_period;                         ///< m per axis; 0: open
     Eigen::Vector3d m_cell = Eigen::Vector3d::Zero(); ///< the cell's edge per axis (a period's share, >= the support)
     Eigen::Vector3d m_origin = Eigen::Vector3d::Zero();
@@ -89,10 +91,11 @@ void NeighbourGrid::forEachNeighbour(const std::vector<Eigen::Vector3d>& positio
 {
     const Eigen::Vector3d& xi = positionsM[std::size_t(i)];
     const std::array<int, 3> c = cellOf(xi);
-    const double reach2 = m_cellSize * m_cellSize;
-    for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx)
+    const double reach2 = m_reach * m_reach;
+    constexpr int k = kCellsPerReach;
+    for (int dz = -k; dz <= k; ++dz)
+        for (int dy = -k; dy <= k; ++dy)
+            for (int dx = -k; dx <= k; ++dx)
             {
                 std::array<int, 3> n{c[0] + dx, c[1] + dy, c[2] + dz};
                 bool outside = false;

@@ -24,6 +24,14 @@ public:
     double derivative(double r) const;
     /// grad_i W(x_i - x_j) for rij = x_i - x_j: dW/dr rij / r (the zero vector at r = 0).
     Eigen::Vector3d gradient(const Eigen::Vector3d& rij) const;
+    /// The same with r = |rij| already known (the neighbour loops have it), inline for them.
+    Eigen::Vector3d gradient(const Eigen::Vector3d& rij, double r) const
+    {
+        const double q = r / m_h;
+        if (r <= 0.0 || q >= 2.0)
+            return Eigen::Vector3d::Zero();
+        return (m_norm / (m_h * m_h) * (-9.0 / 4.0 + 19.0 / 8.0 * q - 5.0 / 8.0 * q * q)) * rij; // dW/dr / r
+    }
 
 private:
     double m_h, m_norm; ///< h (m), 315 / (208 pi h^3)

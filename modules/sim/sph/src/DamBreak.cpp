@@ -1,0 +1,42 @@
+#include "vsim/sim/sph/DamBreak.h"
+
+#include "vsim/core/Error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsim::sim::sph {
+
+ParticleSet damBreakParticles(double spacingMm)
+{
+    if (!(spacingMm > 0.0))
+        throw Error("the dam break needs a positive particle spacing");
+    constexpr double tank[3] = {3220.0, 1000.0, 1000.0}; // mm
+    constexpr double waterStart = 3220.0 - 1228.0, waterHeight = 1000.0 * kDamBreakWaterHeightM;
+    constexpr int layers = 4; // the support of h = 2 spacings
+    const int cells[3] = {int(std::lround(tank[0] / spacingMm)), int(std::lround(tank[1] / spacingMm)),
+                          int(std::lround(tank[2] / spacingMm))};
+    ParticleSet set;
+    auto& wall = set.fields["wall"];
+    auto& depth = set.fields["wall_depth_mm"];
+    auto& pressure = set.fields["pressure_pa"];
+    for (int k = -layers; k < cells[2]; ++k)
+        for (int j = -layers; j < cells[1] + layers; ++j)
+            for (int i = -layers; i < cells[0] + layers; ++i)
+            {
+                const Eigen::Vector3d x = spacingMm * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5);
+                // How far outside the tank's interior the lattice point lies, in spacings (0 inside).
+                const int outside = std::max({-i, i - cells[0] + 1, -j, j - cells[1] + 1, -k, 0});
+                const bool isWall = outside > 0;
+                const bool water = !isWall && x.x() >= waterStart && x.z() < waterHeight;
+                if (!isWall && !water)
+                    continue;
+                set.positionsMm.push_back(x);
+                wall.push_back(isWall ? 1.0 : 0.0);
+                depth.push_back(isWall ? spacingMm * (outside - 0.5) : 0.0);
+                pressure.push_back(water ? 1000.0 * 9.81 * (waterHeight - x.z()) * 1e-3 : 0.0);
+            }
+    return set;
+}
+
+} // namespace vsim::sim::sph
