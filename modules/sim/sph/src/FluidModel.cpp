@@ -1,6 +1,7 @@
 #include "vsim/sim/sph/FluidModel.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace vsim::sim::sph {
 
@@ -12,6 +13,12 @@ double FluidModel::pressure(double density) const
 double FluidModel::densityAt(double pressurePa) const
 {
     return restDensity * std::pow(1.0 + pressurePa / stiffness(), 1.0 / gamma);
+}
+
+Eigen::Vector3d FluidModel::externalAcceleration(double timeS) const
+{
+    const double oscillation = bodyForceFrequency > 0.0 ? std::cos(2.0 * std::numbers::pi * bodyForceFrequency * timeS) : 1.0;
+    return gravity + oscillation * bodyForce;
 }
 
 } // namespace vsim::sim::sph

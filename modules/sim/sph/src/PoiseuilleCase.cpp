@@ -55,7 +55,7 @@ ValidationResult poiseuilleCase(const Progress& progress)
     parameters.set("density_kg_m3", kDensity);
     parameters.set("viscosity_pa_s", kViscosity);
     parameters.set("sound_speed_m_s", 10.0 * kPeakSpeed);
-    parameters.set("gravity_x_m_s2", force);
+    parameters.set("body_force_x_m_s2", force);
     parameters.set("periodic_x_mm", kPeriod * kSpacingMm);
     parameters.set("periodic_z_mm", kPeriod * kSpacingMm);
     parameters.set("end_time_s", 7.0 * decay);

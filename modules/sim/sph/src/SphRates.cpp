@@ -68,9 +68,8 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
 
 } // namespace
 
-void computeRates(const ParticleState& particles, const std::vector<double>& pressure,
-                  const NeighbourGrid& grid, const QuarticKernel& kernel, const FluidModel& fluid,
-                  SphRates& rates)
+void computeRates(const ParticleState& particles, const std::vector<double>& pressure, const NeighbourGrid& grid,
+                  const QuarticKernel& kernel, const FluidModel& fluid, double timeS, SphRates& rates)
 {
     const int n = int(particles.size());
     const bool wallDepths = std::any_of(particles.wallDepth.begin(), particles.wallDepth.end(), [](double d) { return d >= 0.0; });
@@ -84,6 +83,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
     const double diffusion = fluid.densityDiffusion * h * fluid.soundSpeed;
     const double mu = fluid.viscosity;
     double largestAcceleration = 0.0, largestViscousRate = 0.0;
+    const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
 #pragma omp parallel for schedule(dynamic, 256) reduction(max : largestAcceleration, largestViscousRate)
     for (int i = 0; i < n; ++i)
     {
@@ -129,7 +129,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         rates.densityRate[si] = densityRate;
         if (!wallI)
         {
-            rates.acceleration[si] = force + fluid.gravity;
+            rates.acceleration[si] = force + external;
             largestAcceleration = std::max(largestAcceleration, rates.acceleration[si].norm());
         }
     }

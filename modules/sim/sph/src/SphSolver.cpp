@@ -42,7 +42,13 @@ std::vector<ParameterSpec> sphParameters()
          "the run stops when a particle leaves the particles' starting box grown by this", K::Real},
         {"reorder_every", "Reorder every", "steps", 20, 1, 1e6, "Numerics",
          "the particles are sorted by neighbour cell every so many steps", K::Integer},
-            {"periodic_x_mm", "Periodic length x", "mm", 0.0, 0.0, 1e4, "Domain",
+        {"body_force_x_m_s2", "Body force x", "m/s^2", 0.0, -1e5, 1e5, "Fluid",
+         "a driving force per unit mass (a pressure gradient over the density) in a periodic pipe or channel", K::Real},
+        {"body_force_y_m_s2", "Body force y", "m/s^2", 0.0, -1e5, 1e5, "Fluid", "as body_force_x_m_s2", K::Real},
+        {"body_force_z_m_s2", "Body force z", "m/s^2", 0.0, -1e5, 1e5, "Fluid", "as body_force_x_m_s2", K::Real},
+        {"body_force_frequency_hz", "Body force frequency", "Hz", 0.0, 0.0, 1e5, "Fluid",
+         "> 0: the body force oscillates as cos(2 pi f t) (Womersley flow); 0: steady", K::Real},
+        {"periodic_x_mm", "Periodic length x", "mm", 0.0, 0.0, 1e4, "Domain",
          "validation channels: > 0 makes the domain [0, L) wrap around along x (0: open)", K::Real},
         {"periodic_y_mm", "Periodic length y", "mm", 0.0, 0.0, 1e4, "Domain", "as periodic_x_mm, along y", K::Real},
         {"periodic_z_mm", "Periodic length z", "mm", 0.0, 0.0, 1e4, "Domain", "as periodic_x_mm, along z", K::Real},
@@ -64,6 +70,9 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_fluid.viscosity = parameters.get("viscosity_pa_s");
     m_fluid.soundSpeed = parameters.get("sound_speed_m_s");
     m_fluid.densityDiffusion = parameters.get("delta_sph");
+    m_fluid.bodyForce = {parameters.get("body_force_x_m_s2"), parameters.get("body_force_y_m_s2"),
+                         parameters.get("body_force_z_m_s2")};
+    m_fluid.bodyForceFrequency = parameters.get("body_force_frequency_hz");
     m_fluid.gravity = {parameters.get("gravity_x_m_s2"), parameters.get("gravity_y_m_s2"),
                        parameters.get("gravity_z_m_s2")};
     m_cfl = parameters.get("cfl");
@@ -100,13 +109,13 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_grid->build(m_particles.position);
     m_particles.reorder(*m_grid); // neighbours near in memory
     m_grid->build(m_particles.position);
-    updateRates();
+    updateRates(0.0);
     m_stepS = stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl);
 }
 
-void SphSolver::updateRates()
+void SphSolver::updateRates(double timeS)
 {
-    computeRates(m_particles, pressures(m_particles, m_fluid), *m_grid, *m_kernel, m_fluid, m_rates);
+    computeRates(m_particles, pressures(m_particles, m_fluid), *m_grid, *m_kernel, m_fluid, timeS, m_rates);
 }
 
 StepOutcome SphSolver::step(RunStatus&, const Progress&)
@@ -145,7 +154,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     {
         return putBack(std::string("at t = ") + numberText(m_timeS + dt) + " s: " + error.what());
     }
-    updateRates();
+    updateRates(m_timeS + dt);
     double worstDensity = 0.0;
     std::size_t worst = 0;
     for (std::size_t i = 0; i < n; ++i)

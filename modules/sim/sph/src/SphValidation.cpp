@@ -10,7 +10,7 @@ namespace vsim::sim::sph {
 
 std::vector<std::string> sphValidationCases()
 {
-    return {"sph-kernel", "sph-fpm", "sph-hydrostatic", "sph-poiseuille"};
+    return {"sph-kernel", "sph-fpm", "sph-hydrostatic", "sph-poiseuille", "sph-womersley"};
 }
 
 ValidationResult runSphValidation(const std::string& name, const Progress& progress)
@@ -25,8 +25,10 @@ ValidationResult runSphValidation(const std::string& name, const Progress& progr
         result = detail::hydrostaticCase(progress);
     else if (name == "sph-poiseuille")
         result = detail::poiseuilleCase(progress);
+    else if (name == "sph-womersley")
+        result = detail::womersleyCase(progress);
     else
-        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille)");
+        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley)");
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

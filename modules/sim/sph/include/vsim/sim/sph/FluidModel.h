@@ -17,7 +17,13 @@ struct FluidModel
     double gamma = 7.0;
     double densityDiffusion = 0.1; ///< delta of the delta-SPH term (Molteni & Colagrossi 2009; 0: off)
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero(); ///< m/s^2
+    /// A driving body force per unit mass (m/s^2: a pressure gradient / rho in a periodic pipe), oscillating as
+    /// cos(2 pi f t) when bodyForceFrequency > 0 (Hz).
+    Eigen::Vector3d bodyForce = Eigen::Vector3d::Zero();
+    double bodyForceFrequency = 0.0;
 
+    /// Gravity and the body force at time t (s), m/s^2.
+    Eigen::Vector3d externalAcceleration(double timeS) const;
     double stiffness() const { return soundSpeed * soundSpeed * restDensity / gamma; }
     double pressure(double density) const;
     /// The density whose pressure is `pressurePa` (the inverse of pressure()).

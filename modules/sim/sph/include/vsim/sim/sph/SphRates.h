@@ -13,7 +13,7 @@
 //      makes the pressure drift);
 //  momentum:  a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad_i W_ij
 //                   + sum_j m_j (mu_i + mu_j) (x_ij . grad_i W_ij) / (rho_i rho_j (|x_ij|^2 + 0.001 h^2)) v_ij
-//                   + g,
+//                   + g + f(t),
 //      the viscous term of Morris et al. 1997 in the form of Lo & Shao 2002. No slip: a wall particle j of
 //      known depth d_j below the wall's surface takes the velocity -(d_j / d_i) v_i in i's viscous term, so
 //      that v_ij = beta v_i, beta = min(10, 1 + d_j / d_i), d_i i's distance to the surface (Morris et al.
@@ -46,10 +46,9 @@ struct SphRates
 /// The pressure of every particle from its density (Tait).
 std::vector<double> pressures(const ParticleState& particles, const FluidModel& fluid);
 
-/// Fills `rates` for the particles (sorted by `grid`, built on their positions).
-void computeRates(const ParticleState& particles, const std::vector<double>& pressure,
-                  const NeighbourGrid& grid, const QuarticKernel& kernel, const FluidModel& fluid,
-                  SphRates& rates);
+/// Fills `rates` for the particles (`grid` built on their positions) at time `timeS` (s: the body force's phase).
+void computeRates(const ParticleState& particles, const std::vector<double>& pressure, const NeighbourGrid& grid,
+                  const QuarticKernel& kernel, const FluidModel& fluid, double timeS, SphRates& rates);
 
 /// The explicit step's limit: CFL x min(min_i sqrt(h / |a_i|), h / (c0 + largestViscousRate)), and the
 /// viscous limit 0.125 h^2 rho0 / mu (Morris et al. 1997); s.

@@ -22,7 +22,8 @@ namespace vsim::sim::sph {
 
 /// spacing_mm, smoothing_ratio, density_kg_m3, viscosity_pa_s, sound_speed_m_s, delta_sph, cfl,
 /// gravity_{x,y,z}_m_s2 (patient frame, LPS: a supine patient's is +y), end_time_s, density_guard,
-/// escape_margin_mm, reorder_every, periodic_{x,y,z}_mm (validation channels).
+/// escape_margin_mm, reorder_every, body_force_{x,y,z}_m_s2 and body_force_frequency_hz, periodic_{x,y,z}_mm
+/// (validation channels).
 std::vector<ParameterSpec> sphParameters();
 
 class SphSolver : public Solver
@@ -49,7 +50,7 @@ public:
     std::vector<double> pressure() const { return pressures(m_particles, m_fluid); }
 
 private:
-    void updateRates();
+    void updateRates(double timeS);
 
     FluidModel m_fluid;
     std::unique_ptr<QuarticKernel> m_kernel;
