@@ -115,6 +115,28 @@ private slots:
               run.metrics.at("largest_speed_m_s") / 10.0, run.metrics.at("largest_density_variation"));
         QVERIFY(run.status.complete());
         QVERIFY(run.metrics.at("largest_speed_m_s") < 0.01 * 10.0);
+
+        // A fluid particle shot at the wall at 30 m/s (a run gone wrong): the guard stops the run with the particle
+        // and where it went through, the last frame the state before that step.
+        particles.fields["velocity_x_m_s"].assign(particles.size(), 0.0);
+        particles.fields["velocity_y_m_s"].assign(particles.size(), 0.0);
+        particles.fields["velocity_z_m_s"].assign(particles.size(), 0.0);
+        std::size_t shot = 0;
+        for (std::size_t i = 0; i < particles.size(); ++i) // the fluid particle nearest the side wall at +x
+            if (particles.fields.at("wall")[i] < 0.5 && std::abs(particles.positionsMm[i].z() - 15.0) < 0.4 &&
+                particles.positionsMm[i].x() > particles.positionsMm[shot].x())
+                shot = i;
+        particles.fields["velocity_x_m_s"][shot] = 30.0;
+        input.data["particles"] = particles;
+        control.frameEverySteps = 1;
+        control.keepFramesInMemory = true;
+        sim::sph::SphSolver shooter;
+        const SolverRun broken = sim::runSolver(shooter, input, parameters, control);
+        qInfo("%s", broken.status.stopText().c_str());
+        QCOMPARE(broken.status.stoppedBy, RunStatus::StoppedBy::Guard);
+        QVERIFY(broken.status.stopMessage.find("into the wall") != std::string::npos);
+        QVERIFY(broken.status.stopMessage.find("particle " + std::to_string(shot)) != std::string::npos);
+        QVERIFY(!broken.frames.empty());
     }
 };
 

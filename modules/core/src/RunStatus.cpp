@@ -2,6 +2,7 @@
 
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace vsim {
@@ -14,7 +15,9 @@ std::string shortNumber(double value, const char* format = "%.1e")
     return text;
 }
 
-std::string fixed(double value) { return shortNumber(value, "%.1f"); }
+/// One decimal ("12.5", "60000.0"), small values by their significant digits ("0.002", "1.78e-05": a blood-flow
+/// run's milliseconds).
+std::string fixed(double value) { return shortNumber(value, value == 0.0 || std::abs(value) >= 0.1 ? "%.1f" : "%.3g"); }
 
 } // namespace
 

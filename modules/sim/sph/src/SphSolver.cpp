@@ -62,6 +62,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     if (!given.fields.count("wall"))
         throw Error("the SPH input's particles need the field 'wall' (1 at wall particles, 0 in the fluid)");
     const double spacing = parameters.get("spacing_mm") * 1e-3;
+    m_spacingM = spacing;
     m_kernel = std::make_unique<QuarticKernel>(parameters.get("smoothing_ratio") * spacing);
     const Eigen::Vector3d period =
         1e-3 * Eigen::Vector3d(parameters.get("periodic_x_mm"), parameters.get("periodic_y_mm"), parameters.get("periodic_z_mm"));
@@ -172,6 +173,16 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
             (p.position[i].array() > m_boxHigh.array()).any())
             return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[i]) +
                            " left the domain (through a wall or an open end without an outlet)");
+        // Through the wall: a fluid particle deeper than a quarter spacing below the surface the wall particles of
+        // known depth describe (SphRates' d_i < 0 there).
+        if (!p.wall[i] && m_rates.wallDistance[i] < -0.25 * m_spacingM)
+        {
+            const Eigen::Vector3d x = p.position[i] * 1e3;
+            return putBack("at t = " + numberText(m_timeS + dt) + " s fluid particle " + std::to_string(p.id[i]) +
+                           " went " + numberText(-1e3 * m_rates.wallDistance[i]) + " mm into the wall at (" +
+                           numberText(x.x()) + ", " + numberText(x.y()) + ", " + numberText(x.z()) +
+                           ") mm: the time step or the sound speed is too large for the flow, or the wall too thin");
+        }
     }
     if (worstDensity > m_densityGuard)
         return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[worst]) +

@@ -7,7 +7,8 @@
 // (kick-drift-kick: one rate evaluation per step) with the adaptive time step of SphRates.h. Guards: a value
 // that is not finite, a density more than `density_guard` from the rest density (the weak compressibility
 // broken: a sound speed too low for the flow, or particles piling up), a particle leaving the domain's box
-// grown by `escape_margin_mm`.
+// grown by `escape_margin_mm`, a fluid particle a quarter spacing into a wall of known depths. A guard puts the
+// particles back to the step's start.
 
 #include "vsim/sim/common/Solver.h"
 #include "vsim/sim/sph/FluidModel.h"
@@ -57,7 +58,7 @@ private:
     std::unique_ptr<NeighbourGrid> m_grid;
     ParticleState m_particles;
     SphRates m_rates;
-    double m_timeS = 0.0, m_endTimeS = 0.0, m_stepS = 0.0, m_cfl = 0.2, m_densityGuard = 0.03;
+    double m_timeS = 0.0, m_endTimeS = 0.0, m_stepS = 0.0, m_cfl = 0.2, m_densityGuard = 0.03, m_spacingM = 0.0;
     Eigen::Vector3d m_boxLow = Eigen::Vector3d::Zero(),
                     m_boxHigh = Eigen::Vector3d::Zero(); ///< m, with the margin
     long m_steps = 0;
