@@ -67,7 +67,8 @@ void LinePlot::dataRange(double& x0, double& x1, double& y0, double& y1) const
     if (y1 - y0 <= 0.0)
         y0 -= 0.5, y1 += 0.5;
     const double margin = 0.05 * (y1 - y0);
-    y0 -= margin, y1 += margin;
+    y0 = y0 >= 0.0 ? std::max(0.0, y0 - margin) : y0 - margin; // data that cannot be negative keeps 0 as its floor
+    y1 += margin;
 }
 
 double LinePlot::widgetXOf(double x) const

@@ -267,6 +267,7 @@ private:
     QDockWidget* m_runDock = nullptr;
     std::shared_ptr<const SolverRun> m_playedRun; // the Run artifact the player plays, all its kept frames
     std::string m_playedRunId;
+    std::pair<double, double> m_playedRange{0.0, 1.0}; // the played field's range over the run
     SceneCache m_scene;
     std::string m_drawnScene; // what refreshScene() drew last (roles, completeness), not drawn twice
     std::set<std::string> m_hiddenArtifacts;

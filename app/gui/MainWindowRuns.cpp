@@ -83,6 +83,27 @@ double median(std::vector<double> values)
 constexpr viz::SliceOrientation kSliceOrientations[] = {viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal,
                                                         viz::SliceOrientation::Sagittal};
 
+/// The frame as the views show it: a particle frame's blood alone (its wall particles, field "wall" 1, are the
+/// vessel's boundary, not the flow); other frames as they are.
+SimulationData shownPart(const SimulationData& data)
+{
+    const auto* particles = std::get_if<ParticleSet>(&data);
+    if (!particles || !particles->fields.count("wall"))
+        return data;
+    const std::vector<double>& wall = particles->fields.at("wall");
+    ParticleSet fluid;
+    for (const auto& entry : particles->fields)
+        fluid.fields[entry.first];
+    for (std::size_t i = 0; i < particles->size(); ++i)
+        if (wall[i] < 0.5)
+        {
+            fluid.positionsMm.push_back(particles->positionsMm[i]);
+            for (const auto& [name, values] : particles->fields)
+                fluid.fields[name].push_back(values[i]);
+        }
+    return fluid;
+}
+
 void widen(std::pair<double, double>& range, const std::vector<double>& values)
 {
     for (double v : values)
@@ -146,13 +167,16 @@ bool MainWindow::openRunPlayer(const std::string& id)
 
 void MainWindow::plotRunHistory()
 {
+    // The played field over the run: its peak and median per frame (the plot) and its range (the fixed legend).
     if (!m_playedRun || !m_runPlot)
         return;
     const std::string field = m_runPlayer->field().toStdString();
     LinePlot::Curve peak{tr("peak"), QColor(200, 40, 30), {}, {}}, middle{tr("median"), QColor(40, 90, 200), {}, {}};
+    m_playedRange = {std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest()};
     for (const RunFrame& frame : m_playedRun->frames)
     {
-        const std::vector<double> values = valuesOf(frame.data, field);
+        const std::vector<double> values = valuesOf(shownPart(frame.data), field);
+        widen(m_playedRange, values);
         peak.x.push_back(frame.position), middle.x.push_back(frame.position);
         peak.y.push_back(values.empty() ? std::numeric_limits<double>::quiet_NaN()
                                         : *std::max_element(values.begin(), values.end()));
@@ -160,7 +184,7 @@ void MainWindow::plotRunHistory()
     }
     const SimulationData& first = m_playedRun->frames.front().data;
     const QString over = std::holds_alternative<VesselNetwork>(first) ? tr("segments")
-                         : std::holds_alternative<ParticleSet>(first) ? tr("particles")
+                         : std::holds_alternative<ParticleSet>(first) ? tr("blood particles")
                          : std::holds_alternative<GridFields>(first)  ? tr("voxels")
                                                                       : tr("cells");
     m_runPlot->setAxes(m_runPlayer->axisTitle(), tr("%1 over the %2 of each frame").arg(m_runPlayer->field(), over));
@@ -171,15 +195,16 @@ void MainWindow::drawRunFrame()
 {
     if (!m_playedRun || m_playedRun->frames.empty() || !m_runPlayer)
         return;
-    const RunFrame& frame = m_playedRun->frames[std::size_t(m_runPlayer->frame())];
+    const RunFrame& played = m_playedRun->frames[std::size_t(m_runPlayer->frame())];
     const std::string field = m_runPlayer->field().toStdString();
+    const RunFrame frame{played.number, played.step, played.position, shownPart(played.data)};
     // The legend's range: over the whole run (so that colours compare between frames) or this frame's.
-    std::pair<double, double> range{std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest()};
+    std::pair<double, double> range = m_playedRange; // the run's, found with its history
     if (m_runPlayer->rangePerFrame())
+    {
+        range = {std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest()};
         widen(range, valuesOf(frame.data, field));
-    else
-        for (const RunFrame& each : m_playedRun->frames)
-            widen(range, valuesOf(each.data, field));
+    }
     if (!(range.second >= range.first))
         range = {0.0, 1.0};
     if (range.second - range.first < 1e-12)
