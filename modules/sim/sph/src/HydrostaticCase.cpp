@@ -55,22 +55,13 @@ ValidationResult hydrostaticCase(const Progress& progress)
         "gravity: the pressure in the middle of the column, 2h below the surface and deeper, against the "
         "hydrostatic "
         "pressure of the model's fluid";
-    SimulationInput input;
-    input.data["particles"] = tank();
-    ParameterSet parameters(sphParameters());
     const double depthM = kDeep * kSpacingMm * 1e-3;
-    parameters.set("spacing_mm", kSpacingMm);
-    parameters.set("density_kg_m3", kDensity);
-    parameters.set("viscosity_pa_s", 0.5); // damps the settling sloshes within the run (no effect at rest)
-    parameters.set("sound_speed_m_s", 10.0 * std::sqrt(kGravity * depthM));
+    // The viscosity damps the settling sloshes within the run (it does nothing at rest).
+    ParameterSet parameters = caseParameters(kSpacingMm, kDensity, 0.5, 10.0 * std::sqrt(kGravity * depthM));
     parameters.set("gravity_z_m_s2", -kGravity);
     parameters.set("end_time_s", 0.3);
     SphSolver solver;
-    RunControl control;
-    control.keepFramesInMemory = false;
-    const SolverRun run = runSolver(solver, input, parameters, control, progress);
-    if (!run.status.complete())
-        throw Error("sph-hydrostatic: the run stopped: " + run.status.stopText());
+    const SolverRun run = runCase(result.name, solver, tank(), parameters, progress);
 
     const ParticleState& particles = solver.particles();
     const std::vector<double> pressure = solver.pressure();

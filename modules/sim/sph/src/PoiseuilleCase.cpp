@@ -48,23 +48,13 @@ ValidationResult poiseuilleCase(const Progress& progress)
     result.description = "plane Poiseuille flow, 20 particles across a 2 mm channel (periodic along and across the "
                          "flow, peak 0.1 m/s, Re 2), after 7 decay times: every fluid particle's velocity against the "
                          "steady profile";
-    SimulationInput input;
-    input.data["particles"] = channel();
-    ParameterSet parameters(sphParameters());
-    parameters.set("spacing_mm", kSpacingMm);
-    parameters.set("density_kg_m3", kDensity);
-    parameters.set("viscosity_pa_s", kViscosity);
-    parameters.set("sound_speed_m_s", 10.0 * kPeakSpeed);
+    ParameterSet parameters = caseParameters(kSpacingMm, kDensity, kViscosity, 10.0 * kPeakSpeed);
     parameters.set("body_force_x_m_s2", force);
     parameters.set("periodic_x_mm", kPeriod * kSpacingMm);
     parameters.set("periodic_z_mm", kPeriod * kSpacingMm);
     parameters.set("end_time_s", 7.0 * decay);
     SphSolver solver;
-    RunControl control;
-    control.keepFramesInMemory = false;
-    const SolverRun run = runSolver(solver, input, parameters, control, progress);
-    if (!run.status.complete())
-        throw Error("sph-poiseuille: the run stopped: " + run.status.stopText());
+    const SolverRun run = runCase(result.name, solver, channel(), parameters, progress);
 
     const ParticleState& particles = solver.particles();
     double squares = 0.0, worst = 0.0, peak = 0.0, across = 0.0;

@@ -96,13 +96,7 @@ WomersleyErrors runWomersley(double alpha, int cycles, const Progress& progress)
     const double radius = kRadius * kSpacingMm * 1e-3, nu = kViscosity / kDensity;
     const double omega = alpha * alpha * nu / (radius * radius), period = 2.0 * std::numbers::pi / omega;
     const double force = kPeakSpeed / std::abs(womersleyAmplitude(0.0, radius, omega, alpha)); // m/s^2
-    SimulationInput input;
-    input.data["particles"] = pipe();
-    ParameterSet parameters(sphParameters());
-    parameters.set("spacing_mm", kSpacingMm);
-    parameters.set("density_kg_m3", kDensity);
-    parameters.set("viscosity_pa_s", kViscosity);
-    parameters.set("sound_speed_m_s", 10.0 * kPeakSpeed);
+    ParameterSet parameters = caseParameters(kSpacingMm, kDensity, kViscosity, 10.0 * kPeakSpeed);
     parameters.set("periodic_x_mm", kLength * kSpacingMm);
     parameters.set("end_time_s", cycles * period);
     parameters.set("body_force_x_m_s2", force);
@@ -111,7 +105,6 @@ WomersleyErrors runWomersley(double alpha, int cycles, const Progress& progress)
     std::vector<double> times, measured, exact;
     RunControl control;
     control.frameEverySteps = 1;
-    control.keepFramesInMemory = false;
     control.frameSink = [&](const RunFrame& frame) {
         if (frame.position < (cycles - 1) * period)
             return;
@@ -131,9 +124,7 @@ WomersleyErrors runWomersley(double alpha, int cycles, const Progress& progress)
         times.push_back(frame.position), measured.push_back(sum / count), exact.push_back(exactSum / count);
     };
     SphSolver solver;
-    const SolverRun run = runSolver(solver, input, parameters, control, progress);
-    if (!run.status.complete())
-        throw Error("sph-womersley: the run at alpha " + numberText(alpha) + " stopped: " + run.status.stopText());
+    const SolverRun run = runCase("sph-womersley at alpha " + numberText(alpha), solver, pipe(), parameters, progress, control);
     const Harmonic sph = fit(times, measured, omega), truth = fit(times, exact, omega);
     double phase = (sph.phase - truth.phase) / (2.0 * std::numbers::pi);
     phase -= std::round(phase);
