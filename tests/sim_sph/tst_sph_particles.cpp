@@ -3,6 +3,7 @@
 // the validation cases sph-kernel and sph-fpm with their stated tolerances.
 
 #include "vsim/core/Error.h"
+#include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
 #include "vsim/sim/sph/QuarticKernel.h"
 #include "vsim/sim/sph/SphValidation.h"
@@ -93,6 +94,22 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, grid.build({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(NAN, 0, 0)}));
         QVERIFY_THROWS_EXCEPTION(Error,
                                  grid.build({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1e3, 1e3, 1e3)}));
+    }
+
+    /// The two-phase mixture of thesis Table 5.1 (blood plasma and air at void fraction s) and Tait about its rest
+    /// density: rho0(0.2) = 0.8 x 1060 + 0.2 x 1.205 = 848.241 kg/m^3, mu(0.2) = 0.8 x 3.56e-3 + 0.2 x 1.86e-5 Pa s.
+    void mixtureProperties()
+    {
+        FluidModel fluid;
+        fluid.viscosity = 3.56e-3;
+        QVERIFY(std::abs(fluid.mixtureDensity(0.2) - 848.241) < 1e-9);
+        QVERIFY(std::abs(fluid.mixtureViscosity(0.2) - 2.85172e-3) < 1e-12);
+        QCOMPARE(fluid.mixtureDensity(0.0), 1060.0);
+        QCOMPARE(fluid.pressure(fluid.mixtureDensity(0.2), 0.2), 0.0);
+        for (double s : {0.0, 0.1, 0.16, 0.2})
+            QVERIFY(std::abs(fluid.pressure(fluid.densityAt(5332.0, s), s) - 5332.0) < 1e-8); // 40 mmHg
+        // The same density is a higher pressure in the lighter mixture.
+        QVERIFY(fluid.pressure(900.0, 0.2) > 0.0 && fluid.pressure(900.0, 0.0) < 0.0);
     }
 
     /// Periodic along x (a channel's flow direction): neighbours across the seam found as nearest images.

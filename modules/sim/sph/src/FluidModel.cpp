@@ -5,14 +5,14 @@
 
 namespace vsim::sim::sph {
 
-double FluidModel::pressure(double density) const
+double FluidModel::pressure(double density, double voidFraction) const
 {
-    return stiffness() * (std::pow(density / restDensity, gamma) - 1.0);
+    return stiffness(voidFraction) * (std::pow(density / mixtureDensity(voidFraction), gamma) - 1.0);
 }
 
-double FluidModel::densityAt(double pressurePa) const
+double FluidModel::densityAt(double pressurePa, double voidFraction) const
 {
-    return restDensity * std::pow(1.0 + pressurePa / stiffness(), 1.0 / gamma);
+    return mixtureDensity(voidFraction) * std::pow(1.0 + pressurePa / stiffness(voidFraction), 1.0 / gamma);
 }
 
 Eigen::Vector3d FluidModel::externalAcceleration(double timeS) const

@@ -11,7 +11,7 @@ std::vector<double> pressures(const ParticleState& particles, const FluidModel& 
 {
     std::vector<double> p(particles.size());
     for (std::size_t i = 0; i < p.size(); ++i)
-        p[i] = fluid.pressure(particles.density[i]);
+        p[i] = fluid.pressure(particles.density[i], particles.voidFraction[i]);
     return p;
 }
 
@@ -21,6 +21,13 @@ namespace {
 // h = 2 spacings the wall's four layers lie up to 3.5 spacings deep, and a cap of 1.5 left the no-slip plane
 // 0.3 spacings too deep (sph-poiseuille's peak 6 % high): 10 lets every layer take its part.
 constexpr double kMorrisBetaMax = 10.0;
+
+/// rho / rho0(s): what the delta-SPH term diffuses, so that neighbours of different void fractions at the same
+/// pressure exchange nothing (for pure blood, rho / rho0).
+double relativeDensity(const ParticleState& particles, const FluidModel& fluid, std::size_t i)
+{
+    return particles.density[i] / fluid.mixtureDensity(particles.voidFraction[i]);
+}
 // eta^2 / h^2 in the viscous term's 1 / (r^2 + eta^2): it only keeps r -> 0 finite. The usual 0.01 lowers the
 // Laplacian's normalisation on a lattice at h = 2 spacings to 0.9917 (the viscosity 0.8 % low); 0.001 gives 1.0002.
 constexpr double kEtaSquared = 0.001;
@@ -29,7 +36,7 @@ constexpr double kEtaSquared = 0.001;
 /// when it is on) and the distance to the nearest wall surface, min over wall neighbours of |x_ij| - depth_j
 /// (infinite when none has a known depth). See SphRates.h.
 void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
-                        bool densityGradients, SphRates& rates)
+                        const FluidModel& fluid, bool densityGradients, SphRates& rates)
 {
     const int n = int(particles.size());
     rates.densityGradient.assign(std::size_t(n), Eigen::Vector3d::Zero());
@@ -56,7 +63,7 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
             const Eigen::Vector3d gradW = kernel.gradient(rij, r);
             const double volume = particles.mass[sj] / particles.density[sj];
             moment.noalias() -= volume * rij * gradW.transpose(); // (x_j - x_i) (x) grad_i W_ij
-            sum += volume * (particles.density[sj] - particles.density[si]) * gradW;
+            sum += volume * (relativeDensity(particles, fluid, sj) - relativeDensity(particles, fluid, si)) * gradW;
         });
         rates.wallDistance[si] = wallDistance;
         const Eigen::Matrix3d transposed = moment.transpose();
@@ -74,23 +81,25 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
     const int n = int(particles.size());
     const bool wallDepths = std::any_of(particles.wallDepth.begin(), particles.wallDepth.end(), [](double d) { return d >= 0.0; });
     if (fluid.densityDiffusion > 0.0 || wallDepths)
-        fluidNeighbourhood(particles, grid, kernel, fluid.densityDiffusion > 0.0, rates);
+        fluidNeighbourhood(particles, grid, kernel, fluid, fluid.densityDiffusion > 0.0, rates);
     else
         rates.densityGradient.assign(std::size_t(n), Eigen::Vector3d::Zero()), rates.wallDistance.assign(std::size_t(n), INFINITY);
     rates.acceleration.assign(std::size_t(n), Eigen::Vector3d::Zero());
     rates.densityRate.assign(std::size_t(n), 0.0);
     const double h = kernel.smoothingLength(), eta2 = kEtaSquared * h * h;
     const double diffusion = fluid.densityDiffusion * h * fluid.soundSpeed;
-    const double mu = fluid.viscosity;
-    double largestAcceleration = 0.0, largestViscousRate = 0.0;
+    double largestAcceleration = 0.0, largestViscousRate = 0.0, largestKinematicViscosity = 0.0;
     const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
-#pragma omp parallel for schedule(dynamic, 256) reduction(max : largestAcceleration, largestViscousRate)
+#pragma omp parallel for schedule(dynamic, 256) reduction(max : largestAcceleration, largestViscousRate, largestKinematicViscosity)
     for (int i = 0; i < n; ++i)
     {
         const std::size_t si = std::size_t(i);
         const bool wallI = particles.wall[si] != 0;
         const Eigen::Vector3d& vi = particles.velocity[si];
         const double rhoI = particles.density[si], pI = pressure[si];
+        const double restI = fluid.mixtureDensity(particles.voidFraction[si]), relativeI = rhoI / restI;
+        const double muI = fluid.mixtureViscosity(particles.voidFraction[si]);
+        auto relativeJ = [&](std::size_t sj) { return relativeDensity(particles, fluid, sj); };
         double densityRate = 0.0;
         Eigen::Vector3d force = Eigen::Vector3d::Zero();
         grid.forEachNeighbour(
@@ -104,12 +113,12 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                 const Eigen::Vector3d gradW = kernel.gradient(rij, r);
                 const Eigen::Vector3d vij = vi - particles.velocity[sj];
                 const double mJ = particles.mass[sj], rhoJ = particles.density[sj];
-                densityRate += mJ * vij.dot(gradW);
+                densityRate += rhoI * (mJ / rhoJ) * vij.dot(gradW); // volume form: mixtures of other rest densities
                 if (!wallI && !wallJ && diffusion > 0.0)
                 {
-                    const Eigen::Vector3d psi = 2.0 * (rhoJ - rhoI) / (r * r) * (-rij) -
+                    const Eigen::Vector3d psi = 2.0 * (relativeJ(sj) - relativeI) / (r * r) * (-rij) -
                                                 (rates.densityGradient[si] + rates.densityGradient[sj]);
-                    densityRate += diffusion * (mJ / rhoJ) * psi.dot(gradW);
+                    densityRate += diffusion * restI * (mJ / rhoJ) * psi.dot(gradW);
                 }
                 const double rDotGrad = rij.dot(gradW);
                 if (!wallI)
@@ -121,7 +130,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                     const Eigen::Vector3d viscousVij =
                         depth >= 0.0 ? std::min(kMorrisBetaMax, 1.0 + depth / std::max(rates.wallDistance[si], 1e-3 * h)) * vi
                                      : vij;
-                    force += mJ * 2.0 * mu * rDotGrad / (rhoI * rhoJ * (r * r + eta2)) * viscousVij;
+                    const double muJ = fluid.mixtureViscosity(particles.voidFraction[sj]);
+                    force += mJ * (muI + muJ) * rDotGrad / (rhoI * rhoJ * (r * r + eta2)) * viscousVij;
                 }
                 largestViscousRate =
                     std::max(largestViscousRate, std::abs(h * vij.dot(rij) / (r * r + eta2)));
@@ -130,11 +140,13 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         if (!wallI)
         {
             rates.acceleration[si] = force + external;
+            largestKinematicViscosity = std::max(largestKinematicViscosity, muI / restI);
             largestAcceleration = std::max(largestAcceleration, rates.acceleration[si].norm());
         }
     }
     rates.largestAcceleration = largestAcceleration;
     rates.largestViscousRate = largestViscousRate;
+    rates.largestKinematicViscosity = largestKinematicViscosity;
 }
 
 double stableTimeStep(const SphRates& rates, const QuarticKernel& kernel, const FluidModel& fluid, double cfl)
@@ -144,8 +156,8 @@ double stableTimeStep(const SphRates& rates, const QuarticKernel& kernel, const 
     if (rates.largestAcceleration > 0.0)
         step = std::min(step, std::sqrt(h / rates.largestAcceleration));
     step *= cfl;
-    if (fluid.viscosity > 0.0)
-        step = std::min(step, 0.125 * h * h * fluid.restDensity / fluid.viscosity);
+    if (rates.largestKinematicViscosity > 0.0) // the viscous limit at the particles' largest mu(s) / rho0(s)
+        step = std::min(step, 0.125 * h * h / rates.largestKinematicViscosity);
     return step;
 }
 

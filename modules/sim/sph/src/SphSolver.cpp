@@ -22,6 +22,9 @@ std::vector<ParameterSpec> sphParameters()
          "blood 1060 (thesis Table 5.1)", K::Real},
         {"viscosity_pa_s", "Dynamic viscosity", "Pa s", 3.5e-3, 0.0, 100.0, "Fluid",
          "blood at high shear about 3.5e-3 (thesis: 3.56e-3)", K::Real},
+        {"void_fraction", "Void fraction", "", 0.0, 0.0, 0.99, "Fluid",
+         "the gas share of the mixture particles (thesis Table 5.1: 0.2 at the needle injection) where the input "
+         "gives none: rest density and viscosity mixed with air's (1.205 kg/m^3, 1.86e-5 Pa s)", K::Real},
         {"sound_speed_m_s", "Numerical sound speed", "m/s", 10.0, 0.01, 1e4, "Fluid",
          "at least 10 times the largest flow speed keeps the density within about 1 % (Monaghan 1994)",
          K::Real},
@@ -83,7 +86,9 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_timeS = 0.0, m_steps = 0;
 
     m_particles = ParticleState();
-    const double mass = m_fluid.restDensity * spacing * spacing * spacing;
+    const double volume = spacing * spacing * spacing;
+    const auto givenVoid = given.fields.find("void_fraction");
+    const double defaultVoid = parameters.get("void_fraction");
     const auto pressure = given.fields.find("pressure_pa");
     const auto vx = given.fields.find("velocity_x_m_s"), vy = given.fields.find("velocity_y_m_s"),
                vz = given.fields.find("velocity_z_m_s");
@@ -94,10 +99,14 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     for (std::size_t i = 0; i < given.size(); ++i)
     {
         const Eigen::Vector3d x = m_grid->wrap(given.positionsMm[i] * 1e-3);
-        const double rho =
-            pressure == given.fields.end() ? m_fluid.restDensity : m_fluid.densityAt(pressure->second[i]);
-        m_particles.add(x, rho, mass, given.fields.at("wall")[i] > 0.5,
-                        depth == given.fields.end() ? -1.0 : depth->second[i] * 1e-3);
+        const bool isWall = given.fields.at("wall")[i] > 0.5;
+        // Wall particles imitate the fluid they hold (the dynamic boundary): the parameter's mixture.
+        const double voidFraction =
+            isWall || givenVoid == given.fields.end() ? defaultVoid : std::clamp(givenVoid->second[i], 0.0, 0.99);
+        const double rho = pressure == given.fields.end() ? m_fluid.mixtureDensity(voidFraction)
+                                                          : m_fluid.densityAt(pressure->second[i], voidFraction);
+        m_particles.add(x, rho, m_fluid.mixtureDensity(voidFraction) * volume, isWall,
+                        depth == given.fields.end() ? -1.0 : depth->second[i] * 1e-3, voidFraction);
         if (vx != given.fields.end() && vy != given.fields.end() && vz != given.fields.end())
             m_particles.velocity.back() = {vx->second[i], vy->second[i], vz->second[i]};
         m_boxLow = m_boxLow.cwiseMin(x), m_boxHigh = m_boxHigh.cwiseMax(x);
@@ -163,7 +172,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
         p.density[i] += 0.5 * dt * m_rates.densityRate[i];
         if (!p.wall[i])
             p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
-        const double variation = std::abs(p.density[i] / m_fluid.restDensity - 1.0);
+        const double variation = std::abs(p.density[i] / m_fluid.mixtureDensity(p.voidFraction[i]) - 1.0);
         if (!std::isfinite(variation) || !p.position[i].allFinite() || !p.velocity[i].allFinite())
             return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[i]) +
                            " has a value that is not finite");
@@ -201,7 +210,7 @@ SimulationData SphSolver::snapshot() const
     ParticleSet frame;
     frame.positionsMm.resize(p.size());
     for (const char* name : {"speed_m_s", "velocity_x_m_s", "velocity_y_m_s", "velocity_z_m_s", "pressure_pa",
-                             "density_kg_m3", "wall"})
+                             "density_kg_m3", "void_fraction", "wall"})
         frame.fields[name].resize(p.size());
     for (std::size_t i = 0; i < p.size(); ++i)
     {
@@ -211,7 +220,8 @@ SimulationData SphSolver::snapshot() const
         frame.fields["velocity_x_m_s"][k] = p.velocity[i].x();
         frame.fields["velocity_y_m_s"][k] = p.velocity[i].y();
         frame.fields["velocity_z_m_s"][k] = p.velocity[i].z();
-        frame.fields["pressure_pa"][k] = m_fluid.pressure(p.density[i]);
+        frame.fields["pressure_pa"][k] = m_fluid.pressure(p.density[i], p.voidFraction[i]);
+        frame.fields["void_fraction"][k] = p.voidFraction[i];
         frame.fields["density_kg_m3"][k] = p.density[i];
         frame.fields["wall"][k] = p.wall[i];
     }
@@ -227,7 +237,7 @@ std::map<std::string, double> SphSolver::metrics() const
         {
             ++fluid;
             speed = std::max(speed, p.velocity[i].norm());
-            density = std::max(density, std::abs(p.density[i] / m_fluid.restDensity - 1.0));
+            density = std::max(density, std::abs(p.density[i] / m_fluid.mixtureDensity(p.voidFraction[i]) - 1.0));
             energy += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
         }
     return {{"particles", double(p.size())}, {"fluid_particles", fluid},

@@ -3,7 +3,10 @@
 // The weakly compressible fluid of the SPH solver (issue 18; thesis ch. 5.3): Tait's equation of state
 // p = B ((rho / rho0)^gamma - 1), B = c0^2 rho0 / gamma, gamma = 7, with a numerical sound speed c0 chosen so
 // that the density varies by about 1 % (c0 >= 10 times the largest flow speed: Monaghan 1994); Newtonian
-// viscosity; gravity. SI throughout.
+// viscosity; gravity. Two-phase flow as the thesis models it (ch. 5.3, Table 5.1): mixture particles that carry
+// a void fraction s, with the mixture's rest density rho0(s) = rho_p (1 - s) + rho_g s and viscosity
+// mu(s) = mu_p (1 - s) + mu_g s (blood plasma and air), each particle's equation of state about its own rho0(s).
+// SI throughout.
 
 #include <Eigen/Core>
 
@@ -11,8 +14,10 @@ namespace vsim::sim::sph {
 
 struct FluidModel
 {
-    double restDensity = 1060.0; ///< rho0, kg/m^3 (blood)
-    double viscosity = 3.5e-3;   ///< mu, Pa s (blood at high shear)
+    double restDensity = 1060.0; ///< rho0 of the liquid (s = 0), kg/m^3 (blood)
+    double viscosity = 3.5e-3;   ///< mu of the liquid, Pa s (blood at high shear)
+    double gasDensity = 1.205;   ///< rho_g, kg/m^3 (air; thesis Table 5.1)
+    double gasViscosity = 1.86e-5; ///< mu_g, Pa s (air; thesis Table 5.1)
     double soundSpeed = 10.0;    ///< c0, m/s (numerical)
     double gamma = 7.0;
     double densityDiffusion = 0.1; ///< delta of the delta-SPH term (Molteni & Colagrossi 2009; 0: off)
@@ -24,10 +29,14 @@ struct FluidModel
 
     /// Gravity and the body force at time t (s), m/s^2.
     Eigen::Vector3d externalAcceleration(double timeS) const;
-    double stiffness() const { return soundSpeed * soundSpeed * restDensity / gamma; }
-    double pressure(double density) const;
+    /// The mixture's rest density and viscosity at void fraction s (0 <= s <= 1).
+    double mixtureDensity(double voidFraction) const { return restDensity * (1.0 - voidFraction) + gasDensity * voidFraction; }
+    double mixtureViscosity(double voidFraction) const { return viscosity * (1.0 - voidFraction) + gasViscosity * voidFraction; }
+    /// B = c0^2 rho0(s) / gamma.
+    double stiffness(double voidFraction = 0.0) const { return soundSpeed * soundSpeed * mixtureDensity(voidFraction) / gamma; }
+    double pressure(double density, double voidFraction = 0.0) const;
     /// The density whose pressure is `pressurePa` (the inverse of pressure()).
-    double densityAt(double pressurePa) const;
+    double densityAt(double pressurePa, double voidFraction = 0.0) const;
 };
 
 } // namespace vsim::sim::sph

@@ -18,6 +18,7 @@ struct ParticleState
 {
     std::vector<Eigen::Vector3d> position, velocity;
     std::vector<double> density, mass;
+    std::vector<double> voidFraction; ///< s of the mixture particle (FluidModel.h); walls: the fluid's default
     std::vector<std::uint8_t> wall;
     /// Wall particles: how deep below the wall's surface they sit (m; the first layer half a spacing), for the
     /// no-slip velocity (SphRates.h); < 0 when unknown (the plain dynamic boundary then). Fluid particles: unused.
@@ -26,7 +27,8 @@ struct ParticleState
 
     std::size_t size() const { return position.size(); }
     /// Appends a particle at rest.
-    void add(const Eigen::Vector3d& positionM, double densityKgM3, double massKg, bool isWall, double wallDepthM = -1.0);
+    void add(const Eigen::Vector3d& positionM, double densityKgM3, double massKg, bool isWall, double wallDepthM = -1.0,
+             double voidFraction = 0.0);
     /// Puts every array in the grid's sorted order (the grid built on `position`).
     void reorder(const NeighbourGrid& grid);
 };

@@ -3,10 +3,12 @@
 // The rates of the weakly compressible SPH equations (issue 18; thesis ch. 5.3) at every particle, each
 // summed over its own neighbours (a gather: every particle writes only its own sums, the layout the GPU
 // backend shares):
-//  continuity (thesis 5.26):  drho_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij + D_i, with the delta-SPH
+//  continuity (thesis 5.26, in the volume form that mixes particles of other rest densities consistently):
+//      drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij + D_i, with the delta-SPH
 //  density
 //      diffusion D_i = delta h c0 sum_j V_j psi_ij . grad_i W_ij over fluid neighbours j,
-//      psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / |x_ij|^2 - (G_i + G_j) (Antuono et al. 2010), G the
+//      psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / |x_ij|^2 - (G_i + G_j) (Antuono et al. 2010; mixture particles
+//      diffuse rho / rho0(s) instead, times rho0(s_i): void fractions at one pressure exchange nothing), G the
 //      renormalised density gradient G_i = (M_i^T)^-1 sum_j V_j (rho_j - rho_i) grad_i W_ij, M_i = sum_j V_j
 //      (x_j - x_i) (x) grad_i W_ij over the fluid: psi vanishes for a linear density (a fluid at rest under
 //      gravity is not diffused, also at its free surface, where Molteni & Colagrossi's 2009 term without G
@@ -41,6 +43,7 @@ struct SphRates
     std::vector<double> wallDistance;
     double largestAcceleration = 0.0; ///< m/s^2, over the fluid
     double largestViscousRate = 0.0;  ///< max_ij |h v_ij . x_ij / (r^2 + 0.001 h^2)|, m/s (Monaghan's CFL)
+    double largestKinematicViscosity = 0.0; ///< max over the fluid of mu(s) / rho0(s), m^2/s
 };
 
 /// The pressure of every particle from its density (Tait).
@@ -51,7 +54,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                   const QuarticKernel& kernel, const FluidModel& fluid, double timeS, SphRates& rates);
 
 /// The explicit step's limit: CFL x min(min_i sqrt(h / |a_i|), h / (c0 + largestViscousRate)), and the
-/// viscous limit 0.125 h^2 rho0 / mu (Morris et al. 1997); s.
+/// viscous limit 0.125 h^2 / nu at the fluid's largest kinematic viscosity (Morris et al. 1997); s.
 double stableTimeStep(const SphRates& rates, const QuarticKernel& kernel, const FluidModel& fluid,
                       double cfl);
 
