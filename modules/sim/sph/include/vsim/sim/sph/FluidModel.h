@@ -20,7 +20,7 @@ struct FluidModel
     double gasViscosity = 1.86e-5; ///< mu_g, Pa s (air; thesis Table 5.1)
     double soundSpeed = 10.0;    ///< c0, m/s (numerical)
     double gamma = 7.0;
-    double densityDiffusion = 0.1; ///< delta of the delta-SPH term (Molteni & Colagrossi 2009; 0: off)
+    double densityDiffusion = 0.1; ///< delta of the delta-SPH term (Antuono et al. 2010's form, SphRates.h; 0: off)
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero(); ///< m/s^2
     /// A driving body force per unit mass (m/s^2: a pressure gradient / rho in a periodic pipe), oscillating as
     /// cos(2 pi f t) when bodyForceFrequency > 0 (Hz).

@@ -4,9 +4,8 @@
 // summed over its own neighbours (a gather: every particle writes only its own sums, the layout the GPU
 // backend shares):
 //  continuity (thesis 5.26, in the volume form that mixes particles of other rest densities consistently):
-//      drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij + D_i, with the delta-SPH
-//  density
-//      diffusion D_i = delta h c0 sum_j V_j psi_ij . grad_i W_ij over fluid neighbours j,
+//      drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij + D_i, with the delta-SPH density diffusion
+//      D_i = delta h c0 sum_j V_j psi_ij . grad_i W_ij over fluid neighbours j,
 //      psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / |x_ij|^2 - (G_i + G_j) (Antuono et al. 2010; mixture particles
 //      diffuse rho / rho0(s) instead, times rho0(s_i): void fractions at one pressure exchange nothing), G the
 //      renormalised density gradient G_i = (M_i^T)^-1 sum_j V_j (rho_j - rho_i) grad_i W_ij, M_i = sum_j V_j
