@@ -1,7 +1,8 @@
 // Particles for the blood-flow solver from a segmented lumen (issue 18, ParticleSeeding.h): a closed tube label
 // (radius 5 mm, voxels of 0.5 mm), three lattice spacings up to the voxel and tube positions. The fluid's volume against the
 // label's, every side-wall particle's depth against its exact depth below the tube's surface (r - R), the layers'
-// extent; then the SPH solver takes the particles and the fluid at rest stays at rest.
+// extent; then the SPH solver takes the particles and the fluid at rest stays at rest. Open ends: buffers behind the
+// planes, walled around, no caps, and an inflow run whose mass ledger balances.
 
 #include "vsim/core/Error.h"
 #include "vsim/mesh/ParticleSeeding.h"
@@ -10,7 +11,9 @@
 
 #include <QtTest>
 
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 using namespace vsim;
@@ -137,6 +140,71 @@ private slots:
         QVERIFY(broken.status.stopMessage.find("into the wall") != std::string::npos);
         QVERIFY(broken.status.stopMessage.find("particle " + std::to_string(shot)) != std::string::npos);
         QVERIFY(!broken.frames.empty());
+    }
+
+    /// The tube with open ends at z = 5 (an inlet, normal +z) and z = 25 mm (an outlet): behind each plane a buffer
+    /// of the tube's section, a depth deep and walled around, no cap; then a short inflow run balances its ledger.
+    void openEnds()
+    {
+        const double spacing = 1.0, depth = 4.0 * spacing;
+        mesh::ParticleSeeding seeding{spacing, 4, 1, {}};
+        seeding.openEnds.push_back({Eigen::Vector3d(12.0, 12.0, 5.0), Eigen::Vector3d::UnitZ(), kRadiusMm + 0.5, depth});
+        seeding.openEnds.push_back({Eigen::Vector3d(12.0, 12.0, 25.0), -Eigen::Vector3d::UnitZ(), kRadiusMm + 0.5, depth});
+        const ParticleSet particles = mesh::seedVesselParticles(tube(12.0, 12.0), seeding);
+        const auto& wall = particles.fields.at("wall");
+        const auto& buffer = particles.fields.at("open_boundary");
+        std::array<int, 3> buffered{0, 0, 0};
+        int capWalls = 0, bufferWalls = 0;
+        for (std::size_t i = 0; i < particles.size(); ++i)
+        {
+            const Eigen::Vector3d& p = particles.positionsMm[i];
+            const double r = std::hypot(p.x() - 12.0, p.y() - 12.0);
+            if (wall[i] > 0.5)
+            {
+                capWalls += r < kRadiusMm - spacing;
+                bufferWalls += (p.z() < 5.0 || p.z() > 25.0) && r > kRadiusMm;
+                continue;
+            }
+            const int end = int(buffer[i]);
+            ++buffered[std::size_t(end)];
+            if (end == 1)
+                QVERIFY(p.z() < 5.0 && p.z() >= 5.0 - depth);
+            else if (end == 2)
+                QVERIFY(p.z() > 25.0 && p.z() <= 25.0 + depth);
+            else
+                QVERIFY(p.z() >= 5.0 && p.z() <= 25.0);
+        }
+        const double expected = std::numbers::pi * kRadiusMm * kRadiusMm * depth / std::pow(spacing, 3);
+        qInfo("open ends: %d and %d buffer particles (the section x depth: %.0f), %d walls around the buffers, %d in "
+              "the caps", buffered[1], buffered[2], expected, bufferWalls, capWalls);
+        QVERIFY(std::abs(buffered[1] / expected - 1.0) < 0.1 && std::abs(buffered[2] / expected - 1.0) < 0.1);
+        QCOMPARE(capWalls, 0);
+        QVERIFY(bufferWalls > 0);
+
+        SimulationInput input;
+        input.data["particles"] = particles;
+        ParameterSet parameters(sim::sph::sphParameters());
+        parameters.set("spacing_mm", spacing);
+        parameters.set("sound_speed_m_s", 10.0);
+        parameters.set("end_time_s", 0.016); // the buffer's first layer 0.75 mm behind the plane crosses it
+        sim::sph::OpenBoundary inlet, outlet;
+        inlet.name = "inlet", inlet.centreM = Eigen::Vector3d(12e-3, 12e-3, 5e-3), inlet.normal = Eigen::Vector3d::UnitZ();
+        inlet.radiusM = 5.5e-3, inlet.prescribed = sim::sph::OpenBoundary::Prescribed::Velocity;
+        inlet.flowRateM3S = 0.05 * std::numbers::pi * 25e-6; // a mean of 0.05 m/s, from rest over 2 ms
+        inlet.rampS = 0.002;
+        outlet.name = "outlet", outlet.centreM = Eigen::Vector3d(12e-3, 12e-3, 25e-3), outlet.normal = -Eigen::Vector3d::UnitZ();
+        outlet.radiusM = 5.5e-3;
+        sim::sph::SphSolver solver;
+        solver.setOpenBoundaries({inlet, outlet});
+        sim::RunControl control;
+        control.keepFramesInMemory = false;
+        const SolverRun run = sim::runSolver(solver, input, parameters, control);
+        QVERIFY2(run.status.complete(), run.status.stopText().c_str());
+        const double in = run.metrics.at("inflow_kg"), out = run.metrics.at("outflow_kg");
+        qInfo("seeded tube with an inlet: %.0f steps, inflow %.3g kg, outflow %.3g kg, mass change %.3g kg", run.metrics.at("steps"), in,
+              out, run.metrics.at("fluid_mass_change_kg"));
+        QVERIFY(in > 0.0);
+        QVERIFY(std::abs(in - out - run.metrics.at("fluid_mass_change_kg")) < 1e-12 * in);
     }
 };
 

@@ -1,7 +1,8 @@
 // The SPH solver's flow validation cases (issue 18), each run on the run driver with its stated tolerances:
 // sph-hydrostatic (water at rest in a tank: the pressure at depth within 2 %), sph-poiseuille (plane Poiseuille
 // flow 20 particles across: RMS velocity error within 1 % of the peak, density within 1 %) and sph-womersley
-// (pulsatile pipe flow at alpha 4 and 8: the centerline's amplitude and phase within 5 %).
+// (pulsatile pipe flow at alpha 4 and 8: the centerline's amplitude and phase within 5 %), sph-mass (an inlet, an
+// outlet and absorbing walls: inflow - outflow - absorbed = the mass change to rounding).
 
 #include "vsim/sim/sph/SphValidation.h"
 
@@ -17,7 +18,7 @@ private slots:
     void flowCases_data()
     {
         QTest::addColumn<QString>("name");
-        for (const char* name : {"sph-hydrostatic", "sph-poiseuille", "sph-womersley"})
+        for (const char* name : {"sph-hydrostatic", "sph-poiseuille", "sph-womersley", "sph-mass"})
             QTest::newRow(name) << QString(name);
     }
 

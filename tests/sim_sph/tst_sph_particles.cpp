@@ -5,12 +5,14 @@
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
+#include "vsim/sim/sph/OpenBoundary.h"
 #include "vsim/sim/sph/QuarticKernel.h"
 #include "vsim/sim/sph/SphValidation.h"
 
 #include <QtTest>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <random>
 #include <set>
@@ -151,6 +153,74 @@ private slots:
         }
         QCOMPARE(NeighbourGrid(reach, Eigen::Vector3d(4.5e-3, 0.0, 0.0)).wrap(Eigen::Vector3d(-0.5e-3, 7.0, 0.0)).x(), 4.0e-3);
         QVERIFY_THROWS_EXCEPTION(Error, NeighbourGrid(reach, Eigen::Vector3d(2.4e-3, 0.0, 0.0)));
+    }
+
+    /// A waveform: linear between its points, repeating over its last time.
+    void waveform()
+    {
+        const Waveform beat{{{0.0, 1.0}, {0.2, 3.0}, {0.8, 1.0}}};
+        QCOMPARE(beat.factorAt(0.1), 2.0);
+        QCOMPARE(beat.factorAt(0.5), 2.0);
+        QVERIFY(std::abs(beat.factorAt(0.8 + 0.1) - 2.0) < 1e-12);
+        QVERIFY(std::abs(beat.factorAt(-0.7) - 2.0) < 1e-12);
+        QCOMPARE(Waveform().factorAt(3.0), 1.0);
+    }
+
+    /// One column of an inlet's buffer and an outlet's: a buffer particle that crosses into the domain becomes fluid
+    /// and a copy of it refills the buffer a depth behind; a fluid particle through the outlet's disk joins its buffer,
+    /// one beside the disk does not; a fluid particle back through the inlet leaves; the deepest outlet buffer
+    /// particle leaves. The ledger counts each crossing once; the imposed plug flux is the prescribed flow rate.
+    void openBoundaryExchange()
+    {
+        const double dx = 1e-3, depth = 4e-3, rho = 1000.0, m = rho * dx * dx * dx;
+        OpenBoundary inlet, outlet;
+        inlet.name = "inlet", inlet.normal = Eigen::Vector3d::UnitX(), inlet.radiusM = 2e-3;
+        inlet.prescribed = OpenBoundary::Prescribed::Velocity, inlet.flowRateM3S = 1e-6, inlet.parabolic = false;
+        outlet.name = "outlet", outlet.centreM = {0.02, 0.0, 0.0}, outlet.normal = -Eigen::Vector3d::UnitX();
+        outlet.radiusM = 2e-3;
+        ParticleState p;
+        auto add = [&](double x, double y, int boundary)
+        {
+            p.add({x, y, 0.0}, rho, m, false);
+            p.boundary.back() = std::uint8_t(boundary);
+        };
+        add(0.0002, 0.0, 1);   // 0: an inlet buffer particle that crossed the plane
+        add(-0.0015, 0.0, 1);  // 1: stays in the buffer
+        add(0.0203, 0.0, 0);   // 2: fluid through the outlet's disk
+        add(0.0203, 0.005, 0); // 3: fluid past the outlet plane beside its disk
+        add(0.0245, 0.0, 2);   // 4: deeper than the outlet's buffer
+        add(-0.0003, 0.0, 0);  // 5: fluid back through the inlet
+        OpenBoundaries boundaries({inlet, outlet});
+        boundaries.initialize(p, depth, dx);
+        MassLedger ledger;
+        ledger.inflowKg.assign(2, 0.0), ledger.outflowKg.assign(2, 0.0);
+        int nextId = 6;
+        boundaries.exchange(p, nextId, ledger);
+        std::map<int, int> boundaryOf;
+        std::map<int, double> xOf;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            boundaryOf[p.id[i]] = p.boundary[i], xOf[p.id[i]] = p.position[i].x();
+        QCOMPARE(boundaryOf, (std::map<int, int>{{0, 0}, {1, 1}, {2, 2}, {3, 0}, {6, 1}}));
+        QVERIFY(std::abs(xOf[6] - (0.0002 - depth)) < 1e-15);
+        QCOMPARE(double(ledger.inflowKg[0]), m);
+        QCOMPARE(double(ledger.outflowKg[0]), m);
+        QCOMPARE(double(ledger.outflowKg[1]), m);
+        QCOMPARE(nextId, 7);
+
+        // Plug flow: each inlet buffer particle moves at Q / C, C = its buffer's volume / depth, and the flux the
+        // buffer reports is Q; the outlet's buffer particle takes the outlet's pressure (0 Pa: the rest density).
+        NeighbourGrid grid(2.0 * dx);
+        grid.build(p.position);
+        FluidModel fluid;
+        fluid.restDensity = rho;
+        boundaries.impose(p, grid, QuarticKernel(dx), fluid, 1.0);
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (p.boundary[i] == 1)
+                QVERIFY(std::abs(p.velocity[i].x() - 1e-6 / (2.0 * m / rho / depth)) < 1e-12);
+            else if (p.boundary[i] == 2)
+                QCOMPARE(p.density[i], rho);
+        QVERIFY(std::abs(boundaries.flowRate(0) - 1e-6) < 1e-15);
+        QVERIFY_THROWS_EXCEPTION(Error, OpenBoundaries({inlet, outlet, outlet}).initialize(p, depth, dx));
     }
 
     /// The particle machinery's analytic cases (the flow cases run in tst_sph_flow_validation).

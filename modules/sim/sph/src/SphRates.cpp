@@ -45,7 +45,7 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
     for (int i = 0; i < n; ++i)
     {
         const std::size_t si = std::size_t(i);
-        if (particles.wall[si])
+        if (!particles.isFluid(si))
             continue;
         Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
@@ -94,6 +94,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
     for (int i = 0; i < n; ++i)
     {
         const std::size_t si = std::size_t(i);
+        if (particles.boundary[si])
+            continue; // a buffer particle's values are imposed (OpenBoundary.h)
         const bool wallI = particles.wall[si] != 0;
         const Eigen::Vector3d& vi = particles.velocity[si];
         const double rhoI = particles.density[si], pI = pressure[si];
@@ -114,7 +116,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                 const Eigen::Vector3d vij = vi - particles.velocity[sj];
                 const double mJ = particles.mass[sj], rhoJ = particles.density[sj];
                 densityRate += rhoI * (mJ / rhoJ) * vij.dot(gradW); // volume form: mixtures of other rest densities
-                if (!wallI && !wallJ && diffusion > 0.0)
+                if (!wallI && particles.isFluid(sj) && diffusion > 0.0)
                 {
                     const Eigen::Vector3d psi = 2.0 * (relativeJ(sj) - relativeI) / (r * r) * (-rij) -
                                                 (rates.densityGradient[si] + rates.densityGradient[sj]);

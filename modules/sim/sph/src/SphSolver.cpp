@@ -55,6 +55,9 @@ std::vector<ParameterSpec> sphParameters()
          "validation channels: > 0 makes the domain [0, L) wrap around along x (0: open)", K::Real},
         {"periodic_y_mm", "Periodic length y", "mm", 0.0, 0.0, 1e4, "Domain", "as periodic_x_mm, along y", K::Real},
         {"periodic_z_mm", "Periodic length z", "mm", 0.0, 0.0, 1e4, "Domain", "as periodic_x_mm, along z", K::Real},
+        {"absorption_distance_mm", "Absorption distance", "mm", 0.0, 0.0, 100.0, "Walls",
+         "tracer particles (an injected drug) this close to a wall's surface are absorbed and counted (0: none)",
+         K::Real},
     };
 }
 
@@ -93,6 +96,8 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     const auto vx = given.fields.find("velocity_x_m_s"), vy = given.fields.find("velocity_y_m_s"),
                vz = given.fields.find("velocity_z_m_s");
     const auto depth = given.fields.find("wall_depth_mm");
+    const auto buffer = given.fields.find("open_boundary"), tracer = given.fields.find("tracer");
+    m_absorptionDistanceM = parameters.get("absorption_distance_mm") * 1e-3;
     if (given.size() == 0)
         throw Error("the SPH input has no particles");
     m_boxLow = m_boxHigh = m_grid->wrap(given.positionsMm.front() * 1e-3);
@@ -109,6 +114,10 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
                         depth == given.fields.end() ? -1.0 : depth->second[i] * 1e-3, voidFraction);
         if (vx != given.fields.end() && vy != given.fields.end() && vz != given.fields.end())
             m_particles.velocity.back() = {vx->second[i], vy->second[i], vz->second[i]};
+        if (buffer != given.fields.end() && !isWall)
+            m_particles.boundary.back() = std::uint8_t(std::clamp(std::lround(buffer->second[i]), 0L, 255L));
+        if (tracer != given.fields.end())
+            m_particles.tracer.back() = tracer->second[i] > 0.5 ? 1 : 0;
         m_boxLow = m_boxLow.cwiseMin(x), m_boxHigh = m_boxHigh.cwiseMax(x);
     }
     const double margin = parameters.get("escape_margin_mm") * 1e-3;
@@ -116,15 +125,35 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     for (int a = 0; a < 3; ++a) // nothing escapes along a periodic axis
         if (period[a] > 0.0)
             m_boxLow[a] = -INFINITY, m_boxHigh[a] = INFINITY;
+    m_nextId = int(given.size());
+    m_ledger = {};
+    m_ledger.inflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
+    m_ledger.outflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
+    m_openBoundaries.initialize(m_particles, m_kernel->support(), spacing);
+    for (std::size_t i = 0; i < m_particles.size(); ++i) // a buffer holds what its boundary lets in
+        if (m_particles.boundary[i])
+            m_particles.tracer[i] = m_openBoundaries.boundaries()[m_particles.boundary[i] - 1u].tracer ? 1 : 0;
     m_grid->build(m_particles.position);
     m_particles.reorder(*m_grid); // neighbours near in memory
     m_grid->build(m_particles.position);
+    m_initialFluidMass = fluidMass();
     updateRates(0.0);
     m_stepS = stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl);
 }
 
+long double SphSolver::fluidMass() const
+{
+    long double mass = 0.0;
+    for (std::size_t i = 0; i < m_particles.size(); ++i)
+        if (m_particles.isFluid(i))
+            mass += m_particles.mass[i];
+    return mass;
+}
+
 void SphSolver::updateRates(double timeS)
 {
+    if (!m_openBoundaries.empty())
+        m_openBoundaries.impose(m_particles, *m_grid, *m_kernel, m_fluid, timeS);
     computeRates(m_particles, pressures(m_particles, m_fluid), *m_grid, *m_kernel, m_fluid, timeS, m_rates);
 }
 
@@ -133,21 +162,27 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     const double dt = std::min(stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl), m_endTimeS - m_timeS);
     const ParticleState before = m_particles;
     const SphRates ratesBefore = m_rates;
+    const MassLedger ledgerBefore = m_ledger;
+    const int nextIdBefore = m_nextId;
     ParticleState& p = m_particles;
-    const std::size_t n = p.size();
     // Kick and drift with the rates at the start of the step, then the second kick with the rates at the
-    // drifted positions (leapfrog, kick-drift-kick); the wall particles stay where they are.
-    for (std::size_t i = 0; i < n; ++i)
+    // drifted positions (leapfrog, kick-drift-kick); the wall particles stay where they are, the buffer particles
+    // drift with their imposed velocities.
+    for (std::size_t i = 0; i < p.size(); ++i)
     {
         p.density[i] += 0.5 * dt * m_rates.densityRate[i];
         if (p.wall[i])
             continue;
-        p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
+        if (!p.boundary[i])
+            p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
         p.position[i] = m_grid->wrap(p.position[i] + dt * p.velocity[i]);
     }
+    absorbTracer();
+    if (!m_openBoundaries.empty())
+        m_openBoundaries.exchange(p, m_nextId, m_ledger);
     auto putBack = [&](std::string why)
     {
-        m_particles = before, m_rates = ratesBefore;
+        m_particles = before, m_rates = ratesBefore, m_ledger = ledgerBefore, m_nextId = nextIdBefore;
         m_grid->build(m_particles.position);
         return StepOutcome::guard(std::move(why));
     };
@@ -167,16 +202,17 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     updateRates(m_timeS + dt);
     double worstDensity = 0.0;
     std::size_t worst = 0;
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < p.size(); ++i)
     {
+        const bool fluid = p.isFluid(i);
         p.density[i] += 0.5 * dt * m_rates.densityRate[i];
-        if (!p.wall[i])
+        if (fluid)
             p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
         const double variation = std::abs(p.density[i] / m_fluid.mixtureDensity(p.voidFraction[i]) - 1.0);
         if (!std::isfinite(variation) || !p.position[i].allFinite() || !p.velocity[i].allFinite())
             return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[i]) +
                            " has a value that is not finite");
-        if (!p.wall[i] && variation > worstDensity)
+        if (fluid && variation > worstDensity)
             worstDensity = variation, worst = i;
         if ((p.position[i].array() < m_boxLow.array()).any() ||
             (p.position[i].array() > m_boxHigh.array()).any())
@@ -184,7 +220,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
                            " left the domain (through a wall or an open end without an outlet)");
         // Through the wall: a fluid particle deeper than a quarter spacing below the surface the wall particles of
         // known depth describe (SphRates' d_i < 0 there).
-        if (!p.wall[i] && m_rates.wallDistance[i] < -0.25 * m_spacingM)
+        if (fluid && m_rates.wallDistance[i] < -0.25 * m_spacingM)
         {
             const Eigen::Vector3d x = p.position[i] * 1e3;
             return putBack("at t = " + numberText(m_timeS + dt) + " s fluid particle " + std::to_string(p.id[i]) +
@@ -204,26 +240,46 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     return {};
 }
 
+void SphSolver::absorbTracer()
+{
+    if (!(m_absorptionDistanceM > 0.0))
+        return;
+    ParticleState& p = m_particles;
+    std::vector<std::uint8_t> keep(p.size(), 1);
+    bool any = false;
+    for (std::size_t i = 0; i < p.size(); ++i) // the wall distances of the step's start
+        if (p.isFluid(i) && p.tracer[i] && m_rates.wallDistance[i] < m_absorptionDistanceM)
+        {
+            keep[i] = 0, any = true;
+            m_ledger.absorbedKg += p.mass[i];
+        }
+    if (any)
+        p.keepOnly(keep);
+}
+
 SimulationData SphSolver::snapshot() const
 {
     const ParticleState& p = m_particles;
+    std::vector<std::size_t> byId(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+        byId[i] = i;
+    std::sort(byId.begin(), byId.end(), [&p](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; });
     ParticleSet frame;
     frame.positionsMm.resize(p.size());
-    for (const char* name : {"speed_m_s", "velocity_x_m_s", "velocity_y_m_s", "velocity_z_m_s", "pressure_pa",
-                             "density_kg_m3", "void_fraction", "wall"})
-        frame.fields[name].resize(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i)
+    const char* names[] = {"speed_m_s", "velocity_x_m_s", "velocity_y_m_s", "velocity_z_m_s", "pressure_pa",
+                           "density_kg_m3", "void_fraction", "wall", "open_boundary", "tracer"};
+    std::vector<std::vector<double>*> fields;
+    for (const char* name : names)
+        fields.push_back(&(frame.fields[name] = std::vector<double>(p.size())));
+    for (std::size_t k = 0; k < p.size(); ++k)
     {
-        const std::size_t k = std::size_t(p.id[i]); // the order the particles were given in
+        const std::size_t i = byId[k];
         frame.positionsMm[k] = p.position[i] * 1e3;
-        frame.fields["speed_m_s"][k] = p.velocity[i].norm();
-        frame.fields["velocity_x_m_s"][k] = p.velocity[i].x();
-        frame.fields["velocity_y_m_s"][k] = p.velocity[i].y();
-        frame.fields["velocity_z_m_s"][k] = p.velocity[i].z();
-        frame.fields["pressure_pa"][k] = m_fluid.pressure(p.density[i], p.voidFraction[i]);
-        frame.fields["void_fraction"][k] = p.voidFraction[i];
-        frame.fields["density_kg_m3"][k] = p.density[i];
-        frame.fields["wall"][k] = p.wall[i];
+        const double values[] = {p.velocity[i].norm(), p.velocity[i].x(), p.velocity[i].y(), p.velocity[i].z(),
+                                 m_fluid.pressure(p.density[i], p.voidFraction[i]), p.density[i], p.voidFraction[i],
+                                 double(p.wall[i]), double(p.boundary[i]), double(p.tracer[i])};
+        for (std::size_t f = 0; f < fields.size(); ++f)
+            (*fields[f])[k] = values[f];
     }
     return frame;
 }
@@ -233,17 +289,33 @@ std::map<std::string, double> SphSolver::metrics() const
     const ParticleState& p = m_particles;
     double fluid = 0.0, speed = 0.0, density = 0.0, energy = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i)
-        if (!p.wall[i])
+        if (p.isFluid(i))
         {
             ++fluid;
             speed = std::max(speed, p.velocity[i].norm());
             density = std::max(density, std::abs(p.density[i] / m_fluid.mixtureDensity(p.voidFraction[i]) - 1.0));
             energy += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
         }
-    return {{"particles", double(p.size())}, {"fluid_particles", fluid},
-            {"time_step_s", m_stepS},        {"steps", double(m_steps)},
-            {"largest_speed_m_s", speed},    {"largest_density_variation", density},
-            {"kinetic_energy_j", energy}};
+    std::map<std::string, double> metrics{{"particles", double(p.size())}, {"fluid_particles", fluid},
+                                          {"time_step_s", m_stepS},        {"steps", double(m_steps)},
+                                          {"largest_speed_m_s", speed},    {"largest_density_variation", density},
+                                          {"kinetic_energy_j", energy},    {"fluid_mass_kg", double(fluidMass())}};
+    if (m_openBoundaries.empty() && !(m_absorptionDistanceM > 0.0))
+        return metrics;
+    metrics["inflow_kg"] = double(m_ledger.totalInflow());
+    metrics["outflow_kg"] = double(m_ledger.totalOutflow());
+    metrics["absorbed_kg"] = double(m_ledger.absorbedKg);
+    metrics["fluid_mass_change_kg"] = double(fluidMass() - m_initialFluidMass);
+    const std::vector<OpenBoundary>& boundaries = m_openBoundaries.boundaries();
+    for (std::size_t k = 0; k < boundaries.size(); ++k)
+    {
+        std::string key = boundaries[k].name;
+        std::replace(key.begin(), key.end(), ' ', '_');
+        metrics[key + "_flow_rate_ml_s"] = 1e6 * m_openBoundaries.flowRate(k);
+        metrics[key + "_pressure_pa"] = m_openBoundaries.pressure(k);
+        metrics[key + "_net_inflow_kg"] = double(m_ledger.inflowKg[k] - m_ledger.outflowKg[k]);
+    }
+    return metrics;
 }
 
 } // namespace vsim::sim::sph

@@ -10,7 +10,7 @@ namespace vsim::sim::sph {
 
 std::vector<std::string> sphValidationCases()
 {
-    return {"sph-kernel", "sph-fpm", "sph-hydrostatic", "sph-poiseuille", "sph-womersley"};
+    return {"sph-kernel", "sph-fpm", "sph-hydrostatic", "sph-poiseuille", "sph-womersley", "sph-mass"};
 }
 
 ValidationResult runSphValidation(const std::string& name, const Progress& progress)
@@ -27,8 +27,10 @@ ValidationResult runSphValidation(const std::string& name, const Progress& progr
         result = detail::poiseuilleCase(progress);
     else if (name == "sph-womersley")
         result = detail::womersleyCase(progress);
+    else if (name == "sph-mass")
+        result = detail::massCase(progress);
     else
-        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley)");
+        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass)");
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

@@ -48,23 +48,10 @@ Complex womersleyAmplitude(double r, double radius, double omega, double alpha)
 
 ParticleSet pipe()
 {
-    ParticleSet set;
-    auto& wall = set.fields["wall"];
-    auto& depth = set.fields["wall_depth_mm"];
-    const double radius = kRadius * kSpacingMm, outer = (kRadius + kWallLayers) * kSpacingMm;
-    for (int k = 0; k < kLength; ++k)
-        for (int j = -kRadius - kWallLayers; j < kRadius + kWallLayers; ++j)
-            for (int i = -kRadius - kWallLayers; i < kRadius + kWallLayers; ++i)
-            {
-                const Eigen::Vector3d x = kSpacingMm * Eigen::Vector3d(k + 0.5, i + 0.5, j + 0.5); // axis along x
-                const double r = std::hypot(x.y(), x.z());
-                if (r >= outer)
-                    continue;
-                set.positionsMm.push_back(x);
-                wall.push_back(r >= radius ? 1.0 : 0.0);
-                depth.push_back(r >= radius ? r - radius : 0.0);
-            }
-    return set;
+    PipeShape shape;
+    shape.spacingMm = kSpacingMm, shape.lengthMm = kLength * kSpacingMm, shape.wallLayers = kWallLayers;
+    shape.radiusMm = [](double) { return kRadius * kSpacingMm; };
+    return pipeParticles(shape);
 }
 
 struct Harmonic

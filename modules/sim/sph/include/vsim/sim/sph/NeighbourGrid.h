@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace vsim::sim::sph {
@@ -36,7 +37,14 @@ public:
     /// Calls f(j, rij, r) for every particle j != i within the cell size of particle i, with rij = x_i - x_j
     /// (m) and r = |rij|; `positionsM` and the indices are those given to build().
     template <class F>
-    void forEachNeighbour(const std::vector<Eigen::Vector3d>& positionsM, int i, F&& f) const;
+    void forEachNeighbour(const std::vector<Eigen::Vector3d>& positionsM, int i, F&& f) const
+    {
+        forEachNear(positionsM, positionsM[std::size_t(i)], i, std::forward<F>(f));
+    }
+    /// Calls f(j, rij, r) for every particle j != `skip` within the cell size of the point `xM` (m; within the
+    /// grid's reach of the particles), rij = x - x_j: the open boundaries' interpolation at mirror points.
+    template <class F>
+    void forEachNear(const std::vector<Eigen::Vector3d>& positionsM, const Eigen::Vector3d& xM, int skip, F&& f) const;
 
     double reach() const { return m_reach; }
     static constexpr int kCellsPerReach = 2;
@@ -87,9 +95,9 @@ template <class T> void NeighbourGrid::reorder(std::vector<T>& values) const
 }
 
 template <class F>
-void NeighbourGrid::forEachNeighbour(const std::vector<Eigen::Vector3d>& positionsM, int i, F&& f) const
+void NeighbourGrid::forEachNear(const std::vector<Eigen::Vector3d>& positionsM, const Eigen::Vector3d& xi, int i,
+                               F&& f) const
 {
-    const Eigen::Vector3d& xi = positionsM[std::size_t(i)];
     const std::array<int, 3> c = cellOf(xi);
     const double reach2 = m_reach * m_reach;
     constexpr int k = kCellsPerReach;

@@ -2,8 +2,9 @@
 
 // The SPH solver's particles, structure of arrays in SI (m, m/s, kg/m^3, kg) so that the CPU loops and the
 // GPU copies stay contiguous. Wall particles (the dynamic boundary: frozen, their density evolving with the
-// fluid's) carry wall = 1. `id` is each particle's number at the start: frames and tracking follow it through
-// the reordering.
+// fluid's) carry wall = 1; buffer particles of the open boundaries carry their boundary's number. `id` numbers
+// each particle (those given first, then those the inlets create): frames and tracking follow it through the
+// reordering.
 
 #include "vsim/sim/sph/NeighbourGrid.h"
 
@@ -23,14 +24,32 @@ struct ParticleState
     /// Wall particles: how deep below the wall's surface they sit (m; the first layer half a spacing), for the
     /// no-slip velocity (SphRates.h); < 0 when unknown (the plain dynamic boundary then). Fluid particles: unused.
     std::vector<double> wallDepth;
+    /// 0 in the fluid and the walls; k + 1 for a particle in the buffer of open boundary k (OpenBoundary.h).
+    std::vector<std::uint8_t> boundary;
+    /// 1 at particles that carry the tracer (an injected drug: what the walls absorb); 0 otherwise.
+    std::vector<std::uint8_t> tracer;
     std::vector<int> id;
 
     std::size_t size() const { return position.size(); }
+    /// Neither a wall particle nor in a buffer: the particles the solver integrates.
+    bool isFluid(std::size_t i) const { return !wall[i] && !boundary[i]; }
     /// Appends a particle at rest.
     void add(const Eigen::Vector3d& positionM, double densityKgM3, double massKg, bool isWall, double wallDepthM = -1.0,
              double voidFraction = 0.0);
+    /// Appends a copy of particle i at `positionM` numbered `newId`.
+    void appendCopy(std::size_t i, const Eigen::Vector3d& positionM, int newId);
+    /// Keeps the particles whose `keep` entry is nonzero, in their order.
+    void keepOnly(const std::vector<std::uint8_t>& keep);
     /// Puts every array in the grid's sorted order (the grid built on `position`).
     void reorder(const NeighbourGrid& grid);
+
+private:
+    /// Calls f on every per-particle array: the one list the copies, removals and reorders share.
+    template <class F> void forEachArray(F&& f)
+    {
+        f(position), f(velocity), f(density), f(mass), f(voidFraction), f(wall), f(wallDepth), f(boundary), f(tracer),
+            f(id);
+    }
 };
 
 } // namespace vsim::sim::sph

@@ -21,7 +21,8 @@
 //      1997; d_i = min over wall neighbours of |x_ij| - d_j); without depths the wall particles stand still
 //      (the plain dynamic boundary, whose no-slip plane lies about 0.75 spacings too deep: sph-poiseuille's
 //      peak 15 % high). Wall particles (the dynamic boundary of Crespo et al. 2007) get a density rate from
-//      the fluid around them and no acceleration.
+//      the fluid around them and no acceleration. Buffer particles of the open boundaries (OpenBoundary.h) act on the
+//      fluid as fluid does, but outside the density diffusion, and get no rates: their values are imposed.
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
@@ -34,7 +35,7 @@ namespace vsim::sim::sph {
 
 struct SphRates
 {
-    std::vector<Eigen::Vector3d> acceleration; ///< m/s^2 (zero at wall particles)
+    std::vector<Eigen::Vector3d> acceleration; ///< m/s^2 (zero at wall and buffer particles)
     std::vector<double> densityRate;           ///< kg/(m^3 s)
     /// G_i, kg/m^4 (fluid particles; zero where M_i is singular).
     std::vector<Eigen::Vector3d> densityGradient;

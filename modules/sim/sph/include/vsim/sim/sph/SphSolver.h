@@ -3,16 +3,21 @@
 // The weakly compressible SPH solver on the run driver (issue 18; thesis ch. 5.1-5.4): particles given as the
 // input "particles" (a ParticleSet in mm with the field "wall", 1 at the dynamic-boundary particles, and
 // optionally "wall_depth_mm", a wall particle's depth below the wall's surface for the no-slip velocity of
-// SphRates.h, "pressure_pa" to start from and "velocity_x_m_s" .. "velocity_z_m_s"), stepped by leapfrog
+// SphRates.h, "pressure_pa" to start from, "velocity_x_m_s" .. "velocity_z_m_s", "void_fraction", "tracer" and
+// "open_boundary", k + 1 at the buffer particles of the open boundary k given by setOpenBoundaries()), stepped by
+// leapfrog
 // (kick-drift-kick: one rate evaluation per step) with the adaptive time step of SphRates.h. Guards: a value
 // that is not finite, a density more than `density_guard` from the rest density (the weak compressibility
 // broken: a sound speed too low for the flow, or particles piling up), a particle leaving the domain's box
 // grown by `escape_margin_mm`, a fluid particle a quarter spacing into a wall of known depths. A guard puts the
-// particles back to the step's start.
+// particles back to the step's start. After each drift the open boundaries exchange particles with the fluid
+// (OpenBoundary.h), and tracer particles that come within `absorption_distance_mm` of a wall's surface are absorbed
+// (removed, their mass counted: drug uptake).
 
 #include "vsim/sim/common/Solver.h"
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
+#include "vsim/sim/sph/OpenBoundary.h"
 #include "vsim/sim/sph/ParticleState.h"
 #include "vsim/sim/sph/QuarticKernel.h"
 #include "vsim/sim/sph/SphRates.h"
@@ -24,7 +29,7 @@ namespace vsim::sim::sph {
 /// spacing_mm, smoothing_ratio, density_kg_m3, viscosity_pa_s, sound_speed_m_s, delta_sph, cfl,
 /// gravity_{x,y,z}_m_s2 (patient frame, LPS: a supine patient's is +y), end_time_s, density_guard,
 /// escape_margin_mm, reorder_every, body_force_{x,y,z}_m_s2 and body_force_frequency_hz, periodic_{x,y,z}_mm
-/// (validation channels).
+/// (validation channels), absorption_distance_mm.
 std::vector<ParameterSpec> sphParameters();
 
 class SphSolver : public Solver
@@ -32,32 +37,46 @@ class SphSolver : public Solver
 public:
     std::string name() const override { return "sph"; }
     std::vector<ParameterSpec> parameters() const override { return sphParameters(); }
+    /// Inlets and outlets for the next initialize(); none by default (closed or periodic domains).
+    void setOpenBoundaries(std::vector<OpenBoundary> boundaries) { m_openBoundaries = OpenBoundaries(std::move(boundaries)); }
     void initialize(const SimulationInput& input, const ParameterSet& parameters) override;
     RunAxis axis() const override { return {"time", "s", m_endTimeS}; }
     double position() const override { return m_timeS; }
     StepOutcome step(RunStatus& status, const Progress& progress) override;
-    /// Every particle (mm) with speed_m_s, velocity_{x,y,z}_m_s, pressure_pa, density_kg_m3 and wall, in the
-    /// order the particles were given.
+    /// Every particle (mm) with speed_m_s, velocity_{x,y,z}_m_s, pressure_pa, density_kg_m3, void_fraction, wall,
+    /// open_boundary and tracer, by number (those given first, in their order, then those the inlets let in).
     SimulationData snapshot() const override;
-    /// particles, fluid_particles, time_step_s (the last), steps, largest_speed_m_s,
-    /// largest_density_variation
-    /// (|rho / rho0 - 1| over the fluid), kinetic_energy_j.
+    /// particles, fluid_particles, time_step_s (the last), steps, largest_speed_m_s, largest_density_variation
+    /// (|rho / rho0 - 1| over the fluid), kinetic_energy_j, fluid_mass_kg; with open boundaries or absorption also
+    /// inflow_kg, outflow_kg, absorbed_kg, fluid_mass_change_kg and per boundary <name>_flow_rate_ml_s (into the
+    /// domain), <name>_pressure_pa and <name>_net_inflow_kg.
     std::map<std::string, double> metrics() const override;
 
     const ParticleState& particles() const { return m_particles; }
     const FluidModel& fluid() const { return m_fluid; }
     const QuarticKernel& kernel() const { return *m_kernel; }
+    const OpenBoundaries& openBoundaries() const { return m_openBoundaries; }
+    const MassLedger& massLedger() const { return m_ledger; }
     /// The pressure of every particle (Pa), in the particles' current order.
     std::vector<double> pressure() const { return pressures(m_particles, m_fluid); }
 
 private:
     void updateRates(double timeS);
+    /// The fluid particles' mass now (kg).
+    long double fluidMass() const;
+    /// Removes the tracer particles within the absorption distance of a wall (the start's wall distances).
+    void absorbTracer();
 
     FluidModel m_fluid;
     std::unique_ptr<QuarticKernel> m_kernel;
     std::unique_ptr<NeighbourGrid> m_grid;
     ParticleState m_particles;
     SphRates m_rates;
+    OpenBoundaries m_openBoundaries;
+    MassLedger m_ledger;
+    long double m_initialFluidMass = 0.0;
+    double m_absorptionDistanceM = 0.0;
+    int m_nextId = 0;
     double m_timeS = 0.0, m_endTimeS = 0.0, m_stepS = 0.0, m_cfl = 0.2, m_densityGuard = 0.03, m_spacingM = 0.0;
     Eigen::Vector3d m_boxLow = Eigen::Vector3d::Zero(),
                     m_boxHigh = Eigen::Vector3d::Zero(); ///< m, with the margin

@@ -1,0 +1,210 @@
+#include "vsim/sim/sph/OpenBoundary.h"
+
+#include "vsim/core/Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace vsim::sim::sph {
+
+double Waveform::factorAt(double timeS) const
+{
+    if (points.empty())
+        return 1.0;
+    if (points.size() == 1 || !(period() > 0.0))
+        return points.front().second;
+    const double t = timeS - period() * std::floor(timeS / period());
+    const auto after = std::upper_bound(points.begin(), points.end(), t,
+                                        [](double value, const std::pair<double, double>& p) { return value < p.first; });
+    if (after == points.begin())
+        return after->second;
+    if (after == points.end())
+        return points.back().second;
+    const auto before = after - 1;
+    const double share = (t - before->first) / std::max(after->first - before->first, 1e-300);
+    return before->second + share * (after->second - before->second);
+}
+
+long double MassLedger::totalInflow() const
+{
+    long double sum = 0.0;
+    for (long double kg : inflowKg)
+        sum += kg;
+    return sum;
+}
+
+long double MassLedger::totalOutflow() const
+{
+    long double sum = 0.0;
+    for (long double kg : outflowKg)
+        sum += kg;
+    return sum;
+}
+
+bool OpenBoundaries::withinDisk(std::size_t k, const Eigen::Vector3d& x) const
+{
+    const OpenBoundary& b = m_boundaries[k];
+    const Eigen::Vector3d offset = x - b.centreM;
+    return (offset - offset.dot(b.normal) * b.normal).squaredNorm() <= b.radiusM * b.radiusM;
+}
+
+double OpenBoundaries::shape(std::size_t k, const Eigen::Vector3d& x) const
+{
+    if (!m_boundaries[k].parabolic)
+        return 1.0;
+    const Eigen::Vector3d offset = x - m_boundaries[k].centreM;
+    const double r2 = (offset - offset.dot(m_boundaries[k].normal) * m_boundaries[k].normal).squaredNorm();
+    return std::max(0.0, 1.0 - r2 / (m_equivalentRadius[k] * m_equivalentRadius[k]));
+}
+
+double OpenBoundaries::prescribedFlowRate(std::size_t k, double timeS) const
+{
+    const OpenBoundary& b = m_boundaries[k];
+    const double ramp = b.rampS > 0.0 && timeS < b.rampS ? 0.5 * (1.0 - std::cos(std::numbers::pi * timeS / b.rampS)) : 1.0;
+    return b.flowRateM3S * ramp * b.waveform.factorAt(timeS);
+}
+
+void OpenBoundaries::initialize(const ParticleState& particles, double depthM, double spacingM)
+{
+    const std::size_t count = m_boundaries.size();
+    m_depthM = depthM;
+    m_calibration.assign(count, 0.0);
+    m_equivalentRadius.assign(count, 0.0);
+    m_flowRate.assign(count, 0.0);
+    m_pressure.assign(count, 0.0);
+    for (const OpenBoundary& b : m_boundaries)
+        if (std::abs(b.normal.norm() - 1.0) > 1e-9 || !(b.radiusM > 0.0))
+            throw Error("the open boundary '" + b.name + "' needs a unit normal and a positive radius");
+    const double volume = spacingM * spacingM * spacingM;
+    std::vector<double> buffered(count, 0.0);
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (particles.boundary[i])
+        {
+            if (particles.boundary[i] > count)
+                throw Error("a buffer particle names open boundary " + std::to_string(particles.boundary[i]) +
+                            " of " + std::to_string(count));
+            buffered[particles.boundary[i] - 1u] += 1.0;
+        }
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        if (buffered[k] == 0.0)
+            throw Error("the open boundary '" + m_boundaries[k].name + "' has no buffer particles behind it");
+        m_equivalentRadius[k] = std::sqrt(buffered[k] * volume / depthM / std::numbers::pi);
+    }
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (particles.boundary[i])
+            m_calibration[particles.boundary[i] - 1u] += shape(particles.boundary[i] - 1u, particles.position[i]) * volume / depthM;
+}
+
+void OpenBoundaries::exchange(ParticleState& particles, int& nextId, MassLedger& ledger) const
+{
+    const std::size_t n = particles.size();
+    std::vector<std::uint8_t> keep(n, 1);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        if (particles.wall[i])
+            continue;
+        if (particles.boundary[i])
+        {
+            const std::size_t k = particles.boundary[i] - 1u;
+            const double s = signedDistance(k, particles.position[i]);
+            if (s >= 0.0) // into the domain: fluid now, and the buffer refilled a depth behind it
+            {
+                particles.boundary[i] = 0;
+                ledger.inflowKg[k] += particles.mass[i];
+                particles.appendCopy(i, particles.position[i] - m_depthM * m_boundaries[k].normal, nextId++);
+                particles.boundary.back() = std::uint8_t(k + 1);
+                particles.tracer.back() = m_boundaries[k].tracer ? 1 : 0;
+                keep.push_back(1);
+            }
+            else if (s < -m_depthM) // out of the buffer's far end: it left the domain when it entered the buffer
+                keep[i] = 0;
+            continue;
+        }
+        for (std::size_t k = 0; k < m_boundaries.size(); ++k)
+            if (signedDistance(k, particles.position[i]) < 0.0 && withinDisk(k, particles.position[i]))
+            {
+                const OpenBoundary& b = m_boundaries[k];
+                const bool joins = b.prescribed == OpenBoundary::Prescribed::Pressure || b.flowRateM3S < 0.0;
+                if (joins)
+                    particles.boundary[i] = std::uint8_t(k + 1);
+                else
+                    keep[i] = 0;
+                ledger.outflowKg[k] += particles.mass[i];
+                break;
+            }
+    }
+    if (std::find(keep.begin(), keep.end(), 0) != keep.end())
+        particles.keepOnly(keep);
+}
+
+void OpenBoundaries::impose(ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
+                            const FluidModel& fluid, double timeS)
+{
+    const std::size_t count = m_boundaries.size();
+    std::vector<double> speedScale(count, 0.0), pressure(count, 0.0);
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        const OpenBoundary& b = m_boundaries[k];
+        if (b.prescribed == OpenBoundary::Prescribed::Velocity)
+            speedScale[k] = prescribedFlowRate(k, timeS) / m_calibration[k];
+        else // the resistance acts on the last step's outflow
+            pressure[k] = b.pressurePa * b.waveform.factorAt(timeS) + b.resistancePaSM3 * -m_flowRate[k];
+    }
+    const int n = int(particles.size());
+#pragma omp parallel for schedule(dynamic, 256)
+    for (int i = 0; i < n; ++i)
+    {
+        const std::size_t si = std::size_t(i);
+        if (!particles.boundary[si])
+            continue;
+        const std::size_t k = particles.boundary[si] - 1u;
+        const OpenBoundary& b = m_boundaries[k];
+        const Eigen::Vector3d mirror = particles.position[si] - 2.0 * signedDistance(k, particles.position[si]) * b.normal;
+        double weight = 0.0, relative = 0.0;
+        Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+        grid.forEachNear(particles.position, mirror, i,
+                         [&](int j, const Eigen::Vector3d&, double r)
+                         {
+                             const std::size_t sj = std::size_t(j);
+                             if (!particles.isFluid(sj))
+                                 return;
+                             const double w = kernel.value(r) * particles.mass[sj] / particles.density[sj];
+                             weight += w;
+                             relative += w * particles.density[sj] / fluid.mixtureDensity(particles.voidFraction[sj]);
+                             velocity += w * particles.velocity[sj];
+                         });
+        const bool extrapolated = weight > 0.05; // else the values stay (no fluid near the mirror point yet)
+        const double rest = fluid.mixtureDensity(particles.voidFraction[si]);
+        if (b.prescribed == OpenBoundary::Prescribed::Velocity)
+        {
+            particles.velocity[si] = speedScale[k] * shape(k, particles.position[si]) * b.normal;
+            if (extrapolated)
+                particles.density[si] = rest * relative / weight;
+        }
+        else
+        {
+            particles.density[si] = fluid.densityAt(pressure[k], particles.voidFraction[si]);
+            if (extrapolated)
+                particles.velocity[si] = velocity / weight;
+        }
+    }
+    // What the boundaries pass now: the flux of their buffers' particles and their mean pressure.
+    std::vector<double> flux(count, 0.0), pressureSum(count, 0.0), members(count, 0.0);
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (particles.boundary[i])
+        {
+            const std::size_t k = particles.boundary[i] - 1u;
+            flux[k] += particles.mass[i] / particles.density[i] * particles.velocity[i].dot(m_boundaries[k].normal) / m_depthM;
+            pressureSum[k] += fluid.pressure(particles.density[i], particles.voidFraction[i]);
+            members[k] += 1.0;
+        }
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        m_flowRate[k] = flux[k];
+        m_pressure[k] = members[k] > 0.0 ? pressureSum[k] / members[k] : pressure[k];
+    }
+}
+
+} // namespace vsim::sim::sph
