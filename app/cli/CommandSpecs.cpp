@@ -1,5 +1,6 @@
 // The declarations of vascusim-cli's commands: options, positional arguments and usage (CommandLine.h).
 
+#include "BloodFlowCommand.h"
 #include "CommandLine.h"
 #include "DemoCommand.h"
 #include "NetworkCommands.h"
@@ -130,6 +131,21 @@ std::vector<CommandSpec> declareCommands()
          "    drug delivery (two-phase conical Hagen-Poiseuille network): flow split, filling, control points\n"
          "    two-phase vs liquid, tumour share and the best tip positions",
          simulateNetwork},
+        {"simulate sph", 1, 1,
+         {kStudy, value("inlet"), value("outlet"), value("waveform"), value("profile"), value("spacing"), value("until"),
+          value("ramp"), value("void-fraction"), value("compare"), value("frames"), value("backend"), value("centerlines"),
+          kParam, value("out"), kWait},
+         "simulate sph --study <study.vsim> [--inlet 5ml/s|0.3m/s|90mmHg[@NODE]] [--outlet 0mmHg] [--waveform FILE]\n"
+         "             [--profile parabolic|plug] [--spacing 0.5mm] [--until 0.2s] [--ramp 0.05s] [--void-fraction 0]\n"
+         "             [--compare 6mm] [--frames 20] [--backend auto|cpu|cuda] [--param key=value ...] [--out DIR]\n"
+         "    blood flow through the vessels of the study's centerlines (weakly compressible SPH on the lumen label):\n"
+         "    the inlet at the largest vessel's end (or NODE; default a mean 0.2 m/s, parabolic, ramped up from rest),\n"
+         "    pressure outlets at the other ends; a Run of particle frames (speed, velocity, pressure) and, along the\n"
+         "    narrowest inlet-outlet path, the stenosis figures (peak and mean velocity ratios at --compare upstream and\n"
+         "    downstream of the throat, the pressure drop and ratio) averaged over the settled second half of the run\n"
+         "    (the last waveform cycle); the frame series to DIR. Defaults: 5 particles per inlet radius, a sound speed\n"
+         "    of 10 times the expected peak speed. The waveform file: lines time_s,factor over one cycle",
+         simulateSph},
         {"validate", 1, 1, {},
          "validate <case|fem|network|heat|all>\n"
          "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"

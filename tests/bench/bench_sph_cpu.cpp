@@ -43,6 +43,7 @@ int main(int argc, char** argv)
     parameters.set("viscosity_pa_s", 1e-3);
     parameters.set("sound_speed_m_s", 10.0 * std::sqrt(9.81 * kDamBreakWaterHeightM));
     parameters.set("gravity_z_m_s2", -9.81);
+    parameters.set("free_surface", 1);
     parameters.set("end_time_s", 10.0);
     SphSolver solver;
     solver.initialize(input, parameters);

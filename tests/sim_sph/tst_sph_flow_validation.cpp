@@ -18,7 +18,7 @@ private slots:
     void flowCases_data()
     {
         QTest::addColumn<QString>("name");
-        for (const char* name : {"sph-hydrostatic", "sph-poiseuille", "sph-womersley", "sph-mass"})
+        for (const char* name : {"sph-hydrostatic", "sph-poiseuille", "sph-womersley", "sph-mass", "sph-stenosis"})
             QTest::newRow(name) << QString(name);
     }
 

@@ -33,13 +33,31 @@ SolverRun runCase(const std::string& caseName, SphSolver& solver, ParticleSet pa
 
 namespace vsim::sim::sph::detail {
 
+namespace {
+
+/// The distance (mm) from the point at x, radius r outside the wall to the wall's profile R(x') (sampled at a hundredth
+/// of a spacing within the wall layers' reach; the buffers continue the end sections).
+double surfaceDistance(const PipeShape& shape, double x, double r)
+{
+    const double reach = (shape.wallLayers + 1) * shape.spacingMm, step = 0.01 * shape.spacingMm;
+    double nearest = INFINITY;
+    for (double at = x - reach; at <= x + reach; at += step)
+    {
+        const double profile = shape.radiusMm(std::clamp(at, 0.5 * shape.spacingMm, shape.lengthMm - 0.5 * shape.spacingMm));
+        nearest = std::min(nearest, std::hypot(x - at, r - profile));
+    }
+    return nearest;
+}
+
+} // namespace
+
 ParticleSet pipeParticles(const PipeShape& shape)
 {
     ParticleSet set;
     auto& wall = set.fields["wall"];
     auto& depth = set.fields["wall_depth_mm"];
     std::vector<double> buffer;
-    const double dx = shape.spacingMm, derivativeStep = 0.01 * dx;
+    const double dx = shape.spacingMm;
     const long slices = std::lround(shape.lengthMm / dx), buffered = long(std::ceil(shape.bufferDepthMm / dx - 1e-9));
     double widest = 0.0;
     for (long k = -buffered; k < slices + buffered; ++k)
@@ -50,9 +68,6 @@ ParticleSet pipeParticles(const PipeShape& shape)
         // The buffers continue the end sections (the lumen extruded).
         const double x = (k + 0.5) * dx, xWall = std::clamp(x, 0.5 * dx, shape.lengthMm - 0.5 * dx);
         const double radius = shape.radiusMm(xWall);
-        const double slope = (shape.radiusMm(xWall + derivativeStep) - shape.radiusMm(xWall - derivativeStep)) /
-                             (2.0 * derivativeStep);
-        const double cosine = k < 0 || k >= slices ? 1.0 : 1.0 / std::sqrt(1.0 + slope * slope);
         for (long j = -across; j < across; ++j)
             for (long i = -across; i < across; ++i)
             {
@@ -63,7 +78,7 @@ ParticleSet pipeParticles(const PipeShape& shape)
                 set.positionsMm.push_back(point);
                 const bool isWall = r >= radius;
                 wall.push_back(isWall ? 1.0 : 0.0);
-                depth.push_back(isWall ? (r - radius) * cosine : 0.0);
+                depth.push_back(isWall ? surfaceDistance(shape, x, r) : 0.0);
                 buffer.push_back(isWall ? 0.0 : k < 0 ? 1.0 : k >= slices ? 2.0 : 0.0);
             }
     }

@@ -1,7 +1,7 @@
 // sph-hydrostatic: water at rest in an open tank under gravity (issue 18), and the same tank of two-phase mixture
-// particles at void fraction 0.2 (thesis Table 5.1). A column of fluid particles on a 1
-// mm lattice, 6 x 6 across and 16 deep, in a tank of four layers of wall particles (the dynamic boundary),
-// started from the hydrostatic density and let settle on the run driver with a damping viscosity. The
+// particles at void fraction 0.2 (thesis Table 5.1). A column of fluid particles on a 1 mm lattice, 6 x 6 across and
+// 16 deep, in a tank of four layers of wall particles (their pressure the fluid's, extrapolated: SphRates.h), started
+// from the hydrostatic density and let settle on the run driver with a damping viscosity. The
 // pressure of the particles in the middle of the column, from 2h below the surface to the bottom, against
 // rho0 g d, d their depth below the settled free surface (the top layer's mean height plus half a spacing);
 // rho0 g d is taken with the density the equation of state gives at each depth (dp/dd = rho(p) g integrated
@@ -63,6 +63,7 @@ ColumnErrors settledColumn(double voidFraction, const Progress& progress)
     parameters.set("gravity_z_m_s2", -kGravity);
     parameters.set("end_time_s", 0.3);
     parameters.set("void_fraction", voidFraction);
+    parameters.set("free_surface", 1);
     FluidModel mixture;
     mixture.restDensity = kDensity;
     SphSolver solver;

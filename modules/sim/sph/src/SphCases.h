@@ -2,7 +2,7 @@
 
 // The validation cases behind SphValidation.h, one file per kind: KernelCases.cpp (sph-kernel, sph-fpm),
 // HydrostaticCase.cpp (sph-hydrostatic), PoiseuilleCase.cpp (sph-poiseuille), WomersleyCase.cpp (sph-womersley),
-// MassCase.cpp (sph-mass); the shared case builders in CaseSupport.cpp.
+// MassCase.cpp (sph-mass), StenosisCase.cpp (sph-stenosis); the shared case builders in CaseSupport.cpp.
 
 #include "vsim/core/Progress.h"
 #include "vsim/core/Validation.h"
@@ -24,7 +24,7 @@ SolverRun runCase(const std::string& caseName, SphSolver& solver, ParticleSet pa
 
 /// A straight pipe along x on a lattice of the given spacing (points at (k + 1/2) spacings), fluid where the distance
 /// from the axis r < R(x), wall particles out to R(x) + wallLayers spacings with their depths below the wall's
-/// surface (r - R(x), times the cosine of the wall's slope). The fluid fills 0 <= x < length; with a buffer depth > 0
+/// surface (their distance to the profile r = R(x)). The fluid fills 0 <= x < length; with a buffer depth > 0
 /// the ends are open, each with its buffer of that depth (field "open_boundary": 1 behind x = 0, 2 beyond x = length;
 /// the walls continue around them).
 struct PipeShape
@@ -44,5 +44,6 @@ ValidationResult hydrostaticCase(const Progress& progress);
 ValidationResult poiseuilleCase(const Progress& progress);
 ValidationResult womersleyCase(const Progress& progress);
 ValidationResult massCase(const Progress& progress);
+ValidationResult stenosisCase(const Progress& progress);
 
 } // namespace vsim::sim::sph::detail

@@ -115,7 +115,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                 const Eigen::Vector3d gradW = kernel.gradient(rij, r);
                 const Eigen::Vector3d vij = vi - particles.velocity[sj];
                 const double mJ = particles.mass[sj], rhoJ = particles.density[sj];
-                densityRate += rhoI * (mJ / rhoJ) * vij.dot(gradW); // volume form: mixtures of other rest densities
+                if (!wallI) // volume form: mixtures of other rest densities; walls take theirs from extrapolateWallPressure
+                    densityRate += rhoI * (mJ / rhoJ) * vij.dot(gradW);
                 if (!wallI && particles.isFluid(sj) && diffusion > 0.0)
                 {
                     const Eigen::Vector3d psi = 2.0 * (relativeJ(sj) - relativeI) / (r * r) * (-rij) -
@@ -149,6 +150,35 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
     rates.largestAcceleration = largestAcceleration;
     rates.largestViscousRate = largestViscousRate;
     rates.largestKinematicViscosity = largestKinematicViscosity;
+}
+
+void extrapolateWallPressure(ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
+                             const FluidModel& fluid, double timeS, bool freeSurface)
+{
+    const double floorPa = freeSurface ? 0.0 : -INFINITY;
+    const int n = int(particles.size());
+    const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
+#pragma omp parallel for schedule(dynamic, 256)
+    for (int i = 0; i < n; ++i)
+    {
+        const std::size_t si = std::size_t(i);
+        if (!particles.wall[si])
+            continue;
+        double weight = 0.0, pressure = 0.0;
+        grid.forEachNeighbour(particles.position, i,
+                              [&](int j, const Eigen::Vector3d& rij, double r)
+                              {
+                                  const std::size_t sj = std::size_t(j);
+                                  if (particles.wall[sj])
+                                      return;
+                                  const double w = kernel.value(r);
+                                  weight += w;
+                                  pressure += w * (fluid.pressure(particles.density[sj], particles.voidFraction[sj]) +
+                                                   particles.density[sj] * external.dot(rij));
+                              });
+        if (weight > 0.0) // a wall particle beyond the fluid's reach keeps its density
+            particles.density[si] = fluid.densityAt(std::max(floorPa, pressure / weight), particles.voidFraction[si]);
+    }
 }
 
 double stableTimeStep(const SphRates& rates, const QuarticKernel& kernel, const FluidModel& fluid, double cfl)

@@ -55,6 +55,9 @@ std::vector<ParameterSpec> sphParameters()
          "validation channels: > 0 makes the domain [0, L) wrap around along x (0: open)", K::Real},
         {"periodic_y_mm", "Periodic length y", "mm", 0.0, 0.0, 1e4, "Domain", "as periodic_x_mm, along y", K::Real},
         {"periodic_z_mm", "Periodic length z", "mm", 0.0, 0.0, 1e4, "Domain", "as periodic_x_mm, along z", K::Real},
+        {"free_surface", "Free surface", "", 0, 0, 1, "Walls",
+         "1 for a liquid with a free surface (a tank, a dam break): the walls hold no suction above it; 0 in vessels",
+         K::Integer},
         {"absorption_distance_mm", "Absorption distance", "mm", 0.0, 0.0, 100.0, "Walls",
          "tracer particles (an injected drug) this close to a wall's surface are absorbed and counted (0: none)",
          K::Real},
@@ -98,6 +101,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     const auto depth = given.fields.find("wall_depth_mm");
     const auto buffer = given.fields.find("open_boundary"), tracer = given.fields.find("tracer");
     m_absorptionDistanceM = parameters.get("absorption_distance_mm") * 1e-3;
+    m_freeSurface = parameters.get("free_surface") > 0.5;
     if (given.size() == 0)
         throw Error("the SPH input has no particles");
     m_boxLow = m_boxHigh = m_grid->wrap(given.positionsMm.front() * 1e-3);
@@ -105,7 +109,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     {
         const Eigen::Vector3d x = m_grid->wrap(given.positionsMm[i] * 1e-3);
         const bool isWall = given.fields.at("wall")[i] > 0.5;
-        // Wall particles imitate the fluid they hold (the dynamic boundary): the parameter's mixture.
+        // Wall particles imitate the fluid they hold: the parameter's mixture.
         const double voidFraction =
             isWall || givenVoid == given.fields.end() ? defaultVoid : std::clamp(givenVoid->second[i], 0.0, 0.99);
         const double rho = pressure == given.fields.end() ? m_fluid.mixtureDensity(voidFraction)
@@ -126,6 +130,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
         if (period[a] > 0.0)
             m_boxLow[a] = -INFINITY, m_boxHigh[a] = INFINITY;
     m_nextId = int(given.size());
+    m_sections.reset();
     m_ledger = {};
     m_ledger.inflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
     m_ledger.outflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
@@ -154,6 +159,7 @@ void SphSolver::updateRates(double timeS)
 {
     if (!m_openBoundaries.empty())
         m_openBoundaries.impose(m_particles, *m_grid, *m_kernel, m_fluid, timeS);
+    extrapolateWallPressure(m_particles, *m_grid, *m_kernel, m_fluid, timeS, m_freeSurface);
     computeRates(m_particles, pressures(m_particles, m_fluid), *m_grid, *m_kernel, m_fluid, timeS, m_rates);
 }
 
@@ -237,6 +243,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     m_timeS += dt;
     m_stepS = dt;
     ++m_steps;
+    m_sections.sample(p, m_fluid, m_timeS, dt);
     return {};
 }
 

@@ -10,7 +10,7 @@ namespace vsim::sim::sph {
 
 std::vector<std::string> sphValidationCases()
 {
-    return {"sph-kernel", "sph-fpm", "sph-hydrostatic", "sph-poiseuille", "sph-womersley", "sph-mass"};
+    return {"sph-kernel", "sph-fpm", "sph-hydrostatic", "sph-poiseuille", "sph-womersley", "sph-mass", "sph-stenosis"};
 }
 
 ValidationResult runSphValidation(const std::string& name, const Progress& progress)
@@ -29,8 +29,10 @@ ValidationResult runSphValidation(const std::string& name, const Progress& progr
         result = detail::womersleyCase(progress);
     else if (name == "sph-mass")
         result = detail::massCase(progress);
+    else if (name == "sph-stenosis")
+        result = detail::stenosisCase(progress);
     else
-        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass)");
+        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis)");
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

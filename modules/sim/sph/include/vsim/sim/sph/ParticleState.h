@@ -1,8 +1,8 @@
 #pragma once
 
 // The SPH solver's particles, structure of arrays in SI (m, m/s, kg/m^3, kg) so that the CPU loops and the
-// GPU copies stay contiguous. Wall particles (the dynamic boundary: frozen, their density evolving with the
-// fluid's) carry wall = 1; buffer particles of the open boundaries carry their boundary's number. `id` numbers
+// GPU copies stay contiguous. Wall particles (frozen, their density the fluid's pressure extrapolated: SphRates.h)
+// carry wall = 1; buffer particles of the open boundaries carry their boundary's number. `id` numbers
 // each particle (those given first, then those the inlets create): frames and tracking follow it through the
 // reordering.
 

@@ -15,6 +15,7 @@
 // (removed, their mass counted: drug uptake).
 
 #include "vsim/sim/common/Solver.h"
+#include "vsim/sim/sph/CrossSections.h"
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
 #include "vsim/sim/sph/OpenBoundary.h"
@@ -29,7 +30,7 @@ namespace vsim::sim::sph {
 /// spacing_mm, smoothing_ratio, density_kg_m3, viscosity_pa_s, sound_speed_m_s, delta_sph, cfl,
 /// gravity_{x,y,z}_m_s2 (patient frame, LPS: a supine patient's is +y), end_time_s, density_guard,
 /// escape_margin_mm, reorder_every, body_force_{x,y,z}_m_s2 and body_force_frequency_hz, periodic_{x,y,z}_mm
-/// (validation channels), absorption_distance_mm.
+/// (validation channels), free_surface, absorption_distance_mm.
 std::vector<ParameterSpec> sphParameters();
 
 class SphSolver : public Solver
@@ -39,6 +40,13 @@ public:
     std::vector<ParameterSpec> parameters() const override { return sphParameters(); }
     /// Inlets and outlets for the next initialize(); none by default (closed or periodic domains).
     void setOpenBoundaries(std::vector<OpenBoundary> boundaries) { m_openBoundaries = OpenBoundaries(std::move(boundaries)); }
+    /// Cross-sections whose flow is averaged over time from `fromTimeS` on, sampled every `everySteps` steps
+    /// (CrossSections.h): the stenosis figures.
+    void setSections(std::vector<CrossSection> sections, double fromTimeS, int everySteps = 1)
+    {
+        m_sections = SectionSeries(std::move(sections), fromTimeS, everySteps);
+    }
+    const SectionSeries& sections() const { return m_sections; }
     void initialize(const SimulationInput& input, const ParameterSet& parameters) override;
     RunAxis axis() const override { return {"time", "s", m_endTimeS}; }
     double position() const override { return m_timeS; }
@@ -73,9 +81,11 @@ private:
     ParticleState m_particles;
     SphRates m_rates;
     OpenBoundaries m_openBoundaries;
+    SectionSeries m_sections;
     MassLedger m_ledger;
     long double m_initialFluidMass = 0.0;
     double m_absorptionDistanceM = 0.0;
+    bool m_freeSurface = false;
     int m_nextId = 0;
     double m_timeS = 0.0, m_endTimeS = 0.0, m_stepS = 0.0, m_cfl = 0.2, m_densityGuard = 0.03, m_spacingM = 0.0;
     Eigen::Vector3d m_boxLow = Eigen::Vector3d::Zero(),

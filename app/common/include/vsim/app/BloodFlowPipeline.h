@@ -1,0 +1,82 @@
+#pragma once
+
+// Blood flow in a study's vessels (issue 18): the SPH solver on the lumen label the centerlines were extracted from.
+// The vessel ends come from the centerlines (the network of NetworkPipeline.h): each end's plane lies a little inside
+// the vessel (half its radius, at least two spacings), perpendicular to the centerline there, with a disk of 1.5 radii;
+// one end is the inlet (a flow rate, a mean velocity or a pressure, steady or scaled by a waveform, ramped up from
+// rest), the others are pressure outlets. The particles are seeded on the label with the ends open
+// (mesh/ParticleSeeding.h). Sections every two spacings along the centerline from the inlet to the outlet whose path is
+// the narrowest are averaged over the run's second half (steady) or its last cycle (a waveform), and give the stenosis
+// figures (sim/sph/StenosisFigures.h).
+
+#include "vsim/core/Parameters.h"
+#include "vsim/core/Progress.h"
+#include "vsim/core/SolverRun.h"
+#include "vsim/sim/common/RunDriver.h"
+#include "vsim/sim/sph/CrossSections.h"
+#include "vsim/sim/sph/OpenBoundary.h"
+#include "vsim/sim/sph/SphSolver.h"
+#include "vsim/sim/sph/StenosisFigures.h"
+#include "vsim/study/Study.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vsim::app {
+
+struct BloodFlowInlet
+{
+    enum class Kind { FlowRate, MeanVelocity, Pressure };
+    Kind kind = Kind::FlowRate;
+    double value = 0.0;  ///< m^3/s, m/s (mean over the inlet's section) or Pa
+    int endNode = -1;    ///< the network's end node; -1: the root (the end of the largest vessel)
+    sim::sph::Waveform waveform;
+    bool parabolic = true;
+};
+
+struct BloodFlowSetup
+{
+    std::string centerlinesId;
+    BloodFlowInlet inlet;
+    double outletPressurePa = 0.0; ///< every outlet
+    double compareMm = 6.0;        ///< the stenosis figures' comparison distance (the thesis's hand case: 6 mm)
+    /// The solver's parameters; spacing_mm, sound_speed_m_s and end_time_s are chosen (below) unless `given` names them.
+    ParameterSet parameters{sim::sph::sphParameters()};
+    std::vector<std::string> given; ///< parameter names the user set
+    double rampS = -1.0;            ///< the inflow's rise from rest; < 0: 8 L / c0 (L the path's length)
+    int frames = 20;                ///< frames over the run, when the run control asks for none
+};
+
+struct BloodFlowRun
+{
+    SolverRun run;
+    std::vector<sim::sph::OpenBoundary> boundaries;
+    std::vector<double> sectionArcMm;          ///< along the compared path, from the inlet's plane
+    std::vector<Eigen::Vector3d> sectionCentresMm;
+    std::vector<sim::sph::SectionFlow> sections; ///< time averages
+    std::vector<double> sectionLargestPeaks;      ///< m/s
+    double averagedFromS = 0.0, averagedS = 0.0;
+    std::optional<sim::sph::StenosisFigures> stenosis;
+    ParameterSet parameters{sim::sph::sphParameters()}; ///< as run (the chosen values filled in)
+    double rampS = 0.0;
+    std::vector<std::string> warnings;
+};
+
+/// Runs the blood flow of the study's centerlines (their label's lumen) under `control` (without a frame schedule:
+/// setup.frames over the end time). Throws vsim::Error for a
+/// study without the centerlines' label, an inlet node that is not an end, a network of fewer than two ends, or what
+/// the seeding and the solver refuse.
+BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup, sim::RunControl control,
+                          const Progress& progress = {});
+
+/// What the CLI prints and the run folder keeps (JSON text): the run status, the boundaries, the metrics, the stenosis
+/// figures with their definitions and units, the sections along the path.
+std::string bloodFlowDocument(const BloodFlowRun& flow, const BloodFlowSetup& setup);
+
+/// Adds the run ("Blood flow (SPH)": a Run artifact of particle frames) with the metrics and the stenosis figures as
+/// attributes; the study is not saved. Returns the run's artifact id.
+std::string addBloodFlowRun(study::Study& study, const BloodFlowRun& flow, const BloodFlowSetup& setup,
+                            const std::vector<std::string>& inputs);
+
+} // namespace vsim::app

@@ -1,0 +1,305 @@
+#include "vsim/app/BloodFlowPipeline.h"
+
+#include "vsim/app/NetworkPipeline.h"
+#include "vsim/core/Error.h"
+#include "vsim/mesh/ParticleSeeding.h"
+#include "vsim/sim/sph/SphSolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <queue>
+
+namespace vsim::app {
+namespace {
+
+/// A centerline path with its lumen radius at every point (mm), oriented from its first point.
+struct RadiusPath
+{
+    std::vector<Eigen::Vector3d> points;
+    std::vector<double> radii;
+
+    double length() const
+    {
+        double sum = 0.0;
+        for (std::size_t k = 1; k < points.size(); ++k)
+            sum += (points[k] - points[k - 1]).norm();
+        return sum;
+    }
+    /// The point, unit tangent and radius at arc length s (mm) from the first point (clamped to the path).
+    void at(double s, Eigen::Vector3d& point, Eigen::Vector3d& tangent, double& radius) const
+    {
+        s = std::max(0.0, s);
+        for (std::size_t k = 1; k < points.size(); ++k)
+        {
+            const double step = (points[k] - points[k - 1]).norm();
+            if (s <= step || k + 1 == points.size())
+            {
+                const double share = step > 0.0 ? std::min(1.0, s / step) : 0.0;
+                point = points[k - 1] + share * (points[k] - points[k - 1]);
+                radius = radii[k - 1] + share * (radii[k] - radii[k - 1]);
+                tangent = (points[k] - points[k - 1]).normalized();
+                return;
+            }
+            s -= step;
+        }
+        point = points.front(), radius = radii.front(), tangent = Eigen::Vector3d::UnitX();
+    }
+    /// The tangent averaged over +-`halfMm` around arc length s (steadier than one polyline step's).
+    Eigen::Vector3d smoothTangent(double s, double halfMm) const
+    {
+        Eigen::Vector3d before, after, tangent;
+        double radius = 0.0;
+        at(std::max(0.0, s - halfMm), before, tangent, radius);
+        at(std::min(length(), s + halfMm), after, tangent, radius);
+        return (after - before).norm() > 0.0 ? Eigen::Vector3d((after - before).normalized()) : tangent;
+    }
+};
+
+/// Segment `e`'s path oriented to start at node `from`, with its conical radii.
+RadiusPath orientedSegment(const VesselNetwork& network, int e, int from)
+{
+    const VesselNetwork::Segment& segment = network.segments[std::size_t(e)];
+    RadiusPath path;
+    path.points = network.segmentPath(std::size_t(e));
+    double total = 0.0;
+    std::vector<double> arc{0.0};
+    for (std::size_t k = 1; k < path.points.size(); ++k)
+        arc.push_back(total += (path.points[k] - path.points[k - 1]).norm());
+    for (double s : arc)
+        path.radii.push_back(segment.startRadiusMm + (total > 0.0 ? s / total : 0.0) * (segment.endRadiusMm - segment.startRadiusMm));
+    if (segment.from != from)
+    {
+        std::reverse(path.points.begin(), path.points.end());
+        std::reverse(path.radii.begin(), path.radii.end());
+    }
+    return path;
+}
+
+/// The path through the tree from node `from` to node `to` (their segments' paths joined).
+RadiusPath pathBetween(const VesselNetwork& network, int from, int to)
+{
+    const std::vector<std::vector<int>> incident = network.incidentSegments();
+    std::vector<int> viaSegment(network.nodes.size(), -2);
+    std::queue<int> queue;
+    queue.push(from), viaSegment[std::size_t(from)] = -1;
+    while (!queue.empty())
+    {
+        const int node = queue.front();
+        queue.pop();
+        for (int e : incident[std::size_t(node)])
+        {
+            const VesselNetwork::Segment& s = network.segments[std::size_t(e)];
+            const int next = s.from == node ? s.to : s.from;
+            if (viaSegment[std::size_t(next)] == -2)
+                viaSegment[std::size_t(next)] = e, queue.push(next);
+        }
+    }
+    if (viaSegment[std::size_t(to)] == -2)
+        throw Error("the vessel ends " + std::to_string(from) + " and " + std::to_string(to) + " are not connected");
+    std::vector<std::pair<int, int>> steps; // (segment, its start node on the way) from `to` back to `from`
+    for (int node = to; node != from;)
+    {
+        const int e = viaSegment[std::size_t(node)];
+        const VesselNetwork::Segment& s = network.segments[std::size_t(e)];
+        const int previous = s.from == node ? s.to : s.from;
+        steps.push_back({e, previous});
+        node = previous;
+    }
+    RadiusPath path;
+    for (auto it = steps.rbegin(); it != steps.rend(); ++it)
+    {
+        const RadiusPath piece = orientedSegment(network, it->first, it->second);
+        const std::size_t skip = path.points.empty() ? 0 : 1; // the junction point once
+        path.points.insert(path.points.end(), piece.points.begin() + long(skip), piece.points.end());
+        path.radii.insert(path.radii.end(), piece.radii.begin() + long(skip), piece.radii.end());
+    }
+    return path;
+}
+
+/// An open end's plane: `insetMm` inside the vessel along the end's centerline, its normal into the vessel.
+struct EndPlane
+{
+    int node = -1;
+    Eigen::Vector3d centreMm = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitX();
+    double radiusMm = 0.0, insetMm = 0.0;
+};
+
+EndPlane endPlane(const VesselNetwork& network, int node, double spacingMm)
+{
+    const std::vector<std::vector<int>> incident = network.incidentSegments();
+    const RadiusPath path = orientedSegment(network, incident[std::size_t(node)].front(), node);
+    EndPlane plane;
+    plane.node = node;
+    const double endRadius = path.radii.front();
+    plane.insetMm = std::min(std::max(2.0 * spacingMm, 0.5 * endRadius), 0.45 * path.length());
+    Eigen::Vector3d tangent;
+    double radius = 0.0;
+    path.at(plane.insetMm, plane.centreMm, tangent, radius);
+    plane.normal = path.smoothTangent(plane.insetMm, std::max(spacingMm, 0.5 * radius));
+    plane.radiusMm = 1.5 * std::max(radius, endRadius) + spacingMm;
+    return plane;
+}
+
+bool given(const BloodFlowSetup& setup, const std::string& name)
+{
+    return std::find(setup.given.begin(), setup.given.end(), name) != setup.given.end();
+}
+
+} // namespace
+
+BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup, sim::RunControl control,
+                          const Progress& progress)
+{
+    BloodFlowRun flow;
+    progress.report(0.0, "vessel ends from the centerlines");
+    const VesselNetwork network = buildStudyNetwork(study, setup.centerlinesId, flow.warnings, progress.subRange(0.0, 0.05));
+    const std::string labelId = labelOfCenterlines(study, setup.centerlinesId);
+    if (labelId.empty())
+        throw Error("the centerlines '" + setup.centerlinesId + "' have no lumen label to fill with blood");
+    const std::vector<int> ends = network.endNodes();
+    if (ends.size() < 2)
+        throw Error("the vessels need at least two open ends (an inlet and an outlet); the centerlines have " +
+                    std::to_string(ends.size()));
+    const int inletNode = setup.inlet.endNode >= 0 ? setup.inlet.endNode : network.root >= 0 ? network.root : ends.front();
+    if (std::find(ends.begin(), ends.end(), inletNode) == ends.end())
+        throw Error("the inlet node " + std::to_string(inletNode) + " is not a vessel end (ends: " + [&] {
+            std::string list;
+            for (int e : ends)
+                list += (list.empty() ? "" : ", ") + std::to_string(e);
+            return list;
+        }() + ")");
+
+    ParameterSet& parameters = flow.parameters = setup.parameters;
+    const std::vector<std::vector<int>> incident = network.incidentSegments();
+    const double inletRadiusMm = orientedSegment(network, incident[std::size_t(inletNode)].front(), inletNode).radii.front();
+    if (!given(setup, "spacing_mm")) // five particles per radius at the inlet
+        parameters.set("spacing_mm", std::max(0.05, inletRadiusMm / 5.0));
+    const double spacingMm = parameters.get("spacing_mm");
+
+    // The compared path: to the outlet whose way from the inlet is the narrowest.
+    RadiusPath compared;
+    double narrowest = INFINITY;
+    int comparedOutlet = -1;
+    for (int end : ends)
+        if (end != inletNode)
+        {
+            RadiusPath path = pathBetween(network, inletNode, end);
+            const double smallest = *std::min_element(path.radii.begin(), path.radii.end());
+            if (smallest < narrowest)
+                narrowest = smallest, compared = std::move(path), comparedOutlet = end;
+        }
+
+    // The inflow's scale, the sound speed (10 times the largest speed expected: the inlet's mean speed through the
+    // narrowest section, parabolic) and the times.
+    const double inletAreaM2 = std::numbers::pi * std::pow(1e-3 * inletRadiusMm, 2);
+    const double narrowestAreaM2 = std::numbers::pi * std::pow(1e-3 * narrowest, 2);
+    const double density = parameters.get("density_kg_m3");
+    double expectedPeak = 0.0;
+    if (setup.inlet.kind == BloodFlowInlet::Kind::Pressure)
+        expectedPeak = std::sqrt(2.0 * std::abs(setup.inlet.value - setup.outletPressurePa) / density); // Bernoulli
+    else
+    {
+        const double flowRate = setup.inlet.kind == BloodFlowInlet::Kind::FlowRate ? setup.inlet.value : setup.inlet.value * inletAreaM2;
+        double largestFactor = 1.0;
+        for (const auto& point : setup.inlet.waveform.points)
+            largestFactor = std::max(largestFactor, point.second);
+        expectedPeak = 2.0 * std::abs(flowRate) * largestFactor / narrowestAreaM2;
+    }
+    if (!given(setup, "sound_speed_m_s"))
+        parameters.set("sound_speed_m_s", std::max(0.5, 10.0 * expectedPeak));
+    const double soundSpeed = parameters.get("sound_speed_m_s");
+    const double pathLengthM = 1e-3 * compared.length();
+    flow.rampS = setup.rampS >= 0.0 ? setup.rampS : 8.0 * pathLengthM / soundSpeed; // two quarter-wave periods
+    const double period = setup.inlet.waveform.period();
+    if (!given(setup, "end_time_s"))
+        parameters.set("end_time_s", period > 0.0 ? flow.rampS + 2.0 * period : 2.0 * flow.rampS);
+    const double endTime = parameters.get("end_time_s");
+    flow.averagedFromS = period > 0.0 ? std::max(0.0, endTime - period) : flow.rampS + 0.5 * std::max(0.0, endTime - flow.rampS);
+    if (period <= 0.0 && endTime <= flow.rampS)
+        flow.warnings.push_back("the run ends before the inflow has risen (" + std::to_string(flow.rampS) +
+                                " s): the figures are not of a settled flow");
+
+    // The open ends and the particles.
+    const double depthMm = 2.0 * parameters.get("smoothing_ratio") * spacingMm; // the kernel's support
+    mesh::ParticleSeeding seeding;
+    seeding.spacingMm = spacingMm;
+    seeding.wallLayers = int(std::ceil(depthMm / spacingMm - 1e-9));
+    std::vector<EndPlane> planes;
+    for (int end : ends)
+    {
+        const EndPlane plane = endPlane(network, end, spacingMm);
+        planes.push_back(plane);
+        seeding.openEnds.push_back({plane.centreMm, plane.normal, plane.radiusMm, depthMm});
+        sim::sph::OpenBoundary boundary;
+        boundary.centreM = 1e-3 * plane.centreMm, boundary.normal = plane.normal, boundary.radiusM = 1e-3 * plane.radiusMm;
+        if (end == inletNode)
+        {
+            boundary.name = "inlet";
+            boundary.waveform = setup.inlet.waveform;
+            boundary.rampS = flow.rampS;
+            if (setup.inlet.kind == BloodFlowInlet::Kind::Pressure)
+                boundary.prescribed = sim::sph::OpenBoundary::Prescribed::Pressure, boundary.pressurePa = setup.inlet.value;
+            else
+            {
+                boundary.prescribed = sim::sph::OpenBoundary::Prescribed::Velocity;
+                boundary.parabolic = setup.inlet.parabolic;
+                boundary.flowRateM3S = setup.inlet.kind == BloodFlowInlet::Kind::FlowRate ? setup.inlet.value
+                                                                                          : setup.inlet.value * inletAreaM2;
+            }
+        }
+        else
+        {
+            boundary.name = "outlet " + std::to_string(end);
+            boundary.prescribed = sim::sph::OpenBoundary::Prescribed::Pressure;
+            boundary.pressurePa = setup.outletPressurePa;
+        }
+        flow.boundaries.push_back(boundary);
+    }
+    progress.report(0.05, "particles from the lumen label");
+    SimulationInput input;
+    input.data["particles"] = mesh::seedVesselParticles(study.loadLabel(labelId), seeding);
+    input.sources["particles"] = labelId;
+
+    // Sections along the compared path between its planes, every two spacings.
+    const EndPlane& inletPlane = planes[std::size_t(std::find(ends.begin(), ends.end(), inletNode) - ends.begin())];
+    const EndPlane& outletPlane = planes[std::size_t(std::find(ends.begin(), ends.end(), comparedOutlet) - ends.begin())];
+    std::vector<sim::sph::CrossSection> sections;
+    for (double s = inletPlane.insetMm + 2.0 * spacingMm; s <= compared.length() - outletPlane.insetMm - 2.0 * spacingMm;
+         s += 2.0 * spacingMm)
+    {
+        Eigen::Vector3d centre, tangent;
+        double radius = 0.0;
+        compared.at(s, centre, tangent, radius);
+        sections.push_back({1e-3 * centre, compared.smoothTangent(s, std::max(spacingMm, 0.5 * radius)),
+                            1e-3 * (1.5 * radius + spacingMm), 2e-3 * spacingMm});
+        flow.sectionArcMm.push_back(s - inletPlane.insetMm);
+        flow.sectionCentresMm.push_back(centre);
+    }
+    sim::sph::SphSolver solver;
+    solver.setOpenBoundaries(flow.boundaries);
+    solver.setSections(sections, flow.averagedFromS, int(std::ceil(double(sections.size()) / 30.0)));
+    if (control.frameEvery <= 0.0 && control.frameEverySteps <= 0)
+        control.frameEvery = endTime / std::max(1, setup.frames);
+    flow.run = sim::runSolver(solver, input, parameters, control, progress.subRange(0.05, 1.0));
+    flow.sections = solver.sections().averages();
+    flow.sectionLargestPeaks = solver.sections().largestPeaks();
+    flow.averagedS = solver.sections().averagedTime();
+    if (flow.averagedS > 0.0)
+    {
+        try
+        {
+            flow.stenosis = sim::sph::stenosisFigures(flow.sectionArcMm, flow.sections, setup.compareMm);
+        }
+        catch (const Error& error)
+        {
+            flow.warnings.push_back(std::string("no stenosis figures: ") + error.what());
+        }
+    }
+    else
+        flow.warnings.push_back("the run stopped before its averaging window (from " + std::to_string(flow.averagedFromS) +
+                                " s): no section averages or stenosis figures");
+    return flow;
+}
+
+} // namespace vsim::app

@@ -1,0 +1,128 @@
+// The blood-flow run's document (the CLI's output, the run folder's metrics.json) and its record in the study.
+
+#include "vsim/app/BloodFlowPipeline.h"
+#include "vsim/app/RunRecord.h"
+#include "vsim/core/Units.h"
+
+#include <nlohmann/json.hpp>
+
+namespace vsim::app {
+namespace {
+
+nlohmann::json boundaryJson(const sim::sph::OpenBoundary& b)
+{
+    nlohmann::json json{{"name", b.name},
+                        {"centre_mm", {1e3 * b.centreM.x(), 1e3 * b.centreM.y(), 1e3 * b.centreM.z()}},
+                        {"normal_into_vessel", {b.normal.x(), b.normal.y(), b.normal.z()}},
+                        {"disk_radius_mm", 1e3 * b.radiusM}};
+    if (b.prescribed == sim::sph::OpenBoundary::Prescribed::Velocity)
+    {
+        json["prescribed"] = "flow rate";
+        json["flow_rate_ml_s"] = 1e6 * b.flowRateM3S;
+        json["profile"] = b.parabolic ? "parabolic" : "plug";
+        json["ramp_s"] = b.rampS;
+    }
+    else
+    {
+        json["prescribed"] = "pressure";
+        json["pressure_mmhg"] = units::paToMmHg(b.pressurePa);
+    }
+    if (!b.waveform.points.empty())
+        json["waveform_period_s"] = b.waveform.period();
+    return json;
+}
+
+/// The stenosis figures with their definitions (StenosisFigures.h), as the document and the attributes name them.
+std::vector<std::tuple<std::string, double, std::string>> stenosisRows(const BloodFlowRun& flow)
+{
+    const sim::sph::StenosisFigures& s = *flow.stenosis;
+    const sim::sph::SectionFlow &t = flow.sections[s.throat], &u = flow.sections[s.upstream], &d = flow.sections[s.downstream];
+    return {{"throat_position_mm", s.throatArcMm, "along the centerline from the inlet's plane"},
+            {"compared_at_mm", s.distanceMm, "upstream and downstream of the throat, along the centerline"},
+            {"area_ratio", s.areaRatio, "flow area upstream / in the throat (from the particles)"},
+            {"peak_velocity_ratio", s.peakRatio, "peak velocity in the throat / upstream (duplex PSV ratio's counterpart)"},
+            {"peak_velocity_ratio_downstream", s.peakRatioDownstream, "peak velocity in the throat / downstream"},
+            {"mean_velocity_ratio", s.meanRatio, "mean velocity in the throat / upstream (a mass check: the area ratio)"},
+            {"mean_velocity_ratio_downstream", s.meanRatioDownstream, "mean velocity in the throat / downstream"},
+            {"throat_peak_velocity_m_s", t.peakVelocityMS, "mean of the fastest 5 % of the throat's particles, time-averaged"},
+            {"upstream_peak_velocity_m_s", u.peakVelocityMS, "as the throat's"},
+            {"throat_mean_velocity_m_s", t.meanVelocityMS, "flow rate / area"},
+            {"pressure_drop_pa", s.pressureDropPa, "section-mean pressure upstream - downstream"},
+            {"pressure_drop_mmhg", units::paToMmHg(s.pressureDropPa), "as pressure_drop_pa"},
+            {"pressure_ratio", s.pressureRatio, "distal / proximal section-mean pressure, against the outlets' pressure as given"},
+            {"upstream_pressure_pa", u.meanPressurePa, "section mean"},
+            {"downstream_pressure_pa", d.meanPressurePa, "section mean"},
+            {"flow_rate_ratio", s.flowRateRatio, "throat / upstream flow rate: 1 for a settled, conserved flow"}};
+}
+
+} // namespace
+
+std::string bloodFlowDocument(const BloodFlowRun& flow, const BloodFlowSetup& setup)
+{
+    nlohmann::json boundaries = nlohmann::json::array();
+    for (const auto& b : flow.boundaries)
+        boundaries.push_back(boundaryJson(b));
+    nlohmann::json parameters;
+    for (const ParameterSpec& spec : flow.parameters.specs())
+        parameters[spec.key] = flow.parameters.get(spec.key);
+    nlohmann::json sections = nlohmann::json::array();
+    for (std::size_t k = 0; k < flow.sections.size(); ++k)
+    {
+        const sim::sph::SectionFlow& s = flow.sections[k];
+        const Eigen::Vector3d& c = flow.sectionCentresMm[k];
+        sections.push_back({{"arc_mm", flow.sectionArcMm[k]},
+                            {"centre_mm", {c.x(), c.y(), c.z()}},
+                            {"area_mm2", 1e6 * s.areaM2},
+                            {"flow_rate_ml_s", 1e6 * s.flowRateM3S},
+                            {"mean_velocity_m_s", s.meanVelocityMS},
+                            {"peak_velocity_m_s", s.peakVelocityMS},
+                            {"largest_peak_velocity_m_s", k < flow.sectionLargestPeaks.size() ? flow.sectionLargestPeaks[k] : 0.0},
+                            {"mean_pressure_pa", s.meanPressurePa}});
+    }
+    nlohmann::json stenosis = nullptr;
+    if (flow.stenosis)
+    {
+        stenosis = nlohmann::json::object();
+        for (const auto& [key, value, definition] : stenosisRows(flow))
+            stenosis[key] = {{"value", value}, {"definition", definition}};
+    }
+    return nlohmann::json{{"centerlines", setup.centerlinesId},
+                          {"run_status", nlohmann::json::parse(runStatusJson(flow.run.status))},
+                          {"boundaries", boundaries},
+                          {"parameters", parameters},
+                          {"ramp_s", flow.rampS},
+                          {"averaged", {{"from_s", flow.averagedFromS}, {"over_s", flow.averagedS}}},
+                          {"metrics", flow.run.metrics},
+                          {"stenosis", stenosis},
+                          {"sections", sections},
+                          {"frames", flow.run.frames.size()},
+                          {"precision", "double (CPU)"},
+                          {"warnings", flow.warnings}}
+               .dump(2) + "\n";
+}
+
+std::string addBloodFlowRun(study::Study& study, const BloodFlowRun& flow, const BloodFlowSetup& setup,
+                            const std::vector<std::string>& inputs)
+{
+    study::Provenance provenance{"simulate sph", {}, inputs, "", ""};
+    for (const ParameterSpec& spec : flow.parameters.specs())
+        provenance.parameters[spec.key] = preciseNumberText(flow.parameters.get(spec.key));
+    provenance.parameters["ramp_s"] = preciseNumberText(flow.rampS);
+    provenance.parameters["outlet_pressure_pa"] = preciseNumberText(setup.outletPressurePa);
+    provenance.parameters["compare_mm"] = preciseNumberText(setup.compareMm);
+    for (const auto& b : flow.boundaries)
+        provenance.parameters["boundary " + b.name] = boundaryJson(b).dump();
+    std::vector<std::string> warnings = flow.warnings;
+    const std::string statusWarning = runStatusWarning(flow.run.status);
+    if (!statusWarning.empty())
+        warnings.insert(warnings.begin(), statusWarning);
+    const std::string id = study.addRun(flow.run, "Blood flow (SPH)", provenance, warnings);
+    std::map<std::string, std::string> attributes = runAttributes(flow.run.metrics, flow.run.status);
+    if (flow.stenosis)
+        for (const auto& [key, value, definition] : stenosisRows(flow))
+            attributes["stenosis_" + key] = preciseNumberText(value);
+    study.setArtifactAttributes(id, attributes);
+    return id;
+}
+
+} // namespace vsim::app
