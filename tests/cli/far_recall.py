@@ -3,7 +3,9 @@ most of the liver CT's artery mask, so Dice against the whole mask says little).
 far_recall.py STUDY.vsim LABEL_ID ARTERY_MASK_ID [MARGIN_MM [LIVER_MASK_ID]] -> JSON on stdout, with the median
 CT HU of the far voxels and of the mask's aorta (the study's image-1, signed 16-bit): how much contrast the far
 arteries carry; with a liver mask also the liver's median HU and robust standard deviation (1.4826 x the median
-absolute deviation, artery-mask voxels left out) and the far arteries' contrast-to-noise ratio per voxel.
+absolute deviation, artery-mask voxels left out) and the far arteries' contrast-to-noise ratio per voxel, and the
+far voxels split into their 26-connected pieces: the share in the piece(s) reaching into the liver (the celiac
+trunk's tree) and the recall there and elsewhere.
 The aorta: in every axial slice the largest 8-connected piece of the artery mask of 150 mm2 or more (a vertical
 vessel of 14 mm or more); a voxel's distance to it is its in-plane distance to that piece's centroid less the
 piece's equivalent radius, in the same slice or, where the slice has no such piece, the nearest slice that has one.
@@ -62,6 +64,27 @@ def aorta_per_slice(mask, sizes, spacing, min_area_mm2=150.0):
     return found
 
 
+def far_pieces(voxels, nx, ny):
+    """The 26-connected pieces of a set of linear voxel indices (x fastest)."""
+    left, pieces = set(voxels), []
+    while left:
+        stack = [left.pop()]
+        piece = set(stack)
+        while stack:
+            v = stack.pop()
+            i, j, k = v % nx, (v // nx) % ny, v // (nx * ny)
+            for dk in (-1, 0, 1):
+                for dj in (-1, 0, 1):
+                    for di in (-1, 0, 1):
+                        q = (k + dk) * nx * ny + (j + dj) * nx + (i + di)
+                        if q in left and 0 <= i + di < nx and 0 <= j + dj < ny:
+                            left.remove(q)
+                            piece.add(q)
+                            stack.append(q)
+        pieces.append(piece)
+    return pieces
+
+
 def main():
     bundle, label_id, artery_id = sys.argv[1:4]
     margin = float(sys.argv[4]) if len(sys.argv) > 4 else 10.0
@@ -82,6 +105,7 @@ def main():
         sys.exit("image-1 is not a signed 16-bit volume on the mask's grid")
     far = found = 0
     far_hu, aorta_hu = [], []
+    far_set = set()
     for index, value in enumerate(artery):
         if not value:
             continue
@@ -94,6 +118,7 @@ def main():
             aorta_hu.append(hu[index])
         if distance > margin:
             far_hu.append(hu[index])
+            far_set.add(index)
             far += 1
             found += 1 if label[index] else 0
     median = lambda values: sorted(values)[len(values) // 2] if values else None
@@ -104,6 +129,16 @@ def main():
         liver, liver_sizes, _ = read_nrrd(bundle, liver_id)
         if liver_sizes != sizes:
             sys.exit(f"{liver_id} is on another grid than {label_id}")
+        # The far voxels' 26-connected pieces: the one reaching into the liver is the celiac trunk's tree (common,
+        # proper, right and left hepatic, splenic); the others run elsewhere (on this scan the superior mesenteric and
+        # the renal arteries), which a hepatic target does not segment.
+        pieces = far_pieces(far_set, nx, ny)
+        hepatic = [p for p in pieces if sum(1 for v in p if liver[v]) >= 0.01 * len(p)]
+        tree = set().union(*hepatic) if hepatic else set()
+        out["far_pieces_voxels"] = sorted((len(p) for p in pieces), reverse=True)
+        out["far_share_in_liver_reaching_tree"] = len(tree) / max(1, far)
+        out["far_recall_liver_reaching_tree"] = sum(1 for v in tree if label[v]) / max(1, len(tree))
+        out["far_recall_elsewhere"] = sum(1 for v in far_set - tree if label[v]) / max(1, far - len(tree))
         parenchyma = [hu[index] for index, value in enumerate(liver) if value and not artery[index]]
         level = median(parenchyma)
         spread = 1.4826 * median([abs(v - level) for v in parenchyma])

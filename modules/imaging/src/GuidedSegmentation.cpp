@@ -21,6 +21,35 @@ constexpr double kSoftTissueCeilingHu = 200.0;
 constexpr double kBoneMarginHu = 150.0;
 constexpr double kCoreRadiusMm = 5.0;   // include points in lumens at least this wide get a core level (hysteresis)
 constexpr double kCoreFraction = 0.6;  // the core level: this far from the lower level to the blood
+/// The thin-vessel level stays this many standard deviations of the smoothed tissue above the tissue: a front
+/// following a dim tip never crosses parenchyma on its noise.
+constexpr double kThinNoiseMultiple = 4.0;
+
+/// The noise of the dominant tissue among `values`: their robust standard deviation (1.4826 x the median absolute
+/// deviation from the median), three times over the values within 2.5 of it from the median (a shell holding liver,
+/// fat and a vein mixes levels; its dominant tissue's own spread is the noise).
+double dominantSpread(std::vector<double> values)
+{
+    const auto medianOf = [](std::vector<double> v) {
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
+    double spread = 0.0;
+    for (int pass = 0; pass < 3 && values.size() >= 8; ++pass)
+    {
+        const double level = medianOf(values);
+        std::vector<double> deviations;
+        for (double v : values)
+            deviations.push_back(std::abs(v - level));
+        spread = 1.4826 * medianOf(deviations);
+        std::vector<double> kept;
+        for (double v : values)
+            if (std::abs(v - level) <= 2.5 * spread)
+                kept.push_back(v);
+        values = std::move(kept);
+    }
+    return spread;
+}
 
 std::string mmText(const Vector3d& p)
 {
@@ -99,7 +128,7 @@ void centreInLumen(const CtVolume& ct, detail::FrontSeed& seed)
 /// The intensity window of a point: blood = the brightest smoothed HU within 1.5 mm, tissue = the upper quartile of
 /// the HU of a 6 mm shell 3 mm beyond the lumen's rough radius below blood - 60 HU (and above -200 HU: no fat or air), the window from half-way
 /// between them to blood + margin; include points are then moved to the middle of their lumen.
-detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool include)
+detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool include, double thinFraction)
 {
     const VolumeGeometry& g = ct.geometry();
     const Vector3d index = g.patientToIndex(point);
@@ -140,15 +169,15 @@ detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool inc
             }
     std::nth_element(reach.begin(), reach.begin() + std::ptrdiff_t(reach.size() / 2), reach.end());
     const double shellInner = reach[reach.size() / 2] + 1.5, shellOuter = shellInner + 4.0;
-    std::vector<double> shell;
+    std::vector<std::array<int, 3>> shell;
     forBall(shellOuter, [&](int i, int j, int k, double d) {
         if (d >= shellInner && d <= shellOuter && (i + j + k) % 2 == 0)
-            shell.push_back(ct.at(i, j, k));
+            shell.push_back({i, j, k});
     });
-    std::vector<double> tissue;
-    for (double hu : shell) // soft tissue: no fat, air or lung, and no other contrast-filled blood (< 200 HU)
-        if (hu > -200.0 && hu < std::min(blood - 60.0, kSoftTissueCeilingHu))
-            tissue.push_back(hu);
+    std::vector<double> tissue, tissueSmoothed;
+    for (const auto& [i, j, k] : shell) // soft tissue: no fat, air or lung, and no other contrast-filled blood (< 200 HU)
+        if (const double hu = ct.at(i, j, k); hu > -200.0 && hu < std::min(blood - 60.0, kSoftTissueCeilingHu))
+            tissue.push_back(hu), tissueSmoothed.push_back(detail::smoothedHu(ct, i, j, k));
     // An exclude point inside a chamber may have no soft tissue in its shell: its window then reaches 300 HU down.
     if (tissue.size() < 20 && include)
         throw Error("no tissue darker than the point " + mmText(point) + " around it (" + std::to_string(int(blood)) +
@@ -167,6 +196,7 @@ detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool inc
     seed.pointMm = point;
     seed.include = include;
     seed.lowerHu = tissueHu + 0.5 * (blood - tissueHu);
+    seed.tissueHu = tissueHu;
     seed.upperHu = blood + std::max(150.0, 0.5 * (blood - tissueHu));
     seed.boneHu = seed.upperHu + kBoneMarginHu;
     if (!include)
@@ -188,6 +218,9 @@ detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool inc
         std::nth_element(core.begin(), core.begin() + std::ptrdiff_t(core.size() / 2), core.end());
         const double lumen = core[core.size() / 2];
         seed.lowerHu = tissueHu + 0.5 * (lumen - tissueHu);
+        // Thin vessels may be followed down to thinFraction of the contrast, never into the tissue's noise.
+        seed.thinHu = std::max(tissueHu + thinFraction * (lumen - tissueHu),
+                               tissueHu + kThinNoiseMultiple * dominantSpread(tissueSmoothed));
         // An aorta-sized lumen (inscribed radius >= 5 mm) is crossed only through voxels 60 % of the way from the
         // lower level to its blood: its rim touches the vertebral body, whose cancellous bone (150..250 HU) lies
         // inside a window that reaches down half-way to fat. Small vessels keep the plain window (their centres
@@ -241,6 +274,12 @@ std::vector<ParameterSpec> guidedSegmentationParameters()
          "(explosion control as in Tschirren 2005)."},
         {"leak_min_area_mm2", "Smallest leak", "mm2", 20, 1, 1000, group,
          "Cross-sections smaller than this are never called leaks."},
+        {"thin_area_mm2", "Thin vessel", "mm2", 8.0, 0, 50, group,
+         "A front whose cross-section is under this (a vessel under 3.2 mm across) grows on down to the thin level: "
+         "the scanner's blur dims a tip under 1 mm below the half level of the blood. 0: off."},
+        {"thin_level_fraction", "Thin level", "", 0.2, 0.05, 0.5, group,
+         "The thin level: this fraction of the way from the tissue to the blood, and at least 4 robust standard "
+         "deviations of the smoothed tissue above it."},
         {"branch_length_mm", "Aortic branch length", "mm", 20, 0, 500, group,
          "Target aorta: path length followed into a branch (a cross-section under a quarter of the trunk's)."},
         {"hepatic_aorta_branch_mm", "Aortic branches (hepatic)", "mm", 5, 0, 100, group,
@@ -267,7 +306,7 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
     std::vector<detail::FrontSeed> seeds;
     for (const Vector3d& p : includes)
     {
-        seeds.push_back(seedWindow(ct, p, true));
+        seeds.push_back(seedWindow(ct, p, true, parameters.get("thin_level_fraction")));
         seeds.back().maxLengthMm = maxLength;
         if (request.target == SegmentationTarget::Aorta)
             seeds.back().branchLengthMm = parameters.get("branch_length_mm");
@@ -285,7 +324,7 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
     for (const Vector3d& p : request.excludeMm)
     {
         // An exclude front competes on equal terms: its window covers the include fronts' too.
-        seeds.push_back(seedWindow(ct, p, false));
+        seeds.push_back(seedWindow(ct, p, false, 1.0));
         seeds.back().lowerHu = std::min(seeds.back().lowerHu, includeLower);
         seeds.back().upperHu = std::max(seeds.back().upperHu, includeUpper);
         seeds.back().maxLengthMm = maxLength;
@@ -294,6 +333,7 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
     settings.waveWidthMm = parameters.get("wave_width_mm");
     settings.leakAreaFactor = parameters.get("leak_area_factor");
     settings.leakMinAreaMm2 = parameters.get("leak_min_area_mm2");
+    settings.thinAreaMm2 = parameters.get("thin_area_mm2");
     for (const StopPlane& stop : request.stops)
         settings.stops.emplace_back(stop.pointMm, stop.normal.normalized());
     detail::WaveResult waves = detail::propagateFronts(ct, seeds, settings, progress.subRange(0.0, 0.95));
@@ -313,12 +353,15 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
                       {"voxels", double(voxels)},
                       {"volume_ml", double(voxels) * ct.geometry().spacing.prod() / 1000.0},
                       {"leaks_cut", double(waves.leaksCut)},
+                      {"thin_bursts_blocked", double(waves.thinBursts)},
                       {"waves", double(waves.waves)},
                       {"work_voxels", double(waves.workVoxels)}};
     for (std::size_t n = 0; n < seeds.size(); ++n)
     {
         const std::string key = (seeds[n].include ? "include_" : "exclude_") + std::to_string(n + 1);
         result.figures[key + "_lower_hu"] = seeds[n].lowerHu;
+        if (seeds[n].include && seeds[n].thinHu < 1e29)
+            result.figures[key + "_thin_hu"] = seeds[n].thinHu;
         result.figures[key + "_upper_hu"] = seeds[n].upperHu;
         result.figures[key + "_radius_mm"] = seeds[n].inscribedRadiusMm;
     }

@@ -20,6 +20,8 @@ constexpr std::uint8_t kUntouched = 0, kFinal = 1, kBlocked = 2, kLimited = 3;
 /// Cross-sections under this (a 10 mm vessel) get the local half-level boundary (LocalHalfLevel.h).
 constexpr double kSmallVesselAreaMm2 = 80.0;
 constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
+/// The shell whose median is a thin-level voxel's background (mm from it): beyond a tip under 1 mm and its blur.
+constexpr double kShellInnerMm = 1.5, kShellOuterMm = 2.5;
 
 /// The work box: a sub-grid of the CT with its own linear indices.
 struct WorkBox
@@ -98,7 +100,7 @@ public:
         : m_ct(ct), m_seeds(seeds), m_settings(settings), m_box(workBox(ct, seeds)),
           m_smooth(m_box.count(), kUnknown), m_brightest(m_box.count(), 0.0f), m_state(m_box.count(), kUntouched), m_owner(m_box.count(), 0),
           m_dist(m_box.count(), std::numeric_limits<float>::infinity()), m_parent(m_box.count(), -1),
-          m_component(m_box.count(), -1)
+          m_component(m_box.count(), -1), m_thin(m_box.count(), 0)
     {
         const Vector3d s = ct.geometry().spacing;
         for (int dk = -1; dk <= 1; ++dk)
@@ -208,12 +210,66 @@ private:
         return false;
     }
 
-    bool accepted(std::uint32_t b, float dist, const FrontSeed& seed)
+    /// Whether voxel v grew from a thin cross-section of its include front (under thinAreaMm2, once the front has
+    /// filled its point's lumen: a front starts as a small ball everywhere).
+    bool grewFromThin(std::uint32_t v, const FrontSeed& seed) const
+    {
+        const int c = ancestorComponent(v);
+        if (c < 0)
+            return false;
+        const Component& component = m_components[std::size_t(c)];
+        return component.areaMm2 < m_settings.thinAreaMm2 && component.wave >= inflationWaves(seed);
+    }
+
+    /// The median raw HU of a shell 1.5 to 2.5 mm around a box voxel (computed once): beside a tip under 1 mm it
+    /// is the tissue the tip runs in; inside a vein or an organ as bright as the thin level it is that structure.
+    float localBackground(std::uint32_t b)
+    {
+        if (m_background.empty())
+        {
+            m_background.assign(m_box.count(), kUnknown);
+            const Vector3d s = m_ct.geometry().spacing;
+            const int ri = int(std::ceil(kShellOuterMm / s.x())), rj = int(std::ceil(kShellOuterMm / s.y())),
+                      rk = int(std::ceil(kShellOuterMm / s.z()));
+            for (int dk = -rk; dk <= rk; ++dk)
+                for (int dj = -rj; dj <= rj; ++dj)
+                    for (int di = -ri; di <= ri; ++di)
+                        if (const double d = Vector3d(di * s.x(), dj * s.y(), dk * s.z()).norm();
+                            d >= kShellInnerMm && d <= kShellOuterMm)
+                            m_shell.push_back({di, dj, dk});
+        }
+        if (std::isnan(m_background[b]))
+        {
+            const auto [i, j, k] = m_box.voxel(b);
+            const VolumeGeometry& g = m_ct.geometry();
+            std::vector<float> values;
+            values.reserve(m_shell.size());
+            for (const auto& [di, dj, dk] : m_shell)
+                if (g.contains(i + di, j + dj, k + dk))
+                    values.push_back(float(m_ct.at(i + di, j + dj, k + dk)));
+            std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
+            m_background[b] = values.empty() ? 0.0f : values[values.size() / 2];
+        }
+        return m_background[b];
+    }
+
+    /// Waves until a front has filled the lumen at its point (its cross-sections before are not the vessel's).
+    std::size_t inflationWaves(const FrontSeed& seed) const
+    {
+        return std::size_t(seed.inscribedRadiusMm / m_settings.waveWidthMm) + 3;
+    }
+
+    /// Whether the front of `seed` takes voxel b, reached at path length `dist` from voxel `from`.
+    bool accepted(std::uint32_t b, std::uint32_t from, float dist, const FrontSeed& seed)
     {
         float brightest = 0.0f;
         const float hu = smoothed(b, brightest);
-        if (hu < seed.lowerHu || hu > seed.upperHu || (seed.include && brightest > seed.boneHu))
+        const bool thin = hu < seed.lowerHu;
+        if ((thin && !(seed.include && hu >= seed.thinHu && grewFromThin(from, seed) &&
+                       hu - localBackground(b) >= seed.thinHu - seed.tissueHu)) ||
+            hu > seed.upperHu || (seed.include && brightest > seed.boneHu))
             return false;
+        m_thin[b] = thin;
         if (!seed.include)
             return dist <= seed.maxLengthMm;
         if (dist > seed.maxLengthMm)
@@ -238,7 +294,7 @@ private:
             const float next = dist + length;
             const bool limited = m_state[q] == kLimited;
             if ((m_state[q] != kUntouched && !limited) || (limited && seed.branchLengthMm < 1e8) || next >= m_dist[q] ||
-                !accepted(q, next, seed))
+                !accepted(q, v, next, seed))
                 continue;
             m_dist[q] = next;
             m_owner[q] = m_owner[v];
@@ -347,6 +403,8 @@ private:
     void judgeComponent(int id)
     {
         Component& c = m_components[std::size_t(id)];
+        if (thinBurst(c))
+            return;
         if (c.parent >= 0) // a side branch: the parent went on elsewhere (a sibling twice as wide) and this piece is small
         {
             const Component& parent = m_components[std::size_t(c.parent)];
@@ -359,7 +417,7 @@ private:
 
         // The ancestors' cross-sections (up to 12 waves back), once the front has filled the lumen at its point.
         const FrontSeed& seed = m_seeds[std::size_t(c.seed)];
-        const std::size_t inflation = std::size_t(seed.inscribedRadiusMm / m_settings.waveWidthMm) + 3;
+        const std::size_t inflation = inflationWaves(seed);
         std::vector<double> history; // newest first
         std::vector<bool> sides;
         for (int a = c.parent; a >= 0 && history.size() < 12 && m_components[std::size_t(a)].wave >= inflation;
@@ -414,6 +472,24 @@ private:
              a = m_components[std::size_t(a)].parent)
             top = a;
         m_suspects.push_back({id, top, reference});
+    }
+
+    /// A cross-section that grew from a thin one at the thin level and burst wider than twice the thin area has
+    /// run into tissue or a vein beside the tip: its voxels below the front's window are blocked (the tip's own
+    /// voxels before it stay; a leak cut would take the vessel back to its neck). True when it burst.
+    bool thinBurst(const Component& c)
+    {
+        if (c.areaMm2 <= 2.0 * m_settings.thinAreaMm2 || c.parent < 0)
+            return false;
+        const Component& parent = m_components[std::size_t(c.parent)];
+        if (parent.areaMm2 >= m_settings.thinAreaMm2 ||
+            std::none_of(c.voxels.begin(), c.voxels.end(), [&](std::uint32_t v) { return m_thin[v] != 0; }))
+            return false;
+        for (std::uint32_t v : c.voxels)
+            if (m_thin[v])
+                m_state[v] = kBlocked;
+        ++m_thinBursts;
+        return true;
     }
 
     /// Judges the suspected leaks kJunctionWaves after they jumped (or at the end, `final`): a junction when the
@@ -518,6 +594,7 @@ private:
         out.leakNotes = m_leakNotes;
         out.workVoxels = m_box.count();
         out.limitedVoxels = m_limited;
+        out.thinBursts = m_thinBursts;
         return out;
     }
 
@@ -542,6 +619,10 @@ private:
     std::vector<Suspect> m_suspects; ///< leaks awaiting the junction test
     std::vector<std::uint32_t> m_seedVoxels;
     std::size_t m_limited = 0;
+    std::vector<std::uint8_t> m_thin; ///< 1: taken below its front's window, at the thin level
+    std::vector<float> m_background;  ///< localBackground's cache (empty until a thin level is tried)
+    std::vector<std::array<int, 3>> m_shell;
+    std::size_t m_thinBursts = 0;
     double m_voxelVolume = 1.0;
 };
 

@@ -6,7 +6,8 @@
 // Method: competitive geodesic wave propagation. Every point grows its own front in order of path length (Dijkstra
 // on the 26-neighbour voxel graph, mm) through voxels whose lightly smoothed HU lies in the point's own intensity
 // window (half-way between its blood and the tissue around it, up to blood + margin, so calcium and cortical bone
-// stay out; voxels touching bone or calcium brighter than that are refused too). Fronts compete: a voxel belongs to
+// stay out; voxels touching bone or calcium brighter than that are refused too; a thin cross-section goes on down to
+// a thin-vessel level where each voxel stands out of its own surroundings). Fronts compete: a voxel belongs to
 // the first front that reaches it, so an exclude point in the right ventricle claims the ventricle before the
 // pulmonary trunk's front gets there. The front of an include point advances in waves (shells of path length);
 // each wave's connected components are the vessel's cross-sections, linked to the components they grew from.
@@ -61,7 +62,8 @@ struct SegmentationRequest
 std::vector<ParameterSpec> guidedSegmentationParameters();
 
 /// Segments from points. The label holds 1 for the vessel lumen. figures: lower_hu, upper_hu, volume_ml, voxels,
-/// leaks_cut, waves, work_voxels; warnings name every leak cut (where, the area jump) and a front stopped by the
+/// leaks_cut, thin_bursts_blocked, waves, work_voxels, and per point its window (include_N_lower_hu, _upper_hu, the
+/// thin-vessel level _thin_hu, _radius_mm); warnings name every leak cut (where, the area jump) and a front stopped by the
 /// length limit. Throws vsim::Error for a point outside the volume or not in a bright vessel (with what to try),
 /// data not in HU, and vsim::Cancelled.
 SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& parameters,
