@@ -147,11 +147,12 @@ std::vector<CommandSpec> declareCommands()
          "    of 10 times the expected peak speed. The waveform file: lines time_s,factor over one cycle",
          simulateSph},
         {"validate", 1, 1, {},
-         "validate <case|fem|network|heat|all>\n"
+         "validate <case|fem|network|sph|heat|all>\n"
          "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"
          "    fem-lame-quadratic, fem-damping), the drug network (network-cylinder, network-cone,\n"
-         "    network-conservation, network-bifurcation, network-confluence) and the run driver's template solver\n"
-         "    (heat-decay); exit 0 only when every figure is within its tolerance",
+         "    network-conservation, network-bifurcation, network-confluence), the blood flow (sph-kernel, sph-fpm,\n"
+         "    sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis: minutes each on 2 cores) and\n"
+         "    the run driver's template solver (heat-decay); exit 0 only when every figure is within its tolerance",
          validateSolvers},
         {"report", 0, 0,
          {kStudy, required("out"), value("sections"), value("page"), value("dicom-pdf"), flag("anonymize"),

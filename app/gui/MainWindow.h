@@ -118,6 +118,12 @@ public:
     /// the outlets and the filling player. False without centerlines or for malformed input.
     bool simulateDrugDelivery(const DrugDeliveryRequest& request);
     DrugDeliveryPanel* drugDeliveryPanel() const { return m_drugPanel; }
+    /// Runs the blood flow (SPH) through the vessels of the newest centerlines in the background (Flow > Blood Flow)
+    /// with the Flow > Blood Flow Parameters; the run is added (undoable) and played, its stenosis figures in the
+    /// status bar. False without centerlines.
+    bool simulateBloodFlow();
+    ParameterSet& bloodFlowSetup() { return m_bloodFlowSetup; }
+    ParameterSet& sphParameters() { return m_sphParameters; }
     /// Loads Run artifact `id` in the background (double-click in the study tree) and plays it in the Run Player
     /// dock: each frame drawn in 3D coloured by the player's field, its legend naming the field, the frame, and the
     /// run's status when it did not converge or stopped early. False without a study or for another kind.
@@ -200,6 +206,7 @@ private:
     void createLabelEditToolBar();
     void createWallMenu();
     void createDrugMenu();
+    void createFlowMenu();
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
     /// The player's current frame of the played run in the 3D view (MainWindowRuns.cpp).
     void drawRunFrame();
@@ -257,6 +264,7 @@ private:
     ParameterSet m_wallMeshParameters;
     ParameterSet m_femParameters;
     ParameterSet m_networkParameters;
+    ParameterSet m_bloodFlowSetup, m_sphParameters;
     DrugDeliveryRequest m_drugRequest;
     DrugDeliveryPanel* m_drugPanel = nullptr;
     QDockWidget* m_drugDock = nullptr;

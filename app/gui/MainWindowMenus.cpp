@@ -95,6 +95,7 @@ void MainWindow::createMenus()
     createVesselMenu();
     createWallMenu();
     createDrugMenu();
+    createFlowMenu();
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("Window/Level: &CTA"), this, [this] { m_views->applyWindowLevel(viz::kCtaPreset); });

@@ -2,6 +2,7 @@
 
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Units.h"
 #include "vsim/mesh/ParticleSeeding.h"
 #include "vsim/sim/sph/SphSolver.h"
 
@@ -141,12 +142,73 @@ EndPlane endPlane(const VesselNetwork& network, int node, double spacingMm)
     return plane;
 }
 
+/// The lumen's inscribed radius at `pointMm` (mm): the distance to the nearest voxel that is not lumen, searched within
+/// `reachMm` (returned when none is nearer).
+double inscribedRadiusMm(const LabelVolume& label, const Eigen::Vector3d& pointMm, double reachMm, std::uint8_t lumen = 1)
+{
+    const VolumeGeometry& g = label.geometry();
+    const Eigen::Vector3d centre = g.patientToIndex(pointMm);
+    const Eigen::Vector3d halfWidth = (reachMm / g.spacing.array()).ceil().matrix();
+    double nearest2 = reachMm * reachMm;
+    for (int k = int(centre.z() - halfWidth.z()); k <= int(centre.z() + halfWidth.z()); ++k)
+        for (int j = int(centre.y() - halfWidth.y()); j <= int(centre.y() + halfWidth.y()); ++j)
+            for (int i = int(centre.x() - halfWidth.x()); i <= int(centre.x() + halfWidth.x()); ++i)
+                if (!g.contains(i, j, k) || label.at(i, j, k) != lumen)
+                {
+                    const double d2 = (g.indexToPatient(Eigen::Vector3d(i, j, k)) - pointMm).squaredNorm();
+                    nearest2 = std::min(nearest2, d2);
+                }
+    return std::sqrt(nearest2);
+}
+
 bool given(const BloodFlowSetup& setup, const std::string& name)
 {
     return std::find(setup.given.begin(), setup.given.end(), name) != setup.given.end();
 }
 
 } // namespace
+
+std::vector<ParameterSpec> bloodFlowSetupParameters()
+{
+    using K = ParameterSpec::Kind;
+    return {
+        {"inlet_mean_velocity_m_s", "Inlet mean velocity", "m/s", 0.2, -10.0, 10.0, "Inlet",
+         "over the inlet's section (the end of the largest vessel), parabolic, ramped up from rest", K::Real},
+        {"inlet_flow_rate_ml_s", "Inlet flow rate", "ml/s", 0.0, 0.0, 1e4, "Inlet", "> 0: replaces the mean velocity",
+         K::Real},
+        {"outlet_pressure_mmhg", "Outlet pressure", "mmHg", 0.0, -100.0, 300.0, "Outlets",
+         "at every other vessel end (gauge: the pressures reported are relative to it)", K::Real},
+        {"compare_mm", "Compare at", "mm", 6.0, 0.5, 500.0, "Stenosis figures",
+         "the sections upstream and downstream of the throat the velocity ratios compare with (thesis: 6 mm in the "
+         "hand, 30 mm in the heart)", K::Real},
+        {"spacing_mm", "Particle spacing", "mm", 0.0, 0.0, 100.0, "Particles", "0: a fifth of the inlet's radius",
+         K::Real},
+        {"end_time_s", "End time", "s", 0.0, 0.0, 1e4, "Time",
+         "0: twice the inflow's ramp (two quarter-wave periods of the vessel)", K::Real},
+        {"frames", "Frames", "", 20, 1, 10000, "Time", "frames kept over the run", K::Integer},
+    };
+}
+
+BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters)
+{
+    BloodFlowSetup setup;
+    setup.parameters = solverParameters;
+    for (const ParameterSpec& spec : solverParameters.specs()) // the chosen three only where the form changed them
+        if ((spec.key != "spacing_mm" && spec.key != "end_time_s" && spec.key != "sound_speed_m_s") ||
+            solverParameters.get(spec.key) != spec.defaultValue)
+            setup.given.push_back(spec.key);
+    if (form.get("inlet_flow_rate_ml_s") > 0.0)
+        setup.inlet.kind = BloodFlowInlet::Kind::FlowRate, setup.inlet.value = 1e-6 * form.get("inlet_flow_rate_ml_s");
+    else
+        setup.inlet.kind = BloodFlowInlet::Kind::MeanVelocity, setup.inlet.value = form.get("inlet_mean_velocity_m_s");
+    setup.outletPressurePa = units::mmHgToPa(form.get("outlet_pressure_mmhg"));
+    setup.compareMm = form.get("compare_mm");
+    for (const char* key : {"spacing_mm", "end_time_s"})
+        if (form.get(key) > 0.0)
+            setup.parameters.set(key, form.get(key)), setup.given.push_back(key);
+    setup.frames = int(form.get("frames"));
+    return setup;
+}
 
 BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup, sim::RunControl control,
                           const Progress& progress)
@@ -157,7 +219,7 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     const std::string labelId = labelOfCenterlines(study, setup.centerlinesId);
     if (labelId.empty())
         throw Error("the centerlines '" + setup.centerlinesId + "' have no lumen label to fill with blood");
-    const std::vector<int> ends = network.endNodes();
+    std::vector<int> ends = network.endNodes();
     if (ends.size() < 2)
         throw Error("the vessels need at least two open ends (an inlet and an outlet); the centerlines have " +
                     std::to_string(ends.size()));
@@ -189,6 +251,19 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
             if (smallest < narrowest)
                 narrowest = smallest, compared = std::move(path), comparedOutlet = end;
         }
+
+    // The narrowest lumen along the compared path (its inscribed radius on the centerline every spacing, away from the
+    // ends, where the image's border cuts the lumen: the centerlines' conical segments do not see a stenosis within a
+    // segment).
+    const LabelVolume label = study.loadLabel(labelId);
+    const double skip = 2.0 * spacingMm + 1.5 * std::max(compared.radii.front(), compared.radii.back()); // the ends
+    for (double s = skip; s <= compared.length() - skip; s += spacingMm)
+    {
+        Eigen::Vector3d point, tangent;
+        double radius = 0.0;
+        compared.at(s, point, tangent, radius);
+        narrowest = std::min(narrowest, std::max(0.5 * spacingMm, inscribedRadiusMm(label, point, 1.5 * radius + spacingMm)));
+    }
 
     // The inflow's scale, the sound speed (10 times the largest speed expected: the inlet's mean speed through the
     // narrowest section, parabolic) and the times.
@@ -225,6 +300,7 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     mesh::ParticleSeeding seeding;
     seeding.spacingMm = spacingMm;
     seeding.wallLayers = int(std::ceil(depthMm / spacingMm - 1e-9));
+    std::stable_partition(ends.begin(), ends.end(), [&](int end) { return end == inletNode; }); // the inlet first
     std::vector<EndPlane> planes;
     for (int end : ends)
     {
@@ -258,7 +334,7 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     }
     progress.report(0.05, "particles from the lumen label");
     SimulationInput input;
-    input.data["particles"] = mesh::seedVesselParticles(study.loadLabel(labelId), seeding);
+    input.data["particles"] = mesh::seedVesselParticles(label, seeding);
     input.sources["particles"] = labelId;
 
     // Sections along the compared path between its planes, every two spacings.

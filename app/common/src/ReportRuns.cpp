@@ -7,6 +7,8 @@
 #include "vsim/sim/fem/FemValidation.h"
 #include "vsim/sim/network/NetworkRun.h"
 #include "vsim/sim/network/NetworkValidation.h"
+#include "vsim/sim/sph/SphSolver.h"
+#include "vsim/sim/sph/SphValidation.h"
 
 #include <set>
 
@@ -39,6 +41,16 @@ SolverInfo solverOf(const study::Artifact& run)
                 sim::fem::femParameters(), sim::fem::femValidationCases(),
                 [](const std::string& name, const Progress& p) { return sim::fem::runFemValidation(name, p); },
                 sim::fem::femValidationConfiguration()};
+    if (run.provenance.command == "simulate sph")
+        // The report re-runs the quick cases (seconds); the flow cases (a minute or more each) run in the test suite
+        // and with vascusim-cli validate sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis.
+        return {"Blood flow: weakly compressible SPH (thesis ch. 5; Liu quartic kernel, Tait equation of state, "
+                "delta-SPH density diffusion, Morris viscosity with no-slip walls whose pressure is extrapolated from "
+                "the blood, leapfrog with an adaptive step) on particles seeded in the lumen label; a flow-rate inlet "
+                "at the largest vessel's end and pressure outlets with particle buffers; double precision on the CPU.",
+                sim::sph::sphParameters(), sim::sph::sphParameters(), {"sph-kernel", "sph-fpm"},
+                [](const std::string& name, const Progress& p) { return sim::sph::runSphValidation(name, p); },
+                {"cpu", 0, 0.0, "the CPU backend in double precision, explicit steps (no linear solves)"}};
     return {"Drug delivery: two-phase homogeneous fluid in a network of conical Hagen-Poiseuille pipes, Kirchhoff "
             "solve, plug filling (thesis ch. 6).",
             sim::network::networkParameters(), sim::network::networkParameters(), sim::network::networkValidationCases(),

@@ -1,6 +1,9 @@
 #include "ReportSections.h"
 
 #include "ReportSupport.h"
+#include "vsim/app/RunRecord.h"
+
+#include <cstdlib>
 
 namespace vsim::app::detail {
 namespace {
@@ -30,9 +33,32 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
     report::Plot plot = diameterPlot(worst, "Diameter along the narrowest segment");
     plot.references = {{"reference diameter", worst.referenceDiameterMm}};
     section.blocks.push_back(plot);
-    section.blocks.push_back(report::Paragraph{
-        "Blockage velocity ratios, the pressure drop, the velocity along the centerline and the wall pressure come "
-        "from a blood-flow run; this study has none (the blood-flow solver is not part of this version)."});
+    const study::Artifact* flow = newestRun(study, "simulate sph");
+    if (!flow || !flow->attributes.count("stenosis_peak_velocity_ratio"))
+    {
+        section.blocks.push_back(report::Paragraph{
+            std::string("Blockage velocity ratios and the pressure drop come from a blood-flow run (Flow > Blood Flow, "
+                        "vascusim-cli simulate sph); ") +
+            (flow ? "the study's run has no settled flow to measure them (see its warnings)." : "this study has none.")});
+        return section;
+    }
+    const std::string compared = textOr(flow->attributes, "stenosis_compared_at_mm", "?");
+    report::MetricTable figures{"Blood flow (SPH run " + flow->id + "): the throat against the sections " +
+                                    numberText(std::atof(compared.c_str())) +
+                                    " mm upstream and downstream along the centerline, time-averaged over the settled flow",
+                                {}};
+    addMetrics(figures, *flow,
+               {{"stenosis_peak_velocity_ratio", "Peak velocity ratio, throat / upstream (PSV ratio's counterpart)", ""},
+                {"stenosis_peak_velocity_ratio_downstream", "Peak velocity ratio, throat / downstream", ""},
+                {"stenosis_mean_velocity_ratio", "Mean velocity ratio, throat / upstream (a mass check)", ""},
+                {"stenosis_area_ratio", "Flow area ratio, upstream / throat (from the particles)", ""},
+                {"stenosis_throat_peak_velocity_m_s", "Throat peak velocity (fastest 5 % of the section)", "m/s"},
+                {"stenosis_pressure_drop_mmhg", "Pressure drop, upstream - downstream (section means)", "mmHg"},
+                {"stenosis_pressure_ratio", "Distal / proximal pressure (against the outlets' pressure)", ""},
+                {"stenosis_flow_rate_ratio", "Flow rate throat / upstream (1 when settled)", ""}});
+    section.blocks.push_back(figures);
+    if (const std::string warning = runStatusWarning(runStatusOf(*flow)); !warning.empty())
+        section.blocks.push_back(report::Paragraph{"These blood-flow figures come from a run that is " + warning + "."});
     return section;
 }
 

@@ -170,7 +170,7 @@ void OpenBoundaries::impose(ParticleState& particles, const NeighbourGrid& grid,
                              const std::size_t sj = std::size_t(j);
                              if (!particles.isFluid(sj))
                                  return;
-                             const double w = kernel.value(r) * particles.mass[sj] / particles.density[sj];
+                             const double w = kernel.interpolationWeight(r) * particles.mass[sj] / particles.density[sj];
                              weight += w;
                              relative += w * particles.density[sj] / fluid.mixtureDensity(particles.voidFraction[sj]);
                              velocity += w * particles.velocity[sj];

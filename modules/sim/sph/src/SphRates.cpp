@@ -153,11 +153,14 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
 }
 
 void extrapolateWallPressure(ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
-                             const FluidModel& fluid, double timeS, bool freeSurface)
+                             const FluidModel& fluid, bool freeSurface)
 {
     const double floorPa = freeSurface ? 0.0 : -INFINITY;
     const int n = int(particles.size());
-    const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
+    // Gravity only: a driving body force (the validation channels' stand-in for a pressure gradient) is balanced by
+    // the fluid's viscosity, not by a pressure gradient, so the walls must not extrapolate one from it (with it the
+    // Womersley pipe at alpha 8 blew up: the walls' pressure swung along the axis with the force).
+    const Eigen::Vector3d& external = fluid.gravity;
 #pragma omp parallel for schedule(dynamic, 256)
     for (int i = 0; i < n; ++i)
     {
@@ -171,7 +174,7 @@ void extrapolateWallPressure(ParticleState& particles, const NeighbourGrid& grid
                                   const std::size_t sj = std::size_t(j);
                                   if (particles.wall[sj])
                                       return;
-                                  const double w = kernel.value(r);
+                                  const double w = kernel.interpolationWeight(r);
                                   weight += w;
                                   pressure += w * (fluid.pressure(particles.density[sj], particles.voidFraction[sj]) +
                                                    particles.density[sj] * external.dot(rij));

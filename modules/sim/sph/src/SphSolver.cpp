@@ -159,7 +159,7 @@ void SphSolver::updateRates(double timeS)
 {
     if (!m_openBoundaries.empty())
         m_openBoundaries.impose(m_particles, *m_grid, *m_kernel, m_fluid, timeS);
-    extrapolateWallPressure(m_particles, *m_grid, *m_kernel, m_fluid, timeS, m_freeSurface);
+    extrapolateWallPressure(m_particles, *m_grid, *m_kernel, m_fluid, m_freeSurface);
     computeRates(m_particles, pressures(m_particles, m_fluid), *m_grid, *m_kernel, m_fluid, timeS, m_rates);
 }
 

@@ -63,6 +63,15 @@ struct BloodFlowRun
     std::vector<std::string> warnings;
 };
 
+/// The setup as a form declares it (the workstation's Flow > Blood Flow Parameters): inlet_mean_velocity_m_s,
+/// inlet_flow_rate_ml_s (> 0 replaces the velocity), outlet_pressure_mmhg, compare_mm, spacing_mm and end_time_s (0:
+/// chosen), frames.
+std::vector<ParameterSpec> bloodFlowSetupParameters();
+/// The setup from that form and the solver's parameters (every one counts as given, but the solver's spacing_mm,
+/// end_time_s and sound_speed_m_s only where they differ from their defaults; the form's spacing and end time at 0
+/// are chosen).
+BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters);
+
 /// Runs the blood flow of the study's centerlines (their label's lumen) under `control` (without a frame schedule:
 /// setup.frames over the end time). Throws vsim::Error for a
 /// study without the centerlines' label, an inlet node that is not an end, a network of fewer than two ends, or what

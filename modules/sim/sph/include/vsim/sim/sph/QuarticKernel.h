@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 namespace vsim::sim::sph {
 
 class QuarticKernel
@@ -18,8 +20,11 @@ public:
 
     double smoothingLength() const { return m_h; }
     double support() const { return 2.0 * m_h; }
-    /// W at distance r (m).
+    /// W at distance r (m). W = norm (2 - q)^2 (1/6 + q/6 - 5/32 q^2): slightly negative for q in (1.696, 2).
     double value(double r) const;
+    /// max(W, 0): the weights of Shepard interpolations (walls' pressures, open boundaries' extrapolation), where the
+    /// negative lobe could cancel the sum of weights of a sparse neighbourhood (a deep wall particle's).
+    double interpolationWeight(double r) const { return std::max(0.0, value(r)); }
     /// dW/dr at distance r (m); 0 at r = 0 and beyond the support.
     double derivative(double r) const;
     /// grad_i W(x_i - x_j) for rij = x_i - x_j: dW/dr rij / r (the zero vector at r = 0).

@@ -54,16 +54,19 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                   const QuarticKernel& kernel, const FluidModel& fluid, double timeS, SphRates& rates);
 
 /// The wall particles' pressure from the fluid around them (Adami, Hu & Adams 2012, J Comput Phys 231:7057, for walls at
-/// rest): p_w = sum_f W_wf (p_f + rho_f (g + f(t)) . (x_w - x_f)) / sum_f W_wf over the fluid and buffer particles f
+/// rest): p_w = sum_f W+_wf (p_f + rho_f g . (x_w - x_f)) / sum_f W+_wf, W+ = max(W, 0) (the quartic kernel's negative
+/// lobe near 2h let a deep wall particle's sum of weights vanish: sph-mass blew up), over the fluid and buffer particles f
 /// within the support, set as the wall particle's density through the equation of state; a wall particle without
 /// fluid around it keeps its density. The dynamic boundary's own continuity (Crespo et al. 2007), which it replaces,
 /// lags the fluid's pressure wherever the fluid is compressed as a whole (an inflow's rise): the fluid next to the
 /// wall then saw a lower pressure in the wall and was pushed into it. With a free surface (a tank, a dam break) the
 /// extrapolation is floored at 0 Pa: walls above the surface would otherwise extrapolate the fluid's hydrostatics
 /// into the air as suction (sph-hydrostatic read 2.2 % high with it, 1.7 % without); vessels keep negative gauge
-/// pressures (a throat's Bernoulli drop below the outlet's pressure).
+/// pressures (a throat's Bernoulli drop below the outlet's pressure). Gravity only, not the driving body force: that
+/// force (the validation channels' stand-in for a pressure gradient) is balanced by the viscosity, not by a pressure
+/// gradient, and a wall pressure swinging along the axis with it made the Womersley pipe at alpha 8 blow up.
 void extrapolateWallPressure(ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
-                             const FluidModel& fluid, double timeS, bool freeSurface);
+                             const FluidModel& fluid, bool freeSurface);
 
 /// The explicit step's limit: CFL x min(min_i sqrt(h / |a_i|), h / (c0 + largestViscousRate)), and the
 /// viscous limit 0.125 h^2 / nu at the fluid's largest kinematic viscosity (Morris et al. 1997); s.

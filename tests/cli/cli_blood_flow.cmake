@@ -1,0 +1,57 @@
+# Blood flow (issue 18) as a user runs it: a small analytic stenosis phantom (a 6 mm artery with a 50 % diameter
+# stenosis) through segment, skeleton and centerline, then `simulate sph` at a coarse spacing for 20 ms (the plumbing:
+# the inlet and the outlet at the vessel's ends, the particle frames written to --out and kept as a Run in the study,
+# the mass ledger balanced, a run too short to settle says so and gives no stenosis figures); the report's stenosis
+# section then points at it. Bad input: an unknown unit, a profile, the CUDA backend (not built for SPH yet), a
+# folder that is not VascuSim's.
+include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
+
+set(study ${WORK}/flow.vsim)
+run_cli(0 ignored phantom stenosis --style analytic --out ${WORK}/ph --size 96x96x64 --spacing 0.8,0.8,1.0)
+run_cli(0 ignored import ${WORK}/ph/dicom --study ${study})
+run_cli(0 ignored segment --study ${study})
+run_cli(0 ignored skeleton --study ${study})
+run_cli(0 ignored centerline --study ${study})
+
+run_cli(0 flow simulate sph --study ${study} --inlet 0.1m/s --spacing 1.0mm --until 0.02s --frames 4 --out ${WORK}/run)
+string(JSON stopped GET "${flow}" run_status stopped_by)
+string(JSON boundaries LENGTH "${flow}" boundaries)
+string(JSON inlet GET "${flow}" boundaries 0 prescribed)
+string(JSON frames GET "${flow}" frames)
+string(JSON run_id GET "${flow}" run_artifact)
+string(JSON inflow GET "${flow}" metrics inflow_kg)
+string(JSON warnings GET "${flow}" warnings)
+string(JSON stenosis TYPE "${flow}" stenosis)
+if(NOT stopped STREQUAL "end" OR NOT boundaries EQUAL 2 OR NOT inlet STREQUAL "flow rate" OR frames LESS 4
+   OR NOT run_id MATCHES "^run-" OR NOT EXISTS ${WORK}/run/series.pvd OR NOT EXISTS ${WORK}/run/metrics.json
+   OR NOT warnings MATCHES "not of a settled flow" OR NOT stenosis STREQUAL "NULL")
+    message(FATAL_ERROR "simulate sph: stopped by '${stopped}', ${boundaries} boundaries, ${frames} frames, run '${run_id}'\n${flow}")
+endif()
+# The ledger: inflow - outflow - absorbed = the fluid's mass change, to rounding.
+string(JSON outflow GET "${flow}" metrics outflow_kg)
+string(JSON absorbed GET "${flow}" metrics absorbed_kg)
+string(JSON change GET "${flow}" metrics fluid_mass_change_kg)
+execute_process(COMMAND ${PYTHON} -c "import sys; i,o,a,c = map(float, sys.argv[1:]); sys.exit(0 if abs(i - o - a - c) <= 1e-9 * max(i, 1e-30) + 1e-18 else 1)"
+                ${inflow} ${outflow} ${absorbed} ${change} RESULT_VARIABLE balanced)
+if(NOT balanced EQUAL 0)
+    message(FATAL_ERROR "simulate sph: the ledger does not balance: in ${inflow}, out ${outflow}, absorbed ${absorbed}, change ${change} kg")
+endif()
+run_cli(0 info info ${study})
+if(NOT info MATCHES "Blood flow \\(SPH\\)")
+    message(FATAL_ERROR "the study does not list the blood-flow run:\n${info}")
+endif()
+
+# Refusals: exit 2 for usage, 1 for what cannot be done; nothing is added.
+run_cli(2 unit simulate sph --study ${study} --inlet 5furlongs)
+run_cli(2 profile simulate sph --study ${study} --profile square)
+run_cli(1 cuda simulate sph --study ${study} --backend cuda)
+if(NOT cuda MATCHES "CUDA backend is not part of this version")
+    message(FATAL_ERROR "simulate sph --backend cuda: ${cuda}")
+endif()
+file(MAKE_DIRECTORY ${WORK}/stranger)
+file(WRITE ${WORK}/stranger/notes.txt "a user's notes")
+run_cli(1 refused simulate sph --study ${study} --spacing 1.0mm --until 0.001s --out ${WORK}/stranger)
+file(READ ${WORK}/stranger/notes.txt notes)
+if(NOT notes STREQUAL "a user's notes")
+    message(FATAL_ERROR "simulate sph touched a folder it did not create")
+endif()
