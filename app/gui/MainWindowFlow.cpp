@@ -7,6 +7,7 @@
 #include "ParameterForm.h"
 #include "vsim/app/BloodFlowPipeline.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/core/Units.h"
 
 #include <QMenu>
 #include <QMenuBar>
@@ -50,11 +51,11 @@ bool MainWindow::simulateBloodFlow()
                 showError(tr("Blood flow"), tr("Read these results with care: %1").arg(QString::fromStdString(warning)));
             else if (flow->stenosis)
                 statusBar()->showMessage(
-                    tr("Blood flow: peak velocity ratio %1 at %2 mm (mean ratio %3), pressure drop %4 Pa")
+                    tr("Blood flow: peak velocity ratio %1 at %2 mm along the centerline (mean ratio %3), pressure drop %4 mmHg")
                         .arg(flow->stenosis->peakRatio, 0, 'f', 2)
                         .arg(flow->stenosis->distanceMm, 0, 'f', 0)
                         .arg(flow->stenosis->meanRatio, 0, 'f', 2)
-                        .arg(flow->stenosis->pressureDropPa, 0, 'f', 0),
+                        .arg(units::paToMmHg(flow->stenosis->pressureDropPa), 0, 'f', 1),
                     10000);
             else
                 statusBar()->showMessage(tr("Blood flow: no stenosis figures (%1)")
