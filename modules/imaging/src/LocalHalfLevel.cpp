@@ -1,5 +1,6 @@
 #include "LocalHalfLevel.h"
 
+#include "ShellOffsets.h"
 #include "SkeletonGrid.h"
 #include "WaveFront.h"
 
@@ -34,23 +35,6 @@ struct Region
         return std::size_t(i - low[0]) + std::size_t(size[0]) * (std::size_t(j - low[1]) + std::size_t(size[1]) * std::size_t(k - low[2]));
     }
 };
-
-/// Offsets (voxels) of a ball shell between two radii (mm).
-std::vector<std::array<int, 3>> shellOffsets(const Eigen::Vector3d& spacing, double inner, double outer)
-{
-    std::vector<std::array<int, 3>> offsets;
-    const int ri = int(std::ceil(outer / spacing.x())), rj = int(std::ceil(outer / spacing.y())),
-              rk = int(std::ceil(outer / spacing.z()));
-    for (int dk = -rk; dk <= rk; ++dk)
-        for (int dj = -rj; dj <= rj; ++dj)
-            for (int di = -ri; di <= ri; ++di)
-            {
-                const double d = Eigen::Vector3d(di * spacing.x(), dj * spacing.y(), dk * spacing.z()).norm();
-                if (d >= inner && d <= outer)
-                    offsets.push_back({di, dj, dk});
-            }
-    return offsets;
-}
 
 /// The label's 26 neighbours of a voxel as SkeletonGrid's bits (outside the grid: background).
 std::uint32_t neighbourBits(const LabelVolume& label, int i, int j, int k)

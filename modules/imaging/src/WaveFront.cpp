@@ -1,11 +1,14 @@
 #include "WaveFront.h"
 
 #include "LocalHalfLevel.h"
+#include "ShellOffsets.h"
+#include "WorkBox.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <unordered_map>
 
@@ -22,46 +25,6 @@ constexpr double kSmallVesselAreaMm2 = 80.0;
 constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
 /// The shell whose median is a thin-level voxel's background (mm from it): beyond a tip under 1 mm and its blur.
 constexpr double kShellInnerMm = 1.5, kShellOuterMm = 2.5;
-
-/// The work box: a sub-grid of the CT with its own linear indices.
-struct WorkBox
-{
-    std::array<int, 3> low{0, 0, 0}, size{0, 0, 0};
-    std::size_t count() const { return std::size_t(size[0]) * std::size_t(size[1]) * std::size_t(size[2]); }
-    std::uint32_t index(int i, int j, int k) const
-    {
-        return std::uint32_t((i - low[0]) + size[0] * ((j - low[1]) + size[1] * (k - low[2])));
-    }
-    std::array<int, 3> voxel(std::uint32_t b) const
-    {
-        const int i = int(b % std::uint32_t(size[0])), j = int((b / std::uint32_t(size[0])) % std::uint32_t(size[1]));
-        const int k = int(b / (std::uint32_t(size[0]) * std::uint32_t(size[1])));
-        return {i + low[0], j + low[1], k + low[2]};
-    }
-};
-
-WorkBox workBox(const CtVolume& ct, const std::vector<FrontSeed>& seeds)
-{
-    const VolumeGeometry& g = ct.geometry();
-    Eigen::Vector3d low = Eigen::Vector3d::Constant(1e300), high = Eigen::Vector3d::Constant(-1e300);
-    for (const FrontSeed& seed : seeds)
-    {
-        const double reach = std::min(seed.maxLengthMm, 1e5);
-        for (int corner = 0; corner < 8; ++corner)
-        {
-            const Vector3d offset((corner & 1) ? reach : -reach, (corner & 2) ? reach : -reach, (corner & 4) ? reach : -reach);
-            const Vector3d index = g.patientToIndex(seed.pointMm + offset);
-            low = low.cwiseMin(index), high = high.cwiseMax(index);
-        }
-    }
-    WorkBox box;
-    for (int a = 0; a < 3; ++a)
-    {
-        box.low[a] = std::clamp(int(std::floor(low[a])), 0, g.dims[a] - 1);
-        box.size[a] = std::clamp(int(std::ceil(high[a])), 0, g.dims[a] - 1) - box.low[a] + 1;
-    }
-    return box;
-}
 
 constexpr std::size_t kJunctionWaves = 6; ///< waves after a jump before it is judged a junction or a leak
 
@@ -225,32 +188,10 @@ private:
     /// is the tissue the tip runs in; inside a vein or an organ as bright as the thin level it is that structure.
     float localBackground(std::uint32_t b)
     {
-        if (m_background.empty())
-        {
-            m_background.assign(m_box.count(), kUnknown);
-            const Vector3d s = m_ct.geometry().spacing;
-            const int ri = int(std::ceil(kShellOuterMm / s.x())), rj = int(std::ceil(kShellOuterMm / s.y())),
-                      rk = int(std::ceil(kShellOuterMm / s.z()));
-            for (int dk = -rk; dk <= rk; ++dk)
-                for (int dj = -rj; dj <= rj; ++dj)
-                    for (int di = -ri; di <= ri; ++di)
-                        if (const double d = Vector3d(di * s.x(), dj * s.y(), dk * s.z()).norm();
-                            d >= kShellInnerMm && d <= kShellOuterMm)
-                            m_shell.push_back({di, dj, dk});
-        }
-        if (std::isnan(m_background[b]))
-        {
-            const auto [i, j, k] = m_box.voxel(b);
-            const VolumeGeometry& g = m_ct.geometry();
-            std::vector<float> values;
-            values.reserve(m_shell.size());
-            for (const auto& [di, dj, dk] : m_shell)
-                if (g.contains(i + di, j + dj, k + dk))
-                    values.push_back(float(m_ct.at(i + di, j + dj, k + dk)));
-            std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
-            m_background[b] = values.empty() ? 0.0f : values[values.size() / 2];
-        }
-        return m_background[b];
+        if (!m_background)
+            m_background.emplace(m_ct, m_box.count(), kShellInnerMm, kShellOuterMm);
+        const auto [i, j, k] = m_box.voxel(b);
+        return m_background->at(b, i, j, k);
     }
 
     /// Waves until a front has filled the lumen at its point (its cross-sections before are not the vessel's).
@@ -620,8 +561,7 @@ private:
     std::vector<std::uint32_t> m_seedVoxels;
     std::size_t m_limited = 0;
     std::vector<std::uint8_t> m_thin; ///< 1: taken below its front's window, at the thin level
-    std::vector<float> m_background;  ///< localBackground's cache (empty until a thin level is tried)
-    std::vector<std::array<int, 3>> m_shell;
+    std::optional<ShellMedians> m_background; ///< localBackground's cache (made when a thin level is first tried)
     std::size_t m_thinBursts = 0;
     double m_voxelVolume = 1.0;
 };
