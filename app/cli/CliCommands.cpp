@@ -277,6 +277,11 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
     for (const auto& [key, value] : result.figures) // each point's window (HU) and lumen radius (mm)
         if (key.rfind("include_", 0) == 0 || key.rfind("exclude_", 0) == 0)
             std::cout << "  " << key << " " << numberText(value) << "\n";
+    if (const auto joined = result.figures.find("points_joined_by_paths"); joined != result.figures.end() && joined->second > 0)
+        std::cout << "  minimal paths on vesselness: " << numberText(joined->second) << " point(s) joined to the aorta's "
+                  << "label, " << numberText(result.figures.at("path_length_mm")) << " mm of path ("
+                  << numberText(result.figures.at("path_dim_mm")) << " mm below its half level), "
+                  << numberText(result.figures.at("path_voxels_added")) << " voxels added\n";
     for (const std::string& warning : result.warnings)
         std::cout << "warning: " << warning << "\n";
     return 0;

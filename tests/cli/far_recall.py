@@ -64,6 +64,17 @@ def aorta_per_slice(mask, sizes, spacing, min_area_mm2=150.0):
     return found
 
 
+def neighbours26(v, nx, ny, nz=None):
+    """The 26 neighbours of linear voxel index v (x fastest) inside the grid (nz None: no bound along z)."""
+    i, j, k = v % nx, (v // nx) % ny, v // (nx * ny)
+    for dk in (-1, 0, 1):
+        for dj in (-1, 0, 1):
+            for di in (-1, 0, 1):
+                ii, jj, kk = i + di, j + dj, k + dk
+                if (di or dj or dk) and 0 <= ii < nx and 0 <= jj < ny and kk >= 0 and (nz is None or kk < nz):
+                    yield ii + nx * (jj + ny * kk)
+
+
 def far_pieces(voxels, nx, ny):
     """The 26-connected pieces of a set of linear voxel indices (x fastest)."""
     left, pieces = set(voxels), []
@@ -71,16 +82,11 @@ def far_pieces(voxels, nx, ny):
         stack = [left.pop()]
         piece = set(stack)
         while stack:
-            v = stack.pop()
-            i, j, k = v % nx, (v // nx) % ny, v // (nx * ny)
-            for dk in (-1, 0, 1):
-                for dj in (-1, 0, 1):
-                    for di in (-1, 0, 1):
-                        q = (k + dk) * nx * ny + (j + dj) * nx + (i + di)
-                        if q in left and 0 <= i + di < nx and 0 <= j + dj < ny:
-                            left.remove(q)
-                            piece.add(q)
-                            stack.append(q)
+            for q in neighbours26(stack.pop(), nx, ny):
+                if q in left:
+                    left.remove(q)
+                    piece.add(q)
+                    stack.append(q)
         pieces.append(piece)
     return pieces
 

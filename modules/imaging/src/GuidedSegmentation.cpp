@@ -1,5 +1,6 @@
 #include "vsim/imaging/GuidedSegmentation.h"
 
+#include "VesselPaths.h"
 #include "WaveFront.h"
 
 #include "vsim/core/Error.h"
@@ -21,6 +22,9 @@ constexpr double kSoftTissueCeilingHu = 200.0;
 constexpr double kBoneMarginHu = 150.0;
 constexpr double kCoreRadiusMm = 5.0;   // include points in lumens at least this wide get a core level (hysteresis)
 constexpr double kCoreFraction = 0.6;  // the core level: this far from the lower level to the blood
+/// Target hepatic: the hepatic arteries are under 8 mm across (the common hepatic artery of adults 4-6 mm, e.g.
+/// Song et al., Radiology 2010 on celiac variants): a point centred into a wider lumen was pulled into a vein.
+constexpr double kHepaticArteryRadiusMm = 4.0;
 /// The thin-vessel level stays this many standard deviations of the smoothed tissue above the tissue: a front
 /// following a dim tip never crosses parenchyma on its noise.
 constexpr double kThinNoiseMultiple = 4.0;
@@ -285,6 +289,10 @@ std::vector<ParameterSpec> guidedSegmentationParameters()
         {"hepatic_aorta_branch_mm", "Aortic branches (hepatic)", "mm", 5, 0, 100, group,
          "Target hepatic: the aortic point's front (the widest) fills the aorta but enters its branches only this far; "
          "the other points' fronts grow the tree and cannot pass the aorta."},
+        {"hepatic_minimal_paths", "Join points by minimal paths", "", 1, 0, 1, group,
+         "Target hepatic: a point whose front stopped short of the aorta's (cut at a touching vein or organ) is joined "
+         "to it along the minimal path on vesselness, and the path is given its lumen. 0: off.",
+         ParameterSpec::Kind::Integer},
     };
 }
 
@@ -311,12 +319,33 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
         if (request.target == SegmentationTarget::Aorta)
             seeds.back().branchLengthMm = parameters.get("branch_length_mm");
     }
+    // Target hepatic: the widest point is the aorta's; a point on an artery that the centring pulled into a wider
+    // structure (the portal vein it touches) keeps the click and is joined by its minimal path only.
+    const bool joinPaths = request.target == SegmentationTarget::Hepatic && seeds.size() > 1 &&
+                           parameters.get("hepatic_minimal_paths") > 0;
+    std::vector<detail::FrontSeed> pathPoints;
+    std::vector<std::string> seedNotes;
+    std::size_t trunk = 0;
     if (request.target == SegmentationTarget::Hepatic && seeds.size() > 1)
     {
-        auto aortic = std::max_element(seeds.begin(), seeds.end(), [](const auto& a, const auto& b) {
-            return a.inscribedRadiusMm < b.inscribedRadiusMm;
-        });
-        aortic->branchLengthMm = parameters.get("hepatic_aorta_branch_mm");
+        trunk = std::size_t(std::max_element(seeds.begin(), seeds.end(), [](const auto& a, const auto& b) {
+                                return a.inscribedRadiusMm < b.inscribedRadiusMm;
+                            }) - seeds.begin());
+        seeds[trunk].branchLengthMm = parameters.get("hepatic_aorta_branch_mm");
+        for (std::size_t n = 0; joinPaths && n < seeds.size(); ++n)
+        {
+            if (n == trunk)
+                continue;
+            if (seeds[n].inscribedRadiusMm > kHepaticArteryRadiusMm)
+            {
+                seedNotes.push_back("the point " + mmText(includes[n]) + " lies beside a wider structure (radius " +
+                                    std::to_string(int(std::lround(seeds[n].inscribedRadiusMm))) +
+                                    " mm after centring): it grows no front and is joined by its minimal path only");
+                seeds[n].grows = false;
+                seeds[n].pointMm = includes[n];
+            }
+            pathPoints.push_back(seeds[n]);
+        }
     }
     double includeLower = 1e9, includeUpper = -1e9;
     for (const detail::FrontSeed& seed : seeds)
@@ -336,7 +365,11 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
     settings.thinAreaMm2 = parameters.get("thin_area_mm2");
     for (const StopPlane& stop : request.stops)
         settings.stops.emplace_back(stop.pointMm, stop.normal.normalized());
-    detail::WaveResult waves = detail::propagateFronts(ct, seeds, settings, progress.subRange(0.0, 0.95));
+    detail::WaveResult waves = detail::propagateFronts(ct, seeds, settings, progress.subRange(0.0, 0.8));
+    detail::PathResult paths;
+    if (joinPaths)
+        paths = detail::joinByMinimalPaths(ct, waves.label, seeds[trunk], pathPoints, detail::PathSettings{},
+                                           progress.subRange(0.8, 0.95));
 
     SegmentationResult result;
     result.label = std::move(waves.label);
@@ -355,7 +388,11 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
                       {"leaks_cut", double(waves.leaksCut)},
                       {"thin_bursts_blocked", double(waves.thinBursts)},
                       {"waves", double(waves.waves)},
-                      {"work_voxels", double(waves.workVoxels)}};
+                      {"work_voxels", double(waves.workVoxels)},
+                      {"points_joined_by_paths", double(paths.joined)},
+                      {"path_length_mm", paths.pathMm},
+                      {"path_dim_mm", paths.dimPathMm},
+                      {"path_voxels_added", double(paths.voxelsAdded)}};
     for (std::size_t n = 0; n < seeds.size(); ++n)
     {
         const std::string key = (seeds[n].include ? "include_" : "exclude_") + std::to_string(n + 1);
@@ -365,7 +402,9 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
         result.figures[key + "_upper_hu"] = seeds[n].upperHu;
         result.figures[key + "_radius_mm"] = seeds[n].inscribedRadiusMm;
     }
-    result.warnings = waves.leakNotes;
+    result.warnings = seedNotes;
+    result.warnings.insert(result.warnings.end(), waves.leakNotes.begin(), waves.leakNotes.end());
+    result.warnings.insert(result.warnings.end(), paths.notes.begin(), paths.notes.end());
     if (waves.limitedVoxels > 0)
         result.warnings.push_back("the fronts reached the path-length limit (" + std::to_string(int(maxLength)) +
                                   " mm) or a branch limit: the vessel continues beyond the label");

@@ -2,16 +2,14 @@
 
 #include "LevelSetRefinement.h"
 #include "MaskOps.h"
+#include "Vesselness.h"
 #include "vsim/core/Hounsfield.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <itkBinaryThresholdImageFilter.h>
 #include <itkCastImageFilter.h>
 #include <itkConnectedThresholdImageFilter.h>
-#include <itkHessianToObjectnessMeasureImageFilter.h>
-#include <itkMultiScaleHessianBasedMeasureImageFilter.h>
 #include <itkSmoothingRecursiveGaussianImageFilter.h>
-#include <itkSymmetricSecondRankTensor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -130,28 +128,14 @@ double median(std::vector<float> values)
     return values[values.size() / 2];
 }
 
-/// Multi-scale Frangi vesselness of bright tubes (ITK), normalised to its maximum in the region.
+/// Multi-scale Frangi vesselness of bright tubes (Vesselness.h), normalised to its maximum in the region.
 std::vector<float> vesselness(const FloatImage::Pointer& image, const ParameterSet& p)
 {
-    using Hessian = itk::SymmetricSecondRankTensor<double, 3>;
-    using HessianImage = itk::Image<Hessian, 3>;
-    auto objectness = itk::HessianToObjectnessMeasureImageFilter<HessianImage, FloatImage>::New();
-    objectness->SetBrightObject(true);
-    objectness->SetObjectDimension(1);
-    objectness->SetScaleObjectnessMeasure(false);
-    objectness->SetAlpha(0.5);
-    objectness->SetBeta(0.5);
-    objectness->SetGamma(5.0);
-    auto multiScale = itk::MultiScaleHessianBasedMeasureImageFilter<FloatImage, HessianImage, FloatImage>::New();
-    multiScale->SetInput(image);
-    multiScale->SetHessianToMeasureFilter(objectness);
-    multiScale->SetSigmaMinimum(p.get("vesselness_min_sigma_mm"));
-    multiScale->SetSigmaMaximum(p.get("vesselness_max_sigma_mm"));
-    multiScale->SetNumberOfSigmaSteps(static_cast<unsigned>(p.get("vesselness_scales")));
-    multiScale->Update();
-    const FloatImage* out = multiScale->GetOutput();
-    const std::size_t count = out->GetLargestPossibleRegion().GetNumberOfPixels();
-    std::vector<float> values(out->GetBufferPointer(), out->GetBufferPointer() + count);
+    detail::VesselnessScales scales;
+    scales.minSigmaMm = p.get("vesselness_min_sigma_mm");
+    scales.maxSigmaMm = p.get("vesselness_max_sigma_mm");
+    scales.steps = static_cast<unsigned>(p.get("vesselness_scales"));
+    std::vector<float> values = detail::frangiVesselness(image.GetPointer(), scales);
     const float peak = *std::max_element(values.begin(), values.end());
     if (peak > 0.0f)
         for (float& v : values)

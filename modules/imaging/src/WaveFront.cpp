@@ -82,6 +82,8 @@ public:
             const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
             const std::uint32_t b = m_box.index(i, j, k);
             m_seedVoxels.push_back(b);
+            if (!m_seeds[n].grows)
+                continue;
             m_dist[b] = 0.0f;
             m_owner[b] = std::uint8_t(n + 1);
             m_queue.push({0.0f, b});

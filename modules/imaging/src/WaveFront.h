@@ -20,6 +20,7 @@ struct FrontSeed
 {
     Eigen::Vector3d pointMm = Eigen::Vector3d::Zero();
     bool include = true;            ///< false: an exclude point (claims voxels, never in the label)
+    bool grows = true;              ///< false: a point joined by its minimal path only (VesselPaths.h), no front
     double lowerHu = 0.0, upperHu = 0.0; ///< the smoothed-HU window of this front
     double maxLengthMm = 1e9;       ///< path length limit from the point
     double branchLengthMm = 1e9;    ///< path length allowed into a branch (cross-section < a quarter of the trunk's)
