@@ -1,9 +1,13 @@
 // Partial-volume vessel radii (PartialVolumeRadii.h) on the hepatic-tree phantom CT (320 x 320 x 240 voxels of
 // 0.7 x 0.7 x 1 mm, 20 HU noise), segmented, skeletonised and centerlined with the default parameters, against the truth
-// segments' mean radii: the root within 2 %, the mean error within 3 % and every segment within 8 % (measured
-// 2026-11-22: 0.1 %, 1.1 %, 4.5 %), and a smaller mean error than the label's cross-sections (8.4 %: the
-// threshold shrinks thin vessels). That phantom's image is made with the fit's own edge model; the patient-like
-// hepatic tree (PSF, slice profile, correlated noise) checks the tips without that crime.
+// segments' mean radii. That phantom's image draws a vessel's edge as Phi(signed distance / sigma), which the fit
+// assumed until 2026-11-27 (0.1 % root, 1.1 % mean, 4.5 % worst: an inverse crime). The fit now assumes what a
+// scanner does to a tube, a disc convolved with the blur (BlurredDisc.h); Phi of the distance holds more contrast
+// across a thin tube (about pi (r^2 + sigma^2) per unit length where a blurred disc holds pi r^2), so the fit reads
+// the analytic phantom's thin segments wide: measured 2026-11-27 root 0.8 %, mean 6.8 %, worst 13.2 %. Asserted: the
+// root within 2 %, the mean within 8 %, every segment within 15 %, and a smaller mean error than the label's
+// cross-sections (10.5 %). The patient-like hepatic tree (occupancy on sub-voxels, PSF, slice profile, correlated
+// noise: no estimator's model) checks the tips against the issue's 5 %.
 
 #include "AnatomyCases.h"
 #include "PhantomGrids.h"
@@ -41,14 +45,13 @@ private slots:
     /// Issue 15 must-show 2: the hepatic tips' radii on the patient-like phantom (anatomy, PSF-convolved, correlated
     /// noise: not the fit's edge model), from the guided segmentation (target hepatic, the aorta and the proper
     /// hepatic artery), its skeleton and centerlines. Reported: how many of the truth's segmental arteries the
-    /// centerlines reach and measure, and their mean-radius errors. The issue asks 5 %; measured 2026-11-24: 4-5 of
-    /// 28 reached, mean error 11.2 / 13.0 / 15.6 % on seeds 1-3 with each tube's own blood and the shell's dominant
-    /// level (15.6-22.2 % before; the blurred-tube fit's edge model is not this scanner's: the volume integral
-    /// alone reads 5.2 / 3.0 / 7.1 %). Not met. Since the guided segmentation's thin-vessel level (2026-11-27) the
-    /// centerlines reach 15-17 of the 28 tips: those of 1 mm and wider read 9-14 % low, those under 1 mm 20-39 % low
-    /// (the fit's Phi edge against a convolved tube: its half level lies sigma^2 / (2 r) inside the radius, and the
-    /// slice profile dims oblique tips further; the volume integral alone reads all of them 8-9 % off on average).
-    /// Held as a guard: the tips of 1 mm and wider within 20 % on average; the thinner ones reported.
+    /// centerlines reach and measure, and their mean-radius errors. The issue asks 5 %. History: 2026-11-24, 4-5 of
+    /// 28 reached, 11-16 % off; 2026-11-27 with the thin-vessel level 15-17 reached, those of 1 mm and wider 9-14 %
+    /// low, those under 1 mm 20-39 % low (the fit's Phi edge: its half level lies sigma^2 / (2 r) inside a blurred
+    /// disc's radius). With the blurred-disc model (BlurredDisc.h) the mean error over the tips is 5.2 / 4.9 / 5.8 %
+    /// on seeds 1-3 (1 mm and wider 2.8 / 4.5 / 6.1 %; single tips to 19 %, where a tapering tip is measured over
+    /// part of its length). Asserted: at least 12 tips measured, their mean error within 8 %, and within 8 % for
+    /// those of 1 mm and wider.
     void patientLikeHepaticTips()
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
@@ -82,8 +85,12 @@ private slots:
                 reached.insert(truth);
                 const double expected = 0.5 * (truth->radii.front() + truth->radii.back());
                 const double signedError = radii[e].meanRadiusMm / expected - 1.0, error = std::abs(signedError);
-                qInfo("  tip: measured %.2f mm over %.1f mm of centerline, truth mean %.2f mm (%+.1f %%)",
-                      radii[e].meanRadiusMm, radii[e].usedLengthMm, expected, 100.0 * signedError);
+                const double atMiddle = truthRadiusNear(*truth, middleOf(centerlines.edges[e].points));
+                qInfo("  tip: measured %.2f mm over %.1f mm of centerline, truth mean %.2f mm (%.2f -> %.2f mm over "
+                      "%.1f mm; %+.1f %%), truth at the edge's middle %.2f mm (%+.1f %%), axis |z| %.2f",
+                      radii[e].meanRadiusMm, radii[e].usedLengthMm, expected, truth->radii.front(), truth->radii.back(),
+                      truth->lengthMm(), 100.0 * signedError, atMiddle, 100.0 * (radii[e].meanRadiusMm / atMiddle - 1.0),
+                      std::abs((truth->points.back() - truth->points.front()).normalized().z()));
                 sum += error, worst = std::max(worst, error), ++measured;
                 if (expected >= 1.0)
                     sumWide += error, ++wide;
@@ -95,12 +102,44 @@ private slots:
             qInfo("  tips of 1 mm and wider: %d, mean-radius error %.1f %%; under 1 mm: %d, %.1f %%", wide,
                   wide ? 100.0 * sumWide / wide : 0.0, measured - wide,
                   measured > wide ? 100.0 * (sum - sumWide) / (measured - wide) : 0.0);
-            QVERIFY(wide >= 1);
-            QVERIFY(sumWide / wide <= 0.20);
+            QVERIFY(measured >= 12 && wide >= 1);
+            QVERIFY(sum / measured <= 0.08);
+            QVERIFY(sumWide / wide <= 0.08);
         }
     }
 
 private:
+    /// The point half-way along a polyline (mm).
+    static Eigen::Vector3d middleOf(const std::vector<Eigen::Vector3d>& points)
+    {
+        double half = 0.0;
+        for (std::size_t i = 1; i < points.size(); ++i)
+            half += 0.5 * (points[i] - points[i - 1]).norm();
+        for (std::size_t i = 1; i < points.size(); ++i)
+        {
+            const double step = (points[i] - points[i - 1]).norm();
+            if (step >= half && step > 0.0)
+                return points[i - 1] + (half / step) * (points[i] - points[i - 1]);
+            half -= step;
+        }
+        return points.back();
+    }
+
+    /// The truth segment's radius (mm) at its point nearest to p, interpolated between its samples.
+    static double truthRadiusNear(const VesselSegment& segment, const Eigen::Vector3d& p)
+    {
+        double best = 1e300, radius = segment.radii.front();
+        for (std::size_t i = 1; i < segment.points.size(); ++i)
+        {
+            const Eigen::Vector3d a = segment.points[i - 1], d = segment.points[i] - a;
+            const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+            const double distance = (a + t * d - p).norm();
+            if (distance < best)
+                best = distance, radius = segment.radii[i - 1] + t * (segment.radii[i] - segment.radii[i - 1]);
+        }
+        return radius;
+    }
+
     void measure()
     {
         PhantomOptions options; // 0.7 mm in-plane, 1 mm slices; a body with air around it, as the segmentation expects
@@ -139,8 +178,8 @@ private:
               measured, 100.0 * sumPartial / measured, 100.0 * worst, 100.0 * rootError, 100.0 * sumSections / measured);
         QVERIFY(measured >= 25);
         QVERIFY(rootError <= 0.02);
-        QVERIFY(sumPartial / measured <= 0.03);
-        QVERIFY(worst <= 0.08);
+        QVERIFY(sumPartial / measured <= 0.08);
+        QVERIFY(worst <= 0.15);
         QVERIFY(sumPartial < sumSections);
     }
 };

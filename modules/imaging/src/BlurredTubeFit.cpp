@@ -1,4 +1,5 @@
 #include "BlurredTubeFit.h"
+#include "BlurredDisc.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
@@ -86,7 +87,7 @@ std::pair<double, double> toPolyline(const std::vector<Eigen::Vector3d>& path, c
 
 double blurredOccupancy(double radius, double distance, double sigma)
 {
-    return 0.5 * std::erfc(-(radius - distance) / (sigma * std::numbers::sqrt2));
+    return blurredDiscOccupancy(distance, std::max(radius, 0.0), sigma);
 }
 
 double TubeModel::occupancy(const Eigen::Vector3d& p, double sigma) const

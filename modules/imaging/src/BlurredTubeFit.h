@@ -2,9 +2,10 @@
 
 // The blurred-tube model behind the partial-volume radii (PartialVolumeRadii.cpp): a vessel is a tube whose radius
 // runs linearly along its axis, seen through a Gaussian blur, so a voxel at distance d from the axis reads
-// tissue + (blood - tissue) Phi((r - d) / sigma) (the partial-volume profile of a blurred edge). Near a fork the
-// lumens merge: a voxel reads the largest occupancy of the tubes around it (`TubeSamples::floor` carries the
-// neighbours' share, held fixed while one tube is fitted). Lengths in mm, intensities in HU.
+// tissue + (blood - tissue) x the blurred disc's occupancy at d (BlurredDisc.h: a disc of radius r convolved with a
+// 2D Gaussian of sigma). Near a fork the lumens merge: a voxel reads the largest occupancy of the tubes around it
+// (`TubeSamples::floor` carries the neighbours' share, held fixed while one tube is fitted). Lengths in mm,
+// intensities in HU.
 
 #include <Eigen/Core>
 
@@ -17,7 +18,7 @@ namespace vsim::imaging::detail {
 std::pair<double, double> toPolyline(const std::vector<Eigen::Vector3d>& path, const std::vector<double>& arc,
                                      const Eigen::Vector3d& p);
 
-/// Phi((r - d) / sigma): the blurred occupancy of a tube of radius r at distance d from its axis.
+/// The blurred occupancy of a tube of radius r at distance d from its axis (BlurredDisc.h); r below 0 reads as 0.
 double blurredOccupancy(double radius, double distance, double sigma);
 
 /// A fitted tube: its axis (a polyline; two points for a straight tube) with the radius linear in arc length from

@@ -4,8 +4,9 @@
 // vessel, so the contour of any threshold shrinks with the vessel's size (a 1.5 mm artery at 0.7 mm voxels loses
 // 10-20 % of its radius), and single cross-sections scatter by as much. The contrast over a tube around the
 // centerline, (HU - tissue) / (blood - tissue) summed times the voxel volume, is the lumen volume when the blur is
-// a convolution; a model of the blurred edge fitted to the voxels (the phantom's edge profile Phi((r - d) / sigma)
-// does not keep that integral: it adds pi sigma^2 to the area) refines it. The drug network needs this: a flow
+// a convolution; a model of the blurred tube fitted to the voxels (a disc convolved with a Gaussian, whose integral
+// is the disc's area for any blur; the analytic phantoms' edge profile Phi((r - d) / sigma) is not such a
+// convolution: it adds about pi sigma^2 to the area) refines it. The drug network needs this: a flow
 // split goes with the radius cubed or to the fourth power.
 
 #include "vsim/core/ImageVolume.h"
