@@ -29,7 +29,23 @@ int exportLabelFromStudy(const Arguments& arguments, const Progress& progress)
     };
     const std::string imageId = study.newestArtifact(study::ArtifactKind::Image);
     if (!imageId.empty())
-        description.frameOfReferenceUid = value(study.artifact(imageId).attributes, "frame_of_reference_uid");
+    {
+        const auto& attributes = study.artifact(imageId).attributes;
+        description.frameOfReferenceUid = value(attributes, "frame_of_reference_uid");
+        // The CT images slice by slice (recorded at import where the grid is the files' own): each frame then
+        // names the image it was derived from.
+        description.sourceSeriesUid = value(attributes, "series_instance_uid");
+        description.sourceSopClassUid = value(attributes, "source_sop_class_uid");
+        std::string uids = value(attributes, "source_sop_instance_uids");
+        for (std::size_t start = 0; !uids.empty();)
+        {
+            const std::size_t end = uids.find('\\', start);
+            description.sourceSopInstanceUids.push_back(uids.substr(start, end - start));
+            if (end == std::string::npos)
+                break;
+            start = end + 1;
+        }
+    }
     description.studyInstanceUid = value(study.metadata(), "study_instance_uid");
     if (!value(study.metadata(), "patient_name").empty())
         description.patientName = value(study.metadata(), "patient_name");

@@ -1,6 +1,9 @@
 // DICOM SEG: a label of values 1 and 4 on a rotated, anisotropic grid written with DCMTK's dcmseg and read back by
 // our own dataset parser (an independent path): the same voxels and values on the same grid, the segment names kept,
 // only the slices holding labels stored; DCMTK's own SEG loader accepts what we wrote; a CT slice and a truncated SEG are refused.
+// With the CT's instances given slice by slice, every frame names the CT image of its own slice (Derivation Image
+// Sequence) and the Referenced Series Sequence lists the CT series with those images; with a list that does not
+// match the grid, no reference is written.
 #include "vsim/core/Error.h"
 #include "vsim/dicom/CtSeriesWriter.h"
 #include "vsim/dicom/DicomSegmentation.h"
@@ -9,12 +12,16 @@
 #include <QtTest>
 
 #include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcitem.h>
 #include <dcmtk/dcmseg/segdoc.h>
 
 #include <Eigen/Geometry>
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 namespace fs = std::filesystem;
 using namespace vsim;
@@ -62,6 +69,68 @@ class SegmentationTest : public QObject
     Q_OBJECT
 
 private slots:
+    void referencesTheCtSlices()
+    {
+        const LabelVolume label = twoBalls();
+        const VolumeGeometry& grid = label.geometry();
+        dicom::SegmentationDescription description;
+        description.sourceSeriesUid = "1.2.826.0.1.3680043.2.1125.9.1";
+        description.sourceSopClassUid = "1.2.840.10008.5.1.4.1.1.2";
+        for (int k = 0; k < grid.dims[2]; ++k)
+            description.sourceSopInstanceUids.push_back("1.2.826.0.1.3680043.2.1125.9.1." + std::to_string(100 + k));
+        const fs::path file = freshFolder("references") / "labels.dcm";
+        dicom::writeDicomSegmentation(label, {"aorta"}, description, file);
+        DcmFileFormat format;
+        QVERIFY(format.loadFile(file.string().c_str()).good());
+        DcmDataset& data = *format.getDataset();
+        DcmItem* perFrame = nullptr;
+        int frames = 0;
+        std::set<std::string> sources;
+        while (data.findAndGetSequenceItem(DCM_PerFrameFunctionalGroupsSequence, perFrame, frames).good())
+        {
+            ++frames;
+            DcmItem *plane = nullptr, *derivation = nullptr, *source = nullptr;
+            Float64 z = 0.0;
+            OFString uid;
+            QVERIFY(perFrame->findAndGetSequenceItem(DCM_PlanePositionSequence, plane).good());
+            QVERIFY(plane->findAndGetFloat64(DCM_ImagePositionPatient, z, 2).good());
+            QVERIFY(perFrame->findAndGetSequenceItem(DCM_DerivationImageSequence, derivation).good());
+            QVERIFY(derivation->findAndGetSequenceItem(DCM_SourceImageSequence, source).good());
+            QVERIFY(source->findAndGetOFString(DCM_ReferencedSOPInstanceUID, uid).good());
+            const int k = int(std::lround((z - grid.origin.z()) / grid.spacing.z())); // the grid turns about z only
+            QCOMPARE(std::string(uid.c_str()), description.sourceSopInstanceUids[std::size_t(k)]);
+            sources.insert(uid.c_str());
+        }
+        QVERIFY(frames > 0);
+        DcmItem* series = nullptr;
+        OFString seriesUid;
+        QVERIFY(data.findAndGetSequenceItem(DCM_ReferencedSeriesSequence, series).good());
+        QVERIFY(series->findAndGetOFString(DCM_SeriesInstanceUID, seriesUid).good());
+        QCOMPARE(std::string(seriesUid.c_str()), description.sourceSeriesUid);
+        DcmItem* instance = nullptr;
+        std::set<std::string> listed;
+        for (int n = 0; series->findAndGetSequenceItem(DCM_ReferencedInstanceSequence, instance, n).good(); ++n)
+        {
+            OFString uid;
+            QVERIFY(instance->findAndGetOFString(DCM_ReferencedSOPInstanceUID, uid).good());
+            listed.insert(uid.c_str());
+        }
+        QCOMPARE(listed, sources);
+        qInfo("%d frames, each derived from its own slice's CT image; %zu images in the Referenced Series Sequence",
+              frames, listed.size());
+
+        // A list that does not fit the grid: no references at all (never a wrong one).
+        description.sourceSopInstanceUids.pop_back();
+        dicom::writeDicomSegmentation(label, {"aorta"}, description, file.parent_path() / "unreferenced.dcm");
+        DcmFileFormat other;
+        QVERIFY(other.loadFile((file.parent_path() / "unreferenced.dcm").string().c_str()).good());
+        DcmItem* none = nullptr;
+        QVERIFY(other.getDataset()->findAndGetSequenceItem(DCM_ReferencedSeriesSequence, none).bad());
+        QVERIFY(other.getDataset()->findAndGetSequenceItem(DCM_PerFrameFunctionalGroupsSequence, none).good());
+        DcmItem* derivation = nullptr;
+        QVERIFY(none->findAndGetSequenceItem(DCM_DerivationImageSequence, derivation).bad());
+    }
+
     void roundTrip()
     {
         const LabelVolume label = twoBalls();

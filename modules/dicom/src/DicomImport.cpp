@@ -144,6 +144,22 @@ DicomVolume importDicomSeries(const DicomSeries& series, const DicomImportOption
     result.attributes["image_type"] = series.imageType;
     result.attributes["transfer_syntax_uid"] = series.format().transferSyntaxUid;
     result.attributes["source_slices"] = std::to_string(plan.sorted.size());
+    // The source instances slice by slice, for the references of a DICOM SEG made on this grid: only where each
+    // slice of the grid is one single-frame file of one SOP class (not resampled, not an enhanced multi-frame).
+    std::string classUid = series.headerOf(plan.sorted.front()).sopClassUid, instances;
+    bool referable = !plan.resample && !classUid.empty();
+    for (const DicomSlice& slice : plan.sorted)
+    {
+        const DicomImageHeader& header = series.headerOf(slice);
+        referable = referable && slice.frame == 0 && header.frames.size() == 1 && header.sopClassUid == classUid &&
+                    !header.sopInstanceUid.empty();
+        instances += (instances.empty() ? "" : "\\") + header.sopInstanceUid;
+    }
+    if (referable)
+    {
+        result.attributes["source_sop_class_uid"] = classUid;
+        result.attributes["source_sop_instance_uids"] = instances; // in slice order, backslash-separated as in DICOM
+    }
     if (plan.tiltDegrees > 1e-3)
     {
         char tilt[32];

@@ -1,6 +1,6 @@
 // Writing a label volume as a BINARY DICOM SEG with DCMTK's dcmseg (DicomSegmentation.h): segment N for label
 // value N, one frame per slice and segment holding any voxel, the plane position per frame, orientation and
-// pixel measures shared.
+// pixel measures shared; where the CT's instances are known, each frame's source image and the referenced series.
 
 #include "vsim/dicom/DicomSegmentation.h"
 
@@ -10,12 +10,14 @@
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmfg/fgderimg.h>
 #include <dcmtk/dcmfg/fgfracon.h>
 #include <dcmtk/dcmfg/fgpixmsr.h>
 #include <dcmtk/dcmfg/fgplanor.h>
 #include <dcmtk/dcmfg/fgplanpo.h>
 #include <dcmtk/dcmfg/fgseg.h>
 #include <dcmtk/dcmiod/iodmacro.h>
+#include <dcmtk/dcmiod/iodreferences.h>
 #include <dcmtk/dcmseg/segdoc.h>
 #include <dcmtk/dcmseg/segment.h>
 
@@ -36,6 +38,23 @@ std::string decimal(double value)
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", value);
     return text;
+}
+
+/// The Derivation Image functional group of a frame on slice k: derived (segmentation, DCM 113076) from the CT
+/// image of that slice (purpose: source image for image processing operation, DCM 121322).
+std::unique_ptr<FGDerivationImage> sourceOf(const SegmentationDescription& description, int k)
+{
+    ImageSOPInstanceReferenceMacro source;
+    check(source.setReferencedSOPClassUID(description.sourceSopClassUid.c_str()), "source image class");
+    check(source.setReferencedSOPInstanceUID(description.sourceSopInstanceUids[std::size_t(k)].c_str()), "source image");
+    OFVector<ImageSOPInstanceReferenceMacro> sources;
+    sources.push_back(source);
+    std::unique_ptr<FGDerivationImage> derivation(FGDerivationImage::createMinimal(
+        sources, "Segmentation", CodeSequenceMacro("113076", "DCM", "Segmentation"),
+        CodeSequenceMacro("121322", "DCM", "Source image for image processing operation")));
+    if (!derivation)
+        throw Error("writing the DICOM SEG failed at the derivation image of slice " + std::to_string(k + 1));
+    return derivation;
 }
 
 } // namespace
@@ -88,6 +107,9 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
     check(seg->addForAllFrames(orientation), "orientation");
 
     const std::size_t slicePixels = std::size_t(g.dims[0]) * std::size_t(g.dims[1]);
+    const bool referenced = !description.sourceSeriesUid.empty() && !description.sourceSopClassUid.empty() &&
+                            description.sourceSopInstanceUids.size() == std::size_t(g.dims[2]);
+    std::set<int> sourceSlices;
     std::vector<Uint8> frame(slicePixels);
     // Segment N holds label value N, so that the values come back as they were (a sac's thrombus 4 and wall 5):
     // values between that the label does not use get a segment without frames.
@@ -134,6 +156,13 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
             perFrame.push_back(&position);
             perFrame.push_back(&frameContent);
             perFrame.push_back(&identification);
+            std::unique_ptr<FGDerivationImage> derivation;
+            if (referenced)
+            {
+                derivation = sourceOf(description, k);
+                perFrame.push_back(derivation.get());
+                sourceSlices.insert(k);
+            }
             check(seg->addFrame(frame.data(), number, perFrame), "frame");
         }
     }
@@ -145,6 +174,20 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
           "dimensions");
     check(dimensions.addDimensionIndex(DCM_ImagePositionPatient, organisation, DCM_PlanePositionSequence, "Position"),
           "dimensions");
+    if (referenced)
+    {
+        // The Common Instance Reference module: the CT series and the instances the frames were derived from.
+        IODReferences references;
+        OFString studyUid;
+        check(seg->getStudy().getStudyInstanceUID(studyUid), "study UID");
+        for (int k : sourceSlices)
+            references.add(new IODImageReference(description.patientId.c_str(), studyUid,
+                                                 description.sourceSeriesUid.c_str(),
+                                                 description.sourceSopInstanceUids[std::size_t(k)].c_str(),
+                                                 description.sourceSopClassUid.c_str()));
+        if (seg->getCommonInstanceReference().addReferences(references) != sourceSlices.size())
+            throw Error("writing the DICOM SEG failed at the referenced series");
+    }
     auto* item = new IODMultiframeDimensionModule::DimensionOrganizationItem;
     item->setDimensionOrganizationUID(organisation);
     dimensions.getDimensionOrganizationSequence().push_back(item);

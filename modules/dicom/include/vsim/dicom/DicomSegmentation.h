@@ -31,14 +31,18 @@ struct SegmentationMask
 /// anything that size is allocated).
 SegmentationMask readDicomSegmentation(const std::filesystem::path& file, std::size_t maxVoxels = std::size_t(1) << 30);
 
-/// What a written SEG says about itself and the CT it belongs to (its study and frame of reference; the Referenced
-/// Series Sequence, which needs the CT's SOP instance UIDs, is not written yet).
+/// What a written SEG says about itself and the CT it belongs to: its study and frame of reference, and, when the
+/// CT's instances are known slice by slice, the images each frame was derived from (Derivation Image Sequence per
+/// frame, Referenced Series Sequence of the Common Instance Reference module).
 struct SegmentationDescription
 {
     std::string seriesDescription = "VascuSim vessel labels";
     std::string frameOfReferenceUid;         ///< the CT's frame of reference ("" generates one)
     std::string studyInstanceUid;            ///< "" generates one
     std::string patientName = "ANONYMOUS", patientId = "VSIM";
+    std::string sourceSeriesUid;             ///< the CT's Series Instance UID ("" writes no references)
+    std::string sourceSopClassUid;           ///< the CT images' SOP Class UID
+    std::vector<std::string> sourceSopInstanceUids; ///< one per slice of the label's grid (else no references)
 };
 
 /// Writes `label` (values 1..N) as a BINARY DICOM SEG: segment N holds value N (named by `segmentNames[N - 1]` or
