@@ -135,6 +135,8 @@ std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const s
         provenance.inputs.push_back(sacId);
     const std::string id = study.addTetMesh(build.wall.mesh, "Vessel wall", provenance, build.wall.warnings);
     study.setArtifactAttributes(id, {{"min_dihedral_deg", numberText(build.wall.minDihedralDeg)},
+                                     {"min_dihedral_unsmoothed_deg", numberText(build.wall.minDihedralUnsmoothedDeg)},
+                                     {"nodes_smoothed", std::to_string(build.wall.nodesSmoothed)},
                                      {"mean_min_dihedral_deg", numberText(build.wall.meanMinDihedralDeg)},
                                      {"elements_under_5_deg", std::to_string(build.wall.slivers)},
                                      {"inverted_elements", std::to_string(build.wall.inverted)},

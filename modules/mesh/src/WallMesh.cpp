@@ -1,5 +1,7 @@
 #include "vsim/mesh/WallMesh.h"
 
+#include "WallSmoothing.h"
+
 #include "vsim/core/Error.h"
 
 #include <Eigen/Geometry>
@@ -12,6 +14,9 @@
 
 namespace vsim::mesh {
 namespace {
+
+/// Elements whose smallest dihedral angle is under this get their free nodes moved (WallSmoothing.h).
+constexpr double kSmoothingTargetDeg = 10.0; // the floor; a flat prism of an ideal thin wall has 12-13
 
 /// Removes the triangles of each end's cap (a vertex beyond the cut plane, one radius inside the end, within three
 /// radii or four mean edges of it). Returns the surface and, per vertex, the end whose new boundary it lies on (-1: none).
@@ -301,6 +306,15 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
     }
     wall.mesh.pointFields["wall_layer"] = layer;
     wall.mesh.pointFields["end_set"] = endSet;
+    std::vector<Eigen::Vector3d> across(wall.mesh.points.size(), Eigen::Vector3d::Zero());
+    for (std::size_t v = std::size_t(n); v < across.size(); ++v)
+        if (endSet[v] == 0.0)
+            across[v] = normal[v % std::size_t(n)].normalized();
+    const detail::SmoothingResult smoothing =
+        detail::raiseDihedralAngles(wall.mesh, across, kSmoothingTargetDeg, 0.5 * thicknessMm);
+    wall.minDihedralUnsmoothedDeg = smoothing.minDihedralBeforeDeg;
+    wall.nodesSmoothed = smoothing.nodesMoved;
+    wall.largestSmoothingMoveMm = smoothing.largestMoveMm;
     double smallest = 180.0, sum = 0.0;
     for (const auto& tet : wall.mesh.tets)
     {

@@ -10,6 +10,9 @@
 // wall of the given thickness inside the outer contour, and between it and the lumen the intraluminal thrombus
 // (cell field "material" 1; the wall 0). Where the outer contour lies less than 1.5 wall thicknesses from the lumen
 // (no thrombus to speak of, or outside the sac) both layers are wall, the inner one half a wall thickness.
+// Where the offsets crowd (a saddle such as the iliac crotch) the nodes off the lumen and off the held ends move, at
+// most half a wall thickness across their offset direction, to raise the smallest dihedral angles under 10 degrees
+// (src/WallSmoothing.h).
 
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TetMesh.h"
@@ -46,6 +49,9 @@ struct WallMesh
     TetMesh mesh;
     std::vector<std::vector<int>> endNodes; ///< per end, its nodes (both layers)
     double minDihedralDeg = 0.0;            ///< smallest dihedral angle of any element
+    double minDihedralUnsmoothedDeg = 0.0;  ///< the same before the nodes off the lumen moved (WallSmoothing.h)
+    std::size_t nodesSmoothed = 0;          ///< nodes moved to raise the smallest angles
+    double largestSmoothingMoveMm = 0.0;    ///< the largest such move (mm)
     double meanMinDihedralDeg = 0.0;        ///< mean over elements of their smallest dihedral angle
     std::size_t slivers = 0;                ///< elements with a dihedral angle under 5 degrees
     Eigen::Vector3d worstElementMm = Eigen::Vector3d::Zero(); ///< centroid of the element with the smallest angle
