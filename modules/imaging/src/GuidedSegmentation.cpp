@@ -15,6 +15,7 @@ namespace vsim::imaging {
 namespace {
 
 using Eigen::Vector3d;
+using detail::mmText;
 
 /// Enhanced parenchyma stays below this; brighter voxels around a point are other contrast-filled blood or bone.
 constexpr double kSoftTissueCeilingHu = 200.0;
@@ -53,13 +54,6 @@ double dominantSpread(std::vector<double> values)
         values = std::move(kept);
     }
     return spread;
-}
-
-std::string mmText(const Vector3d& p)
-{
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.1f, %.1f, %.1f) mm", p.x(), p.y(), p.z());
-    return text;
 }
 
 /// Moves an include point to the middle of its lumen: hill-climbing on the chamfer distance (mm) to the nearest

@@ -22,13 +22,6 @@ using Eigen::Vector3d;
 constexpr double kPlateauMm = 1.0;                        // the plateau: brightest smoothed HU this close
 constexpr double kBackgroundInnerMm = 2.5, kBackgroundOuterMm = 4.0; // the background shell of a path voxel
 
-std::string mmText(const Vector3d& p)
-{
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.1f, %.1f, %.1f) mm", p.x(), p.y(), p.z());
-    return text;
-}
-
 /// The 26 neighbour offsets and their lengths (mm).
 struct Neighbours
 {

@@ -570,6 +570,13 @@ private:
 
 } // namespace
 
+std::string mmText(const Eigen::Vector3d& p)
+{
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.1f, %.1f, %.1f) mm", p.x(), p.y(), p.z());
+    return text;
+}
+
 double smoothedHu(const CtVolume& ct, int i, int j, int k)
 {
     const VolumeGeometry& g = ct.geometry();
