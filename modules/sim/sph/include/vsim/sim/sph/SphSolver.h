@@ -9,7 +9,7 @@
 // (kick-drift-kick: one rate evaluation per step) with the adaptive time step of SphRates.h. Guards: a value
 // that is not finite, a density more than `density_guard` from the rest density (the weak compressibility
 // broken: a sound speed too low for the flow, or particles piling up), a particle leaving the domain's box
-// grown by `escape_margin_mm`, a fluid particle a quarter spacing into a wall of known depths. A guard puts the
+// grown by `escape_margin_mm`, a fluid particle half a spacing into a wall of known depths. A guard puts the
 // particles back to the step's start. After each drift the open boundaries exchange particles with the fluid
 // (OpenBoundary.h), and tracer particles that come within `absorption_distance_mm` of a wall's surface are absorbed
 // (removed, their mass counted: drug uptake).
