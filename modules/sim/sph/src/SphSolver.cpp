@@ -6,6 +6,16 @@
 #include <cmath>
 
 namespace vsim::sim::sph {
+namespace {
+
+/// A particle's position (m) as the guards print it: "(x, y, z) mm".
+std::string positionText(const Eigen::Vector3d& positionM)
+{
+    const Eigen::Vector3d x = 1e3 * positionM;
+    return "(" + numberText(x.x()) + ", " + numberText(x.y()) + ", " + numberText(x.z()) + ") mm";
+}
+
+} // namespace
 
 std::vector<ParameterSpec> sphParameters()
 {
@@ -230,19 +240,19 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
         // half-way into those notches without passing a wall particle (sph-stenosis's converging side stopped at a
         // quarter spacing at 11.5 ms; with half it runs to 13.9 ms, where the density guard stops it).
         if (fluid && m_rates.wallDistance[i] < -0.5 * m_spacingM)
-        {
-            const Eigen::Vector3d x = p.position[i] * 1e3;
             return putBack("at t = " + numberText(m_timeS + dt) + " s fluid particle " + std::to_string(p.id[i]) +
-                           " went " + numberText(-1e3 * m_rates.wallDistance[i]) + " mm into the wall at (" +
-                           numberText(x.x()) + ", " + numberText(x.y()) + ", " + numberText(x.z()) +
-                           ") mm: the time step or the sound speed is too large for the flow, or the wall too thin");
-        }
+                           " went " + numberText(-1e3 * m_rates.wallDistance[i]) + " mm into the wall at " +
+                           positionText(p.position[i]) +
+                           ": the time step or the sound speed is too large for the flow, or the wall too thin");
     }
     if (worstDensity > m_densityGuard)
         return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[worst]) +
                        "'s density is " + numberText(100.0 * worstDensity) +
-                       " % from the rest density (guard " + numberText(100.0 * m_densityGuard) +
-                       " %): raise the sound speed or lower the inflow");
+                       " % from the rest density (guard " + numberText(100.0 * m_densityGuard) + " %) at " +
+                       positionText(p.position[worst]) + ", " +
+                       (std::isfinite(m_rates.wallDistance[worst]) ? numberText(1e3 * m_rates.wallDistance[worst]) + " mm from the wall"
+                                                                   : std::string("away from the walls")) +
+                       ": raise the sound speed or lower the inflow");
     m_timeS += dt;
     m_stepS = dt;
     ++m_steps;
