@@ -76,6 +76,11 @@ MainWindow::~MainWindow()
 {
     m_tasks.cancel();
     m_tasks.waitForFinished();
+    // The members go before QWidget's destructor closes the window and hides the docks; a child's signal must not
+    // reach this window's slots in between (closing the Run Player dock released the played run after the window's
+    // own shared pointer to it was gone: a use-after-free that AddressSanitizer caught in tst_gui_particles).
+    for (QObject* child : findChildren<QObject*>())
+        child->disconnect(this);
 }
 
 void MainWindow::createDocks()

@@ -84,6 +84,45 @@ private slots:
         window.findChild<QDockWidget*>("runPlayerDock")->close();
         QTRY_COMPARE(window.views()->sliceView(viz::SliceOrientation::Axial)->fieldCellsShown(), 0LL);
     }
+
+    /// Flow > Blood Flow as a user runs it: a small analytic stenosis (96 x 96 x 64 at 0.8 x 0.8 x 1 mm) segmented,
+    /// thinned and traced, the Blood Flow Parameters set (1 mm particles, 4 ms), the run in the background; the run
+    /// is added to the study in one undo step and plays in the Run Player (too short to settle: no stenosis figures).
+    /// The window is destroyed with the Run Player open: its dock's hiding once released the played run after the
+    /// window's members were gone (a use-after-free, AddressSanitizer on the `asan` preset; the slot had been
+    /// removed on 2026-11-27 as a "corrupted double-linked list" not understood).
+    void bloodFlowFromTheMenu()
+    {
+        const fs::path folder = test::freshFolder("gui-particles", "stenosis");
+        dicom::PhantomOptions options;
+        options.size = {96, 96, 64};
+        options.spacing = {0.8, 0.8, 1.0};
+        options.seed = 3;
+        test::writePhantomSeries(dicom::PhantomKind::Stenosis, options, folder);
+        gui::MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(window.simulateBloodFlow() == false); // no study
+        QVERIFY(window.newStudy(QString::fromStdString((test::freshFolder("gui-particles", "flow") / "flow.vsim").string())));
+        QVERIFY(window.importDicom(QString::fromStdString(folder.string())) && test::waitForTask(window));
+        QVERIFY(window.segmentVessels() && test::waitForTask(window));
+        QVERIFY(window.extractSkeletonAndCenterlines() && test::waitForTask(window));
+        window.bloodFlowSetup().set("spacing_mm", 1.0);
+        window.bloodFlowSetup().set("end_time_s", 0.004);
+        window.bloodFlowSetup().set("inlet_mean_velocity_m_s", 0.1);
+        window.bloodFlowSetup().set("frames", 4);
+        study::Study& study = window.document().study();
+        const std::size_t before = study.artifacts().size();
+        QVERIFY(window.simulateBloodFlow());
+        QVERIFY(test::waitForTask(window, 300000));
+        QCOMPARE(study.artifacts().size(), before + 1);
+        const std::string runId = study.newestArtifact(study::ArtifactKind::Run);
+        QVERIFY(!runId.empty());
+        QCOMPARE(study.artifact(runId).provenance.command, std::string("simulate sph"));
+        QVERIFY(window.runPlayer() && window.runPlayer()->frameCount() >= 4);
+        window.document().undoStack()->undo();
+        QCOMPARE(study.artifacts().size(), before);
+    }
 };
 
 VSIM_GUI_TEST_MAIN(TestParticles)
