@@ -193,8 +193,8 @@ BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& 
 {
     BloodFlowSetup setup;
     setup.parameters = solverParameters;
-    for (const ParameterSpec& spec : solverParameters.specs()) // the chosen three only where the form changed them
-        if ((spec.key != "spacing_mm" && spec.key != "end_time_s" && spec.key != "sound_speed_m_s") ||
+    for (const ParameterSpec& spec : solverParameters.specs()) // the chosen four only where the form changed them
+        if ((spec.key != "spacing_mm" && spec.key != "end_time_s" && spec.key != "sound_speed_m_s" && spec.key != "cfl") ||
             solverParameters.get(spec.key) != spec.defaultValue)
             setup.given.push_back(spec.key);
     if (form.get("inlet_flow_rate_ml_s") > 0.0)
@@ -283,6 +283,8 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     }
     if (!given(setup, "sound_speed_m_s"))
         parameters.set("sound_speed_m_s", std::max(0.5, 10.0 * expectedPeak));
+    if (!given(setup, "cfl")) // a stenosis's jet needs the smaller step (SphSolver.h)
+        parameters.set("cfl", sim::sph::kStenosisCfl);
     const double soundSpeed = parameters.get("sound_speed_m_s");
     const double pathLengthM = 1e-3 * compared.length();
     flow.rampS = setup.rampS >= 0.0 ? setup.rampS : 8.0 * pathLengthM / soundSpeed; // two quarter-wave periods
