@@ -237,8 +237,8 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
         // Through the wall: a fluid particle deeper than half a spacing below the surface the wall particles of
         // known depth describe (SphRates' d_i < 0 there). Half, not less: particles seeded on a lattice leave a
         // curved wall's surface up to a spacing from the nearest wall particle (a staircase), and fluid settles up to
-        // half-way into those notches without passing a wall particle (sph-stenosis's converging side stopped at a
-        // quarter spacing at 11.5 ms; with half it runs to 13.9 ms, where the density guard stops it).
+        // half-way into those notches without passing a wall particle (at a quarter spacing sph-stenosis's converging
+        // side stopped the run at 11.5 ms).
         if (fluid && m_rates.wallDistance[i] < -0.5 * m_spacingM)
             return putBack("at t = " + numberText(m_timeS + dt) + " s fluid particle " + std::to_string(p.id[i]) +
                            " went " + numberText(-1e3 * m_rates.wallDistance[i]) + " mm into the wall at " +

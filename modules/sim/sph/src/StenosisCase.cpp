@@ -1,11 +1,12 @@
 // sph-stenosis: steady flow through a 50 % diameter stenosis (issue 18). A rigid pipe of radius R0 = 0.8 mm (8 spacings
 // of 0.1 mm), 5.6 mm long, narrowed by a cosine stenosis R(x) = R0 (1 - 0.25 (1 + cos(pi (x - 2.4 mm) / 0.8 mm)))
 // over 1.6 mm (the throat R0 / 2, area ratio 4), a parabolic velocity inlet (mean 0.05 m/s upstream, 0.2 m/s in the
-// throat: Re 48 there in blood), the time step at the stenosis Courant number (SphSolver.h), ramped over 10 ms (more than a period of the pipe's quarter-wave mode, 4 L / c0 =
-// 6.4 ms), and a pressure outlet. Sections every 0.2 mm are averaged from 15 to 25 ms; the throat is compared with the
-// sections 1.6 mm (2 R0) upstream and downstream. The mean velocity ratio against the particles' own area ratio is the
-// mass check (within 5 %); the area ratio against the analytic 4 checks the lattice's throat; the peak velocity ratio
-// and the pressure drop are printed for the OpenFOAM comparison (tests/bench).
+// throat: Re 48 there in blood), ramped over 10 ms (more than a period of the pipe's quarter-wave mode, 4 L / c0 =
+// 6.4 ms), and a pressure outlet; the time step at the stenosis Courant number (kStenosisCfl, SphSolver.h). Sections
+// every 0.2 mm are averaged from 15 to 25 ms; the throat is compared with the sections 1.6 mm (2 R0) upstream and
+// downstream. The mean velocity ratio against the particles' own area ratio is the mass check (within 5 %); the area
+// ratio against the analytic 4 checks the lattice's throat; the peak velocity ratio and the pressure drop are printed
+// for the OpenFOAM comparison (tests/bench).
 
 #include "SphCases.h"
 
