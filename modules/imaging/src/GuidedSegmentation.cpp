@@ -1,5 +1,6 @@
 #include "vsim/imaging/GuidedSegmentation.h"
 
+#include "GuidedHelpers.h"
 #include "VesselPaths.h"
 #include "WaveFront.h"
 

@@ -1,5 +1,6 @@
 #include "LocalHalfLevel.h"
 
+#include "GuidedHelpers.h"
 #include "ShellOffsets.h"
 #include "SkeletonGrid.h"
 #include "WaveFront.h"

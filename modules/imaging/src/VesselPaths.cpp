@@ -1,5 +1,6 @@
 #include "VesselPaths.h"
 
+#include "GuidedHelpers.h"
 #include "ShellOffsets.h"
 #include "WorkBox.h"
 

@@ -57,11 +57,6 @@ struct WaveResult
     std::vector<std::string> leakNotes; ///< where each leak was cut and the area jump
 };
 
-/// A patient position as messages give it: "(x, y, z) mm", one decimal.
-std::string mmText(const Eigen::Vector3d& p);
-/// The smoothed HU (binomial 3 x 3 x 3) at a voxel of the CT.
-double smoothedHu(const CtVolume& ct, int i, int j, int k);
-
 /// Grows every front; the label is on the CT's grid. Throws vsim::Cancelled.
 WaveResult propagateFronts(const CtVolume& ct, const std::vector<FrontSeed>& seeds, const WaveSettings& settings,
                            const Progress& progress);
