@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace vsim::sim::fem {
 namespace {
@@ -90,11 +91,18 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
         if (report.updates >= settings.maxUpdates)
             break;
         model.assembleTangent(stiffness, settings.rotationStiffness);
+        const bool fresh = linear.needsPreconditioner(report.forceResidual);
+        // A fresh GMRES preconditioner factorises the model's own tangent: with the follower load's stiffness its
+        // symmetric part was indefinite on the thrombus wall for the first Newton updates, and each fell back to an
+        // UMFPACK LU 4x slower than the Cholesky (RESULTS.md, 2026-11-27).
+        std::optional<BlockSparseMatrix> material;
+        if (fresh && externalStiffness && settings.linear == LinearSolver::CholeskyGmres)
+            material = stiffness;
         if (externalStiffness)
             externalStiffness(model.positions(), stiffness);
         Eigen::VectorXd delta;
         const TangentSolveResult solved =
-            linear.solve(stiffness, residual, delta, linear.needsPreconditioner(report.forceResidual));
+            linear.solve(stiffness, residual, delta, fresh, material ? &*material : nullptr);
         report.cgIterations += solved.iterations;
         report.factorisations += solved.factorised ? 1 : 0;
         report.worstLinearResidual = std::max(report.worstLinearResidual, solved.relativeResidual);

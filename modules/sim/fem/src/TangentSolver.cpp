@@ -61,8 +61,8 @@ void TangentSolver::factorisePreconditioner(const BlockSparseMatrix& tangent)
 
 void TangentSolver::factoriseLu(const BlockSparseMatrix& tangent)
 {
-    // The symmetric part is not positive definite (early in the solve: the follower pressure's load stiffness on
-    // the held tube, and regions a long step compressed; a shifted Cholesky left GMRES at 1e-4 after 200
+    // The symmetric part is not positive definite (regions a long step compressed, or the follower pressure's load
+    // stiffness where the caller gave no tangent without it; a shifted Cholesky left GMRES at 1e-4 after 200
     // iterations, RESULTS.md): the tangent's own LU for this update.
     if (!m_lu)
         m_lu = std::make_unique<SparseDirect>(tangent, m_constrained, SparseDirect::Kind::GeneralLu);
@@ -80,7 +80,7 @@ GmresResult TangentSolver::gmres(const BlockSparseMatrix& tangent, const Eigen::
 }
 
 TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const Eigen::VectorXd& f, Eigen::VectorXd& dx,
-                                        bool fresh)
+                                        bool fresh, const BlockSparseMatrix* material)
 {
     TangentSolveResult result;
     dx = Eigen::VectorXd::Zero(f.size());
@@ -107,7 +107,7 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
         }
         if (fresh || !m_preconditioner || !solved.converged)
         {
-            factorisePreconditioner(tangent);
+            factorisePreconditioner(material ? *material : tangent);
             result.factorised = true;
             solved = gmres(tangent, f, dx, m_settings.gmresMaxIterations);
             result.iterations += solved.iterations;

@@ -70,7 +70,9 @@ struct StaticSolveSettings
     int cgMaxIterations = 20000;
     double linearTolerance = 1e-8; ///< CholeskyGmres: each linear solve's relative residual |T dx - f| / |f|
     int gmresMaxIterations = 200;
-    int reuseIterations = 12;      ///< CholeskyGmres: refactorise after a solve that needed more
+    /// CholeskyGmres: refactorise after a solve that needed more (a fresh CHOLMOD factorisation of the quadratic
+    /// thrombus wall costs about 27 iterations with it, and a fresh solve takes 12-26: RESULTS.md, 2026-11-27)
+    int reuseIterations = 25;
     double reuseBelow = 0.1;       ///< CholeskyGmres: keep a factorisation only below this force residual
     /// The model's consistent tangent (co-rotational: + the derivative of the element rotations,
     /// CorotationalFem::addRotationStiffness): a full Newton iteration (quadratic convergence), with a direct
