@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package VascuSim needs to build, test and run. Idempotent, non-interactive.
 # The one list of build and test dependencies: add a package here, nowhere else.
+#   --bench  also the reference solvers that only benchmarks use (ctest --preset bench)
 set -euo pipefail
 
 PACKAGES=(
@@ -22,6 +23,13 @@ PACKAGES=(
     # sparse direct solvers of the wall analysis (CHOLMOD, UMFPACK) and a fast BLAS under them
     libsuitesparse-dev libopenblas0-pthread
 )
+# reference solvers of the benchmarks only: OpenFOAM v1912 (bench_sph_openfoam)
+BENCH_PACKAGES=(openfoam)
+case "${1:-}" in
+    --bench) PACKAGES+=("${BENCH_PACKAGES[@]}") ;;
+    "") ;;
+    *) echo "install-deps: unknown option '$1' (--bench)" >&2; exit 2 ;;
+esac
 
 missing=()
 for package in "${PACKAGES[@]}"; do

@@ -1,0 +1,51 @@
+#pragma once
+
+// The sph-stenosis validation case's problem (issue 18), public so that the OpenFOAM cross-check
+// (tests/bench/bench_sph_openfoam) solves the same one: a rigid pipe of radius R0 narrowed by a cosine stenosis
+// R(x) = R0 (1 - 0.25 (1 + cos(pi (x - throat) / half length))) to R0 / 2 (50 % in diameter, area ratio 4), a
+// parabolic inflow of the given mean speed, a pressure outlet at 0 Pa, blood as a Newtonian fluid. Sections every
+// step along the axis, each a slab two lattice spacings thick, hold the time-averaged flow (CrossSections.h).
+// mm for the geometry (the patient frame's unit), SI for the flow.
+
+#include "vsim/core/Progress.h"
+#include "vsim/sim/sph/CrossSections.h"
+#include "vsim/sim/sph/StenosisFigures.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vsim::sim::sph {
+
+struct StenosisPipe
+{
+    double spacingMm = 0.1;                           ///< the particle lattice (R0 is 8 spacings)
+    double radiusMm = 0.8;                            ///< R0
+    double lengthMm = 5.6;                            ///< inlet at x = 0, outlet at x = length
+    double throatAtMm = 2.4, halfLengthMm = 0.8;      ///< the narrowing's centre and half its length
+    double meanSpeedMS = 0.05;                        ///< the inflow's mean (Re 24 upstream, 48 in the throat)
+    double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
+    double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
+    double sectionStepMm = 0.2;
+
+    /// The lumen's radius at x (mm).
+    double radiusAtMm(double xMm) const;
+    /// The sections' positions along the axis (mm), two steps in from each end.
+    std::vector<double> sectionArcsMm() const;
+    double sectionThicknessMm() const { return 2.0 * spacingMm; }
+    double flowRateM3S() const; ///< the mean speed times the unnarrowed lumen's area
+};
+
+struct StenosisPipeFlow
+{
+    std::vector<double> arcMm;       ///< the sections' positions
+    std::vector<SectionFlow> flows;  ///< their time averages over the settled flow
+    StenosisFigures figures;
+    std::map<std::string, double> metrics; ///< the run's (steps, particles, largest_density_variation, ...)
+};
+
+/// Runs the SPH case (the stenosis Courant number, 25 ms, averaged from 15 ms: about 26,600 particles and 5,400
+/// steps). Throws vsim::Error when the run stops early (a guard) and vsim::Cancelled when cancelled.
+StenosisPipeFlow runStenosisPipe(const Progress& progress = {});
+
+} // namespace vsim::sim::sph

@@ -1,0 +1,48 @@
+#pragma once
+
+// The OpenFOAM side of the blood-flow cross-check (issue 18, bench_sph_openfoam): the sph-stenosis problem
+// (StenosisPipe.h) as an axisymmetric OpenFOAM v1912 case (Debian package `openfoam`; `scripts/install-deps.sh
+// --bench`): a 5-degree wedge about the pipe's axis, one blockMesh block whose wall edges follow R(x) through a
+// polyLine at every axial cell, cells graded towards the wall; the parabolic
+// inflow written face by face from the inlet's face centres, a pressure outlet at 0, no slip on the wall;
+// simpleFoam (steady, laminar, Newtonian: the SPH case is steady once its 10 ms ramp has passed), SIMPLEC to a
+// pressure residual of 1e-11, second-order (linear) convection. Its cells are then read back into the SPH's section
+// definitions (CrossSections.h): each section a slab of the same thickness, its peak the mean of the fastest 5 % of
+// the slab's volume, its pressure the volume mean. The wall shear stress is OpenFOAM's wallShearStress function
+// object times the density.
+
+#include "vsim/sim/sph/StenosisPipe.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vsim::bench {
+
+struct OpenFoamMesh
+{
+    int axialCells = 224, radialCells = 32;
+    double wallGrading = 0.4;  ///< the last radial cell's size / the first's (towards the wall)
+    double wedgeDegrees = 5.0;
+};
+
+struct OpenFoamStenosisFlow
+{
+    std::vector<sim::sph::SectionFlow> sections; ///< at StenosisPipe::sectionArcsMm(); areas: the lumen's
+    sim::sph::StenosisFigures figures;
+    std::vector<double> wallArcMm, wallShearPa; ///< each wall face's axial position and |tau_w|
+    double throatWallShearPa = 0.0;             ///< |tau_w| averaged over the wall faces in the throat's slab
+    double inletFlowRateM3S = 0.0;              ///< the discrete inflow (the parabola sampled at the face centres)
+    int cells = 0, iterations = 0;
+    double pressureResidual = 0.0; ///< the last SIMPLE iteration's initial pressure residual
+    bool converged = false;        ///< simpleFoam stopped at its residual control
+    double seconds = 0.0;          ///< blockMesh + simpleFoam + the field writers
+};
+
+/// Writes and runs the case in `directory` (created; a directory that exists must hold an earlier case of this
+/// bench, marked by its file VASCUSIM-OPENFOAM-CASE, and is then replaced). Throws vsim::Error when a step fails,
+/// naming its log.
+OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh,
+                                         const std::filesystem::path& directory);
+
+} // namespace vsim::bench

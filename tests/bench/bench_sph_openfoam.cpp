@@ -1,0 +1,198 @@
+// The blood-flow solver against OpenFOAM (issue 18's cross-check): the sph-stenosis problem (StenosisPipe.h: a 50 %
+// diameter cosine stenosis in a 1.6 mm pipe, parabolic inflow of 0.05 m/s mean, Re 24 upstream and 48 in the throat)
+// run by our SPH (25 ms, averaged over 15-25 ms once the 10 ms ramp has passed) and by OpenFOAM's simpleFoam on an
+// axisymmetric wedge (OpenFoamStenosis.h) at two meshes (the finer one the reference, the coarser one showing
+// OpenFOAM's own discretisation error). Both read through the same section definitions (CrossSections.h) and the
+// same figures (StenosisFigures.h). Compared, with the issue's tolerances:
+//   centerline velocity profile  each section's peak velocity (the mean of its fastest 5 %), from the upstream
+//                                compared section to the downstream one: largest difference / OpenFOAM's <= 10 %;
+//   peak velocity ratio          throat / 1.6 mm upstream: <= 10 %;
+//   pressure drop                1.6 mm upstream - 1.6 mm downstream (section means): <= 15 %;
+//   wall shear stress in the throat: <= 20 % (reported as missing while the SPH does not compute it).
+//
+//   bench_sph_openfoam <work folder> [--sph-in FILE] [--sph-out FILE]
+//
+// --sph-out writes the SPH's sections (JSON) after its run; --sph-in reads them instead of running it (the SPH may
+// run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2). Prints one JSON object; exit 1 beyond a
+// tolerance, 0 with "SKIP" when simpleFoam is not installed (`scripts/install-deps.sh --bench`).
+
+#include "OpenFoamStenosis.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/sim/sph/StenosisPipe.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+using namespace vsim;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+json sectionsJson(const std::vector<double>& arcMm, const std::vector<sim::sph::SectionFlow>& flows)
+{
+    json out = json::object();
+    for (const auto& [key, pick] : std::initializer_list<std::pair<const char*, double sim::sph::SectionFlow::*>>{
+             {"area_m2", &sim::sph::SectionFlow::areaM2},
+             {"flow_rate_m3s", &sim::sph::SectionFlow::flowRateM3S},
+             {"mean_velocity_ms", &sim::sph::SectionFlow::meanVelocityMS},
+             {"peak_velocity_ms", &sim::sph::SectionFlow::peakVelocityMS},
+             {"mean_pressure_pa", &sim::sph::SectionFlow::meanPressurePa}})
+    {
+        json values = json::array();
+        for (const auto& flow : flows)
+            values.push_back(flow.*pick);
+        out[key] = values;
+    }
+    out["arc_mm"] = arcMm;
+    return out;
+}
+
+std::vector<sim::sph::SectionFlow> sectionsFrom(const json& in)
+{
+    std::vector<sim::sph::SectionFlow> flows(in.at("arc_mm").size());
+    for (std::size_t k = 0; k < flows.size(); ++k)
+    {
+        flows[k].areaM2 = in.at("area_m2").at(k), flows[k].flowRateM3S = in.at("flow_rate_m3s").at(k);
+        flows[k].meanVelocityMS = in.at("mean_velocity_ms").at(k), flows[k].peakVelocityMS = in.at("peak_velocity_ms").at(k);
+        flows[k].meanPressurePa = in.at("mean_pressure_pa").at(k), flows[k].particles = 1;
+    }
+    return flows;
+}
+
+json figuresJson(const sim::sph::StenosisFigures& f)
+{
+    return {{"throat_mm", f.throatArcMm}, {"peak_ratio_upstream", f.peakRatio},
+            {"peak_ratio_downstream", f.peakRatioDownstream}, {"mean_ratio", f.meanRatio},
+            {"area_ratio", f.areaRatio}, {"pressure_drop_pa", f.pressureDropPa}, {"flow_rate_ratio", f.flowRateRatio}};
+}
+
+json check(double ours, double reference, double tolerance)
+{
+    const double difference = std::abs(ours - reference) / std::abs(reference);
+    return {{"sph", ours}, {"openfoam", reference}, {"relative_difference", difference}, {"tolerance", tolerance},
+            {"passed", difference <= tolerance}};
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2)
+    {
+        std::fprintf(stderr, "usage: bench_sph_openfoam <work folder> [--sph-in FILE] [--sph-out FILE]\n");
+        return 2;
+    }
+    const fs::path work = argv[1];
+    std::string sphIn, sphOut;
+    for (int a = 2; a < argc; ++a)
+    {
+        const std::string option = argv[a];
+        if ((option == "--sph-in" || option == "--sph-out") && a + 1 < argc)
+            (option == "--sph-in" ? sphIn : sphOut) = argv[++a];
+        else
+        {
+            std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--sph-in FILE, --sph-out FILE)\n", option.c_str());
+            return 2;
+        }
+    }
+    const bool haveOpenFoam = std::system("command -v simpleFoam > /dev/null 2>&1") == 0;
+    if (!haveOpenFoam && sphOut.empty())
+    {
+        std::printf("{\"bench\": \"sph_openfoam\", \"skipped\": \"SKIP: simpleFoam not found (Debian package openfoam: "
+                    "scripts/install-deps.sh --bench)\"}\n");
+        return 0;
+    }
+    try
+    {
+        const sim::sph::StenosisPipe pipe;
+        json report = {{"bench", "sph_openfoam"}};
+        std::vector<sim::sph::SectionFlow> sph;
+        const std::vector<double> arcs = pipe.sectionArcsMm();
+        if (!sphIn.empty())
+        {
+            std::ifstream in(sphIn);
+            if (!in)
+                throw Error("cannot read " + sphIn);
+            const json stored = json::parse(in);
+            sph = sectionsFrom(stored.at("sections"));
+            report["sph"] = stored;
+            report["sph"]["from"] = sphIn;
+        }
+        else
+        {
+            const auto start = std::chrono::steady_clock::now();
+            const sim::sph::StenosisPipeFlow flow = sim::sph::runStenosisPipe();
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            sph = flow.flows;
+            report["sph"] = {{"sections", sectionsJson(flow.arcMm, flow.flows)}, {"seconds", seconds},
+                             {"steps", flow.metrics.at("steps")}, {"particles", flow.metrics.at("particles")},
+                             {"largest_density_variation", flow.metrics.at("largest_density_variation")},
+                             {"precision", "double"}};
+            if (!sphOut.empty())
+                std::ofstream(sphOut) << report["sph"].dump(1) << '\n';
+        }
+        const sim::sph::StenosisFigures sphFigures = sim::sph::stenosisFigures(arcs, sph, pipe.compareMm);
+        report["sph"]["figures"] = figuresJson(sphFigures);
+        report["sph"].erase("sections");
+        if (!haveOpenFoam)
+        {
+            std::printf("%s\n", report.dump().c_str());
+            return 0;
+        }
+
+        const std::vector<bench::OpenFoamMesh> meshes = {{224, 32, 0.4, 5.0}, {448, 64, 0.4, 5.0}};
+        std::vector<bench::OpenFoamStenosisFlow> foam;
+        json foamRuns = json::array();
+        for (std::size_t m = 0; m < meshes.size(); ++m)
+        {
+            foam.push_back(bench::runOpenFoamStenosis(pipe, meshes[m], work / ("openfoam-" + std::to_string(m + 1))));
+            const auto& f = foam.back();
+            foamRuns.push_back({{"cells", f.cells}, {"iterations", f.iterations}, {"converged", f.converged},
+                                {"pressure_residual", f.pressureResidual}, {"seconds", f.seconds},
+                                {"inlet_flow_rate_m3s", f.inletFlowRateM3S}, {"figures", figuresJson(f.figures)},
+                                {"throat_wss_pa", f.throatWallShearPa}});
+        }
+        report["openfoam"] = foamRuns;
+        report["flow_rate_m3s"] = pipe.flowRateM3S();
+        const bench::OpenFoamStenosisFlow& reference = foam.back();
+
+        // The profile: each section's peak from the upstream compared section to the downstream one.
+        const sim::sph::StenosisFigures& rf = reference.figures;
+        double worst = 0.0, worstAt = 0.0;
+        json profile = json::array();
+        for (std::size_t k = rf.upstream; k <= rf.downstream; ++k)
+        {
+            const double ours = sph[k].peakVelocityMS, theirs = reference.sections[k].peakVelocityMS;
+            const double difference = std::abs(ours - theirs) / theirs;
+            profile.push_back({{"x_mm", arcs[k]}, {"sph_ms", ours}, {"openfoam_ms", theirs}});
+            if (difference > worst)
+                worst = difference, worstAt = arcs[k];
+        }
+        report["centerline_profile"] = {{"sections", profile}, {"largest_relative_difference", worst},
+                                        {"at_mm", worstAt}, {"tolerance", 0.10}, {"passed", worst <= 0.10}};
+        report["peak_ratio"] = check(sphFigures.peakRatio, rf.peakRatio, 0.10);
+        report["pressure_drop"] = check(sphFigures.pressureDropPa, rf.pressureDropPa, 0.15);
+        report["throat_wss"] = {{"openfoam_pa", reference.throatWallShearPa}, {"sph_pa", nullptr}, {"tolerance", 0.20},
+                                {"passed", false}, {"why", "the SPH does not compute the wall shear stress yet"}};
+        const bool passed = report["centerline_profile"]["passed"] && report["peak_ratio"]["passed"] &&
+                            report["pressure_drop"]["passed"] && report["throat_wss"]["passed"] &&
+                            std::all_of(foam.begin(), foam.end(), [](const auto& f) { return f.converged; });
+        report["passed"] = passed;
+        std::printf("%s\n", report.dump().c_str());
+        return passed ? 0 : 1;
+    }
+    catch (const std::exception& error)
+    {
+        std::fprintf(stderr, "bench_sph_openfoam: %s\n", error.what());
+        return 1;
+    }
+}
