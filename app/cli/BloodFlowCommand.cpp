@@ -162,12 +162,14 @@ int simulateSph(const Arguments& arguments, const Progress& progress)
     const app::BloodFlowRun flow = app::runBloodFlow(study, setup, {}, progress.subRange(0.0, 0.95));
     const std::string document = app::bloodFlowDocument(flow, setup);
     const std::vector<std::string> inputs{setup.centerlinesId};
-    const std::string runId = app::addBloodFlowRun(study, flow, setup, inputs);
+    const app::BloodFlowArtifacts added = app::addBloodFlowRun(study, flow, setup, inputs);
+    const std::string& runId = added.run;
     study.save();
     if (arguments.hasOption("out"))
         study::writeRunSeries(arguments.option("out"), flow.run, document);
     progress.report(1.0, "saved");
-    std::cout << document.substr(0, document.size() - 2) << ",\n  \"run_artifact\": \"" << runId << "\"\n}\n";
+    std::cout << document.substr(0, document.size() - 2) << ",\n  \"run_artifact\": \"" << runId << "\",\n"
+              << "  \"wall_loads_artifact\": \"" << added.wallLoads << "\"\n}\n";
     return runExitCode(flow.run.status, runId);
 }
 

@@ -44,9 +44,9 @@ bool MainWindow::simulateBloodFlow()
         tr("Blood flow"),
         [this, setup, flow](const Progress& progress) { *flow = app::runBloodFlow(m_document.study(), setup, {}, progress); },
         [this, setup, flow, centerlinesId] {
-            const std::string id = app::addBloodFlowRun(m_document.study(), *flow, setup, {centerlinesId});
-            m_document.undoStack()->push(new AddedArtifactCommand(m_document, std::vector<std::string>{id}, tr("Blood flow")));
-            openRunPlayer(id);
+            const app::BloodFlowArtifacts added = app::addBloodFlowRun(m_document.study(), *flow, setup, {centerlinesId});
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, added.ids(), tr("Blood flow")));
+            openRunPlayer(added.run);
             if (const std::string warning = app::runStatusWarning(flow->run.status); !warning.empty())
                 showError(tr("Blood flow"), tr("Read these results with care: %1").arg(QString::fromStdString(warning)));
             else if (flow->stenosis)

@@ -115,7 +115,7 @@ private slots:
         const std::size_t before = study.artifacts().size();
         QVERIFY(window.simulateBloodFlow());
         QVERIFY(test::waitForTask(window, 300000));
-        QCOMPARE(study.artifacts().size(), before + 1);
+        QCOMPARE(study.artifacts().size(), before + 1); // 4 ms end before the averaging window: no wall loads
         const std::string runId = study.newestArtifact(study::ArtifactKind::Run);
         QVERIFY(!runId.empty());
         QCOMPARE(study.artifact(runId).provenance.command, std::string("simulate sph"));

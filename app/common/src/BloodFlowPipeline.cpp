@@ -4,7 +4,10 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
 #include "vsim/mesh/ParticleSeeding.h"
+#include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/sph/SphSolver.h"
+
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +16,8 @@
 
 namespace vsim::app {
 namespace {
+
+constexpr int kWallSurfaceVertices = 20000; // the wall loads' surface: the label's iso-surface decimated to this
 
 /// A centerline path with its lumen radius at every point (mm), oriented from its first point.
 struct RadiusPath
@@ -56,6 +61,26 @@ struct RadiusPath
         return (after - before).norm() > 0.0 ? Eigen::Vector3d((after - before).normalized()) : tangent;
     }
 };
+
+/// The surface's vertices with their normals into the lumen (the area-weighted mean of the outward triangle
+/// normals around each, reversed), in m.
+std::vector<sim::sph::WallPoint> inwardWallPoints(const TriangleMesh& surface)
+{
+    std::vector<Eigen::Vector3d> outward(surface.points.size(), Eigen::Vector3d::Zero());
+    for (const auto& t : surface.triangles)
+    {
+        const Eigen::Vector3d& a = surface.points[std::size_t(t[0])];
+        const Eigen::Vector3d areaNormal = (surface.points[std::size_t(t[1])] - a).cross(surface.points[std::size_t(t[2])] - a);
+        for (int corner : t)
+            outward[std::size_t(corner)] += areaNormal;
+    }
+    std::vector<sim::sph::WallPoint> points;
+    points.reserve(surface.points.size());
+    for (std::size_t v = 0; v < surface.points.size(); ++v)
+        points.push_back({1e-3 * surface.points[v], outward[v].norm() > 0.0 ? Eigen::Vector3d(-outward[v].normalized())
+                                                                             : Eigen::Vector3d::UnitX()});
+    return points;
+}
 
 /// Segment `e`'s path oriented to start at node `from`, with its conical radii.
 RadiusPath orientedSegment(const VesselNetwork& network, int e, int from)
@@ -354,15 +379,33 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
         flow.sectionArcMm.push_back(s - inletPlane.insetMm);
         flow.sectionCentresMm.push_back(centre);
     }
+    // The wall loads on the lumen's surface, averaged over the sections' window, every 10th step.
+    progress.report(0.05, "the lumen's surface for the wall loads");
+    ParameterSet surfaceParameters(mesh::surfaceParameters());
+    surfaceParameters.set("target_vertices", double(kWallSurfaceVertices));
+    flow.wallSurface = mesh::extractVesselSurface(label, 1, surfaceParameters).surface;
     sim::sph::SphSolver solver;
     solver.setOpenBoundaries(flow.boundaries);
     solver.setSections(sections, flow.averagedFromS, int(std::ceil(double(sections.size()) / 30.0)));
+    solver.setWallPoints(inwardWallPoints(flow.wallSurface), flow.averagedFromS, 10);
     if (control.frameEvery <= 0.0 && control.frameEverySteps <= 0)
         control.frameEvery = endTime / std::max(1, setup.frames);
     flow.run = sim::runSolver(solver, input, parameters, control, progress.subRange(0.05, 1.0));
     flow.sections = solver.sections().averages();
     flow.sectionLargestPeaks = solver.sections().largestPeaks();
     flow.averagedS = solver.sections().averagedTime();
+    {
+        const std::vector<sim::sph::WallLoadAverage> loads = solver.wallLoads().averages();
+        auto &tawss = flow.wallSurface.pointFields["tawss_pa"], &osi = flow.wallSurface.pointFields["osi"],
+             &pressure = flow.wallSurface.pointFields["wall_pressure_pa"];
+        for (const sim::sph::WallLoadAverage& load : loads)
+        {
+            const bool sampled = load.sampledTimeS > 0.0;
+            tawss.push_back(sampled ? load.tawssPa : NAN);
+            osi.push_back(sampled ? load.osi : NAN);
+            pressure.push_back(sampled ? load.meanPressurePa : NAN);
+        }
+    }
     if (flow.averagedS > 0.0)
     {
         try

@@ -6,6 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace vsim::app {
 namespace {
 
@@ -55,6 +58,50 @@ std::vector<std::tuple<std::string, double, std::string>> stenosisRows(const Blo
             {"flow_rate_ratio", s.flowRateRatio, "throat / upstream flow rate: 1 for a settled, conserved flow"}};
 }
 
+/// The wall loads' summary: where the time-averaged wall shear stress and the wall pressure peak, with their
+/// definitions (sim/sph/WallShear.h).
+nlohmann::json wallLoadsJson(const TriangleMesh& surface)
+{
+    const auto field = [&surface](const char* name) -> const std::vector<double>& { return surface.pointFields.at(name); };
+    if (!surface.pointFields.count("tawss_pa"))
+        return nullptr;
+    const std::vector<double>&tawss = field("tawss_pa"), &osi = field("osi"), &pressure = field("wall_pressure_pa");
+    std::size_t sampled = 0, peakShear = 0, peakPressure = 0, lowPressure = 0, peakOsi = 0;
+    double shearSum = 0.0;
+    for (std::size_t v = 0; v < tawss.size(); ++v)
+    {
+        if (!std::isfinite(tawss[v]))
+            continue;
+        if (sampled++ == 0)
+            peakShear = peakPressure = lowPressure = peakOsi = v;
+        shearSum += tawss[v];
+        if (tawss[v] > tawss[peakShear])
+            peakShear = v;
+        if (osi[v] > osi[peakOsi])
+            peakOsi = v;
+        if (pressure[v] > pressure[peakPressure])
+            peakPressure = v;
+        if (pressure[v] < pressure[lowPressure])
+            lowPressure = v;
+    }
+    if (sampled == 0)
+        return nullptr;
+    const auto at = [&surface](std::size_t v) {
+        const Eigen::Vector3d& p = surface.points[v];
+        return nlohmann::json::array({p.x(), p.y(), p.z()});
+    };
+    return {{"definition", "on the lumen surface's vertices, time-averaged with the sections: TAWSS the mean of "
+                           "|tau_w| (tau_w = mu du_t/dn from a least-squares parabola over the particles 3 spacings "
+                           "deep), OSI (1 - |mean tau_w| / TAWSS) / 2, wall pressure relative to the outlets' as given"},
+            {"vertices", tawss.size()},
+            {"sampled_vertices", sampled},
+            {"largest_tawss_pa", {{"value", tawss[peakShear]}, {"at_mm", at(peakShear)}}},
+            {"mean_tawss_pa", shearSum / double(sampled)},
+            {"largest_osi", {{"value", osi[peakOsi]}, {"at_mm", at(peakOsi)}}},
+            {"highest_wall_pressure_pa", {{"value", pressure[peakPressure]}, {"at_mm", at(peakPressure)}}},
+            {"lowest_wall_pressure_pa", {{"value", pressure[lowPressure]}, {"at_mm", at(lowPressure)}}}};
+}
+
 } // namespace
 
 std::string bloodFlowDocument(const BloodFlowRun& flow, const BloodFlowSetup& setup)
@@ -95,13 +142,14 @@ std::string bloodFlowDocument(const BloodFlowRun& flow, const BloodFlowSetup& se
                           {"metrics", flow.run.metrics},
                           {"stenosis", stenosis},
                           {"sections", sections},
+                          {"wall_loads", wallLoadsJson(flow.wallSurface)},
                           {"frames", flow.run.frames.size()},
                           {"precision", "double (CPU)"},
                           {"warnings", flow.warnings}}
                .dump(2) + "\n";
 }
 
-std::string addBloodFlowRun(study::Study& study, const BloodFlowRun& flow, const BloodFlowSetup& setup,
+BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow, const BloodFlowSetup& setup,
                             const std::vector<std::string>& inputs)
 {
     study::Provenance provenance{"simulate sph", {}, inputs, "", ""};
@@ -122,7 +170,16 @@ std::string addBloodFlowRun(study::Study& study, const BloodFlowRun& flow, const
         for (const auto& [key, value, definition] : stenosisRows(flow))
             attributes["stenosis_" + key] = preciseNumberText(value);
     study.setArtifactAttributes(id, attributes);
-    return id;
+    BloodFlowArtifacts added{id, ""};
+    const auto tawss = flow.wallSurface.pointFields.find("tawss_pa");
+    if (tawss != flow.wallSurface.pointFields.end() &&
+        std::any_of(tawss->second.begin(), tawss->second.end(), [](double v) { return std::isfinite(v); }))
+    {
+        study::Provenance derived{"simulate sph", {}, {id}, "", ""};
+        derived.parameters["fields"] = "tawss_pa, osi, wall_pressure_pa (NaN past an open end's plane)";
+        added.wallLoads = study.addSurface(flow.wallSurface, "Wall loads (SPH)", derived, warnings);
+    }
+    return added;
 }
 
 } // namespace vsim::app

@@ -2,7 +2,8 @@
 // channel is 20 particles across (0.1 mm, H = 2 mm) between four layers of wall particles on each side, periodic
 // along the flow (x) and across it (z), started from rest; after 7 slowest-mode decay times H^2 / (pi^2 nu) the
 // velocity of every fluid particle against the steady solution u(y) = G / (2 nu) y (H - y), the walls' no-slip
-// planes at y = 0 and H (half a spacing beyond the last fluid layer).
+// planes at y = 0 and H (half a spacing beyond the last fluid layer), and the wall shear stress at points on both
+// plates (WallShear.h), averaged over the last decay time, against 4 mu u_max / H.
 
 #include "SphCases.h"
 
@@ -54,6 +55,14 @@ ValidationResult poiseuilleCase(const Progress& progress)
     parameters.set("periodic_z_mm", kPeriod * kSpacingMm);
     parameters.set("end_time_s", 7.0 * decay);
     SphSolver solver;
+    // The wall shear stress on both plates over the last decay time: tau_w = mu G H / (2 nu) = 4 mu u_max / H.
+    std::vector<WallPoint> plates;
+    for (int i = 0; i < kPeriod; i += 3)
+        for (int k = 0; k < kPeriod; k += 3)
+            for (int side : {0, 1})
+                plates.push_back({1e-3 * kSpacingMm * Eigen::Vector3d(i + 0.25, side * kAcross, k + 0.25),
+                                  Eigen::Vector3d(0.0, side ? -1.0 : 1.0, 0.0)});
+    solver.setWallPoints(plates, 6.0 * decay);
     const SolverRun run = runCase(result.name, solver, channel(), parameters, progress);
 
     const ParticleState& particles = solver.particles();
@@ -75,6 +84,16 @@ ValidationResult poiseuilleCase(const Progress& progress)
     result.figures.push_back({"largest particle's speed / analytic peak", peak / kPeakSpeed, 1.0, 0.02, ""});
     result.figures.push_back({"largest density variation", run.metrics.at("largest_density_variation"), 0.0, 0.01, ""});
     result.figures.push_back({"largest cross-flow speed / peak velocity", across / kPeakSpeed, 0.0, 0.01, ""});
+    const double exactShear = 4.0 * kViscosity * kPeakSpeed / heightM;
+    double shear = 0.0, worstShear = 0.0;
+    for (const WallLoadAverage& load : solver.wallLoads().averages())
+    {
+        shear += load.tawssPa / plates.size();
+        worstShear = std::max(worstShear, std::abs(load.tawssPa / exactShear - 1.0));
+    }
+    result.figures.push_back({"wall shear stress / analytic (mean of " + std::to_string(plates.size()) + " points)",
+                              shear / exactShear, 1.0, 0.05, ""});
+    result.figures.push_back({"worst point's wall shear stress error", worstShear, 0.0, 0.05, ""});
     result.description += " (" + std::to_string(count) + " particles, " + std::to_string(long(run.metrics.at("steps"))) +
                           " steps; largest particle error " + numberText(100.0 * worst) + " % of the peak)";
     return result;

@@ -141,6 +141,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
             m_boxLow[a] = -INFINITY, m_boxHigh[a] = INFINITY;
     m_nextId = int(given.size());
     m_sections.reset();
+    m_wallLoads.reset();
     m_ledger = {};
     m_ledger.inflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
     m_ledger.outflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
@@ -257,6 +258,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     m_stepS = dt;
     ++m_steps;
     m_sections.sample(p, m_fluid, m_timeS, dt);
+    m_wallLoads.sample(p, *m_grid, m_fluid, m_spacingM, m_timeS, dt);
     return {};
 }
 

@@ -42,6 +42,26 @@ double StenosisPipe::flowRateM3S() const
     return meanSpeedMS * std::numbers::pi * std::pow(1e-3 * radiusMm, 2);
 }
 
+std::vector<WallPoint> StenosisPipe::wallPoints(double stepMm, int around) const
+{
+    const std::vector<double> sections = sectionArcsMm();
+    std::vector<WallPoint> points;
+    for (double x = sections.front(); x <= sections.back() + 1e-9; x += stepMm)
+    {
+        // The surface r = R(x): its outward normal is (-R'(x), cos t, sin t) normalised.
+        const double u = (x - throatAtMm) / halfLengthMm;
+        const double slope = std::abs(u) >= 1.0 ? 0.0
+                                                 : 0.25 * radiusMm * std::numbers::pi / halfLengthMm * std::sin(std::numbers::pi * u);
+        for (int k = 0; k < around; ++k)
+        {
+            const double t = 2.0 * std::numbers::pi * k / around, r = radiusAtMm(x);
+            const Eigen::Vector3d outward = Eigen::Vector3d(-slope, std::cos(t), std::sin(t)).normalized();
+            points.push_back({1e-3 * Eigen::Vector3d(x, r * std::cos(t), r * std::sin(t)), -outward});
+        }
+    }
+    return points;
+}
+
 StenosisPipeFlow runStenosisPipe(const Progress& progress)
 {
     const StenosisPipe pipe;
@@ -60,10 +80,28 @@ StenosisPipeFlow runStenosisPipe(const Progress& progress)
         sections.push_back({Eigen::Vector3d(1e-3 * x, 0.0, 0.0), Eigen::Vector3d::UnitX(),
                             1e-3 * (pipe.radiusMm + pipe.spacingMm), 1e-3 * pipe.sectionThicknessMm()});
     solver.setSections(sections, kAverageFromS);
+    constexpr double kRingStepMm = 0.05;
+    constexpr int kAround = 8;
+    solver.setWallPoints(pipe.wallPoints(kRingStepMm, kAround), kAverageFromS, 10);
     const SolverRun run = detail::runCase("sph-stenosis", solver, detail::pipeParticles(shape), parameters, progress);
     flow.flows = solver.sections().averages();
     flow.figures = stenosisFigures(flow.arcMm, flow.flows, pipe.compareMm);
     flow.metrics = run.metrics;
+    const std::vector<WallLoadAverage> loads = solver.wallLoads().averages();
+    const std::vector<WallPoint>& points = solver.wallLoads().points();
+    double throatSum = 0.0;
+    int throatRings = 0;
+    for (std::size_t ring = 0; ring * kAround < loads.size(); ++ring)
+    {
+        double shear = 0.0, pressure = 0.0;
+        for (std::size_t k = ring * kAround; k < (ring + 1) * kAround; ++k)
+            shear += loads[k].tawssPa / kAround, pressure += loads[k].meanPressurePa / kAround;
+        const double xMm = 1e3 * points[ring * kAround].positionM.x();
+        flow.wallArcMm.push_back(xMm), flow.wallShearPa.push_back(shear), flow.wallPressurePa.push_back(pressure);
+        if (std::abs(xMm - pipe.throatAtMm) <= 0.5 * pipe.sectionThicknessMm() + 1e-9)
+            throatSum += shear, ++throatRings;
+    }
+    flow.throatWallShearPa = throatRings > 0 ? throatSum / throatRings : 0.0;
     return flow;
 }
 
@@ -88,7 +126,8 @@ ValidationResult stenosisCase(const Progress& progress)
         "peak velocity ratio " + numberText(figures.peakRatio) + " upstream (" + numberText(up.peakVelocityMS) + " -> " +
         numberText(throat.peakVelocityMS) + " m/s), " + numberText(figures.peakRatioDownstream) +
         " downstream; mean ratio " + numberText(figures.meanRatio) + " (area ratio " + numberText(figures.areaRatio) +
-        "); pressure drop " + numberText(figures.pressureDropPa) + " Pa over 3.2 mm; " +
+        "); pressure drop " + numberText(figures.pressureDropPa) + " Pa over 3.2 mm; throat wall shear stress " +
+        numberText(flow.throatWallShearPa) + " Pa (TAWSS); " +
         std::to_string(long(flow.metrics.at("steps"))) + " steps, " +
         std::to_string(long(flow.metrics.at("particles"))) + " particles";
     return result;

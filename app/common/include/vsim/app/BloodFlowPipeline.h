@@ -7,11 +7,13 @@
 // rest), the others are pressure outlets. The particles are seeded on the label with the ends open
 // (mesh/ParticleSeeding.h). Sections every two spacings along the centerline from the inlet to the outlet whose path is
 // the narrowest are averaged over the run's second half (steady) or its last cycle (a waveform), and give the stenosis
-// figures (sim/sph/StenosisFigures.h).
+// figures (sim/sph/StenosisFigures.h); the wall shear stress and pressure on the lumen's surface are averaged over the
+// same window (sim/sph/WallShear.h).
 
 #include "vsim/core/Parameters.h"
 #include "vsim/core/Progress.h"
 #include "vsim/core/SolverRun.h"
+#include "vsim/core/TriangleMesh.h"
 #include "vsim/sim/common/RunDriver.h"
 #include "vsim/sim/sph/CrossSections.h"
 #include "vsim/sim/sph/OpenBoundary.h"
@@ -61,6 +63,10 @@ struct BloodFlowRun
     std::optional<sim::sph::StenosisFigures> stenosis;
     ParameterSet parameters{sim::sph::sphParameters()}; ///< as run (the chosen values filled in)
     double rampS = 0.0;
+    /// The lumen's surface (mesh/VesselSurface.h, 20,000 vertices at most) with the wall loads averaged with the
+    /// sections (sim/sph/WallShear.h): point fields tawss_pa, osi and wall_pressure_pa (NaN where no fluid lies
+    /// against the vertex: past an open end's plane).
+    TriangleMesh wallSurface;
     std::vector<std::string> warnings;
 };
 
@@ -84,9 +90,16 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
 /// figures with their definitions and units, the sections along the path.
 std::string bloodFlowDocument(const BloodFlowRun& flow, const BloodFlowSetup& setup);
 
+struct BloodFlowArtifacts
+{
+    std::string run;       ///< "Blood flow (SPH)"
+    std::string wallLoads; ///< "Wall loads (SPH)"; empty when the run ended before its averaging window
+    std::vector<std::string> ids() const { return wallLoads.empty() ? std::vector{run} : std::vector{run, wallLoads}; }
+};
+
 /// Adds the run ("Blood flow (SPH)": a Run artifact of particle frames) with the metrics and the stenosis figures as
-/// attributes; the study is not saved. Returns the run's artifact id.
-std::string addBloodFlowRun(study::Study& study, const BloodFlowRun& flow, const BloodFlowSetup& setup,
+/// attributes, and the wall loads' surface ("Wall loads (SPH)", made from the run); the study is not saved.
+BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow, const BloodFlowSetup& setup,
                             const std::vector<std::string>& inputs);
 
 } // namespace vsim::app

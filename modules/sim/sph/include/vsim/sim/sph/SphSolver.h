@@ -16,6 +16,7 @@
 
 #include "vsim/sim/common/Solver.h"
 #include "vsim/sim/sph/CrossSections.h"
+#include "vsim/sim/sph/WallShear.h"
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
 #include "vsim/sim/sph/OpenBoundary.h"
@@ -54,6 +55,13 @@ public:
         m_sections = SectionSeries(std::move(sections), fromTimeS, everySteps);
     }
     const SectionSeries& sections() const { return m_sections; }
+    /// Points on the wall where the wall shear stress and pressure are averaged over time from `fromTimeS` on,
+    /// sampled every `everySteps` steps (WallShear.h).
+    void setWallPoints(std::vector<WallPoint> points, double fromTimeS, int everySteps = 1)
+    {
+        m_wallLoads = WallLoadSeries(std::move(points), fromTimeS, everySteps);
+    }
+    const WallLoadSeries& wallLoads() const { return m_wallLoads; }
     void initialize(const SimulationInput& input, const ParameterSet& parameters) override;
     RunAxis axis() const override { return {"time", "s", m_endTimeS}; }
     double position() const override { return m_timeS; }
@@ -89,6 +97,7 @@ private:
     SphRates m_rates;
     OpenBoundaries m_openBoundaries;
     SectionSeries m_sections;
+    WallLoadSeries m_wallLoads;
     MassLedger m_ledger;
     long double m_initialFluidMass = 0.0;
     double m_absorptionDistanceM = 0.0;

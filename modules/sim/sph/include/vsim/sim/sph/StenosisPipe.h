@@ -10,6 +10,7 @@
 #include "vsim/core/Progress.h"
 #include "vsim/sim/sph/CrossSections.h"
 #include "vsim/sim/sph/StenosisFigures.h"
+#include "vsim/sim/sph/WallShear.h"
 
 #include <map>
 #include <string>
@@ -34,6 +35,9 @@ struct StenosisPipe
     std::vector<double> sectionArcsMm() const;
     double sectionThicknessMm() const { return 2.0 * spacingMm; }
     double flowRateM3S() const; ///< the mean speed times the unnarrowed lumen's area
+    /// Points on the wall every `stepMm` from the first section to the last, `around` of them on each ring, with
+    /// their normals into the lumen (m).
+    std::vector<WallPoint> wallPoints(double stepMm, int around) const;
 };
 
 struct StenosisPipeFlow
@@ -42,10 +46,14 @@ struct StenosisPipeFlow
     std::vector<SectionFlow> flows;  ///< their time averages over the settled flow
     StenosisFigures figures;
     std::map<std::string, double> metrics; ///< the run's (steps, particles, largest_density_variation, ...)
+    /// The wall's rings every 0.05 mm: their positions (mm), time-averaged WSS (TAWSS) and pressure, each the mean
+    /// over the ring's 8 points (WallShear.h).
+    std::vector<double> wallArcMm, wallShearPa, wallPressurePa;
+    double throatWallShearPa = 0.0; ///< the rings' TAWSS in the throat's section slab, averaged
 };
 
 /// Runs the SPH case (the stenosis Courant number, 25 ms, averaged from 15 ms: about 26,600 particles and 5,400
-/// steps). Throws vsim::Error when the run stops early (a guard) and vsim::Cancelled when cancelled.
+/// steps; the wall loads sampled every 10th step). Throws vsim::Error when the run stops early (a guard) and vsim::Cancelled when cancelled.
 StenosisPipeFlow runStenosisPipe(const Progress& progress = {});
 
 } // namespace vsim::sim::sph

@@ -1,0 +1,102 @@
+#include "vsim/sim/sph/WallShear.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+
+namespace vsim::sim::sph {
+namespace {
+
+constexpr double kDepthSpacings = 3.0;   // the fit reaches this deep into the fluid
+constexpr double kLateralSpacings = 1.5; // and this far along the wall
+
+} // namespace
+
+WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, const FluidModel& fluid, double spacingM,
+                  const WallPoint& point)
+{
+    // Least squares over the fluid particles in the cylinder: u_t = u0 + a y + b y^2 (normal equations in
+    // (u0, a, b)) and p = p0 + c y.
+    Eigen::Matrix3d shearNormal = Eigen::Matrix3d::Zero();
+    Eigen::Matrix2d pressureNormal = Eigen::Matrix2d::Zero();
+    Eigen::Matrix3d shearRight = Eigen::Matrix3d::Zero();
+    Eigen::Vector2d pressureRight = Eigen::Vector2d::Zero();
+    const double deepest = kDepthSpacings * spacingM, widest = kLateralSpacings * spacingM;
+    const Eigen::Vector3d& n = point.normal;
+    grid.forEachNear(particles.position, grid.wrap(point.positionM + 0.5 * deepest * n), -1,
+                     [&](int j, const Eigen::Vector3d& rij, double) {
+                         const std::size_t k = std::size_t(j);
+                         if (!particles.isFluid(k))
+                             return;
+                         const Eigen::Vector3d offset = 0.5 * deepest * n - rij; // x_j - the wall point
+                         const double y = offset.dot(n);
+                         if (!(y > 0.0) || y > deepest || (offset - y * n).norm() > widest)
+                             return;
+                         const double eta = y / spacingM; // the fits in spacings: well scaled
+                         const Eigen::Vector3d basis(1.0, eta, eta * eta);
+                         const Eigen::Vector2d affine(1.0, eta);
+                         const Eigen::Vector3d& u = particles.velocity[k];
+                         shearNormal += basis * basis.transpose();
+                         shearRight += basis * (u - u.dot(n) * n).transpose();
+                         pressureNormal += affine * affine.transpose();
+                         pressureRight += affine * fluid.pressure(particles.density[k], particles.voidFraction[k]);
+                     });
+    WallLoad load;
+    // The fits need particles at three depths at least (the lattice gives three layers).
+    if (!(std::abs(shearNormal.determinant()) > 1e-12 * shearNormal.squaredNorm()) ||
+        !(std::abs(pressureNormal.determinant()) > 1e-12 * pressureNormal.squaredNorm()))
+        return load;
+    const Eigen::Matrix3d coefficients = shearNormal.ldlt().solve(shearRight);
+    load.shearPa = fluid.viscosity / spacingM * coefficients.row(1).transpose();
+    load.pressurePa = pressureNormal.ldlt().solve(pressureRight)[0];
+    load.valid = true;
+    return load;
+}
+
+void WallLoadSeries::sample(const ParticleState& particles, const NeighbourGrid& grid, const FluidModel& fluid,
+                            double spacingM, double timeS, double weightS)
+{
+    if (m_points.empty() || timeS < m_from)
+        return;
+    m_pending += weightS;
+    if (m_calls++ % m_every != 0)
+        return;
+    if (m_sums.empty())
+        m_sums.resize(m_points.size());
+    const double weight = m_pending;
+    m_pending = 0.0;
+#pragma omp parallel for schedule(dynamic, 16)
+    for (std::ptrdiff_t k = 0; k < std::ptrdiff_t(m_points.size()); ++k)
+    {
+        const WallLoad load = wallLoad(particles, grid, fluid, spacingM, m_points[std::size_t(k)]);
+        if (!load.valid)
+            continue;
+        WallLoadAverage& sum = m_sums[std::size_t(k)];
+        sum.tawssPa += weight * load.shearPa.norm();
+        sum.meanShearPa += weight * load.shearPa;
+        sum.meanPressurePa += weight * load.pressurePa;
+        sum.largestShearPa = std::max(sum.largestShearPa, load.shearPa.norm());
+        sum.sampledTimeS += weight;
+    }
+}
+
+std::vector<WallLoadAverage> WallLoadSeries::averages() const
+{
+    std::vector<WallLoadAverage> averages(m_points.size());
+    for (std::size_t k = 0; k < m_sums.size(); ++k)
+    {
+        const WallLoadAverage& sum = m_sums[k];
+        if (!(sum.sampledTimeS > 0.0))
+            continue;
+        WallLoadAverage& a = averages[k];
+        a.sampledTimeS = sum.sampledTimeS;
+        a.tawssPa = sum.tawssPa / sum.sampledTimeS;
+        a.meanShearPa = sum.meanShearPa / sum.sampledTimeS;
+        a.meanPressurePa = sum.meanPressurePa / sum.sampledTimeS;
+        a.largestShearPa = sum.largestShearPa;
+        a.osi = a.tawssPa > 0.0 ? 0.5 * (1.0 - a.meanShearPa.norm() / a.tawssPa) : 0.0;
+    }
+    return averages;
+}
+
+} // namespace vsim::sim::sph
