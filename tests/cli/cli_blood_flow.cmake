@@ -2,7 +2,7 @@
 # stenosis) through segment, skeleton and centerline, then `simulate sph` at a coarse spacing for 20 ms after a 5 ms
 # ramp (the plumbing: the inlet and the outlet at the vessel's ends, the particle frames written to --out and kept as
 # a Run in the study, the mass ledger balanced, the wall loads averaged over 12.5-20 ms on the lumen surface's
-# vertices and kept as a "Wall loads (SPH)" surface). Bad input: an unknown unit, a profile, the CUDA backend (not built for SPH yet), a
+# vertices and kept as a "Wall loads (SPH)" surface, and in the report). Bad input: an unknown unit, a profile, the CUDA backend (not built for SPH yet), a
 # folder that is not VascuSim's.
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
@@ -43,6 +43,14 @@ endif()
 run_cli(0 info info ${study})
 if(NOT info MATCHES "Blood flow \\(SPH\\)" OR NOT info MATCHES "Wall loads \\(SPH\\)")
     message(FATAL_ERROR "the study does not list the blood-flow run:\n${info}")
+endif()
+
+# The report's stenosis section carries the wall loads beside the velocity figures.
+run_cli(0 ignored report --study ${study} --out ${WORK}/report.pdf)
+execute_process(COMMAND pdftotext ${WORK}/report.pdf - OUTPUT_VARIABLE report_text RESULT_VARIABLE code)
+string(REPLACE "\n" " " report_text "${report_text}")
+if(NOT code EQUAL 0 OR NOT report_text MATCHES "Wall loads on the lumen surface" OR NOT report_text MATCHES "TAWSS")
+    message(FATAL_ERROR "the report does not give the wall loads:\n${report_text}")
 endif()
 
 # Refusals: exit 2 for usage, 1 for what cannot be done; nothing is added.

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <tuple>
 
 namespace vsim::app {
 namespace {
@@ -58,48 +60,75 @@ std::vector<std::tuple<std::string, double, std::string>> stenosisRows(const Blo
             {"flow_rate_ratio", s.flowRateRatio, "throat / upstream flow rate: 1 for a settled, conserved flow"}};
 }
 
-/// The wall loads' summary: where the time-averaged wall shear stress and the wall pressure peak, with their
-/// definitions (sim/sph/WallShear.h).
-nlohmann::json wallLoadsJson(const TriangleMesh& surface)
+/// The wall loads' summary (sim/sph/WallShear.h): where the time-averaged wall shear stress, the OSI and the wall
+/// pressure peak on the lumen surface; nothing when no vertex was sampled.
+struct WallLoadSummary
 {
-    const auto field = [&surface](const char* name) -> const std::vector<double>& { return surface.pointFields.at(name); };
+    std::size_t vertices = 0, sampled = 0, peakShear = 0, peakOsi = 0, highPressure = 0, lowPressure = 0;
+    double meanShearPa = 0.0;
+};
+
+std::optional<WallLoadSummary> summariseWallLoads(const TriangleMesh& surface)
+{
     if (!surface.pointFields.count("tawss_pa"))
-        return nullptr;
-    const std::vector<double>&tawss = field("tawss_pa"), &osi = field("osi"), &pressure = field("wall_pressure_pa");
-    std::size_t sampled = 0, peakShear = 0, peakPressure = 0, lowPressure = 0, peakOsi = 0;
-    double shearSum = 0.0;
+        return std::nullopt;
+    const std::vector<double>&tawss = surface.pointFields.at("tawss_pa"), &osi = surface.pointFields.at("osi"),
+                            &pressure = surface.pointFields.at("wall_pressure_pa");
+    WallLoadSummary w;
+    w.vertices = tawss.size();
     for (std::size_t v = 0; v < tawss.size(); ++v)
     {
         if (!std::isfinite(tawss[v]))
             continue;
-        if (sampled++ == 0)
-            peakShear = peakPressure = lowPressure = peakOsi = v;
-        shearSum += tawss[v];
-        if (tawss[v] > tawss[peakShear])
-            peakShear = v;
-        if (osi[v] > osi[peakOsi])
-            peakOsi = v;
-        if (pressure[v] > pressure[peakPressure])
-            peakPressure = v;
-        if (pressure[v] < pressure[lowPressure])
-            lowPressure = v;
+        if (w.sampled++ == 0)
+            w.peakShear = w.peakOsi = w.highPressure = w.lowPressure = v;
+        w.meanShearPa += tawss[v];
+        w.peakShear = tawss[v] > tawss[w.peakShear] ? v : w.peakShear;
+        w.peakOsi = osi[v] > osi[w.peakOsi] ? v : w.peakOsi;
+        w.highPressure = pressure[v] > pressure[w.highPressure] ? v : w.highPressure;
+        w.lowPressure = pressure[v] < pressure[w.lowPressure] ? v : w.lowPressure;
     }
-    if (sampled == 0)
+    if (w.sampled == 0)
+        return std::nullopt;
+    w.meanShearPa /= double(w.sampled);
+    return w;
+}
+
+/// The summary's figures (value, the vertex it is at or none, definition), as the document and the attributes name
+/// them (key prefix "wall_").
+std::vector<std::tuple<std::string, double, std::optional<std::size_t>, std::string>> wallLoadRows(const TriangleMesh& surface,
+                                                                                                 const WallLoadSummary& w)
+{
+    const auto& f = surface.pointFields;
+    return {{"largest_tawss_pa", f.at("tawss_pa")[w.peakShear], w.peakShear,
+             "largest time-averaged wall shear stress (mean |tau_w|) on the lumen surface"},
+            {"mean_tawss_pa", w.meanShearPa, std::nullopt, "the vertices' mean time-averaged wall shear stress"},
+            {"largest_osi", f.at("osi")[w.peakOsi], w.peakOsi, "largest oscillatory shear index (1 - |mean tau_w| / TAWSS) / 2"},
+            {"highest_pressure_pa", f.at("wall_pressure_pa")[w.highPressure], w.highPressure,
+             "highest time-averaged wall pressure, against the outlets' pressure as given"},
+            {"lowest_pressure_pa", f.at("wall_pressure_pa")[w.lowPressure], w.lowPressure,
+             "lowest time-averaged wall pressure, against the outlets' pressure as given"}};
+}
+
+nlohmann::json wallLoadsJson(const TriangleMesh& surface)
+{
+    const std::optional<WallLoadSummary> w = summariseWallLoads(surface);
+    if (!w)
         return nullptr;
-    const auto at = [&surface](std::size_t v) {
-        const Eigen::Vector3d& p = surface.points[v];
-        return nlohmann::json::array({p.x(), p.y(), p.z()});
-    };
-    return {{"definition", "on the lumen surface's vertices, time-averaged with the sections: TAWSS the mean of "
-                           "|tau_w| (tau_w = mu du_t/dn from a least-squares parabola over the particles 3 spacings "
-                           "deep), OSI (1 - |mean tau_w| / TAWSS) / 2, wall pressure relative to the outlets' as given"},
-            {"vertices", tawss.size()},
-            {"sampled_vertices", sampled},
-            {"largest_tawss_pa", {{"value", tawss[peakShear]}, {"at_mm", at(peakShear)}}},
-            {"mean_tawss_pa", shearSum / double(sampled)},
-            {"largest_osi", {{"value", osi[peakOsi]}, {"at_mm", at(peakOsi)}}},
-            {"highest_wall_pressure_pa", {{"value", pressure[peakPressure]}, {"at_mm", at(peakPressure)}}},
-            {"lowest_wall_pressure_pa", {{"value", pressure[lowPressure]}, {"at_mm", at(lowPressure)}}}};
+    nlohmann::json json{{"definition", "on the lumen surface's vertices, time-averaged with the sections; tau_w = mu "
+                                       "du_t/dn from a least-squares parabola over the particles 3 spacings deep"},
+                        {"vertices", w->vertices},
+                        {"sampled_vertices", w->sampled}};
+    for (const auto& [key, value, vertex, definition] : wallLoadRows(surface, *w))
+    {
+        json[key] = {{"value", value}, {"definition", definition}};
+        if (vertex)
+        {
+            const Eigen::Vector3d& p = surface.points[*vertex];
+            json[key]["at_mm"] = {p.x(), p.y(), p.z()};
+        }
+    }
+    return json;
 }
 
 } // namespace
@@ -169,6 +198,9 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
     if (flow.stenosis)
         for (const auto& [key, value, definition] : stenosisRows(flow))
             attributes["stenosis_" + key] = preciseNumberText(value);
+    if (const std::optional<WallLoadSummary> w = summariseWallLoads(flow.wallSurface))
+        for (const auto& [key, value, vertex, definition] : wallLoadRows(flow.wallSurface, *w))
+            attributes["wall_" + key] = preciseNumberText(value);
     study.setArtifactAttributes(id, attributes);
     BloodFlowArtifacts added{id, ""};
     const auto tawss = flow.wallSurface.pointFields.find("tawss_pa");

@@ -33,7 +33,7 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
     report::Plot plot = diameterPlot(worst, "Diameter along the narrowest segment");
     plot.references = {{"reference diameter", worst.referenceDiameterMm}};
     section.blocks.push_back(plot);
-    const study::Artifact* flow = newestRun(study, "simulate sph");
+    const study::Artifact* flow = newestRun(study, "simulate sph", {}, {}, study::ArtifactKind::Run);
     if (!flow || !flow->attributes.count("stenosis_peak_velocity_ratio"))
     {
         section.blocks.push_back(report::Paragraph{
@@ -57,6 +57,19 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
                 {"stenosis_pressure_ratio", "Distal / proximal pressure (against the outlets' pressure)", ""},
                 {"stenosis_flow_rate_ratio", "Flow rate throat / upstream (1 when settled)", ""}});
     section.blocks.push_back(figures);
+    if (flow->attributes.count("wall_largest_tawss_pa"))
+    {
+        report::MetricTable wall{"Wall loads on the lumen surface (the same run and window; tau_w from the particles "
+                                 "next to the wall)",
+                                 {}};
+        addMetrics(wall, *flow,
+                   {{"wall_largest_tawss_pa", "Largest time-averaged wall shear stress (TAWSS)", "Pa", 1.0, 2},
+                    {"wall_mean_tawss_pa", "Mean TAWSS over the surface", "Pa", 1.0, 2},
+                    {"wall_largest_osi", "Largest oscillatory shear index (0: steady)", "", 1.0, 2},
+                    {"wall_highest_pressure_pa", "Highest wall pressure (against the outlets')", "Pa"},
+                    {"wall_lowest_pressure_pa", "Lowest wall pressure (against the outlets')", "Pa"}});
+        section.blocks.push_back(wall);
+    }
     if (const std::string warning = runStatusWarning(runStatusOf(*flow)); !warning.empty())
         section.blocks.push_back(report::Paragraph{"These blood-flow figures come from a run that is " + warning + "."});
     return section;

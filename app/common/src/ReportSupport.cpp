@@ -21,12 +21,12 @@ std::string textOr(const std::map<std::string, std::string>& values, const std::
 }
 
 const study::Artifact* newestRun(const study::Study& study, const std::string& command, const std::string& key,
-                                 const std::string& value)
+                                 const std::string& value, std::optional<study::ArtifactKind> kind)
 {
     const study::Artifact* newest = nullptr;
     for (const study::Artifact& artifact : study.artifacts()) // in the order they were added
     {
-        if (artifact.damaged || artifact.provenance.command != command)
+        if (artifact.damaged || artifact.provenance.command != command || (kind && artifact.kind != *kind))
             continue;
         const auto& parameters = artifact.provenance.parameters;
         if (!key.empty() && (!parameters.count(key) || textOr(parameters, key) != value))
@@ -51,7 +51,11 @@ void addMetrics(report::MetricTable& table, const study::Artifact& run, const st
 {
     for (const MetricRow& row : rows)
         if (auto m = runMetric(run, row.key, row.label, row.unit, row.scale))
+        {
+            if (row.decimals >= 0)
+                *m = report::metric(m->key, m->label, m->value, m->unit, row.decimals);
             table.rows.push_back(*m);
+        }
 }
 
 std::optional<report::Paragraph> markRunStatus(report::MetricTable& table, const study::Artifact& run)

@@ -24,9 +24,10 @@ std::string textOr(const std::map<std::string, std::string>& values, const std::
                    const std::string& fallback = {});
 
 /// The newest undamaged artifact made by `command` (e.g. "simulate fem") whose provenance parameter `key` is
-/// `value` when key is given; nullptr when there is none.
+/// `value` when key is given, of `kind` when given (a run's derived artifacts share its command); nullptr when there
+/// is none.
 const study::Artifact* newestRun(const study::Study& study, const std::string& command, const std::string& key = {},
-                                 const std::string& value = {});
+                                 const std::string& value = {}, std::optional<study::ArtifactKind> kind = std::nullopt);
 
 /// A metric of a run (its attributes) as a report row; `scale` converts it (100 for a fraction in %). Empty when
 /// the run has no such metric.
@@ -40,6 +41,7 @@ struct MetricRow
     const char* label;
     const char* unit;
     double scale = 1.0;
+    int decimals = -1; ///< -1: the unit's (report::formatMetric)
 };
 void addMetrics(report::MetricTable& table, const study::Artifact& run, const std::vector<MetricRow>& rows);
 
