@@ -34,11 +34,11 @@ struct WallLoad
 {
     Eigen::Vector3d shearPa = Eigen::Vector3d::Zero(); ///< tau_w, tangential (on the wall, in the flow's direction)
     double pressurePa = 0.0;
-    bool valid = false; ///< false where the FPM system was singular (too few fluid particles near the point)
+    bool valid = false; ///< false where the cylinder holds fluid particles at fewer than three depths (past an open end)
 };
 
 /// The load at `point` from the fluid particles of `particles` (the grid built on their positions; its reach at least
-/// 1.5 lattice spacings `spacingM`), the blood's viscosity from `fluid` (void fraction 0).
+/// 2.2 lattice spacings `spacingM`: the cylinder's corners from its centre), the blood's viscosity from `fluid`.
 WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, const FluidModel& fluid, double spacingM,
                   const WallPoint& point);
 
