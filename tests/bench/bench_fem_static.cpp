@@ -12,12 +12,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <string>
 
 using namespace vsim;
 using namespace vsim::sim::fem;
 
-int main(int argc, char** argv)
+namespace {
+
+int run(int argc, char** argv)
 {
     if (argc < 2)
     {
@@ -67,4 +70,19 @@ int main(int argc, char** argv)
             status = 1;
     }
     return status;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    try
+    {
+        return run(argc, argv);
+    }
+    catch (const std::exception& error) // a mesh that is not a wall, a failed factorisation: the reason, exit 1
+    {
+        std::fprintf(stderr, "bench_fem_static: %s\n", error.what());
+        return 1;
+    }
 }
