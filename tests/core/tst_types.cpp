@@ -109,6 +109,27 @@ private slots:
         QVERIFY(std::abs(mesh.signedVolume() - 1.0) < 1e-14);
     }
 
+    void vertexNormalsOfAnOctahedronPointOutward()
+    {
+        // The regular octahedron: each vertex's four faces have equal areas, so its normal is its own direction.
+        vsim::TriangleMesh mesh;
+        mesh.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+        for (int x : {0, 1})
+            for (int y : {2, 3})
+                for (int z : {4, 5})
+                {
+                    // counter-clockwise seen from outside: (x, y, z) when the octant's sign product is positive
+                    const bool positive = ((x == 0) == (y == 2)) == (z == 4);
+                    mesh.triangles.push_back(positive ? std::array<int, 3>{x, y, z} : std::array<int, 3>{x, z, y});
+                }
+        QVERIFY(mesh.signedVolume() > 0.0);
+        const std::vector<Eigen::Vector3d> normals = mesh.vertexNormals();
+        for (std::size_t v = 0; v < mesh.points.size(); ++v)
+            QVERIFY((normals[v] - mesh.points[v]).norm() < 1e-12);
+        mesh.points.push_back({5, 5, 5}); // in no triangle
+        QVERIFY(mesh.vertexNormals().back().isZero());
+    }
+
     void skeletonDegreesOfAY()
     {
         vsim::SkeletonGraph graph;

@@ -7,8 +7,6 @@
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/sph/SphSolver.h"
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -62,23 +60,14 @@ struct RadiusPath
     }
 };
 
-/// The surface's vertices with their normals into the lumen (the area-weighted mean of the outward triangle
-/// normals around each, reversed), in m.
+/// The surface's vertices (m) with their normals into the lumen (the outward vertex normals reversed).
 std::vector<sim::sph::WallPoint> inwardWallPoints(const TriangleMesh& surface)
 {
-    std::vector<Eigen::Vector3d> outward(surface.points.size(), Eigen::Vector3d::Zero());
-    for (const auto& t : surface.triangles)
-    {
-        const Eigen::Vector3d& a = surface.points[std::size_t(t[0])];
-        const Eigen::Vector3d areaNormal = (surface.points[std::size_t(t[1])] - a).cross(surface.points[std::size_t(t[2])] - a);
-        for (int corner : t)
-            outward[std::size_t(corner)] += areaNormal;
-    }
+    const std::vector<Eigen::Vector3d> outward = surface.vertexNormals();
     std::vector<sim::sph::WallPoint> points;
     points.reserve(surface.points.size());
     for (std::size_t v = 0; v < surface.points.size(); ++v)
-        points.push_back({1e-3 * surface.points[v], outward[v].norm() > 0.0 ? Eigen::Vector3d(-outward[v].normalized())
-                                                                             : Eigen::Vector3d::UnitX()});
+        points.push_back({1e-3 * surface.points[v], outward[v].norm() > 0.0 ? Eigen::Vector3d(-outward[v]) : Eigen::Vector3d::UnitX()});
     return points;
 }
 

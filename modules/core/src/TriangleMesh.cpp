@@ -6,6 +6,22 @@
 
 namespace vsim {
 
+std::vector<Eigen::Vector3d> TriangleMesh::vertexNormals() const
+{
+    std::vector<Eigen::Vector3d> normals(points.size(), Eigen::Vector3d::Zero());
+    for (const auto& t : triangles)
+    {
+        const Eigen::Vector3d& a = points[std::size_t(t[0])];
+        const Eigen::Vector3d areaNormal = (points[std::size_t(t[1])] - a).cross(points[std::size_t(t[2])] - a);
+        for (int corner : t)
+            normals[std::size_t(corner)] += areaNormal;
+    }
+    for (Eigen::Vector3d& normal : normals)
+        if (normal.norm() > 0.0)
+            normal.normalize();
+    return normals;
+}
+
 double TriangleMesh::area() const
 {
     double total = 0.0;

@@ -193,20 +193,10 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
     WallMesh wall;
     const auto [surface, endOf] = openEnds(lumen, ends, wall.warnings);
     const int n = int(surface.points.size());
-    // Area-weighted vertex normals (triangles are counter-clockwise seen from outside the lumen).
-    std::vector<Eigen::Vector3d> normal(surface.points.size(), Eigen::Vector3d::Zero());
-    for (const auto& t : surface.triangles)
-    {
-        const Eigen::Vector3d areaNormal = (surface.points[std::size_t(t[1])] - surface.points[std::size_t(t[0])])
-                                               .cross(surface.points[std::size_t(t[2])] - surface.points[std::size_t(t[0])]);
-        for (int v : t)
-            normal[std::size_t(v)] += areaNormal;
-    }
-    // Smooth the normal field (three 1-ring averages): on a noisy segmented surface neighbouring normals scatter,
-    // which twists the prisms and leaves a flat tet among their three.
-    for (auto& direction : normal)
-        if (direction.norm() > 0.0)
-            direction.normalize();
+    // Area-weighted vertex normals (triangles are counter-clockwise seen from outside the lumen), then smoothed
+    // (three 1-ring averages): on a noisy segmented surface neighbouring normals scatter, which twists the prisms
+    // and leaves a flat tet among their three.
+    std::vector<Eigen::Vector3d> normal = surface.vertexNormals();
     for (int pass = 0; pass < 3; ++pass)
     {
         std::vector<Eigen::Vector3d> averaged = normal;

@@ -19,6 +19,9 @@ struct TriangleMesh
 
     /// Total area in mm^2.
     double area() const;
+    /// Unit normals at the points, each the area-weighted mean of its triangles' normals (outward for an outward
+    /// surface); zero at a point of no triangle.
+    std::vector<Eigen::Vector3d> vertexNormals() const;
     /// Signed enclosed volume in mm^3 (positive for a closed, outward-oriented surface).
     double signedVolume() const;
     /// Throws vsim::Error for an index out of range, a degenerate index triple or a field of the wrong length.
