@@ -42,12 +42,9 @@ SectionFlow sectionFlow(const ParticleState& particles, const FluidModel& fluid,
 
 void SectionSeries::sample(const ParticleState& particles, const FluidModel& fluid, double timeS, double weightS)
 {
-    if (timeS < m_from || !(weightS > 0.0))
+    weightS = m_schedule.due(timeS, weightS);
+    if (!(weightS > 0.0))
         return;
-    m_pending += weightS;
-    if (m_calls++ % m_every != 0)
-        return;
-    weightS = m_pending, m_pending = 0.0;
     m_sums.resize(m_sections.size());
     m_largestPeak.resize(m_sections.size(), -INFINITY);
     for (std::size_t k = 0; k < m_sections.size(); ++k)

@@ -56,15 +56,11 @@ WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, con
 void WallLoadSeries::sample(const ParticleState& particles, const NeighbourGrid& grid, const FluidModel& fluid,
                             double spacingM, double timeS, double weightS)
 {
-    if (m_points.empty() || timeS < m_from)
-        return;
-    m_pending += weightS;
-    if (m_calls++ % m_every != 0)
+    const double weight = m_points.empty() ? 0.0 : m_schedule.due(timeS, weightS);
+    if (!(weight > 0.0))
         return;
     if (m_sums.empty())
         m_sums.resize(m_points.size());
-    const double weight = m_pending;
-    m_pending = 0.0;
 #pragma omp parallel for schedule(dynamic, 16)
     for (std::ptrdiff_t k = 0; k < std::ptrdiff_t(m_points.size()); ++k)
     {

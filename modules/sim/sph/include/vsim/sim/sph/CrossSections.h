@@ -12,6 +12,7 @@
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/ParticleState.h"
+#include "vsim/sim/sph/SampleSchedule.h"
 
 #include <Eigen/Core>
 
@@ -45,7 +46,7 @@ public:
     /// Samples every `everySteps`-th call of sample() (many sections over many particles), each weighted by the time
     /// since the last one taken.
     SectionSeries(std::vector<CrossSection> sections, double fromTimeS, int everySteps = 1)
-        : m_sections(std::move(sections)), m_from(fromTimeS), m_every(std::max(1, everySteps))
+        : m_sections(std::move(sections)), m_schedule(fromTimeS, everySteps)
     {
     }
 
@@ -60,13 +61,12 @@ public:
     const std::vector<double>& largestPeaks() const { return m_largestPeak; }
     double averagedTime() const { return m_weight; } ///< s
     /// Forgets the samples (a new run).
-    void reset() { m_weight = 0.0, m_pending = 0.0, m_calls = 0, m_sums.clear(), m_largestPeak.clear(); }
+    void reset() { m_weight = 0.0, m_schedule.reset(), m_sums.clear(), m_largestPeak.clear(); }
 
 private:
     std::vector<CrossSection> m_sections;
-    double m_from = 0.0, m_weight = 0.0, m_pending = 0.0; ///< s; m_pending: since the last sample taken
-    int m_every = 1;
-    long m_calls = 0;
+    SampleSchedule m_schedule;
+    double m_weight = 0.0; ///< s averaged
     std::vector<SectionFlow> m_sums;
     std::vector<double> m_largestPeak;
 };

@@ -17,6 +17,7 @@
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
 #include "vsim/sim/sph/ParticleState.h"
+#include "vsim/sim/sph/SampleSchedule.h"
 
 #include <Eigen/Core>
 
@@ -58,7 +59,7 @@ public:
     WallLoadSeries() = default;
     /// Samples every `everySteps`-th call from `fromTimeS` on, each weighted by the time since the last one taken.
     WallLoadSeries(std::vector<WallPoint> points, double fromTimeS, int everySteps = 1)
-        : m_points(std::move(points)), m_from(fromTimeS), m_every(std::max(1, everySteps))
+        : m_points(std::move(points)), m_schedule(fromTimeS, everySteps)
     {
     }
     bool empty() const { return m_points.empty(); }
@@ -67,13 +68,11 @@ public:
                 double timeS, double weightS);
     /// The time averages per point (zeros before any sample).
     std::vector<WallLoadAverage> averages() const;
-    void reset() { m_calls = 0, m_pending = 0.0, m_sums.clear(); }
+    void reset() { m_schedule.reset(), m_sums.clear(); }
 
 private:
     std::vector<WallPoint> m_points;
-    double m_from = 0.0, m_pending = 0.0;
-    int m_every = 1;
-    long m_calls = 0;
+    SampleSchedule m_schedule;
     std::vector<WallLoadAverage> m_sums; ///< weighted sums (tawss, mean shear, pressure), the largest, the weight
 };
 
