@@ -5,7 +5,7 @@ CT HU of the far voxels and of the mask's aorta (the study's image-1, signed 16-
 arteries carry; with a liver mask also the liver's median HU and robust standard deviation (1.4826 x the median
 absolute deviation, artery-mask voxels left out) and the far arteries' contrast-to-noise ratio per voxel, and the
 far voxels split into their 26-connected pieces: the share in the piece(s) reaching into the liver (the celiac
-trunk's tree) and the recall there and elsewhere.
+trunk's tree) and the recall there and elsewhere, and the ceiling of each recall (half_level_ceiling).
 The aorta: in every axial slice the largest 8-connected piece of the artery mask of 150 mm2 or more (a vertical
 vessel of 14 mm or more); a voxel's distance to it is its in-plane distance to that piece's centroid less the
 piece's equivalent radius, in the same slice or, where the slice has no such piece, the nearest slice that has one.
@@ -91,6 +91,45 @@ def far_pieces(voxels, nx, ny):
     return pieces
 
 
+def half_level_ceiling(artery, hu, far_set, sizes, spacing):
+    """The far voxels that an ideal lumen label could hold: those at or above the half level of their own vessel's
+    blurred edge, half-way between the vessel's peak (the brightest 3 x 3 in-plane mean HU of the mask within 2 mm, in
+    the voxel's slice) and its background (the median HU 2 to 5 mm away in the slice, more than a voxel from the mask).
+    A mask voxel below that level lies outside the lumen's edge as CT shows it, so no lumen segmentation, however good,
+    reaches it: the recall of far voxels has this ceiling. Returns the set of such voxels."""
+    nx, ny, _ = sizes
+    ring = lambda inner, outer: [(di, dj) for dj in range(-8, 9) for di in range(-8, 9)
+                                 if inner <= math.hypot(di * spacing[0], dj * spacing[1]) <= outer]
+    peak_offsets, background_offsets = ring(0.0, 2.0), ring(2.0, 5.0)
+    near = bytearray(len(artery)) # the mask grown by one voxel in-plane
+    for index, value in enumerate(artery):
+        if value:
+            i, j = index % nx, (index // nx) % ny
+            for dj in (-1, 0, 1):
+                for di in (-1, 0, 1):
+                    if 0 <= i + di < nx and 0 <= j + dj < ny:
+                        near[index + di + nx * dj] = 1
+
+    def mean3(index):
+        i, j = index % nx, (index // nx) % ny
+        values = [hu[index + di + nx * dj] for dj in (-1, 0, 1) for di in (-1, 0, 1)
+                  if 0 <= i + di < nx and 0 <= j + dj < ny]
+        return sum(values) / len(values)
+
+    visible = set()
+    for index in far_set:
+        i, j = index % nx, (index // nx) % ny
+        inside = lambda di, dj: 0 <= i + di < nx and 0 <= j + dj < ny
+        peak = max(mean3(index + di + nx * dj) for di, dj in peak_offsets
+                   if inside(di, dj) and artery[index + di + nx * dj])
+        background = sorted(hu[index + di + nx * dj] for di, dj in background_offsets
+                            if inside(di, dj) and not near[index + di + nx * dj])
+        if background and peak > background[len(background) // 2] and \
+                hu[index] >= 0.5 * (peak + background[len(background) // 2]):
+            visible.add(index)
+    return visible
+
+
 def main():
     bundle, label_id, artery_id = sys.argv[1:4]
     margin = float(sys.argv[4]) if len(sys.argv) > 4 else 10.0
@@ -145,6 +184,11 @@ def main():
         out["far_share_in_liver_reaching_tree"] = len(tree) / max(1, far)
         out["far_recall_liver_reaching_tree"] = sum(1 for v in tree if label[v]) / max(1, len(tree))
         out["far_recall_elsewhere"] = sum(1 for v in far_set - tree if label[v]) / max(1, far - len(tree))
+        visible = half_level_ceiling(artery, hu, far_set, sizes, spacing)
+        out["far_recall_ceiling"] = len(visible) / max(1, far)
+        out["far_recall_ceiling_liver_reaching_tree"] = len(visible & tree) / max(1, len(tree))
+        out["far_recall_ceiling_elsewhere"] = len(visible - tree) / max(1, far - len(tree))
+        out["far_recall_ceiling_hepatic_target"] = len(visible & tree) / max(1, far)
         parenchyma = [hu[index] for index, value in enumerate(liver) if value and not artery[index]]
         level = median(parenchyma)
         spread = 1.4826 * median([abs(v - level) for v in parenchyma])
