@@ -20,8 +20,11 @@ double QuarticKernel::value(double r) const
     const double q = r / m_h;
     if (q >= 2.0)
         return 0.0;
-    const double q2 = q * q;
-    return m_norm * (2.0 / 3.0 - 9.0 / 8.0 * q2 + 19.0 / 24.0 * q2 * q - 5.0 / 32.0 * q2 * q2);
+    // The factored form (QuarticKernel.h): exactly 0 at q = 2 and of the right (negative) sign just inside it. The
+    // expanded polynomial cancels there to a rounding error of either sign, and a wall particle exactly 2h from the
+    // fluid (a lattice's fourth layer) took the fluid's pressure or kept its own by that sign.
+    const double a = 2.0 - q;
+    return m_norm * a * a * (1.0 / 6.0 + q / 6.0 - 5.0 / 32.0 * q * q);
 }
 
 double QuarticKernel::derivative(double r) const
@@ -29,7 +32,7 @@ double QuarticKernel::derivative(double r) const
     const double q = r / m_h;
     if (q >= 2.0)
         return 0.0;
-    return m_norm / m_h * q * (-9.0 / 4.0 + 19.0 / 8.0 * q - 5.0 / 8.0 * q * q);
+    return m_norm / m_h * q * 0.625 * (2.0 - q) * (q - 1.8); // -9/4 + 19/8 q - 5/8 q^2, factored: 0 at q = 2
 }
 
 Eigen::Vector3d QuarticKernel::gradient(const Eigen::Vector3d& rij) const

@@ -157,6 +157,18 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_stepS = stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl);
 }
 
+SphStepSettings SphSolver::stepSettings() const
+{
+    SphStepSettings settings;
+    settings.cfl = m_cfl, settings.densityGuard = m_densityGuard, settings.spacingM = m_spacingM;
+    settings.freeSurface = m_freeSurface;
+    settings.boxLowM = m_boxLow, settings.boxHighM = m_boxHigh;
+    settings.periodicLengthM = m_grid ? m_grid->periodicLength() : Eigen::Vector3d::Zero();
+    settings.openBoundaries = !m_openBoundaries.empty();
+    settings.absorption = m_absorptionDistanceM > 0.0;
+    return settings;
+}
+
 long double SphSolver::fluidMass() const
 {
     long double mass = 0.0;

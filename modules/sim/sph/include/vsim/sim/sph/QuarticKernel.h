@@ -35,7 +35,7 @@ public:
         const double q = r / m_h;
         if (r <= 0.0 || q >= 2.0)
             return Eigen::Vector3d::Zero();
-        return (m_norm / (m_h * m_h) * (-9.0 / 4.0 + 19.0 / 8.0 * q - 5.0 / 8.0 * q * q)) * rij; // dW/dr / r
+        return (m_norm / (m_h * m_h) * 0.625 * (2.0 - q) * (q - 1.8)) * rij; // dW/dr / r, 0 at q = 2 exactly
     }
 
 private:

@@ -41,6 +41,18 @@ std::vector<ParameterSpec> sphParameters();
 /// Poiseuille, Womersley, mass) pass at the default and keep it.
 constexpr double kStenosisCfl = 0.1;
 
+/// What a step needs besides the particles and the fluid: the GPU backend (cuda/sph) takes it from the CPU solver.
+struct SphStepSettings
+{
+    double cfl = 0.2;
+    double densityGuard = 0.03;      ///< |rho / rho0 - 1| that stops a step
+    double spacingM = 0.0;
+    bool freeSurface = false;        ///< walls extrapolate no suction (SphRates.h)
+    Eigen::Vector3d boxLowM, boxHighM; ///< a particle outside has escaped (the escape margin included)
+    Eigen::Vector3d periodicLengthM; ///< 0 per open axis
+    bool openBoundaries = false, absorption = false;
+};
+
 class SphSolver : public Solver
 {
 public:
@@ -79,6 +91,7 @@ public:
     const FluidModel& fluid() const { return m_fluid; }
     const QuarticKernel& kernel() const { return *m_kernel; }
     const OpenBoundaries& openBoundaries() const { return m_openBoundaries; }
+    SphStepSettings stepSettings() const;
     const MassLedger& massLedger() const { return m_ledger; }
     /// The pressure of every particle (Pa), in the particles' current order.
     std::vector<double> pressure() const { return pressures(m_particles, m_fluid); }

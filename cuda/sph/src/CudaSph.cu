@@ -1,0 +1,300 @@
+#include "vsim/cuda_sph/CudaSph.h"
+
+#include "SphKernels.cuh"
+#include "vsim/core/Error.h"
+#include "vsim/cuda_common/CudaCheck.h"
+
+#include <cub/device/device_radix_sort.cuh>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+namespace vsim::cuda {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// One device allocation of `count` values of T.
+template <class T> class DeviceArray
+{
+public:
+    DeviceArray() = default;
+    explicit DeviceArray(std::size_t count) : m_count(count)
+    {
+        VSIM_CUDA_CHECK(cudaMalloc(&m_data, std::max<std::size_t>(1, count) * sizeof(T)));
+    }
+    ~DeviceArray() { cudaFree(m_data); }
+    DeviceArray(DeviceArray&& other) noexcept { swap(other); }
+    DeviceArray& operator=(DeviceArray&& other) noexcept
+    {
+        swap(other);
+        return *this;
+    }
+    void swap(DeviceArray& other) noexcept { std::swap(m_data, other.m_data), std::swap(m_count, other.m_count); }
+    T* data() const { return m_data; }
+    std::size_t bytes() const { return m_count * sizeof(T); }
+    void upload(const std::vector<T>& values)
+    {
+        VSIM_CUDA_CHECK(cudaMemcpy(m_data, values.data(), values.size() * sizeof(T), cudaMemcpyHostToDevice));
+    }
+    std::vector<T> download() const
+    {
+        std::vector<T> values(m_count);
+        VSIM_CUDA_CHECK(cudaMemcpy(values.data(), m_data, m_count * sizeof(T), cudaMemcpyDeviceToHost));
+        return values;
+    }
+
+private:
+    T* m_data = nullptr;
+    std::size_t m_count = 0;
+};
+
+/// The particle arrays, twice: the sorted order is gathered from one set into the other.
+struct ParticleArrays
+{
+    DeviceArray<float4> position, velocity, state;
+    DeviceArray<int> id;
+
+    explicit ParticleArrays(std::size_t n) : position(n), velocity(n), state(n), id(n) {}
+    sph::SphArrays pointers() const { return {position.data(), velocity.data(), state.data(), id.data()}; }
+    std::size_t bytes() const { return position.bytes() + velocity.bytes() + state.bytes() + id.bytes(); }
+};
+
+unsigned bitsFor(std::size_t count)
+{
+    unsigned bits = 1;
+    while ((std::size_t(1) << bits) < count)
+        ++bits;
+    return bits;
+}
+
+float asFloat(unsigned bits)
+{
+    float value;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+std::string number(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+} // namespace
+
+struct CudaSph::Device
+{
+    int n = 0;
+    sph::SphParams params{};
+    sim::sph::FluidModel fluid;
+    sim::sph::SphStepSettings settings;
+    ParticleArrays current, other;
+    DeviceArray<float4> acceleration, densityGradient, derived;
+    DeviceArray<float> densityRate, wallDistance;
+    DeviceArray<unsigned> keys, sortedKeys, cellStart, cellEnd, cellFluid;
+    DeviceArray<int> order, sortedOrder;
+    DeviceArray<std::uint8_t> sortScratch;
+    std::size_t sortScratchBytes = 0;
+    unsigned keyBits = 1;
+    std::size_t cells = 0;
+    DeviceArray<sph::SphReductions> reductions;
+    sph::SphReductions last{};
+    double time = 0.0, lastStep = 0.0;
+    long steps = 0;
+
+    Device(std::size_t count, std::size_t cellCount)
+        : n(int(count)), current(count), other(count), acceleration(count), densityGradient(count), derived(count), densityRate(count),
+          wallDistance(count), keys(count), sortedKeys(count), cellStart(cellCount),
+          cellEnd(cellCount), cellFluid(cellCount), order(count), sortedOrder(count), keyBits(bitsFor(cellCount)), cells(cellCount),
+          reductions(1)
+    {
+        VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data(), sortedKeys.data(),
+                                                        order.data(), sortedOrder.data(), n, 0, int(keyBits)));
+        sortScratch = DeviceArray<std::uint8_t>(sortScratchBytes);
+    }
+
+    sph::SphRatesArrays rates() const
+    {
+        return {acceleration.data(), densityGradient.data(), derived.data(), densityRate.data(), wallDistance.data()};
+    }
+
+    /// Cell keys, the radix sort, the gather into the sorted order and each cell's run.
+    void sort()
+    {
+        VSIM_CUDA_CHECK(cudaMemset(cellFluid.data(), 0, cellFluid.bytes()));
+        sph::launchCellKeys(params, current.pointers(), n, keys.data(), order.data(), cellFluid.data(), reductions.data());
+        VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sortScratch.data(), sortScratchBytes, keys.data(),
+                                                        sortedKeys.data(), order.data(), sortedOrder.data(), n, 0,
+                                                        int(keyBits)));
+        sph::launchGather(current.pointers(), other.pointers(), sortedOrder.data(), n);
+        std::swap(current, other);
+        VSIM_CUDA_CHECK(cudaMemset(cellStart.data(), 0, cellStart.bytes()));
+        VSIM_CUDA_CHECK(cudaMemset(cellEnd.data(), 0, cellEnd.bytes()));
+        sph::launchCellRanges(sortedKeys.data(), n, cellStart.data(), cellEnd.data());
+    }
+
+    /// SphSolver::updateRates: the walls' pressure, every pressure, G and the wall distances, the rates.
+    void updateRates(double timeS)
+    {
+        const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
+        const float e[3] = {float(external.x()), float(external.y()), float(external.z())};
+        sph::launchWallPressure(params, current.pointers(), cellStart.data(), cellEnd.data(), cellFluid.data(), n);
+        sph::launchPressures(params, current.pointers(), rates(), n);
+        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), n);
+        sph::launchRates(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), e, n, reductions.data());
+    }
+
+    void resetReductions() { VSIM_CUDA_CHECK(cudaMemset(reductions.data(), 0, sizeof(sph::SphReductions))); }
+    void fetchReductions()
+    {
+        VSIM_CUDA_CHECK(cudaMemcpy(&last, reductions.data(), sizeof last, cudaMemcpyDeviceToHost));
+    }
+
+    /// stableTimeStep (SphRates.cpp) from the last rates' maxima.
+    double stableStep() const
+    {
+        const double h = params.h;
+        double step = h / (fluid.soundSpeed + asFloat(last.largestViscousRate));
+        if (asFloat(last.largestAcceleration) > 0.0f)
+            step = std::min(step, std::sqrt(h / asFloat(last.largestAcceleration)));
+        step *= settings.cfl;
+        if (asFloat(last.largestKinematicViscosity) > 0.0f)
+            step = std::min(step, 0.125 * h * h / asFloat(last.largestKinematicViscosity));
+        return step;
+    }
+};
+
+CudaSph::CudaSph(const sim::sph::SphSolver& solver)
+{
+    int devices = 0;
+    if (cudaGetDeviceCount(&devices) != cudaSuccess || devices == 0)
+        throw Error("no CUDA device: run the SPH solver on the CPU (--backend cpu)");
+    const sim::sph::SphStepSettings settings = solver.stepSettings();
+    if (settings.openBoundaries || settings.absorption || (settings.periodicLengthM.array() > 0.0).any())
+        throw Error("the CUDA SPH backend runs closed domains only (no inlets or outlets, periodic axes or tracer "
+                    "absorption yet): run this case on the CPU (--backend cpu)");
+    const sim::sph::ParticleState& p = solver.particles();
+    const sim::sph::FluidModel& fluid = solver.fluid();
+    const double h = solver.kernel().smoothingLength();
+    sph::SphParams params{};
+    params.h = float(h), params.invH = float(1.0 / h);
+    params.wNorm = float(315.0 / (208.0 * kPi * h * h * h));
+    params.gradNorm = float(315.0 / (208.0 * kPi * h * h * h) / (h * h));
+    params.support2 = float(4.0 * h * h);
+    params.eta2 = float(0.001 * h * h);
+    params.diffusion = float(fluid.densityDiffusion * h * fluid.soundSpeed);
+    params.soundSpeed = float(fluid.soundSpeed), params.gamma = float(fluid.gamma);
+    params.restDensity = float(fluid.restDensity), params.gasDensity = float(fluid.gasDensity);
+    params.viscosity = float(fluid.viscosity), params.gasViscosity = float(fluid.gasViscosity);
+    for (int a = 0; a < 3; ++a)
+        params.gravity[a] = float(fluid.gravity[a]);
+    params.pressureFloor = settings.freeSurface ? 0.0f : -INFINITY;
+    params.cell = float(h); // half the support, as NeighbourGrid
+    params.betaMax = 10.0f;
+    std::size_t cells = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+        const double extent = settings.boxHighM[a] - settings.boxLowM[a];
+        params.boxHigh[a] = float(extent);
+        params.dims[a] = std::max(1, int(std::ceil(extent / h)));
+        cells *= std::size_t(params.dims[a]);
+    }
+    if (cells > (std::size_t(1) << 31))
+        throw Error("the SPH domain spans too many cells for the GPU grid: " + std::to_string(cells));
+    m_device = std::make_unique<Device>(p.size(), cells);
+    Device& d = *m_device;
+    d.params = params, d.fluid = fluid, d.settings = settings;
+    const std::size_t n = p.size();
+    std::vector<float4> position(n), velocity(n), state(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const Eigen::Vector3d x = p.position[i] - settings.boxLowM;
+        position[i] = make_float4(float(x.x()), float(x.y()), float(x.z()), p.wall[i] ? float(p.wallDepth[i]) : -1.0f);
+        velocity[i] = make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()),
+                                  p.wall[i] ? 1.0f : 0.0f);
+        state[i] = make_float4(float(p.density[i]), float(p.mass[i]), float(p.voidFraction[i]), 0.0f);
+    }
+    d.current.position.upload(position), d.current.velocity.upload(velocity), d.current.state.upload(state);
+    d.current.id.upload(p.id);
+    d.resetReductions();
+    d.sort();
+    d.updateRates(0.0);
+    d.fetchReductions();
+    d.time = solver.position();
+}
+
+CudaSph::~CudaSph() = default;
+
+std::string CudaSph::step()
+{
+    Device& d = *m_device;
+    const double dt = d.stableStep();
+    d.resetReductions();
+    sph::launchKickDrift(d.current.pointers(), d.rates(), float(dt), d.n);
+    d.sort();
+    d.updateRates(d.time + dt);
+    sph::launchKick(d.params, d.current.pointers(), d.rates(), float(dt), float(0.5 * d.settings.spacingM), d.n,
+                    d.reductions.data());
+    d.fetchReductions();
+    const std::string at = "at t = " + number(d.time + dt) + " s ";
+    d.time += dt, d.lastStep = dt, ++d.steps;
+    if (d.last.notFinite)
+        return at + "particle " + std::to_string(d.last.notFiniteId) + " has a value that is not finite";
+    if (d.last.escaped)
+        return at + "particle " + std::to_string(d.last.escapedId) +
+               " left the domain (through a wall or an open end without an outlet)";
+    if (d.last.throughWall)
+        return at + "fluid particle " + std::to_string(d.last.throughWallId) +
+               " went more than half a spacing into the wall: the time step or the sound speed is too large for the "
+               "flow, or the wall too thin";
+    if (asFloat(d.last.largestDensityVariation) > d.settings.densityGuard)
+        return at + "a particle's density is " + number(100.0 * asFloat(d.last.largestDensityVariation)) +
+               " % from the rest density (guard " + number(100.0 * d.settings.densityGuard) +
+               " %): raise the sound speed or lower the inflow";
+    return {};
+}
+
+double CudaSph::timeS() const { return m_device->time; }
+double CudaSph::lastStepS() const { return m_device->lastStep; }
+long CudaSph::steps() const { return m_device->steps; }
+std::size_t CudaSph::size() const { return std::size_t(m_device->n); }
+double CudaSph::largestDensityVariation() const { return asFloat(m_device->last.largestDensityVariation); }
+
+sim::sph::ParticleState CudaSph::download() const
+{
+    const Device& d = *m_device;
+    const auto position = d.current.position.download(), velocity = d.current.velocity.download();
+    const auto state = d.current.state.download();
+    const auto id = d.current.id.download();
+    std::vector<std::size_t> byId(id.size());
+    for (std::size_t s = 0; s < id.size(); ++s)
+    {
+        if (id[s] < 0 || std::size_t(id[s]) >= id.size())
+            throw Error("the GPU particles' numbering is not 0 .. n - 1");
+        byId[std::size_t(id[s])] = s;
+    }
+    sim::sph::ParticleState out;
+    for (std::size_t i = 0; i < byId.size(); ++i)
+    {
+        const std::size_t s = byId[i];
+        const Eigen::Vector3d x = d.settings.boxLowM + Eigen::Vector3d(position[s].x, position[s].y, position[s].z);
+        out.add(x, state[s].x, state[s].y, velocity[s].w != 0.0f, position[s].w, state[s].z);
+        out.velocity.back() = Eigen::Vector3d(velocity[s].x, velocity[s].y, velocity[s].z);
+    }
+    return out;
+}
+
+std::size_t CudaSph::deviceBytes() const
+{
+    const Device& d = *m_device;
+    return d.current.bytes() + d.other.bytes() + d.acceleration.bytes() + d.densityGradient.bytes() + d.derived.bytes() +
+           d.densityRate.bytes() + d.wallDistance.bytes() + d.keys.bytes() + d.sortedKeys.bytes() +
+           d.cellStart.bytes() + d.cellEnd.bytes() + d.cellFluid.bytes() + d.order.bytes() + d.sortedOrder.bytes() + d.sortScratch.bytes();
+}
+
+} // namespace vsim::cuda

@@ -1,0 +1,416 @@
+#include "SphKernels.cuh"
+
+#include "vsim/cuda_common/CudaCheck.h"
+
+#include <cmath>
+
+namespace vsim::cuda::sph {
+namespace {
+
+constexpr int kThreads = 256;
+int blocks(int n) { return (n + kThreads - 1) / kThreads; }
+
+__device__ float mixtureDensity(const SphParams& p, float s) { return p.restDensity * (1.0f - s) + p.gasDensity * s; }
+__device__ float mixtureViscosity(const SphParams& p, float s) { return p.viscosity * (1.0f - s) + p.gasViscosity * s; }
+__device__ float stiffness(const SphParams& p, float s) { return p.soundSpeed * p.soundSpeed * mixtureDensity(p, s) / p.gamma; }
+/// Tait (FluidModel::pressure).
+__device__ float pressureOf(const SphParams& p, float rho, float s)
+{
+    return stiffness(p, s) * (powf(rho / mixtureDensity(p, s), p.gamma) - 1.0f);
+}
+/// FluidModel::densityAt.
+__device__ float densityAt(const SphParams& p, float pressurePa, float s)
+{
+    return mixtureDensity(p, s) * powf(1.0f + pressurePa / stiffness(p, s), 1.0f / p.gamma);
+}
+/// The quartic kernel's W(r) (QuarticKernel::value), in its factored form norm (2 - q)^2 (1/6 + q/6 - 5/32 q^2): the
+/// expanded polynomial cancels to about 1e-6 of W(0) in single precision near q = 2, where W is slightly negative, and
+/// gave wall particles exactly 2h from the fluid a positive weight (and the fluid's pressure) that the CPU's does not.
+__device__ float kernelValue(const SphParams& p, float r)
+{
+    const float q = r * p.invH;
+    if (q >= 2.0f)
+        return 0.0f;
+    const float a = 2.0f - q;
+    return p.wNorm * a * a * (1.0f / 6.0f + q / 6.0f - 5.0f / 32.0f * q * q);
+}
+/// dW/dr / r: grad_i W = this times rij (QuarticKernel::gradient); -9/4 + 19/8 q - 5/8 q^2 factored as
+/// 5/8 (2 - q) (q - 1.8), exactly 0 at the support's edge.
+__device__ float gradientFactor(const SphParams& p, float r)
+{
+    const float q = r * p.invH;
+    if (r <= 0.0f || q >= 2.0f)
+        return 0.0f;
+    return p.gradNorm * 0.625f * (2.0f - q) * (q - 1.8f);
+}
+
+__device__ void cellOf(const SphParams& p, float4 x, int c[3])
+{
+    const float xs[3] = {x.x, x.y, x.z};
+    for (int a = 0; a < 3; ++a)
+        c[a] = min(max(int(floorf(xs[a] / p.cell)), 0), p.dims[a] - 1);
+}
+
+/// f(j, xj, rx, ry, rz, r) for every particle j != i within the support of particle i (xj its position record,
+/// rij = x_i - x_j, m). With `cellFluid` (fluid particles per cell) only the cells that hold fluid are scanned: the
+/// wall particles' pass, whose sums run over the fluid alone (most walls see none).
+template <class F>
+__device__ void forEachNeighbour(const SphParams& p, const SphArrays& a, const unsigned* cellStart,
+                                 const unsigned* cellEnd, int i, F&& f, const unsigned* cellFluid = nullptr)
+{
+    const float4 xi = a.position[i];
+    int c[3];
+    cellOf(p, xi, c);
+    for (int dz = -2; dz <= 2; ++dz)
+    {
+        const int z = c[2] + dz;
+        if (z < 0 || z >= p.dims[2])
+            continue;
+        // How far the particle lies from this layer of cells, and then from each row: the run along x is cut to the
+        // support's chord there (the rows in the corners of the 5 x 5 block are skipped or short).
+        const float gz = fmaxf(0.0f, fmaxf(z * p.cell - xi.z, xi.z - (z + 1) * p.cell));
+        for (int dy = -2; dy <= 2; ++dy)
+        {
+            const int y = c[1] + dy;
+            if (y < 0 || y >= p.dims[1])
+                continue;
+            const float gy = fmaxf(0.0f, fmaxf(y * p.cell - xi.y, xi.y - (y + 1) * p.cell));
+            const float chord2 = p.support2 - gy * gy - gz * gz;
+            if (chord2 <= 0.0f)
+                continue;
+            const float chord = sqrtf(chord2);
+            // The cells along x within the chord are consecutive in the sorted order: one run.
+            const int x0 = max(int(floorf((xi.x - chord) / p.cell)), 0);
+            const int x1 = min(int(floorf((xi.x + chord) / p.cell)), p.dims[0] - 1);
+            const unsigned row = unsigned(p.dims[0]) * (unsigned(y) + unsigned(p.dims[1]) * unsigned(z));
+            unsigned begin = 0xffffffffu, end = 0;
+            for (int x = x0; x <= x1; ++x)
+            {
+                if (cellFluid && __ldg(&cellFluid[row + unsigned(x)]) == 0u)
+                    continue;
+                const unsigned s = __ldg(&cellStart[row + unsigned(x)]), e = __ldg(&cellEnd[row + unsigned(x)]);
+                if (e > s)
+                    begin = min(begin, s), end = max(end, e);
+            }
+            for (unsigned j = begin; j < end; ++j)
+            {
+                if (int(j) == i)
+                    continue;
+                const float4 xj = __ldg(&a.position[j]);
+                const float rx = xi.x - xj.x, ry = xi.y - xj.y, rz = xi.z - xj.z;
+                const float r2 = rx * rx + ry * ry + rz * rz;
+                if (r2 < p.support2 && r2 > 0.0f)
+                    f(int(j), xj, rx, ry, rz, sqrtf(r2));
+            }
+        }
+    }
+}
+
+/// The largest value over a warp, then one atomicMax per warp (non-negative floats as unsigned bit patterns).
+__device__ void warpMax(unsigned* target, float value)
+{
+    unsigned bits = __float_as_uint(fmaxf(value, 0.0f));
+    for (int offset = 16; offset > 0; offset /= 2)
+        bits = max(bits, __shfl_down_sync(0xffffffffu, bits, offset));
+    if ((threadIdx.x & 31) == 0 && bits > 0)
+        atomicMax(target, bits);
+}
+
+__global__ void cellKeysKernel(SphParams p, SphArrays a, int n, unsigned* keys, int* order, unsigned* cellFluid,
+                               SphReductions* r)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n)
+        return;
+    const float4 x = a.position[i];
+    if (!(x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f && x.x <= p.boxHigh[0] && x.y <= p.boxHigh[1] && x.z <= p.boxHigh[2]))
+        if (atomicExch(&r->escaped, 1u) == 0u)
+            r->escapedId = a.id[i];
+    int c[3];
+    cellOf(p, x, c);
+    keys[i] = unsigned(c[0]) + unsigned(p.dims[0]) * (unsigned(c[1]) + unsigned(p.dims[1]) * unsigned(c[2]));
+    order[i] = i;
+    if (a.velocity[i].w == 0.0f)
+        atomicAdd(&cellFluid[keys[i]], 1u);
+}
+
+__global__ void gatherKernel(SphArrays from, SphArrays to, const int* order, int n)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n)
+        return;
+    const int s = order[i];
+    to.position[i] = from.position[s], to.velocity[i] = from.velocity[s], to.state[i] = from.state[s];
+    to.id[i] = from.id[s];
+}
+
+__global__ void cellRangesKernel(const unsigned* keys, int n, unsigned* cellStart, unsigned* cellEnd)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n)
+        return;
+    const unsigned k = keys[i];
+    if (i == 0 || keys[i - 1] != k)
+        cellStart[k] = unsigned(i);
+    if (i == n - 1 || keys[i + 1] != k)
+        cellEnd[k] = unsigned(i + 1);
+}
+
+/// extrapolateWallPressure: a wall particle's density from the fluid's pressure around it (Shepard, W+).
+__global__ void wallPressureKernel(SphParams p, SphArrays a, const unsigned* cellStart, const unsigned* cellEnd,
+                                   const unsigned* cellFluid, int n)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n || a.velocity[i].w == 0.0f)
+        return;
+    float weight = 0.0f, pressure = 0.0f;
+    forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4, float rx, float ry, float rz, float r) {
+        if (a.velocity[j].w != 0.0f)
+            return;
+        const float w = fmaxf(kernelValue(p, r), 0.0f);
+        const float4 sj = a.state[j];
+        weight += w;
+        pressure += w * (pressureOf(p, sj.x, sj.z) + sj.x * (p.gravity[0] * rx + p.gravity[1] * ry + p.gravity[2] * rz));
+    }, cellFluid);
+    if (weight > 0.0f)
+        a.state[i].x = densityAt(p, fmaxf(p.pressureFloor, pressure / weight), a.state[i].z);
+}
+
+__global__ void pressuresKernel(SphParams p, SphArrays a, SphRatesArrays rates, int n)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n)
+        return;
+    float4 state = a.state[i];
+    state.w = pressureOf(p, state.x, state.z);
+    a.state[i] = state;
+    rates.derived[i] = make_float4(state.y / state.x, state.y * state.w / (state.x * state.x), state.y,
+                                   state.x / mixtureDensity(p, state.z));
+}
+
+/// fluidNeighbourhood: G_i = (M_i^T)^-1 sum_j V_j (rho_j / rho0_j - rho_i / rho0_i) grad W and the wall distance.
+__global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
+                                    const unsigned* cellEnd, int n)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n)
+        return;
+    const float muI = mixtureViscosity(p, a.state[i].z);
+    rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, muI);
+    rates.wallDistance[i] = INFINITY;
+    if (a.velocity[i].w != 0.0f)
+        return;
+    const float relativeI = rates.derived[i].w;
+    float m[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}; // moment, row-major: m[3 r + c] = -sum V rij_r gradW_c
+    float sum[3] = {0, 0, 0};
+    float wallDistance = INFINITY;
+    const bool gradients = p.diffusion > 0.0f;
+    forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float r) {
+        if (a.velocity[j].w != 0.0f)
+        {
+            if (xj.w >= 0.0f)
+                wallDistance = fminf(wallDistance, r - xj.w);
+            return;
+        }
+        if (!gradients)
+            return;
+        const float g = gradientFactor(p, r);
+        const float grad[3] = {g * rx, g * ry, g * rz}, rij[3] = {rx, ry, rz};
+        const float4 dj = __ldg(&rates.derived[j]);
+        const float volume = dj.x;
+        const float difference = volume * (dj.w - relativeI);
+        for (int row = 0; row < 3; ++row)
+        {
+            for (int col = 0; col < 3; ++col)
+                m[3 * row + col] -= volume * rij[row] * grad[col];
+            sum[row] += difference * grad[row];
+        }
+    });
+    rates.wallDistance[i] = wallDistance;
+    if (!gradients)
+        return;
+    // t = M^T; G = t^-1 sum by the adjugate, where |det| > 1e-3 (SphRates.cpp).
+    const float t[9] = {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};
+    const float c0 = t[4] * t[8] - t[5] * t[7], c1 = t[5] * t[6] - t[3] * t[8], c2 = t[3] * t[7] - t[4] * t[6];
+    const float det = t[0] * c0 + t[1] * c1 + t[2] * c2;
+    if (!(fabsf(det) > 1e-3f))
+        return;
+    const float inv[9] = {c0, t[2] * t[7] - t[1] * t[8], t[1] * t[5] - t[2] * t[4],
+                          c1, t[0] * t[8] - t[2] * t[6], t[2] * t[3] - t[0] * t[5],
+                          c2, t[1] * t[6] - t[0] * t[7], t[0] * t[4] - t[1] * t[3]};
+    float G[3];
+    for (int row = 0; row < 3; ++row)
+        G[row] = (inv[3 * row] * sum[0] + inv[3 * row + 1] * sum[1] + inv[3 * row + 2] * sum[2]) / det;
+    rates.densityGradient[i] = make_float4(G[0], G[1], G[2], muI);
+}
+
+/// computeRates for the fluid particles (walls get no rates; a wall-fluid pair's viscous rate is the fluid one's).
+__global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
+                            const unsigned* cellEnd, float ex, float ey, float ez, int n, SphReductions* r)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    float acceleration = 0.0f, viscousRate = 0.0f, kinematic = 0.0f;
+    if (i < n)
+    {
+        rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
+        rates.densityRate[i] = 0.0f;
+    }
+    if (i < n && a.velocity[i].w == 0.0f)
+    {
+        const float4 vi = a.velocity[i], si = a.state[i], di = rates.derived[i];
+        const float rhoI = si.x, inverseRhoI = 1.0f / rhoI, pressureI = di.y / di.z; // p_i / rho_i^2
+        const float restI = mixtureDensity(p, si.z), relativeI = di.w;
+        const float4 gi = rates.densityGradient[i];
+        const float muI = gi.w, wallDistanceI = rates.wallDistance[i];
+        float densityRate = 0.0f, fx = 0.0f, fy = 0.0f, fz = 0.0f;
+        // Per neighbour, from its records: dj = (V_j, m_j p_j / rho_j^2, m_j, rho_j / rho0_j), gj = (G_j, mu_j).
+        forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float rr) {
+            const float4 vj = __ldg(&a.velocity[j]), dj = __ldg(&rates.derived[j]), gj = __ldg(&rates.densityGradient[j]);
+            const bool wallJ = vj.w != 0.0f;
+            const float g = gradientFactor(p, rr);
+            const float gx = g * rx, gy = g * ry, gz = g * rz;
+            const float vx = vi.x - vj.x, vy = vi.y - vj.y, vz = vi.z - vj.z;
+            const float r2 = rr * rr;
+            densityRate += rhoI * dj.x * (vx * gx + vy * gy + vz * gz);
+            if (!wallJ && p.diffusion > 0.0f)
+            {
+                const float s = 2.0f * (dj.w - relativeI) / r2;
+                const float px = -s * rx - (gi.x + gj.x), py = -s * ry - (gi.y + gj.y), pz = -s * rz - (gi.z + gj.z);
+                densityRate += p.diffusion * restI * dj.x * (px * gx + py * gy + pz * gz);
+            }
+            const float pressureTerm = dj.z * pressureI + dj.y;
+            fx -= pressureTerm * gx, fy -= pressureTerm * gy, fz -= pressureTerm * gz;
+            float wx = vx, wy = vy, wz = vz;
+            if (wallJ && xj.w >= 0.0f)
+            {
+                const float beta = fminf(p.betaMax, 1.0f + xj.w / fmaxf(wallDistanceI, 1e-3f * p.h));
+                wx = beta * vi.x, wy = beta * vi.y, wz = beta * vi.z;
+            }
+            const float damped = 1.0f / (r2 + p.eta2);
+            const float viscous = dj.x * (muI + gj.w) * (rx * gx + ry * gy + rz * gz) * inverseRhoI * damped;
+            fx += viscous * wx, fy += viscous * wy, fz += viscous * wz;
+            viscousRate = fmaxf(viscousRate, fabsf(p.h * (vx * rx + vy * ry + vz * rz) * damped));
+        });
+        rates.densityRate[i] = densityRate;
+        fx += ex, fy += ey, fz += ez;
+        rates.acceleration[i] = make_float4(fx, fy, fz, 0.0f);
+        acceleration = sqrtf(fx * fx + fy * fy + fz * fz);
+        kinematic = muI / restI;
+    }
+    warpMax(&r->largestAcceleration, acceleration);
+    warpMax(&r->largestViscousRate, viscousRate);
+    warpMax(&r->largestKinematicViscosity, kinematic);
+}
+
+__global__ void kickDriftKernel(SphArrays a, SphRatesArrays rates, float dt, int n)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n)
+        return;
+    a.state[i].x += 0.5f * dt * rates.densityRate[i];
+    float4 v = a.velocity[i];
+    if (v.w != 0.0f)
+        return;
+    const float4 acc = rates.acceleration[i];
+    v.x += 0.5f * dt * acc.x, v.y += 0.5f * dt * acc.y, v.z += 0.5f * dt * acc.z;
+    a.velocity[i] = v;
+    float4 x = a.position[i];
+    x.x += dt * v.x, x.y += dt * v.y, x.z += dt * v.z;
+    a.position[i] = x;
+}
+
+__global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float dt, float throughWallM, int n,
+                           SphReductions* r)
+{
+    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    float variation = 0.0f;
+    if (i < n)
+    {
+        float4 state = a.state[i];
+        state.x += 0.5f * dt * rates.densityRate[i];
+        a.state[i] = state;
+        float4 v = a.velocity[i];
+        const bool fluid = v.w == 0.0f;
+        if (fluid)
+        {
+            const float4 acc = rates.acceleration[i];
+            v.x += 0.5f * dt * acc.x, v.y += 0.5f * dt * acc.y, v.z += 0.5f * dt * acc.z;
+            a.velocity[i] = v;
+        }
+        const float4 x = a.position[i];
+        const float change = fabsf(state.x / mixtureDensity(p, state.z) - 1.0f);
+        if (!isfinite(change) || !isfinite(x.x + x.y + x.z) || !isfinite(v.x + v.y + v.z))
+        {
+            if (atomicExch(&r->notFinite, 1u) == 0u)
+                r->notFiniteId = a.id[i];
+        }
+        else if (fluid)
+            variation = change;
+        if (fluid && rates.wallDistance[i] < -throughWallM && atomicExch(&r->throughWall, 1u) == 0u)
+            r->throughWallId = a.id[i];
+    }
+    warpMax(&r->largestDensityVariation, variation);
+}
+
+} // namespace
+
+void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* keys, int* order, unsigned* cellFluid,
+                    SphReductions* r)
+{
+    cellKeysKernel<<<blocks(n), kThreads>>>(p, a, n, keys, order, cellFluid, r);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchGather(const SphArrays& from, const SphArrays& to, const int* order, int n)
+{
+    gatherKernel<<<blocks(n), kThreads>>>(from, to, order, n);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchCellRanges(const unsigned* sortedKeys, int n, unsigned* cellStart, unsigned* cellEnd)
+{
+    cellRangesKernel<<<blocks(n), kThreads>>>(sortedKeys, n, cellStart, cellEnd);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchWallPressure(const SphParams& p, const SphArrays& a, const unsigned* cellStart, const unsigned* cellEnd,
+                        const unsigned* cellFluid, int n)
+{
+    wallPressureKernel<<<blocks(n), kThreads>>>(p, a, cellStart, cellEnd, cellFluid, n);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchPressures(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, int n)
+{
+    pressuresKernel<<<blocks(n), kThreads>>>(p, a, rates, n);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
+                         const unsigned* cellEnd, int n)
+{
+    neighbourhoodKernel<<<blocks(n), kThreads>>>(p, a, rates, cellStart, cellEnd, n);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
+                 const unsigned* cellEnd, const float external[3], int n, SphReductions* r)
+{
+    ratesKernel<<<blocks(n), kThreads>>>(p, a, rates, cellStart, cellEnd, external[0], external[1], external[2], n, r);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n)
+{
+    kickDriftKernel<<<blocks(n), kThreads>>>(a, rates, dt, n);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt, float throughWallM, int n,
+                SphReductions* r)
+{
+    kickKernel<<<blocks(n), kThreads>>>(p, a, rates, dt, throughWallM, n, r);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+} // namespace vsim::cuda::sph

@@ -1,0 +1,74 @@
+#pragma once
+
+// The kernels of the GPU SPH step (CudaSph.h), each the CPU loop of the same name in modules/sim/sph (SphRates.cpp,
+// SphSolver.cpp), in single precision. Layout: packed arrays (SphArrays) in the cell-sorted order, positions (m)
+// relative to the domain box's low corner; one thread per particle; a neighbour loop scans the cells within the
+// support around the particle's cell (cellStart / cellEnd: the sorted run of each cell, both 0 when it is empty).
+
+#include <cstdint>
+
+namespace vsim::cuda::sph {
+
+/// Everything a kernel needs besides the arrays (SI).
+struct SphParams
+{
+    float h, invH, wNorm, gradNorm; ///< h (m), 1 / h; 315 / (208 pi h^3) (1/m^3); wNorm / h^2 (1/m^5)
+    float support2, eta2;      ///< (2h)^2, 0.001 h^2 (m^2)
+    float diffusion;           ///< delta h c0 (m^2/s); 0: no delta-SPH term
+    float soundSpeed, gamma;
+    float restDensity, gasDensity, viscosity, gasViscosity; ///< rho_p, rho_g (kg/m^3), mu_p, mu_g (Pa s)
+    float gravity[3];          ///< m/s^2: what the walls' pressure extrapolation uses
+    float pressureFloor;       ///< Pa: 0 with a free surface, -inf in vessels
+    float cell;                ///< the cell's edge (m, = h)
+    int dims[3];               ///< cells per axis
+    float boxHigh[3];          ///< m from the low corner: beyond it (or below 0) a particle has escaped
+    float betaMax;             ///< the no-slip extrapolation's cap (SphRates.cpp)
+};
+
+/// Device pointers of the particle arrays in sorted order, packed so that a neighbour costs three 16-byte loads:
+/// position (m) with w = the wall depth (m; < 0 in the fluid and where unknown), velocity (m/s) with w = 1 at wall
+/// particles, 0 in the fluid, and state = (density kg/m^3, mass kg, void fraction, pressure Pa).
+struct SphArrays
+{
+    float4 *position, *velocity, *state;
+    int* id;
+};
+
+/// Device pointers of the rates and the per-step work arrays.
+struct SphRatesArrays
+{
+    float4 *acceleration;
+    float4* densityGradient; ///< (G_i kg/m^4, mu_i Pa s): the viscosity rides along, the rates read both per neighbour
+    float4* derived;         ///< (V_i = m_i / rho_i, m_i p_i / rho_i^2, m_i, rho_i / rho0_i), made with the pressures
+    float *densityRate, *wallDistance;
+};
+
+/// Maxima over a step (non-negative floats as their bit patterns, so that atomicMax on unsigned orders them), flags.
+struct SphReductions
+{
+    unsigned largestAcceleration, largestViscousRate, largestKinematicViscosity, largestDensityVariation;
+    unsigned escaped, notFinite, throughWall;
+    int escapedId, notFiniteId, throughWallId;
+};
+
+/// Each particle's cell key (and the identity order for the sort), the fluid particles counted per cell (cellFluid,
+/// zeroed by the caller), escapes flagged.
+void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* keys, int* order, unsigned* cellFluid,
+                    SphReductions* r);
+void launchGather(const SphArrays& from, const SphArrays& to, const int* order, int n);
+void launchCellRanges(const unsigned* sortedKeys, int n, unsigned* cellStart, unsigned* cellEnd);
+void launchWallPressure(const SphParams& p, const SphArrays& a, const unsigned* cellStart, const unsigned* cellEnd,
+                        const unsigned* cellFluid, int n);
+/// Every particle's pressure (state.w) and its derived record.
+void launchPressures(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, int n);
+void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
+                         const unsigned* cellEnd, int n);
+void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
+                 const unsigned* cellEnd, const float external[3], int n, SphReductions* r);
+void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n);
+/// The second kick, then the guards: finite values, the density variation, through the wall (wallDistance below
+/// -throughWallM).
+void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt, float throughWallM, int n,
+                SphReductions* r);
+
+} // namespace vsim::cuda::sph
