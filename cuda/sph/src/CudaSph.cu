@@ -214,9 +214,10 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     for (std::size_t i = 0; i < n; ++i)
     {
         const Eigen::Vector3d x = p.position[i] - settings.boxLowM;
-        position[i] = make_float4(float(x.x()), float(x.y()), float(x.z()), p.wall[i] ? float(p.wallDepth[i]) : -1.0f);
-        velocity[i] = make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()),
-                                  p.wall[i] ? 1.0f : 0.0f);
+        // w: the wall depth, -2 at a wall of unknown depth, -1 in the fluid (SphKernels.cuh).
+        const float kind = !p.wall[i] ? -1.0f : p.wallDepth[i] >= 0.0 ? float(p.wallDepth[i]) : -2.0f;
+        position[i] = make_float4(float(x.x()), float(x.y()), float(x.z()), kind);
+        velocity[i] = make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()), 0.0f);
         state[i] = make_float4(float(p.density[i]), float(p.mass[i]), float(p.voidFraction[i]), 0.0f);
     }
     d.current.position.upload(position), d.current.velocity.upload(velocity), d.current.state.upload(state);
@@ -283,7 +284,7 @@ sim::sph::ParticleState CudaSph::download() const
     {
         const std::size_t s = byId[i];
         const Eigen::Vector3d x = d.settings.boxLowM + Eigen::Vector3d(position[s].x, position[s].y, position[s].z);
-        out.add(x, state[s].x, state[s].y, velocity[s].w != 0.0f, position[s].w, state[s].z);
+        out.add(x, state[s].x, state[s].y, position[s].w != -1.0f, std::max(-1.0f, position[s].w), state[s].z);
         out.velocity.back() = Eigen::Vector3d(velocity[s].x, velocity[s].y, velocity[s].z);
     }
     return out;

@@ -44,6 +44,11 @@ __device__ float gradientFactor(const SphParams& p, float r)
     return p.gradNorm * 0.625f * (2.0f - q) * (q - 1.8f);
 }
 
+/// The position record's w: the wall depth (m) at a wall particle of known depth, kWallOfUnknownDepth at one without,
+/// kFluid in the fluid; the neighbour loops tell walls from fluid by the record they load anyway.
+constexpr float kFluid = -1.0f, kWallOfUnknownDepth = -2.0f;
+__device__ bool isWall(float4 position) { return position.w != kFluid; }
+
 __device__ void cellOf(const SphParams& p, float4 x, int c[3])
 {
     const float xs[3] = {x.x, x.y, x.z};
@@ -130,7 +135,7 @@ __global__ void cellKeysKernel(SphParams p, SphArrays a, int n, unsigned* keys, 
     cellOf(p, x, c);
     keys[i] = unsigned(c[0]) + unsigned(p.dims[0]) * (unsigned(c[1]) + unsigned(p.dims[1]) * unsigned(c[2]));
     order[i] = i;
-    if (a.velocity[i].w == 0.0f)
+    if (!isWall(x))
         atomicAdd(&cellFluid[keys[i]], 1u);
 }
 
@@ -161,11 +166,11 @@ __global__ void wallPressureKernel(SphParams p, SphArrays a, const unsigned* cel
                                    const unsigned* cellFluid, int n)
 {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i >= n || a.velocity[i].w == 0.0f)
+    if (i >= n || !isWall(a.position[i]))
         return;
     float weight = 0.0f, pressure = 0.0f;
-    forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4, float rx, float ry, float rz, float r) {
-        if (a.velocity[j].w != 0.0f)
+    forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float r) {
+        if (isWall(xj))
             return;
         const float w = fmaxf(kernelValue(p, r), 0.0f);
         const float4 sj = a.state[j];
@@ -198,7 +203,7 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
     const float muI = mixtureViscosity(p, a.state[i].z);
     rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, muI);
     rates.wallDistance[i] = INFINITY;
-    if (a.velocity[i].w != 0.0f)
+    if (isWall(a.position[i]))
         return;
     const float relativeI = rates.derived[i].w;
     float m[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}; // moment, row-major: m[3 r + c] = -sum V rij_r gradW_c
@@ -206,7 +211,7 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
     float wallDistance = INFINITY;
     const bool gradients = p.diffusion > 0.0f;
     forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float r) {
-        if (a.velocity[j].w != 0.0f)
+        if (isWall(xj))
         {
             if (xj.w >= 0.0f)
                 wallDistance = fminf(wallDistance, r - xj.w);
@@ -255,7 +260,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
         rates.densityRate[i] = 0.0f;
     }
-    if (i < n && a.velocity[i].w == 0.0f)
+    if (i < n && !isWall(a.position[i]))
     {
         const float4 vi = a.velocity[i], si = a.state[i], di = rates.derived[i];
         const float rhoI = si.x, inverseRhoI = 1.0f / rhoI, pressureI = di.y / di.z; // p_i / rho_i^2
@@ -266,7 +271,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         // Per neighbour, from its records: dj = (V_j, m_j p_j / rho_j^2, m_j, rho_j / rho0_j), gj = (G_j, mu_j).
         forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float rr) {
             const float4 vj = __ldg(&a.velocity[j]), dj = __ldg(&rates.derived[j]), gj = __ldg(&rates.densityGradient[j]);
-            const bool wallJ = vj.w != 0.0f;
+            const bool wallJ = isWall(xj);
             const float g = gradientFactor(p, rr);
             const float gx = g * rx, gy = g * ry, gz = g * rz;
             const float vx = vi.x - vj.x, vy = vi.y - vj.y, vz = vi.z - vj.z;
@@ -308,13 +313,13 @@ __global__ void kickDriftKernel(SphArrays a, SphRatesArrays rates, float dt, int
     if (i >= n)
         return;
     a.state[i].x += 0.5f * dt * rates.densityRate[i];
-    float4 v = a.velocity[i];
-    if (v.w != 0.0f)
+    float4 x = a.position[i];
+    if (isWall(x))
         return;
+    float4 v = a.velocity[i];
     const float4 acc = rates.acceleration[i];
     v.x += 0.5f * dt * acc.x, v.y += 0.5f * dt * acc.y, v.z += 0.5f * dt * acc.z;
     a.velocity[i] = v;
-    float4 x = a.position[i];
     x.x += dt * v.x, x.y += dt * v.y, x.z += dt * v.z;
     a.position[i] = x;
 }
@@ -330,14 +335,14 @@ __global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float
         state.x += 0.5f * dt * rates.densityRate[i];
         a.state[i] = state;
         float4 v = a.velocity[i];
-        const bool fluid = v.w == 0.0f;
+        const float4 x = a.position[i];
+        const bool fluid = !isWall(x);
         if (fluid)
         {
             const float4 acc = rates.acceleration[i];
             v.x += 0.5f * dt * acc.x, v.y += 0.5f * dt * acc.y, v.z += 0.5f * dt * acc.z;
             a.velocity[i] = v;
         }
-        const float4 x = a.position[i];
         const float change = fabsf(state.x / mixtureDensity(p, state.z) - 1.0f);
         if (!isfinite(change) || !isfinite(x.x + x.y + x.z) || !isfinite(v.x + v.y + v.z))
         {

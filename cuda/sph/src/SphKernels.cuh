@@ -25,9 +25,9 @@ struct SphParams
     float betaMax;             ///< the no-slip extrapolation's cap (SphRates.cpp)
 };
 
-/// Device pointers of the particle arrays in sorted order, packed so that a neighbour costs three 16-byte loads:
-/// position (m) with w = the wall depth (m; < 0 in the fluid and where unknown), velocity (m/s) with w = 1 at wall
-/// particles, 0 in the fluid, and state = (density kg/m^3, mass kg, void fraction, pressure Pa).
+/// Device pointers of the particle arrays in sorted order, packed so that a neighbour costs few 16-byte loads:
+/// position (m) with w = the wall depth (m, >= 0) at a wall particle of known depth, -2 at one without, -1 in the
+/// fluid; velocity (m/s, w unused); state = (density kg/m^3, mass kg, void fraction, pressure Pa).
 struct SphArrays
 {
     float4 *position, *velocity, *state;
