@@ -12,6 +12,7 @@
 #include "vsim/core/RunStatus.h"
 #include "vsim/core/SolverRun.h"
 #include "vsim/core/TetMesh.h"
+#include "vsim/core/TriangleMesh.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/imaging/GuidedSegmentation.h"
 #include "vsim/viz/BrushMode.h"
@@ -122,6 +123,11 @@ public:
     /// with the Flow > Blood Flow Parameters; the run is added (undoable) and played, its stenosis figures in the
     /// status bar. False without centerlines.
     bool simulateBloodFlow();
+    /// Colours the newest blood-flow run's wall loads (Flow > Wall Loads: field "tawss_pa", "osi" or
+    /// "wall_pressure_pa") on the lumen surface in 3D, its legend on the left naming the field, the unit, the time
+    /// window and the run's status; grey where the run has no value (past an open end). While the Run Player plays
+    /// particles the surface stays, translucent, around them. False without a wall-loads surface or for another field.
+    bool showWallLoads(const std::string& field);
     ParameterSet& bloodFlowSetup() { return m_bloodFlowSetup; }
     ParameterSet& sphParameters() { return m_sphParameters; }
     /// Loads Run artifact `id` in the background (double-click in the study tree) and plays it in the Run Player
@@ -276,6 +282,14 @@ private:
     std::shared_ptr<const SolverRun> m_playedRun; // the Run artifact the player plays, all its kept frames
     std::string m_playedRunId;
     std::pair<double, double> m_playedRange{0.0, 1.0}; // the played field's range over the run
+    struct FieldSurface
+    {
+        TriangleMesh surface;
+        std::string field;
+        double low = 0.0, high = 1.0;
+        QString title;
+    };
+    std::optional<FieldSurface> m_wallLoads; // drawn with the played particles (showWallLoads)
     SceneCache m_scene;
     std::string m_drawnScene; // what refreshScene() drew last (roles, completeness), not drawn twice
     std::set<std::string> m_hiddenArtifacts;

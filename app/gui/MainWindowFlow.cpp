@@ -1,17 +1,24 @@
 // The blood-flow step of the workflow (Flow menu): SPH through the vessels of the newest centerlines in the task
 // runner (progress and Cancel), the run added to the study (undoable) and played in the Run Player, the stenosis
-// figures in the status bar, or why there are none.
+// figures in the status bar, or why there are none; Flow > Wall Loads colours the run's wall loads on the lumen surface.
 
 #include "ArtifactCommands.h"
 #include "MainWindow.h"
 #include "ParameterForm.h"
+#include "ViewLayout.h"
 #include "vsim/app/BloodFlowPipeline.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/core/Units.h"
+#include "vsim/viz/VolumeView3D.h"
 
 #include <QMenu>
 #include <QMenuBar>
 #include <QStatusBar>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <variant>
 
 namespace vsim::gui {
 
@@ -21,6 +28,11 @@ void MainWindow::createFlowMenu()
     m_sphParameters = ParameterSet(sim::sph::sphParameters());
     QMenu* flow = menuBar()->addMenu(tr("F&low"));
     m_documentActions << flow->addAction(tr("Blood &Flow (SPH)"), this, [this] { simulateBloodFlow(); });
+    QMenu* loads = flow->addMenu(tr("&Wall Loads"));
+    m_documentActions << loads->menuAction();
+    loads->addAction(tr("Time-Averaged Wall &Shear Stress"), this, [this] { showWallLoads("tawss_pa"); });
+    loads->addAction(tr("&Oscillatory Shear Index"), this, [this] { showWallLoads("osi"); });
+    loads->addAction(tr("Mean Wall &Pressure"), this, [this] { showWallLoads("wall_pressure_pa"); });
     m_documentActions << flow->addAction(tr("Blood Flow &Parameters..."), this, [this] {
         editParametersInDialog(this, tr("Blood flow parameters"),
                                {{tr("Inlet, outlets, figures"), &m_bloodFlowSetup}, {tr("SPH solver"), &m_sphParameters}});
@@ -62,6 +74,55 @@ bool MainWindow::simulateBloodFlow()
                                              .arg(QString::fromStdString(flow->warnings.empty() ? "" : flow->warnings.back())),
                                          10000);
         });
+}
+
+bool MainWindow::showWallLoads(const std::string& field)
+{
+    static const std::map<std::string, QString> names{
+        {"tawss_pa", tr("TAWSS (Pa)")}, {"osi", tr("OSI (0-0.5)")}, {"wall_pressure_pa", tr("mean wall pressure (Pa)")}};
+    if (!m_document.hasStudy() || !names.count(field))
+        return false;
+    const study::Study& study = m_document.study();
+    const std::string id = study.newestArtifact(study::ArtifactKind::Surface, "simulate sph");
+    if (id.empty())
+    {
+        showError(tr("Wall loads"), tr("No wall loads yet: run Flow > Blood Flow (SPH) long enough to reach its "
+                                       "averaging window."));
+        return false;
+    }
+    FieldSurface shown{study.loadSurface(id), field, 0.0, 1.0, names.at(field)};
+    double low = std::numeric_limits<double>::max(), high = std::numeric_limits<double>::lowest();
+    for (double v : shown.surface.pointFields.at(field))
+        if (std::isfinite(v))
+            low = std::min(low, v), high = std::max(high, v);
+    if (!(high >= low))
+        low = 0.0, high = 1.0;
+    shown.low = field == "wall_pressure_pa" ? low : 0.0; // stresses and the index from 0, pressures as they are
+    shown.high = std::max(high, shown.low + 1e-6);
+    // The run it was averaged in: its status goes into the title, as on every figure of it.
+    const study::Artifact& surface = study.artifact(id);
+    if (!surface.provenance.inputs.empty())
+    {
+        const RunStatus status = app::runStatusOf(study.artifact(surface.provenance.inputs.front()));
+        if (!status.converged())
+            shown.title += tr(", NOT CONVERGED");
+        else if (!status.complete())
+            shown.title += tr(", STOPPED EARLY");
+    }
+    shown.title += tr(", time-averaged; grey: no value");
+    viz::VolumeView3D* view = m_views->volumeView();
+    if (m_playedRun && !m_playedRun->frames.empty() &&
+        std::holds_alternative<ParticleSet>(m_playedRun->frames.front().data))
+    {
+        m_wallLoads = std::move(shown);
+        drawRunFrame();
+        return true;
+    }
+    view->clearSurfaces();
+    view->clearLines();
+    view->setVolumeVisible(false);
+    view->showFieldSurface(shown.surface, field, shown.low, shown.high, shown.title);
+    return true;
 }
 
 } // namespace vsim::gui

@@ -249,8 +249,17 @@ void MainWindow::drawRunFrame()
     }
     else if (const auto* particles = std::get_if<ParticleSet>(&frame.data))
     {
+        // With the wall loads around them (see-through) the particles are drawn smaller: 4-pixel sprites of the
+        // particles next to the wall reach through the surface in front of them and hide it.
         if (particles->fields.count(field))
-            view->showFieldPoints(particles->positionsMm, particles->fields.at(field), range.first, range.second, 4.0, title);
+            view->showFieldPoints(particles->positionsMm, particles->fields.at(field), range.first, range.second,
+                                  m_wallLoads ? 2.0 : 4.0, title);
+        if (m_wallLoads)
+        {
+            view->showFieldSurface(m_wallLoads->surface, m_wallLoads->field, m_wallLoads->low, m_wallLoads->high,
+                                   m_wallLoads->title);
+            view->setFieldSurfaceOpacity(0.5);
+        }
     }
     else
         statusBar()->showMessage(tr("Voxel-grid frames are drawn in the slice views only"), 8000);
@@ -263,6 +272,7 @@ void MainWindow::closeRunPlayer()
     m_runPlayer->pause();
     m_playedRun.reset();
     m_playedRunId.clear();
+    m_wallLoads.reset();
     m_views->volumeView()->clearFieldLines();
     for (viz::SliceOrientation orientation : kSliceOrientations)
         m_views->sliceView(orientation)->clearField();

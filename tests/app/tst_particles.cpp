@@ -10,6 +10,8 @@
 #include "LinePlot.h"
 #include "MainWindow.h"
 #include "RunPlayer.h"
+#include "SceneCache.h"
+#include "TestOutput.h"
 #include "ViewLayout.h"
 #include "vsim/mesh/ParticleSeeding.h"
 #include "vsim/sim/common/RunDriver.h"
@@ -120,7 +122,33 @@ private slots:
         QVERIFY(!runId.empty());
         QCOMPARE(study.artifact(runId).provenance.command, std::string("simulate sph"));
         QVERIFY(window.runPlayer() && window.runPlayer()->frameCount() >= 4);
+        QVERIFY(!window.showWallLoads("tawss_pa")); // none yet: a message, nothing drawn
+
+        // Flow > Wall Loads while the particles play: the lumen's display surface carrying made-up wall loads (the
+        // loads themselves are cli_blood_flow's and tst_sph_flow_validation's; here the drawing), one vertex without a
+        // value, added as the blood flow adds them.
+        TriangleMesh loads = gui::displaySurface(study.loadLabel(study.newestArtifact(study::ArtifactKind::Label)), {});
+        QVERIFY(loads.points.size() > 100);
+        for (const char* field : {"tawss_pa", "osi", "wall_pressure_pa"})
+            for (const Eigen::Vector3d& x : loads.points)
+                loads.pointFields[field].push_back(std::abs(x.z()) * 0.01);
+        loads.pointFields["tawss_pa"][0] = std::numeric_limits<double>::quiet_NaN();
+        study.addSurface(loads, "Wall loads (SPH)", study::Provenance{"simulate sph", {}, {runId}, "", ""});
+        QVERIFY(window.showWallLoads("tawss_pa"));
+        viz::VolumeView3D* view = window.views()->volumeView();
+        QVERIFY2(view->surfaceLegendTitle().startsWith("TAWSS (Pa)") && view->surfaceLegendTitle().contains("time-averaged"),
+                 qPrintable(view->surfaceLegendTitle()));
+        window.runPlayer()->setFrame(window.runPlayer()->frameCount() / 2); // mid-play: particles and wall loads
+        QTest::qWait(100);
+        QVERIFY(view->surfaceLegendTitle().startsWith("TAWSS (Pa)"));
+        view->grabFramebuffer().save(vsim::test::outputFolder("gui") + "/blood-flow-mid-play.png");
+        window.grab().save(vsim::test::outputFolder("gui") + "/blood-flow-mid-play-window.png");
+        QVERIFY(window.showWallLoads("wall_pressure_pa"));
+        QVERIFY(view->surfaceLegendTitle().startsWith("mean wall pressure (Pa)"));
+        QVERIFY(!window.showWallLoads("speed")); // not a wall load
+
         window.document().undoStack()->undo();
+        study.removeArtifact(study.newestArtifact(study::ArtifactKind::Surface, "simulate sph"));
         QCOMPARE(study.artifacts().size(), before);
     }
 };

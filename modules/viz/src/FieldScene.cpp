@@ -31,6 +31,7 @@ vtkSmartPointer<vtkLookupTable> fieldLookupTable(double low, double high)
     auto table = vtkSmartPointer<vtkLookupTable>::New();
     table->SetHueRange(0.667, 0.0);
     table->SetTableRange(low, high);
+    table->SetNanColor(0.6, 0.6, 0.6, 1.0); // grey where a field is not defined (VTK's default is a dark red)
     table->Build();
     return table;
 }

@@ -55,8 +55,8 @@ struct VolumeView3D::Scene
     vtkSmartPointer<vtkActor> fieldSurface, fieldLines, tubelets;
     vtkSmartPointer<vtkRenderer> overlay; // layer 1: the tubelets on top of the vessels
     int tubeletQuads = 0;
-    vtkSmartPointer<vtkScalarBarActor> legend;
-    QString legendTitle;
+    vtkSmartPointer<vtkScalarBarActor> legend, surfaceLegend; // points and lines on the right, surfaces on the left
+    QString legendTitle, surfaceLegendTitle;
     int lineCount = 0;
 };
 
@@ -148,9 +148,11 @@ void VolumeView3D::clearSurfaces()
     if (m_scene->fieldSurface)
         renderer()->RemoveActor(m_scene->fieldSurface);
     m_scene->fieldSurface = nullptr;
-    if (m_scene->legend)
-        m_scene->legend->SetVisibility(false);
-    m_scene->legendTitle.clear();
+    if (m_scene->surfaceLegend)
+        m_scene->surfaceLegend->SetVisibility(false);
+    if (m_scene->legendTitle == m_scene->surfaceLegendTitle)
+        m_scene->legendTitle.clear();
+    m_scene->surfaceLegendTitle.clear();
     update();
 }
 
@@ -192,8 +194,28 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
         m_scene->fieldSurface->SetMapper(mapper);
         renderer()->AddActor(m_scene->fieldSurface);
     }
-    showLegend(m_scene->fieldSurface->GetMapper()->GetLookupTable(), legendTitle);
+    // The surface's own legend, on the left: particles or lines shown with it keep theirs on the right.
+    if (!m_scene->surfaceLegend)
+    {
+        m_scene->surfaceLegend = detail::newLegend();
+        m_scene->surfaceLegend->SetPosition(0.02, 0.1);
+        renderer()->AddViewProp(m_scene->surfaceLegend);
+    }
+    m_scene->surfaceLegend->SetLookupTable(m_scene->fieldSurface->GetMapper()->GetLookupTable());
+    m_scene->surfaceLegend->SetTitle(legendTitle.toUtf8().constData());
+    m_scene->surfaceLegend->SetVisibility(true);
+    m_scene->surfaceLegendTitle = m_scene->legendTitle = legendTitle;
+    update();
 }
+
+void VolumeView3D::setFieldSurfaceOpacity(double opacity)
+{
+    if (m_scene->fieldSurface)
+        m_scene->fieldSurface->GetProperty()->SetOpacity(std::clamp(opacity, 0.0, 1.0));
+    update();
+}
+
+QString VolumeView3D::surfaceLegendTitle() const { return m_scene->surfaceLegendTitle; }
 
 void VolumeView3D::showLegend(vtkScalarsToColors* table, const QString& title)
 {
@@ -261,6 +283,9 @@ void VolumeView3D::clearFieldLines()
     if (m_scene->fieldLines)
         renderer()->RemoveActor(m_scene->fieldLines);
     m_scene->fieldLines = nullptr;
+    if (m_scene->legend)
+        m_scene->legend->SetVisibility(false);
+    m_scene->legendTitle = m_scene->surfaceLegendTitle;
     update();
 }
 

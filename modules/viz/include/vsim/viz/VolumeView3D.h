@@ -35,16 +35,21 @@ public:
     /// Adds a surface (mm, LPS) drawn in `colour`; returns nothing, surfaces stay until clearSurfaces().
     void addSurface(const TriangleMesh& surface, const QColor& colour);
     void clearSurfaces();
-    /// Shows a surface coloured by its point field `field` (blue -> red over [low, high]) with a colour legend
-    /// titled `legendTitle` (units included); replaces any earlier coloured surface.
+    /// Shows a surface coloured by its point field `field` (blue -> red over [low, high], grey where not finite) with
+    /// its colour legend on the left titled `legendTitle` (units included); replaces any earlier coloured surface.
+    /// Points and lines shown with it keep their own legend on the right.
     void showFieldSurface(const TriangleMesh& surface, const std::string& field, double low, double high,
                           const QString& legendTitle);
     /// Calls out places (Callout.h: the wall's peak stress and rupture index), replacing earlier callouts; cleared
     /// with the surfaces.
     void showCallouts(const std::vector<Callout>& callouts);
     std::size_t calloutCount() const;
-    /// The legend's title, empty when no coloured surface is shown.
+    /// The newest legend's title (surface, lines or points), empty when none is shown.
     QString legendTitle() const;
+    /// The coloured surface's legend title, empty when none is shown.
+    QString surfaceLegendTitle() const;
+    /// Opacity of the coloured surface (0..1): lowered so that particles inside show through.
+    void setFieldSurfaceOpacity(double opacity);
     /// Opacity of every surface (0..1): lowered so that skeletons and centerlines inside show through.
     void setSurfaceOpacity(double opacity);
     /// Draws the edges of a skeleton or centerline graph (mm, LPS) as lines `widthPixels` wide, on top of the
