@@ -16,6 +16,7 @@
 #include <QStatusBar>
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <variant>
@@ -109,7 +110,16 @@ bool MainWindow::showWallLoads(const std::string& field)
         else if (!status.complete())
             shown.title += tr(", STOPPED EARLY");
     }
-    shown.title += tr(", time-averaged; grey: no value");
+    const auto& parameters = surface.provenance.parameters;
+    const auto from = parameters.find("averaged_from_s"), over = parameters.find("averaged_over_s");
+    if (from != parameters.end() && over != parameters.end())
+    {
+        const double start = std::atof(from->second.c_str()), length = std::atof(over->second.c_str());
+        shown.title += tr(", averaged over %1-%2 ms").arg(1e3 * start, 0, 'f', 1).arg(1e3 * (start + length), 0, 'f', 1);
+    }
+    else
+        shown.title += tr(", time-averaged");
+    shown.title += tr("; grey: no value");
     viz::VolumeView3D* view = m_views->volumeView();
     if (m_playedRun && !m_playedRun->frames.empty() &&
         std::holds_alternative<ParticleSet>(m_playedRun->frames.front().data))

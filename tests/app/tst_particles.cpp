@@ -133,10 +133,13 @@ private slots:
             for (const Eigen::Vector3d& x : loads.points)
                 loads.pointFields[field].push_back(std::abs(x.z()) * 0.01);
         loads.pointFields["tawss_pa"][0] = std::numeric_limits<double>::quiet_NaN();
-        study.addSurface(loads, "Wall loads (SPH)", study::Provenance{"simulate sph", {}, {runId}, "", ""});
+        study.addSurface(loads, "Wall loads (SPH)",
+                         study::Provenance{"simulate sph", {{"averaged_from_s", "0.002"}, {"averaged_over_s", "0.002"}},
+                                           {runId}, "", ""});
         QVERIFY(window.showWallLoads("tawss_pa"));
         viz::VolumeView3D* view = window.views()->volumeView();
-        QVERIFY2(view->surfaceLegendTitle().startsWith("TAWSS (Pa)") && view->surfaceLegendTitle().contains("time-averaged"),
+        QVERIFY2(view->surfaceLegendTitle().startsWith("TAWSS (Pa)") &&
+                     view->surfaceLegendTitle().contains("averaged over 2.0-4.0 ms"),
                  qPrintable(view->surfaceLegendTitle()));
         window.runPlayer()->setFrame(window.runPlayer()->frameCount() / 2); // mid-play: particles and wall loads
         QTest::qWait(100);

@@ -209,6 +209,8 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
     {
         study::Provenance derived{"simulate sph", {}, {id}, "", ""};
         derived.parameters["fields"] = "tawss_pa, osi, wall_pressure_pa (NaN past an open end's plane)";
+        derived.parameters["averaged_from_s"] = preciseNumberText(flow.averagedFromS); // the time window
+        derived.parameters["averaged_over_s"] = preciseNumberText(flow.averagedS);
         added.wallLoads = study.addSurface(flow.wallSurface, "Wall loads (SPH)", derived, warnings);
     }
     return added;
