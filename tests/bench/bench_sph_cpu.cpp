@@ -27,24 +27,10 @@ int main(int argc, char** argv)
     const double wanted = argc > 1 ? std::stod(argv[1]) : 2e5;
     const int steps = argc > 2 ? std::stoi(argv[2]) : 10;
     const int repetitions = argc > 3 ? std::stoi(argv[3]) : 3;
-    // About 1.25 wall particles per water particle at these sizes: choose the spacing for the total.
-    double spacing = 1000.0 * std::cbrt(0.6754 * 2.25 / wanted);
-    ParticleSet particles = damBreakParticles(spacing);
-    spacing *= std::cbrt(double(particles.size()) / wanted); // one correction for the walls' true share
-    particles = damBreakParticles(spacing);
-    std::size_t walls = 0;
-    for (double w : particles.fields.at("wall"))
-        walls += w > 0.5;
+    const DamBreakCase dam = damBreakCase(wanted);
     SimulationInput input;
-    input.data["particles"] = particles;
-    ParameterSet parameters(sphParameters());
-    parameters.set("spacing_mm", spacing);
-    parameters.set("density_kg_m3", 1000.0);
-    parameters.set("viscosity_pa_s", 1e-3);
-    parameters.set("sound_speed_m_s", 10.0 * std::sqrt(9.81 * kDamBreakWaterHeightM));
-    parameters.set("gravity_z_m_s2", -9.81);
-    parameters.set("free_surface", 1);
-    parameters.set("end_time_s", 10.0);
+    input.data["particles"] = dam.particles;
+    const ParameterSet parameters = damBreakParameters(dam.spacingMm);
     SphSolver solver;
     solver.initialize(input, parameters);
     std::vector<double> perStep;
@@ -66,7 +52,7 @@ int main(int argc, char** argv)
                 "\"spacing_mm\": %.3f, \"smoothing_ratio\": 2, \"precision\": \"double\", \"threads\": %d, "
                 "\"steps\": %d, \"repetitions\": %d, \"median_seconds_per_step\": %.4f, "
                 "\"particle_steps_per_second\": %.4g, \"simulated_time_s\": %.5g}\n",
-                particles.size(), walls, spacing, omp_get_max_threads(), steps, repetitions, median,
-                double(particles.size()) / median, solver.position());
+                dam.particles.size(), dam.wallParticles, dam.spacingMm, omp_get_max_threads(), steps, repetitions, median,
+                double(dam.particles.size()) / median, solver.position());
     return 0;
 }

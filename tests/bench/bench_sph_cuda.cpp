@@ -39,25 +39,12 @@ try
         std::printf("SKIP: no CUDA device\n");
         return 0;
     }
-    double spacing = 1000.0 * std::cbrt(0.6754 * 2.25 / wanted); // as bench_sph_cpu
-    ParticleSet particles = damBreakParticles(spacing);
-    spacing *= std::cbrt(double(particles.size()) / wanted);
-    particles = damBreakParticles(spacing);
-    std::size_t walls = 0;
-    for (double w : particles.fields.at("wall"))
-        walls += w > 0.5;
+    const DamBreakCase dam = damBreakCase(wanted);
     SimulationInput input;
-    input.data["particles"] = particles;
-    ParameterSet parameters(sphParameters());
-    parameters.set("spacing_mm", spacing);
-    parameters.set("density_kg_m3", 1000.0);
-    parameters.set("viscosity_pa_s", 1e-3);
+    input.data["particles"] = dam.particles;
     // c0 = 20 sqrt(g H), DualSPHysics' CoefSound of 20 (bench_sph_cpu's 10 let the column's first collapse reach the
     // 3 % density guard at 1 million particles, t = 0.038 s); the figure per particle-step does not depend on it.
-    parameters.set("sound_speed_m_s", kSoundSpeedFactor * std::sqrt(9.81 * kDamBreakWaterHeightM));
-    parameters.set("gravity_z_m_s2", -9.81);
-    parameters.set("free_surface", 1);
-    parameters.set("end_time_s", 100.0);
+    const ParameterSet parameters = damBreakParameters(dam.spacingMm, kSoundSpeedFactor, 100.0);
     SphSolver solver;
     solver.initialize(input, parameters);
     cuda::CudaSph gpu(solver);
@@ -80,14 +67,14 @@ try
                 throw Error("a guard stopped the CPU dam break");
         cpuStep = std::chrono::duration<double>(std::chrono::steady_clock::now() - cpuStart).count() / cpuSteps;
     }
-    const double n = double(particles.size());
+    const double n = double(dam.particles.size());
     std::printf("{\"case\": \"3D dam break (SPHERIC 2, no obstacle)\", \"device\": \"%s\", \"particles\": %zu, "
                 "\"wall_particles\": %zu, \"spacing_mm\": %.3f, \"smoothing_ratio\": 2, \"sound_speed_m_s\": %.2f, \"gpu_precision\": \"single\", "
                 "\"gpu_steps\": %d, \"gpu_seconds_per_step\": %.6f, \"gpu_particle_steps_per_second\": %.4g, "
                 "\"gpu_simulated_time_s\": %.5g, \"gpu_largest_density_variation\": %.4g, \"gpu_memory_mib\": %.1f, "
                 "\"cpu_precision\": \"double\", \"cpu_threads\": %d, \"cpu_steps\": %d, \"cpu_seconds_per_step\": %.4f, "
                 "\"cpu_particle_steps_per_second\": %.4g}\n",
-                vsim::cuda::deviceSummary().c_str(), particles.size(), walls, spacing, kSoundSpeedFactor * std::sqrt(9.81 * kDamBreakWaterHeightM), steps, gpuStep, n / gpuStep,
+                vsim::cuda::deviceSummary().c_str(), dam.particles.size(), dam.wallParticles, dam.spacingMm, kSoundSpeedFactor * std::sqrt(9.81 * kDamBreakWaterHeightM), steps, gpuStep, n / gpuStep,
                 gpu.timeS(), gpu.largestDensityVariation(), double(gpu.deviceBytes()) / 1048576.0, omp_get_max_threads(),
                 cpuSteps, cpuStep, cpuStep > 0.0 ? n / cpuStep : 0.0);
     return 0;

@@ -22,14 +22,7 @@ void initializeDamBreak(SphSolver& solver, double spacingMm, double absorptionMm
 {
     SimulationInput input;
     input.data["particles"] = damBreakParticles(spacingMm);
-    ParameterSet parameters(sphParameters());
-    parameters.set("spacing_mm", spacingMm);
-    parameters.set("density_kg_m3", 1000.0);
-    parameters.set("viscosity_pa_s", 1e-3);
-    parameters.set("sound_speed_m_s", 10.0 * std::sqrt(9.81 * kDamBreakWaterHeightM));
-    parameters.set("gravity_z_m_s2", -9.81);
-    parameters.set("free_surface", 1);
-    parameters.set("end_time_s", 10.0);
+    ParameterSet parameters = damBreakParameters(spacingMm);
     parameters.set("absorption_distance_mm", absorptionMm);
     solver.initialize(input, parameters);
 }

@@ -1,6 +1,7 @@
 #include "vsim/sim/sph/DamBreak.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/sim/sph/SphSolver.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,34 @@ ParticleSet damBreakParticles(double spacingMm)
                 pressure.push_back(water ? 1000.0 * 9.81 * (waterHeight - x.z()) * 1e-3 : 0.0);
             }
     return set;
+}
+
+DamBreakCase damBreakCase(double particles)
+{
+    if (!(particles >= 1000.0))
+        throw Error("the dam break needs at least 1000 particles");
+    // About 1.25 wall particles per water particle at these sizes: a first spacing for the total, then one
+    // correction for the walls' true share.
+    const double first = 1000.0 * std::cbrt(0.6754 * 2.25 / particles);
+    DamBreakCase c;
+    c.spacingMm = first * std::cbrt(double(damBreakParticles(first).size()) / particles);
+    c.particles = damBreakParticles(c.spacingMm);
+    for (double w : c.particles.fields.at("wall"))
+        c.wallParticles += w > 0.5;
+    return c;
+}
+
+ParameterSet damBreakParameters(double spacingMm, double soundSpeedFactor, double endTimeS)
+{
+    ParameterSet parameters(sphParameters());
+    parameters.set("spacing_mm", spacingMm);
+    parameters.set("density_kg_m3", 1000.0);
+    parameters.set("viscosity_pa_s", 1e-3);
+    parameters.set("sound_speed_m_s", soundSpeedFactor * std::sqrt(9.81 * kDamBreakWaterHeightM));
+    parameters.set("gravity_z_m_s2", -9.81);
+    parameters.set("free_surface", 1);
+    parameters.set("end_time_s", endTimeS);
+    return parameters;
 }
 
 } // namespace vsim::sim::sph

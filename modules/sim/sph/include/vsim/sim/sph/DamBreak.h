@@ -6,7 +6,10 @@
 // particles with their depths, the water at its hydrostatic pressure. The speed benchmarks run it; its validation
 // against the experiment's water-height probes needs the obstacle and is not here yet.
 
+#include "vsim/core/Parameters.h"
 #include "vsim/core/ParticleSet.h"
+
+#include <cstddef>
 
 namespace vsim::sim::sph {
 
@@ -16,5 +19,19 @@ ParticleSet damBreakParticles(double spacingMm);
 
 /// The water column's height (m).
 constexpr double kDamBreakWaterHeightM = 0.55;
+
+/// The dam break at about `particles` particles in all, walls included (the speed benchmarks' size).
+struct DamBreakCase
+{
+    double spacingMm = 0.0;
+    ParticleSet particles;
+    std::size_t wallParticles = 0;
+};
+DamBreakCase damBreakCase(double particles);
+
+/// SphSolver's parameters for the dam break at `spacingMm`: water (1000 kg/m^3, 1 mPa s), gravity 9.81 m/s^2 along -z,
+/// a free surface, the sound speed `soundSpeedFactor` sqrt(g H) (10: about 1 % density variation; DualSPHysics'
+/// CoefSound is 20), run to `endTimeS`.
+ParameterSet damBreakParameters(double spacingMm, double soundSpeedFactor = 10.0, double endTimeS = 10.0);
 
 } // namespace vsim::sim::sph
