@@ -118,7 +118,8 @@ int simulateSph(const Arguments& arguments, const Progress& progress)
     if (backend != "auto" && backend != "cpu" && backend != "cuda")
         throw UsageError("--backend: auto, cpu or cuda, not '" + backend + "'");
     if (backend == "cuda")
-        throw Error("the SPH solver's CUDA backend is not part of this version yet: use --backend cpu (or auto)");
+        throw Error("the SPH solver's CUDA backend runs closed domains only so far (cuda/sph: the dam-break "
+                    "benchmark); a vessel's flow has an inlet and outlets: use --backend cpu (or auto)");
     if (arguments.hasOption("out")) // before the run: a refused folder costs no time
         claimOutputFolder(arguments.option("out"), "run");
     study::Study study = openStudyForWriting(arguments);

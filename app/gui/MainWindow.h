@@ -216,6 +216,9 @@ private:
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
     /// The player's current frame of the played run in the 3D view (MainWindowRuns.cpp).
     void drawRunFrame();
+    /// A blood-flow run's velocities and pressures along the centerline (its time-averaged sections) under the Run
+    /// Player's plot; hidden for other runs.
+    void plotFlowAlongCenterline();
     void plotRunHistory();
     void closeRunPlayer();
     /// The wall-stress frame of run artifact `run` in the 3D view: its legend says when it did not converge, the
@@ -278,6 +281,7 @@ private:
     QDockWidget* m_interactiveDock = nullptr;
     RunPlayer* m_runPlayer = nullptr;
     LinePlot* m_runPlot = nullptr;
+    LinePlot *m_flowVelocityPlot = nullptr, *m_flowPressurePlot = nullptr; // a blood-flow run's sections
     QDockWidget* m_runDock = nullptr;
     std::shared_ptr<const SolverRun> m_playedRun; // the Run artifact the player plays, all its kept frames
     std::string m_playedRunId;

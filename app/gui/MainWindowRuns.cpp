@@ -9,6 +9,7 @@
 #include "MainWindow.h"
 #include "RunPlayer.h"
 #include "ViewLayout.h"
+#include "vsim/app/BloodFlowPipeline.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
@@ -127,10 +128,16 @@ bool MainWindow::openRunPlayer(const std::string& id)
                                m_runPlot = new LinePlot(panel);
                                m_runPlot->setObjectName("runPlot");
                                m_runPlot->setToolTip(tr("Click or drag to go to a frame"));
+                               m_flowVelocityPlot = new LinePlot(panel);
+                               m_flowVelocityPlot->setObjectName("flowVelocityPlot");
+                               m_flowPressurePlot = new LinePlot(panel);
+                               m_flowPressurePlot->setObjectName("flowPressurePlot");
                                auto* layout = new QVBoxLayout(panel);
                                layout->setContentsMargins(0, 0, 0, 0);
                                layout->addWidget(m_runPlayer);
                                layout->addWidget(m_runPlot, 1);
+                               layout->addWidget(m_flowVelocityPlot, 1);
+                               layout->addWidget(m_flowPressurePlot, 1);
                                connect(m_runPlayer, &RunPlayer::frameChanged, this, [this] { drawRunFrame(); });
                                connect(m_runPlayer, &RunPlayer::appearanceChanged, this, [this] {
                                    plotRunHistory();
@@ -161,8 +168,33 @@ bool MainWindow::openRunPlayer(const std::string& id)
                                                   QString::fromStdString(run->axis.unit),
                                                   run->frames.empty() ? QStringList() : fieldsOf(run->frames.front().data));
                            plotRunHistory();
+                           plotFlowAlongCenterline();
                            drawRunFrame();
                        });
+}
+
+void MainWindow::plotFlowAlongCenterline()
+{
+    const std::vector<app::SectionAlongCenterline> sections =
+        m_playedRunId.empty() ? std::vector<app::SectionAlongCenterline>{}
+                              : app::sectionsAlongCenterline(m_document.study().artifact(m_playedRunId));
+    m_flowVelocityPlot->setVisible(!sections.empty());
+    m_flowPressurePlot->setVisible(!sections.empty());
+    if (sections.empty())
+        return;
+    LinePlot::Curve peak{tr("peak (fastest 5 %)"), QColor(200, 40, 30), {}, {}},
+        mean{tr("mean (flow rate / area)"), QColor(40, 90, 200), {}, {}},
+        pressure{tr("mean pressure"), QColor(30, 140, 60), {}, {}};
+    for (const app::SectionAlongCenterline& s : sections)
+    {
+        peak.x.push_back(s.arcMm), mean.x.push_back(s.arcMm), pressure.x.push_back(s.arcMm);
+        peak.y.push_back(s.peakVelocityMS), mean.y.push_back(s.meanVelocityMS), pressure.y.push_back(s.meanPressurePa);
+    }
+    const QString along = tr("along the centerline from the inlet (mm)");
+    m_flowVelocityPlot->setAxes(along, tr("velocity (m/s), time-averaged sections"));
+    m_flowVelocityPlot->setCurves({peak, mean});
+    m_flowPressurePlot->setAxes(along, tr("pressure (Pa, against the outlets'), time-averaged"));
+    m_flowPressurePlot->setCurves({pressure});
 }
 
 void MainWindow::plotRunHistory()

@@ -13,6 +13,7 @@
 #include "SceneCache.h"
 #include "TestOutput.h"
 #include "ViewLayout.h"
+#include "vsim/app/BloodFlowPipeline.h"
 #include "vsim/mesh/ParticleSeeding.h"
 #include "vsim/sim/common/RunDriver.h"
 #include "vsim/sim/sph/SphSolver.h"
@@ -122,6 +123,23 @@ private slots:
         QVERIFY(!runId.empty());
         QCOMPARE(study.artifact(runId).provenance.command, std::string("simulate sph"));
         QVERIFY(window.runPlayer() && window.runPlayer()->frameCount() >= 4);
+        // The sections along the centerline under the Run Player (velocities and pressures, time-averaged): none
+        // before the averaging window, so hidden; then the run given made-up sections (the real ones are
+        // cli_blood_flow's), opened again: shown.
+        const auto* velocityPlot = window.findChild<gui::LinePlot*>("flowVelocityPlot");
+        const auto* pressurePlot = window.findChild<gui::LinePlot*>("flowPressurePlot");
+        QVERIFY(velocityPlot && pressurePlot && app::sectionsAlongCenterline(study.artifact(runId)).empty());
+        QVERIFY(!velocityPlot->isVisible() && !pressurePlot->isVisible());
+        auto attributes = study.artifact(runId).attributes;
+        attributes["sections_along_centerline"] =
+            R"({"columns": ["arc_mm", "peak_velocity_m_s", "mean_velocity_m_s", "mean_pressure_pa"],
+                "rows": [[2, 0.12, 0.1, 30], [30, 0.45, 0.38, 5], [54, 0.13, 0.1, 2]]})";
+        study.setArtifactAttributes(runId, attributes);
+        QVERIFY(window.openRunPlayer(runId) && test::waitForTask(window));
+        QVERIFY(velocityPlot->isVisible() && pressurePlot->isVisible());
+        QCOMPARE(velocityPlot->curves().size(), std::size_t(2));
+        QCOMPARE(velocityPlot->curves()[0].y, (std::vector<double>{0.12, 0.45, 0.13}));
+        QCOMPARE(pressurePlot->curves()[0].x, (std::vector<double>{2, 30, 54}));
         QVERIFY(!window.showWallLoads("tawss_pa")); // none yet: a message, nothing drawn
 
         // Flow > Wall Loads while the particles play: the lumen's display surface carrying made-up wall loads (the

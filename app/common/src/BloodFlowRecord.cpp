@@ -201,6 +201,17 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
     if (const std::optional<WallLoadSummary> w = summariseWallLoads(flow.wallSurface))
         for (const auto& [key, value, vertex, definition] : wallLoadRows(flow.wallSurface, *w))
             attributes["wall_" + key] = preciseNumberText(value);
+    nlohmann::json sections = nlohmann::json::array(); // compact: the GUI's plots along the centerline read it back
+    for (std::size_t k = 0; flow.averagedS > 0.0 && k < flow.sections.size() && k < flow.sectionArcMm.size(); ++k)
+        sections.push_back({flow.sectionArcMm[k], flow.sections[k].peakVelocityMS, flow.sections[k].meanVelocityMS,
+                            flow.sections[k].meanPressurePa});
+    if (!sections.empty()) // none when the run ended before its averaging window
+        attributes["sections_along_centerline"] =
+        nlohmann::json{{"columns", {"arc_mm", "peak_velocity_m_s", "mean_velocity_m_s", "mean_pressure_pa"}},
+                       {"averaged_from_s", flow.averagedFromS},
+                       {"averaged_over_s", flow.averagedS},
+                       {"rows", sections}}
+            .dump();
     study.setArtifactAttributes(id, attributes);
     BloodFlowArtifacts added{id, ""};
     const auto tawss = flow.wallSurface.pointFields.find("tawss_pa");
@@ -214,6 +225,21 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
         added.wallLoads = study.addSurface(flow.wallSurface, "Wall loads (SPH)", derived, warnings);
     }
     return added;
+}
+
+std::vector<SectionAlongCenterline> sectionsAlongCenterline(const study::Artifact& run)
+{
+    const auto text = run.attributes.find("sections_along_centerline");
+    if (text == run.attributes.end())
+        return {};
+    const nlohmann::json json = nlohmann::json::parse(text->second, nullptr, false);
+    std::vector<SectionAlongCenterline> sections;
+    if (json.is_discarded() || !json.contains("rows"))
+        return sections;
+    for (const auto& row : json.at("rows"))
+        if (row.is_array() && row.size() == 4)
+            sections.push_back({row[0].get<double>(), row[1].get<double>(), row[2].get<double>(), row[3].get<double>()});
+    return sections;
 }
 
 } // namespace vsim::app

@@ -97,9 +97,20 @@ struct BloodFlowArtifacts
     std::vector<std::string> ids() const { return wallLoads.empty() ? std::vector{run} : std::vector{run, wallLoads}; }
 };
 
-/// Adds the run ("Blood flow (SPH)": a Run artifact of particle frames) with the metrics and the stenosis figures as
-/// attributes, and the wall loads' surface ("Wall loads (SPH)", made from the run); the study is not saved.
+/// Adds the run ("Blood flow (SPH)": a Run artifact of particle frames) with the metrics, the stenosis figures and the
+/// sections along the centerline (attribute "sections_along_centerline") as attributes, and the wall loads' surface
+/// ("Wall loads (SPH)", made from the run); the study is not saved.
 BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow, const BloodFlowSetup& setup,
                             const std::vector<std::string>& inputs);
+
+/// One cross-section of a blood-flow run, time-averaged over the run's window (sim/sph/CrossSections.h).
+struct SectionAlongCenterline
+{
+    double arcMm = 0.0;                             ///< along the path from the inlet
+    double peakVelocityMS = 0.0, meanVelocityMS = 0.0; ///< the fastest 5 % of its particles; flow rate / area
+    double meanPressurePa = 0.0;                    ///< against the outlets' pressure as given
+};
+/// The sections a run artifact made by addBloodFlowRun() carries, in order along the path (empty for other runs).
+std::vector<SectionAlongCenterline> sectionsAlongCenterline(const study::Artifact& run);
 
 } // namespace vsim::app
