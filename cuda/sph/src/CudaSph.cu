@@ -98,6 +98,9 @@ struct CudaSph::Device
     DeviceArray<float> densityRate, wallDistance;
     DeviceArray<unsigned> keys, sortedKeys, cellStart, cellEnd, cellFluid;
     DeviceArray<int> order, sortedOrder;
+    DeviceArray<int> byKind, fluidSelected; // fluid indices first, then the walls' (launchPartition)
+    DeviceArray<std::uint8_t> partitionScratch;
+    int fluidCount = 0;
     DeviceArray<std::uint8_t> sortScratch;
     std::size_t sortScratchBytes = 0;
     unsigned keyBits = 1;
@@ -110,12 +113,13 @@ struct CudaSph::Device
     Device(std::size_t count, std::size_t cellCount)
         : n(int(count)), current(count), other(count), acceleration(count), densityGradient(count), derived(count), densityRate(count),
           wallDistance(count), keys(count), sortedKeys(count), cellStart(cellCount),
-          cellEnd(cellCount), cellFluid(cellCount), order(count), sortedOrder(count), keyBits(bitsFor(cellCount)), cells(cellCount),
+          cellEnd(cellCount), cellFluid(cellCount), order(count), byKind(count), fluidSelected(1), sortedOrder(count), keyBits(bitsFor(cellCount)), cells(cellCount),
           reductions(1)
     {
         VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data(), sortedKeys.data(),
                                                         order.data(), sortedOrder.data(), n, 0, int(keyBits)));
         sortScratch = DeviceArray<std::uint8_t>(sortScratchBytes);
+        partitionScratch = DeviceArray<std::uint8_t>(sph::partitionScratchBytes(n));
     }
 
     sph::SphRatesArrays rates() const
@@ -136,6 +140,8 @@ struct CudaSph::Device
         VSIM_CUDA_CHECK(cudaMemset(cellStart.data(), 0, cellStart.bytes()));
         VSIM_CUDA_CHECK(cudaMemset(cellEnd.data(), 0, cellEnd.bytes()));
         sph::launchCellRanges(sortedKeys.data(), n, cellStart.data(), cellEnd.data());
+        sph::launchPartition(current.pointers(), n, byKind.data(), fluidSelected.data(), partitionScratch.data(),
+                             partitionScratch.bytes());
     }
 
     /// SphSolver::updateRates: the walls' pressure, every pressure, G and the wall distances, the rates.
@@ -143,10 +149,14 @@ struct CudaSph::Device
     {
         const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
         const float e[3] = {float(external.x()), float(external.y()), float(external.z())};
-        sph::launchWallPressure(params, current.pointers(), cellStart.data(), cellEnd.data(), cellFluid.data(), n);
+        const int* fluid = byKind.data();
+        const int* walls = byKind.data() + fluidCount;
+        sph::launchWallPressure(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), cellFluid.data(),
+                                walls, n - fluidCount);
         sph::launchPressures(params, current.pointers(), rates(), n);
-        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), n);
-        sph::launchRates(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), e, n, reductions.data());
+        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), fluid, fluidCount);
+        sph::launchRates(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), e, fluid, fluidCount,
+                         reductions.data());
     }
 
     void resetReductions() { VSIM_CUDA_CHECK(cudaMemset(reductions.data(), 0, sizeof(sph::SphReductions))); }
@@ -209,6 +219,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     m_device = std::make_unique<Device>(p.size(), cells);
     Device& d = *m_device;
     d.params = params, d.fluid = fluid, d.settings = settings;
+    d.fluidCount = int(std::count(p.wall.begin(), p.wall.end(), std::uint8_t(0))); // closed: the count stays
     const std::size_t n = p.size();
     std::vector<float4> position(n), velocity(n), state(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -295,7 +306,7 @@ std::size_t CudaSph::deviceBytes() const
     const Device& d = *m_device;
     return d.current.bytes() + d.other.bytes() + d.acceleration.bytes() + d.densityGradient.bytes() + d.derived.bytes() +
            d.densityRate.bytes() + d.wallDistance.bytes() + d.keys.bytes() + d.sortedKeys.bytes() +
-           d.cellStart.bytes() + d.cellEnd.bytes() + d.cellFluid.bytes() + d.order.bytes() + d.sortedOrder.bytes() + d.sortScratch.bytes();
+           d.cellStart.bytes() + d.cellEnd.bytes() + d.cellFluid.bytes() + d.order.bytes() + d.sortedOrder.bytes() + d.byKind.bytes() + d.partitionScratch.bytes() + d.sortScratch.bytes();
 }
 
 } // namespace vsim::cuda

@@ -2,6 +2,9 @@
 
 #include "vsim/cuda_common/CudaCheck.h"
 
+#include <cub/device/device_partition.cuh>
+#include <thrust/iterator/counting_iterator.h>
+
 #include <cmath>
 
 namespace vsim::cuda::sph {
@@ -162,12 +165,18 @@ __global__ void cellRangesKernel(const unsigned* keys, int n, unsigned* cellStar
 }
 
 /// extrapolateWallPressure: a wall particle's density from the fluid's pressure around it (Shepard, W+).
-__global__ void wallPressureKernel(SphParams p, SphArrays a, const unsigned* cellStart, const unsigned* cellEnd,
-                                   const unsigned* cellFluid, int n)
+__global__ void wallPressureKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
+                                   const unsigned* cellEnd, const unsigned* cellFluid, const int* walls, int count)
 {
-    const int i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i >= n || !isWall(a.position[i]))
+    const int t = blockIdx.x * blockDim.x + threadIdx.x;
+    if (t >= count)
         return;
+    const int i = walls[t];
+    // A wall particle's rates are zero; its viscosity rides in G's w for the fluid's rates (SphKernels.cuh).
+    rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
+    rates.densityRate[i] = 0.0f;
+    rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, mixtureViscosity(p, a.state[i].z));
+    rates.wallDistance[i] = INFINITY;
     float weight = 0.0f, pressure = 0.0f;
     forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float r) {
         if (isWall(xj))
@@ -195,16 +204,15 @@ __global__ void pressuresKernel(SphParams p, SphArrays a, SphRatesArrays rates, 
 
 /// fluidNeighbourhood: G_i = (M_i^T)^-1 sum_j V_j (rho_j / rho0_j - rho_i / rho0_i) grad W and the wall distance.
 __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
-                                    const unsigned* cellEnd, int n)
+                                    const unsigned* cellEnd, const int* fluid, int count)
 {
-    const int i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i >= n)
+    const int thread = blockIdx.x * blockDim.x + threadIdx.x;
+    if (thread >= count)
         return;
+    const int i = fluid[thread];
     const float muI = mixtureViscosity(p, a.state[i].z);
     rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, muI);
     rates.wallDistance[i] = INFINITY;
-    if (isWall(a.position[i]))
-        return;
     const float relativeI = rates.derived[i].w;
     float m[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}; // moment, row-major: m[3 r + c] = -sum V rij_r gradW_c
     float sum[3] = {0, 0, 0};
@@ -251,17 +259,14 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
 
 /// computeRates for the fluid particles (walls get no rates; a wall-fluid pair's viscous rate is the fluid one's).
 __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
-                            const unsigned* cellEnd, float ex, float ey, float ez, int n, SphReductions* r)
+                            const unsigned* cellEnd, float ex, float ey, float ez, const int* fluid, int count,
+                            SphReductions* r)
 {
-    const int i = blockIdx.x * blockDim.x + threadIdx.x;
+    const int t = blockIdx.x * blockDim.x + threadIdx.x;
     float acceleration = 0.0f, viscousRate = 0.0f, kinematic = 0.0f;
-    if (i < n)
+    if (t < count) // every thread of the warp goes on to the maxima
     {
-        rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
-        rates.densityRate[i] = 0.0f;
-    }
-    if (i < n && !isWall(a.position[i]))
-    {
+        const int i = fluid[t];
         const float4 vi = a.velocity[i], si = a.state[i], di = rates.derived[i];
         const float rhoI = si.x, inverseRhoI = 1.0f / rhoI, pressureI = di.y / di.z; // p_i / rho_i^2
         const float restI = mixtureDensity(p, si.z), relativeI = di.w;
@@ -378,10 +383,12 @@ void launchCellRanges(const unsigned* sortedKeys, int n, unsigned* cellStart, un
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
-void launchWallPressure(const SphParams& p, const SphArrays& a, const unsigned* cellStart, const unsigned* cellEnd,
-                        const unsigned* cellFluid, int n)
+void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
+                        const unsigned* cellEnd, const unsigned* cellFluid, const int* walls, int count)
 {
-    wallPressureKernel<<<blocks(n), kThreads>>>(p, a, cellStart, cellEnd, cellFluid, n);
+    if (count == 0)
+        return;
+    wallPressureKernel<<<blocks(count), kThreads>>>(p, a, rates, cellStart, cellEnd, cellFluid, walls, count);
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
@@ -392,17 +399,44 @@ void launchPressures(const SphParams& p, const SphArrays& a, const SphRatesArray
 }
 
 void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                         const unsigned* cellEnd, int n)
+                         const unsigned* cellEnd, const int* fluid, int count)
 {
-    neighbourhoodKernel<<<blocks(n), kThreads>>>(p, a, rates, cellStart, cellEnd, n);
+    if (count == 0)
+        return;
+    neighbourhoodKernel<<<blocks(count), kThreads>>>(p, a, rates, cellStart, cellEnd, fluid, count);
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
 void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                 const unsigned* cellEnd, const float external[3], int n, SphReductions* r)
+                 const unsigned* cellEnd, const float external[3], const int* fluid, int count, SphReductions* r)
 {
-    ratesKernel<<<blocks(n), kThreads>>>(p, a, rates, cellStart, cellEnd, external[0], external[1], external[2], n, r);
+    if (count == 0)
+        return;
+    ratesKernel<<<blocks(count), kThreads>>>(p, a, rates, cellStart, cellEnd, external[0], external[1], external[2],
+                                             fluid, count, r);
     VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+namespace {
+struct IsFluidParticle
+{
+    const float4* position;
+    __device__ bool operator()(int i) const { return position[i].w == kFluid; }
+};
+} // namespace
+
+std::size_t partitionScratchBytes(int n)
+{
+    std::size_t bytes = 0;
+    VSIM_CUDA_CHECK(cub::DevicePartition::If(nullptr, bytes, thrust::counting_iterator<int>(0), (int*)nullptr,
+                                             (int*)nullptr, n, IsFluidParticle{nullptr}));
+    return bytes;
+}
+
+void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch, std::size_t scratchBytes)
+{
+    VSIM_CUDA_CHECK(cub::DevicePartition::If(scratch, scratchBytes, thrust::counting_iterator<int>(0), indices, selected,
+                                             n, IsFluidParticle{a.position}));
 }
 
 void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n)

@@ -5,6 +5,7 @@
 // relative to the domain box's low corner; one thread per particle; a neighbour loop scans the cells within the
 // support around the particle's cell (cellStart / cellEnd: the sorted run of each cell, both 0 when it is empty).
 
+#include <cstddef>
 #include <cstdint>
 
 namespace vsim::cuda::sph {
@@ -57,14 +58,19 @@ void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* key
                     SphReductions* r);
 void launchGather(const SphArrays& from, const SphArrays& to, const int* order, int n);
 void launchCellRanges(const unsigned* sortedKeys, int n, unsigned* cellStart, unsigned* cellEnd);
-void launchWallPressure(const SphParams& p, const SphArrays& a, const unsigned* cellStart, const unsigned* cellEnd,
-                        const unsigned* cellFluid, int n);
+/// The fluid particles' indices first, then the walls' (`selected` receives the fluid count): the passes that run
+/// over one kind launch a thread per particle of it, so that no warp idles on the other kind.
+std::size_t partitionScratchBytes(int n);
+void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch, std::size_t scratchBytes);
+/// The walls' pressure (their `count` indices), and their rates zeroed (G's w: their viscosity).
+void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
+                        const unsigned* cellEnd, const unsigned* cellFluid, const int* walls, int count);
 /// Every particle's pressure (state.w) and its derived record.
 void launchPressures(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, int n);
 void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                         const unsigned* cellEnd, int n);
+                         const unsigned* cellEnd, const int* fluid, int count);
 void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                 const unsigned* cellEnd, const float external[3], int n, SphReductions* r);
+                 const unsigned* cellEnd, const float external[3], const int* fluid, int count, SphReductions* r);
 void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n);
 /// The second kick, then the guards: finite values, the density variation, through the wall (wallDistance below
 /// -throughWallM).
