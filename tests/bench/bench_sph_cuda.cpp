@@ -1,14 +1,14 @@
-// The SPH solver's speed on the GPU (issue 18: >= 3.5e8 particle-steps per second for 1-5 million particles on the 3D
-// dam break; DualSPHysics 5.4 measured 3.4-3.6e8 on an H100, single precision): the dam break of bench_sph_cpu
-// (DamBreak.h, SPHERIC 2 without its obstacle) at about `particles` particles, set up by the CPU solver, then
-// `steps` GPU steps after 20 of warm-up; with `cpuSteps` > 0 the CPU solver (all OpenMP threads) steps the same
-// particles that many times beside it, for the same machine's CPU figure.
+// The SPH solver's speed on the GPU (issue 18: >= 3.5e8 particle-steps per second for 1-5 million particles
+// on the 3D dam break; DualSPHysics 5.4 measured 3.4-3.6e8 on an H100, single precision): the dam break of
+// bench_sph_cpu (DamBreak.h, SPHERIC 2 without its obstacle) at about `particles` particles, set up by the
+// CPU solver, then `steps` GPU steps after 20 of warm-up; with `cpuSteps` > 0 the CPU solver (all OpenMP
+// threads) steps the same particles that many times beside it, for the same machine's CPU figure.
 //
 //   bench_sph_cuda [particles=1000000] [steps=200] [cpuSteps=0]
 //
-// Prints one JSON object: counts, spacing, h = 2 spacings, single precision on the GPU (double on the CPU), the device,
-// seconds per step and particle-steps per second (every particle, wall ones included, as DualSPHysics counts them),
-// the simulated time and the largest density variation at the end.
+// Prints one JSON object: counts, spacing, h = 2 spacings, single precision on the GPU (double on the CPU),
+// the device, seconds per step and particle-steps per second (every particle, wall ones included, as
+// DualSPHysics counts them), the simulated time and the largest density variation at the end.
 
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_sph/CudaSph.h"
@@ -42,13 +42,15 @@ try
     const DamBreakCase dam = damBreakCase(wanted);
     SimulationInput input;
     input.data["particles"] = dam.particles;
-    // c0 = 20 sqrt(g H), DualSPHysics' CoefSound of 20 (bench_sph_cpu's 10 let the column's first collapse reach the
-    // 3 % density guard at 1 million particles, t = 0.038 s); the figure per particle-step does not depend on it.
+    // c0 = 20 sqrt(g H), DualSPHysics' CoefSound of 20 (bench_sph_cpu's 10 let the column's first collapse
+    // reach the 3 % density guard at 1 million particles, t = 0.038 s); the figure per particle-step does not
+    // depend on it.
     const ParameterSet parameters = damBreakParameters(dam.spacingMm, kSoundSpeedFactor, 100.0);
     SphSolver solver;
     solver.initialize(input, parameters);
     cuda::CudaSph gpu(solver);
-    const auto run = [&](int count) {
+    const auto run = [&](int count)
+    {
         for (int s = 0; s < count; ++s)
             if (const std::string guard = gpu.step(); !guard.empty())
                 throw Error("a guard stopped the GPU dam break: " + guard);
@@ -56,7 +58,8 @@ try
     run(20);
     const auto start = std::chrono::steady_clock::now();
     run(steps);
-    const double gpuStep = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
+    const double gpuStep =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
     double cpuStep = 0.0;
     if (cpuSteps > 0)
     {
@@ -65,18 +68,23 @@ try
         for (int s = 0; s < cpuSteps; ++s)
             if (solver.step(status, {}).kind == sim::StepOutcome::Kind::Guard)
                 throw Error("a guard stopped the CPU dam break");
-        cpuStep = std::chrono::duration<double>(std::chrono::steady_clock::now() - cpuStart).count() / cpuSteps;
+        cpuStep =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - cpuStart).count() / cpuSteps;
     }
     const double n = double(dam.particles.size());
-    std::printf("{\"case\": \"3D dam break (SPHERIC 2, no obstacle)\", \"device\": \"%s\", \"particles\": %zu, "
-                "\"wall_particles\": %zu, \"spacing_mm\": %.3f, \"smoothing_ratio\": 2, \"sound_speed_m_s\": %.2f, \"gpu_precision\": \"single\", "
-                "\"gpu_steps\": %d, \"gpu_seconds_per_step\": %.6f, \"gpu_particle_steps_per_second\": %.4g, "
-                "\"gpu_simulated_time_s\": %.5g, \"gpu_largest_density_variation\": %.4g, \"gpu_memory_mib\": %.1f, "
-                "\"cpu_precision\": \"double\", \"cpu_threads\": %d, \"cpu_steps\": %d, \"cpu_seconds_per_step\": %.4f, "
-                "\"cpu_particle_steps_per_second\": %.4g}\n",
-                vsim::cuda::deviceSummary().c_str(), dam.particles.size(), dam.wallParticles, dam.spacingMm, kSoundSpeedFactor * std::sqrt(9.81 * kDamBreakWaterHeightM), steps, gpuStep, n / gpuStep,
-                gpu.timeS(), gpu.largestDensityVariation(), double(gpu.deviceBytes()) / 1048576.0, omp_get_max_threads(),
-                cpuSteps, cpuStep, cpuStep > 0.0 ? n / cpuStep : 0.0);
+    std::printf(
+        "{\"case\": \"3D dam break (SPHERIC 2, no obstacle)\", \"device\": \"%s\", \"particles\": %zu, "
+        "\"wall_particles\": %zu, \"spacing_mm\": %.3f, \"smoothing_ratio\": 2, \"sound_speed_m_s\": %.2f, "
+        "\"gpu_precision\": \"single\", "
+        "\"gpu_steps\": %d, \"gpu_seconds_per_step\": %.6f, \"gpu_particle_steps_per_second\": %.4g, "
+        "\"gpu_simulated_time_s\": %.5g, \"gpu_largest_density_variation\": %.4g, \"gpu_memory_mib\": %.1f, "
+        "\"cpu_precision\": \"double\", \"cpu_threads\": %d, \"cpu_steps\": %d, \"cpu_seconds_per_step\": "
+        "%.4f, "
+        "\"cpu_particle_steps_per_second\": %.4g}\n",
+        vsim::cuda::deviceSummary().c_str(), dam.particles.size(), dam.wallParticles, dam.spacingMm,
+        kSoundSpeedFactor * std::sqrt(9.81 * kDamBreakWaterHeightM), steps, gpuStep, n / gpuStep, gpu.timeS(),
+        gpu.largestDensityVariation(), double(gpu.deviceBytes()) / 1048576.0, omp_get_max_threads(), cpuSteps,
+        cpuStep, cpuStep > 0.0 ? n / cpuStep : 0.0);
     return 0;
 }
 catch (const std::exception& error)

@@ -1,8 +1,8 @@
-// The CUDA SPH step against the CPU one (same algorithm; issue 18's parity: fields within 1e-4 relative after 100
-// steps): the 3D dam break (DamBreak.h) at 40 mm spacing, 100 steps on both, every particle compared by its number.
-// Position and velocity differences are relative to the largest displacement and the largest speed, the density's to
-// the rest density, the time's to the CPU's. The GPU runs in single precision, the CPU in double. Skips without a
-// device.
+// The CUDA SPH step against the CPU one (same algorithm; issue 18's parity: fields within 1e-4 relative after
+// 100 steps): the 3D dam break (DamBreak.h) at 40 mm spacing, 100 steps on both, every particle compared by
+// its number. Position and velocity differences are relative to the largest displacement and the largest
+// speed, the density's to the rest density, the time's to the CPU's. The GPU runs in single precision, the
+// CPU in double. Skips without a device.
 
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_sph/CudaSph.h"
@@ -82,15 +82,20 @@ private slots:
                 if (a.wall[i] && d > 0.1)
                     ++differing;
             }
-            position = dx / displacement, velocity = dv / speed, density = std::max(fluidRho, wallRho) / 1000.0;
-            qInfo("dam break at 40 mm, %zu particles, step %d, t = %.5f s (GPU %.5f s): largest displacement %.4g mm, "
-                  "speed %.4g m/s; GPU (single) - CPU (double): position %.3g, velocity %.3g, density %.3g in the fluid, "
-                  "%.3g in the walls (relative; worst particle %zu, wall %d, at %.1f %.1f %.1f mm: %.3f vs %.3f kg/m3); "
+            position = dx / displacement, velocity = dv / speed,
+            density = std::max(fluidRho, wallRho) / 1000.0;
+            qInfo("dam break at 40 mm, %zu particles, step %d, t = %.5f s (GPU %.5f s): largest displacement "
+                  "%.4g mm, "
+                  "speed %.4g m/s; GPU (single) - CPU (double): position %.3g, velocity %.3g, density %.3g "
+                  "in the fluid, "
+                  "%.3g in the walls (relative; worst particle %zu, wall %d, at %.1f %.1f %.1f mm: %.3f vs "
+                  "%.3f kg/m3); "
                   "largest density variation CPU %.4g, GPU %.4g; %zu walls differ by more than 0.1 kg/m3",
                   a.size(), s, cpu.position(), gpu.timeS(), 1e3 * displacement, speed, position, velocity,
                   fluidRho / 1000.0, wallRho / 1000.0, worst, int(a.wall[worst]), 1e3 * a.position[worst].x(),
-                  1e3 * a.position[worst].y(), 1e3 * a.position[worst].z(), a.density[worst], b.density[worst],
-                  cpu.metrics().at("largest_density_variation"), gpu.largestDensityVariation(), differing);
+                  1e3 * a.position[worst].y(), 1e3 * a.position[worst].z(), a.density[worst],
+                  b.density[worst], cpu.metrics().at("largest_density_variation"),
+                  gpu.largestDensityVariation(), differing);
         }
         const double time = std::abs(gpu.timeS() - cpu.position()) / cpu.position();
         QVERIFY(position <= 1e-4 && velocity <= 1e-4 && density <= 1e-4 && time <= 1e-4);

@@ -33,7 +33,10 @@ public:
         swap(other);
         return *this;
     }
-    void swap(DeviceArray& other) noexcept { std::swap(m_data, other.m_data), std::swap(m_count, other.m_count); }
+    void swap(DeviceArray& other) noexcept
+    {
+        std::swap(m_data, other.m_data), std::swap(m_count, other.m_count);
+    }
     T* data() const { return m_data; }
     std::size_t bytes() const { return m_count * sizeof(T); }
     void upload(const std::vector<T>& values)
@@ -111,37 +114,41 @@ struct CudaSph::Device
     long steps = 0;
 
     Device(std::size_t count, std::size_t cellCount)
-        : n(int(count)), current(count), other(count), acceleration(count), densityGradient(count), derived(count), densityRate(count),
-          wallDistance(count), keys(count), sortedKeys(count), cellStart(cellCount),
-          cellEnd(cellCount), cellFluid(cellCount), order(count), byKind(count), fluidSelected(1), sortedOrder(count), keyBits(bitsFor(cellCount)), cells(cellCount),
-          reductions(1)
+        : n(int(count)), current(count), other(count), acceleration(count), densityGradient(count),
+          derived(count), densityRate(count), wallDistance(count), keys(count), sortedKeys(count),
+          cellStart(cellCount), cellEnd(cellCount), cellFluid(cellCount), order(count), sortedOrder(count),
+          byKind(count), fluidSelected(1), keyBits(bitsFor(cellCount)), cells(cellCount), reductions(1)
     {
-        VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data(), sortedKeys.data(),
-                                                        order.data(), sortedOrder.data(), n, 0, int(keyBits)));
+        VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data(),
+                                                        sortedKeys.data(), order.data(), sortedOrder.data(),
+                                                        n, 0, int(keyBits)));
         sortScratch = DeviceArray<std::uint8_t>(sortScratchBytes);
         partitionScratch = DeviceArray<std::uint8_t>(sph::partitionScratchBytes(n));
     }
 
     sph::SphRatesArrays rates() const
     {
-        return {acceleration.data(), densityGradient.data(), derived.data(), densityRate.data(), wallDistance.data()};
+        return {acceleration.data(), densityGradient.data(), derived.data(), densityRate.data(),
+                wallDistance.data()};
     }
 
-    /// Cell keys, the radix sort, the gather into the sorted order and each cell's run.
+    /// Cell keys, the radix sort, the gather into the sorted order, each cell's run, and the indices by kind
+    /// (the fluid's count is fixed in a closed domain: fluidSelected only receives it again).
     void sort()
     {
         VSIM_CUDA_CHECK(cudaMemset(cellFluid.data(), 0, cellFluid.bytes()));
-        sph::launchCellKeys(params, current.pointers(), n, keys.data(), order.data(), cellFluid.data(), reductions.data());
+        sph::launchCellKeys(params, current.pointers(), n, keys.data(), order.data(), cellFluid.data(),
+                            reductions.data());
         VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sortScratch.data(), sortScratchBytes, keys.data(),
-                                                        sortedKeys.data(), order.data(), sortedOrder.data(), n, 0,
-                                                        int(keyBits)));
+                                                        sortedKeys.data(), order.data(), sortedOrder.data(),
+                                                        n, 0, int(keyBits)));
         sph::launchGather(current.pointers(), other.pointers(), sortedOrder.data(), n);
         std::swap(current, other);
         VSIM_CUDA_CHECK(cudaMemset(cellStart.data(), 0, cellStart.bytes()));
         VSIM_CUDA_CHECK(cudaMemset(cellEnd.data(), 0, cellEnd.bytes()));
         sph::launchCellRanges(sortedKeys.data(), n, cellStart.data(), cellEnd.data());
-        sph::launchPartition(current.pointers(), n, byKind.data(), fluidSelected.data(), partitionScratch.data(),
-                             partitionScratch.bytes());
+        sph::launchPartition(current.pointers(), n, byKind.data(), fluidSelected.data(),
+                             partitionScratch.data(), partitionScratch.bytes());
     }
 
     /// SphSolver::updateRates: the walls' pressure, every pressure, G and the wall distances, the rates.
@@ -151,12 +158,13 @@ struct CudaSph::Device
         const float e[3] = {float(external.x()), float(external.y()), float(external.z())};
         const int* fluid = byKind.data();
         const int* walls = byKind.data() + fluidCount;
-        sph::launchWallPressure(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), cellFluid.data(),
-                                walls, n - fluidCount);
+        sph::launchWallPressure(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(),
+                                cellFluid.data(), walls, n - fluidCount);
         sph::launchPressures(params, current.pointers(), rates(), n);
-        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), fluid, fluidCount);
-        sph::launchRates(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), e, fluid, fluidCount,
-                         reductions.data());
+        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), fluid,
+                                 fluidCount);
+        sph::launchRates(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), e, fluid,
+                         fluidCount, reductions.data());
     }
 
     void resetReductions() { VSIM_CUDA_CHECK(cudaMemset(reductions.data(), 0, sizeof(sph::SphReductions))); }
@@ -186,8 +194,9 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
         throw Error("no CUDA device: run the SPH solver on the CPU (--backend cpu)");
     const sim::sph::SphStepSettings settings = solver.stepSettings();
     if (settings.openBoundaries || settings.absorption || (settings.periodicLengthM.array() > 0.0).any())
-        throw Error("the CUDA SPH backend runs closed domains only (no inlets or outlets, periodic axes or tracer "
-                    "absorption yet): run this case on the CPU (--backend cpu)");
+        throw Error(
+            "the CUDA SPH backend runs closed domains only (no inlets or outlets, periodic axes or tracer "
+            "absorption yet): run this case on the CPU (--backend cpu)");
     const sim::sph::ParticleState& p = solver.particles();
     const sim::sph::FluidModel& fluid = solver.fluid();
     const double h = solver.kernel().smoothingLength();
@@ -219,7 +228,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     m_device = std::make_unique<Device>(p.size(), cells);
     Device& d = *m_device;
     d.params = params, d.fluid = fluid, d.settings = settings;
-    d.fluidCount = int(std::count(p.wall.begin(), p.wall.end(), std::uint8_t(0))); // closed: the count stays
+    d.fluidCount = int(std::count(p.wall.begin(), p.wall.end(), std::uint8_t(0)));
     const std::size_t n = p.size();
     std::vector<float4> position(n), velocity(n), state(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -228,7 +237,8 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
         // w: the wall depth, -2 at a wall of unknown depth, -1 in the fluid (SphKernels.cuh).
         const float kind = !p.wall[i] ? -1.0f : p.wallDepth[i] >= 0.0 ? float(p.wallDepth[i]) : -2.0f;
         position[i] = make_float4(float(x.x()), float(x.y()), float(x.z()), kind);
-        velocity[i] = make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()), 0.0f);
+        velocity[i] =
+            make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()), 0.0f);
         state[i] = make_float4(float(p.density[i]), float(p.mass[i]), float(p.voidFraction[i]), 0.0f);
     }
     d.current.position.upload(position), d.current.velocity.upload(velocity), d.current.state.upload(state);
@@ -250,8 +260,8 @@ std::string CudaSph::step()
     sph::launchKickDrift(d.current.pointers(), d.rates(), float(dt), d.n);
     d.sort();
     d.updateRates(d.time + dt);
-    sph::launchKick(d.params, d.current.pointers(), d.rates(), float(dt), float(0.5 * d.settings.spacingM), d.n,
-                    d.reductions.data());
+    sph::launchKick(d.params, d.current.pointers(), d.rates(), float(dt), float(0.5 * d.settings.spacingM),
+                    d.n, d.reductions.data());
     d.fetchReductions();
     const std::string at = "at t = " + number(d.time + dt) + " s ";
     d.time += dt, d.lastStep = dt, ++d.steps;
@@ -262,7 +272,8 @@ std::string CudaSph::step()
                " left the domain (through a wall or an open end without an outlet)";
     if (d.last.throughWall)
         return at + "fluid particle " + std::to_string(d.last.throughWallId) +
-               " went more than half a spacing into the wall: the time step or the sound speed is too large for the "
+               " went more than half a spacing into the wall: the time step or the sound speed is too large "
+               "for the "
                "flow, or the wall too thin";
     if (asFloat(d.last.largestDensityVariation) > d.settings.densityGuard)
         return at + "a particle's density is " + number(100.0 * asFloat(d.last.largestDensityVariation)) +
@@ -271,11 +282,26 @@ std::string CudaSph::step()
     return {};
 }
 
-double CudaSph::timeS() const { return m_device->time; }
-double CudaSph::lastStepS() const { return m_device->lastStep; }
-long CudaSph::steps() const { return m_device->steps; }
-std::size_t CudaSph::size() const { return std::size_t(m_device->n); }
-double CudaSph::largestDensityVariation() const { return asFloat(m_device->last.largestDensityVariation); }
+double CudaSph::timeS() const
+{
+    return m_device->time;
+}
+double CudaSph::lastStepS() const
+{
+    return m_device->lastStep;
+}
+long CudaSph::steps() const
+{
+    return m_device->steps;
+}
+std::size_t CudaSph::size() const
+{
+    return std::size_t(m_device->n);
+}
+double CudaSph::largestDensityVariation() const
+{
+    return asFloat(m_device->last.largestDensityVariation);
+}
 
 sim::sph::ParticleState CudaSph::download() const
 {
@@ -294,8 +320,10 @@ sim::sph::ParticleState CudaSph::download() const
     for (std::size_t i = 0; i < byId.size(); ++i)
     {
         const std::size_t s = byId[i];
-        const Eigen::Vector3d x = d.settings.boxLowM + Eigen::Vector3d(position[s].x, position[s].y, position[s].z);
-        out.add(x, state[s].x, state[s].y, position[s].w != -1.0f, std::max(-1.0f, position[s].w), state[s].z);
+        const Eigen::Vector3d x =
+            d.settings.boxLowM + Eigen::Vector3d(position[s].x, position[s].y, position[s].z);
+        out.add(x, state[s].x, state[s].y, position[s].w != -1.0f, std::max(-1.0f, position[s].w),
+                state[s].z);
         out.velocity.back() = Eigen::Vector3d(velocity[s].x, velocity[s].y, velocity[s].z);
     }
     return out;
@@ -304,9 +332,11 @@ sim::sph::ParticleState CudaSph::download() const
 std::size_t CudaSph::deviceBytes() const
 {
     const Device& d = *m_device;
-    return d.current.bytes() + d.other.bytes() + d.acceleration.bytes() + d.densityGradient.bytes() + d.derived.bytes() +
-           d.densityRate.bytes() + d.wallDistance.bytes() + d.keys.bytes() + d.sortedKeys.bytes() +
-           d.cellStart.bytes() + d.cellEnd.bytes() + d.cellFluid.bytes() + d.order.bytes() + d.sortedOrder.bytes() + d.byKind.bytes() + d.partitionScratch.bytes() + d.sortScratch.bytes();
+    return d.current.bytes() + d.other.bytes() + d.acceleration.bytes() + d.densityGradient.bytes() +
+           d.derived.bytes() + d.densityRate.bytes() + d.wallDistance.bytes() + d.keys.bytes() +
+           d.sortedKeys.bytes() + d.cellStart.bytes() + d.cellEnd.bytes() + d.cellFluid.bytes() +
+           d.order.bytes() + d.sortedOrder.bytes() + d.byKind.bytes() + d.partitionScratch.bytes() +
+           d.sortScratch.bytes();
 }
 
 } // namespace vsim::cuda

@@ -11,11 +11,23 @@ namespace vsim::cuda::sph {
 namespace {
 
 constexpr int kThreads = 128; // 2-3 % faster than 256 on the H100 (RESULTS.md, 2026-11-27)
-int blocks(int n) { return (n + kThreads - 1) / kThreads; }
+int blocks(int n)
+{
+    return (n + kThreads - 1) / kThreads;
+}
 
-__device__ float mixtureDensity(const SphParams& p, float s) { return p.restDensity * (1.0f - s) + p.gasDensity * s; }
-__device__ float mixtureViscosity(const SphParams& p, float s) { return p.viscosity * (1.0f - s) + p.gasViscosity * s; }
-__device__ float stiffness(const SphParams& p, float s) { return p.soundSpeed * p.soundSpeed * mixtureDensity(p, s) / p.gamma; }
+__device__ float mixtureDensity(const SphParams& p, float s)
+{
+    return p.restDensity * (1.0f - s) + p.gasDensity * s;
+}
+__device__ float mixtureViscosity(const SphParams& p, float s)
+{
+    return p.viscosity * (1.0f - s) + p.gasViscosity * s;
+}
+__device__ float stiffness(const SphParams& p, float s)
+{
+    return p.soundSpeed * p.soundSpeed * mixtureDensity(p, s) / p.gamma;
+}
 /// Tait (FluidModel::pressure).
 __device__ float pressureOf(const SphParams& p, float rho, float s)
 {
@@ -26,9 +38,10 @@ __device__ float densityAt(const SphParams& p, float pressurePa, float s)
 {
     return mixtureDensity(p, s) * powf(1.0f + pressurePa / stiffness(p, s), 1.0f / p.gamma);
 }
-/// The quartic kernel's W(r) (QuarticKernel::value), in its factored form norm (2 - q)^2 (1/6 + q/6 - 5/32 q^2): the
-/// expanded polynomial cancels to about 1e-6 of W(0) in single precision near q = 2, where W is slightly negative, and
-/// gave wall particles exactly 2h from the fluid a positive weight (and the fluid's pressure) that the CPU's does not.
+/// The quartic kernel's W(r) (QuarticKernel::value), in its factored form norm (2 - q)^2 (1/6 + q/6 - 5/32
+/// q^2): the expanded polynomial cancels to about 1e-6 of W(0) in single precision near q = 2, where W is
+/// slightly negative, and gave wall particles exactly 2h from the fluid a positive weight (and the fluid's
+/// pressure) that the CPU's does not.
 __device__ float kernelValue(const SphParams& p, float r)
 {
     const float q = r * p.invH;
@@ -47,10 +60,13 @@ __device__ float gradientFactor(const SphParams& p, float r)
     return p.gradNorm * 0.625f * (2.0f - q) * (q - 1.8f);
 }
 
-/// The position record's w: the wall depth (m) at a wall particle of known depth, kWallOfUnknownDepth at one without,
-/// kFluid in the fluid; the neighbour loops tell walls from fluid by the record they load anyway.
+/// The position record's w: the wall depth (m) at a wall particle of known depth, kWallOfUnknownDepth at one
+/// without, kFluid in the fluid; the neighbour loops tell walls from fluid by the record they load anyway.
 constexpr float kFluid = -1.0f, kWallOfUnknownDepth = -2.0f;
-__device__ bool isWall(float4 position) { return position.w != kFluid; }
+__device__ bool isWall(float4 position)
+{
+    return position.w != kFluid;
+}
 
 __device__ void cellOf(const SphParams& p, float4 x, int c[3])
 {
@@ -59,9 +75,9 @@ __device__ void cellOf(const SphParams& p, float4 x, int c[3])
         c[a] = min(max(int(floorf(xs[a] / p.cell)), 0), p.dims[a] - 1);
 }
 
-/// f(j, xj, rx, ry, rz, r) for every particle j != i within the support of particle i (xj its position record,
-/// rij = x_i - x_j, m). With `cellFluid` (fluid particles per cell) only the cells that hold fluid are scanned: the
-/// wall particles' pass, whose sums run over the fluid alone (most walls see none).
+/// f(j, xj, rx, ry, rz, r) for every particle j != i within the support of particle i (xj its position
+/// record, rij = x_i - x_j, m). With `cellFluid` (fluid particles per cell) only the cells that hold fluid
+/// are scanned: the wall particles' pass, whose sums run over the fluid alone (most walls see none).
 template <class F>
 __device__ void forEachNeighbour(const SphParams& p, const SphArrays& a, const unsigned* cellStart,
                                  const unsigned* cellEnd, int i, F&& f, const unsigned* cellFluid = nullptr)
@@ -74,8 +90,8 @@ __device__ void forEachNeighbour(const SphParams& p, const SphArrays& a, const u
         const int z = c[2] + dz;
         if (z < 0 || z >= p.dims[2])
             continue;
-        // How far the particle lies from this layer of cells, and then from each row: the run along x is cut to the
-        // support's chord there (the rows in the corners of the 5 x 5 block are skipped or short).
+        // How far the particle lies from this layer of cells, and then from each row: the run along x is cut
+        // to the support's chord there (the rows in the corners of the 5 x 5 block are skipped or short).
         const float gz = fmaxf(0.0f, fmaxf(z * p.cell - xi.z, xi.z - (z + 1) * p.cell));
         for (int dy = -2; dy <= 2; ++dy)
         {
@@ -96,7 +112,8 @@ __device__ void forEachNeighbour(const SphParams& p, const SphArrays& a, const u
             {
                 if (cellFluid && __ldg(&cellFluid[row + unsigned(x)]) == 0u)
                     continue;
-                const unsigned s = __ldg(&cellStart[row + unsigned(x)]), e = __ldg(&cellEnd[row + unsigned(x)]);
+                const unsigned s = __ldg(&cellStart[row + unsigned(x)]),
+                               e = __ldg(&cellEnd[row + unsigned(x)]);
                 if (e > s)
                     begin = min(begin, s), end = max(end, e);
             }
@@ -124,14 +141,15 @@ __device__ void warpMax(unsigned* target, float value)
         atomicMax(target, bits);
 }
 
-__global__ void cellKeysKernel(SphParams p, SphArrays a, int n, unsigned* keys, int* order, unsigned* cellFluid,
-                               SphReductions* r)
+__global__ void cellKeysKernel(SphParams p, SphArrays a, int n, unsigned* keys, int* order,
+                               unsigned* cellFluid, SphReductions* r)
 {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= n)
         return;
     const float4 x = a.position[i];
-    if (!(x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f && x.x <= p.boxHigh[0] && x.y <= p.boxHigh[1] && x.z <= p.boxHigh[2]))
+    if (!(x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f && x.x <= p.boxHigh[0] && x.y <= p.boxHigh[1] &&
+          x.z <= p.boxHigh[2]))
         if (atomicExch(&r->escaped, 1u) == 0u)
             r->escapedId = a.id[i];
     int c[3];
@@ -166,7 +184,8 @@ __global__ void cellRangesKernel(const unsigned* keys, int n, unsigned* cellStar
 
 /// extrapolateWallPressure: a wall particle's density from the fluid's pressure around it (Shepard, W+).
 __global__ void wallPressureKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
-                                   const unsigned* cellEnd, const unsigned* cellFluid, const int* walls, int count)
+                                   const unsigned* cellEnd, const unsigned* cellFluid, const int* walls,
+                                   int count)
 {
     const int t = blockIdx.x * blockDim.x + threadIdx.x;
     if (t >= count)
@@ -178,14 +197,19 @@ __global__ void wallPressureKernel(SphParams p, SphArrays a, SphRatesArrays rate
     rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, mixtureViscosity(p, a.state[i].z));
     rates.wallDistance[i] = INFINITY;
     float weight = 0.0f, pressure = 0.0f;
-    forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float r) {
-        if (isWall(xj))
-            return;
-        const float w = fmaxf(kernelValue(p, r), 0.0f);
-        const float4 sj = a.state[j];
-        weight += w;
-        pressure += w * (pressureOf(p, sj.x, sj.z) + sj.x * (p.gravity[0] * rx + p.gravity[1] * ry + p.gravity[2] * rz));
-    }, cellFluid);
+    forEachNeighbour(
+        p, a, cellStart, cellEnd, i,
+        [&](int j, float4 xj, float rx, float ry, float rz, float r)
+        {
+            if (isWall(xj))
+                return;
+            const float w = fmaxf(kernelValue(p, r), 0.0f);
+            const float4 sj = a.state[j];
+            weight += w;
+            pressure += w * (pressureOf(p, sj.x, sj.z) +
+                             sj.x * (p.gravity[0] * rx + p.gravity[1] * ry + p.gravity[2] * rz));
+        },
+        cellFluid);
     if (weight > 0.0f)
         a.state[i].x = densityAt(p, fmaxf(p.pressureFloor, pressure / weight), a.state[i].z);
 }
@@ -202,7 +226,8 @@ __global__ void pressuresKernel(SphParams p, SphArrays a, SphRatesArrays rates, 
                                    state.x / mixtureDensity(p, state.z));
 }
 
-/// fluidNeighbourhood: G_i = (M_i^T)^-1 sum_j V_j (rho_j / rho0_j - rho_i / rho0_i) grad W and the wall distance.
+/// fluidNeighbourhood: G_i = (M_i^T)^-1 sum_j V_j (rho_j / rho0_j - rho_i / rho0_i) grad W and the wall
+/// distance.
 __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
                                     const unsigned* cellEnd, const int* fluid, int count)
 {
@@ -218,33 +243,36 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
     float sum[3] = {0, 0, 0};
     float wallDistance = INFINITY;
     const bool gradients = p.diffusion > 0.0f;
-    forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float r) {
-        if (isWall(xj))
-        {
-            if (xj.w >= 0.0f)
-                wallDistance = fminf(wallDistance, r - xj.w);
-            return;
-        }
-        if (!gradients)
-            return;
-        const float g = gradientFactor(p, r);
-        const float grad[3] = {g * rx, g * ry, g * rz}, rij[3] = {rx, ry, rz};
-        const float4 dj = __ldg(&rates.derived[j]);
-        const float volume = dj.x;
-        const float difference = volume * (dj.w - relativeI);
-        for (int row = 0; row < 3; ++row)
-        {
-            for (int col = 0; col < 3; ++col)
-                m[3 * row + col] -= volume * rij[row] * grad[col];
-            sum[row] += difference * grad[row];
-        }
-    });
+    forEachNeighbour(p, a, cellStart, cellEnd, i,
+                     [&](int j, float4 xj, float rx, float ry, float rz, float r)
+                     {
+                         if (isWall(xj))
+                         {
+                             if (xj.w >= 0.0f)
+                                 wallDistance = fminf(wallDistance, r - xj.w);
+                             return;
+                         }
+                         if (!gradients)
+                             return;
+                         const float g = gradientFactor(p, r);
+                         const float grad[3] = {g * rx, g * ry, g * rz}, rij[3] = {rx, ry, rz};
+                         const float4 dj = __ldg(&rates.derived[j]);
+                         const float volume = dj.x;
+                         const float difference = volume * (dj.w - relativeI);
+                         for (int row = 0; row < 3; ++row)
+                         {
+                             for (int col = 0; col < 3; ++col)
+                                 m[3 * row + col] -= volume * rij[row] * grad[col];
+                             sum[row] += difference * grad[row];
+                         }
+                     });
     rates.wallDistance[i] = wallDistance;
     if (!gradients)
         return;
     // t = M^T; G = t^-1 sum by the adjugate, where |det| > 1e-3 (SphRates.cpp).
     const float t[9] = {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};
-    const float c0 = t[4] * t[8] - t[5] * t[7], c1 = t[5] * t[6] - t[3] * t[8], c2 = t[3] * t[7] - t[4] * t[6];
+    const float c0 = t[4] * t[8] - t[5] * t[7], c1 = t[5] * t[6] - t[3] * t[8],
+                c2 = t[3] * t[7] - t[4] * t[6];
     const float det = t[0] * c0 + t[1] * c1 + t[2] * c2;
     if (!(fabsf(det) > 1e-3f))
         return;
@@ -257,10 +285,11 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
     rates.densityGradient[i] = make_float4(G[0], G[1], G[2], muI);
 }
 
-/// computeRates for the fluid particles (walls get no rates; a wall-fluid pair's viscous rate is the fluid one's).
+/// computeRates for the fluid particles (walls get no rates; a wall-fluid pair's viscous rate is the fluid
+/// one's).
 __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
-                            const unsigned* cellEnd, float ex, float ey, float ez, const int* fluid, int count,
-                            SphReductions* r)
+                            const unsigned* cellEnd, float ex, float ey, float ez, const int* fluid,
+                            int count, SphReductions* r)
 {
     const int t = blockIdx.x * blockDim.x + threadIdx.x;
     float acceleration = 0.0f, viscousRate = 0.0f, kinematic = 0.0f;
@@ -273,34 +302,42 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         const float4 gi = rates.densityGradient[i];
         const float muI = gi.w, wallDistanceI = rates.wallDistance[i];
         float densityRate = 0.0f, fx = 0.0f, fy = 0.0f, fz = 0.0f;
-        // Per neighbour, from its records: dj = (V_j, m_j p_j / rho_j^2, m_j, rho_j / rho0_j), gj = (G_j, mu_j).
-        forEachNeighbour(p, a, cellStart, cellEnd, i, [&](int j, float4 xj, float rx, float ry, float rz, float rr) {
-            const float4 vj = __ldg(&a.velocity[j]), dj = __ldg(&rates.derived[j]), gj = __ldg(&rates.densityGradient[j]);
-            const bool wallJ = isWall(xj);
-            const float g = gradientFactor(p, rr);
-            const float gx = g * rx, gy = g * ry, gz = g * rz;
-            const float vx = vi.x - vj.x, vy = vi.y - vj.y, vz = vi.z - vj.z;
-            const float r2 = rr * rr;
-            densityRate += rhoI * dj.x * (vx * gx + vy * gy + vz * gz);
-            if (!wallJ && p.diffusion > 0.0f)
-            {
-                const float s = 2.0f * (dj.w - relativeI) / r2;
-                const float px = -s * rx - (gi.x + gj.x), py = -s * ry - (gi.y + gj.y), pz = -s * rz - (gi.z + gj.z);
-                densityRate += p.diffusion * restI * dj.x * (px * gx + py * gy + pz * gz);
-            }
-            const float pressureTerm = dj.z * pressureI + dj.y;
-            fx -= pressureTerm * gx, fy -= pressureTerm * gy, fz -= pressureTerm * gz;
-            float wx = vx, wy = vy, wz = vz;
-            if (wallJ && xj.w >= 0.0f)
-            {
-                const float beta = fminf(p.betaMax, 1.0f + xj.w / fmaxf(wallDistanceI, 1e-3f * p.h));
-                wx = beta * vi.x, wy = beta * vi.y, wz = beta * vi.z;
-            }
-            const float damped = 1.0f / (r2 + p.eta2);
-            const float viscous = dj.x * (muI + gj.w) * (rx * gx + ry * gy + rz * gz) * inverseRhoI * damped;
-            fx += viscous * wx, fy += viscous * wy, fz += viscous * wz;
-            viscousRate = fmaxf(viscousRate, fabsf(p.h * (vx * rx + vy * ry + vz * rz) * damped));
-        });
+        // Per neighbour, from its records: dj = (V_j, m_j p_j / rho_j^2, m_j, rho_j / rho0_j), gj = (G_j,
+        // mu_j).
+        forEachNeighbour(p, a, cellStart, cellEnd, i,
+                         [&](int j, float4 xj, float rx, float ry, float rz, float rr)
+                         {
+                             const float4 vj = __ldg(&a.velocity[j]), dj = __ldg(&rates.derived[j]),
+                                          gj = __ldg(&rates.densityGradient[j]);
+                             const bool wallJ = isWall(xj);
+                             const float g = gradientFactor(p, rr);
+                             const float gx = g * rx, gy = g * ry, gz = g * rz;
+                             const float vx = vi.x - vj.x, vy = vi.y - vj.y, vz = vi.z - vj.z;
+                             const float r2 = rr * rr;
+                             densityRate += rhoI * dj.x * (vx * gx + vy * gy + vz * gz);
+                             if (!wallJ && p.diffusion > 0.0f)
+                             {
+                                 const float s = 2.0f * (dj.w - relativeI) / r2;
+                                 const float px = -s * rx - (gi.x + gj.x), py = -s * ry - (gi.y + gj.y),
+                                             pz = -s * rz - (gi.z + gj.z);
+                                 densityRate += p.diffusion * restI * dj.x * (px * gx + py * gy + pz * gz);
+                             }
+                             const float pressureTerm = dj.z * pressureI + dj.y;
+                             fx -= pressureTerm * gx, fy -= pressureTerm * gy, fz -= pressureTerm * gz;
+                             float wx = vx, wy = vy, wz = vz;
+                             if (wallJ && xj.w >= 0.0f)
+                             {
+                                 const float beta =
+                                     fminf(p.betaMax, 1.0f + xj.w / fmaxf(wallDistanceI, 1e-3f * p.h));
+                                 wx = beta * vi.x, wy = beta * vi.y, wz = beta * vi.z;
+                             }
+                             const float damped = 1.0f / (r2 + p.eta2);
+                             const float viscous =
+                                 dj.x * (muI + gj.w) * (rx * gx + ry * gy + rz * gz) * inverseRhoI * damped;
+                             fx += viscous * wx, fy += viscous * wy, fz += viscous * wz;
+                             viscousRate =
+                                 fmaxf(viscousRate, fabsf(p.h * (vx * rx + vy * ry + vz * rz) * damped));
+                         });
         rates.densityRate[i] = densityRate;
         fx += ex, fy += ey, fz += ez;
         rates.acceleration[i] = make_float4(fx, fy, fz, 0.0f);
@@ -329,8 +366,8 @@ __global__ void kickDriftKernel(SphArrays a, SphRatesArrays rates, float dt, int
     a.position[i] = x;
 }
 
-__global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float dt, float throughWallM, int n,
-                           SphReductions* r)
+__global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float dt, float throughWallM,
+                           int n, SphReductions* r)
 {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     float variation = 0.0f;
@@ -364,8 +401,8 @@ __global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float
 
 } // namespace
 
-void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* keys, int* order, unsigned* cellFluid,
-                    SphReductions* r)
+void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* keys, int* order,
+                    unsigned* cellFluid, SphReductions* r)
 {
     cellKeysKernel<<<blocks(n), kThreads>>>(p, a, n, keys, order, cellFluid, r);
     VSIM_CUDA_CHECK(cudaGetLastError());
@@ -383,8 +420,9 @@ void launchCellRanges(const unsigned* sortedKeys, int n, unsigned* cellStart, un
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
-void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                        const unsigned* cellEnd, const unsigned* cellFluid, const int* walls, int count)
+void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
+                        const unsigned* cellStart, const unsigned* cellEnd, const unsigned* cellFluid,
+                        const int* walls, int count)
 {
     if (count == 0)
         return;
@@ -398,8 +436,8 @@ void launchPressures(const SphParams& p, const SphArrays& a, const SphRatesArray
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
-void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                         const unsigned* cellEnd, const int* fluid, int count)
+void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
+                         const unsigned* cellStart, const unsigned* cellEnd, const int* fluid, int count)
 {
     if (count == 0)
         return;
@@ -407,13 +445,14 @@ void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesA
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
-void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                 const unsigned* cellEnd, const float external[3], const int* fluid, int count, SphReductions* r)
+void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
+                 const unsigned* cellStart, const unsigned* cellEnd, const float external[3],
+                 const int* fluid, int count, SphReductions* r)
 {
     if (count == 0)
         return;
-    ratesKernel<<<blocks(count), kThreads>>>(p, a, rates, cellStart, cellEnd, external[0], external[1], external[2],
-                                             fluid, count, r);
+    ratesKernel<<<blocks(count), kThreads>>>(p, a, rates, cellStart, cellEnd, external[0], external[1],
+                                             external[2], fluid, count, r);
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
@@ -433,10 +472,11 @@ std::size_t partitionScratchBytes(int n)
     return bytes;
 }
 
-void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch, std::size_t scratchBytes)
+void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch,
+                     std::size_t scratchBytes)
 {
-    VSIM_CUDA_CHECK(cub::DevicePartition::If(scratch, scratchBytes, thrust::counting_iterator<int>(0), indices, selected,
-                                             n, IsFluidParticle{a.position}));
+    VSIM_CUDA_CHECK(cub::DevicePartition::If(scratch, scratchBytes, thrust::counting_iterator<int>(0),
+                                             indices, selected, n, IsFluidParticle{a.position}));
 }
 
 void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n)
@@ -445,8 +485,8 @@ void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, 
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
-void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt, float throughWallM, int n,
-                SphReductions* r)
+void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt,
+                float throughWallM, int n, SphReductions* r)
 {
     kickKernel<<<blocks(n), kThreads>>>(p, a, rates, dt, throughWallM, n, r);
     VSIM_CUDA_CHECK(cudaGetLastError());

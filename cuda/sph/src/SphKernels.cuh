@@ -1,9 +1,10 @@
 #pragma once
 
-// The kernels of the GPU SPH step (CudaSph.h), each the CPU loop of the same name in modules/sim/sph (SphRates.cpp,
-// SphSolver.cpp), in single precision. Layout: packed arrays (SphArrays) in the cell-sorted order, positions (m)
-// relative to the domain box's low corner; one thread per particle; a neighbour loop scans the cells within the
-// support around the particle's cell (cellStart / cellEnd: the sorted run of each cell, both 0 when it is empty).
+// The kernels of the GPU SPH step (CudaSph.h), each the CPU loop of the same name in modules/sim/sph
+// (SphRates.cpp, SphSolver.cpp), in single precision. Layout: packed arrays (SphArrays) in the cell-sorted
+// order, positions (m) relative to the domain box's low corner; one thread per particle; a neighbour loop
+// scans the cells within the support around the particle's cell (cellStart / cellEnd: the sorted run of each
+// cell, both 0 when it is empty).
 
 #include <cstddef>
 #include <cstdint>
@@ -14,21 +15,22 @@ namespace vsim::cuda::sph {
 struct SphParams
 {
     float h, invH, wNorm, gradNorm; ///< h (m), 1 / h; 315 / (208 pi h^3) (1/m^3); wNorm / h^2 (1/m^5)
-    float support2, eta2;      ///< (2h)^2, 0.001 h^2 (m^2)
-    float diffusion;           ///< delta h c0 (m^2/s); 0: no delta-SPH term
+    float support2, eta2;           ///< (2h)^2, 0.001 h^2 (m^2)
+    float diffusion;                ///< delta h c0 (m^2/s); 0: no delta-SPH term
     float soundSpeed, gamma;
     float restDensity, gasDensity, viscosity, gasViscosity; ///< rho_p, rho_g (kg/m^3), mu_p, mu_g (Pa s)
-    float gravity[3];          ///< m/s^2: what the walls' pressure extrapolation uses
-    float pressureFloor;       ///< Pa: 0 with a free surface, -inf in vessels
-    float cell;                ///< the cell's edge (m, = h)
-    int dims[3];               ///< cells per axis
-    float boxHigh[3];          ///< m from the low corner: beyond it (or below 0) a particle has escaped
-    float betaMax;             ///< the no-slip extrapolation's cap (SphRates.cpp)
+    float gravity[3];    ///< m/s^2: what the walls' pressure extrapolation uses
+    float pressureFloor; ///< Pa: 0 with a free surface, -inf in vessels
+    float cell;          ///< the cell's edge (m, = h)
+    int dims[3];         ///< cells per axis
+    float boxHigh[3];    ///< m from the low corner: beyond it (or below 0) a particle has escaped
+    float betaMax;       ///< the no-slip extrapolation's cap (SphRates.cpp)
 };
 
-/// Device pointers of the particle arrays in sorted order, packed so that a neighbour costs few 16-byte loads:
-/// position (m) with w = the wall depth (m, >= 0) at a wall particle of known depth, -2 at one without, -1 in the
-/// fluid; velocity (m/s, w unused); state = (density kg/m^3, mass kg, void fraction, pressure Pa).
+/// Device pointers of the particle arrays in sorted order, packed so that a neighbour costs few 16-byte
+/// loads: position (m) with w = the wall depth (m, >= 0) at a wall particle of known depth, -2 at one
+/// without, -1 in the fluid; velocity (m/s, w unused); state = (density kg/m^3, mass kg, void fraction,
+/// pressure Pa).
 struct SphArrays
 {
     float4 *position, *velocity, *state;
@@ -38,13 +40,15 @@ struct SphArrays
 /// Device pointers of the rates and the per-step work arrays.
 struct SphRatesArrays
 {
-    float4 *acceleration;
-    float4* densityGradient; ///< (G_i kg/m^4, mu_i Pa s): the viscosity rides along, the rates read both per neighbour
-    float4* derived;         ///< (V_i = m_i / rho_i, m_i p_i / rho_i^2, m_i, rho_i / rho0_i), made with the pressures
+    float4* acceleration;
+    float4* densityGradient; ///< (G_i kg/m^4, mu_i Pa s): the viscosity rides along, the rates read both per
+                             ///< neighbour
+    float4* derived; ///< (V_i = m_i / rho_i, m_i p_i / rho_i^2, m_i, rho_i / rho0_i), made with the pressures
     float *densityRate, *wallDistance;
 };
 
-/// Maxima over a step (non-negative floats as their bit patterns, so that atomicMax on unsigned orders them), flags.
+/// Maxima over a step (non-negative floats as their bit patterns, so that atomicMax on unsigned orders them),
+/// flags.
 struct SphReductions
 {
     unsigned largestAcceleration, largestViscousRate, largestKinematicViscosity, largestDensityVariation;
@@ -52,29 +56,32 @@ struct SphReductions
     int escapedId, notFiniteId, throughWallId;
 };
 
-/// Each particle's cell key (and the identity order for the sort), the fluid particles counted per cell (cellFluid,
-/// zeroed by the caller), escapes flagged.
-void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* keys, int* order, unsigned* cellFluid,
-                    SphReductions* r);
+/// Each particle's cell key (and the identity order for the sort), the fluid particles counted per cell
+/// (cellFluid, zeroed by the caller), escapes flagged.
+void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* keys, int* order,
+                    unsigned* cellFluid, SphReductions* r);
 void launchGather(const SphArrays& from, const SphArrays& to, const int* order, int n);
 void launchCellRanges(const unsigned* sortedKeys, int n, unsigned* cellStart, unsigned* cellEnd);
-/// The fluid particles' indices first, then the walls' (`selected` receives the fluid count): the passes that run
-/// over one kind launch a thread per particle of it, so that no warp idles on the other kind.
+/// The fluid particles' indices first, then the walls' (`selected` receives the fluid count): the passes that
+/// run over one kind launch a thread per particle of it, so that no warp idles on the other kind.
 std::size_t partitionScratchBytes(int n);
-void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch, std::size_t scratchBytes);
+void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch,
+                     std::size_t scratchBytes);
 /// The walls' pressure (their `count` indices), and their rates zeroed (G's w: their viscosity).
-void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                        const unsigned* cellEnd, const unsigned* cellFluid, const int* walls, int count);
+void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
+                        const unsigned* cellStart, const unsigned* cellEnd, const unsigned* cellFluid,
+                        const int* walls, int count);
 /// Every particle's pressure (state.w) and its derived record.
 void launchPressures(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, int n);
-void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                         const unsigned* cellEnd, const int* fluid, int count);
-void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
-                 const unsigned* cellEnd, const float external[3], const int* fluid, int count, SphReductions* r);
+void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
+                         const unsigned* cellStart, const unsigned* cellEnd, const int* fluid, int count);
+void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
+                 const unsigned* cellStart, const unsigned* cellEnd, const float external[3],
+                 const int* fluid, int count, SphReductions* r);
 void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n);
-/// The second kick, then the guards: finite values, the density variation, through the wall (wallDistance below
-/// -throughWallM).
-void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt, float throughWallM, int n,
-                SphReductions* r);
+/// The second kick, then the guards: finite values, the density variation, through the wall (wallDistance
+/// below -throughWallM).
+void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt,
+                float throughWallM, int n, SphReductions* r);
 
 } // namespace vsim::cuda::sph
