@@ -123,7 +123,7 @@ public:
     /// with the Flow > Blood Flow Parameters; the run is added (undoable) and played, its stenosis figures in the
     /// status bar. False without centerlines.
     bool simulateBloodFlow();
-    /// Colours the newest blood-flow run's wall loads (Flow > Wall Loads: field "tawss_pa", "osi" or
+    /// Colours the played (else the newest) blood-flow run's wall loads (Flow > Wall Loads: field "tawss_pa", "osi" or
     /// "wall_pressure_pa") on the lumen surface in 3D, its legend on the left naming the field, the unit, the time
     /// window and the run's status; grey where the run has no value (past an open end). While the Run Player plays
     /// particles the surface stays, translucent, around them. False without a wall-loads surface or for another field.

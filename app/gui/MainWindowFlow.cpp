@@ -15,6 +15,7 @@
 #include <QMenuBar>
 #include <QStatusBar>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -84,7 +85,12 @@ bool MainWindow::showWallLoads(const std::string& field)
     if (!m_document.hasStudy() || !names.count(field))
         return false;
     const study::Study& study = m_document.study();
-    const std::string id = study.newestArtifact(study::ArtifactKind::Surface, "simulate sph");
+    // The played run's wall loads, else the newest run's.
+    std::string id = study.newestArtifact(study::ArtifactKind::Surface, "simulate sph");
+    for (const study::Artifact& a : study.artifacts())
+        if (a.kind == study::ArtifactKind::Surface && a.provenance.command == "simulate sph" && !m_playedRunId.empty() &&
+            std::count(a.provenance.inputs.begin(), a.provenance.inputs.end(), m_playedRunId))
+            id = a.id;
     if (id.empty())
     {
         showError(tr("Wall loads"), tr("No wall loads yet: run Flow > Blood Flow (SPH) long enough to reach its "
@@ -102,7 +108,7 @@ bool MainWindow::showWallLoads(const std::string& field)
     shown.high = std::max(high, shown.low + 1e-6);
     // The run it was averaged in: its status goes into the title, as on every figure of it.
     const study::Artifact& surface = study.artifact(id);
-    if (!surface.provenance.inputs.empty())
+    if (!surface.provenance.inputs.empty() && study.hasArtifact(surface.provenance.inputs.front()))
     {
         const RunStatus status = app::runStatusOf(study.artifact(surface.provenance.inputs.front()));
         if (!status.converged())

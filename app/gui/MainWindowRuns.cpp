@@ -154,6 +154,8 @@ bool MainWindow::openRunPlayer(const std::string& id)
                                        closeRunPlayer();
                                });
                            }
+                           if (id != m_playedRunId) // another run's wall loads do not belong around it
+                               m_wallLoads.reset();
                            m_playedRun = run;
                            m_playedRunId = id;
                            std::vector<double> positions;
