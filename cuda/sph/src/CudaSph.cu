@@ -234,8 +234,9 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     for (std::size_t i = 0; i < n; ++i)
     {
         const Eigen::Vector3d x = p.position[i] - settings.boxLowM;
-        // w: the wall depth, -2 at a wall of unknown depth, -1 in the fluid (SphKernels.cuh).
-        const float kind = !p.wall[i] ? -1.0f : p.wallDepth[i] >= 0.0 ? float(p.wallDepth[i]) : -2.0f;
+        const float kind = !p.wall[i]              ? sph::kFluid
+                           : p.wallDepth[i] >= 0.0 ? float(p.wallDepth[i])
+                                                   : sph::kWallOfUnknownDepth;
         position[i] = make_float4(float(x.x()), float(x.y()), float(x.z()), kind);
         velocity[i] =
             make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()), 0.0f);
@@ -322,7 +323,8 @@ sim::sph::ParticleState CudaSph::download() const
         const std::size_t s = byId[i];
         const Eigen::Vector3d x =
             d.settings.boxLowM + Eigen::Vector3d(position[s].x, position[s].y, position[s].z);
-        out.add(x, state[s].x, state[s].y, position[s].w != -1.0f, std::max(-1.0f, position[s].w),
+        // The CPU's wall depth is -1 where unknown (and unused in the fluid).
+        out.add(x, state[s].x, state[s].y, position[s].w != sph::kFluid, std::max(-1.0f, position[s].w),
                 state[s].z);
         out.velocity.back() = Eigen::Vector3d(velocity[s].x, velocity[s].y, velocity[s].z);
     }

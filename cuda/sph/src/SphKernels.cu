@@ -39,9 +39,9 @@ __device__ float densityAt(const SphParams& p, float pressurePa, float s)
     return mixtureDensity(p, s) * powf(1.0f + pressurePa / stiffness(p, s), 1.0f / p.gamma);
 }
 /// The quartic kernel's W(r) (QuarticKernel::value), in its factored form norm (2 - q)^2 (1/6 + q/6 - 5/32
-/// q^2): the expanded polynomial cancels to about 1e-6 of W(0) in single precision near q = 2, where W is
-/// slightly negative, and gave wall particles exactly 2h from the fluid a positive weight (and the fluid's
-/// pressure) that the CPU's does not.
+/// q^2), as on the CPU: near q = 2, where W is slightly negative, the expanded polynomial cancels to a
+/// rounding error of either sign, and a wall particle exactly 2h from the fluid took the fluid's pressure or
+/// kept its own by that sign, differently on the two sides.
 __device__ float kernelValue(const SphParams& p, float r)
 {
     const float q = r * p.invH;
@@ -60,9 +60,7 @@ __device__ float gradientFactor(const SphParams& p, float r)
     return p.gradNorm * 0.625f * (2.0f - q) * (q - 1.8f);
 }
 
-/// The position record's w: the wall depth (m) at a wall particle of known depth, kWallOfUnknownDepth at one
-/// without, kFluid in the fluid; the neighbour loops tell walls from fluid by the record they load anyway.
-constexpr float kFluid = -1.0f, kWallOfUnknownDepth = -2.0f;
+/// The neighbour loops tell walls from fluid by the position record they load anyway (SphKernels.cuh).
 __device__ bool isWall(float4 position)
 {
     return position.w != kFluid;

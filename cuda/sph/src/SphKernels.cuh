@@ -31,6 +31,9 @@ struct SphParams
 /// loads: position (m) with w = the wall depth (m, >= 0) at a wall particle of known depth, -2 at one
 /// without, -1 in the fluid; velocity (m/s, w unused); state = (density kg/m^3, mass kg, void fraction,
 /// pressure Pa).
+/// The position record's w besides a wall depth (>= 0).
+constexpr float kFluid = -1.0f, kWallOfUnknownDepth = -2.0f;
+
 struct SphArrays
 {
     float4 *position, *velocity, *state;
