@@ -237,7 +237,8 @@ std::vector<SectionAlongCenterline> sectionsAlongCenterline(const study::Artifac
     if (json.is_discarded() || !json.contains("rows"))
         return sections;
     for (const auto& row : json.at("rows"))
-        if (row.is_array() && row.size() == 4)
+        if (row.is_array() && row.size() == 4 &&
+            std::all_of(row.begin(), row.end(), [](const nlohmann::json& v) { return v.is_number(); }))
             sections.push_back({row[0].get<double>(), row[1].get<double>(), row[2].get<double>(), row[3].get<double>()});
     return sections;
 }

@@ -110,8 +110,7 @@ struct CudaSph::Device
     std::size_t cells = 0;
     DeviceArray<sph::SphReductions> reductions;
     sph::SphReductions last{};
-    double time = 0.0, lastStep = 0.0;
-    long steps = 0;
+    double time = 0.0;
 
     Device(std::size_t count, std::size_t cellCount)
         : n(int(count)), current(count), other(count), acceleration(count), densityGradient(count),
@@ -265,7 +264,7 @@ std::string CudaSph::step()
                     d.n, d.reductions.data());
     d.fetchReductions();
     const std::string at = "at t = " + number(d.time + dt) + " s ";
-    d.time += dt, d.lastStep = dt, ++d.steps;
+    d.time += dt;
     if (d.last.notFinite)
         return at + "particle " + std::to_string(d.last.notFiniteId) + " has a value that is not finite";
     if (d.last.escaped)
@@ -286,18 +285,6 @@ std::string CudaSph::step()
 double CudaSph::timeS() const
 {
     return m_device->time;
-}
-double CudaSph::lastStepS() const
-{
-    return m_device->lastStep;
-}
-long CudaSph::steps() const
-{
-    return m_device->steps;
-}
-std::size_t CudaSph::size() const
-{
-    return std::size_t(m_device->n);
 }
 double CudaSph::largestDensityVariation() const
 {

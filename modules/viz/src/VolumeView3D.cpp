@@ -43,6 +43,27 @@ namespace vsim::viz {
 
 using detail::fieldMapper;
 
+namespace {
+
+/// Shows `legend` (made and added to `renderer` at `x` across the view the first time) for `table`, titled `title`.
+void showLegendIn(vtkRenderer* renderer, vtkSmartPointer<vtkScalarBarActor>& legend, double x,
+                  vtkScalarsToColors* table, const QString& title)
+{
+    if (!legend)
+    {
+        legend = detail::newLegend();
+        legend->SetPosition(x, 0.1);
+        renderer->AddViewProp(legend);
+    }
+    legend->SetLookupTable(table);
+    legend->SetTitle(title.toUtf8().constData());
+    legend->SetVisibility(true);
+}
+
+constexpr double kSurfaceLegendX = 0.02, kPointsLegendX = 0.82; // view fractions: the surface's left, the rest right
+
+} // namespace
+
 struct VolumeView3D::Scene
 {
     vtkSmartPointer<vtkImageData> scaledIndexImage;
@@ -195,15 +216,8 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
         renderer()->AddActor(m_scene->fieldSurface);
     }
     // The surface's own legend, on the left: particles or lines shown with it keep theirs on the right.
-    if (!m_scene->surfaceLegend)
-    {
-        m_scene->surfaceLegend = detail::newLegend();
-        m_scene->surfaceLegend->SetPosition(0.02, 0.1);
-        renderer()->AddViewProp(m_scene->surfaceLegend);
-    }
-    m_scene->surfaceLegend->SetLookupTable(m_scene->fieldSurface->GetMapper()->GetLookupTable());
-    m_scene->surfaceLegend->SetTitle(legendTitle.toUtf8().constData());
-    m_scene->surfaceLegend->SetVisibility(true);
+    showLegendIn(renderer(), m_scene->surfaceLegend, kSurfaceLegendX,
+                 m_scene->fieldSurface->GetMapper()->GetLookupTable(), legendTitle);
     m_scene->surfaceLegendTitle = m_scene->legendTitle = legendTitle;
     update();
 }
@@ -219,14 +233,7 @@ QString VolumeView3D::surfaceLegendTitle() const { return m_scene->surfaceLegend
 
 void VolumeView3D::showLegend(vtkScalarsToColors* table, const QString& title)
 {
-    if (!m_scene->legend)
-    {
-        m_scene->legend = detail::newLegend();
-        renderer()->AddViewProp(m_scene->legend);
-    }
-    m_scene->legend->SetLookupTable(table);
-    m_scene->legend->SetTitle(title.toUtf8().constData());
-    m_scene->legend->SetVisibility(true);
+    showLegendIn(renderer(), m_scene->legend, kPointsLegendX, table, title);
     m_scene->legendTitle = title;
     update();
 }

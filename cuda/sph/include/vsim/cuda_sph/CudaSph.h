@@ -34,9 +34,6 @@ public:
     /// at the step's end: the run is over).
     std::string step();
     double timeS() const;
-    double lastStepS() const;
-    long steps() const;
-    std::size_t size() const;
     /// The largest |rho / rho0(s) - 1| over the fluid after the last step.
     double largestDensityVariation() const;
     /// The particles back on the host (m, m/s, kg/m^3) in the numbering `id` of the CPU solver's particles,
