@@ -73,9 +73,10 @@ __device__ void cellOf(const SphParams& p, float4 x, int c[3])
         c[a] = min(max(int(floorf(xs[a] / p.cell)), 0), p.dims[a] - 1);
 }
 
-/// f(j, xj, rx, ry, rz, r) for every particle j != i within the support of particle i (xj its position
-/// record, rij = x_i - x_j, m). With `cellFluid` (fluid particles per cell) only the cells that hold fluid
-/// are scanned: the wall particles' pass, whose sums run over the fluid alone (most walls see none).
+/// f(j, xj, rx, ry, rz, r, r2) for every particle j != i within the support of particle i (xj its position
+/// record, rij = x_i - x_j, m; r = |rij|, r2 = r^2). With `cellFluid` (fluid particles per cell) only the
+/// cells that hold fluid are scanned: the wall particles' pass, whose sums run over the fluid alone (most
+/// walls see none).
 template <class F>
 __device__ void forEachNeighbour(const SphParams& p, const SphArrays& a, const unsigned* cellStart,
                                  const unsigned* cellEnd, int i, F&& f, const unsigned* cellFluid = nullptr)
@@ -104,7 +105,7 @@ __device__ void forEachNeighbour(const SphParams& p, const SphArrays& a, const u
             // The cells along x within the chord are consecutive in the sorted order: one run.
             const int x0 = max(int(floorf((xi.x - chord) / p.cell)), 0);
             const int x1 = min(int(floorf((xi.x + chord) / p.cell)), p.dims[0] - 1);
-            const unsigned row = unsigned(p.dims[0]) * (unsigned(y) + unsigned(p.dims[1]) * unsigned(z));
+            const unsigned row = unsigned(p.dims[0]) * rowOf(p, y, z);
             unsigned begin = 0xffffffffu, end = 0;
             for (int x = x0; x <= x1; ++x)
             {
@@ -123,7 +124,7 @@ __device__ void forEachNeighbour(const SphParams& p, const SphArrays& a, const u
                 const float rx = xi.x - xj.x, ry = xi.y - xj.y, rz = xi.z - xj.z;
                 const float r2 = rx * rx + ry * ry + rz * rz;
                 if (r2 < p.support2 && r2 > 0.0f)
-                    f(int(j), xj, rx, ry, rz, sqrtf(r2));
+                    f(int(j), xj, rx, ry, rz, sqrtf(r2), r2);
             }
         }
     }
@@ -152,7 +153,7 @@ __global__ void cellKeysKernel(SphParams p, SphArrays a, int n, unsigned* keys, 
             r->escapedId = a.id[i];
     int c[3];
     cellOf(p, x, c);
-    keys[i] = unsigned(c[0]) + unsigned(p.dims[0]) * (unsigned(c[1]) + unsigned(p.dims[1]) * unsigned(c[2]));
+    keys[i] = unsigned(c[0]) + unsigned(p.dims[0]) * rowOf(p, c[1], c[2]);
     order[i] = i;
     if (!isWall(x))
         atomicAdd(&cellFluid[keys[i]], 1u);
@@ -197,7 +198,7 @@ __global__ void wallPressureKernel(SphParams p, SphArrays a, SphRatesArrays rate
     float weight = 0.0f, pressure = 0.0f;
     forEachNeighbour(
         p, a, cellStart, cellEnd, i,
-        [&](int j, float4 xj, float rx, float ry, float rz, float r)
+        [&](int j, float4 xj, float rx, float ry, float rz, float r, float)
         {
             if (isWall(xj))
                 return;
@@ -237,12 +238,13 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
     rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, muI);
     rates.wallDistance[i] = INFINITY;
     const float relativeI = rates.derived[i].w;
-    float m[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}; // moment, row-major: m[3 r + c] = -sum V rij_r gradW_c
+    // The moment -sum V_j rij (x) grad W = -sum V_j g rij (x) rij (grad W = g rij) is symmetric: six sums.
+    float m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
     float sum[3] = {0, 0, 0};
     float wallDistance = INFINITY;
     const bool gradients = p.diffusion > 0.0f;
     forEachNeighbour(p, a, cellStart, cellEnd, i,
-                     [&](int j, float4 xj, float rx, float ry, float rz, float r)
+                     [&](int j, float4 xj, float rx, float ry, float rz, float r, float)
                      {
                          if (isWall(xj))
                          {
@@ -252,23 +254,19 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
                          }
                          if (!gradients)
                              return;
-                         const float g = gradientFactor(p, r);
-                         const float grad[3] = {g * rx, g * ry, g * rz}, rij[3] = {rx, ry, rz};
                          const float4 dj = __ldg(&rates.derived[j]);
-                         const float volume = dj.x;
-                         const float difference = volume * (dj.w - relativeI);
-                         for (int row = 0; row < 3; ++row)
-                         {
-                             for (int col = 0; col < 3; ++col)
-                                 m[3 * row + col] -= volume * rij[row] * grad[col];
-                             sum[row] += difference * grad[row];
-                         }
+                         const float vg = dj.x * gradientFactor(p, r); // V_j g
+                         const float ax = vg * rx, ay = vg * ry, az = vg * rz;
+                         m00 -= ax * rx, m01 -= ax * ry, m02 -= ax * rz;
+                         m11 -= ay * ry, m12 -= ay * rz, m22 -= az * rz;
+                         const float difference = dj.w - relativeI;
+                         sum[0] += difference * ax, sum[1] += difference * ay, sum[2] += difference * az;
                      });
     rates.wallDistance[i] = wallDistance;
     if (!gradients)
         return;
-    // t = M^T; G = t^-1 sum by the adjugate, where |det| > 1e-3 (SphRates.cpp).
-    const float t[9] = {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};
+    // G = (M^T)^-1 sum by the adjugate (M is symmetric), where |det| > 1e-3 (SphRates.cpp).
+    const float t[9] = {m00, m01, m02, m01, m11, m12, m02, m12, m22};
     const float c0 = t[4] * t[8] - t[5] * t[7], c1 = t[5] * t[6] - t[3] * t[8],
                 c2 = t[3] * t[7] - t[4] * t[6];
     const float det = t[0] * c0 + t[1] * c1 + t[2] * c2;
@@ -299,29 +297,31 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         const float restI = mixtureDensity(p, si.z), relativeI = di.w;
         const float4 gi = rates.densityGradient[i];
         const float muI = gi.w, wallDistanceI = rates.wallDistance[i];
-        float densityRate = 0.0f, fx = 0.0f, fy = 0.0f, fz = 0.0f;
+        // The per-neighbour work with the factors common to all neighbours taken out of the sums, and the
+        // dot products with grad W = g rij as g times the dot product with rij (the same sums, reordered).
+        float continuity = 0.0f, diffusion = 0.0f, fx = 0.0f, fy = 0.0f, fz = 0.0f;
+        float viscousX = 0.0f, viscousY = 0.0f, viscousZ = 0.0f;
         // Per neighbour, from its records: dj = (V_j, m_j p_j / rho_j^2, m_j, rho_j / rho0_j), gj = (G_j,
         // mu_j).
         forEachNeighbour(p, a, cellStart, cellEnd, i,
-                         [&](int j, float4 xj, float rx, float ry, float rz, float rr)
+                         [&](int j, float4 xj, float rx, float ry, float rz, float rr, float r2)
                          {
                              const float4 vj = __ldg(&a.velocity[j]), dj = __ldg(&rates.derived[j]),
                                           gj = __ldg(&rates.densityGradient[j]);
                              const bool wallJ = isWall(xj);
                              const float g = gradientFactor(p, rr);
-                             const float gx = g * rx, gy = g * ry, gz = g * rz;
                              const float vx = vi.x - vj.x, vy = vi.y - vj.y, vz = vi.z - vj.z;
-                             const float r2 = rr * rr;
-                             densityRate += rhoI * dj.x * (vx * gx + vy * gy + vz * gz);
+                             const float vr = vx * rx + vy * ry + vz * rz;
+                             const float vg = dj.x * g; // V_j g
+                             continuity += vg * vr;     // V_j vij . grad W
+                             // delta-SPH: psi . grad W with psi = -2 (rho_j / rho0_j - rho_i / rho0_i)
+                             // rij / r^2 - (G_i + G_j), so psi . rij = -2 (...) - (G_i + G_j) . rij.
                              if (!wallJ && p.diffusion > 0.0f)
-                             {
-                                 const float s = 2.0f * (dj.w - relativeI) / r2;
-                                 const float px = -s * rx - (gi.x + gj.x), py = -s * ry - (gi.y + gj.y),
-                                             pz = -s * rz - (gi.z + gj.z);
-                                 densityRate += p.diffusion * restI * dj.x * (px * gx + py * gy + pz * gz);
-                             }
-                             const float pressureTerm = dj.z * pressureI + dj.y;
-                             fx -= pressureTerm * gx, fy -= pressureTerm * gy, fz -= pressureTerm * gz;
+                                 diffusion +=
+                                     vg * (-2.0f * (dj.w - relativeI) -
+                                           ((gi.x + gj.x) * rx + (gi.y + gj.y) * ry + (gi.z + gj.z) * rz));
+                             const float pressureTerm = (dj.z * pressureI + dj.y) * g;
+                             fx -= pressureTerm * rx, fy -= pressureTerm * ry, fz -= pressureTerm * rz;
                              float wx = vx, wy = vy, wz = vz;
                              if (wallJ && xj.w >= 0.0f)
                              {
@@ -330,14 +330,14 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                                  wx = beta * vi.x, wy = beta * vi.y, wz = beta * vi.z;
                              }
                              const float damped = 1.0f / (r2 + p.eta2);
-                             const float viscous =
-                                 dj.x * (muI + gj.w) * (rx * gx + ry * gy + rz * gz) * inverseRhoI * damped;
-                             fx += viscous * wx, fy += viscous * wy, fz += viscous * wz;
-                             viscousRate =
-                                 fmaxf(viscousRate, fabsf(p.h * (vx * rx + vy * ry + vz * rz) * damped));
+                             const float viscous = vg * (muI + gj.w) * r2 * damped; // rij . grad W = g r^2
+                             viscousX += viscous * wx, viscousY += viscous * wy, viscousZ += viscous * wz;
+                             viscousRate = fmaxf(viscousRate, fabsf(p.h * vr * damped));
                          });
-        rates.densityRate[i] = densityRate;
-        fx += ex, fy += ey, fz += ez;
+        rates.densityRate[i] = rhoI * continuity + p.diffusion * restI * diffusion;
+        fx += inverseRhoI * viscousX + ex;
+        fy += inverseRhoI * viscousY + ey;
+        fz += inverseRhoI * viscousZ + ez;
         rates.acceleration[i] = make_float4(fx, fy, fz, 0.0f);
         acceleration = sqrtf(fx * fx + fy * fy + fz * fz);
         kinematic = muI / restI;

@@ -23,9 +23,22 @@ struct SphParams
     float pressureFloor; ///< Pa: 0 with a free surface, -inf in vessels
     float cell;          ///< the cell's edge (m, = h)
     int dims[3];         ///< cells per axis
+    int tile;            ///< rows of cells (y, z) are numbered in tiles of tile x tile rows (rowOf)
+    int tilesY;          ///< tiles along y: ceil(dims[1] / tile)
     float boxHigh[3];    ///< m from the low corner: beyond it (or below 0) a particle has escaped
     float betaMax;       ///< the no-slip extrapolation's cap (SphRates.cpp)
 };
+
+/// The number of the row of cells (y, z): rows are numbered tile by tile (tile x tile rows, y fastest
+/// within a tile, then the tiles along y, then along z), so that the rows a neighbour loop reads lie close
+/// together in the sorted order, and those of the next rows too (the L2 cache keeps them); a cell's key is
+/// x + dims[0] x its row, so the cells along x of one row stay consecutive.
+__device__ inline unsigned rowOf(const SphParams& p, int y, int z)
+{
+    const unsigned t = unsigned(p.tile);
+    const unsigned tileIndex = unsigned(z) / t * unsigned(p.tilesY) + unsigned(y) / t;
+    return (tileIndex * t + unsigned(z) % t) * t + unsigned(y) % t;
+}
 
 /// Device pointers of the particle arrays in sorted order, packed so that a neighbour costs few 16-byte
 /// loads: position (m) with w = the wall depth (m, >= 0) at a wall particle of known depth, -2 at one
