@@ -117,14 +117,12 @@ int simulateSph(const Arguments& arguments, const Progress& progress)
     const std::string backend = arguments.option("backend", "auto");
     if (backend != "auto" && backend != "cpu" && backend != "cuda")
         throw UsageError("--backend: auto, cpu or cuda, not '" + backend + "'");
-    if (backend == "cuda")
-        throw Error("the SPH solver's CUDA backend runs closed domains only so far (cuda/sph: the dam-break "
-                    "benchmark); a vessel's flow has an inlet and outlets: use --backend cpu (or auto)");
     if (arguments.hasOption("out")) // before the run: a refused folder costs no time
         claimOutputFolder(arguments.option("out"), "run");
     study::Study study = openStudyForWriting(arguments);
 
     app::BloodFlowSetup setup;
+    setup.backend = backend;
     setup.centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
     setup.inlet = parseInlet(arguments.option("inlet", "0.2m/s"));
     if (arguments.hasOption("waveform"))

@@ -13,13 +13,17 @@
 //   face), reported as the largest difference over OpenFOAM's throat value (the stress nearly vanishes where the
 //   jet's recirculation reattaches: a local ratio says nothing there).
 //
-//   bench_sph_openfoam <work folder> [--sph-in FILE] [--sph-out FILE]
+//   bench_sph_openfoam <work folder> [--spacing MM] [--sph-in FILE] [--sph-out FILE]
 //
-// --sph-out writes the SPH's sections and wall rings (JSON) after its run; --sph-in reads them instead of running it (the SPH may
-// run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2). Prints one JSON object; exit 1 beyond a
-// tolerance, 0 with "SKIP" when simpleFoam is not installed (`scripts/install-deps.sh --bench`).
+// --spacing sets the SPH's particle lattice (0.1 mm by default) and with it the sections' slab thickness (two
+// spacings) on both sides.
+// --sph-out writes the SPH's sections and wall rings (JSON) after its run; --sph-in reads them instead of running
+// it (the SPH may run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2, or on the GPU:
+// bench_sph_cuda_stenosis). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
+// not installed (`scripts/install-deps.sh --bench`).
 
 #include "OpenFoamStenosis.h"
+#include "StenosisJson.h"
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/StenosisPipe.h"
@@ -39,37 +43,6 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 namespace {
-
-json sectionsJson(const std::vector<double>& arcMm, const std::vector<sim::sph::SectionFlow>& flows)
-{
-    json out = json::object();
-    for (const auto& [key, pick] : std::initializer_list<std::pair<const char*, double sim::sph::SectionFlow::*>>{
-             {"area_m2", &sim::sph::SectionFlow::areaM2},
-             {"flow_rate_m3s", &sim::sph::SectionFlow::flowRateM3S},
-             {"mean_velocity_ms", &sim::sph::SectionFlow::meanVelocityMS},
-             {"peak_velocity_ms", &sim::sph::SectionFlow::peakVelocityMS},
-             {"mean_pressure_pa", &sim::sph::SectionFlow::meanPressurePa}})
-    {
-        json values = json::array();
-        for (const auto& flow : flows)
-            values.push_back(flow.*pick);
-        out[key] = values;
-    }
-    out["arc_mm"] = arcMm;
-    return out;
-}
-
-std::vector<sim::sph::SectionFlow> sectionsFrom(const json& in)
-{
-    std::vector<sim::sph::SectionFlow> flows(in.at("arc_mm").size());
-    for (std::size_t k = 0; k < flows.size(); ++k)
-    {
-        flows[k].areaM2 = in.at("area_m2").at(k), flows[k].flowRateM3S = in.at("flow_rate_m3s").at(k);
-        flows[k].meanVelocityMS = in.at("mean_velocity_ms").at(k), flows[k].peakVelocityMS = in.at("peak_velocity_ms").at(k);
-        flows[k].meanPressurePa = in.at("mean_pressure_pa").at(k), flows[k].particles = 1;
-    }
-    return flows;
-}
 
 json figuresJson(const sim::sph::StenosisFigures& f)
 {
@@ -91,19 +64,32 @@ int main(int argc, char** argv)
 {
     if (argc < 2)
     {
-        std::fprintf(stderr, "usage: bench_sph_openfoam <work folder> [--sph-in FILE] [--sph-out FILE]\n");
+        std::fprintf(stderr,
+                     "usage: bench_sph_openfoam <work folder> [--spacing MM] [--sph-in FILE] [--sph-out FILE]\n");
         return 2;
     }
     const fs::path work = argv[1];
     std::string sphIn, sphOut;
+    sim::sph::StenosisPipe pipe;
     for (int a = 2; a < argc; ++a)
     {
         const std::string option = argv[a];
         if ((option == "--sph-in" || option == "--sph-out") && a + 1 < argc)
             (option == "--sph-in" ? sphIn : sphOut) = argv[++a];
+        else if (option == "--spacing" && a + 1 < argc)
+        {
+            char* end = nullptr;
+            pipe.spacingMm = std::strtod(argv[++a], &end);
+            if (*end != '\0' || !(pipe.spacingMm > 0.0 && pipe.spacingMm <= 0.2))
+            {
+                std::fprintf(stderr, "bench_sph_openfoam: --spacing takes mm in (0, 0.2], not '%s'\n", argv[a]);
+                return 2;
+            }
+        }
         else
         {
-            std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--sph-in FILE, --sph-out FILE)\n", option.c_str());
+            std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--spacing MM, --sph-in FILE, --sph-out FILE)\n",
+                         option.c_str());
             return 2;
         }
     }
@@ -116,7 +102,6 @@ int main(int argc, char** argv)
     }
     try
     {
-        const sim::sph::StenosisPipe pipe;
         json report = {{"bench", "sph_openfoam"}};
         std::vector<sim::sph::SectionFlow> sph;
         json sphWall;
@@ -127,7 +112,11 @@ int main(int argc, char** argv)
             if (!in)
                 throw Error("cannot read " + sphIn);
             const json stored = json::parse(in);
-            sph = sectionsFrom(stored.at("sections"));
+            const double storedSpacing = stored.value("spacing_mm", 0.1); // files before --spacing: 0.1 mm
+            if (std::abs(storedSpacing - pipe.spacingMm) > 1e-9)
+                throw Error(sphIn + " holds an SPH run at " + std::to_string(storedSpacing) +
+                            " mm: give the same --spacing (the sections' slabs are two spacings thick)");
+            sph = bench::sectionsFrom(stored.at("sections"));
             sphWall = stored.at("wall");
             report["sph"] = stored;
             report["sph"]["from"] = sphIn;
@@ -135,15 +124,15 @@ int main(int argc, char** argv)
         else
         {
             const auto start = std::chrono::steady_clock::now();
-            const sim::sph::StenosisPipeFlow flow = sim::sph::runStenosisPipe();
+            const sim::sph::StenosisPipeFlow flow = sim::sph::runStenosisPipe(pipe);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             sph = flow.flows;
             sphWall = {{"arc_mm", flow.wallArcMm}, {"tawss_pa", flow.wallShearPa}, {"pressure_pa", flow.wallPressurePa},
                        {"throat_tawss_pa", flow.throatWallShearPa}};
-            report["sph"] = {{"sections", sectionsJson(flow.arcMm, flow.flows)}, {"wall", sphWall}, {"seconds", seconds},
+            report["sph"] = {{"sections", bench::sectionsJson(flow.arcMm, flow.flows)}, {"wall", sphWall}, {"seconds", seconds},
                              {"steps", flow.metrics.at("steps")}, {"particles", flow.metrics.at("particles")},
                              {"largest_density_variation", flow.metrics.at("largest_density_variation")},
-                             {"precision", "double"}};
+                             {"precision", "double"}, {"spacing_mm", pipe.spacingMm}};
             if (!sphOut.empty())
                 std::ofstream(sphOut) << report["sph"].dump(1) << '\n';
         }

@@ -7,6 +7,11 @@
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/sph/SphSolver.h"
 
+#ifdef VSIM_HAVE_CUDA
+#include "vsim/cuda_common/DeviceInfo.h"
+#include "vsim/cuda_sph/CudaSph.h"
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -224,10 +229,38 @@ BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& 
     return setup;
 }
 
+namespace {
+
+/// The stepper the setup asks for: the CPU's (an empty factory), or the GPU's when asked (refused without one) or on
+/// auto with a device; every blood-flow case (inlets and outlets, no tracer or absorption) runs on both.
+sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, BloodFlowRun& flow)
+{
+    if (requested != "auto" && requested != "cpu" && requested != "cuda")
+        throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
+    if (requested == "cpu")
+        return {};
+#ifdef VSIM_HAVE_CUDA
+    if (!cuda::devices().empty())
+    {
+        flow.backend = "cuda", flow.device = cuda::deviceSummary();
+        return cuda::cudaSphStepperFactory();
+    }
+    const std::string unavailable = "there is no CUDA device";
+#else
+    const std::string unavailable = "this build has no CUDA backend (nvcc was not found when it was configured)";
+#endif
+    if (requested == "cuda")
+        throw Error(unavailable + ": use --backend cpu or auto");
+    return {};
+}
+
+} // namespace
+
 BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup, sim::RunControl control,
                           const Progress& progress)
 {
     BloodFlowRun flow;
+    const sim::sph::SphStepperFactory stepper = chooseSphStepper(setup.backend, flow);
     progress.report(0.0, "vessel ends from the centerlines");
     const VesselNetwork network = buildStudyNetwork(study, setup.centerlinesId, flow.warnings, progress.subRange(0.0, 0.05));
     const std::string labelId = labelOfCenterlines(study, setup.centerlinesId);
@@ -377,6 +410,7 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     solver.setOpenBoundaries(flow.boundaries);
     solver.setSections(sections, flow.averagedFromS, int(std::ceil(double(sections.size()) / 30.0)));
     solver.setWallPoints(inwardWallPoints(flow.wallSurface), flow.averagedFromS, 10);
+    solver.setStepper(stepper); // the GPU's particles come back every 10th step for the sections and the wall
     if (control.frameEvery <= 0.0 && control.frameEverySteps <= 0)
         control.frameEvery = endTime / std::max(1, setup.frames);
     flow.run = sim::runSolver(solver, input, parameters, control, progress.subRange(0.05, 1.0));

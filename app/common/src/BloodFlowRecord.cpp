@@ -163,6 +163,8 @@ std::string bloodFlowDocument(const BloodFlowRun& flow, const BloodFlowSetup& se
             stenosis[key] = {{"value", value}, {"definition", definition}};
     }
     return nlohmann::json{{"centerlines", setup.centerlinesId},
+                          {"backend", flow.backend == "cuda" ? "cuda (single precision, " + flow.device + ")"
+                                                             : std::string("cpu (double precision)")},
                           {"run_status", nlohmann::json::parse(runStatusJson(flow.run.status))},
                           {"boundaries", boundaries},
                           {"parameters", parameters},
@@ -187,6 +189,9 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
     provenance.parameters["ramp_s"] = preciseNumberText(flow.rampS);
     provenance.parameters["outlet_pressure_pa"] = preciseNumberText(setup.outletPressurePa);
     provenance.parameters["compare_mm"] = preciseNumberText(setup.compareMm);
+    provenance.parameters["backend"] = flow.backend;
+    if (!flow.device.empty())
+        provenance.parameters["device"] = flow.device;
     for (const auto& b : flow.boundaries)
         provenance.parameters["boundary " + b.name] = boundaryJson(b).dump();
     std::vector<std::string> warnings = flow.warnings;

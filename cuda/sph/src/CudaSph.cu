@@ -43,10 +43,11 @@ public:
     {
         VSIM_CUDA_CHECK(cudaMemcpy(m_data, values.data(), values.size() * sizeof(T), cudaMemcpyHostToDevice));
     }
-    std::vector<T> download() const
+    /// The first `count` values (all by default).
+    std::vector<T> download(std::size_t count = std::size_t(-1)) const
     {
-        std::vector<T> values(m_count);
-        VSIM_CUDA_CHECK(cudaMemcpy(values.data(), m_data, m_count * sizeof(T), cudaMemcpyDeviceToHost));
+        std::vector<T> values(std::min(count, m_count));
+        VSIM_CUDA_CHECK(cudaMemcpy(values.data(), m_data, values.size() * sizeof(T), cudaMemcpyDeviceToHost));
         return values;
     }
 
@@ -92,16 +93,22 @@ std::string number(double value)
 
 struct CudaSph::Device
 {
-    int n = 0;
+    int n = 0;        ///< particles now
+    int capacity = 0; ///< particles the arrays hold (open boundaries create and remove particles)
     sph::SphParams params{};
     sim::sph::FluidModel fluid;
     sim::sph::SphStepSettings settings;
+    sim::sph::OpenBoundaries boundaries;  ///< the CPU solver's, initialized: profiles and prescribed values
+    sph::OpenBoundaryArgs boundaryArgs{}; ///< what the kernels see of them
+    sim::sph::MassLedger ledger;
+    std::vector<double> flowRate, pressure; ///< per boundary, the last imposition's (m^3/s into the domain, Pa)
+    int nextId = 0;
     ParticleArrays current, other;
     DeviceArray<float4> acceleration, densityGradient, derived;
     DeviceArray<float> densityRate, wallDistance;
     DeviceArray<unsigned> keys, sortedKeys, cellStart, cellEnd, cellFluid;
     DeviceArray<int> order, sortedOrder;
-    DeviceArray<int> byKind, fluidSelected; // fluid indices first, then the walls' (launchPartition)
+    DeviceArray<int> byKind, fluidSelected; // fluid indices first, then the others' (launchPartition)
     DeviceArray<std::uint8_t> partitionScratch;
     int fluidCount = 0;
     DeviceArray<std::uint8_t> sortScratch;
@@ -109,20 +116,24 @@ struct CudaSph::Device
     unsigned keyBits = 1;
     std::size_t cells = 0;
     DeviceArray<sph::SphReductions> reductions;
+    DeviceArray<sph::OpenBoundaryTallies> tallies;
     sph::SphReductions last{};
-    double time = 0.0;
+    sph::OpenBoundaryTallies lastTallies{};
+    double time = 0.0, stepS = 0.0;
 
-    Device(std::size_t count, std::size_t cellCount)
-        : n(int(count)), current(count), other(count), acceleration(count), densityGradient(count),
-          derived(count), densityRate(count), wallDistance(count), keys(count), sortedKeys(count),
-          cellStart(cellCount), cellEnd(cellCount), cellFluid(cellCount), order(count), sortedOrder(count),
-          byKind(count), fluidSelected(1), keyBits(bitsFor(cellCount)), cells(cellCount), reductions(1)
+    Device(std::size_t count, std::size_t capacityCount, std::size_t cellCount)
+        : n(int(count)), capacity(int(capacityCount)), current(capacityCount), other(capacityCount),
+          acceleration(capacityCount), densityGradient(capacityCount), derived(capacityCount),
+          densityRate(capacityCount), wallDistance(capacityCount), keys(capacityCount), sortedKeys(capacityCount),
+          cellStart(cellCount), cellEnd(cellCount), cellFluid(cellCount), order(capacityCount),
+          sortedOrder(capacityCount), byKind(capacityCount), fluidSelected(1), keyBits(bitsFor(cellCount + 1)),
+          cells(cellCount), reductions(1), tallies(1)
     {
         VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data(),
                                                         sortedKeys.data(), order.data(), sortedOrder.data(),
-                                                        n, 0, int(keyBits)));
+                                                        capacity, 0, int(keyBits)));
         sortScratch = DeviceArray<std::uint8_t>(sortScratchBytes);
-        partitionScratch = DeviceArray<std::uint8_t>(sph::partitionScratchBytes(n));
+        partitionScratch = DeviceArray<std::uint8_t>(sph::partitionScratchBytes(capacity));
     }
 
     sph::SphRatesArrays rates() const
@@ -130,46 +141,103 @@ struct CudaSph::Device
         return {acceleration.data(), densityGradient.data(), derived.data(), densityRate.data(),
                 wallDistance.data()};
     }
+    bool open() const { return boundaryArgs.count > 0; }
 
-    /// Cell keys, the radix sort, the gather into the sorted order, each cell's run, and the indices by kind
-    /// (the fluid's count is fixed in a closed domain: fluidSelected only receives it again).
-    void sort()
+    /// Cell keys (removed particles past every cell), the radix sort of `total` particles, the gather into the
+    /// sorted order, each cell's run over the `kept` ones, and the indices by kind. A closed domain's fluid
+    /// count is fixed; with open boundaries it is read back.
+    void sort(int total, int kept)
     {
         VSIM_CUDA_CHECK(cudaMemset(cellFluid.data(), 0, cellFluid.bytes()));
-        sph::launchCellKeys(params, current.pointers(), n, keys.data(), order.data(), cellFluid.data(),
+        sph::launchCellKeys(params, current.pointers(), total, keys.data(), order.data(), cellFluid.data(),
                             reductions.data());
         VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sortScratch.data(), sortScratchBytes, keys.data(),
                                                         sortedKeys.data(), order.data(), sortedOrder.data(),
-                                                        n, 0, int(keyBits)));
-        sph::launchGather(current.pointers(), other.pointers(), sortedOrder.data(), n);
+                                                        total, 0, int(keyBits)));
+        sph::launchGather(current.pointers(), other.pointers(), sortedOrder.data(), total);
         std::swap(current, other);
+        n = kept;
         VSIM_CUDA_CHECK(cudaMemset(cellStart.data(), 0, cellStart.bytes()));
         VSIM_CUDA_CHECK(cudaMemset(cellEnd.data(), 0, cellEnd.bytes()));
         sph::launchCellRanges(sortedKeys.data(), n, cellStart.data(), cellEnd.data());
         sph::launchPartition(current.pointers(), n, byKind.data(), fluidSelected.data(),
                              partitionScratch.data(), partitionScratch.bytes());
+        if (open())
+            VSIM_CUDA_CHECK(cudaMemcpy(&fluidCount, fluidSelected.data(), sizeof fluidCount, cudaMemcpyDeviceToHost));
     }
 
-    /// SphSolver::updateRates: the walls' pressure, every pressure, G and the wall distances, the rates.
+    /// The exchange after the drift (open boundaries only), then the sort; returns a guard's message, or "".
+    std::string exchangeAndSort()
+    {
+        if (!open())
+        {
+            sort(n, n);
+            return {};
+        }
+        sph::launchExchange(current.pointers(), boundaryArgs, n, nextId, tallies.data());
+        VSIM_CUDA_CHECK(cudaMemcpy(&lastTallies, tallies.data(), sizeof lastTallies, cudaMemcpyDeviceToHost));
+        if (lastTallies.overflow)
+            return "the open boundaries let in more particles than the GPU's arrays hold (" +
+                   std::to_string(capacity) + ")";
+        const int total = n + int(lastTallies.created);
+        nextId += int(lastTallies.created);
+        for (int k = 0; k < boundaryArgs.count; ++k)
+            ledger.inflowKg[std::size_t(k)] += lastTallies.inflowKg[k],
+                ledger.outflowKg[std::size_t(k)] += lastTallies.outflowKg[k];
+        sort(total, total - int(lastTallies.removed));
+        return {};
+    }
+
+    /// SphSolver::updateRates: the buffers' values, the walls' pressure, every pressure, G and the wall
+    /// distances, the rates.
     void updateRates(double timeS)
     {
         const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
         const float e[3] = {float(external.x()), float(external.y()), float(external.z())};
-        const int* fluid = byKind.data();
-        const int* walls = byKind.data() + fluidCount;
+        const int* fluidList = byKind.data();
+        const int* others = byKind.data() + fluidCount;
+        if (open())
+        {
+            for (int k = 0; k < boundaryArgs.count; ++k)
+            {
+                const std::size_t b = std::size_t(k);
+                sph::OpenBoundaryParams& args = boundaryArgs.b[k];
+                args.speedScale = args.velocityPrescribed
+                                      ? float(boundaries.prescribedFlowRate(b, timeS) / boundaries.calibration(b))
+                                      : 0.0f;
+                args.pressure = float(boundaries.prescribedPressure(b, timeS, flowRate[b]));
+            }
+            sph::launchImpose(params, current.pointers(), rates(), boundaryArgs, cellStart.data(), cellEnd.data(),
+                              others, n - fluidCount, tallies.data());
+        }
         sph::launchWallPressure(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(),
-                                cellFluid.data(), walls, n - fluidCount);
+                                cellFluid.data(), others, n - fluidCount);
         sph::launchPressures(params, current.pointers(), rates(), n);
-        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), fluid,
+        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), fluidList,
                                  fluidCount);
-        sph::launchRates(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), e, fluid,
+        sph::launchRates(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), e, fluidList,
                          fluidCount, reductions.data());
     }
 
-    void resetReductions() { VSIM_CUDA_CHECK(cudaMemset(reductions.data(), 0, sizeof(sph::SphReductions))); }
+    void resetReductions()
+    {
+        VSIM_CUDA_CHECK(cudaMemset(reductions.data(), 0, sizeof(sph::SphReductions)));
+        if (open())
+            VSIM_CUDA_CHECK(cudaMemset(tallies.data(), 0, sizeof(sph::OpenBoundaryTallies)));
+    }
     void fetchReductions()
     {
         VSIM_CUDA_CHECK(cudaMemcpy(&last, reductions.data(), sizeof last, cudaMemcpyDeviceToHost));
+        if (!open())
+            return;
+        VSIM_CUDA_CHECK(cudaMemcpy(&lastTallies, tallies.data(), sizeof lastTallies, cudaMemcpyDeviceToHost));
+        for (int k = 0; k < boundaryArgs.count; ++k)
+        {
+            const std::size_t b = std::size_t(k);
+            flowRate[b] = lastTallies.flux[k];
+            pressure[b] = lastTallies.members[k] > 0.0 ? lastTallies.pressureSum[k] / lastTallies.members[k]
+                                                       : double(boundaryArgs.b[k].pressure);
+        }
     }
 
     /// stableTimeStep (SphRates.cpp) from the last rates' maxima.
@@ -186,16 +254,49 @@ struct CudaSph::Device
     }
 };
 
+namespace {
+
+/// The open boundaries as the kernels see them (positions from the box's corner).
+sph::OpenBoundaryArgs boundaryArgs(const sim::sph::OpenBoundaries& boundaries, const Eigen::Vector3d& boxLowM,
+                                   int capacity)
+{
+    sph::OpenBoundaryArgs args;
+    const auto& list = boundaries.boundaries();
+    if (list.size() > std::size_t(sph::kMaxOpenBoundaries))
+        throw Error("the CUDA SPH backend takes at most " + std::to_string(sph::kMaxOpenBoundaries) +
+                    " open boundaries; this case has " + std::to_string(list.size()));
+    args.count = int(list.size());
+    args.depth = float(boundaries.depth());
+    args.capacity = capacity;
+    for (std::size_t k = 0; k < list.size(); ++k)
+    {
+        const sim::sph::OpenBoundary& b = list[k];
+        if (b.tracer)
+            throw Error("the CUDA SPH backend does not carry a tracer yet: inlet '" + b.name +
+                        "' lets one in; run this case on the CPU (--backend cpu)");
+        sph::OpenBoundaryParams& p = args.b[k];
+        const Eigen::Vector3d centre = b.centreM - boxLowM;
+        for (int a = 0; a < 3; ++a)
+            p.centre[a] = float(centre[a]), p.normal[a] = float(b.normal[a]);
+        p.radius = float(b.radiusM), p.equivalentRadius = float(boundaries.equivalentRadius(k));
+        p.velocityPrescribed = b.prescribed == sim::sph::OpenBoundary::Prescribed::Velocity ? 1 : 0;
+        p.parabolic = b.parabolic ? 1 : 0;
+        p.joins = (b.prescribed == sim::sph::OpenBoundary::Prescribed::Pressure || b.flowRateM3S < 0.0) ? 1 : 0;
+    }
+    return args;
+}
+
+} // namespace
+
 CudaSph::CudaSph(const sim::sph::SphSolver& solver)
 {
     int devices = 0;
     if (cudaGetDeviceCount(&devices) != cudaSuccess || devices == 0)
         throw Error("no CUDA device: run the SPH solver on the CPU (--backend cpu)");
     const sim::sph::SphStepSettings settings = solver.stepSettings();
-    if (settings.openBoundaries || settings.absorption || (settings.periodicLengthM.array() > 0.0).any())
-        throw Error(
-            "the CUDA SPH backend runs closed domains only (no inlets or outlets, periodic axes or tracer "
-            "absorption yet): run this case on the CPU (--backend cpu)");
+    if (settings.absorption || (settings.periodicLengthM.array() > 0.0).any())
+        throw Error("the CUDA SPH backend runs no periodic axes or tracer absorption yet: run this case on the "
+                    "CPU (--backend cpu)");
     const sim::sph::ParticleState& p = solver.particles();
     const sim::sph::FluidModel& fluid = solver.fluid();
     const double h = solver.kernel().smoothingLength();
@@ -227,13 +328,31 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     const std::size_t tilesZ = std::size_t((params.dims[2] + params.tile - 1) / params.tile);
     const std::size_t cells = std::size_t(params.dims[0]) * std::size_t(params.tilesY) * tilesZ *
                               std::size_t(params.tile) * std::size_t(params.tile);
-    if (cells > (std::size_t(1) << 31))
+    if (cells >= (std::size_t(1) << 31))
         throw Error("the SPH domain spans too many cells for the GPU grid: " + std::to_string(cells));
-    m_device = std::make_unique<Device>(p.size(), cells);
+    params.removedKey = unsigned(cells);
+    // With open boundaries the count changes: room for a tenth more particles and two buffers' worth of
+    // copies in one step.
+    const std::size_t n = p.size();
+    const std::size_t buffered =
+        std::size_t(std::count_if(p.boundary.begin(), p.boundary.end(), [](auto b) { return b != 0; }));
+    const std::size_t capacity = settings.openBoundaries ? n + n / 10 + 2 * buffered : n;
+    m_device = std::make_unique<Device>(n, capacity, cells);
     Device& d = *m_device;
     d.params = params, d.fluid = fluid, d.settings = settings;
-    d.fluidCount = int(std::count(p.wall.begin(), p.wall.end(), std::uint8_t(0)));
-    const std::size_t n = p.size();
+    if (settings.openBoundaries)
+    {
+        d.boundaries = solver.openBoundaries();
+        d.boundaryArgs = boundaryArgs(d.boundaries, settings.boxLowM, int(capacity));
+        const std::size_t count = d.boundaries.boundaries().size();
+        d.ledger = solver.massLedger();
+        d.ledger.inflowKg.resize(count, 0.0), d.ledger.outflowKg.resize(count, 0.0);
+        d.flowRate.assign(count, 0.0), d.pressure.assign(count, 0.0);
+        for (std::size_t k = 0; k < count; ++k)
+            d.flowRate[k] = d.boundaries.flowRate(k), d.pressure[k] = d.boundaries.pressure(k);
+    }
+    d.nextId = p.id.empty() ? 0 : *std::max_element(p.id.begin(), p.id.end()) + 1;
+    d.fluidCount = int(std::count_if(p.wall.begin(), p.wall.end(), [](auto w) { return w == 0; })) - int(buffered);
     std::vector<float4> position(n), velocity(n), state(n);
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -242,15 +361,15 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
                            : p.wallDepth[i] >= 0.0 ? float(p.wallDepth[i])
                                                    : sph::kWallOfUnknownDepth;
         position[i] = make_float4(float(x.x()), float(x.y()), float(x.z()), kind);
-        velocity[i] =
-            make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()), 0.0f);
+        velocity[i] = make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()),
+                                  float(p.boundary[i]));
         state[i] = make_float4(float(p.density[i]), float(p.mass[i]), float(p.voidFraction[i]), 0.0f);
     }
     d.current.position.upload(position), d.current.velocity.upload(velocity), d.current.state.upload(state);
     d.current.id.upload(p.id);
     d.resetReductions();
-    d.sort();
-    d.updateRates(0.0);
+    d.sort(d.n, d.n);
+    d.updateRates(solver.position());
     d.fetchReductions();
     d.time = solver.position();
 }
@@ -261,15 +380,17 @@ std::string CudaSph::step()
 {
     Device& d = *m_device;
     const double dt = d.stableStep();
+    const std::string at = "at t = " + number(d.time + dt) + " s ";
     d.resetReductions();
     sph::launchKickDrift(d.current.pointers(), d.rates(), float(dt), d.n);
-    d.sort();
+    if (const std::string full = d.exchangeAndSort(); !full.empty())
+        return at + full;
     d.updateRates(d.time + dt);
     sph::launchKick(d.params, d.current.pointers(), d.rates(), float(dt), float(0.5 * d.settings.spacingM),
                     d.n, d.reductions.data());
     d.fetchReductions();
-    const std::string at = "at t = " + number(d.time + dt) + " s ";
     d.time += dt;
+    d.stepS = dt;
     if (d.last.notFinite)
         return at + "particle " + std::to_string(d.last.notFiniteId) + " has a value that is not finite";
     if (d.last.escaped)
@@ -278,8 +399,7 @@ std::string CudaSph::step()
     if (d.last.throughWall)
         return at + "fluid particle " + std::to_string(d.last.throughWallId) +
                " went more than half a spacing into the wall: the time step or the sound speed is too large "
-               "for the "
-               "flow, or the wall too thin";
+               "for the flow, or the wall too thin";
     if (asFloat(d.last.largestDensityVariation) > d.settings.densityGuard)
         return at + "a particle's density is " + number(100.0 * asFloat(d.last.largestDensityVariation)) +
                " % from the rest density (guard " + number(100.0 * d.settings.densityGuard) +
@@ -291,36 +411,60 @@ double CudaSph::timeS() const
 {
     return m_device->time;
 }
+double CudaSph::lastStepS() const
+{
+    return m_device->stepS;
+}
 double CudaSph::largestDensityVariation() const
 {
     return asFloat(m_device->last.largestDensityVariation);
+}
+std::size_t CudaSph::particleCount() const
+{
+    return std::size_t(m_device->n);
+}
+const sim::sph::MassLedger& CudaSph::massLedger() const
+{
+    return m_device->ledger;
+}
+double CudaSph::flowRate(std::size_t k) const
+{
+    return m_device->flowRate.at(k);
+}
+double CudaSph::pressure(std::size_t k) const
+{
+    return m_device->pressure.at(k);
 }
 
 sim::sph::ParticleState CudaSph::download() const
 {
     const Device& d = *m_device;
-    const auto position = d.current.position.download(), velocity = d.current.velocity.download();
-    const auto state = d.current.state.download();
-    const auto id = d.current.id.download();
-    std::vector<std::size_t> byId(id.size());
-    for (std::size_t s = 0; s < id.size(); ++s)
-    {
-        if (id[s] < 0 || std::size_t(id[s]) >= id.size())
-            throw Error("the GPU particles' numbering is not 0 .. n - 1");
-        byId[std::size_t(id[s])] = s;
-    }
+    const std::size_t n = std::size_t(d.n);
+    const auto position = d.current.position.download(n), velocity = d.current.velocity.download(n);
+    const auto state = d.current.state.download(n);
+    const auto id = d.current.id.download(n);
+    std::vector<std::size_t> byId(n);
+    for (std::size_t s = 0; s < n; ++s)
+        byId[s] = s;
+    std::sort(byId.begin(), byId.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
     sim::sph::ParticleState out;
-    for (std::size_t i = 0; i < byId.size(); ++i)
+    for (std::size_t s : byId)
     {
-        const std::size_t s = byId[i];
         const Eigen::Vector3d x =
             d.settings.boxLowM + Eigen::Vector3d(position[s].x, position[s].y, position[s].z);
         // The CPU's wall depth is -1 where unknown (and unused in the fluid).
         out.add(x, state[s].x, state[s].y, position[s].w != sph::kFluid, std::max(-1.0f, position[s].w),
                 state[s].z);
         out.velocity.back() = Eigen::Vector3d(velocity[s].x, velocity[s].y, velocity[s].z);
+        out.boundary.back() = std::uint8_t(velocity[s].w);
+        out.id.back() = id[s];
     }
     return out;
+}
+
+sim::sph::SphStepperFactory cudaSphStepperFactory()
+{
+    return [](const sim::sph::SphSolver& solver) { return std::make_unique<CudaSph>(solver); };
 }
 
 std::size_t CudaSph::deviceBytes() const

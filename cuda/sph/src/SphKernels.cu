@@ -1,4 +1,4 @@
-#include "SphKernels.cuh"
+#include "SphDevice.cuh"
 
 #include "vsim/cuda_common/CudaCheck.h"
 
@@ -10,136 +10,6 @@
 namespace vsim::cuda::sph {
 namespace {
 
-constexpr int kThreads = 128; // 2-3 % faster than 256 on the H100 (RESULTS.md, 2026-11-27)
-int blocks(int n)
-{
-    return (n + kThreads - 1) / kThreads;
-}
-
-__device__ float mixtureDensity(const SphParams& p, float s)
-{
-    return p.restDensity * (1.0f - s) + p.gasDensity * s;
-}
-__device__ float mixtureViscosity(const SphParams& p, float s)
-{
-    return p.viscosity * (1.0f - s) + p.gasViscosity * s;
-}
-__device__ float stiffness(const SphParams& p, float s)
-{
-    return p.soundSpeed * p.soundSpeed * mixtureDensity(p, s) / p.gamma;
-}
-/// Tait (FluidModel::pressure).
-__device__ float pressureOf(const SphParams& p, float rho, float s)
-{
-    return stiffness(p, s) * (powf(rho / mixtureDensity(p, s), p.gamma) - 1.0f);
-}
-/// FluidModel::densityAt.
-__device__ float densityAt(const SphParams& p, float pressurePa, float s)
-{
-    return mixtureDensity(p, s) * powf(1.0f + pressurePa / stiffness(p, s), 1.0f / p.gamma);
-}
-/// The quartic kernel's W(r) (QuarticKernel::value), in its factored form norm (2 - q)^2 (1/6 + q/6 - 5/32
-/// q^2), as on the CPU: near q = 2, where W is slightly negative, the expanded polynomial cancels to a
-/// rounding error of either sign, and a wall particle exactly 2h from the fluid took the fluid's pressure or
-/// kept its own by that sign, differently on the two sides.
-__device__ float kernelValue(const SphParams& p, float r)
-{
-    const float q = r * p.invH;
-    if (q >= 2.0f)
-        return 0.0f;
-    const float a = 2.0f - q;
-    return p.wNorm * a * a * (1.0f / 6.0f + q / 6.0f - 5.0f / 32.0f * q * q);
-}
-/// dW/dr / r: grad_i W = this times rij (QuarticKernel::gradient); -9/4 + 19/8 q - 5/8 q^2 factored as
-/// 5/8 (2 - q) (q - 1.8), exactly 0 at the support's edge.
-__device__ float gradientFactor(const SphParams& p, float r)
-{
-    const float q = r * p.invH;
-    if (r <= 0.0f || q >= 2.0f)
-        return 0.0f;
-    return p.gradNorm * 0.625f * (2.0f - q) * (q - 1.8f);
-}
-
-/// The neighbour loops tell walls from fluid by the position record they load anyway (SphKernels.cuh).
-__device__ bool isWall(float4 position)
-{
-    return position.w != kFluid;
-}
-
-__device__ void cellOf(const SphParams& p, float4 x, int c[3])
-{
-    const float xs[3] = {x.x, x.y, x.z};
-    for (int a = 0; a < 3; ++a)
-        c[a] = min(max(int(floorf(xs[a] / p.cell)), 0), p.dims[a] - 1);
-}
-
-/// f(j, xj, rx, ry, rz, r, r2) for every particle j != i within the support of particle i (xj its position
-/// record, rij = x_i - x_j, m; r = |rij|, r2 = r^2). With `cellFluid` (fluid particles per cell) only the
-/// cells that hold fluid are scanned: the wall particles' pass, whose sums run over the fluid alone (most
-/// walls see none).
-template <class F>
-__device__ void forEachNeighbour(const SphParams& p, const SphArrays& a, const unsigned* cellStart,
-                                 const unsigned* cellEnd, int i, F&& f, const unsigned* cellFluid = nullptr)
-{
-    const float4 xi = a.position[i];
-    int c[3];
-    cellOf(p, xi, c);
-    for (int dz = -2; dz <= 2; ++dz)
-    {
-        const int z = c[2] + dz;
-        if (z < 0 || z >= p.dims[2])
-            continue;
-        // How far the particle lies from this layer of cells, and then from each row: the run along x is cut
-        // to the support's chord there (the rows in the corners of the 5 x 5 block are skipped or short).
-        const float gz = fmaxf(0.0f, fmaxf(z * p.cell - xi.z, xi.z - (z + 1) * p.cell));
-        for (int dy = -2; dy <= 2; ++dy)
-        {
-            const int y = c[1] + dy;
-            if (y < 0 || y >= p.dims[1])
-                continue;
-            const float gy = fmaxf(0.0f, fmaxf(y * p.cell - xi.y, xi.y - (y + 1) * p.cell));
-            const float chord2 = p.support2 - gy * gy - gz * gz;
-            if (chord2 <= 0.0f)
-                continue;
-            const float chord = sqrtf(chord2);
-            // The cells along x within the chord are consecutive in the sorted order: one run.
-            const int x0 = max(int(floorf((xi.x - chord) / p.cell)), 0);
-            const int x1 = min(int(floorf((xi.x + chord) / p.cell)), p.dims[0] - 1);
-            const unsigned row = unsigned(p.dims[0]) * rowOf(p, y, z);
-            unsigned begin = 0xffffffffu, end = 0;
-            for (int x = x0; x <= x1; ++x)
-            {
-                if (cellFluid && __ldg(&cellFluid[row + unsigned(x)]) == 0u)
-                    continue;
-                const unsigned s = __ldg(&cellStart[row + unsigned(x)]),
-                               e = __ldg(&cellEnd[row + unsigned(x)]);
-                if (e > s)
-                    begin = min(begin, s), end = max(end, e);
-            }
-            for (unsigned j = begin; j < end; ++j)
-            {
-                if (int(j) == i)
-                    continue;
-                const float4 xj = __ldg(&a.position[j]);
-                const float rx = xi.x - xj.x, ry = xi.y - xj.y, rz = xi.z - xj.z;
-                const float r2 = rx * rx + ry * ry + rz * rz;
-                if (r2 < p.support2 && r2 > 0.0f)
-                    f(int(j), xj, rx, ry, rz, sqrtf(r2), r2);
-            }
-        }
-    }
-}
-
-/// The largest value over a warp, then one atomicMax per warp (non-negative floats as unsigned bit patterns).
-__device__ void warpMax(unsigned* target, float value)
-{
-    unsigned bits = __float_as_uint(fmaxf(value, 0.0f));
-    for (int offset = 16; offset > 0; offset /= 2)
-        bits = max(bits, __shfl_down_sync(0xffffffffu, bits, offset));
-    if ((threadIdx.x & 31) == 0 && bits > 0)
-        atomicMax(target, bits);
-}
-
 __global__ void cellKeysKernel(SphParams p, SphArrays a, int n, unsigned* keys, int* order,
                                unsigned* cellFluid, SphReductions* r)
 {
@@ -147,6 +17,12 @@ __global__ void cellKeysKernel(SphParams p, SphArrays a, int n, unsigned* keys, 
     if (i >= n)
         return;
     const float4 x = a.position[i];
+    order[i] = i;
+    if (x.w == kRemoved) // sorted past every cell, then dropped
+    {
+        keys[i] = p.removedKey;
+        return;
+    }
     if (!(x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f && x.x <= p.boxHigh[0] && x.y <= p.boxHigh[1] &&
           x.z <= p.boxHigh[2]))
         if (atomicExch(&r->escaped, 1u) == 0u)
@@ -154,7 +30,6 @@ __global__ void cellKeysKernel(SphParams p, SphArrays a, int n, unsigned* keys, 
     int c[3];
     cellOf(p, x, c);
     keys[i] = unsigned(c[0]) + unsigned(p.dims[0]) * rowOf(p, c[1], c[2]);
-    order[i] = i;
     if (!isWall(x))
         atomicAdd(&cellFluid[keys[i]], 1u);
 }
@@ -190,6 +65,8 @@ __global__ void wallPressureKernel(SphParams p, SphArrays a, SphRatesArrays rate
     if (t >= count)
         return;
     const int i = walls[t];
+    if (!isWall(a.position[i])) // a buffer particle of an open boundary (launchImpose)
+        return;
     // A wall particle's rates are zero; its viscosity rides in G's w for the fluid's rates (SphKernels.cuh).
     rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
     rates.densityRate[i] = 0.0f;
@@ -316,7 +193,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                              continuity += vg * vr;     // V_j vij . grad W
                              // delta-SPH: psi . grad W with psi = -2 (rho_j / rho0_j - rho_i / rho0_i)
                              // rij / r^2 - (G_i + G_j), so psi . rij = -2 (...) - (G_i + G_j) . rij.
-                             if (!wallJ && p.diffusion > 0.0f)
+                             if (!wallJ && vj.w == 0.0f && p.diffusion > 0.0f) // fluid j only
                                  diffusion +=
                                      vg * (-2.0f * (dj.w - relativeI) -
                                            ((gi.x + gj.x) * rx + (gi.y + gj.y) * ry + (gi.z + gj.z) * rz));
@@ -357,9 +234,12 @@ __global__ void kickDriftKernel(SphArrays a, SphRatesArrays rates, float dt, int
     if (isWall(x))
         return;
     float4 v = a.velocity[i];
-    const float4 acc = rates.acceleration[i];
-    v.x += 0.5f * dt * acc.x, v.y += 0.5f * dt * acc.y, v.z += 0.5f * dt * acc.z;
-    a.velocity[i] = v;
+    if (v.w == 0.0f) // not a buffer particle: those drift with their imposed velocity
+    {
+        const float4 acc = rates.acceleration[i];
+        v.x += 0.5f * dt * acc.x, v.y += 0.5f * dt * acc.y, v.z += 0.5f * dt * acc.z;
+        a.velocity[i] = v;
+    }
     x.x += dt * v.x, x.y += dt * v.y, x.z += dt * v.z;
     a.position[i] = x;
 }
@@ -376,7 +256,7 @@ __global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float
         a.state[i] = state;
         float4 v = a.velocity[i];
         const float4 x = a.position[i];
-        const bool fluid = !isWall(x);
+        const bool fluid = !isWall(x) && v.w == 0.0f; // neither a wall nor in a buffer
         if (fluid)
         {
             const float4 acc = rates.acceleration[i];
@@ -458,7 +338,8 @@ namespace {
 struct IsFluidParticle
 {
     const float4* position;
-    __device__ bool operator()(int i) const { return position[i].w == kFluid; }
+    const float4* velocity;
+    __device__ bool operator()(int i) const { return position[i].w == kFluid && velocity[i].w == 0.0f; }
 };
 } // namespace
 
@@ -466,7 +347,7 @@ std::size_t partitionScratchBytes(int n)
 {
     std::size_t bytes = 0;
     VSIM_CUDA_CHECK(cub::DevicePartition::If(nullptr, bytes, thrust::counting_iterator<int>(0), (int*)nullptr,
-                                             (int*)nullptr, n, IsFluidParticle{nullptr}));
+                                             (int*)nullptr, n, IsFluidParticle{nullptr, nullptr}));
     return bytes;
 }
 
@@ -474,7 +355,7 @@ void launchPartition(const SphArrays& a, int n, int* indices, int* selected, voi
                      std::size_t scratchBytes)
 {
     VSIM_CUDA_CHECK(cub::DevicePartition::If(scratch, scratchBytes, thrust::counting_iterator<int>(0),
-                                             indices, selected, n, IsFluidParticle{a.position}));
+                                             indices, selected, n, IsFluidParticle{a.position, a.velocity}));
 }
 
 void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n)

@@ -27,6 +27,7 @@ struct SphParams
     int tilesY;          ///< tiles along y: ceil(dims[1] / tile)
     float boxHigh[3];    ///< m from the low corner: beyond it (or below 0) a particle has escaped
     float betaMax;       ///< the no-slip extrapolation's cap (SphRates.cpp)
+    unsigned removedKey; ///< the cell key of a removed particle: past every cell's
 };
 
 /// The number of the row of cells (y, z): rows are numbered tile by tile (tile x tile rows, y fastest
@@ -42,10 +43,11 @@ __device__ inline unsigned rowOf(const SphParams& p, int y, int z)
 
 /// Device pointers of the particle arrays in sorted order, packed so that a neighbour costs few 16-byte
 /// loads: position (m) with w = the wall depth (m, >= 0) at a wall particle of known depth, -2 at one
-/// without, -1 in the fluid; velocity (m/s, w unused); state = (density kg/m^3, mass kg, void fraction,
-/// pressure Pa).
-/// The position record's w besides a wall depth (>= 0).
-constexpr float kFluid = -1.0f, kWallOfUnknownDepth = -2.0f;
+/// without, -1 in the fluid and the open boundaries' buffers; velocity (m/s) with w = k + 1 at a particle in
+/// the buffer of open boundary k, 0 elsewhere; state = (density kg/m^3, mass kg, void fraction, pressure Pa).
+/// The position record's w besides a wall depth (>= 0); kRemoved at a particle an open boundary let out this
+/// step (its key sorts it past the kept ones, and the step drops it).
+constexpr float kFluid = -1.0f, kWallOfUnknownDepth = -2.0f, kRemoved = -3.0f;
 
 struct SphArrays
 {
@@ -78,12 +80,14 @@ void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* key
                     unsigned* cellFluid, SphReductions* r);
 void launchGather(const SphArrays& from, const SphArrays& to, const int* order, int n);
 void launchCellRanges(const unsigned* sortedKeys, int n, unsigned* cellStart, unsigned* cellEnd);
-/// The fluid particles' indices first, then the walls' (`selected` receives the fluid count): the passes that
-/// run over one kind launch a thread per particle of it, so that no warp idles on the other kind.
+/// The fluid particles' indices first, then the others' (walls and buffers; `selected` receives the fluid
+/// count): the passes that run over one kind launch a thread per particle of it, so that no warp idles on the
+/// other kind.
 std::size_t partitionScratchBytes(int n);
 void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch,
                      std::size_t scratchBytes);
-/// The walls' pressure (their `count` indices), and their rates zeroed (G's w: their viscosity).
+/// The walls' pressure (the `count` indices of walls and buffers; the buffers are passed over), and their
+/// rates zeroed (G's w: their viscosity).
 void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
                         const unsigned* cellStart, const unsigned* cellEnd, const unsigned* cellFluid,
                         const int* walls, int count);
@@ -99,5 +103,46 @@ void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, 
 /// below -throughWallM).
 void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt,
                 float throughWallM, int n, SphReductions* r);
+
+/// The open boundaries (OpenBoundary.h) as the kernels see them, at most kMaxOpenBoundaries.
+constexpr int kMaxOpenBoundaries = 8;
+struct OpenBoundaryParams
+{
+    float centre[3]; ///< m from the box's corner
+    float normal[3]; ///< unit, into the domain
+    float radius, equivalentRadius; ///< the disk's; R_k of the parabolic profile (m)
+    int velocityPrescribed, parabolic;
+    int joins;        ///< a fluid particle leaving through it joins its buffer (else it leaves the domain)
+    float speedScale; ///< this step's Q(t) / C_k (m/s): velocity prescribed
+    float pressure;   ///< this step's prescribed pressure (Pa): pressure prescribed
+};
+struct OpenBoundaryArgs
+{
+    int count = 0;
+    float depth = 0.0f; ///< the buffers' depth (m)
+    int capacity = 0;   ///< particles the arrays hold
+    OpenBoundaryParams b[kMaxOpenBoundaries];
+};
+/// What the exchange and the imposition count in a step (zeroed by the caller each step).
+struct OpenBoundaryTallies
+{
+    double inflowKg[kMaxOpenBoundaries], outflowKg[kMaxOpenBoundaries];
+    double flux[kMaxOpenBoundaries];        ///< sum V v . n / depth over the buffer (m^3/s into the domain)
+    double pressureSum[kMaxOpenBoundaries]; ///< Pa, over its members
+    double members[kMaxOpenBoundaries];
+    unsigned created, removed, overflow;
+};
+
+/// The exchange after the drift (OpenBoundaries::exchange): a buffer particle that crossed into the domain
+/// becomes fluid and a copy of it, numbered firstId + its slot, is appended at n + slot a depth behind; one
+/// past the buffer's far end is removed; a fluid particle that left through a disk joins that buffer or is
+/// removed. Copies beyond the capacity set `overflow`.
+void launchExchange(const SphArrays& a, const OpenBoundaryArgs& boundaries, int n, int firstId,
+                    OpenBoundaryTallies* tallies);
+/// The buffers' values (OpenBoundaries::impose) for the `count` particles listed in `others` (walls and
+/// buffers: the walls are passed over), their rates zeroed, and the tallies of flux and pressure.
+void launchImpose(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
+                  const OpenBoundaryArgs& boundaries, const unsigned* cellStart, const unsigned* cellEnd,
+                  const int* others, int count, OpenBoundaryTallies* tallies);
 
 } // namespace vsim::cuda::sph

@@ -65,6 +65,12 @@ double OpenBoundaries::prescribedFlowRate(std::size_t k, double timeS) const
     return b.flowRateM3S * ramp * b.waveform.factorAt(timeS);
 }
 
+double OpenBoundaries::prescribedPressure(std::size_t k, double timeS, double flowRate) const
+{
+    const OpenBoundary& b = m_boundaries[k];
+    return b.pressurePa * b.waveform.factorAt(timeS) + b.resistancePaSM3 * -flowRate; // on the outflow
+}
+
 void OpenBoundaries::initialize(const ParticleState& particles, double depthM, double spacingM)
 {
     const std::size_t count = m_boundaries.size();
@@ -150,7 +156,7 @@ void OpenBoundaries::impose(ParticleState& particles, const NeighbourGrid& grid,
         if (b.prescribed == OpenBoundary::Prescribed::Velocity)
             speedScale[k] = prescribedFlowRate(k, timeS) / m_calibration[k];
         else // the resistance acts on the last step's outflow
-            pressure[k] = b.pressurePa * b.waveform.factorAt(timeS) + b.resistancePaSM3 * -m_flowRate[k];
+            pressure[k] = prescribedPressure(k, timeS, m_flowRate[k]);
     }
     const int n = int(particles.size());
 #pragma omp parallel for schedule(dynamic, 256)

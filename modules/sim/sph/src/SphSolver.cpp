@@ -155,6 +155,38 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_initialFluidMass = fluidMass();
     updateRates(0.0);
     m_stepS = stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl);
+    m_stepper.reset(), m_stale = false, m_pendingS = 0.0;
+    if (m_stepperFactory)
+    {
+        m_stepper = m_stepperFactory(*this);
+        // Sampled where the particles come back (every m_syncEvery steps), each sample weighted by its time.
+        m_sections.sampleEveryCall(), m_wallLoads.sampleEveryCall();
+    }
+}
+
+const ParticleState& SphSolver::particles() const
+{
+    if (m_stepper && m_stale)
+        m_particles = m_stepper->download(), m_stale = false;
+    return m_particles;
+}
+
+StepOutcome SphSolver::stepElsewhere()
+{
+    const std::string guard = m_stepper->step();
+    m_timeS = m_stepper->timeS(), m_stepS = m_stepper->lastStepS(), m_pendingS += m_stepS, m_stale = true;
+    ++m_steps;
+    if (!guard.empty())
+        return StepOutcome::guard(guard);
+    if (m_steps % m_syncEvery == 0 || m_timeS >= m_endTimeS)
+    {
+        const ParticleState& p = particles();
+        m_grid->build(p.position);
+        m_sections.sample(p, m_fluid, m_timeS, m_pendingS);
+        m_wallLoads.sample(p, *m_grid, m_fluid, m_spacingM, m_timeS, m_pendingS);
+        m_pendingS = 0.0;
+    }
+    return {};
 }
 
 SphStepSettings SphSolver::stepSettings() const
@@ -171,10 +203,11 @@ SphStepSettings SphSolver::stepSettings() const
 
 long double SphSolver::fluidMass() const
 {
+    const ParticleState& p = particles();
     long double mass = 0.0;
-    for (std::size_t i = 0; i < m_particles.size(); ++i)
-        if (m_particles.isFluid(i))
-            mass += m_particles.mass[i];
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.isFluid(i))
+            mass += p.mass[i];
     return mass;
 }
 
@@ -188,6 +221,8 @@ void SphSolver::updateRates(double timeS)
 
 StepOutcome SphSolver::step(RunStatus&, const Progress&)
 {
+    if (m_stepper)
+        return stepElsewhere();
     const double dt = std::min(stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl), m_endTimeS - m_timeS);
     const ParticleState before = m_particles;
     const SphRates ratesBefore = m_rates;
@@ -293,7 +328,7 @@ void SphSolver::absorbTracer()
 
 SimulationData SphSolver::snapshot() const
 {
-    const ParticleState& p = m_particles;
+    const ParticleState& p = particles();
     std::vector<std::size_t> byId(p.size());
     for (std::size_t i = 0; i < p.size(); ++i)
         byId[i] = i;
@@ -320,7 +355,7 @@ SimulationData SphSolver::snapshot() const
 
 std::map<std::string, double> SphSolver::metrics() const
 {
-    const ParticleState& p = m_particles;
+    const ParticleState& p = particles();
     double fluid = 0.0, speed = 0.0, density = 0.0, energy = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i)
         if (p.isFluid(i))
@@ -336,18 +371,19 @@ std::map<std::string, double> SphSolver::metrics() const
                                           {"kinetic_energy_j", energy},    {"fluid_mass_kg", double(fluidMass())}};
     if (m_openBoundaries.empty() && !(m_absorptionDistanceM > 0.0))
         return metrics;
-    metrics["inflow_kg"] = double(m_ledger.totalInflow());
-    metrics["outflow_kg"] = double(m_ledger.totalOutflow());
-    metrics["absorbed_kg"] = double(m_ledger.absorbedKg);
+    const MassLedger& ledger = massLedger();
+    metrics["inflow_kg"] = double(ledger.totalInflow());
+    metrics["outflow_kg"] = double(ledger.totalOutflow());
+    metrics["absorbed_kg"] = double(ledger.absorbedKg);
     metrics["fluid_mass_change_kg"] = double(fluidMass() - m_initialFluidMass);
     const std::vector<OpenBoundary>& boundaries = m_openBoundaries.boundaries();
     for (std::size_t k = 0; k < boundaries.size(); ++k)
     {
         std::string key = boundaries[k].name;
         std::replace(key.begin(), key.end(), ' ', '_');
-        metrics[key + "_flow_rate_ml_s"] = 1e6 * m_openBoundaries.flowRate(k);
-        metrics[key + "_pressure_pa"] = m_openBoundaries.pressure(k);
-        metrics[key + "_net_inflow_kg"] = double(m_ledger.inflowKg[k] - m_ledger.outflowKg[k]);
+        metrics[key + "_flow_rate_ml_s"] = 1e6 * (m_stepper ? m_stepper->flowRate(k) : m_openBoundaries.flowRate(k));
+        metrics[key + "_pressure_pa"] = m_stepper ? m_stepper->pressure(k) : m_openBoundaries.pressure(k);
+        metrics[key + "_net_inflow_kg"] = double(ledger.inflowKg[k] - ledger.outflowKg[k]);
     }
     return metrics;
 }

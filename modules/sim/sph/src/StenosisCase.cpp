@@ -19,7 +19,7 @@
 namespace vsim::sim::sph {
 namespace {
 
-constexpr double kSoundSpeed = 4.0, kRampS = 0.010, kAverageFromS = 0.015, kEndTimeS = 0.025;
+constexpr double kAverageFromS = 0.015, kEndTimeS = 0.025;
 
 } // namespace
 
@@ -62,33 +62,57 @@ std::vector<WallPoint> StenosisPipe::wallPoints(double stepMm, int around) const
     return points;
 }
 
-StenosisPipeFlow runStenosisPipe(const Progress& progress)
+namespace {
+constexpr double kRingStepMm = 0.05;
+constexpr int kAround = 8;
+} // namespace
+
+ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
 {
-    const StenosisPipe pipe;
+    ParameterSet parameters =
+        detail::caseParameters(pipe.spacingMm, pipe.densityKgM3, pipe.viscosityPaS, pipe.soundSpeedMS);
+    parameters.set("end_time_s", kEndTimeS);
+    parameters.set("cfl", kStenosisCfl);
+    return parameters;
+}
+
+namespace {
+detail::PipeShape pipeShape(const StenosisPipe& pipe)
+{
     detail::PipeShape shape;
     shape.spacingMm = pipe.spacingMm, shape.lengthMm = pipe.lengthMm, shape.bufferDepthMm = 4.0 * pipe.spacingMm;
     shape.radiusMm = [pipe](double xMm) { return pipe.radiusAtMm(xMm); };
-    ParameterSet parameters = detail::caseParameters(pipe.spacingMm, pipe.densityKgM3, pipe.viscosityPaS, kSoundSpeed);
-    parameters.set("end_time_s", kEndTimeS);
-    parameters.set("cfl", kStenosisCfl);
-    SphSolver solver;
-    solver.setOpenBoundaries(detail::pipeEnds(shape, pipe.radiusMm + 0.5 * pipe.spacingMm, pipe.flowRateM3S(), kRampS));
-    StenosisPipeFlow flow;
-    flow.arcMm = pipe.sectionArcsMm();
+    return shape;
+}
+} // namespace
+
+ParticleSet stenosisPipeParticles(const StenosisPipe& pipe)
+{
+    return detail::pipeParticles(pipeShape(pipe));
+}
+
+void configureStenosisPipe(const StenosisPipe& pipe, SphSolver& solver, int sectionEvery, int wallEvery)
+{
+    solver.setOpenBoundaries(
+        detail::pipeEnds(pipeShape(pipe), pipe.radiusMm + 0.5 * pipe.spacingMm, pipe.flowRateM3S(), pipe.rampS));
     std::vector<CrossSection> sections;
-    for (double x : flow.arcMm)
+    for (double x : pipe.sectionArcsMm())
         sections.push_back({Eigen::Vector3d(1e-3 * x, 0.0, 0.0), Eigen::Vector3d::UnitX(),
                             1e-3 * (pipe.radiusMm + pipe.spacingMm), 1e-3 * pipe.sectionThicknessMm()});
-    solver.setSections(sections, kAverageFromS);
-    constexpr double kRingStepMm = 0.05;
-    constexpr int kAround = 8;
-    solver.setWallPoints(pipe.wallPoints(kRingStepMm, kAround), kAverageFromS, 10);
-    const SolverRun run = detail::runCase("sph-stenosis", solver, detail::pipeParticles(shape), parameters, progress);
-    flow.flows = solver.sections().averages();
+    solver.setSections(sections, kAverageFromS, sectionEvery);
+    solver.setWallPoints(pipe.wallPoints(kRingStepMm, kAround), kAverageFromS, wallEvery);
+}
+
+StenosisPipeFlow stenosisPipeFlow(const StenosisPipe& pipe, const SectionSeries& sections,
+                                  const WallLoadSeries& wallLoads, std::map<std::string, double> metrics)
+{
+    StenosisPipeFlow flow;
+    flow.arcMm = pipe.sectionArcsMm();
+    flow.flows = sections.averages();
     flow.figures = stenosisFigures(flow.arcMm, flow.flows, pipe.compareMm);
-    flow.metrics = run.metrics;
-    const std::vector<WallLoadAverage> loads = solver.wallLoads().averages();
-    const std::vector<WallPoint>& points = solver.wallLoads().points();
+    flow.metrics = std::move(metrics);
+    const std::vector<WallLoadAverage> loads = wallLoads.averages();
+    const std::vector<WallPoint>& points = wallLoads.points();
     double throatSum = 0.0;
     int throatRings = 0;
     for (std::size_t ring = 0; ring * kAround < loads.size(); ++ring)
@@ -105,6 +129,15 @@ StenosisPipeFlow runStenosisPipe(const Progress& progress)
     return flow;
 }
 
+StenosisPipeFlow runStenosisPipe(const StenosisPipe& pipe, const Progress& progress)
+{
+    SphSolver solver;
+    configureStenosisPipe(pipe, solver);
+    const SolverRun run =
+        detail::runCase("sph-stenosis", solver, stenosisPipeParticles(pipe), stenosisPipeParameters(pipe), progress);
+    return stenosisPipeFlow(pipe, solver.sections(), solver.wallLoads(), run.metrics);
+}
+
 namespace detail {
 
 ValidationResult stenosisCase(const Progress& progress)
@@ -112,7 +145,7 @@ ValidationResult stenosisCase(const Progress& progress)
     ValidationResult result;
     result.name = "sph-stenosis";
     const StenosisPipe pipe;
-    const StenosisPipeFlow flow = runStenosisPipe(progress);
+    const StenosisPipeFlow flow = runStenosisPipe(StenosisPipe{}, progress);
     const StenosisFigures& figures = flow.figures;
     const double analyticRatio = std::pow(pipe.radiusMm / pipe.radiusAtMm(pipe.throatAtMm), 2);
     result.figures.push_back({"throat's position (mm)", figures.throatArcMm, pipe.throatAtMm, pipe.sectionStepMm + 1e-9, "mm"});

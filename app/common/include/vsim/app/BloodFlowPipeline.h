@@ -49,6 +49,8 @@ struct BloodFlowSetup
     std::vector<std::string> given; ///< parameter names the user set
     double rampS = -1.0;            ///< the inflow's rise from rest; < 0: 8 L / c0 (L the path's length)
     int frames = 20;                ///< frames over the run, when the run control asks for none
+    /// auto (the GPU when there is one and it runs the case), cpu or cuda (refused without a device)
+    std::string backend = "auto";
 };
 
 struct BloodFlowRun
@@ -68,6 +70,8 @@ struct BloodFlowRun
     /// against the vertex: past an open end's plane).
     TriangleMesh wallSurface;
     std::vector<std::string> warnings;
+    std::string backend = "cpu"; ///< what stepped it: cpu (double precision) or cuda (single)
+    std::string device;          ///< the GPU, with cuda
 };
 
 /// The setup as a form declares it (the workstation's Flow > Blood Flow Parameters): inlet_mean_velocity_m_s,

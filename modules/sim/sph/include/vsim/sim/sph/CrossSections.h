@@ -62,6 +62,7 @@ public:
     double averagedTime() const { return m_weight; } ///< s
     /// Forgets the samples (a new run).
     void reset() { m_weight = 0.0, m_schedule.reset(), m_sums.clear(), m_largestPeak.clear(); }
+    void sampleEveryCall() { m_schedule.everyCall(); } ///< the caller keeps the cadence (SampleSchedule.h)
 
 private:
     std::vector<CrossSection> m_sections;

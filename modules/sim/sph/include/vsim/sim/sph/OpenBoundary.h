@@ -91,10 +91,17 @@ public:
     /// Where x (m) lies against boundary k: s = (x - c) . n (m; < 0 behind it) and whether it is within the disk.
     double signedDistance(std::size_t k, const Eigen::Vector3d& x) const { return (x - m_boundaries[k].centreM).dot(m_boundaries[k].normal); }
     bool withinDisk(std::size_t k, const Eigen::Vector3d& x) const;
+    /// What another stepper (the GPU's) needs to impose the same values, after initialize(): the buffers' depth
+    /// (m), boundary k's profile calibration C_k (m^2) and equivalent radius R_k (m), its flow rate Q(t) (m^3/s;
+    /// velocity prescribed) and pressure p0 waveform(t) + R_out Q_out for the last outflow `flowRate` (Pa).
+    double depth() const { return m_depthM; }
+    double calibration(std::size_t k) const { return m_calibration.at(k); }
+    double equivalentRadius(std::size_t k) const { return m_equivalentRadius.at(k); }
+    double prescribedFlowRate(std::size_t k, double timeS) const;
+    double prescribedPressure(std::size_t k, double timeS, double flowRate) const;
 
 private:
     double shape(std::size_t k, const Eigen::Vector3d& x) const;
-    double prescribedFlowRate(std::size_t k, double timeS) const;
 
     std::vector<OpenBoundary> m_boundaries;
     std::vector<double> m_calibration;      ///< C_k = sum shape V / depth, m^2

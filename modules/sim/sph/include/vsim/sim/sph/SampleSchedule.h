@@ -27,6 +27,9 @@ public:
         return weight;
     }
     void reset() { m_pending = 0.0, m_calls = 0; }
+    /// Every call takes its sample from now on (a caller that already samples at its own cadence: SphSolver with
+    /// another stepper).
+    void everyCall() { m_every = 1; }
 
 private:
     double m_from = 0.0, m_pending = 0.0; ///< s; m_pending: since the last sample taken

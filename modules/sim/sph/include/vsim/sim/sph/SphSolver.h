@@ -23,6 +23,7 @@
 #include "vsim/sim/sph/ParticleState.h"
 #include "vsim/sim/sph/QuarticKernel.h"
 #include "vsim/sim/sph/SphRates.h"
+#include "vsim/sim/sph/SphStepper.h"
 
 #include <memory>
 
@@ -74,6 +75,16 @@ public:
         m_wallLoads = WallLoadSeries(std::move(points), fromTimeS, everySteps);
     }
     const WallLoadSeries& wallLoads() const { return m_wallLoads; }
+    /// Steps with another stepper of the same algorithm (the GPU's), made at the next initialize(); the
+    /// particles come back every `syncEvery` steps (and for frames and metrics), when the sections and the wall
+    /// loads take their samples (each then at that cadence, whatever setSections / setWallPoints asked), each
+    /// weighted by the time since the last. A guard then ends the run where it
+    /// stopped (no step back). An empty factory: the CPU steps.
+    void setStepper(SphStepperFactory factory, int syncEvery = 10)
+    {
+        m_stepperFactory = std::move(factory), m_syncEvery = std::max(1, syncEvery);
+    }
+    bool steppedElsewhere() const { return m_stepper != nullptr; }
     void initialize(const SimulationInput& input, const ParameterSet& parameters) override;
     RunAxis axis() const override { return {"time", "s", m_endTimeS}; }
     double position() const override { return m_timeS; }
@@ -87,14 +98,15 @@ public:
     /// domain), <name>_pressure_pa and <name>_net_inflow_kg.
     std::map<std::string, double> metrics() const override;
 
-    const ParticleState& particles() const { return m_particles; }
+    /// The particles now (fetched from the stepper when it has stepped since).
+    const ParticleState& particles() const;
     const FluidModel& fluid() const { return m_fluid; }
     const QuarticKernel& kernel() const { return *m_kernel; }
     const OpenBoundaries& openBoundaries() const { return m_openBoundaries; }
     SphStepSettings stepSettings() const;
-    const MassLedger& massLedger() const { return m_ledger; }
+    const MassLedger& massLedger() const { return m_stepper ? m_stepper->massLedger() : m_ledger; }
     /// The pressure of every particle (Pa), in the particles' current order.
-    std::vector<double> pressure() const { return pressures(m_particles, m_fluid); }
+    std::vector<double> pressure() const { return pressures(particles(), m_fluid); }
 
 private:
     void updateRates(double timeS);
@@ -102,11 +114,18 @@ private:
     long double fluidMass() const;
     /// Removes the tracer particles within the absorption distance of a wall (the start's wall distances).
     void absorbTracer();
+    /// A step on the other stepper, and every m_syncEvery steps the particles back and the samples.
+    StepOutcome stepElsewhere();
 
     FluidModel m_fluid;
     std::unique_ptr<QuarticKernel> m_kernel;
     std::unique_ptr<NeighbourGrid> m_grid;
-    ParticleState m_particles;
+    mutable ParticleState m_particles; ///< with a stepper: the last fetched (m_stale: it has stepped since)
+    mutable bool m_stale = false;
+    SphStepperFactory m_stepperFactory;
+    std::unique_ptr<SphStepper> m_stepper;
+    int m_syncEvery = 10;
+    double m_pendingS = 0.0; ///< stepped since the last samples (s)
     SphRates m_rates;
     OpenBoundaries m_openBoundaries;
     SectionSeries m_sections;

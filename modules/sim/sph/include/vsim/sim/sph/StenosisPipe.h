@@ -7,6 +7,8 @@
 // step along the axis, each a slab two lattice spacings thick, hold the time-averaged flow (CrossSections.h).
 // mm for the geometry (the patient frame's unit), SI for the flow.
 
+#include "vsim/core/Parameters.h"
+#include "vsim/core/ParticleSet.h"
 #include "vsim/core/Progress.h"
 #include "vsim/sim/sph/CrossSections.h"
 #include "vsim/sim/sph/StenosisFigures.h"
@@ -25,6 +27,8 @@ struct StenosisPipe
     double lengthMm = 5.6;                            ///< inlet at x = 0, outlet at x = length
     double throatAtMm = 2.4, halfLengthMm = 0.8;      ///< the narrowing's centre and half its length
     double meanSpeedMS = 0.05;                        ///< the inflow's mean (Re 24 upstream, 48 in the throat)
+    double rampS = 0.010;                             ///< the inflow's rise from rest (over 4 L / c0 = 6.4 ms)
+    double soundSpeedMS = 4.0;                        ///< the numerical sound speed c0 (80 x the throat's mean)
     double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
     double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
     double sectionStepMm = 0.2;
@@ -52,8 +56,20 @@ struct StenosisPipeFlow
     double throatWallShearPa = 0.0; ///< the rings' TAWSS in the throat's section slab, averaged
 };
 
-/// Runs the SPH case (the stenosis Courant number, 25 ms, averaged from 15 ms: about 26,600 particles and 5,400
-/// steps; the wall loads sampled every 10th step). Throws vsim::Error when the run stops early (a guard) and vsim::Cancelled when cancelled.
-StenosisPipeFlow runStenosisPipe(const Progress& progress = {});
+/// The problem for another stepper (the GPU's, cuda/sph): the solver's parameters (the stenosis Courant number, 25
+/// ms), the particles (the pipe's lattice, walls and the two ends' buffers), and the open ends, sections (sampled
+/// every `sectionEvery` steps) and wall points (every `wallEvery` steps) set on `solver` before its initialize().
+ParameterSet stenosisPipeParameters(const StenosisPipe& pipe);
+ParticleSet stenosisPipeParticles(const StenosisPipe& pipe);
+class SphSolver;
+void configureStenosisPipe(const StenosisPipe& pipe, SphSolver& solver, int sectionEvery = 1, int wallEvery = 10);
+/// The figures from the time averages of a run (its sections and wall loads) and the run's metrics.
+StenosisPipeFlow stenosisPipeFlow(const StenosisPipe& pipe, const SectionSeries& sections,
+                                  const WallLoadSeries& wallLoads, std::map<std::string, double> metrics);
+
+/// Runs the SPH case on the CPU (the stenosis Courant number, 25 ms, averaged from 15 ms; at the default 0.1 mm
+/// about 26,600 particles and 5,400 steps; the wall loads sampled every 10th step). Throws vsim::Error when the run
+/// stops early (a guard) and vsim::Cancelled when cancelled.
+StenosisPipeFlow runStenosisPipe(const StenosisPipe& pipe = {}, const Progress& progress = {});
 
 } // namespace vsim::sim::sph

@@ -69,6 +69,7 @@ public:
     /// The time averages per point (zeros before any sample).
     std::vector<WallLoadAverage> averages() const;
     void reset() { m_schedule.reset(), m_sums.clear(); }
+    void sampleEveryCall() { m_schedule.everyCall(); } ///< the caller keeps the cadence (SampleSchedule.h)
 
 private:
     std::vector<WallPoint> m_points;

@@ -1,0 +1,114 @@
+// The sph-stenosis problem (StenosisPipe.h) on the GPU (cuda/sph, single precision): the same particles, open
+// ends, sections and wall points as the CPU's runStenosisPipe, stepped by CudaSph; every `every`-th step the
+// particles come back to the host, where the sections and the wall loads take their samples, each weighted by the
+// time since the last (the CPU samples the sections every step and the wall every 10th). Writes the JSON that
+// bench_sph_openfoam reads with --sph-in (give it the same --spacing) and prints a summary line.
+//
+//   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s]
+//
+// Exit 0 with "SKIP" without a device, 1 when a guard stops the run.
+
+#include "StenosisJson.h"
+
+#include "vsim/core/Error.h"
+#include "vsim/cuda_common/DeviceInfo.h"
+#include "vsim/cuda_sph/CudaSph.h"
+#include "vsim/sim/sph/SphSolver.h"
+#include "vsim/sim/sph/StenosisPipe.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+using namespace vsim;
+using namespace vsim::sim::sph;
+
+int main(int argc, char** argv)
+try
+{
+    if (argc < 3)
+    {
+        std::fprintf(stderr, "usage: bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s]\n");
+        return 2;
+    }
+    if (vsim::cuda::devices().empty())
+    {
+        std::printf("SKIP: no CUDA device\n");
+        return 0;
+    }
+    StenosisPipe pipe;
+    pipe.spacingMm = std::stod(argv[1]);
+    const std::string out = argv[2];
+    const int every = argc > 3 ? std::stoi(argv[3]) : 10;
+    if (argc > 4)
+        pipe.soundSpeedMS = std::stod(argv[4]);
+    const auto start = std::chrono::steady_clock::now();
+    SphSolver solver;
+    configureStenosisPipe(pipe, solver, 1, 1); // sampled here every `every` steps, weighted by the time between
+    SimulationInput input;
+    input.data["particles"] = stenosisPipeParticles(pipe);
+    const ParameterSet parameters = stenosisPipeParameters(pipe);
+    solver.initialize(input, parameters);
+    SectionSeries sections = solver.sections();
+    WallLoadSeries wallLoads = solver.wallLoads();
+    NeighbourGrid grid(solver.kernel().support());
+    cuda::CudaSph gpu(solver);
+    const double endS = parameters.get("end_time_s");
+    long steps = 0;
+    double pending = 0.0, largestVariation = 0.0, largestAtS = 0.0, stepping = 0.0, sampling = 0.0;
+    while (gpu.timeS() < endS)
+    {
+        const auto stepStart = std::chrono::steady_clock::now();
+        if (const std::string guard = gpu.step(); !guard.empty())
+            throw Error("a guard stopped the GPU stenosis run: " + guard);
+        ++steps;
+        pending += gpu.lastStepS();
+        if (gpu.largestDensityVariation() > largestVariation)
+            largestVariation = gpu.largestDensityVariation(), largestAtS = gpu.timeS();
+        const auto stepEnd = std::chrono::steady_clock::now();
+        stepping += std::chrono::duration<double>(stepEnd - stepStart).count();
+        if (steps % every != 0)
+            continue;
+        const ParticleState particles = gpu.download();
+        grid.build(particles.position);
+        sections.sample(particles, solver.fluid(), gpu.timeS(), pending);
+        wallLoads.sample(particles, grid, solver.fluid(), 1e-3 * pipe.spacingMm, gpu.timeS(), pending);
+        pending = 0.0;
+        sampling += std::chrono::duration<double>(std::chrono::steady_clock::now() - stepEnd).count();
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::map<std::string, double> metrics = {{"steps", double(steps)}, {"particles", double(gpu.particleCount())},
+                                             {"largest_density_variation", largestVariation}};
+    const StenosisPipeFlow flow = stenosisPipeFlow(pipe, sections, wallLoads, metrics);
+    const nlohmann::json wall = {{"arc_mm", flow.wallArcMm}, {"tawss_pa", flow.wallShearPa},
+                                 {"pressure_pa", flow.wallPressurePa}, {"throat_tawss_pa", flow.throatWallShearPa}};
+    const double inflow = double(gpu.massLedger().totalInflow());
+    const nlohmann::json report = {
+        {"sections", bench::sectionsJson(flow.arcMm, flow.flows)}, {"wall", wall}, {"seconds", seconds},
+        {"stepping_seconds", stepping}, {"sampling_seconds", sampling}, {"steps", steps},
+        {"particles", gpu.particleCount()}, {"largest_density_variation", largestVariation},
+        {"largest_density_variation_at_s", largestAtS}, {"precision", "single (GPU)"},
+        {"device", vsim::cuda::deviceSummary()}, {"spacing_mm", pipe.spacingMm}, {"sound_speed_m_s", pipe.soundSpeedMS},
+        {"sampled_every_steps", every}, {"inflow_kg", inflow},
+        {"outflow_kg", double(gpu.massLedger().totalOutflow())}};
+    std::ofstream(out) << report.dump(1) << '\n';
+    std::printf("{\"case\": \"sph-stenosis on the GPU\", \"spacing_mm\": %.3f, \"sound_speed_m_s\": %.1f, "
+                "\"particles\": %zu, \"steps\": %ld, "
+                "\"seconds\": %.1f, \"stepping_seconds\": %.1f, \"particle_steps_per_second\": %.4g, "
+                "\"peak_ratio\": %.4f, \"pressure_drop_pa\": %.3f, \"mean_ratio\": %.4f, \"area_ratio\": %.4f, "
+                "\"flow_rate_ratio\": %.4f, \"throat_tawss_pa\": %.3f, \"largest_density_variation\": %.4g, "
+                "\"at_s\": %.4f}\n",
+                pipe.spacingMm, pipe.soundSpeedMS, gpu.particleCount(), steps, seconds, stepping,
+                double(gpu.particleCount()) * double(steps) / stepping, flow.figures.peakRatio,
+                flow.figures.pressureDropPa, flow.figures.meanRatio, flow.figures.areaRatio,
+                flow.figures.flowRateRatio, flow.throatWallShearPa, largestVariation, largestAtS);
+    return 0;
+}
+catch (const std::exception& error)
+{
+    std::fprintf(stderr, "bench_sph_cuda_stenosis: %s\n", error.what());
+    return 1;
+}
