@@ -232,7 +232,7 @@ BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& 
 namespace {
 
 /// The stepper the setup asks for: the CPU's (an empty factory), or the GPU's when asked (refused without one) or on
-/// auto with a device; every blood-flow case (inlets and outlets, no tracer or absorption) runs on both.
+/// auto with a device, where a case the GPU refuses (more than 32 open ends) falls back to the CPU with a warning.
 sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, BloodFlowRun& flow)
 {
     if (requested != "auto" && requested != "cpu" && requested != "cuda")
@@ -242,8 +242,21 @@ sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, Blood
 #ifdef VSIM_HAVE_CUDA
     if (!cuda::devices().empty())
     {
-        flow.backend = "cuda", flow.device = cuda::deviceSummary();
-        return cuda::cudaSphStepperFactory();
+        flow.device = cuda::deviceSummary();
+        if (requested == "cuda")
+            return cuda::cudaSphStepperFactory();
+        return [&flow](const sim::sph::SphSolver& solver) -> std::unique_ptr<sim::sph::SphStepper>
+        {
+            try
+            {
+                return cuda::cudaSphStepperFactory()(solver);
+            }
+            catch (const Error& refused)
+            {
+                flow.warnings.push_back(std::string("ran on the CPU: ") + refused.what());
+                return nullptr;
+            }
+        };
     }
     const std::string unavailable = "there is no CUDA device";
 #else
@@ -414,6 +427,9 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     if (control.frameEvery <= 0.0 && control.frameEverySteps <= 0)
         control.frameEvery = endTime / std::max(1, setup.frames);
     flow.run = sim::runSolver(solver, input, parameters, control, progress.subRange(0.05, 1.0));
+    flow.backend = solver.steppedElsewhere() ? "cuda" : "cpu";
+    if (flow.backend == "cpu")
+        flow.device.clear();
     flow.sections = solver.sections().averages();
     flow.sectionLargestPeaks = solver.sections().largestPeaks();
     flow.averagedS = solver.sections().averagedTime();

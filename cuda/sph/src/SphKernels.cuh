@@ -105,7 +105,7 @@ void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& ra
                 float throughWallM, int n, SphReductions* r);
 
 /// The open boundaries (OpenBoundary.h) as the kernels see them, at most kMaxOpenBoundaries.
-constexpr int kMaxOpenBoundaries = 8;
+constexpr int kMaxOpenBoundaries = 32;
 struct OpenBoundaryParams
 {
     float centre[3]; ///< m from the box's corner

@@ -157,10 +157,14 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_stepS = stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl);
     m_stepper.reset(), m_stale = false, m_pendingS = 0.0;
     if (m_stepperFactory)
-    {
         m_stepper = m_stepperFactory(*this);
+    if (m_stepper)
+    {
         // Sampled where the particles come back (every m_syncEvery steps), each sample weighted by its time.
         m_sections.sampleEveryCall(), m_wallLoads.sampleEveryCall();
+        // The mass balance against the stepper's own masses (the GPU's are single precision).
+        m_stale = true;
+        m_initialFluidMass = fluidMass();
     }
 }
 

@@ -28,7 +28,7 @@ public:
     /// Copies the CPU solver's particles (after its initialize()), fluid, kernel, open boundaries and step
     /// settings to the GPU and computes the rates at the start. Throws vsim::Error without a CUDA device, when
     /// memory runs out, or for a solver with periodic axes, tracer absorption, an inlet of tracer or more than
-    /// eight open boundaries.
+    /// 32 open boundaries.
     explicit CudaSph(const sim::sph::SphSolver& solver);
     ~CudaSph() override;
     CudaSph(const CudaSph&) = delete;

@@ -79,7 +79,7 @@ public:
     /// particles come back every `syncEvery` steps (and for frames and metrics), when the sections and the wall
     /// loads take their samples (each then at that cadence, whatever setSections / setWallPoints asked), each
     /// weighted by the time since the last. A guard then ends the run where it
-    /// stopped (no step back). An empty factory: the CPU steps.
+    /// stopped (no step back). An empty factory, or one that returns none: the CPU steps.
     void setStepper(SphStepperFactory factory, int syncEvery = 10)
     {
         m_stepperFactory = std::move(factory), m_syncEvery = std::max(1, syncEvery);

@@ -32,7 +32,8 @@ public:
     virtual double pressure(std::size_t k) const = 0;
 };
 
-/// Makes a stepper from an initialized solver; throws vsim::Error when it cannot run the solver's case.
+/// Makes a stepper from an initialized solver; throws vsim::Error when it cannot run the solver's case, or returns
+/// none to leave the steps to the CPU.
 using SphStepperFactory = std::function<std::unique_ptr<SphStepper>(const SphSolver&)>;
 
 } // namespace vsim::sim::sph
