@@ -1,0 +1,141 @@
+// SphSolver::setStepper (issue 18: the GPU's stepper under the run driver) without a GPU: the stepper here is itself
+// a CPU SphSolver of the same case (the sph-stenosis pipe at 0.2 mm, its inflow ramped over 1 ms, 3 ms), so the run
+// through it must be the plain run's exactly: the same steps and time, the same particles in every frame (fetched
+// from the stepper for frames and metrics), the same mass through the boundaries and flow rates, the ledger balanced
+// against the stepper's own masses. A factory that returns none leaves the steps to the CPU. The GPU's own stepper
+// is checked against the CPU in tests/gpu/tst_gpu_sph.
+
+#include "vsim/sim/common/RunDriver.h"
+#include "vsim/sim/sph/SphSolver.h"
+#include "vsim/sim/sph/StenosisPipe.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace vsim;
+using namespace vsim::sim::sph;
+
+namespace {
+
+/// A stepper that steps a second CPU solver of the same case.
+class CpuSolverStepper : public SphStepper
+{
+public:
+    CpuSolverStepper(const StenosisPipe& pipe, const SimulationInput& input, const ParameterSet& parameters)
+    {
+        configureStenosisPipe(pipe, m_solver);
+        m_solver.initialize(input, parameters);
+    }
+    std::string step() override
+    {
+        const double before = m_solver.position();
+        RunStatus status;
+        const sim::StepOutcome outcome = m_solver.step(status, {});
+        m_lastStepS = m_solver.position() - before;
+        ++steps;
+        return outcome.kind == sim::StepOutcome::Kind::Guard ? outcome.message : std::string();
+    }
+    double timeS() const override { return m_solver.position(); }
+    double lastStepS() const override { return m_lastStepS; }
+    ParticleState download() const override
+    {
+        ++downloads;
+        return m_solver.particles();
+    }
+    const MassLedger& massLedger() const override { return m_solver.massLedger(); }
+    double flowRate(std::size_t k) const override { return m_solver.openBoundaries().flowRate(k); }
+    double pressure(std::size_t k) const override { return m_solver.openBoundaries().pressure(k); }
+
+    long steps = 0;
+    mutable long downloads = 0;
+
+private:
+    SphSolver m_solver;
+    double m_lastStepS = 0.0;
+};
+
+struct Case
+{
+    StenosisPipe pipe;
+    SimulationInput input;
+    ParameterSet parameters{sphParameters()};
+    Case()
+    {
+        pipe.spacingMm = 0.2, pipe.rampS = 0.001;
+        parameters = stenosisPipeParameters(pipe);
+        parameters.set("end_time_s", 0.003);
+        input.data["particles"] = stenosisPipeParticles(pipe);
+    }
+};
+
+} // namespace
+
+class TestSphStepper : public QObject
+{
+    Q_OBJECT
+private slots:
+    void runThroughAStepperIsThePlainRun()
+    {
+        const Case c;
+        sim::RunControl control;
+        control.frameEverySteps = 70; // not a multiple of the fetch cadence
+        SphSolver plain;
+        configureStenosisPipe(c.pipe, plain);
+        const SolverRun a = sim::runSolver(plain, c.input, c.parameters, control);
+        CpuSolverStepper* stepper = nullptr;
+        SphSolver outer;
+        configureStenosisPipe(c.pipe, outer);
+        outer.setStepper(
+            [&](const SphSolver&)
+            {
+                auto made = std::make_unique<CpuSolverStepper>(c.pipe, c.input, c.parameters);
+                stepper = made.get();
+                return made;
+            });
+        const SolverRun b = sim::runSolver(outer, c.input, c.parameters, control);
+        QVERIFY(outer.steppedElsewhere() && stepper);
+        QVERIFY(a.status.complete() && b.status.complete());
+        QCOMPARE(b.steps, a.steps);
+        QCOMPARE(stepper->steps, b.steps);
+        QCOMPARE(b.frames.size(), a.frames.size());
+        for (std::size_t f = 0; f < a.frames.size(); ++f)
+        {
+            QCOMPARE(b.frames[f].step, a.frames[f].step);
+            QCOMPARE(b.frames[f].position, a.frames[f].position);
+            const auto& pa = std::get<ParticleSet>(a.frames[f].data);
+            const auto& pb = std::get<ParticleSet>(b.frames[f].data);
+            QCOMPARE(pb.positionsMm.size(), pa.positionsMm.size());
+            for (std::size_t i = 0; i < pa.positionsMm.size(); ++i)
+                QVERIFY(pb.positionsMm[i] == pa.positionsMm[i]);
+            QVERIFY(pb.fields.at("pressure_pa") == pa.fields.at("pressure_pa"));
+        }
+        for (const char* key : {"particles", "inflow_kg", "outflow_kg", "fluid_mass_change_kg", "inlet_flow_rate_ml_s",
+                                "outlet_pressure_pa", "largest_density_variation"})
+            QVERIFY2(b.metrics.at(key) == a.metrics.at(key), key);
+        const double inflow = b.metrics.at("inflow_kg");
+        const double imbalance = inflow - b.metrics.at("outflow_kg") - b.metrics.at("absorbed_kg") -
+                                 b.metrics.at("fluid_mass_change_kg");
+        qInfo("%ld steps on the stepper, %ld fetches (every 10th step, the frames and the metrics), %zu frames; "
+              "inflow %.6g kg, imbalance %.3g of it",
+              stepper->steps, stepper->downloads, b.frames.size(), inflow, imbalance / inflow);
+        QVERIFY(inflow > 0.0 && std::abs(imbalance) <= 1e-12 * inflow);
+        QVERIFY(stepper->downloads >= b.steps / 10 && stepper->downloads <= b.steps / 10 + long(b.frames.size()) + 5);
+    }
+
+    void aFactoryThatReturnsNoneLeavesTheCpu()
+    {
+        const Case c;
+        SphSolver solver;
+        configureStenosisPipe(c.pipe, solver);
+        solver.setStepper([](const SphSolver&) { return std::unique_ptr<SphStepper>(); });
+        sim::RunControl control;
+        control.maxSteps = 20;
+        const SolverRun run = sim::runSolver(solver, c.input, c.parameters, control);
+        QVERIFY(!solver.steppedElsewhere());
+        QCOMPARE(run.steps, 20L);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSphStepper)
+#include "tst_sph_stepper.moc"
