@@ -20,6 +20,17 @@ namespace vsim::sim::sph {
 namespace {
 
 constexpr double kAverageFromS = 0.015, kEndTimeS = 0.025;
+constexpr double kRingStepMm = 0.05; // the wall rings' spacing along the axis
+constexpr int kAround = 8;           // points on each ring
+
+/// The pipe's lattice, walls and the two ends' buffers (four spacings deep).
+detail::PipeShape pipeShape(const StenosisPipe& pipe)
+{
+    detail::PipeShape shape;
+    shape.spacingMm = pipe.spacingMm, shape.lengthMm = pipe.lengthMm, shape.bufferDepthMm = 4.0 * pipe.spacingMm;
+    shape.radiusMm = [pipe](double xMm) { return pipe.radiusAtMm(xMm); };
+    return shape;
+}
 
 } // namespace
 
@@ -62,11 +73,6 @@ std::vector<WallPoint> StenosisPipe::wallPoints(double stepMm, int around) const
     return points;
 }
 
-namespace {
-constexpr double kRingStepMm = 0.05;
-constexpr int kAround = 8;
-} // namespace
-
 ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
 {
     ParameterSet parameters =
@@ -75,16 +81,6 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
     parameters.set("cfl", kStenosisCfl);
     return parameters;
 }
-
-namespace {
-detail::PipeShape pipeShape(const StenosisPipe& pipe)
-{
-    detail::PipeShape shape;
-    shape.spacingMm = pipe.spacingMm, shape.lengthMm = pipe.lengthMm, shape.bufferDepthMm = 4.0 * pipe.spacingMm;
-    shape.radiusMm = [pipe](double xMm) { return pipe.radiusAtMm(xMm); };
-    return shape;
-}
-} // namespace
 
 ParticleSet stenosisPipeParticles(const StenosisPipe& pipe)
 {
