@@ -158,7 +158,21 @@ int writePhantomSeries(const Arguments& arguments, const Progress& progress)
     options.seed = std::uint64_t(quantityOption(arguments, "seed", "", double(options.seed)));
     options.blurMm = quantityOption(arguments, "blur", "mm", options.blurMm);
     options.aneurysmDiameterMm = quantityOption(arguments, "max-diameter", "mm", options.aneurysmDiameterMm);
-    options.stenosisPercent = quantityOption(arguments, "stenosis", "%", options.stenosisPercent);
+    if (arguments.hasOption("stenosis")) // A[,B]: the second a milder blockage downstream (patient style)
+    {
+        const std::string text = arguments.option("stenosis");
+        const std::size_t comma = text.find(',');
+        options.stenosisPercent = quantityText(text.substr(0, comma), "stenosis", "%");
+        if (comma != std::string::npos)
+            options.secondStenosisPercent = quantityText(text.substr(comma + 1), "stenosis", "%");
+    }
+    options.vesselDiameterMm = quantityOption(arguments, "vessel-diameter", "mm", options.vesselDiameterMm);
+    options.stenosisLengthMm = quantityOption(arguments, "stenosis-length", "mm", options.stenosisLengthMm);
+    if ((options.secondStenosisPercent > 0.0 || arguments.hasOption("vessel-diameter") ||
+         arguments.hasOption("stenosis-length")) &&
+        (kind != dicom::PhantomKind::Stenosis || options.style != dicom::PhantomStyle::Patient))
+        throw UsageError("a second stenosis, --vessel-diameter and --stenosis-length belong to the patient-style "
+                         "stenosis phantom");
     dicom::CtSeriesDescription description = dicom::phantomSeriesDescription(kind);
     description.transferSyntax = dicom::transferSyntaxFromName(arguments.option("transfer-syntax", "explicit-le"));
     description.enhancedMultiFrame = arguments.hasOption("enhanced");

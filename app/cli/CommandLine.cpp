@@ -117,9 +117,11 @@ int runCommandLine(const std::vector<std::string>& words, const Progress& progre
 
 double quantityOption(const Arguments& arguments, const std::string& option, const std::string& unit, double fallback)
 {
-    if (!arguments.hasOption(option))
-        return fallback;
-    const std::string text = arguments.option(option);
+    return arguments.hasOption(option) ? quantityText(arguments.option(option), option, unit) : fallback;
+}
+
+double quantityText(const std::string& text, const std::string& option, const std::string& unit)
+{
     std::size_t used = 0;
     double number = 0.0;
     try

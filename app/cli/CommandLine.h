@@ -61,5 +61,7 @@ int runCommandLine(const std::vector<std::string>& words, const Progress& progre
 /// A number with an optional unit suffix that must be `unit` ("1.5" or "1.5mm" for mm); `fallback` when the
 /// option is absent. Throws UsageError for another unit and vsim::Error for text that is not a number.
 double quantityOption(const Arguments& arguments, const std::string& option, const std::string& unit, double fallback);
+/// The same for a piece of an option's text (a list's item).
+double quantityText(const std::string& text, const std::string& option, const std::string& unit);
 
 } // namespace vsim::cli

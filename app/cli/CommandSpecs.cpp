@@ -40,14 +40,18 @@ std::vector<CommandSpec> declareCommands()
          importIntoStudy},
         {"phantom", 1, 1,
          {required("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),
-          value("max-diameter"), value("stenosis"), value("blur"), value("style"), value("psf-fwhm"), flag("enhanced")},
+          value("max-diameter"), value("stenosis"), value("blur"), value("style"), value("psf-fwhm"), flag("enhanced"),
+          value("vessel-diameter"), value("stenosis-length")},
          "phantom <aaa|stenosis|hepatic-tree|bifurcation> --out <dir> [--style patient|analytic] [--size 512x512x400]\n"
          "        [--spacing 0.7,0.7,1.0] [--noise HU] [--seed 1] [--psf-fwhm mm] [--blur mm] [--max-diameter 55]\n"
-         "        [--stenosis 50] [--transfer-syntax explicit-le|implicit-le|jpeg-lossless|jpeg-ls|rle] [--enhanced]\n"
+         "        [--stenosis 50[,B]] [--vessel-diameter 6] [--stenosis-length mm]\n"
+         "        [--transfer-syntax explicit-le|implicit-le|jpeg-lossless|jpeg-ls|rle] [--enhanced]\n"
          "    write a CT phantom series (<dir>/dicom) with truth.json and truth-label.nrrd into a new or empty folder;\n"
          "    patient (default; bifurcation: analytic): anatomy, PSF, correlated noise, thrombus, calcium, the scanner\n"
          "    drawn from the seed unless --psf-fwhm / --noise are given; analytic: the exact partial-volume model\n"
-         "    (--blur sigma, --noise 20) for tests that need an exact case",
+         "    (--blur sigma, --noise 20) for tests that need an exact case; the patient-style stenosis takes its\n"
+         "    lumen diameter, the stenosis's length (else drawn, 20-28 mm) and a second, milder blockage B 12 mm\n"
+         "    past the first (the thesis's hand case)",
          writePhantomSeries},
         {"segment", 0, 0,
          {kStudy, value("image"), repeatable("seed"), value("target"), repeatable("exclude"), repeatable("stop"),

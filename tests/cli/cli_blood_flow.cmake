@@ -1,9 +1,9 @@
 # Blood flow (issue 18) as a user runs it: a small analytic stenosis phantom (a 6 mm artery with a 50 % diameter
 # stenosis) through segment, skeleton and centerline, then `simulate sph` at a coarse spacing for 20 ms after a 5 ms
-# ramp (the plumbing: the inlet and the outlet at the vessel's ends, the particle frames written to --out and kept as
-# a Run in the study, the mass ledger balanced, the wall loads averaged over 12.5-20 ms on the lumen surface's
-# vertices and kept as a "Wall loads (SPH)" surface, and in the report). Bad input: an unknown unit, a profile, the CUDA backend without a device, a
-# folder that is not VascuSim's.
+# ramp (the plumbing: the inlet and the outlet at the vessel's ends, the outlet's gauge pressure as the reference,
+# the particle frames written to --out and kept as a Run in the study, the mass ledger balanced, the wall loads
+# averaged over 12.5-20 ms on the lumen surface's vertices and kept as a "Wall loads (SPH)" surface, and in the
+# report). Bad input: an unknown unit, a profile, the CUDA backend without a device, a folder that is not VascuSim's.
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(study ${WORK}/flow.vsim)
@@ -13,8 +13,8 @@ run_cli(0 ignored segment --study ${study})
 run_cli(0 ignored skeleton --study ${study})
 run_cli(0 ignored centerline --study ${study})
 
-run_cli(0 flow simulate sph --study ${study} --inlet 0.1m/s --spacing 1.0mm --ramp 0.005s --until 0.02s --frames 4
-        --out ${WORK}/run)
+run_cli(0 flow simulate sph --study ${study} --inlet 0.1m/s --outlet 50mmHg --spacing 1.0mm --ramp 0.005s --until 0.02s
+        --frames 4 --out ${WORK}/run)
 string(JSON stopped GET "${flow}" run_status stopped_by)
 string(JSON boundaries LENGTH "${flow}" boundaries)
 string(JSON inlet GET "${flow}" boundaries 0 prescribed)
@@ -32,6 +32,15 @@ if(NOT stopped STREQUAL "end" OR NOT boundaries EQUAL 2 OR NOT inlet STREQUAL "f
    OR NOT wall_id MATCHES "^surface-" OR wall_sampled LESS 100 OR NOT wall_tawss GREATER 0
    OR NOT backend MATCHES "^(cpu \\(double|cuda \\(single)")
     message(FATAL_ERROR "simulate sph: stopped by '${stopped}', ${boundaries} boundaries, ${frames} frames, run '${run_id}'\n${flow}")
+endif()
+# The outlets' 50 mmHg (6,666 Pa) is the reference pressure: reported on the pressures, left out of the equation of
+# state (as an absolute level in it the buffers compressed the fluid: the run stopped at the density guard at 0.13 ms).
+string(JSON outlet_pa GET "${flow}" metrics outlet_0_pressure_pa)
+string(JSON density_variation GET "${flow}" metrics largest_density_variation)
+string(JSON downstream_pa GET "${flow}" stenosis downstream_pressure_pa value)
+if(outlet_pa LESS 6665 OR outlet_pa GREATER 6667 OR density_variation GREATER 0.01 OR downstream_pa LESS 6666)
+    message(FATAL_ERROR "simulate sph --outlet 50mmHg: outlet ${outlet_pa} Pa, density variation ${density_variation}, "
+            "downstream section ${downstream_pa} Pa\n${flow}")
 endif()
 # The ledger: inflow - outflow - absorbed = the fluid's mass change, to rounding.
 string(JSON outflow GET "${flow}" metrics outflow_kg)

@@ -330,6 +330,15 @@ void PhantomOptions::validate() const
     if (!(stenosisPercent >= 0.0 && stenosisPercent <= 95.0))
         throw Error("stenosis must be 0..95 percent",
                     {{"option", "stenosis"}, {"value", std::to_string(stenosisPercent)}});
+    if (!(secondStenosisPercent >= 0.0 && secondStenosisPercent <= 95.0))
+        throw Error("the second stenosis must be 0..95 percent",
+                    {{"option", "stenosis"}, {"value", std::to_string(secondStenosisPercent)}});
+    if (!(vesselDiameterMm >= 1.0 && vesselDiameterMm <= 40.0))
+        throw Error("the vessel diameter must be 1..40 mm",
+                    {{"option", "vessel-diameter"}, {"value", std::to_string(vesselDiameterMm)}});
+    if (!(stenosisLengthMm == 0.0 || (stenosisLengthMm >= 2.0 && stenosisLengthMm <= 100.0)))
+        throw Error("the stenosis length must be 2..100 mm (0: drawn from the seed)",
+                    {{"option", "stenosis-length"}, {"value", std::to_string(stenosisLengthMm)}});
 }
 
 VolumeGeometry phantomGeometry(const PhantomOptions& options)

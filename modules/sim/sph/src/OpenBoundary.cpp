@@ -68,7 +68,7 @@ double OpenBoundaries::prescribedFlowRate(std::size_t k, double timeS) const
 double OpenBoundaries::prescribedPressure(std::size_t k, double timeS, double flowRate) const
 {
     const OpenBoundary& b = m_boundaries[k];
-    return b.pressurePa * b.waveform.factorAt(timeS) + b.resistancePaSM3 * -flowRate; // on the outflow
+    return b.pressurePa * b.waveform.factorAt(timeS) + b.resistancePaSM3 * -flowRate - m_referencePa; // on the outflow
 }
 
 void OpenBoundaries::initialize(const ParticleState& particles, double depthM, double spacingM)

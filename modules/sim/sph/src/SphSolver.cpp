@@ -38,6 +38,10 @@ std::vector<ParameterSpec> sphParameters()
         {"sound_speed_m_s", "Numerical sound speed", "m/s", 10.0, 0.01, 1e4, "Fluid",
          "at least 10 times the largest flow speed keeps the density within about 1 % (Monaghan 1994)",
          K::Real},
+        {"reference_pressure_pa", "Reference pressure", "Pa", 0.0, -1e6, 1e6, "Fluid",
+         "the gauge pressure the rest density stands for (blood flow: the outlets' level): the dynamics work on the "
+         "pressure above it, every pressure reported adds it back, and prescribed pressures are gauge (FluidModel.h)",
+         K::Real},
         {"delta_sph", "Density diffusion", "", 0.1, 0.0, 1.0, "Numerics",
          "delta of the delta-SPH term (Molteni & Colagrossi 2009; 0 switches it off)", K::Real},
         {"cfl", "Courant number", "", 0.2, 0.01, 1.0, "Numerics", "the adaptive step's safety factor",
@@ -90,6 +94,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_fluid.viscosity = parameters.get("viscosity_pa_s");
     m_fluid.soundSpeed = parameters.get("sound_speed_m_s");
     m_fluid.densityDiffusion = parameters.get("delta_sph");
+    m_fluid.referencePressurePa = parameters.get("reference_pressure_pa");
     m_fluid.bodyForce = {parameters.get("body_force_x_m_s2"), parameters.get("body_force_y_m_s2"),
                          parameters.get("body_force_z_m_s2")};
     m_fluid.bodyForceFrequency = parameters.get("body_force_frequency_hz");
@@ -123,7 +128,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
         const double voidFraction =
             isWall || givenVoid == given.fields.end() ? defaultVoid : std::clamp(givenVoid->second[i], 0.0, 0.99);
         const double rho = pressure == given.fields.end() ? m_fluid.mixtureDensity(voidFraction)
-                                                          : m_fluid.densityAt(pressure->second[i], voidFraction);
+                                                          : m_fluid.densityAt(pressure->second[i] - m_fluid.referencePressurePa, voidFraction);
         m_particles.add(x, rho, m_fluid.mixtureDensity(voidFraction) * volume, isWall,
                         depth == given.fields.end() ? -1.0 : depth->second[i] * 1e-3, voidFraction);
         if (vx != given.fields.end() && vy != given.fields.end() && vz != given.fields.end())
@@ -145,6 +150,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_ledger = {};
     m_ledger.inflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
     m_ledger.outflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
+    m_openBoundaries.setReferencePressure(m_fluid.referencePressurePa);
     m_openBoundaries.initialize(m_particles, m_kernel->support(), spacing);
     for (std::size_t i = 0; i < m_particles.size(); ++i) // a buffer holds what its boundary lets in
         if (m_particles.boundary[i])
@@ -349,7 +355,7 @@ SimulationData SphSolver::snapshot() const
         const std::size_t i = byId[k];
         frame.positionsMm[k] = p.position[i] * 1e3;
         const double values[] = {p.velocity[i].norm(), p.velocity[i].x(), p.velocity[i].y(), p.velocity[i].z(),
-                                 m_fluid.pressure(p.density[i], p.voidFraction[i]), p.density[i], p.voidFraction[i],
+                                 m_fluid.reportedPressure(p.density[i], p.voidFraction[i]), p.density[i], p.voidFraction[i],
                                  double(p.wall[i]), double(p.boundary[i]), double(p.tracer[i])};
         for (std::size_t f = 0; f < fields.size(); ++f)
             (*fields[f])[k] = values[f];
@@ -386,7 +392,8 @@ std::map<std::string, double> SphSolver::metrics() const
         std::string key = boundaries[k].name;
         std::replace(key.begin(), key.end(), ' ', '_');
         metrics[key + "_flow_rate_ml_s"] = 1e6 * (m_stepper ? m_stepper->flowRate(k) : m_openBoundaries.flowRate(k));
-        metrics[key + "_pressure_pa"] = m_stepper ? m_stepper->pressure(k) : m_openBoundaries.pressure(k);
+        metrics[key + "_pressure_pa"] =
+            m_fluid.referencePressurePa + (m_stepper ? m_stepper->pressure(k) : m_openBoundaries.pressure(k));
         metrics[key + "_net_inflow_kg"] = double(ledger.inflowKg[k] - ledger.outflowKg[k]);
     }
     return metrics;

@@ -41,10 +41,10 @@ struct BloodFlowSetup
 {
     std::string centerlinesId;
     BloodFlowInlet inlet;
-    double outletPressurePa = 0.0; ///< every outlet
+    double outletPressurePa = 0.0; ///< every outlet (gauge); also the solver's reference pressure unless given
     double compareMm = 6.0;        ///< the stenosis figures' comparison distance (the thesis's hand case: 6 mm)
-    /// The solver's parameters; spacing_mm, sound_speed_m_s, cfl (sim::sph::kStenosisCfl) and end_time_s are chosen
-    /// (below) unless `given` names them.
+    /// The solver's parameters; spacing_mm, sound_speed_m_s, cfl (sim::sph::kStenosisCfl), end_time_s and
+    /// reference_pressure_pa (the outlets' pressure) are chosen (below) unless `given` names them.
     ParameterSet parameters{sim::sph::sphParameters()};
     std::vector<std::string> given; ///< parameter names the user set
     double rampS = -1.0;            ///< the inflow's rise from rest; < 0: 8 L / c0 (L the path's length)
@@ -79,8 +79,8 @@ struct BloodFlowRun
 /// chosen), frames.
 std::vector<ParameterSpec> bloodFlowSetupParameters();
 /// The setup from that form and the solver's parameters (every one counts as given, but the solver's spacing_mm,
-/// end_time_s, sound_speed_m_s and cfl only where they differ from their defaults; the form's spacing and end time
-/// at 0 are chosen).
+/// end_time_s, sound_speed_m_s, cfl and reference_pressure_pa only where they differ from their defaults; the form's
+/// spacing and end time at 0 are chosen).
 BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters);
 
 /// Runs the blood flow of the study's centerlines (their label's lumen) under `control` (without a frame schedule:

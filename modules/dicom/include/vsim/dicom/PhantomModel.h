@@ -74,6 +74,12 @@ struct PhantomOptions
     double blurMm = -1.0;                        ///< partial-volume blur sigma; < 0: half the in-plane spacing
     double aneurysmDiameterMm = 55.0;            ///< aaa: maximum outer lumen diameter of the aneurysm
     double stenosisPercent = 50.0;               ///< stenosis: diameter reduction, percent
+    /// Patient-style stenosis only (the thesis's hand and heart cases): the reference lumen diameter (mm), the
+    /// stenosis's length (mm; 0: drawn from the seed, 20-28 mm) and a second, milder blockage downstream of the
+    /// first (percent, 0: none; the thesis's blockage B).
+    double vesselDiameterMm = 6.0;
+    double stenosisLengthMm = 0.0;
+    double secondStenosisPercent = 0.0;
     std::optional<double> psfFwhmMm;             ///< patient style: in-plane PSF FWHM (mm); drawn from the seed if unset
     std::optional<double> scannerNoiseHu;        ///< patient style: noise (HU); drawn from the seed if unset
     /// Throws vsim::Error naming the option when a value is out of range.

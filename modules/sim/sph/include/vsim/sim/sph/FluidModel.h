@@ -26,6 +26,11 @@ struct FluidModel
     /// cos(2 pi f t) when bodyForceFrequency > 0 (Hz).
     Eigen::Vector3d bodyForce = Eigen::Vector3d::Zero();
     double bodyForceFrequency = 0.0;
+    /// The pressure the rest density stands for (Pa, gauge: the outlets' level). A uniform pressure does not move an
+    /// incompressible flow, and in the equation of state it would compress the fluid by about p / (rho0 c0^2) (50 %
+    /// at 50 mmHg with c0 = 4 m/s): pressure() and densityAt() work on the pressure above it, the dynamics with them,
+    /// and what a run reports is reportedPressure().
+    double referencePressurePa = 0.0;
 
     /// Gravity and the body force at time t (s), m/s^2.
     Eigen::Vector3d externalAcceleration(double timeS) const;
@@ -37,6 +42,11 @@ struct FluidModel
     double pressure(double density, double voidFraction = 0.0) const;
     /// The density whose pressure is `pressurePa` (the inverse of pressure()).
     double densityAt(double pressurePa, double voidFraction = 0.0) const;
+    /// The gauge pressure a run reports (frames, sections, wall loads, boundaries): the reference plus pressure().
+    double reportedPressure(double density, double voidFraction = 0.0) const
+    {
+        return referencePressurePa + pressure(density, voidFraction);
+    }
 };
 
 } // namespace vsim::sim::sph

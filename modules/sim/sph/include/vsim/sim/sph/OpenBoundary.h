@@ -49,7 +49,7 @@ struct OpenBoundary
     Prescribed prescribed = Prescribed::Pressure;
     double flowRateM3S = 0.0;    ///< velocity prescribed: into the domain (> 0) or out of it (< 0)
     bool parabolic = true;       ///< velocity prescribed: parabolic or plug profile
-    double pressurePa = 0.0;     ///< pressure prescribed (gauge, against the rest density's zero)
+    double pressurePa = 0.0;     ///< pressure prescribed (gauge: on the scale FluidModel::reportedPressure gives)
     double resistancePaSM3 = 0.0; ///< pressure prescribed: p = pressurePa + resistance x outflow (Pa s/m^3)
     Waveform waveform;           ///< multiplies the flow rate or the pressure
     double rampS = 0.0;          ///< the flow rate rises as (1 - cos(pi t / ramp)) / 2 over this time (from rest)
@@ -78,6 +78,9 @@ public:
     /// = k + 1 for boundary k) of `depthM` (the support); throws vsim::Error for a boundary without buffer
     /// particles, a normal that is not a unit vector or a buffer index beyond the boundaries.
     void initialize(const ParticleState& particles, double depthM, double spacingM);
+    /// The fluid's reference pressure (FluidModel::referencePressurePa, Pa): the prescribed pressures are gauge, and
+    /// prescribedPressure() and pressure() give them above it.
+    void setReferencePressure(double pressurePa) { m_referencePa = pressurePa; }
     /// The exchange after a drift (see above); `nextId` numbers the particles it creates, `ledger` (sized by
     /// initialize's caller to the boundaries) counts. The caller rebuilds its grid.
     void exchange(ParticleState& particles, int& nextId, MassLedger& ledger) const;
@@ -86,14 +89,16 @@ public:
                 double timeS);
     /// The last imposed flow rate of boundary k into the domain (m^3/s; < 0 out of it), from its buffer particles.
     double flowRate(std::size_t k) const { return m_flowRate.at(k); }
-    /// The last imposed pressure of boundary k (Pa; velocity prescribed: the mean of its buffer particles').
+    /// The last imposed pressure of boundary k (Pa above the reference; velocity prescribed: the mean of its buffer
+    /// particles').
     double pressure(std::size_t k) const { return m_pressure.at(k); }
     /// Where x (m) lies against boundary k: s = (x - c) . n (m; < 0 behind it) and whether it is within the disk.
     double signedDistance(std::size_t k, const Eigen::Vector3d& x) const { return (x - m_boundaries[k].centreM).dot(m_boundaries[k].normal); }
     bool withinDisk(std::size_t k, const Eigen::Vector3d& x) const;
     /// What another stepper (the GPU's) needs to impose the same values, after initialize(): the buffers' depth
     /// (m), boundary k's profile calibration C_k (m^2) and equivalent radius R_k (m), its flow rate Q(t) (m^3/s;
-    /// velocity prescribed) and pressure p0 waveform(t) + R_out Q_out for the last outflow `flowRate` (Pa).
+    /// velocity prescribed) and pressure p0 waveform(t) + R_out Q_out - the reference for the last outflow `flowRate`
+    /// (Pa).
     double depth() const { return m_depthM; }
     double calibration(std::size_t k) const { return m_calibration.at(k); }
     double equivalentRadius(std::size_t k) const { return m_equivalentRadius.at(k); }
@@ -108,6 +113,7 @@ private:
     std::vector<double> m_equivalentRadius; ///< R_k, m
     std::vector<double> m_flowRate, m_pressure;
     double m_depthM = 0.0;
+    double m_referencePa = 0.0; ///< setReferencePressure()
 };
 
 } // namespace vsim::sim::sph
