@@ -144,11 +144,14 @@ std::vector<CommandSpec> declareCommands()
          "             [--compare 6mm] [--frames 20] [--backend auto|cpu|cuda] [--param key=value ...] [--out DIR]\n"
          "    blood flow through the vessels of the study's centerlines (weakly compressible SPH on the lumen label):\n"
          "    the inlet at the largest vessel's end (or NODE; default a mean 0.2 m/s, parabolic, ramped up from rest),\n"
-         "    pressure outlets at the other ends; a Run of particle frames (speed, velocity, pressure) and, along the\n"
-         "    narrowest inlet-outlet path, the stenosis figures (peak and mean velocity ratios at --compare upstream and\n"
+         "    pressure outlets at the other ends (--outlet: their gauge pressure, the level every pressure is reported\n"
+         "    at); a Run of particle frames (speed, velocity, pressure) and, along the narrowest inlet-outlet path, the\n"
+         "    stenosis figures (peak and mean velocity ratios at --compare upstream and\n"
          "    downstream of the throat, the pressure drop and ratio) averaged over the settled second half of the run\n"
          "    (the last waveform cycle); the frame series to DIR. Defaults: 5 particles per inlet radius, a sound speed\n"
-         "    of 10 times the expected peak speed. The waveform file: lines time_s,factor over one cycle",
+         "    of 10 times the expected peak speed and at least what keeps the path's Poiseuille pressure drop within\n"
+         "    0.5 % of the density, an end time five settling times (resistance x compliance) past the ramp. The\n"
+         "    waveform file: lines time_s,factor over one cycle",
          simulateSph},
         {"validate", 1, 1, {},
          "validate <case|fem|network|sph|heat|all>\n"

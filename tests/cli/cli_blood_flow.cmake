@@ -38,7 +38,9 @@ endif()
 string(JSON outlet_pa GET "${flow}" metrics outlet_0_pressure_pa)
 string(JSON density_variation GET "${flow}" metrics largest_density_variation)
 string(JSON downstream_pa GET "${flow}" stenosis downstream_pressure_pa value)
-if(outlet_pa LESS 6665 OR outlet_pa GREATER 6667 OR density_variation GREATER 0.01 OR downstream_pa LESS 6666)
+string(JSON settling GET "${flow}" settling_s) # the vessel's resistance x compliance, s
+if(outlet_pa LESS 6665 OR outlet_pa GREATER 6667 OR density_variation GREATER 0.01 OR downstream_pa LESS 6666
+   OR NOT settling GREATER 0)
     message(FATAL_ERROR "simulate sph --outlet 50mmHg: outlet ${outlet_pa} Pa, density variation ${density_variation}, "
             "downstream section ${downstream_pa} Pa\n${flow}")
 endif()

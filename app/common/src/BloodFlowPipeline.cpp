@@ -319,35 +319,48 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
 
     // The narrowest lumen along the compared path (its inscribed radius on the centerline every spacing, away from the
     // ends, where the image's border cuts the lumen: the centerlines' conical segments do not see a stenosis within a
-    // segment).
+    // segment), and the path's Poiseuille resistance integral, sum ds / r^4 (m^-3), and volume (m^3) from those radii.
     const LabelVolume label = study.loadLabel(labelId);
     const double skip = 2.0 * spacingMm + 1.5 * std::max(compared.radii.front(), compared.radii.back()); // the ends
-    for (double s = skip; s <= compared.length() - skip; s += spacingMm)
+    double resistanceIntegral = 0.0, pathVolumeM3 = 0.0;
+    for (double s = 0.5 * spacingMm; s < compared.length(); s += spacingMm)
     {
         Eigen::Vector3d point, tangent;
         double radius = 0.0;
         compared.at(s, point, tangent, radius);
-        narrowest = std::min(narrowest, std::max(0.5 * spacingMm, inscribedRadiusMm(label, point, 1.5 * radius + spacingMm)));
+        if (s >= skip && s <= compared.length() - skip)
+        {
+            radius = std::max(0.5 * spacingMm, inscribedRadiusMm(label, point, 1.5 * radius + spacingMm));
+            narrowest = std::min(narrowest, radius);
+        }
+        const double ds = 1e-3 * std::min(spacingMm, compared.length() - s + 0.5 * spacingMm), r = 1e-3 * radius;
+        resistanceIntegral += ds / std::pow(r, 4), pathVolumeM3 += std::numbers::pi * r * r * ds;
     }
 
-    // The inflow's scale, the sound speed (10 times the largest speed expected: the inlet's mean speed through the
-    // narrowest section, parabolic) and the times.
+    // The inflow's scale, the sound speed and the times. The sound speed: 10 times the largest speed expected (the
+    // inlet's mean speed through the narrowest section, parabolic), and at least what holds the path's Poiseuille
+    // pressure drop within 0.5 % of the density (slow flow through a long, narrow vessel: there the viscous pressure,
+    // not the speed, compresses a soft fluid).
     const double inletAreaM2 = std::numbers::pi * std::pow(1e-3 * inletRadiusMm, 2);
     const double narrowestAreaM2 = std::numbers::pi * std::pow(1e-3 * narrowest, 2);
-    const double density = parameters.get("density_kg_m3");
-    double expectedPeak = 0.0;
+    sim::sph::FluidModel blood;
+    blood.restDensity = parameters.get("density_kg_m3"), blood.viscosity = parameters.get("viscosity_pa_s");
+    const double density = blood.mixtureDensity(parameters.get("void_fraction"));
+    double expectedPeak = 0.0, viscousDropPa = 0.0, flowRate = 0.0;
     if (setup.inlet.kind == BloodFlowInlet::Kind::Pressure)
         expectedPeak = std::sqrt(2.0 * std::abs(setup.inlet.value - setup.outletPressurePa) / density); // Bernoulli
     else
     {
-        const double flowRate = setup.inlet.kind == BloodFlowInlet::Kind::FlowRate ? setup.inlet.value : setup.inlet.value * inletAreaM2;
+        flowRate = std::abs(setup.inlet.kind == BloodFlowInlet::Kind::FlowRate ? setup.inlet.value : setup.inlet.value * inletAreaM2);
         double largestFactor = 1.0;
         for (const auto& point : setup.inlet.waveform.points)
             largestFactor = std::max(largestFactor, point.second);
-        expectedPeak = 2.0 * std::abs(flowRate) * largestFactor / narrowestAreaM2;
+        expectedPeak = 2.0 * flowRate * largestFactor / narrowestAreaM2;
+        viscousDropPa = 8.0 * blood.mixtureViscosity(parameters.get("void_fraction")) * flowRate * largestFactor *
+                        resistanceIntegral / std::numbers::pi;
     }
     if (!given(setup, "sound_speed_m_s"))
-        parameters.set("sound_speed_m_s", std::max(0.5, 10.0 * expectedPeak));
+        parameters.set("sound_speed_m_s", std::max({0.5, 10.0 * expectedPeak, std::sqrt(viscousDropPa / (0.005 * density))}));
     if (!given(setup, "reference_pressure_pa")) // the outlets' level: pressures reported against the same zero
         parameters.set("reference_pressure_pa", setup.outletPressurePa);
     if (!given(setup, "cfl")) // a stenosis's jet needs the smaller step (SphSolver.h)
@@ -355,14 +368,23 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     const double soundSpeed = parameters.get("sound_speed_m_s");
     const double pathLengthM = 1e-3 * compared.length();
     flow.rampS = setup.rampS >= 0.0 ? setup.rampS : 8.0 * pathLengthM / soundSpeed; // two quarter-wave periods
+    // The weakly compressible vessel settles like a resistor charging a capacitor: its resistance (the Poiseuille
+    // drop over the flow rate) times its compliance (volume / rho c0^2).
+    flow.settlingS = flowRate > 0.0 ? viscousDropPa / flowRate * pathVolumeM3 / (density * soundSpeed * soundSpeed) : 0.0;
     const double period = setup.inlet.waveform.period();
     if (!given(setup, "end_time_s"))
-        parameters.set("end_time_s", period > 0.0 ? flow.rampS + 2.0 * period : 2.0 * flow.rampS);
+        parameters.set("end_time_s", period > 0.0 ? flow.rampS + std::max(2.0 * period, 5.0 * flow.settlingS)
+                                                  : flow.rampS + std::max(flow.rampS, 5.0 * flow.settlingS));
     const double endTime = parameters.get("end_time_s");
     flow.averagedFromS = period > 0.0 ? std::max(0.0, endTime - period) : flow.rampS + 0.5 * std::max(0.0, endTime - flow.rampS);
     if (period <= 0.0 && endTime <= flow.rampS)
         flow.warnings.push_back("the run ends before the inflow has risen (" + std::to_string(flow.rampS) +
                                 " s): the figures are not of a settled flow");
+    else if (flow.averagedFromS < flow.rampS + 3.0 * flow.settlingS)
+        flow.warnings.push_back("the averaging starts " + std::to_string(flow.averagedFromS - flow.rampS) +
+                                " s after the inflow's rise, under three settling times (3 x " +
+                                std::to_string(flow.settlingS) + " s: the vessel's resistance x compliance at this "
+                                "sound speed): the figures may not be of a settled flow");
 
     // The open ends and the particles.
     const double depthMm = 2.0 * parameters.get("smoothing_ratio") * spacingMm; // the kernel's support

@@ -169,13 +169,14 @@ std::string bloodFlowDocument(const BloodFlowRun& flow, const BloodFlowSetup& se
                           {"boundaries", boundaries},
                           {"parameters", parameters},
                           {"ramp_s", flow.rampS},
+                          {"settling_s", flow.settlingS},
                           {"averaged", {{"from_s", flow.averagedFromS}, {"over_s", flow.averagedS}}},
                           {"metrics", flow.run.metrics},
                           {"stenosis", stenosis},
                           {"sections", sections},
                           {"wall_loads", wallLoadsJson(flow.wallSurface)},
                           {"frames", flow.run.frames.size()},
-                          {"precision", "double (CPU)"},
+                          {"precision", flow.backend == "cuda" ? "single (GPU)" : "double (CPU)"},
                           {"warnings", flow.warnings}}
                .dump(2) + "\n";
 }
@@ -187,6 +188,7 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
     for (const ParameterSpec& spec : flow.parameters.specs())
         provenance.parameters[spec.key] = preciseNumberText(flow.parameters.get(spec.key));
     provenance.parameters["ramp_s"] = preciseNumberText(flow.rampS);
+    provenance.parameters["settling_s"] = preciseNumberText(flow.settlingS);
     provenance.parameters["outlet_pressure_pa"] = preciseNumberText(setup.outletPressurePa);
     provenance.parameters["compare_mm"] = preciseNumberText(setup.compareMm);
     provenance.parameters["backend"] = flow.backend;

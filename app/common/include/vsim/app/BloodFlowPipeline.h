@@ -65,6 +65,9 @@ struct BloodFlowRun
     std::optional<sim::sph::StenosisFigures> stenosis;
     ParameterSet parameters{sim::sph::sphParameters()}; ///< as run (the chosen values filled in)
     double rampS = 0.0;
+    /// The compared path's settling time (s): its Poiseuille resistance times its compliance V / (rho c0^2); the
+    /// default end time leaves five of them after the ramp (0 for a pressure inlet).
+    double settlingS = 0.0;
     /// The lumen's surface (mesh/VesselSurface.h, 20,000 vertices at most) with the wall loads averaged with the
     /// sections (sim/sph/WallShear.h): point fields tawss_pa, osi and wall_pressure_pa (NaN where no fluid lies
     /// against the vertex: past an open end's plane).
