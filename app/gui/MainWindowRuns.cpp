@@ -195,7 +195,7 @@ void MainWindow::plotFlowAlongCenterline()
     const QString along = tr("along the centerline from the inlet (mm)");
     m_flowVelocityPlot->setAxes(along, tr("velocity (m/s), time-averaged sections"));
     m_flowVelocityPlot->setCurves({peak, mean});
-    m_flowPressurePlot->setAxes(along, tr("pressure (Pa, against the outlets'), time-averaged"));
+    m_flowPressurePlot->setAxes(along, tr("pressure (Pa, gauge), time-averaged"));
     m_flowPressurePlot->setCurves({pressure});
 }
 

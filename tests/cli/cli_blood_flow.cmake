@@ -59,11 +59,12 @@ if(NOT info MATCHES "Blood flow \\(SPH\\)" OR NOT info MATCHES "Wall loads \\(SP
     message(FATAL_ERROR "the study does not list the blood-flow run:\n${info}")
 endif()
 
-# The report's stenosis section carries the wall loads beside the velocity figures.
+# The report's stenosis section carries the wall loads beside the velocity figures, and the pressures' level.
 run_cli(0 ignored report --study ${study} --out ${WORK}/report.pdf)
 execute_process(COMMAND pdftotext ${WORK}/report.pdf - OUTPUT_VARIABLE report_text RESULT_VARIABLE code)
 string(REPLACE "\n" " " report_text "${report_text}")
-if(NOT code EQUAL 0 OR NOT report_text MATCHES "Wall loads on the lumen surface" OR NOT report_text MATCHES "TAWSS")
+if(NOT code EQUAL 0 OR NOT report_text MATCHES "Wall loads on the lumen surface" OR NOT report_text MATCHES "TAWSS"
+   OR NOT report_text MATCHES "pressures gauge, the outlets at 50 mmHg")
     message(FATAL_ERROR "the report does not give the wall loads:\n${report_text}")
 endif()
 

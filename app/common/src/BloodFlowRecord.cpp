@@ -54,7 +54,7 @@ std::vector<std::tuple<std::string, double, std::string>> stenosisRows(const Blo
             {"throat_mean_velocity_m_s", t.meanVelocityMS, "flow rate / area"},
             {"pressure_drop_pa", s.pressureDropPa, "section-mean pressure upstream - downstream"},
             {"pressure_drop_mmhg", units::paToMmHg(s.pressureDropPa), "as pressure_drop_pa"},
-            {"pressure_ratio", s.pressureRatio, "distal / proximal section-mean pressure, against the outlets' pressure as given"},
+            {"pressure_ratio", s.pressureRatio, "distal / proximal section-mean gauge pressure (the outlets at their given pressure)"},
             {"upstream_pressure_pa", u.meanPressurePa, "section mean"},
             {"downstream_pressure_pa", d.meanPressurePa, "section mean"},
             {"flow_rate_ratio", s.flowRateRatio, "throat / upstream flow rate: 1 for a settled, conserved flow"}};
@@ -105,9 +105,9 @@ std::vector<std::tuple<std::string, double, std::optional<std::size_t>, std::str
             {"mean_tawss_pa", w.meanShearPa, std::nullopt, "the vertices' mean time-averaged wall shear stress"},
             {"largest_osi", f.at("osi")[w.peakOsi], w.peakOsi, "largest oscillatory shear index (1 - |mean tau_w| / TAWSS) / 2"},
             {"highest_pressure_pa", f.at("wall_pressure_pa")[w.highPressure], w.highPressure,
-             "highest time-averaged wall pressure, against the outlets' pressure as given"},
+             "highest time-averaged wall pressure, gauge (the outlets at their given pressure)"},
             {"lowest_pressure_pa", f.at("wall_pressure_pa")[w.lowPressure], w.lowPressure,
-             "lowest time-averaged wall pressure, against the outlets' pressure as given"}};
+             "lowest time-averaged wall pressure, gauge (the outlets at their given pressure)"}};
 }
 
 nlohmann::json wallLoadsJson(const TriangleMesh& surface)

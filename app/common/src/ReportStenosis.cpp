@@ -2,6 +2,7 @@
 
 #include "ReportSupport.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/core/Units.h"
 
 #include <cstdlib>
 
@@ -43,9 +44,12 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
         return section;
     }
     const std::string compared = textOr(flow->attributes, "stenosis_compared_at_mm", "?");
+    const std::string outlets = textOr(flow->provenance.parameters, "outlet_pressure_pa", "0");
     report::MetricTable figures{"Blood flow (SPH run " + flow->id + "): the throat against the sections " +
                                     numberText(std::atof(compared.c_str())) +
-                                    " mm upstream and downstream along the centerline, time-averaged over the settled flow",
+                                    " mm upstream and downstream along the centerline, time-averaged over the settled "
+                                    "flow; pressures gauge, the outlets at " +
+                                    numberText(units::paToMmHg(std::atof(outlets.c_str()))) + " mmHg",
                                 {}};
     addMetrics(figures, *flow,
                {{"stenosis_peak_velocity_ratio", "Peak velocity ratio, throat / upstream (PSV ratio's counterpart)", ""},
@@ -54,7 +58,7 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
                 {"stenosis_area_ratio", "Flow area ratio, upstream / throat (from the particles)", ""},
                 {"stenosis_throat_peak_velocity_m_s", "Throat peak velocity (fastest 5 % of the section)", "m/s"},
                 {"stenosis_pressure_drop_mmhg", "Pressure drop, upstream - downstream (section means)", "mmHg"},
-                {"stenosis_pressure_ratio", "Distal / proximal pressure (against the outlets' pressure)", ""},
+                {"stenosis_pressure_ratio", "Distal / proximal pressure (gauge)", ""},
                 {"stenosis_flow_rate_ratio", "Flow rate throat / upstream (1 when settled)", ""}});
     section.blocks.push_back(figures);
     if (flow->attributes.count("wall_largest_tawss_pa"))
@@ -66,8 +70,8 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
                    {{"wall_largest_tawss_pa", "Largest time-averaged wall shear stress (TAWSS)", "Pa", 1.0, 2},
                     {"wall_mean_tawss_pa", "Mean TAWSS over the surface", "Pa", 1.0, 2},
                     {"wall_largest_osi", "Largest oscillatory shear index (0: steady)", "", 1.0, 2},
-                    {"wall_highest_pressure_pa", "Highest wall pressure (against the outlets')", "Pa"},
-                    {"wall_lowest_pressure_pa", "Lowest wall pressure (against the outlets')", "Pa"}});
+                    {"wall_highest_pressure_pa", "Highest wall pressure (gauge)", "Pa"},
+                    {"wall_lowest_pressure_pa", "Lowest wall pressure (gauge)", "Pa"}});
         section.blocks.push_back(wall);
     }
     if (const std::string warning = runStatusWarning(runStatusOf(*flow)); !warning.empty())

@@ -115,7 +115,7 @@ struct SectionAlongCenterline
 {
     double arcMm = 0.0;                             ///< along the path from the inlet
     double peakVelocityMS = 0.0, meanVelocityMS = 0.0; ///< the fastest 5 % of its particles; flow rate / area
-    double meanPressurePa = 0.0;                    ///< against the outlets' pressure as given
+    double meanPressurePa = 0.0;                    ///< gauge (the outlets at their given pressure)
 };
 /// The sections a run artifact made by addBloodFlowRun() carries, in order along the path (empty for other runs).
 std::vector<SectionAlongCenterline> sectionsAlongCenterline(const study::Artifact& run);
