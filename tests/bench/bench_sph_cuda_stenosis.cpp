@@ -4,7 +4,10 @@
 // time since the last (the CPU samples the sections every step and the wall every 10th). Writes the JSON that
 // bench_sph_openfoam reads with --sph-in (give it the same --spacing) and prints a summary line.
 //
-//   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s]
+//   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] [mean speed m/s] [length mm]
+//
+// A mean speed (and length) other than the default's 0.05 m/s (5.6 mm) is StenosisPipe::atFlow's problem (Re 100
+// upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled).
 //
 // Exit 0 with "SKIP" without a device, 1 when a guard stops the run.
 
@@ -31,7 +34,8 @@ try
 {
     if (argc < 3)
     {
-        std::fprintf(stderr, "usage: bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s]\n");
+        std::fprintf(stderr, "usage: bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] "
+                             "[mean speed m/s] [length mm]\n");
         return 2;
     }
     if (vsim::cuda::devices().empty())
@@ -43,7 +47,9 @@ try
     pipe.spacingMm = std::stod(argv[1]);
     const std::string out = argv[2];
     const int every = argc > 3 ? std::stoi(argv[3]) : 10;
-    if (argc > 4)
+    if (argc > 5)
+        pipe = pipe.atFlow(std::stod(argv[5]), argc > 6 ? std::stod(argv[6]) : pipe.lengthMm);
+    if (argc > 4 && std::stod(argv[4]) > 0.0)
         pipe.soundSpeedMS = std::stod(argv[4]);
     const auto start = std::chrono::steady_clock::now();
     SphSolver solver;
@@ -92,7 +98,8 @@ try
         {"particles", gpu.particleCount()}, {"largest_density_variation", largestVariation},
         {"largest_density_variation_at_s", largestAtS}, {"precision", "single (GPU)"},
         {"device", vsim::cuda::deviceSummary()}, {"spacing_mm", pipe.spacingMm}, {"sound_speed_m_s", pipe.soundSpeedMS},
-        {"sampled_every_steps", every}, {"inflow_kg", inflow},
+        {"sampled_every_steps", every}, {"inflow_kg", inflow}, {"mean_speed_m_s", pipe.meanSpeedMS},
+        {"length_mm", pipe.lengthMm}, {"averaged_s", {pipe.averageFromS, pipe.endTimeS}},
         {"outflow_kg", double(gpu.massLedger().totalOutflow())}};
     std::ofstream(out) << report.dump(1) << '\n';
     std::printf("{\"case\": \"sph-stenosis on the GPU\", \"spacing_mm\": %.3f, \"sound_speed_m_s\": %.1f, "

@@ -13,7 +13,7 @@
 //   face), reported as the largest difference over OpenFOAM's throat value (the stress nearly vanishes where the
 //   jet's recirculation reattaches: a local ratio says nothing there).
 //
-//   bench_sph_openfoam <work folder> [--spacing MM] [--sph-in FILE] [--sph-out FILE]
+//   bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] [--sph-in FILE] [--sph-out FILE]
 //
 // --spacing sets the SPH's particle lattice (0.1 mm by default) and with it the sections' slab thickness (two
 // spacings) on both sides.
@@ -65,12 +65,14 @@ int main(int argc, char** argv)
     if (argc < 2)
     {
         std::fprintf(stderr,
-                     "usage: bench_sph_openfoam <work folder> [--spacing MM] [--sph-in FILE] [--sph-out FILE]\n");
+                     "usage: bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] "
+                     "[--sph-in FILE] [--sph-out FILE]\n");
         return 2;
     }
     const fs::path work = argv[1];
     std::string sphIn, sphOut;
     sim::sph::StenosisPipe pipe;
+    double meanSpeed = 0.0, length = 0.0; // 0: the default problem's
     for (int a = 2; a < argc; ++a)
     {
         const std::string option = argv[a];
@@ -86,13 +88,26 @@ int main(int argc, char** argv)
                 return 2;
             }
         }
+        else if ((option == "--mean-speed" || option == "--length") && a + 1 < argc)
+        {
+            char* end = nullptr;
+            (option == "--mean-speed" ? meanSpeed : length) = std::strtod(argv[++a], &end);
+            if (*end != '\0')
+            {
+                std::fprintf(stderr, "bench_sph_openfoam: %s takes a number, not '%s'\n", option.c_str(), argv[a]);
+                return 2;
+            }
+        }
         else
         {
-            std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--spacing MM, --sph-in FILE, --sph-out FILE)\n",
+            std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--spacing MM, --mean-speed M/S, --length MM, "
+                                 "--sph-in FILE, --sph-out FILE)\n",
                          option.c_str());
             return 2;
         }
     }
+    if (meanSpeed > 0.0 || length > 0.0)
+        pipe = pipe.atFlow(meanSpeed > 0.0 ? meanSpeed : pipe.meanSpeedMS, length > 0.0 ? length : pipe.lengthMm);
     const bool haveOpenFoam = std::system("command -v simpleFoam > /dev/null 2>&1") == 0;
     if (!haveOpenFoam && sphOut.empty())
     {
@@ -116,6 +131,9 @@ int main(int argc, char** argv)
             if (std::abs(storedSpacing - pipe.spacingMm) > 1e-9)
                 throw Error(sphIn + " holds an SPH run at " + std::to_string(storedSpacing) +
                             " mm: give the same --spacing (the sections' slabs are two spacings thick)");
+            if (std::abs(stored.value("mean_speed_m_s", 0.05) - pipe.meanSpeedMS) > 1e-12 ||
+                std::abs(stored.value("length_mm", 5.6) - pipe.lengthMm) > 1e-9)
+                throw Error(sphIn + " holds another problem: give its --mean-speed and --length");
             sph = bench::sectionsFrom(stored.at("sections"));
             sphWall = stored.at("wall");
             report["sph"] = stored;
@@ -132,7 +150,8 @@ int main(int argc, char** argv)
             report["sph"] = {{"sections", bench::sectionsJson(flow.arcMm, flow.flows)}, {"wall", sphWall}, {"seconds", seconds},
                              {"steps", flow.metrics.at("steps")}, {"particles", flow.metrics.at("particles")},
                              {"largest_density_variation", flow.metrics.at("largest_density_variation")},
-                             {"precision", "double"}, {"spacing_mm", pipe.spacingMm}};
+                             {"precision", "double"}, {"spacing_mm", pipe.spacingMm},
+                             {"mean_speed_m_s", pipe.meanSpeedMS}, {"length_mm", pipe.lengthMm}};
             if (!sphOut.empty())
                 std::ofstream(sphOut) << report["sph"].dump(1) << '\n';
         }
@@ -147,7 +166,8 @@ int main(int argc, char** argv)
             return 0;
         }
 
-        const std::vector<bench::OpenFoamMesh> meshes = {{224, 32, 0.4, 5.0}, {448, 64, 0.4, 5.0}};
+        const int axial = int(std::lround(40.0 * pipe.lengthMm)); // 40 cells per mm (224 on the default 5.6 mm)
+        const std::vector<bench::OpenFoamMesh> meshes = {{axial, 32, 0.4, 5.0}, {2 * axial, 64, 0.4, 5.0}};
         std::vector<bench::OpenFoamStenosisFlow> foam;
         json foamRuns = json::array();
         for (std::size_t m = 0; m < meshes.size(); ++m)

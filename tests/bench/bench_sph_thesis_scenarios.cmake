@@ -13,7 +13,7 @@
 # inflow; its gauge pressure is the outlets' pressure, the solver's reference (FluidModel.h). Its 4 mm and 8 mm
 # slices would draw an 8 mm blockage in two slices: the phantoms' slices are finer. The stenoses are ours (the thesis
 # gives none): their area ratios are printed beside the velocity ratios, which follow them.
-# Prints one JSON object per case; exit 1 when a run stops early.
+# Prints one JSON object per case; exit 1 when a run stops early (its figures printed, marked with the stop).
 #   cmake -DCLI=<vascusim-cli> -DWORK=<folder> -DPYTHON=<python3> [-DCASES="hand;heart"] -P bench_sph_thesis_scenarios.cmake
 include(${CMAKE_CURRENT_LIST_DIR}/../cli/RunCli.cmake)
 if(NOT CASES)
@@ -40,11 +40,12 @@ foreach(case ${CASES})
         set(phantom --stenosis 45,30 --vessel-diameter 2.5 --stenosis-length 8 --size 160x160x120 --spacing 0.39,0.39,0.5)
         set(skeleton "")
         # 100 particles/s x (0.39 mm)^3 = 5.932 mm^3/s (a mean 1.2 mm/s, Re 0.9). Slow flow through a long, narrow
-        # vessel: the viscous pressure sets the sound speed (0.75 m/s chosen) and the vessel settles like a resistor
-        # charging a capacitor (0.2 s there). At 1 m/s the settling time is 0.11 s, and the averaging (0.6-0.95 s)
-        # starts three of them after the ramp.
+        # vessel: the viscous pressure sets the sound speed (0.75 m/s chosen), and the vessel settles like a resistor
+        # charging a capacitor (0.2 s there: the run warns that its window, 0.55-0.8 s, starts within three). The
+        # weakly compressible solver's noise (1-2 % of c0 in speed) exceeds this flow's speeds; its time averages
+        # still follow the area ratios, but a particle's density can stray past the guard (see RESULTS.md).
         set(flow --inlet 0.005932ml/s --outlet 5mmHg --void-fraction 0.10 --compare 6mm --spacing 0.3125mm
-                 --ramp 0.25s --until 0.95s --param sound_speed_m_s=1 --param cfl=0.2)
+                 --ramp 0.3s --until 0.8s --param cfl=0.2)
         set(thesis "about 3 (Fig. 5.7)")
     elseif(case STREQUAL "heart")
         set(phantom --stenosis 40 --vessel-diameter 10 --stenosis-length 20 --size 140x140x120 --spacing 0.7,0.7,1)
@@ -63,26 +64,42 @@ foreach(case ${CASES})
     run_cli(0 ignored skeleton --study ${dir}/study.vsim ${skeleton})
     run_cli(0 ignored centerline --study ${dir}/study.vsim)
     string(TIMESTAMP start "%s")
-    run_cli(0 result simulate sph --study ${dir}/study.vsim ${flow} --frames 8 --out ${dir}/run)
+    # Exit 3: stopped early (a guard); its figures, when the averaging had begun, are printed marked so.
+    execute_process(COMMAND ${CLI} simulate sph --study ${dir}/study.vsim ${flow} --frames 8 --out ${dir}/run
+                    RESULT_VARIABLE code OUTPUT_VARIABLE result ERROR_VARIABLE err)
     string(TIMESTAMP stop "%s")
     math(EXPR seconds "${stop} - ${start}")
+    if(NOT code EQUAL 0 AND NOT code EQUAL 3)
+        message(FATAL_ERROR "simulate sph (${case}): exit ${code}\n${result}\n${err}")
+    endif()
     file(READ ${dir}/phantom/truth.json truth)
     string(JSON reference GET "${truth}" measures reference_diameter_mm)
     string(JSON minimal GET "${truth}" measures minimal_diameter_mm)
-    string(JSON stopped GET "${result}" run_status stopped_by)
-    if(NOT stopped STREQUAL "end")
-        message(FATAL_ERROR "the ${case} run stopped by ${stopped}\n${result}")
+    string(JSON stopped GET "${result}" run_status stop)
+    string(JSON figures TYPE "${result}" stenosis)
+    set(row "{\"case\": \"${case}\", \"run\": \"${stopped}\", \"truth_diameters_mm\": [${reference}, ${minimal}], \"thesis_ratio\": \"${thesis}\"")
+    if(figures STREQUAL "OBJECT")
+        foreach(key area_ratio peak_velocity_ratio peak_velocity_ratio_downstream mean_velocity_ratio
+                    mean_velocity_ratio_downstream flow_rate_ratio pressure_drop_pa upstream_pressure_pa pressure_ratio)
+            string(JSON value GET "${result}" stenosis ${key} value)
+            string(APPEND row ", \"${key}\": ${value}")
+        endforeach()
     endif()
-    set(row "{\"case\": \"${case}\", \"truth_diameters_mm\": [${reference}, ${minimal}], \"thesis_ratio\": \"${thesis}\"")
-    foreach(key area_ratio peak_velocity_ratio peak_velocity_ratio_downstream mean_velocity_ratio
-                mean_velocity_ratio_downstream flow_rate_ratio pressure_drop_pa upstream_pressure_pa pressure_ratio)
-        string(JSON value GET "${result}" stenosis ${key} value)
-        string(APPEND row ", \"${key}\": ${value}")
-    endforeach()
+    string(JSON averaged GET "${result}" averaged over_s)
+    string(JSON settling GET "${result}" settling_s)
+    string(JSON warnings GET "${result}" warnings)
+    string(REPLACE "\n" "" warnings "${warnings}")
+    string(APPEND row ", \"averaged_over_s\": ${averaged}, \"settling_s\": ${settling}, \"warnings\": ${warnings}")
     foreach(key particles steps largest_density_variation inflow_kg)
         string(JSON value GET "${result}" metrics ${key})
         string(APPEND row ", \"${key}\": ${value}")
     endforeach()
     string(APPEND row ", \"simulate_s\": ${seconds}}")
     message(STATUS "${row}")
+    if(NOT code EQUAL 0)
+        list(APPEND incomplete ${case})
+    endif()
 endforeach()
+if(incomplete)
+    message(FATAL_ERROR "stopped early (figures above marked so): ${incomplete}")
+endif()

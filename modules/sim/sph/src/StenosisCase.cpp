@@ -19,7 +19,6 @@
 namespace vsim::sim::sph {
 namespace {
 
-constexpr double kAverageFromS = 0.015, kEndTimeS = 0.025;
 constexpr double kRingStepMm = 0.05; // the wall rings' spacing along the axis
 constexpr int kAround = 8;           // points on each ring
 
@@ -33,6 +32,20 @@ detail::PipeShape pipeShape(const StenosisPipe& pipe)
 }
 
 } // namespace
+
+StenosisPipe StenosisPipe::atFlow(double meanSpeed, double length) const
+{
+    if (!(meanSpeed > 0.0) || !(length >= throatAtMm + halfLengthMm + compareMm + 2.0 * sectionStepMm))
+        throw Error("the stenosis pipe needs a mean speed > 0 and room for the sections past the throat (length >= " +
+                    std::to_string(throatAtMm + halfLengthMm + compareMm + 2.0 * sectionStepMm) + " mm)");
+    StenosisPipe pipe = *this;
+    pipe.soundSpeedMS = soundSpeedMS * meanSpeed / meanSpeedMS;
+    pipe.meanSpeedMS = meanSpeed, pipe.lengthMm = length;
+    pipe.rampS = rampS * (length / lengthMm) * (meanSpeedMS / meanSpeed); // the same number of quarter-wave periods
+    const double jetTransitS = 1e-3 * (length - throatAtMm) / (4.0 * meanSpeed); // the throat's mean: 4 x (area ratio)
+    pipe.averageFromS = pipe.rampS + 1.5 * jetTransitS, pipe.endTimeS = pipe.rampS + 2.5 * jetTransitS;
+    return pipe;
+}
 
 double StenosisPipe::radiusAtMm(double xMm) const
 {
@@ -77,7 +90,7 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
 {
     ParameterSet parameters =
         detail::caseParameters(pipe.spacingMm, pipe.densityKgM3, pipe.viscosityPaS, pipe.soundSpeedMS);
-    parameters.set("end_time_s", kEndTimeS);
+    parameters.set("end_time_s", pipe.endTimeS);
     parameters.set("cfl", kStenosisCfl);
     return parameters;
 }
@@ -95,8 +108,8 @@ void configureStenosisPipe(const StenosisPipe& pipe, SphSolver& solver, int sect
     for (double x : pipe.sectionArcsMm())
         sections.push_back({Eigen::Vector3d(1e-3 * x, 0.0, 0.0), Eigen::Vector3d::UnitX(),
                             1e-3 * (pipe.radiusMm + pipe.spacingMm), 1e-3 * pipe.sectionThicknessMm()});
-    solver.setSections(sections, kAverageFromS, sectionEvery);
-    solver.setWallPoints(pipe.wallPoints(kRingStepMm, kAround), kAverageFromS, wallEvery);
+    solver.setSections(sections, pipe.averageFromS, sectionEvery);
+    solver.setWallPoints(pipe.wallPoints(kRingStepMm, kAround), pipe.averageFromS, wallEvery);
 }
 
 StenosisPipeFlow stenosisPipeFlow(const StenosisPipe& pipe, const SectionSeries& sections,

@@ -28,11 +28,17 @@ struct StenosisPipe
     double throatAtMm = 2.4, halfLengthMm = 0.8;      ///< the narrowing's centre and half its length
     double meanSpeedMS = 0.05;                        ///< the inflow's mean (Re 24 upstream, 48 in the throat)
     double rampS = 0.010;                             ///< the inflow's rise from rest (over 4 L / c0 = 6.4 ms)
+    double averageFromS = 0.015, endTimeS = 0.025;    ///< the settled flow's window
     double soundSpeedMS = 4.0;                        ///< the numerical sound speed c0 (80 x the throat's mean)
     double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
     double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
     double sectionStepMm = 0.2;
 
+    /// The same narrowing at another mean inflow speed (m/s) and pipe length (mm; the throat stays 2.4 mm from the
+    /// inlet, so a longer pipe gives the jet room to recover before the outlet), with the sound speed at the same
+    /// ratio to the speed, the ramp as long against the pipe's quarter-wave period 4 L / c0 and the window after 1.5 to
+    /// 2.5 jet transits ((length - throat) / the throat's mean speed) past the ramp.
+    StenosisPipe atFlow(double meanSpeed, double length) const;
     /// The lumen's radius at x (mm).
     double radiusAtMm(double xMm) const;
     /// The sections' positions along the axis (mm), two steps in from each end.
