@@ -217,8 +217,8 @@ BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& 
     BloodFlowSetup setup;
     setup.parameters = solverParameters;
     for (const ParameterSpec& spec : solverParameters.specs()) // the chosen five only where the form changed them
-        if ((spec.key != "spacing_mm" && spec.key != "end_time_s" && spec.key != "sound_speed_m_s" && spec.key != "cfl" &&
-             spec.key != "reference_pressure_pa") ||
+        if ((spec.key != "spacing_mm" && spec.key != "end_time_s" && spec.key != "sound_speed_m_s" &&
+             spec.key != "cfl" && spec.key != "reference_pressure_pa") ||
             solverParameters.get(spec.key) != spec.defaultValue)
             setup.given.push_back(spec.key);
     if (form.get("inlet_flow_rate_ml_s") > 0.0)
@@ -351,7 +351,8 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
         expectedPeak = std::sqrt(2.0 * std::abs(setup.inlet.value - setup.outletPressurePa) / density); // Bernoulli
     else
     {
-        flowRate = std::abs(setup.inlet.kind == BloodFlowInlet::Kind::FlowRate ? setup.inlet.value : setup.inlet.value * inletAreaM2);
+        flowRate = std::abs(setup.inlet.kind == BloodFlowInlet::Kind::FlowRate ? setup.inlet.value
+                                                                               : setup.inlet.value * inletAreaM2);
         double largestFactor = 1.0;
         for (const auto& point : setup.inlet.waveform.points)
             largestFactor = std::max(largestFactor, point.second);
@@ -360,7 +361,8 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
                         resistanceIntegral / std::numbers::pi;
     }
     if (!given(setup, "sound_speed_m_s"))
-        parameters.set("sound_speed_m_s", std::max({0.5, 10.0 * expectedPeak, std::sqrt(viscousDropPa / (0.005 * density))}));
+        parameters.set("sound_speed_m_s",
+                       std::max({0.5, 10.0 * expectedPeak, std::sqrt(viscousDropPa / (0.005 * density))}));
     if (!given(setup, "reference_pressure_pa")) // the outlets' level: pressures reported against the same zero
         parameters.set("reference_pressure_pa", setup.outletPressurePa);
     if (!given(setup, "cfl")) // a stenosis's jet needs the smaller step (SphSolver.h)
@@ -370,7 +372,8 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     flow.rampS = setup.rampS >= 0.0 ? setup.rampS : 8.0 * pathLengthM / soundSpeed; // two quarter-wave periods
     // The weakly compressible vessel settles like a resistor charging a capacitor: its resistance (the Poiseuille
     // drop over the flow rate) times its compliance (volume / rho c0^2).
-    flow.settlingS = flowRate > 0.0 ? viscousDropPa / flowRate * pathVolumeM3 / (density * soundSpeed * soundSpeed) : 0.0;
+    flow.settlingS =
+        flowRate > 0.0 ? viscousDropPa / flowRate * pathVolumeM3 / (density * soundSpeed * soundSpeed) : 0.0;
     const double period = setup.inlet.waveform.period();
     if (!given(setup, "end_time_s"))
         parameters.set("end_time_s", period > 0.0 ? flow.rampS + std::max(2.0 * period, 5.0 * flow.settlingS)

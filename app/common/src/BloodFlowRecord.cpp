@@ -54,7 +54,8 @@ std::vector<std::tuple<std::string, double, std::string>> stenosisRows(const Blo
             {"throat_mean_velocity_m_s", t.meanVelocityMS, "flow rate / area"},
             {"pressure_drop_pa", s.pressureDropPa, "section-mean pressure upstream - downstream"},
             {"pressure_drop_mmhg", units::paToMmHg(s.pressureDropPa), "as pressure_drop_pa"},
-            {"pressure_ratio", s.pressureRatio, "distal / proximal section-mean gauge pressure (the outlets at their given pressure)"},
+            {"pressure_ratio", s.pressureRatio,
+             "distal / proximal section-mean gauge pressure (the outlets at their given pressure)"},
             {"upstream_pressure_pa", u.meanPressurePa, "section mean"},
             {"downstream_pressure_pa", d.meanPressurePa, "section mean"},
             {"flow_rate_ratio", s.flowRateRatio, "throat / upstream flow rate: 1 for a settled, conserved flow"}};

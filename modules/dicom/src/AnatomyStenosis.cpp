@@ -35,7 +35,8 @@ AnatomyPhantom buildAnatomyStenosis(const PhantomOptions& options, const Scanner
     phantom.layers.push_back(cylinder("femur cortex", c + Vector3d(-12, 18, 0), 14, 14, 1100.0, label::kBone));
     phantom.layers.push_back(cylinder("femur marrow", c + Vector3d(-12, 18, 0), 9, 9, -20.0, label::kBone));
 
-    const double r0 = 0.5 * options.vesselDiameterMm, wall = 0.9 * (r0 / 3.0), fraction = options.stenosisPercent / 100.0;
+    const double r0 = 0.5 * options.vesselDiameterMm, wall = 0.9 * (r0 / 3.0); // 0.9 mm at the default 6 mm
+    const double fraction = options.stenosisPercent / 100.0;
     const double drawnHalfLength = 10.0 + 4.0 * unit(random);
     const double halfLength = options.stenosisLengthMm > 0.0 ? 0.5 * options.stenosisLengthMm : drawnHalfLength;
     const double reach = 0.5 * options.size[2] * options.spacing.z() + 30.0;
@@ -51,7 +52,8 @@ AnatomyPhantom buildAnatomyStenosis(const PhantomOptions& options, const Scanner
     Vector3d u = axis.cross(Vector3d::UnitZ()).normalized();
     u = (std::cos(angle) * u + std::sin(angle) * axis.cross(u)).normalized(); // the side the lumen is pushed to
     const auto lumenRadius = [=](double s) {
-        return r0 * (1.0 - fraction * raisedCosine(s - reach, halfLength) - fraction2 * raisedCosine(s - reach2, halfLength2));
+        return r0 * (1.0 - fraction * raisedCosine(s - reach, halfLength) -
+                     fraction2 * raisedCosine(s - reach2, halfLength2));
     };
     const auto lumenOffset = [=](double s) { return 0.7 * (r0 - lumenRadius(s)); };
     const auto outerRadius = [=](double s) {
@@ -91,7 +93,8 @@ AnatomyPhantom buildAnatomyStenosis(const PhantomOptions& options, const Scanner
         frame.col(1) = axis.cross(radial).normalized();
         frame.col(2) = axis;
         AnatomyLayer plaque = ellipsoid("calcified plaque", centre + (s - reach) * axis + depth * radial,
-                                        std::min(1.0, r0 / 3.0) * Vector3d(0.8, 1.6 + unit(random), 2.0 + 2.0 * unit(random)),
+                                        std::min(1.0, r0 / 3.0) *
+                                            Vector3d(0.8, 1.6 + unit(random), 2.0 + 2.0 * unit(random)),
                                         600.0 + 900.0 * unit(random), label::kCalcium, frame);
         plaque.blooms = true;
         phantom.layers.push_back(plaque);

@@ -21,7 +21,8 @@ SectionFlow sectionFlow(const ParticleState& particles, const FluidModel& fluid,
             (offset - along * section.normal).squaredNorm() > section.radiusM * section.radiusM)
             continue;
         const double v = particles.mass[i] / particles.density[i], u = particles.velocity[i].dot(section.normal);
-        volume += v, flux += v * u, pressure += v * fluid.reportedPressure(particles.density[i], particles.voidFraction[i]);
+        volume += v, flux += v * u;
+        pressure += v * fluid.reportedPressure(particles.density[i], particles.voidFraction[i]);
         speeds.push_back(u);
     }
     flow.particles = int(speeds.size());

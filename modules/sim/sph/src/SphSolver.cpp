@@ -127,8 +127,9 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
         // Wall particles imitate the fluid they hold: the parameter's mixture.
         const double voidFraction =
             isWall || givenVoid == given.fields.end() ? defaultVoid : std::clamp(givenVoid->second[i], 0.0, 0.99);
-        const double rho = pressure == given.fields.end() ? m_fluid.mixtureDensity(voidFraction)
-                                                          : m_fluid.densityAt(pressure->second[i] - m_fluid.referencePressurePa, voidFraction);
+        const double rho = pressure == given.fields.end()
+                               ? m_fluid.mixtureDensity(voidFraction)
+                               : m_fluid.densityAt(pressure->second[i] - m_fluid.referencePressurePa, voidFraction);
         m_particles.add(x, rho, m_fluid.mixtureDensity(voidFraction) * volume, isWall,
                         depth == given.fields.end() ? -1.0 : depth->second[i] * 1e-3, voidFraction);
         if (vx != given.fields.end() && vy != given.fields.end() && vz != given.fields.end())
@@ -355,8 +356,8 @@ SimulationData SphSolver::snapshot() const
         const std::size_t i = byId[k];
         frame.positionsMm[k] = p.position[i] * 1e3;
         const double values[] = {p.velocity[i].norm(), p.velocity[i].x(), p.velocity[i].y(), p.velocity[i].z(),
-                                 m_fluid.reportedPressure(p.density[i], p.voidFraction[i]), p.density[i], p.voidFraction[i],
-                                 double(p.wall[i]), double(p.boundary[i]), double(p.tracer[i])};
+                                 m_fluid.reportedPressure(p.density[i], p.voidFraction[i]), p.density[i],
+                                 p.voidFraction[i], double(p.wall[i]), double(p.boundary[i]), double(p.tracer[i])};
         for (std::size_t f = 0; f < fields.size(); ++f)
             (*fields[f])[k] = values[f];
     }

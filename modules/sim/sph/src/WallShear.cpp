@@ -39,7 +39,8 @@ WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, con
                          shearNormal += basis * basis.transpose();
                          shearRight += basis * (u - u.dot(n) * n).transpose();
                          pressureNormal += affine * affine.transpose();
-                         pressureRight += affine * fluid.reportedPressure(particles.density[k], particles.voidFraction[k]);
+                         pressureRight +=
+                             affine * fluid.reportedPressure(particles.density[k], particles.voidFraction[k]);
                      });
     WallLoad load;
     // The fits need particles at three depths at least (the lattice gives three layers).

@@ -27,9 +27,9 @@ struct FluidModel
     Eigen::Vector3d bodyForce = Eigen::Vector3d::Zero();
     double bodyForceFrequency = 0.0;
     /// The pressure the rest density stands for (Pa, gauge: the outlets' level). A uniform pressure does not move an
-    /// incompressible flow, and in the equation of state it would compress the fluid by about p / (rho0 c0^2) (50 %
-    /// at 50 mmHg with c0 = 4 m/s): pressure() and densityAt() work on the pressure above it, the dynamics with them,
-    /// and what a run reports is reportedPressure().
+    /// incompressible flow, and in the equation of state it would compress the fluid (by 21 % at 50 mmHg with c0 =
+    /// 4 m/s): pressure() and densityAt() work on the pressure above it, the dynamics with them, and what a run
+    /// reports is reportedPressure().
     double referencePressurePa = 0.0;
 
     /// Gravity and the body force at time t (s), m/s^2.
