@@ -333,7 +333,9 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
             radius = std::max(0.5 * spacingMm, inscribedRadiusMm(label, point, 1.5 * radius + spacingMm));
             narrowest = std::min(narrowest, radius);
         }
-        const double ds = 1e-3 * std::min(spacingMm, compared.length() - s + 0.5 * spacingMm), r = 1e-3 * radius;
+        // (a centerline's radius can be 0 where the thinning left a stub: no thinner than half a spacing)
+        const double ds = 1e-3 * std::min(spacingMm, compared.length() - s + 0.5 * spacingMm);
+        const double r = 1e-3 * std::max(0.5 * spacingMm, radius);
         resistanceIntegral += ds / std::pow(r, 4), pathVolumeM3 += std::numbers::pi * r * r * ds;
     }
 
