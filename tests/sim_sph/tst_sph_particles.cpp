@@ -1,6 +1,6 @@
 // The SPH solver's particle machinery (issue 18): the quartic kernel's closed form at known points, the
 // neighbour grid against a brute-force search on random particles (three seeds, clustered and spread), and
-// the validation cases sph-kernel and sph-fpm with their stated tolerances.
+// the validation cases sph-kernel and sph-fpm with their stated tolerances, the mixture and the reference pressure.
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/FluidModel.h"
@@ -112,6 +112,26 @@ private slots:
             QVERIFY(std::abs(fluid.pressure(fluid.densityAt(5332.0, s), s) - 5332.0) < 1e-8); // 40 mmHg
         // The same density is a higher pressure in the lighter mixture.
         QVERIFY(fluid.pressure(900.0, 0.2) > 0.0 && fluid.pressure(900.0, 0.0) < 0.0);
+    }
+
+    /// The reference pressure (the outlets' gauge level, 50 mmHg here): the fluid at its rest density reports it, the
+    /// equation of state works above it, and a boundary prescribed at 50 mmHg + 100 Pa imposes 100 Pa above it (a
+    /// waveform scales the gauge pressure, not the one above the reference).
+    void referencePressureIsTheGaugeLevel()
+    {
+        FluidModel fluid;
+        fluid.referencePressurePa = 6666.0;
+        QCOMPARE(fluid.reportedPressure(fluid.mixtureDensity(0.16), 0.16), 6666.0);
+        QCOMPARE(fluid.pressure(fluid.mixtureDensity(0.16), 0.16), 0.0);
+        QVERIFY(std::abs(fluid.reportedPressure(fluid.densityAt(100.0)) - 6766.0) < 1e-8);
+        OpenBoundary outlet;
+        outlet.name = "outlet", outlet.normal = Eigen::Vector3d::UnitX(), outlet.radiusM = 1e-3;
+        outlet.prescribed = OpenBoundary::Prescribed::Pressure, outlet.pressurePa = 6766.0;
+        outlet.waveform.points = {{0.0, 1.0}, {0.5, 0.5}, {1.0, 1.0}};
+        OpenBoundaries boundaries({outlet});
+        boundaries.setReferencePressure(6666.0);
+        QVERIFY(std::abs(boundaries.prescribedPressure(0, 0.0, 0.0) - 100.0) < 1e-9);
+        QVERIFY(std::abs(boundaries.prescribedPressure(0, 0.5, 0.0) - (0.5 * 6766.0 - 6666.0)) < 1e-9);
     }
 
     /// Periodic along x (a channel's flow direction): neighbours across the seam found as nearest images.
