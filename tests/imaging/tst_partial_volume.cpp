@@ -48,10 +48,13 @@ private slots:
     /// centerlines reach and measure, and their mean-radius errors. The issue asks 5 %. History: 2026-11-24, 4-5 of
     /// 28 reached, 11-16 % off; 2026-11-27 with the thin-vessel level 15-17 reached, those of 1 mm and wider 9-14 %
     /// low, those under 1 mm 20-39 % low (the fit's Phi edge: its half level lies sigma^2 / (2 r) inside a blurred
-    /// disc's radius). With the blurred-disc model (BlurredDisc.h) the mean error over the tips is 5.2 / 4.9 / 5.8 %
-    /// on seeds 1-3 (1 mm and wider 2.8 / 4.5 / 6.1 %; single tips to 19 %, where a tapering tip is measured over
-    /// part of its length). Asserted: at least 12 tips measured, their mean error within 8 %, and within 8 % for
-    /// those of 1 mm and wider.
+    /// disc's radius). With the blurred-disc model (BlurredDisc.h) the mean error over the tips was 5.2 / 4.9 / 5.8 %
+    /// on seeds 1-3 against the matched segment's own mean radius. But where the segmentation misses one of a
+    /// segment's two children, the centerline edge runs on into the other: the edge then covers two truth segments
+    /// (up to 45 % of it on the child), and its radius is a fit over both. Since 2026-11-28 each edge is compared with
+    /// the truth along the edge itself (every 0.25 mm of its centerline, the radius of the nearest truth artery):
+    /// 3.7 / 3.4 / 5.3 %. Asserted: at least 12 tips measured, their mean error within 6 %, and within 8 % for those
+    /// of 1 mm and wider.
     void patientLikeHepaticTips()
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
@@ -83,16 +86,18 @@ private slots:
                 if (!tips.count(truth) || !radii[e].measured || reached.count(truth))
                     continue;
                 reached.insert(truth);
-                const double expected = 0.5 * (truth->radii.front() + truth->radii.back());
+                const double segmentMean = 0.5 * (truth->radii.front() + truth->radii.back());
+                const auto [expected, onTruth] = truthAlong(c.phantom.arteries, *truth, centerlines.edges[e].points);
                 const double signedError = radii[e].meanRadiusMm / expected - 1.0, error = std::abs(signedError);
-                const double atMiddle = truthRadiusNear(*truth, middleOf(centerlines.edges[e].points));
-                qInfo("  tip: measured %.2f mm over %.1f mm of centerline, truth mean %.2f mm (%.2f -> %.2f mm over "
-                      "%.1f mm; %+.1f %%), truth at the edge's middle %.2f mm (%+.1f %%), axis |z| %.2f",
-                      radii[e].meanRadiusMm, radii[e].usedLengthMm, expected, truth->radii.front(), truth->radii.back(),
-                      truth->lengthMm(), 100.0 * signedError, atMiddle, 100.0 * (radii[e].meanRadiusMm / atMiddle - 1.0),
+                qInfo("  tip: measured %.2f mm over %.1f mm of centerline, truth along the edge %.2f mm (%+.1f %%); "
+                      "%.0f %% of the edge on the matched segment (%.2f -> %.2f mm over %.1f mm, mean %.2f mm: "
+                      "%+.1f %%), axis |z| %.2f",
+                      radii[e].meanRadiusMm, radii[e].usedLengthMm, expected, 100.0 * signedError, 100.0 * onTruth,
+                      truth->radii.front(), truth->radii.back(), truth->lengthMm(), segmentMean,
+                      100.0 * (radii[e].meanRadiusMm / segmentMean - 1.0),
                       std::abs((truth->points.back() - truth->points.front()).normalized().z()));
                 sum += error, worst = std::max(worst, error), ++measured;
-                if (expected >= 1.0)
+                if (segmentMean >= 1.0)
                     sumWide += error, ++wide;
             }
             qInfo("seed %llu: %d of %zu segmental hepatic arteries reached and measured; mean-radius error mean %.1f %%, "
@@ -103,26 +108,54 @@ private slots:
                   wide ? 100.0 * sumWide / wide : 0.0, measured - wide,
                   measured > wide ? 100.0 * (sum - sumWide) / (measured - wide) : 0.0);
             QVERIFY(measured >= 12 && wide >= 1);
-            QVERIFY(sum / measured <= 0.08);
+            QVERIFY(sum / measured <= 0.06);
             QVERIFY(sumWide / wide <= 0.08);
         }
     }
 
 private:
-    /// The point half-way along a polyline (mm).
-    static Eigen::Vector3d middleOf(const std::vector<Eigen::Vector3d>& points)
+    /// The mean truth radius (mm) along a measured edge (its points every 0.25 mm of arc, 0.5 mm clear of its ends),
+    /// each point taking the radius of the truth artery whose axis is nearest; and the fraction of those points whose
+    /// nearest artery is `matched`.
+    static std::pair<double, double> truthAlong(const PhantomModel& arteries, const VesselSegment& matched,
+                                                const std::vector<Eigen::Vector3d>& points)
     {
-        double half = 0.0;
+        std::vector<double> arc{0.0};
         for (std::size_t i = 1; i < points.size(); ++i)
-            half += 0.5 * (points[i] - points[i - 1]).norm();
-        for (std::size_t i = 1; i < points.size(); ++i)
+            arc.push_back(arc.back() + (points[i] - points[i - 1]).norm());
+        double sum = 0.0;
+        int count = 0, onMatched = 0;
+        for (double s = 0.5; s <= arc.back() - 0.5; s += 0.25)
         {
-            const double step = (points[i] - points[i - 1]).norm();
-            if (step >= half && step > 0.0)
-                return points[i - 1] + (half / step) * (points[i] - points[i - 1]);
-            half -= step;
+            std::size_t i = 1;
+            while (i + 1 < points.size() && arc[i] < s)
+                ++i;
+            const double t = arc[i] > arc[i - 1] ? (s - arc[i - 1]) / (arc[i] - arc[i - 1]) : 0.0;
+            const Eigen::Vector3d p = points[i - 1] + std::clamp(t, 0.0, 1.0) * (points[i] - points[i - 1]);
+            const VesselSegment* nearest = nullptr;
+            double best = 1e300;
+            for (const VesselSegment& segment : arteries.segments)
+            {
+                const double d = distanceToAxis(segment, p);
+                if (d < best)
+                    best = d, nearest = &segment;
+            }
+            sum += truthRadiusNear(*nearest, p), ++count, onMatched += nearest == &matched ? 1 : 0;
         }
-        return points.back();
+        return {count ? sum / count : 0.0, count ? double(onMatched) / count : 0.0};
+    }
+
+    /// Distance (mm) from p to a truth segment's axis polyline.
+    static double distanceToAxis(const VesselSegment& segment, const Eigen::Vector3d& p)
+    {
+        double best = 1e300;
+        for (std::size_t i = 1; i < segment.points.size(); ++i)
+        {
+            const Eigen::Vector3d a = segment.points[i - 1], d = segment.points[i] - a;
+            const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+            best = std::min(best, (a + t * d - p).norm());
+        }
+        return best;
     }
 
     /// The truth segment's radius (mm) at its point nearest to p, interpolated between its samples.
