@@ -4,9 +4,9 @@
 // vessel's own plateau (its brightest smoothed HU within 2 mm) and the background just outside it (the median HU of
 // the voxels 1 to 2.5 mm from the candidate that lie at least a voxel from the label: the tissue the edge blurs
 // with, a dark arterial wall included). A blurred step edge
-// crosses the half-way level at the step whatever the blur's width; a thin vessel's blurred peak is lower than its
-// blood, and half of that peak (the full width at half maximum) is close to its diameter while the radius exceeds
-// the blur's sigma. One window for a whole tree puts the edge too far in where the vessel runs in fat and too far
+// crosses the half-way level at the step whatever the blur's width; a blurred tube's edge is curved, and its true
+// radius reads 0.44-0.47 of the contrast at its centre while the radius is 2-6 blur sigmas (the level used is 0.45 of
+// the way, LocalHalfLevel.cpp); a thin vessel's blurred peak is lower than its blood. One window for a whole tree puts the edge too far in where the vessel runs in fat and too far
 // out beside brighter tissue; the local level follows the background. References: "Vessel size measurements in
 // angiograms: a comparison of techniques", Med. Phys. 2002, doi:10.1118/1.1488603 (threshold and edge sizing are
 // accurate for vessels wider than the blur's FWHM); Wörz and Rohr, IEEE Trans. Image Process. 2007 (a 3D blurred-
