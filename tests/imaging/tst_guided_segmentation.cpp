@@ -154,7 +154,9 @@ private slots:
     /// Target hepatic from a point in the aorta and one in the proper hepatic artery: the tree from the celiac
     /// trunk without the aorta, recall by radius class, and the share of the label in the touching portal vein. The
     /// issue asks Dice >= 0.90 on three seeds: 0.919 / 0.909 / 0.899 with the thin-vessel level (2026-11-27; 0.896 /
-    /// 0.882 / 0.877 before it, the tips under 1 mm reached on 5-10 % of their voxels, 52-61 % now). Held at 0.89.
+    /// 0.882 / 0.877 before it, the tips under 1 mm reached on 5-10 % of their voxels, 52-61 % now); 0.922 / 0.911 /
+    /// 0.903 with the boundary at 0.45 of the local contrast, where a blurred tube's edge lies (2026-11-28; recall
+    /// had stayed under precision at 0.5). Asserted: the issue's 0.90.
     void hepaticTreeFromTwoPoints()
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
@@ -256,7 +258,7 @@ private:
                   overlap(result.label, c.truth, &classRegion).recall);
         }
         QVERIFY(fractionIn(result.label, c.truth, label::kPortalVein) <= 0.02);
-        QVERIFY(o.dice >= 0.89);
+        QVERIFY(o.dice >= 0.90);
     }
 };
 

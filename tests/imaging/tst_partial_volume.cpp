@@ -53,8 +53,9 @@ private slots:
     /// segment's two children, the centerline edge runs on into the other: the edge then covers two truth segments
     /// (up to 45 % of it on the child), and its radius is a fit over both. Since 2026-11-28 each edge is compared with
     /// the truth along the edge itself (every 0.25 mm of its centerline, the radius of the nearest truth artery):
-    /// 3.7 / 3.4 / 5.3 %. Asserted: at least 12 tips measured, their mean error within 6 %, and within 8 % for those
-    /// of 1 mm and wider.
+    /// 3.7 / 3.4 / 5.3 %; 3.0 / 3.4 / 4.4 % with the segmentation's small-vessel boundary at 0.45 of the local contrast
+    /// (LocalHalfLevel.cpp). Asserted: at least 12 tips measured, their mean error within the 5 %, and within
+    /// 8 % for those of 1 mm and wider.
     void patientLikeHepaticTips()
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
@@ -108,7 +109,7 @@ private slots:
                   wide ? 100.0 * sumWide / wide : 0.0, measured - wide,
                   measured > wide ? 100.0 * (sum - sumWide) / (measured - wide) : 0.0);
             QVERIFY(measured >= 12 && wide >= 1);
-            QVERIFY(sum / measured <= 0.06);
+            QVERIFY(sum / measured <= 0.05);
             QVERIFY(sumWide / wide <= 0.08);
         }
     }
