@@ -142,6 +142,7 @@ int meshWall(const Arguments& arguments, const Progress& progress)
                                 {"min_dihedral_deg", wall.minDihedralDeg},
                                 {"min_dihedral_unsmoothed_deg", wall.minDihedralUnsmoothedDeg},
                                 {"nodes_smoothed", wall.nodesSmoothed},
+                                {"edge_flips", wall.edgeFlips},
                                 {"largest_smoothing_move_mm", wall.largestSmoothingMoveMm},
                                 {"worst_element_mm", {wall.worstElementMm.x(), wall.worstElementMm.y(), wall.worstElementMm.z()}},
                                 {"mean_min_dihedral_deg", wall.meanMinDihedralDeg},

@@ -103,6 +103,11 @@ if(NOT wall_label STREQUAL lumen_id) # not the newest label (an imported copy of
 endif()
 string(JSON thrombus_elements GET "${wall}" thrombus_elements)
 string(JSON max_thrombus GET "${wall}" max_thrombus_mm)
+# Issue 16: no element under 10 degrees, the iliac crotch and the thick thrombus's tall prisms included.
+string(JSON min_dihedral GET "${wall}" min_dihedral_deg)
+if(min_dihedral LESS 10)
+    message(FATAL_ERROR "the wall's smallest dihedral angle is ${min_dihedral} deg (10 at least):\n${wall}")
+endif()
 run_cli(1 linear simulate fem --study ${WORK}/aaa.vsim --protocol physiological --param female=0 --param family_history=0)
 if(NOT linear MATCHES "thrombus layer" OR thrombus_elements LESS 1000)
     message(FATAL_ERROR "the thrombus layer (${thrombus_elements} elements, thickest ${max_thrombus} mm) and the linear "

@@ -137,6 +137,7 @@ std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const s
     study.setArtifactAttributes(id, {{"min_dihedral_deg", numberText(build.wall.minDihedralDeg)},
                                      {"min_dihedral_unsmoothed_deg", numberText(build.wall.minDihedralUnsmoothedDeg)},
                                      {"nodes_smoothed", std::to_string(build.wall.nodesSmoothed)},
+                                     {"edge_flips", std::to_string(build.wall.edgeFlips)},
                                      {"mean_min_dihedral_deg", numberText(build.wall.meanMinDihedralDeg)},
                                      {"elements_under_5_deg", std::to_string(build.wall.slivers)},
                                      {"inverted_elements", std::to_string(build.wall.inverted)},

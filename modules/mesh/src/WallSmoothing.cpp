@@ -55,10 +55,10 @@ public:
         return worst;
     }
 
-    /// Pattern search for node v across its offset direction, within maxMove of `home`; returns whether it moved.
-    bool improve(std::size_t v, const Eigen::Vector3d& home, const Eigen::Vector3d& offsetDirection, double maxMove)
+    /// Pattern search for node v in the plane across `direction`, within maxMove of `home`; returns whether it moved.
+    bool improve(std::size_t v, const Eigen::Vector3d& home, const Eigen::Vector3d& direction, double maxMove)
     {
-        const Eigen::Vector3d across1 = offsetDirection.unitOrthogonal(), across2 = offsetDirection.cross(across1);
+        const Eigen::Vector3d across1 = direction.unitOrthogonal(), across2 = direction.cross(across1);
         Eigen::Vector3d best = m_mesh.points[v];
         double quality = qualityAt(v, best);
         if (quality < 0.0)
@@ -91,12 +91,12 @@ private:
 
 } // namespace
 
-SmoothingResult raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vector3d>& offsetDirection, double targetDeg,
-                                    double maxMoveMm)
+SmoothingResult raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vector3d>& direction, double targetDeg,
+                                    const std::vector<double>& maxMoveMm, const std::vector<Eigen::Vector3d>& built)
 {
     SmoothingResult result;
     Smoother smoother(mesh);
-    const std::vector<Eigen::Vector3d> home = mesh.points;
+    const std::vector<Eigen::Vector3d> home = built.empty() ? mesh.points : built;
     std::vector<double> angle(mesh.tets.size());
     result.minDihedralBeforeDeg = 180.0;
     for (std::size_t t = 0; t < mesh.tets.size(); ++t)
@@ -108,10 +108,10 @@ SmoothingResult raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vect
         for (std::size_t t = 0; t < mesh.tets.size(); ++t)
             if (angle[t] < targetDeg)
                 for (int v : mesh.tets[t])
-                    candidate[std::size_t(v)] = offsetDirection[std::size_t(v)].squaredNorm() > 0.0;
+                    candidate[std::size_t(v)] = direction[std::size_t(v)].squaredNorm() > 0.0;
         bool any = false;
         for (std::size_t v = 0; v < mesh.points.size(); ++v)
-            if (candidate[v] && smoother.improve(v, home[v], offsetDirection[v], maxMoveMm))
+            if (candidate[v] && smoother.improve(v, home[v], direction[v], maxMoveMm[v]))
                 moved[v] = any = true;
         if (!any)
             break;

@@ -10,9 +10,10 @@
 // wall of the given thickness inside the outer contour, and between it and the lumen the intraluminal thrombus
 // (cell field "material" 1; the wall 0). Where the outer contour lies less than 1.5 wall thicknesses from the lumen
 // (no thrombus to speak of, or outside the sac) both layers are wall, the inner one half a wall thickness.
-// Where the offsets crowd (a saddle such as the iliac crotch) the nodes off the lumen and off the held ends move, at
-// most half a wall thickness across their offset direction, to raise the smallest dihedral angles under 10 degrees
-// (src/WallSmoothing.h).
+// Where the offsets crowd (a saddle such as the iliac crotch) or a thick thrombus layer makes tall prisms, the nodes
+// off the held ends move to raise the smallest dihedral angles under 10 degrees (src/WallSmoothing.h): those off the
+// lumen at most half a wall thickness across their offset direction, the lumen nodes a tenth of their edge along
+// the surface; the diagonal two prisms share is flipped where the other one is better (src/WallFlips.h).
 
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TetMesh.h"
@@ -49,8 +50,9 @@ struct WallMesh
     TetMesh mesh;
     std::vector<std::vector<int>> endNodes; ///< per end, its nodes (both layers)
     double minDihedralDeg = 0.0;            ///< smallest dihedral angle of any element
-    double minDihedralUnsmoothedDeg = 0.0;  ///< the same before the nodes off the lumen moved (WallSmoothing.h)
+    double minDihedralUnsmoothedDeg = 0.0;  ///< the same before the nodes moved and edges flipped (src/WallSmoothing.h)
     std::size_t nodesSmoothed = 0;          ///< nodes moved to raise the smallest angles
+    std::size_t edgeFlips = 0;              ///< 4-4 edge flips (src/WallFlips.h)
     double largestSmoothingMoveMm = 0.0;    ///< the largest such move (mm)
     double meanMinDihedralDeg = 0.0;        ///< mean over elements of their smallest dihedral angle
     std::size_t slivers = 0;                ///< elements with a dihedral angle under 5 degrees
