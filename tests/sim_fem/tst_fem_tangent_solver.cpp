@@ -177,6 +177,35 @@ private slots:
         }
     }
 
+    /// The model's tangent (`material`, what the Cholesky would precondition with) not positive definite: the
+    /// preconditioner is the LU of the tangent itself, not of that matrix (before 2026-11-28 it was, and GMRES stayed
+    /// at 7.5e-8 after 200 iterations on an AAA wall).
+    void indefiniteModelTangentTakesTheTangentsLu()
+    {
+        const Case c = boxCase();
+        for (unsigned seed : {1u, 2u, 3u})
+        {
+            Eigen::VectorXd force;
+            const BlockSparseMatrix tangent = deformedTangent(c, seed, 1.08, force);
+            BlockSparseMatrix model = tangent;
+            double mean = 0.0;
+            for (std::size_t n = 0; n < model.nodeCount(); ++n)
+                mean += model.diagonal(n).trace() / (3.0 * double(model.nodeCount()));
+            for (std::size_t n = 0; n < model.nodeCount(); ++n)
+                model.diagonal(n) -= (mean / 3.0) * Eigen::Matrix3d::Identity();
+            StaticSolveSettings settings;
+            settings.linear = LinearSolver::CholeskyGmres;
+            TangentSolver solver(tangent, c.held, settings);
+            Eigen::VectorXd x;
+            const TangentSolveResult solved = solver.solve(tangent, force, x, true, &model);
+            qInfo("seed %u: indefinite model tangent, %d iterations, residual %.1e", seed, solved.iterations,
+                  solved.relativeResidual);
+            QVERIFY(solved.converged && solved.factorised);
+            QCOMPARE(solved.iterations, 1);
+            QVERIFY(residualOf(tangent, x, force, c.held) <= 2e-8);
+        }
+    }
+
     void gmresWithoutPreconditionerOnASmallSystem()
     {
         // Restarts every 3 vectors, no preconditioner: the budget holds and the residual reported is the true one.

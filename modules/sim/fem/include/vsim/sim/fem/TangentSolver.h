@@ -57,7 +57,8 @@ public:
 
 private:
     GmresResult gmres(const BlockSparseMatrix& tangent, const Eigen::VectorXd& f, Eigen::VectorXd& dx, int budget);
-    void factorisePreconditioner(const BlockSparseMatrix& tangent);
+    /// CHOLMOD of `symmetric` (the model's tangent, or the tangent itself), else UMFPACK's LU of `tangent`.
+    void factorisePreconditioner(const BlockSparseMatrix& symmetric, const BlockSparseMatrix& tangent);
     void factoriseLu(const BlockSparseMatrix& tangent);
 
     const StaticSolveSettings& m_settings;
