@@ -95,6 +95,17 @@ bool heldStayZero(const Eigen::VectorXd& x, const std::vector<std::uint8_t>& hel
     return true;
 }
 
+/// The matrix shifted down by a third of its mean diagonal: indefinite, still regular.
+BlockSparseMatrix shiftedIndefinite(BlockSparseMatrix matrix)
+{
+    double mean = 0.0;
+    for (std::size_t n = 0; n < matrix.nodeCount(); ++n)
+        mean += matrix.diagonal(n).trace() / (3.0 * double(matrix.nodeCount()));
+    for (std::size_t n = 0; n < matrix.nodeCount(); ++n)
+        matrix.diagonal(n) -= (mean / 3.0) * Eigen::Matrix3d::Identity();
+    return matrix;
+}
+
 } // namespace
 
 class FemTangentSolver : public QObject
@@ -157,13 +168,7 @@ private slots:
         for (unsigned seed : {1u, 2u, 3u})
         {
             Eigen::VectorXd force;
-            BlockSparseMatrix tangent = deformedTangent(c, seed, 1.08, force);
-            // Shifted down by a third of the mean diagonal: indefinite, still regular.
-            double mean = 0.0;
-            for (std::size_t n = 0; n < tangent.nodeCount(); ++n)
-                mean += tangent.diagonal(n).trace() / (3.0 * double(tangent.nodeCount()));
-            for (std::size_t n = 0; n < tangent.nodeCount(); ++n)
-                tangent.diagonal(n) -= (mean / 3.0) * Eigen::Matrix3d::Identity();
+            const BlockSparseMatrix tangent = shiftedIndefinite(deformedTangent(c, seed, 1.08, force));
             StaticSolveSettings settings;
             settings.linear = LinearSolver::CholeskyGmres;
             TangentSolver solver(tangent, c.held, settings);
@@ -187,12 +192,7 @@ private slots:
         {
             Eigen::VectorXd force;
             const BlockSparseMatrix tangent = deformedTangent(c, seed, 1.08, force);
-            BlockSparseMatrix model = tangent;
-            double mean = 0.0;
-            for (std::size_t n = 0; n < model.nodeCount(); ++n)
-                mean += model.diagonal(n).trace() / (3.0 * double(model.nodeCount()));
-            for (std::size_t n = 0; n < model.nodeCount(); ++n)
-                model.diagonal(n) -= (mean / 3.0) * Eigen::Matrix3d::Identity();
+            const BlockSparseMatrix model = shiftedIndefinite(tangent);
             StaticSolveSettings settings;
             settings.linear = LinearSolver::CholeskyGmres;
             TangentSolver solver(tangent, c.held, settings);
