@@ -28,6 +28,10 @@ constexpr float kUnknown = std::numeric_limits<float>::quiet_NaN();
 constexpr double kShellInnerMm = 1.5, kShellOuterMm = 2.5;
 
 constexpr std::size_t kJunctionWaves = 6; ///< waves after a jump before it is judged a junction or a leak
+/// A branch is crossed below the trunk's core level while its cross-section is under this (a 5 mm vessel): the blur
+/// and the contrast falling along the tree dim a thin branch's centre. A wider piece that grew out of the trunk
+/// through a contact (the cancellous bone of a vertebral body, 150..250 HU, under the core level) is not crossed.
+constexpr double kDimBranchAreaMm2 = 20.0;
 
 struct Component
 {
@@ -122,9 +126,10 @@ public:
             m_state[v] = kFinal;
             if (seed.include)
                 wave.push_back(v);
-            // The core level holds in the trunk only: a branch's centre is dimmer (blur, the contrast falling along it).
+            // The core level holds in the trunk and wide branches: a thin branch's centre is dimmer (blur, the
+            // contrast falling along it).
             float brightest = 0.0f;
-            if (!seed.include || smoothed(v, brightest) >= seed.coreHu || inBranch(v))
+            if (!seed.include || smoothed(v, brightest) >= seed.coreHu || inThinBranch(v))
                 expand(v, node.dist, seed);
             if (++popped % 65536 == 0)
                 progress.report(std::min(0.95, double(currentWave) * m_settings.waveWidthMm /
@@ -257,11 +262,11 @@ private:
         return -1;
     }
 
-    /// Whether voxel v grew inside a branch (its nearest linked ancestor's component is one).
-    bool inBranch(std::uint32_t v) const
+    /// Whether voxel v grew inside a branch under kDimBranchAreaMm2 (its nearest linked ancestor's component).
+    bool inThinBranch(std::uint32_t v) const
     {
         const int c = ancestorComponent(v);
-        return c >= 0 && m_components[std::size_t(c)].branch;
+        return c >= 0 && m_components[std::size_t(c)].branch && m_components[std::size_t(c)].areaMm2 < kDimBranchAreaMm2;
     }
 
     bool beyondBranchLimit(std::uint32_t v, float dist, const FrontSeed& seed) const
