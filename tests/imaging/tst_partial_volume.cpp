@@ -134,33 +134,18 @@ private:
             const double t = arc[i] > arc[i - 1] ? (s - arc[i - 1]) / (arc[i] - arc[i - 1]) : 0.0;
             const Eigen::Vector3d p = points[i - 1] + std::clamp(t, 0.0, 1.0) * (points[i] - points[i - 1]);
             const VesselSegment* nearest = nullptr;
-            double best = 1e300;
+            double best = 1e300, radius = 0.0;
             for (const VesselSegment& segment : arteries.segments)
-            {
-                const double d = distanceToAxis(segment, p);
-                if (d < best)
-                    best = d, nearest = &segment;
-            }
-            sum += truthRadiusNear(*nearest, p), ++count, onMatched += nearest == &matched ? 1 : 0;
+                if (const auto [d, r] = nearestOnAxis(segment, p); d < best)
+                    best = d, radius = r, nearest = &segment;
+            sum += radius, ++count, onMatched += nearest == &matched ? 1 : 0;
         }
         return {count ? sum / count : 0.0, count ? double(onMatched) / count : 0.0};
     }
 
-    /// Distance (mm) from p to a truth segment's axis polyline.
-    static double distanceToAxis(const VesselSegment& segment, const Eigen::Vector3d& p)
-    {
-        double best = 1e300;
-        for (std::size_t i = 1; i < segment.points.size(); ++i)
-        {
-            const Eigen::Vector3d a = segment.points[i - 1], d = segment.points[i] - a;
-            const double t = d.squaredNorm() > 0.0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-            best = std::min(best, (a + t * d - p).norm());
-        }
-        return best;
-    }
-
-    /// The truth segment's radius (mm) at its point nearest to p, interpolated between its samples.
-    static double truthRadiusNear(const VesselSegment& segment, const Eigen::Vector3d& p)
+    /// The distance (mm) from p to a truth segment's axis polyline, and the segment's radius (mm) at the nearest
+    /// point, interpolated between its samples.
+    static std::pair<double, double> nearestOnAxis(const VesselSegment& segment, const Eigen::Vector3d& p)
     {
         double best = 1e300, radius = segment.radii.front();
         for (std::size_t i = 1; i < segment.points.size(); ++i)
@@ -171,7 +156,7 @@ private:
             if (distance < best)
                 best = distance, radius = segment.radii[i - 1] + t * (segment.radii[i] - segment.radii[i - 1]);
         }
-        return radius;
+        return {best, radius};
     }
 
     void measure()

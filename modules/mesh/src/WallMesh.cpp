@@ -326,10 +326,9 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
     const std::vector<Eigen::Vector3d> built = wall.mesh.points;
     std::vector<Eigen::Vector3d> offLumen = across;
     std::fill(offLumen.begin(), offLumen.begin() + n, Eigen::Vector3d::Zero());
-    const detail::SmoothingResult smoothing = detail::raiseDihedralAngles(wall.mesh, offLumen, kSmoothingTargetDeg, maxMove);
+    wall.minDihedralUnsmoothedDeg = detail::raiseDihedralAngles(wall.mesh, offLumen, kSmoothingTargetDeg, maxMove);
     wall.edgeFlips = detail::flipEdgesOfFour(wall.mesh, material, kSmoothingTargetDeg);
     detail::raiseDihedralAngles(wall.mesh, across, kFloorDeg + kFloorMarginDeg, maxMove, built);
-    wall.minDihedralUnsmoothedDeg = smoothing.minDihedralBeforeDeg;
     for (std::size_t v = 0; v < built.size(); ++v)
         if (wall.mesh.points[v] != built[v])
         {

@@ -91,17 +91,15 @@ private:
 
 } // namespace
 
-SmoothingResult raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vector3d>& direction, double targetDeg,
-                                    const std::vector<double>& maxMoveMm, const std::vector<Eigen::Vector3d>& built)
+double raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vector3d>& direction, double targetDeg,
+                           const std::vector<double>& maxMoveMm, const std::vector<Eigen::Vector3d>& built)
 {
-    SmoothingResult result;
     Smoother smoother(mesh);
     const std::vector<Eigen::Vector3d> home = built.empty() ? mesh.points : built;
     std::vector<double> angle(mesh.tets.size());
-    result.minDihedralBeforeDeg = 180.0;
+    double smallestBefore = 180.0;
     for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-        result.minDihedralBeforeDeg = std::min(result.minDihedralBeforeDeg, angle[t] = smoother.angleOf(t));
-    std::vector<bool> moved(mesh.points.size(), false);
+        smallestBefore = std::min(smallestBefore, angle[t] = smoother.angleOf(t));
     for (int sweep = 0; sweep < kSweeps; ++sweep)
     {
         std::vector<bool> candidate(mesh.points.size(), false);
@@ -112,16 +110,13 @@ SmoothingResult raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vect
         bool any = false;
         for (std::size_t v = 0; v < mesh.points.size(); ++v)
             if (candidate[v] && smoother.improve(v, home[v], direction[v], maxMoveMm[v]))
-                moved[v] = any = true;
+                any = true;
         if (!any)
             break;
         for (std::size_t t = 0; t < mesh.tets.size(); ++t)
             angle[t] = smoother.angleOf(t);
     }
-    for (std::size_t v = 0; v < mesh.points.size(); ++v)
-        if (moved[v])
-            ++result.nodesMoved, result.largestMoveMm = std::max(result.largestMoveMm, (mesh.points[v] - home[v]).norm());
-    return result;
+    return smallestBefore;
 }
 
 } // namespace vsim::mesh::detail

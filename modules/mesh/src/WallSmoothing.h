@@ -17,17 +17,11 @@
 
 namespace vsim::mesh::detail {
 
-struct SmoothingResult
-{
-    double minDihedralBeforeDeg = 0.0;
-    std::size_t nodesMoved = 0;
-    double largestMoveMm = 0.0;
-};
-
 /// Moves the free nodes of elements whose smallest dihedral angle is under `targetDeg` in the plane across
 /// `direction[v]` (unit; zero for a node that stays), each at most `maxMoveMm[v]` from `home[v]` (where it was
-/// built; the current positions when `home` is empty), never inverting an element; six sweeps at most.
-SmoothingResult raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vector3d>& direction, double targetDeg,
-                                    const std::vector<double>& maxMoveMm, const std::vector<Eigen::Vector3d>& home = {});
+/// built; the current positions when `home` is empty), never inverting an element; six sweeps at most. Returns the
+/// smallest dihedral angle (degrees) of the mesh as it was given.
+double raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vector3d>& direction, double targetDeg,
+                           const std::vector<double>& maxMoveMm, const std::vector<Eigen::Vector3d>& home = {});
 
 } // namespace vsim::mesh::detail
