@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -33,6 +34,16 @@ std::vector<std::vector<std::uint32_t>> colourElements(const std::vector<std::ar
             nodeColours[std::size_t(node)].push_back(std::uint16_t(colour));
     }
     return colours;
+}
+
+/// The positive semi-definite part of a symmetric matrix: its negative eigenvalues set to zero.
+template <int N>
+Eigen::Matrix<double, N, N> positivePart(const Eigen::Matrix<double, N, N>& m)
+{
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>> eigen(m);
+    if (eigen.eigenvalues().minCoeff() >= 0.0)
+        return m;
+    return eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
 }
 
 /// B_a (6x3): the Green strain's variation (Voigt, engineering shear) by node a's displacement.
@@ -157,6 +168,16 @@ Eigen::Vector3d QuadraticFem::firstInvertedCentroid() const
 
 void QuadraticFem::assembleTangent(BlockSparseMatrix& matrix, bool) const
 {
+    assemble(matrix, false);
+}
+
+void QuadraticFem::assembleDefiniteTangent(BlockSparseMatrix& matrix, bool) const
+{
+    assemble(matrix, true);
+}
+
+void QuadraticFem::assemble(BlockSparseMatrix& matrix, bool definite) const
+{
     matrix.setZero();
     for (const auto& colour : m_colours)
     {
@@ -176,7 +197,9 @@ void QuadraticFem::assembleTangent(BlockSparseMatrix& matrix, bool) const
                 const Eigen::Matrix<double, 10, 3> g = quadraticShapeGradients(m_rest[e].gradients, l);
                 const Eigen::Matrix3d f = x * g;
                 Matrix6d tangent;
-                const Eigen::Matrix3d s = fromVoigt(material.stress(f.transpose() * f, &tangent));
+                Eigen::Matrix3d s = fromVoigt(material.stress(f.transpose() * f, &tangent));
+                if (definite)
+                    s = positivePart<3>(s), tangent = positivePart<6>(tangent);
                 std::array<Eigen::Matrix<double, 6, 3>, 10> b, db;
                 for (int a = 0; a < 10; ++a)
                     b[std::size_t(a)] = strainVariation(f, g.row(a)), db[std::size_t(a)] = weight * tangent * b[std::size_t(a)];

@@ -58,6 +58,7 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
     StaticSolveReport report;
     BlockSparseMatrix stiffness = model.makeMatrix();
     TangentSolver linear(stiffness, constrained, settings);
+    std::optional<BlockSparseMatrix> definite; // the preconditioner's matrix (CholeskyGmres)
     // The state at the model's positions: its element pass, inverted elements and residual force.
     Eigen::VectorXd residual, load;
     const auto evaluate = [&]() {
@@ -92,17 +93,22 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
             break;
         model.assembleTangent(stiffness, settings.rotationStiffness);
         const bool fresh = linear.needsPreconditioner(report.forceResidual);
-        // A fresh GMRES preconditioner factorises the model's own tangent: with the follower load's stiffness its
-        // symmetric part was indefinite on the thrombus wall for the first Newton updates, and each fell back to an
-        // UMFPACK LU 4x slower than the Cholesky (RESULTS.md, 2026-11-27).
-        std::optional<BlockSparseMatrix> material;
-        if (fresh && externalStiffness && settings.linear == LinearSolver::CholeskyGmres)
-            material = stiffness;
+        // A fresh GMRES preconditioner factorises the model's definite stand-in for its tangent: with the follower
+        // load's stiffness the symmetric part was indefinite on the thrombus wall for the first Newton updates, and
+        // so was the model's own tangent after the first long step; each fell back to an UMFPACK LU 3-4x slower
+        // than the Cholesky (RESULTS.md, 2026-11-27 and 2026-11-28).
+        const bool definiteWanted = fresh && settings.linear == LinearSolver::CholeskyGmres;
+        if (definiteWanted)
+        {
+            if (!definite)
+                definite = model.makeMatrix();
+            model.assembleDefiniteTangent(*definite, settings.rotationStiffness);
+        }
         if (externalStiffness)
             externalStiffness(model.positions(), stiffness);
         Eigen::VectorXd delta;
         const TangentSolveResult solved =
-            linear.solve(stiffness, residual, delta, fresh, material ? &*material : nullptr);
+            linear.solve(stiffness, residual, delta, fresh, definiteWanted ? &*definite : nullptr);
         report.cgIterations += solved.iterations;
         report.factorisations += solved.factorised ? 1 : 0;
         report.worstLinearResidual = std::max(report.worstLinearResidual, solved.relativeResidual);

@@ -44,6 +44,9 @@ public:
     /// The consistent tangent (material and geometric parts) at the current positions (`consistent` is ignored:
     /// there is no other).
     void assembleTangent(BlockSparseMatrix& matrix, bool consistent) const override;
+    /// The tangent with each quadrature point's stress (geometric part) and material tangent projected onto
+    /// their positive semi-definite parts (Teran et al. 2005): positive definite wherever the ends hold the wall.
+    void assembleDefiniteTangent(BlockSparseMatrix& matrix, bool consistent) const override;
 
     /// Elastic energy (J).
     double elasticEnergy() const;
@@ -57,6 +60,7 @@ private:
         double volume = 0.0;                   ///< m^3
     };
     Eigen::Matrix<double, 3, 10> elementPositions(std::size_t e) const;
+    void assemble(BlockSparseMatrix& matrix, bool definite) const;
 
     QuadraticTetMesh m_mesh;
     std::vector<HyperelasticMaterial> m_materials;

@@ -36,6 +36,13 @@ public:
     /// Writes the tangent -d f_elastic / dx of the last element pass into `matrix` (the pattern's); `consistent`:
     /// the full derivative where the model's usual one leaves a part out (the co-rotational rotations).
     virtual void assembleTangent(BlockSparseMatrix& matrix, bool consistent) const = 0;
+    /// The symmetric positive definite stand-in for the tangent that the GMRES preconditioner factorises by
+    /// Cholesky (without a follower load's stiffness): by default the usual tangent; a model whose tangent turns
+    /// indefinite (regions a long Newton step compressed) projects its element parts onto their positive parts.
+    virtual void assembleDefiniteTangent(BlockSparseMatrix& matrix, bool consistent) const
+    {
+        assembleTangent(matrix, consistent);
+    }
 };
 
 struct StaticSolveReport

@@ -3,8 +3,9 @@
 // One linear solve T dx = f per Newton update of the static solve (StaticSolver.h), by the strategy its settings
 // name: block-Jacobi conjugate gradients, a sparse direct factorisation per update (CHOLMOD of the symmetric part,
 // UMFPACK LU), or GMRES on the full tangent preconditioned by a factorisation kept across updates near
-// equilibrium: CHOLMOD's Cholesky of the symmetric part of the model's tangent (without the follower load's
-// stiffness) where that is positive definite, else UMFPACK's LU of the tangent. The last is the converged wall
+// equilibrium: CHOLMOD's Cholesky of the model's definite stand-in for its tangent (StaticModel::
+// assembleDefiniteTangent, without the follower load's stiffness) where that is positive definite, else UMFPACK's
+// LU of the tangent. The last is the converged wall
 // analysis's default. The follower pressure's load stiffness makes the tangent non-symmetric, which GMRES takes to
 // the 1e-8 the issue asks (12-26 iterations with a fresh Cholesky of the model's tangent on the thrombus wall);
 // CHOLMOD factorises the quadratic wall 2-4x faster than UMFPACK and solves it 2-10x faster (RESULTS.md); once the
@@ -47,8 +48,9 @@ public:
     /// Solves `tangent` dx = f; CholeskyGmres: with a fresh preconditioner when `fresh` (CHOLMOD of the symmetric
     /// part of `material` where given, else of the tangent; UMFPACK's LU of the tangent where that is not positive
     /// definite or does not bring GMRES to its tolerance), else the kept one with 3 x reuseIterations, then a fresh
-    /// one if that did not converge. `material`: the model's tangent without a follower load's stiffness (whose
-    /// symmetric part is indefinite where the load is large against a soft material, the thrombus at 120 mmHg).
+    /// one if that did not converge. `material`: the model's definite stand-in for its tangent, without a follower
+    /// load's stiffness (whose symmetric part is indefinite where the load is large against a soft material, the
+    /// thrombus at 120 mmHg).
     /// Throws vsim::Error when a factorisation fails (a part of the wall not held).
     TangentSolveResult solve(const BlockSparseMatrix& tangent, const Eigen::VectorXd& f, Eigen::VectorXd& dx,
                              bool fresh = true, const BlockSparseMatrix* material = nullptr);
