@@ -19,10 +19,11 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
                                           VesselSections& sections, std::vector<const study::Artifact*>& runs,
                                           const Progress& progress);
 
-/// Stenosis from the cross-sections of the newest centerlines when a segment narrows by 40 % or more; the blood-flow
-/// figures (velocity ratios, pressure drop) come with the blood-flow solver.
+/// Stenosis from the cross-sections of the newest centerlines when a segment narrows by 40 % or more; with the
+/// newest blood-flow run its figures (velocity ratios, pressure drop, wall loads), its velocity and pressure along
+/// the centerline as plots, and its time-averaged wall shear stress on the lumen surface as a picture.
 std::optional<report::Section> stenosisSection(const study::Study& study, VesselSections& sections,
-                                               const Progress& progress);
+                                               const ReportOptions& options, const Progress& progress);
 
 /// Chemoembolization: the newest drug network run.
 std::optional<report::Section> drugSection(const study::Study& study, const ReportOptions& options,

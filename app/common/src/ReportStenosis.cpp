@@ -1,9 +1,14 @@
 #include "ReportSections.h"
 
 #include "ReportSupport.h"
+#include "vsim/app/BloodFlowPipeline.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
+#include "vsim/viz/Snapshot.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace vsim::app::detail {
@@ -11,10 +16,67 @@ namespace {
 
 constexpr double kReportedStenosisPercent = 40.0; // a narrowing from which the stenosis section is written
 
+std::string fixed(double value, int decimals)
+{
+    return QString::number(value, 'f', decimals).toStdString();
+}
+
+/// The run's time-averaged sections along the centerline: peak and mean velocity (m/s), mean pressure (mmHg).
+std::vector<report::Plot> alongCenterlinePlots(const study::Artifact& flow)
+{
+    const std::vector<SectionAlongCenterline> along = sectionsAlongCenterline(flow);
+    if (along.empty())
+        return {};
+    report::Plot velocity{"Velocity along the centerline (cross-sections of the same run, time-averaged)",
+                          "Distance along the centerline from the inlet [mm]", "Velocity [m/s]", {}, {}};
+    report::PlotSeries peak{"peak (fastest 5 % of the section)", {}}, mean{"mean (flow rate / area)", {}};
+    report::Plot pressure{"Mean pressure along the centerline (gauge; the same sections)",
+                          "Distance along the centerline from the inlet [mm]", "Pressure [mmHg]", {}, {}};
+    report::PlotSeries level{"section mean", {}};
+    for (const SectionAlongCenterline& s : along)
+    {
+        peak.points.emplace_back(s.arcMm, s.peakVelocityMS);
+        mean.points.emplace_back(s.arcMm, s.meanVelocityMS);
+        level.points.emplace_back(s.arcMm, units::paToMmHg(s.meanPressurePa));
+    }
+    velocity.series = {peak, mean};
+    pressure.series = {level};
+    return {velocity, pressure};
+}
+
+/// The "Wall loads (SPH)" surface made from `run` (the newest), or nullptr.
+const study::Artifact* wallLoadsOf(const study::Study& study, const std::string& run)
+{
+    const study::Artifact* found = nullptr;
+    for (const study::Artifact& a : study.artifacts())
+        if (a.kind == study::ArtifactKind::Surface && a.provenance.command == "simulate sph" &&
+            std::count(a.provenance.inputs.begin(), a.provenance.inputs.end(), run))
+            found = &a;
+    return found;
+}
+
+/// The lumen surface coloured by TAWSS from 0 to its largest value, which is called out.
+QImage wallShearPicture(const study::Study& study, const study::Artifact& surfaceArtifact, QSize pixels)
+{
+    const TriangleMesh surface = study.loadSurface(surfaceArtifact.id);
+    const auto field = surface.pointFields.find("tawss_pa");
+    if (field == surface.pointFields.end())
+        throw Error("the wall-load surface has no TAWSS");
+    std::size_t largest = field->second.size();
+    for (std::size_t v = 0; v < field->second.size(); ++v)
+        if (std::isfinite(field->second[v]) && (largest == field->second.size() || field->second[v] > field->second[largest]))
+            largest = v;
+    if (largest == field->second.size())
+        throw Error("no vertex of the wall-load surface was sampled");
+    const double high = std::max(field->second[largest], 1e-6);
+    const viz::Callout callout{surface.points[largest], "largest TAWSS " + fixed(high, 2) + " Pa"};
+    return viz::snapshotSurface(surface, "tawss_pa", {"TAWSS [Pa]", 0.0, high}, pixels, {callout});
+}
+
 } // namespace
 
 std::optional<report::Section> stenosisSection(const study::Study& study, VesselSections& sections,
-                                               const Progress& progress)
+                                               const ReportOptions& options, const Progress& progress)
 {
     const imaging::VesselMeasurements* measured =
         sections.of(study.newestArtifact(study::ArtifactKind::Skeleton, "centerline"), progress);
@@ -73,6 +135,20 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
                     {"wall_highest_pressure_pa", "Highest wall pressure (gauge)", "Pa"},
                     {"wall_lowest_pressure_pa", "Lowest wall pressure (gauge)", "Pa"}});
         section.blocks.push_back(wall);
+    }
+    for (report::Plot& plot : alongCenterlinePlots(*flow))
+        section.blocks.push_back(std::move(plot));
+    if (const study::Artifact* loads = wallLoadsOf(study, flow->id))
+    {
+        const auto& parameters = loads->provenance.parameters;
+        const double from = std::atof(textOr(parameters, "averaged_from_s", "0").c_str()),
+                     over = std::atof(textOr(parameters, "averaged_over_s", "0").c_str());
+        const std::string caption = "Time-averaged wall shear stress (TAWSS, Pa) on the lumen surface, averaged over " +
+                                    fixed(1e3 * from, 1) + "-" + fixed(1e3 * (from + over), 1) +
+                                    " ms of the same run, seen from the front; grey: no value (past an open end, or within a kernel support of it)";
+        section.blocks.push_back(snapshotOrNote(caption, options, [&] {
+            return wallShearPicture(study, *loads, QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4));
+        }));
     }
     if (const std::string warning = runStatusWarning(runStatusOf(*flow)); !warning.empty())
         section.blocks.push_back(report::Paragraph{"These blood-flow figures come from a run that is " + warning + "."});

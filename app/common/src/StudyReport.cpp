@@ -83,7 +83,7 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
     }
     if (wanted("stenosis"))
     {
-        if (auto section = detail::stenosisSection(study, sections, progress.subRange(0.4, 0.6)))
+        if (auto section = detail::stenosisSection(study, sections, options, progress.subRange(0.4, 0.6)))
             report.sections.push_back(std::move(*section));
         else
             report.notRun.push_back("Stenosis / blockage: no segment of the centerlines narrows by 40 % or more, and "
