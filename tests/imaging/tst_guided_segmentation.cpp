@@ -126,10 +126,11 @@ private slots:
     /// The same from the automatic point on coarse voxels (1.1 x 1.1 x 1.6 mm, a low-dose abdominal protocol): before
     /// 2026-11-28 seed 3 took two vertebral bodies (31 % of its label bone, Dice 0.75): its front entered the
     /// cancellous bone through the cortex touching the aorta and crossed it as a "branch" under the core level.
-    /// Measured since the core level holds in branches over 20 mm2: Dice 0.962 / 0.969 / 0.947, bone 0 %. Left:
-    /// 1 mm waves on 1.6 mm slices alias (a wave between two slices holds few voxels, the next many), so 6-10
-    /// false leaks cut bands out of the aorta; 1.2 mm waves cut none here (Dice 0.985) but let the CT pulmonary
-    /// angiogram's front into the heart (15 % of its label). Asserted: no bone, Dice 0.94.
+    /// With the core level held in branches over 20 mm2: Dice 0.962 / 0.969 / 0.947, bone 0 %; but 1 mm waves on
+    /// 1.6 mm slices alias (a wave between two slices holds few voxels, the next many), and 6 / 8 / 10 false
+    /// leaks cut bands out of the aorta (1.2 mm waves cut none here but let the CT pulmonary angiogram's front into
+    /// the heart). Since the leak test reads each cross-section averaged over the waves a voxel layer spans:
+    /// Dice 0.985 / 0.978 / 0.980, 0 / 1 / 1 leaks cut. Asserted: no bone, Dice 0.97, at most 2 leaks cut.
     void aaaOnCoarseVoxels()
     {
         for (std::uint64_t seed : {1u, 2u, 3u})
@@ -144,7 +145,8 @@ private slots:
                   "%g leak(s) cut", (unsigned long long)seed, o.dice, o.recall, o.precision, bone,
                   result.figures.at("leaks_cut"));
             QVERIFY(result.seedFound);
-            QVERIFY(o.dice >= 0.94 && bone < 0.005);
+            QVERIFY(o.dice >= 0.97 && bone < 0.005);
+            QVERIFY(result.figures.at("leaks_cut") <= 2.0);
         }
     }
 

@@ -77,6 +77,7 @@ public:
                     if (di || dj || dk)
                         m_steps.push_back({{di, dj, dk}, float(Vector3d(di * s.x(), dj * s.y(), dk * s.z()).norm())});
         m_voxelVolume = s.prod();
+        m_aliasWaves = std::max<std::size_t>(1, std::size_t(std::ceil(s.maxCoeff() / settings.waveWidthMm - 1e-9)));
     }
 
     WaveResult run(const Progress& progress)
@@ -348,6 +349,16 @@ private:
             m_components[std::size_t(c.parent)].children.push_back(id);
     }
 
+    /// The component's cross-section averaged with its ancestors' over m_aliasWaves waves (mm2).
+    double leakTestArea(int id) const
+    {
+        double sum = 0.0;
+        std::size_t n = 0;
+        for (int a = id; a >= 0 && n < m_aliasWaves; a = m_components[std::size_t(a)].parent, ++n)
+            sum += m_components[std::size_t(a)].areaMm2;
+        return sum / double(std::max<std::size_t>(n, 1));
+    }
+
     /// Branch bookkeeping and the leak test, once every component of the wave is linked.
     void judgeComponent(int id)
     {
@@ -372,7 +383,7 @@ private:
         for (int a = c.parent; a >= 0 && history.size() < 12 && m_components[std::size_t(a)].wave >= inflation;
              a = m_components[std::size_t(a)].parent)
         {
-            history.push_back(m_components[std::size_t(a)].areaMm2);
+            history.push_back(leakTestArea(a));
             sides.push_back(m_components[std::size_t(a)].side);
         }
         if (c.parent >= 0)
@@ -396,7 +407,8 @@ private:
         // back to its calibre) is not a leak; nor is a vessel followed towards its root (1.6 x at most per merge).
         const std::size_t neck = std::size_t(std::min_element(history.begin(), history.end()) - history.begin());
         const double reference = history[neck];
-        if (c.areaMm2 <= m_settings.leakAreaFactor * reference || c.areaMm2 <= m_settings.leakMinAreaMm2)
+        const double area = leakTestArea(id);
+        if (area <= m_settings.leakAreaFactor * reference || area <= m_settings.leakMinAreaMm2)
             return;
         const bool sideNeck = c.side || std::find(sides.begin(), sides.begin() + std::ptrdiff_t(neck) + 1, true) !=
                                             sides.begin() + std::ptrdiff_t(neck) + 1;
@@ -410,9 +422,9 @@ private:
             for (std::size_t n = 0; n < 40 && a >= 0 && m_components[std::size_t(a)].wave >= inflation;
                  ++n, a = m_components[std::size_t(a)].parent)
                 if (n > 0)
-                    beforeNeck = std::max(beforeNeck, m_components[std::size_t(a)].areaMm2);
+                    beforeNeck = std::max(beforeNeck, leakTestArea(a));
         }
-        if (!sideNeck && c.areaMm2 <= 1.5 * beforeNeck)
+        if (!sideNeck && area <= 1.5 * beforeNeck)
             return;
         // A leak, unless the next waves show a junction reached from a branch (a front climbing towards the root
         // meets the parent and a sibling at once: the jump splits into pieces each of a branch's calibre).
@@ -572,6 +584,9 @@ private:
     std::optional<ShellMedians> m_background; ///< localBackground's cache (made when a thin level is first tried)
     std::size_t m_thinBursts = 0;
     double m_voxelVolume = 1.0;
+    /// Waves a voxel layer spans: on voxels thicker than a wave, consecutive waves alternately hold one layer and
+    /// none, so the leak test reads the cross-section averaged over this many waves (1 where voxels are thinner).
+    std::size_t m_aliasWaves = 1;
 };
 
 } // namespace
