@@ -227,7 +227,8 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
         std::any_of(tawss->second.begin(), tawss->second.end(), [](double v) { return std::isfinite(v); }))
     {
         study::Provenance derived{"simulate sph", {}, {id}, "", ""};
-        derived.parameters["fields"] = "tawss_pa, osi, wall_pressure_pa (NaN past an open end's plane and within a kernel support inside it)";
+        derived.parameters["fields"] =
+            "tawss_pa, osi, wall_pressure_pa (NaN past an open end's plane and within a kernel support inside it)";
         derived.parameters["averaged_from_s"] = preciseNumberText(flow.averagedFromS); // the time window
         derived.parameters["averaged_over_s"] = preciseNumberText(flow.averagedS);
         added.wallLoads = study.addSurface(flow.wallSurface, "Wall loads (SPH)", derived, warnings);

@@ -62,13 +62,14 @@ QImage wallShearPicture(const study::Study& study, const study::Artifact& surfac
     const auto field = surface.pointFields.find("tawss_pa");
     if (field == surface.pointFields.end())
         throw Error("the wall-load surface has no TAWSS");
-    std::size_t largest = field->second.size();
-    for (std::size_t v = 0; v < field->second.size(); ++v)
-        if (std::isfinite(field->second[v]) && (largest == field->second.size() || field->second[v] > field->second[largest]))
+    const std::vector<double>& tawss = field->second;
+    std::size_t largest = tawss.size();
+    for (std::size_t v = 0; v < tawss.size(); ++v)
+        if (std::isfinite(tawss[v]) && (largest == tawss.size() || tawss[v] > tawss[largest]))
             largest = v;
-    if (largest == field->second.size())
+    if (largest == tawss.size())
         throw Error("no vertex of the wall-load surface was sampled");
-    const double high = std::max(field->second[largest], 1e-6);
+    const double high = std::max(tawss[largest], 1e-6);
     const viz::Callout callout{surface.points[largest], "largest TAWSS " + fixed(high, 2) + " Pa"};
     return viz::snapshotSurface(surface, "tawss_pa", {"TAWSS [Pa]", 0.0, high}, pixels, {callout});
 }
@@ -145,7 +146,8 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
                      over = std::atof(textOr(parameters, "averaged_over_s", "0").c_str());
         const std::string caption = "Time-averaged wall shear stress (TAWSS, Pa) on the lumen surface, averaged over " +
                                     fixed(1e3 * from, 1) + "-" + fixed(1e3 * (from + over), 1) +
-                                    " ms of the same run, seen from the front; grey: no value (past an open end, or within a kernel support of it)";
+                                    " ms of the same run, seen from the front; grey: no value (past an open end, or "
+                                    "within a kernel support of it)";
         section.blocks.push_back(snapshotOrNote(caption, options, [&] {
             return wallShearPicture(study, *loads, QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4));
         }));
