@@ -3,6 +3,7 @@
 #include "GuidedHelpers.h"
 #include "LocalHalfLevel.h"
 #include "ShellOffsets.h"
+#include "WaveComponents.h"
 #include "WorkBox.h"
 
 #include <algorithm>
@@ -33,20 +34,7 @@ constexpr std::size_t kJunctionWaves = 6; ///< waves after a jump before it is j
 /// through a contact (the cancellous bone of a vertebral body, 150..250 HU, under the core level) is not crossed.
 constexpr double kDimBranchAreaMm2 = 20.0;
 
-struct Component
-{
-    int parent = -1;
-    int seed = 0;
-    std::size_t wave = 0;
-    double areaMm2 = 0.0;
-    bool branch = false;
-    double branchStartMm = 0.0;
-    double trunkAreaMm2 = 0.0; ///< median cross-section of the trunk this component belongs to or left
-    bool blocked = false;
-    bool side = false; ///< split off as the smaller part while its parent went on elsewhere
-    std::vector<int> children;
-    std::vector<std::uint32_t> voxels;
-};
+using Component = WaveComponent;
 
 struct Node
 {
@@ -349,15 +337,8 @@ private:
             m_components[std::size_t(c.parent)].children.push_back(id);
     }
 
-    /// The component's cross-section averaged with its ancestors' over m_aliasWaves waves (mm2).
-    double leakTestArea(int id) const
-    {
-        double sum = 0.0;
-        std::size_t n = 0;
-        for (int a = id; a >= 0 && n < m_aliasWaves; a = m_components[std::size_t(a)].parent, ++n)
-            sum += m_components[std::size_t(a)].areaMm2;
-        return sum / double(std::max<std::size_t>(n, 1));
-    }
+    /// The cross-section the leak test reads (WaveComponents.h), mm2.
+    double leakTestArea(int id) const { return averagedAreaMm2(m_components, id, m_aliasWaves); }
 
     /// Branch bookkeeping and the leak test, once every component of the wave is linked.
     void judgeComponent(int id)
@@ -584,9 +565,7 @@ private:
     std::optional<ShellMedians> m_background; ///< localBackground's cache (made when a thin level is first tried)
     std::size_t m_thinBursts = 0;
     double m_voxelVolume = 1.0;
-    /// Waves a voxel layer spans: on voxels thicker than a wave, consecutive waves alternately hold one layer and
-    /// none, so the leak test reads the cross-section averaged over this many waves (1 where voxels are thinner).
-    std::size_t m_aliasWaves = 1;
+    std::size_t m_aliasWaves = 1; ///< waves a voxel layer spans (averagedAreaMm2)
 };
 
 } // namespace
