@@ -43,8 +43,28 @@ StepReport BackwardEuler::step(CorotationalFem& model, const Eigen::VectorXd& ex
         for (Eigen::Index i = 0; i < deltaV.size(); ++i)
             if (constrained[std::size_t(i)])
                 deltaV[i] = 0.0;
+    if (m_settings.preconditioner == CgPreconditioner::Multigrid)
+    {
+        if (!m_multigrid || constrained != m_multigridConstraints)
+        {
+            m_multigrid = std::make_unique<AggregationMultigrid>(m_system, model.positions(), constrained);
+            m_multigridConstraints = constrained;
+            m_iterationsAfterSetup = -1;
+        }
+        else
+            m_multigrid->refreshFinest(m_system);
+    }
     const ConjugateGradientResult cg = solveConjugateGradient(m_system, rhs, deltaV, constrained, m_settings.cgTolerance,
-                                                              m_settings.cgMaxIterations);
+                                                              m_settings.cgMaxIterations, m_multigrid.get());
+    if (m_multigrid)
+    {
+        // The coarse levels keep the set-up's matrix: set up again once the wall has turned enough to double the
+        // iterations (the next step's).
+        if (m_iterationsAfterSetup < 0)
+            m_iterationsAfterSetup = cg.iterations;
+        else if (cg.iterations > 2 * m_iterationsAfterSetup + 5)
+            m_multigrid.reset();
+    }
     report.cgIterations = cg.iterations;
     report.cgResidual = cg.relativeResidual;
     report.cgConverged = cg.converged;

@@ -10,7 +10,7 @@ namespace vsim::sim::fem {
 
 ConjugateGradientResult solveConjugateGradient(const BlockSparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                                const std::vector<std::uint8_t>& constrained, double tolerance,
-                                               int maxIterations)
+                                               int maxIterations, const AggregationMultigrid* multigrid)
 {
     const std::size_t nodes = a.nodeCount();
     const Eigen::Index n = Eigen::Index(3 * nodes);
@@ -54,6 +54,11 @@ ConjugateGradientResult solveConjugateGradient(const BlockSparseMatrix& a, const
         rr += residual.squaredNorm();
         rz += residual.dot(preconditioned);
     }
+    if (multigrid)
+    {
+        multigrid->apply(a, r, z);
+        rz = r.dot(z);
+    }
     // Relative to |S b|; when only prescribed values drive the free ones (b = 0 there), to the first residual.
     const double reference = bb > 0.0 ? std::sqrt(bb) : std::sqrt(rr);
     if (reference == 0.0)
@@ -92,6 +97,11 @@ ConjugateGradientResult solveConjugateGradient(const BlockSparseMatrix& a, const
             z.segment<3>(3 * node) = zNode;
             rzNext += rNode.dot(zNode);
             rr += rNode.squaredNorm();
+        }
+        if (multigrid)
+        {
+            multigrid->apply(a, r, z);
+            rzNext = r.dot(z);
         }
         beta = rzNext / rz;
         rz = rzNext;

@@ -4,8 +4,11 @@
 // ch. 4.4; Baraff & Witkin 1998 linearised form): with the rotations of the step's start,
 //   [(1 + h alpha) M + (h beta + h^2) K] dv = h (f_elastic + f_external - alpha M v) - h (beta + h) K v,
 //   v += dv, x += h v,
-// solved by block-Jacobi PCG warm-started from the last step's dv. Constrained components keep dv = 0.
+// solved by PCG warm-started from the last step's dv, preconditioned by block Jacobi or by smoothed-aggregation
+// multigrid (AggregationMultigrid.h; set up at the first step, and again when the iterations have more than
+// doubled since). Constrained components keep dv = 0.
 
+#include "vsim/sim/fem/AggregationMultigrid.h"
 #include "vsim/sim/fem/BlockSparseMatrix.h"
 #include "vsim/sim/fem/Contacts.h"
 #include "vsim/sim/fem/CorotationalFem.h"
@@ -13,9 +16,16 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace vsim::sim::fem {
+
+enum class CgPreconditioner
+{
+    BlockJacobi, ///< 3x3 diagonal blocks: cheap, hundreds of iterations to 1e-8 on a wall
+    Multigrid,   ///< one smoothed-aggregation V-cycle: tens of iterations, each about five products
+};
 
 struct BackwardEulerSettings
 {
@@ -24,6 +34,7 @@ struct BackwardEulerSettings
     double rayleighBeta = 0.22;  ///< s (thesis: 0.22 s)
     double cgTolerance = 1e-6;   ///< relative residual
     int cgMaxIterations = 100;
+    CgPreconditioner preconditioner = CgPreconditioner::BlockJacobi;
 };
 
 struct StepReport
@@ -47,11 +58,16 @@ public:
                     const std::vector<std::uint8_t>& constrained, const Contacts& contacts = {});
     /// The system matrix of the last step (for the GPU parity tests and benchmarks).
     const BlockSparseMatrix& systemMatrix() const { return m_system; }
+    /// The multigrid hierarchy (null with block Jacobi, or before the first step).
+    const AggregationMultigrid* multigrid() const { return m_multigrid.get(); }
 
 private:
     BackwardEulerSettings m_settings;
     BlockSparseMatrix m_system;
     Eigen::VectorXd m_lastDeltaV;
+    std::unique_ptr<AggregationMultigrid> m_multigrid;
+    std::vector<std::uint8_t> m_multigridConstraints;
+    int m_iterationsAfterSetup = -1; ///< PCG iterations of the first solve with the current hierarchy
 };
 
 } // namespace vsim::sim::fem
