@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Collects the GPU test and benchmark binaries with the shared libraries they need (Qt Core/Test and theirs,
 # not the C runtime) into .dev/gpu/, for the accelerator machine, which has the CUDA driver but no Qt.
-# Usage: scripts/gpu-bundle.sh [build dir]; then on the accelerator: LD_LIBRARY_PATH=.dev/gpu/lib .dev/gpu/<test>
+# Usage: scripts/gpu-bundle.sh [build dir] [regex of binary names, e.g. 'fem' (the whole set is over the device
+# tool's 64 MiB)]; then on the accelerator: LD_LIBRARY_PATH=.dev/gpu/lib .dev/gpu/<test>
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build/default}
+only=${2:-.}
 out=.dev/gpu
 rm -rf "$out" && mkdir -p "$out/lib"
-binaries=$(find "$build/tests/gpu" "$build/tests/bench" -maxdepth 2 -type f -executable -name 'tst_*' -o -type f -executable -name 'bench_*' 2>/dev/null | grep -E '(gpu|cuda)' || true)
+binaries=$(find "$build/tests/gpu" "$build/tests/bench" -maxdepth 2 -type f -executable -name 'tst_*' -o -type f -executable -name 'bench_*' 2>/dev/null | grep -E '(gpu|cuda)' | grep -E "$only" || true)
 [ -n "$binaries" ] || { echo "gpu-bundle: no GPU binaries under $build (configure with VSIM_CUDA=ON)" >&2; exit 1; }
 for binary in $binaries; do
     cp "$binary" "$out/"

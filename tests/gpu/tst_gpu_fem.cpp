@@ -24,9 +24,13 @@ private slots:
         QTest::addColumn<int>("around");
         QTest::addColumn<int>("along");
         QTest::addColumn<double>("pressure");
-        QTest::newRow("tube 880 nodes, 16 kPa") << 40 << 10 << 16e3;
-        QTest::newRow("tube 2250 nodes, 16 kPa") << 75 << 14 << 16e3;
-        QTest::newRow("tube 2250 nodes, 1 MPa (large rotation)") << 75 << 14 << 1e6;
+        QTest::addColumn<bool>("multigrid");
+        QTest::newRow("tube 880 nodes, 16 kPa") << 40 << 10 << 16e3 << false;
+        QTest::newRow("tube 2250 nodes, 16 kPa") << 75 << 14 << 16e3 << false;
+        QTest::newRow("tube 2250 nodes, 1 MPa (large rotation)") << 75 << 14 << 1e6 << false;
+        // Multigrid-preconditioned PCG to 1e-8 (every step converged, no iteration cap reached).
+        QTest::newRow("tube 880 nodes, 16 kPa, multigrid to 1e-8") << 40 << 10 << 16e3 << true;
+        QTest::newRow("tube 2250 nodes, 16 kPa, multigrid to 1e-8") << 75 << 14 << 16e3 << true;
     }
 
     void parityWithTheCpuAfter100Steps()
@@ -36,6 +40,7 @@ private slots:
         QFETCH(int, around);
         QFETCH(int, along);
         QFETCH(double, pressure);
+        QFETCH(bool, multigrid);
         const StructuredTetMesh mesh = tubeWallTetMesh(0.01, 0.0115, 0.1, {1, around, along});
         ElasticMaterial material;
         CorotationalFem cpu(mesh.points, mesh.tets, material);
@@ -50,10 +55,12 @@ private slots:
                 mesh.points[std::size_t(face[2])].head<2>().norm() < 0.01 + 1e-9)
                 inner.push_back(face);
         BackwardEulerSettings settings;
+        if (multigrid)
+            settings.preconditioner = CgPreconditioner::Multigrid, settings.cgTolerance = 1e-8, settings.cgMaxIterations = 500;
         cuda::CudaBackwardEuler gpu(cpu, settings, fixed, inner);
         BackwardEuler integrator(cpu, settings);
         Eigen::VectorXd forces(cpu.positions().size());
-        int worstIterationGap = 0, cpuIterations = 0, gpuIterations = 0;
+        int worstIterationGap = 0, cpuIterations = 0, gpuIterations = 0, unconverged = 0;
         for (int step = 0; step < 100; ++step)
         {
             forces.setZero();
@@ -62,6 +69,7 @@ private slots:
             const StepReport b = gpu.step(pressure);
             worstIterationGap = std::max(worstIterationGap, std::abs(a.cgIterations - b.cgIterations));
             cpuIterations += a.cgIterations, gpuIterations += b.cgIterations;
+            unconverged += (a.cgConverged ? 0 : 1) + (b.cgConverged ? 0 : 1);
         }
         Eigen::VectorXd positions, velocities;
         gpu.download(positions, velocities);
@@ -78,6 +86,8 @@ private slots:
               gpuIterations, worstIterationGap);
         QVERIFY(difference <= 1e-5 * largest);
         QVERIFY(worstIterationGap <= 1);
+        if (multigrid)
+            QCOMPARE(unconverged, 0);
     }
 
     // The run driver on the GPU stepper (what `simulate fem --backend cuda` runs) against the CPU, on a tube wall

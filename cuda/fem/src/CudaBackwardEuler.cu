@@ -1,5 +1,7 @@
 #include "vsim/cuda_fem/CudaBackwardEuler.h"
 
+#include "DeviceBuffer.cuh"
+#include "DeviceMultigrid.cuh"
 #include "FemKernels.cuh"
 #include "vsim/cuda_common/CudaCheck.h"
 
@@ -13,33 +15,10 @@ namespace vsim::cuda {
 namespace {
 
 constexpr int kThreads = 256;
+/// PCG iterations per graph replay with the multigrid preconditioner (tens of iterations a step).
+constexpr int kMultigridRun = 4;
 
 int blocksFor(std::size_t count) { return int((count + kThreads - 1) / kThreads); }
-
-/// A device buffer freed with its owner.
-template <typename T>
-struct Buffer
-{
-    T* data = nullptr;
-    std::size_t count = 0;
-    void allocate(std::size_t n)
-    {
-        count = n;
-        VSIM_CUDA_CHECK(cudaMalloc(&data, std::max<std::size_t>(1, n) * sizeof(T)));
-    }
-    void upload(const std::vector<T>& host)
-    {
-        allocate(host.size());
-        if (!host.empty())
-            VSIM_CUDA_CHECK(cudaMemcpy(data, host.data(), host.size() * sizeof(T), cudaMemcpyHostToDevice));
-    }
-    void zero(std::size_t n)
-    {
-        allocate(n);
-        VSIM_CUDA_CHECK(cudaMemset(data, 0, std::max<std::size_t>(1, n) * sizeof(T)));
-    }
-    ~Buffer() { cudaFree(data); }
-};
 
 std::vector<double> toVector(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
@@ -97,19 +76,49 @@ struct CudaBackwardEuler::Device
     int rowBlocks = 0, nodeBlocks = 0; // grids of the PCG kernels: what the GPU holds at once, or fewer
     Buffer<fem::DeviceScalars> scalars;
     fem::DeviceModel model;
+    std::unique_ptr<DeviceMultigrid> multigrid; // with CgPreconditioner::Multigrid
     cudaStream_t stream = nullptr;
-    cudaGraph_t graph = nullptr;
-    cudaGraphExec_t graphExec = nullptr;
+    // The step as three graphs: up to the PCG's start, a run of iterations (replayed until the PCG stops: all of
+    // them in one run with block Jacobi, kMultigridRun with multigrid, whose V-cycles make idle iterations dear),
+    // and the update.
+    struct Graph
+    {
+        cudaGraph_t graph = nullptr;
+        cudaGraphExec_t exec = nullptr;
+    } start, iterations, finish;
+    int iterationsPerRun = 0;
     std::size_t bytes = 0;
 
     ~Device()
     {
-        if (graphExec)
-            cudaGraphExecDestroy(graphExec);
-        if (graph)
-            cudaGraphDestroy(graph);
+        for (Graph* g : {&start, &iterations, &finish})
+        {
+            if (g->exec)
+                cudaGraphExecDestroy(g->exec);
+            if (g->graph)
+                cudaGraphDestroy(g->graph);
+        }
         if (stream)
             cudaStreamDestroy(stream);
+    }
+
+    template <typename Body>
+    void capture(Graph& g, Body body)
+    {
+        VSIM_CUDA_CHECK(cudaStreamBeginCapture(stream, cudaStreamCaptureModeThreadLocal));
+        body();
+        VSIM_CUDA_CHECK(cudaStreamEndCapture(stream, &g.graph));
+        VSIM_CUDA_CHECK(cudaGraphInstantiate(&g.exec, g.graph, 0));
+    }
+
+    /// z = M r with the multigrid V-cycle, then r.z (the PCG's rz and beta).
+    void recordCycle()
+    {
+        const fem::CycleGuard guard{scalars.data, settings.cgTolerance, settings.cgMaxIterations};
+        multigrid->record(stream, model, inverseDiagonal.data, r.data, z.data, guard);
+        fem::cgDotKernel<<<nodeBlocks, kThreads, 0, stream>>>(int(3 * nodes), r.data, z.data, partials.data,
+                                                              scalars.data, settings.cgTolerance,
+                                                              settings.cgMaxIterations);
     }
 
     void record()
@@ -118,7 +127,28 @@ struct CudaBackwardEuler::Device
         const double massFactor = 1.0 + h * alpha, stiffnessFactor = h * beta + h * h;
         const int dofs = int(3 * nodes);
         fem::DeviceScalars* s = scalars.data;
-        VSIM_CUDA_CHECK(cudaStreamBeginCapture(stream, cudaStreamCaptureModeThreadLocal));
+        capture(start, [&] { recordStart(h, alpha, beta, massFactor, stiffnessFactor, dofs, s); });
+        iterationsPerRun = multigrid ? std::min(kMultigridRun, settings.cgMaxIterations) : settings.cgMaxIterations;
+        capture(iterations, [&] {
+            for (int k = 0; k < iterationsPerRun; ++k)
+            {
+                fem::cgDirectionKernel<<<rowBlocks, kThreads, 0, stream>>>(model, z.data, p.data, q.data, partials.data,
+                                                                           s, settings.cgTolerance, settings.cgMaxIterations);
+                fem::cgUpdateKernel<<<nodeBlocks, kThreads, 0, stream>>>(
+                    model, multigrid ? nullptr : inverseDiagonal.data, dv.data, r.data, z.data, p.data, q.data,
+                    partials.data, s, settings.cgTolerance, settings.cgMaxIterations);
+                if (multigrid)
+                    recordCycle();
+            }
+        });
+        capture(finish, [&] {
+            fem::finishKernel<<<blocksFor(std::size_t(dofs)), kThreads, 0, stream>>>(dofs, dv.data, h, v.data, x.data);
+        });
+    }
+
+    void recordStart(double h, double alpha, double beta, double massFactor, double stiffnessFactor, int dofs,
+                     fem::DeviceScalars* s)
+    {
         fem::resetKernel<<<1, 1, 0, stream>>>(s);
         fem::elementKernel<<<blocksFor(std::size_t(model.elements)), kThreads, 0, stream>>>(model, x.data, s);
         fem::assembleKernel<<<blocksFor(std::size_t(model.storedBlocks)), kThreads, 0, stream>>>(model, stiffnessFactor);
@@ -132,17 +162,8 @@ struct CudaBackwardEuler::Device
             model, force.data, external.data, v.data, av.data, h, alpha, beta, massFactor, stiffnessFactor, rhs.data, dv.data);
         fem::cgInitKernel<<<rowBlocks, kThreads, 0, stream>>>(model, rhs.data, dv.data, inverseDiagonal.data, r.data,
                                                               z.data, p.data, q.data, partials.data, s);
-        for (int k = 0; k < settings.cgMaxIterations; ++k)
-        {
-            fem::cgDirectionKernel<<<rowBlocks, kThreads, 0, stream>>>(model, z.data, p.data, q.data, partials.data, s,
-                                                                       settings.cgTolerance, settings.cgMaxIterations);
-            fem::cgUpdateKernel<<<nodeBlocks, kThreads, 0, stream>>>(model, inverseDiagonal.data, dv.data, r.data, z.data,
-                                                                    p.data, q.data, partials.data, s, settings.cgTolerance,
-                                                                    settings.cgMaxIterations);
-        }
-        fem::finishKernel<<<blocksFor(std::size_t(dofs)), kThreads, 0, stream>>>(dofs, dv.data, h, v.data, x.data);
-        VSIM_CUDA_CHECK(cudaStreamEndCapture(stream, &graph));
-        VSIM_CUDA_CHECK(cudaGraphInstantiate(&graphExec, graph, 0));
+        if (multigrid)
+            recordCycle();
     }
 };
 
@@ -248,6 +269,17 @@ CudaBackwardEuler::CudaBackwardEuler(const sim::fem::CorotationalFem& model, con
                           d.blockEntryStart.count * 4, d.blockEntries.count * 4, d.nodeEntryStart.count * 4,
                           d.forceSlots.count * 4, d.inverseDiagonal.count * 8, 13 * 3 * d.nodes * 8})
         d.bytes += n;
+    if (settings.preconditioner == sim::fem::CgPreconditioner::Multigrid)
+    {
+        // The hierarchy from the first step's matrix, as the CPU path sets it up (BackwardEuler::step).
+        sim::fem::CorotationalFem first = model;
+        first.updateElements();
+        sim::fem::BlockSparseMatrix matrix = first.makeMatrix();
+        const double h = settings.timeStep;
+        first.assemble(matrix, 1.0 + h * settings.rayleighAlpha, h * settings.rayleighBeta + h * h);
+        d.multigrid = std::make_unique<DeviceMultigrid>(sim::fem::AggregationMultigrid(matrix, first.positions(), constrained));
+        d.bytes += d.multigrid->bytes();
+    }
     d.record();
 }
 
@@ -257,9 +289,16 @@ sim::fem::StepReport CudaBackwardEuler::step(double pressurePa)
 {
     Device& d = *m_device;
     VSIM_CUDA_CHECK(cudaMemcpyAsync(&d.scalars.data->pressure, &pressurePa, sizeof(double), cudaMemcpyHostToDevice, d.stream));
-    VSIM_CUDA_CHECK(cudaGraphLaunch(d.graphExec, d.stream));
+    VSIM_CUDA_CHECK(cudaGraphLaunch(d.start.exec, d.stream));
     fem::DeviceScalars scalars{};
-    VSIM_CUDA_CHECK(cudaMemcpyAsync(&scalars, d.scalars.data, sizeof scalars, cudaMemcpyDeviceToHost, d.stream));
+    do
+    {
+        VSIM_CUDA_CHECK(cudaGraphLaunch(d.iterations.exec, d.stream));
+        VSIM_CUDA_CHECK(cudaMemcpyAsync(&scalars, d.scalars.data, sizeof scalars, cudaMemcpyDeviceToHost, d.stream));
+        VSIM_CUDA_CHECK(cudaStreamSynchronize(d.stream));
+    } while (!scalars.done && scalars.residual > d.settings.cgTolerance &&
+             scalars.iterations < d.settings.cgMaxIterations);
+    VSIM_CUDA_CHECK(cudaGraphLaunch(d.finish.exec, d.stream));
     VSIM_CUDA_CHECK(cudaStreamSynchronize(d.stream));
     sim::fem::StepReport report;
     report.cgIterations = scalars.iterations;

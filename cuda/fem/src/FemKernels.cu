@@ -1,23 +1,9 @@
+#include "BlockRows.cuh"
 #include "DeviceMath.cuh"
 #include "FemKernels.cuh"
 
 namespace vsim::cuda::fem {
 namespace {
-
-constexpr int kLanes = kRowLanes; // rows hold about 15 blocks
-
-/// Stored block `block` of the matrix, row-major.
-__device__ inline void loadBlock(const double* matrix, std::size_t block, double b[9])
-{
-    for (int k = 0; k < 9; ++k)
-        b[k] = __ldg(matrix + kBlockStride * block + k);
-}
-
-__device__ inline void storeBlock(double* matrix, std::size_t block, const double b[9])
-{
-    for (int k = 0; k < 9; ++k)
-        matrix[kBlockStride * block + k] = b[k];
-}
 
 /// Grid-wide sums of `Count` values per thread in a fixed order, so that a step repeats bit for bit: every block
 /// stores its sums in partials[Count * block + i]; the last block to finish adds those up (its first warp) and gets
@@ -61,48 +47,6 @@ __device__ bool gridSum(double (&values)[Count], double* partials, DeviceScalars
         totals[i] = sum;
     }
     return true;
-}
-
-/// How many passes over the rows a grid-stride kernel makes (the same in every thread, so that the shuffles of a
-/// row group always find all their lanes).
-__device__ inline int rowPasses(int rows, int rowsPerGrid) { return (rows + rowsPerGrid - 1) / rowsPerGrid; }
-
-/// Row `node` of the matrix times `v`, computed by kLanes neighbouring threads and summed with shuffles: every
-/// lane of the group returns the sum. The row's blocks are numbered lower (read transposed from the rows above),
-/// then stored (diagonal and upper); lane l takes every kLanes-th from l. Lanes past the end contribute zeros.
-__device__ void rowProduct(const DeviceModel& m, const double* v, int node, int lane, double out[3])
-{
-    out[0] = out[1] = out[2] = 0.0;
-    if (node < m.nodes)
-    {
-        const std::uint32_t lowerBegin = m.lowerRowStart[node], lowerCount = m.lowerRowStart[node + 1] - lowerBegin;
-        const std::uint32_t storedBegin = m.rowStart[node], storedCount = m.rowStart[node + 1] - storedBegin;
-        for (std::uint32_t k = std::uint32_t(lane); k < lowerCount + storedCount; k += kLanes)
-        {
-            const bool transposed = k < lowerCount;
-            const std::uint32_t block = transposed ? __ldg(m.lowerSlots + lowerBegin + k) : storedBegin + k - lowerCount;
-            const std::uint32_t column = transposed ? __ldg(m.lowerColumns + lowerBegin + k) : __ldg(m.columns + block);
-            const double* x = v + 3 * std::size_t(column);
-            double b[9];
-            loadBlock(m.matrix, block, b); // read-only during the sweep
-            const double x0 = x[0], x1 = x[1], x2 = x[2];
-            if (transposed)
-            {
-                out[0] += b[0] * x0 + b[3] * x1 + b[6] * x2;
-                out[1] += b[1] * x0 + b[4] * x1 + b[7] * x2;
-                out[2] += b[2] * x0 + b[5] * x1 + b[8] * x2;
-            }
-            else
-            {
-                out[0] += b[0] * x0 + b[1] * x1 + b[2] * x2;
-                out[1] += b[3] * x0 + b[4] * x1 + b[5] * x2;
-                out[2] += b[6] * x0 + b[7] * x1 + b[8] * x2;
-            }
-        }
-    }
-    for (int offset = kLanes / 2; offset > 0; offset /= 2)
-        for (int i = 0; i < 3; ++i)
-            out[i] += __shfl_xor_sync(0xffffffffu, out[i], offset, kLanes);
 }
 
 /// What the kernels read of element `e`'s record (DeviceModel::elementRecords): its rotation, the shape-function
@@ -397,8 +341,8 @@ __global__ void cgInitKernel(DeviceModel m, const double* b, const double* x, do
 __global__ void cgDirectionKernel(DeviceModel m, const double* z, double* p, double* q, double* partials,
                                   DeviceScalars* s, double tolerance, int maxIterations)
 {
-    if (s->done || s->residual <= tolerance || s->iterations >= maxIterations)
-        return; // the whole grid agrees: these only change between kernels
+    if (!cgActive(s, tolerance, maxIterations))
+        return;
     const int groups = int(gridDim.x * blockDim.x) / kLanes, lane = int(threadIdx.x) % kLanes;
     const double beta = s->beta;
     double pq[1] = {0.0};
@@ -432,12 +376,13 @@ __global__ void cgDirectionKernel(DeviceModel m, const double* z, double* p, dou
 
 /// Sweep 2: x += alpha p, r -= alpha q, z = P r, with r.z and r.r; the last block computes beta and the residual.
 /// One thread per component, ten nodes per warp (lanes 30 and 31 idle), so that every load is coalesced; a node's
-/// three residual components reach each other by shuffles.
+/// three residual components reach each other by shuffles. With `inverseDiagonal` null (the multigrid
+/// preconditioner) z is left to the V-cycle and beta to cgDotKernel.
 __global__ void cgUpdateKernel(DeviceModel m, const double* inverseDiagonal, double* x, double* r, double* z,
                                const double* p, const double* q, double* partials, DeviceScalars* s, double tolerance,
                                int maxIterations)
 {
-    if (s->done || s->residual <= tolerance || s->iterations >= maxIterations)
+    if (!cgActive(s, tolerance, maxIterations))
         return;
     const double alpha = s->alpha;
     const int lane = int(threadIdx.x % 32), component = lane % 3, first = lane - component;
@@ -459,6 +404,11 @@ __global__ void cgUpdateKernel(DeviceModel m, const double* inverseDiagonal, dou
                      r2 = __shfl_sync(0xffffffffu, ri, first + 2);
         if (!active)
             continue;
+        if (!inverseDiagonal)
+        {
+            sums[1] += ri * ri;
+            continue;
+        }
         const double* inv = inverseDiagonal + 9 * std::size_t(node) + 3 * std::size_t(component);
         const double zi = inv[0] * r0 + inv[1] * r1 + inv[2] * r2;
         z[i] = zi;
@@ -468,10 +418,30 @@ __global__ void cgUpdateKernel(DeviceModel m, const double* inverseDiagonal, dou
     double totals[2];
     if (gridSum(sums, partials, s, totals) && threadIdx.x == 0)
     {
-        s->beta = totals[0] / s->rz;
-        s->rz = totals[0];
+        if (inverseDiagonal)
+        {
+            s->beta = totals[0] / s->rz;
+            s->rz = totals[0];
+        }
         s->residual = sqrt(totals[1]) / s->reference;
         s->iterations += 1;
+    }
+}
+
+__global__ void cgDotKernel(int count, const double* r, const double* z, double* partials, DeviceScalars* s,
+                            double tolerance, int maxIterations)
+{
+    if (!cgActive(s, tolerance, maxIterations))
+        return;
+    double sums[1] = {0.0};
+    for (int i = int(blockIdx.x * blockDim.x + threadIdx.x); i < count; i += int(gridDim.x * blockDim.x))
+        sums[0] += r[i] * z[i];
+    double totals[1];
+    if (gridSum(sums, partials, s, totals) && threadIdx.x == 0)
+    {
+        if (s->iterations > 0) // after cgInitKernel beta stays 0
+            s->beta = totals[0] / s->rz;
+        s->rz = totals[0];
     }
 }
 

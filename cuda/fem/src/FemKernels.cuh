@@ -86,6 +86,9 @@ __global__ void cgDirectionKernel(DeviceModel m, const double* z, double* p, dou
 __global__ void cgUpdateKernel(DeviceModel m, const double* inverseDiagonal, double* x, double* r, double* z,
                                const double* p, const double* q, double* partials, DeviceScalars* s, double tolerance,
                                int maxIterations);
+/// r.z of the multigrid-preconditioned PCG (after the V-cycle): rz, and beta from the previous rz once iterating.
+__global__ void cgDotKernel(int count, const double* r, const double* z, double* partials, DeviceScalars* s,
+                            double tolerance, int maxIterations);
 /// Threads per matrix row in productKernel, cgInitKernel and cgDirectionKernel (launch nodes * this many; at
 /// least 3: lanes 0-2 own a component each). Measured on the H100 at 1M tets: 4 lanes 15.2 ms a step, 8 lanes
 /// 17.4 ms, 16 lanes 25.1 ms.
