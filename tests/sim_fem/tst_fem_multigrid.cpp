@@ -50,14 +50,22 @@ std::vector<Case> cases()
     return all;
 }
 
-/// The implicit step's matrix (1 ms step, Rayleigh beta 0.22 s) of the model at rest.
-BlockSparseMatrix stepMatrix(const CorotationalFem& model)
+/// The implicit step's matrix (1 ms step, Rayleigh beta 0.22 s) of the case's wall at rest, and its positions.
+struct AtRest
 {
-    BlockSparseMatrix a = model.makeMatrix();
+    BlockSparseMatrix matrix;
+    Eigen::VectorXd positions;
+};
+
+AtRest atRest(const Case& c)
+{
+    CorotationalFem model(c.mesh.points, c.mesh.tets, ElasticMaterial{});
+    model.updateElements();
+    AtRest rest{model.makeMatrix(), model.positions()};
     const BackwardEulerSettings settings;
     const double h = settings.timeStep;
-    model.assemble(a, 1.0, h * settings.rayleighBeta + h * h);
-    return a;
+    model.assemble(rest.matrix, 1.0, h * settings.rayleighBeta + h * h);
+    return rest;
 }
 
 Eigen::VectorXd randomMasked(std::mt19937& random, const Eigen::VectorXd& free)
@@ -80,10 +88,9 @@ private slots:
     {
         for (const Case& c : cases())
         {
-            CorotationalFem model(c.mesh.points, c.mesh.tets, ElasticMaterial{});
-            model.updateElements();
-            const BlockSparseMatrix a = stepMatrix(model);
-            const AggregationMultigrid multigrid(a, model.positions(), c.held);
+            const AtRest rest = atRest(c);
+            const BlockSparseMatrix& a = rest.matrix;
+            const AggregationMultigrid multigrid(a, rest.positions, c.held);
             QVERIFY2(multigrid.levels().size() >= 2, c.name);
             for (unsigned seed : {1u, 2u, 3u})
             {
@@ -106,10 +113,9 @@ private slots:
     {
         for (const Case& c : cases())
         {
-            CorotationalFem model(c.mesh.points, c.mesh.tets, ElasticMaterial{});
-            model.updateElements();
-            const BlockSparseMatrix a = stepMatrix(model);
-            const AggregationMultigrid multigrid(a, model.positions(), c.held);
+            const AtRest rest = atRest(c);
+            const BlockSparseMatrix& a = rest.matrix;
+            const AggregationMultigrid multigrid(a, rest.positions, c.held);
             // The reference: the masked system S A S + (I - S) by a sparse Cholesky factorisation.
             const Eigen::VectorXd& free = multigrid.freeMask();
             std::vector<Eigen::Triplet<double>> entries;

@@ -13,6 +13,20 @@ __device__ inline void apply3(const double* inv, const double v[3], double out[3
         out[i] = inv[3 * i] * v[0] + inv[3 * i + 1] * v[1] + inv[3 * i + 2] * v[2];
 }
 
+/// The finest level's product S (A v) at the calling row group's node (kLanes threads a row): true, with the
+/// node and the product, in lane 0 of a group whose node exists.
+__device__ inline bool fineRowProduct(const DeviceModel& m, const double* v, int& node, double w[3])
+{
+    const int thread = int(blockIdx.x * blockDim.x + threadIdx.x), lane = thread % kLanes;
+    node = thread / kLanes;
+    rowProduct(m, v, node, lane, w);
+    if (node >= m.nodes || lane != 0)
+        return false;
+    for (int i = 0; i < 3; ++i)
+        w[i] *= m.freeMask[3 * node + i];
+    return true;
+}
+
 /// Row `row` of `a` times `x` by kCsrLanes neighbouring threads; every lane gets the sum.
 __device__ inline double csrRow(const DeviceCsr& a, const double* x, int row, int lane)
 {
@@ -57,15 +71,10 @@ __global__ void fineStartKernel(DeviceModel m, const double* inverseDiagonal, co
 __global__ void fineChebyshevKernel(DeviceModel m, const double* inverseDiagonal, const double* dIn, double* dOut,
                                     double* r, double* x, double c1, double c2, CycleGuard g)
 {
-    if (!active(g))
-        return;
-    const int thread = int(blockIdx.x * blockDim.x + threadIdx.x), node = thread / kLanes, lane = thread % kLanes;
+    int node;
     double w[3];
-    rowProduct(m, dIn, node, lane, w);
-    if (node >= m.nodes || lane != 0)
+    if (!active(g) || !fineRowProduct(m, dIn, node, w))
         return;
-    for (int i = 0; i < 3; ++i)
-        w[i] *= m.freeMask[3 * node + i];
     double scaled[3];
     apply3(inverseDiagonal + 9 * std::size_t(node), w, scaled);
     for (int i = 0; i < 3; ++i)
@@ -80,30 +89,24 @@ __global__ void fineChebyshevKernel(DeviceModel m, const double* inverseDiagonal
 
 __global__ void fineResidualKernel(DeviceModel m, const double* b, const double* x, double* out, CycleGuard g)
 {
-    if (!active(g))
-        return;
-    const int thread = int(blockIdx.x * blockDim.x + threadIdx.x), node = thread / kLanes, lane = thread % kLanes;
+    int node;
     double w[3];
-    rowProduct(m, x, node, lane, w);
-    if (node >= m.nodes || lane != 0)
+    if (!active(g) || !fineRowProduct(m, x, node, w))
         return;
     for (int i = 0; i < 3; ++i)
-        out[3 * node + i] = b[3 * node + i] - m.freeMask[3 * node + i] * w[i];
+        out[3 * node + i] = b[3 * node + i] - w[i];
 }
 
 __global__ void fineRestartKernel(DeviceModel m, const double* inverseDiagonal, const double* b, const double* xIn,
                                   double* xOut, double* r, double* d, double inverseCentre, CycleGuard g)
 {
-    if (!active(g))
-        return;
-    const int thread = int(blockIdx.x * blockDim.x + threadIdx.x), node = thread / kLanes, lane = thread % kLanes;
+    int node;
     double w[3];
-    rowProduct(m, xIn, node, lane, w);
-    if (node >= m.nodes || lane != 0)
+    if (!active(g) || !fineRowProduct(m, xIn, node, w))
         return;
     double residual[3], rn[3];
     for (int i = 0; i < 3; ++i)
-        residual[i] = b[3 * node + i] - m.freeMask[3 * node + i] * w[i];
+        residual[i] = b[3 * node + i] - w[i];
     apply3(inverseDiagonal + 9 * std::size_t(node), residual, rn);
     for (int i = 0; i < 3; ++i)
     {
