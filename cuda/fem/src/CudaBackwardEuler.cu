@@ -76,35 +76,81 @@ struct CudaBackwardEuler::Device
     int rowBlocks = 0, nodeBlocks = 0; // grids of the PCG kernels: what the GPU holds at once, or fewer
     Buffer<fem::DeviceScalars> scalars;
     fem::DeviceModel model;
-    std::unique_ptr<DeviceMultigrid> multigrid; // with CgPreconditioner::Multigrid
     cudaStream_t stream = nullptr;
-    // The step as three graphs: up to the PCG's start, a run of iterations (replayed until the PCG stops: all of
-    // them in one run with block Jacobi, kMultigridRun with multigrid, whose V-cycles make idle iterations dear),
-    // and the update.
+    // The step as four graphs: the element pass, assembly and right-hand side; the PCG's start; a run of
+    // iterations (replayed until the PCG stops: all of them in one run with block Jacobi, kMultigridRun with
+    // multigrid, whose V-cycles make idle iterations dear); and the update.
     struct Graph
     {
         cudaGraph_t graph = nullptr;
         cudaGraphExec_t exec = nullptr;
-    } start, iterations, finish;
+    } assembly, pcgStart, iterations, finish;
     int iterationsPerRun = 0;
     std::size_t bytes = 0;
+    // Multigrid (CgPreconditioner::Multigrid): the hierarchy, and what setting it up again from the device's matrix
+    // takes (BackwardEuler's rule: again at the step after one whose iterations more than doubled those of the first
+    // solve with the hierarchy, from that step's own matrix).
+    std::unique_ptr<DeviceMultigrid> multigrid;
+    std::vector<std::array<int, 4>> hostTets;
+    std::vector<std::uint32_t> hostRowStart, hostColumns; // the symmetric storage's pattern
+    std::vector<std::uint8_t> constrained;
+    int iterationsAfterSetup = -1;
+    bool setUpAgain = false;
+
+    static void release(Graph& g)
+    {
+        if (g.exec)
+            cudaGraphExecDestroy(g.exec);
+        if (g.graph)
+            cudaGraphDestroy(g.graph);
+        g = Graph{};
+    }
 
     ~Device()
     {
-        for (Graph* g : {&start, &iterations, &finish})
-        {
-            if (g->exec)
-                cudaGraphExecDestroy(g->exec);
-            if (g->graph)
-                cudaGraphDestroy(g->graph);
-        }
+        for (Graph* g : {&assembly, &pcgStart, &iterations, &finish})
+            release(*g);
         if (stream)
             cudaStreamDestroy(stream);
+    }
+
+    void setUpMultigrid(const sim::fem::BlockSparseMatrix& matrix, const Eigen::VectorXd& positions)
+    {
+        if (multigrid)
+            bytes -= multigrid->bytes();
+        multigrid.reset();
+        multigrid = std::make_unique<DeviceMultigrid>(sim::fem::AggregationMultigrid(matrix, positions, constrained));
+        bytes += multigrid->bytes();
+        iterationsAfterSetup = -1;
+    }
+
+    /// The hierarchy from the matrix the assembly graph just formed, at the step's positions; the PCG's graphs
+    /// recorded again for it.
+    void setUpMultigridFromDevice()
+    {
+        std::vector<double> blocks(matrix.count), positions(3 * nodes);
+        VSIM_CUDA_CHECK(cudaStreamSynchronize(stream));
+        VSIM_CUDA_CHECK(cudaMemcpy(blocks.data(), matrix.data, matrix.bytes(), cudaMemcpyDeviceToHost));
+        VSIM_CUDA_CHECK(cudaMemcpy(positions.data(), x.data, positions.size() * sizeof(double), cudaMemcpyDeviceToHost));
+        sim::fem::BlockSparseMatrix full(nodes, hostTets);
+        for (std::size_t row = 0; row < nodes; ++row)
+            for (std::uint32_t t = hostRowStart[row]; t < hostRowStart[row + 1]; ++t)
+            {
+                const std::size_t column = hostColumns[t];
+                const Eigen::Matrix3d block =
+                    Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(blocks.data() + fem::kBlockStride * t);
+                full.block(full.slotOf(row, column)) = block;
+                if (column != row)
+                    full.block(full.slotOf(column, row)) = block.transpose();
+            }
+        setUpMultigrid(full, Eigen::Map<const Eigen::VectorXd>(positions.data(), Eigen::Index(positions.size())));
+        recordPcg();
     }
 
     template <typename Body>
     void capture(Graph& g, Body body)
     {
+        release(g);
         VSIM_CUDA_CHECK(cudaStreamBeginCapture(stream, cudaStreamCaptureModeThreadLocal));
         body();
         VSIM_CUDA_CHECK(cudaStreamEndCapture(stream, &g.graph));
@@ -126,8 +172,22 @@ struct CudaBackwardEuler::Device
         const double h = settings.timeStep, alpha = settings.rayleighAlpha, beta = settings.rayleighBeta;
         const double massFactor = 1.0 + h * alpha, stiffnessFactor = h * beta + h * h;
         const int dofs = int(3 * nodes);
+        capture(assembly, [&] { recordAssembly(h, alpha, beta, massFactor, stiffnessFactor, dofs, scalars.data); });
+        recordPcg();
+        capture(finish, [&] {
+            fem::finishKernel<<<blocksFor(std::size_t(dofs)), kThreads, 0, stream>>>(dofs, dv.data, h, v.data, x.data);
+        });
+    }
+
+    void recordPcg()
+    {
         fem::DeviceScalars* s = scalars.data;
-        capture(start, [&] { recordStart(h, alpha, beta, massFactor, stiffnessFactor, dofs, s); });
+        capture(pcgStart, [&] {
+            fem::cgInitKernel<<<rowBlocks, kThreads, 0, stream>>>(model, rhs.data, dv.data, inverseDiagonal.data,
+                                                                  r.data, z.data, p.data, q.data, partials.data, s);
+            if (multigrid)
+                recordCycle();
+        });
         iterationsPerRun = multigrid ? std::min(kMultigridRun, settings.cgMaxIterations) : settings.cgMaxIterations;
         capture(iterations, [&] {
             for (int k = 0; k < iterationsPerRun; ++k)
@@ -141,13 +201,10 @@ struct CudaBackwardEuler::Device
                     recordCycle();
             }
         });
-        capture(finish, [&] {
-            fem::finishKernel<<<blocksFor(std::size_t(dofs)), kThreads, 0, stream>>>(dofs, dv.data, h, v.data, x.data);
-        });
     }
 
-    void recordStart(double h, double alpha, double beta, double massFactor, double stiffnessFactor, int dofs,
-                     fem::DeviceScalars* s)
+    void recordAssembly(double h, double alpha, double beta, double massFactor, double stiffnessFactor, int dofs,
+                        fem::DeviceScalars* s)
     {
         fem::resetKernel<<<1, 1, 0, stream>>>(s);
         fem::elementKernel<<<blocksFor(std::size_t(model.elements)), kThreads, 0, stream>>>(model, x.data, s);
@@ -160,10 +217,6 @@ struct CudaBackwardEuler::Device
         fem::productKernel<<<blocksFor(nodes * fem::kRowLanes), kThreads, 0, stream>>>(model, v.data, av.data);
         fem::rightHandSideKernel<<<blocksFor(std::size_t(dofs)), kThreads, 0, stream>>>(
             model, force.data, external.data, v.data, av.data, h, alpha, beta, massFactor, stiffnessFactor, rhs.data, dv.data);
-        fem::cgInitKernel<<<rowBlocks, kThreads, 0, stream>>>(model, rhs.data, dv.data, inverseDiagonal.data, r.data,
-                                                              z.data, p.data, q.data, partials.data, s);
-        if (multigrid)
-            recordCycle();
     }
 };
 
@@ -277,8 +330,11 @@ CudaBackwardEuler::CudaBackwardEuler(const sim::fem::CorotationalFem& model, con
         sim::fem::BlockSparseMatrix matrix = first.makeMatrix();
         const double h = settings.timeStep;
         first.assemble(matrix, 1.0 + h * settings.rayleighAlpha, h * settings.rayleighBeta + h * h);
-        d.multigrid = std::make_unique<DeviceMultigrid>(sim::fem::AggregationMultigrid(matrix, first.positions(), constrained));
-        d.bytes += d.multigrid->bytes();
+        d.constrained = constrained;
+        d.hostTets = model.tets();
+        d.hostRowStart = symmetric.rowStart;
+        d.hostColumns = symmetric.columns;
+        d.setUpMultigrid(matrix, first.positions());
     }
     d.record();
 }
@@ -289,7 +345,13 @@ sim::fem::StepReport CudaBackwardEuler::step(double pressurePa)
 {
     Device& d = *m_device;
     VSIM_CUDA_CHECK(cudaMemcpyAsync(&d.scalars.data->pressure, &pressurePa, sizeof(double), cudaMemcpyHostToDevice, d.stream));
-    VSIM_CUDA_CHECK(cudaGraphLaunch(d.start.exec, d.stream));
+    VSIM_CUDA_CHECK(cudaGraphLaunch(d.assembly.exec, d.stream));
+    if (d.setUpAgain)
+    {
+        d.setUpMultigridFromDevice();
+        d.setUpAgain = false;
+    }
+    VSIM_CUDA_CHECK(cudaGraphLaunch(d.pcgStart.exec, d.stream));
     fem::DeviceScalars scalars{};
     do
     {
@@ -300,6 +362,13 @@ sim::fem::StepReport CudaBackwardEuler::step(double pressurePa)
              scalars.iterations < d.settings.cgMaxIterations);
     VSIM_CUDA_CHECK(cudaGraphLaunch(d.finish.exec, d.stream));
     VSIM_CUDA_CHECK(cudaStreamSynchronize(d.stream));
+    if (d.multigrid)
+    {
+        if (d.iterationsAfterSetup < 0)
+            d.iterationsAfterSetup = scalars.iterations;
+        else if (scalars.iterations > d.settings.multigridSetUpAgainFactor * d.iterationsAfterSetup + 5)
+            d.setUpAgain = true;
+    }
     sim::fem::StepReport report;
     report.cgIterations = scalars.iterations;
     report.cgResidual = scalars.residual;

@@ -50,6 +50,7 @@ StepReport BackwardEuler::step(CorotationalFem& model, const Eigen::VectorXd& ex
             m_multigrid = std::make_unique<AggregationMultigrid>(m_system, model.positions(), constrained);
             m_multigridConstraints = constrained;
             m_iterationsAfterSetup = -1;
+            ++m_multigridSetUps;
         }
         else
             m_multigrid->refreshFinest(m_system);
@@ -59,10 +60,10 @@ StepReport BackwardEuler::step(CorotationalFem& model, const Eigen::VectorXd& ex
     if (m_multigrid)
     {
         // The coarse levels keep the set-up's matrix: set up again once the wall has turned enough to double the
-        // iterations (the next step's).
+        // iterations (from the next step's matrix).
         if (m_iterationsAfterSetup < 0)
             m_iterationsAfterSetup = cg.iterations;
-        else if (cg.iterations > 2 * m_iterationsAfterSetup + 5)
+        else if (cg.iterations > m_settings.multigridSetUpAgainFactor * m_iterationsAfterSetup + 5)
             m_multigrid.reset();
     }
     report.cgIterations = cg.iterations;

@@ -1,10 +1,10 @@
 #pragma once
 
 // The CUDA backend of the wall solver: the same algorithm as sim::fem::BackwardEuler on the CPU (element pass
-// with the Newton-scaled rotation extraction, gather assembly of the 3x3-block matrix, block-Jacobi PCG with the
-// constraint filter, warm start), in double precision, with the whole implicit step (element pass, assembly,
-// pressure, right-hand side, up to cgMaxIterations PCG iterations that stop on the device when converged, update)
-// recorded once as a CUDA graph and replayed each step. No CUDA types in this header.
+// with the Newton-scaled rotation extraction, gather assembly of the 3x3-block matrix, PCG with the constraint
+// filter and block Jacobi or the multigrid V-cycle, warm start), in double precision, with the implicit step
+// (element pass, assembly, pressure, right-hand side, PCG iterations that stop on the device when converged,
+// update) recorded as CUDA graphs and replayed each step. No CUDA types in this header.
 
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/CorotationalFem.h"

@@ -35,6 +35,9 @@ struct BackwardEulerSettings
     double cgTolerance = 1e-6;   ///< relative residual
     int cgMaxIterations = 100;
     CgPreconditioner preconditioner = CgPreconditioner::BlockJacobi;
+    /// Multigrid: set the hierarchy up again at the step after one that took more than this times the iterations
+    /// of the first solve with it, plus 5 (0: every second step, the first solve after a set-up being the measure).
+    double multigridSetUpAgainFactor = 2.0;
 };
 
 struct StepReport
@@ -60,6 +63,8 @@ public:
     const BlockSparseMatrix& systemMatrix() const { return m_system; }
     /// The multigrid hierarchy (null with block Jacobi, or before the first step).
     const AggregationMultigrid* multigrid() const { return m_multigrid.get(); }
+    /// How many times the multigrid hierarchy was set up (0 with block Jacobi).
+    int multigridSetUps() const { return m_multigridSetUps; }
 
 private:
     BackwardEulerSettings m_settings;
@@ -68,6 +73,7 @@ private:
     std::unique_ptr<AggregationMultigrid> m_multigrid;
     std::vector<std::uint8_t> m_multigridConstraints;
     int m_iterationsAfterSetup = -1; ///< PCG iterations of the first solve with the current hierarchy
+    int m_multigridSetUps = 0;
 };
 
 } // namespace vsim::sim::fem
