@@ -12,13 +12,6 @@ namespace {
 
 constexpr std::size_t kBranchRows = 60; // branches listed by drug flow; the rest counted in one line
 
-std::string fixed(double value, int decimals)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    return text;
-}
-
 /// The share (%) of the downstream tree's volume that the drug has filled over time: each segment fills linearly
 /// in time between entering and leaving (plug flow at a steady rate through a cone).
 report::Plot fillingPlot(const VesselNetwork& network)

@@ -16,11 +16,6 @@ namespace {
 
 constexpr double kReportedStenosisPercent = 40.0; // a narrowing from which the stenosis section is written
 
-std::string fixed(double value, int decimals)
-{
-    return QString::number(value, 'f', decimals).toStdString();
-}
-
 /// The run's time-averaged sections along the centerline: peak and mean velocity (m/s), mean pressure (mmHg).
 std::vector<report::Plot> alongCenterlinePlots(const study::Artifact& flow)
 {

@@ -20,6 +20,13 @@ std::string textOr(const std::map<std::string, std::string>& values, const std::
     return found == values.end() ? fallback : found->second;
 }
 
+std::string fixed(double value, int decimals)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
 const study::Artifact* newestRun(const study::Study& study, const std::string& command, const std::string& key,
                                  const std::string& value, std::optional<study::ArtifactKind> kind)
 {

@@ -23,6 +23,9 @@ namespace vsim::app::detail {
 std::string textOr(const std::map<std::string, std::string>& values, const std::string& key,
                    const std::string& fallback = {});
 
+/// `value` with `decimals` digits after the point ("%.*f").
+std::string fixed(double value, int decimals);
+
 /// The newest undamaged artifact made by `command` (e.g. "simulate fem") whose provenance parameter `key` is
 /// `value` when key is given, of `kind` when given (a run's derived artifacts share its command); nullptr when there
 /// is none.

@@ -98,7 +98,8 @@ ConjugateGradientResult solveConjugateGradient(const BlockSparseMatrix& a, const
             rzNext += rNode.dot(zNode);
             rr += rNode.squaredNorm();
         }
-        if (multigrid)
+        // The V-cycle only where another iteration follows (the CUDA backend's guard skips it the same way).
+        if (multigrid && std::sqrt(rr) / reference > tolerance && result.iterations + 1 < maxIterations)
         {
             multigrid->apply(a, r, z);
             rzNext = r.dot(z);
