@@ -105,7 +105,7 @@ struct CudaSph::Device
     int nextId = 0;
     ParticleArrays current, other;
     DeviceArray<float4> acceleration, densityGradient, derived;
-    DeviceArray<float> densityRate, wallDistance;
+    DeviceArray<float> densityRate, wallDistance, guardedWallDistance;
     DeviceArray<unsigned> keys, sortedKeys, cellStart, cellEnd, cellFluid;
     DeviceArray<int> order, sortedOrder;
     DeviceArray<int> byKind, fluidSelected; // fluid indices first, then the others' (launchPartition)
@@ -124,10 +124,10 @@ struct CudaSph::Device
     Device(std::size_t count, std::size_t capacityCount, std::size_t cellCount)
         : n(int(count)), capacity(int(capacityCount)), current(capacityCount), other(capacityCount),
           acceleration(capacityCount), densityGradient(capacityCount), derived(capacityCount),
-          densityRate(capacityCount), wallDistance(capacityCount), keys(capacityCount), sortedKeys(capacityCount),
-          cellStart(cellCount), cellEnd(cellCount), cellFluid(cellCount), order(capacityCount),
-          sortedOrder(capacityCount), byKind(capacityCount), fluidSelected(1), keyBits(bitsFor(cellCount + 1)),
-          cells(cellCount), reductions(1), tallies(1)
+          densityRate(capacityCount), wallDistance(capacityCount), guardedWallDistance(capacityCount),
+          keys(capacityCount), sortedKeys(capacityCount), cellStart(cellCount), cellEnd(cellCount),
+          cellFluid(cellCount), order(capacityCount), sortedOrder(capacityCount), byKind(capacityCount),
+          fluidSelected(1), keyBits(bitsFor(cellCount + 1)), cells(cellCount), reductions(1), tallies(1)
     {
         VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data(),
                                                         sortedKeys.data(), order.data(), sortedOrder.data(),
@@ -138,8 +138,8 @@ struct CudaSph::Device
 
     sph::SphRatesArrays rates() const
     {
-        return {acceleration.data(), densityGradient.data(), derived.data(), densityRate.data(),
-                wallDistance.data()};
+        return {acceleration.data(), densityGradient.data(), derived.data(), densityRate.data(), wallDistance.data(),
+                guardedWallDistance.data()};
     }
     bool open() const { return boundaryArgs.count > 0; }
 
@@ -315,6 +315,9 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     params.pressureFloor = settings.freeSurface ? 0.0f : -INFINITY;
     params.cell = float(h); // half the support, as NeighbourGrid
     params.betaMax = 10.0f;
+    params.repulsion = float(fluid.wallRepulsion);
+    params.repulsionRange = float(fluid.wallRepulsionRange);
+    params.repulsionPlateau = float(sim::sph::FluidModel::kWallRepulsionPlateau);
     for (int a = 0; a < 3; ++a)
     {
         const double extent = settings.boxHighM[a] - settings.boxLowM[a];
@@ -361,8 +364,9 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
                            : p.wallDepth[i] >= 0.0 ? float(p.wallDepth[i])
                                                    : sph::kWallOfUnknownDepth;
         position[i] = make_float4(float(x.x()), float(x.y()), float(x.z()), kind);
-        velocity[i] = make_float4(float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()),
-                                  float(p.boundary[i]));
+        velocity[i] = make_float4(
+            float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()),
+            p.wall[i] ? (p.backstop[i] ? 0.0f : sph::kWallWithoutBackstop) : float(p.boundary[i]));
         state[i] = make_float4(float(p.density[i]), float(p.mass[i]), float(p.voidFraction[i]), 0.0f);
     }
     d.current.position.upload(position), d.current.velocity.upload(velocity), d.current.state.upload(state);
@@ -456,7 +460,10 @@ sim::sph::ParticleState CudaSph::download() const
         out.add(x, state[s].x, state[s].y, position[s].w != sph::kFluid, std::max(-1.0f, position[s].w),
                 state[s].z);
         out.velocity.back() = Eigen::Vector3d(velocity[s].x, velocity[s].y, velocity[s].z);
-        out.boundary.back() = std::uint8_t(velocity[s].w);
+        if (out.wall.back())
+            out.backstop.back() = velocity[s].w == 0.0f ? 1 : 0;
+        else
+            out.boundary.back() = std::uint8_t(velocity[s].w);
         out.id.back() = id[s];
     }
     return out;
@@ -471,10 +478,10 @@ std::size_t CudaSph::deviceBytes() const
 {
     const Device& d = *m_device;
     return d.current.bytes() + d.other.bytes() + d.acceleration.bytes() + d.densityGradient.bytes() +
-           d.derived.bytes() + d.densityRate.bytes() + d.wallDistance.bytes() + d.keys.bytes() +
-           d.sortedKeys.bytes() + d.cellStart.bytes() + d.cellEnd.bytes() + d.cellFluid.bytes() +
-           d.order.bytes() + d.sortedOrder.bytes() + d.byKind.bytes() + d.partitionScratch.bytes() +
-           d.sortScratch.bytes();
+           d.derived.bytes() + d.densityRate.bytes() + d.wallDistance.bytes() +
+           d.guardedWallDistance.bytes() + d.keys.bytes() + d.sortedKeys.bytes() + d.cellStart.bytes() +
+           d.cellEnd.bytes() + d.cellFluid.bytes() + d.order.bytes() + d.sortedOrder.bytes() +
+           d.byKind.bytes() + d.partitionScratch.bytes() + d.sortScratch.bytes();
 }
 
 } // namespace vsim::cuda

@@ -105,7 +105,7 @@ __global__ void imposeKernel(SphParams p, SphArrays a, SphRatesArrays rates, Ope
     rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
     rates.densityRate[i] = 0.0f;
     rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, mixtureViscosity(p, state.z));
-    rates.wallDistance[i] = INFINITY;
+    rates.wallDistance[i] = rates.guardedWallDistance[i] = INFINITY;
     const float s = along(b, x);
     const float4 mirror = make_float4(x.x - 2.0f * s * b.normal[0], x.y - 2.0f * s * b.normal[1],
                                       x.z - 2.0f * s * b.normal[2], kFluid);

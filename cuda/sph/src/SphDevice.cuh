@@ -57,6 +57,17 @@ __device__ inline float gradientFactor(const SphParams& p, float r)
     return p.gradNorm * 0.625f * (2.0f - q) * (q - 1.8f);
 }
 
+/// FluidModel::wallRepulsionFactor: D ((r0 / r')^12 - (r0 / r')^4) / (r' r) within r0, r' = max(r, 0.8 r0)
+/// (1/s^2).
+__device__ inline float wallRepulsionFactor(const SphParams& p, float r)
+{
+    if (!(r < p.repulsionRange) || !(r > 0.0f) || p.repulsion <= 0.0f)
+        return 0.0f;
+    const float plateau = fmaxf(r, p.repulsionPlateau * p.repulsionRange);
+    const float q2 = p.repulsionRange * p.repulsionRange / (plateau * plateau), q4 = q2 * q2;
+    return p.repulsion * (q4 * q4 * q4 - q4) / (plateau * r);
+}
+
 /// The neighbour loops tell walls from fluid by the position record they load anyway (SphKernels.cuh).
 __device__ inline bool isWall(float4 position)
 {

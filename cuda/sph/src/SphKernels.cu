@@ -71,7 +71,7 @@ __global__ void wallPressureKernel(SphParams p, SphArrays a, SphRatesArrays rate
     rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
     rates.densityRate[i] = 0.0f;
     rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, mixtureViscosity(p, a.state[i].z));
-    rates.wallDistance[i] = INFINITY;
+    rates.wallDistance[i] = rates.guardedWallDistance[i] = INFINITY;
     float weight = 0.0f, pressure = 0.0f;
     forEachNeighbour(
         p, a, cellStart, cellEnd, i,
@@ -114,11 +114,12 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
     const float muI = mixtureViscosity(p, a.state[i].z);
     rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, muI);
     rates.wallDistance[i] = INFINITY;
+    rates.guardedWallDistance[i] = INFINITY;
     const float relativeI = rates.derived[i].w;
     // The moment -sum V_j rij (x) grad W = -sum V_j g rij (x) rij (grad W = g rij) is symmetric: six sums.
     float m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
     float sum[3] = {0, 0, 0};
-    float wallDistance = INFINITY;
+    float wallDistance = INFINITY, guardedWallDistance = INFINITY;
     const bool gradients = p.diffusion > 0.0f;
     forEachNeighbour(p, a, cellStart, cellEnd, i,
                      [&](int j, float4 xj, float rx, float ry, float rz, float r, float)
@@ -126,7 +127,13 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
                          if (isWall(xj))
                          {
                              if (xj.w >= 0.0f)
-                                 wallDistance = fminf(wallDistance, r - xj.w);
+                             {
+                                 const float d = r - xj.w;
+                                 wallDistance = fminf(wallDistance, d);
+                                 // The backstop flag rides on the velocity record: read where it can matter.
+                                 if (d < guardedWallDistance && d < 0.0f && __ldg(&a.velocity[j]).w == 0.0f)
+                                     guardedWallDistance = d;
+                             }
                              return;
                          }
                          if (!gradients)
@@ -140,6 +147,7 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
                          sum[0] += difference * ax, sum[1] += difference * ay, sum[2] += difference * az;
                      });
     rates.wallDistance[i] = wallDistance;
+    rates.guardedWallDistance[i] = guardedWallDistance;
     if (!gradients)
         return;
     // G = (M^T)^-1 sum by the adjugate (M is symmetric), where |det| > 1e-3 (SphRates.cpp).
@@ -206,6 +214,11 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                                      fminf(p.betaMax, 1.0f + xj.w / fmaxf(wallDistanceI, 1e-3f * p.h));
                                  wx = beta * vi.x, wy = beta * vi.y, wz = beta * vi.z;
                              }
+                             if (wallJ && vj.w == 0.0f) // a wall with the backstop
+                             {
+                                 const float push = wallRepulsionFactor(p, rr);
+                                 fx += push * rx, fy += push * ry, fz += push * rz;
+                             }
                              const float damped = 1.0f / (r2 + p.eta2);
                              const float viscous = vg * (muI + gj.w) * r2 * damped; // rij . grad W = g r^2
                              viscousX += viscous * wx, viscousY += viscous * wy, viscousZ += viscous * wz;
@@ -271,7 +284,7 @@ __global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float
         }
         else if (fluid)
             variation = change;
-        if (fluid && rates.wallDistance[i] < -throughWallM && atomicExch(&r->throughWall, 1u) == 0u)
+        if (fluid && rates.guardedWallDistance[i] < -throughWallM && atomicExch(&r->throughWall, 1u) == 0u)
             r->throughWallId = a.id[i];
     }
     warpMax(&r->largestDensityVariation, variation);

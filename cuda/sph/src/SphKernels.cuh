@@ -27,6 +27,8 @@ struct SphParams
     int tilesY;          ///< tiles along y: ceil(dims[1] / tile)
     float boxHigh[3];    ///< m from the low corner: beyond it (or below 0) a particle has escaped
     float betaMax;       ///< the no-slip extrapolation's cap (SphRates.cpp)
+    float repulsion, repulsionRange, repulsionPlateau; ///< the walls' backstop D (m^2/s^2; 0: off), r0 (m),
+                                                       ///< r' / r0 (FluidModel.h)
     unsigned removedKey; ///< the cell key of a removed particle: past every cell's
 };
 
@@ -44,10 +46,12 @@ __device__ inline unsigned rowOf(const SphParams& p, int y, int z)
 /// Device pointers of the particle arrays in sorted order, packed so that a neighbour costs few 16-byte
 /// loads: position (m) with w = the wall depth (m, >= 0) at a wall particle of known depth, -2 at one
 /// without, -1 in the fluid and the open boundaries' buffers; velocity (m/s) with w = k + 1 at a particle in
-/// the buffer of open boundary k, 0 elsewhere; state = (density kg/m^3, mass kg, void fraction, pressure Pa).
+/// the buffer of open boundary k, kWallWithoutBackstop at a wall particle without the backstop
+/// (ParticleState::backstop), 0 elsewhere; state = (density kg/m^3, mass kg, void fraction, pressure Pa).
 /// The position record's w besides a wall depth (>= 0); kRemoved at a particle an open boundary let out this
 /// step (its key sorts it past the kept ones, and the step drops it).
 constexpr float kFluid = -1.0f, kWallOfUnknownDepth = -2.0f, kRemoved = -3.0f;
+constexpr float kWallWithoutBackstop = -1.0f;
 
 struct SphArrays
 {
@@ -63,6 +67,8 @@ struct SphRatesArrays
                              ///< neighbour
     float4* derived; ///< (V_i = m_i / rho_i, m_i p_i / rho_i^2, m_i, rho_i / rho0_i), made with the pressures
     float *densityRate, *wallDistance;
+    float* guardedWallDistance; ///< over the walls with the backstop where negative (infinite elsewhere): the
+                                ///< through-the-wall guard's (SphRates.h)
 };
 
 /// Maxima over a step (non-negative floats as their bit patterns, so that atomicMax on unsigned orders them),

@@ -17,6 +17,7 @@ void ParticleState::add(const Eigen::Vector3d& positionM, double densityKgM3, do
     wallDepth.push_back(isWall ? wallDepthM : -1.0);
     boundary.push_back(0);
     tracer.push_back(0);
+    backstop.push_back(isWall ? 1 : 0);
 }
 
 void ParticleState::appendCopy(std::size_t i, const Eigen::Vector3d& positionM, int newId)

@@ -41,6 +41,7 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
     const int n = int(particles.size());
     rates.densityGradient.assign(std::size_t(n), Eigen::Vector3d::Zero());
     rates.wallDistance.assign(std::size_t(n), INFINITY);
+    rates.guardedWallDistance.assign(std::size_t(n), INFINITY);
 #pragma omp parallel for schedule(dynamic, 256)
     for (int i = 0; i < n; ++i)
     {
@@ -49,13 +50,17 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
             continue;
         Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        double wallDistance = INFINITY;
+        double wallDistance = INFINITY, guardedWallDistance = INFINITY;
         grid.forEachNeighbour(particles.position, i, [&](int j, const Eigen::Vector3d& rij, double r) {
             const std::size_t sj = std::size_t(j);
             if (particles.wall[sj])
             {
                 if (particles.wallDepth[sj] >= 0.0)
+                {
                     wallDistance = std::min(wallDistance, r - particles.wallDepth[sj]);
+                    if (particles.backstop[sj])
+                        guardedWallDistance = std::min(guardedWallDistance, r - particles.wallDepth[sj]);
+                }
                 return;
             }
             if (!densityGradients)
@@ -66,6 +71,7 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
             sum += volume * (relativeDensity(particles, fluid, sj) - relativeDensity(particles, fluid, si)) * gradW;
         });
         rates.wallDistance[si] = wallDistance;
+        rates.guardedWallDistance[si] = guardedWallDistance;
         const Eigen::Matrix3d transposed = moment.transpose();
         // A particle with too few fluid neighbours around it (a droplet, a jet's tip) keeps G = 0: plain Molteni.
         if (densityGradients && std::abs(transposed.determinant()) > 1e-3)
@@ -83,7 +89,11 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
     if (fluid.densityDiffusion > 0.0 || wallDepths)
         fluidNeighbourhood(particles, grid, kernel, fluid, fluid.densityDiffusion > 0.0, rates);
     else
-        rates.densityGradient.assign(std::size_t(n), Eigen::Vector3d::Zero()), rates.wallDistance.assign(std::size_t(n), INFINITY);
+    {
+        rates.densityGradient.assign(std::size_t(n), Eigen::Vector3d::Zero());
+        rates.wallDistance.assign(std::size_t(n), INFINITY);
+        rates.guardedWallDistance.assign(std::size_t(n), INFINITY);
+    }
     rates.acceleration.assign(std::size_t(n), Eigen::Vector3d::Zero());
     rates.densityRate.assign(std::size_t(n), 0.0);
     const double h = kernel.smoothingLength(), eta2 = kEtaSquared * h * h;
@@ -135,6 +145,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                                      : vij;
                     const double muJ = fluid.mixtureViscosity(particles.voidFraction[sj]);
                     force += mJ * (muI + muJ) * rDotGrad / (rhoI * rhoJ * (r * r + eta2)) * viscousVij;
+                    if (particles.backstop[sj])
+                        force += fluid.wallRepulsionFactor(r) * rij;
                 }
                 largestViscousRate =
                     std::max(largestViscousRate, std::abs(h * vij.dot(rij) / (r * r + eta2)));

@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 namespace vsim::sim::sph {
 
 struct FluidModel
@@ -31,6 +33,26 @@ struct FluidModel
     /// 4 m/s): pressure() and densityAt() work on the pressure above it, the dynamics with them, and what a run
     /// reports is reportedPressure().
     double referencePressurePa = 0.0;
+    /// The walls' backstop (thesis ch. 5.4: ghost particles with a Lennard-Jones-type repulsion; Monaghan
+    /// 1994): a wall particle j closer than r0 to a fluid particle i pushes it away with a_i = D ((r0 /
+    /// r')^12 - (r0 / r')^4) / r' along x_ij / r, r' = max(r, 0.8 r0). D, m^2/s^2 (0: off); r0, m
+    /// (SphSolver.h: 0.9 spacings, short of the lattice's distances, where the fluid starts). The plateau
+    /// below 0.8 r0 (15 D / r0) bounds it, so that no particle, however it came near a wall particle, is shot
+    /// off (with the unbounded law a particle an open end's buffer had handed over 0.23 spacings from a wall
+    /// particle left at 5.7e6 m/s). Only wall particles with `backstop` push (ParticleState.h).
+    double wallRepulsion = 0.0;
+    double wallRepulsionRange = 0.0;
+
+    /// The backstop's acceleration factor at distance r (m) from a wall particle: a_i = factor x_ij (1/s^2).
+    double wallRepulsionFactor(double r) const
+    {
+        if (!(r < wallRepulsionRange) || !(r > 0.0) || wallRepulsion <= 0.0)
+            return 0.0;
+        const double plateau = std::max(r, kWallRepulsionPlateau * wallRepulsionRange);
+        const double q2 = wallRepulsionRange * wallRepulsionRange / (plateau * plateau), q4 = q2 * q2;
+        return wallRepulsion * (q4 * q4 * q4 - q4) / (plateau * r);
+    }
+    static constexpr double kWallRepulsionPlateau = 0.8; ///< r' / r0 below which the backstop stays constant
 
     /// Gravity and the body force at time t (s), m/s^2.
     Eigen::Vector3d externalAcceleration(double timeS) const;

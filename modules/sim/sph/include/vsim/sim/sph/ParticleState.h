@@ -28,6 +28,9 @@ struct ParticleState
     std::vector<std::uint8_t> boundary;
     /// 1 at particles that carry the tracer (an injected drug: what the walls absorb); 0 otherwise.
     std::vector<std::uint8_t> tracer;
+    /// 1 at wall particles that push the fluid back within their reach (the walls' backstop: FluidModel.h); 0
+    /// in the fluid and at the walls around an open end's buffer (SphSolver.h).
+    std::vector<std::uint8_t> backstop;
     std::vector<int> id;
 
     std::size_t size() const { return position.size(); }
@@ -47,8 +50,8 @@ private:
     /// Calls f on every per-particle array: the one list the copies, removals and reorders share.
     template <class F> void forEachArray(F&& f)
     {
-        f(position), f(velocity), f(density), f(mass), f(voidFraction), f(wall), f(wallDepth), f(boundary), f(tracer),
-            f(id);
+        f(position), f(velocity), f(density), f(mass), f(voidFraction), f(wall), f(wallDepth), f(boundary),
+            f(tracer), f(backstop), f(id);
     }
 };
 

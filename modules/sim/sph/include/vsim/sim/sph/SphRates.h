@@ -14,7 +14,7 @@
 //      makes the pressure drift);
 //  momentum:  a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad_i W_ij
 //                   + sum_j m_j (mu_i + mu_j) (x_ij . grad_i W_ij) / (rho_i rho_j (|x_ij|^2 + 0.001 h^2)) v_ij
-//                   + g + f(t),
+//                   + g + f(t) + the walls' backstop from the wall particles with `backstop` (FluidModel.h),
 //      the viscous term of Morris et al. 1997 in the form of Lo & Shao 2002. No slip: a wall particle j of
 //      known depth d_j below the wall's surface takes the velocity -(d_j / d_i) v_i in i's viscous term, so
 //      that v_ij = beta v_i, beta = min(10, 1 + d_j / d_i), d_i i's distance to the surface (Morris et al.
@@ -41,6 +41,10 @@ struct SphRates
     std::vector<Eigen::Vector3d> densityGradient;
     /// d_i, m (fluid particles; infinite without a wall neighbour of known depth).
     std::vector<double> wallDistance;
+    /// The same over the wall particles with the backstop (ParticleState::backstop), m: what the
+    /// through-the-wall guard reads (an open end's buffer hands fluid over arbitrarily close to the walls
+    /// around it).
+    std::vector<double> guardedWallDistance;
     double largestAcceleration = 0.0; ///< m/s^2, over the fluid
     double largestViscousRate = 0.0;  ///< max_ij |h v_ij . x_ij / (r^2 + 0.001 h^2)|, m/s (Monaghan's CFL)
     double largestKinematicViscosity = 0.0; ///< max over the fluid of mu(s) / rho0(s), m^2/s

@@ -32,7 +32,7 @@ namespace vsim::sim::sph {
 /// spacing_mm, smoothing_ratio, density_kg_m3, viscosity_pa_s, sound_speed_m_s, delta_sph, cfl,
 /// gravity_{x,y,z}_m_s2 (patient frame, LPS: a supine patient's is +y), end_time_s, density_guard,
 /// escape_margin_mm, reorder_every, body_force_{x,y,z}_m_s2 and body_force_frequency_hz, periodic_{x,y,z}_mm
-/// (validation channels), free_surface, absorption_distance_mm.
+/// (validation channels), free_surface, wall_repulsion, absorption_distance_mm.
 std::vector<ParameterSpec> sphParameters();
 
 /// The Courant number (parameter `cfl`) for flows through a stenosis: the solver's default 0.2 of h / c0 is 0.4 of a
@@ -41,6 +41,12 @@ std::vector<ParameterSpec> sphParameters();
 /// runs through with the density within 0.62 % (2026-11-27, RESULTS.md). The validation channels (hydrostatic,
 /// Poiseuille, Womersley, mass) pass at the default and keep it.
 constexpr double kStenosisCfl = 0.1;
+
+/// The walls' backstop's reach r0 in spacings (FluidModel.h): short of the lattice's spacing, so that the
+/// fluid at the wall's lattice distance feels none (single precision's rounding of it had the GPU push where
+/// the CPU did not: parity after 100 steps 5.7e-4 with r0 one spacing) and a pass between four wall particles
+/// (0.71 spacings) meets its plateau.
+constexpr double kWallRepulsionReach = 0.9;
 
 /// What a step needs besides the particles and the fluid: the GPU backend (cuda/sph) takes it from the CPU solver.
 struct SphStepSettings
@@ -114,6 +120,8 @@ private:
     long double fluidMass() const;
     /// Removes the tracer particles within the absorption distance of a wall (the start's wall distances).
     void absorbTracer();
+    /// Clears `backstop` at the wall particles within a support of an open end's buffer (SphSolver.cpp).
+    void releaseBackstopAtOpenEnds();
     /// A step on the other stepper, and every m_syncEvery steps the particles back and the samples.
     StepOutcome stepElsewhere();
 
