@@ -403,7 +403,8 @@ std::string CudaSph::step()
     if (d.last.throughWall)
         return at + "fluid particle " + std::to_string(d.last.throughWallId) +
                " went more than half a spacing into the wall: the time step or the sound speed is too large "
-               "for the flow, or the wall too thin";
+               "for the flow, or the wall thinner than the kernel (a segmentation's ragged edge: the walls' "
+               "backstop, parameter wall_repulsion 0.01)";
     if (asFloat(d.last.largestDensityVariation) > d.settings.densityGuard)
         return at + "a particle's density is " + number(100.0 * asFloat(d.last.largestDensityVariation)) +
                " % from the rest density (guard " + number(100.0 * d.settings.densityGuard) +

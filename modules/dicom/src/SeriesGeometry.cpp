@@ -1,5 +1,7 @@
 #include "vsim/dicom/SeriesGeometry.h"
 
+#include "vsim/core/Median.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,12 +19,6 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
     char buffer[256];
     std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
     return buffer;
-}
-
-double median(std::vector<double> values)
-{
-    std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
-    return values[values.size() / 2];
 }
 
 void requirePlacement(const DicomSeries& series)

@@ -3,6 +3,8 @@
 // The tissue level around a vessel for the partial-volume radii (PartialVolumeRadii.cpp): medians of the voxels of a
 // shell around the tube, along its length (HU; arcs in mm).
 
+#include "vsim/core/Median.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -10,14 +12,7 @@
 
 namespace vsim::imaging::detail {
 
-inline double median(std::vector<double> values)
-{
-    if (values.empty())
-        return std::nan("");
-    const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
-    return *middle;
-}
+using vsim::median;
 
 /// The level of the tissue that fills most of a shell: the median, then three times the median of the values within
 /// 2.5 robust standard deviations (1.4826 x the median absolute deviation) of the last level. A touching vein or a

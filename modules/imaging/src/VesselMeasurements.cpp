@@ -1,5 +1,7 @@
 #include "vsim/imaging/VesselMeasurements.h"
 
+#include "vsim/core/Median.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -87,13 +89,6 @@ CrossSection sectionAt(const LabelVolume& label, const Eigen::Vector3d& centre, 
 
 constexpr double kRoundness = 0.8; // smallest / largest caliper width of a section that counts as round
 
-double median(std::vector<double> values)
-{
-    if (values.empty())
-        return 0.0;
-    std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
-    return values[values.size() / 2];
-}
 
 } // namespace
 
@@ -169,11 +164,11 @@ VesselMeasurements measureVessels(const LabelVolume& label, const SkeletonGraph&
             }
         if (!diameters.empty())
         {
-            segment.referenceDiameterMm = median(diameters);
+            segment.referenceDiameterMm = median(diameters, 0.0);
             segment.minimalDiameterMm = *std::min_element(diameters.begin(), diameters.end());
             segment.diameterStenosisPercent = 100.0 * (1.0 - segment.minimalDiameterMm / segment.referenceDiameterMm);
             segment.areaStenosisPercent =
-                100.0 * (1.0 - *std::min_element(areas.begin(), areas.end()) / median(areas));
+                100.0 * (1.0 - *std::min_element(areas.begin(), areas.end()) / median(areas, 0.0));
             const auto first = std::find_if(segment.sections.begin(), segment.sections.end(),
                                             [](const CrossSection& s) { return !s.nearJunction && s.areaMm2 > 0; });
             const auto last = std::find_if(segment.sections.rbegin(), segment.sections.rend(),

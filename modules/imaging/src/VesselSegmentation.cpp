@@ -4,6 +4,7 @@
 #include "MaskOps.h"
 #include "Vesselness.h"
 #include "vsim/core/Hounsfield.h"
+#include "vsim/core/Median.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <itkBinaryThresholdImageFilter.h>
@@ -118,14 +119,6 @@ FloatImage::Pointer smoothedFloat(const CtVolume& ct, double sigmaMm)
     smooth->SetSigma(sigmaMm);
     smooth->Update();
     return smooth->GetOutput();
-}
-
-double median(std::vector<float> values)
-{
-    if (values.empty())
-        return 0.0;
-    std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
-    return values[values.size() / 2];
 }
 
 /// Multi-scale Frangi vesselness of bright tubes (Vesselness.h), normalised to its maximum in the region.

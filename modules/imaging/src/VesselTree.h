@@ -4,6 +4,7 @@
 // its widest paths, with the vessel-following primitives the naming rules use (children that are vessels rather
 // than skeleton spurs, directions in the patient frame, how far a subtree reaches, divisions).
 
+#include "vsim/core/Median.h"
 #include "vsim/core/SkeletonGraph.h"
 
 #include <algorithm>
@@ -149,12 +150,9 @@ protected:
     /// Median of `values` (of the middle 60 % when `middle`, away from the junctions' widening).
     static double median(std::vector<double> values, bool middle)
     {
-        if (values.empty())
-            return 0.0;
         if (middle && values.size() >= 5)
             values = std::vector<double>(values.begin() + long(values.size() / 5), values.end() - long(values.size() / 5));
-        std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
-        return values[values.size() / 2];
+        return vsim::median(std::move(values), 0.0);
     }
 
     /// The lumen radius where edge `e` ends (its last five points), mm.

@@ -1,5 +1,7 @@
 #include "WaveFront.h"
 
+#include "vsim/core/Median.h"
+
 #include "GuidedHelpers.h"
 #include "LocalHalfLevel.h"
 #include "ShellOffsets.h"
@@ -42,12 +44,6 @@ struct Node
     std::uint32_t voxel;
     bool operator>(const Node& other) const { return dist > other.dist; }
 };
-
-double median(std::vector<double> values)
-{
-    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
-    return values[values.size() / 2];
-}
 
 class Propagation
 {

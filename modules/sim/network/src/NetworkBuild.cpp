@@ -1,6 +1,7 @@
 #include "vsim/sim/network/NetworkBuild.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Median.h"
 #include "vsim/sim/network/TipOrientation.h"
 
 #include <algorithm>
@@ -13,12 +14,6 @@
 
 namespace vsim::sim::network {
 namespace {
-
-double median(std::vector<double> values)
-{
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
 
 double polylineLength(const std::vector<Eigen::Vector3d>& path)
 {
@@ -115,8 +110,10 @@ VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std
         else if (!edge.radii.empty())
         {
             const std::size_t quarter = std::max<std::size_t>(1, edge.radii.size() / 4);
-            segment.startRadiusMm = median({edge.radii.begin(), edge.radii.begin() + std::ptrdiff_t(quarter)});
-            segment.endRadiusMm = median({edge.radii.end() - std::ptrdiff_t(quarter), edge.radii.end()});
+            const auto head = edge.radii.begin() + std::ptrdiff_t(quarter);
+            const auto tail = edge.radii.end() - std::ptrdiff_t(quarter);
+            segment.startRadiusMm = median(std::vector<double>(edge.radii.begin(), head));
+            segment.endRadiusMm = median(std::vector<double>(tail, edge.radii.end()));
         }
         if (!(segment.startRadiusMm > 0.0 && segment.endRadiusMm > 0.0))
             throw Error("centerline edge " + std::to_string(e) + " has no positive radius: measure the vessels again",

@@ -312,7 +312,9 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
             return putBack("at t = " + numberText(m_timeS + dt) + " s fluid particle " + std::to_string(p.id[i]) +
                            " went " + numberText(-1e3 * m_rates.guardedWallDistance[i]) + " mm into the wall at " +
                            positionText(p.position[i]) +
-                           ": the time step or the sound speed is too large for the flow, or the wall too thin");
+                           ": the time step or the sound speed is too large for the flow, or the wall thinner than "
+                           "the kernel (a segmentation's ragged edge: the walls' backstop, parameter wall_repulsion "
+                           "0.01)");
     }
     if (worstDensity > m_densityGuard)
         return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[worst]) +
