@@ -89,7 +89,6 @@ CrossSection sectionAt(const LabelVolume& label, const Eigen::Vector3d& centre, 
 
 constexpr double kRoundness = 0.8; // smallest / largest caliper width of a section that counts as round
 
-
 } // namespace
 
 std::vector<ParameterSpec> measurementParameters()
