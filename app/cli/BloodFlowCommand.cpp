@@ -3,6 +3,7 @@
 #include "CliSupport.h"
 #include "CommandLine.h"
 #include "vsim/app/BloodFlowPipeline.h"
+#include "vsim/app/InjectionPipeline.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/core/Units.h"
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 
 namespace vsim::cli {
 namespace {
@@ -110,20 +112,52 @@ sim::sph::Waveform readWaveform(const std::string& file)
     return waveform;
 }
 
+/// What both SPH commands do before anything runs: --backend checked, --out claimed (a refused folder costs no
+/// time), the study opened for writing and its centerlines chosen (--centerlines or the newest).
+study::Study prepareSphRun(const Arguments& arguments, std::string& backend, std::string& centerlinesId)
+{
+    backend = arguments.option("backend", "auto");
+    if (backend != "auto" && backend != "cpu" && backend != "cuda")
+        throw UsageError("--backend: auto, cpu or cuda, not '" + backend + "'");
+    if (arguments.hasOption("out"))
+        claimOutputFolder(arguments.option("out"), "run");
+    study::Study study = openStudyForWriting(arguments);
+    centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
+    return study;
+}
+
+/// --param key=value into `parameters`, each key into `given`; then the options that set a solver parameter
+/// (option, key, unit).
+void applySolverOptions(const Arguments& arguments, ParameterSet& parameters, std::vector<std::string>& given,
+                        const std::vector<std::tuple<std::string, std::string, std::string>>& options)
+{
+    applyParameters(arguments, parameters);
+    for (const auto& [name, value] : arguments.options)
+        if (name == "param")
+            given.push_back(value.substr(0, value.find('=')));
+    for (const auto& [option, key, unit] : options)
+        if (arguments.hasOption(option))
+        {
+            parameters.set(key, quantityOption(arguments, option, unit, 0.0));
+            given.push_back(key);
+        }
+}
+
+/// --frames: 1 to 10000.
+int framesOption(const Arguments& arguments, double fallback)
+{
+    const double frames = quantityOption(arguments, "frames", "", fallback);
+    if (!(frames >= 1.0 && frames <= 10000.0))
+        throw UsageError("--frames: 1 to 10000");
+    return int(frames);
+}
+
 } // namespace
 
 int simulateSph(const Arguments& arguments, const Progress& progress)
 {
-    const std::string backend = arguments.option("backend", "auto");
-    if (backend != "auto" && backend != "cpu" && backend != "cuda")
-        throw UsageError("--backend: auto, cpu or cuda, not '" + backend + "'");
-    if (arguments.hasOption("out")) // before the run: a refused folder costs no time
-        claimOutputFolder(arguments.option("out"), "run");
-    study::Study study = openStudyForWriting(arguments);
-
     app::BloodFlowSetup setup;
-    setup.backend = backend;
-    setup.centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
+    study::Study study = prepareSphRun(arguments, setup.backend, setup.centerlinesId);
     setup.inlet = parseInlet(arguments.option("inlet", "0.2m/s"));
     if (arguments.hasOption("waveform"))
         setup.inlet.waveform = readWaveform(arguments.option("waveform"));
@@ -139,25 +173,11 @@ int simulateSph(const Arguments& arguments, const Progress& progress)
     setup.compareMm = quantityOption(arguments, "compare", "mm", 6.0);
     if (arguments.hasOption("ramp"))
         setup.rampS = quantityOption(arguments, "ramp", "s", 0.0);
-    applyParameters(arguments, setup.parameters);
-    for (const auto& [name, value] : arguments.options)
-        if (name == "param")
-            setup.given.push_back(value.substr(0, value.find('=')));
-    auto set = [&](const std::string& option, const std::string& key, const std::string& unit)
-    {
-        if (!arguments.hasOption(option))
-            return;
-        setup.parameters.set(key, quantityOption(arguments, option, unit, 0.0));
-        setup.given.push_back(key);
-    };
-    set("spacing", "spacing_mm", "mm");
-    set("until", "end_time_s", "s");
-    set("void-fraction", "void_fraction", "");
-
-    const double frames = quantityOption(arguments, "frames", "", 20.0);
-    if (!(frames >= 1.0 && frames <= 10000.0))
-        throw UsageError("--frames: 1 to 10000");
-    setup.frames = int(frames);
+    applySolverOptions(arguments, setup.parameters, setup.given,
+                       {{"spacing", "spacing_mm", "mm"},
+                        {"until", "end_time_s", "s"},
+                        {"void-fraction", "void_fraction", ""}});
+    setup.frames = framesOption(arguments, 20.0);
     const app::BloodFlowRun flow = app::runBloodFlow(study, setup, {}, progress.subRange(0.0, 0.95));
     const std::string document = app::bloodFlowDocument(flow, setup);
     const std::vector<std::string> inputs{setup.centerlinesId};
@@ -170,6 +190,38 @@ int simulateSph(const Arguments& arguments, const Progress& progress)
     std::cout << document.substr(0, document.size() - 2) << ",\n  \"run_artifact\": \"" << runId << "\",\n"
               << "  \"wall_loads_artifact\": \"" << added.wallLoads << "\"\n}\n";
     return runExitCode(flow.run.status, runId);
+}
+
+int simulateInjection(const Arguments& arguments, const Progress& progress)
+{
+    app::InjectionSetup setup;
+    study::Study study = prepareSphRun(arguments, setup.backend, setup.centerlinesId);
+    if (arguments.hasOption("needle-end"))
+        setup.needleEndNode = int(parseNumbers(arguments.option("needle-end"), ',', 1, "needle-end")[0]);
+    setup.needleBoreMm = quantityOption(arguments, "needle-bore", "mm", setup.needleBoreMm);
+    setup.particlesPerSecond = quantityOption(arguments, "rate", "/s", setup.particlesPerSecond);
+    setup.collectionDepthMm = quantityOption(arguments, "box-depth", "mm", setup.collectionDepthMm);
+    setup.collectionMarginMm = quantityOption(arguments, "box-margin", "mm", setup.collectionMarginMm);
+    applySolverOptions(arguments, setup.parameters, setup.given,
+                       {{"spacing", "spacing_mm", "mm"},
+                        {"until", "end_time_s", "s"},
+                        {"void-fraction", "void_fraction", ""}});
+    if (arguments.hasOption("gauge"))
+    {
+        const auto [value, unit] = numberAndUnit(arguments.option("gauge"), "gauge");
+        setup.parameters.set("reference_pressure_pa", pressurePa(value, unit, "gauge"));
+        setup.given.push_back("reference_pressure_pa");
+    }
+    setup.frames = framesOption(arguments, 10.0);
+    const app::InjectionRun injection = app::runInjection(study, setup, {}, progress.subRange(0.0, 0.95));
+    const std::string document = app::injectionDocument(injection, setup);
+    const std::string runId = app::addInjectionRun(study, injection, setup);
+    study.save();
+    if (arguments.hasOption("out"))
+        study::writeRunSeries(arguments.option("out"), injection.run, document);
+    progress.report(1.0, "saved");
+    std::cout << document.substr(0, document.size() - 2) << ",\n  \"run_artifact\": \"" << runId << "\"\n}\n";
+    return runExitCode(injection.run.status, runId);
 }
 
 } // namespace vsim::cli

@@ -153,6 +153,22 @@ std::vector<CommandSpec> declareCommands()
          "    0.5 % of the density, an end time five settling times (resistance x compliance) past the ramp. The\n"
          "    waveform file: lines time_s,factor over one cycle",
          simulateSph},
+        {"simulate injection", 1, 1,
+         {kStudy, value("needle-bore"), value("rate"), value("needle-end"), value("box-depth"), value("box-margin"),
+          value("spacing"), value("until"), value("void-fraction"), value("gauge"), value("frames"), value("backend"),
+          value("centerlines"), kParam, value("out"), kWait},
+         "simulate injection --study <study.vsim> [--needle-bore 1.2mm] [--rate 300/s] [--needle-end NODE]\n"
+         "                   [--box-depth 15mm] [--box-margin 10mm] [--spacing 0.4mm] [--until 0.3s]\n"
+         "                   [--void-fraction 0.2] [--gauge 40mmHg] [--frames 10] [--backend auto|cpu|cuda]\n"
+         "                   [--param key=value ...] [--out DIR]\n"
+         "    thesis scenario (a), the needle injection (ch. 5.5.1, Table 5.1): the vessel held upright (gravity from\n"
+         "    the needle's end, the largest vessel's or NODE, towards the others), empty at the start; a needle of\n"
+         "    the bore at that end emits --rate particles of the spacing a second (default a third of the bore) of\n"
+         "    the mixture at --void-fraction; the blood runs down and out of the open ends into a box below them;\n"
+         "    --gauge is the level every pressure is reported at. Prints the fill over the frames (ml in the vessel\n"
+         "    and in the box, how far the blood has run) and the mass balance; a Run of particle frames; the frame\n"
+         "    series to DIR. Wall absorption of the injected drug: --param absorption_distance_mm=0.1 (CPU)",
+         simulateInjection},
         {"validate", 1, 1, {},
          "validate <case|fem|network|sph|heat|all>\n"
          "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"

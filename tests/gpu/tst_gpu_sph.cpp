@@ -28,12 +28,13 @@ using namespace vsim::sim::sph;
 
 namespace {
 
-void initializeDamBreak(SphSolver& solver, double spacingMm, double absorptionMm = 0.0)
+void initializeDamBreak(SphSolver& solver, double spacingMm, double absorptionMm = 0.0, bool tension = true)
 {
     SimulationInput input;
     input.data["particles"] = damBreakParticles(spacingMm);
     ParameterSet parameters = damBreakParameters(spacingMm);
     parameters.set("absorption_distance_mm", absorptionMm);
+    parameters.set("fluid_tension", tension ? 1.0 : 0.0);
     solver.initialize(input, parameters);
 }
 
@@ -56,12 +57,21 @@ class TestGpuSph : public QObject
 {
     Q_OBJECT
 private slots:
+    /// With and without tension in the fluid (FluidModel::tension: the pressure clipped at 0 and the guard on
+    /// compression only).
+    void damBreakParityAfter100Steps_data()
+    {
+        QTest::addColumn<bool>("tension");
+        QTest::newRow("with tension") << true;
+        QTest::newRow("without tension") << false;
+    }
     void damBreakParityAfter100Steps()
     {
         if (vsim::cuda::devices().empty())
             QSKIP("no CUDA device on this machine; run on the accelerator with the device tool");
+        QFETCH(bool, tension);
         SphSolver cpu;
-        initializeDamBreak(cpu, 40.0);
+        initializeDamBreak(cpu, 40.0, 0.0, tension);
         const ParticleState start = byId(cpu.particles());
         cuda::CudaSph gpu(cpu);
         RunStatus status;

@@ -144,6 +144,24 @@ private slots:
         QVERIFY(std::abs(boundaries.prescribedPressure(0, 0.5, 0.0) - (0.5 * 6766.0 - 6666.0)) < 1e-9);
     }
 
+    /// Without tension (SphSolver's fluid_tension 0: a liquid that breaks up) the density is held at the rest
+    /// density or above, the pressure is never below 0 and the density guard reads compression only; with it (the
+    /// default) no floor, Tait's negative pressure and |change|.
+    void fluidWithoutTension()
+    {
+        FluidModel fluid;
+        const double rho0 = fluid.mixtureDensity(0.2);
+        QVERIFY(fluid.pressure(0.97 * rho0, 0.2) < -0.1 * fluid.stiffness(0.2));
+        QVERIFY(std::abs(fluid.densityVariation(0.97 * rho0, 0.2) - 0.03) < 1e-12);
+        QCOMPARE(fluid.densityFloor(0.2), 0.0);
+        fluid.tension = false;
+        QCOMPARE(fluid.densityFloor(0.2), rho0);
+        QCOMPARE(fluid.pressure(0.97 * rho0, 0.2), 0.0);
+        QCOMPARE(fluid.densityVariation(0.5 * rho0, 0.2), 0.0);
+        QVERIFY(std::abs(fluid.densityVariation(1.02 * rho0, 0.2) - 0.02) < 1e-12);
+        QVERIFY(std::abs(fluid.pressure(1.02 * rho0, 0.2) - fluid.stiffness(0.2) * (std::pow(1.02, 7.0) - 1.0)) < 1e-9);
+    }
+
     /// Periodic along x (a channel's flow direction): neighbours across the seam found as nearest images.
     void periodicNeighbours()
     {

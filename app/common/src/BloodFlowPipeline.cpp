@@ -1,5 +1,6 @@
 #include "vsim/app/BloodFlowPipeline.h"
 
+#include "SphPipelineSupport.h"
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
@@ -7,65 +8,15 @@
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/sph/SphSolver.h"
 
-#ifdef VSIM_HAVE_CUDA
-#include "vsim/cuda_common/DeviceInfo.h"
-#include "vsim/cuda_sph/CudaSph.h"
-#endif
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <queue>
 
 namespace vsim::app {
 namespace {
 
 constexpr int kWallSurfaceVertices = 20000; // the wall loads' surface: the label's iso-surface decimated to this
-
-/// A centerline path with its lumen radius at every point (mm), oriented from its first point.
-struct RadiusPath
-{
-    std::vector<Eigen::Vector3d> points;
-    std::vector<double> radii;
-
-    double length() const
-    {
-        double sum = 0.0;
-        for (std::size_t k = 1; k < points.size(); ++k)
-            sum += (points[k] - points[k - 1]).norm();
-        return sum;
-    }
-    /// The point, unit tangent and radius at arc length s (mm) from the first point (clamped to the path).
-    void at(double s, Eigen::Vector3d& point, Eigen::Vector3d& tangent, double& radius) const
-    {
-        s = std::max(0.0, s);
-        for (std::size_t k = 1; k < points.size(); ++k)
-        {
-            const double step = (points[k] - points[k - 1]).norm();
-            if (s <= step || k + 1 == points.size())
-            {
-                const double share = step > 0.0 ? std::min(1.0, s / step) : 0.0;
-                point = points[k - 1] + share * (points[k] - points[k - 1]);
-                radius = radii[k - 1] + share * (radii[k] - radii[k - 1]);
-                tangent = (points[k] - points[k - 1]).normalized();
-                return;
-            }
-            s -= step;
-        }
-        point = points.front(), radius = radii.front(), tangent = Eigen::Vector3d::UnitX();
-    }
-    /// The tangent averaged over +-`halfMm` around arc length s (steadier than one polyline step's).
-    Eigen::Vector3d smoothTangent(double s, double halfMm) const { return chord(s - halfMm, s + halfMm); }
-    /// The unit chord from arc length `from` to `to` (mm, clipped to the path; its tangent where they meet).
-    Eigen::Vector3d chord(double from, double to) const
-    {
-        Eigen::Vector3d before, after, tangent;
-        double radius = 0.0;
-        at(std::max(0.0, from), before, tangent, radius);
-        at(std::min(length(), to), after, tangent, radius);
-        return (after - before).norm() > 0.0 ? Eigen::Vector3d((after - before).normalized()) : tangent;
-    }
-};
 
 /// The surface's vertices (m) with their normals into the lumen (the outward vertex normals reversed).
 std::vector<sim::sph::WallPoint> inwardWallPoints(const TriangleMesh& surface)
@@ -76,93 +27,6 @@ std::vector<sim::sph::WallPoint> inwardWallPoints(const TriangleMesh& surface)
     for (std::size_t v = 0; v < surface.points.size(); ++v)
         points.push_back({1e-3 * surface.points[v], outward[v].norm() > 0.0 ? Eigen::Vector3d(-outward[v]) : Eigen::Vector3d::UnitX()});
     return points;
-}
-
-/// Segment `e`'s path oriented to start at node `from`, with its conical radii.
-RadiusPath orientedSegment(const VesselNetwork& network, int e, int from)
-{
-    const VesselNetwork::Segment& segment = network.segments[std::size_t(e)];
-    RadiusPath path;
-    path.points = network.segmentPath(std::size_t(e));
-    double total = 0.0;
-    std::vector<double> arc{0.0};
-    for (std::size_t k = 1; k < path.points.size(); ++k)
-        arc.push_back(total += (path.points[k] - path.points[k - 1]).norm());
-    for (double s : arc)
-        path.radii.push_back(segment.startRadiusMm + (total > 0.0 ? s / total : 0.0) * (segment.endRadiusMm - segment.startRadiusMm));
-    if (segment.from != from)
-    {
-        std::reverse(path.points.begin(), path.points.end());
-        std::reverse(path.radii.begin(), path.radii.end());
-    }
-    return path;
-}
-
-/// The path through the tree from node `from` to node `to` (their segments' paths joined).
-RadiusPath pathBetween(const VesselNetwork& network, int from, int to)
-{
-    const std::vector<std::vector<int>> incident = network.incidentSegments();
-    std::vector<int> viaSegment(network.nodes.size(), -2);
-    std::queue<int> queue;
-    queue.push(from), viaSegment[std::size_t(from)] = -1;
-    while (!queue.empty())
-    {
-        const int node = queue.front();
-        queue.pop();
-        for (int e : incident[std::size_t(node)])
-        {
-            const VesselNetwork::Segment& s = network.segments[std::size_t(e)];
-            const int next = s.from == node ? s.to : s.from;
-            if (viaSegment[std::size_t(next)] == -2)
-                viaSegment[std::size_t(next)] = e, queue.push(next);
-        }
-    }
-    if (viaSegment[std::size_t(to)] == -2)
-        throw Error("the vessel ends " + std::to_string(from) + " and " + std::to_string(to) + " are not connected");
-    std::vector<std::pair<int, int>> steps; // (segment, its start node on the way) from `to` back to `from`
-    for (int node = to; node != from;)
-    {
-        const int e = viaSegment[std::size_t(node)];
-        const VesselNetwork::Segment& s = network.segments[std::size_t(e)];
-        const int previous = s.from == node ? s.to : s.from;
-        steps.push_back({e, previous});
-        node = previous;
-    }
-    RadiusPath path;
-    for (auto it = steps.rbegin(); it != steps.rend(); ++it)
-    {
-        const RadiusPath piece = orientedSegment(network, it->first, it->second);
-        const std::size_t skip = path.points.empty() ? 0 : 1; // the junction point once
-        path.points.insert(path.points.end(), piece.points.begin() + long(skip), piece.points.end());
-        path.radii.insert(path.radii.end(), piece.radii.begin() + long(skip), piece.radii.end());
-    }
-    return path;
-}
-
-/// An open end's plane: `insetMm` inside the vessel along the end's centerline, its normal into the vessel.
-struct EndPlane
-{
-    int node = -1;
-    Eigen::Vector3d centreMm = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitX();
-    double radiusMm = 0.0, insetMm = 0.0;
-};
-
-EndPlane endPlane(const VesselNetwork& network, int node, double spacingMm)
-{
-    const std::vector<std::vector<int>> incident = network.incidentSegments();
-    const RadiusPath path = orientedSegment(network, incident[std::size_t(node)].front(), node);
-    EndPlane plane;
-    plane.node = node;
-    const double endRadius = path.radii.front();
-    plane.insetMm = std::min(std::max(2.0 * spacingMm, 0.5 * endRadius), 0.45 * path.length());
-    Eigen::Vector3d tangent;
-    double radius = 0.0;
-    path.at(plane.insetMm, plane.centreMm, tangent, radius);
-    // The vessel's direction over the three radii inside the plane: the centerline's last millimetre bends towards
-    // where the image's border cuts the lumen (a 2.5 mm artery 8.4 degrees off the slices: 10 degrees off its axis).
-    plane.normal = path.chord(plane.insetMm, plane.insetMm + std::max(2.0 * spacingMm, 3.0 * radius));
-    plane.radiusMm = 1.5 * std::max(radius, endRadius) + spacingMm;
-    return plane;
 }
 
 /// Whether a wall point (mm) lies within `bandMm` inside an open end's plane (or past it): there the kernels reach
@@ -249,51 +113,11 @@ BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& 
     return setup;
 }
 
-namespace {
-
-/// The stepper the setup asks for: the CPU's (an empty factory), or the GPU's when asked (refused without one) or on
-/// auto with a device, where a case the GPU refuses (more than 32 open ends) falls back to the CPU with a warning.
-sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, BloodFlowRun& flow)
-{
-    if (requested != "auto" && requested != "cpu" && requested != "cuda")
-        throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
-    if (requested == "cpu")
-        return {};
-#ifdef VSIM_HAVE_CUDA
-    if (!cuda::devices().empty())
-    {
-        flow.device = cuda::deviceSummary();
-        if (requested == "cuda")
-            return cuda::cudaSphStepperFactory();
-        return [&flow](const sim::sph::SphSolver& solver) -> std::unique_ptr<sim::sph::SphStepper>
-        {
-            try
-            {
-                return cuda::cudaSphStepperFactory()(solver);
-            }
-            catch (const Error& refused)
-            {
-                flow.warnings.push_back(std::string("ran on the CPU: ") + refused.what());
-                return nullptr;
-            }
-        };
-    }
-    const std::string unavailable = "there is no CUDA device";
-#else
-    const std::string unavailable = "this build has no CUDA backend (nvcc was not found when it was configured)";
-#endif
-    if (requested == "cuda")
-        throw Error(unavailable + ": use --backend cpu or auto");
-    return {};
-}
-
-} // namespace
-
 BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup, sim::RunControl control,
                           const Progress& progress)
 {
     BloodFlowRun flow;
-    const sim::sph::SphStepperFactory stepper = chooseSphStepper(setup.backend, flow);
+    const sim::sph::SphStepperFactory stepper = chooseSphStepper(setup.backend, flow.device, flow.warnings);
     progress.report(0.0, "vessel ends from the centerlines");
     const VesselNetwork network = buildStudyNetwork(study, setup.centerlinesId, flow.warnings, progress.subRange(0.0, 0.05));
     const std::string labelId = labelOfCenterlines(study, setup.centerlinesId);
@@ -473,12 +297,8 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     solver.setSections(sections, flow.averagedFromS, int(std::ceil(double(sections.size()) / 30.0)));
     solver.setWallPoints(inwardWallPoints(flow.wallSurface), flow.averagedFromS, 10);
     solver.setStepper(stepper); // the GPU's particles come back every 10th step for the sections and the wall
-    if (control.frameEvery <= 0.0 && control.frameEverySteps <= 0)
-        control.frameEvery = endTime / std::max(1, setup.frames);
-    flow.run = sim::runSolver(solver, input, parameters, control, progress.subRange(0.05, 1.0));
-    flow.backend = solver.steppedElsewhere() ? "cuda" : "cpu";
-    if (flow.backend == "cpu")
-        flow.device.clear();
+    flow.run = runSph(solver, input, parameters, control, setup.frames, progress.subRange(0.05, 1.0), flow.backend,
+                      flow.device);
     flow.sections = solver.sections().averages();
     flow.sectionLargestPeaks = solver.sections().largestPeaks();
     flow.averagedS = solver.sections().averagedTime();

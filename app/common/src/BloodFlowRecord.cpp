@@ -1,5 +1,6 @@
 // The blood-flow run's document (the CLI's output, the run folder's metrics.json) and its record in the study.
 
+#include "SphPipelineSupport.h"
 #include "vsim/app/BloodFlowPipeline.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/core/Units.h"
@@ -13,29 +14,6 @@
 
 namespace vsim::app {
 namespace {
-
-nlohmann::json boundaryJson(const sim::sph::OpenBoundary& b)
-{
-    nlohmann::json json{{"name", b.name},
-                        {"centre_mm", {1e3 * b.centreM.x(), 1e3 * b.centreM.y(), 1e3 * b.centreM.z()}},
-                        {"normal_into_vessel", {b.normal.x(), b.normal.y(), b.normal.z()}},
-                        {"disk_radius_mm", 1e3 * b.radiusM}};
-    if (b.prescribed == sim::sph::OpenBoundary::Prescribed::Velocity)
-    {
-        json["prescribed"] = "flow rate";
-        json["flow_rate_ml_s"] = 1e6 * b.flowRateM3S;
-        json["profile"] = b.parabolic ? "parabolic" : "plug";
-        json["ramp_s"] = b.rampS;
-    }
-    else
-    {
-        json["prescribed"] = "pressure";
-        json["pressure_mmhg"] = units::paToMmHg(b.pressurePa);
-    }
-    if (!b.waveform.points.empty())
-        json["waveform_period_s"] = b.waveform.period();
-    return json;
-}
 
 /// The stenosis figures with their definitions (StenosisFigures.h), as the document and the attributes name them.
 std::vector<std::tuple<std::string, double, std::string>> stenosisRows(const BloodFlowRun& flow)
@@ -138,7 +116,7 @@ std::string bloodFlowDocument(const BloodFlowRun& flow, const BloodFlowSetup& se
 {
     nlohmann::json boundaries = nlohmann::json::array();
     for (const auto& b : flow.boundaries)
-        boundaries.push_back(boundaryJson(b));
+        boundaries.push_back(openBoundaryJson(b));
     nlohmann::json parameters;
     for (const ParameterSpec& spec : flow.parameters.specs())
         parameters[spec.key] = flow.parameters.get(spec.key);
@@ -196,7 +174,7 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
     if (!flow.device.empty())
         provenance.parameters["device"] = flow.device;
     for (const auto& b : flow.boundaries)
-        provenance.parameters["boundary " + b.name] = boundaryJson(b).dump();
+        provenance.parameters["boundary " + b.name] = openBoundaryJson(b).dump();
     std::vector<std::string> warnings = flow.warnings;
     const std::string statusWarning = runStatusWarning(flow.run.status);
     if (!statusWarning.empty())

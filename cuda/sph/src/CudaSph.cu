@@ -313,6 +313,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     for (int a = 0; a < 3; ++a)
         params.gravity[a] = float(fluid.gravity[a]);
     params.pressureFloor = settings.freeSurface ? 0.0f : -INFINITY;
+    params.tension = fluid.tension ? 1 : 0;
     params.cell = float(h); // half the support, as NeighbourGrid
     params.betaMax = 10.0f;
     params.repulsion = float(fluid.wallRepulsion);
@@ -386,7 +387,7 @@ std::string CudaSph::step()
     const double dt = d.stableStep();
     const std::string at = "at t = " + number(d.time + dt) + " s ";
     d.resetReductions();
-    sph::launchKickDrift(d.current.pointers(), d.rates(), float(dt), d.n);
+    sph::launchKickDrift(d.params, d.current.pointers(), d.rates(), float(dt), d.n);
     if (const std::string full = d.exchangeAndSort(); !full.empty())
         return at + full;
     d.updateRates(d.time + dt);

@@ -28,7 +28,13 @@ __device__ inline float stiffness(const SphParams& p, float s)
 /// Tait (FluidModel::pressure).
 __device__ inline float pressureOf(const SphParams& p, float rho, float s)
 {
-    return stiffness(p, s) * (powf(rho / mixtureDensity(p, s), p.gamma) - 1.0f);
+    const float tait = stiffness(p, s) * (powf(rho / mixtureDensity(p, s), p.gamma) - 1.0f);
+    return p.tension ? tait : fmaxf(tait, 0.0f);
+}
+/// FluidModel::densityFloor: a particle's density after a kick.
+__device__ inline float flooredDensity(const SphParams& p, float rho, float s)
+{
+    return p.tension ? rho : fmaxf(rho, mixtureDensity(p, s));
 }
 /// FluidModel::densityAt.
 __device__ inline float densityAt(const SphParams& p, float pressurePa, float s)

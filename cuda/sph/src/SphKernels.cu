@@ -237,7 +237,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
     warpMax(&r->largestKinematicViscosity, kinematic);
 }
 
-__global__ void kickDriftKernel(SphArrays a, SphRatesArrays rates, float dt, int n)
+__global__ void kickDriftKernel(SphParams p, SphArrays a, SphRatesArrays rates, float dt, int n)
 {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= n)
@@ -246,6 +246,7 @@ __global__ void kickDriftKernel(SphArrays a, SphRatesArrays rates, float dt, int
     float4 x = a.position[i];
     if (isWall(x))
         return;
+    a.state[i].x = flooredDensity(p, a.state[i].x, a.state[i].z);
     float4 v = a.velocity[i];
     if (v.w == 0.0f) // not a buffer particle: those drift with their imposed velocity
     {
@@ -266,9 +267,11 @@ __global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float
     {
         float4 state = a.state[i];
         state.x += 0.5f * dt * rates.densityRate[i];
+        const float4 x = a.position[i];
+        if (!isWall(x))
+            state.x = flooredDensity(p, state.x, state.z);
         a.state[i] = state;
         float4 v = a.velocity[i];
-        const float4 x = a.position[i];
         const bool fluid = !isWall(x) && v.w == 0.0f; // neither a wall nor in a buffer
         if (fluid)
         {
@@ -276,7 +279,8 @@ __global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float
             v.x += 0.5f * dt * acc.x, v.y += 0.5f * dt * acc.y, v.z += 0.5f * dt * acc.z;
             a.velocity[i] = v;
         }
-        const float change = fabsf(state.x / mixtureDensity(p, state.z) - 1.0f);
+        const float departure = state.x / mixtureDensity(p, state.z) - 1.0f; // FluidModel::densityVariation
+        const float change = p.tension ? fabsf(departure) : fmaxf(departure, 0.0f);
         if (!isfinite(change) || !isfinite(x.x + x.y + x.z) || !isfinite(v.x + v.y + v.z))
         {
             if (atomicExch(&r->notFinite, 1u) == 0u)
@@ -371,9 +375,9 @@ void launchPartition(const SphArrays& a, int n, int* indices, int* selected, voi
                                              indices, selected, n, IsFluidParticle{a.position, a.velocity}));
 }
 
-void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n)
+void launchKickDrift(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt, int n)
 {
-    kickDriftKernel<<<blocks(n), kThreads>>>(a, rates, dt, n);
+    kickDriftKernel<<<blocks(n), kThreads>>>(p, a, rates, dt, n);
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 

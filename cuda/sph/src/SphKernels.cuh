@@ -21,6 +21,7 @@ struct SphParams
     float restDensity, gasDensity, viscosity, gasViscosity; ///< rho_p, rho_g (kg/m^3), mu_p, mu_g (Pa s)
     float gravity[3];    ///< m/s^2: what the walls' pressure extrapolation uses
     float pressureFloor; ///< Pa: 0 with a free surface, -inf in vessels
+    int tension; ///< FluidModel::tension: 0 holds the density at or above the rest density and the pressure at 0
     float cell;          ///< the cell's edge (m, = h)
     int dims[3];         ///< cells per axis
     int tile;            ///< rows of cells (y, z) are numbered in tiles of tile x tile rows (rowOf)
@@ -104,7 +105,7 @@ void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesA
 void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
                  const unsigned* cellStart, const unsigned* cellEnd, const float external[3],
                  const int* fluid, int count, SphReductions* r);
-void launchKickDrift(const SphArrays& a, const SphRatesArrays& rates, float dt, int n);
+void launchKickDrift(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt, int n);
 /// The second kick, then the guards: finite values, the density variation, through the wall (wallDistance
 /// below -throughWallM).
 void launchKick(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt,

@@ -7,7 +7,8 @@ namespace vsim::sim::sph {
 
 double FluidModel::pressure(double density, double voidFraction) const
 {
-    return stiffness(voidFraction) * (std::pow(density / mixtureDensity(voidFraction), gamma) - 1.0);
+    const double tait = stiffness(voidFraction) * (std::pow(density / mixtureDensity(voidFraction), gamma) - 1.0);
+    return tension ? tait : std::max(tait, 0.0);
 }
 
 double FluidModel::densityAt(double pressurePa, double voidFraction) const

@@ -72,6 +72,11 @@ std::vector<ParameterSpec> sphParameters()
         {"free_surface", "Free surface", "", 0, 0, 1, "Walls",
          "1 for a liquid with a free surface (a tank, a dam break): the walls hold no suction above it; 0 in vessels",
          K::Integer},
+        {"fluid_tension", "Tension in the fluid", "", 1, 0, 1, "Fluid",
+         "1: a density below the rest density pulls the fluid together (Tait's negative pressure; vessels, tanks); 0: "
+         "a liquid that breaks up (a stream falling from a needle, a splash): each particle's density is held at its "
+         "rest density or above, its pressure at 0 or above, and the density guard reads compression only",
+         K::Integer},
         {"wall_repulsion", "Wall repulsion", "x c0^2", 0.0, 0.0, 1.0, "Walls",
          "the walls' Lennard-Jones backstop (thesis ch. 5.4, Monaghan 1994): a wall particle closer than 0.9 spacings "
          "pushes a fluid particle away with D ((r0 / r)^12 - (r0 / r)^4) / r, D this times c0^2 (0.01: about the "
@@ -103,6 +108,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_fluid.referencePressurePa = parameters.get("reference_pressure_pa");
     m_fluid.wallRepulsion = parameters.get("wall_repulsion") * m_fluid.soundSpeed * m_fluid.soundSpeed;
     m_fluid.wallRepulsionRange = kWallRepulsionReach * spacing;
+    m_fluid.tension = parameters.get("fluid_tension") > 0.5;
     m_fluid.bodyForce = {parameters.get("body_force_x_m_s2"), parameters.get("body_force_y_m_s2"),
                          parameters.get("body_force_z_m_s2")};
     m_fluid.bodyForceFrequency = parameters.get("body_force_frequency_hz");
@@ -257,6 +263,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
         p.density[i] += 0.5 * dt * m_rates.densityRate[i];
         if (p.wall[i])
             continue;
+        p.density[i] = std::max(p.density[i], m_fluid.densityFloor(p.voidFraction[i]));
         if (!p.boundary[i])
             p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
         p.position[i] = m_grid->wrap(p.position[i] + dt * p.velocity[i]);
@@ -290,9 +297,11 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     {
         const bool fluid = p.isFluid(i);
         p.density[i] += 0.5 * dt * m_rates.densityRate[i];
+        if (!p.wall[i])
+            p.density[i] = std::max(p.density[i], m_fluid.densityFloor(p.voidFraction[i]));
         if (fluid)
             p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
-        const double variation = std::abs(p.density[i] / m_fluid.mixtureDensity(p.voidFraction[i]) - 1.0);
+        const double variation = m_fluid.densityVariation(p.density[i], p.voidFraction[i]);
         if (!std::isfinite(variation) || !p.position[i].allFinite() || !p.velocity[i].allFinite())
             return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[i]) +
                            " has a value that is not finite");
@@ -406,7 +415,7 @@ std::map<std::string, double> SphSolver::metrics() const
         {
             ++fluid;
             speed = std::max(speed, p.velocity[i].norm());
-            density = std::max(density, std::abs(p.density[i] / m_fluid.mixtureDensity(p.voidFraction[i]) - 1.0));
+            density = std::max(density, m_fluid.densityVariation(p.density[i], p.voidFraction[i]));
             energy += 0.5 * p.mass[i] * p.velocity[i].squaredNorm();
         }
     std::map<std::string, double> metrics{{"particles", double(p.size())}, {"fluid_particles", fluid},
