@@ -102,7 +102,8 @@ InjectionRun runInjection(const study::Study& study, const InjectionSetup& setup
         throw Error("the needle's node " + std::to_string(needleNode) + " is not a vessel end");
     if (!(setup.needleBoreMm > 0.0) || !(setup.particlesPerSecond > 0.0) || !(setup.collectionDepthMm > 0.0) ||
         !(setup.collectionMarginMm >= 0.0))
-        throw Error("the needle's bore, the generation rate and the box's depth must be positive");
+        throw Error("the needle's bore, the generation rate and the box's depth must be positive, the box's margin "
+                    "not negative");
 
     ParameterSet& parameters = injection.parameters = setup.parameters;
     if (!given(setup, "spacing_mm")) // three particles across the bore
@@ -119,13 +120,14 @@ InjectionRun runInjection(const study::Study& study, const InjectionSetup& setup
         parameters.set("free_surface", 1);
     if (!given(setup, "fluid_tension")) // a stream falling from the needle breaks up (SphSolver.h)
         parameters.set("fluid_tension", 0);
-    // At the solver's default Courant number (0.2) the density diffusion's renormalised gradient, ill-conditioned in
-    // a stream two or three particles across, drove one particle at the needle's mouth 473 % over the rest density
-    // at 75 ms (0.8 mm particles, 2026-11-28); at 0.1 (the stenosis jets', SphSolver.h) it holds.
+    // The stenosis jets' Courant number (SphSolver.h). Before the density floor, a particle at the needle's mouth ran
+    // 473 % over the rest density at 75 ms at the solver's 0.2 and not at 0.1 (0.8 mm particles, 2026-11-28); with
+    // the floor, runs at 0.2 (`--param cfl=0.2`) held as well as at 0.1 on the GPU, and the benches use it.
     if (!given(setup, "cfl"))
         parameters.set("cfl", sim::sph::kStenosisCfl);
     // The walls' backstop (thesis ch. 5.4: its ghost walls repel): the first drops land on the box's floor at the
-    // free fall's speed with nothing under them to build a pressure, and went 0.41 mm into it without it.
+    // free fall's speed with nothing under them to build a pressure, and one went 0.41 mm into it without it
+    // (before the density floor, 2026-11-28).
     if (!given(setup, "wall_repulsion"))
         parameters.set("wall_repulsion", 0.01);
 
