@@ -123,6 +123,11 @@ public:
     /// with the Flow > Blood Flow Parameters; the run is added (undoable) and played, its stenosis figures in the
     /// status bar. False without centerlines.
     bool simulateBloodFlow();
+    /// Runs thesis scenario (a), the needle injection (app/InjectionPipeline.h), on the newest centerlines in the
+    /// background (Flow > Needle Injection) with the Flow > Blood Flow Parameters' "Needle injection" page and the SPH
+    /// solver's; the run is added (undoable) and played, the fill in the status bar.
+    bool simulateNeedleInjection();
+    ParameterSet& injectionSetup() { return m_injectionSetup; }
     /// Colours the played (else the newest) blood-flow run's wall loads (Flow > Wall Loads: field "tawss_pa", "osi" or
     /// "wall_pressure_pa") on the lumen surface in 3D, its legend on the left naming the field, the unit, the time
     /// window and the run's status; grey where the run has no value (past an open end). While the Run Player plays
@@ -273,7 +278,7 @@ private:
     ParameterSet m_wallMeshParameters;
     ParameterSet m_femParameters;
     ParameterSet m_networkParameters;
-    ParameterSet m_bloodFlowSetup, m_sphParameters;
+    ParameterSet m_bloodFlowSetup, m_injectionSetup, m_sphParameters;
     DrugDeliveryRequest m_drugRequest;
     DrugDeliveryPanel* m_drugPanel = nullptr;
     QDockWidget* m_drugDock = nullptr;

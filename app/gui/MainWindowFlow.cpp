@@ -7,6 +7,7 @@
 #include "ParameterForm.h"
 #include "ViewLayout.h"
 #include "vsim/app/BloodFlowPipeline.h"
+#include "vsim/app/InjectionPipeline.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/core/Units.h"
 #include "vsim/viz/VolumeView3D.h"
@@ -27,9 +28,12 @@ namespace vsim::gui {
 void MainWindow::createFlowMenu()
 {
     m_bloodFlowSetup = ParameterSet(app::bloodFlowSetupParameters());
+    m_injectionSetup = ParameterSet(app::injectionSetupParameters());
     m_sphParameters = ParameterSet(sim::sph::sphParameters());
     QMenu* flow = menuBar()->addMenu(tr("F&low"));
     m_documentActions << flow->addAction(tr("Blood &Flow (SPH)"), this, [this] { simulateBloodFlow(); });
+    m_documentActions << flow->addAction(tr("Needle &Injection (SPH, Thesis Scenario a)"), this,
+                                         [this] { simulateNeedleInjection(); });
     QMenu* loads = flow->addMenu(tr("&Wall Loads"));
     m_documentActions << loads->menuAction();
     loads->addAction(tr("Time-Averaged Wall &Shear Stress"), this, [this] { showWallLoads("tawss_pa"); });
@@ -37,7 +41,9 @@ void MainWindow::createFlowMenu()
     loads->addAction(tr("Mean Wall &Pressure"), this, [this] { showWallLoads("wall_pressure_pa"); });
     m_documentActions << flow->addAction(tr("Blood Flow &Parameters..."), this, [this] {
         editParametersInDialog(this, tr("Blood flow parameters"),
-                               {{tr("Inlet, outlets, figures"), &m_bloodFlowSetup}, {tr("SPH solver"), &m_sphParameters}});
+                               {{tr("Inlet, outlets, figures"), &m_bloodFlowSetup},
+                                {tr("Needle injection"), &m_injectionSetup},
+                                {tr("SPH solver"), &m_sphParameters}});
     });
 }
 
@@ -74,6 +80,39 @@ bool MainWindow::simulateBloodFlow()
             else
                 statusBar()->showMessage(tr("Blood flow: no stenosis figures (%1)")
                                              .arg(QString::fromStdString(flow->warnings.empty() ? "" : flow->warnings.back())),
+                                         10000);
+        });
+}
+
+bool MainWindow::simulateNeedleInjection()
+{
+    if (!m_document.hasStudy())
+        return false;
+    const std::string centerlinesId = m_document.study().newestArtifact(study::ArtifactKind::Skeleton, "centerline");
+    if (centerlinesId.empty())
+    {
+        showError(tr("Needle injection"), tr("The vessel ends come from the centerlines: run Skeleton && Centerlines first."));
+        return false;
+    }
+    app::InjectionSetup setup = app::injectionSetupFrom(m_injectionSetup, m_sphParameters);
+    setup.centerlinesId = centerlinesId;
+    auto injection = std::make_shared<app::InjectionRun>();
+    return m_tasks.run(
+        tr("Needle injection"),
+        [this, setup, injection](const Progress& progress)
+        { *injection = app::runInjection(m_document.study(), setup, {}, progress); },
+        [this, setup, injection]
+        {
+            const std::string id = app::addInjectionRun(m_document.study(), *injection, setup);
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, {id}, tr("Needle injection")));
+            openRunPlayer(id);
+            if (const std::string warning = app::runStatusWarning(injection->run.status); !warning.empty())
+                showError(tr("Needle injection"), tr("Read these results with care: %1").arg(QString::fromStdString(warning)));
+            else if (!injection->fill.empty())
+                statusBar()->showMessage(tr("Needle injection: %1 ml in the vessel, %2 ml collected in the box at %3 s")
+                                             .arg(injection->fill.back().inVesselMl, 0, 'g', 3)
+                                             .arg(injection->fill.back().collectedMl, 0, 'g', 3)
+                                             .arg(injection->fill.back().timeS, 0, 'f', 3),
                                          10000);
         });
 }

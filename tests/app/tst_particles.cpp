@@ -171,6 +171,21 @@ private slots:
         window.document().undoStack()->undo();
         study.removeArtifact(study.newestArtifact(study::ArtifactKind::Surface, "simulate sph"));
         QCOMPARE(study.artifacts().size(), before);
+
+        // Flow > Needle Injection (thesis scenario a) on the same vessels: its first 2 ms (the stream's physics is
+        // cli_injection's), kept as a Run and played.
+        window.injectionSetup().set("needle_bore_mm", 2.5);
+        window.injectionSetup().set("spacing_mm", 1.0);
+        window.injectionSetup().set("end_time_s", 0.002);
+        window.injectionSetup().set("frames", 2);
+        QVERIFY(window.simulateNeedleInjection());
+        QVERIFY(test::waitForTask(window, 300000));
+        const std::string injectionId = study.newestArtifact(study::ArtifactKind::Run);
+        QCOMPARE(study.artifact(injectionId).provenance.command, std::string("simulate injection"));
+        QVERIFY(std::abs(std::stod(study.artifact(injectionId).attributes.at("injection_mass_balance_kg"))) <= 1e-15);
+        QVERIFY(window.runPlayer() && window.runPlayer()->frameCount() >= 2);
+        window.document().undoStack()->undo();
+        QCOMPARE(study.artifacts().size(), before);
     }
 };
 

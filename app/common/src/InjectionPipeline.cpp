@@ -82,6 +82,44 @@ bool nearCut(const Eigen::Vector3d& pointMm, const EndPlane& plane, double bandM
 
 } // namespace
 
+std::vector<ParameterSpec> injectionSetupParameters()
+{
+    using K = ParameterSpec::Kind;
+    const InjectionSetup defaults;
+    return {
+        {"needle_bore_mm", "Needle bore", "mm", defaults.needleBoreMm, 0.1, 20.0, "Needle",
+         "the needle's inner diameter (16 G: 1.19 mm); the particles a third of it unless the spacing is given", K::Real},
+        {"particles_per_s", "Generation rate", "particles/s", defaults.particlesPerSecond, 1.0, 1e7, "Needle",
+         "particles of the run's spacing a second (thesis Table 5.1: 300)", K::Real},
+        {"box_depth_mm", "Collection box depth", "mm", defaults.collectionDepthMm, 1.0, 500.0, "Collection box",
+         "its floor below the vessel's lowest wall", K::Real},
+        {"box_margin_mm", "Collection box margin", "mm", defaults.collectionMarginMm, 0.0, 500.0, "Collection box",
+         "its sides beyond the open ends", K::Real},
+        {"spacing_mm", "Particle spacing", "mm", 0.0, 0.0, 100.0, "Particles", "0: a third of the bore", K::Real},
+        {"end_time_s", "End time", "s", 0.0, 0.0, 1e4, "Time", "0: twice a free fall from the needle to the box's floor",
+         K::Real},
+        {"frames", "Frames", "", double(defaults.frames), 1, 10000, "Time", "frames kept over the run", K::Integer},
+    };
+}
+
+InjectionSetup injectionSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters)
+{
+    InjectionSetup setup;
+    setup.parameters = solverParameters;
+    for (const ParameterSpec& spec : solverParameters.specs())
+        if (solverParameters.get(spec.key) != spec.defaultValue)
+            setup.given.push_back(spec.key);
+    setup.needleBoreMm = form.get("needle_bore_mm");
+    setup.particlesPerSecond = form.get("particles_per_s");
+    setup.collectionDepthMm = form.get("box_depth_mm");
+    setup.collectionMarginMm = form.get("box_margin_mm");
+    for (const char* key : {"spacing_mm", "end_time_s"})
+        if (form.get(key) > 0.0)
+            setup.parameters.set(key, form.get(key)), setup.given.push_back(key);
+    setup.frames = int(form.get("frames"));
+    return setup;
+}
+
 InjectionRun runInjection(const study::Study& study, const InjectionSetup& setup, sim::RunControl control,
                           const Progress& progress)
 {
