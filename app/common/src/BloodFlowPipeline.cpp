@@ -119,22 +119,11 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     BloodFlowRun flow;
     const sim::sph::SphStepperFactory stepper = chooseSphStepper(setup.backend, flow.device, flow.warnings);
     progress.report(0.0, "vessel ends from the centerlines");
-    const VesselNetwork network = buildStudyNetwork(study, setup.centerlinesId, flow.warnings, progress.subRange(0.0, 0.05));
-    const std::string labelId = labelOfCenterlines(study, setup.centerlinesId);
-    if (labelId.empty())
-        throw Error("the centerlines '" + setup.centerlinesId + "' have no lumen label to fill with blood");
-    std::vector<int> ends = network.endNodes();
-    if (ends.size() < 2)
-        throw Error("the vessels need at least two open ends (an inlet and an outlet); the centerlines have " +
-                    std::to_string(ends.size()));
-    const int inletNode = setup.inlet.endNode >= 0 ? setup.inlet.endNode : network.root >= 0 ? network.root : ends.front();
-    if (std::find(ends.begin(), ends.end(), inletNode) == ends.end())
-        throw Error("the inlet node " + std::to_string(inletNode) + " is not a vessel end (ends: " + [&] {
-            std::string list;
-            for (int e : ends)
-                list += (list.empty() ? "" : ", ") + std::to_string(e);
-            return list;
-        }() + ")");
+    const SphVessels vessels = sphVessels(study, setup.centerlinesId, "the inlet", flow.warnings, progress.subRange(0.0, 0.05));
+    const VesselNetwork& network = vessels.network;
+    const std::string& labelId = vessels.labelId;
+    std::vector<int> ends = vessels.ends;
+    const int inletNode = chosenEnd(vessels, setup.inlet.endNode, "the inlet");
 
     ParameterSet& parameters = flow.parameters = setup.parameters;
     const std::vector<std::vector<int>> incident = network.incidentSegments();

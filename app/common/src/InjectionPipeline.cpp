@@ -126,18 +126,12 @@ InjectionRun runInjection(const study::Study& study, const InjectionSetup& setup
     InjectionRun injection;
     const sim::sph::SphStepperFactory stepper = chooseSphStepper(setup.backend, injection.device, injection.warnings);
     progress.report(0.0, "vessel ends from the centerlines");
-    const VesselNetwork network =
-        buildStudyNetwork(study, setup.centerlinesId, injection.warnings, progress.subRange(0.0, 0.05));
-    const std::string labelId = labelOfCenterlines(study, setup.centerlinesId);
-    if (labelId.empty())
-        throw Error("the centerlines '" + setup.centerlinesId + "' have no lumen label to inject into");
-    const std::vector<int> ends = network.endNodes();
-    if (ends.size() < 2)
-        throw Error("the injection needs a vessel with at least two ends (the needle's and an open one); the "
-                    "centerlines have " + std::to_string(ends.size()));
-    const int needleNode = setup.needleEndNode >= 0 ? setup.needleEndNode : network.root >= 0 ? network.root : ends.front();
-    if (std::find(ends.begin(), ends.end(), needleNode) == ends.end())
-        throw Error("the needle's node " + std::to_string(needleNode) + " is not a vessel end");
+    const SphVessels vessels =
+        sphVessels(study, setup.centerlinesId, "the needle", injection.warnings, progress.subRange(0.0, 0.05));
+    const VesselNetwork& network = vessels.network;
+    const std::string& labelId = vessels.labelId;
+    const std::vector<int>& ends = vessels.ends;
+    const int needleNode = chosenEnd(vessels, setup.needleEndNode, "the needle");
     if (!(setup.needleBoreMm > 0.0) || !(setup.particlesPerSecond > 0.0) || !(setup.collectionDepthMm > 0.0) ||
         !(setup.collectionMarginMm >= 0.0))
         throw Error("the needle's bore, the generation rate and the box's depth must be positive, the box's margin "

@@ -128,6 +128,33 @@ sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, std::
 }
 
 
+SphVessels sphVessels(const study::Study& study, const std::string& centerlinesId, const std::string& feeder,
+                      std::vector<std::string>& warnings, const Progress& progress)
+{
+    SphVessels vessels{buildStudyNetwork(study, centerlinesId, warnings, progress), labelOfCenterlines(study, centerlinesId),
+                       {}};
+    if (vessels.labelId.empty())
+        throw Error("the centerlines '" + centerlinesId + "' have no lumen label to fill with particles");
+    vessels.ends = vessels.network.endNodes();
+    if (vessels.ends.size() < 2)
+        throw Error("the vessels need at least two open ends (" + feeder + "'s and an outlet); the centerlines have " +
+                    std::to_string(vessels.ends.size()));
+    return vessels;
+}
+
+int chosenEnd(const SphVessels& vessels, int wanted, const std::string& role)
+{
+    const int node = wanted >= 0 ? wanted : vessels.network.root >= 0 ? vessels.network.root : vessels.ends.front();
+    if (std::find(vessels.ends.begin(), vessels.ends.end(), node) == vessels.ends.end())
+    {
+        std::string list;
+        for (int e : vessels.ends)
+            list += (list.empty() ? "" : ", ") + std::to_string(e);
+        throw Error(role + "'s node " + std::to_string(node) + " is not a vessel end (ends: " + list + ")");
+    }
+    return node;
+}
+
 SolverRun runSph(sim::sph::SphSolver& solver, const SimulationInput& input, const ParameterSet& parameters,
                  sim::RunControl control, int frames, const Progress& progress, std::string& backend,
                  std::string& device)

@@ -80,6 +80,22 @@ struct EndPlane
 /// the vessel's direction over the three radii inside it, with a disk of 1.5 radii and a spacing.
 EndPlane endPlane(const VesselNetwork& network, int node, double spacingMm);
 
+/// A study's vessels as an SPH run starts from them: the centerlines' network, their lumen label and the network's
+/// ends.
+struct SphVessels
+{
+    VesselNetwork network;
+    std::string labelId;
+    std::vector<int> ends;
+};
+/// Throws vsim::Error for centerlines without a lumen label or a network of fewer than two ends (`feeder`, "the
+/// inlet" or "the needle", and an open one).
+SphVessels sphVessels(const study::Study& study, const std::string& centerlinesId, const std::string& feeder,
+                      std::vector<std::string>& warnings, const Progress& progress);
+/// End node `wanted`, or where it is -1 the root (the end of the largest vessel; the first end without one); throws
+/// vsim::Error naming `role` and the ends when it is not an end.
+int chosenEnd(const SphVessels& vessels, int wanted, const std::string& role);
+
 /// The stepper a backend name asks for: the CPU's (an empty factory) for "cpu", the GPU's for "cuda" (refused
 /// without one), and on "auto" the GPU's when there is a device, falling back to the CPU with a line in `warnings`
 /// where it refuses the case. `device` gets the GPU's summary when there is one. Throws vsim::Error for another name.
