@@ -157,9 +157,9 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
     int row = 0;
     for (const auto& [node, flow] : r.twoPhase.outletFlow)
     {
-        const double arrival = r.filling.arrival.at(node);
+        const double arrival = sim::network::arrivalAt(r.filling, node);
         m_outlets->setItem(row, 0, new QTableWidgetItem(QString::number(node)));
-        m_outlets->setItem(row, 1, new QTableWidgetItem(number(100.0 * flow / r.twoPhase.injectedFlow, 2)));
+        m_outlets->setItem(row, 1, new QTableWidgetItem(number(100.0 * sim::network::deliveredFraction(r.twoPhase, {node}), 2)));
         m_outlets->setItem(row, 2, new QTableWidgetItem(arrival == sim::network::kNever ? tr("never") : number(arrival, 1)));
         ++row;
     }

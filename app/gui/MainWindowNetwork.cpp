@@ -114,7 +114,7 @@ void MainWindow::showDrugDeliveryRun(std::shared_ptr<const sim::network::Network
     m_drugPanel->setRequest(m_drugRequest);
     m_drugPanel->setRun(run, int(m_networkParameters.get("filling_steps")));
     statusBar()->showMessage(tr("Drug delivery: %1 outlets, last reached after %2 s")
-                                 .arg(run->twoPhase.outletFlow.size())
+                                 .arg(run->twoPhase.orientation.outlets.size())
                                  .arg(run->filling.lastArrival, 0, 'f', 1),
                              8000);
 }

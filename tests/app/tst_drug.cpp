@@ -99,6 +99,8 @@ private slots:
         QVERIFY(!panel->request().tip.isEmpty());
         panel->findChild<QPushButton*>("drugRun")->click();
         QVERIFY(vsim::test::waitForTask(window));
+        for (const QList<QVariant>& failure : failed)
+            qWarning("the run from the picked tip failed: %s", qPrintable(failure.value(1).toString()));
         QCOMPARE(failed.count(), 0);
         const study::Artifact picked = window.document().study().artifacts().back();
         QCOMPARE(QString::fromStdString(picked.provenance.parameters.at("tip")), panel->request().tip);

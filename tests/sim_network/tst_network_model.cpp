@@ -1,7 +1,8 @@
 // The drug network's pieces against closed forms: two-phase properties (eq. 6.2, 6.3), the filled length of a
 // cone, plug filling of a chain, the part downstream of the tip, splitting a segment at a point, Murray-law
-// outlets, the two-phase / liquid control-point comparison, tumour targeting; and bad input refused with a
-// message naming the node or segment.
+// outlets, the two-phase / liquid control-point comparison, tumour targeting, blood carrying the drug (the mixed
+// fraction, the catheter, a wedged catheter's reflux); and bad input refused with a message naming the node or
+// segment.
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
@@ -171,8 +172,8 @@ private slots:
         QCOMPARE(r.controls.size(), std::size_t(2));
         for (const ControlPoint& c : r.controls)
         {
-            qInfo("control %s: two-phase %.4f ml/min, liquid %.4f ml/min, drop %.2f %% (same tip pressure: %.2f %%)",
-                  c.name.c_str(), c.drugFlowTwoPhaseMlMin, c.drugFlowLiquidMlMin, c.dropPercent, c.dropAtSamePressurePercent);
+            qInfo("control %s: two-phase %.4f ml/min, liquid %.4f ml/min, drop %.2f %%, split shift %.2e %%",
+                  c.name.c_str(), c.drugFlowTwoPhaseMlMin, c.drugFlowLiquidMlMin, c.dropPercent, c.splitShiftPercent);
             QVERIFY(c.dropPercent > 9.9 && c.dropPercent < 10.1);
             QVERIFY(std::abs(c.drugFlowLiquidMlMin - 1.0) <= 1e-9); // the symmetric tree halves 2 ml/min
         }
@@ -255,6 +256,88 @@ private slots:
             QCOMPARE(length, 0.0);
         for (double fraction : std::get<VesselNetwork>(run.frames.back().data).segmentFields.at("filled_fraction"))
             QCOMPARE(fraction, 1.0);
+    }
+
+    // Blood carries the drug: with the tip at junction 2, the blood reaching it and the injection mix there; every
+    // segment below carries the same fraction q / (blood + q), the rest of the tree none; the drug leaves only
+    // through 4 and 5, and all of it does. The catheter's annulus lowers the vessel's own flow at the tip.
+    void bloodCarriesTheDrug()
+    {
+        NetworkRunSetup setup;
+        setup.network = binaryTree();
+        setup.tipNode = 2;
+        const NetworkRunResult r = runNetwork(setup);
+        QVERIFY(r.blood);
+        const BloodFlowSolution& b = *r.blood;
+        const double q = units::mlPerMinToM3PerS(2.0);
+        const double below = q / (b.tipInflow + q);
+        qInfo("inflow %.2f ml/min at 90 mmHg; own flow at the tip %.3f ml/min, with the injection %.3f ml/min; "
+              "fraction below the tip %.6f; %d fixed-point iterations, residual %.1e",
+              units::m3PerSToMlPerMin(b.inletFlow), units::m3PerSToMlPerMin(b.ownFlow),
+              units::m3PerSToMlPerMin(b.tipInflow), below, b.iterations, b.residual);
+        QVERIFY(b.converged && b.iterations >= 2);
+        QVERIFY(b.tipInflow > 0.0 && b.tipInflow < b.ownFlow); // the injection raises the tip's pressure
+        QCOMPARE(b.catheterSegments, (std::vector<int>{0, 1}));
+        for (int s : {3, 4})
+            QVERIFY(std::abs(r.twoPhase.injectateFraction[std::size_t(s)] / below - 1.0) <= 1e-12);
+        for (int s : {0, 1, 2, 5, 6})
+            QCOMPARE(r.twoPhase.injectateFraction[std::size_t(s)], 0.0);
+        QVERIFY(std::abs(r.twoPhase.outletInjectate.at(4) + r.twoPhase.outletInjectate.at(5) - q) <= 1e-12 * q);
+        QCOMPARE(r.twoPhase.outletInjectate.at(6), 0.0);
+        QVERIFY(b.balance.relativeError() <= 1e-12);
+        QVERIFY(!b.wedged && b.refluxShare == 0.0);
+        QVERIFY(r.status.converged());
+
+        // The catheter: none, 2.7 Fr, 4 Fr in the same vessels; the own flow falls as it fills more of the lumen.
+        double previous = 1e300;
+        for (double french : {0.0, 2.7, 4.0})
+        {
+            setup.parameters.set("catheter_outer_diameter_fr", french);
+            const double own = runNetwork(setup).blood->ownFlow;
+            QVERIFY(own < previous);
+            previous = own;
+        }
+    }
+
+    // A wedged catheter: an injection above the vessel's own flow refluxes into the sibling branches (the drug
+    // reaches outlets 6 and 7, not downstream of the tip), and a catheter filling most of the lumen is flagged.
+    void wedgedCatheterRefluxes()
+    {
+        NetworkRunSetup setup;
+        setup.network = binaryTree();
+        setup.tipNode = 2;
+        setup.parameters.set("catheter_outer_diameter_fr", 2.0);
+        const double own = units::m3PerSToMlPerMin(runNetwork(setup).blood->ownFlow);
+        setup.parameters.set("injection_rate_ml_min", 1.5 * own);
+        const NetworkRunResult r = runNetwork(setup);
+        const BloodFlowSolution& b = *r.blood;
+        qInfo("own flow %.2f ml/min, injecting %.2f: blood at the tip %.3f ml/min, reflux %.1f %% of the drug",
+              own, 1.5 * own, units::m3PerSToMlPerMin(b.tipInflow), 100.0 * b.refluxShare);
+        QVERIFY(b.wedged && b.tipInflow < 0.0);
+        QVERIFY(b.refluxShare > 0.01 && r.twoPhase.outletInjectate.at(6) > 0.0);
+        QVERIFY(std::abs(b.refluxShare - (r.twoPhase.outletInjectate.at(6) + r.twoPhase.outletInjectate.at(7)) /
+                                             b.balance.injected) <= 1e-9);
+        QVERIFY(b.balance.relativeError() <= 1e-12);
+        QVERIFY(std::any_of(r.warnings.begin(), r.warnings.end(), [](const std::string& w) { return w.find("refluxes") != std::string::npos; }));
+
+        setup.parameters.set("injection_rate_ml_min", 2.0);
+        setup.parameters.set("catheter_outer_diameter_fr", 6.5); // 2.17 mm in a 1.3 mm lumen (radius) at the tip
+        const BloodFlowSolution occluded = *runNetwork(setup).blood;
+        QVERIFY(occluded.wedged && occluded.occlusion >= kWedgeOcclusion);
+        QVERIFY(QString::fromStdString(occluded.wedgedBecause).contains("of the lumen at the tip"));
+    }
+
+    // The injected-alone model (the thesis's) is still there, and the tip pressure belongs to it.
+    void injectedAloneModel()
+    {
+        NetworkRunSetup setup;
+        setup.network = binaryTree();
+        setup.tipPressurePa = units::mmHgToPa(30.0);
+        QVERIFY(messageOf([&] { runNetwork(setup); }).contains("with blood flow the injection is a rate"));
+        setup.parameters.set("blood_flow", 0);
+        const NetworkRunResult r = runNetwork(setup);
+        QVERIFY(!r.blood && std::abs(units::paToMmHg(r.twoPhase.tipPressure) - 30.0) <= 1e-9);
+        QVERIFY(r.twoPhase.injectateFraction.empty());
     }
 
     void badInputIsNamed()

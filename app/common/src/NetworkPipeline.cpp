@@ -137,7 +137,8 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
                             {"drug_flow_two_phase_ml_min", c.drugFlowTwoPhaseMlMin},
                             {"drug_flow_liquid_ml_min", c.drugFlowLiquidMlMin},
                             {"drop_percent", c.dropPercent},
-                            {"drop_same_pressure_percent", c.dropAtSamePressurePercent}});
+                            {"drop_same_pressure_percent", c.dropAtSamePressurePercent},
+                            {"split_shift_percent", c.splitShiftPercent}});
     for (std::size_t i = 0; i < run.ranking.size() && i < 10; ++i)
     {
         const auto& c = run.ranking[i];
@@ -226,13 +227,13 @@ void writeNetworkRun(const std::filesystem::path& folder, const sim::network::Ne
     }
     {
         std::ofstream csv = openForWriting(folder / "outlets.csv");
-        csv << "node,x_mm,y_mm,z_mm,flow_ml_min,share,arrival_s\n";
+        csv << "node,x_mm,y_mm,z_mm,flow_ml_min,drug_share,arrival_s\n"; // flow: blood and drug; share of the injected
         for (const auto& [node, flow] : run.twoPhase.outletFlow)
         {
             const Eigen::Vector3d& p = run.network.nodes[std::size_t(node)].positionMm;
-            const double arrival = run.filling.arrival.at(node);
+            const double arrival = sim::network::arrivalAt(run.filling, node);
             csv << node << "," << numberText(p.x()) << "," << numberText(p.y()) << "," << numberText(p.z()) << ","
-                << numberText(units::m3PerSToMlPerMin(flow)) << "," << numberText(flow / run.twoPhase.injectedFlow) << ","
+                << numberText(units::m3PerSToMlPerMin(flow)) << "," << numberText(sim::network::deliveredFraction(run.twoPhase, {node})) << ","
                 << (arrival == sim::network::kNever ? std::string("-1") : numberText(arrival)) << "\n";
         }
     }

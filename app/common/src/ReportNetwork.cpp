@@ -113,6 +113,20 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
     section.blocks.push_back(injection);
     if (note)
         section.blocks.push_back(*note);
+    report::MetricTable blood{"Blood flow and the catheter (time-averaged, Newtonian blood)", {}};
+    addMetrics(blood, *run,
+               {{"arterial_inflow_ml_min", "Arterial inflow at the tree's root", "ml/min"},
+                {"root_pressure_mmhg", "Mean pressure at the root", "mmHg"},
+                {"tip_own_flow_ml_min", "Vessel's own flow at the tip (catheter in, no injection)", "ml/min"},
+                {"tip_blood_inflow_ml_min", "Blood reaching the tip during the injection", "ml/min"},
+                {"tip_injected_percent", "Injected mixture in the flow below the tip (volume)", "%"},
+                {"tip_drug_percent", "Drug (liquid phase) in the flow below the tip (volume)", "%"},
+                {"catheter_occlusion_percent", "Catheter's share of the lumen at the tip (area)", "%"},
+                {"wedged", "Wedged catheter (1: yes)", ""},
+                {"reflux_percent", "Drug refluxing past the tip", "%"},
+                {"coupling_iterations", "Fixed-point iterations (fractions and viscosities)", ""}});
+    if (!blood.rows.empty())
+        section.blocks.push_back(blood);
     report::MetricTable targeting{"Targeting", {}};
     addMetrics(targeting, *run,
                {{"tumour_fraction", "Drug reaching the tumour", "%", 100.0},
@@ -144,14 +158,18 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
                 {"control_A_drug_flow_liquid_ml_min", "A: drug flow, pure liquid", "ml/min"},
                 {"control_A_drop_percent", "A: two-phase lower by (same injected rate)", "%"},
                 {"control_A_drop_same_pressure_percent", "A: two-phase lower by (same tip pressure)", "%"},
+                {"control_A_split_shift_percent", "A: whole flow, two-phase against liquid (split shift)", "%"},
                 {"control_B_drug_flow_two_phase_ml_min", "B: drug flow, two-phase", "ml/min"},
                 {"control_B_drug_flow_liquid_ml_min", "B: drug flow, pure liquid", "ml/min"},
                 {"control_B_drop_percent", "B: two-phase lower by (same injected rate)", "%"},
-                {"control_B_drop_same_pressure_percent", "B: two-phase lower by (same tip pressure)", "%"}});
+                {"control_B_drop_same_pressure_percent", "B: two-phase lower by (same tip pressure)", "%"},
+                {"control_B_split_shift_percent", "B: whole flow, two-phase against liquid (split shift)", "%"}});
     section.blocks.push_back(controls);
     section.blocks.push_back(report::Paragraph{
-        "The drug flow is the liquid phase's volume flow, (1 - v) Q, with v the void fraction; the pure liquid is the "
-        "same injection with v = 0 (thesis ch. 6.4)."});
+        "The drug flow is the liquid phase's volume flow, (1 - v) c Q, with v the void fraction and c the injected "
+        "mixture's share of the flow (1 when the drug flows alone); the pure liquid is the same injection with v = 0 "
+        "(thesis ch. 6.4). Its drop is close to v by that definition. The split shift is the change of the whole "
+        "flow: what the mixture's other viscosity does to the split."});
 
     const auto injected = runMetric(*run, "injection_rate_ml_min", "", "");
     const auto voidFraction = runMetric(*run, "void_fraction", "", "");

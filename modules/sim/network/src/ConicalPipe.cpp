@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace vsim::sim::network {
@@ -13,7 +14,10 @@ double conicalResistance(double r1, double r2, double length, double viscosity)
     return 8.0 * viscosity * length / std::numbers::pi * shape;
 }
 
-double integratedResistance(double r1, double r2, double length, double viscosity, int panels)
+namespace {
+
+/// The integral over the cone's length of f(R(x)) (eq. 6.5: R linear in x), by composite 8-point Gauss-Legendre.
+template <typename F> double alongCone(double r1, double r2, double length, int panels, F f)
 {
     // 8-point Gauss-Legendre nodes and weights on [-1, 1].
     static constexpr std::array<double, 4> kNodes{0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
@@ -29,11 +33,30 @@ double integratedResistance(double r1, double r2, double length, double viscosit
             for (double side : {-1.0, 1.0})
             {
                 const double x = centre + side * 0.5 * h * kNodes[k];
-                const double r = r1 + (r2 - r1) * x / length; // eq. 6.5
-                sum += kWeights[k] * 0.5 * h / (r * r * r * r);
+                sum += kWeights[k] * 0.5 * h * f(r1 + (r2 - r1) * x / length);
             }
     }
-    return 8.0 * viscosity / std::numbers::pi * sum;
+    return sum;
+}
+
+} // namespace
+
+double integratedResistance(double r1, double r2, double length, double viscosity, int panels)
+{
+    return 8.0 * viscosity / std::numbers::pi * alongCone(r1, r2, length, panels, [](double r) { return 1.0 / (r * r * r * r); });
+}
+
+double annularResistance(double r1, double r2, double a, double length, double viscosity, int panels)
+{
+    if (!(a > 0.0))
+        return conicalResistance(r1, r2, length, viscosity);
+    if (a >= std::min(r1, r2))
+        return std::numeric_limits<double>::infinity();
+    const auto conductance = [a](double r) { // R^4 - a^4 - (R^2 - a^2)^2 / ln(R / a), in long double: the bracket
+        const long double R2 = (long double)r * r, a2 = (long double)a * a; // cancels as the gap closes
+        return double((R2 - a2) * ((R2 + a2) - (R2 - a2) / std::log((long double)r / a)));
+    };
+    return 8.0 * viscosity / std::numbers::pi * alongCone(r1, r2, length, panels, [&](double r) { return 1.0 / conductance(r); });
 }
 
 double conicalVolume(double r1, double r2, double length, double x)

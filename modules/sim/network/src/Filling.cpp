@@ -83,4 +83,10 @@ void filledLengths(const VesselNetwork& network, const FlowSolution& flow, const
     }
 }
 
+double arrivalAt(const FillingTimes& times, int outlet)
+{
+    const auto found = times.arrival.find(outlet);
+    return found == times.arrival.end() ? kNever : found->second;
+}
+
 } // namespace vsim::sim::network

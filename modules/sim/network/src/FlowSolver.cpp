@@ -31,18 +31,14 @@ double segmentResistance(const VesselNetwork::Segment& segment, double viscosity
                              units::mmToM(segment.lengthMm), viscosity);
 }
 
-FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection, double viscosity)
+FlowSolution solveNodalFlow(const VesselNetwork& network, const TipOrientation& o, const std::vector<double>& resistance,
+                            const std::vector<NodeSource>& sources)
 {
-    const bool byRate = injection.volumeRate != 0.0;
-    if (byRate && !(injection.volumeRate > 0.0 && std::isfinite(injection.volumeRate)))
-        throw Error("the injection rate must be positive");
-    if (!byRate && !std::isfinite(injection.pressure))
-        throw Error("the injection needs a positive rate or a tip pressure");
     FlowSolution solution;
-    solution.orientation = orientFromTip(network, injection.tipNode);
-    const TipOrientation& o = solution.orientation;
+    solution.orientation = o;
+    auto open = [&](std::size_t s) { return o.active(int(s)) && resistance[s] > 0.0 && std::isfinite(resistance[s]); };
 
-    // Unknowns: the pressures of the reached nodes that are not held at a pressure.
+    // Unknowns: the pressures of the reached nodes that are not held at a pressure and have an open segment.
     std::vector<const VesselNetwork::Outlet*> conditions(network.nodes.size(), nullptr);
     for (const VesselNetwork::Outlet& outlet : network.outlets)
         conditions[std::size_t(outlet.node)] = &outlet;
@@ -51,19 +47,32 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
             throw Error("outlet node " + std::to_string(outlet) + " has no boundary condition (a pressure or a terminal "
                         "resistance)",
                         {{"node", std::to_string(outlet)}});
+    std::vector<char> isSource(network.nodes.size(), 0), connected(network.nodes.size(), 0);
     std::vector<double> fixedPressure(network.nodes.size(), std::nan(""));
-    if (!byRate)
-        fixedPressure[std::size_t(o.tip)] = injection.pressure;
+    for (const NodeSource& source : sources)
+    {
+        isSource[std::size_t(source.node)] = 1;
+        if (source.heldAtPressure)
+            fixedPressure[std::size_t(source.node)] = source.pressure;
+    }
     for (int node : o.order) // a pressure, or a terminal resistance of zero, holds the node at the pressure
         if (const VesselNetwork::Outlet* c = conditions[std::size_t(node)];
-            node != o.tip && c && (c->type == VesselNetwork::Outlet::Type::Pressure || !(c->resistance > 0.0)))
+            !isSource[std::size_t(node)] && c &&
+            (c->type == VesselNetwork::Outlet::Type::Pressure || !(c->resistance > 0.0)))
             fixedPressure[std::size_t(node)] = c->pressurePa;
+    for (std::size_t s = 0; s < network.segments.size(); ++s)
+        if (open(s))
+            connected[std::size_t(network.segments[s].from)] = connected[std::size_t(network.segments[s].to)] = 1;
+    for (const NodeSource& source : sources)
+        if (!connected[std::size_t(source.node)])
+            throw Error("node " + std::to_string(source.node) + " takes in flow but no open vessel leaves it",
+                        {{"node", std::to_string(source.node)}});
     // Unknowns numbered children before parents: eliminating a tree from its leaves up creates no fill, so the
     // natural order needs no reordering and the factor has the matrix's pattern.
     std::vector<int> unknown(network.nodes.size(), -1);
     int unknowns = 0;
     for (auto node = o.order.rbegin(); node != o.order.rend(); ++node)
-        if (std::isnan(fixedPressure[std::size_t(*node)]))
+        if (std::isnan(fixedPressure[std::size_t(*node)]) && connected[std::size_t(*node)])
             unknown[std::size_t(*node)] = unknowns++;
 
     solution.segmentResistance.assign(network.segments.size(), 0.0);
@@ -83,16 +92,15 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
             rhs[ib] += conductance * fixedPressure[std::size_t(a)];
     };
     for (std::size_t s = 0; s < network.segments.size(); ++s)
-        if (o.active(int(s)))
+        if (open(s))
         {
-            const auto& segment = network.segments[s];
-            solution.segmentResistance[s] = segmentResistance(segment, viscosity);
-            couple(segment.from, segment.to, 1.0L / solution.segmentResistance[s]);
+            solution.segmentResistance[s] = resistance[s];
+            couple(network.segments[s].from, network.segments[s].to, 1.0L / resistance[s]);
         }
     for (int node : o.order)
     {
         const int i = unknown[std::size_t(node)];
-        if (i < 0 || node == o.tip || !conditions[std::size_t(node)])
+        if (i < 0 || isSource[std::size_t(node)] || !conditions[std::size_t(node)])
             continue;
         const VesselNetwork::Outlet& outlet = *conditions[std::size_t(node)];
         if (outlet.type == VesselNetwork::Outlet::Type::Resistance) // (a zero one is held above)
@@ -101,8 +109,9 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
             rhs[i] += Real(outlet.pressurePa) / outlet.resistance;
         }
     }
-    if (byRate)
-        rhs[unknown[std::size_t(o.tip)]] += injection.volumeRate;
+    for (const NodeSource& source : sources)
+        if (!source.heldAtPressure && unknown[std::size_t(source.node)] >= 0)
+            rhs[unknown[std::size_t(source.node)]] += source.volumeRate;
 
     Eigen::SparseMatrix<Real> system(unknowns, unknowns);
     system.setFromTriplets(entries.begin(), entries.end());
@@ -116,31 +125,65 @@ FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection,
     for (int node : o.order)
     {
         const int i = unknown[std::size_t(node)];
+        if (i < 0 && std::isnan(fixedPressure[std::size_t(node)]))
+            continue; // stagnant
         pressure[std::size_t(node)] = i >= 0 ? pressures[i] : Real(fixedPressure[std::size_t(node)]);
         solution.nodePressure[std::size_t(node)] = double(pressure[std::size_t(node)]);
     }
     solution.segmentFlow.assign(network.segments.size(), 0.0);
     std::vector<double> netOut(network.nodes.size(), 0.0); // flow leaving each node through its segments
     for (std::size_t s = 0; s < network.segments.size(); ++s)
-        if (o.active(int(s)))
+        if (open(s))
         {
             const auto& segment = network.segments[s];
             const double q = double((pressure[std::size_t(segment.from)] - pressure[std::size_t(segment.to)]) /
-                                    solution.segmentResistance[s]);
+                                    resistance[s]);
             solution.segmentFlow[s] = q;
             netOut[std::size_t(segment.from)] += q;
             netOut[std::size_t(segment.to)] -= q;
         }
-    solution.tipPressure = solution.nodePressure[std::size_t(o.tip)];
-    solution.injectedFlow = netOut[std::size_t(o.tip)];
+    // What enters at each source node, shared among the sources there by their rates (a held node takes it all).
+    double entering = 0.0;
+    for (const NodeSource& source : sources)
+    {
+        double rates = 0.0;
+        bool held = false;
+        for (const NodeSource& other : sources)
+            if (other.node == source.node)
+                rates += other.volumeRate, held = held || other.heldAtPressure;
+        const double total = netOut[std::size_t(source.node)];
+        solution.sourceFlow.push_back(held ? (source.heldAtPressure ? total - (rates - source.volumeRate) : source.volumeRate)
+                                           : total * (rates > 0.0 ? source.volumeRate / rates : 0.0));
+        entering += std::abs(solution.sourceFlow.back());
+    }
     for (int outlet : o.outlets)
         solution.outletFlow[outlet] = -netOut[std::size_t(outlet)];
-    // Kirchhoff's check at the interior nodes (the tip and outlets exchange flow with the outside).
+    // Kirchhoff's check at the interior nodes (the sources and outlets exchange flow with the outside).
     double worst = 0.0;
     for (int node : o.order)
-        if (node != o.tip && !solution.outletFlow.count(node))
+        if (!isSource[std::size_t(node)] && !solution.outletFlow.count(node))
             worst = std::max(worst, std::abs(netOut[std::size_t(node)]));
-    solution.conservationError = std::abs(solution.injectedFlow) > 0.0 ? worst / std::abs(solution.injectedFlow) : worst;
+    solution.conservationError = entering > 0.0 ? worst / entering : worst;
+    return solution;
+}
+
+FlowSolution solveFlow(const VesselNetwork& network, const Injection& injection, double viscosity)
+{
+    const bool byRate = injection.volumeRate != 0.0;
+    if (byRate && !(injection.volumeRate > 0.0 && std::isfinite(injection.volumeRate)))
+        throw Error("the injection rate must be positive");
+    if (!byRate && !std::isfinite(injection.pressure))
+        throw Error("the injection needs a positive rate or a tip pressure");
+    const TipOrientation o = orientFromTip(network, injection.tipNode);
+    std::vector<double> resistance(network.segments.size(), 0.0);
+    for (std::size_t s = 0; s < network.segments.size(); ++s)
+        if (o.active(int(s)))
+            resistance[s] = segmentResistance(network.segments[s], viscosity);
+    FlowSolution solution = solveNodalFlow(network, o, resistance, {{o.tip, injection.volumeRate, !byRate, injection.pressure}});
+    solution.tipPressure = solution.nodePressure[std::size_t(o.tip)];
+    solution.injectedFlow = solution.sourceFlow.front();
+    for (const auto& [outlet, q] : solution.outletFlow) // the injected fluid flows alone
+        solution.outletInjectate[outlet] = q;
     return solution;
 }
 

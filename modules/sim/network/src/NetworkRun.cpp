@@ -18,6 +18,12 @@ using Kind = ParameterSpec::Kind;
 
 double meanRadiusMm(const VesselNetwork::Segment& segment) { return 0.5 * (segment.startRadiusMm + segment.endRadiusMm); }
 
+/// The injected fluid's share of segment s's flow: its mixed fraction, or 1 where the injected fluid flows alone.
+double injectateShare(const FlowSolution& flow, std::size_t s)
+{
+    return flow.injectateFraction.empty() ? 1.0 : flow.injectateFraction[s];
+}
+
 /// The control points of the thesis's figure when none are given: the two daughters of the first junction
 /// downstream of the tip that carry the most flow, at their middles.
 std::vector<Eigen::Vector3d> defaultControlPoints(const VesselNetwork& network, const FlowSolution& flow)
@@ -39,7 +45,7 @@ std::vector<Eigen::Vector3d> defaultControlPoints(const VesselNetwork& network, 
     return {};
 }
 
-void setFields(NetworkRunResult& r, const TwoPhaseMixture& fluid)
+void setFields(NetworkRunResult& r, const TwoPhaseMixture& fluid, double bloodDensity)
 {
     VesselNetwork& n = r.network;
     const std::size_t count = n.segments.size();
@@ -48,6 +54,7 @@ void setFields(NetworkRunResult& r, const TwoPhaseMixture& fluid)
     std::vector<double>& flow = field("flow_ml_min");
     std::vector<double>& drug = field("drug_flow_ml_min");
     std::vector<double>& liquid = field("liquid_flow_ml_min");
+    std::vector<double>& injected = field("injected_percent");
     std::vector<double>& pFrom = field("pressure_from_mmhg");
     std::vector<double>& pTo = field("pressure_to_mmhg");
     std::vector<double>& velocity = field("velocity_mm_s");
@@ -67,12 +74,16 @@ void setFields(NetworkRunResult& r, const TwoPhaseMixture& fluid)
         const double u = std::abs(q) / (std::numbers::pi * radius * radius);
         downstream[s] = 1.0;
         flow[s] = units::m3PerSToMlPerMin(q);
-        drug[s] = units::m3PerSToMlPerMin(fluid.liquidFraction() * std::abs(q));
-        liquid[s] = units::m3PerSToMlPerMin(std::abs(r.liquid.segmentFlow[s]));
+        const double c = injectateShare(r.twoPhase, s);
+        drug[s] = units::m3PerSToMlPerMin(fluid.liquidFraction() * c * std::abs(q));
+        liquid[s] = units::m3PerSToMlPerMin(injectateShare(r.liquid, s) * std::abs(r.liquid.segmentFlow[s]));
+        injected[s] = 100.0 * c;
         pFrom[s] = units::paToMmHg(r.twoPhase.nodePressure[std::size_t(segment.from)]);
         pTo[s] = units::paToMmHg(r.twoPhase.nodePressure[std::size_t(segment.to)]);
         velocity[s] = units::mToMm(u);
-        reynolds[s] = fluid.density() * u * 2.0 * radius / fluid.viscosity();
+        const double density = r.blood ? (1.0 - c) * bloodDensity + c * fluid.density() : fluid.density();
+        const double viscosity = r.blood ? r.blood->segmentViscosity[s] : fluid.viscosity();
+        reynolds[s] = density * u * 2.0 * radius / viscosity;
         maxReynolds = std::max(maxReynolds, reynolds[s]);
         enter[s] = r.filling.enter[s] == kNever ? -1.0 : r.filling.enter[s];
         leave[s] = r.filling.leave[s] == kNever ? -1.0 : r.filling.leave[s];
@@ -90,6 +101,9 @@ std::vector<ParameterSpec> networkParameters()
     return {
         {"injection_rate_ml_min", "Injection rate", "ml/min", 2.0, 0.01, 200.0, "Injection",
          "Volume rate of the injected drug mixture at the catheter tip."},
+        {"catheter_outer_diameter_fr", "Catheter outer diameter", "Fr", 2.7, 0.0, 7.0, "Injection",
+         "Outer diameter of the catheter lying from the tree's root to its tip, 1 Fr = 1/3 mm (microcatheters "
+         "1.7-3.0 Fr); blood passes it through the annulus. 0 leaves it out of the flow."},
         {"tip_snap_mm", "Tip snap distance", "mm", 1.0, 0.0, 10.0, "Injection",
          "A tip or control point given as a point this near a node is put on the node."},
         {"tip_reach_mm", "Tip reach", "mm", 10.0, 0.5, 50.0, "Injection",
@@ -108,6 +122,21 @@ std::vector<ParameterSpec> networkParameters()
         {"gas_density", "Gas density", "kg/m^3", 1.205, 0.1, 10.0, "Two-phase drug", "Density of the gas phase."},
         {"gas_viscosity_upa_s", "Gas viscosity", "uPa s", 18.6, 5.0, 50.0, "Two-phase drug",
          "Dynamic viscosity of the gas phase at 37 C."},
+        {"blood_flow", "Blood carries the drug", "", 1.0, 0.0, 1.0, "Blood flow",
+         "1: arterial blood enters at the tree's root and carries the injected drug; 0: the injected drug flows alone, "
+         "as the thesis models it (ch. 6).", Kind::Integer},
+        {"arterial_pressure_mmhg", "Arterial pressure at the root", "mmHg", 90.0, 40.0, 200.0, "Blood flow",
+         "Mean pressure at the tree's root, held unless an inflow is given: the hepatic artery's mean pressure is close "
+         "to the aorta's (normal mean arterial pressure 70-105 mmHg)."},
+        {"arterial_inflow_ml_min", "Arterial inflow", "ml/min", 0.0, 0.0, 2000.0, "Blood flow",
+         "Blood flow into the tree's root instead of a pressure; 0: the root is held at the arterial pressure. Hepatic "
+         "arterial flow is about 25 % of the liver's 100 ml/min per 100 g (Lautt, Hepatic Circulation, 2009): "
+         "100-400 ml/min."},
+        {"blood_viscosity_mpa_s", "Blood viscosity", "mPa s", 3.5, 2.0, 10.0, "Blood flow",
+         "Apparent viscosity of whole blood at arterial shear rates (about 3.5 mPa s at a haematocrit of 0.45), taken "
+         "as Newtonian."},
+        {"blood_density", "Blood density", "kg/m^3", 1060.0, 1000.0, 1100.0, "Blood flow",
+         "Density of whole blood (for the Reynolds number)."},
         {"reference_inflow_ml_min", "Outlets' reference flow", "ml/min", 100.0, 1.0, 5000.0, "Outlets",
          "Flow that all outlets together drain at the reference pressure drop, split by Murray's law (hepatic artery "
          "flow is about 100-400 ml/min)."},
@@ -186,12 +215,53 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         if (r.tumourOutlets.empty())
             r.warnings.push_back("no outlet of the tree ends inside the tumour: nothing feeds it");
     }
+    const bool withBlood = p.get("blood_flow") > 0.5;
+    if (withBlood && setup.tipPressurePa)
+        throw Error("a tip pressure drives the injected drug alone (blood_flow=0); with blood flow the injection is "
+                    "a rate");
     const Injection injection = setup.tipPressurePa ? Injection{r.tipNode, 0.0, *setup.tipPressurePa}
                                                     : Injection{r.tipNode, units::mlPerMinToM3PerS(p.get("injection_rate_ml_min")), 0.0};
-    r.twoPhase = solveFlow(net, injection, fluid.viscosity());
-    r.liquid = solveFlow(net, injection, fluid.phases.liquidViscosity);
-    const FlowSolution samePressure =
-        setup.tipPressurePa ? r.twoPhase : solveFlow(net, {r.tipNode, 0.0, r.liquid.tipPressure}, fluid.viscosity());
+    BloodFlowSetup blood;
+    blood.inletRate = units::mlPerMinToM3PerS(p.get("arterial_inflow_ml_min"));
+    blood.inletHeldAtPressure = !(blood.inletRate > 0.0);
+    blood.inletPressure = units::mmHgToPa(p.get("arterial_pressure_mmhg"));
+    blood.injectionRate = injection.volumeRate;
+    blood.catheterRadius = 0.5 * units::mmToM(p.get("catheter_outer_diameter_fr") / 3.0);
+    blood.bloodViscosity = 1e-3 * p.get("blood_viscosity_mpa_s");
+    auto withBloodAt = [&](int tip, double viscosity) {
+        BloodFlowSetup at = blood;
+        at.tipNode = tip;
+        at.injectateViscosity = viscosity;
+        return solveBloodFlow(net, at);
+    };
+    // The flow with the tip at a node: the run's model, the injected mixture's viscosity.
+    const TipSolve solveAt = [&](int tip) {
+        return withBlood ? withBloodAt(tip, fluid.viscosity()).flow
+                         : solveFlow(net, {tip, injection.volumeRate, injection.pressure}, fluid.viscosity());
+    };
+    FlowSolution samePressure;
+    if (withBlood)
+    {
+        r.blood = withBloodAt(r.tipNode, fluid.viscosity());
+        const BloodFlowSolution liquid = withBloodAt(r.tipNode, fluid.phases.liquidViscosity);
+        r.twoPhase = r.blood->flow;
+        r.liquid = liquid.flow;
+        for (const BloodFlowSolution* b : {static_cast<const BloodFlowSolution*>(&*r.blood), &liquid})
+            r.status.recordSolve(b->iterations, b->residual, blood.tolerance, blood.maxIterations);
+        if (r.blood->wedged)
+            r.warnings.push_back("wedged catheter: " + r.blood->wedgedBecause + "; the injection refluxes or stops the "
+                                 "blood flow at the tip");
+        if (r.blood->refluxShare > 1e-9)
+            r.warnings.push_back(std::to_string(int(std::lround(100.0 * r.blood->refluxShare))) +
+                                 " % of the injected drug refluxes past the catheter's tip (non-target delivery)");
+    }
+    else
+    {
+        r.twoPhase = solveFlow(net, injection, fluid.viscosity());
+        r.liquid = solveFlow(net, injection, fluid.phases.liquidViscosity);
+        samePressure = setup.tipPressurePa ? r.twoPhase
+                                           : solveFlow(net, {r.tipNode, 0.0, r.liquid.tipPressure}, fluid.viscosity());
+    }
     const double rate = r.twoPhase.injectedFlow;
     if (!(rate > 0.0))
         throw Error("the tip pressure does not drive any flow into the network (it is at or below the outlets')");
@@ -210,19 +280,26 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         if (segment < 0 || distance > p.get("tip_reach_mm"))
             throw Error("control point " + c.name + " is not on the tree downstream of the tip");
         c.segment = segment;
-        const double twoPhase = fluid.liquidFraction() * std::abs(r.twoPhase.segmentFlow[std::size_t(segment)]);
-        const double liquid = std::abs(r.liquid.segmentFlow[std::size_t(segment)]);
-        const double pressureDriven = fluid.liquidFraction() * std::abs(samePressure.segmentFlow[std::size_t(segment)]);
+        const std::size_t s = std::size_t(segment);
+        const double twoPhaseFlow = std::abs(r.twoPhase.segmentFlow[s]), liquidFlow = std::abs(r.liquid.segmentFlow[s]);
+        const double twoPhase = fluid.liquidFraction() * injectateShare(r.twoPhase, s) * twoPhaseFlow;
+        const double liquid = injectateShare(r.liquid, s) * liquidFlow;
         c.drugFlowTwoPhaseMlMin = units::m3PerSToMlPerMin(twoPhase);
         c.drugFlowLiquidMlMin = units::m3PerSToMlPerMin(liquid);
         c.dropPercent = liquid > 0.0 ? 100.0 * (1.0 - twoPhase / liquid) : 0.0;
-        c.dropAtSamePressurePercent = liquid > 0.0 ? 100.0 * (1.0 - pressureDriven / liquid) : 0.0;
+        c.splitShiftPercent = liquidFlow > 0.0 ? 100.0 * (twoPhaseFlow / liquidFlow - 1.0) : 0.0;
         r.controls.push_back(c);
         const std::string key = "control_" + c.name + "_";
         r.metrics[key + "drug_flow_two_phase_ml_min"] = c.drugFlowTwoPhaseMlMin;
         r.metrics[key + "drug_flow_liquid_ml_min"] = c.drugFlowLiquidMlMin;
         r.metrics[key + "drop_percent"] = c.dropPercent;
-        r.metrics[key + "drop_same_pressure_percent"] = c.dropAtSamePressurePercent;
+        r.metrics[key + "split_shift_percent"] = c.splitShiftPercent;
+        if (!withBlood)
+        {
+            const double pressureDriven = fluid.liquidFraction() * std::abs(samePressure.segmentFlow[s]);
+            c.dropAtSamePressurePercent = liquid > 0.0 ? 100.0 * (1.0 - pressureDriven / liquid) : 0.0;
+            r.metrics[key + "drop_same_pressure_percent"] = c.dropAtSamePressurePercent;
+        }
     }
     if (setup.tumour)
     {
@@ -231,7 +308,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         r.metrics["non_target_fraction"] = 1.0 - r.metrics["tumour_fraction"];
         if (setup.rankTips && !r.tumourOutlets.empty())
         {
-            r.ranking = rankTipPositions(net, r.tumourOutlets, rate, fluid.viscosity(), progress.subRange(0.2, 0.95));
+            r.ranking = rankTipPositions(net, r.tumourOutlets, solveAt, progress.subRange(0.2, 0.95));
             const TipCandidate& best = r.ranking.front();
             r.metrics["best_tip_node"] = best.node;
             r.metrics["best_tip_fraction"] = best.tumourFraction;
@@ -241,7 +318,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
             r.metrics["best_tip_z_mm"] = net.nodes[std::size_t(best.node)].positionMm.z();
         }
     }
-    setFields(r, fluid);
+    setFields(r, fluid, p.get("blood_density"));
     if (fluid.voidFraction > kBubblyVoidFractionLimit)
         r.warnings.push_back("a void fraction of " + std::to_string(fluid.voidFraction) +
                              " is past bubbly flow (about 0.25): the homogeneous model and the thesis's experiment do "
@@ -262,6 +339,24 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     r.metrics["downstream_segments"] = downstream;
     r.metrics["outlets"] = double(r.twoPhase.orientation.outlets.size());
     r.metrics["conservation_error"] = r.twoPhase.conservationError;
+    r.metrics["blood_flow"] = withBlood ? 1.0 : 0.0;
+    if (r.blood)
+    {
+        const BloodFlowSolution& b = *r.blood;
+        r.metrics["arterial_inflow_ml_min"] = units::m3PerSToMlPerMin(b.inletFlow);
+        r.metrics["root_pressure_mmhg"] = units::paToMmHg(b.flow.nodePressure[std::size_t(net.root)]);
+        r.metrics["tip_own_flow_ml_min"] = units::m3PerSToMlPerMin(b.ownFlow);
+        r.metrics["tip_blood_inflow_ml_min"] = units::m3PerSToMlPerMin(b.tipInflow);
+        r.metrics["tip_injected_percent"] = 100.0 * b.tipFraction;
+        r.metrics["tip_drug_percent"] = 100.0 * b.tipFraction * fluid.liquidFraction();
+        r.metrics["catheter_occlusion_percent"] = 100.0 * b.occlusion;
+        r.metrics["catheter_segments"] = double(b.catheterSegments.size());
+        r.metrics["wedged"] = b.wedged ? 1.0 : 0.0;
+        r.metrics["reflux_percent"] = 100.0 * b.refluxShare;
+        r.metrics["injected_balance_error"] = b.balance.relativeError();
+        r.metrics["coupling_iterations"] = b.iterations;
+        r.metrics["coupling_residual"] = b.residual;
+    }
     // The direct (LDL^T) solves: Kirchhoff's balance at every node is the residual, relative to the injected flow.
     for (const FlowSolution* solution : {&r.twoPhase, &r.liquid})
         r.status.recordSolve(0, solution->conservationError, kConservationTolerance, 0);

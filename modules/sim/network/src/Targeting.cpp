@@ -28,15 +28,15 @@ double deliveredFraction(const FlowSolution& flow, const std::vector<int>& outle
     double delivered = 0.0;
     for (int outlet : outlets)
     {
-        const auto found = flow.outletFlow.find(outlet);
-        if (found != flow.outletFlow.end() && found->second > 0.0)
+        const auto found = flow.outletInjectate.find(outlet);
+        if (found != flow.outletInjectate.end() && found->second > 0.0)
             delivered += found->second;
     }
     return flow.injectedFlow > 0.0 ? delivered / flow.injectedFlow : 0.0;
 }
 
 std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const std::vector<int>& feeders,
-                                           double volumeRate, double viscosity, const Progress& progress)
+                                           const TipSolve& solve, const Progress& progress)
 {
     const std::vector<std::vector<int>> incident = network.incidentSegments();
     std::vector<int> depth(network.nodes.size(), 0);
@@ -67,7 +67,7 @@ std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const s
             const auto& segment = network.segments[std::size_t(s)];
             candidate.radiusMm = std::max(candidate.radiusMm, segment.from == node ? segment.startRadiusMm : segment.endRadiusMm);
         }
-        candidate.tumourFraction = deliveredFraction(solveFlow(network, {node, volumeRate, 0.0}, viscosity), feeders);
+        candidate.tumourFraction = deliveredFraction(solve(node), feeders);
         ranking.push_back(candidate);
         progress.report(double(i + 1) / double(candidates.size()), "ranking catheter positions");
     }

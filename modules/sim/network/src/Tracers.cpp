@@ -77,10 +77,11 @@ bool tracerPosition(const VesselNetwork& network, const FlowSolution& flow, int 
 std::vector<std::vector<Eigen::Vector3d>> tracerTrails(const VesselNetwork& network, const FlowSolution& flow,
                                                        double timeS, const TracerSettings& settings)
 {
-    // Outlets in proportion to their flow: each release goes to the outlet furthest behind its share.
+    // Outlets in proportion to the injected fluid they drain: each release goes to the outlet furthest behind its
+    // share.
     std::vector<std::pair<int, double>> shares;
     double total = 0.0;
-    for (const auto& [node, q] : flow.outletFlow)
+    for (const auto& [node, q] : flow.outletInjectate)
         if (q > 0.0)
             shares.emplace_back(node, q), total += q;
     std::vector<std::vector<Eigen::Vector3d>> trails;

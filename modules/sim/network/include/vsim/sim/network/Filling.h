@@ -24,6 +24,9 @@ struct FillingTimes
     double lastArrival = 0.0;         ///< s: the latest finite outlet arrival
 };
 
+/// When the front reaches `outlet` (kNever for an outlet it does not reach, or one not downstream of the tip).
+double arrivalAt(const FillingTimes& times, int outlet);
+
 FillingTimes fillingTimes(const VesselNetwork& network, const FlowSolution& flow);
 
 /// Filled length (mm, from the upstream end) of every segment at `timeS`, into `lengthsMm` (resized).

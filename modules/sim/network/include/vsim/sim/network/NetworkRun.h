@@ -10,16 +10,22 @@
 // proportion to its terminal segment's mean radius cubed, into outlet_pressure_mmhg. The resistances stand for the
 // blood-filled vascular bed beyond the imaged tree, so they do not change with the injected fluid.
 //
-// Two-phase against pure liquid (thesis ch. 6.4, "8-9 % lower"): the quantity compared is the drug (liquid-phase)
-// volume flow through a control point, (1 - v) Q, for the same injected mixture volume rate; the liquid run has
-// v = 0. With the same rate, the split hardly changes (only the tree's share of the resistance scales with the
-// viscosity), so the drop is close to the void fraction itself; the run also reports the drop at the same tip
-// pressure.
+// Two models (parameter blood_flow): by default arterial blood enters at the root and carries the drug (issue 19,
+// BloodFlow.h): the catheter lies from the root to its tip, the injection mixes with the blood there, and each
+// segment's viscosity follows its injected fraction. With blood_flow 0 the injected drug flows alone, as the thesis
+// models it (ch. 6).
+//
+// Two-phase against pure liquid (thesis ch. 6.4, "8-9 % lower"): the drug (liquid-phase) volume flow through a
+// control point, (1 - v) c Q (c the injected fraction, 1 without blood), for the same injected mixture volume rate;
+// the liquid run has v = 0. That drop is close to the void fraction by its definition. What the mixture does to
+// the flow is the split shift: the change of the control point's whole volume flow between the two runs, which
+// only the viscosity contrast moves. The injected-alone model also reports the drop at the same tip pressure.
 
 #include "vsim/core/Parameters.h"
 #include "vsim/core/Progress.h"
 #include "vsim/core/RunStatus.h"
 #include "vsim/core/VesselNetwork.h"
+#include "vsim/sim/network/BloodFlow.h"
 #include "vsim/sim/network/Filling.h"
 #include "vsim/sim/network/FlowSolver.h"
 #include "vsim/sim/network/Targeting.h"
@@ -65,7 +71,8 @@ struct ControlPoint
     double drugFlowTwoPhaseMlMin = 0.0; ///< (1 - v) |Q|, same injected rate
     double drugFlowLiquidMlMin = 0.0;   ///< |Q| with v = 0
     double dropPercent = 0.0;           ///< 100 (1 - two-phase / liquid)
-    double dropAtSamePressurePercent = 0.0; ///< the same with the tip held at the liquid run's pressure
+    double dropAtSamePressurePercent = 0.0; ///< the same with the tip held at the liquid run's pressure (drug alone)
+    double splitShiftPercent = 0.0;     ///< 100 (|Q two-phase| / |Q liquid| - 1) of the whole volume flow
 };
 
 struct NetworkRunResult
@@ -73,13 +80,17 @@ struct NetworkRunResult
     VesselNetwork network;             ///< as solved (tip node inserted, outlet conditions), with segment fields
     int tipNode = -1;
     FlowSolution twoPhase, liquid;
+    /// With blood flow: the two-phase run's blood, catheter and mixing figures (twoPhase is its flow).
+    std::optional<BloodFlowSolution> blood;
     FillingTimes filling;
     std::vector<ControlPoint> controls;
     std::vector<int> tumourOutlets;
     std::vector<TipCandidate> ranking; ///< best first
     std::map<std::string, double> metrics;
     std::vector<std::string> warnings;
-    RunStatus status; ///< the two flow solves (direct): Kirchhoff's balance against kConservationTolerance
+    /// The flow solves (direct): Kirchhoff's balance against kConservationTolerance; with blood flow also the
+    /// fixed-point coupling of fractions and viscosities against its tolerance.
+    RunStatus status;
 };
 
 /// Largest relative imbalance of flow at a node that a flow solve may leave (a direct solve leaves ~1e-15).

@@ -25,7 +25,7 @@ struct TumourSphere
 /// The end nodes (not the root) inside the region: the terminal segments that feed the tumour.
 std::vector<int> feedingOutlets(const VesselNetwork& network, const std::function<bool(const Eigen::Vector3d&)>& inside);
 
-/// The share of the injected flow leaving through `outlets`.
+/// The share of the injected fluid leaving through `outlets` (FlowSolution::outletInjectate over injectedFlow).
 double deliveredFraction(const FlowSolution& flow, const std::vector<int>& outlets);
 
 struct TipCandidate
@@ -36,9 +36,12 @@ struct TipCandidate
     double radiusMm = 0.0;         ///< largest vessel radius at the node (catheter access)
 };
 
-/// Every node that is not an end (and the root) as the catheter tip, injecting `volumeRate` (m^3/s) of a fluid of
-/// `viscosity`; ranked by tumour share, then nearer the root first (the less selective, easier position).
+/// The flow with the catheter tip at a node (the run's model: the injected fluid alone, or carried by blood).
+using TipSolve = std::function<FlowSolution(int tipNode)>;
+
+/// Every node that is not an end (and the root) as the catheter tip, the flow from `solve`; ranked by tumour share,
+/// then nearer the root first (the less selective, easier position).
 std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const std::vector<int>& feeders,
-                                           double volumeRate, double viscosity, const Progress& progress = {});
+                                           const TipSolve& solve, const Progress& progress = {});
 
 } // namespace vsim::sim::network
