@@ -126,14 +126,17 @@ std::vector<CommandSpec> declareCommands()
          simulateFem},
         {"simulate network", 1, 1,
          {kStudy, required("tip"), value("rate"), value("tip-pressure"), value("void-fraction"), value("tumour"),
-          value("tumour-label"), value("tumour-value"), repeatable("control"), value("network"),
+          value("tumour-label"), value("tumour-value"), value("liver-label"), value("liver-value"), repeatable("control"),
+          value("network"),
           value("default-outlets"), value("centerlines"), kParam, value("out"), kWait},
-         "simulate network --study <study.vsim> --tip NODE|x,y,z [--rate 2ml/min|g/min | --tip-pressure mmHg]\n"
+         "simulate network --study <study.vsim> --tip NODE|x,y,z|root [--rate 2ml/min|g/min | --tip-pressure mmHg]\n"
          "                 [--void-fraction 0.1] [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]]\n"
-         "                 [--control x,y,z ...] [--network FILE [--default-outlets murray]] [--param key=value ...]\n"
-         "                 [--out DIR]\n"
-         "    drug delivery (two-phase conical Hagen-Poiseuille network): flow split, filling, control points\n"
-         "    two-phase vs liquid, tumour share and the best tip positions",
+         "                 [--liver-label ID [--liver-value N]] [--control x,y,z ...] [--network FILE\n"
+         "                 [--default-outlets murray]] [--param key=value ...] [--out DIR]\n"
+         "    drug delivery (arterial blood carrying the two-phase drug through a conical Hagen-Poiseuille network):\n"
+         "    flow split, the catheter (wedge, reflux), filling, control points two-phase vs liquid, tumour share and\n"
+         "    the best tip positions; with a liver label: perfusion territories, the tip's perfused territory, the\n"
+         "    lesions' coverage grade (A/B/C, 5 / 10 mm margin) and feeders, tips ranked by coverage",
          simulateNetwork},
         {"simulate sph", 1, 1,
          {kStudy, value("inlet"), value("outlet"), value("waveform"), value("profile"), value("spacing"), value("until"),

@@ -87,7 +87,7 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
     const std::string tip = arguments.option("tip");
     if (tip.find(',') != std::string::npos)
         setup.tipPointMm = point(parseNumbers(tip, ',', 3, "tip"));
-    else
+    else if (tip != "root") // the root: the network's inlet (runNetwork's default)
         setup.tipNode = int(parseNumbers(tip, ',', 1, "tip")[0]);
     source["tip"] = tip;
     if (arguments.hasOption("tumour"))
@@ -105,6 +105,25 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
         source["tumour_label"] = arguments.option("tumour-label") + (value ? ":" + std::to_string(value) : std::string());
         inputs.push_back(arguments.option("tumour-label"));
     }
+    // The liver (and the tumour as a label) for territories, coverage and feeders; the volumes outlive the run.
+    std::optional<LabelVolume> liver, tumourLabel;
+    auto valueOption = [&](const char* name) {
+        return arguments.hasOption(name) ? int(parseNumbers(arguments.option(name), ',', 1, name)[0]) : 0;
+    };
+    if (arguments.hasOption("liver-label"))
+    {
+        liver = app::labelArtifact(study, arguments.option("liver-label"), "liver");
+        setup.liver = sim::network::LabelRegion{&*liver, valueOption("liver-value")};
+        source["liver_label"] = arguments.option("liver-label");
+        inputs.push_back(arguments.option("liver-label"));
+        if (arguments.hasOption("tumour-label"))
+        {
+            tumourLabel = app::labelArtifact(study, arguments.option("tumour-label"), "tumour");
+            setup.tumourLabel = sim::network::LabelRegion{&*tumourLabel, valueOption("tumour-value")};
+        }
+    }
+    else if (arguments.hasOption("liver-value"))
+        throw Error("--liver-value needs --liver-label");
     for (const auto& [name, value] : arguments.options)
         if (name == "control")
             setup.controlPointsMm.push_back(point(parseNumbers(value, ',', 3, "control")));

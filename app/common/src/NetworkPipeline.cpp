@@ -5,6 +5,7 @@
 #include "vsim/core/Units.h"
 #include "vsim/imaging/PartialVolumeRadii.h"
 #include "vsim/imaging/VesselMeasurements.h"
+#include "vsim/interop/NrrdFile.h"
 #include "vsim/sim/network/FillingSolver.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/study/NetworkFile.h"
@@ -126,6 +127,20 @@ std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& stu
     throw Error("the tumour must be a label or image artifact, not a " + study::kindName(kind));
 }
 
+LabelVolume labelArtifact(const study::Study& study, const std::string& artifactId, const std::string& what)
+{
+    const study::ArtifactKind kind = study.artifact(artifactId).kind;
+    if (kind == study::ArtifactKind::Label)
+        return study.loadLabel(artifactId);
+    if (kind != study::ArtifactKind::Image)
+        throw Error("the " + what + " must be a label or image artifact, not a " + study::kindName(kind));
+    const CtVolume image = study.loadImage(artifactId);
+    LabelVolume label(image.geometry());
+    for (std::size_t i = 0; i < image.size(); ++i)
+        label.data()[i] = std::uint8_t(std::clamp<int>(image.data()[i], 0, 255));
+    return label;
+}
+
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
                                const std::map<std::string, std::string>& source)
 {
@@ -148,6 +163,33 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
                            {"tumour_fraction", c.tumourFraction},
                            {"depth", c.depth},
                            {"radius_mm", c.radiusMm}});
+        if (c.grade != '-')
+            ranking.back().update({{"grade", std::string(1, c.grade)},
+                                   {"lesions_covered_percent", c.coveredPercent},
+                                   {"non_target_liver_ml", c.nonTargetMl}});
+    }
+    nlohmann::json lesions = nlohmann::json::array(), feeders = nlohmann::json::array();
+    for (std::size_t l = 0; l < run.lesions.size(); ++l)
+    {
+        const sim::network::Lesion& lesion = run.lesions[l];
+        const sim::network::LesionCoverage& c = run.coverage->lesions[l];
+        lesions.push_back({{"centre_mm", {lesion.centreMm.x(), lesion.centreMm.y(), lesion.centreMm.z()}},
+                           {"longest_diameter_mm", lesion.diameterMm},
+                           {"volume_ml", lesion.volumeMl},
+                           {"margin_mm", lesion.marginMm},
+                           {"covered_percent", c.coveredPercent},
+                           {"margin_covered_percent", c.marginCoveredPercent},
+                           {"grade", std::string(1, c.grade)}});
+    }
+    for (const sim::network::Feeder& f : run.feeders)
+    {
+        const auto& segment = run.network.segments[std::size_t(f.segment)];
+        feeders.push_back({{"segment", f.segment},
+                           {"nodes", {segment.from, segment.to}},
+                           {"lesion", f.lesion + 1},
+                           {"enters_lesion_or_margin", f.entersLesion},
+                           {"radius_mm", f.radiusMm},
+                           {"drug_flow_ml_min", run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]}});
     }
     return nlohmann::json{{"source", source},
                           {"metrics", run.metrics},
@@ -155,6 +197,8 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
                           {"control_points", controls},
                           {"tumour_outlets", run.tumourOutlets},
                           {"tip_ranking", ranking},
+                          {"lesions", lesions},
+                          {"feeders", feeders},
                           {"warnings", run.warnings},
                           {"parameters", parameters.valuesAsText()}}
         .dump(2);
@@ -254,6 +298,20 @@ void writeNetworkRun(const std::filesystem::path& folder, const sim::network::Ne
             for (double length : lengths)
                 csv << "," << numberText(length);
             csv << "\n";
+        }
+    }
+    if (run.territories && run.perfused)
+    {
+        interop::writeNrrd(sim::network::territoryLabel(*run.territories, *run.perfused, run.lesions),
+                           folder / "territory.nrrd", true);
+        std::ofstream csv = openForWriting(folder / "feeders.csv");
+        csv << "segment,from,to,lesion,enters_lesion_or_margin,radius_mm,drug_flow_ml_min\n";
+        for (const sim::network::Feeder& f : run.feeders)
+        {
+            const auto& segment = run.network.segments[std::size_t(f.segment)];
+            csv << f.segment << "," << segment.from << "," << segment.to << "," << f.lesion + 1 << ","
+                << (f.entersLesion ? 1 : 0) << "," << numberText(f.radiusMm) << ","
+                << numberText(run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]) << "\n";
         }
     }
     std::ofstream metrics = openForWriting(folder / "metrics.json");

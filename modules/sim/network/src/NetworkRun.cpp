@@ -94,11 +94,83 @@ void setFields(NetworkRunResult& r, const TwoPhaseMixture& fluid, double bloodDe
                              ": the flow may not be laminar there, and Hagen-Poiseuille does not hold");
 }
 
+/// The best of the ranking as metrics.
+void recordBestTip(NetworkRunResult& r, const VesselNetwork& net)
+{
+    const TipCandidate& best = r.ranking.front();
+    r.metrics["best_tip_node"] = best.node;
+    r.metrics["best_tip_fraction"] = best.tumourFraction;
+    r.metrics["best_tip_depth"] = best.depth;
+    r.metrics["best_tip_x_mm"] = net.nodes[std::size_t(best.node)].positionMm.x();
+    r.metrics["best_tip_y_mm"] = net.nodes[std::size_t(best.node)].positionMm.y();
+    r.metrics["best_tip_z_mm"] = net.nodes[std::size_t(best.node)].positionMm.z();
+    if (best.grade != '-')
+    {
+        r.metrics["best_tip_grade"] = gradeNumber(best.grade);
+        r.metrics["best_tip_covered_percent"] = best.coveredPercent;
+        r.metrics["best_tip_non_target_ml"] = best.nonTargetMl;
+    }
+}
+
+/// With a liver: the tip's perfused territory, the drug's destinations, the lesions' coverage and feeders, and the
+/// tips ranked by coverage.
+void describeTerritory(NetworkRunResult& r, const VesselNetwork& net, const TipSolve& solveAt, bool rank,
+                       const Progress& progress)
+{
+    const auto started = std::chrono::steady_clock::now();
+    const LiverTerritories& t = *r.territories;
+    r.perfused = perfusedTerritory(t, r.twoPhase);
+    r.coverage = tumourCoverage(r.lesions, *r.perfused);
+    r.feeders = findFeeders(net, t, r.lesions);
+    const PerfusedTerritory& p = *r.perfused;
+    auto& m = r.metrics;
+    m["territory_seconds"] += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    m["liver_volume_ml"] = double(t.voxels.size()) * t.voxelMl;
+    m["hepatic_outlets"] = double(t.outlets.size());
+    m["extrahepatic_outlets"] = double(t.extrahepatic.size());
+    m["perfused_volume_ml"] = p.volumeMl;
+    m["perfused_tumour_ml"] = p.tumourVolumeMl;
+    m["perfused_non_target_ml"] = p.volumeMl - p.tumourVolumeMl;
+    m["tumour_fraction"] = p.drugToTumour;
+    m["non_target_fraction"] = 1.0 - p.drugToTumour;
+    m["drug_liver_percent"] = 100.0 * p.drugToLiver;
+    m["drug_extrahepatic_percent"] = 100.0 * p.drugExtrahepatic;
+    m["lesions"] = double(r.lesions.size());
+    m["feeders"] = double(r.feeders.size());
+    if (r.lesions.empty())
+        return;
+    m["coverage_grade"] = gradeNumber(r.coverage->grade);
+    for (std::size_t l = 0; l < r.lesions.size() && l < kLesionsReported; ++l)
+    {
+        const Lesion& lesion = r.lesions[l];
+        const LesionCoverage& c = r.coverage->lesions[l];
+        const std::string key = "lesion_" + std::to_string(l + 1) + "_";
+        m[key + "diameter_mm"] = lesion.diameterMm;
+        m[key + "volume_ml"] = lesion.volumeMl;
+        m[key + "margin_mm"] = lesion.marginMm;
+        m[key + "covered_percent"] = c.coveredPercent;
+        m[key + "margin_covered_percent"] = c.marginCoveredPercent;
+        m[key + "grade"] = gradeNumber(c.grade);
+    }
+    if (r.coverage->grade == 'C')
+        r.warnings.push_back("coverage grade C from this tip: part of a lesion is not perfused (see the feeders)");
+    if (rank)
+    {
+        const auto ranking = std::chrono::steady_clock::now();
+        r.ranking = rankTipsByCoverage(net, t, r.lesions, solveAt, progress);
+        recordBestTip(r, net);
+        m["ranked_tips"] = double(r.ranking.size());
+        m["ranking_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - ranking).count();
+    }
+}
+
 } // namespace
+
+double gradeNumber(char grade) { return grade == 'A' ? 1.0 : grade == 'B' ? 2.0 : grade == 'C' ? 3.0 : 0.0; }
 
 std::vector<ParameterSpec> networkParameters()
 {
-    return {
+    std::vector<ParameterSpec> specs{
         {"injection_rate_ml_min", "Injection rate", "ml/min", 2.0, 0.01, 200.0, "Injection",
          "Volume rate of the injected drug mixture at the catheter tip."},
         {"catheter_outer_diameter_fr", "Catheter outer diameter", "Fr", 2.7, 0.0, 7.0, "Injection",
@@ -149,6 +221,9 @@ std::vector<ParameterSpec> networkParameters()
         {"filling_steps", "Filling steps", "", 1000.0, 10.0, 100000.0, "Filling",
          "Time steps from the start of the injection to the last outlet's arrival.", Kind::Integer},
     };
+    for (ParameterSpec& spec : territoryParameters())
+        specs.push_back(spec);
+    return specs;
 }
 
 TwoPhaseMixture networkMixture(const ParameterSet& p)
@@ -203,14 +278,27 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         r.tipNode = placeNode(net, *setup.tipPointMm, p.get("tip_snap_mm"), p.get("tip_reach_mm"));
     else
         r.tipNode = net.root;
+    orientFromTip(net, r.tipNode); // a tip off the tree is refused before the territories' work
+    const auto territoriesStarted = std::chrono::steady_clock::now();
+    if (setup.liver)
+    {
+        const LabelRegion* tumour = setup.tumourLabel ? &*setup.tumourLabel : nullptr;
+        r.territories = std::make_shared<const LiverTerritories>(
+            liverTerritories(net, *setup.liver, tumour, p, progress.subRange(0.0, 0.1)));
+        r.lesions = findLesions(*r.territories);
+    }
+    const double territorySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - territoriesStarted).count();
+    const bool outletsByTissue = r.territories && p.get("outlet_model") > 0.5;
+    if (outletsByTissue && setup.defaultOutlets)
+        addTerritoryOutlets(net, *r.territories, p);
     if (setup.defaultOutlets)
         addDefaultOutlets(net, p);
-    if (setup.tumour)
+    if (setup.tumour && !r.territories) // with a liver, the tumour is its lesions (Territories.h)
     {
         r.tumourOutlets = feedingOutlets(net, setup.tumour);
         const std::set<int> feeders(r.tumourOutlets.begin(), r.tumourOutlets.end());
         for (VesselNetwork::Outlet& outlet : net.outlets)
-            if (feeders.count(outlet.node) && outlet.type == VesselNetwork::Outlet::Type::Resistance)
+            if (!outletsByTissue && feeders.count(outlet.node) && outlet.type == VesselNetwork::Outlet::Type::Resistance)
                 outlet.resistance *= p.get("tumour_resistance_factor");
         if (r.tumourOutlets.empty())
             r.warnings.push_back("no outlet of the tree ends inside the tumour: nothing feeds it");
@@ -301,7 +389,12 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
             r.metrics[key + "drop_same_pressure_percent"] = c.dropAtSamePressurePercent;
         }
     }
-    if (setup.tumour)
+    if (r.territories)
+    {
+        r.metrics["territory_seconds"] = territorySeconds;
+        describeTerritory(r, net, solveAt, setup.rankTips, progress.subRange(0.2, 0.95));
+    }
+    else if (setup.tumour)
     {
         r.metrics["tumour_outlets"] = double(r.tumourOutlets.size());
         r.metrics["tumour_fraction"] = deliveredFraction(r.twoPhase, r.tumourOutlets);
@@ -309,13 +402,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         if (setup.rankTips && !r.tumourOutlets.empty())
         {
             r.ranking = rankTipPositions(net, r.tumourOutlets, solveAt, progress.subRange(0.2, 0.95));
-            const TipCandidate& best = r.ranking.front();
-            r.metrics["best_tip_node"] = best.node;
-            r.metrics["best_tip_fraction"] = best.tumourFraction;
-            r.metrics["best_tip_depth"] = best.depth;
-            r.metrics["best_tip_x_mm"] = net.nodes[std::size_t(best.node)].positionMm.x();
-            r.metrics["best_tip_y_mm"] = net.nodes[std::size_t(best.node)].positionMm.y();
-            r.metrics["best_tip_z_mm"] = net.nodes[std::size_t(best.node)].positionMm.z();
+            recordBestTip(r, net);
         }
     }
     setFields(r, fluid, p.get("blood_density"));

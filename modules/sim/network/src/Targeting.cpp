@@ -35,8 +35,7 @@ double deliveredFraction(const FlowSolution& flow, const std::vector<int>& outle
     return flow.injectedFlow > 0.0 ? delivered / flow.injectedFlow : 0.0;
 }
 
-std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const std::vector<int>& feeders,
-                                           const TipSolve& solve, const Progress& progress)
+std::vector<TipCandidate> tipCandidates(const VesselNetwork& network)
 {
     const std::vector<std::vector<int>> incident = network.incidentSegments();
     std::vector<int> depth(network.nodes.size(), 0);
@@ -50,26 +49,32 @@ std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const s
                 depth[std::size_t(node)] = depth[std::size_t(parent)] + 1;
             }
     }
-    std::vector<int> candidates;
+    std::vector<TipCandidate> candidates;
     for (std::size_t n = 0; n < network.nodes.size(); ++n)
         if (incident[n].size() >= 2 || int(n) == network.root)
-            candidates.push_back(int(n));
-    std::vector<TipCandidate> ranking;
-    for (std::size_t i = 0; i < candidates.size(); ++i)
+        {
+            TipCandidate candidate;
+            candidate.node = int(n);
+            candidate.depth = depth[n];
+            for (int s : incident[n])
+            {
+                const auto& segment = network.segments[std::size_t(s)];
+                candidate.radiusMm = std::max(candidate.radiusMm, segment.from == int(n) ? segment.startRadiusMm : segment.endRadiusMm);
+            }
+            candidates.push_back(candidate);
+        }
+    return candidates;
+}
+
+std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const std::vector<int>& feeders,
+                                           const TipSolve& solve, const Progress& progress)
+{
+    std::vector<TipCandidate> ranking = tipCandidates(network);
+    for (std::size_t i = 0; i < ranking.size(); ++i)
     {
         progress.throwIfCancelled();
-        const int node = candidates[i];
-        TipCandidate candidate;
-        candidate.node = node;
-        candidate.depth = depth[std::size_t(node)];
-        for (int s : incident[std::size_t(node)])
-        {
-            const auto& segment = network.segments[std::size_t(s)];
-            candidate.radiusMm = std::max(candidate.radiusMm, segment.from == node ? segment.startRadiusMm : segment.endRadiusMm);
-        }
-        candidate.tumourFraction = deliveredFraction(solve(node), feeders);
-        ranking.push_back(candidate);
-        progress.report(double(i + 1) / double(candidates.size()), "ranking catheter positions");
+        ranking[i].tumourFraction = deliveredFraction(solve(ranking[i].node), feeders);
+        progress.report(double(i + 1) / double(ranking.size()), "ranking catheter positions");
     }
     std::stable_sort(ranking.begin(), ranking.end(), [](const TipCandidate& a, const TipCandidate& b) {
         if (std::abs(a.tumourFraction - b.tumourFraction) > 1e-9)

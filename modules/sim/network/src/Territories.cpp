@@ -1,7 +1,7 @@
 #include "vsim/sim/network/Territories.h"
 
+#include "vsim/core/DistanceTransform.h"
 #include "vsim/core/Error.h"
-#include "vsim/core/NearestPoint.h"
 #include "vsim/core/ParallelFor.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/TipOrientation.h"
@@ -15,7 +15,8 @@
 namespace vsim::sim::network {
 namespace {
 
-constexpr double kSampleMm = 0.5; ///< spacing of the points sampled along centerlines
+constexpr double kSampleMm = 0.5;   ///< spacing of the points sampled along centerlines
+constexpr double kSimplifyMm = 0.25; ///< a centerline simplified for the territories stays this near itself
 
 /// Points along a polyline no further apart than `step` (mm), its vertices included.
 std::vector<Eigen::Vector3d> sampled(const std::vector<Eigen::Vector3d>& path, double step)
@@ -64,14 +65,45 @@ bool nearLiver(const LiverTerritories& t, const Eigen::Vector3d& pointMm, double
 
 double meanRadius(const VesselNetwork::Segment& s) { return 0.5 * (s.startRadiusMm + s.endRadiusMm); }
 
-/// A centerline as a polyline with a bounding sphere, for nearest-vessel queries.
+/// Douglas-Peucker: the vertices of `path` that keep every other vertex within `toleranceMm` of the result.
+std::vector<Eigen::Vector3d> simplified(const std::vector<Eigen::Vector3d>& path, double toleranceMm)
+{
+    if (path.size() <= 2)
+        return path;
+    std::vector<char> keep(path.size(), 0);
+    keep.front() = keep.back() = 1;
+    std::vector<std::pair<std::size_t, std::size_t>> spans{{0, path.size() - 1}};
+    while (!spans.empty())
+    {
+        const auto [a, b] = spans.back();
+        spans.pop_back();
+        const Eigen::Vector3d d = path[b] - path[a];
+        double worst = -1.0;
+        std::size_t at = a;
+        for (std::size_t i = a + 1; i < b; ++i)
+        {
+            const double t = std::clamp((path[i] - path[a]).dot(d) / std::max(1e-300, d.squaredNorm()), 0.0, 1.0);
+            if (const double e = (path[a] + t * d - path[i]).norm(); e > worst)
+                worst = e, at = i;
+        }
+        if (worst > toleranceMm)
+            keep[at] = 1, spans.push_back({a, at}), spans.push_back({at, b});
+    }
+    std::vector<Eigen::Vector3d> out;
+    for (std::size_t i = 0; i < path.size(); ++i)
+        if (keep[i])
+            out.push_back(path[i]);
+    return out;
+}
+
+/// A centerline as a polyline (simplified to within kSimplifyMm) with a bounding sphere, for nearest-vessel queries.
 struct Polyline
 {
     std::vector<Eigen::Vector3d> points;
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     double radius = 0.0;
 
-    explicit Polyline(std::vector<Eigen::Vector3d> path) : points(std::move(path))
+    explicit Polyline(const std::vector<Eigen::Vector3d>& path) : points(simplified(path, kSimplifyMm))
     {
         Eigen::Vector3d lower = points.front(), upper = points.front();
         for (const Eigen::Vector3d& p : points)
@@ -444,27 +476,45 @@ std::vector<Lesion> findLesions(const LiverTerritories& t, const Progress& progr
             for (std::size_t b = a + 1; b < points.size(); ++b)
                 lesion.diameterMm = std::max(lesion.diameterMm, (points[a] - points[b]).norm());
         lesion.marginMm = lesion.diameterMm < 25.0 ? 5.0 : 10.0;
-        // The margin: liver voxels outside every lesion within marginMm of this one's surface.
-        std::vector<Eigen::Vector3d> all;
+        // The margin: liver voxels outside every lesion within marginMm of this one (a distance transform on the
+        // lesion's box grown by the margin).
+        std::array<int, 3> lo{t.geometry.dims[0], t.geometry.dims[1], t.geometry.dims[2]}, hi{0, 0, 0};
         for (std::size_t v : surface)
-            all.push_back(t.position(v));
-        const NearestPoint near(std::move(all), 2.0);
-        Eigen::Vector3d lower = Eigen::Vector3d::Constant(1e300), upper = -lower;
-        for (const Eigen::Vector3d& p : near.points())
-            lower = lower.cwiseMin(p), upper = upper.cwiseMax(p);
-        lower.array() -= lesion.marginMm, upper.array() += lesion.marginMm;
-        for (std::size_t v = 0; v < t.voxels.size(); ++v)
         {
-            if (t.tumour[v])
-                continue;
-            const Eigen::Vector3d p = t.position(v);
-            if ((p.array() < lower.array()).any() || (p.array() > upper.array()).any())
-                continue;
-            double distance = 0.0;
-            near.nearest(p, &distance);
-            if (distance <= lesion.marginMm)
-                lesion.margin.push_back(v);
+            const std::size_t linear = t.voxels[v];
+            const std::array<int, 3> ijk{int(linear % nx), int((linear / nx) % std::size_t(t.geometry.dims[1])), int(linear / nxy)};
+            for (int a = 0; a < 3; ++a)
+                lo[std::size_t(a)] = std::min(lo[std::size_t(a)], ijk[std::size_t(a)]),
+                hi[std::size_t(a)] = std::max(hi[std::size_t(a)], ijk[std::size_t(a)]);
         }
+        std::array<int, 3> dims{};
+        std::array<double, 3> spacing{};
+        for (int a = 0; a < 3; ++a)
+        {
+            const int reach = int(std::ceil(lesion.marginMm / t.geometry.spacing[a]));
+            lo[std::size_t(a)] = std::max(0, lo[std::size_t(a)] - reach);
+            hi[std::size_t(a)] = std::min(t.geometry.dims[std::size_t(a)] - 1, hi[std::size_t(a)] + reach);
+            dims[std::size_t(a)] = hi[std::size_t(a)] - lo[std::size_t(a)] + 1;
+            spacing[std::size_t(a)] = t.geometry.spacing[a];
+        }
+        const std::size_t boxVoxels = std::size_t(dims[0]) * std::size_t(dims[1]) * std::size_t(dims[2]);
+        std::vector<double> distance(boxVoxels, 1.0);
+        auto boxIndex = [&](int i, int j, int k) {
+            return std::size_t(i - lo[0]) + std::size_t(dims[0]) * (std::size_t(j - lo[1]) + std::size_t(dims[1]) * std::size_t(k - lo[2]));
+        };
+        for (std::size_t v : lesion.voxels)
+        {
+            const std::size_t linear = t.voxels[v];
+            distance[boxIndex(int(linear % nx), int((linear / nx) % std::size_t(t.geometry.dims[1])), int(linear / nxy))] = 0.0;
+        }
+        squaredDistanceTransform(distance, dims, spacing);
+        const double reachSquared = lesion.marginMm * lesion.marginMm;
+        for (int k = lo[2]; k <= hi[2]; ++k)
+            for (int j = lo[1]; j <= hi[1]; ++j)
+                for (int i = lo[0]; i <= hi[0]; ++i)
+                    if (distance[boxIndex(i, j, k)] <= reachSquared)
+                        if (const long v = liverVoxel(t, t.geometry.linearIndex(i, j, k)); v >= 0 && !t.tumour[std::size_t(v)])
+                            lesion.margin.push_back(std::size_t(v));
         progress.report(double(l + 1) / double(lesions.size()), "lesions and margins");
     }
     std::stable_sort(lesions.begin(), lesions.end(), [](const Lesion& a, const Lesion& b) { return a.voxels.size() > b.voxels.size(); });
@@ -544,6 +594,55 @@ std::vector<Feeder> findFeeders(const VesselNetwork& network, const LiverTerrito
     for (const auto& [s, f] : feeders)
         list.push_back(f);
     return list;
+}
+
+LabelVolume territoryLabel(const LiverTerritories& t, const PerfusedTerritory& perfused, const std::vector<Lesion>& lesions)
+{
+    LabelVolume label(t.geometry);
+    for (std::size_t v = 0; v < t.voxels.size(); ++v)
+        label.data()[t.voxels[v]] = t.tumour[v] ? (perfused.perfused[v] ? kTumourPerfused : kTumourMissed)
+                                                : (perfused.perfused[v] ? kLiverPerfused : kLiverNotPerfused);
+    for (const Lesion& lesion : lesions)
+        for (std::size_t v : lesion.margin)
+            if (!perfused.perfused[v])
+                label.data()[t.voxels[v]] = kMarginMissed;
+    return label;
+}
+
+std::vector<TipCandidate> rankTipsByCoverage(const VesselNetwork& network, const LiverTerritories& territories,
+                                             const std::vector<Lesion>& lesions, const TipSolve& solve,
+                                             const Progress& progress)
+{
+    std::vector<TipCandidate> ranking = tipCandidates(network);
+    std::size_t lesionVoxels = 0;
+    for (const Lesion& lesion : lesions)
+        lesionVoxels += lesion.voxels.size();
+    for (std::size_t i = 0; i < ranking.size(); ++i)
+    {
+        progress.throwIfCancelled();
+        const PerfusedTerritory perfused = perfusedTerritory(territories, solve(ranking[i].node));
+        const Coverage coverage = tumourCoverage(lesions, perfused);
+        TipCandidate& c = ranking[i];
+        c.grade = coverage.grade;
+        c.tumourFraction = perfused.drugToTumour;
+        c.nonTargetMl = perfused.volumeMl - perfused.tumourVolumeMl;
+        std::size_t covered = 0;
+        for (const Lesion& lesion : lesions)
+            for (std::size_t v : lesion.voxels)
+                covered += perfused.perfused[v] ? 1 : 0;
+        c.coveredPercent = lesionVoxels ? 100.0 * double(covered) / double(lesionVoxels) : 0.0;
+        progress.report(double(i + 1) / double(ranking.size()), "ranking catheter positions by coverage");
+    }
+    std::stable_sort(ranking.begin(), ranking.end(), [](const TipCandidate& a, const TipCandidate& b) {
+        if (a.grade != b.grade)
+            return a.grade < b.grade;
+        if (std::abs(a.coveredPercent - b.coveredPercent) > 1e-9)
+            return a.coveredPercent > b.coveredPercent;
+        if (std::abs(a.nonTargetMl - b.nonTargetMl) > 1e-9)
+            return a.nonTargetMl < b.nonTargetMl;
+        return a.depth < b.depth;
+    });
+    return ranking;
 }
 
 } // namespace vsim::sim::network

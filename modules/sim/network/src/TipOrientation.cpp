@@ -79,7 +79,7 @@ TipOrientation orientFromTip(const VesselNetwork& network, int tip)
     }
     if (o.order.size() == 1)
         throw Error("nothing is downstream of the catheter tip (node " + std::to_string(tip) +
-                        " is an end of the tree): place it nearer the root",
+                        " is an end of the tree): place it nearer the root (node " + std::to_string(network.root) + ")",
                     {{"node", std::to_string(tip)}});
     return o;
 }

@@ -37,6 +37,10 @@ VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& ce
 std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& study, const std::string& artifactId,
                                                          int value);
 
+/// A label artifact's volume, or an image artifact's as a label (its values cut to 0-255); `what` names it in
+/// the message for any other kind.
+LabelVolume labelArtifact(const study::Study& study, const std::string& artifactId, const std::string& what);
+
 /// What a run report shows of a network run (metrics, control points, the ten best tip positions, warnings) as
 /// JSON text; `source` names where the network came from.
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
@@ -61,8 +65,8 @@ NetworkRunIds addNetworkRun(study::Study& study, const sim::network::NetworkRunR
 
 /// Writes a run into `folder`: network.json (the solved network with its fields), segments.csv (per segment:
 /// flow, drug flow, pressures, velocity, Reynolds number, filling times), outlets.csv (flow share and arrival
-/// time per outlet), filling.csv (every segment's filled length at 101 times up to the last arrival) and
-/// metrics.json (`document`). Throws vsim::Error when a file cannot be written.
+/// time per outlet), filling.csv (every segment's filled length at 101 times up to the last arrival),
+/// metrics.json (`document`), and with a liver territory.nrrd (sim::network::territoryLabel) and feeders.csv. Throws vsim::Error when a file cannot be written.
 void writeNetworkRun(const std::filesystem::path& folder, const sim::network::NetworkRunResult& run,
                      const std::string& document);
 

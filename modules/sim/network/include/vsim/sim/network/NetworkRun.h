@@ -29,10 +29,12 @@
 #include "vsim/sim/network/Filling.h"
 #include "vsim/sim/network/FlowSolver.h"
 #include "vsim/sim/network/Targeting.h"
+#include "vsim/sim/network/Territories.h"
 #include "vsim/sim/network/TwoPhaseFluid.h"
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +63,10 @@ struct NetworkRunSetup
     std::optional<double> tipPressurePa;
     ParameterSet parameters{networkParameters()};
     bool rankTips = true;
+    /// The liver (and the tumour as a label): perfusion territories, outlets from them (outlet_model 1), the tip's
+    /// perfused territory, the lesions' coverage grade and feeders, tips ranked by coverage (Territories.h). The
+    /// labels must outlive the run.
+    std::optional<LabelRegion> liver, tumourLabel;
 };
 
 struct ControlPoint
@@ -86,12 +92,23 @@ struct NetworkRunResult
     std::vector<ControlPoint> controls;
     std::vector<int> tumourOutlets;
     std::vector<TipCandidate> ranking; ///< best first
+    /// With a liver: the territories, the tip's perfused territory, the lesions, their coverage and feeders.
+    std::shared_ptr<const LiverTerritories> territories;
+    std::optional<PerfusedTerritory> perfused;
+    std::vector<Lesion> lesions;
+    std::optional<Coverage> coverage;
+    std::vector<Feeder> feeders;
     std::map<std::string, double> metrics;
     std::vector<std::string> warnings;
     /// The flow solves (direct): Kirchhoff's balance against kConservationTolerance; with blood flow also the
     /// fixed-point coupling of fractions and viscosities against its tolerance.
     RunStatus status;
 };
+
+/// A coverage grade as a metric: A 1, B 2, C 3 (0: no lesion).
+double gradeNumber(char grade);
+/// Lesions whose figures a run records as metrics (lesion_<k>_..., largest first).
+inline constexpr std::size_t kLesionsReported = 5;
 
 /// Largest relative imbalance of flow at a node that a flow solve may leave (a direct solve leaves ~1e-15).
 inline constexpr double kConservationTolerance = 1e-9;

@@ -31,10 +31,16 @@ double deliveredFraction(const FlowSolution& flow, const std::vector<int>& outle
 struct TipCandidate
 {
     int node = -1;
-    double tumourFraction = 0.0;   ///< share of the injected drug reaching the tumour's outlets
+    double tumourFraction = 0.0;   ///< share of the injected drug reaching the tumour (its outlets, or its tissue)
     int depth = 0;                 ///< segments from the root
     double radiusMm = 0.0;         ///< largest vessel radius at the node (catheter access)
+    char grade = '-';              ///< with territories: the coverage grade from here
+    double coveredPercent = 0.0;   ///< with territories: the lesions' voxels perfused from here
+    double nonTargetMl = 0.0;      ///< with territories: non-tumour liver perfused from here
 };
+
+/// The candidate tip positions: every node that is not an end, and the root; with their depth and radius.
+std::vector<TipCandidate> tipCandidates(const VesselNetwork& network);
 
 /// The flow with the catheter tip at a node (the run's model: the injected fluid alone, or carried by blood).
 using TipSolve = std::function<FlowSolution(int tipNode)>;

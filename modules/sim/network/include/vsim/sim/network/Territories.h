@@ -34,6 +34,7 @@
 #include "vsim/core/Progress.h"
 #include "vsim/core/VesselNetwork.h"
 #include "vsim/sim/network/FlowSolver.h"
+#include "vsim/sim/network/Targeting.h"
 
 #include <cstdint>
 #include <string>
@@ -138,5 +139,24 @@ struct Feeder
 /// The feeders of the lesions (see above), by segment.
 std::vector<Feeder> findFeeders(const VesselNetwork& network, const LiverTerritories& territories,
                                 const std::vector<Lesion>& lesions);
+
+/// Values of territoryLabel.
+enum TerritoryLabelValue : std::uint8_t
+{
+    kLiverNotPerfused = 1,
+    kLiverPerfused = 2,
+    kTumourPerfused = 3,
+    kTumourMissed = 4,   ///< a lesion's voxel not perfused
+    kMarginMissed = 5,   ///< a margin's voxel not perfused
+};
+/// The perfused territory over the liver's grid for viewing over the CT (values above; 0 outside the liver).
+LabelVolume territoryLabel(const LiverTerritories& territories, const PerfusedTerritory& perfused,
+                           const std::vector<Lesion>& lesions);
+
+/// Every candidate tip (tipCandidates) with the flow from `solve`: ranked by coverage grade, then the lesions'
+/// share perfused, then the least non-tumour liver perfused (the more selective), then nearer the root.
+std::vector<TipCandidate> rankTipsByCoverage(const VesselNetwork& network, const LiverTerritories& territories,
+                                             const std::vector<Lesion>& lesions, const TipSolve& solve,
+                                             const Progress& progress = {});
 
 } // namespace vsim::sim::network
