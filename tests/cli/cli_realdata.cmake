@@ -92,6 +92,26 @@ if(tree_recall LESS 0.15)
     message(FATAL_ERROR "the hepatic label lost the celiac tree (recall ${tree_recall}, 0.17 on 2026-11-27)")
 endif()
 
+# Chemoembolization planning on the patient (issue 19): the guided hepatic label's skeleton and centerlines, the
+# catheter at the network's root, the liver and the first tumour masks as labels: territories, the lesion's coverage
+# grade and feeders, tips ranked by coverage, within the issue's 2 s for one tip and 10 s for the ranking.
+run_cli(0 imported import ${WORK}/masks/MASKS_DICOM/livertumor1 --study ${WORK}/liver.vsim --as-label) # label-9
+run_cli(0 ignored skeleton --study ${WORK}/liver.vsim --label label-7)
+run_cli(0 ignored centerline --study ${WORK}/liver.vsim)
+run_cli(0 planned simulate network --study ${WORK}/liver.vsim --tip root --liver-label label-8 --tumour-label label-9
+        --out ${WORK}/tace)
+foreach(key liver_volume_ml hepatic_outlets lesions lesion_1_diameter_mm lesion_1_margin_mm coverage_grade feeders
+        best_tip_grade best_tip_non_target_ml territory_seconds ranked_tips ranking_seconds)
+    string(JSON value GET "${planned}" metrics ${key})
+    set(${key} ${value})
+    string(APPEND tace_figures " ${key} ${value};")
+endforeach()
+message(STATUS "liver CT, chemoembolization from the root:${tace_figures}")
+if(NOT lesions EQUAL 1 OR hepatic_outlets LESS 1 OR feeders LESS 1 OR territory_seconds GREATER 2
+   OR ranking_seconds GREATER 10 OR NOT EXISTS ${WORK}/tace/territory.nrrd OR NOT EXISTS ${WORK}/tace/feeders.csv)
+    message(FATAL_ERROR "chemoembolization planning on the liver CT:${tace_figures}")
+endif()
+
 run_cli(0 ignored import ${DATA}/ctpa-totalsegmentator/ct_cropped.nii.gz --study ${WORK}/ctpa.vsim)
 run_cli(0 info info ${WORK}/ctpa.vsim)
 expect_grid("${info}" "[122,102,112]" "^\\[1\\.5,1\\.5,1\\.5\\]$")

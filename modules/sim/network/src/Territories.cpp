@@ -391,15 +391,15 @@ PerfusedTerritory perfusedTerritory(const LiverTerritories& t, const FlowSolutio
     for (int node : t.extrahepatic)
         p.drugExtrahepatic += drugShare(node);
     p.drugElsewhere = std::max(0.0, 1.0 - p.drugToTumour - p.drugToLiver - p.drugExtrahepatic);
-    // Segments carrying the drug: its fraction (1 downstream of the tip when the drug flows alone) times the flow.
+    // Segments carrying the drug: its fraction (1 downstream of the tip when the drug flows alone) in a flow.
+    std::vector<double> fraction(flow.segmentFlow.size(), 0.0);
+    for (std::size_t s = 0; s < flow.segmentFlow.size(); ++s)
+        fraction[s] = flow.injectateFraction.empty() ? (flow.orientation.active(int(s)) ? 1.0 : 0.0) : flow.injectateFraction[s];
+    const double largest = fraction.empty() ? 0.0 : *std::max_element(fraction.begin(), fraction.end());
     std::vector<char> carries(flow.segmentFlow.size(), 0);
     for (std::size_t s = 0; s < flow.segmentFlow.size(); ++s)
-    {
-        const double fraction = flow.injectateFraction.empty() ? (flow.orientation.active(int(s)) ? 1.0 : 0.0)
-                                                               : flow.injectateFraction[s];
-        if (injected > 0.0 && fraction * std::abs(flow.segmentFlow[s]) >= kPerfusedShare * injected)
+        if (largest > 0.0 && flow.segmentFlow[s] != 0.0 && fraction[s] >= kPerfusedShare * largest)
             carries[s] = 1, p.segments.push_back(int(s));
-    }
     p.perfused.assign(t.voxels.size(), 0);
     for (std::size_t v = 0; v < t.voxels.size(); ++v)
         if (std::size_t(t.fedBy[v]) < carries.size() && carries[std::size_t(t.fedBy[v])])

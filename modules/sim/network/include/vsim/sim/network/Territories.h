@@ -18,8 +18,10 @@
 // hepatic outlets' shares together are dealt out again by those weights. Extrahepatic outlets keep their Murray
 // share.
 //
-// A tip's perfused territory: the tissue of the segments whose drug flow is at least kPerfusedShare of the
-// injected drug. The drug reaching an outlet is shared within the tissue dealt to it by perfusion (f for tumour).
+// A tip's perfused territory: the tissue of the segments the drug reaches, at an injected fraction of at least
+// kPerfusedShare of the largest (the fraction below the tip): the tissue takes the drug at the concentration its
+// vessel carries, however small that vessel's flow. The drug reaching an outlet is shared within the tissue dealt
+// to it by perfusion (f for tumour).
 //
 // Coverage (the technical-success grading of TACE): each lesion (a 6-connected component of the tumour) with a
 // margin of 5 mm (longest diameter under 25 mm) or 10 mm (25 mm and over) of liver around it: grade A when the
@@ -83,7 +85,7 @@ LiverTerritories liverTerritories(const VesselNetwork& network, const LabelRegio
 /// Terminal resistances from the territories (see above) for the outlets without a condition.
 void addTerritoryOutlets(VesselNetwork& network, const LiverTerritories& territories, const ParameterSet& parameters);
 
-/// An outlet counts as perfused from this share of the injected drug up.
+/// A segment's tissue counts as perfused from this share of the largest injected fraction up.
 inline constexpr double kPerfusedShare = 1e-3;
 /// A lesion or margin counts as covered from this share of its voxels up.
 inline constexpr double kCoveredShare = 0.99;
