@@ -19,6 +19,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -61,6 +62,9 @@ struct GrowthOptions
     double visibleRadiusMm = 0.75;
     Eigen::Vector3d semiAxesMm{80.0, 60.0, 50.0};
     double voxelMm = 1.0;
+    /// A grid of these voxels (spacing `spacingMm`) centred on the liver instead of one fitted around it at voxelMm.
+    std::array<int, 3> dims{0, 0, 0};
+    Eigen::Vector3d spacingMm{1.0, 1.0, 1.0};
     double tumourRadiusMm = 10.0;
     Eigen::Vector3d tumourOffset{0.45, -0.3, 0.2}; ///< tumour centre in units of the semi-axes
 };
@@ -71,10 +75,20 @@ inline GrownTree growTree(const GrowthOptions& o)
     std::mt19937 random(o.seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     VolumeGeometry geometry;
-    const Eigen::Vector3d half = o.semiAxesMm + Eigen::Vector3d::Constant(15.0);
-    for (int a = 0; a < 3; ++a)
-        geometry.dims[std::size_t(a)] = int(std::ceil(2.0 * half[a] / o.voxelMm)) + 1;
-    geometry.spacing = Eigen::Vector3d::Constant(o.voxelMm);
+    Eigen::Vector3d half = o.semiAxesMm + Eigen::Vector3d::Constant(15.0);
+    if (o.dims[0] > 0)
+    {
+        geometry.dims = o.dims;
+        geometry.spacing = o.spacingMm;
+        for (int a = 0; a < 3; ++a)
+            half[a] = 0.5 * (o.dims[std::size_t(a)] - 1) * o.spacingMm[a];
+    }
+    else
+    {
+        for (int a = 0; a < 3; ++a)
+            geometry.dims[std::size_t(a)] = int(std::ceil(2.0 * half[a] / o.voxelMm)) + 1;
+        geometry.spacing = Eigen::Vector3d::Constant(o.voxelMm);
+    }
     geometry.origin = -half;
     g.liver = LabelVolume(geometry);
     g.tumour = LabelVolume(geometry);
