@@ -105,22 +105,18 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
         source["tumour_label"] = arguments.option("tumour-label") + (value ? ":" + std::to_string(value) : std::string());
         inputs.push_back(arguments.option("tumour-label"));
     }
-    // The liver (and the tumour as a label) for territories, coverage and feeders; the volumes outlive the run.
-    std::optional<LabelVolume> liver, tumourLabel;
+    // The liver (and the tumour as a label) for territories, coverage and feeders.
     auto valueOption = [&](const char* name) {
         return arguments.hasOption(name) ? int(parseNumbers(arguments.option(name), ',', 1, name)[0]) : 0;
     };
     if (arguments.hasOption("liver-label"))
     {
-        liver = app::labelArtifact(study, arguments.option("liver-label"), "liver");
-        setup.liver = sim::network::LabelRegion{&*liver, valueOption("liver-value")};
-        source["liver_label"] = arguments.option("liver-label");
+        const int liverValue = valueOption("liver-value");
+        setup.liver = app::sharedLabel(study, arguments.option("liver-label"), liverValue, "liver");
+        source["liver_label"] = arguments.option("liver-label") + (liverValue ? ":" + std::to_string(liverValue) : std::string());
         inputs.push_back(arguments.option("liver-label"));
         if (arguments.hasOption("tumour-label"))
-        {
-            tumourLabel = app::labelArtifact(study, arguments.option("tumour-label"), "tumour");
-            setup.tumourLabel = sim::network::LabelRegion{&*tumourLabel, valueOption("tumour-value")};
-        }
+            setup.tumourLabel = app::sharedLabel(study, arguments.option("tumour-label"), valueOption("tumour-value"), "tumour");
     }
     else if (arguments.hasOption("liver-value"))
         throw Error("--liver-value needs --liver-label");

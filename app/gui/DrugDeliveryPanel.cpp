@@ -7,6 +7,7 @@
 #include "vsim/sim/network/Tracers.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -44,8 +45,13 @@ QString number(double value, int decimals) { return QString::number(value, 'f', 
 DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     : QWidget(parent), m_view(view), m_summary(new QTextBrowser(this)), m_outlets(new QTableWidget(this)),
       m_projection(new NetworkProjectionView(this)), m_player(new RunPlayer(this)), m_tip(new QLineEdit(this)), m_tumour(new QLineEdit(this)), m_controls(new QLineEdit(this)),
-      m_tumourRadius(new QDoubleSpinBox(this))
+      m_liverLabel(new QComboBox(this)), m_tumourLabel(new QComboBox(this)), m_tumourRadius(new QDoubleSpinBox(this))
 {
+    m_liverLabel->setObjectName("drugLiverLabel");
+    m_liverLabel->setToolTip(tr("The liver as a label: perfusion territories, coverage grade and feeders"));
+    m_tumourLabel->setObjectName("drugTumourLabel");
+    m_tumourLabel->setToolTip(tr("The tumour as a label (with a liver label): its lesions, margins and coverage"));
+    setLabelChoices({});
     // The next run: fields to type in or pick on the tree.
     m_tip->setObjectName("drugTip");
     m_tip->setPlaceholderText(tr("x, y, z mm; empty: the root"));
@@ -72,6 +78,8 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     setup->addRow(tr("Tumour"), row(m_tumour, pickTumour));
     setup->addRow(tr("Tumour radius (picked)"), m_tumourRadius);
     setup->addRow(tr("Control points"), row(m_controls, pickControl));
+    setup->addRow(tr("Liver label"), m_liverLabel);
+    setup->addRow(tr("Tumour label"), m_tumourLabel);
     setup->addRow(QString(), run);
     connect(pickTip, &QPushButton::clicked, this, [this] { startPicking(Pick::Tip); });
     connect(pickTumour, &QPushButton::clicked, this, [this] { startPicking(Pick::TumourCentre); });
@@ -80,7 +88,7 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     connect(m_view, &viz::VolumeView3D::pointPicked, this, &DrugDeliveryPanel::picked);
 
     m_summary->setObjectName("drugSummary");
-    m_summary->setMaximumHeight(130);
+    m_summary->setMaximumHeight(220);
     m_outlets->setColumnCount(3);
     m_outlets->setHorizontalHeaderLabels({tr("Outlet"), tr("Drug share (%)"), tr("Arrival (s)")});
     m_outlets->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -123,13 +131,32 @@ void DrugDeliveryPanel::picked(const Eigen::Vector3d& p)
     startPicking(Pick::None);
 }
 
-DrugDeliveryRequest DrugDeliveryPanel::request() const { return {m_tip->text(), m_tumour->text(), m_controls->text()}; }
+DrugDeliveryRequest DrugDeliveryPanel::request() const
+{
+    return {m_tip->text(), m_tumour->text(), m_controls->text(), m_liverLabel->currentData().toString(),
+            m_tumourLabel->currentData().toString()};
+}
 
 void DrugDeliveryPanel::setRequest(const DrugDeliveryRequest& request)
 {
     m_tip->setText(request.tip);
     m_tumour->setText(request.tumour);
     m_controls->setText(request.controls);
+    m_liverLabel->setCurrentIndex(std::max(0, m_liverLabel->findData(request.liverLabel)));
+    m_tumourLabel->setCurrentIndex(std::max(0, m_tumourLabel->findData(request.tumourLabel)));
+}
+
+void DrugDeliveryPanel::setLabelChoices(const std::vector<std::pair<QString, QString>>& labels)
+{
+    for (QComboBox* box : {m_liverLabel, m_tumourLabel})
+    {
+        const QString chosen = box->currentData().toString();
+        box->clear();
+        box->addItem(tr("(none)"), QString());
+        for (const auto& [id, name] : labels)
+            box->addItem(QString("%1 (%2)").arg(name, id), id);
+        box->setCurrentIndex(std::max(0, box->findData(chosen)));
+    }
 }
 
 void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunResult> run, int fillingSteps)
@@ -143,7 +170,38 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
         text += tr("<br>Control point %1: drug %2 ml/min two-phase, %3 ml/min liquid (%4 % lower)")
                     .arg(QString::fromStdString(c.name), number(c.drugFlowTwoPhaseMlMin, 3), number(c.drugFlowLiquidMlMin, 3),
                          number(c.dropPercent, 1));
-    if (m.count("tumour_fraction"))
+    if (r.blood)
+        text += tr("<br>Blood: %1 ml/min at the root, %2 ml/min reaching the tip (own flow %3); the drug is %4 % of the "
+                   "flow below it; the catheter fills %5 % of the lumen%6.")
+                    .arg(number(units::m3PerSToMlPerMin(r.blood->inletFlow), 1), number(units::m3PerSToMlPerMin(r.blood->tipInflow), 1),
+                         number(units::m3PerSToMlPerMin(r.blood->ownFlow), 1), number(m.at("tip_drug_percent"), 2),
+                         number(100.0 * r.blood->occlusion, 0), r.blood->wedged ? tr(": WEDGED") : QString());
+    if (r.coverage && !r.lesions.empty())
+    {
+        const char grade = r.coverage->grade;
+        text += tr("<br><b>Coverage grade %1</b>: territory %2 ml (%3 ml of tumour); drug to tumour %4 %, non-tumour "
+                   "liver %5 %, extrahepatic %6 %.")
+                    .arg(QChar(grade))
+                    .arg(number(r.perfused->volumeMl, 1), number(r.perfused->tumourVolumeMl, 1),
+                         number(100.0 * r.perfused->drugToTumour, 1), number(100.0 * r.perfused->drugToLiver, 1),
+                         number(100.0 * r.perfused->drugExtrahepatic, 1));
+        for (std::size_t l = 0; l < r.lesions.size() && l < sim::network::kLesionsReported; ++l)
+            text += tr("<br>Lesion %1: %2 mm, %3 mm margin; %4 % covered, margin %5 % (grade %6).")
+                        .arg(l + 1)
+                        .arg(number(r.lesions[l].diameterMm, 1), number(r.lesions[l].marginMm, 0),
+                             number(r.coverage->lesions[l].coveredPercent, 1),
+                             number(r.coverage->lesions[l].marginCoveredPercent, 1))
+                        .arg(QChar(r.coverage->lesions[l].grade));
+        QStringList feeders;
+        for (const sim::network::Feeder& f : r.feeders)
+            feeders << tr("segment %1 (nodes %2 - %3, %4 mm)")
+                           .arg(f.segment)
+                           .arg(r.network.segments[std::size_t(f.segment)].from)
+                           .arg(r.network.segments[std::size_t(f.segment)].to)
+                           .arg(number(f.radiusMm, 1));
+        text += tr("<br>Feeders: %1.").arg(feeders.isEmpty() ? tr("none found") : feeders.join("; "));
+    }
+    else if (m.count("tumour_fraction"))
         text += tr("<br>Tumour share %1 % (%2 outlets).").arg(number(100.0 * m.at("tumour_fraction"), 1)).arg(r.tumourOutlets.size());
     if (m.count("best_tip_node"))
         text += tr("<br>Best tip: node %1 delivers %2 % to the tumour.")

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLineEdit;
 class QPushButton;
@@ -35,6 +36,7 @@ class RunPlayer;
 struct DrugDeliveryRequest
 {
     QString tip, tumour, controls;
+    QString liverLabel, tumourLabel; ///< label artifact ids for territories and coverage ("" for none)
 };
 
 /// "x, y, z[, r]" (mm) as `count` numbers; empty text gives none; nullopt for a malformed entry.
@@ -60,6 +62,8 @@ public:
     Pick picking() const { return m_pick; }
     DrugDeliveryRequest request() const;
     void setRequest(const DrugDeliveryRequest& request);
+    /// The label artifacts (id, name) the liver and tumour may be chosen from; keeps the choices still offered.
+    void setLabelChoices(const std::vector<std::pair<QString, QString>>& labels);
 
     /// Shows a run: the network coloured by drug flow in 3D and in the projection, the tables, the player at 0.
     void setRun(std::shared_ptr<const sim::network::NetworkRunResult> run, int fillingSteps);
@@ -81,6 +85,7 @@ private:
     viz::VolumeView3D* m_view;
     Pick m_pick = Pick::None;
     QLineEdit *m_tip, *m_tumour, *m_controls;
+    QComboBox *m_liverLabel, *m_tumourLabel;
     QDoubleSpinBox* m_tumourRadius;
     std::shared_ptr<const sim::network::NetworkRunResult> m_run;
     QTextBrowser* m_summary;

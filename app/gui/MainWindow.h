@@ -232,6 +232,9 @@ private:
     void editVesselParameters();
     /// Overlays a label in the three MPRs (an empty one clears them).
     void showLabelOverlay(const LabelVolume& label);
+    /// A drug run with a liver: its perfused territory over the MPR views (the territory palette), the tip, the
+    /// lesions' centres and the feeders as markers, the coverage grade in the status bar.
+    void showTerritory(const sim::network::NetworkRunResult& run);
     /// Fills the Measurements dock; each row keeps the patient position (mm) it jumps to.
     /// The measurement dock: one row per segment titled by its anatomical name (`names`, one per segment) of the
     /// centerlines `centerlinesId`; double-clicking a name renames the segment (undoable).

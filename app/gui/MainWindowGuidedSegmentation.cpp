@@ -16,9 +16,6 @@
 namespace vsim::gui {
 namespace {
 
-const std::array<viz::SliceOrientation, 3> kOrientations{viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal,
-                                                          viz::SliceOrientation::Sagittal};
-
 /// True when no artifact of the study takes `id` as an input.
 bool isUnused(const study::Study& study, const std::string& id)
 {

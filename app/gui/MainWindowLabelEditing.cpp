@@ -17,13 +17,6 @@
 #include <QToolBar>
 
 namespace vsim::gui {
-namespace {
-
-const std::array<viz::SliceOrientation, 3> kOrientations{viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal,
-                                                          viz::SliceOrientation::Sagittal};
-
-} // namespace
-
 void MainWindow::createLabelEditToolBar()
 {
     m_editToolBar = addToolBar(tr("Label Editing"));

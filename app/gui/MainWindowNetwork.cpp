@@ -10,6 +10,8 @@
 #include "ViewLayout.h"
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Units.h"
+#include "vsim/sim/network/NetworkBuild.h"
+#include "vsim/viz/SliceView.h"
 
 #include <QDockWidget>
 #include <QMenu>
@@ -74,14 +76,31 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
     }
     if (!request.controls.trimmed().isEmpty())
         source["control_points"] = request.controls.toStdString(); // what a reopened study runs again
+    if (!request.tumourLabel.isEmpty() && request.liverLabel.isEmpty())
+    {
+        showError(tr("Drug delivery"), tr("The tumour label is read with a liver label: choose the liver too."));
+        return false;
+    }
+    if (!request.liverLabel.isEmpty())
+        source["liver_label"] = request.liverLabel.toStdString();
+    if (!request.tumourLabel.isEmpty())
+        source["tumour_label"] = request.tumourLabel.toStdString();
     m_drugRequest = request;
     auto run = std::make_shared<sim::network::NetworkRunResult>();
     auto warnings = std::make_shared<std::vector<std::string>>();
     const std::string labelId = app::labelOfCenterlines(m_document.study(), centerlinesId);
     return m_tasks.run(
         tr("Drug delivery"),
-        [this, setup, centerlinesId, run, warnings](const Progress& progress) mutable {
-            setup.network = app::buildStudyNetwork(m_document.study(), centerlinesId, *warnings, progress.subRange(0.0, 0.4));
+        [this, setup, centerlinesId, run, warnings, request](const Progress& progress) mutable {
+            const study::Study& study = m_document.study();
+            if (!request.liverLabel.isEmpty())
+                setup.liver = app::sharedLabel(study, request.liverLabel.toStdString(), 0, "liver");
+            if (!request.tumourLabel.isEmpty())
+            {
+                setup.tumourLabel = app::sharedLabel(study, request.tumourLabel.toStdString(), 0, "tumour");
+                setup.tumour = app::volumeRegion(study, request.tumourLabel.toStdString(), 0);
+            }
+            setup.network = app::buildStudyNetwork(study, centerlinesId, *warnings, progress.subRange(0.0, 0.4));
             *run = sim::network::runNetwork(setup, progress.subRange(0.4, 1.0));
             run->warnings.insert(run->warnings.begin(), warnings->begin(), warnings->end());
         },
@@ -111,12 +130,44 @@ void MainWindow::showDrugDeliveryRun(std::shared_ptr<const sim::network::Network
         addDockWidget(Qt::RightDockWidgetArea, m_drugDock);
     }
     m_drugDock->show();
+    std::vector<std::pair<QString, QString>> labels;
+    for (const study::Artifact& artifact : m_document.study().artifacts())
+        if (artifact.kind == study::ArtifactKind::Label && !artifact.damaged)
+            labels.emplace_back(QString::fromStdString(artifact.id), QString::fromStdString(artifact.name));
+    m_drugPanel->setLabelChoices(labels);
     m_drugPanel->setRequest(m_drugRequest);
+    showTerritory(*run);
     m_drugPanel->setRun(run, int(m_networkParameters.get("filling_steps")));
     statusBar()->showMessage(tr("Drug delivery: %1 outlets, last reached after %2 s")
                                  .arg(run->twoPhase.orientation.outlets.size())
                                  .arg(run->filling.lastArrival, 0, 'f', 1),
                              8000);
+}
+
+void MainWindow::showTerritory(const sim::network::NetworkRunResult& run)
+{
+    if (!run.territories || !run.perfused)
+        return;
+    const LabelVolume territory = sim::network::territoryLabel(*run.territories, *run.perfused, run.lesions);
+    std::vector<viz::SliceMarker> markers; // negative ids: not the guided segmentation's points (a drag moves nothing)
+    const auto& tip = run.network.nodes[std::size_t(run.tipNode)].positionMm;
+    markers.push_back({-1, tip, {0.2, 1.0, 0.3}, tr("tip").toStdString()});
+    for (std::size_t l = 0; l < run.lesions.size() && l < sim::network::kLesionsReported; ++l)
+        markers.push_back({-2 - int(l), run.lesions[l].centreMm, {1.0, 0.3, 0.2}, tr("lesion %1").arg(l + 1).toStdString()});
+    for (const sim::network::Feeder& f : run.feeders)
+        markers.push_back({-100 - f.segment, sim::network::segmentMiddle(run.network, f.segment), {1.0, 0.9, 0.2},
+                           tr("feeder %1").arg(f.segment).toStdString()});
+    for (viz::SliceOrientation orientation : kOrientations)
+    {
+        m_views->sliceView(orientation)->setLabel(territory, viz::SliceView::LabelPalette::Territory);
+        m_views->sliceView(orientation)->setMarkers(markers);
+    }
+    if (run.coverage && !run.lesions.empty())
+        statusBar()->showMessage(tr("Chemoembolization from the tip: coverage grade %1, territory %2 ml, %3 feeder(s)")
+                                     .arg(QChar(run.coverage->grade))
+                                     .arg(run.perfused->volumeMl, 0, 'f', 1)
+                                     .arg(run.feeders.size()),
+                                 8000);
 }
 
 } // namespace vsim::gui

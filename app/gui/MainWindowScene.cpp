@@ -71,7 +71,17 @@ void MainWindow::refreshScene()
 
     viz::VolumeView3D* view = m_views->volumeView();
     if (m_drugDock && content.main != SceneContent::Main::NetworkRun)
+    {
         m_drugDock->hide();
+        for (viz::SliceOrientation orientation : kOrientations) // the territory's markers (negative ids) go with it
+        {
+            std::vector<viz::SliceMarker> kept;
+            for (const viz::SliceMarker& marker : m_views->sliceView(orientation)->markers())
+                if (marker.id >= 0)
+                    kept.push_back(marker);
+            m_views->sliceView(orientation)->setMarkers(kept);
+        }
+    }
     if (content.main != SceneContent::Main::NetworkRun)
     {
         view->clearFieldLines();

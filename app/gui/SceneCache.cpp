@@ -33,7 +33,8 @@ sim::network::NetworkRunSetup recordedSetup(const study::Study& study, const stu
         const auto found = recorded.find(key);
         return found == recorded.end() ? QString() : QString::fromStdString(found->second);
     };
-    request = {text("tip"), text("tumour_mm"), text("control_points")};
+    request = {text("tip"), text("tumour_mm"), text("control_points"), text("liver_label").section(':', 0, 0),
+               text("tumour_label").section(':', 0, 0)};
     if (request.tip.contains(','))
     {
         const auto tip = numbersInText(request.tip, 3).value_or(std::vector<double>{});
@@ -48,6 +49,13 @@ sim::network::NetworkRunSetup recordedSetup(const study::Study& study, const stu
     {
         const QStringList parts = label.split(':');
         setup.tumour = app::volumeRegion(study, parts[0].toStdString(), parts.size() > 1 ? parts[1].toInt() : 0);
+        if (!text("liver_label").isEmpty())
+            setup.tumourLabel = app::sharedLabel(study, parts[0].toStdString(), parts.size() > 1 ? parts[1].toInt() : 0, "tumour");
+    }
+    if (const QString label = text("liver_label"); !label.isEmpty())
+    {
+        const QStringList parts = label.split(':');
+        setup.liver = app::sharedLabel(study, parts[0].toStdString(), parts.size() > 1 ? parts[1].toInt() : 0, "liver");
     }
     for (const QString& point : request.controls.split(';', Qt::SkipEmptyParts))
         if (const auto xyz = numbersInText(point, 3); xyz && xyz->size() == 3)

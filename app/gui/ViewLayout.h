@@ -14,6 +14,10 @@ class VolumeView3D;
 
 namespace vsim::gui {
 
+/// The three MPR views' orientations, in the layout's order.
+inline constexpr std::array<viz::SliceOrientation, 3> kOrientations{viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal,
+                                                                   viz::SliceOrientation::Sagittal};
+
 /// The 4-up layout: axial (top left), 3D (top right), coronal (bottom left), sagittal (bottom right), with a
 /// linked cursor (clicking in one MPR moves the others) and shared window/level.
 class ViewLayout : public QWidget

@@ -3,7 +3,10 @@
 // solved network is added (undoable, with provenance and metrics), the 3D view colours the tree by drug flow with
 // its legend, the Drug Delivery dock lists the outlets, and moving the filling player draws virtual tubelets in
 // the 3D view and the 2D projection; File > Export Report writes the PDF, the DICOM instance and the metrics.
-// Malformed input and a study without centerlines are refused with a message.
+// Then chemoembolization planning (issue 19): a liver and a tumour label imported, chosen in the dock, Run: the
+// perfused territory over the MPR views (the territory palette) with the tip, the lesion and its feeders as
+// markers, the coverage grade in the dock and the study. Malformed input and a study without centerlines are
+// refused with a message.
 
 #include "DicomFixtures.h"
 #include "DrugDeliveryPanel.h"
@@ -13,9 +16,14 @@
 #include "NetworkProjectionView.h"
 #include "ViewLayout.h"
 #include "vsim/dicom/PhantomModel.h"
+#include "vsim/interop/NrrdFile.h"
+#include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QComboBox>
 #include <QFile>
+#include <QLineEdit>
+#include <QTextBrowser>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
@@ -130,6 +138,60 @@ private slots:
         QVERIFY(std::find(kept.provenance.inputs.begin(), kept.provenance.inputs.end(), picked.id) != kept.provenance.inputs.end());
         window.document().undoStack()->undo();
         QVERIFY(!window.document().study().hasArtifact(kept.id));
+
+        // The liver (here the box around the tree, 10 mm beyond its nodes) and the tumour (the phantom's sphere) as
+        // labels on the CT's grid, imported; chosen in the dock; Run from the root.
+        const VolumeGeometry grid = dicom::phantomGeometry(options);
+        Eigen::Vector3d lower = model.nodes.front().position, upper = lower;
+        for (const dicom::VesselNode& node : model.nodes)
+            lower = lower.cwiseMin(node.position), upper = upper.cwiseMax(node.position);
+        const Eigen::Vector3d centre(m.at("tumour_centre_x_mm"), m.at("tumour_centre_y_mm"), m.at("tumour_centre_z_mm"));
+        LabelVolume liverLabel(grid), tumourLabel(grid);
+        for (int k = 0; k < grid.dims[2]; ++k)
+            for (int j = 0; j < grid.dims[1]; ++j)
+                for (int i = 0; i < grid.dims[0]; ++i)
+                {
+                    const Eigen::Vector3d p = grid.indexToPatient(Eigen::Vector3d(i, j, k));
+                    liverLabel.at(i, j, k) = (p.array() >= lower.array() - 10.0).all() && (p.array() <= upper.array() + 10.0).all();
+                    tumourLabel.at(i, j, k) = (p - centre).norm() <= m.at("tumour_radius_mm");
+                }
+        const fs::path labels = test::freshFolder("gui-drug", "labels");
+        interop::writeNrrd(liverLabel, labels / "liver.nrrd", true);
+        interop::writeNrrd(tumourLabel, labels / "tumour.nrrd", true);
+        for (const char* name : {"liver.nrrd", "tumour.nrrd"})
+        {
+            QVERIFY(window.importLabel(QString::fromStdString((labels / name).string())));
+            QVERIFY(vsim::test::waitForTask(window));
+        }
+        const auto& artifacts = window.document().study().artifacts();
+        const std::string liverId = artifacts[artifacts.size() - 2].id, tumourId = artifacts.back().id;
+        panel->setLabelChoices({{QString::fromStdString(liverId), "liver"}, {QString::fromStdString(tumourId), "tumour"}});
+        auto* liverBox = panel->findChild<QComboBox*>("drugLiverLabel");
+        auto* tumourBox = panel->findChild<QComboBox*>("drugTumourLabel");
+        liverBox->setCurrentIndex(liverBox->findData(QString::fromStdString(liverId)));
+        tumourBox->setCurrentIndex(tumourBox->findData(QString::fromStdString(tumourId)));
+        panel->findChild<QLineEdit*>("drugTip")->clear(); // from the root
+        panel->findChild<QPushButton*>("drugRun")->click();
+        QVERIFY(vsim::test::waitForTask(window));
+        QCOMPARE(failed.count(), 0);
+        const study::Artifact planned = window.document().study().artifacts().back();
+        QCOMPARE(planned.provenance.parameters.at("liver_label"), liverId);
+        qInfo("chemoembolization from the root: grade %s, territory %s ml, %s feeder(s), lesion %s mm; best tip grade %s",
+              planned.attributes.at("coverage_grade").c_str(), planned.attributes.at("perfused_volume_ml").c_str(),
+              planned.attributes.at("feeders").c_str(), planned.attributes.at("lesion_1_diameter_mm").c_str(),
+              planned.attributes.at("best_tip_grade").c_str());
+        QCOMPARE(std::stod(planned.attributes.at("coverage_grade")), 1.0); // A from the root
+        QVERIFY(std::stod(planned.attributes.at("feeders")) >= 1.0);
+        viz::SliceView* axial = window.views()->sliceView(viz::SliceOrientation::Axial);
+        QVERIFY(axial->hasLabel());
+        QCOMPARE(axial->labelPalette(), viz::SliceView::LabelPalette::Territory);
+        const auto& markers = axial->markers();
+        QVERIFY(std::count_if(markers.begin(), markers.end(), [](const viz::SliceMarker& k) { return k.text.rfind("feeder", 0) == 0; }) >= 1);
+        QVERIFY(panel->findChild<QTextBrowser*>("drugSummary")->toPlainText().contains("Coverage grade A"));
+        window.grab().save(QString::fromStdString((test::freshFolder("gui-drug", "territory") / "territory.png").string()));
+        window.document().undoStack()->undo(); // the planned run
+        window.document().undoStack()->undo(); // the tumour label
+        window.document().undoStack()->undo(); // the liver label
 
         const std::size_t before = window.document().study().artifacts().size();
         window.document().undoStack()->undo(); // the network and its filling run go together

@@ -141,6 +141,12 @@ LabelVolume labelArtifact(const study::Study& study, const std::string& artifact
     return label;
 }
 
+sim::network::SharedLabel sharedLabel(const study::Study& study, const std::string& artifactId, int value,
+                                      const std::string& what)
+{
+    return {std::make_shared<const LabelVolume>(labelArtifact(study, artifactId, what)), value};
+}
+
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
                                const std::map<std::string, std::string>& source)
 {

@@ -47,6 +47,26 @@ vtkSmartPointer<vtkTextActor> makeLabel(int justification, int verticalJustifica
     return label;
 }
 
+/// The colours of label values 0-5 (RGBA; 0 clear) in a palette (SliceView.h).
+vtkSmartPointer<vtkLookupTable> labelTable(SliceView::LabelPalette palette)
+{
+    using Colour = std::array<double, 4>;
+    static const std::array<Colour, 6> tissue{Colour{0, 0, 0, 0},          Colour{1.0, 0.2, 0.15, 0.45},
+                                              Colour{1.0, 0.6, 0.1, 0.45}, Colour{1.0, 0.6, 0.1, 0.45},
+                                              Colour{1.0, 0.9, 0.2, 0.45}, Colour{0.3, 0.5, 1.0, 0.45}};
+    static const std::array<Colour, 6> territory{Colour{0, 0, 0, 0},          Colour{0, 0, 0, 0},
+                                                 Colour{0.2, 0.9, 0.3, 0.35}, Colour{0.3, 0.5, 1.0, 0.55},
+                                                 Colour{1.0, 0.15, 0.1, 0.6}, Colour{1.0, 0.9, 0.2, 0.5}};
+    const auto& colours = palette == SliceView::LabelPalette::Territory ? territory : tissue;
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    table->SetNumberOfTableValues(6);
+    table->SetTableRange(0.0, 5.0);
+    for (std::size_t v = 0; v < colours.size(); ++v)
+        table->SetTableValue(vtkIdType(v), colours[v][0], colours[v][1], colours[v][2], colours[v][3]);
+    table->Build();
+    return table;
+}
+
 } // namespace
 
 struct SliceView::Pipeline
@@ -82,19 +102,7 @@ SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
     p.labelReslice->SetOutputDimensionality(2);
     p.labelReslice->SetInterpolationModeToNearestNeighbor();
     p.labelReslice->SetBackgroundLevel(0.0);
-    auto table = vtkSmartPointer<vtkLookupTable>::New();
-    // Label values: 0 transparent, 1 lumen (red), 4 thrombus (yellow), 5 wall (blue) as the AAA sac writes them;
-    // 2 and 3 (other tissue classes of the phantoms' truth) orange.
-    table->SetNumberOfTableValues(6);
-    table->SetTableRange(0.0, 5.0);
-    table->SetTableValue(0, 0.0, 0.0, 0.0, 0.0);
-    table->SetTableValue(1, 1.0, 0.2, 0.15, 0.45);
-    table->SetTableValue(2, 1.0, 0.6, 0.1, 0.45);
-    table->SetTableValue(3, 1.0, 0.6, 0.1, 0.45);
-    table->SetTableValue(4, 1.0, 0.9, 0.2, 0.45);
-    table->SetTableValue(5, 0.3, 0.5, 1.0, 0.45);
-    table->Build();
-    p.labelColours->SetLookupTable(table);
+    p.labelColours->SetLookupTable(labelTable(LabelPalette::Tissue));
     p.labelColours->SetOutputFormatToRGBA();
     p.labelColours->SetInputConnection(p.labelReslice->GetOutputPort());
     p.labelActor->GetMapper()->SetInputConnection(p.labelColours->GetOutputPort());
@@ -165,9 +173,14 @@ void SliceView::setImage(const CtVolume& image)
     updateCamera();
 }
 
-void SliceView::setLabel(const LabelVolume& label)
+void SliceView::setLabel(const LabelVolume& label, LabelPalette palette)
 {
     Pipeline& p = *m_pipeline;
+    if (palette != m_palette)
+    {
+        m_palette = palette;
+        p.labelColours->SetLookupTable(labelTable(palette));
+    }
     if (label.isEmpty() || !hasImage() || !label.geometry().isClose(m_image.geometry(), 1e-4))
     {
         m_label = LabelVolume();

@@ -282,9 +282,10 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     const auto territoriesStarted = std::chrono::steady_clock::now();
     if (setup.liver)
     {
-        const LabelRegion* tumour = setup.tumourLabel ? &*setup.tumourLabel : nullptr;
+        const std::optional<LabelRegion> tumour =
+            setup.tumourLabel ? std::optional<LabelRegion>(setup.tumourLabel->region()) : std::nullopt;
         r.territories = std::make_shared<const LiverTerritories>(
-            liverTerritories(net, *setup.liver, tumour, p, progress.subRange(0.0, 0.1)));
+            liverTerritories(net, setup.liver->region(), tumour ? &*tumour : nullptr, p, progress.subRange(0.0, 0.1)));
         r.lesions = findLesions(*r.territories);
     }
     const double territorySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - territoriesStarted).count();

@@ -41,6 +41,10 @@ std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& stu
 /// the message for any other kind.
 LabelVolume labelArtifact(const study::Study& study, const std::string& artifactId, const std::string& what);
 
+/// labelArtifact shared, with the value marking the region (0: any non-zero), for a run's setup.
+sim::network::SharedLabel sharedLabel(const study::Study& study, const std::string& artifactId, int value,
+                                      const std::string& what);
+
 /// What a run report shows of a network run (metrics, control points, the ten best tip positions, warnings) as
 /// JSON text; `source` names where the network came from.
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,

@@ -37,8 +37,18 @@ public:
     void clearImage();
     bool hasImage() const;
 
-    /// Overlays `label` (same grid as the image; the view keeps a reference to its voxels); an empty one hides it.
-    void setLabel(const LabelVolume& label);
+    /// How label values are coloured: the tissue classes (1 lumen red, 2-3 orange, 4 thrombus yellow, 5 wall
+    /// blue), or a chemoembolization territory (sim::network::TerritoryLabelValue: 1 liver not perfused clear, 2
+    /// perfused liver green, 3 perfused tumour blue, 4 tumour missed red, 5 margin missed yellow).
+    enum class LabelPalette
+    {
+        Tissue,
+        Territory,
+    };
+    /// Overlays `label` (same grid as the image; the view keeps a reference to its voxels) in `palette`; an empty
+    /// one hides it.
+    void setLabel(const LabelVolume& label, LabelPalette palette = LabelPalette::Tissue);
+    LabelPalette labelPalette() const { return m_palette; }
     /// Redraws the overlay after its voxels changed in place.
     void refreshLabel();
     bool hasLabel() const { return !m_label.isEmpty(); }
@@ -109,6 +119,7 @@ private:
     SliceOrientation m_orientation;
     CtVolume m_image;
     LabelVolume m_label;
+    LabelPalette m_palette = LabelPalette::Tissue;
     BrushMode m_brush = BrushMode::Off;
     double m_brushRadiusMm = 3.0;
     bool m_stroking = false;

@@ -49,6 +49,14 @@ TwoPhaseMixture networkMixture(const ParameterSet& parameters);
 /// Adds Murray-law terminal resistances (see above) for every end node other than the root without a condition.
 void addDefaultOutlets(VesselNetwork& network, const ParameterSet& parameters);
 
+/// A label volume a setup shares (the liver's or the tumour's) and the value that marks the region (0: any).
+struct SharedLabel
+{
+    std::shared_ptr<const LabelVolume> volume;
+    int value = 0;
+    LabelRegion region() const { return {volume.get(), value}; }
+};
+
 struct NetworkRunSetup
 {
     VesselNetwork network;                      ///< validated; root set (or the largest end is taken)
@@ -64,9 +72,8 @@ struct NetworkRunSetup
     ParameterSet parameters{networkParameters()};
     bool rankTips = true;
     /// The liver (and the tumour as a label): perfusion territories, outlets from them (outlet_model 1), the tip's
-    /// perfused territory, the lesions' coverage grade and feeders, tips ranked by coverage (Territories.h). The
-    /// labels must outlive the run.
-    std::optional<LabelRegion> liver, tumourLabel;
+    /// perfused territory, the lesions' coverage grade and feeders, tips ranked by coverage (Territories.h).
+    std::optional<SharedLabel> liver, tumourLabel;
 };
 
 struct ControlPoint
