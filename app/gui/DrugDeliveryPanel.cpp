@@ -4,6 +4,7 @@
 
 #include "NetworkProjectionView.h"
 #include "vsim/core/Units.h"
+#include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/sim/network/Tracers.h"
 #include "vsim/viz/VolumeView3D.h"
 
@@ -194,12 +195,20 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
                         .arg(QChar(r.coverage->lesions[l].grade));
         QStringList feeders;
         for (const sim::network::Feeder& f : r.feeders)
-            feeders << tr("segment %1 (nodes %2 - %3, %4 mm)")
+            feeders << tr("%1 (segment %2, %3 mm)")
+                           .arg(QString::fromStdString(sim::network::branchName(r.network, f.segment)).toHtmlEscaped())
                            .arg(f.segment)
-                           .arg(r.network.segments[std::size_t(f.segment)].from)
-                           .arg(r.network.segments[std::size_t(f.segment)].to)
                            .arg(number(f.radiusMm, 1));
         text += tr("<br>Feeders: %1.").arg(feeders.isEmpty() ? tr("none found") : feeders.join("; "));
+        QStringList nonTarget;
+        for (const auto& [node, share] : r.perfused->extrahepaticDrug)
+            if (share >= sim::network::kPerfusedShare)
+                nonTarget << tr("%1 %2 %")
+                                 .arg(QString::fromStdString(sim::network::branchName(
+                                          r.network, r.network.incidentSegments()[std::size_t(node)].front())).toHtmlEscaped())
+                                 .arg(number(100.0 * share, 1));
+        if (!nonTarget.isEmpty())
+            text += tr("<br>Drug leaving the liver: %1.").arg(nonTarget.join("; "));
     }
     else if (m.count("tumour_fraction"))
         text += tr("<br>Tumour share %1 % (%2 outlets).").arg(number(100.0 * m.at("tumour_fraction"), 1)).arg(r.tumourOutlets.size());

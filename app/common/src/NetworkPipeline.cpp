@@ -1,10 +1,12 @@
 #include "vsim/app/NetworkPipeline.h"
 
 #include "vsim/app/RunRecord.h"
+#include "vsim/app/SegmentNames.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
 #include "vsim/imaging/PartialVolumeRadii.h"
 #include "vsim/imaging/VesselMeasurements.h"
+#include "vsim/imaging/VesselNames.h"
 #include "vsim/interop/NrrdFile.h"
 #include "vsim/sim/network/FillingSolver.h"
 #include "vsim/sim/network/NetworkBuild.h"
@@ -67,7 +69,8 @@ std::string labelOfCenterlines(const study::Study& study, const std::string& cen
 }
 
 VesselNetwork networkFromImages(const SkeletonGraph& centerlines, const LabelVolume& label, const CtVolume* ct,
-                                std::vector<std::string>& warnings, const Progress& progress)
+                                std::vector<std::string>& warnings, const Progress& progress,
+                                const std::vector<std::string>& names)
 {
     const imaging::VesselMeasurements measured = imaging::measureVessels(
         label, centerlines, ParameterSet(imaging::measurementParameters()), progress.subRange(0.0, ct ? 0.5 : 1.0));
@@ -82,23 +85,27 @@ VesselNetwork networkFromImages(const SkeletonGraph& centerlines, const LabelVol
             if (radii[e].measured)
                 endRadii[e] = {radii[e].startRadiusMm, radii[e].endRadiusMm};
     }
-    return sim::network::networkFromCenterlines(centerlines, endRadii, &warnings);
+    return sim::network::networkFromCenterlines(centerlines, endRadii, &warnings, names);
 }
 
 VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& centerlinesId,
                                 std::vector<std::string>& warnings, const Progress& progress)
 {
     const SkeletonGraph centerlines = study.loadSkeleton(centerlinesId);
+    std::vector<std::string> names = segmentNames(study, centerlinesId, centerlines);
+    for (std::string& name : names)
+        if (name == imaging::kUnnamedSegment)
+            name.clear();
     const std::string labelId = labelOfCenterlines(study, centerlinesId);
     if (labelId.empty())
-        return sim::network::networkFromCenterlines(centerlines, {}, &warnings);
+        return sim::network::networkFromCenterlines(centerlines, {}, &warnings, names);
     // The CT the label came from (the segment step's input).
     const auto& labelInputs = study.artifact(labelId).provenance.inputs;
     std::optional<CtVolume> ct;
     if (!labelInputs.empty() && study.hasArtifact(labelInputs.front()) &&
         study.artifact(labelInputs.front()).kind == study::ArtifactKind::Image)
         ct = study.loadImage(labelInputs.front());
-    return networkFromImages(centerlines, study.loadLabel(labelId), ct ? &*ct : nullptr, warnings, progress);
+    return networkFromImages(centerlines, study.loadLabel(labelId), ct ? &*ct : nullptr, warnings, progress, names);
 }
 
 std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& study, const std::string& artifactId,
@@ -191,12 +198,23 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
     {
         const auto& segment = run.network.segments[std::size_t(f.segment)];
         feeders.push_back({{"segment", f.segment},
+                           {"name", sim::network::branchName(run.network, f.segment)},
                            {"nodes", {segment.from, segment.to}},
                            {"lesion", f.lesion + 1},
                            {"enters_lesion_or_margin", f.entersLesion},
                            {"radius_mm", f.radiusMm},
                            {"drug_flow_ml_min", run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]}});
     }
+    nlohmann::json nonTarget = nlohmann::json::array(); // the drug leaving the liver, outlet by outlet
+    if (run.perfused)
+        for (const auto& [node, share] : run.perfused->extrahepaticDrug)
+            if (share > 0.0)
+            {
+                const int segment = run.network.incidentSegments()[std::size_t(node)].front();
+                nonTarget.push_back({{"outlet", node},
+                                     {"name", sim::network::branchName(run.network, segment)},
+                                     {"drug_percent", 100.0 * share}});
+            }
     return nlohmann::json{{"source", source},
                           {"metrics", run.metrics},
                           {"run_status", nlohmann::json::parse(runStatusJson(run.status))},
@@ -205,6 +223,7 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
                           {"tip_ranking", ranking},
                           {"lesions", lesions},
                           {"feeders", feeders},
+                          {"extrahepatic_drug", nonTarget},
                           {"warnings", run.warnings},
                           {"parameters", parameters.valuesAsText()}}
         .dump(2);
@@ -311,11 +330,12 @@ void writeNetworkRun(const std::filesystem::path& folder, const sim::network::Ne
         interop::writeNrrd(sim::network::territoryLabel(*run.territories, *run.perfused, run.lesions),
                            folder / "territory.nrrd", true);
         std::ofstream csv = openForWriting(folder / "feeders.csv");
-        csv << "segment,from,to,lesion,enters_lesion_or_margin,radius_mm,drug_flow_ml_min\n";
+        csv << "segment,name,from,to,lesion,enters_lesion_or_margin,radius_mm,drug_flow_ml_min\n";
         for (const sim::network::Feeder& f : run.feeders)
         {
             const auto& segment = run.network.segments[std::size_t(f.segment)];
-            csv << f.segment << "," << segment.from << "," << segment.to << "," << f.lesion + 1 << ","
+            csv << f.segment << ",\"" << sim::network::branchName(run.network, f.segment) << "\"," << segment.from << ","
+                << segment.to << "," << f.lesion + 1 << ","
                 << (f.entersLesion ? 1 : 0) << "," << numberText(f.radiusMm) << ","
                 << numberText(run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]) << "\n";
         }

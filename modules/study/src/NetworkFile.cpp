@@ -41,6 +41,8 @@ std::string networkToJsonText(const VesselNetwork& network)
                    {"start_radius_mm", segment.startRadiusMm},
                    {"end_radius_mm", segment.endRadiusMm},
                    {"length_mm", segment.lengthMm}};
+        if (!segment.name.empty())
+            entry["name"] = segment.name;
         if (segment.resistance > 0.0)
             entry["resistance_mmhg_min_per_ml"] = segment.resistance / kPaSPerM3PerMmHgMinPerMl;
         if (!segment.pathMm.empty())
@@ -90,6 +92,7 @@ VesselNetwork networkFromJsonText(const std::string& text)
                 segment.endRadiusMm = entry.at("end_radius_mm").get<double>();
                 segment.lengthMm = entry.at("length_mm").get<double>();
                 segment.resistance = entry.value("resistance_mmhg_min_per_ml", 0.0) * kPaSPerM3PerMmHgMinPerMl;
+                segment.name = entry.value("name", std::string());
                 if (entry.contains("path_mm"))
                     for (const json& p : entry.at("path_mm"))
                         segment.pathMm.push_back(pointFrom(p));

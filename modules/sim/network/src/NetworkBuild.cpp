@@ -87,7 +87,7 @@ void breakLoops(VesselNetwork& network, std::vector<std::string>* warnings)
 } // namespace
 
 VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std::vector<std::array<double, 2>>& endRadiiMm,
-                                     std::vector<std::string>* warnings)
+                                     std::vector<std::string>* warnings, const std::vector<std::string>& names)
 {
     if (centerlines.edges.empty())
         throw Error("the centerlines have no vessel segments: extract them first (vascusim-cli centerline)");
@@ -105,6 +105,8 @@ VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std
         segment.to = edge.to;
         segment.pathMm = edge.points;
         segment.lengthMm = edge.length();
+        if (e < names.size())
+            segment.name = names[e];
         if (!endRadiiMm.empty())
             segment.startRadiusMm = endRadiiMm[e][0], segment.endRadiusMm = endRadiiMm[e][1];
         else if (!edge.radii.empty())
@@ -124,6 +126,12 @@ VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std
     network.root = largestEnd(network);
     network.validate();
     return network;
+}
+
+std::string branchName(const VesselNetwork& network, int segment)
+{
+    const auto& own = network.segments[std::size_t(segment)];
+    return own.name.empty() ? "unnamed (nodes " + std::to_string(own.from) + " - " + std::to_string(own.to) + ")" : own.name;
 }
 
 std::pair<int, double> nearestSegment(const VesselNetwork& network, const Eigen::Vector3d& pointMm,

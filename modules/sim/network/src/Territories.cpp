@@ -389,7 +389,10 @@ PerfusedTerritory perfusedTerritory(const LiverTerritories& t, const FlowSolutio
         p.drugToLiver += drug - toTumour;
     }
     for (int node : t.extrahepatic)
+    {
+        p.extrahepaticDrug.emplace_back(node, drugShare(node));
         p.drugExtrahepatic += drugShare(node);
+    }
     p.drugElsewhere = std::max(0.0, 1.0 - p.drugToTumour - p.drugToLiver - p.drugExtrahepatic);
     // Segments carrying the drug: its fraction (1 downstream of the tip when the drug flows alone) in a flow.
     std::vector<double> fraction(flow.segmentFlow.size(), 0.0);

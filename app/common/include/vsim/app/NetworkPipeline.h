@@ -26,9 +26,11 @@ std::string labelOfCenterlines(const study::Study& study, const std::string& cen
 /// a line through the equivalent radii of the label's cross-sections away from junctions (imaging::measureVessels).
 /// Loops of the skeleton are broken at their thinnest segment, each named in `warnings`.
 VesselNetwork networkFromImages(const SkeletonGraph& centerlines, const LabelVolume& label, const CtVolume* ct,
-                                std::vector<std::string>& warnings, const Progress& progress = {});
+                                std::vector<std::string>& warnings, const Progress& progress = {},
+                                const std::vector<std::string>& names = {});
 
-/// networkFromImages on the study's centerlines, the label they came from and that label's source image.
+/// networkFromImages on the study's centerlines, the label they came from and that label's source image; the
+/// segments carry the centerlines' anatomical names (app::segmentNames, "unnamed" left empty).
 VesselNetwork buildStudyNetwork(const study::Study& study, const std::string& centerlinesId,
                                 std::vector<std::string>& warnings, const Progress& progress = {});
 

@@ -29,6 +29,7 @@ struct VesselNetwork
         /// volume the filling needs).
         double resistance = 0.0;
         std::vector<Eigen::Vector3d> pathMm; ///< the centerline for display (empty: the straight line)
+        std::string name; ///< anatomical name ("gastroduodenal artery"); empty when unnamed
     };
     /// An outlet's condition: the pressure at the node, or a terminal resistance to a pressure beyond it.
     struct Outlet

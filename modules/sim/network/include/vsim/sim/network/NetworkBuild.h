@@ -20,11 +20,16 @@ namespace vsim::sim::network {
 /// given, else the median centerline radius over the first and last quarter of the edge. The root is the end of
 /// the largest radius. A skeleton can keep a small loop where vessels touch or a junction was crowded; the
 /// network must be a tree, so the thinnest segment of each loop is left out (a maximum spanning tree by radius)
-/// and named in `warnings`. Throws vsim::Error for empty centerlines or radii that are not positive (naming the
-/// edge).
+/// and named in `warnings`. `names` (per edge, or empty) become the segments' anatomical names. Throws
+/// vsim::Error for empty centerlines or radii that are not positive (naming the edge).
 VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines,
                                      const std::vector<std::array<double, 2>>& endRadiiMm = {},
-                                     std::vector<std::string>* warnings = nullptr);
+                                     std::vector<std::string>* warnings = nullptr,
+                                     const std::vector<std::string>& names = {});
+
+/// How a segment is named for people: its anatomical name, else "unnamed (nodes a - b)". (Not its nearest named
+/// ancestor's: a tree rooted at the wrong end, e.g. an iliac artery's, would name every hepatic branch after it.)
+std::string branchName(const VesselNetwork& network, int segment);
 
 /// The segment nearest to `pointMm` (along its path) among those `eligible` accepts (all when empty) and the
 /// distance (mm); {-1, inf} when there is none.

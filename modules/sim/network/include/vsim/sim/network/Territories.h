@@ -100,6 +100,7 @@ struct PerfusedTerritory
     double drugToLiver = 0.0;        ///< non-tumour liver,
     double drugExtrahepatic = 0.0;   ///< the extrahepatic outlets,
     double drugElsewhere = 0.0;      ///< and the rest (refluxed to outlets without tissue, or lost to rounding)
+    std::vector<std::pair<int, double>> extrahepaticDrug; ///< per extrahepatic outlet node: its share of the drug
 };
 
 /// The tip's territory, from a solved flow (its segment flows, injected fractions, outletInjectate, injectedFlow).
