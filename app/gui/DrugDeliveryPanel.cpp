@@ -216,6 +216,18 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
         text += tr("<br>Best tip: node %1 delivers %2 % to the tumour.")
                     .arg(int(m.at("best_tip_node")))
                     .arg(number(100.0 * m.at("best_tip_fraction"), 1));
+    if (r.workingAngle)
+    {
+        const sim::network::WorkingAngle& w = *r.workingAngle;
+        text += tr("<br><b>Working angle %1 %2, %3 %4</b> (the projection below): the path foreshortened %5 %, "
+                   "overlapped %6 % (from the front: %7 %, %8 %).")
+                    .arg(w.angles.laoDeg >= 0.0 ? tr("LAO") : tr("RAO"))
+                    .arg(number(std::abs(w.angles.laoDeg), 1))
+                    .arg(w.angles.cranialDeg >= 0.0 ? tr("cranial") : tr("caudal"))
+                    .arg(number(std::abs(w.angles.cranialDeg), 1))
+                    .arg(number(100.0 * w.quality.foreshortening, 1), number(100.0 * w.quality.overlap, 1),
+                         number(100.0 * w.frontal.foreshortening, 1), number(100.0 * w.frontal.overlap, 1));
+    }
     for (const std::string& warning : r.warnings)
         text += "<br><i>" + QString::fromStdString(warning).toHtmlEscaped() + "</i>";
     m_summary->setHtml(text);
@@ -256,6 +268,8 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
     if (!lines.empty()) // frame the tree from the front
         m_view->showAnteriorView(0.5 * (low + top), 1.2 * std::max((top - low).x(), (top - low).z()));
     m_projection->setNetwork(r.network, drug, 0.0, high);
+    m_projection->setViewDirection(sim::network::detectorDirection(r.workingAngle ? r.workingAngle->angles
+                                                                                   : sim::network::CArmAngles{}));
     const int steps = std::max(1, fillingSteps);
     std::vector<double> times;
     for (int step = 0; step <= steps; ++step)

@@ -1,5 +1,7 @@
 #include "NetworkProjectionView.h"
 
+#include "vsim/sim/network/WorkingAngle.h"
+
 #include <QPainter>
 #include <QPainterPath>
 
@@ -31,10 +33,21 @@ void NetworkProjectionView::setNetwork(const VesselNetwork& network, const std::
     m_network = network;
     m_values = values;
     m_low = low, m_high = high;
+    fitBounds();
+}
+
+void NetworkProjectionView::setViewDirection(const Eigen::Vector3d& direction)
+{
+    std::tie(m_right, m_up) = sim::network::imageAxes(direction);
+    fitBounds();
+}
+
+void NetworkProjectionView::fitBounds()
+{
     m_min = Eigen::Vector2d::Constant(1e300), m_max = Eigen::Vector2d::Constant(-1e300);
-    for (const VesselNetwork::Node& node : network.nodes)
+    for (const VesselNetwork::Node& node : m_network.nodes)
     {
-        const Eigen::Vector2d p(node.positionMm.x(), node.positionMm.z());
+        const Eigen::Vector2d p(node.positionMm.dot(m_right), node.positionMm.dot(m_up));
         m_min = m_min.cwiseMin(p), m_max = m_max.cwiseMax(p);
     }
     m_min -= Eigen::Vector2d::Constant(5.0), m_max += Eigen::Vector2d::Constant(5.0);
@@ -52,8 +65,8 @@ QPointF NetworkProjectionView::project(const Eigen::Vector3d& p) const
     const Eigen::Vector2d size = m_max - m_min;
     const double scale = std::min(width() / std::max(size.x(), 1.0), height() / std::max(size.y(), 1.0));
     const double x0 = 0.5 * (width() - scale * size.x()), y0 = 0.5 * (height() - scale * size.y());
-    // Front view: patient left (+x) to the right, superior (+z) up.
-    return {x0 + scale * (p.x() - m_min.x()), y0 + scale * (m_max.y() - p.z())};
+    // The image's right and up (the front view: patient left (+x) to the right, superior (+z) up).
+    return {x0 + scale * (p.dot(m_right) - m_min.x()), y0 + scale * (m_max.y() - p.dot(m_up))};
 }
 
 void NetworkProjectionView::paintEvent(QPaintEvent*)

@@ -1,8 +1,9 @@
 #pragma once
 
 // The drug network in a 2D projection (thesis ch. 6 shows the filling in 2D): the tree seen from the front
-// (coronal: patient left on the right, superior up), each segment as wide as its vessel and coloured by a value,
-// and the filling's virtual tubelets (quads along each tracer's trail, fading from head to tail). Drawn with QPainter.
+// (coronal: patient left on the right, superior up) or from a C-arm position (the working angle), each segment as
+// wide as its vessel and coloured by a value, and the filling's virtual tubelets (quads along each tracer's trail,
+// fading from head to tail). Drawn with QPainter.
 
 #include "vsim/core/VesselNetwork.h"
 
@@ -20,6 +21,8 @@ public:
 
     /// The network and one value per segment, coloured blue -> red over [low, high].
     void setNetwork(const VesselNetwork& network, const std::vector<double>& values, double low, double high);
+    /// Seen along the C-arm's detector direction (sim::network::detectorDirection); the front view by default.
+    void setViewDirection(const Eigen::Vector3d& direction);
     /// Tracer trails (mm, head first).
     void setTrails(std::vector<std::vector<Eigen::Vector3d>> trails);
     int trailCount() const { return int(m_trails.size()); }
@@ -29,12 +32,14 @@ protected:
 
 private:
     QPointF project(const Eigen::Vector3d& pointMm) const;
+    void fitBounds();
 
     VesselNetwork m_network;
     std::vector<double> m_values;
     double m_low = 0.0, m_high = 1.0;
     std::vector<std::vector<Eigen::Vector3d>> m_trails;
-    Eigen::Vector2d m_min{0, 0}, m_max{1, 1}; // projected bounds (mm): x, z
+    Eigen::Vector2d m_min{0, 0}, m_max{1, 1}; // projected bounds (mm): right, up
+    Eigen::Vector3d m_right = Eigen::Vector3d::UnitX(), m_up = Eigen::Vector3d::UnitZ(); // the image's axes (LPS)
 };
 
 } // namespace vsim::gui

@@ -114,6 +114,16 @@ private slots:
         QCOMPARE(QString::fromStdString(picked.provenance.parameters.at("tip")), panel->request().tip);
         qInfo("tumour share from the root %.3f, from the picked best tip %s", first, picked.attributes.at("tumour_fraction").c_str());
         QVERIFY(std::stod(picked.attributes.at("tumour_fraction")) > first);
+        // The working C-arm angle for the path to the picked tip, in the dock (the projection is drawn at it).
+        qInfo("working angle LAO %s, cranial %s: overlap %s %% (front %s %%), foreshortening %s %% (front %s %%)",
+              picked.attributes.at("working_lao_deg").c_str(), picked.attributes.at("working_cranial_deg").c_str(),
+              picked.attributes.at("working_overlap_percent").c_str(), picked.attributes.at("frontal_overlap_percent").c_str(),
+              picked.attributes.at("working_foreshortening_percent").c_str(),
+              picked.attributes.at("frontal_foreshortening_percent").c_str());
+        QVERIFY(std::abs(std::stod(picked.attributes.at("working_lao_deg"))) <= 60.0);
+        QVERIFY(std::stod(picked.attributes.at("working_overlap_percent")) + std::stod(picked.attributes.at("working_foreshortening_percent")) <=
+                std::stod(picked.attributes.at("frontal_overlap_percent")) + std::stod(picked.attributes.at("frontal_foreshortening_percent")));
+        QVERIFY(panel->findChild<QTextBrowser*>("drugSummary")->toPlainText().contains("Working angle"));
 
         // File > Export Report in the background, the tree's snapshot rendered on the GUI thread: the PDF with the
         // chemoembolization section, the DICOM instance and the metrics beside it.

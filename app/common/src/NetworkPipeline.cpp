@@ -340,6 +340,20 @@ void writeNetworkRun(const std::filesystem::path& folder, const sim::network::Ne
                 << numberText(run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]) << "\n";
         }
     }
+    if (run.workingAngle) // DSA-like views at the working angle and from the front (8-bit PGM, the head up)
+        for (const auto& [name, angles] : {std::pair{"working-view.pgm", run.workingAngle->angles},
+                                           std::pair{"frontal-view.pgm", sim::network::CArmAngles{}}})
+        {
+            const sim::network::ProjectionImage image = sim::network::dsaProjection(run.network, run.tipNode, angles);
+            std::ofstream pgm(folder / name, std::ios::binary | std::ios::trunc);
+            pgm << "P5\n# VascuSim DSA-like view, LAO " << angles.laoDeg << " cranial " << angles.cranialDeg << " deg, "
+                << image.pixelMm << " mm pixels\n"
+                << image.width << " " << image.height << "\n255\n";
+            for (float t : image.transmission)
+                pgm.put(char(std::uint8_t(std::lround(255.0f * t))));
+            if (!pgm.flush())
+                throw Error("cannot write the run file", {{"file", (folder / name).string()}});
+        }
     std::ofstream metrics = openForWriting(folder / "metrics.json");
     metrics << document << "\n";
     if (!metrics.flush())

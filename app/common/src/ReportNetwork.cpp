@@ -127,6 +127,36 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
                 {"coupling_iterations", "Fixed-point iterations (fractions and viscosities)", ""}});
     if (!blood.rows.empty())
         section.blocks.push_back(blood);
+    report::MetricTable coverage{"Perfusion territory and tumour coverage (TACE grading: A lesion and margin, B lesion "
+                                 "only, C lesion partly; margin 5 mm under 25 mm, else 10 mm)", {}};
+    addMetrics(coverage, *run,
+               {{"liver_volume_ml", "Liver (label)", "ml"},
+                {"perfused_volume_ml", "Perfused territory from the tip", "ml"},
+                {"perfused_tumour_ml", "Tumour in the territory", "ml"},
+                {"perfused_non_target_ml", "Non-tumour liver in the territory", "ml"},
+                {"coverage_grade", "Coverage grade (1 A, 2 B, 3 C)", ""},
+                {"lesion_1_diameter_mm", "Lesion 1: longest diameter", "mm"},
+                {"lesion_1_margin_mm", "Lesion 1: margin", "mm"},
+                {"lesion_1_covered_percent", "Lesion 1: covered", "%"},
+                {"lesion_1_margin_covered_percent", "Lesion 1: margin covered", "%"},
+                {"feeders", "Feeders found (entering lesion + margin, or feeding 1 % of it)", ""},
+                {"drug_liver_percent", "Drug to non-tumour liver", "%"},
+                {"drug_extrahepatic_percent", "Drug leaving the liver (extrahepatic outlets)", "%"},
+                {"best_tip_grade", "Best tip position's grade (1 A, 2 B, 3 C)", ""},
+                {"best_tip_non_target_ml", "Best tip position's non-tumour liver", "ml"}});
+    if (!coverage.rows.empty())
+        section.blocks.push_back(coverage);
+    report::MetricTable angle{"Working C-arm angle for the path to the tip (patient supine; + LAO / - RAO, + cranial / "
+                              "- caudal; within LAO/RAO 60 and cranial/caudal 40 degrees)", {}};
+    addMetrics(angle, *run,
+               {{"working_lao_deg", "LAO (+) / RAO (-)", "deg"},
+                {"working_cranial_deg", "Cranial (+) / caudal (-)", "deg"},
+                {"working_foreshortening_percent", "Path foreshortened at the working angle", "%"},
+                {"working_overlap_percent", "Path overlapped by other vessels at the working angle", "%"},
+                {"frontal_foreshortening_percent", "Path foreshortened from the front (AP)", "%"},
+                {"frontal_overlap_percent", "Path overlapped from the front (AP)", "%"}});
+    if (!angle.rows.empty())
+        section.blocks.push_back(angle);
     report::MetricTable targeting{"Targeting", {}};
     addMetrics(targeting, *run,
                {{"tumour_fraction", "Drug reaching the tumour", "%", 100.0},

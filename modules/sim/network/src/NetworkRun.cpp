@@ -220,6 +220,9 @@ std::vector<ParameterSpec> networkParameters()
          "Terminal resistance of the tumour's outlets times this (below 1 for a hypervascular tumour)."},
         {"filling_steps", "Filling steps", "", 1000.0, 10.0, 100000.0, "Filling",
          "Time steps from the start of the injection to the last outlet's arrival.", Kind::Integer},
+        {"working_angle", "Working C-arm angle", "", 1.0, 0.0, 1.0, "Working angle",
+         "1: the LAO/RAO and cranial/caudal angles that show the path from the root to the tip with the least "
+         "foreshortening and overlap (WorkingAngle.h); 0: none.", Kind::Integer},
     };
     for (ParameterSpec& spec : territoryParameters())
         specs.push_back(spec);
@@ -405,6 +408,19 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
             r.ranking = rankTipPositions(net, r.tumourOutlets, solveAt, progress.subRange(0.2, 0.95));
             recordBestTip(r, net);
         }
+    }
+    if (p.get("working_angle") > 0.5 && r.tipNode != net.root)
+    {
+        const auto started = std::chrono::steady_clock::now();
+        const WorkingAngle& w = *(r.workingAngle = workingAngle(net, r.tipNode, progress.subRange(0.95, 0.99)));
+        r.metrics["working_lao_deg"] = w.angles.laoDeg;
+        r.metrics["working_cranial_deg"] = w.angles.cranialDeg;
+        r.metrics["working_foreshortening_percent"] = 100.0 * w.quality.foreshortening;
+        r.metrics["working_overlap_percent"] = 100.0 * w.quality.overlap;
+        r.metrics["frontal_foreshortening_percent"] = 100.0 * w.frontal.foreshortening;
+        r.metrics["frontal_overlap_percent"] = 100.0 * w.frontal.overlap;
+        r.metrics["working_angle_views"] = w.evaluated;
+        r.metrics["working_angle_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     }
     setFields(r, fluid, p.get("blood_density"));
     if (fluid.voidFraction > kBubblyVoidFractionLimit)

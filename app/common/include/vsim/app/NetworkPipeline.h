@@ -72,7 +72,8 @@ NetworkRunIds addNetworkRun(study::Study& study, const sim::network::NetworkRunR
 /// Writes a run into `folder`: network.json (the solved network with its fields), segments.csv (per segment:
 /// flow, drug flow, pressures, velocity, Reynolds number, filling times), outlets.csv (flow share and arrival
 /// time per outlet), filling.csv (every segment's filled length at 101 times up to the last arrival),
-/// metrics.json (`document`), and with a liver territory.nrrd (sim::network::territoryLabel) and feeders.csv. Throws vsim::Error when a file cannot be written.
+/// metrics.json (`document`), with a liver territory.nrrd (sim::network::territoryLabel) and feeders.csv, and
+/// with a working angle working-view.pgm and frontal-view.pgm (sim::network::dsaProjection). Throws vsim::Error when a file cannot be written.
 void writeNetworkRun(const std::filesystem::path& folder, const sim::network::NetworkRunResult& run,
                      const std::string& document);
 

@@ -31,6 +31,7 @@
 #include "vsim/sim/network/Targeting.h"
 #include "vsim/sim/network/Territories.h"
 #include "vsim/sim/network/TwoPhaseFluid.h"
+#include "vsim/sim/network/WorkingAngle.h"
 
 #include <functional>
 #include <map>
@@ -105,6 +106,8 @@ struct NetworkRunResult
     std::vector<Lesion> lesions;
     std::optional<Coverage> coverage;
     std::vector<Feeder> feeders;
+    /// The C-arm angle for the path from the root to the tip (working_angle 1 and a tip away from the root).
+    std::optional<WorkingAngle> workingAngle;
     std::map<std::string, double> metrics;
     std::vector<std::string> warnings;
     /// The flow solves (direct): Kirchhoff's balance against kConservationTolerance; with blood flow also the
