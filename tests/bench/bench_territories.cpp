@@ -10,6 +10,7 @@
 
 #include "GrownTree.h"
 
+#include "vsim/core/Median.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/NetworkRun.h"
 #include "vsim/sim/network/Territories.h"
@@ -26,13 +27,8 @@ using namespace vsim::sim::network;
 
 namespace {
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-double since(std::chrono::steady_clock::time_point start)
+/// Seconds since `start`.
+double secondsSince(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -57,11 +53,11 @@ int main(int argc, char** argv)
     {
         auto start = std::chrono::steady_clock::now();
         const LiverTerritories t = liverTerritories(network, liver, &tumour, parameters);
-        territories.push_back(since(start));
+        territories.push_back(secondsSince(start));
         voxels = t.voxels.size();
         start = std::chrono::steady_clock::now();
         const std::vector<Lesion> found = findLesions(t);
-        lesions.push_back(since(start));
+        lesions.push_back(secondsSince(start));
         VesselNetwork withOutlets = network;
         addTerritoryOutlets(withOutlets, t, parameters);
         const TipSolve solve = [&](int tip) {
@@ -71,10 +67,10 @@ int main(int argc, char** argv)
         const PerfusedTerritory perfused = perfusedTerritory(t, solve(withOutlets.root));
         const Coverage coverage = tumourCoverage(found, perfused);
         const std::vector<Feeder> feeders = findFeeders(withOutlets, t, found);
-        oneTip.push_back(since(start));
+        oneTip.push_back(secondsSince(start));
         start = std::chrono::steady_clock::now();
         candidates = rankTipsByCoverage(withOutlets, t, found, solve).size();
-        ranking.push_back(since(start));
+        ranking.push_back(secondsSince(start));
         if (coverage.grade != 'A' || feeders.empty())
             std::fprintf(stderr, "unexpected: grade %c from the root, %zu feeders\n", coverage.grade, feeders.size());
     }
