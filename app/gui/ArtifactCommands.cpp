@@ -5,6 +5,15 @@
 
 namespace vsim::gui {
 
+bool isUnusedArtifact(const study::Study& study, const std::string& id)
+{
+    for (const study::Artifact& artifact : study.artifacts())
+        for (const std::string& input : artifact.provenance.inputs)
+            if (input == id)
+                return false;
+    return true;
+}
+
 RenameArtifactCommand::RenameArtifactCommand(StudyDocument& document, std::string id, std::string newName)
     : m_document(document), m_id(std::move(id)), m_oldName(document.study().artifact(m_id).name),
       m_newName(std::move(newName))

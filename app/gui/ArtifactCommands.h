@@ -1,5 +1,7 @@
 #pragma once
 
+#include "vsim/study/Study.h"
+
 #include <QString>
 #include <QUndoCommand>
 
@@ -10,6 +12,9 @@
 namespace vsim::gui {
 
 class StudyDocument;
+
+/// True when no artifact of the study takes `id` as an input (a re-run may then replace it).
+bool isUnusedArtifact(const study::Study& study, const std::string& id);
 
 /// Renames an artifact; undo restores the old name.
 class RenameArtifactCommand : public QUndoCommand

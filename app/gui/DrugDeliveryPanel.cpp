@@ -8,6 +8,7 @@
 #include "vsim/sim/network/Tracers.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -46,8 +47,10 @@ QString number(double value, int decimals) { return QString::number(value, 'f', 
 DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     : QWidget(parent), m_view(view), m_summary(new QTextBrowser(this)), m_outlets(new QTableWidget(this)),
       m_projection(new NetworkProjectionView(this)), m_player(new RunPlayer(this)), m_tip(new QLineEdit(this)), m_tumour(new QLineEdit(this)), m_controls(new QLineEdit(this)),
-      m_liverLabel(new QComboBox(this)), m_tumourLabel(new QComboBox(this)), m_tumourRadius(new QDoubleSpinBox(this))
+      m_liverLabel(new QComboBox(this)), m_tumourLabel(new QComboBox(this)),
+      m_keep(new QCheckBox(tr("Keep this run (the next one is added beside it)"), this)), m_tumourRadius(new QDoubleSpinBox(this))
 {
+    m_keep->setObjectName("drugKeep");
     m_liverLabel->setObjectName("drugLiverLabel");
     m_liverLabel->setToolTip(tr("The liver as a label: perfusion territories, coverage grade and feeders"));
     m_tumourLabel->setObjectName("drugTumourLabel");
@@ -81,6 +84,7 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     setup->addRow(tr("Control points"), row(m_controls, pickControl));
     setup->addRow(tr("Liver label"), m_liverLabel);
     setup->addRow(tr("Tumour label"), m_tumourLabel);
+    setup->addRow(QString(), m_keep);
     setup->addRow(QString(), run);
     connect(pickTip, &QPushButton::clicked, this, [this] { startPicking(Pick::Tip); });
     connect(pickTumour, &QPushButton::clicked, this, [this] { startPicking(Pick::TumourCentre); });
@@ -146,6 +150,10 @@ void DrugDeliveryPanel::setRequest(const DrugDeliveryRequest& request)
     m_liverLabel->setCurrentIndex(std::max(0, m_liverLabel->findData(request.liverLabel)));
     m_tumourLabel->setCurrentIndex(std::max(0, m_tumourLabel->findData(request.tumourLabel)));
 }
+
+bool DrugDeliveryPanel::keepsRun() const { return m_keep->isChecked(); }
+
+void DrugDeliveryPanel::clearKeep() { m_keep->setChecked(false); }
 
 void DrugDeliveryPanel::setLabelChoices(const std::vector<std::pair<QString, QString>>& labels)
 {

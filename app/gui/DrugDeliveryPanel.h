@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLineEdit;
@@ -62,6 +63,9 @@ public:
     Pick picking() const { return m_pick; }
     DrugDeliveryRequest request() const;
     void setRequest(const DrugDeliveryRequest& request);
+    /// "Keep this run": the next run adds to it instead of replacing it; cleared by each run.
+    bool keepsRun() const;
+    void clearKeep();
     /// The label artifacts (id, name) the liver and tumour may be chosen from; keeps the choices still offered.
     void setLabelChoices(const std::vector<std::pair<QString, QString>>& labels);
 
@@ -86,6 +90,7 @@ private:
     Pick m_pick = Pick::None;
     QLineEdit *m_tip, *m_tumour, *m_controls;
     QComboBox *m_liverLabel, *m_tumourLabel;
+    QCheckBox* m_keep;
     QDoubleSpinBox* m_tumourRadius;
     std::shared_ptr<const sim::network::NetworkRunResult> m_run;
     QTextBrowser* m_summary;

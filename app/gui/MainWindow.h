@@ -6,6 +6,7 @@
 #include "StudyDocument.h"
 #include "TaskRunner.h"
 #include "ViewState.h"
+#include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Hounsfield.h"
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Parameters.h"
@@ -283,6 +284,7 @@ private:
     ParameterSet m_networkParameters;
     ParameterSet m_bloodFlowSetup, m_injectionSetup, m_sphParameters;
     DrugDeliveryRequest m_drugRequest;
+    app::NetworkRunIds m_lastDrugRun; ///< the drug run this window made last: the next replaces it unless kept
     DrugDeliveryPanel* m_drugPanel = nullptr;
     QDockWidget* m_drugDock = nullptr;
     InteractiveWall* m_interactiveWall = nullptr;

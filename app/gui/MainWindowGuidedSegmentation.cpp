@@ -14,20 +14,6 @@
 #include <QStatusBar>
 
 namespace vsim::gui {
-namespace {
-
-/// True when no artifact of the study takes `id` as an input.
-bool isUnused(const study::Study& study, const std::string& id)
-{
-    for (const study::Artifact& artifact : study.artifacts())
-        for (const std::string& input : artifact.provenance.inputs)
-            if (input == id)
-                return false;
-    return true;
-}
-
-} // namespace
-
 void MainWindow::createSegmentationPointsDock()
 {
     m_pointsPanel = new SegmentationPointsPanel(this);
@@ -106,7 +92,7 @@ bool MainWindow::segmentFromPoints(const imaging::SegmentationRequest& request)
             const std::string previous = m_guidedLabelId;
             // A re-run replaces the label of the run before while it is the newest label and nothing uses it.
             const bool replaces = !previous.empty() && study.hasArtifact(previous) &&
-                                  app::newestLumenLabel(study) == previous && isUnused(study, previous);
+                                  app::newestLumenLabel(study) == previous && isUnusedArtifact(study, previous);
             const std::string id =
                 app::recordGuidedSegmentation(study, outcome->segmentation, request, parameters, imageId);
             m_guidedLabelId = id;

@@ -108,11 +108,25 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
             std::vector<std::string> inputs{centerlinesId};
             if (!labelId.empty())
                 inputs.push_back(labelId);
-            const app::NetworkRunIds ids = app::addNetworkRun(m_document.study(), *run, m_networkParameters, inputs, source);
+            // One drug run replaces the one before (made in this window) unless the user kept it or something uses it.
+            study::Study& study = m_document.study();
+            const app::NetworkRunIds previous = m_lastDrugRun;
+            const bool replaces = !previous.network.empty() && study.hasArtifact(previous.network) &&
+                                  study.hasArtifact(previous.run) && !(m_drugPanel && m_drugPanel->keepsRun()) &&
+                                  isUnusedArtifact(study, previous.network) && isUnusedArtifact(study, previous.run);
+            const app::NetworkRunIds ids = app::addNetworkRun(study, *run, m_networkParameters, inputs, source);
+            m_lastDrugRun = ids;
             m_scene.networkRuns[ids.network] = run;
             m_scene.networkRequests[ids.network] = m_drugRequest;
+            m_document.undoStack()->beginMacro(tr("Drug flow"));
+            if (replaces)
+                for (const std::string& id : {previous.network, previous.run})
+                    m_document.undoStack()->push(new RemoveArtifactCommand(m_document, id));
             m_document.undoStack()->push(
                 new AddedArtifactCommand(m_document, std::vector<std::string>{ids.run, ids.network}, tr("Drug flow")));
+            m_document.undoStack()->endMacro();
+            if (m_drugPanel)
+                m_drugPanel->clearKeep();
         });
 }
 

@@ -5,7 +5,8 @@
 // the 3D view and the 2D projection; File > Export Report writes the PDF, the DICOM instance and the metrics.
 // Then chemoembolization planning (issue 19): a liver and a tumour label imported, chosen in the dock, Run: the
 // perfused territory over the MPR views (the territory palette) with the tip, the lesion and its feeders as
-// markers, the coverage grade in the dock and the study. Malformed input and a study without centerlines are
+// markers, the coverage grade in the dock and the study. A drug run replaces the one before unless kept (undo
+// brings it back). Malformed input and a study without centerlines are
 // refused with a message.
 
 #include "DicomFixtures.h"
@@ -20,6 +21,7 @@
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
 #include <QLineEdit>
@@ -111,6 +113,7 @@ private slots:
             qWarning("the run from the picked tip failed: %s", qPrintable(failure.value(1).toString()));
         QCOMPARE(failed.count(), 0);
         const study::Artifact picked = window.document().study().artifacts().back();
+        QVERIFY(!window.document().study().hasArtifact(run.id)); // one drug run replaces the one before
         QCOMPARE(QString::fromStdString(picked.provenance.parameters.at("tip")), panel->request().tip);
         qInfo("tumour share from the root %.3f, from the picked best tip %s", first, picked.attributes.at("tumour_fraction").c_str());
         QVERIFY(std::stod(picked.attributes.at("tumour_fraction")) > first);
@@ -181,10 +184,13 @@ private slots:
         liverBox->setCurrentIndex(liverBox->findData(QString::fromStdString(liverId)));
         tumourBox->setCurrentIndex(tumourBox->findData(QString::fromStdString(tumourId)));
         panel->findChild<QLineEdit*>("drugTip")->clear(); // from the root
+        panel->findChild<QCheckBox*>("drugKeep")->setChecked(true); // the picked run stays beside it
         panel->findChild<QPushButton*>("drugRun")->click();
         QVERIFY(vsim::test::waitForTask(window));
         QCOMPARE(failed.count(), 0);
         const study::Artifact planned = window.document().study().artifacts().back();
+        QVERIFY(window.document().study().hasArtifact(picked.id));
+        QVERIFY(!panel->keepsRun()); // cleared by the run
         QCOMPARE(planned.provenance.parameters.at("liver_label"), liverId);
         qInfo("chemoembolization from the root: grade %s, territory %s ml, %s feeder(s), lesion %s mm; best tip grade %s",
               planned.attributes.at("coverage_grade").c_str(), planned.attributes.at("perfused_volume_ml").c_str(),
@@ -204,6 +210,9 @@ private slots:
         window.document().undoStack()->undo(); // the liver label
 
         const std::size_t before = window.document().study().artifacts().size();
+        window.document().undoStack()->undo(); // the picked run goes, the one it replaced comes back
+        QCOMPARE(window.document().study().artifacts().size(), before);
+        QVERIFY(window.document().study().hasArtifact(run.id) && !window.document().study().hasArtifact(picked.id));
         window.document().undoStack()->undo(); // the network and its filling run go together
         QCOMPARE(window.document().study().artifacts().size(), before - 2);
     }
