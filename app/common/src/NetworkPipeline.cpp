@@ -202,6 +202,7 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
                            {"nodes", {segment.from, segment.to}},
                            {"lesion", f.lesion + 1},
                            {"enters_lesion_or_margin", f.entersLesion},
+                           {"entry_mm", {f.entryMm.x(), f.entryMm.y(), f.entryMm.z()}},
                            {"radius_mm", f.radiusMm},
                            {"drug_flow_ml_min", run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]}});
     }

@@ -575,7 +575,7 @@ std::vector<Feeder> findFeeders(const VesselNetwork& network, const LiverTerrito
             if (const int l = lesionAt(p); l >= 0)
             {
                 const auto& segment = network.segments[s];
-                feeders[int(s)] = {int(s), l, true, segment.from == upstream ? segment.startRadiusMm : segment.endRadiusMm};
+                feeders[int(s)] = {int(s), l, true, segment.from == upstream ? segment.startRadiusMm : segment.endRadiusMm, p};
                 break;
             }
     }
@@ -590,7 +590,11 @@ std::vector<Feeder> findFeeders(const VesselNetwork& network, const LiverTerrito
             {
                 const auto& segment = network.segments[s];
                 const bool fromUpstream = segment.from == fromRoot.upstreamNode[s];
-                feeders[int(s)] = {int(s), l, false, fromUpstream ? segment.startRadiusMm : segment.endRadiusMm};
+                const Eigen::Vector3d& a = network.nodes[std::size_t(segment.from)].positionMm;
+                const Eigen::Vector3d& b = network.nodes[std::size_t(segment.to)].positionMm;
+                const Eigen::Vector3d& centre = lesions[std::size_t(l)].centreMm;
+                feeders[int(s)] = {int(s), l, false, fromUpstream ? segment.startRadiusMm : segment.endRadiusMm,
+                                   (a - centre).norm() < (b - centre).norm() ? a : b};
                 break;
             }
     std::vector<Feeder> list;

@@ -138,6 +138,7 @@ struct Feeder
     int lesion = -1;          ///< the first lesion it feeds
     bool entersLesion = false; ///< its centerline enters the lesion or its margin (else: its tissue holds tumour)
     double radiusMm = 0.0;    ///< at its upstream end
+    Eigen::Vector3d entryMm = Eigen::Vector3d::Zero(); ///< where it enters the lesion or margin (else: its end nearest the lesion)
 };
 /// The feeders of the lesions (see above), by segment.
 std::vector<Feeder> findFeeders(const VesselNetwork& network, const LiverTerritories& territories,
