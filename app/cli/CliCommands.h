@@ -36,6 +36,8 @@ int segmentStudy(const Arguments& arguments, const Progress& progress);
 /// `sac --study S [--label ID] [--image ID] [--wall-thickness mm]`: the AAA sac (outer contour, thrombus, wall) of
 /// a lumen label as a label artifact, and its figures (SacCommand.cpp).
 int sacStudy(const Arguments& arguments, const Progress& progress);
+/// `segment-organ`: a liver or tumour label grown from points (OrganCommand.cpp).
+int segmentOrgan(const Arguments& arguments, const Progress& progress);
 /// `surface --study S [--label ID] [--target-vertices N] [--stl FILE] [--param key=value ...]`: adds the lumen
 /// surface of a vessel label to the study (and writes it as STL when asked).
 int surfaceStudy(const Arguments& arguments, const Progress& progress);
