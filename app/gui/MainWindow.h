@@ -119,6 +119,9 @@ public:
     /// solved network is added (undoable) and shown: the tree coloured by drug flow in 3D, the dock with the figures,
     /// the outlets and the filling player. False without centerlines or for malformed input.
     bool simulateDrugDelivery(const DrugDeliveryRequest& request);
+    /// Drug > Liver from Points: a liver label grown from the segmentation points panel's include points
+    /// (imaging::growOrgan), added to the study (undoable). False (with a message) without points.
+    bool growLiverFromPoints();
     DrugDeliveryPanel* drugDeliveryPanel() const { return m_drugPanel; }
     /// Runs the blood flow (SPH) through the vessels of the newest centerlines in the background (Flow > Blood Flow)
     /// with the Flow > Blood Flow Parameters; the run is added (undoable) and played, its stenosis figures in the
@@ -236,6 +239,7 @@ private:
     /// A drug run with a liver: its perfused territory over the MPR views (the territory palette), the tip, the
     /// lesions' centres and the feeders as markers, the coverage grade in the status bar.
     void showTerritory(const sim::network::NetworkRunResult& run);
+
     /// Fills the Measurements dock; each row keeps the patient position (mm) it jumps to.
     /// The measurement dock: one row per segment titled by its anatomical name (`names`, one per segment) of the
     /// centerlines `centerlinesId`; double-clicking a name renames the segment (undoable).

@@ -7,8 +7,10 @@
 #include "DrugDeliveryPanel.h"
 #include "MainWindow.h"
 #include "ParameterForm.h"
+#include "SegmentationPointsPanel.h"
 #include "ViewLayout.h"
 #include "vsim/app/NetworkPipeline.h"
+#include "vsim/imaging/OrganGrowing.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/viz/SliceView.h"
@@ -28,6 +30,7 @@ void MainWindow::createDrugMenu()
     m_documentActions << drug->addAction(tr("Drug &Delivery"), this, [this] {
         simulateDrugDelivery(m_drugPanel ? m_drugPanel->request() : m_drugRequest);
     });
+    m_documentActions << drug->addAction(tr("&Liver from Points"), this, [this] { growLiverFromPoints(); });
     m_documentActions << drug->addAction(tr("Drug &Parameters..."), this, [this] {
         editParametersInDialog(this, tr("Drug delivery parameters"), {{tr("Drug delivery"), &m_networkParameters}});
     });
@@ -156,6 +159,48 @@ void MainWindow::showDrugDeliveryRun(std::shared_ptr<const sim::network::Network
                                  .arg(run->twoPhase.orientation.outlets.size())
                                  .arg(run->filling.lastArrival, 0, 'f', 1),
                              8000);
+}
+
+bool MainWindow::growLiverFromPoints()
+{
+    if (!m_document.hasStudy())
+        return false;
+    const std::string imageId = newestArtifact(study::ArtifactKind::Image);
+    const std::vector<Eigen::Vector3d> points =
+        m_pointsPanel ? m_pointsPanel->request().includeMm : std::vector<Eigen::Vector3d>{};
+    if (imageId.empty() || points.empty())
+    {
+        showError(tr("Liver from points"), tr("Place include points inside the liver first (Vessels > Segment from "
+                                              "Points, on the MPR views), then grow the liver from them."));
+        return false;
+    }
+    auto grown = std::make_shared<imaging::OrganGrowing>();
+    const ParameterSet parameters(imaging::organGrowingParameters());
+    return m_tasks.run(
+        tr("Liver from points"),
+        [this, imageId, points, grown, parameters](const Progress& progress) {
+            *grown = imaging::growOrgan(m_document.study().loadImage(imageId), points, parameters, progress);
+        },
+        [this, imageId, points, grown, parameters] {
+            study::Provenance provenance;
+            provenance.command = "segment-organ";
+            provenance.inputs = {imageId};
+            provenance.parameters = parameters.valuesAsText();
+            provenance.parameters["organ"] = "liver";
+            std::string text;
+            for (const Eigen::Vector3d& p : points)
+                text += (text.empty() ? "" : "; ") + std::to_string(p.x()) + "," + std::to_string(p.y()) + "," + std::to_string(p.z());
+            provenance.parameters["points_mm"] = text;
+            const std::string id = m_document.study().addLabel(
+                grown->label, "liver (grown from " + std::to_string(points.size()) + " points)", provenance, grown->warnings);
+            m_scene.labels[id] = grown->label;
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Liver from points")));
+            statusBar()->showMessage(tr("Liver grown from %1 point(s): %2 ml; choose it as the liver label in the Drug "
+                                        "Delivery dock")
+                                         .arg(points.size())
+                                         .arg(grown->figures.at("volume_ml"), 0, 'f', 1),
+                                     8000);
+        });
 }
 
 void MainWindow::showTerritory(const sim::network::NetworkRunResult& run)

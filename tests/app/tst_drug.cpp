@@ -14,6 +14,7 @@
 #include "GuiTestMain.h"
 #include "MainWindow.h"
 #include "RunPlayer.h"
+#include "SegmentationPointsPanel.h"
 #include "NetworkProjectionView.h"
 #include "ViewLayout.h"
 #include "vsim/dicom/PhantomModel.h"
@@ -168,6 +169,18 @@ private slots:
                     liverLabel.at(i, j, k) = (p.array() >= lower.array() - 10.0).all() && (p.array() <= upper.array() + 10.0).all();
                     tumourLabel.at(i, j, k) = (p - centre).norm() <= m.at("tumour_radius_mm");
                 }
+        // Drug > Liver from Points: refused without points, then grown from an include point in the tissue.
+        QVERIFY(!window.growLiverFromPoints());
+        window.showSegmentationPoints();
+        window.segmentationPointsPanel()->addPoint(grid.indexToPatient(Eigen::Vector3d(120, 120, 75)), true);
+        QVERIFY(window.growLiverFromPoints());
+        QVERIFY(vsim::test::waitForTask(window));
+        const study::Artifact grownLiver = window.document().study().artifacts().back();
+        QCOMPARE(grownLiver.kind, study::ArtifactKind::Label);
+        QCOMPARE(grownLiver.provenance.command, std::string("segment-organ"));
+        qInfo("liver from points: %s", grownLiver.name.c_str());
+        window.document().undoStack()->undo();
+        QVERIFY(!window.document().study().hasArtifact(grownLiver.id));
         const fs::path labels = test::freshFolder("gui-drug", "labels");
         interop::writeNrrd(liverLabel, labels / "liver.nrrd", true);
         interop::writeNrrd(tumourLabel, labels / "tumour.nrrd", true);
