@@ -288,7 +288,8 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         const std::optional<LabelRegion> tumour =
             setup.tumourLabel ? std::optional<LabelRegion>(setup.tumourLabel->region()) : std::nullopt;
         r.territories = std::make_shared<const LiverTerritories>(
-            liverTerritories(net, setup.liver->region(), tumour ? &*tumour : nullptr, p, progress.subRange(0.0, 0.1)));
+            liverTerritories(net, setup.liver->region(), tumour ? &*tumour : nullptr, p, progress.subRange(0.0, 0.1),
+                             setup.tumour));
         r.lesions = findLesions(*r.territories);
     }
     const double territorySeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - territoriesStarted).count();

@@ -225,7 +225,8 @@ std::vector<ParameterSpec> territoryParameters()
 }
 
 LiverTerritories liverTerritories(const VesselNetwork& network, const LabelRegion& liver, const LabelRegion* tumour,
-                                  const ParameterSet& parameters, const Progress& progress)
+                                  const ParameterSet& parameters, const Progress& progress,
+                                  const std::function<bool(const Eigen::Vector3d&)>& tumourShape)
 {
     LiverTerritories t;
     t.geometry = liver.label->geometry();
@@ -240,9 +241,9 @@ LiverTerritories liverTerritories(const VesselNetwork& network, const LabelRegio
     if (t.voxels.empty())
         throw Error("the liver label has no voxel of the liver's value");
     t.tumour.assign(t.voxels.size(), 0);
-    if (tumour)
+    if (tumour || tumourShape)
         for (std::size_t v = 0; v < t.voxels.size(); ++v)
-            t.tumour[v] = u ? tumour->holds(u[t.voxels[v]]) : tumour->contains(t.position(v));
+            t.tumour[v] = u ? tumour->holds(u[t.voxels[v]]) : tumour ? tumour->contains(t.position(v)) : tumourShape(t.position(v));
     progress.report(0.1, "liver voxels");
 
     // The hepatic outlets, and the segments that lead to one: the vessels whose tissue is liver.

@@ -39,6 +39,7 @@
 #include "vsim/sim/network/Targeting.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -77,10 +78,12 @@ struct LiverTerritories
 /// tumour_perfusion_factor, outlet_model.
 std::vector<ParameterSpec> territoryParameters();
 
-/// The territories of `network`'s outlets in the liver (and the tumour, when given, which counts as liver too).
-/// Throws vsim::Error for an empty liver or a tree with no end in the liver.
+/// The territories of `network`'s outlets in the liver (and the tumour label, when given, which counts as liver
+/// too; else `tumourShape`, e.g. a sphere, marks the liver voxels it holds). Throws vsim::Error for an empty liver or
+/// a tree with no end in the liver.
 LiverTerritories liverTerritories(const VesselNetwork& network, const LabelRegion& liver, const LabelRegion* tumour,
-                                  const ParameterSet& parameters, const Progress& progress = {});
+                                  const ParameterSet& parameters, const Progress& progress = {},
+                                  const std::function<bool(const Eigen::Vector3d&)>& tumourShape = {});
 
 /// Terminal resistances from the territories (see above) for the outlets without a condition.
 void addTerritoryOutlets(VesselNetwork& network, const LiverTerritories& territories, const ParameterSet& parameters);
