@@ -6,6 +6,7 @@
 #include "vsim/app/DicomStudyImport.h"
 #include "vsim/app/GuidedSegmentationRecord.h"
 #include "vsim/app/NetworkPipeline.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/app/SegmentNames.h"
 #include "vsim/app/StudySummary.h"
 #include "vsim/app/VersionInfo.h"
@@ -337,8 +338,12 @@ int surfaceStudy(const Arguments& arguments, const Progress& progress)
 int skeletonStudy(const Arguments& arguments, const Progress& progress)
 {
     study::Study study = openStudyForWriting(arguments);
-    const std::string labelId = chooseArtifact(study, arguments.option("label"), study::ArtifactKind::Label,
-                                               "the study has no vessel label: run vascusim-cli segment first");
+    // Without --label, the newest lumen label: not a sac's labels nor an organ grown from points.
+    const std::string labelId = arguments.hasOption("label") ? arguments.option("label") : app::newestLumenLabel(study);
+    if (labelId.empty())
+        throw Error("the study has no vessel label: run vascusim-cli segment first");
+    if (!study.hasArtifact(labelId) || study.artifact(labelId).kind != study::ArtifactKind::Label)
+        throw Error("'" + labelId + "' is not a label artifact of the study");
     ParameterSet parameters(imaging::skeletonParameters());
     applyParameters(arguments, parameters);
     const imaging::SkeletonResult result =

@@ -277,7 +277,7 @@ bool MainWindow::extractSkeletonAndCenterlines()
 {
     if (!m_document.hasStudy())
         return false;
-    const std::string labelId = newestArtifact(study::ArtifactKind::Label);
+    const std::string labelId = app::newestLumenLabel(m_document.study()); // not a sac's labels nor a grown organ
     if (labelId.empty())
     {
         showError(tr("Skeleton and centerlines"), tr("The study has no vessel label: segment the vessels first."));

@@ -37,6 +37,13 @@ if(balance GREATER 1e-12 OR NOT outlets EQUAL 16 OR fed LESS 1 OR drop LESS 9 OR
                         "best tip ${best}\n${run}")
 endif()
 
+# An organ grown from a point is no vessel label: the skeleton step without --label keeps to the lumen label.
+run_cli(0 organ segment-organ --study ${study} --seed -84.73,-47.75,-261.32 --organ tumour)
+run_cli(0 reskeleton skeleton --study ${study})
+if(NOT organ MATCHES "grown from 1 point" OR NOT reskeleton MATCHES "^skeleton of label-2 ")
+    message(FATAL_ERROR "segment-organ, then skeleton without --label must read the lumen label:\n${organ}\n${reskeleton}")
+endif()
+
 # The tumour as a label: the phantom's truth label (its own values, the tumour 2) imported as a label.
 run_cli(0 imported import ${WORK}/ph/truth-label.nrrd --study ${study} --as-label)
 string(REGEX MATCH "as (label-[0-9]+)" ignored "${imported}")

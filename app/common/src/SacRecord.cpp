@@ -142,7 +142,8 @@ std::string newestLumenLabel(const study::Study& study)
 {
     std::string newest;
     for (const study::Artifact& artifact : study.artifacts())
-        if (artifact.kind == study::ArtifactKind::Label && !artifact.damaged && artifact.provenance.command != kSacCommand)
+        if (artifact.kind == study::ArtifactKind::Label && !artifact.damaged && artifact.provenance.command != kSacCommand &&
+            artifact.provenance.command != "segment-organ")
             newest = artifact.id;
     return newest;
 }

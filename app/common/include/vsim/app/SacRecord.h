@@ -34,7 +34,7 @@ std::optional<sim::fem::SacRegion> newestSacRegion(const study::Study& study, co
 /// sac).
 std::function<double(const Eigen::Vector3d&, const Eigen::Vector3d&)> sacOuterWallDistance(const LabelVolume& sacLabels);
 
-/// The newest label that is a lumen (not a sac's labels); "" when none.
+/// The newest label that is a lumen (not a sac's labels, not an organ grown from points); "" when none.
 std::string newestLumenLabel(const study::Study& study);
 
 /// The label the centerlines were traced from (a label among their provenance inputs, through the skeleton they came
