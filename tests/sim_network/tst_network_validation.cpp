@@ -1,5 +1,6 @@
 // The drug network's analytic cases (NetworkValidation.h): Hagen-Poiseuille limit 1e-12, conical closed form
-// against numeric integration 1e-9, Kirchhoff conservation 1e-12, bifurcation and confluence networks 1e-9.
+// against numeric integration 1e-9, Kirchhoff conservation 1e-12, bifurcation and confluence networks 1e-9, the
+// catheter's annulus 1e-12, blood and injection mixed at a confluence 1e-9, the two-phase split shift 1e-9.
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/network/NetworkValidation.h"

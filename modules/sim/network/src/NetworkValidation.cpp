@@ -217,8 +217,8 @@ ValidationResult twoPhaseSplit()
     const double t = 2e9, qb = units::mlPerMinToM3PerS(100.0), q = units::mlPerMinToM3PerS(10.0), catheter = 0.45e-3;
     const double muBlood = 3.5e-3;
     addPipe(network, 0, 1, ra, la);
-    const int s12 = addPipe(network, 1, 2, ra, la), s23 = addPipe(network, 2, 3, rt, lt), s14 = addPipe(network, 1, 4, rb, lb);
-    (void)s12;
+    addPipe(network, 1, 2, ra, la);
+    const int s23 = addPipe(network, 2, 3, rt, lt), s14 = addPipe(network, 1, 4, rb, lb);
     network.root = 0;
     network.outlets = {{3, VesselNetwork::Outlet::Type::Resistance, 1300.0, t}, {4, VesselNetwork::Outlet::Type::Resistance, 1300.0, t}};
     auto pipe = [](double radiusMm, double lengthMm) { return 8.0 * lengthMm * 1e-3 / (std::numbers::pi * std::pow(radiusMm * 1e-3, 4)); };

@@ -9,6 +9,11 @@
 //                        pressures: flows and pressures equal the closed-form solution (1e-9)
 //  network-confluence    a second inlet held at a pressure joining the injected branch before one outlet: the
 //                        same (1e-9)
+//  network-annulus       a catheter in a pipe: the annulus's Hagen-Poiseuille resistance (1e-12); a cone's panels
+//  network-mixing        blood from the root, an injection at the tip and a second inlet at a confluence: flows
+//                        and injected fractions against a hand-solved 3 x 3 system (1e-9)
+//  network-two-phase-split  the injected mixture's viscosity shifts the split between the tip's branch and its
+//                        sibling: flows against the closed form (1e-9), the shift itself to 1e-7 % points
 
 #include "vsim/core/Progress.h"
 #include "vsim/core/Validation.h"
