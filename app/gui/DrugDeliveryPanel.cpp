@@ -209,11 +209,12 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
                            .arg(number(f.radiusMm, 1));
         text += tr("<br>Feeders: %1.").arg(feeders.isEmpty() ? tr("none found") : feeders.join("; "));
         QStringList nonTarget;
+        const std::vector<std::vector<int>> incident = r.network.incidentSegments();
         for (const auto& [node, share] : r.perfused->extrahepaticDrug)
             if (share >= sim::network::kPerfusedShare)
                 nonTarget << tr("%1 %2 %")
-                                 .arg(QString::fromStdString(sim::network::branchName(
-                                          r.network, r.network.incidentSegments()[std::size_t(node)].front())).toHtmlEscaped())
+                                 .arg(QString::fromStdString(sim::network::branchName(r.network, incident[std::size_t(node)].front()))
+                                          .toHtmlEscaped())
                                  .arg(number(100.0 * share, 1));
         if (!nonTarget.isEmpty())
             text += tr("<br>Drug leaving the liver: %1.").arg(nonTarget.join("; "));

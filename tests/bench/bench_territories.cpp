@@ -13,7 +13,7 @@
 #include "vsim/core/Median.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/NetworkRun.h"
-#include "vsim/sim/network/Territories.h"
+#include "vsim/sim/network/Lesions.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,9 +1,9 @@
-// The spatial queries against brute force: NearestPoint (the nearest of a point set, exact, queries inside and far
-// outside the set's box) and squaredDistanceTransform (exact squared distances on an anisotropic grid), on three
-// seeds each.
+// The spatial queries against brute force, on three seeds each: NearestPoint (tests/support: the nearest of a point
+// set for the grown trees' truth; exact, queries inside and far outside the set's box) and squaredDistanceTransform
+// (core; exact squared distances on an anisotropic grid).
 
 #include "vsim/core/DistanceTransform.h"
-#include "vsim/core/NearestPoint.h"
+#include "NearestPoint.h"
 
 #include <QtTest>
 

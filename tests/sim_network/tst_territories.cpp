@@ -1,4 +1,4 @@
-// Perfusion territories, coverage and feeders (Territories.h) against arterial trees grown far below CT resolution
+// Perfusion territories, coverage and feeders (Territories.h, Lesions.h) against arterial trees grown far below CT resolution
 // (tests/support/GrownTree.h): the estimator sees the visible tree only; the truth is the hidden terminals'.
 // Issue 19 asks territory Dice >= 0.8, feeder sensitivity >= 90 % and precision >= 80 %, and the coverage grade
 // equal to the truth's for three tip positions; ten seeds.
@@ -8,7 +8,7 @@
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/FlowSolver.h"
 #include "vsim/sim/network/NetworkRun.h"
-#include "vsim/sim/network/Territories.h"
+#include "vsim/sim/network/Lesions.h"
 
 #include <QtTest>
 

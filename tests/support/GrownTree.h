@@ -13,7 +13,7 @@
 // vessel is visible from `visibleRadiusMm` up (chains of visible pieces merged into one segment with a path).
 
 #include "vsim/core/ImageVolume.h"
-#include "vsim/core/NearestPoint.h"
+#include "NearestPoint.h"
 #include "vsim/core/VesselNetwork.h"
 
 #include <Eigen/Geometry>

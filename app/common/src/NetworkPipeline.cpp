@@ -208,14 +208,17 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
     }
     nlohmann::json nonTarget = nlohmann::json::array(); // the drug leaving the liver, outlet by outlet
     if (run.perfused)
+    {
+        const std::vector<std::vector<int>> incident = run.network.incidentSegments();
         for (const auto& [node, share] : run.perfused->extrahepaticDrug)
             if (share > 0.0)
             {
-                const int segment = run.network.incidentSegments()[std::size_t(node)].front();
+                const int segment = incident[std::size_t(node)].front();
                 nonTarget.push_back({{"outlet", node},
                                      {"name", sim::network::branchName(run.network, segment)},
                                      {"drug_percent", 100.0 * share}});
             }
+    }
     return nlohmann::json{{"source", source},
                           {"metrics", run.metrics},
                           {"run_status", nlohmann::json::parse(runStatusJson(run.status))},

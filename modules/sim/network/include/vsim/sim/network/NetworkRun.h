@@ -29,6 +29,7 @@
 #include "vsim/sim/network/Filling.h"
 #include "vsim/sim/network/FlowSolver.h"
 #include "vsim/sim/network/Targeting.h"
+#include "vsim/sim/network/Lesions.h"
 #include "vsim/sim/network/Territories.h"
 #include "vsim/sim/network/TwoPhaseFluid.h"
 #include "vsim/sim/network/WorkingAngle.h"

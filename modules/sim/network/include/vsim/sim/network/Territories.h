@@ -23,20 +23,12 @@
 // vessel carries, however small that vessel's flow. The drug reaching an outlet is shared within the tissue dealt
 // to it by perfusion (f for tumour).
 //
-// Coverage (the technical-success grading of TACE): each lesion (a 6-connected component of the tumour) with a
-// margin of 5 mm (longest diameter under 25 mm) or 10 mm (25 mm and over) of liver around it: grade A when the
-// lesion and its margin are perfused (kCoveredShare of their voxels: a voxel's width of boundary is forgiven), B
-// when the lesion is and the margin only partly, C when the lesion is not. The study's grade is its worst lesion's.
-//
-// Feeders: the segments whose centerline enters a lesion or its margin (a point of it inside, its upstream node,
-// towards the root, outside), and the segments whose tissue holds 1 % of a lesion or more.
 
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/core/Progress.h"
 #include "vsim/core/VesselNetwork.h"
 #include "vsim/sim/network/FlowSolver.h"
-#include "vsim/sim/network/Targeting.h"
 
 #include <cstdint>
 #include <functional>
@@ -90,8 +82,6 @@ void addTerritoryOutlets(VesselNetwork& network, const LiverTerritories& territo
 
 /// A segment's tissue counts as perfused from this share of the largest injected fraction up.
 inline constexpr double kPerfusedShare = 1e-3;
-/// A lesion or margin counts as covered from this share of its voxels up.
-inline constexpr double kCoveredShare = 0.99;
 
 struct PerfusedTerritory
 {
@@ -108,62 +98,5 @@ struct PerfusedTerritory
 
 /// The tip's territory, from a solved flow (its segment flows, injected fractions, outletInjectate, injectedFlow).
 PerfusedTerritory perfusedTerritory(const LiverTerritories& territories, const FlowSolution& flow);
-
-struct Lesion
-{
-    Eigen::Vector3d centreMm = Eigen::Vector3d::Zero();
-    double volumeMl = 0.0;
-    double diameterMm = 0.0;         ///< longest diameter (largest distance between two of its voxels' centres)
-    double marginMm = 0.0;           ///< 5 or 10
-    std::vector<std::size_t> voxels; ///< indices into LiverTerritories::voxels
-    std::vector<std::size_t> margin; ///< the margin's liver voxels (not in any lesion)
-};
-
-/// The lesions of the territories' tumour, largest first, each with its margin.
-std::vector<Lesion> findLesions(const LiverTerritories& territories, const Progress& progress = {});
-
-struct LesionCoverage
-{
-    double coveredPercent = 0.0;       ///< of the lesion's voxels
-    double marginCoveredPercent = 0.0; ///< of its margin's
-    char grade = 'C';
-};
-struct Coverage
-{
-    std::vector<LesionCoverage> lesions; ///< as findLesions
-    char grade = 'C';                    ///< the worst lesion's ('-' when there is none)
-};
-Coverage tumourCoverage(const std::vector<Lesion>& lesions, const PerfusedTerritory& perfused);
-
-struct Feeder
-{
-    int segment = -1;
-    int lesion = -1;          ///< the first lesion it feeds
-    bool entersLesion = false; ///< its centerline enters the lesion or its margin (else: its tissue holds tumour)
-    double radiusMm = 0.0;    ///< at its upstream end
-    Eigen::Vector3d entryMm = Eigen::Vector3d::Zero(); ///< where it enters the lesion or margin (else: its end nearest the lesion)
-};
-/// The feeders of the lesions (see above), by segment.
-std::vector<Feeder> findFeeders(const VesselNetwork& network, const LiverTerritories& territories,
-                                const std::vector<Lesion>& lesions);
-
-/// Values of territoryLabel.
-enum TerritoryLabelValue : std::uint8_t
-{
-    kLiverNotPerfused = 1,
-    kLiverPerfused = 2,
-    kTumourPerfused = 3,
-    kTumourMissed = 4,   ///< a lesion's voxel not perfused
-    kMarginMissed = 5,   ///< a margin's voxel not perfused
-};
-/// The perfused territory over the liver's grid for viewing over the CT (values above; 0 outside the liver).
-LabelVolume territoryLabel(const LiverTerritories& territories, const PerfusedTerritory& perfused,
-                           const std::vector<Lesion>& lesions);
-
-/// Every candidate tip (tipCandidates) with the flow from `solve`: ranked by coverage grade, then the lesions'
-/// share perfused, then the least non-tumour liver perfused (the more selective), then nearer the root.
-std::vector<TipCandidate> rankTipsByCoverage(const VesselNetwork& network, const LiverTerritories& territories,
-                                             const std::vector<Lesion>& lesions, const TipSolve& solve,
-                                             const Progress& progress = {});
 
 } // namespace vsim::sim::network

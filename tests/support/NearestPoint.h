@@ -1,12 +1,43 @@
-#include "vsim/core/NearestPoint.h"
+#pragma once
+
+// Nearest of a fixed set of points (mm) to a query point: the points binned on a uniform grid, the query searching
+// shells of cells outwards until no nearer point can remain. Exact (ties go to the lower index). The grown trees'
+// truth territories (GrownTree.h): each voxel to its nearest hidden terminal.
+
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace vsim {
 
-NearestPoint::NearestPoint(std::vector<Eigen::Vector3d> points, double cellMm) : m_points(std::move(points)), m_cell(cellMm)
+class NearestPoint
+{
+public:
+    /// `cellMm` about the spacing of the points; an empty set answers every query with -1.
+    NearestPoint(std::vector<Eigen::Vector3d> points, double cellMm);
+
+    /// Index of the nearest point, and its distance (mm) into `distanceMm` when given; -1 for an empty set.
+    int nearest(const Eigen::Vector3d& query, double* distanceMm = nullptr) const;
+    /// True when some point lies within `radiusMm` of `query` (stops at the first).
+    bool anyWithin(const Eigen::Vector3d& query, double radiusMm) const;
+
+    const std::vector<Eigen::Vector3d>& points() const { return m_points; }
+
+private:
+    Eigen::Vector3i cellOf(const Eigen::Vector3d& p) const;
+    std::vector<Eigen::Vector3d> m_points;
+    double m_cell = 1.0;
+    Eigen::Vector3d m_lower = Eigen::Vector3d::Zero();
+    Eigen::Vector3i m_cells = Eigen::Vector3i::Zero();
+    std::vector<int> m_start; ///< per cell: first entry in m_order (counting sort), size cells + 1
+    std::vector<int> m_order; ///< point indices by cell
+};
+
+
+inline NearestPoint::NearestPoint(std::vector<Eigen::Vector3d> points, double cellMm) : m_points(std::move(points)), m_cell(cellMm)
 {
     if (m_points.empty())
         return;
@@ -36,13 +67,13 @@ NearestPoint::NearestPoint(std::vector<Eigen::Vector3d> points, double cellMm) :
         m_order[std::size_t(next[cell[i]]++)] = int(i);
 }
 
-Eigen::Vector3i NearestPoint::cellOf(const Eigen::Vector3d& p) const
+inline Eigen::Vector3i NearestPoint::cellOf(const Eigen::Vector3d& p) const
 {
     const Eigen::Vector3d c = ((p - m_lower) / m_cell).array().floor();
     return c.cwiseMax(Eigen::Vector3d::Zero()).cwiseMin((m_cells - Eigen::Vector3i::Ones()).cast<double>()).cast<int>();
 }
 
-int NearestPoint::nearest(const Eigen::Vector3d& query, double* distanceMm) const
+inline int NearestPoint::nearest(const Eigen::Vector3d& query, double* distanceMm) const
 {
     if (m_points.empty())
     {
@@ -89,7 +120,7 @@ int NearestPoint::nearest(const Eigen::Vector3d& query, double* distanceMm) cons
     return best;
 }
 
-bool NearestPoint::anyWithin(const Eigen::Vector3d& query, double radiusMm) const
+inline bool NearestPoint::anyWithin(const Eigen::Vector3d& query, double radiusMm) const
 {
     if (m_points.empty())
         return false;
