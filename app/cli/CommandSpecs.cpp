@@ -133,16 +133,20 @@ std::vector<CommandSpec> declareCommands()
         {"simulate network", 1, 1,
          {kStudy, required("tip"), value("rate"), value("tip-pressure"), value("void-fraction"), value("tumour"),
           value("tumour-label"), value("tumour-value"), value("liver-label"), value("liver-value"), repeatable("control"),
-          value("network"),
+          value("network"), value("inlet"), repeatable("add-feeder"), repeatable("remove-feeder"),
           value("default-outlets"), value("centerlines"), kParam, value("out"), kWait},
          "simulate network --study <study.vsim> --tip NODE|x,y,z|root [--rate 2ml/min|g/min | --tip-pressure mmHg]\n"
          "                 [--void-fraction 0.1] [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]]\n"
-         "                 [--liver-label ID [--liver-value N]] [--control x,y,z ...] [--network FILE\n"
-         "                 [--default-outlets murray]] [--param key=value ...] [--out DIR]\n"
+         "                 [--liver-label ID [--liver-value N]] [--add-feeder SEGMENT ...] [--remove-feeder SEGMENT ...]\n"
+         "                 [--inlet NAME|SEGMENT] [--control x,y,z ...] [--network FILE [--default-outlets murray]]\n"
+         "                 [--param key=value ...] [--out DIR]\n"
          "    drug delivery (arterial blood carrying the two-phase drug through a conical Hagen-Poiseuille network):\n"
          "    flow split, the catheter (wedge, reflux), filling, control points two-phase vs liquid, tumour share and\n"
          "    the best tip positions; with a liver label: perfusion territories, the tip's perfused territory, the\n"
-         "    lesions' coverage grade (A/B/C, 5 / 10 mm margin) and feeders, tips ranked by coverage",
+         "    lesions' coverage grade (A/B/C, 5 / 10 mm margin) and feeders, tips ranked by coverage. --inlet: blood\n"
+         "    enters through that segment (e.g. \"celiac trunk\", \"common hepatic artery\"; default the largest end)\n"
+         "    and the tree beyond it is modelled (node numbers are then the kept tree's); --add-feeder and\n"
+         "    --remove-feeder correct the feeders found (segment numbers as feeders.csv lists them)",
          simulateNetwork},
         {"simulate sph", 1, 1,
          {kStudy, value("inlet"), value("outlet"), value("waveform"), value("profile"), value("spacing"), value("until"),

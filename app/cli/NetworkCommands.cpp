@@ -84,6 +84,8 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
         if (!labelId.empty())
             inputs.push_back(labelId);
     }
+    if (arguments.hasOption("inlet"))
+        source["inlet"] = arguments.option("inlet");
     const std::string tip = arguments.option("tip");
     if (tip.find(',') != std::string::npos)
         setup.tipPointMm = point(parseNumbers(tip, ',', 3, "tip"));
@@ -123,6 +125,12 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
     for (const auto& [name, value] : arguments.options)
         if (name == "control")
             setup.controlPointsMm.push_back(point(parseNumbers(value, ',', 3, "control")));
+        else if (name == "add-feeder" || name == "remove-feeder")
+        {
+            std::string& listed = source[name == "add-feeder" ? "feeders_added" : "feeders_removed"];
+            listed += (listed.empty() ? "" : ",") + value;
+        }
+    app::applyRecordedChoices(setup, source);
 
     sim::network::NetworkRunResult run = sim::network::runNetwork(setup, progress.subRange(0.3, 0.95));
     run.warnings.insert(run.warnings.begin(), warnings.begin(), warnings.end());

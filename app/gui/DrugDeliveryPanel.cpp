@@ -16,11 +16,13 @@
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QTableWidget>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <set>
 
 namespace vsim::gui {
 
@@ -42,11 +44,29 @@ namespace {
 
 QString number(double value, int decimals) { return QString::number(value, 'f', decimals); }
 
+/// `text` (segment numbers, "3, 7") with `segment` in it or out of it, ascending; what is not a number is dropped.
+QString withSegment(const QString& text, int segment, bool in)
+{
+    std::set<int> segments;
+    for (const QString& part : text.split(',', Qt::SkipEmptyParts))
+        if (bool ok = false; part.trimmed().toInt(&ok), ok)
+            segments.insert(part.trimmed().toInt());
+    segments.erase(segment);
+    if (in)
+        segments.insert(segment);
+    QStringList parts;
+    for (int s : segments)
+        parts << QString::number(s);
+    return parts.join(", ");
+}
+
 } // namespace
 
 DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     : QWidget(parent), m_view(view), m_summary(new QTextBrowser(this)), m_outlets(new QTableWidget(this)),
       m_projection(new NetworkProjectionView(this)), m_player(new RunPlayer(this)), m_tip(new QLineEdit(this)), m_tumour(new QLineEdit(this)), m_controls(new QLineEdit(this)),
+      m_inlet(new QLineEdit(this)), m_feedersAdded(new QLineEdit(this)), m_feedersRemoved(new QLineEdit(this)),
+      m_feeders(new QTableWidget(this)),
       m_liverLabel(new QComboBox(this)), m_tumourLabel(new QComboBox(this)),
       m_keep(new QCheckBox(tr("Keep this run (the next one is added beside it)"), this)), m_tumourRadius(new QDoubleSpinBox(this))
 {
@@ -63,12 +83,21 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     m_tumour->setPlaceholderText(tr("x, y, z, radius mm; empty: none"));
     m_controls->setObjectName("drugControls");
     m_controls->setPlaceholderText(tr("x, y, z; ... mm; empty: the first branches"));
+    m_inlet->setObjectName("drugInlet");
+    m_inlet->setPlaceholderText(tr("largest end; or e.g. common hepatic artery, or a segment number"));
+    m_inlet->setToolTip(tr("Blood enters through this segment; the tree beyond it is modelled"));
+    m_feedersAdded->setObjectName("drugFeedersAdded");
+    m_feedersAdded->setPlaceholderText(tr("segment numbers, e.g. 3, 7"));
+    m_feedersRemoved->setObjectName("drugFeedersRemoved");
+    m_feedersRemoved->setPlaceholderText(tr("segment numbers; or untick a feeder below"));
     m_tumourRadius->setRange(1.0, 100.0);
     m_tumourRadius->setValue(15.0);
     m_tumourRadius->setSuffix(tr(" mm"));
     auto* pickTip = new QPushButton(tr("Pick"), this);
     auto* pickTumour = new QPushButton(tr("Pick"), this);
     auto* pickControl = new QPushButton(tr("Add"), this);
+    auto* pickFeeder = new QPushButton(tr("Pick"), this);
+    pickFeeder->setToolTip(tr("Click a branch of the shown run in the 3D view to add it as a feeder"));
     auto* run = new QPushButton(tr("Run"), this);
     run->setObjectName("drugRun");
     auto* setup = new QFormLayout;
@@ -84,11 +113,15 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     setup->addRow(tr("Control points"), row(m_controls, pickControl));
     setup->addRow(tr("Liver label"), m_liverLabel);
     setup->addRow(tr("Tumour label"), m_tumourLabel);
+    setup->addRow(tr("Blood enters at"), m_inlet);
+    setup->addRow(tr("Feeders added"), row(m_feedersAdded, pickFeeder));
+    setup->addRow(tr("Feeders removed"), m_feedersRemoved);
     setup->addRow(QString(), m_keep);
     setup->addRow(QString(), run);
     connect(pickTip, &QPushButton::clicked, this, [this] { startPicking(Pick::Tip); });
     connect(pickTumour, &QPushButton::clicked, this, [this] { startPicking(Pick::TumourCentre); });
     connect(pickControl, &QPushButton::clicked, this, [this] { startPicking(Pick::ControlPoint); });
+    connect(pickFeeder, &QPushButton::clicked, this, [this] { startPicking(Pick::Feeder); });
     connect(run, &QPushButton::clicked, this, [this] { emit runRequested(request()); });
     connect(m_view, &viz::VolumeView3D::pointPicked, this, &DrugDeliveryPanel::picked);
 
@@ -100,6 +133,16 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     m_outlets->horizontalHeader()->setStretchLastSection(true);
     m_outlets->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_outlets->setObjectName("drugOutletTable");
+    m_feeders->setObjectName("drugFeederTable");
+    m_feeders->setColumnCount(5);
+    m_feeders->setHorizontalHeaderLabels({tr("Feeder (tick: keep)"), tr("Segment"), tr("Radius (mm)"), tr("Found"), tr("Drug reaches it")});
+    m_feeders->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_feeders->horizontalHeader()->setStretchLastSection(true);
+    m_feeders->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    connect(m_feeders, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
+        if (item->column() == 0)
+            feederToggled(item->row());
+    });
     m_player->setObjectName("drugPlayer");
     m_player->setSpeed(4.0); // 40 filling steps a second
     auto* layout = new QVBoxLayout(this);
@@ -107,6 +150,7 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     layout->addWidget(m_summary);
     layout->addWidget(m_player);
     layout->addWidget(m_projection, 2);
+    layout->addWidget(m_feeders, 1);
     layout->addWidget(m_outlets, 1);
     connect(m_player, &RunPlayer::frameChanged, this, &DrugDeliveryPanel::showStep);
 }
@@ -131,15 +175,60 @@ void DrugDeliveryPanel::picked(const Eigen::Vector3d& p)
     case Pick::Tip: m_tip->setText(xyz); break;
     case Pick::TumourCentre: m_tumour->setText(xyz + QString(", %1").arg(m_tumourRadius->value(), 0, 'f', 1)); break;
     case Pick::ControlPoint: m_controls->setText(m_controls->text().isEmpty() ? xyz : m_controls->text() + "; " + xyz); break;
+    case Pick::Feeder:
+        if (m_run)
+            if (const int s = sim::network::nearestSegment(m_run->network, p).first; s >= 0)
+            {
+                m_feedersAdded->setText(withSegment(m_feedersAdded->text(), s, true));
+                m_feedersRemoved->setText(withSegment(m_feedersRemoved->text(), s, false));
+            }
+        break;
     case Pick::None: return;
     }
     startPicking(Pick::None);
 }
 
+void DrugDeliveryPanel::showFeeders()
+{
+    const QSignalBlocker quiet(m_feeders);
+    m_feeders->setRowCount(0);
+    if (!m_run)
+        return;
+    m_feeders->setRowCount(int(m_run->feeders.size()));
+    for (int row = 0; row < m_feeders->rowCount(); ++row)
+    {
+        const sim::network::Feeder& f = m_run->feeders[std::size_t(row)];
+        auto* name = new QTableWidgetItem(QString::fromStdString(sim::network::branchName(m_run->network, f.segment)));
+        name->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+        name->setCheckState(Qt::Checked);
+        name->setData(Qt::UserRole, f.segment);
+        name->setData(Qt::UserRole + 1, f.byHand);
+        m_feeders->setItem(row, 0, name);
+        m_feeders->setItem(row, 1, new QTableWidgetItem(QString::number(f.segment)));
+        m_feeders->setItem(row, 2, new QTableWidgetItem(number(f.radiusMm, 1)));
+        m_feeders->setItem(row, 3, new QTableWidgetItem(f.byHand ? tr("added by hand")
+                                                        : f.entersLesion ? tr("enters lesion + margin")
+                                                                         : tr("feeds the lesion")));
+        m_feeders->setItem(row, 4, new QTableWidgetItem(f.reached ? tr("yes") : tr("no")));
+    }
+}
+
+void DrugDeliveryPanel::feederToggled(int row)
+{
+    const QTableWidgetItem* item = m_feeders->item(row, 0);
+    const int segment = item->data(Qt::UserRole).toInt();
+    const bool keep = item->checkState() == Qt::Checked;
+    if (item->data(Qt::UserRole + 1).toBool()) // added by hand: unticked, it is no longer added
+        m_feedersAdded->setText(withSegment(m_feedersAdded->text(), segment, keep));
+    else
+        m_feedersRemoved->setText(withSegment(m_feedersRemoved->text(), segment, !keep));
+}
+
 DrugDeliveryRequest DrugDeliveryPanel::request() const
 {
-    return {m_tip->text(), m_tumour->text(), m_controls->text(), m_liverLabel->currentData().toString(),
-            m_tumourLabel->currentData().toString()};
+    return {m_tip->text(),          m_tumour->text(),       m_controls->text(),
+            m_liverLabel->currentData().toString(), m_tumourLabel->currentData().toString(),
+            m_inlet->text().trimmed(), m_feedersAdded->text().trimmed(), m_feedersRemoved->text().trimmed()};
 }
 
 void DrugDeliveryPanel::setRequest(const DrugDeliveryRequest& request)
@@ -147,6 +236,9 @@ void DrugDeliveryPanel::setRequest(const DrugDeliveryRequest& request)
     m_tip->setText(request.tip);
     m_tumour->setText(request.tumour);
     m_controls->setText(request.controls);
+    m_inlet->setText(request.inlet);
+    m_feedersAdded->setText(request.feedersAdded);
+    m_feedersRemoved->setText(request.feedersRemoved);
     m_liverLabel->setCurrentIndex(std::max(0, m_liverLabel->findData(request.liverLabel)));
     m_tumourLabel->setCurrentIndex(std::max(0, m_tumourLabel->findData(request.tumourLabel)));
 }
@@ -241,6 +333,7 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
         text += "<br><i>" + QString::fromStdString(warning).toHtmlEscaped() + "</i>";
     m_summary->setHtml(text);
 
+    showFeeders();
     m_outlets->setRowCount(int(r.twoPhase.outletFlow.size()));
     int row = 0;
     for (const auto& [node, flow] : r.twoPhase.outletFlow)

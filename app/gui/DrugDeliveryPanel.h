@@ -1,9 +1,10 @@
 #pragma once
 
 // The Drug Delivery dock: the next run's tip, tumour and control points (typed, or picked on the tree in the 3D
-// view), a run's key figures (tip pressure, tumour share, best tip, control points two-phase against liquid), the
-// outlets' shares and arrival times in a table, and the filling player: a time slider and Play, drawing the virtual
-// tubelets in the 3D view and in the 2D projection.
+// view), where blood enters, the liver and tumour labels and the feeders corrected by hand; a run's key figures
+// (blood, coverage, feeders, working angle, control points two-phase against liquid), its feeders and the outlets'
+// shares and arrival times in tables, and the filling player: a time slider and Play, drawing the virtual tubelets
+// in the 3D view and in the 2D projection.
 
 #include "vsim/sim/network/NetworkRun.h"
 
@@ -38,6 +39,8 @@ struct DrugDeliveryRequest
 {
     QString tip, tumour, controls;
     QString liverLabel, tumourLabel; ///< label artifact ids for territories and coverage ("" for none)
+    QString inlet; ///< the segment blood enters through: a name or number ("" : the tree's largest end)
+    QString feedersAdded, feedersRemoved; ///< the user's feeder corrections: segment numbers, "3, 7"
 };
 
 /// "x, y, z[, r]" (mm) as `count` numbers; empty text gives none; nullopt for a malformed entry.
@@ -57,6 +60,7 @@ public:
         Tip,
         TumourCentre,
         ControlPoint,
+        Feeder, ///< the shown run's segment nearest the click is added as a feeder
     };
     /// Turns picking on in the 3D view for `what` (None: off).
     void startPicking(Pick what);
@@ -75,6 +79,8 @@ public:
     void showStep(int step);
     double currentTimeS() const { return m_timeS; }
     QTableWidget* outletTable() const { return m_outlets; }
+    /// The shown run's feeders, one a row; unchecking a row removes that feeder in the next run (checking it keeps it).
+    QTableWidget* feederTable() const { return m_feeders; }
     NetworkProjectionView* projection() const { return m_projection; }
     /// The filling's player: the workstation's one time player (RunPlayer) over the run's filling steps.
     RunPlayer* player() const { return m_player; }
@@ -85,16 +91,19 @@ signals:
 
 private:
     void picked(const Eigen::Vector3d& pointMm);
+    void showFeeders();
+    void feederToggled(int row);
 
     viz::VolumeView3D* m_view;
     Pick m_pick = Pick::None;
-    QLineEdit *m_tip, *m_tumour, *m_controls;
+    QLineEdit *m_tip, *m_tumour, *m_controls, *m_inlet, *m_feedersAdded, *m_feedersRemoved;
     QComboBox *m_liverLabel, *m_tumourLabel;
     QCheckBox* m_keep;
     QDoubleSpinBox* m_tumourRadius;
     std::shared_ptr<const sim::network::NetworkRunResult> m_run;
     QTextBrowser* m_summary;
     QTableWidget* m_outlets;
+    QTableWidget* m_feeders;
     NetworkProjectionView* m_projection;
     RunPlayer* m_player;
     double m_timeS = 0.0;

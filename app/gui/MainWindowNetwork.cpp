@@ -88,13 +88,22 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
         source["liver_label"] = request.liverLabel.toStdString();
     if (!request.tumourLabel.isEmpty())
         source["tumour_label"] = request.tumourLabel.toStdString();
+    for (const auto& [key, text] : {std::pair{"inlet", request.inlet}, std::pair{"feeders_added", request.feedersAdded},
+                                    std::pair{"feeders_removed", request.feedersRemoved}})
+        if (!text.isEmpty())
+            source[key] = text.toStdString();
+    if (!(request.feedersAdded.isEmpty() && request.feedersRemoved.isEmpty()) && request.liverLabel.isEmpty())
+    {
+        showError(tr("Drug delivery"), tr("Feeders are corrected on a run with a liver label: choose the liver too."));
+        return false;
+    }
     m_drugRequest = request;
     auto run = std::make_shared<sim::network::NetworkRunResult>();
     auto warnings = std::make_shared<std::vector<std::string>>();
     const std::string labelId = app::labelOfCenterlines(m_document.study(), centerlinesId);
     return m_tasks.run(
         tr("Drug delivery"),
-        [this, setup, centerlinesId, run, warnings, request](const Progress& progress) mutable {
+        [this, setup, centerlinesId, run, warnings, request, source](const Progress& progress) mutable {
             const study::Study& study = m_document.study();
             if (!request.liverLabel.isEmpty())
                 setup.liver = app::sharedLabel(study, request.liverLabel.toStdString(), 0, "liver");
@@ -104,6 +113,7 @@ bool MainWindow::simulateDrugDelivery(const DrugDeliveryRequest& request)
                 setup.tumour = app::volumeRegion(study, request.tumourLabel.toStdString(), 0);
             }
             setup.network = app::buildStudyNetwork(study, centerlinesId, *warnings, progress.subRange(0.0, 0.4));
+            app::applyRecordedChoices(setup, source);
             *run = sim::network::runNetwork(setup, progress.subRange(0.4, 1.0));
             run->warnings.insert(run->warnings.begin(), warnings->begin(), warnings->end());
         },

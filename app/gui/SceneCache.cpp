@@ -33,8 +33,9 @@ sim::network::NetworkRunSetup recordedSetup(const study::Study& study, const stu
         const auto found = recorded.find(key);
         return found == recorded.end() ? QString() : QString::fromStdString(found->second);
     };
-    request = {text("tip"), text("tumour_mm"), text("control_points"), text("liver_label").section(':', 0, 0),
-               text("tumour_label").section(':', 0, 0)};
+    request = {text("tip"),   text("tumour_mm"),     text("control_points"), text("liver_label").section(':', 0, 0),
+               text("tumour_label").section(':', 0, 0), text("inlet"), text("feeders_added"), text("feeders_removed")};
+    app::applyRecordedChoices(setup, recorded);
     if (request.tip.contains(','))
     {
         const auto tip = numbersInText(request.tip, 3).value_or(std::vector<double>{});

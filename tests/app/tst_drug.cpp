@@ -218,6 +218,37 @@ private slots:
         QVERIFY(std::count_if(markers.begin(), markers.end(), [](const viz::SliceMarker& k) { return k.text.rfind("feeder", 0) == 0; }) >= 1);
         QVERIFY(panel->findChild<QTextBrowser*>("drugSummary")->toPlainText().contains("Coverage grade A"));
         window.grab().save(QString::fromStdString((test::freshFolder("gui-drug", "territory") / "territory.png").string()));
+
+        // Feeders corrected by hand: the first one found unticked in the dock's table, a segment that is none typed
+        // in; the next run lists them so, records the edits and replaces the run it corrects.
+        QTableWidget* feederTable = panel->feederTable();
+        QCOMPARE(feederTable->rowCount(), int(std::stod(planned.attributes.at("feeders"))));
+        const int removedFeeder = feederTable->item(0, 0)->data(Qt::UserRole).toInt();
+        feederTable->item(0, 0)->setCheckState(Qt::Unchecked);
+        QCOMPARE(panel->findChild<QLineEdit*>("drugFeedersRemoved")->text(), QString::number(removedFeeder));
+        int addedFeeder = 0;
+        for (int row = 0; row < feederTable->rowCount(); ++row)
+            if (feederTable->item(row, 0)->data(Qt::UserRole).toInt() == addedFeeder)
+                ++addedFeeder, row = -1;
+        panel->findChild<QLineEdit*>("drugFeedersAdded")->setText(QString::number(addedFeeder));
+        panel->findChild<QPushButton*>("drugRun")->click();
+        QVERIFY(vsim::test::waitForTask(window));
+        QCOMPARE(failed.count(), 0);
+        const study::Artifact corrected = window.document().study().artifacts().back();
+        QVERIFY(!window.document().study().hasArtifact(planned.id)); // replaced
+        QCOMPARE(corrected.provenance.parameters.at("feeders_removed"), std::to_string(removedFeeder));
+        QCOMPARE(std::stod(corrected.attributes.at("feeders_added_by_hand")), 1.0);
+        QCOMPARE(std::stod(corrected.attributes.at("feeders_removed_by_hand")), 1.0);
+        bool listedByHand = false;
+        for (int row = 0; row < feederTable->rowCount(); ++row)
+        {
+            const int segment = feederTable->item(row, 0)->data(Qt::UserRole).toInt();
+            QVERIFY(segment != removedFeeder);
+            listedByHand = listedByHand || (segment == addedFeeder && feederTable->item(row, 3)->text() == "added by hand");
+        }
+        QVERIFY(listedByHand);
+        window.document().undoStack()->undo(); // the corrected run; the planned one comes back
+        QVERIFY(window.document().study().hasArtifact(planned.id));
         window.document().undoStack()->undo(); // the planned run
         window.document().undoStack()->undo(); // the tumour label
         window.document().undoStack()->undo(); // the liver label

@@ -4,7 +4,7 @@
 # tumour as a label (the same share as the sphere), injection by tip pressure and by mass rate, a hand-written
 # network file, `validate network`, and bad input refused with a message (a tip off the tree, a void fraction of 1,
 # a network with a cycle, outlets without a condition, a rate and a tip pressure together, an unknown rate unit, a
-# tip pressure below the outlets').
+# tip pressure below the outlets'); chemoembolization planning from a named inlet with feeders corrected by hand.
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(study ${WORK}/hepatic.vsim)
@@ -55,6 +55,40 @@ string(JSON share_sphere GET "${run}" metrics tumour_fraction)
 if(fed_label LESS 1 OR NOT share_label EQUAL share_sphere)
     message(FATAL_ERROR "the tumour as a label: ${fed_label} outlets, share ${share_label} (sphere ${share_sphere})")
 endif()
+# Chemoembolization planning with the blood entering at a named vessel and the feeders corrected by hand: the liver
+# grown from a point in the tissue, the first branch named the common hepatic artery, a run from there, then the
+# same with one feeder found removed and one segment added; the edits need a liver, and an unknown name is refused
+# with the names the tree has.
+run_cli(0 liver segment-organ --study ${study} --seed 0,0,-300 --organ liver)
+string(REGEX MATCH "as (label-[0-9]+)" ignored "${liver}")
+set(liver_id ${CMAKE_MATCH_1})
+run_cli(0 ignored rename-segment --study ${study} --segment 15 --name "common hepatic artery")
+set(tace --study ${study} --tip root --liver-label ${liver_id} --tumour-label ${label_id} --tumour-value 2
+    --inlet "Common Hepatic Artery")
+run_cli(0 planned simulate network ${tace} --out ${WORK}/tace)
+file(STRINGS ${WORK}/tace/feeders.csv found_feeders)
+list(GET found_feeders 1 first_feeder)
+string(REGEX MATCH "^[0-9]+" removed_feeder "${first_feeder}")
+run_cli(0 edited simulate network ${tace} --remove-feeder ${removed_feeder} --add-feeder 0 --out ${WORK}/tace-edited)
+foreach(key feeders root_pressure_mmhg)
+    string(JSON planned_${key} GET "${planned}" metrics ${key})
+endforeach()
+string(JSON added GET "${edited}" metrics feeders_added_by_hand)
+string(JSON removed GET "${edited}" metrics feeders_removed_by_hand)
+string(JSON edited_feeders GET "${edited}" metrics feeders)
+string(JSON edited_inlet GET "${edited}" source inlet)
+file(READ ${WORK}/tace-edited/feeders.csv edited_csv)
+if(planned_feeders LESS 2 OR NOT planned_root_pressure_mmhg EQUAL 90 OR NOT added EQUAL 1 OR NOT removed EQUAL 1
+   OR NOT edited_feeders EQUAL planned_feeders OR NOT edited_inlet STREQUAL "Common Hepatic Artery"
+   OR NOT edited_csv MATCHES "\n0,\"[^\"]+\",[0-9]+,[0-9]+,1,0,1,1," OR edited_csv MATCHES "\n${removed_feeder},")
+    message(FATAL_ERROR "the inlet and the feeders corrected by hand:\n${planned}\n${edited}\n${edited_csv}")
+endif()
+run_cli(1 noliver simulate network --study ${study} --tip root --remove-feeder 1)
+run_cli(1 noname simulate network --study ${study} --tip root --inlet "celiac trunk")
+if(NOT noliver MATCHES "with a liver label" OR NOT noname MATCHES "its named segments: common hepatic artery")
+    message(FATAL_ERROR "feeder edits without a liver and an unknown inlet must be refused:\n${noliver}\n${noname}")
+endif()
+
 run_cli(1 notlabel simulate network --study ${study} --tip 20,-25,-305 --tumour-label skeleton-3)
 if(NOT notlabel MATCHES "must be a label or image")
     message(FATAL_ERROR "a skeleton as the tumour must be refused:\n${notlabel}")

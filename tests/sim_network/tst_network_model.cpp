@@ -9,6 +9,7 @@
 #include "vsim/sim/network/ConicalPipe.h"
 #include "vsim/sim/network/Filling.h"
 #include "vsim/sim/network/FillingSolver.h"
+#include "vsim/sim/network/Inlet.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/sim/network/NetworkRun.h"
 #include "vsim/sim/network/Tracers.h"
@@ -325,6 +326,44 @@ private slots:
         const BloodFlowSolution occluded = *runNetwork(setup).blood;
         QVERIFY(occluded.wedged && occluded.occlusion >= kWedgeOcclusion);
         QVERIFY(QString::fromStdString(occluded.wedgedBecause).contains("of the lumen at the tip"));
+    }
+
+    // Blood entering through a chosen segment (Inlet.h): the tree beyond it is kept and renumbered, its upper end the
+    // root held at the arterial pressure; a tip given in the whole tree's numbering follows; a tip beside the inlet
+    // and an unknown name are refused with what the tree offers.
+    void inletSegmentCutsTheTree()
+    {
+        VesselNetwork tree = binaryTree();
+        tree.segments[1].name = "Common hepatic artery";
+        tree.segments[2].name = "splenic artery";
+        QCOMPARE(inletSegment(tree, "common HEPATIC artery"), 1);
+        QCOMPARE(inletSegment(tree, "2"), 2);
+        QVERIFY(messageOf([&] { inletSegment(tree, "celiac trunk"); }).contains("Common hepatic artery, splenic artery"));
+        QVERIFY(messageOf([&] { inletSegment(tree, "9"); }).contains("does not exist"));
+        std::vector<int> map;
+        const VesselNetwork kept = treeBeyond(tree, 1, &map);
+        QCOMPARE(kept.segments.size(), std::size_t(3));
+        QCOMPARE(map, (std::vector<int>{-1, 0, 1, -1, 2, 3, -1, -1}));
+        QCOMPARE(kept.root, 0);
+        QCOMPARE(kept.segments[0].name, std::string("Common hepatic artery"));
+
+        NetworkRunSetup setup;
+        setup.network = tree;
+        setup.inletSegment = 1;
+        setup.tipNode = 2; // the whole tree's node 2: the kept tree's node 1
+        const NetworkRunResult r = runNetwork(setup);
+        QCOMPARE(r.tipNode, 1);
+        QCOMPARE(r.network.segments.size(), std::size_t(3));
+        QVERIFY(std::abs(r.metrics.at("root_pressure_mmhg") - 90.0) <= 1e-9);
+        QCOMPARE(r.blood->catheterSegments, (std::vector<int>{0}));
+        QVERIFY(r.blood->balance.relativeError() <= 1e-12 && r.status.converged());
+        // Held at 90 mmHg one junction further down, the hepatic branch takes more than it did behind the trunk.
+        NetworkRunSetup whole;
+        whole.network = tree;
+        whole.tipNode = 2;
+        QVERIFY(r.blood->inletFlow > runNetwork(whole).twoPhase.segmentFlow[1]);
+        setup.tipNode = 3; // beside the inlet
+        QVERIFY(messageOf([&] { runNetwork(setup); }).contains("beside it"));
     }
 
     // The injected-alone model (the thesis's) is still there, and the tip pressure belongs to it.

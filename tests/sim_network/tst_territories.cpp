@@ -5,6 +5,7 @@
 
 #include "GrownTree.h"
 
+#include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/FlowSolver.h"
 #include "vsim/sim/network/NetworkRun.h"
@@ -159,6 +160,35 @@ private slots:
         QVERIFY(superLeast >= 0.5);
         QVERIFY(sameGrades >= 27);
         QVERIFY(sensitivity >= 0.65 && precision >= 0.8);
+    }
+
+    // The radiologist's corrections: a feeder found and removed goes, a segment added is listed by hand with the
+    // lesion and its path's point nearest it; a segment both added and removed, or not in the tree, is refused.
+    void feedersEditedByHand()
+    {
+        test::GrowthOptions options;
+        options.terminals = 4000;
+        const test::GrownTree g = test::growTree(options);
+        VesselNetwork network = g.visible;
+        const LabelRegion tumour{&g.tumour, 1};
+        const LiverTerritories t = liverTerritories(network, {&g.liver, 1}, &tumour, ParameterSet(territoryParameters()));
+        const std::vector<Lesion> lesions = findLesions(t);
+        const std::vector<Feeder> found = findFeeders(network, t, lesions);
+        QVERIFY(!found.empty() && !lesions.empty());
+        int other = 0;
+        while (std::any_of(found.begin(), found.end(), [&](const Feeder& f) { return f.segment == other; }))
+            ++other;
+        const std::vector<Feeder> edited = editFeeders(found, network, lesions, {{other}, {found.front().segment}});
+        QCOMPARE(edited.size(), found.size());
+        QVERIFY(std::none_of(edited.begin(), edited.end(), [&](const Feeder& f) { return f.segment == found.front().segment; }));
+        const auto added = std::find_if(edited.begin(), edited.end(), [&](const Feeder& f) { return f.segment == other; });
+        QVERIFY(added != edited.end() && added->byHand && added->lesion == 0);
+        double nearest = 1e300;
+        for (const Eigen::Vector3d& p : network.segmentPath(std::size_t(other)))
+            nearest = std::min(nearest, (p - lesions[0].centreMm).norm());
+        QVERIFY((added->entryMm - lesions[0].centreMm).norm() <= nearest + 1e-9);
+        QVERIFY_THROWS_EXCEPTION(Error, editFeeders(found, network, lesions, {{other}, {other}}));
+        QVERIFY_THROWS_EXCEPTION(Error, editFeeders(found, network, lesions, {{int(network.segments.size())}, {}}));
     }
 };
 

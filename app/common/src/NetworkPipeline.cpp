@@ -9,6 +9,7 @@
 #include "vsim/imaging/VesselNames.h"
 #include "vsim/interop/NrrdFile.h"
 #include "vsim/sim/network/FillingSolver.h"
+#include "vsim/sim/network/Inlet.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/study/NetworkFile.h"
 
@@ -16,9 +17,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <sstream>
 
 namespace vsim::app {
 namespace {
@@ -154,6 +157,26 @@ sim::network::SharedLabel sharedLabel(const study::Study& study, const std::stri
     return {std::make_shared<const LabelVolume>(labelArtifact(study, artifactId, what)), value};
 }
 
+void applyRecordedChoices(sim::network::NetworkRunSetup& setup, const std::map<std::string, std::string>& source)
+{
+    if (const auto inlet = source.find("inlet"); inlet != source.end() && !inlet->second.empty())
+        setup.inletSegment = sim::network::inletSegment(setup.network, inlet->second);
+    auto segments = [&](const char* key) {
+        std::vector<int> list;
+        const auto found = source.find(key);
+        std::stringstream text(found == source.end() ? std::string() : found->second);
+        for (std::string item; std::getline(text, item, ',');)
+        {
+            item.erase(std::remove(item.begin(), item.end(), ' '), item.end());
+            if (item.empty() || !std::all_of(item.begin(), item.end(), [](unsigned char c) { return std::isdigit(c); }))
+                throw Error(std::string(key) + ": '" + item + "' is not a segment number (feeders.csv lists them)");
+            list.push_back(std::stoi(item));
+        }
+        return list;
+    };
+    setup.feederEdits = {segments("feeders_added"), segments("feeders_removed")};
+}
+
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
                                const std::map<std::string, std::string>& source)
 {
@@ -204,6 +227,8 @@ std::string networkRunDocument(const sim::network::NetworkRunResult& run, const 
                            {"enters_lesion_or_margin", f.entersLesion},
                            {"entry_mm", {f.entryMm.x(), f.entryMm.y(), f.entryMm.z()}},
                            {"radius_mm", f.radiusMm},
+                           {"added_by_hand", f.byHand},
+                           {"reached_from_tip", f.reached},
                            {"drug_flow_ml_min", run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]}});
     }
     nlohmann::json nonTarget = nlohmann::json::array(); // the drug leaving the liver, outlet by outlet
@@ -334,13 +359,14 @@ void writeNetworkRun(const std::filesystem::path& folder, const sim::network::Ne
         interop::writeNrrd(sim::network::territoryLabel(*run.territories, *run.perfused, run.lesions),
                            folder / "territory.nrrd", true);
         std::ofstream csv = openForWriting(folder / "feeders.csv");
-        csv << "segment,name,from,to,lesion,enters_lesion_or_margin,radius_mm,drug_flow_ml_min\n";
+        csv << "segment,name,from,to,lesion,enters_lesion_or_margin,added_by_hand,reached_from_tip,radius_mm,drug_flow_ml_min\n";
         for (const sim::network::Feeder& f : run.feeders)
         {
             const auto& segment = run.network.segments[std::size_t(f.segment)];
             csv << f.segment << ",\"" << sim::network::branchName(run.network, f.segment) << "\"," << segment.from << ","
                 << segment.to << "," << f.lesion + 1 << ","
-                << (f.entersLesion ? 1 : 0) << "," << numberText(f.radiusMm) << ","
+                << (f.entersLesion ? 1 : 0) << "," << (f.byHand ? 1 : 0) << "," << (f.reached ? 1 : 0) << ","
+                << numberText(f.radiusMm) << ","
                 << numberText(run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]) << "\n";
         }
     }

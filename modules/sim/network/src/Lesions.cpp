@@ -2,6 +2,7 @@
 
 #include "TerritoryGrid.h"
 #include "vsim/core/DistanceTransform.h"
+#include "vsim/core/Error.h"
 #include "vsim/sim/network/TipOrientation.h"
 
 #include <algorithm>
@@ -204,6 +205,43 @@ std::vector<Feeder> findFeeders(const VesselNetwork& network, const LiverTerrito
     for (const auto& [s, f] : feeders)
         list.push_back(f);
     return list;
+}
+
+std::vector<Feeder> editFeeders(std::vector<Feeder> found, const VesselNetwork& network, const std::vector<Lesion>& lesions,
+                                const FeederEdits& edits)
+{
+    for (const std::vector<int>* list : {&edits.added, &edits.removed})
+        for (int s : *list)
+            if (s < 0 || std::size_t(s) >= network.segments.size())
+                throw Error("feeder edit: segment " + std::to_string(s) + " is not in the network (" +
+                            std::to_string(network.segments.size()) + " segments)");
+    for (int s : edits.added)
+        if (std::find(edits.removed.begin(), edits.removed.end(), s) != edits.removed.end())
+            throw Error("feeder edit: segment " + std::to_string(s) + " is both added and removed");
+    std::erase_if(found, [&](const Feeder& f) {
+        return std::find(edits.removed.begin(), edits.removed.end(), f.segment) != edits.removed.end();
+    });
+    if (lesions.empty() && !edits.added.empty())
+        throw Error("feeder edit: there is no lesion for a feeder to feed");
+    const TipOrientation fromRoot = orientFromTip(network, network.root);
+    for (int s : edits.added)
+    {
+        if (std::any_of(found.begin(), found.end(), [&](const Feeder& f) { return f.segment == s; }))
+            continue;
+        Feeder f;
+        f.segment = s;
+        f.byHand = true;
+        double best = 1e300;
+        for (std::size_t l = 0; l < lesions.size(); ++l)
+            for (const Eigen::Vector3d& p : sampled(network.segmentPath(std::size_t(s)), kSampleMm))
+                if (const double d = (p - lesions[l].centreMm).norm(); d < best)
+                    best = d, f.lesion = int(l), f.entryMm = p;
+        const auto& segment = network.segments[std::size_t(s)];
+        f.radiusMm = segment.from == fromRoot.upstreamNode[std::size_t(s)] ? segment.startRadiusMm : segment.endRadiusMm;
+        found.push_back(f);
+    }
+    std::sort(found.begin(), found.end(), [](const Feeder& a, const Feeder& b) { return a.segment < b.segment; });
+    return found;
 }
 
 LabelVolume territoryLabel(const LiverTerritories& t, const PerfusedTerritory& perfused, const std::vector<Lesion>& lesions)

@@ -3,12 +3,14 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/ConicalPipe.h"
+#include "vsim/sim/network/Inlet.h"
 #include "vsim/sim/network/NetworkBuild.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <set>
 
 namespace vsim::sim::network {
@@ -115,14 +117,17 @@ void recordBestTip(NetworkRunResult& r, const VesselNetwork& net)
 /// With a liver: the tip's perfused territory, the drug's destinations, the lesions' coverage and feeders, and the
 /// tips ranked by coverage.
 void describeTerritory(NetworkRunResult& r, const VesselNetwork& net, const TipSolve& solveAt, bool rank,
-                       const Progress& progress)
+                       const FeederEdits& edits, const Progress& progress)
 {
     const auto started = std::chrono::steady_clock::now();
     const LiverTerritories& t = *r.territories;
     r.perfused = perfusedTerritory(t, r.twoPhase);
     r.coverage = tumourCoverage(r.lesions, *r.perfused);
-    r.feeders = findFeeders(net, t, r.lesions);
+    const std::vector<Feeder> found = findFeeders(net, t, r.lesions);
+    r.feeders = editFeeders(found, net, r.lesions, edits);
     const PerfusedTerritory& p = *r.perfused;
+    for (Feeder& f : r.feeders)
+        f.reached = std::find(p.segments.begin(), p.segments.end(), f.segment) != p.segments.end();
     auto& m = r.metrics;
     m["territory_seconds"] += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     m["liver_volume_ml"] = double(t.voxels.size()) * t.voxelMl;
@@ -137,6 +142,11 @@ void describeTerritory(NetworkRunResult& r, const VesselNetwork& net, const TipS
     m["drug_extrahepatic_percent"] = 100.0 * p.drugExtrahepatic;
     m["lesions"] = double(r.lesions.size());
     m["feeders"] = double(r.feeders.size());
+    m["feeders_added_by_hand"] = double(std::count_if(r.feeders.begin(), r.feeders.end(), [](const Feeder& f) { return f.byHand; }));
+    m["feeders_removed_by_hand"] = double(std::count_if(found.begin(), found.end(), [&](const Feeder& f) {
+        return std::find(edits.removed.begin(), edits.removed.end(), f.segment) != edits.removed.end();
+    }));
+    m["feeders_reached"] = double(std::count_if(r.feeders.begin(), r.feeders.end(), [](const Feeder& f) { return f.reached; }));
     if (r.lesions.empty())
         return;
     m["coverage_grade"] = gradeNumber(r.coverage->grade);
@@ -275,8 +285,21 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     net.validate();
     if (net.root < 0)
         net.root = largestEnd(net);
+    if (!setup.feederEdits.empty() && !setup.liver)
+        throw Error("feeders are edited on a run with a liver label: give the liver (and the tumour) first");
+    std::vector<int> nodeMap(net.nodes.size());
+    std::iota(nodeMap.begin(), nodeMap.end(), 0);
+    if (setup.inletSegment)
+        net = treeBeyond(net, *setup.inletSegment, &nodeMap);
     if (setup.tipNode)
-        r.tipNode = *setup.tipNode;
+    {
+        if (*setup.tipNode < 0 || std::size_t(*setup.tipNode) >= nodeMap.size())
+            throw Error("the catheter tip is node " + std::to_string(*setup.tipNode) + ", which is not in the network");
+        r.tipNode = nodeMap[std::size_t(*setup.tipNode)];
+        if (r.tipNode < 0)
+            throw Error("the catheter tip (node " + std::to_string(*setup.tipNode) +
+                        ") lies upstream of the inlet segment or beside it: blood entering there does not reach it");
+    }
     else if (setup.tipPointMm)
         r.tipNode = placeNode(net, *setup.tipPointMm, p.get("tip_snap_mm"), p.get("tip_reach_mm"));
     else
@@ -397,7 +420,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     if (r.territories)
     {
         r.metrics["territory_seconds"] = territorySeconds;
-        describeTerritory(r, net, solveAt, setup.rankTips, progress.subRange(0.2, 0.95));
+        describeTerritory(r, net, solveAt, setup.rankTips, setup.feederEdits, progress.subRange(0.2, 0.95));
     }
     else if (setup.tumour)
     {

@@ -47,6 +47,12 @@ LabelVolume labelArtifact(const study::Study& study, const std::string& artifact
 sim::network::SharedLabel sharedLabel(const study::Study& study, const std::string& artifactId, int value,
                                       const std::string& what);
 
+/// The choices a run's source records beside its tip and labels, as the CLI and the workstation record them and a
+/// reopened study runs them again: "inlet" (a segment's name or number: NetworkRunSetup::inletSegment, resolved on
+/// `setup.network`), "feeders_added" and "feeders_removed" (segment numbers, comma-separated). Throws vsim::Error
+/// for an unknown inlet or a list that is not whole numbers.
+void applyRecordedChoices(sim::network::NetworkRunSetup& setup, const std::map<std::string, std::string>& source);
+
 /// What a run report shows of a network run (metrics, control points, the ten best tip positions, warnings) as
 /// JSON text; `source` names where the network came from.
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,

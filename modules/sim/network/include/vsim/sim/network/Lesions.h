@@ -58,10 +58,25 @@ struct Feeder
     bool entersLesion = false; ///< its centerline enters the lesion or its margin (else: its tissue holds tumour)
     double radiusMm = 0.0;    ///< at its upstream end
     Eigen::Vector3d entryMm = Eigen::Vector3d::Zero(); ///< where it enters the lesion or margin (else: its end nearest the lesion)
+    bool byHand = false;      ///< added by the user (automatic detection alone misses feeders: see editFeeders)
+    bool reached = false;     ///< the drug from the run's tip flows through it (set by the run)
 };
 /// The feeders of the lesions (see above), by segment.
 std::vector<Feeder> findFeeders(const VesselNetwork& network, const LiverTerritories& territories,
                                 const std::vector<Lesion>& lesions);
+
+/// The user's corrections to the feeders found (segments of the run's network): automatic feeder detection alone is
+/// far less sensitive than detection the radiologist completes by hand (Iwazawa 2009; Miyayama 2013).
+struct FeederEdits
+{
+    std::vector<int> added;
+    std::vector<int> removed;
+    bool empty() const { return added.empty() && removed.empty(); }
+};
+/// `found` less the removed segments, with the added ones (byHand; their lesion the nearest one, the entry their
+/// path's point nearest it). Throws vsim::Error for a segment the network lacks or one both added and removed.
+std::vector<Feeder> editFeeders(std::vector<Feeder> found, const VesselNetwork& network,
+                                const std::vector<Lesion>& lesions, const FeederEdits& edits);
 
 /// Values of territoryLabel.
 enum TerritoryLabelValue : std::uint8_t

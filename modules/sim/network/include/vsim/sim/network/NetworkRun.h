@@ -63,6 +63,9 @@ struct NetworkRunSetup
 {
     VesselNetwork network;                      ///< validated; root set (or the largest end is taken)
     bool defaultOutlets = true;                 ///< false: every outlet needs a condition in the network
+    /// Blood enters through this segment (Inlet.h: the tree beyond it is kept, its upper end the root); a tipNode
+    /// is in the numbering of `network`, the result's in that of the tree kept.
+    std::optional<int> inletSegment;
     std::optional<int> tipNode;                 ///< the catheter tip as a node, or
     std::optional<Eigen::Vector3d> tipPointMm;  ///< as a point on the tree
     /// The tumour: inside(point mm); empty for none. TumourSphere::contains, or a label's voxels.
@@ -76,6 +79,7 @@ struct NetworkRunSetup
     /// The liver (and the tumour as a label): perfusion territories, outlets from them (outlet_model 1), the tip's
     /// perfused territory, the lesions' coverage grade and feeders, tips ranked by coverage (Territories.h).
     std::optional<SharedLabel> liver, tumourLabel;
+    FeederEdits feederEdits; ///< the user's corrections to the feeders found (segments of the result's network)
 };
 
 struct ControlPoint
