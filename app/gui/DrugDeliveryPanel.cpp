@@ -22,6 +22,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <limits>
 #include <set>
 
 namespace vsim::gui {
@@ -349,27 +350,29 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
     std::vector<double> values;
     std::vector<std::array<double, 2>> radii;
     const std::vector<double>& drug = r.network.segmentFields.at("drug_flow_ml_min");
-    for (std::size_t s = 0; s < r.network.segments.size(); ++s)
+    double high = 0.0;
+    for (std::size_t s = 0; s < r.network.segments.size(); ++s) // grey (not a number): no drug, apart from little
     {
-        if (!r.twoPhase.orientation.active(int(s)))
-            continue;
         const auto& segment = r.network.segments[s];
         lines.push_back(r.network.segmentPath(s));
-        values.push_back(drug[s]);
+        const bool carries = r.twoPhase.orientation.active(int(s)) && drug[s] > 0.0;
+        values.push_back(carries ? drug[s] : std::numeric_limits<double>::quiet_NaN());
         radii.push_back({segment.startRadiusMm, segment.endRadiusMm});
+        high = std::max(high, carries ? drug[s] : 0.0);
     }
-    const double high = values.empty() ? 1.0 : *std::max_element(values.begin(), values.end());
-    m_view->clearSurfaces(); // the tree alone, coloured by flow
+    high = high > 0.0 ? high : 1.0;
+    m_view->clearSurfaces(); // the tree coloured by drug flow over the CT's maximum intensity projection
     m_view->clearLines();
-    m_view->setVolumeVisible(false);
-    m_view->showFieldLines(lines, values, 0.0, high, 5.0, tr("Drug flow (ml/min)"), radii);
+    m_view->setVolumeStyle(viz::VolumeView3D::VolumeStyle::MaximumIntensity);
+    m_view->setVolumeVisible(true);
+    m_view->showFieldLines(lines, values, 0.0, high, 5.0, tr("Drug flow (ml/min; grey: none)"), radii);
     Eigen::Vector3d low = Eigen::Vector3d::Constant(1e300), top = Eigen::Vector3d::Constant(-1e300);
     for (const auto& line : lines)
         for (const Eigen::Vector3d& p : line)
             low = low.cwiseMin(p), top = top.cwiseMax(p);
-    if (!lines.empty()) // frame the tree from the front
-        m_view->showAnteriorView(0.5 * (low + top), 1.2 * std::max((top - low).x(), (top - low).z()));
-    m_projection->setNetwork(r.network, drug, 0.0, high);
+    if (!lines.empty()) // frame the tree from the front, left of the legend
+        m_view->showAnteriorViewOf(low, top);
+    m_projection->setNetwork(r.network, values, 0.0, high);
     m_projection->setViewDirection(sim::network::detectorDirection(r.workingAngle ? r.workingAngle->angles
                                                                                    : sim::network::CArmAngles{}));
     const int steps = std::max(1, fillingSteps);

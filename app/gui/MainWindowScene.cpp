@@ -90,6 +90,7 @@ void MainWindow::refreshScene()
     view->clearSurfaces();
     view->clearLines();
     view->setSurfaceOpacity(1.0);
+    view->setVolumeStyle(viz::VolumeView3D::VolumeStyle::Rendered); // a drug run's tree sets its MIP
     bool volume = !content.image.empty();
     switch (content.main)
     {
@@ -104,8 +105,7 @@ void MainWindow::refreshScene()
             m_drugRequest = m_scene.networkRequests[content.networkRun];
             showDrugDeliveryRun(run->second);
         }
-        volume = false;
-        break;
+        break; // the tree over the CT's maximum intensity projection
     case SceneContent::Main::Vessels:
     {
         if (const auto surface = m_scene.lumenSurfaces.find(content.label); surface != m_scene.lumenSurfaces.end())

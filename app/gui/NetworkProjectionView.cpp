@@ -6,12 +6,15 @@
 #include <QPainterPath>
 
 #include <algorithm>
+#include <cmath>
 
 namespace vsim::gui {
 namespace {
 
 QColor valueColour(double value, double low, double high)
 {
+    if (!std::isfinite(value))
+        return QColor(110, 110, 110); // grey: no drug, as the 3D view
     const double t = high > low ? std::clamp((value - low) / (high - low), 0.0, 1.0) : 0.5;
     return QColor::fromHsvF(float(0.667 * (1.0 - t)), 0.9f, 0.9f); // blue (low) -> red (high), as the 3D legend
 }

@@ -19,7 +19,7 @@ class NetworkProjectionView : public QWidget
 public:
     explicit NetworkProjectionView(QWidget* parent = nullptr);
 
-    /// The network and one value per segment, coloured blue -> red over [low, high].
+    /// The network and one value per segment, coloured blue -> red over [low, high], grey where not a number.
     void setNetwork(const VesselNetwork& network, const std::vector<double>& values, double low, double high);
     /// Seen along the C-arm's detector direction (sim::network::detectorDirection); the front view by default.
     void setViewDirection(const Eigen::Vector3d& direction);

@@ -79,7 +79,8 @@ private slots:
         const SolverRun filling = window.document().study().loadRun(run.attributes.at("run_artifact"), false);
         QCOMPARE(filling.keptFrameNumbers.size(), std::size_t(101));
         QCOMPARE(filling.axis.unit, std::string("s"));
-        QCOMPARE(window.views()->volumeView()->legendTitle(), QString("Drug flow (ml/min)"));
+        QCOMPARE(window.views()->volumeView()->legendTitle(), QString("Drug flow (ml/min; grey: none)"));
+        QCOMPARE(window.views()->volumeView()->volumeStyle(), viz::VolumeView3D::VolumeStyle::MaximumIntensity); // the tree over the MIP
         gui::DrugDeliveryPanel* panel = window.drugDeliveryPanel();
         QVERIFY(panel);
         const int outlets = panel->outletTable()->rowCount();

@@ -133,7 +133,7 @@ private slots:
         QVERIFY(wallLegend.startsWith("von Mises (kPa)"));
         QVERIFY(first->simulateDrugDelivery({"", "", ""}) && test::waitForTask(*first));
         QCOMPARE(failed.count(), 0);
-        QCOMPARE(first->views()->volumeView()->legendTitle(), QString("Drug flow (ml/min)"));
+        QCOMPARE(first->views()->volumeView()->legendTitle(), QString("Drug flow (ml/min; grey: none)"));
 
         // Undo removes what the step drew (the tree and its dock); redo brings it back.
         first->document().undoStack()->undo();
@@ -141,7 +141,7 @@ private slots:
         QCOMPARE(first->views()->volumeView()->legendTitle(), wallLegend);
         QVERIFY(!first->drugDeliveryPanel()->isVisible());
         first->document().undoStack()->redo();
-        QCOMPARE(first->views()->volumeView()->legendTitle(), QString("Drug flow (ml/min)"));
+        QCOMPARE(first->views()->volumeView()->legendTitle(), QString("Drug flow (ml/min; grey: none)"));
 
         // Hide the raw skeleton; move the cursor, the window/level and the 3D camera.
         const std::string skeleton = newestMadeBy(first->document().study(), "skeleton");
@@ -201,7 +201,7 @@ private slots:
         QVERIFY(test::waitForTask(second, 5000) || !second.tasks().isBusy());
         second.showOnly(drugRun); // a double-click on the drug run brings it back
         QVERIFY(test::waitForTask(second, 5000) || !second.tasks().isBusy());
-        QCOMPARE(second.views()->volumeView()->legendTitle(), QString("Drug flow (ml/min)"));
+        QCOMPARE(second.views()->volumeView()->legendTitle(), QString("Drug flow (ml/min; grey: none)"));
         second.setArtifactShown(drugRun, false);
 
         // Issue 17: both runs reopen as Run artifacts and play in the one player (pictures mid-run in the test

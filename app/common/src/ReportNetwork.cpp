@@ -96,6 +96,9 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
         " (a node of the network, or a point x,y,z in mm, patient LPS). Tumour: " +
         (!tumour.empty() ? "sphere x,y,z,radius " + tumour + " mm"
                          : !tumourLabel.empty() ? "label " + tumourLabel : std::string("none given")) +
+        ". Blood enters at: " + textOr(source, "inlet", "the tree's largest end") +
+        (textOr(source, "feeders_added").empty() ? std::string() : ". Feeders added by hand: segments " + textOr(source, "feeders_added")) +
+        (textOr(source, "feeders_removed").empty() ? std::string() : ". Feeders removed by hand: segments " + textOr(source, "feeders_removed")) +
         "."});
     report::MetricTable injection{"Injection and filling", {}};
     addMetrics(injection, *run,
@@ -139,7 +142,10 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
                 {"lesion_1_margin_mm", "Lesion 1: margin", "mm"},
                 {"lesion_1_covered_percent", "Lesion 1: covered", "%"},
                 {"lesion_1_margin_covered_percent", "Lesion 1: margin covered", "%"},
-                {"feeders", "Feeders found (entering lesion + margin, or feeding 1 % of it)", ""},
+                {"feeders", "Feeders (found: entering lesion + margin, or feeding 1 % of it; with the user's edits)", ""},
+                {"feeders_added_by_hand", "Feeders added by hand", ""},
+                {"feeders_removed_by_hand", "Feeders found and removed by hand", ""},
+                {"feeders_reached", "Feeders the drug from the tip reaches", ""},
                 {"drug_liver_percent", "Drug to non-tumour liver", "%"},
                 {"drug_extrahepatic_percent", "Drug leaving the liver (extrahepatic outlets)", "%"},
                 {"best_tip_grade", "Best tip position's grade (1 A, 2 B, 3 C)", ""},

@@ -69,6 +69,8 @@ struct VolumeView3D::Scene
     vtkSmartPointer<vtkImageData> scaledIndexImage;
     vtkSmartPointer<vtkSmartVolumeMapper> mapper = vtkSmartPointer<vtkSmartVolumeMapper>::New();
     vtkSmartPointer<vtkVolume> volume = vtkSmartPointer<vtkVolume>::New();
+    vtkSmartPointer<vtkVolumeProperty> rendered, maximumIntensity;
+    VolumeStyle style = VolumeStyle::Rendered;
     std::vector<vtkSmartPointer<vtkActor>> surfaces;
     std::vector<vtkSmartPointer<vtkActor>> lines;
     std::vector<vtkSmartPointer<vtkProp>> callouts;
@@ -102,6 +104,22 @@ VolumeView3D::VolumeView3D(QWidget* parent) : VtkView(parent), m_scene(std::make
     property->SetInterpolationTypeToLinear();
     property->ShadeOn();
     property->SetAmbient(0.4);
+    m_scene->rendered = property;
+    // The maximum intensity projection (HU): grey from above soft tissue and its noise's maxima along a ray (200) to
+    // dense contrast (700), clear below.
+    auto greyOpacity = vtkSmartPointer<vtkPiecewiseFunction>::New();
+    greyOpacity->AddPoint(-1024, 0.0);
+    greyOpacity->AddPoint(200, 0.0);
+    greyOpacity->AddPoint(700, 0.85);
+    greyOpacity->AddPoint(3000, 0.85);
+    auto grey = vtkSmartPointer<vtkColorTransferFunction>::New();
+    grey->AddRGBPoint(200, 0.0, 0.0, 0.0);
+    grey->AddRGBPoint(700, 1.0, 1.0, 1.0);
+    m_scene->maximumIntensity = vtkSmartPointer<vtkVolumeProperty>::New();
+    m_scene->maximumIntensity->SetScalarOpacity(greyOpacity);
+    m_scene->maximumIntensity->SetColor(grey);
+    m_scene->maximumIntensity->SetInterpolationTypeToLinear();
+    m_scene->maximumIntensity->ShadeOff();
     m_scene->volume->SetMapper(m_scene->mapper);
     m_scene->volume->SetProperty(property);
     m_scene->volume->VisibilityOff();
@@ -407,6 +425,17 @@ void VolumeView3D::clearLines()
 
 int VolumeView3D::lineCount() const { return m_scene->lineCount; }
 
+void VolumeView3D::setVolumeStyle(VolumeStyle style)
+{
+    m_scene->style = style;
+    const bool mip = style == VolumeStyle::MaximumIntensity;
+    m_scene->mapper->SetBlendMode(mip ? vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND : vtkVolumeMapper::COMPOSITE_BLEND);
+    m_scene->volume->SetProperty(mip ? m_scene->maximumIntensity : m_scene->rendered);
+    update();
+}
+
+VolumeView3D::VolumeStyle VolumeView3D::volumeStyle() const { return m_scene->style; }
+
 void VolumeView3D::setVolumeVisible(bool visible)
 {
     m_scene->volume->SetVisibility(visible && !m_image.isEmpty());
@@ -511,6 +540,19 @@ void VolumeView3D::showAnteriorView(const Eigen::Vector3d& centre, double height
     detail::lookFromFront(renderer()->GetActiveCamera(), centre, height);
     renderer()->ResetCameraClippingRange();
     update();
+}
+
+void VolumeView3D::showAnteriorViewOf(const Eigen::Vector3d& low, const Eigen::Vector3d& high)
+{
+    // From the front the screen's right is the patient's left (+x) and its top superior (+z); the legend starts at
+    // kPointsLegendX of the width. The box, with a 10 % border, fits the height and kFramedShare of the width.
+    const double aspect = double(std::max(1, width())) / double(std::max(1, height())); // width / height
+    const Eigen::Vector3d size = (high - low) * 1.1;
+    const double viewHeight = std::max({size.z(), size.x() / (kFramedShare * aspect), 1.0});
+    const double viewWidth = viewHeight * aspect;
+    Eigen::Vector3d centre = 0.5 * (low + high);
+    centre.x() += 0.5 * size.x() - (kFramedShare - 0.5) * viewWidth; // the box's right edge at kFramedShare
+    showAnteriorView(centre, viewHeight);
 }
 
 } // namespace vsim::viz

@@ -75,11 +75,24 @@ public:
     int showTubelets(const std::vector<std::vector<Eigen::Vector3d>>& trails, double widthMm, const QColor& colour);
     int tubeletQuadCount() const;
     void setVolumeVisible(bool visible);
+    /// How the CT is drawn: rendered (CTA colours, bone and contrast opaque) or as a maximum intensity projection in
+    /// grey (the habit of angiography: the opacified vessels and bone the brightest), behind a tree drawn over it.
+    enum class VolumeStyle
+    {
+        Rendered,
+        MaximumIntensity,
+    };
+    void setVolumeStyle(VolumeStyle style);
+    VolumeStyle volumeStyle() const;
     /// Front view: the camera looks at the volume centre from anterior (-y), superior (+z) up, patient left (+x)
     /// on the screen's right; parallel projection with `heightMm` mm across the view's height (<= 0: fit the volume).
     void showAnteriorView(double heightMm = 0.0);
     /// The same front view centred on `centreMm` (e.g. a vessel tree).
     void showAnteriorView(const Eigen::Vector3d& centreMm, double heightMm);
+    /// The same front view framing the box [lowMm, highMm] in the left kFramedShare of the view's width, so that the
+    /// legend on the right never covers what it frames.
+    void showAnteriorViewOf(const Eigen::Vector3d& lowMm, const Eigen::Vector3d& highMm);
+    static constexpr double kFramedShare = 0.78;
     /// Centre of the volume in the patient frame (mm).
     Eigen::Vector3d volumeCentre() const;
 
