@@ -138,14 +138,15 @@ std::vector<CommandSpec> declareCommands()
          "simulate network --study <study.vsim> --tip NODE|x,y,z|root [--rate 2ml/min|g/min | --tip-pressure mmHg]\n"
          "                 [--void-fraction 0.1] [--tumour x,y,z,r | --tumour-label ID [--tumour-value N]]\n"
          "                 [--liver-label ID [--liver-value N]] [--add-feeder SEGMENT ...] [--remove-feeder SEGMENT ...]\n"
-         "                 [--inlet NAME|SEGMENT] [--control x,y,z ...] [--network FILE [--default-outlets murray]]\n"
+         "                 [--inlet NAME|SEGMENT|x,y,z] [--control x,y,z ...] [--network FILE [--default-outlets murray]]\n"
          "                 [--param key=value ...] [--out DIR]\n"
          "    drug delivery (arterial blood carrying the two-phase drug through a conical Hagen-Poiseuille network):\n"
          "    flow split, the catheter (wedge, reflux), filling, control points two-phase vs liquid, tumour share and\n"
          "    the best tip positions; with a liver label: perfusion territories, the tip's perfused territory, the\n"
          "    lesions' coverage grade (A/B/C, 5 / 10 mm margin) and feeders, tips ranked by coverage. --inlet: blood\n"
-         "    enters through that segment (e.g. \"celiac trunk\", \"common hepatic artery\"; default the largest end)\n"
-         "    and the tree beyond it is modelled (node numbers are then the kept tree's); --add-feeder and\n"
+         "    enters through that segment (e.g. \"celiac trunk\", \"common hepatic artery\", or the one nearest a\n"
+         "    point; default the largest end) and the tree beyond it is modelled (--tip NODE and every node and\n"
+         "    segment number are then the kept tree's, as the run reports them); --add-feeder and\n"
          "    --remove-feeder correct the feeders found (segment numbers as feeders.csv lists them)",
          simulateNetwork},
         {"simulate sph", 1, 1,

@@ -85,7 +85,7 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     m_controls->setObjectName("drugControls");
     m_controls->setPlaceholderText(tr("x, y, z; ... mm; empty: the first branches"));
     m_inlet->setObjectName("drugInlet");
-    m_inlet->setPlaceholderText(tr("largest end; or e.g. common hepatic artery, or a segment number"));
+    m_inlet->setPlaceholderText(tr("largest end; or a name, a segment number, or x, y, z mm on it"));
     m_inlet->setToolTip(tr("Blood enters through this segment; the tree beyond it is modelled"));
     m_feedersAdded->setObjectName("drugFeedersAdded");
     m_feedersAdded->setPlaceholderText(tr("segment numbers, e.g. 3, 7"));

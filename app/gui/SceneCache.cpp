@@ -16,52 +16,22 @@ bool isDrugRun(const study::Artifact& a)
     return a.kind == study::ArtifactKind::Network && a.provenance.command == "simulate network";
 }
 
-/// The drug run's setup as it was run: the study's network from the same centerlines, the recorded parameters,
-/// tip, tumour and control points.
-sim::network::NetworkRunSetup recordedSetup(const study::Study& study, const study::Artifact& run, DrugDeliveryRequest& request,
-                                            std::vector<std::string>& warnings, const Progress& progress)
+/// What the dock shows of a recorded drug run's choices (the run's source as it recorded them).
+DrugDeliveryRequest recordedRequest(const study::Artifact& run)
 {
-    sim::network::NetworkRunSetup setup;
-    const auto& recorded = run.provenance.parameters;
-    for (const ParameterSpec& spec : setup.parameters.specs())
-        if (const auto value = recorded.find(spec.key); value != recorded.end())
-            setup.parameters.setFromText(spec.key + "=" + value->second);
-    if (run.provenance.inputs.empty())
-        throw Error("the drug run records no centerlines to run again from", {{"artifact", run.id}});
-    setup.network = app::buildStudyNetwork(study, run.provenance.inputs.front(), warnings, progress);
     auto text = [&](const char* key) {
-        const auto found = recorded.find(key);
-        return found == recorded.end() ? QString() : QString::fromStdString(found->second);
+        const auto found = run.provenance.parameters.find(key);
+        return found == run.provenance.parameters.end() ? QString() : QString::fromStdString(found->second);
     };
-    request = {text("tip"),   text("tumour_mm"),     text("control_points"), text("liver_label").section(':', 0, 0),
-               text("tumour_label").section(':', 0, 0), text("inlet"), text("feeders_added"), text("feeders_removed")};
-    app::applyRecordedChoices(setup, recorded);
-    if (request.tip.contains(','))
-    {
-        const auto tip = numbersInText(request.tip, 3).value_or(std::vector<double>{});
-        if (tip.size() == 3)
-            setup.tipPointMm = Eigen::Vector3d(tip[0], tip[1], tip[2]);
-    }
-    else if (!request.tip.isEmpty())
-        setup.tipNode = request.tip.toInt();
-    if (const auto tumour = numbersInText(request.tumour, 4); tumour && tumour->size() == 4)
-        setup.tumour = sim::network::TumourSphere{Eigen::Vector3d((*tumour)[0], (*tumour)[1], (*tumour)[2]), (*tumour)[3]}.region();
-    if (const QString label = text("tumour_label"); !label.isEmpty())
-    {
-        const QStringList parts = label.split(':');
-        setup.tumour = app::volumeRegion(study, parts[0].toStdString(), parts.size() > 1 ? parts[1].toInt() : 0);
-        if (!text("liver_label").isEmpty())
-            setup.tumourLabel = app::sharedLabel(study, parts[0].toStdString(), parts.size() > 1 ? parts[1].toInt() : 0, "tumour");
-    }
-    if (const QString label = text("liver_label"); !label.isEmpty())
-    {
-        const QStringList parts = label.split(':');
-        setup.liver = app::sharedLabel(study, parts[0].toStdString(), parts.size() > 1 ? parts[1].toInt() : 0, "liver");
-    }
-    for (const QString& point : request.controls.split(';', Qt::SkipEmptyParts))
-        if (const auto xyz = numbersInText(point, 3); xyz && xyz->size() == 3)
-            setup.controlPointsMm.emplace_back((*xyz)[0], (*xyz)[1], (*xyz)[2]);
-    return setup;
+    const QString tip = text("tip");
+    return {tip == "root" ? QString() : tip,
+            text("tumour_mm"),
+            text("control_points"),
+            text("liver_label").section(':', 0, 0),
+            text("tumour_label").section(':', 0, 0),
+            text("inlet"),
+            text("feeders_added"),
+            text("feeders_removed")};
 }
 
 } // namespace
@@ -144,10 +114,11 @@ SceneCache fillSceneCache(const study::Study& study, const SceneContent& c, cons
     if (!c.networkRun.empty() && !cache.networkRuns.count(c.networkRun))
     {
         progress.report(0.6, "drug run");
-        DrugDeliveryRequest request;
         std::vector<std::string> warnings;
+        const study::Artifact& recorded = study.artifact(c.networkRun);
+        const DrugDeliveryRequest request = recordedRequest(recorded);
         const sim::network::NetworkRunSetup setup =
-            recordedSetup(study, study.artifact(c.networkRun), request, warnings, progress.subRange(0.6, 0.8));
+            app::recordedNetworkSetup(study, recorded, warnings, progress.subRange(0.6, 0.8));
         auto run = std::make_shared<sim::network::NetworkRunResult>(sim::network::runNetwork(setup, progress.subRange(0.8, 1.0)));
         run->warnings.insert(run->warnings.begin(), warnings.begin(), warnings.end()); // as the first run had them
         more.networkRuns[c.networkRun] = std::move(run);

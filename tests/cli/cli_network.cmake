@@ -83,6 +83,25 @@ if(planned_feeders LESS 2 OR NOT planned_root_pressure_mmhg EQUAL 90 OR NOT adde
    OR NOT edited_csv MATCHES "\n0,\"[^\"]+\",[0-9]+,[0-9]+,1,0,1,1," OR edited_csv MATCHES "\n${removed_feeder},")
     message(FATAL_ERROR "the inlet and the feeders corrected by hand:\n${planned}\n${edited}\n${edited_csv}")
 endif()
+# The report's chemoembolization section from the best tip by coverage: the perfused territory over the CT and the
+# DSA-like view at the working angle are pictures in it (drawn without a display).
+set(labels --liver-label ${liver_id} --tumour-label ${label_id} --tumour-value 2)
+run_cli(0 rooted simulate network --study ${study} --tip root ${labels})
+string(JSON best_node GET "${rooted}" metrics best_tip_node)
+string(REGEX REPLACE "\\..*" "" best_node "${best_node}")
+run_cli(0 selective simulate network --study ${study} --tip ${best_node} ${labels})
+run_cli(0 ignored report --study ${study} --out ${WORK}/tace.pdf --sections chemoembolization)
+execute_process(COMMAND pdftotext -raw ${WORK}/tace.pdf - OUTPUT_VARIABLE tace_text RESULT_VARIABLE pdf_status)
+execute_process(COMMAND pdfimages -list ${WORK}/tace.pdf OUTPUT_VARIABLE tace_images)
+string(REGEX MATCHALL "\n +[0-9]+ +[0-9]+ image" pictures "${tace_images}")
+list(LENGTH pictures picture_count)
+if(NOT pdf_status EQUAL 0 OR NOT tace_text MATCHES "Perfused territory from the tip on the axial CT slice"
+   OR NOT tace_text MATCHES "DSA-like view at the working angle \\((LAO|RAO) [0-9.]+, (cranial|caudal) [0-9.]+ deg"
+   OR picture_count LESS 2)
+    message(FATAL_ERROR "the chemoembolization report must show the territory and the working view (tip ${best_node}, "
+                        "${picture_count} pictures):\n${tace_images}")
+endif()
+
 run_cli(1 noliver simulate network --study ${study} --tip root --remove-feeder 1)
 run_cli(1 noname simulate network --study ${study} --tip root --inlet "celiac trunk")
 if(NOT noliver MATCHES "with a liver label" OR NOT noname MATCHES "its named segments: common hepatic artery")

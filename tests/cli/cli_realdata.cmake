@@ -131,6 +131,33 @@ if(NOT lesions EQUAL 1 OR hepatic_outlets LESS 1 OR feeders LESS 1 OR territory_
     message(FATAL_ERROR "chemoembolization planning on the liver CT:${tace_figures}")
 endif()
 
+# The same with blood entering at the common hepatic artery, given as a point on it (the segment after the celiac
+# trunk's division, towards the hilum; by inspection of this network: its one other outlet is the gastroduodenal),
+# and the report's chemoembolization section with its pictures (the territory over the CT, the DSA-like view).
+run_cli(0 hepatic simulate network --study ${WORK}/liver.vsim --tip root --liver-label label-8 --tumour-label ${tumour_id}
+        --centerlines ${centerlines_id} --inlet 189.0,164.1,98.1)
+set(hepatic_figures)
+foreach(key hepatic_outlets extrahepatic_outlets root_pressure_mmhg coverage_grade feeders drug_extrahepatic_percent
+        best_tip_node best_tip_grade best_tip_non_target_ml)
+    string(JSON value GET "${hepatic}" metrics ${key})
+    set(hepatic_${key} ${value})
+    string(APPEND hepatic_figures " ${key} ${value};")
+endforeach()
+message(STATUS "liver CT, blood entering at the common hepatic artery:${hepatic_figures}")
+string(REGEX REPLACE "\\..*" "" best_node "${hepatic_best_tip_node}")
+run_cli(0 selective simulate network --study ${WORK}/liver.vsim --tip ${best_node} --liver-label label-8
+        --tumour-label ${tumour_id} --centerlines ${centerlines_id} --inlet 189.0,164.1,98.1)
+run_cli(0 ignored report --study ${WORK}/liver.vsim --out ${WORK}/tace.pdf --sections chemoembolization)
+execute_process(COMMAND pdftotext -raw ${WORK}/tace.pdf - OUTPUT_VARIABLE tace_text)
+execute_process(COMMAND pdfimages -list ${WORK}/tace.pdf OUTPUT_VARIABLE tace_images)
+string(REGEX MATCHALL "\n +[0-9]+ +[0-9]+ image" pictures "${tace_images}")
+list(LENGTH pictures picture_count)
+if(hepatic_extrahepatic_outlets GREATER 2 OR NOT hepatic_root_pressure_mmhg EQUAL 90 OR hepatic_feeders LESS 1
+   OR NOT tace_text MATCHES "Perfused territory from the tip on the axial CT slice"
+   OR NOT tace_text MATCHES "Blood enters at: 189.0,164.1,98.1" OR picture_count LESS 2)
+    message(FATAL_ERROR "chemoembolization from the common hepatic artery:${hepatic_figures} ${picture_count} pictures")
+endif()
+
 run_cli(0 ignored import ${DATA}/ctpa-totalsegmentator/ct_cropped.nii.gz --study ${WORK}/ctpa.vsim)
 run_cli(0 info info ${WORK}/ctpa.vsim)
 expect_grid("${info}" "[122,102,112]" "^\\[1\\.5,1\\.5,1\\.5\\]$")

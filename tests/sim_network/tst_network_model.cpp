@@ -329,8 +329,8 @@ private slots:
     }
 
     // Blood entering through a chosen segment (Inlet.h): the tree beyond it is kept and renumbered, its upper end the
-    // root held at the arterial pressure; a tip given in the whole tree's numbering follows; a tip beside the inlet
-    // and an unknown name are refused with what the tree offers.
+    // root held at the arterial pressure; the tip is a node of the kept tree, as the result numbers them; a node it
+    // lacks, an unknown name and a point far from the tree are refused with what the tree offers.
     void inletSegmentCutsTheTree()
     {
         VesselNetwork tree = binaryTree();
@@ -350,7 +350,7 @@ private slots:
         NetworkRunSetup setup;
         setup.network = tree;
         setup.inletSegment = 1;
-        setup.tipNode = 2; // the whole tree's node 2: the kept tree's node 1
+        setup.tipNode = 1; // the whole tree's node 2
         const NetworkRunResult r = runNetwork(setup);
         QCOMPARE(r.tipNode, 1);
         QCOMPARE(r.network.segments.size(), std::size_t(3));
@@ -362,8 +362,10 @@ private slots:
         whole.network = tree;
         whole.tipNode = 2;
         QVERIFY(r.blood->inletFlow > runNetwork(whole).twoPhase.segmentFlow[1]);
-        setup.tipNode = 3; // beside the inlet
-        QVERIFY(messageOf([&] { runNetwork(setup); }).contains("beside it"));
+        setup.tipNode = 4; // the kept tree has four nodes
+        QVERIFY(messageOf([&] { runNetwork(setup); }).contains("not in the network"));
+        QCOMPARE(inletSegment(tree, "-4, 0, 28"), 1); // a point beside the hepatic branch
+        QVERIFY(messageOf([&] { inletSegment(tree, "-40, 0, 28"); }).contains("from the nearest vessel"));
     }
 
     // The injected-alone model (the thesis's) is still there, and the tip pressure belongs to it.

@@ -177,6 +177,68 @@ void applyRecordedChoices(sim::network::NetworkRunSetup& setup, const std::map<s
     setup.feederEdits = {segments("feeders_added"), segments("feeders_removed")};
 }
 
+sim::network::NetworkRunSetup recordedNetworkSetup(const study::Study& study, const study::Artifact& run,
+                                                   std::vector<std::string>& warnings, const Progress& progress)
+{
+    sim::network::NetworkRunSetup setup;
+    const std::map<std::string, std::string>& recorded = run.provenance.parameters;
+    for (const ParameterSpec& spec : setup.parameters.specs())
+        if (const auto value = recorded.find(spec.key); value != recorded.end())
+            setup.parameters.setFromText(spec.key + "=" + value->second);
+    if (run.provenance.inputs.empty() || !study.hasArtifact(run.provenance.inputs.front()))
+        throw Error("the drug run records no centerlines to run again from", {{"artifact", run.id}});
+    setup.network = buildStudyNetwork(study, run.provenance.inputs.front(), warnings, progress);
+    auto text = [&](const char* key) {
+        const auto found = recorded.find(key);
+        return found == recorded.end() ? std::string() : found->second;
+    };
+    auto numbers = [](const std::string& list) { // "x, y, z" -> numbers; what is not one ends the list
+        std::vector<double> values;
+        std::stringstream stream(list);
+        for (std::string item; std::getline(stream, item, ',');)
+            try
+            {
+                values.push_back(std::stod(item));
+            }
+            catch (const std::exception&)
+            {
+                break;
+            }
+        return values;
+    };
+    auto labelAndValue = [](const std::string& recordedLabel) { // "label-9:2" -> {"label-9", 2}
+        const std::size_t colon = recordedLabel.find(':');
+        return std::pair{recordedLabel.substr(0, colon), colon == std::string::npos ? 0 : std::stoi(recordedLabel.substr(colon + 1))};
+    };
+    applyRecordedChoices(setup, recorded);
+    if (const std::string tip = text("tip"); tip.find(',') != std::string::npos)
+    {
+        if (const std::vector<double> xyz = numbers(tip); xyz.size() == 3)
+            setup.tipPointMm = Eigen::Vector3d(xyz[0], xyz[1], xyz[2]);
+    }
+    else if (!tip.empty() && tip != "root")
+        setup.tipNode = std::stoi(tip);
+    if (const std::vector<double> sphere = numbers(text("tumour_mm")); sphere.size() == 4)
+        setup.tumour = sim::network::TumourSphere{Eigen::Vector3d(sphere[0], sphere[1], sphere[2]), sphere[3]}.region();
+    if (const std::string label = text("tumour_label"); !label.empty())
+    {
+        const auto [id, value] = labelAndValue(label);
+        setup.tumour = volumeRegion(study, id, value);
+        if (!text("liver_label").empty())
+            setup.tumourLabel = sharedLabel(study, id, value, "tumour");
+    }
+    if (const std::string label = text("liver_label"); !label.empty())
+    {
+        const auto [id, value] = labelAndValue(label);
+        setup.liver = sharedLabel(study, id, value, "liver");
+    }
+    std::stringstream controls(text("control_points"));
+    for (std::string point; std::getline(controls, point, ';');)
+        if (const std::vector<double> xyz = numbers(point); xyz.size() == 3)
+            setup.controlPointsMm.emplace_back(xyz[0], xyz[1], xyz[2]);
+    return setup;
+}
+
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,
                                const std::map<std::string, std::string>& source)
 {

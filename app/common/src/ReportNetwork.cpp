@@ -1,11 +1,13 @@
 #include "ReportSections.h"
 
 #include "ReportSupport.h"
+#include "ReportTacePictures.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/ConicalPipe.h"
 #include "vsim/viz/Snapshot.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace vsim::app::detail {
 namespace {
@@ -151,7 +153,10 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
                 {"best_tip_grade", "Best tip position's grade (1 A, 2 B, 3 C)", ""},
                 {"best_tip_non_target_ml", "Best tip position's non-tumour liver", "ml"}});
     if (!coverage.rows.empty())
+    {
         section.blocks.push_back(coverage);
+        section.blocks.push_back(territoryPicture(study, *run, options.snapshotPixels));
+    }
     report::MetricTable angle{"Working C-arm angle for the path to the tip (patient supine; + LAO / - RAO, + cranial / "
                               "- caudal; within LAO/RAO 60 and cranial/caudal 40 degrees)", {}};
     addMetrics(angle, *run,
@@ -162,7 +167,10 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
                 {"frontal_foreshortening_percent", "Path foreshortened from the front (AP)", "%"},
                 {"frontal_overlap_percent", "Path overlapped from the front (AP)", "%"}});
     if (!angle.rows.empty())
+    {
         section.blocks.push_back(angle);
+        section.blocks.push_back(workingViewPicture(network, *run, options.snapshotPixels / 2));
+    }
     report::MetricTable targeting{"Targeting", {}};
     addMetrics(targeting, *run,
                {{"tumour_fraction", "Drug reaching the tumour", "%", 100.0},
@@ -212,7 +220,7 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
     section.blocks.push_back(
         branchTable(network, injected ? injected->value * (1.0 - (voidFraction ? voidFraction->value : 0.0)) : 0.0));
     section.blocks.push_back(fillingPlot(network));
-    section.blocks.push_back(snapshotOrNote("The tree coloured by drug flow (ml/min), seen from the front", options, [&] {
+    section.blocks.push_back(snapshotOrNote("The tree coloured by drug flow (ml/min; grey: no drug), seen from the front", options, [&] {
         std::vector<std::vector<Eigen::Vector3d>> lines;
         std::vector<double> values;
         std::vector<std::array<double, 2>> radii;
@@ -221,10 +229,10 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
         {
             const auto& segment = network.segments[s];
             lines.push_back(network.segmentPath(s));
-            values.push_back(drug[s]);
+            values.push_back(drug[s] > 0.0 ? drug[s] : std::numeric_limits<double>::quiet_NaN()); // grey: no drug
             radii.push_back({segment.startRadiusMm, segment.endRadiusMm});
         }
-        const double high = drug.empty() ? 1.0 : *std::max_element(drug.begin(), drug.end());
+        const double high = drug.empty() ? 1.0 : std::max(1e-12, *std::max_element(drug.begin(), drug.end()));
         return viz::snapshotTubes(lines, values, radii, {"drug flow [ml/min]", 0.0, high},
                                   QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4));
     }));

@@ -1,11 +1,14 @@
 #include "vsim/sim/network/Inlet.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/sim/network/TipOrientation.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <set>
+#include <sstream>
 
 namespace vsim::sim::network
 {
@@ -91,6 +94,29 @@ VesselNetwork treeBeyond(const VesselNetwork& network, int segment, std::vector<
 
 int inletSegment(const VesselNetwork& network, const std::string& text)
 {
+    if (std::count(text.begin(), text.end(), ',') == 2) // a point on the vessel
+    {
+        Eigen::Vector3d point;
+        std::stringstream stream(text);
+        std::string item;
+        for (int a = 0; a < 3; ++a)
+        {
+            std::getline(stream, item, ',');
+            try
+            {
+                point[a] = std::stod(item);
+            }
+            catch (const std::exception&)
+            {
+                throw Error("the inlet '" + text + "' is not a point x,y,z (mm)");
+            }
+        }
+        const auto [segment, distance] = nearestSegment(network, point);
+        if (segment < 0 || distance > kInletReachMm)
+            throw Error("the inlet point " + text + " lies " + std::to_string(int(std::lround(distance))) +
+                        " mm from the nearest vessel (at most " + std::to_string(int(kInletReachMm)) + " mm)");
+        return segment;
+    }
     if (!text.empty() &&
         std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); }))
     {

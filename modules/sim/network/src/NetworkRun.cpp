@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
-#include <numeric>
 #include <set>
 
 namespace vsim::sim::network {
@@ -287,19 +286,10 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         net.root = largestEnd(net);
     if (!setup.feederEdits.empty() && !setup.liver)
         throw Error("feeders are edited on a run with a liver label: give the liver (and the tumour) first");
-    std::vector<int> nodeMap(net.nodes.size());
-    std::iota(nodeMap.begin(), nodeMap.end(), 0);
     if (setup.inletSegment)
-        net = treeBeyond(net, *setup.inletSegment, &nodeMap);
+        net = treeBeyond(net, *setup.inletSegment);
     if (setup.tipNode)
-    {
-        if (*setup.tipNode < 0 || std::size_t(*setup.tipNode) >= nodeMap.size())
-            throw Error("the catheter tip is node " + std::to_string(*setup.tipNode) + ", which is not in the network");
-        r.tipNode = nodeMap[std::size_t(*setup.tipNode)];
-        if (r.tipNode < 0)
-            throw Error("the catheter tip (node " + std::to_string(*setup.tipNode) +
-                        ") lies upstream of the inlet segment or beside it: blood entering there does not reach it");
-    }
+        r.tipNode = *setup.tipNode;
     else if (setup.tipPointMm)
         r.tipNode = placeNode(net, *setup.tipPointMm, p.get("tip_snap_mm"), p.get("tip_reach_mm"));
     else

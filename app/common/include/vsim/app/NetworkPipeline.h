@@ -53,6 +53,13 @@ sim::network::SharedLabel sharedLabel(const study::Study& study, const std::stri
 /// for an unknown inlet or a list that is not whole numbers.
 void applyRecordedChoices(sim::network::NetworkRunSetup& setup, const std::map<std::string, std::string>& source);
 
+/// The setup a recorded drug run (its network artifact) was run with, to run it again (reopening, the report): the
+/// study's network from the same centerlines, the recorded parameters, tip, tumour (sphere or label), liver label,
+/// control points and applyRecordedChoices. `warnings` gets the network's. Throws vsim::Error for a run with no
+/// centerlines recorded (a hand-written network) or a label that is gone.
+sim::network::NetworkRunSetup recordedNetworkSetup(const study::Study& study, const study::Artifact& run,
+                                                   std::vector<std::string>& warnings, const Progress& progress = {});
+
 /// What a run report shows of a network run (metrics, control points, the ten best tip positions, warnings) as
 /// JSON text; `source` names where the network came from.
 std::string networkRunDocument(const sim::network::NetworkRunResult& run, const ParameterSet& parameters,

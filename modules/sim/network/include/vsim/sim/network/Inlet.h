@@ -21,9 +21,12 @@ namespace vsim::sim::network
 /// Outlet conditions and segment fields of what is kept stay. Throws vsim::Error for a segment out of range.
 VesselNetwork treeBeyond(const VesselNetwork& network, int segment, std::vector<int>* nodeMap = nullptr);
 
-/// The inlet segment `text` names: a segment number, or an anatomical name ("common hepatic artery", any
-/// case); of several segments of that name, the one nearest the root. Throws vsim::Error listing the names
-/// the tree has.
+/// An inlet point farther than this from every centerline is refused.
+inline constexpr double kInletReachMm = 10.0;
+
+/// The inlet segment `text` names: a segment number, a point on it "x,y,z" (mm: the nearest segment, within
+/// kInletReachMm), or an anatomical name ("common hepatic artery", any case; of several segments of that name, the
+/// one nearest the root). Throws vsim::Error listing the names the tree has.
 int inletSegment(const VesselNetwork& network, const std::string& text);
 
 } // namespace vsim::sim::network

@@ -63,8 +63,8 @@ struct NetworkRunSetup
 {
     VesselNetwork network;                      ///< validated; root set (or the largest end is taken)
     bool defaultOutlets = true;                 ///< false: every outlet needs a condition in the network
-    /// Blood enters through this segment (Inlet.h: the tree beyond it is kept, its upper end the root); a tipNode
-    /// is in the numbering of `network`, the result's in that of the tree kept.
+    /// Blood enters through this segment (Inlet.h: the tree beyond it is kept, its upper end the root); tipNode and
+    /// the feeder edits are then in the kept tree's numbering, as the result reports its nodes and segments.
     std::optional<int> inletSegment;
     std::optional<int> tipNode;                 ///< the catheter tip as a node, or
     std::optional<Eigen::Vector3d> tipPointMm;  ///< as a point on the tree

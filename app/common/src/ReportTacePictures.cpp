@@ -1,0 +1,127 @@
+#include "ReportTacePictures.h"
+
+#include "vsim/app/NetworkPipeline.h"
+#include "vsim/core/Error.h"
+#include "vsim/sim/network/Lesions.h"
+#include "vsim/sim/network/WorkingAngle.h"
+
+#include <QColor>
+#include <QImage>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace vsim::app::detail {
+namespace {
+
+constexpr double kWindowLowHu = 40.0 - 200.0, kWindowHighHu = 40.0 + 200.0; // abdominal window W 400, L 40
+constexpr double kOverlayOpacity = 0.45;
+
+/// The territory label's colours (Lesions.h's values), as the workstation's territory palette draws them.
+const std::map<int, QColor>& territoryColours()
+{
+    static const std::map<int, QColor> colours{
+        {sim::network::kLiverNotPerfused, QColor(120, 120, 140)}, {sim::network::kLiverPerfused, QColor(60, 200, 90)},
+        {sim::network::kTumourPerfused, QColor(250, 220, 40)},    {sim::network::kTumourMissed, QColor(230, 40, 40)},
+        {sim::network::kMarginMissed, QColor(250, 140, 30)},
+    };
+    return colours;
+}
+
+/// `image` scaled to `pixels` wide (nearest voxel: the voxels stay visible as they are).
+QImage widened(const QImage& image, int pixels)
+{
+    return image.scaled(pixels, pixels * image.height() / std::max(1, image.width()), Qt::KeepAspectRatio,
+                        Qt::FastTransformation);
+}
+
+} // namespace
+
+report::Block territoryPicture(const study::Study& study, const study::Artifact& run, int pixels)
+{
+    const std::string caption =
+        "Perfused territory from the tip on the axial CT slice through the largest lesion (W 400 / L 40 HU; patient "
+        "right on the left): green perfused liver, yellow perfused tumour, red tumour not perfused, orange margin not "
+        "perfused, blue-grey liver not perfused";
+    if (!run.provenance.parameters.count("liver_label"))
+        return report::Paragraph{"Perfused territory: the run had no liver label (simulate network --liver-label)."};
+    try
+    {
+        std::vector<std::string> warnings;
+        sim::network::NetworkRunSetup setup = recordedNetworkSetup(study, run, warnings);
+        setup.rankTips = false;
+        setup.parameters.set("working_angle", 0);
+        const sim::network::NetworkRunResult again = sim::network::runNetwork(setup);
+        if (!again.territories || !again.perfused)
+            return report::Paragraph{"Perfused territory: the run again gave no territory."};
+        const LabelVolume territory = sim::network::territoryLabel(*again.territories, *again.perfused, again.lesions);
+        const VolumeGeometry& g = territory.geometry();
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+        if (!again.lesions.empty())
+            centre = again.lesions.front().centreMm;
+        else
+        {
+            for (std::size_t v = 0; v < again.territories->voxels.size(); ++v)
+                centre += again.territories->position(v);
+            centre /= double(std::max<std::size_t>(1, again.territories->voxels.size()));
+        }
+        const int k = std::clamp(int(std::lround(g.patientToIndex(centre).z())), 0, g.dims[2] - 1);
+        const std::string imageId = study.newestArtifact(study::ArtifactKind::Image);
+        const CtVolume ct = imageId.empty() ? CtVolume() : study.loadImage(imageId);
+        QImage picture(g.dims[0], g.dims[1], QImage::Format_RGB32);
+        for (int j = 0; j < g.dims[1]; ++j)
+            for (int i = 0; i < g.dims[0]; ++i)
+            {
+                double hu = kWindowLowHu;
+                if (!ct.isEmpty())
+                {
+                    const Eigen::Vector3d index = ct.geometry().patientToIndex(g.indexToPatient(Eigen::Vector3d(i, j, k)));
+                    const int a = int(std::lround(index.x())), b = int(std::lround(index.y())), c = int(std::lround(index.z()));
+                    if (ct.geometry().contains(a, b, c))
+                        hu = ct.at(a, b, c);
+                }
+                const int grey = int(std::lround(255.0 * std::clamp((hu - kWindowLowHu) / (kWindowHighHu - kWindowLowHu), 0.0, 1.0)));
+                QColor colour(grey, grey, grey);
+                if (const auto found = territoryColours().find(territory.at(i, j, k)); found != territoryColours().end())
+                {
+                    const QColor& over = found->second;
+                    auto mix = [&](int under, int top) { return int(std::lround((1.0 - kOverlayOpacity) * under + kOverlayOpacity * top)); };
+                    colour = QColor(mix(grey, over.red()), mix(grey, over.green()), mix(grey, over.blue()));
+                }
+                picture.setPixel(i, j, colour.rgb());
+            }
+        return report::Figure{caption + " (slice z = " + std::to_string(int(std::lround(g.indexToPatient(Eigen::Vector3d(0, 0, k)).z()))) + " mm)",
+                              widened(picture, pixels)};
+    }
+    catch (const Error& error)
+    {
+        return report::Paragraph{"Perfused territory: not drawn (" + std::string(error.what()) + ")."};
+    }
+}
+
+report::Block workingViewPicture(const VesselNetwork& network, const study::Artifact& run, int pixels)
+{
+    const auto lao = run.attributes.find("working_lao_deg"), cranial = run.attributes.find("working_cranial_deg");
+    const auto tip = run.attributes.find("tip_node");
+    if (lao == run.attributes.end() || cranial == run.attributes.end() || tip == run.attributes.end())
+        return report::Paragraph{"Working angle: none for this run (the tip at the root, or working_angle 0)."};
+    const sim::network::CArmAngles angles{std::stod(lao->second), std::stod(cranial->second)};
+    const sim::network::ProjectionImage view = sim::network::dsaProjection(network, int(std::stod(tip->second)), angles);
+    QImage picture(view.width, view.height, QImage::Format_Grayscale8);
+    for (int y = 0; y < view.height; ++y)
+        for (int x = 0; x < view.width; ++x)
+            picture.scanLine(y)[x] = uchar(std::lround(255.0f * view.transmission[std::size_t(y) * std::size_t(view.width) + std::size_t(x)]));
+    auto side = [](double degrees, const char* plus, const char* minus) {
+        char text[48];
+        std::snprintf(text, sizeof text, "%s %.1f", degrees >= 0.0 ? plus : minus, std::abs(degrees));
+        return std::string(text);
+    };
+    return report::Figure{"DSA-like view at the working angle (" + side(angles.laoDeg, "LAO", "RAO") + ", " +
+                              side(angles.cranialDeg, "cranial", "caudal") +
+                              " deg; patient supine, the head up): the tree the contrast opacifies, the path to the tip "
+                              "twice as dense (" + std::to_string(view.pixelMm).substr(0, 4) + " mm pixels)",
+                          widened(picture, pixels)};
+}
+
+} // namespace vsim::app::detail
