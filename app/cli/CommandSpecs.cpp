@@ -89,11 +89,12 @@ std::vector<CommandSpec> declareCommands()
          "    a label as a DICOM SEG (one segment per value: lumen 1, a sac's thrombus 4 and wall 5) in the CT's\n"
          "    study and frame of reference, for PACS, 3D Slicer or a vendor workstation (reads the study only)",
          exportLabelFromStudy},
-        {"segment-organ", 0, 0, {kStudy, value("image"), repeatable("seed"), value("organ"), kParam, kWait},
-         "segment-organ --study <study.vsim> --seed x,y,z [--seed ...] [--organ liver|tumour|NAME] [--image ID]\n"
-         "              [--param key=value ...] [--wait s]\n"
+        {"segment-organ", 0, 0, {kStudy, value("image"), repeatable("seed"), value("organ"), value("within"), kParam, kWait},
+         "segment-organ --study <study.vsim> --seed x,y,z [--seed ...] [--organ liver|tumour|NAME] [--within LIVER]\n"
+         "              [--image ID] [--param key=value ...] [--wait s]\n"
          "    the organ as a label grown from points inside it (its own intensity window, bridges to touching organs\n"
-         "    cut, small gaps closed): the liver and tumour labels for simulate network --liver-label --tumour-label",
+         "    cut, small gaps closed): the liver and tumour labels for simulate network --liver-label --tumour-label;\n"
+         "    with --within, a lesion in that liver label (its boundary where the tissue leaves the parenchyma's range)",
          segmentOrgan},
         {"rename-segment", 0, 0, {kStudy, value("centerlines"), required("segment"), required("name"), kWait},
          "rename-segment --study <study.vsim> [--centerlines ID] --segment N --name TEXT [--wait s]\n"

@@ -122,6 +122,8 @@ public:
     /// Drug > Liver from Points: a liver label grown from the segmentation points panel's include points
     /// (imaging::growOrgan), added to the study (undoable). False (with a message) without points.
     bool growLiverFromPoints();
+    /// Drug > Tumour from Points: a lesion grown from the include points within the dock's liver label.
+    bool growTumourFromPoints();
     DrugDeliveryPanel* drugDeliveryPanel() const { return m_drugPanel; }
     /// Runs the blood flow (SPH) through the vessels of the newest centerlines in the background (Flow > Blood Flow)
     /// with the Flow > Blood Flow Parameters; the run is added (undoable) and played, its stenosis figures in the
@@ -198,6 +200,8 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    /// Liver from Points and Tumour from Points: the organ window, or a lesion within the dock's liver label.
+    bool growOrganFromPoints(bool tumour);
     /// Redraws the views from the study (MainWindowScene.cpp): after steps, undo, visibility changes, reopening.
     void refreshScene();
     /// Loads what the scene lacks in the background, then redraws (and applies a pending view state).

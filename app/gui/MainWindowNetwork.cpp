@@ -10,6 +10,7 @@
 #include "SegmentationPointsPanel.h"
 #include "ViewLayout.h"
 #include "vsim/app/NetworkPipeline.h"
+#include "vsim/imaging/LesionGrowing.h"
 #include "vsim/imaging/OrganGrowing.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/NetworkBuild.h"
@@ -31,6 +32,7 @@ void MainWindow::createDrugMenu()
         simulateDrugDelivery(m_drugPanel ? m_drugPanel->request() : m_drugRequest);
     });
     m_documentActions << drug->addAction(tr("&Liver from Points"), this, [this] { growLiverFromPoints(); });
+    m_documentActions << drug->addAction(tr("&Tumour from Points"), this, [this] { growTumourFromPoints(); });
     m_documentActions << drug->addAction(tr("Drug &Parameters..."), this, [this] {
         editParametersInDialog(this, tr("Drug delivery parameters"), {{tr("Drug delivery"), &m_networkParameters}});
     });
@@ -171,44 +173,72 @@ void MainWindow::showDrugDeliveryRun(std::shared_ptr<const sim::network::Network
                              8000);
 }
 
-bool MainWindow::growLiverFromPoints()
+bool MainWindow::growLiverFromPoints() { return growOrganFromPoints(false); }
+
+bool MainWindow::growTumourFromPoints() { return growOrganFromPoints(true); }
+
+bool MainWindow::growOrganFromPoints(bool tumour)
 {
     if (!m_document.hasStudy())
         return false;
+    const QString title = tumour ? tr("Tumour from points") : tr("Liver from points");
     const std::string imageId = newestArtifact(study::ArtifactKind::Image);
     const std::vector<Eigen::Vector3d> points =
         m_pointsPanel ? m_pointsPanel->request().includeMm : std::vector<Eigen::Vector3d>{};
     if (imageId.empty() || points.empty())
     {
-        showError(tr("Liver from points"), tr("Place include points inside the liver first (Vessels > Segment from "
-                                              "Points, on the MPR views), then grow the liver from them."));
+        showError(title, tr("Place include points inside the %1 first (Vessels > Segment from Points, on the MPR "
+                            "views), then grow it from them.")
+                             .arg(tumour ? tr("tumour") : tr("liver")));
+        return false;
+    }
+    // A tumour grows within the liver label chosen in the Drug Delivery dock (LesionGrowing.h).
+    const std::string liverId = tumour ? (m_drugPanel ? m_drugPanel->request() : m_drugRequest).liverLabel.toStdString() : std::string();
+    if (tumour && liverId.empty())
+    {
+        showError(title, tr("A tumour grows within the liver: choose the liver label in the Drug Delivery dock first "
+                            "(or grow it: Drug > Liver from Points)."));
         return false;
     }
     auto grown = std::make_shared<imaging::OrganGrowing>();
-    const ParameterSet parameters(imaging::organGrowingParameters());
+    const ParameterSet parameters(tumour ? imaging::lesionGrowingParameters() : imaging::organGrowingParameters());
     return m_tasks.run(
-        tr("Liver from points"),
-        [this, imageId, points, grown, parameters](const Progress& progress) {
-            *grown = imaging::growOrgan(m_document.study().loadImage(imageId), points, parameters, progress);
+        title,
+        [this, imageId, liverId, points, grown, parameters](const Progress& progress) {
+            const CtVolume ct = m_document.study().loadImage(imageId);
+            if (liverId.empty())
+            {
+                *grown = imaging::growOrgan(ct, points, parameters, progress);
+                return;
+            }
+            imaging::LesionGrowing lesion = imaging::growLesion(ct, points, m_document.study().loadLabel(liverId), parameters, progress);
+            grown->label = std::move(lesion.label);
+            grown->figures = lesion.figures;
+            grown->warnings = lesion.warnings;
         },
-        [this, imageId, points, grown, parameters] {
+        [this, imageId, liverId, points, grown, parameters, title] {
+            const std::string organ = liverId.empty() ? "liver" : "tumour";
             study::Provenance provenance;
             provenance.command = "segment-organ";
             provenance.inputs = {imageId};
+            if (!liverId.empty())
+                provenance.inputs.push_back(liverId);
             provenance.parameters = parameters.valuesAsText();
-            provenance.parameters["organ"] = "liver";
+            provenance.parameters["organ"] = organ;
             std::string text;
             for (const Eigen::Vector3d& p : points)
                 text += (text.empty() ? "" : "; ") + std::to_string(p.x()) + "," + std::to_string(p.y()) + "," + std::to_string(p.z());
             provenance.parameters["points_mm"] = text;
             const std::string id = m_document.study().addLabel(
-                grown->label, "liver (grown from " + std::to_string(points.size()) + " points)", provenance, grown->warnings);
+                grown->label, organ + " (grown from " + std::to_string(points.size()) + " points)", provenance, grown->warnings);
             m_scene.labels[id] = grown->label;
-            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Liver from points")));
-            statusBar()->showMessage(tr("Liver grown from %1 point(s): %2 ml; choose it as the liver label in the Drug "
+            m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, title));
+            statusBar()->showMessage(tr("%1 grown from %2 point(s): %3 ml; choose it as the %4 label in the Drug "
                                         "Delivery dock")
+                                         .arg(QString::fromStdString(organ))
                                          .arg(points.size())
-                                         .arg(grown->figures.at("volume_ml"), 0, 'f', 1),
+                                         .arg(grown->figures.at("volume_ml"), 0, 'f', 1)
+                                         .arg(QString::fromStdString(organ)),
                                      8000);
         });
 }

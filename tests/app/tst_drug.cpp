@@ -172,6 +172,7 @@ private slots:
                 }
         // Drug > Liver from Points: refused without points, then grown from an include point in the tissue.
         QVERIFY(!window.growLiverFromPoints());
+        QVERIFY(!window.growTumourFromPoints());
         window.showSegmentationPoints();
         window.segmentationPointsPanel()->addPoint(grid.indexToPatient(Eigen::Vector3d(120, 120, 75)), true);
         QVERIFY(window.growLiverFromPoints());
@@ -197,6 +198,27 @@ private slots:
         auto* tumourBox = panel->findChild<QComboBox*>("drugTumourLabel");
         liverBox->setCurrentIndex(liverBox->findData(QString::fromStdString(liverId)));
         tumourBox->setCurrentIndex(tumourBox->findData(QString::fromStdString(tumourId)));
+        // Drug > Tumour from Points: refused before a liver label is chosen (above, it is), then a lesion grown within
+        // it from one point at the tumour's centre; its overlap with the phantom's tumour sphere reported.
+        {
+            imaging::SegmentationRequest points;
+            points.includeMm = {centre};
+            window.segmentationPointsPanel()->setRequest(points);
+            QVERIFY(window.growTumourFromPoints());
+            QVERIFY(vsim::test::waitForTask(window));
+            const study::Artifact grownTumour = window.document().study().artifacts().back();
+            QCOMPARE(grownTumour.provenance.parameters.at("organ"), std::string("tumour"));
+            QCOMPARE(grownTumour.provenance.inputs.back(), liverId);
+            const LabelVolume lesion = window.document().study().loadLabel(grownTumour.id);
+            double both = 0, label = 0, truth = 0;
+            for (std::size_t n = 0; n < grid.voxelCount(); ++n)
+                both += lesion.data()[n] && tumourLabel.data()[n], label += lesion.data()[n] != 0, truth += tumourLabel.data()[n] != 0;
+            qInfo("tumour from one point: %s, Dice %.3f against the phantom's tumour sphere", grownTumour.name.c_str(),
+                  2.0 * both / (label + truth));
+            QVERIFY(2.0 * both / (label + truth) >= 0.7);
+            window.document().undoStack()->undo();
+            QVERIFY(!window.document().study().hasArtifact(grownTumour.id));
+        }
         panel->findChild<QLineEdit*>("drugTip")->clear(); // from the root
         panel->findChild<QCheckBox*>("drugKeep")->setChecked(true); // the picked run stays beside it
         panel->findChild<QPushButton*>("drugRun")->click();

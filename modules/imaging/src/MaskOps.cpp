@@ -1,5 +1,7 @@
 #include "MaskOps.h"
 
+#include "vsim/core/DistanceTransform.h"
+
 #include <cstdlib>
 
 namespace vsim::imaging {
@@ -96,6 +98,31 @@ std::vector<std::uint8_t> erode6(const Dims& dims, const std::vector<std::uint8_
 std::vector<std::uint8_t> dilate6(const Dims& dims, const std::vector<std::uint8_t>& mask)
 {
     return morph6<false>(dims, mask);
+}
+
+std::vector<std::uint8_t> dilateBall(const Dims& dims, const std::vector<std::uint8_t>& mask,
+                                     const std::array<double, 3>& spacingMm, double radiusMm)
+{
+    std::vector<double> distance(mask.size());
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        distance[i] = mask[i] ? 0.0 : 1.0;
+    squaredDistanceTransform(distance, dims, spacingMm);
+    std::vector<std::uint8_t> out(mask.size());
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        out[i] = distance[i] <= radiusMm * radiusMm ? 1 : 0;
+    return out;
+}
+
+std::vector<std::uint8_t> erodeBall(const Dims& dims, const std::vector<std::uint8_t>& mask,
+                                    const std::array<double, 3>& spacingMm, double radiusMm)
+{
+    std::vector<std::uint8_t> outside(mask.size());
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        outside[i] = mask[i] ? 0 : 1;
+    std::vector<std::uint8_t> grown = dilateBall(dims, outside, spacingMm, radiusMm);
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        grown[i] = mask[i] && !grown[i] ? 1 : 0;
+    return grown;
 }
 
 } // namespace vsim::imaging

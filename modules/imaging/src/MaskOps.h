@@ -1,6 +1,6 @@
 #pragma once
 
-// Plain loops over binary masks on a voxel grid (i fastest): flood fill, 6-neighbour erosion and dilation. They
+// Plain loops over binary masks on a voxel grid (i fastest): flood fill, 6-neighbour and ball erosion and dilation. They
 // run on whole CT volumes, where ITK's generic filters would first need float or label copies of them.
 
 #include <array>
@@ -23,5 +23,12 @@ std::size_t floodFill(const Dims& dims, const std::vector<std::size_t>& seeds,
 std::vector<std::uint8_t> erode6(const Dims& dims, const std::vector<std::uint8_t>& mask);
 /// One step of 6-neighbour dilation.
 std::vector<std::uint8_t> dilate6(const Dims& dims, const std::vector<std::uint8_t>& mask);
+
+/// Erosion and dilation by a ball of `radiusMm` (exact Euclidean distances, anisotropic spacing): a voxel stays in
+/// the erosion when no voxel outside the mask lies within the radius, and joins the dilation when one inside does.
+std::vector<std::uint8_t> erodeBall(const Dims& dims, const std::vector<std::uint8_t>& mask,
+                                    const std::array<double, 3>& spacingMm, double radiusMm);
+std::vector<std::uint8_t> dilateBall(const Dims& dims, const std::vector<std::uint8_t>& mask,
+                                     const std::array<double, 3>& spacingMm, double radiusMm);
 
 } // namespace vsim::imaging
