@@ -355,6 +355,12 @@ NetworkRunIds addNetworkRun(study::Study& study, const sim::network::NetworkRunR
         attributes[prefix + "z_mm"] = preciseNumberText(p.z());
         attributes[prefix + "tumour_fraction"] = preciseNumberText(c.tumourFraction);
         attributes[prefix + "depth"] = std::to_string(c.depth);
+        if (c.grade != '-') // ranked by coverage (territories)
+        {
+            attributes[prefix + "grade"] = std::string(1, c.grade);
+            attributes[prefix + "covered_percent"] = preciseNumberText(c.coveredPercent);
+            attributes[prefix + "non_target_ml"] = preciseNumberText(c.nonTargetMl);
+        }
     }
     study.setArtifactAttributes(id, attributes);
     return ids;

@@ -180,18 +180,26 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
     section.blocks.push_back(targeting);
 
     report::Table ranking;
-    ranking.caption = "Candidate catheter tip positions, ranked by the drug share reaching the tumour";
+    const bool byCoverage = !textOr(run->attributes, "tip_rank_1_grade").empty();
+    ranking.caption = byCoverage ? "Candidate catheter tip positions, ranked by coverage grade, then the lesions' share "
+                                   "perfused, then the least non-tumour liver perfused"
+                                 : "Candidate catheter tip positions, ranked by the drug share reaching the tumour";
     ranking.columns = {"Rank", "Node", "Position x, y, z [mm]", "Tumour share [%]", "Depth [segments]"};
+    if (byCoverage)
+        ranking.columns.insert(ranking.columns.end(), {"Grade", "Lesions perfused [%]", "Non-tumour liver [ml]"});
     for (int k = 1;; ++k)
     {
         const std::string prefix = "tip_rank_" + std::to_string(k) + "_";
         auto at = [&](const std::string& key) { return textOr(run->attributes, prefix + key); };
         if (at("node").empty())
             break;
-        ranking.rows.push_back({std::to_string(k), at("node"),
-                                fixed(std::stod(at("x_mm")), 1) + ", " + fixed(std::stod(at("y_mm")), 1) + ", " +
-                                    fixed(std::stod(at("z_mm")), 1),
-                                fixed(100.0 * std::stod(at("tumour_fraction")), 1), at("depth")});
+        std::vector<std::string> row{std::to_string(k), at("node"),
+                                     fixed(std::stod(at("x_mm")), 1) + ", " + fixed(std::stod(at("y_mm")), 1) + ", " +
+                                         fixed(std::stod(at("z_mm")), 1),
+                                     fixed(100.0 * std::stod(at("tumour_fraction")), 1), at("depth")};
+        if (byCoverage)
+            row.insert(row.end(), {at("grade"), fixed(std::stod(at("covered_percent")), 1), fixed(std::stod(at("non_target_ml")), 1)});
+        ranking.rows.push_back(row);
     }
     if (!ranking.rows.empty())
         section.blocks.push_back(ranking);
