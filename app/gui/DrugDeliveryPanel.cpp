@@ -3,6 +3,7 @@
 #include "RunPlayer.h"
 
 #include "NetworkProjectionView.h"
+#include "vsim/app/ProjectionPicture.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/sim/network/Tracers.h"
@@ -67,7 +68,7 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
     : QWidget(parent), m_view(view), m_summary(new QTextBrowser(this)), m_outlets(new QTableWidget(this)),
       m_projection(new NetworkProjectionView(this)), m_player(new RunPlayer(this)), m_tip(new QLineEdit(this)), m_tumour(new QLineEdit(this)), m_controls(new QLineEdit(this)),
       m_inlet(new QLineEdit(this)), m_feedersAdded(new QLineEdit(this)), m_feedersRemoved(new QLineEdit(this)),
-      m_feeders(new QTableWidget(this)),
+      m_feeders(new QTableWidget(this)), m_dsa(new QCheckBox(tr("DSA-like view at the working angle"), this)),
       m_liverLabel(new QComboBox(this)), m_tumourLabel(new QComboBox(this)),
       m_keep(new QCheckBox(tr("Keep this run (the next one is added beside it)"), this)), m_tumourRadius(new QDoubleSpinBox(this))
 {
@@ -144,12 +145,16 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
         if (item->column() == 0)
             feederToggled(item->row());
     });
+    m_dsa->setObjectName("drugDsa");
+    m_dsa->setToolTip(tr("The projection as a DSA-like image (the opacified tree, the path to the tip denser)"));
+    connect(m_dsa, &QCheckBox::toggled, m_projection, &NetworkProjectionView::setShowDsa);
     m_player->setObjectName("drugPlayer");
     m_player->setSpeed(4.0); // 40 filling steps a second
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(setup);
     layout->addWidget(m_summary);
     layout->addWidget(m_player);
+    layout->addWidget(m_dsa);
     layout->addWidget(m_projection, 2);
     layout->addWidget(m_feeders, 1);
     layout->addWidget(m_outlets, 1);
@@ -373,8 +378,11 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
     if (!lines.empty()) // frame the tree from the front, left of the legend
         m_view->showAnteriorViewOf(low, top);
     m_projection->setNetwork(r.network, values, 0.0, high);
-    m_projection->setViewDirection(sim::network::detectorDirection(r.workingAngle ? r.workingAngle->angles
-                                                                                   : sim::network::CArmAngles{}));
+    const sim::network::CArmAngles angles = r.workingAngle ? r.workingAngle->angles : sim::network::CArmAngles{};
+    m_projection->setViewDirection(sim::network::detectorDirection(angles));
+    m_projection->setDsaPicture(r.workingAngle ? app::projectionPicture(sim::network::dsaProjection(r.network, r.tipNode, angles))
+                                               : QImage());
+    m_dsa->setEnabled(r.workingAngle.has_value());
     const int steps = std::max(1, fillingSteps);
     std::vector<double> times;
     for (int step = 0; step <= steps; ++step)

@@ -99,6 +99,7 @@ private:
     QLineEdit *m_tip, *m_tumour, *m_controls, *m_inlet, *m_feedersAdded, *m_feedersRemoved;
     QComboBox *m_liverLabel, *m_tumourLabel;
     QCheckBox* m_keep;
+    QCheckBox* m_dsa;
     QDoubleSpinBox* m_tumourRadius;
     std::shared_ptr<const sim::network::NetworkRunResult> m_run;
     QTextBrowser* m_summary;

@@ -57,6 +57,18 @@ void NetworkProjectionView::fitBounds()
     update();
 }
 
+void NetworkProjectionView::setDsaPicture(const QImage& picture)
+{
+    m_dsa = picture;
+    update();
+}
+
+void NetworkProjectionView::setShowDsa(bool show)
+{
+    m_showDsa = show;
+    update();
+}
+
 void NetworkProjectionView::setTrails(std::vector<std::vector<Eigen::Vector3d>> trails)
 {
     m_trails = std::move(trails);
@@ -76,6 +88,12 @@ void NetworkProjectionView::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);
+    if (showsDsa()) // the picture fitted to the view, its aspect kept
+    {
+        const QImage fitted = m_dsa.scaled(size(), Qt::KeepAspectRatio, Qt::SmoothTransformation);
+        painter.drawImage(QPointF(0.5 * (width() - fitted.width()), 0.5 * (height() - fitted.height())), fitted);
+        return;
+    }
     const Eigen::Vector2d size = m_max - m_min;
     const double pixelsPerMm = std::min(width() / std::max(size.x(), 1.0), height() / std::max(size.y(), 1.0));
     for (std::size_t s = 0; s < m_network.segments.size(); ++s)

@@ -129,6 +129,9 @@ private slots:
         QVERIFY(std::stod(picked.attributes.at("working_overlap_percent")) + std::stod(picked.attributes.at("working_foreshortening_percent")) <=
                 std::stod(picked.attributes.at("frontal_overlap_percent")) + std::stod(picked.attributes.at("frontal_foreshortening_percent")));
         QVERIFY(panel->findChild<QTextBrowser*>("drugSummary")->toPlainText().contains("Working angle"));
+        panel->findChild<QCheckBox*>("drugDsa")->setChecked(true); // the DSA-like view at that angle
+        QVERIFY(panel->projection()->showsDsa());
+        panel->findChild<QCheckBox*>("drugDsa")->setChecked(false);
 
         // File > Export Report in the background, the tree's snapshot rendered on the GUI thread: the PDF with the
         // chemoembolization section, the DICOM instance and the metrics beside it.

@@ -1,6 +1,7 @@
 #include "ReportTacePictures.h"
 
 #include "vsim/app/NetworkPipeline.h"
+#include "vsim/app/ProjectionPicture.h"
 #include "vsim/core/Error.h"
 #include "vsim/sim/network/Lesions.h"
 #include "vsim/sim/network/WorkingAngle.h"
@@ -108,10 +109,6 @@ report::Block workingViewPicture(const VesselNetwork& network, const study::Arti
         return report::Paragraph{"Working angle: none for this run (the tip at the root, or working_angle 0)."};
     const sim::network::CArmAngles angles{std::stod(lao->second), std::stod(cranial->second)};
     const sim::network::ProjectionImage view = sim::network::dsaProjection(network, int(std::stod(tip->second)), angles);
-    QImage picture(view.width, view.height, QImage::Format_Grayscale8);
-    for (int y = 0; y < view.height; ++y)
-        for (int x = 0; x < view.width; ++x)
-            picture.scanLine(y)[x] = uchar(std::lround(255.0f * view.transmission[std::size_t(y) * std::size_t(view.width) + std::size_t(x)]));
     auto side = [](double degrees, const char* plus, const char* minus) {
         char text[48];
         std::snprintf(text, sizeof text, "%s %.1f", degrees >= 0.0 ? plus : minus, std::abs(degrees));
@@ -121,7 +118,7 @@ report::Block workingViewPicture(const VesselNetwork& network, const study::Arti
                               side(angles.cranialDeg, "cranial", "caudal") +
                               " deg; patient supine, the head up): the tree the contrast opacifies, the path to the tip "
                               "twice as dense (" + std::to_string(view.pixelMm).substr(0, 4) + " mm pixels)",
-                          widened(picture, pixels)};
+                          widened(projectionPicture(view), pixels)};
 }
 
 } // namespace vsim::app::detail
