@@ -215,15 +215,7 @@ LesionGrowing growLesion(const CtVolume& ct, const std::vector<Eigen::Vector3d>&
     progress.report(0.8, "opening");
     if (const double closing = parameters.get("lesion_closing_mm"); closing > 0.0)
         kept = erodeBall(dims, dilateBall(dims, kept, spacing, closing), spacing, closing);
-    std::vector<std::size_t> border; // cavities: what the box's border cannot reach without crossing the label
-    for (int c = 0; c < size[2]; ++c)
-        for (int b = 0; b < size[1]; ++b)
-            for (int a = 0; a < size[0]; ++a)
-                if ((a == 0 || b == 0 || c == 0 || a == size[0] - 1 || b == size[1] - 1 || c == size[2] - 1) &&
-                    !kept[boxIndex(a, b, c)])
-                    border.push_back(boxIndex(a, b, c));
-    std::vector<std::uint8_t> outside(count, 0);
-    floodFill(dims, border, [&](std::size_t v) { return kept[v] == 0; }, outside, true);
+    kept = withCavitiesFilled(dims, kept);
     progress.report(0.95, "closing");
 
     result.label = LabelVolume(g);
@@ -231,7 +223,7 @@ LesionGrowing growLesion(const CtVolume& ct, const std::vector<Eigen::Vector3d>&
     for (int c = 0; c < size[2]; ++c)
         for (int b = 0; b < size[1]; ++b)
             for (int a = 0; a < size[0]; ++a)
-                if (!outside[boxIndex(a, b, c)] && inside[boxIndex(a, b, c)])
+                if (kept[boxIndex(a, b, c)] && inside[boxIndex(a, b, c)])
                 {
                     result.label.at(first[0] + a, first[1] + b, first[2] + c) = 1;
                     ++voxels;

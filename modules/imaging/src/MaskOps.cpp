@@ -100,6 +100,24 @@ std::vector<std::uint8_t> dilate6(const Dims& dims, const std::vector<std::uint8
     return morph6<false>(dims, mask);
 }
 
+std::vector<std::uint8_t> withCavitiesFilled(const Dims& dims, const std::vector<std::uint8_t>& mask)
+{
+    std::vector<std::size_t> border;
+    for (int k = 0; k < dims[2]; ++k)
+        for (int j = 0; j < dims[1]; ++j)
+            for (int i = 0; i < dims[0]; ++i)
+            {
+                const std::size_t v = std::size_t(i) + std::size_t(dims[0]) * (std::size_t(j) + std::size_t(dims[1]) * std::size_t(k));
+                if ((i == 0 || j == 0 || k == 0 || i == dims[0] - 1 || j == dims[1] - 1 || k == dims[2] - 1) && !mask[v])
+                    border.push_back(v);
+            }
+    std::vector<std::uint8_t> outside(mask.size(), 0);
+    floodFill(dims, border, [&](std::size_t v) { return mask[v] == 0; }, outside, true);
+    for (std::uint8_t& v : outside)
+        v = v ? 0 : 1;
+    return outside;
+}
+
 std::vector<std::uint8_t> dilateBall(const Dims& dims, const std::vector<std::uint8_t>& mask,
                                      const std::array<double, 3>& spacingMm, double radiusMm)
 {

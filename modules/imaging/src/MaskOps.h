@@ -24,6 +24,10 @@ std::vector<std::uint8_t> erode6(const Dims& dims, const std::vector<std::uint8_
 /// One step of 6-neighbour dilation.
 std::vector<std::uint8_t> dilate6(const Dims& dims, const std::vector<std::uint8_t>& mask);
 
+/// The mask with its enclosed cavities filled: every voxel the grid's border cannot reach (6-connected) without
+/// crossing the mask.
+std::vector<std::uint8_t> withCavitiesFilled(const Dims& dims, const std::vector<std::uint8_t>& mask);
+
 /// Erosion and dilation by a ball of `radiusMm` (exact Euclidean distances, anisotropic spacing): a voxel stays in
 /// the erosion when no voxel outside the mask lies within the radius, and joins the dilation when one inside does.
 std::vector<std::uint8_t> erodeBall(const Dims& dims, const std::vector<std::uint8_t>& mask,

@@ -139,16 +139,7 @@ OrganGrowing growOrgan(const CtVolume& ct, const std::vector<Eigen::Vector3d>& p
         kept = dilate6(dims, kept);
     for (int s = 0; s < closing; ++s)
         kept = erode6(dims, kept);
-    // Cavities: what the box's border cannot reach without crossing the label.
-    std::vector<std::size_t> border;
-    for (int k = 0; k < box.dims[2]; ++k)
-        for (int j = 0; j < box.dims[1]; ++j)
-            for (int i = 0; i < box.dims[0]; ++i)
-                if ((i == 0 || j == 0 || k == 0 || i == box.dims[0] - 1 || j == box.dims[1] - 1 || k == box.dims[2] - 1) &&
-                    !kept[box.index(i, j, k)])
-                    border.push_back(box.index(i, j, k));
-    std::vector<std::uint8_t> outside(box.size(), 0);
-    floodFill(dims, border, [&](std::size_t i) { return kept[i] == 0; }, outside, true);
+    kept = withCavitiesFilled(dims, kept);
     progress.report(0.95, "closing");
 
     result.label = LabelVolume(g);
@@ -156,7 +147,7 @@ OrganGrowing growOrgan(const CtVolume& ct, const std::vector<Eigen::Vector3d>& p
     for (int k = 0; k < box.dims[2]; ++k)
         for (int j = 0; j < box.dims[1]; ++j)
             for (int i = 0; i < box.dims[0]; ++i)
-                if (!outside[box.index(i, j, k)])
+                if (kept[box.index(i, j, k)])
                 {
                     result.label.at(box.first[0] + i, box.first[1] + j, box.first[2] + k) = 1;
                     ++voxels;
