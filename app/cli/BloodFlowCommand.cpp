@@ -112,15 +112,15 @@ sim::sph::Waveform readWaveform(const std::string& file)
     return waveform;
 }
 
-/// What both SPH commands do before anything runs: --backend checked, --out claimed (a refused folder costs no
-/// time), the study opened for writing and its centerlines chosen (--centerlines or the newest).
+/// What both SPH commands do before anything runs: --backend checked, --out checked (a refused folder costs no
+/// time; it is claimed when the run is written), the study opened for writing and its centerlines chosen (--centerlines or the newest).
 study::Study prepareSphRun(const Arguments& arguments, std::string& backend, std::string& centerlinesId)
 {
     backend = arguments.option("backend", "auto");
     if (backend != "auto" && backend != "cpu" && backend != "cuda")
         throw UsageError("--backend: auto, cpu or cuda, not '" + backend + "'");
     if (arguments.hasOption("out"))
-        claimOutputFolder(arguments.option("out"), "run");
+        checkOutputFolder(arguments.option("out"), "run");
     study::Study study = openStudyForWriting(arguments);
     centerlinesId = chooseCenterlines(study, arguments.option("centerlines"));
     return study;
@@ -185,7 +185,10 @@ int simulateSph(const Arguments& arguments, const Progress& progress)
     const std::string& runId = added.run;
     study.save();
     if (arguments.hasOption("out"))
+    {
+        claimOutputFolder(arguments.option("out"), "run");
         study::writeRunSeries(arguments.option("out"), flow.run, document);
+    }
     progress.report(1.0, "saved");
     std::cout << document.substr(0, document.size() - 2) << ",\n  \"run_artifact\": \"" << runId << "\",\n"
               << "  \"wall_loads_artifact\": \"" << added.wallLoads << "\"\n}\n";
@@ -218,7 +221,10 @@ int simulateInjection(const Arguments& arguments, const Progress& progress)
     const std::string runId = app::addInjectionRun(study, injection, setup);
     study.save();
     if (arguments.hasOption("out"))
+    {
+        claimOutputFolder(arguments.option("out"), "run");
         study::writeRunSeries(arguments.option("out"), injection.run, document);
+    }
     progress.report(1.0, "saved");
     std::cout << document.substr(0, document.size() - 2) << ",\n  \"run_artifact\": \"" << runId << "\"\n}\n";
     return runExitCode(injection.run.status, runId);

@@ -49,7 +49,7 @@ Eigen::Vector3d point(const std::vector<double>& v) { return {v[0], v[1], v[2]};
 int simulateNetwork(const Arguments& arguments, const Progress& progress)
 {
     if (arguments.hasOption("out")) // before the run: a refused folder costs no time
-        claimOutputFolder(arguments.option("out"), "run");
+        checkOutputFolder(arguments.option("out"), "run");
     study::Study study = openStudyForWriting(arguments);
     sim::network::NetworkRunSetup setup;
     applyParameters(arguments, setup.parameters);
@@ -138,7 +138,10 @@ int simulateNetwork(const Arguments& arguments, const Progress& progress)
     const app::NetworkRunIds ids = app::addNetworkRun(study, run, setup.parameters, inputs, source);
     study.save();
     if (arguments.hasOption("out"))
+    {
+        claimOutputFolder(arguments.option("out"), "run");
         app::writeNetworkRun(arguments.option("out"), run, document);
+    }
     progress.report(1.0, "saved");
     std::cout << document.substr(0, document.size() - 1) << ",\n  \"artifact\": \"" << ids.network
               << "\",\n  \"run_artifact\": \"" << ids.run << "\"\n}\n";

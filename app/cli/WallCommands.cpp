@@ -165,7 +165,7 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
     if (protocol != "thesis-rupture" && protocol != "physiological")
         throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
     if (arguments.hasOption("out")) // before the run: a refused folder costs no time
-        claimOutputFolder(arguments.option("out"), "run");
+        checkOutputFolder(arguments.option("out"), "run");
     study::Study study = openStudyForWriting(arguments);
     const std::string meshId = chooseMadeBy(study, arguments.option("mesh"), study::ArtifactKind::TetMesh, "mesh wall",
                                             "the study has no wall mesh: run vascusim-cli mesh wall first");
@@ -204,7 +204,10 @@ int simulateFem(const Arguments& arguments, const Progress& progress)
     const app::WallRunIds ids = app::addWallRun(study, run, protocol, meshId, centerlinesId, parameters, backend);
     study.save();
     if (arguments.hasOption("out"))
+    {
+        claimOutputFolder(arguments.option("out"), "run");
         study::writeRunSeries(arguments.option("out"), sim::fem::runOf(run), document.dump(2));
+    }
     progress.report(1.0, "saved");
     nlohmann::json printed = document;
     printed["artifact"] = ids.stress;

@@ -49,6 +49,13 @@ foreach(case phantom demo demo-study import simulate-fem simulate-network)
     expect_survived(${target} ${case})
 endforeach()
 
+# A run refused after its output folder was checked (the study has no centerlines) leaves no folder behind: the
+# folder is claimed only when the run is written.
+run_cli(1 out simulate network --study ${study} --tip 0 --out ${WORK}/never-written/run)
+if(EXISTS ${WORK}/never-written)
+    message(FATAL_ERROR "a refused network run left its output folder behind:\n${out}")
+endif()
+
 # Files the user names: replaced only with --overwrite; a folder in their place never.
 file(WRITE ${WORK}/existing.pdf "${stranger_text}")
 run_cli(1 out report --study ${study} --out ${WORK}/existing.pdf --no-validation)

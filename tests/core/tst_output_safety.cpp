@@ -59,6 +59,25 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(vsim::Error, vsim::claimOutputFolder(file, "run")); // a file is no folder
     }
 
+    // The check before a run refuses what the claim would and writes nothing: a run that fails leaves no folder.
+    void checkingWritesNothing()
+    {
+        const fs::path missing = fresh("checked/deeper");
+        vsim::checkOutputFolder(missing, "run");
+        QVERIFY(!fs::exists(missing) && !fs::exists(missing.parent_path()));
+        const fs::path empty = fresh("checked-empty");
+        fs::create_directories(empty);
+        vsim::checkOutputFolder(empty, "run");
+        QVERIFY(fs::is_empty(empty));
+        const fs::path stranger = fresh("checked-stranger");
+        fs::create_directories(stranger);
+        std::ofstream(stranger / "notes.txt") << "mine";
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, vsim::checkOutputFolder(stranger, "run"));
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, vsim::checkOutputFolder(stranger / "notes.txt", "run"));
+        QVERIFY_THROWS_EXCEPTION(vsim::Error, vsim::checkOutputFolder(stranger / "notes.txt" / "below", "run"));
+        QVERIFY(fs::exists(stranger / "notes.txt") && !fs::exists(stranger / vsim::kOwnedFolderMarker));
+    }
+
     void existingFilesNeedOverwriteAndFoldersAreNeverFiles()
     {
         const fs::path folder = fresh("files");

@@ -37,16 +37,18 @@ bool isOwnedFolder(const fs::path& folder, const std::string& purpose)
     return marker && std::getline(marker, line) && line == markerText(purpose);
 }
 
-void claimOutputFolder(const fs::path& folder, const std::string& purpose)
+void checkOutputFolder(const fs::path& folder, const std::string& purpose)
 {
     std::error_code error;
     const fs::file_status status = fs::status(folder, error);
     if (!fs::exists(status))
     {
-        fs::create_directories(folder, error);
-        if (error)
-            throw Error("cannot create the output folder: " + error.message(), {{"folder", folder.string()}});
-        writeMarker(folder, purpose);
+        // It can be created when its nearest existing ancestor is a folder.
+        fs::path ancestor = fs::absolute(folder, error).parent_path();
+        while (!ancestor.empty() && !fs::exists(ancestor, error) && ancestor != ancestor.parent_path())
+            ancestor = ancestor.parent_path();
+        if (!ancestor.empty() && fs::exists(ancestor, error) && !fs::is_directory(ancestor, error))
+            throw Error("cannot create the output folder: " + ancestor.string() + " is a file", {{"folder", folder.string()}});
         return;
     }
     if (!fs::is_directory(status))
@@ -63,7 +65,20 @@ void claimOutputFolder(const fs::path& folder, const std::string& purpose)
     if (!fs::is_empty(folder, error))
         throw Error("the output folder holds files VascuSim did not write; choose a new or empty folder",
                     {{"folder", folder.string()}});
-    writeMarker(folder, purpose);
+}
+
+void claimOutputFolder(const fs::path& folder, const std::string& purpose)
+{
+    checkOutputFolder(folder, purpose);
+    std::error_code error;
+    if (!fs::exists(folder, error))
+    {
+        fs::create_directories(folder, error);
+        if (error)
+            throw Error("cannot create the output folder: " + error.message(), {{"folder", folder.string()}});
+    }
+    if (!isOwnedFolder(folder, purpose))
+        writeMarker(folder, purpose);
 }
 
 void checkOutputFile(const fs::path& file, bool overwrite)

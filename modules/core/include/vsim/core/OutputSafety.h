@@ -22,6 +22,11 @@ bool isOwnedFolder(const std::filesystem::path& folder, const std::string& purpo
 /// anything else, is a file, or cannot be created.
 void claimOutputFolder(const std::filesystem::path& folder, const std::string& purpose);
 
+/// What claimOutputFolder would refuse, without touching the disk: a command checks its output folder before it
+/// computes anything (a refusal costs no time) and claims it when it writes (a run that fails leaves nothing).
+/// Throws vsim::Error naming the path, as claimOutputFolder does (and for a folder below a file).
+void checkOutputFolder(const std::filesystem::path& folder, const std::string& purpose);
+
 /// Checks that `file` may be written: it is absent, or present, a regular file and `overwrite` is true.
 /// Throws vsim::Error naming the path (and --overwrite) otherwise; its folder must exist or be creatable.
 void checkOutputFile(const std::filesystem::path& file, bool overwrite);
