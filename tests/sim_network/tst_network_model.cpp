@@ -13,11 +13,13 @@
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/sim/network/NetworkRun.h"
 #include "vsim/sim/network/Tracers.h"
+#include "vsim/sim/network/WorkingAngle.h"
 
 #include <QtTest>
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 using namespace vsim;
 using namespace vsim::sim::network;
@@ -366,6 +368,32 @@ private slots:
         QVERIFY(messageOf([&] { runNetwork(setup); }).contains("not in the network"));
         QCOMPARE(inletSegment(tree, "-4, 0, 28"), 1); // a point beside the hepatic branch
         QVERIFY(messageOf([&] { inletSegment(tree, "-40, 0, 28"); }).contains("from the nearest vessel"));
+    }
+
+    // The working angle's path starts at the common hepatic artery where the tree names it (the guiding catheter
+    // sits there, and a selective injection opacifies only what lies beyond it), else at the root.
+    void workingPathFromTheCommonHepatic()
+    {
+        VesselNetwork tree = binaryTree();
+        auto segmentsOf = [](const std::vector<AngleScene::Piece>& pieces) {
+            std::set<int> segments;
+            for (const auto& piece : pieces)
+                segments.insert(piece.segment);
+            return segments;
+        };
+        const AngleScene fromRoot = angleScene(tree, 2);
+        QCOMPARE(fromRoot.start, 0);
+        QCOMPARE(segmentsOf(fromRoot.path), (std::set<int>{0, 1}));
+        QCOMPARE(segmentsOf(fromRoot.others), (std::set<int>{2, 3, 4, 5, 6}));
+        tree.segments[1].name = "Common Hepatic Artery";
+        const AngleScene scene = angleScene(tree, 2);
+        QCOMPARE(scene.start, 1);
+        QCOMPARE(segmentsOf(scene.path), (std::set<int>{1}));
+        QCOMPARE(segmentsOf(scene.others), (std::set<int>{3, 4})); // not the trunk, nor the sibling branch (2, 5, 6)
+        NetworkRunSetup setup;
+        setup.network = tree;
+        setup.tipNode = 2;
+        QCOMPARE(runNetwork(setup).metrics.at("working_path_start_node"), 1.0);
     }
 
     // The injected-alone model (the thesis's) is still there, and the tip pressure belongs to it.

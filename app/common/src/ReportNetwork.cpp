@@ -160,7 +160,8 @@ std::optional<report::Section> drugSection(const study::Study& study, const Repo
     report::MetricTable angle{"Working C-arm angle for the path to the tip (patient supine; + LAO / - RAO, + cranial / "
                               "- caudal; within LAO/RAO 60 and cranial/caudal 40 degrees)", {}};
     addMetrics(angle, *run,
-               {{"working_lao_deg", "LAO (+) / RAO (-)", "deg"},
+               {{"working_path_start_node", "Path from node (the common hepatic artery's upper end when named, else the root)", ""},
+                {"working_lao_deg", "LAO (+) / RAO (-)", "deg"},
                 {"working_cranial_deg", "Cranial (+) / caudal (-)", "deg"},
                 {"working_foreshortening_percent", "Path foreshortened at the working angle", "%"},
                 {"working_overlap_percent", "Path overlapped by other vessels at the working angle", "%"},

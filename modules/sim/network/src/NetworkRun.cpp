@@ -434,6 +434,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         r.metrics["frontal_foreshortening_percent"] = 100.0 * w.frontal.foreshortening;
         r.metrics["frontal_overlap_percent"] = 100.0 * w.frontal.overlap;
         r.metrics["working_angle_views"] = w.evaluated;
+        r.metrics["working_path_start_node"] = w.pathStart;
         r.metrics["working_angle_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     }
     setFields(r, fluid, p.get("blood_density"));

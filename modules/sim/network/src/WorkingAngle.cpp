@@ -6,8 +6,10 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace vsim::sim::network {
 namespace {
@@ -63,18 +65,38 @@ AngleScene angleScene(const VesselNetwork& network, int tipNode)
     if (tipNode == network.root)
         throw Error("the working angle needs a tip away from the root: there is no path to see");
     const TipOrientation fromRoot = orientFromTip(network, network.root);
-    std::vector<char> onPath(network.segments.size(), 0);
+    std::vector<int> path; // tip to root
     for (int node = tipNode; node != network.root;)
     {
         const int s = fromRoot.parentSegment[std::size_t(node)];
         if (s < 0)
             throw Error("the catheter tip (node " + std::to_string(tipNode) + ") is not connected to the root");
-        onPath[std::size_t(s)] = 1;
+        path.push_back(s);
         node = fromRoot.upstreamNode[std::size_t(s)];
     }
+    auto guiding = [&](int s) {
+        std::string name = network.segments[std::size_t(s)].name;
+        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        return name == kGuidingVessel;
+    };
+    const auto first = std::find_if(path.rbegin(), path.rend(), guiding); // the guiding vessel's piece nearest the root
     AngleScene scene;
+    scene.start = first == path.rend() ? network.root : fromRoot.upstreamNode[std::size_t(*first)];
+    path.erase(first == path.rend() ? path.end() : first.base(), path.end());
+    std::vector<char> onPath(network.segments.size(), 0), opacified(network.segments.size(), scene.start == network.root);
+    for (int s : path)
+        onPath[std::size_t(s)] = 1;
+    if (first != path.rend()) // the tree the contrast reaches from the guiding vessel: it and what lies beyond it
+        for (std::size_t s = 0; s < network.segments.size(); ++s)
+            for (int up = int(s); up >= 0 && fromRoot.active(up) && !opacified[s];)
+            {
+                opacified[s] = up == *first;
+                const int node = fromRoot.upstreamNode[std::size_t(up)];
+                up = node == network.root ? -1 : fromRoot.parentSegment[std::size_t(node)];
+            }
     for (std::size_t s = 0; s < network.segments.size(); ++s)
-        addPieces(network, s, onPath[s] ? scene.path : scene.others);
+        if (onPath[s] || opacified[s])
+            addPieces(network, s, onPath[s] ? scene.path : scene.others);
     const Eigen::Vector3d& tip = network.nodes[std::size_t(tipNode)].positionMm;
     for (const AngleScene::Piece& piece : scene.path)
     {
@@ -153,6 +175,7 @@ WorkingAngle workingAngle(const VesselNetwork& network, int tipNode, const Progr
 {
     const AngleScene scene = angleScene(network, tipNode);
     WorkingAngle best;
+    best.pathStart = scene.start;
     best.frontal = viewQuality(scene, detectorDirection({}));
     best.quality = best.frontal;
     best.evaluated = 1;

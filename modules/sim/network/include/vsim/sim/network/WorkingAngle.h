@@ -1,7 +1,7 @@
 #pragma once
 
-// A working C-arm angle for the catheter's path (issue 19, item 4): the path from the tree's root (where the
-// guiding catheter sits) to the tip, seen with the least foreshortening and the least overlap with the rest of
+// A working C-arm angle for the catheter's path (issue 19, item 4): the path from the common hepatic artery when
+// the tree names it, else from the tree's root (where the guiding catheter sits), to the tip, seen with the least foreshortening and the least overlap with the rest of
 // the tree, which the contrast injected at the root opacifies.
 //
 // Angles (patient supine): LAO positive / RAO negative rotates the detector towards the patient's left / right,
@@ -49,12 +49,17 @@ struct AngleScene
         double radiusMm = 0.0;
         int segment = -1;
     };
-    std::vector<Piece> path;                 ///< root to tip
-    std::vector<Piece> others;               ///< every other vessel of the tree
+    std::vector<Piece> path;                 ///< the path's start to the tip
+    std::vector<Piece> others;               ///< every other vessel the contrast opacifies (beyond the guiding vessel)
     std::vector<std::pair<Eigen::Vector3d, double>> samples; ///< along the path (point, radius), the tip's end left out
+    int start = -1;                          ///< the path's first node
 };
 
-/// The scene of the path from `network`'s root to `tipNode`. Throws vsim::Error for a tip at the root.
+/// The path's name where the guiding catheter sits (issue 19: "the path from the common hepatic artery").
+inline constexpr const char* kGuidingVessel = "common hepatic artery";
+
+/// The scene of the path to `tipNode` from the upper end of the segment named kGuidingVessel on it (any case),
+/// else from `network`'s root. Throws vsim::Error for a tip at the path's start.
 AngleScene angleScene(const VesselNetwork& network, int tipNode);
 
 /// The quality of the view along `direction` (unit).
@@ -66,6 +71,7 @@ struct WorkingAngle
     ViewQuality quality;
     ViewQuality frontal; ///< at 0 / 0, for comparison
     int evaluated = 0;   ///< views evaluated
+    int pathStart = -1;  ///< the path's first node (AngleScene::start)
 };
 
 /// The C-arm's range searched: |LAO/RAO| <= 60 and |cranial/caudal| <= 40 degrees.
