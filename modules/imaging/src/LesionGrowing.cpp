@@ -78,8 +78,9 @@ std::vector<ParameterSpec> lesionGrowingParameters()
 {
     return {
         {"lesion_sigmas", "Lesion threshold", "sigma", 2.0, 0.5, 6.0, "Lesion growing",
-         "The lesion's boundary: this many robust standard deviations of the smoothed liver parenchyma below its "
-         "median (hypodense lesions; above it for hyperdense ones)."},
+         "The lesion's boundary: this many spreads of the smoothed liver parenchyma (its histogram peak's full width "
+         "at half maximum / 2.355) below the peak (hypodense lesions; above it for hyperdense ones), and at least a "
+         "quarter of the lesion's contrast."},
         {"lesion_smoothing_mm", "Smoothing", "mm", 2.0, 0.0, 5.0, "Lesion growing",
          "Standard deviation of the Gaussian the CT is smoothed with before the threshold."},
         {"lesion_opening_mm", "Opening radius", "mm", 3.0, 0.0, 10.0, "Lesion growing",
