@@ -1,34 +1,24 @@
 #include "ReportTacePictures.h"
 
+#include "ReportSupport.h"
+
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/app/ProjectionPicture.h"
 #include "vsim/core/Error.h"
 #include "vsim/sim/network/Lesions.h"
 #include "vsim/sim/network/WorkingAngle.h"
+#include "vsim/viz/LabelPalette.h"
 
-#include <QColor>
 #include <QImage>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdio>
 
 namespace vsim::app::detail {
 namespace {
 
 constexpr double kWindowLowHu = 40.0 - 200.0, kWindowHighHu = 40.0 + 200.0; // abdominal window W 400, L 40
-constexpr double kOverlayOpacity = 0.45;
-
-/// The territory label's colours (Lesions.h's values), as the workstation's territory palette draws them.
-const std::map<int, QColor>& territoryColours()
-{
-    static const std::map<int, QColor> colours{
-        {sim::network::kLiverNotPerfused, QColor(120, 120, 140)}, {sim::network::kLiverPerfused, QColor(60, 200, 90)},
-        {sim::network::kTumourPerfused, QColor(250, 220, 40)},    {sim::network::kTumourMissed, QColor(230, 40, 40)},
-        {sim::network::kMarginMissed, QColor(250, 140, 30)},
-    };
-    return colours;
-}
 
 /// `image` scaled to `pixels` wide (nearest voxel: the voxels stay visible as they are).
 QImage widened(const QImage& image, int pixels)
@@ -43,8 +33,8 @@ report::Block territoryPicture(const study::Study& study, const study::Artifact&
 {
     const std::string caption =
         "Perfused territory from the tip on the axial CT slice through the largest lesion (W 400 / L 40 HU; patient "
-        "right on the left): green perfused liver, yellow perfused tumour, red tumour not perfused, orange margin not "
-        "perfused, blue-grey liver not perfused";
+        "right on the left; the workstation's colours): green perfused liver, blue perfused tumour, red tumour not "
+        "perfused, yellow margin not perfused, the liver not perfused unmarked";
     if (!run.provenance.parameters.count("liver_label"))
         return report::Paragraph{"Perfused territory: the run had no liver label (simulate network --liver-label)."};
     try
@@ -83,14 +73,9 @@ report::Block territoryPicture(const study::Study& study, const study::Artifact&
                         hu = ct.at(a, b, c);
                 }
                 const int grey = int(std::lround(255.0 * std::clamp((hu - kWindowLowHu) / (kWindowHighHu - kWindowLowHu), 0.0, 1.0)));
-                QColor colour(grey, grey, grey);
-                if (const auto found = territoryColours().find(territory.at(i, j, k)); found != territoryColours().end())
-                {
-                    const QColor& over = found->second;
-                    auto mix = [&](int under, int top) { return int(std::lround((1.0 - kOverlayOpacity) * under + kOverlayOpacity * top)); };
-                    colour = QColor(mix(grey, over.red()), mix(grey, over.green()), mix(grey, over.blue()));
-                }
-                picture.setPixel(i, j, colour.rgb());
+                const viz::LabelColour& over = viz::kTerritoryPalette[std::min<std::size_t>(territory.at(i, j, k), 5)];
+                auto mix = [&](double top) { return int(std::lround((1.0 - over[3]) * grey + over[3] * 255.0 * top)); };
+                picture.setPixel(i, j, qRgb(mix(over[0]), mix(over[1]), mix(over[2])));
             }
         return report::Figure{caption + " (slice z = " + std::to_string(int(std::lround(g.indexToPatient(Eigen::Vector3d(0, 0, k)).z()))) + " mm)",
                               widened(picture, pixels)};
@@ -117,7 +102,7 @@ report::Block workingViewPicture(const VesselNetwork& network, const study::Arti
     return report::Figure{"DSA-like view at the working angle (" + side(angles.laoDeg, "LAO", "RAO") + ", " +
                               side(angles.cranialDeg, "cranial", "caudal") +
                               " deg; patient supine, the head up): the tree the contrast opacifies, the path to the tip "
-                              "twice as dense (" + std::to_string(view.pixelMm).substr(0, 4) + " mm pixels)",
+                              "twice as dense (" + fixed(view.pixelMm, 2) + " mm pixels)",
                           widened(projectionPicture(view), pixels)};
 }
 

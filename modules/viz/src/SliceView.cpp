@@ -4,6 +4,7 @@
 #include "SliceMarkerLayer.h"
 
 #include "vsim/interop/VtkImage.h"
+#include "vsim/viz/LabelPalette.h"
 
 #include <QMouseEvent>
 #include <QWheelEvent>
@@ -50,14 +51,7 @@ vtkSmartPointer<vtkTextActor> makeLabel(int justification, int verticalJustifica
 /// The colours of label values 0-5 (RGBA; 0 clear) in a palette (SliceView.h).
 vtkSmartPointer<vtkLookupTable> labelTable(SliceView::LabelPalette palette)
 {
-    using Colour = std::array<double, 4>;
-    static const std::array<Colour, 6> tissue{Colour{0, 0, 0, 0},          Colour{1.0, 0.2, 0.15, 0.45},
-                                              Colour{1.0, 0.6, 0.1, 0.45}, Colour{1.0, 0.6, 0.1, 0.45},
-                                              Colour{1.0, 0.9, 0.2, 0.45}, Colour{0.3, 0.5, 1.0, 0.45}};
-    static const std::array<Colour, 6> territory{Colour{0, 0, 0, 0},          Colour{0, 0, 0, 0},
-                                                 Colour{0.2, 0.9, 0.3, 0.35}, Colour{0.3, 0.5, 1.0, 0.55},
-                                                 Colour{1.0, 0.15, 0.1, 0.6}, Colour{1.0, 0.9, 0.2, 0.5}};
-    const auto& colours = palette == SliceView::LabelPalette::Territory ? territory : tissue;
+    const auto& colours = palette == SliceView::LabelPalette::Territory ? kTerritoryPalette : kTissuePalette;
     auto table = vtkSmartPointer<vtkLookupTable>::New();
     table->SetNumberOfTableValues(6);
     table->SetTableRange(0.0, 5.0);
