@@ -177,6 +177,30 @@ void MainWindow::refreshTitle()
     const bool readOnly = m_document.hasStudy() && m_document.study().isReadOnly();
     setWindowTitle(readOnly ? tr("%1 (read-only) - VascuSim").arg(name) : tr("%1[*] - VascuSim").arg(name));
     setWindowModified(m_document.isModified());
+    refreshPatientOverlay();
+}
+
+void MainWindow::refreshPatientOverlay()
+{
+    // The slice views' top-left corner, as on a reading workstation: patient (name, ID), study (date,
+    // description), series (the newest image's name). Shown on screen only, never logged.
+    QStringList lines;
+    if (m_document.hasStudy())
+    {
+        const auto& metadata = m_document.study().metadata();
+        const auto value = [&](const char* key) {
+            const auto found = metadata.find(key);
+            return found == metadata.end() ? QString() : QString::fromStdString(found->second).trimmed();
+        };
+        QString patient = value("patient_name").replace('^', ' ').simplified();
+        if (!value("patient_id").isEmpty())
+            patient += (patient.isEmpty() ? "" : "  ") + tr("ID %1").arg(value("patient_id"));
+        lines << patient << (value("study_date") + "  " + value("study_description")).trimmed();
+        if (const std::string image = newestArtifact(study::ArtifactKind::Image); !image.empty())
+            lines << QString::fromStdString(m_document.study().artifact(image).name);
+    }
+    lines.removeAll(QString());
+    m_views->setPatientText(lines.join('\n'));
 }
 
 void MainWindow::refreshArtifactTree()

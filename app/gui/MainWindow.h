@@ -257,6 +257,8 @@ private:
     void createStatusBar();
     void refreshArtifactTree();
     void refreshTitle();
+    /// Patient, study and series in the slice views' corner.
+    void refreshPatientOverlay();
     void rememberRecent(const QString& bundle);
     void rebuildRecentMenu();
     void showError(const QString& title, const QString& message);

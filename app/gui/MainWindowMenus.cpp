@@ -5,6 +5,7 @@
 #include "vsim/app/VersionInfo.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QActionGroup>
 #include <QApplication>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -101,6 +102,32 @@ void MainWindow::createMenus()
     view->addAction(tr("Window/Level: &CTA"), this, [this] { m_views->applyWindowLevel(viz::kCtaPreset); });
     view->addAction(tr("Window/Level: &Soft Tissue"), this, [this] { m_views->applyWindowLevel(viz::kSoftTissuePreset); });
     view->addAction(tr("Window/Level: &Bone"), this, [this] { m_views->applyWindowLevel(viz::kBonePreset); });
+    view->addAction(tr("Window/Level: &Lung"), this, [this] { m_views->applyWindowLevel(viz::kLungPreset); });
+    view->addSeparator();
+    QAction* reset = view->addAction(tr("&Reset Slice Views"), this, [this] { m_views->resetViews(); });
+    reset->setToolTip(tr("Centre the volume and show it whole in the axial, coronal and sagittal views (R in a view)"));
+    QAction* linked = view->addAction(tr("&Link Slice Views"));
+    linked->setObjectName("linkViewsAction");
+    linked->setCheckable(true);
+    linked->setChecked(true);
+    linked->setToolTip(tr("Linked, the slice views share the cursor and window/level"));
+    connect(linked, &QAction::toggled, this, [this](bool on) { m_views->setLinked(on); });
+    QAction* crosshair = view->addAction(tr("Show &Crosshair"));
+    crosshair->setObjectName("crosshairAction");
+    crosshair->setCheckable(true);
+    crosshair->setChecked(true);
+    connect(crosshair, &QAction::toggled, this, [this](bool on) { m_views->setCrosshairShown(on); });
+    QMenu* slab = view->addMenu(tr("Thick Slab &MIP"));
+    auto* slabChoices = new QActionGroup(slab);
+    for (double thicknessMm : {0.0, 5.0, 10.0, 20.0, 40.0})
+    {
+        QAction* choice = slab->addAction(thicknessMm == 0.0 ? tr("Off (thin slice)") : tr("%1 mm").arg(thicknessMm));
+        choice->setCheckable(true);
+        choice->setChecked(thicknessMm == 0.0);
+        choice->setObjectName(QStringLiteral("slab%1Action").arg(int(thicknessMm)));
+        slabChoices->addAction(choice);
+        connect(choice, &QAction::triggered, this, [this, thicknessMm] { m_views->setSlabThickness(thicknessMm); });
+    }
     view->addSeparator();
     view->addAction(tr("3D: &Anterior View"), this, [this] { m_views->volumeView()->showAnteriorView(); });
     view->addSeparator();

@@ -159,9 +159,14 @@ ViewState MainWindow::captureViewState() const
         state.cursorMm = axial->cursor();
         state.windowLevel = axial->windowLevel();
         std::array<double, 3> fields{};
+        std::array<Eigen::Vector3d, 3> centres;
         for (std::size_t i = 0; i < 3; ++i)
+        {
             fields[i] = m_views->sliceView(kSliceOrientations[i])->fieldOfView();
+            centres[i] = m_views->sliceView(kSliceOrientations[i])->viewCentre();
+        }
         state.sliceFieldsOfViewMm = fields;
+        state.sliceViewCentresMm = centres;
     }
     state.camera3d = m_views->volumeView()->cameraState();
     return state;
@@ -180,6 +185,8 @@ void MainWindow::applyViewState(const ViewState& state)
             slice->setFieldOfView((*state.sliceFieldsOfViewMm)[i]);
         if (state.cursorMm)
             slice->setCursor(*state.cursorMm);
+        if (state.sliceViewCentresMm)
+            slice->setViewCentre((*state.sliceViewCentresMm)[i]);
     }
     if (state.camera3d)
         m_views->volumeView()->setCameraState(*state.camera3d);

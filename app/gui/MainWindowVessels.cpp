@@ -82,7 +82,7 @@ void MainWindow::createMeasurementDock()
         if (position.isValid())
         {
             const QVector3D p = position.value<QVector3D>();
-            m_views->sliceView(viz::SliceOrientation::Axial)->setCursor(Eigen::Vector3d(p.x(), p.y(), p.z()));
+            m_views->jumpTo(Eigen::Vector3d(p.x(), p.y(), p.z()));
         }
     });
     auto* dock = new QDockWidget(tr("Measurements"), this);

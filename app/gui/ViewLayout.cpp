@@ -30,10 +30,14 @@ ViewLayout::ViewLayout(QWidget* parent) : QWidget(parent)
     for (viz::SliceView* source : m_sliceViews)
     {
         connect(source, &viz::SliceView::cursorChanged, this, [this](const Eigen::Vector3d& cursor) {
+            if (!m_linked)
+                return;
             for (viz::SliceView* target : m_sliceViews)
                 target->setCursor(cursor); // a view whose cursor is already there does not emit again
         });
         connect(source, &viz::SliceView::windowLevelChanged, this, [this](double window, double level) {
+            if (!m_linked)
+                return;
             for (viz::SliceView* target : m_sliceViews)
                 if (target->windowLevel().window != window || target->windowLevel().level != level)
                     target->setWindowLevel({window, level});
@@ -55,7 +59,41 @@ void ViewLayout::showImage(const CtVolume& image)
 
 void ViewLayout::applyWindowLevel(const viz::WindowLevel& windowLevel)
 {
-    m_sliceViews[0]->setWindowLevel(windowLevel); // the others follow through windowLevelChanged
+    for (viz::SliceView* view : m_sliceViews)
+        view->setWindowLevel(windowLevel);
+}
+
+void ViewLayout::jumpTo(const Eigen::Vector3d& pointMm)
+{
+    for (viz::SliceView* view : m_sliceViews)
+    {
+        view->setCursor(pointMm);
+        view->ensureVisible(pointMm);
+    }
+}
+
+void ViewLayout::resetViews()
+{
+    for (viz::SliceView* view : m_sliceViews)
+        view->resetView();
+}
+
+void ViewLayout::setSlabThickness(double thicknessMm)
+{
+    for (viz::SliceView* view : m_sliceViews)
+        view->setSlabThickness(thicknessMm);
+}
+
+void ViewLayout::setCrosshairShown(bool shown)
+{
+    for (viz::SliceView* view : m_sliceViews)
+        view->setCrosshairShown(shown);
+}
+
+void ViewLayout::setPatientText(const QString& text)
+{
+    for (viz::SliceView* view : m_sliceViews)
+        view->setPatientText(text);
 }
 
 } // namespace vsim::gui

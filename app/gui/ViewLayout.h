@@ -18,8 +18,9 @@ namespace vsim::gui {
 inline constexpr std::array<viz::SliceOrientation, 3> kOrientations{viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal,
                                                                    viz::SliceOrientation::Sagittal};
 
-/// The 4-up layout: axial (top left), 3D (top right), coronal (bottom left), sagittal (bottom right), with a
-/// linked cursor (clicking in one MPR moves the others) and shared window/level.
+/// The 4-up layout: axial (top left), 3D (top right), coronal (bottom left), sagittal (bottom right). Linked (the
+/// default) the MPRs share the cursor (a click in one moves the others' slices and crosshairs) and window/level;
+/// unlinked each keeps its own.
 class ViewLayout : public QWidget
 {
     Q_OBJECT
@@ -32,9 +33,21 @@ public:
     void showImage(const CtVolume& image);
     void applyWindowLevel(const viz::WindowLevel& windowLevel);
 
+    void setLinked(bool linked) { m_linked = linked; }
+    bool isLinked() const { return m_linked; }
+    /// Moves every MPR's cursor to `pointMm` and centres the views that do not show it (a "go to").
+    void jumpTo(const Eigen::Vector3d& pointMm);
+    /// Every MPR: the volume centred and whole.
+    void resetViews();
+    void setSlabThickness(double thicknessMm);
+    void setCrosshairShown(bool shown);
+    /// Patient, study and series, drawn in the MPRs' top-left corners.
+    void setPatientText(const QString& text);
+
 private:
     std::array<viz::SliceView*, 3> m_sliceViews{};
     viz::VolumeView3D* m_volumeView = nullptr;
+    bool m_linked = true;
 };
 
 } // namespace vsim::gui

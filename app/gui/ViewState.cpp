@@ -36,6 +36,9 @@ std::string ViewState::toJson() const
         j["window_level"] = {windowLevel->window, windowLevel->level};
     if (sliceFieldsOfViewMm)
         j["slice_fields_of_view_mm"] = *sliceFieldsOfViewMm;
+    if (sliceViewCentresMm)
+        for (const Eigen::Vector3d& centre : *sliceViewCentresMm)
+            j["slice_view_centres_mm"].push_back({centre.x(), centre.y(), centre.z()});
     if (camera3d)
         j["camera_3d"] = cameraJson(*camera3d);
     return j.dump();
@@ -60,6 +63,14 @@ ViewState ViewState::fromJson(const std::string& text)
         }
         if (j.contains("slice_fields_of_view_mm"))
             state.sliceFieldsOfViewMm = j.at("slice_fields_of_view_mm").get<std::array<double, 3>>();
+        if (j.contains("slice_view_centres_mm"))
+        {
+            const auto centres = j.at("slice_view_centres_mm").get<std::array<std::array<double, 3>, 3>>();
+            std::array<Eigen::Vector3d, 3> read;
+            for (std::size_t v = 0; v < 3; ++v)
+                read[v] = Eigen::Vector3d(centres[v][0], centres[v][1], centres[v][2]);
+            state.sliceViewCentresMm = read;
+        }
         if (j.contains("camera_3d"))
             state.camera3d = cameraFrom(j.at("camera_3d"));
     }

@@ -22,6 +22,7 @@ struct ViewState
     std::optional<Eigen::Vector3d> cursorMm;
     std::optional<viz::WindowLevel> windowLevel;
     std::optional<std::array<double, 3>> sliceFieldsOfViewMm; ///< axial, coronal, sagittal
+    std::optional<std::array<Eigen::Vector3d, 3>> sliceViewCentresMm; ///< axial, coronal, sagittal (pan)
     std::optional<viz::CameraState> camera3d;
 
     /// The state as JSON text, and back; text that is not a view state reads as an empty state.

@@ -6,6 +6,7 @@
 // anterior 3D view at centre + ((q - c).x, (q - c).z) * pixels-per-mm within 4 pixels. Screenshots are kept.
 #include "GuiTestMain.h"
 #include "MainWindow.h"
+#include "MarkerPhantom.h"
 #include "TestOutput.h"
 #include "ViewLayout.h"
 #include "vsim/study/Study.h"
@@ -21,46 +22,9 @@ using vsim::viz::SliceOrientation;
 
 namespace {
 
-constexpr std::int16_t kMarkerHu = 3000;
-
-struct Phantom
-{
-    vsim::CtVolume image;
-    Eigen::Vector3d marker; // LPS mm
-};
-
-Phantom markerPhantom()
-{
-    vsim::VolumeGeometry geometry;
-    geometry.dims = {100, 90, 80};
-    geometry.spacing = {0.8, 0.9, 1.5};
-    geometry.origin = {40.0, 30.0, -60.0};
-    geometry.direction.diagonal() << -1.0, -1.0, 1.0; // i runs right-ward, j anterior-ward
-    Phantom phantom{vsim::CtVolume(geometry), {}};
-    std::fill(phantom.image.data(), phantom.image.data() + phantom.image.size(), std::int16_t(-1000));
-    const int centre[3] = {30, 62, 55}; // some voxel off the volume centre
-    for (int k = -2; k <= 2; ++k)
-        for (int j = -2; j <= 2; ++j)
-            for (int i = -2; i <= 2; ++i)
-                phantom.image.at(centre[0] + i, centre[1] + j, centre[2] + k) = kMarkerHu;
-    phantom.marker = geometry.indexToPatient({double(centre[0]), double(centre[1]), double(centre[2])});
-    return phantom;
-}
-
-/// Centroid of the pixels brighter than `threshold` in all three channels (white marker; yellow labels excluded).
-QPointF brightCentroid(const QImage& image, int threshold, int* count)
-{
-    double sumX = 0, sumY = 0;
-    *count = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-        {
-            const QRgb pixel = image.pixel(x, y);
-            if (qRed(pixel) > threshold && qGreen(pixel) > threshold && qBlue(pixel) > threshold)
-                sumX += x, sumY += y, ++*count;
-        }
-    return *count ? QPointF(sumX / *count, sumY / *count) : QPointF(-1, -1);
-}
+using vsim::test::brightCentroid;
+using vsim::test::Phantom;
+using vsim::test::markerPhantom;
 
 /// Checks that the white marker's centroid in `frame` lies within `tolerance` pixels of `expected`.
 void verifyMarkerAt(const QImage& frame, int threshold, const QPointF& expected, double tolerance)

@@ -179,7 +179,7 @@ private slots:
         QVERIFY(session);
         viz::SliceView* axial = window.views()->sliceView(viz::SliceOrientation::Axial);
         axial->setCursor(dicom::kPhantomCentre + Eigen::Vector3d(70.0, 0.0, 0.0)); // tissue beside the aorta
-        const QPointF middle(axial->width() / 2.0, axial->height() / 2.0);
+        const QPointF middle = axial->widgetAt(axial->cursor()); // the crosshair, where the image stays put
         const int undoBefore = window.document().undoStack()->count();
         auto mouse = [&](QEvent::Type type, QPointF at, Qt::MouseButtons buttons) {
             QMouseEvent event(type, at, axial->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
@@ -218,8 +218,8 @@ private slots:
         QVERIFY(window.startLabelEditing(viz::BrushMode::Erase, 3.0));
         QVERIFY(!window.applyLabelEdits());
         axial->setCursor(dicom::kPhantomCentre + Eigen::Vector3d(0.0, -5.0, 100.0));
-        mouse(QEvent::MouseButtonPress, middle, Qt::LeftButton);
-        mouse(QEvent::MouseButtonRelease, middle, Qt::NoButton);
+        mouse(QEvent::MouseButtonPress, axial->widgetAt(axial->cursor()), Qt::LeftButton);
+        mouse(QEvent::MouseButtonRelease, axial->widgetAt(axial->cursor()), Qt::NoButton);
         QVERIFY(window.labelEditSession()->erasedVoxels() > 0);
         // Remove Island at the cursor: the painted blob beside the aorta (not connected to it) goes in one undo step.
         const std::size_t erased = window.labelEditSession()->erasedVoxels();
@@ -344,9 +344,9 @@ private slots:
             QMouseEvent event(type, at, view->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
             QApplication::sendEvent(view, &event);
         };
-        const QPointF middle(axial->width() / 2.0, axial->height() / 2.0);
-        click(axial, QEvent::MouseButtonPress, middle, Qt::LeftButton);
-        click(axial, QEvent::MouseButtonRelease, middle, Qt::NoButton);
+        const QPointF atAorta = axial->widgetAt(aorta); // the cursor leaves the image in place: not the middle
+        click(axial, QEvent::MouseButtonPress, atAorta, Qt::LeftButton);
+        click(axial, QEvent::MouseButtonRelease, atAorta, Qt::NoButton);
         QCOMPARE(panel->request().includeMm.size(), std::size_t(1));
         QVERIFY((panel->request().includeMm.front() - aorta).norm() < 1.0);
         QCOMPARE(axial->cursor(), aorta); // placing does not move the cursor
@@ -421,8 +421,8 @@ private slots:
         const Eigen::Vector3d stopAt = aorta - Eigen::Vector3d(0.0, 0.0, 30.0);
         axial->setCursor(stopAt);
         panel->setPlacing(gui::SegmentationPointsPanel::Placing::Stop);
-        click(axial, QEvent::MouseButtonPress, middle, Qt::LeftButton);
-        click(axial, QEvent::MouseButtonRelease, middle, Qt::NoButton);
+        click(axial, QEvent::MouseButtonPress, axial->widgetAt(stopAt), Qt::LeftButton);
+        click(axial, QEvent::MouseButtonRelease, axial->widgetAt(stopAt), Qt::NoButton);
         const imaging::SegmentationRequest stopped = panel->request();
         QCOMPARE(stopped.stops.size(), std::size_t(1));
         QVERIFY((stopped.stops.front().pointMm - stopAt).norm() < 1.0);

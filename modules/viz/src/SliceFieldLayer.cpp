@@ -80,11 +80,10 @@ vtkSmartPointer<vtkDataSet> frameDataSet(const SimulationData& frame, const std:
 } // namespace
 
 SliceFieldLayer::SliceFieldLayer(vtkRenderer* renderer)
-    : m_renderer(renderer), m_plane(vtkSmartPointer<vtkPlane>::New()),
+    : m_renderer(renderer), m_pickedParticles(vtkSmartPointer<vtkPolyData>::New()), m_plane(vtkSmartPointer<vtkPlane>::New()),
       m_cutter(vtkSmartPointer<vtkCutter>::New()), m_toSlice(vtkSmartPointer<vtkTransform>::New()),
       m_toSliceFilter(vtkSmartPointer<vtkTransformFilter>::New()),
-      m_mapper(vtkSmartPointer<vtkDataSetMapper>::New()), m_actor(vtkSmartPointer<vtkActor>::New()),
-      m_pickedParticles(vtkSmartPointer<vtkPolyData>::New())
+      m_mapper(vtkSmartPointer<vtkDataSetMapper>::New()), m_actor(vtkSmartPointer<vtkActor>::New())
 {
     m_cutter->SetCutFunction(m_plane);
     m_toSliceFilter->SetTransform(m_toSlice);

@@ -2,10 +2,12 @@
 
 #include "SliceFieldLayer.h"
 #include "SliceMarkerLayer.h"
+#include "SliceOverlayLayer.h"
 
 #include "vsim/interop/VtkImage.h"
 #include "vsim/viz/LabelPalette.h"
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QWheelEvent>
 #include <vtkCamera.h>
@@ -74,9 +76,9 @@ struct SliceView::Pipeline
     vtkSmartPointer<vtkImageMapToColors> labelColours = vtkSmartPointer<vtkImageMapToColors>::New();
     vtkSmartPointer<vtkImageActor> labelActor = vtkSmartPointer<vtkImageActor>::New();
     std::array<vtkSmartPointer<vtkTextActor>, 4> edgeLabels; // left, right, top, bottom
-    vtkSmartPointer<vtkTextActor> positionLabel;
     std::unique_ptr<SliceMarkerLayer> markers;
     std::unique_ptr<SliceFieldLayer> field;
+    std::unique_ptr<SliceOverlayLayer> overlay;
 };
 
 SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
@@ -115,12 +117,23 @@ SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
         p.edgeLabels[e]->SetInput(edgeLabel(edges[e]).toLatin1().constData());
         renderer()->AddViewProp(p.edgeLabels[e]);
     }
-    p.positionLabel = makeLabel(VTK_TEXT_LEFT, VTK_TEXT_BOTTOM);
-    p.positionLabel->GetPositionCoordinate()->SetValue(0.01, 0.01);
-    p.positionLabel->GetTextProperty()->SetFontSize(12);
-    renderer()->AddViewProp(p.positionLabel);
     p.markers = std::make_unique<SliceMarkerLayer>(renderer());
     p.field = std::make_unique<SliceFieldLayer>(renderer());
+    p.overlay = std::make_unique<SliceOverlayLayer>(renderer());
+    // The crosshair's lines stand for the other two planes: the one whose normal is the view's up is horizontal.
+    const ScreenAxes axes = screenAxes(orientation);
+    Eigen::Vector3d horizontal = Eigen::Vector3d::Ones(), vertical = Eigen::Vector3d::Ones();
+    for (SliceOrientation other : {SliceOrientation::Axial, SliceOrientation::Coronal, SliceOrientation::Sagittal})
+    {
+        const double alongUp = std::abs(screenAxes(other).normal().dot(axes.up));
+        const double alongRight = std::abs(screenAxes(other).normal().dot(axes.right));
+        if (alongUp > 0.9)
+            horizontal = planeColour(other);
+        else if (alongRight > 0.9)
+            vertical = planeColour(other);
+    }
+    p.overlay->setCrosshairColours(horizontal, vertical);
+    setMouseTracking(true); // the value under the mouse
     setWindowLevel(kCtaPreset);
     updateCamera();
 }
@@ -159,12 +172,11 @@ void SliceView::setImage(const CtVolume& image)
     const VolumeGeometry& geometry = m_image.geometry();
     const Eigen::Vector3d centreIndex(0.5 * (geometry.dims[0] - 1), 0.5 * (geometry.dims[1] - 1),
                                       0.5 * (geometry.dims[2] - 1));
-    const Eigen::Vector3d extent = geometry.spacing.cwiseProduct(
-        Eigen::Vector3d(geometry.dims[0], geometry.dims[1], geometry.dims[2]));
-    m_fieldOfView = extent.maxCoeff() * 1.05;
+    m_viewCentre = geometry.indexToPatient(centreIndex);
     p.actor->VisibilityOn();
+    m_cursor = geometry.indexToPatient(centreIndex) + Eigen::Vector3d::Constant(1.0); // so that setCursor announces
     setCursor(geometry.indexToPatient(centreIndex));
-    updateCamera();
+    resetView();
 }
 
 void SliceView::setLabel(const LabelVolume& label, LabelPalette palette)
@@ -202,7 +214,7 @@ void SliceView::refreshLabel()
 void SliceView::setField(const SimulationData& frame, const std::string& field, double low, double high)
 {
     m_pipeline->field->setField(frame, field, low, high);
-    m_pipeline->field->update(m_cursor, screenAxes(m_orientation), sliceThickness());
+    m_pipeline->field->update(planeOrigin(), screenAxes(m_orientation), sliceThickness());
     update();
 }
 
@@ -227,7 +239,8 @@ void SliceView::clearImage()
     m_label = LabelVolume();
     m_pipeline->labelActor->VisibilityOff();
     m_pipeline->actor->VisibilityOff();
-    m_pipeline->positionLabel->SetInput("");
+    for (Qt::Corner corner : {Qt::TopRightCorner, Qt::BottomLeftCorner, Qt::BottomRightCorner})
+        m_pipeline->overlay->setCornerText(corner, {});
     update();
 }
 
@@ -240,10 +253,129 @@ void SliceView::setCursor(const Eigen::Vector3d& cursor)
     emit cursorChanged(m_cursor);
 }
 
+void SliceView::setViewCentre(const Eigen::Vector3d& centreMm)
+{
+    m_viewCentre = centreMm;
+    if (hasImage())
+    {
+        // Kept within the volume's box: the resliced plane covers the volume from any point inside it.
+        const VolumeGeometry& geometry = m_image.geometry();
+        Eigen::Vector3d index = geometry.patientToIndex(centreMm);
+        for (int a = 0; a < 3; ++a)
+            index[a] = std::clamp(index[a], 0.0, double(geometry.dims[std::size_t(a)] - 1));
+        m_viewCentre = geometry.indexToPatient(index);
+    }
+    updateSlice();
+}
+
+void SliceView::ensureVisible(const Eigen::Vector3d& pointMm)
+{
+    const QPointF at = widgetAt(pointMm);
+    const QRectF middle(0.1 * width(), 0.1 * height(), 0.8 * width(), 0.8 * height());
+    if (!middle.contains(at))
+        setViewCentre(pointMm);
+}
+
 void SliceView::setFieldOfView(double heightMm)
 {
-    m_fieldOfView = heightMm;
+    m_fieldOfView = std::clamp(heightMm, 5.0, 5000.0);
     updateCamera();
+}
+
+void SliceView::zoomBy(double factor, const QPointF& aboutWidget)
+{
+    const Eigen::Vector3d before = patientAt(aboutWidget);
+    setFieldOfView(m_fieldOfView / factor);
+    setViewCentre(m_viewCentre + before - patientAt(aboutWidget));
+}
+
+void SliceView::resetView()
+{
+    if (!hasImage())
+        return;
+    const VolumeGeometry& geometry = m_image.geometry();
+    const Eigen::Vector3d extent = geometry.spacing.cwiseProduct(
+        Eigen::Vector3d(geometry.dims[0], geometry.dims[1], geometry.dims[2]));
+    m_fieldOfView = extent.maxCoeff() * 1.05;
+    updateCamera();
+    setViewCentre(geometry.indexToPatient(0.5 * Eigen::Vector3d(geometry.dims[0] - 1, geometry.dims[1] - 1, geometry.dims[2] - 1)));
+}
+
+namespace {
+/// The image axis nearest a patient direction.
+int imageAxisAlong(const VolumeGeometry& geometry, const Eigen::Vector3d& direction)
+{
+    int axis = 0;
+    (geometry.direction.transpose() * direction).cwiseAbs().maxCoeff(&axis);
+    return axis;
+}
+} // namespace
+
+void SliceView::stepSlices(int count)
+{
+    if (!hasImage())
+        return;
+    // Stops at the first and the last slice of the stack.
+    const VolumeGeometry& geometry = m_image.geometry();
+    const int axis = imageAxisAlong(geometry, screenAxes(m_orientation).normal());
+    Eigen::Vector3d index = geometry.patientToIndex(m_cursor + count * sliceThickness() * screenAxes(m_orientation).normal());
+    index[axis] = std::clamp(index[axis], 0.0, double(geometry.dims[std::size_t(axis)] - 1));
+    setCursor(geometry.indexToPatient(index));
+}
+
+int SliceView::sliceNumber() const
+{
+    if (!hasImage())
+        return 0;
+    const int axis = imageAxisAlong(m_image.geometry(), screenAxes(m_orientation).normal());
+    return int(std::lround(m_image.geometry().patientToIndex(m_cursor)[axis])) + 1;
+}
+
+int SliceView::sliceCount() const
+{
+    return hasImage() ? m_image.geometry().dims[std::size_t(imageAxisAlong(m_image.geometry(), screenAxes(m_orientation).normal()))] : 0;
+}
+
+void SliceView::setSlabThickness(double thicknessMm)
+{
+    m_slabMm = std::max(0.0, thicknessMm);
+    updateSlice();
+    updateOverlay();
+}
+
+void SliceView::setCrosshairShown(bool shown)
+{
+    m_pipeline->overlay->setCrosshairShown(shown);
+    update();
+}
+
+bool SliceView::crosshairShown() const { return m_pipeline->overlay->crosshairShown(); }
+
+void SliceView::setPatientText(const QString& text)
+{
+    m_patientText = text;
+    updateOverlay();
+}
+
+QString SliceView::overlayText(Qt::Corner corner) const { return m_pipeline->overlay->cornerText(corner); }
+
+double SliceView::scaleBarMm() const { return m_pipeline->overlay->scaleBarMm(); }
+
+std::optional<double> SliceView::valueAt(const QPointF& widgetPosition) const
+{
+    if (!hasImage())
+        return std::nullopt;
+    const Eigen::Vector3d index = m_image.geometry().patientToIndex(patientAt(widgetPosition));
+    const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
+    if (!m_image.geometry().contains(i, j, k))
+        return std::nullopt;
+    return double(m_image.at(i, j, k));
+}
+
+Eigen::Vector3d SliceView::planeOrigin() const
+{
+    const Eigen::Vector3d normal = screenAxes(m_orientation).normal();
+    return m_viewCentre + (m_cursor - m_viewCentre).dot(normal) * normal;
 }
 
 void SliceView::setWindowLevel(const WindowLevel& windowLevel)
@@ -251,7 +383,7 @@ void SliceView::setWindowLevel(const WindowLevel& windowLevel)
     m_windowLevel = {std::max(1.0, windowLevel.window), windowLevel.level};
     m_pipeline->actor->GetProperty()->SetColorWindow(m_windowLevel.window);
     m_pipeline->actor->GetProperty()->SetColorLevel(m_windowLevel.level);
-    update();
+    updateOverlay();
     emit windowLevelChanged(m_windowLevel.window, m_windowLevel.level);
 }
 
@@ -262,13 +394,13 @@ Eigen::Vector3d SliceView::patientAt(const QPointF& widgetPosition) const
     const double right = (widgetPosition.x() - 0.5 * width()) * millimetresPerPixel();
     const double up = (0.5 * height() - widgetPosition.y()) * millimetresPerPixel();
     const ScreenAxes axes = screenAxes(m_orientation);
-    return m_cursor + right * axes.right + up * axes.up;
+    return planeOrigin() + right * axes.right + up * axes.up;
 }
 
 QPointF SliceView::widgetAt(const Eigen::Vector3d& pointMm) const
 {
     const ScreenAxes axes = screenAxes(m_orientation);
-    const Eigen::Vector3d offset = pointMm - m_cursor;
+    const Eigen::Vector3d offset = pointMm - planeOrigin();
     return {0.5 * width() + offset.dot(axes.right) / millimetresPerPixel(),
             0.5 * height() - offset.dot(axes.up) / millimetresPerPixel()};
 }
@@ -300,7 +432,10 @@ double SliceView::sliceThickness() const
 void SliceView::updateMarkers()
 {
     // Markers within one slice spacing (as the normal sees the voxels) of the plane are drawn.
-    m_pipeline->markers->update(m_cursor, screenAxes(m_orientation), sliceThickness(), millimetresPerPixel());
+    m_pipeline->markers->update(planeOrigin(), screenAxes(m_orientation), sliceThickness(), millimetresPerPixel());
+    const ScreenAxes axes = screenAxes(m_orientation);
+    const Eigen::Vector3d offset = m_cursor - planeOrigin();
+    m_pipeline->overlay->update({offset.dot(axes.right), offset.dot(axes.up)}, width(), height(), millimetresPerPixel());
     update();
 }
 
@@ -315,7 +450,7 @@ void SliceView::updateSlice()
     const Eigen::Matrix3d toInput = geometry.direction.transpose();
     Eigen::Matrix3d columns;
     columns << toInput * axes.right, toInput * axes.up, toInput * axes.normal();
-    const Eigen::Vector3d centre = toInput * (m_cursor - geometry.origin);
+    const Eigen::Vector3d centre = toInput * (planeOrigin() - geometry.origin);
     auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
     for (int row = 0; row < 3; ++row)
     {
@@ -332,24 +467,52 @@ void SliceView::updateSlice()
     p.reslice->SetOutputSpacing(pixel, pixel, pixel);
     p.reslice->SetOutputOrigin(0.0, 0.0, 0.0);
     p.reslice->SetOutputExtent(-half, half, -half, half, 0, 0);
+    const int slabSlices = std::max(1, int(std::lround(m_slabMm / pixel)));
+    p.reslice->SetSlabModeToMax();
+    p.reslice->SetSlabNumberOfSlices(slabSlices);
     p.labelReslice->SetResliceAxes(matrix);
     p.labelReslice->SetOutputSpacing(pixel, pixel, pixel);
     p.labelReslice->SetOutputOrigin(0.0, 0.0, 0.0);
     p.labelReslice->SetOutputExtent(-half, half, -half, half, 0, 0);
-    const Eigen::Vector3d index = geometry.patientToIndex(m_cursor);
-    const double along = m_cursor.dot(axes.normal().cwiseAbs());
-    const char* axisName = m_orientation == SliceOrientation::Axial ? "z" : m_orientation == SliceOrientation::Coronal ? "y" : "x";
-    p.positionLabel->SetInput(QStringLiteral("%1 = %2 mm  (voxel %3, %4, %5)")
-                                  .arg(axisName)
-                                  .arg(along, 0, 'f', 1)
-                                  .arg(index.x(), 0, 'f', 0)
-                                  .arg(index.y(), 0, 'f', 0)
-                                  .arg(index.z(), 0, 'f', 0)
-                                  .toLatin1()
-                                  .constData());
+    updateOverlay();
     if (!p.field->isEmpty())
-        p.field->update(m_cursor, axes, sliceThickness());
+        p.field->update(planeOrigin(), axes, sliceThickness());
     updateMarkers();
+}
+
+void SliceView::updateOverlay()
+{
+    SliceOverlayLayer& overlay = *m_pipeline->overlay;
+    overlay.setCornerText(Qt::TopLeftCorner, m_patientText);
+    if (!hasImage())
+        return update();
+    QString windowLevel = tr("W %1  L %2").arg(m_windowLevel.window, 0, 'f', 0).arg(m_windowLevel.level, 0, 'f', 0);
+    if (m_slabMm > 0.0)
+        windowLevel += '\n' + tr("MIP slab %1 mm").arg(m_slabMm, 0, 'f', 1);
+    overlay.setCornerText(Qt::TopRightCorner, windowLevel);
+    const double along = m_cursor.dot(screenAxes(m_orientation).normal().cwiseAbs());
+    const char* axisName = m_orientation == SliceOrientation::Axial ? "z" : m_orientation == SliceOrientation::Coronal ? "y" : "x";
+    overlay.setCornerText(Qt::BottomLeftCorner, tr("Im %1/%2  %3 = %4 mm")
+                                                    .arg(sliceNumber())
+                                                    .arg(sliceCount())
+                                                    .arg(QLatin1String(axisName))
+                                                    .arg(along, 0, 'f', 1));
+    update();
+}
+
+void SliceView::updateMouseReadout(const std::optional<QPointF>& widgetPosition)
+{
+    QString text;
+    if (widgetPosition && hasImage())
+    {
+        const Eigen::Vector3d at = patientAt(*widgetPosition);
+        const std::optional<double> value = valueAt(*widgetPosition);
+        text = tr("(%1, %2, %3) mm").arg(at.x(), 0, 'f', 1).arg(at.y(), 0, 'f', 1).arg(at.z(), 0, 'f', 1);
+        if (value)
+            text = tr("%1 HU").arg(*value, 0, 'f', 0) + "  " + text;
+    }
+    m_pipeline->overlay->setCornerText(Qt::BottomRightCorner, text);
+    update();
 }
 
 void SliceView::updateCamera()
@@ -374,6 +537,8 @@ void SliceView::mousePressEvent(QMouseEvent* event)
 {
     m_dragStart = event->position();
     m_dragStartWindowLevel = m_windowLevel;
+    m_dragStartCentre = m_viewCentre;
+    m_dragStartField = m_fieldOfView;
     if (event->button() != Qt::LeftButton || !hasImage())
         return;
     if (m_brush != BrushMode::Off && hasLabel())
@@ -398,6 +563,7 @@ void SliceView::mouseMoveEvent(QMouseEvent* event)
 {
     if (!hasImage())
         return;
+    const QPointF delta = event->position() - m_dragStart;
     if ((event->buttons() & Qt::LeftButton) && m_stroking)
         emit brushDab(patientAt(event->position()), screenAxes(m_orientation).normal());
     else if ((event->buttons() & Qt::LeftButton) && m_draggedMarker)
@@ -407,11 +573,20 @@ void SliceView::mouseMoveEvent(QMouseEvent* event)
     }
     else if ((event->buttons() & Qt::LeftButton) && !m_placing)
         setCursor(patientAt(event->position()));
-    else if (event->buttons() & Qt::RightButton)
+    else if (event->buttons() & Qt::MiddleButton)
     {
-        const QPointF delta = event->position() - m_dragStart;
-        setWindowLevel({m_dragStartWindowLevel.window + 4.0 * delta.x(), m_dragStartWindowLevel.level - 2.0 * delta.y()});
+        // The image follows the mouse: the centre moves the other way (mm per pixel at the drag's start).
+        const ScreenAxes axes = screenAxes(m_orientation);
+        const double mmPerPixel = m_dragStartField / std::max(1, height());
+        setViewCentre(m_dragStartCentre - delta.x() * mmPerPixel * axes.right + delta.y() * mmPerPixel * axes.up);
     }
+    else if ((event->buttons() & Qt::RightButton) && m_rightDragZooms)
+    {
+        setFieldOfView(m_dragStartField * std::exp(0.01 * delta.y())); // drag down: zoom out
+    }
+    else if (event->buttons() & Qt::RightButton)
+        setWindowLevel({m_dragStartWindowLevel.window + 4.0 * delta.x(), m_dragStartWindowLevel.level - 2.0 * delta.y()});
+    updateMouseReadout(event->position());
 }
 
 void SliceView::mouseReleaseEvent(QMouseEvent* event)
@@ -429,12 +604,48 @@ void SliceView::mouseReleaseEvent(QMouseEvent* event)
     }
 }
 
+void SliceView::leaveEvent(QEvent* event)
+{
+    updateMouseReadout(std::nullopt);
+    VtkView::leaveEvent(event);
+}
+
 void SliceView::wheelEvent(QWheelEvent* event)
 {
     if (!hasImage())
         return;
-    const double step = m_image.geometry().spacing.minCoeff() * (event->angleDelta().y() > 0 ? 1.0 : -1.0);
-    setCursor(m_cursor + step * screenAxes(m_orientation).normal());
+    constexpr int kNotch = 120; // eighths of a degree per wheel notch
+    m_wheelRemainder += event->angleDelta().y();
+    const int notches = m_wheelRemainder / kNotch;
+    m_wheelRemainder -= notches * kNotch;
+    if (notches == 0)
+        return;
+    if (event->modifiers() & Qt::ControlModifier)
+        zoomBy(std::pow(1.1, notches), event->position());
+    else
+        stepSlices(notches);
+    updateMouseReadout(event->position());
+}
+
+void SliceView::keyPressEvent(QKeyEvent* event)
+{
+    if (!hasImage())
+        return VtkView::keyPressEvent(event);
+    switch (event->key())
+    {
+    case Qt::Key_Up: return stepSlices(1);
+    case Qt::Key_Down: return stepSlices(-1);
+    case Qt::Key_PageUp: return stepSlices(10);
+    case Qt::Key_PageDown: return stepSlices(-10);
+    case Qt::Key_Home: return stepSlices(-sliceCount());
+    case Qt::Key_End: return stepSlices(sliceCount());
+    case Qt::Key_1: return setWindowLevel(kCtaPreset);
+    case Qt::Key_2: return setWindowLevel(kSoftTissuePreset);
+    case Qt::Key_3: return setWindowLevel(kBonePreset);
+    case Qt::Key_4: return setWindowLevel(kLungPreset);
+    case Qt::Key_R: return resetView();
+    default: return VtkView::keyPressEvent(event);
+    }
 }
 
 } // namespace vsim::viz

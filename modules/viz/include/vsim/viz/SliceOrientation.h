@@ -28,9 +28,14 @@ struct WindowLevel
     double level = 200.0;
 };
 
-/// Presets: contrast-enhanced CTA, soft tissue, bone.
+/// Presets (HU): contrast-enhanced CTA, soft tissue, bone, lung.
 inline constexpr WindowLevel kCtaPreset{700.0, 200.0};
 inline constexpr WindowLevel kSoftTissuePreset{400.0, 40.0};
 inline constexpr WindowLevel kBonePreset{1800.0, 400.0};
+inline constexpr WindowLevel kLungPreset{1500.0, -600.0};
+
+/// The plane colours of the crosshair and view frames (RGB 0-1; Slicer's habit): axial red, coronal green,
+/// sagittal yellow.
+Eigen::Vector3d planeColour(SliceOrientation orientation);
 
 } // namespace vsim::viz

@@ -14,16 +14,22 @@
 
 namespace vsim::viz {
 
-/// One MPR view (axial, coronal or sagittal) of a CT through a cursor point in the patient frame: linear
-/// reslicing at the finest voxel spacing, window/level, LPS orientation letters on the four edges and the slice
-/// position. The cursor sits at the centre of the view; fieldOfView() mm span the view's height.
-/// Mouse: left click/drag moves the cursor in the plane, right drag changes window (x) and level (y), the wheel
-/// steps through slices by the finest spacing. A label map on the CT's grid can be overlaid (value 1 lumen in
-/// translucent red, 4 thrombus yellow, 5 wall blue); in brush mode the left button paints or erases it instead of moving the cursor: the view
-/// only reports where (brushDab), the owner edits the label and calls refreshLabel(). Markers (SliceMarker) are drawn
-/// where the slice passes them and can be dragged with the left button (markerMoved on release); in placing mode a
-/// left click reports a point (pointPlaced) instead of moving the cursor. A played run's frame can be shown cut by the
-/// slice (setField).
+/// One MPR view (axial, coronal or sagittal) of a CT through a cursor point in the patient frame, with the habits of
+/// 3D Slicer, Horos and vendor workstations: linear reslicing at the finest voxel spacing (or a thick-slab maximum
+/// intensity projection), window/level, LPS orientation letters on the four edges, a crosshair through the cursor
+/// in the colours of the other planes (axial red, coronal green, sagittal yellow), a scale bar, and four corner
+/// texts: patient / study / series (setPatientText), window / level and slab, slice number and position, and the
+/// value under the mouse (HU).
+/// Mouse: a left click or drag moves the cursor (the crosshair) and leaves the image where it is; the middle button
+/// pans; right drag changes window (x) and level (y), or zooms when setRightDragZooms(true); Ctrl + wheel zooms about
+/// the mouse; the wheel steps one slice (the voxel spacing along the view's normal) per notch.
+/// Keys: Up/Down one slice, Page Up/Down ten, Home/End the first and last slice, 1-4 the window/level presets (CTA,
+/// soft tissue, bone, lung), R resets the view (volume centred, whole field).
+/// A label map on the CT's grid can be overlaid (value 1 lumen in translucent red, 4 thrombus yellow, 5 wall blue); in
+/// brush mode the left button paints or erases it instead of moving the cursor: the view only reports where
+/// (brushDab), the owner edits the label and calls refreshLabel(). Markers (SliceMarker) are drawn where the slice
+/// passes them and can be dragged with the left button (markerMoved on release); in placing mode a left click reports
+/// a point (pointPlaced) instead of moving the cursor. A played run's frame can be shown cut by the slice (setField).
 class SliceView : public VtkView
 {
     Q_OBJECT
@@ -74,12 +80,46 @@ public:
     /// The widget position (logical pixels) of a patient point projected onto the view's plane.
     QPointF widgetAt(const Eigen::Vector3d& pointMm) const;
 
-    /// The cursor (mm, LPS): the slice passes through it and it sits at the centre of the view.
+    /// The cursor (mm, LPS): the slice passes through it and the crosshair crosses at it. Moving it leaves the
+    /// image where it is on screen (see ensureVisible()).
     Eigen::Vector3d cursor() const { return m_cursor; }
     void setCursor(const Eigen::Vector3d& cursor);
+    /// The patient point (mm, LPS) shown at the centre of the view; only its part in the view's plane counts (pan).
+    Eigen::Vector3d viewCentre() const { return m_viewCentre; }
+    void setViewCentre(const Eigen::Vector3d& centreMm);
+    /// Centres the view on `pointMm` when it lies outside the view's middle 80 %.
+    void ensureVisible(const Eigen::Vector3d& pointMm);
     /// Height of the view in mm (zoom).
     double fieldOfView() const { return m_fieldOfView; }
     void setFieldOfView(double heightMm);
+    /// Zooms by `factor` (> 1 magnifies) keeping the patient point under `aboutWidget` (logical pixels) in place.
+    void zoomBy(double factor, const QPointF& aboutWidget);
+    /// The volume centred and the whole volume in view.
+    void resetView();
+
+    /// Moves the cursor `count` slices along the view's normal (one slice = the voxel spacing as the normal sees it).
+    void stepSlices(int count);
+    /// The image slice the cursor lies in (1-based, along the image axis nearest the view's normal) and their count;
+    /// 0 and 0 without an image.
+    int sliceNumber() const;
+    int sliceCount() const;
+
+    /// Thick-slab maximum intensity projection over `thicknessMm` about the slice (0: the thin slice).
+    void setSlabThickness(double thicknessMm);
+    double slabThickness() const { return m_slabMm; }
+
+    void setCrosshairShown(bool shown);
+    bool crosshairShown() const;
+    /// Right drag zooms instead of changing window/level (a preference; Slicer's habit).
+    void setRightDragZooms(bool zooms) { m_rightDragZooms = zooms; }
+    /// The top-left overlay: patient, study and series (one per line).
+    void setPatientText(const QString& text);
+    /// The overlay text in a corner (as drawn).
+    QString overlayText(Qt::Corner corner) const;
+    /// The CT value (HU) of the voxel nearest the patient point under a widget position, when it lies in the volume.
+    std::optional<double> valueAt(const QPointF& widgetPosition) const;
+    /// The scale bar's length (mm).
+    double scaleBarMm() const;
     WindowLevel windowLevel() const { return m_windowLevel; }
     void setWindowLevel(const WindowLevel& windowLevel);
     /// The patient position (mm) under a widget position (logical pixels) in the current slice.
@@ -105,9 +145,15 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
 
 private:
     void updateSlice();
+    void updateOverlay();
+    void updateMouseReadout(const std::optional<QPointF>& widgetPosition);
+    /// The view centre moved into the cursor's plane: the origin of the slice coordinates.
+    Eigen::Vector3d planeOrigin() const;
     void updateCamera();
     void updateMarkers();
     double millimetresPerPixel() const;
@@ -126,7 +172,14 @@ private:
     bool m_placing = false;
     std::optional<int> m_draggedMarker;
     Eigen::Vector3d m_cursor = Eigen::Vector3d::Zero();
+    Eigen::Vector3d m_viewCentre = Eigen::Vector3d::Zero();
     double m_fieldOfView = 300.0;
+    double m_slabMm = 0.0;
+    bool m_rightDragZooms = false;
+    int m_wheelRemainder = 0; // eighths of a degree not yet stepped (touchpads send small deltas)
+    QString m_patientText;
+    Eigen::Vector3d m_dragStartCentre = Eigen::Vector3d::Zero();
+    double m_dragStartField = 300.0;
     WindowLevel m_windowLevel = kCtaPreset;
     QPointF m_dragStart;
     WindowLevel m_dragStartWindowLevel;
