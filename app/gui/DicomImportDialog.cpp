@@ -1,5 +1,7 @@
 #include "DicomImportDialog.h"
 
+#include "FileLocations.h"
+
 #include "vsim/dicom/DicomImport.h"
 #include "vsim/dicom/SeriesGeometry.h"
 
@@ -103,7 +105,8 @@ DicomImportDialog::DicomImportDialog(QWidget* parent) : QDialog(parent)
     layout->addWidget(buttons);
 
     connect(browse, &QPushButton::clicked, this, [this] {
-        const QString folder = QFileDialog::getExistingDirectory(this, tr("DICOM folder"), m_path->text());
+        const QString folder = QFileDialog::getExistingDirectory(this, tr("DICOM folder"),
+                                                                 m_path->text().isEmpty() ? startFolder("dicom") : m_path->text());
         if (!folder.isEmpty())
             scan(folder);
     });
@@ -151,6 +154,7 @@ void DicomImportDialog::scan(const QString& path)
         return;
     m_path->setText(path);
     m_scannedPath = path;
+    rememberFolder("dicom", path);
     m_tree->clear();
     m_scan.reset();
     m_import->setEnabled(false);

@@ -1,5 +1,7 @@
 #include "DrugDeliveryPanel.h"
 
+#include "TableHeaders.h"
+
 #include "RunPlayer.h"
 
 #include "NetworkProjectionView.h"
@@ -129,17 +131,17 @@ DrugDeliveryPanel::DrugDeliveryPanel(viz::VolumeView3D* view, QWidget* parent)
 
     m_summary->setObjectName("drugSummary");
     m_summary->setMaximumHeight(220);
-    m_outlets->setColumnCount(3);
-    m_outlets->setHorizontalHeaderLabels({tr("Outlet"), tr("Drug share (%)"), tr("Arrival (s)")});
-    m_outlets->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_outlets->horizontalHeader()->setStretchLastSection(true);
+    setColumnHeaders(m_outlets, {{tr("Outlet"), tr("The outlet's vessel (anatomical name when known)")},
+                                 {tr("Drug share (%)"), tr("Share of the injected drug leaving through this outlet (%)")},
+                                 {tr("Arrival (s)"), tr("Time for the drug front to reach the outlet from the catheter tip (s)")}});
     m_outlets->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_outlets->setObjectName("drugOutletTable");
     m_feeders->setObjectName("drugFeederTable");
-    m_feeders->setColumnCount(5);
-    m_feeders->setHorizontalHeaderLabels({tr("Feeder (tick: keep)"), tr("Segment"), tr("Radius (mm)"), tr("Found"), tr("Drug reaches it")});
-    m_feeders->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_feeders->horizontalHeader()->setStretchLastSection(true);
+    setColumnHeaders(m_feeders, {{tr("Feeder (tick: keep)"), tr("A branch entering the tumour or its margin; untick to remove it from the plan")},
+                                 {tr("Segment"), tr("The feeder's segment number in the kept tree")},
+                                 {tr("Radius (mm)"), tr("Lumen radius of the feeder (mm)")},
+                                 {tr("Found"), tr("Found automatically, or added by hand")},
+                                 {tr("Drug reaches it"), tr("Whether drug injected at the current tip reaches this feeder")}});
     m_feeders->setEditTriggers(QAbstractItemView::NoEditTriggers);
     connect(m_feeders, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
         if (item->column() == 0)

@@ -8,9 +8,11 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QGuiApplication>
+#include <QScreen>
+#include <QStyle>
 #include <QHeaderView>
 #include <QLabel>
-#include <QListWidget>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
@@ -65,9 +67,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         statusBar()->showMessage(tr("%1: done").arg(title), 5000);
     });
     connect(&m_tasks, &TaskRunner::idle, this, [this] { setBusy(false); });
+    // As the user left it; the first time 1400 x 900 (or 90 % of a smaller screen), centred, never Qt's 640 x 480.
     QSettings settings;
-    restoreGeometry(settings.value("mainWindow/geometry").toByteArray());
-    resize(size().isEmpty() ? QSize(1400, 900) : size());
+    if (!restoreGeometry(settings.value("mainWindow/geometry").toByteArray()))
+    {
+        const QRect available = QGuiApplication::primaryScreen() ? QGuiApplication::primaryScreen()->availableGeometry()
+                                                                 : QRect(0, 0, 1600, 1000);
+        const QSize first(std::min(1400, int(0.9 * available.width())), std::min(900, int(0.9 * available.height())));
+        setGeometry(QStyle::alignedRect(Qt::LeftToRight, Qt::AlignCenter, first, available));
+    }
+    restoreState(settings.value("mainWindow/state").toByteArray());
     setBusy(false);
     refreshTitle();
 }
@@ -111,32 +120,36 @@ void MainWindow::createDocks()
     artifactDock->setWidget(m_artifactTree);
     addDockWidget(Qt::LeftDockWidgetArea, artifactDock);
 
-    // The workflow of ARCHITECTURE.md.
-    m_workflow = new QListWidget(this);
-    m_workflow->setObjectName("workflow");
-    for (const QString& step : {tr("Import"), tr("Segment"), tr("Skeleton && Centerlines"), tr("Mesh"), tr("Simulate"),
-                                tr("Report")})
-        new QListWidgetItem(step, m_workflow);
-    connect(m_workflow, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
-        if (!m_document.hasStudy() || m_tasks.isBusy())
-            return;
-        if (item->text() == tr("Import"))
-            showDicomImportDialog();
-        else if (item->text() == tr("Segment"))
-            segmentVessels();
-        else if (item->text() == tr("Skeleton && Centerlines"))
-            extractSkeletonAndCenterlines();
-        else if (item->text() == tr("Mesh"))
-            buildWallMesh();
-        else if (item->text() == tr("Simulate"))
-            simulateWall("physiological");
-        else if (item->text() == tr("Report"))
-            showReportExportDialog();
-    });
+    // The workflow of ARCHITECTURE.md as a checklist: a click runs a step.
+    m_workflow = new WorkflowChecklist(this);
+    connect(m_workflow, &WorkflowChecklist::stepClicked, this, &MainWindow::runWorkflowStep);
     auto* workflowDock = new QDockWidget(tr("Workflow"), this);
     workflowDock->setObjectName("workflowDock");
     workflowDock->setWidget(m_workflow);
     addDockWidget(Qt::LeftDockWidgetArea, workflowDock);
+}
+
+bool MainWindow::runWorkflowStep(app::WorkflowStep step)
+{
+    if (!m_document.hasStudy() || m_tasks.isBusy())
+    {
+        statusBar()->showMessage(m_document.hasStudy() ? tr("A step is running: wait for it or cancel it")
+                                                       : tr("Open or create a study first (File menu)"),
+                                 5000);
+        return false;
+    }
+    switch (step)
+    {
+    case app::WorkflowStep::Import: showDicomImportDialog(); return true;
+    case app::WorkflowStep::Segment: return segmentVessels();
+    case app::WorkflowStep::Centerlines: return extractSkeletonAndCenterlines();
+    case app::WorkflowStep::WallMesh: return buildWallMesh();
+    case app::WorkflowStep::WallStress: return simulateWall("physiological");
+    case app::WorkflowStep::Flow: return simulateBloodFlow();
+    case app::WorkflowStep::Drug: return simulateDrugDelivery(m_drugPanel ? m_drugPanel->request() : m_drugRequest);
+    case app::WorkflowStep::Report: showReportExportDialog(); return true;
+    }
+    return false;
 }
 
 void MainWindow::createStatusBar()
@@ -173,6 +186,7 @@ void MainWindow::setBusy(bool busy)
 
 void MainWindow::refreshTitle()
 {
+    m_workflow->refresh(m_document.hasStudy() ? &m_document.study() : nullptr);
     const QString name = m_document.hasStudy() ? QString::fromStdString(m_document.study().name()) : tr("No study");
     const bool readOnly = m_document.hasStudy() && m_document.study().isReadOnly();
     setWindowTitle(readOnly ? tr("%1 (read-only) - VascuSim").arg(name) : tr("%1[*] - VascuSim").arg(name));
@@ -432,6 +446,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         }
     }
     QSettings().setValue("mainWindow/geometry", saveGeometry());
+    QSettings().setValue("mainWindow/state", saveState());
     event->accept();
 }
 

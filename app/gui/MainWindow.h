@@ -6,6 +6,7 @@
 #include "StudyDocument.h"
 #include "TaskRunner.h"
 #include "ViewState.h"
+#include "WorkflowChecklist.h"
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Hounsfield.h"
 #include "vsim/core/ImageVolume.h"
@@ -31,7 +32,6 @@ class QComboBox;
 class QDockWidget;
 class QDoubleSpinBox;
 class QLabel;
-class QListWidget;
 class QMenu;
 class QProgressBar;
 class QPushButton;
@@ -87,6 +87,9 @@ public:
                      std::shared_ptr<const dicom::DicomScanResult> scan = {});
     /// Opens the Import DICOM dialog and imports what the user picks.
     void showDicomImportDialog();
+    /// Runs a step of the workflow checklist as its menu entry does; false when refused (no study, busy, missing
+    /// input: the message says which).
+    bool runWorkflowStep(app::WorkflowStep step);
     /// Segments the vessels of the newest image in the background (segmentationParameters(); automatic seed
     /// unless `seedMm`), adds the label (undoable), overlays it in the MPRs and shows its surface in 3D.
     bool segmentVessels(const std::optional<Eigen::Vector3d>& seedMm = std::nullopt);
@@ -273,7 +276,7 @@ private:
     QTreeWidget* m_artifactTree = nullptr;
     QTableWidget* m_measurementTable = nullptr;
     std::string m_measuredCenterlines; // the centerlines the measurement dock shows
-    QListWidget* m_workflow = nullptr;
+    WorkflowChecklist* m_workflow = nullptr;
     QProgressBar* m_progress = nullptr;
     QPushButton* m_cancel = nullptr;
     QLabel* m_statusText = nullptr;

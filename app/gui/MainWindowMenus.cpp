@@ -1,5 +1,6 @@
 // The main window's menus and the About box (MainWindow.cpp holds the document lifecycle).
 #include "ArtifactCommands.h"
+#include "FileLocations.h"
 #include "MainWindow.h"
 #include "ViewLayout.h"
 #include "vsim/app/VersionInfo.h"
@@ -27,12 +28,14 @@ void MainWindow::createMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&New Study..."), QKeySequence::New, this, [this] {
-        const QString bundle = QFileDialog::getSaveFileName(this, tr("New study"), QString(), tr("Study folder (*.vsim)"));
+        const QString bundle = QFileDialog::getSaveFileName(this, tr("New study"), startFolder("study"), tr("Study folder (*.vsim)"));
+        rememberFolder("study", bundle.isEmpty() ? QString() : QFileInfo(bundle).absolutePath());
         if (!bundle.isEmpty())
             windowForNewDocument()->newStudy(bundle.endsWith(".vsim") ? bundle : bundle + ".vsim");
     });
     file->addAction(tr("&Open Study..."), QKeySequence::Open, this, [this] {
-        const QString manifest = QFileDialog::getOpenFileName(this, tr("Open study"), QString(), tr(kStudyFilter));
+        const QString manifest = QFileDialog::getOpenFileName(this, tr("Open study"), startFolder("study"), tr(kStudyFilter));
+        rememberFolder("study", manifest.isEmpty() ? QString() : QFileInfo(QFileInfo(manifest).absolutePath()).absolutePath());
         if (!manifest.isEmpty())
             windowForNewDocument()->openStudy(QFileInfo(manifest).absolutePath());
     });
@@ -42,22 +45,25 @@ void MainWindow::createMenus()
     m_documentActions << file->addAction(tr("Import &DICOM..."), QKeySequence(tr("Ctrl+D")), this,
                                          &MainWindow::showDicomImportDialog);
     m_documentActions << file->addAction(tr("&Import Volume..."), QKeySequence(tr("Ctrl+I")), this, [this] {
-        const QString volume = QFileDialog::getOpenFileName(this, tr("Import volume"), QString(), tr(kVolumeFilter));
+        const QString volume = QFileDialog::getOpenFileName(this, tr("Import volume"), startFolder("volume"), tr(kVolumeFilter));
+        rememberFolder("volume", volume);
         if (!volume.isEmpty())
             importVolume(volume);
     });
     m_documentActions << file->addAction(tr("Import &Label..."), this, [this] {
         const QString mask = QFileDialog::getOpenFileName(
-            this, tr("Import label (a mask on the CT's grid)"), QString(),
+            this, tr("Import label (a mask on the CT's grid)"), startFolder("volume"),
             tr("Volumes (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;DICOM SEG or a mask series' slice (*.dcm *.DCM *.IMA);;"
                "All files (*)"));
+        rememberFolder("volume", mask);
         if (!mask.isEmpty())
             importLabel(mask);
     });
     file->addSeparator();
     m_documentActions << file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { saveStudy(); });
     m_documentActions << file->addAction(tr("Save &As..."), QKeySequence::SaveAs, this, [this] {
-        const QString bundle = QFileDialog::getSaveFileName(this, tr("Save study as"), QString(), tr("Study folder (*.vsim)"));
+        const QString bundle = QFileDialog::getSaveFileName(this, tr("Save study as"), startFolder("study"), tr("Study folder (*.vsim)"));
+        rememberFolder("study", bundle.isEmpty() ? QString() : QFileInfo(bundle).absolutePath());
         if (!bundle.isEmpty())
             saveStudyAs(bundle.endsWith(".vsim") ? bundle : bundle + ".vsim");
     });

@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "ArtifactCommands.h"
+#include "FileLocations.h"
 #include "ReportExportDialog.h"
 #include "vsim/app/StudyReport.h"
 #include "vsim/core/OutputSafety.h"
@@ -8,6 +9,7 @@
 #include "vsim/report/MetricsExport.h"
 
 #include <QApplication>
+#include <QDate>
 #include <QDesktopServices>
 #include <QDir>
 #include <QStandardPaths>
@@ -85,12 +87,13 @@ void MainWindow::showReportExportDialog()
 {
     if (!m_document.hasStudy())
         return;
-    const QString suggested = QString::fromStdString(
-        (m_document.study().bundlePath().parent_path() / (m_document.study().name() + "-report.pdf")).string());
-    ReportExportDialog dialog(suggested, this);
+    const QString name = portableFileName(QString::fromStdString(m_document.study().name()) + " report " +
+                                          QDate::currentDate().toString(Qt::ISODate));
+    ReportExportDialog dialog(QDir(startFolder("report")).filePath(name + ".pdf"), this);
     if (dialog.exec() != QDialog::Accepted)
         return;
     ReportExportRequest request = dialog.request();
+    rememberFolder("report", request.pdf);
     QStringList existing;
     for (const QString& file : request.outputFiles())
         if (QFileInfo::exists(file))

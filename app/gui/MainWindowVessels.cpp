@@ -4,6 +4,7 @@
 #include "ArtifactCommands.h"
 #include "MainWindow.h"
 #include "StudyDocument.h"
+#include "TableHeaders.h"
 #include "vsim/app/SacRecord.h"
 #include "vsim/app/SegmentNames.h"
 #include "vsim/imaging/AneurysmSac.h"
@@ -59,9 +60,15 @@ void MainWindow::createMeasurementDock()
 {
     m_measurementTable = new QTableWidget(0, 8, this);
     m_measurementTable->setObjectName("measurementTable");
-    m_measurementTable->setHorizontalHeaderLabels({tr("Segment", "a vessel segment (noun)"), tr("Length (mm)"), tr("Start r (mm)"), tr("End r (mm)"),
-                                                   tr("Reference \u00d8 (mm)"), tr("Minimal \u00d8 (mm)"),
-                                                   tr("Stenosis (%)"), tr("Max \u00d8 (mm)")});
+    setColumnHeaders(m_measurementTable,
+                     {{tr("Segment", "a vessel segment (noun)"), tr("The segment's anatomical name (double-click to rename) or its end nodes")},
+                      {tr("Length (mm)"), tr("Length along the centerline (mm)")},
+                      {tr("Start r (mm)"), tr("Lumen radius at the segment's start (mm)")},
+                      {tr("End r (mm)"), tr("Lumen radius at the segment's end (mm)")},
+                      {tr("Reference \u00d8 (mm)"), tr("Reference lumen diameter: the median equivalent diameter of the segment's sections (mm)")},
+                      {tr("Minimal \u00d8 (mm)"), tr("Minimal lumen diameter (equivalent) along the segment, in sections perpendicular to the centerline (mm)")},
+                      {tr("Stenosis (%)"), tr("Diameter stenosis: 100 (1 - minimal / reference diameter) (%)")},
+                      {tr("Max \u00d8 (mm)"), tr("Largest lumen caliper width along the segment (mm); the AAA diameter outer wall to outer wall (SVS) is the sac's row")}});
     m_measurementTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_measurementTable->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_measurementTable->verticalHeader()->hide();

@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QString>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QtTest>
@@ -39,6 +40,8 @@ inline bool runVesselSteps(gui::MainWindow& window, const std::string& folder)
         QSurfaceFormat::setDefaultFormat(format);                                                                      \
         QApplication application(argc, argv);                                                                          \
         QApplication::setOrganizationName("VascuSimTests");                                                            \
+        QApplication::setApplicationName(#TestClass); /* settings of its own, from a clean start */                    \
+        QSettings().clear();                                                                                           \
         TestClass test;                                                                                                \
         return QTest::qExec(&test, argc, argv);                                                                        \
     }
