@@ -5,6 +5,7 @@
 #include "SceneCache.h"
 #include "StudyDocument.h"
 #include "TaskRunner.h"
+#include "ViewCapture.h"
 #include "ViewState.h"
 #include "WorkflowChecklist.h"
 #include "vsim/app/NetworkPipeline.h"
@@ -90,6 +91,19 @@ public:
     /// Runs a step of the workflow checklist as its menu entry does; false when refused (no study, busy, missing
     /// input: the message says which).
     bool runWorkflowStep(app::WorkflowStep step);
+
+    /// Saves a PNG of `view` (the whole window when null) into the capture folder; its path, or "" (the error shown).
+    QString saveScreenshot(QWidget* view);
+    enum class MovieSource
+    {
+        Rotation,  ///< the 3D view turning once around (72 frames of 5 degrees)
+        PlayedRun, ///< every frame of the run in the Run Player, as the 3D view shows it
+    };
+    /// Writes a movie into a new folder in the capture folder, with progress and Cancel.
+    MovieResult saveMovie(MovieSource source);
+    /// Where captures go: the folder chosen in View > Capture > Capture Folder, else "VascuSim captures" in the
+    /// user's documents.
+    QString captureFolder() const;
     /// Segments the vessels of the newest image in the background (segmentationParameters(); automatic seed
     /// unless `seedMm`), adds the label (undoable), overlays it in the MPRs and shows its surface in 3D.
     bool segmentVessels(const std::optional<Eigen::Vector3d>& seedMm = std::nullopt);
@@ -229,6 +243,7 @@ private:
     void createWallMenu();
     void createDrugMenu();
     void createFlowMenu();
+    void createLayoutAndCaptureMenus(QMenu* view);
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
     /// The player's current frame of the played run in the 3D view (MainWindowRuns.cpp).
     void drawRunFrame();

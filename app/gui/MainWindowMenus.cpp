@@ -135,6 +135,8 @@ void MainWindow::createMenus()
         connect(choice, &QAction::triggered, this, [this, thicknessMm] { m_views->setSlabThickness(thicknessMm); });
     }
     view->addSeparator();
+    createLayoutAndCaptureMenus(view);
+    view->addSeparator();
     view->addAction(tr("3D: &Anterior View"), this, [this] { m_views->volumeView()->showAnteriorView(); });
     view->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())

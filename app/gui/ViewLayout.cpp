@@ -3,7 +3,11 @@
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QEvent>
 #include <QGridLayout>
+
+#include <algorithm>
+#include <vector>
 
 namespace vsim::gui {
 
@@ -22,10 +26,11 @@ ViewLayout::ViewLayout(QWidget* parent) : QWidget(parent)
     }
     m_volumeView = new viz::VolumeView3D(this);
     m_volumeView->setObjectName("volumeView");
-    grid->addWidget(m_sliceViews[0], 0, 0);
-    grid->addWidget(m_volumeView, 0, 1);
-    grid->addWidget(m_sliceViews[1], 1, 0);
-    grid->addWidget(m_sliceViews[2], 1, 1);
+    m_mainView = m_sliceViews[0];
+    for (QWidget* view : {static_cast<QWidget*>(m_sliceViews[0]), static_cast<QWidget*>(m_sliceViews[1]),
+                          static_cast<QWidget*>(m_sliceViews[2]), static_cast<QWidget*>(m_volumeView)})
+        view->installEventFilter(this); // which view the user works in
+    setLayoutMode(LayoutMode::TwoByTwo);
 
     for (viz::SliceView* source : m_sliceViews)
     {
@@ -43,6 +48,69 @@ ViewLayout::ViewLayout(QWidget* parent) : QWidget(parent)
                     target->setWindowLevel({window, level});
         });
     }
+}
+
+void ViewLayout::setLayoutMode(LayoutMode mode)
+{
+    m_mode = mode;
+    auto* grid = static_cast<QGridLayout*>(layout());
+    QWidget* const views[4] = {m_sliceViews[0], m_sliceViews[1], m_sliceViews[2], m_volumeView};
+    for (QWidget* view : views)
+        grid->removeWidget(view);
+    for (int i = 0; i < 4; ++i)
+    {
+        grid->setRowStretch(i, 0);
+        grid->setColumnStretch(i, 0);
+    }
+    std::vector<QWidget*> shown;
+    switch (mode)
+    {
+    case LayoutMode::TwoByTwo:
+        grid->addWidget(m_sliceViews[0], 0, 0);
+        grid->addWidget(m_volumeView, 0, 1);
+        grid->addWidget(m_sliceViews[1], 1, 0);
+        grid->addWidget(m_sliceViews[2], 1, 1);
+        shown = {views, views + 4};
+        break;
+    case LayoutMode::OneByOne:
+        grid->addWidget(m_mainView, 0, 0);
+        shown = {m_mainView};
+        break;
+    case LayoutMode::OneByThree:
+        for (int v = 0; v < 3; ++v)
+            grid->addWidget(m_sliceViews[std::size_t(v)], 0, v);
+        shown = {views, views + 3};
+        break;
+    case LayoutMode::VolumePlusSlices:
+        grid->addWidget(m_volumeView, 0, 0, 3, 1);
+        for (int v = 0; v < 3; ++v)
+            grid->addWidget(m_sliceViews[std::size_t(v)], v, 1);
+        grid->setColumnStretch(0, 2);
+        grid->setColumnStretch(1, 1);
+        shown = {views, views + 4};
+        break;
+    }
+    for (QWidget* view : views)
+        view->setVisible(std::find(shown.begin(), shown.end(), view) != shown.end());
+}
+
+void ViewLayout::setMainView(QWidget* view)
+{
+    m_mainView = view ? view : m_sliceViews[0];
+    if (m_mode == LayoutMode::OneByOne)
+        setLayoutMode(m_mode);
+}
+
+QWidget* ViewLayout::activeView() const
+{
+    return m_activeView && m_activeView->isVisible() ? m_activeView : m_mainView;
+}
+
+bool ViewLayout::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::FocusIn)
+        m_activeView = static_cast<QWidget*>(watched);
+    return QWidget::eventFilter(watched, event);
 }
 
 viz::SliceView* ViewLayout::sliceView(viz::SliceOrientation orientation) const

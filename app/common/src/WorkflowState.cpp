@@ -85,8 +85,13 @@ StepStatus stepStatus(const study::Study& study, WorkflowStep step)
     StepStatus status;
     const std::vector<std::string>& commands = stepCommands(step);
     const auto& artifacts = study.artifacts();
+    const auto isResult = [&](const Artifact& artifact) {
+        if (step == WorkflowStep::Import) // any image: a study made elsewhere may not say how
+            return artifact.kind == study::ArtifactKind::Image;
+        return std::count(commands.begin(), commands.end(), artifact.provenance.command) > 0;
+    };
     for (std::size_t i = artifacts.size(); i-- > 0;)
-        if (!artifacts[i].damaged && std::count(commands.begin(), commands.end(), artifacts[i].provenance.command))
+        if (!artifacts[i].damaged && isResult(artifacts[i]))
         {
             status.artifactId = artifacts[i].id;
             break;

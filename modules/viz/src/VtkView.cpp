@@ -191,4 +191,11 @@ void VtkView::setCameraState(const CameraState& state)
     update();
 }
 
+void VtkView::orbit(double degrees)
+{
+    renderer()->GetActiveCamera()->Azimuth(degrees);
+    renderer()->ResetCameraClippingRange();
+    update();
+}
+
 } // namespace vsim::viz

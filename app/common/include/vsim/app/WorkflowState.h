@@ -18,7 +18,7 @@ namespace vsim::app {
 /// The steps of the workstation's workflow, in order (ARCHITECTURE.md; smoke and PACS add theirs the same way).
 enum class WorkflowStep
 {
-    Import,      ///< a CT image
+    Import,      ///< a CT image (any image artifact, whatever made it)
     Segment,     ///< the vessel label
     Centerlines, ///< skeleton and centerlines
     WallMesh,    ///< the wall mesh

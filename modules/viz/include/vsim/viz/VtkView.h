@@ -37,6 +37,8 @@ public:
     /// The renderer's camera, and setting it (the view is redrawn).
     CameraState cameraState() const;
     void setCameraState(const CameraState& state);
+    /// Turns the camera `degrees` about the view-up axis through the focal point (a rotation movie's step).
+    void orbit(double degrees);
     /// Whether mouse and key events are forwarded to the VTK interactor (the 3D view's camera); default true.
     void setForwardEventsToVtk(bool forward) { m_forwardEvents = forward; }
 
