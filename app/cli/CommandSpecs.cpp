@@ -195,7 +195,7 @@ std::vector<CommandSpec> declareCommands()
         {"report", 0, 0,
          {kStudy, required("out"), value("sections"), value("page"), value("dicom-pdf"), flag("anonymize"),
           value("metrics-csv"), value("metrics-json"), flag("no-validation"), flag("overwrite"), kWait},
-         "report --study <study.vsim> --out <report.pdf> [--sections aaa,stenosis,chemoembolization,smoke,runs]\n"
+         "report --study <study.vsim> --out <report.pdf> [--sections aaa,stenosis,chemoembolization,smoke,measurements,runs]\n"
          "       [--page a4|letter] [--dicom-pdf <out.dcm>] [--anonymize] [--metrics-csv F] [--metrics-json F]\n"
          "       [--no-validation] [--overwrite]\n"
          "    the clinical report (PDF); existing output files are replaced only with --overwrite",

@@ -33,6 +33,28 @@ void RenameArtifactCommand::undo()
     m_document.notifyChanged();
 }
 
+SetArtifactAttributeCommand::SetArtifactAttributeCommand(StudyDocument& document, std::string id, std::string key,
+                                                         std::string value, const QString& description)
+    : m_document(document), m_id(std::move(id)), m_key(std::move(key)), m_value(std::move(value)),
+      m_oldAttributes(document.study().artifact(m_id).attributes)
+{
+    setText(description);
+}
+
+void SetArtifactAttributeCommand::redo()
+{
+    std::map<std::string, std::string> attributes = m_oldAttributes;
+    attributes[m_key] = m_value;
+    m_document.study().setArtifactAttributes(m_id, attributes);
+    m_document.notifyChanged();
+}
+
+void SetArtifactAttributeCommand::undo()
+{
+    m_document.study().setArtifactAttributes(m_id, m_oldAttributes);
+    m_document.notifyChanged();
+}
+
 RenameSegmentCommand::RenameSegmentCommand(StudyDocument& document, std::string centerlinesId, std::size_t segment,
                                            std::string name)
     : m_document(document), m_id(std::move(centerlinesId)), m_segment(segment), m_name(std::move(name)),

@@ -47,6 +47,21 @@ private:
     std::map<std::string, std::string> m_oldAttributes;
 };
 
+/// Sets one attribute of an artifact (e.g. a measurement's "in_report"); undo restores the attributes before.
+class SetArtifactAttributeCommand : public QUndoCommand
+{
+public:
+    SetArtifactAttributeCommand(StudyDocument& document, std::string id, std::string key, std::string value,
+                                const QString& description);
+    void redo() override;
+    void undo() override;
+
+private:
+    StudyDocument& m_document;
+    std::string m_id, m_key, m_value;
+    std::map<std::string, std::string> m_oldAttributes;
+};
+
 /// Removes an artifact; undo puts it back (its data is kept in memory by the study).
 class RemoveArtifactCommand : public QUndoCommand
 {

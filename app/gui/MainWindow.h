@@ -104,6 +104,12 @@ public:
     /// Where captures go: the folder chosen in View > Capture > Capture Folder, else "VascuSim captures" in the
     /// user's documents.
     QString captureFolder() const;
+
+    /// Measures a drawing of a slice view (viz::SliceView::measurementDrawn) on the shown CT and adds it to the study
+    /// as a measurement artifact, undoable; its id, or "" when refused (the message says why).
+    std::string addMeasurement(const ViewMeasurement& drawn);
+    /// Marks a measurement artifact for the report's measurements section (undoable).
+    void setMeasurementInReport(const std::string& id, bool inReport);
     /// Segments the vessels of the newest image in the background (segmentationParameters(); automatic seed
     /// unless `seedMm`), adds the label (undoable), overlays it in the MPRs and shows its surface in 3D.
     bool segmentVessels(const std::optional<Eigen::Vector3d>& seedMm = std::nullopt);
@@ -244,6 +250,9 @@ private:
     void createDrugMenu();
     void createFlowMenu();
     void createLayoutAndCaptureMenus(QMenu* view);
+    void createMeasureMenu();
+    /// The study's shown measurement artifacts drawn in the slice views.
+    void refreshViewMeasurements();
     void showDrugDeliveryRun(std::shared_ptr<const sim::network::NetworkRunResult> run);
     /// The player's current frame of the played run in the 3D view (MainWindowRuns.cpp).
     void drawRunFrame();
@@ -335,6 +344,7 @@ private:
     SceneCache m_scene;
     std::string m_drawnScene; // what refreshScene() drew last (roles, completeness), not drawn twice
     std::set<std::string> m_hiddenArtifacts;
+    QAction* m_measurementInReport = nullptr;
     std::optional<ViewState> m_pendingViewState; // applied once a reopened study's views are prepared
     LabelEditSession* m_labelEdit = nullptr;
     QToolBar* m_editToolBar = nullptr;

@@ -103,6 +103,7 @@ void MainWindow::createMenus()
     createWallMenu();
     createDrugMenu();
     createFlowMenu();
+    createMeasureMenu();
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("Window/Level: &CTA"), this, [this] { m_views->applyWindowLevel(viz::kCtaPreset); });

@@ -32,6 +32,7 @@ const QColor kCenterlineColour(60, 220, 90);
 
 void MainWindow::refreshScene()
 {
+    refreshViewMeasurements();
     if (!m_document.hasStudy())
         return;
     const SceneContent content = sceneContent(m_document.study(), m_hiddenArtifacts);

@@ -46,7 +46,8 @@ TriangleMesh displaySurface(const LabelVolume& label, const Progress& progress)
 bool isShowable(const study::Artifact& a)
 {
     return a.kind == study::ArtifactKind::Image || a.kind == study::ArtifactKind::Label ||
-           a.kind == study::ArtifactKind::Skeleton || isWallRun(a) || isDrugRun(a);
+           a.kind == study::ArtifactKind::Skeleton || a.kind == study::ArtifactKind::Measurement || isWallRun(a) ||
+           isDrugRun(a);
 }
 
 SceneContent sceneContent(const study::Study& study, const std::set<std::string>& hidden)

@@ -29,6 +29,9 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
 std::optional<report::Section> drugSection(const study::Study& study, const ReportOptions& options,
                                            std::vector<const study::Artifact*>& runs);
 
+/// The measurements (rulers, angles, ROIs) marked "in report" on the workstation; nothing when none is marked.
+std::optional<report::Section> measurementsSection(const study::Study& study);
+
 /// For each reported run: solver, backend, steps, wall-clock time, its parameters, and the validation cases of its
 /// solver run in this build (options.validate).
 report::Section runsSection(const std::vector<const study::Artifact*>& runs, const ReportOptions& options,

@@ -58,7 +58,7 @@ report::ReportHeader header(const study::Study& study, bool anonymize)
 
 std::vector<std::string> reportSectionIds()
 {
-    return {"aaa", "stenosis", "chemoembolization", "smoke", "runs"};
+    return {"aaa", "stenosis", "chemoembolization", "smoke", "measurements", "runs"};
 }
 
 report::Report buildStudyReport(const study::Study& study, const ReportOptions& options, const Progress& progress)
@@ -66,7 +66,7 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
     const std::vector<std::string> known = reportSectionIds();
     for (const std::string& id : options.sections)
         if (std::find(known.begin(), known.end(), id) == known.end())
-            throw Error("unknown report section '" + id + "'; sections: aaa, stenosis, chemoembolization, smoke, runs");
+            throw Error("unknown report section '" + id + "'; sections: aaa, stenosis, chemoembolization, smoke, measurements, runs");
     auto wanted = [&](const std::string& id) { return options.sections.empty() || options.sections.count(id) > 0; };
 
     report::Report report;
@@ -99,6 +99,9 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
     if (wanted("smoke"))
         report.notRun.push_back("Surgical smoke: the study has no smoke run (the smoke solver is not part of this "
                                 "version).");
+    if (wanted("measurements"))
+        if (auto section = detail::measurementsSection(study))
+            report.sections.push_back(std::move(*section));
     for (const Artifact* run : runs)
         report.sources.push_back(run->id);
     if (wanted("runs") && !runs.empty())

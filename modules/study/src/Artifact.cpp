@@ -16,6 +16,7 @@ std::string kindName(ArtifactKind kind)
     case ArtifactKind::Network: return "network";
     case ArtifactKind::Report: return "report";
     case ArtifactKind::Run: return "run";
+    case ArtifactKind::Measurement: return "measurement";
     }
     return "unknown";
 }

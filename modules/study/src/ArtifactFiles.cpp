@@ -70,6 +70,37 @@ SkeletonGraph skeletonFromJson(const json& document)
     return skeleton;
 }
 
+/// A view measurement: its kind, points and plane; the figures are written for readers and read back as written.
+json measurementToJson(const ViewMeasurement& m)
+{
+    json points = json::array();
+    for (const Eigen::Vector3d& point : m.pointsMm)
+        points.push_back(vectorToJson(point));
+    return {{"kind", kindName(m.kind)},        {"points_mm", points},           {"plane_right", vectorToJson(m.planeRight)},
+            {"plane_up", vectorToJson(m.planeUp)}, {"length_mm", m.lengthMm},     {"angle_degrees", m.angleDegrees},
+            {"mean_hu", m.meanHu},              {"sd_hu", m.sdHu},               {"area_mm2", m.areaMm2},
+            {"samples", m.samples}};
+}
+
+ViewMeasurement measurementFromJson(const json& document)
+{
+    ViewMeasurement m;
+    m.kind = measurementKindFromName(document.at("kind").get<std::string>());
+    for (const auto& point : document.at("points_mm"))
+        m.pointsMm.push_back(vectorFromJson(point));
+    if (int(m.pointsMm.size()) != pointCount(m.kind))
+        throw Error("a " + kindName(m.kind) + " takes " + std::to_string(pointCount(m.kind)) + " points");
+    m.planeRight = vectorFromJson(document.at("plane_right"));
+    m.planeUp = vectorFromJson(document.at("plane_up"));
+    m.lengthMm = document.value("length_mm", 0.0);
+    m.angleDegrees = document.value("angle_degrees", 0.0);
+    m.meanHu = document.value("mean_hu", 0.0);
+    m.sdHu = document.value("sd_hu", 0.0);
+    m.areaMm2 = document.value("area_mm2", 0.0);
+    m.samples = document.value("samples", 0LL);
+    return m;
+}
+
 } // namespace
 
 using detail::readVtkXml;
@@ -91,6 +122,7 @@ std::string fileExtension(ArtifactKind kind)
     case ArtifactKind::TetMesh: return ".vtu";
     case ArtifactKind::Skeleton:
     case ArtifactKind::Network:
+    case ArtifactKind::Measurement:
     case ArtifactKind::Run: return ".json";
     case ArtifactKind::Report: return ".pdf";
     }
@@ -109,6 +141,7 @@ std::string folderName(ArtifactKind kind)
     case ArtifactKind::Network: return "networks";
     case ArtifactKind::Report: return "reports";
     case ArtifactKind::Run: return "runs";
+    case ArtifactKind::Measurement: return "measurements";
     }
     return {};
 }
@@ -150,6 +183,14 @@ void writeArtifactFile(const ArtifactData& data, const std::filesystem::path& fi
         break;
     }
     case ArtifactKind::Run: writeRunFolder(std::get<SolverRun>(data), file); break;
+    case ArtifactKind::Measurement:
+    {
+        std::ofstream stream(file, std::ios::trunc);
+        stream << measurementToJson(std::get<ViewMeasurement>(data)).dump(2);
+        if (!stream.flush())
+            throw Error("cannot write the measurement", {{"file", file.string()}});
+        break;
+    }
     }
     syncFile(file);
 }
@@ -181,6 +222,15 @@ ArtifactData readArtifactFile(ArtifactKind kind, const std::filesystem::path& fi
     case ArtifactKind::Network: return readNetworkFile(file);
     case ArtifactKind::Report: return Document{readTextFile(file)};
     case ArtifactKind::Run: return readRunFolder(file, true);
+    case ArtifactKind::Measurement:
+        try
+        {
+            return measurementFromJson(json::parse(readTextFile(file)));
+        }
+        catch (const json::exception& exception)
+        {
+            throw Error("cannot parse the measurement", {{"file", file.string()}, {"reason", exception.what()}});
+        }
     }
     throw Error("unknown artifact kind");
 }

@@ -6,6 +6,7 @@
 #include "vsim/core/TetMesh.h"
 #include "vsim/core/TriangleMesh.h"
 #include "vsim/core/VesselNetwork.h"
+#include "vsim/core/ViewMeasurement.h"
 #include "vsim/study/Artifact.h"
 
 #include <filesystem>
@@ -15,7 +16,7 @@ namespace vsim::study {
 
 /// The in-memory data of an artifact, one alternative per ArtifactKind.
 using ArtifactData =
-    std::variant<CtVolume, LabelVolume, TriangleMesh, TetMesh, SkeletonGraph, VesselNetwork, Document, SolverRun>;
+    std::variant<CtVolume, LabelVolume, TriangleMesh, TetMesh, SkeletonGraph, VesselNetwork, Document, SolverRun, ViewMeasurement>;
 
 /// Returns the kind of the data held.
 ArtifactKind kindOf(const ArtifactData& data);

@@ -260,6 +260,13 @@ std::string Study::addSkeleton(const SkeletonGraph& skeleton, const std::string&
     return m_state->add(skeleton, name, std::move(provenance), std::move(warnings));
 }
 
+std::string Study::addMeasurement(const ViewMeasurement& measurement, const std::string& name, Provenance provenance)
+{
+    if (int(measurement.pointsMm.size()) != pointCount(measurement.kind))
+        throw Error("a " + kindName(measurement.kind) + " takes " + std::to_string(pointCount(measurement.kind)) + " points");
+    return m_state->add(measurement, name, std::move(provenance), {});
+}
+
 std::string Study::addNetwork(const VesselNetwork& network, const std::string& name, Provenance provenance,
                               std::vector<std::string> warnings)
 {
@@ -308,6 +315,11 @@ SkeletonGraph Study::loadSkeleton(const std::string& id) const
 VesselNetwork Study::loadNetwork(const std::string& id) const
 {
     return std::get<VesselNetwork>(m_state->load(id, ArtifactKind::Network));
+}
+
+ViewMeasurement Study::loadMeasurement(const std::string& id) const
+{
+    return std::get<ViewMeasurement>(m_state->load(id, ArtifactKind::Measurement));
 }
 std::string Study::loadReport(const std::string& id) const
 {

@@ -2,6 +2,7 @@
 
 #include "SliceFieldLayer.h"
 #include "SliceMarkerLayer.h"
+#include "SliceMeasurementLayer.h"
 #include "SliceOverlayLayer.h"
 
 #include "vsim/interop/VtkImage.h"
@@ -79,6 +80,7 @@ struct SliceView::Pipeline
     std::unique_ptr<SliceMarkerLayer> markers;
     std::unique_ptr<SliceFieldLayer> field;
     std::unique_ptr<SliceOverlayLayer> overlay;
+    std::unique_ptr<SliceMeasurementLayer> measurements;
 };
 
 SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
@@ -120,6 +122,7 @@ SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
     p.markers = std::make_unique<SliceMarkerLayer>(renderer());
     p.field = std::make_unique<SliceFieldLayer>(renderer());
     p.overlay = std::make_unique<SliceOverlayLayer>(renderer());
+    p.measurements = std::make_unique<SliceMeasurementLayer>(renderer());
     // The crosshair's lines stand for the other two planes: the one whose normal is the view's up is horizontal.
     const ScreenAxes axes = screenAxes(orientation);
     Eigen::Vector3d horizontal = Eigen::Vector3d::Ones(), vertical = Eigen::Vector3d::Ones();
@@ -414,6 +417,84 @@ void SliceView::setMarkers(std::vector<SliceMarker> markers)
 
 const std::vector<SliceMarker>& SliceView::markers() const { return m_pipeline->markers->markers(); }
 
+void SliceView::setMeasureTool(MeasureTool tool)
+{
+    m_measureTool = tool;
+    m_pending.pointsMm.clear();
+    m_pipeline->measurements->clearPending();
+    QWidget::setCursor(tool != MeasureTool::Off || m_placing || m_brush != BrushMode::Off ? Qt::CrossCursor : Qt::ArrowCursor);
+    updateMarkers();
+}
+
+void SliceView::setMeasurements(std::vector<ShownMeasurement> measurements)
+{
+    m_pipeline->measurements->setMeasurements(std::move(measurements));
+    updateMarkers();
+}
+
+int SliceView::shownMeasurementCount() const { return m_pipeline->measurements->shownCount(); }
+
+bool SliceView::measurePress(const QPointF& widgetPosition)
+{
+    if (m_measureTool == MeasureTool::Off)
+        return false;
+    const Eigen::Vector3d at = patientAt(widgetPosition);
+    if (m_pending.pointsMm.empty())
+    {
+        const ScreenAxes axes = screenAxes(m_orientation);
+        m_pending = ViewMeasurement{};
+        m_pending.kind = m_measureTool == MeasureTool::Ruler  ? ViewMeasurement::Kind::Ruler
+                         : m_measureTool == MeasureTool::Angle ? ViewMeasurement::Kind::Angle
+                                                               : ViewMeasurement::Kind::Roi;
+        m_pending.planeRight = axes.right;
+        m_pending.planeUp = axes.up;
+        m_pending.pointsMm = {at, at}; // the second follows the mouse
+    }
+    else // an angle's next click: the point that followed the mouse stays, a new one follows
+    {
+        m_pending.pointsMm.back() = at;
+        if (int(m_pending.pointsMm.size()) == pointCount(m_pending.kind))
+        {
+            const ViewMeasurement done = m_pending;
+            m_pending.pointsMm.clear();
+            m_pipeline->measurements->clearPending();
+            updateMarkers();
+            emit measurementDrawn(done);
+            return true;
+        }
+        m_pending.pointsMm.push_back(at);
+    }
+    m_pipeline->measurements->setPending(m_pending);
+    updateMarkers();
+    return true;
+}
+
+void SliceView::measureMove(const QPointF& widgetPosition)
+{
+    if (m_measureTool == MeasureTool::Off || m_pending.pointsMm.empty())
+        return;
+    m_pending.pointsMm.back() = patientAt(widgetPosition);
+    m_pipeline->measurements->setPending(m_pending);
+    updateMarkers();
+}
+
+bool SliceView::measureRelease(const QPointF& widgetPosition)
+{
+    if (m_measureTool == MeasureTool::Off || m_pending.pointsMm.empty())
+        return false;
+    if (m_pending.kind == ViewMeasurement::Kind::Angle)
+        return true; // an angle is clicked, not dragged
+    m_pending.pointsMm.back() = patientAt(widgetPosition);
+    const ViewMeasurement done = m_pending;
+    m_pending.pointsMm.clear();
+    m_pipeline->measurements->clearPending();
+    updateMarkers();
+    constexpr double kLeastPixels = 3.0; // a click without a drag draws nothing
+    if ((done.pointsMm[1] - done.pointsMm[0]).norm() >= kLeastPixels * millimetresPerPixel())
+        emit measurementDrawn(done);
+    return true;
+}
+
 void SliceView::setPlacing(bool placing)
 {
     m_placing = placing;
@@ -433,6 +514,7 @@ void SliceView::updateMarkers()
 {
     // Markers within one slice spacing (as the normal sees the voxels) of the plane are drawn.
     m_pipeline->markers->update(planeOrigin(), screenAxes(m_orientation), sliceThickness(), millimetresPerPixel());
+    m_pipeline->measurements->update(planeOrigin(), screenAxes(m_orientation), sliceThickness());
     const ScreenAxes axes = screenAxes(m_orientation);
     const Eigen::Vector3d offset = m_cursor - planeOrigin();
     m_pipeline->overlay->update({offset.dot(axes.right), offset.dot(axes.up)}, width(), height(), millimetresPerPixel());
@@ -541,6 +623,8 @@ void SliceView::mousePressEvent(QMouseEvent* event)
     m_dragStartField = m_fieldOfView;
     if (event->button() != Qt::LeftButton || !hasImage())
         return;
+    if (measurePress(event->position()))
+        return;
     if (m_brush != BrushMode::Off && hasLabel())
     {
         m_stroking = true;
@@ -564,7 +648,12 @@ void SliceView::mouseMoveEvent(QMouseEvent* event)
     if (!hasImage())
         return;
     const QPointF delta = event->position() - m_dragStart;
-    if ((event->buttons() & Qt::LeftButton) && m_stroking)
+    measureMove(event->position()); // the point of the measurement being drawn follows the mouse
+    if ((event->buttons() & Qt::LeftButton) && m_measureTool != MeasureTool::Off)
+    {
+        // the measurement tool has the left button
+    }
+    else if ((event->buttons() & Qt::LeftButton) && m_stroking)
         emit brushDab(patientAt(event->position()), screenAxes(m_orientation).normal());
     else if ((event->buttons() & Qt::LeftButton) && m_draggedMarker)
     {
@@ -591,6 +680,8 @@ void SliceView::mouseMoveEvent(QMouseEvent* event)
 
 void SliceView::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (event->button() == Qt::LeftButton && measureRelease(event->position()))
+        return;
     if (event->button() == Qt::LeftButton && m_stroking)
     {
         m_stroking = false;
@@ -644,6 +735,10 @@ void SliceView::keyPressEvent(QKeyEvent* event)
     case Qt::Key_3: return setWindowLevel(kBonePreset);
     case Qt::Key_4: return setWindowLevel(kLungPreset);
     case Qt::Key_R: return resetView();
+    case Qt::Key_Escape:
+        m_pending.pointsMm.clear();
+        m_pipeline->measurements->clearPending();
+        return updateMarkers();
     default: return VtkView::keyPressEvent(event);
     }
 }

@@ -18,7 +18,7 @@
 
 namespace vsim::app {
 
-/// Section ids: "aaa", "stenosis", "chemoembolization", "smoke", "runs".
+/// Section ids: "aaa", "stenosis", "chemoembolization", "smoke", "measurements" (those marked in the workstation), "runs".
 std::vector<std::string> reportSectionIds();
 
 struct ReportOptions

@@ -18,12 +18,13 @@ enum class ArtifactKind
     Network,  ///< vessel network (drug delivery), possibly with results: networks/<id>.json
     Report,   ///< a clinical report as written: reports/<id>.pdf
     Run,      ///< a simulation run: runs/<id>/run.json, its frames and series.pvd (schema 2)
+    Measurement, ///< a ruler, angle or ROI drawn on a view: measurements/<id>.json
 };
 
 /// Every kind, in the order of ArtifactKind (and of the in-memory data's alternatives).
 inline constexpr ArtifactKind kArtifactKinds[] = {ArtifactKind::Image,    ArtifactKind::Label,   ArtifactKind::Surface,
                                                   ArtifactKind::TetMesh,  ArtifactKind::Skeleton, ArtifactKind::Network,
-                                                  ArtifactKind::Report,   ArtifactKind::Run};
+                                                  ArtifactKind::Report,   ArtifactKind::Run,      ArtifactKind::Measurement};
 
 /// A document kept as written (a report's PDF bytes).
 struct Document

@@ -7,6 +7,7 @@
 #include "vsim/core/TriangleMesh.h"
 #include "vsim/core/UtcTime.h"
 #include "vsim/core/VesselNetwork.h"
+#include "vsim/core/ViewMeasurement.h"
 #include "vsim/study/Artifact.h"
 
 #include <filesystem>
@@ -88,6 +89,8 @@ public:
     std::string addReport(const std::string& pdf, const std::string& name, Provenance provenance,
                           std::vector<std::string> warnings = {});
 
+    /// A ruler, angle or ROI drawn on a view (measurements/<id>.json). Throws vsim::Error for a wrong number of points.
+    std::string addMeasurement(const ViewMeasurement& measurement, const std::string& name, Provenance provenance);
     /// A simulation run (runs/<id>/: run.json, frames, series.pvd) with its frames in memory until save(). Throws
     /// vsim::Error for a run without its frames (one whose frames were only streamed).
     std::string addRun(const SolverRun& run, const std::string& name, Provenance provenance,
@@ -101,6 +104,7 @@ public:
     TetMesh loadTetMesh(const std::string& id) const;
     SkeletonGraph loadSkeleton(const std::string& id) const;
     VesselNetwork loadNetwork(const std::string& id) const;
+    ViewMeasurement loadMeasurement(const std::string& id) const;
     /// The PDF bytes of a report artifact.
     std::string loadReport(const std::string& id) const;
     /// A run: its record (axis, status, metrics, provenance, which frames were kept) and, with `withFrames`, every

@@ -3,6 +3,7 @@
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/SimulationData.h"
 #include "vsim/viz/BrushMode.h"
+#include "vsim/viz/SliceMeasurement.h"
 #include "vsim/viz/SliceMarker.h"
 #include "vsim/viz/SliceOrientation.h"
 #include "vsim/viz/VtkView.h"
@@ -42,6 +43,8 @@ public:
     void setImage(const CtVolume& image);
     void clearImage();
     bool hasImage() const;
+    /// The CT shown (empty without one).
+    const CtVolume& image() const { return m_image; }
 
     /// How label values are coloured: the tissue classes (1 lumen red, 2-3 orange, 4 thrombus yellow, 5 wall
     /// blue), or a chemoembolization territory (sim::network::TerritoryLabelValue: 1 liver not perfused clear, 2
@@ -70,6 +73,14 @@ public:
     void setBrush(BrushMode brush, double radiusMm);
     BrushMode brush() const { return m_brush; }
     double brushRadius() const { return m_brushRadiusMm; }
+
+    /// The measurement tool of the left button (Off: the cursor); a finished drawing emits measurementDrawn().
+    void setMeasureTool(MeasureTool tool);
+    MeasureTool measureTool() const { return m_measureTool; }
+    /// The measurements drawn where the slice passes them (replacing the ones before).
+    void setMeasurements(std::vector<ShownMeasurement> measurements);
+    /// How many of them the current slice shows.
+    int shownMeasurementCount() const;
 
     /// The markers drawn over the slices (replacing the ones before).
     void setMarkers(std::vector<SliceMarker> markers);
@@ -138,6 +149,8 @@ signals:
     void pointPlaced(const Eigen::Vector3d& pointMm);
     /// The marker `id` was dragged to `pointMm` (reported once, on release).
     void markerMoved(int id, const Eigen::Vector3d& pointMm);
+    /// A measurement finished with the tool: its kind, points (patient mm) and this view's plane; no figures yet.
+    void measurementDrawn(const vsim::ViewMeasurement& measurement);
 
 protected:
     void resizeGL(int width, int height) override;
@@ -170,6 +183,12 @@ private:
     double m_brushRadiusMm = 3.0;
     bool m_stroking = false;
     bool m_placing = false;
+    MeasureTool m_measureTool = MeasureTool::Off;
+    ViewMeasurement m_pending; // the measurement being drawn; no points: none
+    /// Starts, extends or finishes the measurement being drawn at a left press (true when the tool took it).
+    bool measurePress(const QPointF& widgetPosition);
+    bool measureRelease(const QPointF& widgetPosition);
+    void measureMove(const QPointF& widgetPosition);
     std::optional<int> m_draggedMarker;
     Eigen::Vector3d m_cursor = Eigen::Vector3d::Zero();
     Eigen::Vector3d m_viewCentre = Eigen::Vector3d::Zero();
