@@ -4,7 +4,8 @@
 // the slice and the HU under the mouse; the scale bar is as long on screen as it says; a thick-slab MIP shows a
 // block the thin slice misses; linked views share the cursor and window/level, unlinked ones do not; a "go to"
 // brings a point into view. The CT is the marker phantom (MarkerPhantom.h): air with a 3000 HU block at a known
-// LPS position, anisotropic voxels and a flipped direction matrix. Screenshots are kept in test-output/gui.
+// LPS position, anisotropic voxels and a flipped direction matrix. Screenshots are kept in test-output/gui. The
+// suite runs twice: as is, and at a device pixel ratio of 2 (QT_SCALE_FACTOR=2, tst_gui_slice_views_hidpi).
 #include "GuiTestMain.h"
 #include "MarkerPhantom.h"
 #include "TestOutput.h"
@@ -36,6 +37,9 @@ void mouse(SliceView* view, QEvent::Type type, QPointF at, Qt::MouseButton butto
     QMouseEvent event(type, at, view->mapToGlobal(at), button, buttons, Qt::NoModifier);
     QApplication::sendEvent(view, &event);
 }
+
+/// A widget position (logical pixels) in the view's framebuffer (device pixels; 2 x under QT_SCALE_FACTOR=2).
+QPointF device(SliceView* view, const QPointF& logical) { return logical * view->devicePixelRatioF(); }
 
 bool near(const QPointF& a, const QPointF& b, double tolerance) { return std::hypot(a.x() - b.x(), a.y() - b.y()) <= tolerance; }
 
@@ -107,14 +111,15 @@ private slots:
         const QImage frame = axial->grabFramebuffer();
         frame.save(vsim::test::outputFolder("gui") + "/slice-crosshair.png");
         const QPointF blockAfter = vsim::test::brightCentroid(frame, kWhite, &after);
-        QVERIFY2(near(blockBefore, blockAfter, 0.5), qPrintable(where(blockBefore) + " -> " + where(blockAfter)));
+        QVERIFY2(near(blockBefore, blockAfter, 0.5 * axial->devicePixelRatioF()), qPrintable(where(blockBefore) + " -> " + where(blockAfter)));
         // The crosshair crosses at the click: the horizontal line stands for the coronal plane (green), the vertical
         // one for the sagittal (yellow); the voxel under the cursor is left free.
-        const QPoint at = click.toPoint();
-        QVERIFY(hasColour(frame, at + QPoint(40, 0), vsim::viz::planeColour(SliceOrientation::Coronal)));
-        QVERIFY(hasColour(frame, at - QPoint(40, 0), vsim::viz::planeColour(SliceOrientation::Coronal)));
-        QVERIFY(hasColour(frame, at + QPoint(0, 40), vsim::viz::planeColour(SliceOrientation::Sagittal)));
-        QVERIFY(!hasColour(frame, at + QPoint(4, 0), vsim::viz::planeColour(SliceOrientation::Coronal), 1));
+        const double ratio = axial->devicePixelRatioF();
+        const QPoint at = device(axial, click).toPoint(), along(int(40 * ratio), 0), across(0, int(40 * ratio));
+        QVERIFY(hasColour(frame, at + along, vsim::viz::planeColour(SliceOrientation::Coronal)));
+        QVERIFY(hasColour(frame, at - along, vsim::viz::planeColour(SliceOrientation::Coronal)));
+        QVERIFY(hasColour(frame, at + across, vsim::viz::planeColour(SliceOrientation::Sagittal)));
+        QVERIFY(!hasColour(frame, at + QPoint(int(4 * ratio), 0), vsim::viz::planeColour(SliceOrientation::Coronal), 1));
         // Linked: the coronal view's slice moved to the click, its image did not.
         SliceView* coronal = view(SliceOrientation::Coronal);
         QVERIFY((coronal->cursor() - axial->cursor()).norm() < 1e-9);
@@ -155,28 +160,29 @@ private slots:
     {
         SliceView* axial = view(SliceOrientation::Axial);
         int count = 0;
-        const QPointF block = blockCentre(axial, &count);
-        const QPointF mouseAt = block + QPointF(60.0, -40.0);
+        const double ratio = axial->devicePixelRatioF();
+        const QPointF block = blockCentre(axial, &count);         // device pixels
+        const QPointF mouseAt = block / ratio + QPointF(60.0, -40.0); // logical
         const Eigen::Vector3d under = axial->patientAt(mouseAt);
         const double field = axial->fieldOfView();
         wheel(axial, mouseAt, 120, Qt::ControlModifier);
         QVERIFY(std::abs(axial->fieldOfView() - field / 1.1) < 1e-9);
         QVERIFY((axial->patientAt(mouseAt) - under).norm() < 1e-6);
         const QPointF zoomed = blockCentre(axial, &count);
-        const QPointF expected = mouseAt + 1.1 * (block - mouseAt);
-        QVERIFY2(near(zoomed, expected, 1.0), qPrintable(where(zoomed) + " expected " + where(expected)));
+        const QPointF expected = device(axial, mouseAt) + 1.1 * (block - device(axial, mouseAt));
+        QVERIFY2(near(zoomed, expected, ratio), qPrintable(where(zoomed) + " expected " + where(expected)));
 
         const QPointF from(300, 300), to(340, 275);
         mouse(axial, QEvent::MouseButtonPress, from, Qt::MiddleButton, Qt::MiddleButton);
         mouse(axial, QEvent::MouseMove, to, Qt::NoButton, Qt::MiddleButton);
         mouse(axial, QEvent::MouseButtonRelease, to, Qt::MiddleButton, Qt::NoButton);
         const QPointF panned = blockCentre(axial, &count);
-        QVERIFY2(near(panned, zoomed + (to - from), 1.0), qPrintable(where(panned) + " from " + where(zoomed)));
+        QVERIFY2(near(panned, zoomed + device(axial, to - from), ratio), qPrintable(where(panned) + " from " + where(zoomed)));
 
         axial->setFocus();
         QTest::keyClick(axial, Qt::Key_R);
         QVERIFY(std::abs(axial->fieldOfView() - field) < 1e-9);
-        QVERIFY(near(blockCentre(axial, &count), block, 0.5));
+        QVERIFY(near(blockCentre(axial, &count), block, 0.5 * ratio));
     }
 
     void overlaysSayWhatIsShown()
@@ -205,9 +211,10 @@ private slots:
         QVERIFY(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9);
         QVERIFY(barMm <= 0.25 * axial->width() * mmPerPixel && barMm > 0.1 * axial->width() * mmPerPixel);
         const QImage frame = axial->grabFramebuffer();
-        frame.save(vsim::test::outputFolder("gui") + "/slice-overlays.png");
-        const int left = int(std::lround(0.55 * axial->width())), length = int(std::lround(barMm / mmPerPixel));
-        const int row = int(std::lround(0.92 * axial->height()));
+        frame.save(vsim::test::outputFolder("gui") + QString("/slice-overlays-x%1.png").arg(axial->devicePixelRatioF()));
+        const double ratio = axial->devicePixelRatioF();
+        const int left = int(std::lround(0.55 * frame.width())), length = int(std::lround(ratio * barMm / mmPerPixel));
+        const int row = int(std::lround(0.92 * frame.height()));
         int drawn = 0;
         for (int x = left + 3; x < left + length - 3; ++x)
             for (int y = row - 2; y <= row + 2; ++y)
@@ -217,7 +224,7 @@ private slots:
                     break;
                 }
         QVERIFY2(drawn >= length - 8, qPrintable(QString("%1 of %2 bar pixels").arg(drawn).arg(length - 6)));
-        QVERIFY(!hasColour(frame, {left + length + 6, row}, {1.0, 0.85, 0.2}));
+        QVERIFY(!hasColour(frame, {left + length + int(6 * ratio), row}, {1.0, 0.85, 0.2}));
     }
 
     void thickSlabShowsWhatIsNear()
@@ -233,7 +240,7 @@ private slots:
         frame.save(vsim::test::outputFolder("gui") + "/slice-slab-mip.png");
         const QPointF found = vsim::test::brightCentroid(frame, kWhite, &count);
         QVERIFY(count > 10);
-        QVERIFY(near(found, axial->widgetAt(m_phantom.marker), 3.0));
+        QVERIFY(near(found, device(axial, axial->widgetAt(m_phantom.marker)), 3.0 * axial->devicePixelRatioF()));
         QVERIFY(axial->overlayText(Qt::TopRightCorner).contains("MIP slab 20.0 mm"));
     }
 
@@ -268,7 +275,7 @@ private slots:
         QCOMPARE(axial->cursor(), m_phantom.marker);
         const QPointF found = blockCentre(axial, &count);
         QVERIFY(count > 10);
-        QVERIFY(near(found, QPointF(axial->width() / 2.0, axial->height() / 2.0), 3.0));
+        QVERIFY(near(found, device(axial, QPointF(axial->width() / 2.0, axial->height() / 2.0)), 3.0 * axial->devicePixelRatioF()));
     }
 };
 

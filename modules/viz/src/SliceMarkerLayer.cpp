@@ -82,7 +82,7 @@ void SliceMarkerLayer::update(const Eigen::Vector3d& cursorMm, const ScreenAxes&
             continue;
         auto text = vtkSmartPointer<vtkTextActor>::New();
         text->SetInput(marker.text.c_str());
-        text->GetTextProperty()->SetFontSize(13);
+        text->GetTextProperty()->SetFontSize(int(std::lround(13 * m_pixelScale)));
         text->GetTextProperty()->SetColor(marker.rgb[0], marker.rgb[1], marker.rgb[2]);
         text->GetPositionCoordinate()->SetCoordinateSystemToWorld();
         text->GetPositionCoordinate()->SetValue(x + 1.3 * radius, y + 0.3 * radius, kInFront);
@@ -95,6 +95,12 @@ void SliceMarkerLayer::update(const Eigen::Vector3d& cursorMm, const ScreenAxes&
     rings->GetCellData()->SetScalars(colours);
     static_cast<vtkPolyDataMapper*>(m_rings->GetMapper())->SetInputData(rings);
     m_rings->SetVisibility(!m_drawn.empty());
+}
+
+void SliceMarkerLayer::setPixelScale(double scale)
+{
+    m_pixelScale = scale;
+    m_rings->GetProperty()->SetLineWidth(float(2.0 * scale));
 }
 
 std::optional<int> SliceMarkerLayer::pick(const Eigen::Vector3d& pointMm, double radiusMm) const

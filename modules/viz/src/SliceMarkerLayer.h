@@ -30,6 +30,9 @@ public:
     /// Redraws the rings of the markers within `thicknessMm` of the slice through `cursorMm` (mm per screen pixel
     /// sets the ring's size: 7 pixels).
     void update(const Eigen::Vector3d& cursorMm, const ScreenAxes& axes, double thicknessMm, double mmPerPixel);
+    /// Device pixels per logical pixel (HiDPI): text sizes and line widths follow it.
+    void setPixelScale(double scale);
+
     /// The id of the drawn marker whose centre lies within `radiusMm` of `pointMm` in the slice, nearest first.
     std::optional<int> pick(const Eigen::Vector3d& pointMm, double radiusMm) const;
 
@@ -37,6 +40,7 @@ private:
     vtkRenderer* m_renderer;
     std::vector<SliceMarker> m_markers;
     std::vector<int> m_drawn; // ids of the markers drawn in the current slice
+    double m_pixelScale = 1.0;
     vtkSmartPointer<vtkActor> m_rings;
     std::vector<vtkSmartPointer<vtkTextActor>> m_texts;
 };

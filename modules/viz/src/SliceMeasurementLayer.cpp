@@ -34,6 +34,12 @@ SliceMeasurementLayer::SliceMeasurementLayer(vtkRenderer* renderer)
 
 SliceMeasurementLayer::~SliceMeasurementLayer() = default;
 
+void SliceMeasurementLayer::setPixelScale(double scale)
+{
+    m_pixelScale = scale;
+    m_lines->GetProperty()->SetLineWidth(float(2.0 * scale));
+}
+
 void SliceMeasurementLayer::update(const Eigen::Vector3d& originMm, const ScreenAxes& axes, double thicknessMm)
 {
     for (auto& text : m_texts)
@@ -76,7 +82,7 @@ void SliceMeasurementLayer::update(const Eigen::Vector3d& originMm, const Screen
             return;
         auto label = vtkSmartPointer<vtkTextActor>::New();
         label->SetInput(text.c_str());
-        label->GetTextProperty()->SetFontSize(12);
+        label->GetTextProperty()->SetFontSize(int(std::lround(12 * m_pixelScale)));
         label->GetTextProperty()->SetColor(kColour[0], kColour[1], kColour[2]);
         label->GetPositionCoordinate()->SetCoordinateSystemToWorld();
         const Eigen::Vector2d at = m.kind == ViewMeasurement::Kind::Angle ? p[1] : p.back();

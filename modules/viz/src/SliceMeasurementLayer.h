@@ -32,6 +32,8 @@ public:
     void clearPending() { m_pending.pointsMm.clear(); }
     /// Redraws for the slice through `originMm` with `axes` and `thicknessMm`.
     void update(const Eigen::Vector3d& originMm, const ScreenAxes& axes, double thicknessMm);
+    /// Device pixels per logical pixel (HiDPI): text sizes and line widths follow it.
+    void setPixelScale(double scale);
     /// How many measurements the current slice shows.
     int shownCount() const { return m_shown; }
 
@@ -40,6 +42,7 @@ private:
     std::vector<ShownMeasurement> m_measurements;
     ViewMeasurement m_pending;
     int m_shown = 0;
+    double m_pixelScale = 1.0;
     vtkSmartPointer<vtkActor> m_lines;
     std::vector<vtkSmartPointer<vtkTextActor>> m_texts;
 };

@@ -134,6 +134,16 @@ void SliceOverlayLayer::update(const Eigen::Vector2d& crosshairMm, int widthPixe
     m_scaleText->SetVisibility(m_scaleBarMm > 0.0);
 }
 
+void SliceOverlayLayer::setPixelScale(double scale)
+{
+    m_pixelScale = scale;
+    for (auto& corner : m_corners)
+        corner->GetTextProperty()->SetFontSize(int(std::lround(12 * scale)));
+    m_scaleText->GetTextProperty()->SetFontSize(int(std::lround(11 * scale)));
+    m_crosshair->GetProperty()->SetLineWidth(float(1.0 * scale));
+    m_scaleBar->GetProperty()->SetLineWidth(float(2.0 * scale));
+}
+
 void SliceOverlayLayer::setCornerText(Qt::Corner corner, const QString& text)
 {
     m_cornerTexts[std::size_t(corner)] = text;

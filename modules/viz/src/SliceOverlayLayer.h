@@ -35,6 +35,9 @@ public:
     /// The scale bar's length (mm): 1, 2 or 5 x 10^k, at most a quarter of the view's width.
     double scaleBarMm() const { return m_scaleBarMm; }
 
+    /// Device pixels per logical pixel (HiDPI): text sizes and line widths follow it.
+    void setPixelScale(double scale);
+
     /// The text in a corner (Qt::TopLeftCorner ...), several lines allowed.
     void setCornerText(Qt::Corner corner, const QString& text);
     QString cornerText(Qt::Corner corner) const { return m_cornerTexts[std::size_t(corner)]; }
@@ -43,6 +46,7 @@ private:
     vtkRenderer* m_renderer;
     bool m_crosshairShown = true;
     double m_scaleBarMm = 0.0;
+    double m_pixelScale = 1.0;
     std::array<Eigen::Vector3d, 2> m_crosshairColours; // horizontal, vertical
     vtkSmartPointer<vtkActor> m_crosshair;
     vtkSmartPointer<vtkActor> m_scaleBar;

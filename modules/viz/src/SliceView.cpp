@@ -611,6 +611,13 @@ void SliceView::updateCamera()
 
 void SliceView::resizeGL(int width, int height)
 {
+    // HiDPI: VTK draws text and lines in device pixels; they keep their size on screen.
+    const double scale = devicePixelRatioF();
+    for (auto& label : m_pipeline->edgeLabels)
+        label->GetTextProperty()->SetFontSize(int(std::lround(16 * scale)));
+    m_pipeline->overlay->setPixelScale(scale);
+    m_pipeline->markers->setPixelScale(scale);
+    m_pipeline->measurements->setPixelScale(scale);
     VtkView::resizeGL(width, height);
     updateCamera();
 }
