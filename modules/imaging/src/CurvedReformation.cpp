@@ -1,0 +1,149 @@
+#include "vsim/imaging/CurvedReformation.h"
+
+#include "vsim/core/Error.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsim::imaging {
+namespace {
+
+/// Any unit vector perpendicular to `t`.
+Eigen::Vector3d perpendicular(const Eigen::Vector3d& t)
+{
+    const Eigen::Vector3d other = std::abs(t.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    return t.cross(other).normalized();
+}
+
+} // namespace
+
+std::size_t CenterlineFrames::indexAt(double arc) const
+{
+    if (arcMm.empty())
+        return 0;
+    const double clamped = std::clamp(arc, 0.0, arcMm.back());
+    return std::min(arcMm.size() - 1, std::size_t(std::lround(clamped / stepMm)));
+}
+
+CenterlineFrames centerlineFrames(const std::vector<Eigen::Vector3d>& polyline, const std::vector<double>& radiiMm,
+                                  double stepMm)
+{
+    if (stepMm <= 0.0)
+        throw Error("the centerline step must be positive");
+    std::vector<double> cumulative{0.0};
+    for (std::size_t i = 1; i < polyline.size(); ++i)
+        cumulative.push_back(cumulative.back() + (polyline[i] - polyline[i - 1]).norm());
+    if (polyline.size() < 2 || cumulative.back() < stepMm)
+        throw Error("the centerline is shorter than one step (" + std::to_string(stepMm) + " mm)");
+    CenterlineFrames frames;
+    frames.stepMm = stepMm;
+    const int count = int(std::floor(cumulative.back() / stepMm)) + 1;
+    std::size_t segment = 0;
+    for (int k = 0; k < count; ++k)
+    {
+        const double arc = k * stepMm;
+        while (segment + 2 < polyline.size() && cumulative[segment + 1] < arc)
+            ++segment;
+        const double span = std::max(1e-12, cumulative[segment + 1] - cumulative[segment]);
+        const double f = std::clamp((arc - cumulative[segment]) / span, 0.0, 1.0);
+        frames.arcMm.push_back(arc);
+        frames.points.push_back((1.0 - f) * polyline[segment] + f * polyline[segment + 1]);
+        frames.radiiMm.push_back(radiiMm.size() == polyline.size() ? (1.0 - f) * radiiMm[segment] + f * radiiMm[segment + 1] : 0.0);
+    }
+    // Tangents by central differences of the resampled points; frames by double reflection.
+    const std::size_t n = frames.points.size();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const Eigen::Vector3d ahead = frames.points[std::min(i + 1, n - 1)], behind = frames.points[i == 0 ? 0 : i - 1];
+        frames.tangents.push_back((ahead - behind).normalized());
+    }
+    frames.normals.push_back(perpendicular(frames.tangents[0]));
+    for (std::size_t i = 0; i + 1 < n; ++i)
+    {
+        const Eigen::Vector3d v1 = frames.points[i + 1] - frames.points[i];
+        const double c1 = v1.squaredNorm();
+        if (c1 < 1e-24)
+        {
+            frames.normals.push_back(frames.normals.back());
+            continue;
+        }
+        const Eigen::Vector3d rL = frames.normals[i] - (2.0 / c1) * v1.dot(frames.normals[i]) * v1;
+        const Eigen::Vector3d tL = frames.tangents[i] - (2.0 / c1) * v1.dot(frames.tangents[i]) * v1;
+        const Eigen::Vector3d v2 = frames.tangents[i + 1] - tL;
+        const double c2 = v2.squaredNorm();
+        Eigen::Vector3d next = c2 < 1e-24 ? rL : Eigen::Vector3d(rL - (2.0 / c2) * v2.dot(rL) * v2);
+        next -= next.dot(frames.tangents[i + 1]) * frames.tangents[i + 1]; // stay exactly perpendicular
+        frames.normals.push_back(next.normalized());
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        frames.binormals.push_back(frames.tangents[i].cross(frames.normals[i]));
+    return frames;
+}
+
+double sampleTrilinear(const CtVolume& ct, const Eigen::Vector3d& pointMm)
+{
+    const VolumeGeometry& g = ct.geometry();
+    const Eigen::Vector3d index = g.patientToIndex(pointMm);
+    const int i0 = int(std::floor(index.x())), j0 = int(std::floor(index.y())), k0 = int(std::floor(index.z()));
+    if (i0 < 0 || j0 < 0 || k0 < 0 || i0 + 1 >= g.dims[0] || j0 + 1 >= g.dims[1] || k0 + 1 >= g.dims[2])
+    {
+        // On the last layer of voxels, or outside: the nearest voxel when inside.
+        const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
+        return g.contains(i, j, k) ? double(ct.at(i, j, k)) : -1024.0;
+    }
+    const double fx = index.x() - i0, fy = index.y() - j0, fz = index.z() - k0;
+    double value = 0.0;
+    for (int c = 0; c < 8; ++c)
+    {
+        const int di = c & 1, dj = (c >> 1) & 1, dk = (c >> 2) & 1;
+        const double w = (di ? fx : 1.0 - fx) * (dj ? fy : 1.0 - fy) * (dk ? fz : 1.0 - fz);
+        value += w * ct.at(i0 + di, j0 + dj, k0 + dk);
+    }
+    return value;
+}
+
+Eigen::Vector3d acrossDirection(const CenterlineFrames& frames, std::size_t i, double angleDegrees)
+{
+    const double angle = angleDegrees * M_PI / 180.0;
+    return std::cos(angle) * frames.normals[i] + std::sin(angle) * frames.binormals[i];
+}
+
+PlaneImage straightenedReformation(const CtVolume& ct, const CenterlineFrames& frames, double halfWidthMm, double angleDegrees)
+{
+    PlaneImage image;
+    image.pixelMm = frames.stepMm;
+    image.width = 2 * int(std::ceil(halfWidthMm / frames.stepMm)) + 1;
+    image.height = int(frames.points.size());
+    image.values.resize(std::size_t(image.width) * std::size_t(image.height));
+    const double centre = 0.5 * (image.width - 1);
+    for (int row = 0; row < image.height; ++row)
+    {
+        const Eigen::Vector3d across = acrossDirection(frames, std::size_t(row), angleDegrees);
+        for (int column = 0; column < image.width; ++column)
+            image.values[std::size_t(row) * std::size_t(image.width) + std::size_t(column)] = float(
+                sampleTrilinear(ct, frames.points[std::size_t(row)] + (column - centre) * image.pixelMm * across));
+    }
+    return image;
+}
+
+PlaneImage crossSection(const CtVolume& ct, const CenterlineFrames& frames, double arcMm, double halfWidthMm, double pixelMm,
+                        double angleDegrees)
+{
+    const std::size_t i = frames.indexAt(arcMm);
+    const Eigen::Vector3d right = acrossDirection(frames, i, angleDegrees);
+    const Eigen::Vector3d up = acrossDirection(frames, i, angleDegrees + 90.0);
+    PlaneImage image;
+    image.pixelMm = pixelMm;
+    image.width = image.height = 2 * int(std::ceil(halfWidthMm / pixelMm)) + 1;
+    image.values.resize(std::size_t(image.width) * std::size_t(image.height));
+    const double centre = 0.5 * (image.width - 1);
+    for (int row = 0; row < image.height; ++row)
+        for (int column = 0; column < image.width; ++column)
+            image.values[std::size_t(row) * std::size_t(image.width) + std::size_t(column)] = float(sampleTrilinear(
+                ct, frames.points[i] + (column - centre) * pixelMm * right + (centre - row) * pixelMm * up));
+    return image;
+}
+
+} // namespace vsim::imaging
