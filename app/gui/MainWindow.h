@@ -49,6 +49,7 @@ struct NetworkRunResult;
 
 namespace vsim::gui {
 
+class HelpWindow;
 class InteractiveWall;
 class LinePlot;
 class RunPlayer;
@@ -108,6 +109,10 @@ public:
     /// Measures a drawing of a slice view (viz::SliceView::measurementDrawn) on the shown CT and adds it to the study
     /// as a measurement artifact, undoable; its id, or "" when refused (the message says why).
     std::string addMeasurement(const ViewMeasurement& drawn);
+    /// The user guide (Help), at an anchor of it ("keys", "aaa", "tace", ...; empty: the top).
+    HelpWindow* showHelp(const QString& section);
+    /// The "3D + CPR" layout on the newest centerlines (false, with a message, without them).
+    bool showVesselView();
     /// Marks a measurement artifact for the report's measurements section (undoable).
     void setMeasurementInReport(const std::string& id, bool inReport);
     /// Segments the vessels of the newest image in the background (segmentationParameters(); automatic seed
@@ -345,6 +350,8 @@ private:
     std::string m_drawnScene; // what refreshScene() drew last (roles, completeness), not drawn twice
     std::set<std::string> m_hiddenArtifacts;
     QAction* m_measurementInReport = nullptr;
+    bool m_vesselViewConnected = false;
+    HelpWindow* m_help = nullptr;
     std::optional<ViewState> m_pendingViewState; // applied once a reopened study's views are prepared
     LabelEditSession* m_labelEdit = nullptr;
     QToolBar* m_editToolBar = nullptr;

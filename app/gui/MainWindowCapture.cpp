@@ -42,7 +42,8 @@ void MainWindow::createLayoutAndCaptureMenus(QMenu* view)
     const std::pair<LayoutMode, QString> modes[] = {{LayoutMode::TwoByTwo, tr("2 x 2")},
                                                     {LayoutMode::OneByOne, tr("1 x 1 (the active view)")},
                                                     {LayoutMode::OneByThree, tr("1 x 3 (axial, coronal, sagittal)")},
-                                                    {LayoutMode::VolumePlusSlices, tr("3D + MPR")}};
+                                                    {LayoutMode::VolumePlusSlices, tr("3D + MPR")},
+                                                    {LayoutMode::VolumePlusCpr, tr("3D + CPR (along the vessel)")}};
     for (const auto& [mode, name] : modes)
     {
         QAction* choice = layouts->addAction(name);
@@ -53,7 +54,10 @@ void MainWindow::createLayoutAndCaptureMenus(QMenu* view)
         connect(choice, &QAction::triggered, this, [this, mode] {
             if (mode == LayoutMode::OneByOne)
                 m_views->setMainView(m_views->activeView());
-            m_views->setLayoutMode(mode);
+            if (mode == LayoutMode::VolumePlusCpr)
+                showVesselView();
+            else
+                m_views->setLayoutMode(mode);
         });
     }
 

@@ -1,9 +1,11 @@
 // The main window's menus and the About box (MainWindow.cpp holds the document lifecycle).
 #include "ArtifactCommands.h"
 #include "FileLocations.h"
+#include "HelpWindow.h"
 #include "MainWindow.h"
 #include "ViewLayout.h"
 #include "vsim/app/VersionInfo.h"
+#include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QActionGroup>
@@ -15,6 +17,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QTreeWidget>
+#include <QWhatsThis>
 
 namespace vsim::gui {
 namespace {
@@ -124,6 +127,16 @@ void MainWindow::createMenus()
     crosshair->setCheckable(true);
     crosshair->setChecked(true);
     connect(crosshair, &QAction::toggled, this, [this](bool on) { m_views->setCrosshairShown(on); });
+    QAction* rightZoom = view->addAction(tr("Right Drag &Zooms (Slicer)"));
+    rightZoom->setObjectName("rightDragZoomsAction");
+    rightZoom->setCheckable(true);
+    rightZoom->setToolTip(tr("Right drag in a slice view zooms instead of changing window/level (kept in the settings)"));
+    connect(rightZoom, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("views/rightDragZooms", on);
+        for (viz::SliceOrientation orientation : {viz::SliceOrientation::Axial, viz::SliceOrientation::Coronal, viz::SliceOrientation::Sagittal})
+            m_views->sliceView(orientation)->setRightDragZooms(on);
+    });
+    rightZoom->setChecked(QSettings().value("views/rightDragZooms", false).toBool());
     QMenu* slab = view->addMenu(tr("Thick Slab &MIP"));
     auto* slabChoices = new QActionGroup(slab);
     for (double thicknessMm : {0.0, 5.0, 10.0, 20.0, 40.0})
@@ -144,7 +157,23 @@ void MainWindow::createMenus()
         view->addAction(dock->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* guide = help->addAction(tr("&User Guide"), this, [this] { showHelp({}); });
+    guide->setShortcut(QKeySequence::HelpContents);
+    help->addAction(tr("&Keyboard and Mouse"), this, [this] { showHelp("keys"); });
+    help->addAction(QWhatsThis::createAction(this));
+    help->addSeparator();
     help->addAction(tr("&About VascuSim"), this, &MainWindow::showAbout);
+}
+
+HelpWindow* MainWindow::showHelp(const QString& section)
+{
+    if (!m_help)
+        m_help = new HelpWindow(this);
+    m_help->show();
+    m_help->raise();
+    if (!section.isEmpty())
+        m_help->showSection(section);
+    return m_help;
 }
 
 void MainWindow::rebuildRecentMenu()

@@ -190,6 +190,7 @@ void MainWindow::createVesselMenu()
     m_documentActions << vessels->addAction(tr("S&keleton and Centerlines"), this,
                                             [this] { extractSkeletonAndCenterlines(); });
     m_documentActions << vessels->addAction(tr("AAA &Sac (Outer Wall, Thrombus)"), this, [this] { measureSac(); });
+    m_documentActions << vessels->addAction(tr("&Along the Vessel (3D + CPR)"), this, [this] { showVesselView(); });
     vessels->addSeparator();
     m_documentActions << vessels->addAction(tr("&Edit Label (Brush)"), this, [this] { startLabelEditing(); });
     m_documentActions << vessels->addAction(tr("&Parameters..."), this, [this] { editVesselParameters(); });

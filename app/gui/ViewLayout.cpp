@@ -1,5 +1,7 @@
 #include "ViewLayout.h"
 
+#include "VesselViewPanel.h"
+
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
@@ -26,6 +28,7 @@ ViewLayout::ViewLayout(QWidget* parent) : QWidget(parent)
     }
     m_volumeView = new viz::VolumeView3D(this);
     m_volumeView->setObjectName("volumeView");
+    m_vesselPanel = new VesselViewPanel(this);
     m_mainView = m_sliceViews[0];
     for (QWidget* view : {static_cast<QWidget*>(m_sliceViews[0]), static_cast<QWidget*>(m_sliceViews[1]),
                           static_cast<QWidget*>(m_sliceViews[2]), static_cast<QWidget*>(m_volumeView)})
@@ -54,7 +57,7 @@ void ViewLayout::setLayoutMode(LayoutMode mode)
 {
     m_mode = mode;
     auto* grid = static_cast<QGridLayout*>(layout());
-    QWidget* const views[4] = {m_sliceViews[0], m_sliceViews[1], m_sliceViews[2], m_volumeView};
+    QWidget* const views[5] = {m_sliceViews[0], m_sliceViews[1], m_sliceViews[2], m_volumeView, m_vesselPanel};
     for (QWidget* view : views)
         grid->removeWidget(view);
     for (int i = 0; i < 4; ++i)
@@ -88,6 +91,13 @@ void ViewLayout::setLayoutMode(LayoutMode mode)
         grid->setColumnStretch(0, 2);
         grid->setColumnStretch(1, 1);
         shown = {views, views + 4};
+        break;
+    case LayoutMode::VolumePlusCpr:
+        grid->addWidget(m_volumeView, 0, 0);
+        grid->addWidget(m_vesselPanel, 0, 1);
+        grid->setColumnStretch(0, 1);
+        grid->setColumnStretch(1, 1);
+        shown = {m_volumeView, m_vesselPanel};
         break;
     }
     for (QWidget* view : views)

@@ -20,14 +20,18 @@ inline constexpr std::array<viz::SliceOrientation, 3> kOrientations{viz::SliceOr
 
 /// Which views show and where (View > Layout): 2 x 2 (axial top left, 3D top right, coronal bottom left, sagittal
 /// bottom right), 1 x 1 (one view filling the area: the one chosen with setMainView, axial by default), 1 x 3 (the
-/// three MPRs side by side), 3D + MPR (the 3D view large, the three MPRs stacked on its right).
+/// three MPRs side by side), 3D + MPR (the 3D view large, the three MPRs stacked on its right), 3D + CPR (the 3D view
+/// and the vessel view: curved reformation, cross-section and diameter plot along a centerline).
 enum class LayoutMode
 {
     TwoByTwo,
     OneByOne,
     OneByThree,
     VolumePlusSlices,
+    VolumePlusCpr,
 };
+
+class VesselViewPanel;
 
 /// The views of a study: three MPRs and the 3D view, arranged by LayoutMode. Linked (the
 /// default) the MPRs share the cursor (a click in one moves the others' slices and crosshairs) and window/level;
@@ -40,6 +44,7 @@ public:
 
     viz::SliceView* sliceView(viz::SliceOrientation orientation) const;
     viz::VolumeView3D* volumeView() const { return m_volumeView; }
+    VesselViewPanel* vesselPanel() const { return m_vesselPanel; }
     /// Shows an image in all four views (or clears them when `image` is empty).
     void showImage(const CtVolume& image);
     void applyWindowLevel(const viz::WindowLevel& windowLevel);
@@ -66,6 +71,7 @@ public:
 private:
     std::array<viz::SliceView*, 3> m_sliceViews{};
     viz::VolumeView3D* m_volumeView = nullptr;
+    VesselViewPanel* m_vesselPanel = nullptr;
     bool m_linked = true;
     LayoutMode m_mode = LayoutMode::TwoByTwo;
     QWidget* m_mainView = nullptr;

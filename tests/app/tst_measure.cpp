@@ -5,6 +5,7 @@
 // measurements section once marked.
 #include "GuiTestMain.h"
 #include "MainWindow.h"
+#include "PixelChecks.h"
 #include "MarkerPhantom.h"
 #include "TestOutput.h"
 #include "ViewLayout.h"
@@ -44,18 +45,6 @@ void click(viz::SliceView* view, const Eigen::Vector3d& at)
     mouse(view, QEvent::MouseButtonRelease, at, Qt::NoButton);
 }
 
-/// Pixels of the measurements' cyan in a picture.
-int cyanPixels(const QImage& image)
-{
-    int count = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-        {
-            const QRgb p = image.pixel(x, y);
-            count += qBlue(p) > 150 && qGreen(p) > 0.7 * qBlue(p) && qRed(p) < 0.5 * qBlue(p);
-        }
-    return count;
-}
 
 } // namespace
 
@@ -89,7 +78,7 @@ private slots:
         viz::SliceView* coronal = window->views()->sliceView(SliceOrientation::Coronal);
         const study::Study& study = window->document().study();
         const std::size_t before = study.artifacts().size();
-        const int cyanBefore = cyanPixels(axial->grabFramebuffer());
+        const int cyanBefore = test::cyanPixels(axial->grabFramebuffer());
 
         // A ruler 30 mm along x and 40 mm along y in the axial plane: 50 mm.
         action(*window, "measureRulerAction")->trigger();
@@ -106,7 +95,7 @@ private slots:
         QCOMPARE(coronal->shownMeasurementCount(), 0); // drawn in another plane
         const QImage drawn = axial->grabFramebuffer();
         drawn.save(test::outputFolder("gui-measure") + "/ruler.png");
-        const int cyan = cyanPixels(drawn) - cyanBefore;
+        const int cyan = test::cyanPixels(drawn) - cyanBefore;
         qInfo("the ruler: %d cyan pixels for a line of %.0f pixels", cyan, 50.0 / (axial->fieldOfView() / axial->height()));
         QVERIFY(cyan > 0.8 * 50.0 / (axial->fieldOfView() / axial->height()));
         axial->stepSlices(2);

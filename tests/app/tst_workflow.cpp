@@ -1,11 +1,16 @@
 // The workflow dock as a checklist (issue 20, item 5): a single click runs a step; each step shows not run, done,
 // or stale once an input changed since (a colour disc and a word; the tooltip names what was replaced); a click
 // while a step runs is refused. The window opens at a sensible first size, not Qt's 640 x 480, and comes back at
-// the size the user left. Small patient-like AAA phantom.
+// the size the user left. The user guide opens with both cases, its pictures and the key table. Small patient-like
+// AAA phantom.
 #include "DicomFixtures.h"
 #include "GuiTestMain.h"
 #include "MainWindow.h"
+#include "HelpWindow.h"
 #include "WorkflowChecklist.h"
+
+#include <QRegularExpression>
+#include <QTextBrowser>
 
 #include <QListWidget>
 
@@ -51,6 +56,31 @@ private slots:
         again.show();
         QVERIFY(QTest::qWaitForWindowExposed(&again));
         QCOMPARE(again.size(), QSize(1300, 850));
+    }
+
+    // Help > User Guide: both cases walked through, every picture found, the keys the slice views take listed.
+    void userGuide()
+    {
+        gui::MainWindow window;
+        window.show();
+        gui::HelpWindow* help = window.showHelp("keys");
+        QVERIFY(help && help->isVisible());
+        QTextDocument* guide = help->browser()->document();
+        const QString text = guide->toPlainText();
+        for (const char* expected : {"AAA review", "Chemoembolization planning", "Measurements", "Page Up", "Ctrl + wheel",
+                                     "Middle drag", "Home / End", "W 1500 L -600", "stale"})
+            QVERIFY2(text.contains(expected), expected);
+        const QRegularExpression image("<img src=\"([^\"]+)\"");
+        const QString html = guide->toHtml();
+        int pictures = 0;
+        for (auto match = image.globalMatch(html); match.hasNext(); ++pictures)
+        {
+            const QString source = match.next().captured(1);
+            const QVariant resource = guide->resource(QTextDocument::ImageResource, QUrl(source));
+            QVERIFY2(resource.isValid() && !resource.value<QImage>().isNull(), qPrintable(source));
+        }
+        qInfo("user guide: %lld characters, %d pictures", qlonglong(text.size()), pictures);
+        QVERIFY(pictures >= 8);
     }
 
     void singleClicksAndStates()

@@ -1,0 +1,215 @@
+#include "VesselViewPanel.h"
+
+#include "vsim/viz/PlaneImageView.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace vsim::gui {
+namespace {
+
+constexpr double kStepMm = 0.5;           // arc step of the CPR rows and of a wheel notch
+constexpr double kHalfWidthMm = 25.0;     // the CPR and the cross-section span +-25 mm about the centerline
+constexpr double kSectionPixelMm = 0.25;
+
+} // namespace
+
+VesselViewPanel::VesselViewPanel(QWidget* parent) : QWidget(parent)
+{
+    setObjectName("vesselViewPanel");
+    m_segments = new QComboBox(this);
+    m_segments->setObjectName("vesselSegment");
+    m_segments->setToolTip(tr("The centerline segment shown along its length"));
+    m_rotation = new QSlider(Qt::Horizontal, this);
+    m_rotation->setObjectName("vesselRotation");
+    m_rotation->setRange(0, 179);
+    m_rotation->setToolTip(tr("Rotation of the curved reformation about the centerline (degrees)"));
+    m_cpr = new viz::PlaneImageView(this);
+    m_cpr->setObjectName("vesselReformation");
+    m_section = new viz::PlaneImageView(this);
+    m_section->setObjectName("vesselCrossSection");
+    m_plot = new LinePlot(this);
+    m_plot->setObjectName("vesselDiameterPlot");
+    m_plot->setAxes(tr("distance along the centerline (mm)"), tr("lumen diameter (mm)"));
+
+    auto* controls = new QHBoxLayout;
+    controls->addWidget(new QLabel(tr("Segment"), this));
+    controls->addWidget(m_segments, 1);
+    controls->addWidget(new QLabel(tr("Rotation"), this));
+    controls->addWidget(m_rotation, 1);
+    auto* pictures = new QHBoxLayout;
+    pictures->addWidget(m_cpr, 1);
+    pictures->addWidget(m_section, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addLayout(controls);
+    layout->addLayout(pictures, 3);
+    layout->addWidget(m_plot, 1);
+
+    connect(m_segments, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (index >= 0)
+            setSegment(m_segments->itemData(index).toInt());
+    });
+    connect(m_rotation, &QSlider::valueChanged, this, [this](int degrees) { setAngle(degrees); });
+    connect(m_cpr, &viz::PlaneImageView::clicked, this, [this](const QPointF& mm) { setArc(mm.y()); });
+    connect(m_plot, &LinePlot::clicked, this, [this](double x) { setArc(x); });
+    connect(m_section, &viz::PlaneImageView::stepped, this, [this](int steps) { setArc(m_arcMm + steps * kStepMm); });
+}
+
+void VesselViewPanel::setData(const CtVolume& ct, const SkeletonGraph& centerlines, const std::vector<std::string>& names,
+                              const imaging::VesselMeasurements* measured)
+{
+    m_ct = ct;
+    m_centerlines = centerlines;
+    m_measured.reset();
+    if (measured && measured->segments.size() == centerlines.edges.size())
+        m_measured = *measured;
+    const QSignalBlocker quiet(m_segments);
+    m_segments->clear();
+    int longest = -1;
+    for (std::size_t e = 0; e < centerlines.edges.size(); ++e)
+    {
+        if (centerlines.edges[e].points.size() < 2)
+            continue;
+        const QString name = e < names.size() && !names[e].empty() ? QString::fromStdString(names[e]) : tr("segment %1").arg(e + 1);
+        m_segments->addItem(tr("%1 (%2 mm)").arg(name).arg(centerlines.edges[e].length(), 0, 'f', 0), int(e));
+        if (longest < 0 || centerlines.edges[e].length() > centerlines.edges[std::size_t(longest)].length())
+            longest = int(e);
+    }
+    m_edge = -1;
+    if (longest >= 0)
+    {
+        m_segments->setCurrentIndex(m_segments->findData(longest));
+        setSegment(longest);
+    }
+}
+
+void VesselViewPanel::clear()
+{
+    m_frames = {};
+    m_edge = -1;
+    m_segments->clear();
+    m_cpr->setPicture(0, 0, 1.0, {});
+    m_section->setPicture(0, 0, 1.0, {});
+    m_plot->setCurves({});
+}
+
+void VesselViewPanel::setSegment(int edge)
+{
+    if (edge < 0 || std::size_t(edge) >= m_centerlines.edges.size() || edge == m_edge)
+        return;
+    const SkeletonGraph::Edge& chosen = m_centerlines.edges[std::size_t(edge)];
+    try
+    {
+        m_frames = imaging::centerlineFrames(chosen.points, chosen.radii, kStepMm);
+    }
+    catch (const std::exception&)
+    {
+        return; // a segment shorter than one step: nothing to show along it
+    }
+    m_edge = edge;
+    if (const int index = m_segments->findData(edge); index >= 0 && index != m_segments->currentIndex())
+    {
+        const QSignalBlocker quiet(m_segments);
+        m_segments->setCurrentIndex(index);
+    }
+    bool fromSections = false;
+    lumenDiameterAt(0.0, &fromSections);
+    LinePlot::Curve diameter{fromSections ? tr("lumen equivalent diameter (measured sections)")
+                                          : tr("lumen diameter (2 x the centerline's inscribed radius)"),
+                             QColor(60, 170, 230), {}, {}};
+    if (fromSections)
+        for (const imaging::CrossSection& section : m_measured->segments[std::size_t(edge)].sections)
+        {
+            diameter.x.push_back(section.arcLengthMm);
+            diameter.y.push_back(section.equivalentDiameterMm);
+        }
+    else
+        for (std::size_t i = 0; i < m_frames.points.size(); ++i)
+        {
+            diameter.x.push_back(m_frames.arcMm[i]);
+            diameter.y.push_back(2.0 * m_frames.radiiMm[i]);
+        }
+    m_plot->setCurves({diameter});
+    rebuildReformation();
+    m_arcMm = -1.0;
+    setArc(0.5 * m_frames.lengthMm());
+}
+
+void VesselViewPanel::setAngle(double degrees)
+{
+    m_angle = degrees;
+    if (m_rotation->value() != int(std::lround(degrees)))
+    {
+        const QSignalBlocker quiet(m_rotation);
+        m_rotation->setValue(int(std::lround(degrees)));
+    }
+    rebuildReformation();
+    refreshPosition();
+}
+
+void VesselViewPanel::setArc(double arcMm)
+{
+    if (m_frames.points.empty())
+        return;
+    const double arc = m_frames.arcMm[m_frames.indexAt(arcMm)];
+    if (arc == m_arcMm)
+        return;
+    m_arcMm = arc;
+    refreshPosition();
+    emit positionChanged(position());
+}
+
+double VesselViewPanel::lumenDiameterAt(double arcMm, bool* measured) const
+{
+    const bool haveSections = m_measured && m_edge >= 0 && !m_measured->segments[std::size_t(m_edge)].sections.empty();
+    if (measured)
+        *measured = haveSections;
+    if (!haveSections)
+        return m_frames.points.empty() ? 0.0 : 2.0 * m_frames.radiiMm[m_frames.indexAt(arcMm)];
+    const auto& sections = m_measured->segments[std::size_t(m_edge)].sections;
+    const auto nearest = std::min_element(sections.begin(), sections.end(), [&](const imaging::CrossSection& a, const imaging::CrossSection& b) {
+        return std::abs(a.arcLengthMm - arcMm) < std::abs(b.arcLengthMm - arcMm);
+    });
+    return nearest->equivalentDiameterMm;
+}
+
+Eigen::Vector3d VesselViewPanel::position() const
+{
+    return m_frames.points.empty() ? Eigen::Vector3d::Zero() : m_frames.points[m_frames.indexAt(m_arcMm)];
+}
+
+void VesselViewPanel::rebuildReformation()
+{
+    if (m_frames.points.empty() || m_ct.isEmpty())
+        return;
+    const imaging::PlaneImage cpr = imaging::straightenedReformation(m_ct, m_frames, kHalfWidthMm, m_angle);
+    m_cpr->setPicture(cpr.width, cpr.height, cpr.pixelMm, cpr.values);
+    m_cpr->setCaption(tr("Straightened CPR, %1 deg\n%2 mm of centerline").arg(m_angle, 0, 'f', 0).arg(m_frames.lengthMm(), 0, 'f', 0));
+}
+
+void VesselViewPanel::refreshPosition()
+{
+    if (m_frames.points.empty() || m_ct.isEmpty())
+        return;
+    const imaging::PlaneImage section = imaging::crossSection(m_ct, m_frames, m_arcMm, kHalfWidthMm, kSectionPixelMm, m_angle);
+    m_section->setPicture(section.width, section.height, section.pixelMm, section.values);
+    bool measured = false;
+    const double diameter = lumenDiameterAt(m_arcMm, &measured);
+    m_section->setCentreCircle(diameter > 0.0 ? std::optional<double>(0.5 * diameter) : std::nullopt);
+    m_section->setCaption(tr("Perpendicular to the centerline at %1 mm\nlumen %2 mm (circle: %3)")
+                              .arg(m_arcMm, 0, 'f', 1)
+                              .arg(diameter, 0, 'f', 1)
+                              .arg(measured ? tr("equivalent diameter of the measured section")
+                                            : tr("2 x the centerline's inscribed radius; run the measurements for sections")));
+    m_cpr->setMarkerRow(m_arcMm);
+    m_plot->setCursor(m_arcMm);
+}
+
+} // namespace vsim::gui

@@ -1,0 +1,21 @@
+#!/bin/sh
+# Refreshes the user guide's pictures (resources/help/pictures) from the screenshots the GUI tests keep in
+# build/default/test-output: run the GUI tests first (ctest -L gui under xvfb-run), then this script.
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+shots="$root/build/default/test-output"
+/usr/bin/python3 - "$shots" "$root/resources/help/pictures" <<'PY'
+import sys
+from PIL import Image
+shots, out = sys.argv[1], sys.argv[2]
+pictures = {'gui/dicom-import-dialog.png': 'import.png', 'gui/vessels.png': 'vessels.png',
+            'gui/run-player-wall-mid.png': 'wall-stress.png', 'gui-vessel-view/vessel-view.png': 'vessel-view.png',
+            'gui-measure/ruler.png': 'ruler.png', 'gui-drug/screenshot/drug.png': 'drug.png',
+            'gui-drug/territory/territory.png': 'territory.png', 'gui/slice-overlays-x1.png': 'slice-view.png'}
+for source, name in pictures.items():
+    picture = Image.open(f'{shots}/{source}').convert('RGB')
+    if picture.width > 900:
+        picture = picture.resize((900, picture.height * 900 // picture.width), Image.LANCZOS)
+    picture.save(f'{out}/{name}', optimize=True)
+    print(name, picture.size)
+PY
