@@ -122,7 +122,7 @@ void VesselViewPanel::setSegment(int edge)
     bool fromSections = false;
     lumenDiameterAt(0.0, &fromSections);
     LinePlot::Curve diameter{fromSections ? tr("lumen equivalent diameter (measured sections)")
-                                          : tr("lumen diameter (2 x the centerline's inscribed radius)"),
+                                          : tr("lumen diameter (2 x the centerline's radius: reads low)"),
                              QColor(60, 170, 230), {}, {}};
     if (fromSections)
         for (const imaging::CrossSection& section : m_measured->segments[std::size_t(edge)].sections)
@@ -207,7 +207,7 @@ void VesselViewPanel::refreshPosition()
                               .arg(m_arcMm, 0, 'f', 1)
                               .arg(diameter, 0, 'f', 1)
                               .arg(measured ? tr("equivalent diameter of the measured section")
-                                            : tr("2 x the centerline's inscribed radius; run the measurements for sections")));
+                                            : tr("2 x the centerline's radius, which reads low; run the measurements")));
     m_cpr->setMarkerRow(m_arcMm);
     m_plot->setCursor(m_arcMm);
 }

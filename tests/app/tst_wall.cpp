@@ -11,12 +11,15 @@
 #include "MainWindow.h"
 #include "RunPlayer.h"
 #include "TubeWall.h"
+#include "ViewCapture.h"
 #include "ViewLayout.h"
 #include "vsim/core/Units.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QDir>
 #include <QDockWidget>
+#include <QSettings>
 #include <QSlider>
 
 #include <QElapsedTimer>
@@ -130,6 +133,17 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(player->frame() != from, 3000);
         player->pause();
         QVERIFY(!player->isPlaying());
+        // A movie of the played run (View > Capture): one PNG per frame of the 3D view, the frame played before
+        // restored; the first and last frames differ (the stress grows with the pressure).
+        QSettings().setValue("capture/folder", vsim::test::outputFolder("gui-wall-movie"));
+        const int played = player->frame();
+        const gui::MovieResult movie = window.saveMovie(gui::MainWindow::MovieSource::PlayedRun);
+        QCOMPARE(movie.frames, player->frameCount());
+        QCOMPARE(player->frame(), played);
+        const QDir frames(movie.folder);
+        const QImage first(frames.filePath("frame-0001.png"));
+        const QImage last(frames.filePath(QString("frame-%1.png").arg(player->frameCount(), 4, 10, QChar('0'))));
+        QVERIFY(!first.isNull() && first.size() == last.size() && first != last);
         player->setFrame(player->frameCount() - 1);
         QVERIFY(window.views()->volumeView()->legendTitle().contains(
             QString("frame %1 / %1").arg(player->frameCount())));

@@ -117,31 +117,6 @@ private slots:
         QVERIFY(outside <= 0.35);
     }
 
-    // A straight tube of radius 8 mm at 1 mm voxels: the centerline's radii (the inscribed distance to the wall)
-    // are the tube's within a voxel away from its cut ends.
-    void radiiOfAStraightTube()
-    {
-        VolumeGeometry geometry;
-        geometry.dims = {40, 40, 80};
-        geometry.spacing = {1.0, 1.0, 1.0};
-        LabelVolume label(geometry);
-        for (int k = 5; k < 75; ++k)
-            for (int j = 0; j < 40; ++j)
-                for (int i = 0; i < 40; ++i)
-                    if ((i - 19.5) * (i - 19.5) + (j - 19.5) * (j - 19.5) <= 64.0)
-                        label.at(i, j, k) = 1;
-        const SkeletonGraph centerlines = centerlinesOf(label);
-        std::vector<double> middle;
-        for (const SkeletonGraph::Edge& edge : centerlines.edges)
-            for (std::size_t i = 0; i < edge.points.size(); ++i)
-                if (edge.points[i].z() > 20.0 && edge.points[i].z() < 60.0)
-                    middle.push_back(edge.radii[i]);
-        QVERIFY(!middle.empty());
-        std::sort(middle.begin(), middle.end());
-        qInfo("straight tube r = 8 mm: centerline radii %.2f-%.2f mm, median %.2f", middle.front(), middle.back(), middle[middle.size() / 2]);
-        QVERIFY(std::abs(middle[middle.size() / 2] - 8.0) < 1.0);
-    }
-
     // Two separate tubes: the skeleton has both, the centerlines refuse with what to try.
     void disconnectedLabelSaysWhatToTry()
     {

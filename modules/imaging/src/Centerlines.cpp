@@ -135,8 +135,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
         throw Error("the skeleton is empty: run the skeleton step first");
     const LabelVolume binary = cropLabel(label, value, 2).binary;
     const VolumeGeometry& geometry = binary.geometry();
-    const RealVolume distance = insideDistanceMm(binary, 1); // the speed's: to the boundary voxels
-    const RealVolume inscribed = inscribedRadiusMm(binary, 1); // the radii's: to the nearest voxel outside
+    const RealVolume distance = insideDistanceMm(binary, 1);
     progress.report(0.2, "fast marching");
 
     // Speed: fastest on the medial axis, ((d + h/2) / (peak + h/2))^power with d the distance of a voxel's centre to
@@ -299,7 +298,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
             const auto v = nearestVoxel(geometry, point);
             const Eigen::Vector3d labelIndex = label.geometry().patientToIndex(point);
             edge.voxels.push_back({int(std::lround(labelIndex[0])), int(std::lround(labelIndex[1])), int(std::lround(labelIndex[2]))});
-            edge.radii.push_back(std::max(double(inscribed.at(v[0], v[1], v[2])), 0.5 * geometry.spacing.minCoeff()));
+            edge.radii.push_back(std::max(double(distance.at(v[0], v[1], v[2])), 0.5 * geometry.spacing.minCoeff()));
         }
         result.edges.push_back(std::move(edge));
     }

@@ -3,13 +3,9 @@
 #include "vsim/core/Error.h"
 #include "vsim/interop/ItkImage.h"
 
-#include "vsim/core/DistanceTransform.h"
-
 #include <itkSignedMaurerDistanceMapImageFilter.h>
 
 #include <algorithm>
-#include <cmath>
-#include <vector>
 
 namespace vsim::imaging {
 
@@ -44,19 +40,6 @@ RealVolume insideDistanceMm(const LabelVolume& label, std::uint8_t value)
     filter->SetSquaredDistance(false);
     filter->Update();
     return interop::fromItk<float>(filter->GetOutput());
-}
-
-RealVolume inscribedRadiusMm(const LabelVolume& label, std::uint8_t value)
-{
-    const VolumeGeometry& geometry = label.geometry();
-    std::vector<double> squared(label.size());
-    for (std::size_t v = 0; v < label.size(); ++v)
-        squared[v] = label.data()[v] == value ? 1.0 : 0.0; // the sites: every voxel outside
-    squaredDistanceTransform(squared, geometry.dims, {geometry.spacing[0], geometry.spacing[1], geometry.spacing[2]});
-    RealVolume radius(geometry);
-    for (std::size_t v = 0; v < label.size(); ++v)
-        radius.data()[v] = label.data()[v] == value && std::isfinite(squared[v]) ? float(std::sqrt(squared[v])) : 0.0f;
-    return radius;
 }
 
 LabelCrop cropLabel(const LabelVolume& label, std::uint8_t value, int margin)

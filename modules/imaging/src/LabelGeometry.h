@@ -17,10 +17,6 @@ std::optional<std::pair<std::array<int, 3>, std::array<int, 3>>> labelBounds(con
 /// Distance (mm) from every voxel equal to `value` to the nearest other voxel (ITK signed Maurer distance,
 /// positive inside; negative outside), on the label's grid.
 RealVolume insideDistanceMm(const LabelVolume& label, std::uint8_t value);
-/// Exact distance (mm) from every voxel equal to `value` to the nearest voxel centre outside it (0 elsewhere): the
-/// inscribed radius at a voxel. ITK's map above measures to the object's boundary voxels, a voxel less (a tube of
-/// 8 mm at 1 mm voxels reads 6.3 mm there, 7.6 mm here); it stays the centerlines' speed, this is their radius.
-RealVolume inscribedRadiusMm(const LabelVolume& label, std::uint8_t value);
 
 /// The voxels equal to `value` as 0/1 in their bounding box grown by `margin` voxels, clipped to the volume;
 /// `start` is the label index of the crop's voxel (0, 0, 0). Throws vsim::Error for an empty label.
