@@ -104,6 +104,16 @@ void MainWindow::createDocks()
             return;
         if (m_document.study().artifact(id).kind == study::ArtifactKind::Image)
             showImageArtifact(id);
+        else if (m_document.study().artifact(id).kind == study::ArtifactKind::Measurement)
+        {
+            // Go to the measurement: its slice in every view, centred when off screen.
+            const ViewMeasurement measurement = m_document.study().loadMeasurement(id);
+            Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+            for (const Eigen::Vector3d& point : measurement.pointsMm)
+                centre += point / double(measurement.pointsMm.size());
+            setArtifactShown(id, true);
+            m_views->jumpTo(centre);
+        }
         else if (isShowable(m_document.study().artifact(id)))
             showOnly(id);
         if (m_document.study().artifact(id).kind == study::ArtifactKind::Report)

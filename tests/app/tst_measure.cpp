@@ -2,7 +2,7 @@
 // on the slice views of the marker phantom become measurement artifacts with the figures their points give
 // (ruler and angle to 0.01, the ROI inside the 3000 HU block exactly 3000 HU), drawn (cyan pixels) only in the view
 // and slice they were drawn in, undoable, kept when the study is saved and reopened, and listed in the report's
-// measurements section once marked.
+// measurements section once marked; a double-click in the study tree goes to one.
 #include "GuiTestMain.h"
 #include "MainWindow.h"
 #include "PixelChecks.h"
@@ -152,6 +152,12 @@ private slots:
         QVERIFY(test::waitForTask(*again));
         again->views()->jumpTo(m_phantom.marker);
         QCOMPARE(again->views()->sliceView(SliceOrientation::Axial)->shownMeasurementCount(), 3);
+        // A double-click on the ruler in the study tree goes to it: the cursor at its middle.
+        auto* againTree = again->findChild<QTreeWidget*>("artifactTree");
+        for (int i = 0; i < againTree->topLevelItemCount(); ++i)
+            if (againTree->topLevelItem(i)->data(0, Qt::UserRole).toString().toStdString() == ruler.id)
+                emit againTree->itemDoubleClicked(againTree->topLevelItem(i), 0);
+        QVERIFY((again->views()->sliceView(SliceOrientation::Axial)->cursor() - 0.5 * (a + b)).norm() < 1e-9);
         const report::Report report = app::buildStudyReport(again->document().study(), {});
         const auto section = std::find_if(report.sections.begin(), report.sections.end(), [](const report::Section& s) { return s.id == "measurements"; });
         QVERIFY(section != report.sections.end());
