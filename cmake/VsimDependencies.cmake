@@ -4,6 +4,8 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(Threads REQUIRED)
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent Test LinguistTools)
+# fontconfig: the system font that draws a view's text beyond Latin-1 (viz TextFonts.h)
+find_package(Fontconfig REQUIRED)
 qt_standard_project_setup()
 set(CMAKE_AUTOMOC ON)
 

@@ -14,8 +14,10 @@ PACKAGES=(
     libvtk9-dev libinsighttoolkit5-dev libgdcm-dev libgdcm-tools
     # DICOM, linear algebra, JSON
     libdcmtk-dev dcmtk libeigen3-dev nlohmann-json3-dev zlib1g-dev
-    # the report's font (embedded in its PDFs)
-    fonts-dejavu-core
+    # the report's font (embedded in its PDFs); Chinese in the GUI, the views and the report; fontconfig for the views
+    fonts-dejavu-core fonts-noto-cjk libfontconfig-dev
+    # Qt's own translations (standard buttons, file dialogs) in German and Chinese
+    qt6-translations-l10n
     # headless GUI tests and report checks
     xvfb xauth libgl1-mesa-dri mesa-utils poppler-utils
     # reference tools used by tests and benchmarks

@@ -4,121 +4,1392 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="46"/>
         <source>Writing the demo study (aaa phantom)...</source>
         <translation>Demo-Studie wird geschrieben (AAA-Phantom)...</translation>
     </message>
     <message>
-        <location filename="../app/gui/ArtifactCommands.cpp" line="11"/>
         <source>Rename &quot;%1&quot;</source>
         <translation>&quot;%1&quot; umbenennen</translation>
     </message>
     <message>
-        <location filename="../app/gui/ArtifactCommands.cpp" line="29"/>
         <source>Delete &quot;%1&quot;</source>
         <translation>&quot;%1&quot; löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="56"/>
         <source>cannot be placed</source>
         <translation>nicht platzierbar</translation>
     </message>
     <message>
-        <location filename="../app/gui/LabelEditSession.cpp" line="13"/>
         <source>Paint label</source>
         <translation>Label malen</translation>
     </message>
     <message>
-        <location filename="../app/gui/LabelEditSession.cpp" line="13"/>
         <source>Erase label</source>
         <translation>Label radieren</translation>
+    </message>
+    <message>
+        <source>Name segment %1 &quot;%2&quot;</source>
+        <translation>Segment %1 „%2“ benennen</translation>
+    </message>
+    <message>
+        <source>Remove island</source>
+        <translation>Insel entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::Parameters</name>
+    <message>
+        <source>Layer 1: window and region growing</source>
+        <translation>Schicht 1: Fenster und Bereichswachstum</translation>
+    </message>
+    <message>
+        <source>Lowest contrast HU</source>
+        <translation>Niedrigster Kontrast-HU</translation>
+    </message>
+    <message>
+        <source>Lowest HU of contrast-filled blood; kidneys and tumour blush (about 150 HU) stay below.</source>
+        <translation>Niedrigster HU-Wert des kontrastierten Blutes; Nieren und Tumor-Blush (etwa 150 HU) bleiben darunter.</translation>
+    </message>
+    <message>
+        <source>Highest contrast HU</source>
+        <translation>Höchster Kontrast-HU</translation>
+    </message>
+    <message>
+        <source>Highest HU of contrast-filled blood; bone and calcium above it are excluded.</source>
+        <translation>Höchster HU-Wert des kontrastierten Blutes; Knochen und Kalk darüber werden ausgeschlossen.</translation>
+    </message>
+    <message>
+        <source>Denoising sigma</source>
+        <translation>Glättungs-Sigma</translation>
+    </message>
+    <message>
+        <source>Recursive Gaussian applied before thresholding (noise and partial volume).</source>
+        <translation>Rekursiver Gauß-Filter vor der Schwelle (Rauschen und Partialvolumen).</translation>
+    </message>
+    <message>
+        <source>Boundary level</source>
+        <translation>Randniveau</translation>
+    </message>
+    <message>
+        <source>Boundary HU = tissue + fraction x (blood - tissue); 0.5 is the partial-volume half level.</source>
+        <translation>Rand-HU = Gewebe + Anteil x (Blut - Gewebe); 0,5 ist das halbe Niveau des Partialvolumens.</translation>
+    </message>
+    <message>
+        <source>Automatic seed erosion</source>
+        <translation>Erosion für den automatischen Saatpunkt</translation>
+    </message>
+    <message>
+        <source>The automatic seed lies in the largest bright component left after eroding this much (thick tubes).</source>
+        <translation>Der automatische Saatpunkt liegt in der größten hellen Komponente, die nach einer Erosion um diesen Betrag bleibt (dicke Röhren).</translation>
+    </message>
+    <message>
+        <source>Region margin</source>
+        <translation>Bereichsrand</translation>
+    </message>
+    <message>
+        <source>Margin around the vessels found coarsely, inside which the fine layers work.</source>
+        <translation>Rand um die grob gefundenen Gefäße, innerhalb dessen die feinen Schichten arbeiten.</translation>
+    </message>
+    <message>
+        <source>Layer 2: vesselness</source>
+        <translation>Schicht 2: Vesselness</translation>
+    </message>
+    <message>
+        <source>Vesselness threshold</source>
+        <translation>Vesselness-Schwelle</translation>
+    </message>
+    <message>
+        <source>Relative Frangi vesselness above which thin branches are added (0 turns layer 2 off).</source>
+        <translation>Relative Frangi-Vesselness, oberhalb derer dünne Äste hinzukommen (0 schaltet Schicht 2 ab).</translation>
+    </message>
+    <message>
+        <source>Smallest vessel scale</source>
+        <translation>Kleinste Gefäßskala</translation>
+    </message>
+    <message>
+        <source>Smallest Hessian scale.</source>
+        <translation>Kleinste Hesse-Skala.</translation>
+    </message>
+    <message>
+        <source>Largest vessel scale</source>
+        <translation>Größte Gefäßskala</translation>
+    </message>
+    <message>
+        <source>Largest Hessian scale.</source>
+        <translation>Größte Hesse-Skala.</translation>
+    </message>
+    <message>
+        <source>Vesselness scales</source>
+        <translation>Vesselness-Skalen</translation>
+    </message>
+    <message>
+        <source>Number of Hessian scales.</source>
+        <translation>Anzahl der Hesse-Skalen.</translation>
+    </message>
+    <message>
+        <source>Layer 3: level set</source>
+        <translation>Schicht 3: Level-Set</translation>
+    </message>
+    <message>
+        <source>Level-set steps</source>
+        <translation>Level-Set-Schritte</translation>
+    </message>
+    <message>
+        <source>Steps of the threshold level set that moves the boundary onto the boundary level (0 turns layer 3 off).</source>
+        <translation>Schritte des Schwellen-Level-Sets, das den Rand auf das Randniveau bewegt (0 schaltet Schicht 3 ab).</translation>
+    </message>
+    <message>
+        <source>Level-set curvature weight</source>
+        <translation>Krümmungsgewicht des Level-Sets</translation>
+    </message>
+    <message>
+        <source>Weight of the curvature (smoothing) term against the contrast term; large values shrink thin vessels.</source>
+        <translation>Gewicht des Krümmungsterms (Glättung) gegenüber dem Kontrastterm; große Werte lassen dünne Gefäße schrumpfen.</translation>
+    </message>
+    <message>
+        <source>Layer 4: refinement and clean-up</source>
+        <translation>Schicht 4: Verfeinerung und Bereinigung</translation>
+    </message>
+    <message>
+        <source>Bone margin</source>
+        <translation>Knochenabstand</translation>
+    </message>
+    <message>
+        <source>Voxels this close to bone or calcium (above the highest contrast HU) are removed.</source>
+        <translation>Voxel, die so nah an Knochen oder Kalk liegen (über dem höchsten Kontrast-HU), werden entfernt.</translation>
+    </message>
+    <message>
+        <source>Refinement sigma</source>
+        <translation>Verfeinerungs-Sigma</translation>
+    </message>
+    <message>
+        <source>Recursive Gaussian refinement of the label boundary (thesis ch. 4.1); 0 turns it off.</source>
+        <translation>Rekursive Gauß-Verfeinerung des Label-Randes (Dissertation Kap. 4.1); 0 schaltet sie ab.</translation>
+    </message>
+    <message>
+        <source>Guided segmentation (waves from points)</source>
+        <translation>Geführte Segmentierung (Wellen von Punkten)</translation>
+    </message>
+    <message>
+        <source>Wave width</source>
+        <translation>Wellenbreite</translation>
+    </message>
+    <message>
+        <source>Path-length width of one wave; its connected pieces are the vessel&apos;s cross-sections.</source>
+        <translation>Weglängen-Breite einer Welle; ihre zusammenhängenden Stücke sind die Querschnitte des Gefäßes.</translation>
+    </message>
+    <message>
+        <source>Leak area factor</source>
+        <translation>Leck-Flächenfaktor</translation>
+    </message>
+    <message>
+        <source>A cross-section this many times the narrowest of the 12 before it is a leak and is cut back to that neck (explosion control as in Tschirren 2005).</source>
+        <translation>Ein Querschnitt, der so viel mal größer ist als der engste der 12 davor, ist ein Leck und wird auf diesen Hals zurückgeschnitten (Explosionskontrolle wie bei Tschirren 2005).</translation>
+    </message>
+    <message>
+        <source>Smallest leak</source>
+        <translation>Kleinstes Leck</translation>
+    </message>
+    <message>
+        <source>Cross-sections smaller than this are never called leaks.</source>
+        <translation>Kleinere Querschnitte gelten nie als Leck.</translation>
+    </message>
+    <message>
+        <source>Thin vessel</source>
+        <translation>Dünnes Gefäß</translation>
+    </message>
+    <message>
+        <source>A front whose cross-section is under this (a vessel under 3.2 mm across) grows on down to the thin level: the scanner&apos;s blur dims a tip under 1 mm below the half level of the blood. 0: off.</source>
+        <translation>Eine Front mit kleinerem Querschnitt (ein Gefäß unter 3,2 mm Durchmesser) wächst bis zum Dünn-Niveau weiter: die Unschärfe des Scanners dämpft eine Spitze unter 1 mm unter das halbe Niveau des Blutes. 0: aus.</translation>
+    </message>
+    <message>
+        <source>Thin level</source>
+        <translation>Dünn-Niveau</translation>
+    </message>
+    <message>
+        <source>The thin level: this fraction of the way from the tissue to the blood, and at least 4 robust standard deviations of the smoothed tissue above it.</source>
+        <translation>Das Dünn-Niveau: dieser Anteil des Weges vom Gewebe zum Blut, und mindestens 4 robuste Standardabweichungen des geglätteten Gewebes darüber.</translation>
+    </message>
+    <message>
+        <source>Aortic branch length</source>
+        <translation>Länge der Aortenäste</translation>
+    </message>
+    <message>
+        <source>Target aorta: path length followed into a branch (a cross-section under a quarter of the trunk&apos;s).</source>
+        <translation>Ziel Aorta: Weglänge, die in einen Ast verfolgt wird (ein Querschnitt unter einem Viertel des Stammes).</translation>
+    </message>
+    <message>
+        <source>Aortic branches (hepatic)</source>
+        <translation>Aortenäste (hepatisch)</translation>
+    </message>
+    <message>
+        <source>Target hepatic: the aortic point&apos;s front (the widest) fills the aorta but enters its branches only this far; the other points&apos; fronts grow the tree and cannot pass the aorta.</source>
+        <translation>Ziel hepatisch: die Front des Aortenpunktes (die breiteste) füllt die Aorta, tritt aber nur so weit in ihre Äste ein; die Fronten der anderen Punkte wachsen den Baum und können die Aorta nicht passieren.</translation>
+    </message>
+    <message>
+        <source>Join points by minimal paths</source>
+        <translation>Punkte über minimale Pfade verbinden</translation>
+    </message>
+    <message>
+        <source>Target hepatic: a point whose front stopped short of the aorta&apos;s (cut at a touching vein or organ) is joined to it along the minimal path on vesselness, and the path is given its lumen. 0: off.</source>
+        <translation>Ziel hepatisch: ein Punkt, dessen Front vor der Aorta stehen blieb (an einer anliegenden Vene oder einem Organ geschnitten), wird entlang des minimalen Pfades auf der Vesselness mit ihr verbunden, und der Pfad erhält sein Lumen. 0: aus.</translation>
+    </message>
+    <message>
+        <source>Organ growing</source>
+        <translation>Organwachstum</translation>
+    </message>
+    <message>
+        <source>Intensity window</source>
+        <translation>Intensitätsfenster</translation>
+    </message>
+    <message>
+        <source>Half-width of the HU window around the points&apos; median, in robust standard deviations of the HU near them.</source>
+        <translation>Halbe Breite des HU-Fensters um den Median der Punkte, in robusten Standardabweichungen der HU in ihrer Nähe.</translation>
+    </message>
+    <message>
+        <source>Opening radius</source>
+        <translation>Öffnungsradius</translation>
+    </message>
+    <message>
+        <source>Bridges thinner than twice this to touching organs of the same density are cut.</source>
+        <translation>Brücken, dünner als das Doppelte davon, zu anliegenden Organen gleicher Dichte werden getrennt.</translation>
+    </message>
+    <message>
+        <source>Closing radius</source>
+        <translation>Schließungsradius</translation>
+    </message>
+    <message>
+        <source>Gaps narrower than twice this inside the organ (small vessels, noise) are taken in.</source>
+        <translation>Lücken im Organ, schmaler als das Doppelte davon (kleine Gefäße, Rauschen), werden aufgenommen.</translation>
+    </message>
+    <message>
+        <source>Reach from the points</source>
+        <translation>Reichweite von den Punkten</translation>
+    </message>
+    <message>
+        <source>The label stays within a box this far around the points.</source>
+        <translation>Das Label bleibt in einem Quader mit diesem Abstand um die Punkte.</translation>
+    </message>
+    <message>
+        <source>Lesion growing</source>
+        <translation>Läsionswachstum</translation>
+    </message>
+    <message>
+        <source>Lesion threshold</source>
+        <translation>Läsionsschwelle</translation>
+    </message>
+    <message>
+        <source>The lesion&apos;s boundary: this many spreads of the smoothed liver parenchyma (its histogram peak&apos;s full width at half maximum / 2.355) below the peak (hypodense lesions; above it for hyperdense ones), and at least a quarter of the lesion&apos;s contrast.</source>
+        <translation>Der Rand der Läsion: so viele Streuungen des geglätteten Leberparenchyms (volle Halbwertsbreite seines Histogrammgipfels / 2,355) unter dem Gipfel (hypodense Läsionen; darüber für hyperdense), und mindestens ein Viertel des Läsionskontrasts.</translation>
+    </message>
+    <message>
+        <source>Smoothing</source>
+        <translation>Glättung</translation>
+    </message>
+    <message>
+        <source>Standard deviation of the Gaussian the CT is smoothed with before the threshold.</source>
+        <translation>Standardabweichung des Gauß-Filters, mit dem das CT vor der Schwelle geglättet wird.</translation>
+    </message>
+    <message>
+        <source>Bridges thinner than twice this (along vessels, to a neighbouring lesion) are cut.</source>
+        <translation>Brücken, dünner als das Doppelte davon (entlang von Gefäßen, zu einer benachbarten Läsion), werden getrennt.</translation>
+    </message>
+    <message>
+        <source>Gaps narrower than twice this (the enhancing rim, vessels through the lesion) are taken in.</source>
+        <translation>Lücken, schmaler als das Doppelte davon (der anreichernde Randsaum, Gefäße durch die Läsion), werden aufgenommen.</translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation>Oberfläche</translation>
+    </message>
+    <message>
+        <source>Smoothing iterations</source>
+        <translation>Glättungsiterationen</translation>
+    </message>
+    <message>
+        <source>Windowed-sinc smoothing iterations (Taubin et al. 1996).</source>
+        <translation>Iterationen der Windowed-Sinc-Glättung (Taubin et al. 1996).</translation>
+    </message>
+    <message>
+        <source>Smoothing passband</source>
+        <translation>Durchlassband der Glättung</translation>
+    </message>
+    <message>
+        <source>Windowed-sinc pass band: lower is smoother.</source>
+        <translation>Durchlassband des Windowed-Sinc-Filters: niedriger ist glatter.</translation>
+    </message>
+    <message>
+        <source>Vertex budget</source>
+        <translation>Eckpunkt-Budget</translation>
+    </message>
+    <message>
+        <source>Decimate to about this many vertices (thesis: 1,427-2,251 for simulation); 0 keeps every vertex.</source>
+        <translation>Auf etwa so viele Eckpunkte dezimieren (Dissertation: 1.427-2.251 für die Simulation); 0 behält alle Eckpunkte.</translation>
+    </message>
+    <message>
+        <source>Skeleton</source>
+        <translation>Skelett</translation>
+    </message>
+    <message>
+        <source>Spur length / radius</source>
+        <translation>Sporn-Länge / Radius</translation>
+    </message>
+    <message>
+        <source>End branches shorter than this many lumen radii at their junction are spurs of the thinning.</source>
+        <translation>Endäste, kürzer als so viele Lumenradien an ihrer Verzweigung, sind Sporne der Ausdünnung.</translation>
+    </message>
+    <message>
+        <source>Shortest end branch</source>
+        <translation>Kürzester Endast</translation>
+    </message>
+    <message>
+        <source>End branches shorter than this are spurs.</source>
+        <translation>Kürzere Endäste sind Sporne.</translation>
+    </message>
+    <message>
+        <source>Centerlines</source>
+        <translation>Mittellinien</translation>
+    </message>
+    <message>
+        <source>Speed exponent</source>
+        <translation>Geschwindigkeitsexponent</translation>
+    </message>
+    <message>
+        <source>Fast-marching speed = (distance to the wall / its maximum)^exponent: higher hugs the medial axis.</source>
+        <translation>Fast-Marching-Geschwindigkeit = (Abstand zur Wand / sein Maximum)^Exponent: höher folgt enger der Mittelachse.</translation>
+    </message>
+    <message>
+        <source>B-spline knot spacing</source>
+        <translation>B-Spline-Knotenabstand</translation>
+    </message>
+    <message>
+        <source>Knot spacing of the least-squares cubic B-spline that smooths each centerline (thesis ch. 4.1).</source>
+        <translation>Knotenabstand des kubischen Kleinste-Quadrate-B-Splines, der jede Mittellinie glättet (Dissertation Kap. 4.1).</translation>
+    </message>
+    <message>
+        <source>Sample step</source>
+        <translation>Abtastschritt</translation>
+    </message>
+    <message>
+        <source>Spacing of the resampled centerline points.</source>
+        <translation>Abstand der neu abgetasteten Mittellinienpunkte.</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Messungen</translation>
+    </message>
+    <message>
+        <source>Section spacing</source>
+        <translation>Schnittabstand</translation>
+    </message>
+    <message>
+        <source>Distance between cross-sections.</source>
+        <translation>Abstand zwischen den Querschnitten.</translation>
+    </message>
+    <message>
+        <source>Junction clearance</source>
+        <translation>Abstand zur Verzweigung</translation>
+    </message>
+    <message>
+        <source>Sections closer than 1.5 junction radii plus this to a junction, or this to a segment end, are left out of the figures (branches distort them).</source>
+        <translation>Schnitte, die näher als 1,5 Verzweigungsradien plus dieser Wert an einer Verzweigung oder näher als dieser Wert an einem Segmentende liegen, bleiben aus den Werten heraus (Äste verfälschen sie).</translation>
+    </message>
+    <message>
+        <source>Wall mesh</source>
+        <translation>Wandnetz</translation>
+    </message>
+    <message>
+        <source>Wall thickness</source>
+        <translation>Wanddicke</translation>
+    </message>
+    <message>
+        <source>Offset of the lumen surface (one element layer); an assumption, CT does not resolve the wall: 1.5 mm, the uniform AAA wall of Raghavan et al. 2000 (J Vasc Surg 31:760).</source>
+        <translation>Versatz der Lumenoberfläche (eine Elementschicht); eine Annahme, das CT löst die Wand nicht auf: 1,5 mm, die gleichmäßige AAA-Wand nach Raghavan et al. 2000 (J Vasc Surg 31:760).</translation>
+    </message>
+    <message>
+        <source>Sets the largest edge (thin vessels get 0.8 of their radius); thesis meshes: 1,427-2,251 vertices.</source>
+        <translation>Legt die größte Kante fest (dünne Gefäße erhalten 0,8 ihres Radius); Netze der Dissertation: 1.427-2.251 Eckpunkte.</translation>
+    </message>
+    <message>
+        <source>Thrombus layer</source>
+        <translation>Thrombusschicht</translation>
+    </message>
+    <message>
+        <source>1: the AAA sac&apos;s intraluminal thrombus as its own element layer between the lumen and the wall (needs the sac: Vessels &gt; AAA Sac; run with the Raghavan-Vorp wall model). The CLI&apos;s mesh wall --thrombus.</source>
+        <translation>1: der intraluminale Thrombus des AAA-Sacks als eigene Elementschicht zwischen Lumen und Wand (braucht den Sack: Gefäße &gt; AAA-Sack; mit dem Wandmodell nach Raghavan-Vorp rechnen). In der CLI: mesh wall --thrombus.</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <source>Material model</source>
+        <translation>Materialmodell</translation>
+    </message>
+    <message>
+        <source>0: co-rotational linear elasticity (thesis), 1: St. Venant-Kirchhoff (Green strain; CPU only).</source>
+        <translation>0: korotierte lineare Elastizität (Dissertation), 1: St. Venant-Kirchhoff (Green-Dehnung; nur CPU).</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus</source>
+        <translation>Elastizitätsmodul</translation>
+    </message>
+    <message>
+        <source>Wall stiffness (thesis patient 1: 4.23 MPa).</source>
+        <translation>Wandsteifigkeit (Dissertation, Patient 1: 4,23 MPa).</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio</source>
+        <translation>Querkontraktionszahl</translation>
+    </message>
+    <message>
+        <source>Thesis: 0.23 (printed as 0.23 MPa, a typo).</source>
+        <translation>Dissertation: 0,23 (als 0,23 MPa gedruckt, ein Druckfehler).</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>Dichte</translation>
+    </message>
+    <message>
+        <source>Wall density (lumped mass).</source>
+        <translation>Wanddichte (konzentrierte Masse).</translation>
+    </message>
+    <message>
+        <source>Integration</source>
+        <translation>Integration</translation>
+    </message>
+    <message>
+        <source>Time step</source>
+        <translation>Zeitschritt</translation>
+    </message>
+    <message>
+        <source>Backward Euler step.</source>
+        <translation>Schritt des impliziten Euler-Verfahrens.</translation>
+    </message>
+    <message>
+        <source>Rayleigh alpha</source>
+        <translation>Rayleigh-Alpha</translation>
+    </message>
+    <message>
+        <source>Mass-proportional damping (thesis: 0).</source>
+        <translation>Massenproportionale Dämpfung (Dissertation: 0).</translation>
+    </message>
+    <message>
+        <source>Rayleigh beta</source>
+        <translation>Rayleigh-Beta</translation>
+    </message>
+    <message>
+        <source>Stiffness-proportional damping (thesis: 0.22 s).</source>
+        <translation>Steifigkeitsproportionale Dämpfung (Dissertation: 0,22 s).</translation>
+    </message>
+    <message>
+        <source>PCG tolerance</source>
+        <translation>PCG-Toleranz</translation>
+    </message>
+    <message>
+        <source>Relative residual of the implicit solve.</source>
+        <translation>Relatives Residuum der impliziten Lösung.</translation>
+    </message>
+    <message>
+        <source>PCG iterations</source>
+        <translation>PCG-Iterationen</translation>
+    </message>
+    <message>
+        <source>Largest number of PCG iterations per step.</source>
+        <translation>Höchstzahl der PCG-Iterationen je Schritt.</translation>
+    </message>
+    <message>
+        <source>PCG preconditioner</source>
+        <translation>PCG-Vorkonditionierer</translation>
+    </message>
+    <message>
+        <source>0: block Jacobi (the thesis&apos;s; hundreds of iterations to 1e-8 on a wall), 1: smoothed-aggregation multigrid (tens of iterations, each about five products; set up on the host at the first step; CPU and CUDA). With 1, a tolerance of 1e-8 and a cap of a few hundred every step converges.</source>
+        <translation>0: Block-Jacobi (wie in der Dissertation; Hunderte Iterationen bis 1e-8 an einer Wand), 1: Smoothed-Aggregation-Mehrgitter (Dutzende Iterationen zu je etwa fünf Produkten; beim ersten Schritt auf dem Host aufgebaut; CPU und CUDA). Mit 1 konvergiert jeder Schritt bei einer Toleranz von 1e-8 und einer Obergrenze von einigen hundert.</translation>
+    </message>
+    <message>
+        <source>Thesis rupture protocol</source>
+        <translation>Ruptur-Protokoll der Dissertation</translation>
+    </message>
+    <message>
+        <source>Ramp start</source>
+        <translation>Rampenbeginn</translation>
+    </message>
+    <message>
+        <source>Mid-vessel pressure at the start of the ramp.</source>
+        <translation>Druck in der Gefäßmitte zu Beginn der Rampe.</translation>
+    </message>
+    <message>
+        <source>Ramp end</source>
+        <translation>Rampenende</translation>
+    </message>
+    <message>
+        <source>Mid-vessel pressure at the end of the ramp.</source>
+        <translation>Druck in der Gefäßmitte am Ende der Rampe.</translation>
+    </message>
+    <message>
+        <source>Ramp steps</source>
+        <translation>Rampenschritte</translation>
+    </message>
+    <message>
+        <source>Time steps of the damped ramp (quasi_static 0).</source>
+        <translation>Zeitschritte der gedämpften Rampe (quasi_static 0).</translation>
+    </message>
+    <message>
+        <source>Ramp increment</source>
+        <translation>Rampeninkrement</translation>
+    </message>
+    <message>
+        <source>Pressure step between the equilibria of the quasi-static ramp (the onset is then found by bisection to 0.5 % whatever the step).</source>
+        <translation>Druckschritt zwischen den Gleichgewichten der quasistatischen Rampe (der Beginn wird dann per Bisektion auf 0,5 % bestimmt, unabhängig vom Schritt).</translation>
+    </message>
+    <message>
+        <source>Loaded length</source>
+        <translation>Belastete Länge</translation>
+    </message>
+    <message>
+        <source>Share of the wall&apos;s length (about its middle, along its principal axis) that the pressure acts on.</source>
+        <translation>Anteil der Wandlänge (um ihre Mitte, entlang ihrer Hauptachse), auf den der Druck wirkt.</translation>
+    </message>
+    <message>
+        <source>Tear strength</source>
+        <translation>Reißfestigkeit</translation>
+    </message>
+    <message>
+        <source>Largest principal stress at which an element tears (the thesis&apos;s tear factor; it does not print a value).</source>
+        <translation>Größte Hauptspannung, bei der ein Element reißt (der Reißfaktor der Dissertation; sie nennt keinen Wert).</translation>
+    </message>
+    <message>
+        <source>Quasi-static tearing</source>
+        <translation>Quasistatisches Reißen</translation>
+    </message>
+    <message>
+        <source>1: the wall in static equilibrium at each pressure of the ramp, the tearing onset bracketed by bisection to 0.5 %, one element released per equilibrium (does not depend on the ramp; CPU); 0: the thesis&apos;s damped ramp, every element over the limit torn in the same step (the onset lags the ramp).</source>
+        <translation>1: die Wand im statischen Gleichgewicht bei jedem Druck der Rampe, der Reißbeginn per Bisektion auf 0,5 % eingegrenzt, ein Element je Gleichgewicht gelöst (unabhängig von der Rampe; CPU); 0: die gedämpfte Rampe der Dissertation, jedes Element über der Grenze reißt im selben Schritt (der Beginn hinkt der Rampe nach).</translation>
+    </message>
+    <message>
+        <source>Fracture entropy end</source>
+        <translation>Bruchentropie-Ende</translation>
+    </message>
+    <message>
+        <source>Stop once the fracture entropy passes this (3.9: about 50 torn elements&apos; worth).</source>
+        <translation>Anhalten, sobald die Bruchentropie diesen Wert überschreitet (3,9: etwa 50 gerissene Elemente).</translation>
+    </message>
+    <message>
+        <source>Physiological protocol</source>
+        <translation>Physiologisches Protokoll</translation>
+    </message>
+    <message>
+        <source>Blood pressure</source>
+        <translation>Blutdruck</translation>
+    </message>
+    <message>
+        <source>Systolic pressure on the lumen.</source>
+        <translation>Systolischer Druck auf das Lumen.</translation>
+    </message>
+    <message>
+        <source>Wall model</source>
+        <translation>Wandmodell</translation>
+    </message>
+    <message>
+        <source>1: quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 70 s for 30,000 with a thrombus layer); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default once its solve is fast enough for the workstation&apos;s walls.</source>
+        <translation>1: quadratische Tetraeder (10 Knoten) mit der hyperelastischen AAA-Wand nach Raghavan &amp; Vorp 2000 (nahezu inkompressibel) und dem Thrombus nach Wang 2001, wo das Wandnetz einen hat, statisches Gleichgewicht in Laststufen mit dem Newton-Verfahren (CPU; auf 2 Kernen etwa 20 s für 15.000 Tetraeder, 70 s für 30.000 mit Thrombusschicht); 0: das Gesetz der Gruppe Material auf linearen Tetraedern, ein gedämpfter Lastpfad, dann das Gleichgewicht (GPU möglich). 1 wird Standard, sobald seine Lösung für die Wände der Workstation schnell genug ist.</translation>
+    </message>
+    <message>
+        <source>Wall Poisson&apos;s ratio</source>
+        <translation>Querkontraktionszahl der Wand</translation>
+    </message>
+    <message>
+        <source>Near incompressibility of the hyperelastic wall: its bulk modulus from the small-strain shear modulus (wall model 1).</source>
+        <translation>Nahezu-Inkompressibilität der hyperelastischen Wand: ihr Kompressionsmodul aus dem Schubmodul bei kleinen Dehnungen (Wandmodell 1).</translation>
+    </message>
+    <message>
+        <source>Zero-pressure geometry</source>
+        <translation>Geometrie ohne Druck</translation>
+    </message>
+    <message>
+        <source>1: the unloaded geometry is found first (backward displacement, Bols et al. 2013) so that the loaded wall is the imaged one; 0: the imaged (loaded) geometry is taken as unloaded (wall model 1).</source>
+        <translation>1: zuerst wird die unbelastete Geometrie bestimmt (Rückwärtsverschiebung, Bols et al. 2013), sodass die belastete Wand die abgebildete ist; 0: die abgebildete (belastete) Geometrie gilt als unbelastet (Wandmodell 1).</translation>
+    </message>
+    <message>
+        <source>Load increments</source>
+        <translation>Laststufen</translation>
+    </message>
+    <message>
+        <source>Pressure increments, each solved to equilibrium; one that fails is retried at half the size (wall model 1).</source>
+        <translation>Druckstufen, jede bis zum Gleichgewicht gelöst; eine, die scheitert, wird mit halber Größe wiederholt (Wandmodell 1).</translation>
+    </message>
+    <message>
+        <source>Load path time</source>
+        <translation>Zeit des Lastpfades</translation>
+    </message>
+    <message>
+        <source>Wall model 0: simulated time of the damped load path: the pressure ramps up over its first quarter (beta = 0.22 s). The figures are those of the static equilibrium solved after it, which does not depend on the path.</source>
+        <translation>Wandmodell 0: simulierte Zeit des gedämpften Lastpfades: der Druck steigt im ersten Viertel an (Beta = 0,22 s). Die Werte sind die des danach gelösten statischen Gleichgewichts, das nicht vom Pfad abhängt.</translation>
+    </message>
+    <message>
+        <source>Settling time step</source>
+        <translation>Zeitschritt beim Einschwingen</translation>
+    </message>
+    <message>
+        <source>Wall model 0: backward Euler step while settling (the steady state does not depend on it).</source>
+        <translation>Wandmodell 0: Schritt des impliziten Euler-Verfahrens beim Einschwingen (der stationäre Zustand hängt nicht davon ab).</translation>
+    </message>
+    <message>
+        <source>Equilibrium tolerance</source>
+        <translation>Gleichgewichtstoleranz</translation>
+    </message>
+    <message>
+        <source>The static equilibrium at the pressure is solved (Newton; GMRES with a sparse Cholesky or LU preconditioner) until ||f_int - f_ext|| / ||f_ext|| is below this; the figures are that state&apos;s. 0 (wall model 0 only): the damped path&apos;s last state.</source>
+        <translation>Das statische Gleichgewicht beim Druck wird gelöst (Newton; GMRES mit dünnbesetzter Cholesky- oder LU-Vorkonditionierung), bis ||f_int - f_ext|| / ||f_ext|| darunter liegt; die Werte sind die dieses Zustands. 0 (nur Wandmodell 0): der letzte Zustand des gedämpften Pfades.</translation>
+    </message>
+    <message>
+        <source>Patient (wall strength)</source>
+        <translation>Patient (Wandfestigkeit)</translation>
+    </message>
+    <message>
+        <source>Female</source>
+        <translation>Weiblich</translation>
+    </message>
+    <message>
+        <source>1 female, 0 male (Vande Geest 2006 SEX = +-0.5); -1 not given: no rupture index (never assumed).</source>
+        <translation>1 weiblich, 0 männlich (Vande Geest 2006, SEX = +-0,5); -1 nicht angegeben: kein Rupturindex (nie angenommen).</translation>
+    </message>
+    <message>
+        <source>Family history of AAA</source>
+        <translation>AAA in der Familienanamnese</translation>
+    </message>
+    <message>
+        <source>1 with, 0 without a family history (HIST = +-0.5); -1 not given: no rupture index (never assumed).</source>
+        <translation>1 mit, 0 ohne familiäre Vorgeschichte (HIST = +-0,5); -1 nicht angegeben: kein Rupturindex (nie angenommen).</translation>
+    </message>
+    <message>
+        <source>Thrombus thickness</source>
+        <translation>Thrombusdicke</translation>
+    </message>
+    <message>
+        <source>Local intraluminal thrombus thickness (ILT).</source>
+        <translation>Lokale Dicke des intraluminalen Thrombus (ILT).</translation>
+    </message>
+    <message>
+        <source>Reference diameter</source>
+        <translation>Referenzdurchmesser</translation>
+    </message>
+    <message>
+        <source>Non-aneurysmal aortic diameter for the normalised diameter (NORD); 0: the sac&apos;s neck outer diameter (the patient&apos;s own, from vascusim-cli sac), 20 mm without a sac.</source>
+        <translation>Nicht-aneurysmatischer Aortendurchmesser für den normierten Durchmesser (NORD); 0: der äußere Halsdurchmesser des Sacks (der eigene des Patienten, aus vascusim-cli sac), 20 mm ohne Sack.</translation>
+    </message>
+    <message>
+        <source>Injection</source>
+        <translation>Injektion</translation>
+    </message>
+    <message>
+        <source>Injection rate</source>
+        <translation>Injektionsrate</translation>
+    </message>
+    <message>
+        <source>Volume rate of the injected drug mixture at the catheter tip.</source>
+        <translation>Volumenrate des injizierten Wirkstoffgemischs an der Katheterspitze.</translation>
+    </message>
+    <message>
+        <source>Catheter outer diameter</source>
+        <translation>Außendurchmesser des Katheters</translation>
+    </message>
+    <message>
+        <source>Outer diameter of the catheter lying from the tree&apos;s root to its tip, 1 Fr = 1/3 mm (microcatheters 1.7-3.0 Fr); blood passes it through the annulus. 0 leaves it out of the flow.</source>
+        <translation>Außendurchmesser des Katheters, der von der Wurzel des Baumes bis zu seiner Spitze liegt, 1 Fr = 1/3 mm (Mikrokatheter 1,7-3,0 Fr); das Blut passiert ihn im Ringspalt. 0 lässt ihn aus der Strömung heraus.</translation>
+    </message>
+    <message>
+        <source>Tip snap distance</source>
+        <translation>Fangabstand der Spitze</translation>
+    </message>
+    <message>
+        <source>A tip or control point given as a point this near a node is put on the node.</source>
+        <translation>Eine Spitze oder ein Kontrollpunkt, als Punkt so nah an einem Knoten angegeben, wird auf den Knoten gesetzt.</translation>
+    </message>
+    <message>
+        <source>Tip reach</source>
+        <translation>Reichweite der Spitze</translation>
+    </message>
+    <message>
+        <source>How far a tip or control point given as a point may lie from the vessel tree.</source>
+        <translation>Wie weit eine als Punkt angegebene Spitze oder ein Kontrollpunkt vom Gefäßbaum entfernt liegen darf.</translation>
+    </message>
+    <message>
+        <source>Two-phase drug</source>
+        <translation>Zweiphasiger Wirkstoff</translation>
+    </message>
+    <message>
+        <source>Void fraction</source>
+        <translation>Gasanteil</translation>
+    </message>
+    <message>
+        <source>Gas volume fraction of the injected drug (thesis eq. 6.2, 6.3); the flow is bubbly up to about 0.25.</source>
+        <translation>Gas-Volumenanteil des injizierten Wirkstoffs (Dissertation Gl. 6.2, 6.3); bis etwa 0,25 ist die Strömung eine Blasenströmung.</translation>
+    </message>
+    <message>
+        <source>Gas absorption rate</source>
+        <translation>Gas-Absorptionsrate</translation>
+    </message>
+    <message>
+        <source>Gas absorption rate of the bubbly regime (thesis ch. 6.1: 5-20 ml/min); with the bubble size it gives the bubble rate.</source>
+        <translation>Gas-Absorptionsrate im Blasenregime (Dissertation Kap. 6.1: 5-20 ml/min); mit der Blasengröße ergibt sie die Blasenrate.</translation>
+    </message>
+    <message>
+        <source>Bubble diameter</source>
+        <translation>Blasendurchmesser</translation>
+    </message>
+    <message>
+        <source>Bubble diameter of the bubbly regime (thesis ch. 6.1: 1.29-2.05 mm).</source>
+        <translation>Blasendurchmesser im Blasenregime (Dissertation Kap. 6.1: 1,29-2,05 mm).</translation>
+    </message>
+    <message>
+        <source>Liquid density</source>
+        <translation>Dichte der Flüssigkeit</translation>
+    </message>
+    <message>
+        <source>Density of the liquid phase (plasma: 1,060 kg/m^3).</source>
+        <translation>Dichte der flüssigen Phase (Plasma: 1.060 kg/m^3).</translation>
+    </message>
+    <message>
+        <source>Liquid viscosity</source>
+        <translation>Viskosität der Flüssigkeit</translation>
+    </message>
+    <message>
+        <source>Dynamic viscosity of the liquid phase at 37 C (plasma: 3.56 mPa s).</source>
+        <translation>Dynamische Viskosität der flüssigen Phase bei 37 C (Plasma: 3,56 mPa s).</translation>
+    </message>
+    <message>
+        <source>Gas density</source>
+        <translation>Dichte des Gases</translation>
+    </message>
+    <message>
+        <source>Density of the gas phase.</source>
+        <translation>Dichte der Gasphase.</translation>
+    </message>
+    <message>
+        <source>Gas viscosity</source>
+        <translation>Viskosität des Gases</translation>
+    </message>
+    <message>
+        <source>Dynamic viscosity of the gas phase at 37 C.</source>
+        <translation>Dynamische Viskosität der Gasphase bei 37 C.</translation>
+    </message>
+    <message>
+        <source>Blood flow</source>
+        <translation>Blutfluss</translation>
+    </message>
+    <message>
+        <source>Blood carries the drug</source>
+        <translation>Blut trägt den Wirkstoff</translation>
+    </message>
+    <message>
+        <source>1: arterial blood enters at the tree&apos;s root and carries the injected drug; 0: the injected drug flows alone, as the thesis models it (ch. 6).</source>
+        <translation>1: arterielles Blut tritt an der Wurzel des Baumes ein und trägt den injizierten Wirkstoff; 0: der injizierte Wirkstoff fließt allein, wie die Dissertation ihn modelliert (Kap. 6).</translation>
+    </message>
+    <message>
+        <source>Arterial pressure at the root</source>
+        <translation>Arterieller Druck an der Wurzel</translation>
+    </message>
+    <message>
+        <source>Mean pressure at the tree&apos;s root, held unless an inflow is given: the hepatic artery&apos;s mean pressure is close to the aorta&apos;s (normal mean arterial pressure 70-105 mmHg).</source>
+        <translation>Mitteldruck an der Wurzel des Baumes, gehalten, sofern kein Zufluss angegeben ist: der Mitteldruck der A. hepatica liegt nahe dem der Aorta (normaler arterieller Mitteldruck 70-105 mmHg).</translation>
+    </message>
+    <message>
+        <source>Arterial inflow</source>
+        <translation>Arterieller Zufluss</translation>
+    </message>
+    <message>
+        <source>Blood flow into the tree&apos;s root instead of a pressure; 0: the root is held at the arterial pressure. Hepatic arterial flow is about 25 % of the liver&apos;s 100 ml/min per 100 g (Lautt, Hepatic Circulation, 2009): 100-400 ml/min.</source>
+        <translation>Blutfluss in die Wurzel des Baumes statt eines Drucks; 0: die Wurzel wird auf dem arteriellen Druck gehalten. Der hepatisch-arterielle Fluss beträgt etwa 25 % der 100 ml/min je 100 g der Leber (Lautt, Hepatic Circulation, 2009): 100-400 ml/min.</translation>
+    </message>
+    <message>
+        <source>Blood viscosity</source>
+        <translation>Blutviskosität</translation>
+    </message>
+    <message>
+        <source>Apparent viscosity of whole blood at arterial shear rates (about 3.5 mPa s at a haematocrit of 0.45), taken as Newtonian.</source>
+        <translation>Scheinbare Viskosität des Vollblutes bei arteriellen Scherraten (etwa 3,5 mPa s bei einem Hämatokrit von 0,45), als newtonsch angenommen.</translation>
+    </message>
+    <message>
+        <source>Blood density</source>
+        <translation>Blutdichte</translation>
+    </message>
+    <message>
+        <source>Density of whole blood (for the Reynolds number).</source>
+        <translation>Dichte des Vollblutes (für die Reynolds-Zahl).</translation>
+    </message>
+    <message>
+        <source>Outlets</source>
+        <translation>Abflüsse</translation>
+    </message>
+    <message>
+        <source>Outlets&apos; reference flow</source>
+        <translation>Referenzfluss der Abflüsse</translation>
+    </message>
+    <message>
+        <source>Flow that all outlets together drain at the reference pressure drop, split by Murray&apos;s law (hepatic artery flow is about 100-400 ml/min).</source>
+        <translation>Fluss, den alle Abflüsse zusammen beim Referenz-Druckabfall abführen, nach dem Murray-Gesetz aufgeteilt (der Fluss der A. hepatica beträgt etwa 100-400 ml/min).</translation>
+    </message>
+    <message>
+        <source>Outlets&apos; reference pressure drop</source>
+        <translation>Referenz-Druckabfall der Abflüsse</translation>
+    </message>
+    <message>
+        <source>Pressure drop across the vascular bed beyond the outlets at the reference flow.</source>
+        <translation>Druckabfall über das Gefäßbett hinter den Abflüssen beim Referenzfluss.</translation>
+    </message>
+    <message>
+        <source>Pressure beyond the outlets</source>
+        <translation>Druck hinter den Abflüssen</translation>
+    </message>
+    <message>
+        <source>Pressure at the far end of the terminal resistances (venous side).</source>
+        <translation>Druck am fernen Ende der Endwiderstände (venöse Seite).</translation>
+    </message>
+    <message>
+        <source>Targeting</source>
+        <translation>Zielsteuerung</translation>
+    </message>
+    <message>
+        <source>Tumour bed resistance factor</source>
+        <translation>Widerstandsfaktor des Tumorbetts</translation>
+    </message>
+    <message>
+        <source>Terminal resistance of the tumour&apos;s outlets times this (below 1 for a hypervascular tumour).</source>
+        <translation>Endwiderstand der Tumorabflüsse mal diesem Wert (unter 1 für einen hypervaskulären Tumor).</translation>
+    </message>
+    <message>
+        <source>Filling</source>
+        <translation>Füllung</translation>
+    </message>
+    <message>
+        <source>Filling steps</source>
+        <translation>Füllschritte</translation>
+    </message>
+    <message>
+        <source>Time steps from the start of the injection to the last outlet&apos;s arrival.</source>
+        <translation>Zeitschritte vom Beginn der Injektion bis zur Ankunft am letzten Abfluss.</translation>
+    </message>
+    <message>
+        <source>Working angle</source>
+        <translation>Arbeitswinkel</translation>
+    </message>
+    <message>
+        <source>Working C-arm angle</source>
+        <translation>C-Bogen-Arbeitswinkel</translation>
+    </message>
+    <message>
+        <source>1: the LAO/RAO and cranial/caudal angles that show the path from the root to the tip with the least foreshortening and overlap (WorkingAngle.h); 0: none.</source>
+        <translation>1: die LAO/RAO- und kranial/kaudal-Winkel, die den Pfad von der Wurzel zur Spitze mit der geringsten Verkürzung und Überlagerung zeigen (WorkingAngle.h); 0: keiner.</translation>
+    </message>
+    <message>
+        <source>Territories</source>
+        <translation>Versorgungsgebiete</translation>
+    </message>
+    <message>
+        <source>Hepatic outlet reach</source>
+        <translation>Hepatische Reichweite der Abflüsse</translation>
+    </message>
+    <message>
+        <source>An outlet whose end lies this near the liver feeds liver tissue; the others (gastroduodenal, gastric) feed none.</source>
+        <translation>Ein Abfluss, dessen Ende so nah an der Leber liegt, versorgt Lebergewebe; die anderen (gastroduodenal, gastrisch) keines.</translation>
+    </message>
+    <message>
+        <source>Tumour perfusion factor</source>
+        <translation>Tumor-Perfusionsfaktor</translation>
+    </message>
+    <message>
+        <source>Arterial perfusion of tumour tissue per volume over the liver&apos;s: a hypervascular HCC draws several times the surrounding liver&apos;s arterial flow (CT perfusion series report about 3-5 times).</source>
+        <translation>Arterielle Perfusion des Tumorgewebes je Volumen im Verhältnis zur Leber: ein hypervaskuläres HCC zieht ein Mehrfaches des arteriellen Flusses der umgebenden Leber (CT-Perfusionsserien berichten etwa das 3- bis 5-fache).</translation>
+    </message>
+    <message>
+        <source>Outlets from territories</source>
+        <translation>Abflüsse aus den Versorgungsgebieten</translation>
+    </message>
+    <message>
+        <source>1: with a liver label, an outlet&apos;s resistance follows the tissue it feeds; 0: Murray&apos;s law of the terminal radius alone.</source>
+        <translation>1: mit einem Leber-Label folgt der Widerstand eines Abflusses dem Gewebe, das er versorgt; 0: allein das Murray-Gesetz des Endradius.</translation>
+    </message>
+    <message>
+        <source>Inlet</source>
+        <translation>Einlass</translation>
+    </message>
+    <message>
+        <source>Inlet mean velocity</source>
+        <translation>Mittlere Einlassgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>over the inlet&apos;s section (the end of the largest vessel), parabolic, ramped up from rest</source>
+        <translation>über den Einlassquerschnitt (das Ende des größten Gefäßes), parabolisch, aus der Ruhe hochgefahren</translation>
+    </message>
+    <message>
+        <source>Inlet flow rate</source>
+        <translation>Einlass-Flussrate</translation>
+    </message>
+    <message>
+        <source>&gt; 0: replaces the mean velocity</source>
+        <translation>&gt; 0: ersetzt die mittlere Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Outlet pressure</source>
+        <translation>Auslassdruck</translation>
+    </message>
+    <message>
+        <source>at every other vessel end (gauge: the pressures reported are relative to it)</source>
+        <translation>an jedem anderen Gefäßende (relativ: die berichteten Drücke beziehen sich darauf)</translation>
+    </message>
+    <message>
+        <source>Stenosis figures</source>
+        <translation>Stenosewerte</translation>
+    </message>
+    <message>
+        <source>Compare at</source>
+        <translation>Vergleich bei</translation>
+    </message>
+    <message>
+        <source>the sections upstream and downstream of the throat the velocity ratios compare with (thesis: 6 mm in the hand, 30 mm in the heart)</source>
+        <translation>die Schnitte vor und hinter der Engstelle, mit denen die Geschwindigkeitsverhältnisse vergleichen (Dissertation: 6 mm in der Hand, 30 mm im Herzen)</translation>
+    </message>
+    <message>
+        <source>Particles</source>
+        <translation>Partikel</translation>
+    </message>
+    <message>
+        <source>Particle spacing</source>
+        <translation>Partikelabstand</translation>
+    </message>
+    <message>
+        <source>0: a fifth of the inlet&apos;s radius</source>
+        <translation>0: ein Fünftel des Einlassradius</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>End time</source>
+        <translation>Endzeit</translation>
+    </message>
+    <message>
+        <source>0: twice the inflow&apos;s ramp (two quarter-wave periods of the vessel)</source>
+        <translation>0: das Doppelte der Zufluss-Rampe (zwei Viertelwellen-Perioden des Gefäßes)</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <source>frames kept over the run</source>
+        <translation>über den Lauf behaltene Bilder</translation>
+    </message>
+    <message>
+        <source>the lattice the particles were seeded on: it sets their mass and the smoothing length</source>
+        <translation>das Gitter, auf dem die Partikel gesetzt wurden: es legt ihre Masse und die Glättungslänge fest</translation>
+    </message>
+    <message>
+        <source>Smoothing length</source>
+        <translation>Glättungslänge</translation>
+    </message>
+    <message>
+        <source>h as a multiple of the spacing (the support is 2h); at 2 the quartic kernel&apos;s first moment on a lattice is within 0.2 % of the identity (5.7 % at 1.3: sph-kernel), so pressure gradients come out right</source>
+        <translation>h als Vielfaches des Abstands (der Träger ist 2h); bei 2 liegt das erste Moment des quartischen Kerns auf einem Gitter innerhalb von 0,2 % der Identität (5,7 % bei 1,3: sph-kernel), sodass Druckgradienten richtig herauskommen</translation>
+    </message>
+    <message>
+        <source>Fluid</source>
+        <translation>Fluid</translation>
+    </message>
+    <message>
+        <source>Rest density</source>
+        <translation>Ruhedichte</translation>
+    </message>
+    <message>
+        <source>blood 1060 (thesis Table 5.1)</source>
+        <translation>Blut 1060 (Dissertation Tabelle 5.1)</translation>
+    </message>
+    <message>
+        <source>Dynamic viscosity</source>
+        <translation>Dynamische Viskosität</translation>
+    </message>
+    <message>
+        <source>blood at high shear about 3.5e-3 (thesis: 3.56e-3)</source>
+        <translation>Blut bei hoher Scherung etwa 3,5e-3 (Dissertation: 3,56e-3)</translation>
+    </message>
+    <message>
+        <source>the gas share of the mixture particles (thesis Table 5.1: 0.2 at the needle injection) where the input gives none: rest density and viscosity mixed with air&apos;s (1.205 kg/m^3, 1.86e-5 Pa s)</source>
+        <translation>der Gasanteil der Gemischpartikel (Dissertation Tabelle 5.1: 0,2 bei der Nadelinjektion), wo die Eingabe keinen angibt: Ruhedichte und Viskosität mit denen der Luft gemischt (1,205 kg/m^3, 1,86e-5 Pa s)</translation>
+    </message>
+    <message>
+        <source>Numerical sound speed</source>
+        <translation>Numerische Schallgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>at least 10 times the largest flow speed keeps the density within about 1 % (Monaghan 1994)</source>
+        <translation>mindestens das 10-fache der größten Strömungsgeschwindigkeit hält die Dichte innerhalb von etwa 1 % (Monaghan 1994)</translation>
+    </message>
+    <message>
+        <source>Reference pressure</source>
+        <translation>Referenzdruck</translation>
+    </message>
+    <message>
+        <source>the gauge pressure the rest density stands for (blood flow: the outlets&apos; level): the dynamics work on the pressure above it, every pressure reported adds it back, and prescribed pressures are gauge (FluidModel.h)</source>
+        <translation>der relative Druck, für den die Ruhedichte steht (Blutfluss: das Niveau der Auslässe): die Dynamik arbeitet mit dem Druck darüber, jeder berichtete Druck addiert ihn wieder, und vorgegebene Drücke sind relativ (FluidModel.h)</translation>
+    </message>
+    <message>
+        <source>Numerics</source>
+        <translation>Numerik</translation>
+    </message>
+    <message>
+        <source>Density diffusion</source>
+        <translation>Dichtediffusion</translation>
+    </message>
+    <message>
+        <source>delta of the delta-SPH term (Molteni &amp; Colagrossi 2009; 0 switches it off)</source>
+        <translation>Delta des Delta-SPH-Terms (Molteni &amp; Colagrossi 2009; 0 schaltet ihn ab)</translation>
+    </message>
+    <message>
+        <source>Courant number</source>
+        <translation>Courant-Zahl</translation>
+    </message>
+    <message>
+        <source>the adaptive step&apos;s safety factor</source>
+        <translation>der Sicherheitsfaktor des adaptiven Schritts</translation>
+    </message>
+    <message>
+        <source>Gravity x</source>
+        <translation>Schwerkraft x</translation>
+    </message>
+    <message>
+        <source>patient frame (LPS)</source>
+        <translation>Patientenkoordinaten (LPS)</translation>
+    </message>
+    <message>
+        <source>Gravity y</source>
+        <translation>Schwerkraft y</translation>
+    </message>
+    <message>
+        <source>patient frame (LPS): a supine patient&apos;s gravity is +9.81 (posterior)</source>
+        <translation>Patientenkoordinaten (LPS): bei einem Patienten in Rückenlage ist die Schwerkraft +9,81 (posterior)</translation>
+    </message>
+    <message>
+        <source>Gravity z</source>
+        <translation>Schwerkraft z</translation>
+    </message>
+    <message>
+        <source>simulated time</source>
+        <translation>simulierte Zeit</translation>
+    </message>
+    <message>
+        <source>Guards</source>
+        <translation>Wächter</translation>
+    </message>
+    <message>
+        <source>Density guard</source>
+        <translation>Dichtewächter</translation>
+    </message>
+    <message>
+        <source>the run stops when a fluid particle&apos;s density is further than this from the rest density (relative)</source>
+        <translation>der Lauf hält an, wenn die Dichte eines Fluidpartikels weiter als dieser Wert von der Ruhedichte abweicht (relativ)</translation>
+    </message>
+    <message>
+        <source>Escape margin</source>
+        <translation>Austrittsrand</translation>
+    </message>
+    <message>
+        <source>the run stops when a particle leaves the particles&apos; starting box grown by this</source>
+        <translation>der Lauf hält an, wenn ein Partikel den um diesen Wert vergrößerten Startquader der Partikel verlässt</translation>
+    </message>
+    <message>
+        <source>Reorder every</source>
+        <translation>Neu sortieren alle</translation>
+    </message>
+    <message>
+        <source>the particles are sorted by neighbour cell every so many steps</source>
+        <translation>die Partikel werden alle so viele Schritte nach Nachbarzellen sortiert</translation>
+    </message>
+    <message>
+        <source>Body force x</source>
+        <translation>Volumenkraft x</translation>
+    </message>
+    <message>
+        <source>a driving force per unit mass (a pressure gradient over the density) in a periodic pipe or channel</source>
+        <translation>eine antreibende Kraft je Masseneinheit (ein Druckgradient durch die Dichte) in einem periodischen Rohr oder Kanal</translation>
+    </message>
+    <message>
+        <source>Body force y</source>
+        <translation>Volumenkraft y</translation>
+    </message>
+    <message>
+        <source>as body_force_x_m_s2</source>
+        <translation>wie body_force_x_m_s2</translation>
+    </message>
+    <message>
+        <source>Body force z</source>
+        <translation>Volumenkraft z</translation>
+    </message>
+    <message>
+        <source>Body force frequency</source>
+        <translation>Frequenz der Volumenkraft</translation>
+    </message>
+    <message>
+        <source>&gt; 0: the body force oscillates as cos(2 pi f t) (Womersley flow); 0: steady</source>
+        <translation>&gt; 0: die Volumenkraft schwingt wie cos(2 pi f t) (Womersley-Strömung); 0: stationär</translation>
+    </message>
+    <message>
+        <source>Domain</source>
+        <translation>Gebiet</translation>
+    </message>
+    <message>
+        <source>Periodic length x</source>
+        <translation>Periodische Länge x</translation>
+    </message>
+    <message>
+        <source>validation channels: &gt; 0 makes the domain [0, L) wrap around along x (0: open)</source>
+        <translation>Validierungskanäle: &gt; 0 lässt das Gebiet [0, L) entlang x umlaufen (0: offen)</translation>
+    </message>
+    <message>
+        <source>Periodic length y</source>
+        <translation>Periodische Länge y</translation>
+    </message>
+    <message>
+        <source>as periodic_x_mm, along y</source>
+        <translation>wie periodic_x_mm, entlang y</translation>
+    </message>
+    <message>
+        <source>Periodic length z</source>
+        <translation>Periodische Länge z</translation>
+    </message>
+    <message>
+        <source>as periodic_x_mm, along z</source>
+        <translation>wie periodic_x_mm, entlang z</translation>
+    </message>
+    <message>
+        <source>Walls</source>
+        <translation>Wände</translation>
+    </message>
+    <message>
+        <source>Free surface</source>
+        <translation>Freie Oberfläche</translation>
+    </message>
+    <message>
+        <source>1 for a liquid with a free surface (a tank, a dam break): the walls hold no suction above it; 0 in vessels</source>
+        <translation>1 für eine Flüssigkeit mit freier Oberfläche (ein Tank, ein Dammbruch): die Wände halten darüber keinen Sog; 0 in Gefäßen</translation>
+    </message>
+    <message>
+        <source>Tension in the fluid</source>
+        <translation>Zug im Fluid</translation>
+    </message>
+    <message>
+        <source>1: a density below the rest density pulls the fluid together (Tait&apos;s negative pressure; vessels, tanks); 0: a liquid that breaks up (a stream falling from a needle, a splash): each particle&apos;s density is held at its rest density or above, its pressure at 0 or above, and the density guard reads compression only</source>
+        <translation>1: eine Dichte unter der Ruhedichte zieht das Fluid zusammen (negativer Druck nach Tait; Gefäße, Tanks); 0: eine Flüssigkeit, die aufbricht (ein Strahl aus einer Nadel, ein Spritzer): die Dichte jedes Partikels wird auf der Ruhedichte oder darüber gehalten, sein Druck auf 0 oder darüber, und der Dichtewächter liest nur Kompression</translation>
+    </message>
+    <message>
+        <source>Wall repulsion</source>
+        <translation>Wandabstoßung</translation>
+    </message>
+    <message>
+        <source>the walls&apos; Lennard-Jones backstop (thesis ch. 5.4, Monaghan 1994): a wall particle closer than 0.9 spacings pushes a fluid particle away with D ((r0 / r)^12 - (r0 / r)^4) / r, D this times c0^2 (0.01: about the largest flow speed squared); it holds fluid out of walls thinner than the kernel, but empties a throat a few particles across (sph-stenosis at 0.2 mm: area ratio 4.97 against 3.34 without): 0, off</source>
+        <translation>die Lennard-Jones-Rückhaltung der Wände (Dissertation Kap. 5.4, Monaghan 1994): ein Wandpartikel, näher als 0,9 Abstände, stößt ein Fluidpartikel mit D ((r0 / r)^12 - (r0 / r)^4) / r ab, D dieser Wert mal c0^2 (0,01: etwa die größte Strömungsgeschwindigkeit zum Quadrat); sie hält Fluid aus Wänden, die dünner als der Kern sind, leert aber eine Engstelle von wenigen Partikeln Breite (sph-stenosis bei 0,2 mm: Flächenverhältnis 4,97 gegenüber 3,34 ohne): 0, aus</translation>
+    </message>
+    <message>
+        <source>Absorption distance</source>
+        <translation>Absorptionsabstand</translation>
+    </message>
+    <message>
+        <source>tracer particles (an injected drug) this close to a wall&apos;s surface are absorbed and counted (0: none)</source>
+        <translation>Tracerpartikel (ein injizierter Wirkstoff), die so nah an einer Wandoberfläche sind, werden absorbiert und gezählt (0: keine)</translation>
+    </message>
+    <message>
+        <source>Needle</source>
+        <translation>Nadel</translation>
+    </message>
+    <message>
+        <source>Needle bore</source>
+        <translation>Nadel-Innendurchmesser</translation>
+    </message>
+    <message>
+        <source>the needle&apos;s inner diameter (16 G: 1.19 mm); the particles a third of it unless the spacing is given</source>
+        <translation>der Innendurchmesser der Nadel (16 G: 1,19 mm); die Partikel ein Drittel davon, sofern kein Abstand angegeben ist</translation>
+    </message>
+    <message>
+        <source>Generation rate</source>
+        <translation>Erzeugungsrate</translation>
+    </message>
+    <message>
+        <source>particles of the run&apos;s spacing a second (thesis Table 5.1: 300)</source>
+        <translation>Partikel im Abstand des Laufs je Sekunde (Dissertation Tabelle 5.1: 300)</translation>
+    </message>
+    <message>
+        <source>Collection box</source>
+        <translation>Auffangbehälter</translation>
+    </message>
+    <message>
+        <source>Collection box depth</source>
+        <translation>Tiefe des Auffangbehälters</translation>
+    </message>
+    <message>
+        <source>its floor below the vessel&apos;s lowest wall</source>
+        <translation>sein Boden unter der tiefsten Wand des Gefäßes</translation>
+    </message>
+    <message>
+        <source>Collection box margin</source>
+        <translation>Rand des Auffangbehälters</translation>
+    </message>
+    <message>
+        <source>its sides beyond the open ends</source>
+        <translation>seine Seiten jenseits der offenen Enden</translation>
+    </message>
+    <message>
+        <source>0: a third of the bore</source>
+        <translation>0: ein Drittel des Innendurchmessers</translation>
+    </message>
+    <message>
+        <source>0: twice a free fall from the needle to the box&apos;s floor</source>
+        <translation>0: das Doppelte eines freien Falls von der Nadel zum Boden des Behälters</translation>
+    </message>
+    <message>
+        <source>Tissue</source>
+        <translation>Gewebe</translation>
+    </message>
+    <message>
+        <source>Thermal diffusivity</source>
+        <translation>Temperaturleitfähigkeit</translation>
+    </message>
+    <message>
+        <source>soft tissue about 0.14 mm^2/s (Duck 1990, Physical Properties of Tissue)</source>
+        <translation>Weichgewebe etwa 0,14 mm^2/s (Duck 1990, Physical Properties of Tissue)</translation>
+    </message>
+    <message>
+        <source>Cube edge</source>
+        <translation>Würfelkante</translation>
+    </message>
+    <message>
+        <source>faces held at body temperature</source>
+        <translation>Flächen auf Körpertemperatur gehalten</translation>
+    </message>
+    <message>
+        <source>Cells per edge</source>
+        <translation>Zellen je Kante</translation>
+    </message>
+    <message>
+        <source>the grid has cells + 1 nodes per edge</source>
+        <translation>das Gitter hat Zellen + 1 Knoten je Kante</translation>
+    </message>
+    <message>
+        <source>Initial rise</source>
+        <translation>Anfänglicher Anstieg</translation>
+    </message>
+    <message>
+        <source>peak of the initial temperature rise (the slowest mode)</source>
+        <translation>Spitze des anfänglichen Temperaturanstiegs (die langsamste Mode)</translation>
+    </message>
+    <message>
+        <source>the step as a fraction of forward Euler&apos;s stability limit; above 1 the scheme is unstable and the guard stops the run</source>
+        <translation>der Schritt als Anteil der Stabilitätsgrenze des expliziten Euler-Verfahrens; über 1 ist das Verfahren instabil und der Wächter hält den Lauf an</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Berechnen</translation>
+    </message>
+    <message>
+        <source>Frame every N steps</source>
+        <translation>Ein Bild alle N Schritte</translation>
+    </message>
+    <message>
+        <source>a frame after every N steps (0: not by steps; with both intervals 0, only the first and the last frame)</source>
+        <translation>ein Bild nach jeweils N Schritten (0: nicht nach Schritten; sind beide Intervalle 0, nur das erste und das letzte Bild)</translation>
+    </message>
+    <message>
+        <source>Frame every</source>
+        <translation>Ein Bild alle</translation>
+    </message>
+    <message>
+        <source>a frame each time the run&apos;s axis (simulated time in s, or pressure in kPa) passes a multiple of this (0: not by the axis)</source>
+        <translation>ein Bild jedes Mal, wenn die Achse des Laufs (simulierte Zeit in s oder Druck in kPa) ein Vielfaches dieses Werts überschreitet (0: nicht nach der Achse)</translation>
+    </message>
+    <message>
+        <source>Keep every Nth frame</source>
+        <translation>Jedes N-te Bild behalten</translation>
+    </message>
+    <message>
+        <source>keep every Nth frame taken (large runs); the first and the last are always kept, and the run lists which</source>
+        <translation>jedes N-te aufgenommene Bild behalten (große Läufe); das erste und das letzte werden immer behalten, und der Lauf listet, welche</translation>
+    </message>
+    <message>
+        <source>Step limit</source>
+        <translation>Schrittgrenze</translation>
+    </message>
+    <message>
+        <source>a run that has not reached its end after this many steps stops with a message (a collapsing time step)</source>
+        <translation>ein Lauf, der nach so vielen Schritten sein Ende nicht erreicht hat, hält mit einer Meldung an (ein kollabierender Zeitschritt)</translation>
     </message>
 </context>
 <context>
     <name>vsim::gui::DicomImportDialog</name>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="64"/>
         <source>Import DICOM</source>
         <translation>DICOM importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="69"/>
         <source>Folder, DICOMDIR or file</source>
         <translation>Ordner, DICOMDIR oder Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="70"/>
         <source>Browse...</source>
         <translation>Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="71"/>
         <source>Scan</source>
         <translation>Einlesen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="79"/>
         <source>Patient / study / series</source>
         <translation>Patient / Studie / Serie</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="79"/>
         <source>Modality</source>
         <translation>Modalität</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="79"/>
         <source>Slices</source>
         <translation>Schichten</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="79"/>
         <source>Voxel spacing (mm)</source>
         <translation>Voxelabstand (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="80"/>
         <source>Warnings</source>
         <translation>Warnungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="88"/>
         <source>Stop</source>
         <translation>Anhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="96"/>
         <source>Import</source>
         <translation>Importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="106"/>
         <source>DICOM folder</source>
         <translation>DICOM-Ordner</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="157"/>
         <source>Reading DICOM headers...</source>
         <translation>DICOM-Header werden gelesen...</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="202"/>
         <source>(no name)</source>
         <translation>(kein Name)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="203"/>
         <source>no ID</source>
         <translation>keine ID</translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="209"/>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="219"/>
         <source>(no description)</source>
         <translation>(keine Beschreibung)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/DicomImportDialog.cpp" line="229"/>
         <source>%n file(s), %1 series</source>
         <translation>
             <numerusform>%n Datei, %1 Serien</numerusform>
@@ -126,7 +1397,6 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/DicomImportDialog.cpp" line="240"/>
         <source> (making previews)</source>
         <translation> (Vorschauen werden erstellt)</translation>
     </message>
@@ -134,127 +1404,296 @@
 <context>
     <name>vsim::gui::DrugDeliveryPanel</name>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="48"/>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="108"/>
-        <source>Play</source>
-        <translation>Abspielen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="54"/>
         <source>x, y, z mm; empty: the root</source>
         <translation>x, y, z mm; leer: die Wurzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="56"/>
         <source>x, y, z, radius mm; empty: none</source>
         <translation>x, y, z, Radius mm; leer: keiner</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="58"/>
         <source>x, y, z; ... mm; empty: the first branches</source>
         <translation>x, y, z; ... mm; leer: die ersten Äste</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="61"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="62"/>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="63"/>
         <source>Pick</source>
         <translation>Wählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="64"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="65"/>
         <source>Run</source>
         <translation>Berechnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="74"/>
         <source>Catheter tip</source>
         <translation>Katheterspitze</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="75"/>
         <source>Tumour</source>
         <translation>Tumor</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="76"/>
         <source>Tumour radius (picked)</source>
         <translation>Tumorradius (gewählt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="77"/>
         <source>Control points</source>
         <translation>Kontrollpunkte</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="88"/>
         <source>Outlet</source>
         <translation>Auslass</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="88"/>
         <source>Drug share (%)</source>
         <translation>Wirkstoffanteil (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="88"/>
         <source>Arrival (s)</source>
         <translation>Ankunft (s)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="108"/>
-        <source>Pause</source>
-        <translation>Pause</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="160"/>
         <source>Tip pressure %1 mmHg; last outlet reached after %2 s.</source>
         <translation>Druck an der Spitze %1 mmHg; letzter Auslass nach %2 s erreicht.</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="163"/>
         <source>&lt;br&gt;Control point %1: drug %2 ml/min two-phase, %3 ml/min liquid (%4 % lower)</source>
         <translation>&lt;br&gt;Kontrollpunkt %1: Wirkstoff %2 ml/min zweiphasig, %3 ml/min flüssig (%4 % weniger)</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="167"/>
         <source>&lt;br&gt;Tumour share %1 % (%2 outlets).</source>
         <translation>&lt;br&gt;Tumoranteil %1 % (%2 Auslässe).</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="169"/>
         <source>&lt;br&gt;Best tip: node %1 delivers %2 % to the tumour.</source>
         <translation>&lt;br&gt;Beste Spitze: Knoten %1 bringt %2 % in den Tumor.</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="183"/>
         <source>never</source>
         <translation>nie</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="206"/>
-        <source>Drug flow (ml/min)</source>
-        <translation>Wirkstofffluss (ml/min)</translation>
+        <source>DSA-like view at the working angle</source>
+        <translation>DSA-ähnliche Ansicht im Arbeitswinkel</translation>
     </message>
     <message>
-        <location filename="../app/gui/DrugDeliveryPanel.cpp" line="232"/>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
+        <source>Keep this run (the next one is added beside it)</source>
+        <translation>Diesen Lauf behalten (der nächste kommt daneben)</translation>
+    </message>
+    <message>
+        <source>The liver as a label: perfusion territories, coverage grade and feeders</source>
+        <translation>Die Leber als Label: Perfusionsgebiete, Abdeckungsgrad und Zuflüsse</translation>
+    </message>
+    <message>
+        <source>The tumour as a label (with a liver label): its lesions, margins and coverage</source>
+        <translation>Der Tumor als Label (mit einem Leber-Label): seine Läsionen, Ränder und Abdeckung</translation>
+    </message>
+    <message>
+        <source>largest end; or a name, a segment number, or x, y, z mm on it</source>
+        <translation>größtes Ende; oder ein Name, eine Segmentnummer oder x, y, z mm darauf</translation>
+    </message>
+    <message>
+        <source>Blood enters through this segment; the tree beyond it is modelled</source>
+        <translation>Das Blut tritt durch dieses Segment ein; der Baum dahinter wird modelliert</translation>
+    </message>
+    <message>
+        <source>segment numbers, e.g. 3, 7</source>
+        <translation>Segmentnummern, z. B. 3, 7</translation>
+    </message>
+    <message>
+        <source>segment numbers; or untick a feeder below</source>
+        <translation>Segmentnummern; oder unten einen Zufluss abwählen</translation>
+    </message>
+    <message>
+        <source>Click a branch of the shown run in the 3D view to add it as a feeder</source>
+        <translation>Einen Ast des gezeigten Laufs in der 3D-Ansicht anklicken, um ihn als Zufluss hinzuzufügen</translation>
+    </message>
+    <message>
+        <source>Liver label</source>
+        <translation>Leber-Label</translation>
+    </message>
+    <message>
+        <source>Tumour label</source>
+        <translation>Tumor-Label</translation>
+    </message>
+    <message>
+        <source>Blood enters at</source>
+        <translation>Blut tritt ein bei</translation>
+    </message>
+    <message>
+        <source>Feeders added</source>
+        <translation>Hinzugefügte Zuflüsse</translation>
+    </message>
+    <message>
+        <source>Feeders removed</source>
+        <translation>Entfernte Zuflüsse</translation>
+    </message>
+    <message>
+        <source>The outlet&apos;s vessel (anatomical name when known)</source>
+        <translation>Das Gefäß des Abflusses (anatomischer Name, wenn bekannt)</translation>
+    </message>
+    <message>
+        <source>Share of the injected drug leaving through this outlet (%)</source>
+        <translation>Anteil des injizierten Wirkstoffs, der durch diesen Abfluss austritt (%)</translation>
+    </message>
+    <message>
+        <source>Time for the drug front to reach the outlet from the catheter tip (s)</source>
+        <translation>Zeit, bis die Wirkstofffront den Abfluss von der Katheterspitze aus erreicht (s)</translation>
+    </message>
+    <message>
+        <source>Feeder (tick: keep)</source>
+        <translation>Zufluss (Haken: behalten)</translation>
+    </message>
+    <message>
+        <source>A branch entering the tumour or its margin; untick to remove it from the plan</source>
+        <translation>Ein Ast, der in den Tumor oder seinen Rand eintritt; Haken entfernen, um ihn aus dem Plan zu nehmen</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>The feeder&apos;s segment number in the kept tree</source>
+        <translation>Die Segmentnummer des Zuflusses im behaltenen Baum</translation>
+    </message>
+    <message>
+        <source>Radius (mm)</source>
+        <translation>Radius (mm)</translation>
+    </message>
+    <message>
+        <source>Lumen radius of the feeder (mm)</source>
+        <translation>Lumenradius des Zuflusses (mm)</translation>
+    </message>
+    <message>
+        <source>Found</source>
+        <translation>Gefunden</translation>
+    </message>
+    <message>
+        <source>Found automatically, or added by hand</source>
+        <translation>Automatisch gefunden oder von Hand hinzugefügt</translation>
+    </message>
+    <message>
+        <source>Drug reaches it</source>
+        <translation>Wirkstoff erreicht ihn</translation>
+    </message>
+    <message>
+        <source>Whether drug injected at the current tip reaches this feeder</source>
+        <translation>Ob der an der aktuellen Spitze injizierte Wirkstoff diesen Zufluss erreicht</translation>
+    </message>
+    <message>
+        <source>The projection as a DSA-like image (the opacified tree, the path to the tip denser)</source>
+        <translation>Die Projektion als DSA-ähnliches Bild (der kontrastierte Baum, der Pfad zur Spitze dichter)</translation>
+    </message>
+    <message>
+        <source>added by hand</source>
+        <translation>von Hand hinzugefügt</translation>
+    </message>
+    <message>
+        <source>enters lesion + margin</source>
+        <translation>tritt in Läsion + Rand ein</translation>
+    </message>
+    <message>
+        <source>feeds the lesion</source>
+        <translation>versorgt die Läsion</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keiner)</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Blood: %1 ml/min at the root, %2 ml/min reaching the tip (own flow %3); the drug is %4 % of the flow below it; the catheter fills %5 % of the lumen%6.</source>
+        <translation>&lt;br&gt;Blut: %1 ml/min an der Wurzel, %2 ml/min erreichen die Spitze (eigener Fluss %3); der Wirkstoff ist %4 % des Flusses darunter; der Katheter füllt %5 % des Lumens%6.</translation>
+    </message>
+    <message>
+        <source>: WEDGED</source>
+        <translation>: VERKEILT</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;&lt;b&gt;Coverage grade %1&lt;/b&gt;: territory %2 ml (%3 ml of tumour); drug to tumour %4 %, non-tumour liver %5 %, extrahepatic %6 %.</source>
+        <translation>&lt;br&gt;&lt;b&gt;Abdeckungsgrad %1&lt;/b&gt;: Versorgungsgebiet %2 ml (%3 ml Tumor); Wirkstoff zum Tumor %4 %, Leber ohne Tumor %5 %, extrahepatisch %6 %.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Lesion %1: %2 mm, %3 mm margin; %4 % covered, margin %5 % (grade %6).</source>
+        <translation>&lt;br&gt;Läsion %1: %2 mm, %3 mm Rand; %4 % abgedeckt, Rand %5 % (Grad %6).</translation>
+    </message>
+    <message>
+        <source>%1 (segment %2, %3 mm)</source>
+        <translation>%1 (Segment %2, %3 mm)</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Feeders: %1.</source>
+        <translation>&lt;br&gt;Zuflüsse: %1.</translation>
+    </message>
+    <message>
+        <source>none found</source>
+        <translation>keiner gefunden</translation>
+    </message>
+    <message>
+        <source>%1 %2 %</source>
+        <translation>%1 %2 %</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Drug leaving the liver: %1.</source>
+        <translation>&lt;br&gt;Wirkstoff, der die Leber verlässt: %1.</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;&lt;b&gt;Working angle %1 %2, %3 %4&lt;/b&gt; (the projection below): the path foreshortened %5 %, overlapped %6 % (from the front: %7 %, %8 %).</source>
+        <translation>&lt;br&gt;&lt;b&gt;Arbeitswinkel %1 %2, %3 %4&lt;/b&gt; (die Projektion unten): der Pfad um %5 % verkürzt, zu %6 % überlagert (von vorn: %7 %, %8 %).</translation>
+    </message>
+    <message>
+        <source>LAO</source>
+        <translation>LAO</translation>
+    </message>
+    <message>
+        <source>RAO</source>
+        <translation>RAO</translation>
+    </message>
+    <message>
+        <source>cranial</source>
+        <translation>kranial</translation>
+    </message>
+    <message>
+        <source>caudal</source>
+        <translation>kaudal</translation>
+    </message>
+    <message>
+        <source>Drug flow (ml/min; grey: none)</source>
+        <translation>Wirkstofffluss (ml/min; grau: keiner)</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::HelpWindow</name>
+    <message>
+        <source>VascuSim User Guide</source>
+        <translation>VascuSim-Benutzerhandbuch</translation>
     </message>
 </context>
 <context>
     <name>vsim::gui::InteractiveWall</name>
     <message>
-        <location filename="../app/gui/InteractiveWall.cpp" line="75"/>
         <source>von Mises (kPa)</source>
         <translation>von Mises (kPa)</translation>
     </message>
@@ -262,273 +1701,190 @@
 <context>
     <name>vsim::gui::MainWindow</name>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="27"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="28"/>
         <source>&amp;New Study...</source>
         <translation>&amp;Neue Studie...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="57"/>
         <source>Study folder (*.vsim)</source>
         <translation>Studienordner (*.vsim)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="33"/>
         <source>&amp;Open Study...</source>
         <translation>Studie ö&amp;ffnen...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="38"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="41"/>
         <source>Import &amp;DICOM...</source>
         <translation>&amp;DICOM importieren...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="41"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="43"/>
         <source>&amp;Import Volume...</source>
         <translation>Volumen &amp;importieren...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="43"/>
         <source>Ctrl+I</source>
         <translation>Ctrl+I</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="48"/>
         <source>Import &amp;Label...</source>
         <translation>&amp;Label importieren...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="49"/>
         <source>Import label (a mask on the CT&apos;s grid)</source>
         <translation>Label importieren (eine Maske auf dem Raster des CT)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="55"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="56"/>
         <source>Save &amp;As...</source>
         <translation>Speichern &amp;unter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="62"/>
         <source>Export &amp;Report...</source>
         <translation>&amp;Bericht exportieren...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="62"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="65"/>
         <source>&amp;Close Window</source>
         <translation>Fenster &amp;schließen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="66"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="68"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="69"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="71"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="76"/>
         <source>Re&amp;name Artifact...</source>
         <translation>Artefakt &amp;umbenennen...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="81"/>
         <source>Rename artifact</source>
         <translation>Artefakt umbenennen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="81"/>
         <source>Name:</source>
         <translation>Name:</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="87"/>
         <source>&amp;Delete Artifact</source>
         <translation>Artefakt &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="97"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="98"/>
         <source>Window/Level: &amp;CTA</source>
         <translation>Fenster: &amp;CTA</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="99"/>
         <source>Window/Level: &amp;Soft Tissue</source>
         <translation>Fenster: &amp;Weichteil</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="100"/>
         <source>Window/Level: &amp;Bone</source>
         <translation>Fenster: &amp;Knochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="102"/>
         <source>3D: &amp;Anterior View</source>
         <translation>3D: &amp;Ansicht von vorn</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="107"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="108"/>
         <source>&amp;About VascuSim</source>
         <translation>Ü&amp;ber VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="126"/>
         <source>About VascuSim</source>
         <translation>Über VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="127"/>
         <source>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patient-specific physics for vascular procedure planning.&lt;/p&gt;&lt;p&gt;Results support planning and need clinical judgement.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</source>
         <translation>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patientenspezifische Physik für die Planung vaskulärer Eingriffe.&lt;/p&gt;&lt;p&gt;Die Ergebnisse unterstützen die Planung und erfordern ärztliches Urteil.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="61"/>
         <source>%1: cancelled, nothing changed</source>
         <translation>%1: abgebrochen, nichts geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="64"/>
         <source>%1: done</source>
         <translation>%1: fertig</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="84"/>
         <source>Artifact</source>
         <translation>Artefakt</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="84"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="84"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="101"/>
         <source>Study</source>
         <translation>Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="109"/>
-        <location filename="../app/gui/MainWindow.cpp" line="115"/>
-        <source>Import</source>
-        <translation>Importieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindow.cpp" line="109"/>
-        <location filename="../app/gui/MainWindow.cpp" line="117"/>
-        <source>Segment</source>
-        <translation>Segmentieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindow.cpp" line="109"/>
-        <location filename="../app/gui/MainWindow.cpp" line="119"/>
-        <source>Skeleton &amp;&amp; Centerlines</source>
-        <translation>Skelett &amp;&amp; Mittellinien</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindow.cpp" line="109"/>
-        <location filename="../app/gui/MainWindow.cpp" line="121"/>
-        <source>Mesh</source>
-        <translation>Netz</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindow.cpp" line="109"/>
-        <location filename="../app/gui/MainWindow.cpp" line="123"/>
-        <source>Simulate</source>
-        <translation>Simulieren</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindow.cpp" line="110"/>
-        <location filename="../app/gui/MainWindow.cpp" line="125"/>
-        <location filename="../app/gui/MainWindowReport.cpp" line="76"/>
-        <location filename="../app/gui/MainWindowReport.cpp" line="80"/>
-        <location filename="../app/gui/MainWindowReport.cpp" line="118"/>
-        <location filename="../app/gui/MainWindowReport.cpp" line="140"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="128"/>
         <source>Workflow</source>
         <translation>Arbeitsablauf</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="140"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="168"/>
         <source>No study</source>
         <translation>Keine Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="170"/>
         <source>%1[*] - VascuSim</source>
         <translation>%1[*] - VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="170"/>
         <source>%1 (read-only) - VascuSim</source>
         <translation>%1 (schreibgeschützt) - VascuSim</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="190"/>
         <source>damaged</source>
         <translation>beschädigt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/MainWindow.cpp" line="195"/>
         <source>%n warning(s)</source>
         <translation>
             <numerusform>%n Warnung</numerusform>
@@ -536,101 +1892,76 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="201"/>
         <source>%1, made by &quot;%2&quot; on %3</source>
         <translation>%1, erzeugt von &quot;%2&quot; am %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="213"/>
         <source>%1 failed</source>
         <translation>%1 fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="234"/>
         <source>Opened read-only: the study is being written by %1</source>
         <translation>Schreibgeschützt geöffnet: die Studie wird von %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="238"/>
         <source>Study in use</source>
         <translation>Studie in Gebrauch</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="239"/>
         <source>The study is being written by %1.
 Open it read-only, or break the lock if you are sure that program no longer runs.</source>
         <translation>Die Studie wird von %1 geschrieben.
 Schreibgeschützt öffnen, oder die Sperre aufheben, wenn Sie sicher sind, dass dieses Programm nicht mehr läuft.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="242"/>
         <source>Open Read-Only</source>
         <translation>Schreibgeschützt öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="243"/>
         <source>Break the Lock...</source>
         <translation>Sperre aufheben...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="248"/>
         <source>Break the lock</source>
         <translation>Sperre aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="249"/>
         <source>If %1 still runs, both programs will write the study and results can be lost. Break the lock?</source>
         <translation>Wenn %1 noch läuft, schreiben beide Programme die Studie, und Ergebnisse können verloren gehen. Sperre aufheben?</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="276"/>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="34"/>
         <source>Open study</source>
         <translation>Studie öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="296"/>
         <source>Study opened with problems</source>
         <translation>Studie mit Problemen geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="315"/>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="29"/>
         <source>New study</source>
         <translation>Neue Studie</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowImport.cpp" line="24"/>
-        <location filename="../app/gui/MainWindowImport.cpp" line="27"/>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="44"/>
         <source>Import volume</source>
         <translation>Volumen importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowImport.cpp" line="32"/>
-        <location filename="../app/gui/MainWindowImport.cpp" line="65"/>
-        <location filename="../app/gui/MainWindowImport.cpp" line="121"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowImport.cpp" line="44"/>
-        <location filename="../app/gui/MainWindowImport.cpp" line="51"/>
         <source>Import label</source>
         <translation>Label importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowImport.cpp" line="44"/>
         <source>The study has no CT image for the label&apos;s grid: import the CT first.</source>
         <translation>Die Studie hat kein CT-Bild für das Raster des Labels: zuerst das CT importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowImport.cpp" line="89"/>
         <source>Not Hounsfield units</source>
         <translation>Keine Hounsfield-Einheiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowImport.cpp" line="90"/>
         <source>%1
 
 Rescale to HU (HU = slope x stored value + intercept):</source>
@@ -639,468 +1970,335 @@ Rescale to HU (HU = slope x stored value + intercept):</source>
 Umrechnung in HU (HU = Steigung x gespeicherter Wert + Achsenabschnitt):</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowImport.cpp" line="107"/>
-        <location filename="../app/gui/MainWindowImport.cpp" line="115"/>
         <source>Import DICOM</source>
         <translation>DICOM importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="326"/>
-        <location filename="../app/gui/MainWindow.cpp" line="397"/>
         <source>Save study</source>
         <translation>Studie speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="339"/>
-        <location filename="../app/gui/MainWindowMenus.cpp" line="57"/>
         <source>Save study as</source>
         <translation>Studie speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="358"/>
         <source>Show image</source>
         <translation>Bild anzeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="383"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindow.cpp" line="384"/>
         <source>Save the changes to this study before closing?</source>
         <translation>Änderungen an dieser Studie vor dem Schließen speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="56"/>
         <source>Length (mm)</source>
         <translation>Länge (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="56"/>
         <source>Start r (mm)</source>
         <translation>Anfangs-r (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="56"/>
         <source>End r (mm)</source>
         <translation>End-r (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="56"/>
         <source>Segment</source>
         <comment>a vessel segment (noun)</comment>
         <translation>Segment</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="57"/>
         <source>Reference Ø (mm)</source>
         <translation>Referenz-Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="57"/>
         <source>Minimal Ø (mm)</source>
         <translation>Minimaler Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="58"/>
         <source>Stenosis (%)</source>
         <translation>Stenose (%)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="58"/>
         <source>Max Ø (mm)</source>
         <translation>Max. Ø (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="70"/>
         <source>Measurements</source>
         <translation>Messungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="98"/>
-        <source>Maximum diameter %1 mm</source>
-        <translation>Maximaler Durchmesser %1 mm</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="112"/>
         <source>V&amp;essels</source>
         <translation>&amp;Gefäße</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="113"/>
         <source>&amp;Segment Vessels</source>
         <translation>Gefäße &amp;segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="115"/>
         <source>Segment from the &amp;Cursor</source>
         <translation>Ab dem &amp;Cursor segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="118"/>
         <source>S&amp;keleton and Centerlines</source>
         <translation>S&amp;kelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="121"/>
         <source>&amp;Edit Label (Brush)</source>
         <translation>Label &amp;bearbeiten (Pinsel)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="122"/>
         <source>&amp;Parameters...</source>
         <translation>&amp;Parameter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="127"/>
         <source>Vessel parameters</source>
         <translation>Gefäßparameter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="128"/>
         <source>Segmentation</source>
         <translation>Segmentierung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="157"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="179"/>
         <source>Segment vessels</source>
         <translation>Gefäße segmentieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="145"/>
         <source>The study has no CT image: import one first.</source>
         <translation>Die Studie enthält kein CT-Bild: zuerst eines importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="190"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="203"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="232"/>
         <source>Skeleton and centerlines</source>
         <translation>Skelett und Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="28"/>
         <source>Label Editing</source>
         <translation>Label-Bearbeitung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="31"/>
         <source>Paint</source>
         <translation>Malen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="32"/>
         <source>Erase</source>
         <translation>Radieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="38"/>
         <source>Paint vessel voxels with the left button in any MPR view (one undo step per stroke)</source>
         <translation>Gefäßvoxel mit der linken Maustaste in einer MPR-Ansicht malen (ein Rückgängig-Schritt pro Strich)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="39"/>
         <source>Erase vessel voxels with the left button in any MPR view</source>
         <translation>Gefäßvoxel mit der linken Maustaste in einer MPR-Ansicht radieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="40"/>
         <source> Radius </source>
         <translation> Radius </translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="47"/>
         <source>Apply Edits</source>
         <translation>Änderungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="48"/>
         <source>Discard Edits</source>
         <translation>Änderungen verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="49"/>
         <source>Add the edited label to the study as a new artifact (the original stays)</source>
         <translation>Das bearbeitete Label als neues Artefakt zur Studie hinzufügen (das Original bleibt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="72"/>
         <source>Label edits: %1 voxels painted, %2 erased</source>
         <translation>Label-Änderungen: %1 Voxel gemalt, %2 radiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="94"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="190"/>
         <source>The study has no vessel label: segment the vessels first.</source>
         <translation>Die Studie enthält keine Gefäßmaske: zuerst die Gefäße segmentieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="94"/>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="104"/>
         <source>Edit label</source>
         <translation>Label bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowLabelEditing.cpp" line="152"/>
         <source>Apply label edits</source>
         <translation>Label-Änderungen übernehmen</translation>
     </message>
     <message>
-        <source>Vessel surface</source>
-        <translation type="vanished">Gefäßoberfläche</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="129"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="233"/>
         <source>Skeleton</source>
         <translation>Skelett</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="130"/>
-        <location filename="../app/gui/MainWindowVessels.cpp" line="234"/>
         <source>Centerlines</source>
         <translation>Mittellinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="33"/>
         <source>&amp;Wall</source>
         <translation>&amp;Wand</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="34"/>
         <source>Build &amp;Wall Mesh</source>
         <translation>&amp;Wandnetz erzeugen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="35"/>
         <source>Wall Stress at &amp;Blood Pressure</source>
         <translation>Wandspannung bei &amp;Blutdruck</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="37"/>
-        <source>&amp;Thesis Rupture Protocol</source>
-        <translation>&amp;Ruptur-Protokoll der Dissertation</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="38"/>
         <source>&amp;Interactive Protocol</source>
         <translation>&amp;Interaktives Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="40"/>
         <source>Wall &amp;Parameters...</source>
         <translation>Wand-&amp;Parameter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="41"/>
         <source>Wall parameters</source>
         <translation>Wandparameter</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="42"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="54"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="61"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="68"/>
         <source>Wall mesh</source>
         <translation>Wandnetz</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="42"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="84"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="102"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="134"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="151"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="191"/>
         <source>Wall mechanics</source>
         <translation>Wandmechanik</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="54"/>
         <source>The wall needs a vessel label and centerlines: run Segment and Skeleton &amp;&amp; Centerlines first.</source>
         <translation>Die Wand braucht ein Gefäßlabel und Mittellinien: zuerst Segmentieren und Skelett &amp;&amp; Mittellinien ausführen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="69"/>
         <source>Wall: %1 elements, smallest dihedral angle %2 deg</source>
         <translation>Wand: %1 Elemente, kleinster Diederwinkel %2 Grad</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="84"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="134"/>
         <source>Build the wall mesh first (Wall &gt; Build Wall Mesh).</source>
         <translation>Zuerst das Wandnetz erzeugen (Wand &gt; Wandnetz erzeugen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="91"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="100"/>
         <source>Wall stress</source>
         <translation>Wandspannung</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="91"/>
         <source>Thesis rupture protocol</source>
         <translation>Ruptur-Protokoll der Dissertation</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="103"/>
         <source>Read these results with care: %1</source>
         <translation>Diese Ergebnisse mit Vorsicht lesen: %1</translation>
     </message>
     <message>
-        <source>The run stopped early: %1</source>
-        <translation type="vanished">Die Rechnung endete vorzeitig: %1</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="105"/>
-        <source>Peak wall stress %1 kPa, peak rupture index %2</source>
-        <translation>Höchste Wandspannung %1 kPa, höchster Rupturindex %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="121"/>
         <source>von Mises (kPa), NOT CONVERGED</source>
         <translation>von Mises (kPa), NICHT KONVERGIERT</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="122"/>
         <source>von Mises (kPa), STOPPED EARLY</source>
         <translation>von Mises (kPa), VORZEITIG BEENDET</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="123"/>
         <source>von Mises (kPa)</source>
         <translation>von Mises (kPa)</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="161"/>
-        <location filename="../app/gui/MainWindowWall.cpp" line="178"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="167"/>
         <source>0 mmHg</source>
         <translation>0 mmHg</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="168"/>
         <source>Tear at %1 MPa</source>
         <translation>Reißen bei %1 MPa</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="171"/>
         <source>Pressure</source>
         <translation>Druck</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="175"/>
         <source>Drag the wall with the left button in the 3D view.</source>
         <translation>Die Wand in der 3D-Ansicht mit der linken Maustaste ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="178"/>
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="182"/>
         <source>%1 mmHg</source>
         <translation>%1 mmHg</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="187"/>
         <source>%1 frames/s, peak von Mises %2 kPa</source>
         <translation>%1 Bilder/s, höchste von-Mises-Spannung %2 kPa</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="191"/>
         <source>The simulation paused: %1</source>
         <translation>Die Simulation hält an: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowWall.cpp" line="193"/>
         <source>Interactive Wall</source>
         <translation>Interaktive Wand</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="25"/>
         <source>&amp;Drug</source>
-        <translation>&amp;Wirkstoff</translation>
+        <translation>Wirk&amp;stoff</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="26"/>
         <source>Drug &amp;Delivery</source>
         <translation>Wirkstoff&amp;gabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="29"/>
         <source>Drug &amp;Parameters...</source>
         <translation>Wirkstoff&amp;parameter...</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="30"/>
         <source>Drug delivery parameters</source>
         <translation>Parameter der Wirkstoffgabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="30"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="41"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="50"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="59"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="70"/>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="82"/>
         <source>Drug delivery</source>
         <translation>Wirkstoffgabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="41"/>
         <source>The network needs centerlines: run Skeleton &amp;&amp; Centerlines first.</source>
         <translation>Das Netzwerk braucht Mittellinien: zuerst Skelett &amp;&amp; Mittellinien ausführen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="50"/>
         <source>The tip needs three numbers (mm) and the tumour four (centre and radius).</source>
         <translation>Die Spitze braucht drei Zahlen (mm), der Tumor vier (Mitte und Radius).</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="59"/>
         <source>The tumour&apos;s radius must be positive.</source>
         <translation>Der Radius des Tumors muss positiv sein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="70"/>
         <source>Control points are x, y, z in mm, separated by &apos;;&apos;.</source>
         <translation>Kontrollpunkte sind x, y, z in mm, getrennt durch &apos;;&apos;.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="95"/>
         <source>Drug flow</source>
         <translation>Wirkstofffluss</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="107"/>
         <source>Drug Delivery</source>
         <translation>Wirkstoffgabe</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowNetwork.cpp" line="115"/>
         <source>Drug delivery: %1 outlets, last reached after %2 s</source>
         <translation>Wirkstoffgabe: %1 Auslässe, der letzte nach %2 s erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowReport.cpp" line="76"/>
         <source>No PDF viewer opened %1.</source>
         <translation>Kein PDF-Betrachter hat %1 geöffnet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowReport.cpp" line="100"/>
         <source>Replace files</source>
         <translation>Dateien ersetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowReport.cpp" line="101"/>
         <source>These files exist already:
 %1
 Replace them?</source>
@@ -1109,77 +2307,1132 @@ Replace them?</source>
 Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowReport.cpp" line="141"/>
         <source>Report written to %1</source>
         <translation>Bericht geschrieben nach %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/MainWindowScene.cpp" line="117"/>
         <source>Preparing the views</source>
         <translation>Ansichten werden vorbereitet</translation>
+    </message>
+    <message>
+        <source>A step is running: wait for it or cancel it</source>
+        <translation>Ein Schritt läuft: warten oder abbrechen</translation>
+    </message>
+    <message>
+        <source>Open or create a study first (File menu)</source>
+        <translation>Zuerst eine Studie öffnen oder anlegen (Menü Datei)</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>Bild</translation>
+    </message>
+    <message>
+        <source>label</source>
+        <translation>Label</translation>
+    </message>
+    <message>
+        <source>surface</source>
+        <translation>Oberfläche</translation>
+    </message>
+    <message>
+        <source>volume mesh</source>
+        <translation>Volumennetz</translation>
+    </message>
+    <message>
+        <source>skeleton</source>
+        <translation>Skelett</translation>
+    </message>
+    <message>
+        <source>network</source>
+        <translation>Netzwerk</translation>
+    </message>
+    <message>
+        <source>report</source>
+        <translation>Bericht</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>Lauf</translation>
+    </message>
+    <message>
+        <source>measurement</source>
+        <translation>Messung</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <source>3D brush: paint or erase a ball of the radius through the slices, not a disc in the view&apos;s plane</source>
+        <translation>3D-Pinsel: eine Kugel des Radius durch die Schichten malen oder radieren, keine Scheibe in der Ebene der Ansicht</translation>
+    </message>
+    <message>
+        <source> Paint as </source>
+        <translation> Malen als </translation>
+    </message>
+    <message>
+        <source>Lumen</source>
+        <translation>Lumen</translation>
+    </message>
+    <message>
+        <source>Thrombus</source>
+        <translation>Thrombus</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>Wand</translation>
+    </message>
+    <message>
+        <source>The label value the brush paints: the lumen, or the thrombus and wall of an AAA sac label</source>
+        <translation>Der Label-Wert, den der Pinsel malt: das Lumen, oder Thrombus und Wand eines AAA-Sack-Labels</translation>
+    </message>
+    <message>
+        <source>Remove Island</source>
+        <translation>Insel entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the connected piece of the label at the cursor (click it in an MPR view first)</source>
+        <translation>Das zusammenhängende Stück des Labels am Cursor entfernen (zuerst in einer MPR-Ansicht anklicken)</translation>
+    </message>
+    <message>
+        <source>No labelled voxel within 3 mm of the cursor</source>
+        <translation>Kein Label-Voxel innerhalb von 3 mm um den Cursor</translation>
+    </message>
+    <message>
+        <source>Island removed: %1 voxels erased in all</source>
+        <translation>Insel entfernt: insgesamt %1 Voxel radiert</translation>
+    </message>
+    <message>
+        <source>Volumes (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;DICOM SEG or a mask series&apos; slice (*.dcm *.DCM *.IMA);;All files (*)</source>
+        <translation>Volumen (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;DICOM SEG oder eine Schicht einer Maskenserie (*.dcm *.DCM *.IMA);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Window/Level: &amp;Lung</source>
+        <translation>Fenster/Level: &amp;Lunge</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Slice Views</source>
+        <translation>Schnittansichten &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Centre the volume and show it whole in the axial, coronal and sagittal views (R in a view)</source>
+        <translation>Das Volumen zentrieren und ganz in der axialen, koronalen und sagittalen Ansicht zeigen (R in einer Ansicht)</translation>
+    </message>
+    <message>
+        <source>&amp;Link Slice Views</source>
+        <translation>Schnittansichten &amp;koppeln</translation>
+    </message>
+    <message>
+        <source>Linked, the slice views share the cursor and window/level</source>
+        <translation>Gekoppelt teilen die Schnittansichten Cursor und Fenster/Level</translation>
+    </message>
+    <message>
+        <source>Show &amp;Crosshair</source>
+        <translation>&amp;Fadenkreuz zeigen</translation>
+    </message>
+    <message>
+        <source>Right Drag &amp;Zooms (Slicer)</source>
+        <translation>Rechts ziehen &amp;zoomt (Slicer)</translation>
+    </message>
+    <message>
+        <source>Right drag in a slice view zooms instead of changing window/level (kept in the settings)</source>
+        <translation>Ziehen mit der rechten Taste in einer Schnittansicht zoomt, statt Fenster/Level zu ändern (in den Einstellungen gespeichert)</translation>
+    </message>
+    <message>
+        <source>Thick Slab &amp;MIP</source>
+        <translation>Dicke Schicht (&amp;MIP)</translation>
+    </message>
+    <message>
+        <source>Off (thin slice)</source>
+        <translation>Aus (dünne Schicht)</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard and Mouse</source>
+        <translation>&amp;Tastatur und Maus</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>System Language</source>
+        <translation>Systemsprache</translation>
+    </message>
+    <message>
+        <source>The language changes when VascuSim starts next.</source>
+        <translation>Die Sprache wechselt beim nächsten Start von VascuSim.</translation>
+    </message>
+    <message>
+        <source>&amp;Liver from Points</source>
+        <translation>&amp;Leber aus Punkten</translation>
+    </message>
+    <message>
+        <source>&amp;Tumour from Points</source>
+        <translation>&amp;Tumor aus Punkten</translation>
+    </message>
+    <message>
+        <source>The tumour label is read with a liver label: choose the liver too.</source>
+        <translation>Das Tumor-Label wird mit einem Leber-Label gelesen: auch die Leber wählen.</translation>
+    </message>
+    <message>
+        <source>Feeders are corrected on a run with a liver label: choose the liver too.</source>
+        <translation>Zuflüsse werden an einem Lauf mit Leber-Label korrigiert: auch die Leber wählen.</translation>
+    </message>
+    <message>
+        <source>Tumour from points</source>
+        <translation>Tumor aus Punkten</translation>
+    </message>
+    <message>
+        <source>Liver from points</source>
+        <translation>Leber aus Punkten</translation>
+    </message>
+    <message>
+        <source>Place include points inside the %1 first (Vessels &gt; Segment from Points, on the MPR views), then grow it from them.</source>
+        <translation>Zuerst Einschlusspunkte in %1 setzen (Gefäße &gt; Aus Punkten segmentieren, in den MPR-Ansichten), dann daraus wachsen lassen.</translation>
+    </message>
+    <message>
+        <source>tumour</source>
+        <translation>den Tumor</translation>
+    </message>
+    <message>
+        <source>liver</source>
+        <translation>die Leber</translation>
+    </message>
+    <message>
+        <source>A tumour grows within the liver: choose the liver label in the Drug Delivery dock first (or grow it: Drug &gt; Liver from Points).</source>
+        <translation>Ein Tumor wächst innerhalb der Leber: zuerst das Leber-Label im Dock Wirkstoffgabe wählen (oder sie wachsen lassen: Wirkstoff &gt; Leber aus Punkten).</translation>
+    </message>
+    <message>
+        <source>%1 grown from %2 point(s): %3 ml; choose it as the %4 label in the Drug Delivery dock</source>
+        <translation>%1 aus %2 Punkt(en) gewachsen: %3 ml; als %4-Label im Dock Wirkstoffgabe wählen</translation>
+    </message>
+    <message>
+        <source>tip</source>
+        <translation>Spitze</translation>
+    </message>
+    <message>
+        <source>lesion %1</source>
+        <translation>Läsion %1</translation>
+    </message>
+    <message>
+        <source>feeder %1</source>
+        <translation>Zufluss %1</translation>
+    </message>
+    <message>
+        <source>Chemoembolization from the tip: coverage grade %1, territory %2 ml, %3 feeder(s)</source>
+        <translation>Chemoembolisation von der Spitze: Abdeckungsgrad %1, Versorgungsgebiet %2 ml, %3 Zufluss/Zuflüsse</translation>
+    </message>
+    <message>
+        <source>F&amp;low</source>
+        <translation>St&amp;römung</translation>
+    </message>
+    <message>
+        <source>Blood &amp;Flow (SPH)</source>
+        <translation>Blut&amp;fluss (SPH)</translation>
+    </message>
+    <message>
+        <source>Needle &amp;Injection (SPH, Thesis Scenario a)</source>
+        <translation>Nadel&amp;injektion (SPH, Szenario a der Dissertation)</translation>
+    </message>
+    <message>
+        <source>&amp;Wall Loads</source>
+        <translation>&amp;Wandlasten</translation>
+    </message>
+    <message>
+        <source>Time-Averaged Wall &amp;Shear Stress</source>
+        <translation>Zeitgemittelte Wand&amp;schubspannung</translation>
+    </message>
+    <message>
+        <source>&amp;Oscillatory Shear Index</source>
+        <translation>&amp;Oszillatorischer Scherindex</translation>
+    </message>
+    <message>
+        <source>Mean Wall &amp;Pressure</source>
+        <translation>Mittlerer Wand&amp;druck</translation>
+    </message>
+    <message>
+        <source>Blood Flow &amp;Parameters...</source>
+        <translation>Blutfluss-&amp;Parameter...</translation>
+    </message>
+    <message>
+        <source>Blood flow parameters</source>
+        <translation>Blutfluss-Parameter</translation>
+    </message>
+    <message>
+        <source>Inlet, outlets, figures</source>
+        <translation>Einlass, Auslässe, Werte</translation>
+    </message>
+    <message>
+        <source>Needle injection</source>
+        <translation>Nadelinjektion</translation>
+    </message>
+    <message>
+        <source>SPH solver</source>
+        <translation>SPH-Löser</translation>
+    </message>
+    <message>
+        <source>Blood flow</source>
+        <translation>Blutfluss</translation>
+    </message>
+    <message>
+        <source>The vessel ends come from the centerlines: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>Die Gefäßenden kommen aus den Mittellinien: zuerst Skelett &amp;&amp; Mittellinien ausführen.</translation>
+    </message>
+    <message>
+        <source>Blood flow: peak velocity ratio %1 at %2 mm along the centerline (mean ratio %3), pressure drop %4 mmHg</source>
+        <translation>Blutfluss: größtes Geschwindigkeitsverhältnis %1 bei %2 mm entlang der Mittellinie (mittleres Verhältnis %3), Druckabfall %4 mmHg</translation>
+    </message>
+    <message>
+        <source>Blood flow: no stenosis figures (%1)</source>
+        <translation>Blutfluss: keine Stenosewerte (%1)</translation>
+    </message>
+    <message>
+        <source>Needle injection: %1 ml in the vessel, %2 ml collected in the box at %3 s</source>
+        <translation>Nadelinjektion: %1 ml im Gefäß, %2 ml im Behälter gesammelt bei %3 s</translation>
+    </message>
+    <message>
+        <source>TAWSS (Pa)</source>
+        <translation>TAWSS (Pa)</translation>
+    </message>
+    <message>
+        <source>OSI (0-0.5)</source>
+        <translation>OSI (0-0,5)</translation>
+    </message>
+    <message>
+        <source>mean wall pressure (Pa)</source>
+        <translation>mittlerer Wanddruck (Pa)</translation>
+    </message>
+    <message>
+        <source>Wall loads</source>
+        <translation>Wandlasten</translation>
+    </message>
+    <message>
+        <source>No wall loads yet: run Flow &gt; Blood Flow (SPH) long enough to reach its averaging window.</source>
+        <translation>Noch keine Wandlasten: Strömung &gt; Blutfluss (SPH) lange genug laufen lassen, bis sein Mittelungsfenster erreicht ist.</translation>
+    </message>
+    <message>
+        <source>, NOT CONVERGED</source>
+        <translation>, NICHT KONVERGIERT</translation>
+    </message>
+    <message>
+        <source>, STOPPED EARLY</source>
+        <translation>, VORZEITIG ANGEHALTEN</translation>
+    </message>
+    <message>
+        <source>, averaged over %1-%2 ms</source>
+        <translation>, gemittelt über %1-%2 ms</translation>
+    </message>
+    <message>
+        <source>, time-averaged</source>
+        <translation>, zeitgemittelt</translation>
+    </message>
+    <message>
+        <source>; grey: no value</source>
+        <translation>; grau: kein Wert</translation>
+    </message>
+    <message>
+        <source>The segment&apos;s anatomical name (double-click to rename) or its end nodes</source>
+        <translation>Der anatomische Name des Segments (Doppelklick zum Umbenennen) oder seine Endknoten</translation>
+    </message>
+    <message>
+        <source>Length along the centerline (mm)</source>
+        <translation>Länge entlang der Mittellinie (mm)</translation>
+    </message>
+    <message>
+        <source>Lumen radius at the segment&apos;s start (mm)</source>
+        <translation>Lumenradius am Anfang des Segments (mm)</translation>
+    </message>
+    <message>
+        <source>Lumen radius at the segment&apos;s end (mm)</source>
+        <translation>Lumenradius am Ende des Segments (mm)</translation>
+    </message>
+    <message>
+        <source>Reference lumen diameter: the median equivalent diameter of the segment&apos;s sections (mm)</source>
+        <translation>Referenz-Lumendurchmesser: der Median der Äquivalenzdurchmesser der Schnitte des Segments (mm)</translation>
+    </message>
+    <message>
+        <source>Minimal lumen diameter (equivalent) along the segment, in sections perpendicular to the centerline (mm)</source>
+        <translation>Kleinster Lumendurchmesser (äquivalent) entlang des Segments, in Schnitten senkrecht zur Mittellinie (mm)</translation>
+    </message>
+    <message>
+        <source>Diameter stenosis: 100 (1 - minimal / reference diameter) (%)</source>
+        <translation>Durchmesserstenose: 100 (1 - kleinster / Referenzdurchmesser) (%)</translation>
+    </message>
+    <message>
+        <source>Largest lumen caliper width along the segment (mm); the AAA diameter outer wall to outer wall (SVS) is the sac&apos;s row</source>
+        <translation>Größte Lumen-Messweite entlang des Segments (mm); der AAA-Durchmesser von Außenwand zu Außenwand (SVS) ist die Zeile des Sacks</translation>
+    </message>
+    <message>
+        <source>Name Segment</source>
+        <translation>Segment benennen</translation>
+    </message>
+    <message>
+        <source>Anatomical name of the segment:</source>
+        <translation>Anatomischer Name des Segments:</translation>
+    </message>
+    <message>
+        <source>Segment %1 (nodes %2-%3); double-click to rename</source>
+        <translation>Segment %1 (Knoten %2-%3); Doppelklick zum Umbenennen</translation>
+    </message>
+    <message>
+        <source>AAA maximum diameter, outer wall to outer wall (SVS): %1 mm</source>
+        <translation>Größter AAA-Durchmesser, Außenwand zu Außenwand (SVS): %1 mm</translation>
+    </message>
+    <message>
+        <source>Lumen diameter there (equivalent): %1 mm</source>
+        <translation>Lumendurchmesser dort (äquivalent): %1 mm</translation>
+    </message>
+    <message>
+        <source>Largest thrombus thickness: %1 mm</source>
+        <translation>Größte Thrombusdicke: %1 mm</translation>
+    </message>
+    <message>
+        <source>Sac volume: %1 ml</source>
+        <translation>Sackvolumen: %1 ml</translation>
+    </message>
+    <message>
+        <source>Neck diameter (outer, at the lowest renal artery): %1 mm</source>
+        <translation>Halsdurchmesser (außen, an der untersten Nierenarterie): %1 mm</translation>
+    </message>
+    <message>
+        <source>Neck length: %1 mm</source>
+        <translation>Halslänge: %1 mm</translation>
+    </message>
+    <message>
+        <source>Neck angulation: %1 degrees</source>
+        <translation>Halsabwinkelung: %1 Grad</translation>
+    </message>
+    <message>
+        <source>Right common iliac diameter (outer): %1 mm</source>
+        <translation>Durchmesser A. iliaca communis rechts (außen): %1 mm</translation>
+    </message>
+    <message>
+        <source>Left common iliac diameter (outer): %1 mm</source>
+        <translation>Durchmesser A. iliaca communis links (außen): %1 mm</translation>
+    </message>
+    <message>
+        <source>Wall thickness (assumed): %1 mm</source>
+        <translation>Wanddicke (angenommen): %1 mm</translation>
+    </message>
+    <message>
+        <source>Maximum lumen diameter %1 mm (equivalent, perpendicular)</source>
+        <translation>Größter Lumendurchmesser %1 mm (äquivalent, senkrecht)</translation>
+    </message>
+    <message>
+        <source>Segment from &amp;Points...</source>
+        <translation>Aus &amp;Punkten segmentieren...</translation>
+    </message>
+    <message>
+        <source>AAA &amp;Sac (Outer Wall, Thrombus)</source>
+        <translation>AAA-&amp;Sack (Außenwand, Thrombus)</translation>
+    </message>
+    <message>
+        <source>&amp;Along the Vessel (3D + CPR)</source>
+        <translation>&amp;Entlang des Gefäßes (3D + CPR)</translation>
+    </message>
+    <message>
+        <source>Segmentation from points</source>
+        <translation>Segmentierung aus Punkten</translation>
+    </message>
+    <message>
+        <source>AAA sac</source>
+        <translation>AAA-Sack</translation>
+    </message>
+    <message>
+        <source>The study needs a CT image and an aortic lumen label: segment the aorta first.</source>
+        <translation>Die Studie braucht ein CT-Bild und ein Label des Aortenlumens: zuerst die Aorta segmentieren.</translation>
+    </message>
+    <message>
+        <source>Segmentation Points</source>
+        <translation>Segmentierungspunkte</translation>
+    </message>
+    <message>
+        <source>Segment from points</source>
+        <translation>Aus Punkten segmentieren</translation>
+    </message>
+    <message>
+        <source>Place at least one include point inside the vessel (Place Include, then click in a slice view).</source>
+        <translation>Mindestens einen Einschlusspunkt in das Gefäß setzen (Einschluss setzen, dann in eine Schnittansicht klicken).</translation>
+    </message>
+    <message>
+        <source>Segmented %1 ml (%2 leak(s) cut)%3</source>
+        <translation>%1 ml segmentiert (%2 Leck(s) geschnitten)%3</translation>
+    </message>
+    <message>
+        <source>, replacing the label of the run before</source>
+        <translation>, ersetzt das Label des vorigen Laufs</translation>
+    </message>
+    <message>
+        <source>&amp;Research</source>
+        <translation>&amp;Forschung</translation>
+    </message>
+    <message>
+        <source>&amp;Thesis Rupture Protocol (not physiological pressures)</source>
+        <translation>&amp;Rupturprotokoll der Dissertation (keine physiologischen Drücke)</translation>
+    </message>
+    <message>
+        <source>The thrombus layer needs the AAA sac: run Vessels &gt; AAA Sac first, or set Thrombus layer to 0 in the wall mesh parameters.</source>
+        <translation>Die Thrombusschicht braucht den AAA-Sack: zuerst Gefäße &gt; AAA-Sack ausführen oder die Thrombusschicht in den Wandnetz-Parametern auf 0 setzen.</translation>
+    </message>
+    <message>
+        <source>Peak wall stress in the sac %1 kPa (99th percentile)</source>
+        <translation>Größte Wandspannung im Sack %1 kPa (99. Perzentil)</translation>
+    </message>
+    <message>
+        <source>Highest wall stress %1 kPa (no sac measured)</source>
+        <translation>Höchste Wandspannung %1 kPa (kein Sack gemessen)</translation>
+    </message>
+    <message>
+        <source>, rupture index %1</source>
+        <translation>, Rupturindex %1</translation>
+    </message>
+    <message>
+        <source>; no rupture index: give the patient&apos;s sex and family history</source>
+        <translation>; kein Rupturindex: Geschlecht und Familienanamnese des Patienten angeben</translation>
+    </message>
+    <message>
+        <source>Loading run</source>
+        <translation>Lauf wird geladen</translation>
+    </message>
+    <message>
+        <source>Click or drag to go to a frame</source>
+        <translation>Klicken oder ziehen, um zu einem Bild zu gehen</translation>
+    </message>
+    <message>
+        <source>Run Player</source>
+        <translation>Laufwiedergabe</translation>
+    </message>
+    <message>
+        <source>Run Player: %1</source>
+        <translation>Laufwiedergabe: %1</translation>
+    </message>
+    <message>
+        <source>peak (fastest 5 %)</source>
+        <translation>Spitze (schnellste 5 %)</translation>
+    </message>
+    <message>
+        <source>mean (flow rate / area)</source>
+        <translation>Mittel (Flussrate / Fläche)</translation>
+    </message>
+    <message>
+        <source>mean pressure</source>
+        <translation>mittlerer Druck</translation>
+    </message>
+    <message>
+        <source>along the centerline from the inlet (mm)</source>
+        <translation>entlang der Mittellinie vom Einlass (mm)</translation>
+    </message>
+    <message>
+        <source>velocity (m/s), time-averaged sections</source>
+        <translation>Geschwindigkeit (m/s), zeitgemittelte Schnitte</translation>
+    </message>
+    <message>
+        <source>pressure (Pa, gauge), time-averaged</source>
+        <translation>Druck (Pa, relativ), zeitgemittelt</translation>
+    </message>
+    <message>
+        <source>peak</source>
+        <translation>Spitze</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>segments</source>
+        <translation>Segmente</translation>
+    </message>
+    <message>
+        <source>blood particles</source>
+        <translation>Blutpartikel</translation>
+    </message>
+    <message>
+        <source>voxels</source>
+        <translation>Voxel</translation>
+    </message>
+    <message>
+        <source>cells</source>
+        <translation>Zellen</translation>
+    </message>
+    <message>
+        <source>%1 over the %2 of each frame</source>
+        <translation>%1 über die %2 jedes Bildes</translation>
+    </message>
+    <message>
+        <source>Voxel-grid frames are drawn in the slice views only</source>
+        <translation>Bilder auf dem Voxelgitter werden nur in den Schnittansichten gezeichnet</translation>
+    </message>
+    <message>
+        <source>&amp;Layout</source>
+        <translation>&amp;Layout</translation>
+    </message>
+    <message>
+        <source>2 x 2</source>
+        <translation>2 x 2</translation>
+    </message>
+    <message>
+        <source>1 x 1 (the active view)</source>
+        <translation>1 x 1 (die aktive Ansicht)</translation>
+    </message>
+    <message>
+        <source>1 x 3 (axial, coronal, sagittal)</source>
+        <translation>1 x 3 (axial, koronal, sagittal)</translation>
+    </message>
+    <message>
+        <source>3D + MPR</source>
+        <translation>3D + MPR</translation>
+    </message>
+    <message>
+        <source>3D + CPR (along the vessel)</source>
+        <translation>3D + CPR (entlang des Gefäßes)</translation>
+    </message>
+    <message>
+        <source>&amp;Capture</source>
+        <translation>&amp;Aufnahme</translation>
+    </message>
+    <message>
+        <source>Screenshot of the Active &amp;View</source>
+        <translation>Bildschirmfoto der aktiven &amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+S</source>
+        <comment>screenshot of the view</comment>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <source>Screenshot of the &amp;Window</source>
+        <translation>Bildschirmfoto des &amp;Fensters</translation>
+    </message>
+    <message>
+        <source>Movie of the 3D &amp;Rotation</source>
+        <translation>Film der 3D-&amp;Drehung</translation>
+    </message>
+    <message>
+        <source>Movie of the Played &amp;Run</source>
+        <translation>Film des abgespielten &amp;Laufs</translation>
+    </message>
+    <message>
+        <source>Capture &amp;Folder...</source>
+        <translation>Aufnahme&amp;ordner...</translation>
+    </message>
+    <message>
+        <source>Capture folder</source>
+        <translation>Aufnahmeordner</translation>
+    </message>
+    <message>
+        <source>Screenshot saved: %1</source>
+        <translation>Bildschirmfoto gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Screenshot</source>
+        <translation>Bildschirmfoto</translation>
+    </message>
+    <message>
+        <source>Movie</source>
+        <translation>Film</translation>
+    </message>
+    <message>
+        <source>Open a run first (double-click it in the study tree): the movie plays its frames.</source>
+        <translation>Zuerst einen Lauf öffnen (Doppelklick im Studienbaum): der Film spielt seine Bilder.</translation>
+    </message>
+    <message>
+        <source>Writing the movie frames...</source>
+        <translation>Die Filmbilder werden geschrieben...</translation>
+    </message>
+    <message>
+        <source>Movie cancelled: its frames were removed</source>
+        <translation>Film abgebrochen: seine Bilder wurden entfernt</translation>
+    </message>
+    <message>
+        <source>Movie saved: %1 frames in %2%3</source>
+        <translation>Film gespeichert: %1 Bilder in %2%3</translation>
+    </message>
+    <message>
+        <source>Ruler</source>
+        <translation>Lineal</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>ROI</source>
+        <translation>ROI</translation>
+    </message>
+    <message>
+        <source>&amp;Measure</source>
+        <translation>&amp;Messen</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Messen</translation>
+    </message>
+    <message>
+        <source>&amp;Ruler</source>
+        <translation>&amp;Lineal</translation>
+    </message>
+    <message>
+        <source>Distance (mm): press at one end in a slice view, drag to the other, release</source>
+        <translation>Abstand (mm): in einer Schnittansicht an einem Ende drücken, zum anderen ziehen, loslassen</translation>
+    </message>
+    <message>
+        <source>&amp;Angle</source>
+        <translation>&amp;Winkel</translation>
+    </message>
+    <message>
+        <source>Angle (degrees): click the first arm&apos;s end, the vertex, then the second arm&apos;s end</source>
+        <translation>Winkel (Grad): das Ende des ersten Schenkels, den Scheitel, dann das Ende des zweiten Schenkels anklicken</translation>
+    </message>
+    <message>
+        <source>Elliptical R&amp;OI</source>
+        <translation>Elliptische R&amp;OI</translation>
+    </message>
+    <message>
+        <source>HU mean, SD and area (mm2) inside an ellipse: press at a corner of its box, drag, release</source>
+        <translation>HU-Mittelwert, SD und Fläche (mm2) in einer Ellipse: an einer Ecke ihres Rahmens drücken, ziehen, loslassen</translation>
+    </message>
+    <message>
+        <source> (Escape drops a drawing; the tool stays until clicked again)</source>
+        <translation> (Escape verwirft eine Zeichnung; das Werkzeug bleibt, bis es erneut angeklickt wird)</translation>
+    </message>
+    <message>
+        <source>&amp;Include the Selected Measurement in the Report</source>
+        <translation>Ausgewählte Messung in den Bericht &amp;aufnehmen</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2: %3</translation>
+    </message>
+    <message>
+        <source>Measure %1</source>
+        <translation>Messung %1</translation>
+    </message>
+    <message>
+        <source>Include &quot;%1&quot; in the report</source>
+        <translation>„%1“ in den Bericht aufnehmen</translation>
+    </message>
+    <message>
+        <source>Leave &quot;%1&quot; out of the report</source>
+        <translation>„%1“ aus dem Bericht nehmen</translation>
+    </message>
+    <message>
+        <source>Along the vessel</source>
+        <translation>Entlang des Gefäßes</translation>
+    </message>
+    <message>
+        <source>The vessel view follows a centerline: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>Die Gefäßansicht folgt einer Mittellinie: zuerst Skelett &amp;&amp; Mittellinien ausführen.</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::ParameterForm</name>
+    <message>
+        <source>%1 to %2%3, default %4%3</source>
+        <translation>%1 bis %2%3, Standard %4%3</translation>
     </message>
 </context>
 <context>
     <name>vsim::gui::ReportExportDialog</name>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="17"/>
         <source>Export Report</source>
         <translation>Bericht exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="19"/>
         <source>Browse...</source>
         <translation>Durchsuchen...</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="21"/>
         <source>Report</source>
         <translation>Bericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="21"/>
         <source>PDF (*.pdf)</source>
         <translation>PDF (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="29"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="30"/>
         <source>Letter</source>
         <translation>Letter</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="31"/>
         <source>Anonymize (no patient name, ID, birth date or institution)</source>
         <translation>Anonymisieren (ohne Patientenname, ID, Geburtsdatum und Einrichtung)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="32"/>
         <source>Also as DICOM Encapsulated PDF (a new series of the study)</source>
         <translation>Auch als DICOM Encapsulated PDF (eine neue Serie der Studie)</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="33"/>
         <source>Also the metrics as CSV and JSON</source>
         <translation>Auch die Kennzahlen als CSV und JSON</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="35"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="39"/>
         <source>PDF file:</source>
         <translation>PDF-Datei:</translation>
     </message>
     <message>
-        <location filename="../app/gui/ReportExportDialog.cpp" line="40"/>
         <source>Paper:</source>
         <translation>Papier:</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::RunPlayer</name>
+    <message>
+        <source>Loop</source>
+        <translation>Schleife</translation>
+    </message>
+    <message>
+        <source>Range per frame</source>
+        <translation>Skala je Bild</translation>
+    </message>
+    <message>
+        <source>Previous frame</source>
+        <translation>Vorheriges Bild</translation>
+    </message>
+    <message>
+        <source>Next frame</source>
+        <translation>Nächstes Bild</translation>
+    </message>
+    <message>
+        <source>Play / pause</source>
+        <translation>Abspielen / Pause</translation>
+    </message>
+    <message>
+        <source>Playback speed (1x = %1 frames per second)</source>
+        <translation>Wiedergabegeschwindigkeit (1x = %1 Bilder je Sekunde)</translation>
+    </message>
+    <message>
+        <source>The field the frames are coloured by</source>
+        <translation>Das Feld, nach dem die Bilder eingefärbt werden</translation>
+    </message>
+    <message>
+        <source>Scale the legend to each frame instead of the whole run</source>
+        <translation>Die Legende an jedes Bild statt an den ganzen Lauf anpassen</translation>
+    </message>
+    <message>
+        <source>no frames</source>
+        <translation>keine Bilder</translation>
+    </message>
+    <message>
+        <source>frame %1 / %2, %3 %4 %5</source>
+        <translation>Bild %1 / %2, %3 %4 %5</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::SegmentationPointsPanel</name>
+    <message>
+        <source>Aorta (with its branches)</source>
+        <translation>Aorta (mit ihren Ästen)</translation>
+    </message>
+    <message>
+        <source>Hepatic arteries</source>
+        <translation>Leberarterien</translation>
+    </message>
+    <message>
+        <source>All vessels from the points</source>
+        <translation>Alle Gefäße von den Punkten</translation>
+    </message>
+    <message>
+        <source>Aorta: every aortic segment with its branches to a length (no point needed: the abdominal aorta is found). Hepatic: a point in the aorta and one in the hepatic artery. All: every contrast vessel connected to the points, up to the path length.</source>
+        <translation>Aorta: jedes Aortensegment mit seinen Ästen bis zu einer Länge (kein Punkt nötig: die Bauchaorta wird gefunden). Hepatisch: ein Punkt in der Aorta und einer in der A. hepatica. Alle: jedes kontrastierte Gefäß, das mit den Punkten verbunden ist, bis zur Weglänge.</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>target&apos;s default</source>
+        <translation>Standard des Ziels</translation>
+    </message>
+    <message>
+        <source>Path length followed from the include points (0: aorta 1000 mm, hepatic 250 mm, all 150 mm)</source>
+        <translation>Von den Einschlusspunkten verfolgte Weglänge (0: Aorta 1000 mm, hepatisch 250 mm, alle 150 mm)</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Weglänge</translation>
+    </message>
+    <message>
+        <source>Place Include</source>
+        <translation>Einschluss setzen</translation>
+    </message>
+    <message>
+        <source>Place Exclude</source>
+        <translation>Ausschluss setzen</translation>
+    </message>
+    <message>
+        <source>Click inside the vessel in any slice view to add an include point (drag a point to move it)</source>
+        <translation>In einer Schnittansicht in das Gefäß klicken, um einen Einschlusspunkt hinzuzufügen (einen Punkt ziehen, um ihn zu verschieben)</translation>
+    </message>
+    <message>
+        <source>Click in what must stay out (heart chamber, vein, kidney, bone) to add an exclude point</source>
+        <translation>In das klicken, was draußen bleiben muss (Herzkammer, Vene, Niere, Knochen), um einen Ausschlusspunkt hinzuzufügen</translation>
+    </message>
+    <message>
+        <source>Place Stop</source>
+        <translation>Stopp setzen</translation>
+    </message>
+    <message>
+        <source>Click in a slice view where the vessel must end: a stop plane in that view&apos;s plane through the point; the fronts do not cross it away from the include points</source>
+        <translation>In einer Schnittansicht dort klicken, wo das Gefäß enden muss: eine Stoppebene in der Ebene dieser Ansicht durch den Punkt; die Fronten überqueren sie nicht, von den Einschlusspunkten weg</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>z (mm)</source>
+        <translation>z (mm)</translation>
+    </message>
+    <message>
+        <source>+N include point, xN exclude point, |N stop plane (its normal in the tag&apos;s tooltip)</source>
+        <translation>+N Einschlusspunkt, xN Ausschlusspunkt, |N Stoppebene (ihre Normale im Tooltip der Marke)</translation>
+    </message>
+    <message>
+        <source>Patient frame (LPS), mm</source>
+        <translation>Patientenkoordinaten (LPS), mm</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the selected point</source>
+        <translation>Den ausgewählten Punkt entfernen</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Segment from the points (a re-run replaces the label of the run before)</source>
+        <translation>Aus den Punkten segmentieren (ein erneuter Lauf ersetzt das Label des vorigen)</translation>
+    </message>
+    <message>
+        <source>Re-run when a point moves</source>
+        <translation>Neu ausführen, wenn sich ein Punkt bewegt</translation>
+    </message>
+    <message>
+        <source>Stop plane, normal (%1, %2, %3) towards the side the fronts do not enter</source>
+        <translation>Stoppebene, Normale (%1, %2, %3) zu der Seite, die die Fronten nicht betreten</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <comment>verb: segment the vessels</comment>
+        <translation>Segmentieren</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::VesselViewPanel</name>
+    <message>
+        <source>The centerline segment shown along its length</source>
+        <translation>Das entlang seiner Länge gezeigte Mittelliniensegment</translation>
+    </message>
+    <message>
+        <source>Rotation of the curved reformation about the centerline (degrees)</source>
+        <translation>Drehung der gekrümmten Reformation um die Mittellinie (Grad)</translation>
+    </message>
+    <message>
+        <source>distance along the centerline (mm)</source>
+        <translation>Abstand entlang der Mittellinie (mm)</translation>
+    </message>
+    <message>
+        <source>lumen diameter (mm)</source>
+        <translation>Lumendurchmesser (mm)</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>Rotation</source>
+        <translation>Drehung</translation>
+    </message>
+    <message>
+        <source>segment %1</source>
+        <translation>Segment %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2 mm)</source>
+        <translation>%1 (%2 mm)</translation>
+    </message>
+    <message>
+        <source>lumen equivalent diameter (measured sections)</source>
+        <translation>Äquivalenter Lumendurchmesser (gemessene Schnitte)</translation>
+    </message>
+    <message>
+        <source>lumen diameter (2 x the centerline&apos;s radius: reads low)</source>
+        <translation>Lumendurchmesser (2 x Radius der Mittellinie: misst zu niedrig)</translation>
+    </message>
+    <message>
+        <source>Straightened CPR, %1 deg
+%2 mm of centerline</source>
+        <translation>Gestreckte CPR, %1 Grad
+%2 mm Mittellinie</translation>
+    </message>
+    <message>
+        <source>Perpendicular to the centerline at %1 mm
+lumen %2 mm (circle: %3)</source>
+        <translation>Senkrecht zur Mittellinie bei %1 mm
+Lumen %2 mm (Kreis: %3)</translation>
+    </message>
+    <message>
+        <source>equivalent diameter of the measured section</source>
+        <translation>äquivalenter Durchmesser des gemessenen Schnitts</translation>
+    </message>
+    <message>
+        <source>2 x the centerline&apos;s radius, which reads low; run the measurements</source>
+        <translation>2 x Radius der Mittellinie, der zu niedrig misst; die Messungen ausführen</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::WorkflowChecklist</name>
+    <message>
+        <source>Import a CT angiography series (DICOM folder or volume file).</source>
+        <translation>Eine CT-Angiographie-Serie importieren (DICOM-Ordner oder Volumendatei).</translation>
+    </message>
+    <message>
+        <source>Segment the contrast-filled vessel lumen (automatic seed).</source>
+        <translation>Das kontrastierte Gefäßlumen segmentieren (automatischer Saatpunkt).</translation>
+    </message>
+    <message>
+        <source>Skeleton (VDSM) and centerlines of the lumen, with diameters in mm.</source>
+        <translation>Skelett (VDSM) und Mittellinien des Lumens, mit Durchmessern in mm.</translation>
+    </message>
+    <message>
+        <source>Tetrahedral wall mesh around the lumen (wall and thrombus thickness in mm).</source>
+        <translation>Tetraeder-Wandnetz um das Lumen (Wand- und Thrombusdicke in mm).</translation>
+    </message>
+    <message>
+        <source>Wall stress (kPa) at physiological blood pressure, converged or marked so.</source>
+        <translation>Wandspannung (kPa) bei physiologischem Blutdruck, konvergiert oder so markiert.</translation>
+    </message>
+    <message>
+        <source>Blood flow (SPH): velocity ratios and wall pressure along the centerline.</source>
+        <translation>Blutfluss (SPH): Geschwindigkeitsverhältnisse und Wanddruck entlang der Mittellinie.</translation>
+    </message>
+    <message>
+        <source>Drug delivery: perfused territory, tumour coverage and feeders for the catheter tip of the Drug Delivery dock.</source>
+        <translation>Wirkstoffgabe: perfundiertes Gebiet, Tumorabdeckung und Zuflüsse für die Katheterspitze im Dock Wirkstoffgabe.</translation>
+    </message>
+    <message>
+        <source>Export the PDF report of the study&apos;s results.</source>
+        <translation>Den PDF-Bericht der Ergebnisse der Studie exportieren.</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <source>Skeleton &amp; Centerlines</source>
+        <translation>Skelett &amp; Mittellinien</translation>
+    </message>
+    <message>
+        <source>Wall Mesh</source>
+        <translation>Wandnetz</translation>
+    </message>
+    <message>
+        <source>Wall Stress</source>
+        <translation>Wandspannung</translation>
+    </message>
+    <message>
+        <source>Blood Flow</source>
+        <translation>Blutfluss</translation>
+    </message>
+    <message>
+        <source>Drug Delivery</source>
+        <translation>Wirkstoffgabe</translation>
+    </message>
+    <message>
+        <source>Report</source>
+        <translation>Bericht</translation>
+    </message>
+    <message>
+        <source>not run</source>
+        <translation>nicht ausgeführt</translation>
+    </message>
+    <message>
+        <source>done: %1</source>
+        <translation>erledigt: %1</translation>
+    </message>
+    <message>
+        <source>stale: %1 was made from %2, which %3 has replaced since; run the step again</source>
+        <translation>veraltet: %1 wurde aus %2 erstellt, das %3 inzwischen ersetzt hat; den Schritt erneut ausführen</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>erledigt</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>veraltet</translation>
+    </message>
+    <message>
+        <source>%1  (%2)</source>
+        <translation>%1  (%2)</translation>
+    </message>
+    <message>
+        <source>State: %1</source>
+        <translation>Zustand: %1</translation>
+    </message>
+    <message>
+        <source>Click to run.</source>
+        <translation>Klicken zum Ausführen.</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <comment>verb: segment the vessels</comment>
+        <translation>Segmentieren</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::viz::SliceView</name>
+    <message>
+        <source>W %1  L %2</source>
+        <translation>F %1  L %2</translation>
+    </message>
+    <message>
+        <source>MIP slab %1 mm</source>
+        <translation>MIP-Schicht %1 mm</translation>
+    </message>
+    <message>
+        <source>Im %1/%2  %3 = %4 mm</source>
+        <translation>Bild %1/%2  %3 = %4 mm</translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3) mm</source>
+        <translation>(%1, %2, %3) mm</translation>
+    </message>
+    <message>
+        <source>%1 HU</source>
+        <translation>%1 HU</translation>
     </message>
 </context>
 </TS>

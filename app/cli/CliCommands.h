@@ -22,6 +22,8 @@ struct Arguments
 /// Each command returns the process exit code and throws vsim::Error for bad input.
 int printVersion();
 int printStudyInfo(const Arguments& arguments);
+/// `parameters [TABLE] [--json]`: the declared parameters of every step (ParametersCommand.cpp).
+int printParameters(const Arguments& arguments);
 /// `import <dir|DICOMDIR|file> --study S [--series KEY] [--list] [--memory-limit-mb N]`: DICOM, or a
 /// NIfTI / NRRD / MetaImage volume file.
 int importIntoStudy(const Arguments& arguments, const Progress& progress);

@@ -28,6 +28,11 @@ std::vector<CommandSpec> declareCommands()
     return {
         {"info", 1, 1, {}, "info <study.vsim>\n    the study's metadata and artifacts as JSON (works while another process writes it)",
          [](const Arguments& a, const Progress&) { return printStudyInfo(a); }},
+        {"parameters", 0, 1, {flag("json")},
+         "parameters [TABLE] [--json]\n"
+         "    every parameter that --param key=value and the GUI's forms take, by table (segmentation, skeleton,\n"
+         "    fem, sph, ...): default, range, unit and meaning",
+         [](const Arguments& a, const Progress&) { return printParameters(a); }},
         {"import", 1, 1, {value("study"), value("series"), flag("list"), value("memory-limit-mb"), value("rescale"),
                            flag("as-label"), value("label-value"), value("image"), kWait},
          "import <dir|DICOMDIR|file> --study <study.vsim> [--series KEY] [--list] [--memory-limit-mb N]\n"

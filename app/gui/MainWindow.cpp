@@ -227,6 +227,23 @@ void MainWindow::refreshPatientOverlay()
     m_views->setPatientText(lines.join('\n'));
 }
 
+QString MainWindow::artifactKindText(study::ArtifactKind kind)
+{
+    switch (kind)
+    {
+    case study::ArtifactKind::Image: return tr("image");
+    case study::ArtifactKind::Label: return tr("label");
+    case study::ArtifactKind::Surface: return tr("surface");
+    case study::ArtifactKind::TetMesh: return tr("volume mesh");
+    case study::ArtifactKind::Skeleton: return tr("skeleton");
+    case study::ArtifactKind::Network: return tr("network");
+    case study::ArtifactKind::Report: return tr("report");
+    case study::ArtifactKind::Run: return tr("run");
+    case study::ArtifactKind::Measurement: return tr("measurement");
+    }
+    return QString::fromStdString(study::kindName(kind));
+}
+
 void MainWindow::refreshArtifactTree()
 {
     const QSignalBlocker quiet(m_artifactTree); // the check boxes are set here, not by the user
@@ -239,7 +256,7 @@ void MainWindow::refreshArtifactTree()
         item->setText(0, QString::fromStdString(artifact.name));
         if (isShowable(artifact))
             item->setCheckState(0, isArtifactShown(artifact.id) ? Qt::Checked : Qt::Unchecked);
-        item->setText(1, QString::fromStdString(study::kindName(artifact.kind)));
+        item->setText(1, artifactKindText(artifact.kind));
         item->setData(0, Qt::UserRole, QString::fromStdString(artifact.id));
         if (artifact.damaged)
         {

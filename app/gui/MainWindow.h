@@ -255,6 +255,8 @@ private:
     void createDrugMenu();
     void createFlowMenu();
     void createLayoutAndCaptureMenus(QMenu* view);
+    /// View > Language: the system's, English, Deutsch, 简体中文 (Languages.h).
+    void createLanguageMenu(QMenu* view);
     void createMeasureMenu();
     /// The study's shown measurement artifacts drawn in the slice views.
     void refreshViewMeasurements();
@@ -288,6 +290,8 @@ private:
     void createDocks();
     void createStatusBar();
     void refreshArtifactTree();
+    /// An artifact kind as the study tree names it, in the chosen language.
+    static QString artifactKindText(study::ArtifactKind kind);
     void refreshTitle();
     /// Patient, study and series in the slice views' corner.
     void refreshPatientOverlay();

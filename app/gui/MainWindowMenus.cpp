@@ -2,6 +2,7 @@
 #include "ArtifactCommands.h"
 #include "FileLocations.h"
 #include "HelpWindow.h"
+#include "Languages.h"
 #include "MainWindow.h"
 #include "ViewLayout.h"
 #include "vsim/app/VersionInfo.h"
@@ -16,6 +17,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTreeWidget>
 #include <QWhatsThis>
 
@@ -153,6 +155,8 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(tr("3D: &Anterior View"), this, [this] { m_views->volumeView()->showAnteriorView(); });
     view->addSeparator();
+    createLanguageMenu(view);
+    view->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         view->addAction(dock->toggleViewAction());
 
@@ -163,6 +167,27 @@ void MainWindow::createMenus()
     help->addAction(QWhatsThis::createAction(this));
     help->addSeparator();
     help->addAction(tr("&About VascuSim"), this, &MainWindow::showAbout);
+}
+
+void MainWindow::createLanguageMenu(QMenu* view)
+{
+    QMenu* languages = view->addMenu(tr("&Language"));
+    languages->setObjectName("languageMenu");
+    auto* choices = new QActionGroup(languages);
+    QStringList codes{QString(), "en"};
+    codes << translatedLanguages();
+    for (const QString& code : codes)
+    {
+        QAction* choice = languages->addAction(code.isEmpty() ? tr("System Language") : nativeLanguageName(code));
+        choice->setObjectName("language_" + (code.isEmpty() ? QStringLiteral("system") : code));
+        choice->setCheckable(true);
+        choice->setChecked(code == chosenLanguage());
+        choices->addAction(choice);
+        connect(choice, &QAction::triggered, this, [this, code] {
+            setChosenLanguage(code);
+            statusBar()->showMessage(tr("The language changes when VascuSim starts next."), 8000);
+        });
+    }
 }
 
 HelpWindow* MainWindow::showHelp(const QString& section)

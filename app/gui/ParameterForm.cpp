@@ -1,5 +1,6 @@
 #include "ParameterForm.h"
 
+#include <QCoreApplication>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -16,6 +17,22 @@
 
 namespace vsim::gui {
 
+QString parameterText(const std::string& english)
+{
+    return QCoreApplication::translate("vsim::Parameters", english.c_str());
+}
+
+QString parameterToolTip(const ParameterSpec& spec)
+{
+    const QString unit = spec.unit.empty() ? QString() : " " + QString::fromStdString(spec.unit);
+    const QString range = QCoreApplication::translate("vsim::gui::ParameterForm", "%1 to %2%3, default %4%3")
+                              .arg(numberText(spec.minimum).c_str(), numberText(spec.maximum).c_str(), unit,
+                                   numberText(spec.defaultValue).c_str());
+    return QStringLiteral("<p><b>%1</b> (%2)</p><p>%3</p><p><tt>%4</tt></p>")
+        .arg(parameterText(spec.label).toHtmlEscaped(), range.toHtmlEscaped(),
+             parameterText(spec.description).toHtmlEscaped(), QString::fromStdString(spec.key));
+}
+
 ParameterForm::ParameterForm(const ParameterSet& initial, QWidget* parent)
     : QWidget(parent), m_declared(initial.specs())
 {
@@ -26,7 +43,7 @@ ParameterForm::ParameterForm(const ParameterSet& initial, QWidget* parent)
         QFormLayout*& form = groups[spec.group];
         if (!form)
         {
-            auto* box = new QGroupBox(QString::fromStdString(spec.group), this);
+            auto* box = new QGroupBox(parameterText(spec.group), this);
             form = new QFormLayout(box);
             layout->addWidget(box);
         }
@@ -52,8 +69,8 @@ ParameterForm::ParameterForm(const ParameterSet& initial, QWidget* parent)
             field = box;
         }
         field->setObjectName(QString::fromStdString(spec.key));
-        field->setToolTip(QString::fromStdString(spec.description));
-        form->addRow(QString::fromStdString(spec.label), field);
+        field->setToolTip(parameterToolTip(spec));
+        form->addRow(parameterText(spec.label), field);
         m_fields[spec.key] = field;
     }
     layout->addStretch();

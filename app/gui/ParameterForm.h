@@ -13,6 +13,12 @@ class QAbstractSpinBox;
 
 namespace vsim::gui {
 
+/// A parameter table's label, group or description (Parameters.h) in the chosen language (context
+/// "vsim::Parameters"; translations/ParameterTexts.cpp lists them for lupdate).
+QString parameterText(const std::string& english);
+/// A parameter field's tooltip: label, range with unit, default, the description and the --param key.
+QString parameterToolTip(const ParameterSpec& spec);
+
 /// A form built from parameter declarations (ParameterSpec): one group box per group, one spin box per
 /// parameter with its unit, range and description (tooltip). Values are checked by the declarations' ranges.
 class ParameterForm : public QWidget

@@ -94,7 +94,7 @@ SegmentationPointsPanel::SegmentationPointsPanel(QWidget* parent) : QWidget(pare
         m_stops.clear();
         refreshTable();
     });
-    m_segment = new QPushButton(tr("Segment"), this);
+    m_segment = new QPushButton(tr("Segment", "verb: segment the vessels"), this);
     m_segment->setDefault(true);
     m_segment->setToolTip(tr("Segment from the points (a re-run replaces the label of the run before)"));
     connect(m_segment, &QPushButton::clicked, this, &SegmentationPointsPanel::runRequested);

@@ -62,7 +62,7 @@ QString WorkflowChecklist::stepName(app::WorkflowStep step)
     switch (step)
     {
     case app::WorkflowStep::Import: return tr("Import");
-    case app::WorkflowStep::Segment: return tr("Segment");
+    case app::WorkflowStep::Segment: return tr("Segment", "verb: segment the vessels");
     case app::WorkflowStep::Centerlines: return tr("Skeleton & Centerlines");
     case app::WorkflowStep::WallMesh: return tr("Wall Mesh");
     case app::WorkflowStep::WallStress: return tr("Wall Stress");

@@ -1,14 +1,13 @@
 // vascusim: the workstation. `vascusim [study.vsim]` opens a study; `vascusim --demo` opens the built-in demo
 // study (written on first use under ~/.local/share/VascuSim).
+#include "Languages.h"
 #include "MainWindow.h"
 #include "vsim/app/DemoStudy.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QLocale>
 #include <QProgressDialog>
 #include <QSurfaceFormat>
-#include <QTranslator>
 
 #include <iostream>
 
@@ -25,9 +24,7 @@ int main(int argc, char** argv)
     QApplication application(argc, argv);
     QApplication::setOrganizationName("VascuSim");
     QApplication::setApplicationName("VascuSim");
-    QTranslator translator;
-    if (translator.load(QLocale(), "vascusim", "_", ":/i18n"))
-        QApplication::installTranslator(&translator);
+    vsim::gui::installLanguage(vsim::gui::chosenLanguage());
 
     QCommandLineParser parser;
     parser.setApplicationDescription("VascuSim clinical planning workstation");

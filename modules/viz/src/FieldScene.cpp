@@ -1,4 +1,5 @@
 #include "FieldScene.h"
+#include "TextFonts.h"
 
 #include "vsim/core/Error.h"
 #include "vsim/interop/VtkMesh.h"
@@ -123,6 +124,7 @@ std::vector<vtkSmartPointer<vtkProp>> calloutProps(const std::vector<Callout>& c
         vtkTextProperty* text = caption->GetCaptionTextProperty();
         text->SetColor(0.0, 0.0, 0.0);
         text->SetFontSize(fontSize);
+        fitFontToText(text, QString::fromStdString(callouts[m].text));
         text->ShadowOff();
         text->ItalicOff();
         text->BoldOn();

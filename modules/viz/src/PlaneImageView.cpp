@@ -1,4 +1,5 @@
 #include "vsim/viz/PlaneImageView.h"
+#include "TextFonts.h"
 
 #include <QMouseEvent>
 #include <QWheelEvent>
@@ -91,7 +92,7 @@ void PlaneImageView::setWindowLevel(const WindowLevel& windowLevel)
 void PlaneImageView::setCaption(const QString& text)
 {
     m_caption = text;
-    m_pipeline->caption->SetInput(text.toUtf8().constData());
+    setActorText(m_pipeline->caption, text);
     update();
 }
 

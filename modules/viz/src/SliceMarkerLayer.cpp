@@ -1,4 +1,5 @@
 #include "SliceMarkerLayer.h"
+#include "TextFonts.h"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -81,7 +82,7 @@ void SliceMarkerLayer::update(const Eigen::Vector3d& cursorMm, const ScreenAxes&
         if (marker.text.empty())
             continue;
         auto text = vtkSmartPointer<vtkTextActor>::New();
-        text->SetInput(marker.text.c_str());
+        setActorText(text, QString::fromStdString(marker.text));
         text->GetTextProperty()->SetFontSize(int(std::lround(13 * m_pixelScale)));
         text->GetTextProperty()->SetColor(marker.rgb[0], marker.rgb[1], marker.rgb[2]);
         text->GetPositionCoordinate()->SetCoordinateSystemToWorld();

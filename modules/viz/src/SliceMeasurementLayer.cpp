@@ -1,4 +1,5 @@
 #include "SliceMeasurementLayer.h"
+#include "TextFonts.h"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -81,7 +82,7 @@ void SliceMeasurementLayer::update(const Eigen::Vector3d& originMm, const Screen
         if (text.empty())
             return;
         auto label = vtkSmartPointer<vtkTextActor>::New();
-        label->SetInput(text.c_str());
+        setActorText(label, QString::fromStdString(text));
         label->GetTextProperty()->SetFontSize(int(std::lround(12 * m_pixelScale)));
         label->GetTextProperty()->SetColor(kColour[0], kColour[1], kColour[2]);
         label->GetPositionCoordinate()->SetCoordinateSystemToWorld();

@@ -1,4 +1,5 @@
 #include "SliceOverlayLayer.h"
+#include "TextFonts.h"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -147,7 +148,7 @@ void SliceOverlayLayer::setPixelScale(double scale)
 void SliceOverlayLayer::setCornerText(Qt::Corner corner, const QString& text)
 {
     m_cornerTexts[std::size_t(corner)] = text;
-    m_corners[std::size_t(corner)]->SetInput(text.toUtf8().constData());
+    setActorText(m_corners[std::size_t(corner)], text);
 }
 
 } // namespace vsim::viz

@@ -1,4 +1,5 @@
 #include "vsim/viz/Snapshot.h"
+#include "TextFonts.h"
 
 #include "FieldScene.h"
 #include "vsim/core/Error.h"
@@ -42,6 +43,7 @@ QImage render(vtkPolyData* polyData, bool cellScalars, const SnapshotColouring& 
     renderer->AddActor(actor);
     vtkSmartPointer<vtkScalarBarActor> legend = detail::newLegend();
     legend->SetLookupTable(mapper->GetLookupTable());
+    fitFontToText(legend->GetTitleTextProperty(), QString::fromStdString(colouring.legendTitle));
     legend->SetTitle(colouring.legendTitle.c_str());
     const int fontSize = std::max(12, pixels.height() / 40);
     for (vtkTextProperty* text : {legend->GetTitleTextProperty(), legend->GetLabelTextProperty()})

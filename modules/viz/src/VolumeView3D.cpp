@@ -1,4 +1,5 @@
 #include "vsim/viz/VolumeView3D.h"
+#include "TextFonts.h"
 
 #include "FieldScene.h"
 
@@ -56,6 +57,7 @@ void showLegendIn(vtkRenderer* renderer, vtkSmartPointer<vtkScalarBarActor>& leg
         renderer->AddViewProp(legend);
     }
     legend->SetLookupTable(table);
+    fitFontToText(legend->GetTitleTextProperty(), title);
     legend->SetTitle(title.toUtf8().constData());
     legend->SetVisibility(true);
 }

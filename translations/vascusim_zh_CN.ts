@@ -1,0 +1,3436 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Writing the demo study (aaa phantom)...</source>
+        <translation>正在写入演示研究（AAA 体模）...</translation>
+    </message>
+    <message>
+        <source>Rename &quot;%1&quot;</source>
+        <translation>重命名“%1”</translation>
+    </message>
+    <message>
+        <source>Name segment %1 &quot;%2&quot;</source>
+        <translation>命名段 %1“%2”</translation>
+    </message>
+    <message>
+        <source>Delete &quot;%1&quot;</source>
+        <translation>删除“%1”</translation>
+    </message>
+    <message>
+        <source>cannot be placed</source>
+        <translation>无法放置</translation>
+    </message>
+    <message>
+        <source>Paint label</source>
+        <translation>绘制标签</translation>
+    </message>
+    <message>
+        <source>Erase label</source>
+        <translation>擦除标签</translation>
+    </message>
+    <message>
+        <source>Remove island</source>
+        <translation>移除孤岛</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::Parameters</name>
+    <message>
+        <source>Layer 1: window and region growing</source>
+        <translation>第 1 层：窗口与区域生长</translation>
+    </message>
+    <message>
+        <source>Lowest contrast HU</source>
+        <translation>最低对比 HU</translation>
+    </message>
+    <message>
+        <source>Lowest HU of contrast-filled blood; kidneys and tumour blush (about 150 HU) stay below.</source>
+        <translation>充盈造影剂血液的最低 HU；肾脏和肿瘤染色（约 150 HU）低于此值。</translation>
+    </message>
+    <message>
+        <source>Highest contrast HU</source>
+        <translation>最高对比 HU</translation>
+    </message>
+    <message>
+        <source>Highest HU of contrast-filled blood; bone and calcium above it are excluded.</source>
+        <translation>充盈造影剂血液的最高 HU；高于此值的骨骼和钙化被排除。</translation>
+    </message>
+    <message>
+        <source>Denoising sigma</source>
+        <translation>去噪 sigma</translation>
+    </message>
+    <message>
+        <source>Recursive Gaussian applied before thresholding (noise and partial volume).</source>
+        <translation>阈值化之前施加的递归高斯滤波（噪声与部分容积）。</translation>
+    </message>
+    <message>
+        <source>Boundary level</source>
+        <translation>边界水平</translation>
+    </message>
+    <message>
+        <source>Boundary HU = tissue + fraction x (blood - tissue); 0.5 is the partial-volume half level.</source>
+        <translation>边界 HU = 组织 + 比例 x（血液 - 组织）；0.5 为部分容积的半高水平。</translation>
+    </message>
+    <message>
+        <source>Automatic seed erosion</source>
+        <translation>自动种子腐蚀</translation>
+    </message>
+    <message>
+        <source>The automatic seed lies in the largest bright component left after eroding this much (thick tubes).</source>
+        <translation>自动种子位于腐蚀此量后剩余的最大亮连通区内（粗管）。</translation>
+    </message>
+    <message>
+        <source>Region margin</source>
+        <translation>区域边距</translation>
+    </message>
+    <message>
+        <source>Margin around the vessels found coarsely, inside which the fine layers work.</source>
+        <translation>粗略找到的血管周围的边距，精细层在其中工作。</translation>
+    </message>
+    <message>
+        <source>Layer 2: vesselness</source>
+        <translation>第 2 层：血管性</translation>
+    </message>
+    <message>
+        <source>Vesselness threshold</source>
+        <translation>血管性阈值</translation>
+    </message>
+    <message>
+        <source>Relative Frangi vesselness above which thin branches are added (0 turns layer 2 off).</source>
+        <translation>相对 Frangi 血管性，高于此值时加入细分支（0 关闭第 2 层）。</translation>
+    </message>
+    <message>
+        <source>Smallest vessel scale</source>
+        <translation>最小血管尺度</translation>
+    </message>
+    <message>
+        <source>Smallest Hessian scale.</source>
+        <translation>最小 Hessian 尺度。</translation>
+    </message>
+    <message>
+        <source>Largest vessel scale</source>
+        <translation>最大血管尺度</translation>
+    </message>
+    <message>
+        <source>Largest Hessian scale.</source>
+        <translation>最大 Hessian 尺度。</translation>
+    </message>
+    <message>
+        <source>Vesselness scales</source>
+        <translation>血管性尺度数</translation>
+    </message>
+    <message>
+        <source>Number of Hessian scales.</source>
+        <translation>Hessian 尺度的数量。</translation>
+    </message>
+    <message>
+        <source>Layer 3: level set</source>
+        <translation>第 3 层：水平集</translation>
+    </message>
+    <message>
+        <source>Level-set steps</source>
+        <translation>水平集步数</translation>
+    </message>
+    <message>
+        <source>Steps of the threshold level set that moves the boundary onto the boundary level (0 turns layer 3 off).</source>
+        <translation>阈值水平集将边界移动到边界水平的步数（0 关闭第 3 层）。</translation>
+    </message>
+    <message>
+        <source>Level-set curvature weight</source>
+        <translation>水平集曲率权重</translation>
+    </message>
+    <message>
+        <source>Weight of the curvature (smoothing) term against the contrast term; large values shrink thin vessels.</source>
+        <translation>曲率（平滑）项相对于对比项的权重；大值会使细血管收缩。</translation>
+    </message>
+    <message>
+        <source>Layer 4: refinement and clean-up</source>
+        <translation>第 4 层：细化与清理</translation>
+    </message>
+    <message>
+        <source>Bone margin</source>
+        <translation>骨骼边距</translation>
+    </message>
+    <message>
+        <source>Voxels this close to bone or calcium (above the highest contrast HU) are removed.</source>
+        <translation>距骨骼或钙化（高于最高对比 HU）如此近的体素被移除。</translation>
+    </message>
+    <message>
+        <source>Refinement sigma</source>
+        <translation>细化 sigma</translation>
+    </message>
+    <message>
+        <source>Recursive Gaussian refinement of the label boundary (thesis ch. 4.1); 0 turns it off.</source>
+        <translation>标签边界的递归高斯细化（论文第 4.1 章）；0 关闭。</translation>
+    </message>
+    <message>
+        <source>Guided segmentation (waves from points)</source>
+        <translation>引导分割（从点出发的波）</translation>
+    </message>
+    <message>
+        <source>Wave width</source>
+        <translation>波宽</translation>
+    </message>
+    <message>
+        <source>Path-length width of one wave; its connected pieces are the vessel&apos;s cross-sections.</source>
+        <translation>一道波的路径长度宽度；其连通片即血管的横截面。</translation>
+    </message>
+    <message>
+        <source>Leak area factor</source>
+        <translation>泄漏面积因子</translation>
+    </message>
+    <message>
+        <source>A cross-section this many times the narrowest of the 12 before it is a leak and is cut back to that neck (explosion control as in Tschirren 2005).</source>
+        <translation>横截面达到其前 12 个中最窄者的此倍数即为泄漏，并被切回到该颈部（爆炸控制，见 Tschirren 2005）。</translation>
+    </message>
+    <message>
+        <source>Smallest leak</source>
+        <translation>最小泄漏</translation>
+    </message>
+    <message>
+        <source>Cross-sections smaller than this are never called leaks.</source>
+        <translation>小于此值的横截面从不视为泄漏。</translation>
+    </message>
+    <message>
+        <source>Thin vessel</source>
+        <translation>细血管</translation>
+    </message>
+    <message>
+        <source>A front whose cross-section is under this (a vessel under 3.2 mm across) grows on down to the thin level: the scanner&apos;s blur dims a tip under 1 mm below the half level of the blood. 0: off.</source>
+        <translation>横截面小于此值（直径小于 3.2 mm 的血管）的波前继续生长到细水平：扫描仪的模糊使小于 1 mm 的末梢低于血液的半高水平。0：关闭。</translation>
+    </message>
+    <message>
+        <source>Thin level</source>
+        <translation>细水平</translation>
+    </message>
+    <message>
+        <source>The thin level: this fraction of the way from the tissue to the blood, and at least 4 robust standard deviations of the smoothed tissue above it.</source>
+        <translation>细水平：从组织到血液路程的此比例，且至少高于平滑后组织 4 个稳健标准差。</translation>
+    </message>
+    <message>
+        <source>Aortic branch length</source>
+        <translation>主动脉分支长度</translation>
+    </message>
+    <message>
+        <source>Target aorta: path length followed into a branch (a cross-section under a quarter of the trunk&apos;s).</source>
+        <translation>目标主动脉：沿分支追踪的路径长度（横截面小于主干的四分之一）。</translation>
+    </message>
+    <message>
+        <source>Aortic branches (hepatic)</source>
+        <translation>主动脉分支（肝）</translation>
+    </message>
+    <message>
+        <source>Target hepatic: the aortic point&apos;s front (the widest) fills the aorta but enters its branches only this far; the other points&apos; fronts grow the tree and cannot pass the aorta.</source>
+        <translation>目标肝动脉：主动脉点的波前（最宽）充满主动脉，但只进入其分支此距离；其他点的波前生长血管树，不能穿过主动脉。</translation>
+    </message>
+    <message>
+        <source>Join points by minimal paths</source>
+        <translation>以最小路径连接各点</translation>
+    </message>
+    <message>
+        <source>Target hepatic: a point whose front stopped short of the aorta&apos;s (cut at a touching vein or organ) is joined to it along the minimal path on vesselness, and the path is given its lumen. 0: off.</source>
+        <translation>目标肝动脉：波前在主动脉之前停止的点（在相邻静脉或器官处被切断）沿血管性上的最小路径与之相连，并赋予该路径管腔。0：关闭。</translation>
+    </message>
+    <message>
+        <source>Organ growing</source>
+        <translation>器官生长</translation>
+    </message>
+    <message>
+        <source>Intensity window</source>
+        <translation>强度窗</translation>
+    </message>
+    <message>
+        <source>Half-width of the HU window around the points&apos; median, in robust standard deviations of the HU near them.</source>
+        <translation>以各点中位数为中心的 HU 窗半宽，单位为其附近 HU 的稳健标准差。</translation>
+    </message>
+    <message>
+        <source>Opening radius</source>
+        <translation>开运算半径</translation>
+    </message>
+    <message>
+        <source>Bridges thinner than twice this to touching organs of the same density are cut.</source>
+        <translation>与相同密度相邻器官之间细于此值两倍的桥接被切断。</translation>
+    </message>
+    <message>
+        <source>Closing radius</source>
+        <translation>闭运算半径</translation>
+    </message>
+    <message>
+        <source>Gaps narrower than twice this inside the organ (small vessels, noise) are taken in.</source>
+        <translation>器官内部窄于此值两倍的间隙（小血管、噪声）被纳入。</translation>
+    </message>
+    <message>
+        <source>Reach from the points</source>
+        <translation>距各点的范围</translation>
+    </message>
+    <message>
+        <source>The label stays within a box this far around the points.</source>
+        <translation>标签保持在各点周围此距离的包围盒内。</translation>
+    </message>
+    <message>
+        <source>Lesion growing</source>
+        <translation>病灶生长</translation>
+    </message>
+    <message>
+        <source>Lesion threshold</source>
+        <translation>病灶阈值</translation>
+    </message>
+    <message>
+        <source>The lesion&apos;s boundary: this many spreads of the smoothed liver parenchyma (its histogram peak&apos;s full width at half maximum / 2.355) below the peak (hypodense lesions; above it for hyperdense ones), and at least a quarter of the lesion&apos;s contrast.</source>
+        <translation>病灶边界：低于平滑肝实质峰值（其直方图峰的半高全宽 / 2.355）此数量的离散度（低密度病灶；高密度病灶则高于峰值），且至少为病灶对比度的四分之一。</translation>
+    </message>
+    <message>
+        <source>Smoothing</source>
+        <translation>平滑</translation>
+    </message>
+    <message>
+        <source>Standard deviation of the Gaussian the CT is smoothed with before the threshold.</source>
+        <translation>阈值化之前平滑 CT 所用高斯的标准差。</translation>
+    </message>
+    <message>
+        <source>Bridges thinner than twice this (along vessels, to a neighbouring lesion) are cut.</source>
+        <translation>细于此值两倍的桥接（沿血管、通向相邻病灶）被切断。</translation>
+    </message>
+    <message>
+        <source>Gaps narrower than twice this (the enhancing rim, vessels through the lesion) are taken in.</source>
+        <translation>窄于此值两倍的间隙（强化边缘、穿过病灶的血管）被纳入。</translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation>表面</translation>
+    </message>
+    <message>
+        <source>Smoothing iterations</source>
+        <translation>平滑迭代次数</translation>
+    </message>
+    <message>
+        <source>Windowed-sinc smoothing iterations (Taubin et al. 1996).</source>
+        <translation>窗口化 sinc 平滑的迭代次数（Taubin 等 1996）。</translation>
+    </message>
+    <message>
+        <source>Smoothing passband</source>
+        <translation>平滑通带</translation>
+    </message>
+    <message>
+        <source>Windowed-sinc pass band: lower is smoother.</source>
+        <translation>窗口化 sinc 的通带：越低越平滑。</translation>
+    </message>
+    <message>
+        <source>Vertex budget</source>
+        <translation>顶点预算</translation>
+    </message>
+    <message>
+        <source>Decimate to about this many vertices (thesis: 1,427-2,251 for simulation); 0 keeps every vertex.</source>
+        <translation>抽取到约此数量的顶点（论文：模拟用 1,427-2,251）；0 保留所有顶点。</translation>
+    </message>
+    <message>
+        <source>Skeleton</source>
+        <translation>骨架</translation>
+    </message>
+    <message>
+        <source>Spur length / radius</source>
+        <translation>毛刺长度 / 半径</translation>
+    </message>
+    <message>
+        <source>End branches shorter than this many lumen radii at their junction are spurs of the thinning.</source>
+        <translation>在其分叉处短于此数量管腔半径的末端分支是细化产生的毛刺。</translation>
+    </message>
+    <message>
+        <source>Shortest end branch</source>
+        <translation>最短末端分支</translation>
+    </message>
+    <message>
+        <source>End branches shorter than this are spurs.</source>
+        <translation>短于此值的末端分支是毛刺。</translation>
+    </message>
+    <message>
+        <source>Centerlines</source>
+        <translation>中心线</translation>
+    </message>
+    <message>
+        <source>Speed exponent</source>
+        <translation>速度指数</translation>
+    </message>
+    <message>
+        <source>Fast-marching speed = (distance to the wall / its maximum)^exponent: higher hugs the medial axis.</source>
+        <translation>快速行进速度 =（到管壁的距离 / 其最大值）^指数：越高越贴近中轴。</translation>
+    </message>
+    <message>
+        <source>B-spline knot spacing</source>
+        <translation>B 样条节点间距</translation>
+    </message>
+    <message>
+        <source>Knot spacing of the least-squares cubic B-spline that smooths each centerline (thesis ch. 4.1).</source>
+        <translation>平滑每条中心线的最小二乘三次 B 样条的节点间距（论文第 4.1 章）。</translation>
+    </message>
+    <message>
+        <source>Sample step</source>
+        <translation>采样步长</translation>
+    </message>
+    <message>
+        <source>Spacing of the resampled centerline points.</source>
+        <translation>重采样中心线点的间距。</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>Section spacing</source>
+        <translation>截面间距</translation>
+    </message>
+    <message>
+        <source>Distance between cross-sections.</source>
+        <translation>横截面之间的距离。</translation>
+    </message>
+    <message>
+        <source>Junction clearance</source>
+        <translation>分叉间隙</translation>
+    </message>
+    <message>
+        <source>Sections closer than 1.5 junction radii plus this to a junction, or this to a segment end, are left out of the figures (branches distort them).</source>
+        <translation>距分叉近于 1.5 倍分叉半径加此值、或距段端近于此值的截面不计入数值（分支会使其失真）。</translation>
+    </message>
+    <message>
+        <source>Wall mesh</source>
+        <translation>管壁网格</translation>
+    </message>
+    <message>
+        <source>Wall thickness</source>
+        <translation>管壁厚度</translation>
+    </message>
+    <message>
+        <source>Offset of the lumen surface (one element layer); an assumption, CT does not resolve the wall: 1.5 mm, the uniform AAA wall of Raghavan et al. 2000 (J Vasc Surg 31:760).</source>
+        <translation>管腔表面的偏移（一层单元）；这是一个假设，CT 无法分辨管壁：1.5 mm，即 Raghavan 等 2000 的均匀 AAA 管壁（J Vasc Surg 31:760）。</translation>
+    </message>
+    <message>
+        <source>Sets the largest edge (thin vessels get 0.8 of their radius); thesis meshes: 1,427-2,251 vertices.</source>
+        <translation>设定最大边长（细血管取其半径的 0.8）；论文网格：1,427-2,251 个顶点。</translation>
+    </message>
+    <message>
+        <source>Thrombus layer</source>
+        <translation>血栓层</translation>
+    </message>
+    <message>
+        <source>1: the AAA sac&apos;s intraluminal thrombus as its own element layer between the lumen and the wall (needs the sac: Vessels &gt; AAA Sac; run with the Raghavan-Vorp wall model). The CLI&apos;s mesh wall --thrombus.</source>
+        <translation>1：AAA 瘤囊的腔内血栓作为管腔与管壁之间的独立单元层（需要瘤囊：血管 &gt; AAA 瘤囊；使用 Raghavan-Vorp 管壁模型运行）。命令行为 mesh wall --thrombus。</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>材料</translation>
+    </message>
+    <message>
+        <source>Material model</source>
+        <translation>材料模型</translation>
+    </message>
+    <message>
+        <source>0: co-rotational linear elasticity (thesis), 1: St. Venant-Kirchhoff (Green strain; CPU only).</source>
+        <translation>0：共旋线弹性（论文），1：St. Venant-Kirchhoff（Green 应变；仅 CPU）。</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus</source>
+        <translation>杨氏模量</translation>
+    </message>
+    <message>
+        <source>Wall stiffness (thesis patient 1: 4.23 MPa).</source>
+        <translation>管壁刚度（论文患者 1：4.23 MPa）。</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio</source>
+        <translation>泊松比</translation>
+    </message>
+    <message>
+        <source>Thesis: 0.23 (printed as 0.23 MPa, a typo).</source>
+        <translation>论文：0.23（印为 0.23 MPa，系排印错误）。</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>密度</translation>
+    </message>
+    <message>
+        <source>Wall density (lumped mass).</source>
+        <translation>管壁密度（集中质量）。</translation>
+    </message>
+    <message>
+        <source>Integration</source>
+        <translation>积分</translation>
+    </message>
+    <message>
+        <source>Time step</source>
+        <translation>时间步长</translation>
+    </message>
+    <message>
+        <source>Backward Euler step.</source>
+        <translation>后向欧拉步长。</translation>
+    </message>
+    <message>
+        <source>Rayleigh alpha</source>
+        <translation>Rayleigh alpha</translation>
+    </message>
+    <message>
+        <source>Mass-proportional damping (thesis: 0).</source>
+        <translation>质量比例阻尼（论文：0）。</translation>
+    </message>
+    <message>
+        <source>Rayleigh beta</source>
+        <translation>Rayleigh beta</translation>
+    </message>
+    <message>
+        <source>Stiffness-proportional damping (thesis: 0.22 s).</source>
+        <translation>刚度比例阻尼（论文：0.22 s）。</translation>
+    </message>
+    <message>
+        <source>PCG tolerance</source>
+        <translation>PCG 容差</translation>
+    </message>
+    <message>
+        <source>Relative residual of the implicit solve.</source>
+        <translation>隐式求解的相对残差。</translation>
+    </message>
+    <message>
+        <source>PCG iterations</source>
+        <translation>PCG 迭代次数</translation>
+    </message>
+    <message>
+        <source>Largest number of PCG iterations per step.</source>
+        <translation>每步 PCG 迭代的最大次数。</translation>
+    </message>
+    <message>
+        <source>PCG preconditioner</source>
+        <translation>PCG 预条件子</translation>
+    </message>
+    <message>
+        <source>0: block Jacobi (the thesis&apos;s; hundreds of iterations to 1e-8 on a wall), 1: smoothed-aggregation multigrid (tens of iterations, each about five products; set up on the host at the first step; CPU and CUDA). With 1, a tolerance of 1e-8 and a cap of a few hundred every step converges.</source>
+        <translation>0：块 Jacobi（论文所用；在管壁上需数百次迭代才到 1e-8），1：光滑聚集多重网格（数十次迭代，每次约五次乘积；在第一步于主机上建立；CPU 和 CUDA）。选 1 时，容差 1e-8、上限数百次，每一步都会收敛。</translation>
+    </message>
+    <message>
+        <source>Thesis rupture protocol</source>
+        <translation>论文破裂方案</translation>
+    </message>
+    <message>
+        <source>Ramp start</source>
+        <translation>斜坡起点</translation>
+    </message>
+    <message>
+        <source>Mid-vessel pressure at the start of the ramp.</source>
+        <translation>斜坡开始时血管中段的压力。</translation>
+    </message>
+    <message>
+        <source>Ramp end</source>
+        <translation>斜坡终点</translation>
+    </message>
+    <message>
+        <source>Mid-vessel pressure at the end of the ramp.</source>
+        <translation>斜坡结束时血管中段的压力。</translation>
+    </message>
+    <message>
+        <source>Ramp steps</source>
+        <translation>斜坡步数</translation>
+    </message>
+    <message>
+        <source>Time steps of the damped ramp (quasi_static 0).</source>
+        <translation>阻尼斜坡的时间步数（quasi_static 0）。</translation>
+    </message>
+    <message>
+        <source>Ramp increment</source>
+        <translation>斜坡增量</translation>
+    </message>
+    <message>
+        <source>Pressure step between the equilibria of the quasi-static ramp (the onset is then found by bisection to 0.5 % whatever the step).</source>
+        <translation>准静态斜坡各平衡态之间的压力步长（随后以二分法将起始点确定到 0.5 %，与步长无关）。</translation>
+    </message>
+    <message>
+        <source>Loaded length</source>
+        <translation>加载长度</translation>
+    </message>
+    <message>
+        <source>Share of the wall&apos;s length (about its middle, along its principal axis) that the pressure acts on.</source>
+        <translation>压力作用的管壁长度比例（位于其中部，沿其主轴）。</translation>
+    </message>
+    <message>
+        <source>Tear strength</source>
+        <translation>撕裂强度</translation>
+    </message>
+    <message>
+        <source>Largest principal stress at which an element tears (the thesis&apos;s tear factor; it does not print a value).</source>
+        <translation>单元撕裂时的最大主应力（论文的撕裂因子；论文未给出数值）。</translation>
+    </message>
+    <message>
+        <source>Quasi-static tearing</source>
+        <translation>准静态撕裂</translation>
+    </message>
+    <message>
+        <source>1: the wall in static equilibrium at each pressure of the ramp, the tearing onset bracketed by bisection to 0.5 %, one element released per equilibrium (does not depend on the ramp; CPU); 0: the thesis&apos;s damped ramp, every element over the limit torn in the same step (the onset lags the ramp).</source>
+        <translation>1：管壁在斜坡的每个压力下处于静态平衡，撕裂起始以二分法界定到 0.5 %，每个平衡态释放一个单元（与斜坡无关；CPU）；0：论文的阻尼斜坡，超过极限的所有单元在同一步撕裂（起始滞后于斜坡）。</translation>
+    </message>
+    <message>
+        <source>Fracture entropy end</source>
+        <translation>断裂熵终值</translation>
+    </message>
+    <message>
+        <source>Stop once the fracture entropy passes this (3.9: about 50 torn elements&apos; worth).</source>
+        <translation>断裂熵超过此值即停止（3.9：约相当于 50 个撕裂单元）。</translation>
+    </message>
+    <message>
+        <source>Physiological protocol</source>
+        <translation>生理方案</translation>
+    </message>
+    <message>
+        <source>Blood pressure</source>
+        <translation>血压</translation>
+    </message>
+    <message>
+        <source>Systolic pressure on the lumen.</source>
+        <translation>作用于管腔的收缩压。</translation>
+    </message>
+    <message>
+        <source>Wall model</source>
+        <translation>管壁模型</translation>
+    </message>
+    <message>
+        <source>1: quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 70 s for 30,000 with a thrombus layer); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default once its solve is fast enough for the workstation&apos;s walls.</source>
+        <translation>1：二次（10 节点）四面体，采用 Raghavan &amp; Vorp 2000 超弹性 AAA 管壁（近不可压缩），管壁网格含血栓时采用 Wang 2001 血栓，以载荷增量和牛顿法求静态平衡（CPU；2 核上 15,000 个四面体约 20 s，含血栓层的 30,000 个约 70 s）；0：材料组的本构用于线性四面体，先阻尼加载路径，再求平衡（可用 GPU）。当其求解对工作站的管壁足够快时，1 将成为默认值。</translation>
+    </message>
+    <message>
+        <source>Wall Poisson&apos;s ratio</source>
+        <translation>管壁泊松比</translation>
+    </message>
+    <message>
+        <source>Near incompressibility of the hyperelastic wall: its bulk modulus from the small-strain shear modulus (wall model 1).</source>
+        <translation>超弹性管壁的近不可压缩性：由小应变剪切模量得到其体积模量（管壁模型 1）。</translation>
+    </message>
+    <message>
+        <source>Zero-pressure geometry</source>
+        <translation>零压几何</translation>
+    </message>
+    <message>
+        <source>1: the unloaded geometry is found first (backward displacement, Bols et al. 2013) so that the loaded wall is the imaged one; 0: the imaged (loaded) geometry is taken as unloaded (wall model 1).</source>
+        <translation>1：先求出无载几何（反向位移，Bols 等 2013），使加载后的管壁即为成像所见；0：成像（加载）几何被视为无载（管壁模型 1）。</translation>
+    </message>
+    <message>
+        <source>Load increments</source>
+        <translation>载荷增量</translation>
+    </message>
+    <message>
+        <source>Pressure increments, each solved to equilibrium; one that fails is retried at half the size (wall model 1).</source>
+        <translation>压力增量，每个都求解到平衡；失败者以一半大小重试（管壁模型 1）。</translation>
+    </message>
+    <message>
+        <source>Load path time</source>
+        <translation>加载路径时间</translation>
+    </message>
+    <message>
+        <source>Wall model 0: simulated time of the damped load path: the pressure ramps up over its first quarter (beta = 0.22 s). The figures are those of the static equilibrium solved after it, which does not depend on the path.</source>
+        <translation>管壁模型 0：阻尼加载路径的模拟时间：压力在其前四分之一内上升（beta = 0.22 s）。数值取自之后求解的静态平衡，与路径无关。</translation>
+    </message>
+    <message>
+        <source>Settling time step</source>
+        <translation>稳定时间步长</translation>
+    </message>
+    <message>
+        <source>Wall model 0: backward Euler step while settling (the steady state does not depend on it).</source>
+        <translation>管壁模型 0：稳定过程中的后向欧拉步长（稳态与之无关）。</translation>
+    </message>
+    <message>
+        <source>Equilibrium tolerance</source>
+        <translation>平衡容差</translation>
+    </message>
+    <message>
+        <source>The static equilibrium at the pressure is solved (Newton; GMRES with a sparse Cholesky or LU preconditioner) until ||f_int - f_ext|| / ||f_ext|| is below this; the figures are that state&apos;s. 0 (wall model 0 only): the damped path&apos;s last state.</source>
+        <translation>在该压力下求解静态平衡（牛顿法；以稀疏 Cholesky 或 LU 预条件的 GMRES），直到 ||f_int - f_ext|| / ||f_ext|| 低于此值；数值取自该状态。0（仅管壁模型 0）：阻尼路径的最后状态。</translation>
+    </message>
+    <message>
+        <source>Patient (wall strength)</source>
+        <translation>患者（管壁强度）</translation>
+    </message>
+    <message>
+        <source>Female</source>
+        <translation>女性</translation>
+    </message>
+    <message>
+        <source>1 female, 0 male (Vande Geest 2006 SEX = +-0.5); -1 not given: no rupture index (never assumed).</source>
+        <translation>1 女性，0 男性（Vande Geest 2006 SEX = +-0.5）；-1 未给出：无破裂指数（从不假设）。</translation>
+    </message>
+    <message>
+        <source>Family history of AAA</source>
+        <translation>AAA 家族史</translation>
+    </message>
+    <message>
+        <source>1 with, 0 without a family history (HIST = +-0.5); -1 not given: no rupture index (never assumed).</source>
+        <translation>1 有，0 无家族史（HIST = +-0.5）；-1 未给出：无破裂指数（从不假设）。</translation>
+    </message>
+    <message>
+        <source>Thrombus thickness</source>
+        <translation>血栓厚度</translation>
+    </message>
+    <message>
+        <source>Local intraluminal thrombus thickness (ILT).</source>
+        <translation>局部腔内血栓厚度（ILT）。</translation>
+    </message>
+    <message>
+        <source>Reference diameter</source>
+        <translation>参考直径</translation>
+    </message>
+    <message>
+        <source>Non-aneurysmal aortic diameter for the normalised diameter (NORD); 0: the sac&apos;s neck outer diameter (the patient&apos;s own, from vascusim-cli sac), 20 mm without a sac.</source>
+        <translation>用于归一化直径（NORD）的非瘤样主动脉直径；0：瘤囊颈部外径（患者自身的，来自 vascusim-cli sac），无瘤囊时为 20 mm。</translation>
+    </message>
+    <message>
+        <source>Injection</source>
+        <translation>注射</translation>
+    </message>
+    <message>
+        <source>Injection rate</source>
+        <translation>注射速率</translation>
+    </message>
+    <message>
+        <source>Volume rate of the injected drug mixture at the catheter tip.</source>
+        <translation>导管尖端注入的药物混合物的体积速率。</translation>
+    </message>
+    <message>
+        <source>Catheter outer diameter</source>
+        <translation>导管外径</translation>
+    </message>
+    <message>
+        <source>Outer diameter of the catheter lying from the tree&apos;s root to its tip, 1 Fr = 1/3 mm (microcatheters 1.7-3.0 Fr); blood passes it through the annulus. 0 leaves it out of the flow.</source>
+        <translation>从血管树根部延伸到尖端的导管外径，1 Fr = 1/3 mm（微导管 1.7-3.0 Fr）；血液从环形间隙流过。0 表示在流动中不考虑导管。</translation>
+    </message>
+    <message>
+        <source>Tip snap distance</source>
+        <translation>尖端吸附距离</translation>
+    </message>
+    <message>
+        <source>A tip or control point given as a point this near a node is put on the node.</source>
+        <translation>以点给出的尖端或控制点距某节点如此近时，被放到该节点上。</translation>
+    </message>
+    <message>
+        <source>Tip reach</source>
+        <translation>尖端可达范围</translation>
+    </message>
+    <message>
+        <source>How far a tip or control point given as a point may lie from the vessel tree.</source>
+        <translation>以点给出的尖端或控制点距血管树可有多远。</translation>
+    </message>
+    <message>
+        <source>Two-phase drug</source>
+        <translation>两相药物</translation>
+    </message>
+    <message>
+        <source>Void fraction</source>
+        <translation>空隙率</translation>
+    </message>
+    <message>
+        <source>Gas volume fraction of the injected drug (thesis eq. 6.2, 6.3); the flow is bubbly up to about 0.25.</source>
+        <translation>注入药物的气体体积分数（论文式 6.2、6.3）；约 0.25 以下为泡状流。</translation>
+    </message>
+    <message>
+        <source>Gas absorption rate</source>
+        <translation>气体吸收速率</translation>
+    </message>
+    <message>
+        <source>Gas absorption rate of the bubbly regime (thesis ch. 6.1: 5-20 ml/min); with the bubble size it gives the bubble rate.</source>
+        <translation>泡状流区的气体吸收速率（论文第 6.1 章：5-20 ml/min）；与气泡大小一起给出气泡速率。</translation>
+    </message>
+    <message>
+        <source>Bubble diameter</source>
+        <translation>气泡直径</translation>
+    </message>
+    <message>
+        <source>Bubble diameter of the bubbly regime (thesis ch. 6.1: 1.29-2.05 mm).</source>
+        <translation>泡状流区的气泡直径（论文第 6.1 章：1.29-2.05 mm）。</translation>
+    </message>
+    <message>
+        <source>Liquid density</source>
+        <translation>液体密度</translation>
+    </message>
+    <message>
+        <source>Density of the liquid phase (plasma: 1,060 kg/m^3).</source>
+        <translation>液相密度（血浆：1,060 kg/m^3）。</translation>
+    </message>
+    <message>
+        <source>Liquid viscosity</source>
+        <translation>液体黏度</translation>
+    </message>
+    <message>
+        <source>Dynamic viscosity of the liquid phase at 37 C (plasma: 3.56 mPa s).</source>
+        <translation>液相在 37 C 时的动力黏度（血浆：3.56 mPa s）。</translation>
+    </message>
+    <message>
+        <source>Gas density</source>
+        <translation>气体密度</translation>
+    </message>
+    <message>
+        <source>Density of the gas phase.</source>
+        <translation>气相密度。</translation>
+    </message>
+    <message>
+        <source>Gas viscosity</source>
+        <translation>气体黏度</translation>
+    </message>
+    <message>
+        <source>Dynamic viscosity of the gas phase at 37 C.</source>
+        <translation>气相在 37 C 时的动力黏度。</translation>
+    </message>
+    <message>
+        <source>Blood flow</source>
+        <translation>血流</translation>
+    </message>
+    <message>
+        <source>Blood carries the drug</source>
+        <translation>血液携带药物</translation>
+    </message>
+    <message>
+        <source>1: arterial blood enters at the tree&apos;s root and carries the injected drug; 0: the injected drug flows alone, as the thesis models it (ch. 6).</source>
+        <translation>1：动脉血从血管树根部进入并携带注入的药物；0：注入的药物单独流动，如论文所建模（第 6 章）。</translation>
+    </message>
+    <message>
+        <source>Arterial pressure at the root</source>
+        <translation>根部动脉压</translation>
+    </message>
+    <message>
+        <source>Mean pressure at the tree&apos;s root, held unless an inflow is given: the hepatic artery&apos;s mean pressure is close to the aorta&apos;s (normal mean arterial pressure 70-105 mmHg).</source>
+        <translation>血管树根部的平均压力，未给出流入量时保持不变：肝动脉平均压接近主动脉（正常平均动脉压 70-105 mmHg）。</translation>
+    </message>
+    <message>
+        <source>Arterial inflow</source>
+        <translation>动脉流入量</translation>
+    </message>
+    <message>
+        <source>Blood flow into the tree&apos;s root instead of a pressure; 0: the root is held at the arterial pressure. Hepatic arterial flow is about 25 % of the liver&apos;s 100 ml/min per 100 g (Lautt, Hepatic Circulation, 2009): 100-400 ml/min.</source>
+        <translation>流入血管树根部的血流量（代替压力）；0：根部保持在动脉压。肝动脉血流约为肝脏每 100 g 100 ml/min 的 25 %（Lautt, Hepatic Circulation, 2009）：100-400 ml/min。</translation>
+    </message>
+    <message>
+        <source>Blood viscosity</source>
+        <translation>血液黏度</translation>
+    </message>
+    <message>
+        <source>Apparent viscosity of whole blood at arterial shear rates (about 3.5 mPa s at a haematocrit of 0.45), taken as Newtonian.</source>
+        <translation>全血在动脉剪切率下的表观黏度（红细胞压积 0.45 时约 3.5 mPa s），按牛顿流体处理。</translation>
+    </message>
+    <message>
+        <source>Blood density</source>
+        <translation>血液密度</translation>
+    </message>
+    <message>
+        <source>Density of whole blood (for the Reynolds number).</source>
+        <translation>全血密度（用于雷诺数）。</translation>
+    </message>
+    <message>
+        <source>Outlets</source>
+        <translation>出口</translation>
+    </message>
+    <message>
+        <source>Outlets&apos; reference flow</source>
+        <translation>出口参考流量</translation>
+    </message>
+    <message>
+        <source>Flow that all outlets together drain at the reference pressure drop, split by Murray&apos;s law (hepatic artery flow is about 100-400 ml/min).</source>
+        <translation>所有出口在参考压降下共同排出的流量，按 Murray 定律分配（肝动脉血流约 100-400 ml/min）。</translation>
+    </message>
+    <message>
+        <source>Outlets&apos; reference pressure drop</source>
+        <translation>出口参考压降</translation>
+    </message>
+    <message>
+        <source>Pressure drop across the vascular bed beyond the outlets at the reference flow.</source>
+        <translation>参考流量下出口以外血管床上的压降。</translation>
+    </message>
+    <message>
+        <source>Pressure beyond the outlets</source>
+        <translation>出口以外的压力</translation>
+    </message>
+    <message>
+        <source>Pressure at the far end of the terminal resistances (venous side).</source>
+        <translation>终端阻力远端（静脉侧）的压力。</translation>
+    </message>
+    <message>
+        <source>Targeting</source>
+        <translation>靶向</translation>
+    </message>
+    <message>
+        <source>Tumour bed resistance factor</source>
+        <translation>肿瘤床阻力因子</translation>
+    </message>
+    <message>
+        <source>Terminal resistance of the tumour&apos;s outlets times this (below 1 for a hypervascular tumour).</source>
+        <translation>肿瘤出口的终端阻力乘以此值（富血供肿瘤小于 1）。</translation>
+    </message>
+    <message>
+        <source>Filling</source>
+        <translation>充盈</translation>
+    </message>
+    <message>
+        <source>Filling steps</source>
+        <translation>充盈步数</translation>
+    </message>
+    <message>
+        <source>Time steps from the start of the injection to the last outlet&apos;s arrival.</source>
+        <translation>从注射开始到到达最后一个出口的时间步数。</translation>
+    </message>
+    <message>
+        <source>Working angle</source>
+        <translation>工作角度</translation>
+    </message>
+    <message>
+        <source>Working C-arm angle</source>
+        <translation>C 臂工作角度</translation>
+    </message>
+    <message>
+        <source>1: the LAO/RAO and cranial/caudal angles that show the path from the root to the tip with the least foreshortening and overlap (WorkingAngle.h); 0: none.</source>
+        <translation>1：以最小缩短和重叠显示从根部到尖端路径的 LAO/RAO 和头/足位角度（WorkingAngle.h）；0：无。</translation>
+    </message>
+    <message>
+        <source>Territories</source>
+        <translation>供血区域</translation>
+    </message>
+    <message>
+        <source>Hepatic outlet reach</source>
+        <translation>肝出口范围</translation>
+    </message>
+    <message>
+        <source>An outlet whose end lies this near the liver feeds liver tissue; the others (gastroduodenal, gastric) feed none.</source>
+        <translation>末端距肝脏如此近的出口供应肝组织；其他出口（胃十二指肠、胃）不供应。</translation>
+    </message>
+    <message>
+        <source>Tumour perfusion factor</source>
+        <translation>肿瘤灌注因子</translation>
+    </message>
+    <message>
+        <source>Arterial perfusion of tumour tissue per volume over the liver&apos;s: a hypervascular HCC draws several times the surrounding liver&apos;s arterial flow (CT perfusion series report about 3-5 times).</source>
+        <translation>肿瘤组织单位体积的动脉灌注与肝脏之比：富血供 HCC 获得周围肝脏动脉血流的数倍（CT 灌注系列报告约 3-5 倍）。</translation>
+    </message>
+    <message>
+        <source>Outlets from territories</source>
+        <translation>按供血区域确定出口</translation>
+    </message>
+    <message>
+        <source>1: with a liver label, an outlet&apos;s resistance follows the tissue it feeds; 0: Murray&apos;s law of the terminal radius alone.</source>
+        <translation>1：有肝脏标签时，出口阻力取决于其供应的组织；0：仅按终端半径的 Murray 定律。</translation>
+    </message>
+    <message>
+        <source>Inlet</source>
+        <translation>入口</translation>
+    </message>
+    <message>
+        <source>Inlet mean velocity</source>
+        <translation>入口平均速度</translation>
+    </message>
+    <message>
+        <source>over the inlet&apos;s section (the end of the largest vessel), parabolic, ramped up from rest</source>
+        <translation>入口截面（最大血管的末端）上的平均值，抛物线分布，从静止逐渐增加</translation>
+    </message>
+    <message>
+        <source>Inlet flow rate</source>
+        <translation>入口流量</translation>
+    </message>
+    <message>
+        <source>&gt; 0: replaces the mean velocity</source>
+        <translation>&gt; 0：代替平均速度</translation>
+    </message>
+    <message>
+        <source>Outlet pressure</source>
+        <translation>出口压力</translation>
+    </message>
+    <message>
+        <source>at every other vessel end (gauge: the pressures reported are relative to it)</source>
+        <translation>在其他每个血管末端（表压：报告的压力均相对于此）</translation>
+    </message>
+    <message>
+        <source>Stenosis figures</source>
+        <translation>狭窄数值</translation>
+    </message>
+    <message>
+        <source>Compare at</source>
+        <translation>比较位置</translation>
+    </message>
+    <message>
+        <source>the sections upstream and downstream of the throat the velocity ratios compare with (thesis: 6 mm in the hand, 30 mm in the heart)</source>
+        <translation>速度比所比较的喉部上游和下游截面（论文：手部 6 mm，心脏 30 mm）</translation>
+    </message>
+    <message>
+        <source>Particles</source>
+        <translation>粒子</translation>
+    </message>
+    <message>
+        <source>Particle spacing</source>
+        <translation>粒子间距</translation>
+    </message>
+    <message>
+        <source>0: a fifth of the inlet&apos;s radius</source>
+        <translation>0：入口半径的五分之一</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>End time</source>
+        <translation>结束时间</translation>
+    </message>
+    <message>
+        <source>0: twice the inflow&apos;s ramp (two quarter-wave periods of the vessel)</source>
+        <translation>0：流入斜坡的两倍（血管的两个四分之一波周期）</translation>
+    </message>
+    <message>
+        <source>Frames</source>
+        <translation>帧</translation>
+    </message>
+    <message>
+        <source>frames kept over the run</source>
+        <translation>整个运行中保留的帧数</translation>
+    </message>
+    <message>
+        <source>the lattice the particles were seeded on: it sets their mass and the smoothing length</source>
+        <translation>粒子播撒所在的格点：它决定粒子质量和光滑长度</translation>
+    </message>
+    <message>
+        <source>Smoothing length</source>
+        <translation>光滑长度</translation>
+    </message>
+    <message>
+        <source>h as a multiple of the spacing (the support is 2h); at 2 the quartic kernel&apos;s first moment on a lattice is within 0.2 % of the identity (5.7 % at 1.3: sph-kernel), so pressure gradients come out right</source>
+        <translation>h 为间距的倍数（支撑域为 2h）；取 2 时，四次核在格点上的一阶矩与恒等式相差 0.2 % 以内（1.3 时为 5.7 %：sph-kernel），因而压力梯度正确</translation>
+    </message>
+    <message>
+        <source>Fluid</source>
+        <translation>流体</translation>
+    </message>
+    <message>
+        <source>Rest density</source>
+        <translation>静止密度</translation>
+    </message>
+    <message>
+        <source>blood 1060 (thesis Table 5.1)</source>
+        <translation>血液 1060（论文表 5.1）</translation>
+    </message>
+    <message>
+        <source>Dynamic viscosity</source>
+        <translation>动力黏度</translation>
+    </message>
+    <message>
+        <source>blood at high shear about 3.5e-3 (thesis: 3.56e-3)</source>
+        <translation>高剪切下的血液约 3.5e-3（论文：3.56e-3）</translation>
+    </message>
+    <message>
+        <source>the gas share of the mixture particles (thesis Table 5.1: 0.2 at the needle injection) where the input gives none: rest density and viscosity mixed with air&apos;s (1.205 kg/m^3, 1.86e-5 Pa s)</source>
+        <translation>输入未给出时混合粒子的气体份额（论文表 5.1：针头注射时为 0.2）：静止密度和黏度与空气的（1.205 kg/m^3，1.86e-5 Pa s）混合</translation>
+    </message>
+    <message>
+        <source>Numerical sound speed</source>
+        <translation>数值声速</translation>
+    </message>
+    <message>
+        <source>at least 10 times the largest flow speed keeps the density within about 1 % (Monaghan 1994)</source>
+        <translation>至少为最大流速的 10 倍，可使密度保持在约 1 % 以内（Monaghan 1994）</translation>
+    </message>
+    <message>
+        <source>Reference pressure</source>
+        <translation>参考压力</translation>
+    </message>
+    <message>
+        <source>the gauge pressure the rest density stands for (blood flow: the outlets&apos; level): the dynamics work on the pressure above it, every pressure reported adds it back, and prescribed pressures are gauge (FluidModel.h)</source>
+        <translation>静止密度所代表的表压（血流：出口水平）：动力学基于高于它的压力，报告的每个压力都加回它，给定的压力为表压（FluidModel.h）</translation>
+    </message>
+    <message>
+        <source>Numerics</source>
+        <translation>数值方法</translation>
+    </message>
+    <message>
+        <source>Density diffusion</source>
+        <translation>密度扩散</translation>
+    </message>
+    <message>
+        <source>delta of the delta-SPH term (Molteni &amp; Colagrossi 2009; 0 switches it off)</source>
+        <translation>delta-SPH 项的 delta（Molteni &amp; Colagrossi 2009；0 关闭）</translation>
+    </message>
+    <message>
+        <source>Courant number</source>
+        <translation>Courant 数</translation>
+    </message>
+    <message>
+        <source>the adaptive step&apos;s safety factor</source>
+        <translation>自适应步长的安全系数</translation>
+    </message>
+    <message>
+        <source>Gravity x</source>
+        <translation>重力 x</translation>
+    </message>
+    <message>
+        <source>patient frame (LPS)</source>
+        <translation>患者坐标系（LPS）</translation>
+    </message>
+    <message>
+        <source>Gravity y</source>
+        <translation>重力 y</translation>
+    </message>
+    <message>
+        <source>patient frame (LPS): a supine patient&apos;s gravity is +9.81 (posterior)</source>
+        <translation>患者坐标系（LPS）：仰卧患者的重力为 +9.81（后方）</translation>
+    </message>
+    <message>
+        <source>Gravity z</source>
+        <translation>重力 z</translation>
+    </message>
+    <message>
+        <source>simulated time</source>
+        <translation>模拟时间</translation>
+    </message>
+    <message>
+        <source>Guards</source>
+        <translation>保护</translation>
+    </message>
+    <message>
+        <source>Density guard</source>
+        <translation>密度保护</translation>
+    </message>
+    <message>
+        <source>the run stops when a fluid particle&apos;s density is further than this from the rest density (relative)</source>
+        <translation>流体粒子的密度偏离静止密度超过此值（相对）时运行停止</translation>
+    </message>
+    <message>
+        <source>Escape margin</source>
+        <translation>逸出边距</translation>
+    </message>
+    <message>
+        <source>the run stops when a particle leaves the particles&apos; starting box grown by this</source>
+        <translation>粒子离开按此值扩大的粒子初始包围盒时运行停止</translation>
+    </message>
+    <message>
+        <source>Reorder every</source>
+        <translation>重排间隔</translation>
+    </message>
+    <message>
+        <source>the particles are sorted by neighbour cell every so many steps</source>
+        <translation>每隔这么多步按邻居单元对粒子排序</translation>
+    </message>
+    <message>
+        <source>Body force x</source>
+        <translation>体积力 x</translation>
+    </message>
+    <message>
+        <source>a driving force per unit mass (a pressure gradient over the density) in a periodic pipe or channel</source>
+        <translation>周期管道或通道中的单位质量驱动力（压力梯度除以密度）</translation>
+    </message>
+    <message>
+        <source>Body force y</source>
+        <translation>体积力 y</translation>
+    </message>
+    <message>
+        <source>as body_force_x_m_s2</source>
+        <translation>同 body_force_x_m_s2</translation>
+    </message>
+    <message>
+        <source>Body force z</source>
+        <translation>体积力 z</translation>
+    </message>
+    <message>
+        <source>Body force frequency</source>
+        <translation>体积力频率</translation>
+    </message>
+    <message>
+        <source>&gt; 0: the body force oscillates as cos(2 pi f t) (Womersley flow); 0: steady</source>
+        <translation>&gt; 0：体积力按 cos(2 pi f t) 振荡（Womersley 流）；0：定常</translation>
+    </message>
+    <message>
+        <source>Domain</source>
+        <translation>区域</translation>
+    </message>
+    <message>
+        <source>Periodic length x</source>
+        <translation>周期长度 x</translation>
+    </message>
+    <message>
+        <source>validation channels: &gt; 0 makes the domain [0, L) wrap around along x (0: open)</source>
+        <translation>验证通道：&gt; 0 使区域 [0, L) 沿 x 周期环绕（0：开放）</translation>
+    </message>
+    <message>
+        <source>Periodic length y</source>
+        <translation>周期长度 y</translation>
+    </message>
+    <message>
+        <source>as periodic_x_mm, along y</source>
+        <translation>同 periodic_x_mm，沿 y</translation>
+    </message>
+    <message>
+        <source>Periodic length z</source>
+        <translation>周期长度 z</translation>
+    </message>
+    <message>
+        <source>as periodic_x_mm, along z</source>
+        <translation>同 periodic_x_mm，沿 z</translation>
+    </message>
+    <message>
+        <source>Walls</source>
+        <translation>壁面</translation>
+    </message>
+    <message>
+        <source>Free surface</source>
+        <translation>自由表面</translation>
+    </message>
+    <message>
+        <source>1 for a liquid with a free surface (a tank, a dam break): the walls hold no suction above it; 0 in vessels</source>
+        <translation>1 表示有自由表面的液体（水箱、溃坝）：壁面在其上方不产生吸力；血管中为 0</translation>
+    </message>
+    <message>
+        <source>Tension in the fluid</source>
+        <translation>流体中的张力</translation>
+    </message>
+    <message>
+        <source>1: a density below the rest density pulls the fluid together (Tait&apos;s negative pressure; vessels, tanks); 0: a liquid that breaks up (a stream falling from a needle, a splash): each particle&apos;s density is held at its rest density or above, its pressure at 0 or above, and the density guard reads compression only</source>
+        <translation>1：低于静止密度的密度会把流体拉拢（Tait 负压；血管、水箱）；0：会破碎的液体（从针头落下的液流、飞溅）：每个粒子的密度保持在静止密度或以上，压力保持在 0 或以上，密度保护只读取压缩</translation>
+    </message>
+    <message>
+        <source>Wall repulsion</source>
+        <translation>壁面排斥</translation>
+    </message>
+    <message>
+        <source>the walls&apos; Lennard-Jones backstop (thesis ch. 5.4, Monaghan 1994): a wall particle closer than 0.9 spacings pushes a fluid particle away with D ((r0 / r)^12 - (r0 / r)^4) / r, D this times c0^2 (0.01: about the largest flow speed squared); it holds fluid out of walls thinner than the kernel, but empties a throat a few particles across (sph-stenosis at 0.2 mm: area ratio 4.97 against 3.34 without): 0, off</source>
+        <translation>壁面的 Lennard-Jones 挡板（论文第 5.4 章，Monaghan 1994）：距离小于 0.9 个间距的壁面粒子以 D ((r0 / r)^12 - (r0 / r)^4) / r 推开流体粒子，D 为此值乘以 c0^2（0.01：约为最大流速的平方）；它能把流体挡在比核更薄的壁外，但会使仅几个粒子宽的喉部变空（sph-stenosis 在 0.2 mm 时：面积比 4.97，无挡板时为 3.34）：0，关闭</translation>
+    </message>
+    <message>
+        <source>Absorption distance</source>
+        <translation>吸收距离</translation>
+    </message>
+    <message>
+        <source>tracer particles (an injected drug) this close to a wall&apos;s surface are absorbed and counted (0: none)</source>
+        <translation>距壁面如此近的示踪粒子（注入的药物）被吸收并计数（0：无）</translation>
+    </message>
+    <message>
+        <source>Needle</source>
+        <translation>针头</translation>
+    </message>
+    <message>
+        <source>Needle bore</source>
+        <translation>针头内径</translation>
+    </message>
+    <message>
+        <source>the needle&apos;s inner diameter (16 G: 1.19 mm); the particles a third of it unless the spacing is given</source>
+        <translation>针头的内径（16 G：1.19 mm）；未给出间距时粒子取其三分之一</translation>
+    </message>
+    <message>
+        <source>Generation rate</source>
+        <translation>生成速率</translation>
+    </message>
+    <message>
+        <source>particles of the run&apos;s spacing a second (thesis Table 5.1: 300)</source>
+        <translation>每秒生成运行间距大小的粒子数（论文表 5.1：300）</translation>
+    </message>
+    <message>
+        <source>Collection box</source>
+        <translation>收集盒</translation>
+    </message>
+    <message>
+        <source>Collection box depth</source>
+        <translation>收集盒深度</translation>
+    </message>
+    <message>
+        <source>its floor below the vessel&apos;s lowest wall</source>
+        <translation>其底部低于血管最低壁面的距离</translation>
+    </message>
+    <message>
+        <source>Collection box margin</source>
+        <translation>收集盒边距</translation>
+    </message>
+    <message>
+        <source>its sides beyond the open ends</source>
+        <translation>其侧面超出开口端的距离</translation>
+    </message>
+    <message>
+        <source>0: a third of the bore</source>
+        <translation>0：内径的三分之一</translation>
+    </message>
+    <message>
+        <source>0: twice a free fall from the needle to the box&apos;s floor</source>
+        <translation>0：从针头自由落体到盒底时间的两倍</translation>
+    </message>
+    <message>
+        <source>Tissue</source>
+        <translation>组织</translation>
+    </message>
+    <message>
+        <source>Thermal diffusivity</source>
+        <translation>热扩散率</translation>
+    </message>
+    <message>
+        <source>soft tissue about 0.14 mm^2/s (Duck 1990, Physical Properties of Tissue)</source>
+        <translation>软组织约 0.14 mm^2/s（Duck 1990, Physical Properties of Tissue）</translation>
+    </message>
+    <message>
+        <source>Cube edge</source>
+        <translation>立方体边长</translation>
+    </message>
+    <message>
+        <source>faces held at body temperature</source>
+        <translation>各面保持体温</translation>
+    </message>
+    <message>
+        <source>Cells per edge</source>
+        <translation>每边单元数</translation>
+    </message>
+    <message>
+        <source>the grid has cells + 1 nodes per edge</source>
+        <translation>网格每边有 单元数 + 1 个节点</translation>
+    </message>
+    <message>
+        <source>Initial rise</source>
+        <translation>初始温升</translation>
+    </message>
+    <message>
+        <source>peak of the initial temperature rise (the slowest mode)</source>
+        <translation>初始温升的峰值（最慢模态）</translation>
+    </message>
+    <message>
+        <source>the step as a fraction of forward Euler&apos;s stability limit; above 1 the scheme is unstable and the guard stops the run</source>
+        <translation>步长占前向欧拉稳定极限的比例；大于 1 时格式不稳定，保护机制会停止运行</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Frame every N steps</source>
+        <translation>每 N 步一帧</translation>
+    </message>
+    <message>
+        <source>a frame after every N steps (0: not by steps; with both intervals 0, only the first and the last frame)</source>
+        <translation>每 N 步后一帧（0：不按步数；两个间隔均为 0 时，只有第一帧和最后一帧）</translation>
+    </message>
+    <message>
+        <source>Frame every</source>
+        <translation>帧间隔</translation>
+    </message>
+    <message>
+        <source>a frame each time the run&apos;s axis (simulated time in s, or pressure in kPa) passes a multiple of this (0: not by the axis)</source>
+        <translation>运行的轴（模拟时间 s，或压力 kPa）每越过此值的倍数时一帧（0：不按轴）</translation>
+    </message>
+    <message>
+        <source>Keep every Nth frame</source>
+        <translation>每 N 帧保留一帧</translation>
+    </message>
+    <message>
+        <source>keep every Nth frame taken (large runs); the first and the last are always kept, and the run lists which</source>
+        <translation>所取的帧中每 N 帧保留一帧（大型运行）；第一帧和最后一帧总是保留，运行会列出保留了哪些</translation>
+    </message>
+    <message>
+        <source>Step limit</source>
+        <translation>步数上限</translation>
+    </message>
+    <message>
+        <source>a run that has not reached its end after this many steps stops with a message (a collapsing time step)</source>
+        <translation>此步数后仍未到达终点的运行会停止并给出消息（时间步长崩塌）</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::DicomImportDialog</name>
+    <message>
+        <source>Import DICOM</source>
+        <translation>导入 DICOM</translation>
+    </message>
+    <message>
+        <source>Folder, DICOMDIR or file</source>
+        <translation>文件夹、DICOMDIR 或文件</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>浏览...</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>扫描</translation>
+    </message>
+    <message>
+        <source>Patient / study / series</source>
+        <translation>患者 / 检查 / 序列</translation>
+    </message>
+    <message>
+        <source>Modality</source>
+        <translation>模态</translation>
+    </message>
+    <message>
+        <source>Slices</source>
+        <translation>层数</translation>
+    </message>
+    <message>
+        <source>Voxel spacing (mm)</source>
+        <translation>体素间距 (mm)</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>DICOM folder</source>
+        <translation>DICOM 文件夹</translation>
+    </message>
+    <message>
+        <source>Reading DICOM headers...</source>
+        <translation>正在读取 DICOM 头...</translation>
+    </message>
+    <message>
+        <source>(no name)</source>
+        <translation>（无姓名）</translation>
+    </message>
+    <message>
+        <source>no ID</source>
+        <translation>无 ID</translation>
+    </message>
+    <message>
+        <source>(no description)</source>
+        <translation>（无描述）</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n file(s), %1 series</source>
+        <translation>
+            <numerusform>%n 个文件，%1 个序列</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> (making previews)</source>
+        <translation>（正在生成预览）</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::DrugDeliveryPanel</name>
+    <message>
+        <source>DSA-like view at the working angle</source>
+        <translation>工作角度下的类 DSA 视图</translation>
+    </message>
+    <message>
+        <source>Keep this run (the next one is added beside it)</source>
+        <translation>保留此运行（下一次运行添加在其旁）</translation>
+    </message>
+    <message>
+        <source>The liver as a label: perfusion territories, coverage grade and feeders</source>
+        <translation>肝脏标签：灌注区域、覆盖等级和供血支</translation>
+    </message>
+    <message>
+        <source>The tumour as a label (with a liver label): its lesions, margins and coverage</source>
+        <translation>肿瘤标签（需肝脏标签）：其病灶、边缘和覆盖</translation>
+    </message>
+    <message>
+        <source>x, y, z mm; empty: the root</source>
+        <translation>x, y, z mm；空：根部</translation>
+    </message>
+    <message>
+        <source>x, y, z, radius mm; empty: none</source>
+        <translation>x, y, z, 半径 mm；空：无</translation>
+    </message>
+    <message>
+        <source>x, y, z; ... mm; empty: the first branches</source>
+        <translation>x, y, z; ... mm；空：第一级分支</translation>
+    </message>
+    <message>
+        <source>largest end; or a name, a segment number, or x, y, z mm on it</source>
+        <translation>最大末端；或名称、段号，或其上的 x, y, z mm</translation>
+    </message>
+    <message>
+        <source>Blood enters through this segment; the tree beyond it is modelled</source>
+        <translation>血液经此段进入；其后的血管树被建模</translation>
+    </message>
+    <message>
+        <source>segment numbers, e.g. 3, 7</source>
+        <translation>段号，例如 3, 7</translation>
+    </message>
+    <message>
+        <source>segment numbers; or untick a feeder below</source>
+        <translation>段号；或在下方取消勾选供血支</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Pick</source>
+        <translation>拾取</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>添加</translation>
+    </message>
+    <message>
+        <source>Click a branch of the shown run in the 3D view to add it as a feeder</source>
+        <translation>在 3D 视图中点击所示运行的一个分支，将其添加为供血支</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Catheter tip</source>
+        <translation>导管尖端</translation>
+    </message>
+    <message>
+        <source>Tumour</source>
+        <translation>肿瘤</translation>
+    </message>
+    <message>
+        <source>Tumour radius (picked)</source>
+        <translation>肿瘤半径（拾取）</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>控制点</translation>
+    </message>
+    <message>
+        <source>Liver label</source>
+        <translation>肝脏标签</translation>
+    </message>
+    <message>
+        <source>Tumour label</source>
+        <translation>肿瘤标签</translation>
+    </message>
+    <message>
+        <source>Blood enters at</source>
+        <translation>血液进入位置</translation>
+    </message>
+    <message>
+        <source>Feeders added</source>
+        <translation>已添加的供血支</translation>
+    </message>
+    <message>
+        <source>Feeders removed</source>
+        <translation>已移除的供血支</translation>
+    </message>
+    <message>
+        <source>Outlet</source>
+        <translation>出口</translation>
+    </message>
+    <message>
+        <source>The outlet&apos;s vessel (anatomical name when known)</source>
+        <translation>出口所在血管（已知时为解剖名称）</translation>
+    </message>
+    <message>
+        <source>Drug share (%)</source>
+        <translation>药物份额 (%)</translation>
+    </message>
+    <message>
+        <source>Share of the injected drug leaving through this outlet (%)</source>
+        <translation>经此出口流出的注入药物份额 (%)</translation>
+    </message>
+    <message>
+        <source>Arrival (s)</source>
+        <translation>到达 (s)</translation>
+    </message>
+    <message>
+        <source>Time for the drug front to reach the outlet from the catheter tip (s)</source>
+        <translation>药物前沿从导管尖端到达出口的时间 (s)</translation>
+    </message>
+    <message>
+        <source>Feeder (tick: keep)</source>
+        <translation>供血支（勾选：保留）</translation>
+    </message>
+    <message>
+        <source>A branch entering the tumour or its margin; untick to remove it from the plan</source>
+        <translation>进入肿瘤或其边缘的分支；取消勾选即从计划中移除</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>段</translation>
+    </message>
+    <message>
+        <source>The feeder&apos;s segment number in the kept tree</source>
+        <translation>供血支在保留血管树中的段号</translation>
+    </message>
+    <message>
+        <source>Radius (mm)</source>
+        <translation>半径 (mm)</translation>
+    </message>
+    <message>
+        <source>Lumen radius of the feeder (mm)</source>
+        <translation>供血支的管腔半径 (mm)</translation>
+    </message>
+    <message>
+        <source>Found</source>
+        <translation>找到方式</translation>
+    </message>
+    <message>
+        <source>Found automatically, or added by hand</source>
+        <translation>自动找到，或手动添加</translation>
+    </message>
+    <message>
+        <source>Drug reaches it</source>
+        <translation>药物可达</translation>
+    </message>
+    <message>
+        <source>Whether drug injected at the current tip reaches this feeder</source>
+        <translation>在当前尖端注入的药物是否到达此供血支</translation>
+    </message>
+    <message>
+        <source>The projection as a DSA-like image (the opacified tree, the path to the tip denser)</source>
+        <translation>类 DSA 图像形式的投影（显影的血管树，通往尖端的路径更浓）</translation>
+    </message>
+    <message>
+        <source>added by hand</source>
+        <translation>手动添加</translation>
+    </message>
+    <message>
+        <source>enters lesion + margin</source>
+        <translation>进入病灶 + 边缘</translation>
+    </message>
+    <message>
+        <source>feeds the lesion</source>
+        <translation>供应病灶</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>Tip pressure %1 mmHg; last outlet reached after %2 s.</source>
+        <translation>尖端压力 %1 mmHg；%2 s 后到达最后一个出口。</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Control point %1: drug %2 ml/min two-phase, %3 ml/min liquid (%4 % lower)</source>
+        <translation>&lt;br&gt;控制点 %1：药物 %2 ml/min（两相），%3 ml/min（液相）（低 %4 %）</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Blood: %1 ml/min at the root, %2 ml/min reaching the tip (own flow %3); the drug is %4 % of the flow below it; the catheter fills %5 % of the lumen%6.</source>
+        <translation>&lt;br&gt;血液：根部 %1 ml/min，到达尖端 %2 ml/min（自身流量 %3）；药物占其下方流量的 %4 %；导管占据管腔的 %5 %%6。</translation>
+    </message>
+    <message>
+        <source>: WEDGED</source>
+        <translation>：楔入</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;&lt;b&gt;Coverage grade %1&lt;/b&gt;: territory %2 ml (%3 ml of tumour); drug to tumour %4 %, non-tumour liver %5 %, extrahepatic %6 %.</source>
+        <translation>&lt;br&gt;&lt;b&gt;覆盖等级 %1&lt;/b&gt;：供血区域 %2 ml（肿瘤 %3 ml）；药物至肿瘤 %4 %，非肿瘤肝脏 %5 %，肝外 %6 %。</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Lesion %1: %2 mm, %3 mm margin; %4 % covered, margin %5 % (grade %6).</source>
+        <translation>&lt;br&gt;病灶 %1：%2 mm，边缘 %3 mm；覆盖 %4 %，边缘 %5 %（等级 %6）。</translation>
+    </message>
+    <message>
+        <source>%1 (segment %2, %3 mm)</source>
+        <translation>%1（段 %2，%3 mm）</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Feeders: %1.</source>
+        <translation>&lt;br&gt;供血支：%1。</translation>
+    </message>
+    <message>
+        <source>none found</source>
+        <translation>未找到</translation>
+    </message>
+    <message>
+        <source>%1 %2 %</source>
+        <translation>%1 %2 %</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Drug leaving the liver: %1.</source>
+        <translation>&lt;br&gt;离开肝脏的药物：%1。</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Tumour share %1 % (%2 outlets).</source>
+        <translation>&lt;br&gt;肿瘤份额 %1 %（%2 个出口）。</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;Best tip: node %1 delivers %2 % to the tumour.</source>
+        <translation>&lt;br&gt;最佳尖端：节点 %1 向肿瘤输送 %2 %。</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;&lt;b&gt;Working angle %1 %2, %3 %4&lt;/b&gt; (the projection below): the path foreshortened %5 %, overlapped %6 % (from the front: %7 %, %8 %).</source>
+        <translation>&lt;br&gt;&lt;b&gt;工作角度 %1 %2，%3 %4&lt;/b&gt;（下方投影）：路径缩短 %5 %，重叠 %6 %（正位：%7 %，%8 %）。</translation>
+    </message>
+    <message>
+        <source>LAO</source>
+        <translation>LAO</translation>
+    </message>
+    <message>
+        <source>RAO</source>
+        <translation>RAO</translation>
+    </message>
+    <message>
+        <source>cranial</source>
+        <translation>头位</translation>
+    </message>
+    <message>
+        <source>caudal</source>
+        <translation>足位</translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation>从不</translation>
+    </message>
+    <message>
+        <source>Drug flow (ml/min; grey: none)</source>
+        <translation>药物流量（ml/min；灰色：无）</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::HelpWindow</name>
+    <message>
+        <source>VascuSim User Guide</source>
+        <translation>VascuSim 用户指南</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::InteractiveWall</name>
+    <message>
+        <source>von Mises (kPa)</source>
+        <translation>von Mises 应力 (kPa)</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::MainWindow</name>
+    <message>
+        <source>%1: cancelled, nothing changed</source>
+        <translation>%1：已取消，未做任何更改</translation>
+    </message>
+    <message>
+        <source>%1: done</source>
+        <translation>%1：完成</translation>
+    </message>
+    <message>
+        <source>Artifact</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Study</source>
+        <translation>研究</translation>
+    </message>
+    <message>
+        <source>Workflow</source>
+        <translation>工作流程</translation>
+    </message>
+    <message>
+        <source>A step is running: wait for it or cancel it</source>
+        <translation>有步骤正在运行：请等待或取消</translation>
+    </message>
+    <message>
+        <source>Open or create a study first (File menu)</source>
+        <translation>请先打开或创建研究（文件菜单）</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>No study</source>
+        <translation>无研究</translation>
+    </message>
+    <message>
+        <source>%1 (read-only) - VascuSim</source>
+        <translation>%1（只读）- VascuSim</translation>
+    </message>
+    <message>
+        <source>%1[*] - VascuSim</source>
+        <translation>%1[*] - VascuSim</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>图像</translation>
+    </message>
+    <message>
+        <source>label</source>
+        <translation>标签</translation>
+    </message>
+    <message>
+        <source>surface</source>
+        <translation>表面</translation>
+    </message>
+    <message>
+        <source>volume mesh</source>
+        <translation>体网格</translation>
+    </message>
+    <message>
+        <source>skeleton</source>
+        <translation>骨架</translation>
+    </message>
+    <message>
+        <source>network</source>
+        <translation>网络</translation>
+    </message>
+    <message>
+        <source>report</source>
+        <translation>报告</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>measurement</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>damaged</source>
+        <translation>已损坏</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n 条警告</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1, made by &quot;%2&quot; on %3</source>
+        <translation>%1，由“%2”于 %3 生成</translation>
+    </message>
+    <message>
+        <source>%1 failed</source>
+        <translation>%1 失败</translation>
+    </message>
+    <message>
+        <source>Opened read-only: the study is being written by %1</source>
+        <translation>以只读方式打开：研究正被 %1 写入</translation>
+    </message>
+    <message>
+        <source>Study in use</source>
+        <translation>研究正在使用</translation>
+    </message>
+    <message>
+        <source>The study is being written by %1.
+Open it read-only, or break the lock if you are sure that program no longer runs.</source>
+        <translation>研究正被 %1 写入。
+以只读方式打开；如果确定该程序已不再运行，也可以解除锁定。</translation>
+    </message>
+    <message>
+        <source>Open Read-Only</source>
+        <translation>以只读方式打开</translation>
+    </message>
+    <message>
+        <source>Break the Lock...</source>
+        <translation>解除锁定...</translation>
+    </message>
+    <message>
+        <source>Break the lock</source>
+        <translation>解除锁定</translation>
+    </message>
+    <message>
+        <source>If %1 still runs, both programs will write the study and results can be lost. Break the lock?</source>
+        <translation>如果 %1 仍在运行，两个程序将同时写入研究，结果可能丢失。解除锁定吗？</translation>
+    </message>
+    <message>
+        <source>Open study</source>
+        <translation>打开研究</translation>
+    </message>
+    <message>
+        <source>Study opened with problems</source>
+        <translation>研究打开时有问题</translation>
+    </message>
+    <message>
+        <source>New study</source>
+        <translation>新建研究</translation>
+    </message>
+    <message>
+        <source>Save study</source>
+        <translation>保存研究</translation>
+    </message>
+    <message>
+        <source>Save study as</source>
+        <translation>研究另存为</translation>
+    </message>
+    <message>
+        <source>Show image</source>
+        <translation>显示图像</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <source>Save the changes to this study before closing?</source>
+        <translation>关闭前保存对此研究的更改吗？</translation>
+    </message>
+    <message>
+        <source>Import volume</source>
+        <translation>导入体数据</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>导入 %1</translation>
+    </message>
+    <message>
+        <source>Import label</source>
+        <translation>导入标签</translation>
+    </message>
+    <message>
+        <source>The study has no CT image for the label&apos;s grid: import the CT first.</source>
+        <translation>研究中没有与标签网格对应的 CT 图像：请先导入 CT。</translation>
+    </message>
+    <message>
+        <source>Not Hounsfield units</source>
+        <translation>不是 Hounsfield 单位</translation>
+    </message>
+    <message>
+        <source>%1
+
+Rescale to HU (HU = slope x stored value + intercept):</source>
+        <translation>%1
+
+重新缩放为 HU（HU = 斜率 x 存储值 + 截距）：</translation>
+    </message>
+    <message>
+        <source>Import DICOM</source>
+        <translation>导入 DICOM</translation>
+    </message>
+    <message>
+        <source>Label Editing</source>
+        <translation>标签编辑</translation>
+    </message>
+    <message>
+        <source>Paint</source>
+        <translation>绘制</translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <translation>擦除</translation>
+    </message>
+    <message>
+        <source>Paint vessel voxels with the left button in any MPR view (one undo step per stroke)</source>
+        <translation>在任一 MPR 视图中用左键绘制血管体素（每一笔为一个撤销步骤）</translation>
+    </message>
+    <message>
+        <source>Erase vessel voxels with the left button in any MPR view</source>
+        <translation>在任一 MPR 视图中用左键擦除血管体素</translation>
+    </message>
+    <message>
+        <source> Radius </source>
+        <translation> 半径 </translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>球形</translation>
+    </message>
+    <message>
+        <source>3D brush: paint or erase a ball of the radius through the slices, not a disc in the view&apos;s plane</source>
+        <translation>3D 画笔：穿过各层绘制或擦除该半径的球，而不是视图平面内的圆盘</translation>
+    </message>
+    <message>
+        <source> Paint as </source>
+        <translation> 绘制为 </translation>
+    </message>
+    <message>
+        <source>Lumen</source>
+        <translation>管腔</translation>
+    </message>
+    <message>
+        <source>Thrombus</source>
+        <translation>血栓</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>管壁</translation>
+    </message>
+    <message>
+        <source>The label value the brush paints: the lumen, or the thrombus and wall of an AAA sac label</source>
+        <translation>画笔绘制的标签值：管腔，或 AAA 瘤囊标签的血栓和管壁</translation>
+    </message>
+    <message>
+        <source>Remove Island</source>
+        <translation>移除孤岛</translation>
+    </message>
+    <message>
+        <source>Remove the connected piece of the label at the cursor (click it in an MPR view first)</source>
+        <translation>移除光标处标签的连通片（先在 MPR 视图中点击它）</translation>
+    </message>
+    <message>
+        <source>Apply Edits</source>
+        <translation>应用编辑</translation>
+    </message>
+    <message>
+        <source>Discard Edits</source>
+        <translation>放弃编辑</translation>
+    </message>
+    <message>
+        <source>Add the edited label to the study as a new artifact (the original stays)</source>
+        <translation>将编辑后的标签作为新对象加入研究（原标签保留）</translation>
+    </message>
+    <message>
+        <source>Label edits: %1 voxels painted, %2 erased</source>
+        <translation>标签编辑：绘制 %1 个体素，擦除 %2 个</translation>
+    </message>
+    <message>
+        <source>Edit label</source>
+        <translation>编辑标签</translation>
+    </message>
+    <message>
+        <source>The study has no vessel label: segment the vessels first.</source>
+        <translation>研究中没有血管标签：请先分割血管。</translation>
+    </message>
+    <message>
+        <source>No labelled voxel within 3 mm of the cursor</source>
+        <translation>光标 3 mm 内没有标签体素</translation>
+    </message>
+    <message>
+        <source>Island removed: %1 voxels erased in all</source>
+        <translation>已移除孤岛：共擦除 %1 个体素</translation>
+    </message>
+    <message>
+        <source>Apply label edits</source>
+        <translation>应用标签编辑</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;New Study...</source>
+        <translation>新建研究(&amp;N)...</translation>
+    </message>
+    <message>
+        <source>Study folder (*.vsim)</source>
+        <translation>研究文件夹 (*.vsim)</translation>
+    </message>
+    <message>
+        <source>&amp;Open Study...</source>
+        <translation>打开研究(&amp;O)...</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Import &amp;DICOM...</source>
+        <translation>导入 DICOM(&amp;D)...</translation>
+    </message>
+    <message>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <source>&amp;Import Volume...</source>
+        <translation>导入体数据(&amp;I)...</translation>
+    </message>
+    <message>
+        <source>Ctrl+I</source>
+        <translation>Ctrl+I</translation>
+    </message>
+    <message>
+        <source>Import &amp;Label...</source>
+        <translation>导入标签(&amp;L)...</translation>
+    </message>
+    <message>
+        <source>Import label (a mask on the CT&apos;s grid)</source>
+        <translation>导入标签（CT 网格上的掩模）</translation>
+    </message>
+    <message>
+        <source>Volumes (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;DICOM SEG or a mask series&apos; slice (*.dcm *.DCM *.IMA);;All files (*)</source>
+        <translation>体数据 (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;DICOM SEG 或掩模序列的一层 (*.dcm *.DCM *.IMA);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>另存为(&amp;A)...</translation>
+    </message>
+    <message>
+        <source>Export &amp;Report...</source>
+        <translation>导出报告(&amp;R)...</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <source>&amp;Close Window</source>
+        <translation>关闭窗口(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Re&amp;name Artifact...</source>
+        <translation>重命名对象(&amp;N)...</translation>
+    </message>
+    <message>
+        <source>Rename artifact</source>
+        <translation>重命名对象</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>名称：</translation>
+    </message>
+    <message>
+        <source>&amp;Delete Artifact</source>
+        <translation>删除对象(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Window/Level: &amp;CTA</source>
+        <translation>窗宽/窗位：CTA(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Window/Level: &amp;Soft Tissue</source>
+        <translation>窗宽/窗位：软组织(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Window/Level: &amp;Bone</source>
+        <translation>窗宽/窗位：骨(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Window/Level: &amp;Lung</source>
+        <translation>窗宽/窗位：肺(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Slice Views</source>
+        <translation>重置切片视图(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Centre the volume and show it whole in the axial, coronal and sagittal views (R in a view)</source>
+        <translation>使体数据居中，并在轴位、冠状位和矢状位视图中完整显示（在视图中按 R）</translation>
+    </message>
+    <message>
+        <source>&amp;Link Slice Views</source>
+        <translation>链接切片视图(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Linked, the slice views share the cursor and window/level</source>
+        <translation>链接后，各切片视图共享光标和窗宽/窗位</translation>
+    </message>
+    <message>
+        <source>Show &amp;Crosshair</source>
+        <translation>显示十字线(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Right Drag &amp;Zooms (Slicer)</source>
+        <translation>右键拖动缩放(&amp;Z)（Slicer）</translation>
+    </message>
+    <message>
+        <source>Right drag in a slice view zooms instead of changing window/level (kept in the settings)</source>
+        <translation>在切片视图中右键拖动时缩放，而不是改变窗宽/窗位（保存在设置中）</translation>
+    </message>
+    <message>
+        <source>Thick Slab &amp;MIP</source>
+        <translation>厚层 MIP(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Off (thin slice)</source>
+        <translation>关闭（薄层）</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>3D: &amp;Anterior View</source>
+        <translation>3D：前视图(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>用户指南(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard and Mouse</source>
+        <translation>键盘与鼠标(&amp;K)</translation>
+    </message>
+    <message>
+        <source>&amp;About VascuSim</source>
+        <translation>关于 VascuSim(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>System Language</source>
+        <translation>系统语言</translation>
+    </message>
+    <message>
+        <source>The language changes when VascuSim starts next.</source>
+        <translation>语言将在 VascuSim 下次启动时更改。</translation>
+    </message>
+    <message>
+        <source>About VascuSim</source>
+        <translation>关于 VascuSim</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;Patient-specific physics for vascular procedure planning.&lt;/p&gt;&lt;p&gt;Results support planning and need clinical judgement.&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</source>
+        <translation>&lt;h3&gt;VascuSim&lt;/h3&gt;&lt;p&gt;用于血管介入手术规划的患者特异性物理模拟。&lt;/p&gt;&lt;p&gt;结果仅辅助规划，需结合临床判断。&lt;/p&gt;&lt;table&gt;%1&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Drug</source>
+        <translation>药物(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Drug &amp;Delivery</source>
+        <translation>药物输送(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Liver from Points</source>
+        <translation>从点生成肝脏(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Tumour from Points</source>
+        <translation>从点生成肿瘤(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Drug &amp;Parameters...</source>
+        <translation>药物参数(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>Drug delivery parameters</source>
+        <translation>药物输送参数</translation>
+    </message>
+    <message>
+        <source>Drug delivery</source>
+        <translation>药物输送</translation>
+    </message>
+    <message>
+        <source>The network needs centerlines: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>网络需要中心线：请先运行“骨架与中心线”。</translation>
+    </message>
+    <message>
+        <source>The tip needs three numbers (mm) and the tumour four (centre and radius).</source>
+        <translation>尖端需要三个数（mm），肿瘤需要四个（中心和半径）。</translation>
+    </message>
+    <message>
+        <source>The tumour&apos;s radius must be positive.</source>
+        <translation>肿瘤半径必须为正数。</translation>
+    </message>
+    <message>
+        <source>Control points are x, y, z in mm, separated by &apos;;&apos;.</source>
+        <translation>控制点为以 mm 为单位的 x, y, z，用“;”分隔。</translation>
+    </message>
+    <message>
+        <source>The tumour label is read with a liver label: choose the liver too.</source>
+        <translation>肿瘤标签需与肝脏标签一起读取：请同时选择肝脏。</translation>
+    </message>
+    <message>
+        <source>Feeders are corrected on a run with a liver label: choose the liver too.</source>
+        <translation>供血支在带肝脏标签的运行上校正：请同时选择肝脏。</translation>
+    </message>
+    <message>
+        <source>Drug flow</source>
+        <translation>药物流量</translation>
+    </message>
+    <message>
+        <source>Drug Delivery</source>
+        <translation>药物输送</translation>
+    </message>
+    <message>
+        <source>Drug delivery: %1 outlets, last reached after %2 s</source>
+        <translation>药物输送：%1 个出口，%2 s 后到达最后一个</translation>
+    </message>
+    <message>
+        <source>Tumour from points</source>
+        <translation>从点生成肿瘤</translation>
+    </message>
+    <message>
+        <source>Liver from points</source>
+        <translation>从点生成肝脏</translation>
+    </message>
+    <message>
+        <source>Place include points inside the %1 first (Vessels &gt; Segment from Points, on the MPR views), then grow it from them.</source>
+        <translation>请先在%1内放置包含点（血管 &gt; 从点分割，在 MPR 视图上），然后从这些点生长。</translation>
+    </message>
+    <message>
+        <source>tumour</source>
+        <translation>肿瘤</translation>
+    </message>
+    <message>
+        <source>liver</source>
+        <translation>肝脏</translation>
+    </message>
+    <message>
+        <source>A tumour grows within the liver: choose the liver label in the Drug Delivery dock first (or grow it: Drug &gt; Liver from Points).</source>
+        <translation>肿瘤在肝脏内生长：请先在“药物输送”停靠窗中选择肝脏标签（或生成它：药物 &gt; 从点生成肝脏）。</translation>
+    </message>
+    <message>
+        <source>%1 grown from %2 point(s): %3 ml; choose it as the %4 label in the Drug Delivery dock</source>
+        <translation>由 %2 个点生长出%1：%3 ml；请在“药物输送”停靠窗中将其选为%4标签</translation>
+    </message>
+    <message>
+        <source>tip</source>
+        <translation>尖端</translation>
+    </message>
+    <message>
+        <source>lesion %1</source>
+        <translation>病灶 %1</translation>
+    </message>
+    <message>
+        <source>feeder %1</source>
+        <translation>供血支 %1</translation>
+    </message>
+    <message>
+        <source>Chemoembolization from the tip: coverage grade %1, territory %2 ml, %3 feeder(s)</source>
+        <translation>从尖端化疗栓塞：覆盖等级 %1，供血区域 %2 ml，%3 个供血支</translation>
+    </message>
+    <message>
+        <source>F&amp;low</source>
+        <translation>血流(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Blood &amp;Flow (SPH)</source>
+        <translation>血流 (SPH)(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Needle &amp;Injection (SPH, Thesis Scenario a)</source>
+        <translation>针头注射（SPH，论文情景 a）(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Wall Loads</source>
+        <translation>管壁载荷(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Time-Averaged Wall &amp;Shear Stress</source>
+        <translation>时间平均管壁剪切应力(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Oscillatory Shear Index</source>
+        <translation>振荡剪切指数(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Mean Wall &amp;Pressure</source>
+        <translation>平均管壁压力(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Blood Flow &amp;Parameters...</source>
+        <translation>血流参数(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>Blood flow parameters</source>
+        <translation>血流参数</translation>
+    </message>
+    <message>
+        <source>Inlet, outlets, figures</source>
+        <translation>入口、出口、数值</translation>
+    </message>
+    <message>
+        <source>Needle injection</source>
+        <translation>针头注射</translation>
+    </message>
+    <message>
+        <source>SPH solver</source>
+        <translation>SPH 求解器</translation>
+    </message>
+    <message>
+        <source>Blood flow</source>
+        <translation>血流</translation>
+    </message>
+    <message>
+        <source>The vessel ends come from the centerlines: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>血管末端来自中心线：请先运行“骨架与中心线”。</translation>
+    </message>
+    <message>
+        <source>Read these results with care: %1</source>
+        <translation>请谨慎解读这些结果：%1</translation>
+    </message>
+    <message>
+        <source>Blood flow: peak velocity ratio %1 at %2 mm along the centerline (mean ratio %3), pressure drop %4 mmHg</source>
+        <translation>血流：峰值速度比 %1，位于沿中心线 %2 mm 处（平均比 %3），压降 %4 mmHg</translation>
+    </message>
+    <message>
+        <source>Blood flow: no stenosis figures (%1)</source>
+        <translation>血流：无狭窄数值（%1）</translation>
+    </message>
+    <message>
+        <source>Needle injection: %1 ml in the vessel, %2 ml collected in the box at %3 s</source>
+        <translation>针头注射：血管内 %1 ml，%3 s 时收集盒内 %2 ml</translation>
+    </message>
+    <message>
+        <source>TAWSS (Pa)</source>
+        <translation>TAWSS (Pa)</translation>
+    </message>
+    <message>
+        <source>OSI (0-0.5)</source>
+        <translation>OSI (0-0.5)</translation>
+    </message>
+    <message>
+        <source>mean wall pressure (Pa)</source>
+        <translation>平均管壁压力 (Pa)</translation>
+    </message>
+    <message>
+        <source>Wall loads</source>
+        <translation>管壁载荷</translation>
+    </message>
+    <message>
+        <source>No wall loads yet: run Flow &gt; Blood Flow (SPH) long enough to reach its averaging window.</source>
+        <translation>尚无管壁载荷：请让 血流 &gt; 血流 (SPH) 运行足够长，直到其平均时间窗。</translation>
+    </message>
+    <message>
+        <source>, NOT CONVERGED</source>
+        <translation>，未收敛</translation>
+    </message>
+    <message>
+        <source>, STOPPED EARLY</source>
+        <translation>，提前停止</translation>
+    </message>
+    <message>
+        <source>, averaged over %1-%2 ms</source>
+        <translation>，在 %1-%2 ms 上平均</translation>
+    </message>
+    <message>
+        <source>, time-averaged</source>
+        <translation>，时间平均</translation>
+    </message>
+    <message>
+        <source>; grey: no value</source>
+        <translation>；灰色：无值</translation>
+    </message>
+    <message>
+        <source>Report</source>
+        <translation>报告</translation>
+    </message>
+    <message>
+        <source>No PDF viewer opened %1.</source>
+        <translation>没有 PDF 查看器打开 %1。</translation>
+    </message>
+    <message>
+        <source>Replace files</source>
+        <translation>替换文件</translation>
+    </message>
+    <message>
+        <source>These files exist already:
+%1
+Replace them?</source>
+        <translation>这些文件已存在：
+%1
+替换它们吗？</translation>
+    </message>
+    <message>
+        <source>Report written to %1</source>
+        <translation>报告已写入 %1</translation>
+    </message>
+    <message>
+        <source>Preparing the views</source>
+        <translation>正在准备视图</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <comment>a vessel segment (noun)</comment>
+        <translation>段</translation>
+    </message>
+    <message>
+        <source>The segment&apos;s anatomical name (double-click to rename) or its end nodes</source>
+        <translation>段的解剖名称（双击重命名）或其端节点</translation>
+    </message>
+    <message>
+        <source>Length (mm)</source>
+        <translation>长度 (mm)</translation>
+    </message>
+    <message>
+        <source>Length along the centerline (mm)</source>
+        <translation>沿中心线的长度 (mm)</translation>
+    </message>
+    <message>
+        <source>Start r (mm)</source>
+        <translation>起点 r (mm)</translation>
+    </message>
+    <message>
+        <source>Lumen radius at the segment&apos;s start (mm)</source>
+        <translation>段起点的管腔半径 (mm)</translation>
+    </message>
+    <message>
+        <source>End r (mm)</source>
+        <translation>终点 r (mm)</translation>
+    </message>
+    <message>
+        <source>Lumen radius at the segment&apos;s end (mm)</source>
+        <translation>段终点的管腔半径 (mm)</translation>
+    </message>
+    <message>
+        <source>Reference Ø (mm)</source>
+        <translation>参考 Ø (mm)</translation>
+    </message>
+    <message>
+        <source>Reference lumen diameter: the median equivalent diameter of the segment&apos;s sections (mm)</source>
+        <translation>参考管腔直径：该段各截面等效直径的中位数 (mm)</translation>
+    </message>
+    <message>
+        <source>Minimal Ø (mm)</source>
+        <translation>最小 Ø (mm)</translation>
+    </message>
+    <message>
+        <source>Minimal lumen diameter (equivalent) along the segment, in sections perpendicular to the centerline (mm)</source>
+        <translation>沿该段在垂直于中心线的截面中的最小管腔直径（等效）(mm)</translation>
+    </message>
+    <message>
+        <source>Stenosis (%)</source>
+        <translation>狭窄 (%)</translation>
+    </message>
+    <message>
+        <source>Diameter stenosis: 100 (1 - minimal / reference diameter) (%)</source>
+        <translation>直径狭窄率：100 (1 - 最小 / 参考直径) (%)</translation>
+    </message>
+    <message>
+        <source>Max Ø (mm)</source>
+        <translation>最大 Ø (mm)</translation>
+    </message>
+    <message>
+        <source>Largest lumen caliper width along the segment (mm); the AAA diameter outer wall to outer wall (SVS) is the sac&apos;s row</source>
+        <translation>沿该段的最大管腔卡尺宽度 (mm)；外壁到外壁的 AAA 直径（SVS）见瘤囊一行</translation>
+    </message>
+    <message>
+        <source>Name Segment</source>
+        <translation>命名段</translation>
+    </message>
+    <message>
+        <source>Anatomical name of the segment:</source>
+        <translation>段的解剖名称：</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>Segment %1 (nodes %2-%3); double-click to rename</source>
+        <translation>段 %1（节点 %2-%3）；双击重命名</translation>
+    </message>
+    <message>
+        <source>AAA maximum diameter, outer wall to outer wall (SVS): %1 mm</source>
+        <translation>AAA 最大直径，外壁到外壁（SVS）：%1 mm</translation>
+    </message>
+    <message>
+        <source>Lumen diameter there (equivalent): %1 mm</source>
+        <translation>该处管腔直径（等效）：%1 mm</translation>
+    </message>
+    <message>
+        <source>Largest thrombus thickness: %1 mm</source>
+        <translation>最大血栓厚度：%1 mm</translation>
+    </message>
+    <message>
+        <source>Sac volume: %1 ml</source>
+        <translation>瘤囊体积：%1 ml</translation>
+    </message>
+    <message>
+        <source>Neck diameter (outer, at the lowest renal artery): %1 mm</source>
+        <translation>瘤颈直径（外径，最低肾动脉处）：%1 mm</translation>
+    </message>
+    <message>
+        <source>Neck length: %1 mm</source>
+        <translation>瘤颈长度：%1 mm</translation>
+    </message>
+    <message>
+        <source>Neck angulation: %1 degrees</source>
+        <translation>瘤颈成角：%1 度</translation>
+    </message>
+    <message>
+        <source>Right common iliac diameter (outer): %1 mm</source>
+        <translation>右髂总动脉直径（外径）：%1 mm</translation>
+    </message>
+    <message>
+        <source>Left common iliac diameter (outer): %1 mm</source>
+        <translation>左髂总动脉直径（外径）：%1 mm</translation>
+    </message>
+    <message>
+        <source>Wall thickness (assumed): %1 mm</source>
+        <translation>管壁厚度（假设）：%1 mm</translation>
+    </message>
+    <message>
+        <source>Maximum lumen diameter %1 mm (equivalent, perpendicular)</source>
+        <translation>最大管腔直径 %1 mm（等效，垂直）</translation>
+    </message>
+    <message>
+        <source>V&amp;essels</source>
+        <translation>血管(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Segment from &amp;Points...</source>
+        <translation>从点分割(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>&amp;Segment Vessels</source>
+        <translation>分割血管(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Segment from the &amp;Cursor</source>
+        <translation>从光标处分割(&amp;C)</translation>
+    </message>
+    <message>
+        <source>S&amp;keleton and Centerlines</source>
+        <translation>骨架与中心线(&amp;K)</translation>
+    </message>
+    <message>
+        <source>AAA &amp;Sac (Outer Wall, Thrombus)</source>
+        <translation>AAA 瘤囊（外壁、血栓）(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Along the Vessel (3D + CPR)</source>
+        <translation>沿血管(&amp;A)（3D + CPR）</translation>
+    </message>
+    <message>
+        <source>&amp;Edit Label (Brush)</source>
+        <translation>编辑标签（画笔）(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Parameters...</source>
+        <translation>参数(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>Vessel parameters</source>
+        <translation>血管参数</translation>
+    </message>
+    <message>
+        <source>Segmentation</source>
+        <translation>分割</translation>
+    </message>
+    <message>
+        <source>Segmentation from points</source>
+        <translation>从点分割</translation>
+    </message>
+    <message>
+        <source>Skeleton</source>
+        <translation>骨架</translation>
+    </message>
+    <message>
+        <source>Centerlines</source>
+        <translation>中心线</translation>
+    </message>
+    <message>
+        <source>The study has no CT image: import one first.</source>
+        <translation>研究中没有 CT 图像：请先导入。</translation>
+    </message>
+    <message>
+        <source>Segment vessels</source>
+        <translation>分割血管</translation>
+    </message>
+    <message>
+        <source>AAA sac</source>
+        <translation>AAA 瘤囊</translation>
+    </message>
+    <message>
+        <source>The study needs a CT image and an aortic lumen label: segment the aorta first.</source>
+        <translation>研究需要 CT 图像和主动脉管腔标签：请先分割主动脉。</translation>
+    </message>
+    <message>
+        <source>Skeleton and centerlines</source>
+        <translation>骨架与中心线</translation>
+    </message>
+    <message>
+        <source>Segmentation Points</source>
+        <translation>分割点</translation>
+    </message>
+    <message>
+        <source>Segment from points</source>
+        <translation>从点分割</translation>
+    </message>
+    <message>
+        <source>Place at least one include point inside the vessel (Place Include, then click in a slice view).</source>
+        <translation>请至少在血管内放置一个包含点（放置包含点，然后在切片视图中点击）。</translation>
+    </message>
+    <message>
+        <source>Segmented %1 ml (%2 leak(s) cut)%3</source>
+        <translation>已分割 %1 ml（切除 %2 处泄漏）%3</translation>
+    </message>
+    <message>
+        <source>, replacing the label of the run before</source>
+        <translation>，替换上一次运行的标签</translation>
+    </message>
+    <message>
+        <source>&amp;Wall</source>
+        <translation>管壁(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Build &amp;Wall Mesh</source>
+        <translation>构建管壁网格(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Wall Stress at &amp;Blood Pressure</source>
+        <translation>血压下的管壁应力(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Interactive Protocol</source>
+        <translation>交互方案(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Wall &amp;Parameters...</source>
+        <translation>管壁参数(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>Wall parameters</source>
+        <translation>管壁参数</translation>
+    </message>
+    <message>
+        <source>Wall mesh</source>
+        <translation>管壁网格</translation>
+    </message>
+    <message>
+        <source>Wall mechanics</source>
+        <translation>管壁力学</translation>
+    </message>
+    <message>
+        <source>&amp;Research</source>
+        <translation>研究(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Thesis Rupture Protocol (not physiological pressures)</source>
+        <translation>论文破裂方案（非生理压力）(&amp;T)</translation>
+    </message>
+    <message>
+        <source>The wall needs a vessel label and centerlines: run Segment and Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>管壁需要血管标签和中心线：请先运行“分割”和“骨架与中心线”。</translation>
+    </message>
+    <message>
+        <source>The thrombus layer needs the AAA sac: run Vessels &gt; AAA Sac first, or set Thrombus layer to 0 in the wall mesh parameters.</source>
+        <translation>血栓层需要 AAA 瘤囊：请先运行 血管 &gt; AAA 瘤囊，或在管壁网格参数中将血栓层设为 0。</translation>
+    </message>
+    <message>
+        <source>Wall: %1 elements, smallest dihedral angle %2 deg</source>
+        <translation>管壁：%1 个单元，最小二面角 %2 度</translation>
+    </message>
+    <message>
+        <source>Build the wall mesh first (Wall &gt; Build Wall Mesh).</source>
+        <translation>请先构建管壁网格（管壁 &gt; 构建管壁网格）。</translation>
+    </message>
+    <message>
+        <source>Wall stress</source>
+        <translation>管壁应力</translation>
+    </message>
+    <message>
+        <source>Thesis rupture protocol</source>
+        <translation>论文破裂方案</translation>
+    </message>
+    <message>
+        <source>Peak wall stress in the sac %1 kPa (99th percentile)</source>
+        <translation>瘤囊内峰值管壁应力 %1 kPa（第 99 百分位）</translation>
+    </message>
+    <message>
+        <source>Highest wall stress %1 kPa (no sac measured)</source>
+        <translation>最高管壁应力 %1 kPa（未测量瘤囊）</translation>
+    </message>
+    <message>
+        <source>, rupture index %1</source>
+        <translation>，破裂指数 %1</translation>
+    </message>
+    <message>
+        <source>; no rupture index: give the patient&apos;s sex and family history</source>
+        <translation>；无破裂指数：请给出患者的性别和家族史</translation>
+    </message>
+    <message>
+        <source>von Mises (kPa), NOT CONVERGED</source>
+        <translation>von Mises 应力 (kPa)，未收敛</translation>
+    </message>
+    <message>
+        <source>von Mises (kPa), STOPPED EARLY</source>
+        <translation>von Mises 应力 (kPa)，提前停止</translation>
+    </message>
+    <message>
+        <source>von Mises (kPa)</source>
+        <translation>von Mises 应力 (kPa)</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>0 mmHg</source>
+        <translation>0 mmHg</translation>
+    </message>
+    <message>
+        <source>Tear at %1 MPa</source>
+        <translation>在 %1 MPa 时撕裂</translation>
+    </message>
+    <message>
+        <source>Pressure</source>
+        <translation>压力</translation>
+    </message>
+    <message>
+        <source>Drag the wall with the left button in the 3D view.</source>
+        <translation>在 3D 视图中用左键拖动管壁。</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>%1 mmHg</source>
+        <translation>%1 mmHg</translation>
+    </message>
+    <message>
+        <source>%1 frames/s, peak von Mises %2 kPa</source>
+        <translation>%1 帧/秒，峰值 von Mises 应力 %2 kPa</translation>
+    </message>
+    <message>
+        <source>The simulation paused: %1</source>
+        <translation>模拟已暂停：%1</translation>
+    </message>
+    <message>
+        <source>Interactive Wall</source>
+        <translation>交互式管壁</translation>
+    </message>
+    <message>
+        <source>Loading run</source>
+        <translation>正在加载运行</translation>
+    </message>
+    <message>
+        <source>Click or drag to go to a frame</source>
+        <translation>点击或拖动以转到某一帧</translation>
+    </message>
+    <message>
+        <source>Run Player</source>
+        <translation>运行播放器</translation>
+    </message>
+    <message>
+        <source>Run Player: %1</source>
+        <translation>运行播放器：%1</translation>
+    </message>
+    <message>
+        <source>peak (fastest 5 %)</source>
+        <translation>峰值（最快 5 %）</translation>
+    </message>
+    <message>
+        <source>mean (flow rate / area)</source>
+        <translation>平均（流量 / 面积）</translation>
+    </message>
+    <message>
+        <source>mean pressure</source>
+        <translation>平均压力</translation>
+    </message>
+    <message>
+        <source>along the centerline from the inlet (mm)</source>
+        <translation>沿中心线距入口 (mm)</translation>
+    </message>
+    <message>
+        <source>velocity (m/s), time-averaged sections</source>
+        <translation>速度 (m/s)，时间平均截面</translation>
+    </message>
+    <message>
+        <source>pressure (Pa, gauge), time-averaged</source>
+        <translation>压力（Pa，表压），时间平均</translation>
+    </message>
+    <message>
+        <source>peak</source>
+        <translation>峰值</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>中位数</translation>
+    </message>
+    <message>
+        <source>segments</source>
+        <translation>段</translation>
+    </message>
+    <message>
+        <source>blood particles</source>
+        <translation>血液粒子</translation>
+    </message>
+    <message>
+        <source>voxels</source>
+        <translation>体素</translation>
+    </message>
+    <message>
+        <source>cells</source>
+        <translation>单元</translation>
+    </message>
+    <message>
+        <source>%1 over the %2 of each frame</source>
+        <translation>每帧 %2 上的 %1</translation>
+    </message>
+    <message>
+        <source>Voxel-grid frames are drawn in the slice views only</source>
+        <translation>体素网格帧只在切片视图中绘制</translation>
+    </message>
+    <message>
+        <source>&amp;Layout</source>
+        <translation>布局(&amp;L)</translation>
+    </message>
+    <message>
+        <source>2 x 2</source>
+        <translation>2 x 2</translation>
+    </message>
+    <message>
+        <source>1 x 1 (the active view)</source>
+        <translation>1 x 1（当前视图）</translation>
+    </message>
+    <message>
+        <source>1 x 3 (axial, coronal, sagittal)</source>
+        <translation>1 x 3（轴位、冠状位、矢状位）</translation>
+    </message>
+    <message>
+        <source>3D + MPR</source>
+        <translation>3D + MPR</translation>
+    </message>
+    <message>
+        <source>3D + CPR (along the vessel)</source>
+        <translation>3D + CPR（沿血管）</translation>
+    </message>
+    <message>
+        <source>&amp;Capture</source>
+        <translation>捕获(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Screenshot of the Active &amp;View</source>
+        <translation>当前视图截图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+S</source>
+        <comment>screenshot of the view</comment>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <source>Screenshot of the &amp;Window</source>
+        <translation>窗口截图(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Movie of the 3D &amp;Rotation</source>
+        <translation>3D 旋转影片(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Movie of the Played &amp;Run</source>
+        <translation>已播放运行的影片(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Capture &amp;Folder...</source>
+        <translation>捕获文件夹(&amp;F)...</translation>
+    </message>
+    <message>
+        <source>Capture folder</source>
+        <translation>捕获文件夹</translation>
+    </message>
+    <message>
+        <source>Screenshot saved: %1</source>
+        <translation>截图已保存：%1</translation>
+    </message>
+    <message>
+        <source>Screenshot</source>
+        <translation>截图</translation>
+    </message>
+    <message>
+        <source>Movie</source>
+        <translation>影片</translation>
+    </message>
+    <message>
+        <source>Open a run first (double-click it in the study tree): the movie plays its frames.</source>
+        <translation>请先打开一个运行（在研究树中双击）：影片播放其各帧。</translation>
+    </message>
+    <message>
+        <source>Writing the movie frames...</source>
+        <translation>正在写入影片帧...</translation>
+    </message>
+    <message>
+        <source>Movie cancelled: its frames were removed</source>
+        <translation>影片已取消：其帧已删除</translation>
+    </message>
+    <message>
+        <source>Movie saved: %1 frames in %2%3</source>
+        <translation>影片已保存：%1 帧，位于 %2%3</translation>
+    </message>
+    <message>
+        <source>Ruler</source>
+        <translation>标尺</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>角度</translation>
+    </message>
+    <message>
+        <source>ROI</source>
+        <translation>ROI</translation>
+    </message>
+    <message>
+        <source>&amp;Measure</source>
+        <translation>测量(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>&amp;Ruler</source>
+        <translation>标尺(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Distance (mm): press at one end in a slice view, drag to the other, release</source>
+        <translation>距离 (mm)：在切片视图中于一端按下，拖到另一端，松开</translation>
+    </message>
+    <message>
+        <source>&amp;Angle</source>
+        <translation>角度(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Angle (degrees): click the first arm&apos;s end, the vertex, then the second arm&apos;s end</source>
+        <translation>角度（度）：依次点击第一条边的端点、顶点、第二条边的端点</translation>
+    </message>
+    <message>
+        <source>Elliptical R&amp;OI</source>
+        <translation>椭圆 ROI(&amp;O)</translation>
+    </message>
+    <message>
+        <source>HU mean, SD and area (mm2) inside an ellipse: press at a corner of its box, drag, release</source>
+        <translation>椭圆内的 HU 均值、标准差和面积 (mm2)：在其外框的一角按下，拖动，松开</translation>
+    </message>
+    <message>
+        <source> (Escape drops a drawing; the tool stays until clicked again)</source>
+        <translation>（Esc 放弃绘制；工具保持选中，直到再次点击）</translation>
+    </message>
+    <message>
+        <source>&amp;Include the Selected Measurement in the Report</source>
+        <translation>将所选测量纳入报告(&amp;I)</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2：%3</translation>
+    </message>
+    <message>
+        <source>Measure %1</source>
+        <translation>测量 %1</translation>
+    </message>
+    <message>
+        <source>Include &quot;%1&quot; in the report</source>
+        <translation>将“%1”纳入报告</translation>
+    </message>
+    <message>
+        <source>Leave &quot;%1&quot; out of the report</source>
+        <translation>将“%1”移出报告</translation>
+    </message>
+    <message>
+        <source>Along the vessel</source>
+        <translation>沿血管</translation>
+    </message>
+    <message>
+        <source>The vessel view follows a centerline: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>血管视图沿中心线显示：请先运行“骨架与中心线”。</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::ParameterForm</name>
+    <message>
+        <source>%1 to %2%3, default %4%3</source>
+        <translation>%1 至 %2%3，默认 %4%3</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::ReportExportDialog</name>
+    <message>
+        <source>Export Report</source>
+        <translation>导出报告</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>浏览...</translation>
+    </message>
+    <message>
+        <source>Report</source>
+        <translation>报告</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>A4</source>
+        <translation>A4</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter</translation>
+    </message>
+    <message>
+        <source>Anonymize (no patient name, ID, birth date or institution)</source>
+        <translation>匿名化（不含患者姓名、ID、出生日期或机构）</translation>
+    </message>
+    <message>
+        <source>Also as DICOM Encapsulated PDF (a new series of the study)</source>
+        <translation>同时作为 DICOM 封装 PDF（研究的新序列）</translation>
+    </message>
+    <message>
+        <source>Also the metrics as CSV and JSON</source>
+        <translation>同时导出 CSV 和 JSON 格式的指标</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>PDF file:</source>
+        <translation>PDF 文件：</translation>
+    </message>
+    <message>
+        <source>Paper:</source>
+        <translation>纸张：</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::RunPlayer</name>
+    <message>
+        <source>Loop</source>
+        <translation>循环</translation>
+    </message>
+    <message>
+        <source>Range per frame</source>
+        <translation>每帧范围</translation>
+    </message>
+    <message>
+        <source>Previous frame</source>
+        <translation>上一帧</translation>
+    </message>
+    <message>
+        <source>Next frame</source>
+        <translation>下一帧</translation>
+    </message>
+    <message>
+        <source>Play / pause</source>
+        <translation>播放 / 暂停</translation>
+    </message>
+    <message>
+        <source>Playback speed (1x = %1 frames per second)</source>
+        <translation>播放速度（1x = 每秒 %1 帧）</translation>
+    </message>
+    <message>
+        <source>The field the frames are coloured by</source>
+        <translation>用于给帧着色的场</translation>
+    </message>
+    <message>
+        <source>Scale the legend to each frame instead of the whole run</source>
+        <translation>按每一帧而非整个运行缩放图例</translation>
+    </message>
+    <message>
+        <source>no frames</source>
+        <translation>无帧</translation>
+    </message>
+    <message>
+        <source>frame %1 / %2, %3 %4 %5</source>
+        <translation>帧 %1 / %2，%3 %4 %5</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::SegmentationPointsPanel</name>
+    <message>
+        <source>Aorta (with its branches)</source>
+        <translation>主动脉（含分支）</translation>
+    </message>
+    <message>
+        <source>Hepatic arteries</source>
+        <translation>肝动脉</translation>
+    </message>
+    <message>
+        <source>All vessels from the points</source>
+        <translation>从各点出发的所有血管</translation>
+    </message>
+    <message>
+        <source>Aorta: every aortic segment with its branches to a length (no point needed: the abdominal aorta is found). Hepatic: a point in the aorta and one in the hepatic artery. All: every contrast vessel connected to the points, up to the path length.</source>
+        <translation>主动脉：每个主动脉段及其分支至一定长度（无需点：自动找到腹主动脉）。肝动脉：主动脉内一点和肝动脉内一点。所有：与各点相连的每条造影血管，直至路径长度。</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>目标</translation>
+    </message>
+    <message>
+        <source>target&apos;s default</source>
+        <translation>目标默认值</translation>
+    </message>
+    <message>
+        <source>Path length followed from the include points (0: aorta 1000 mm, hepatic 250 mm, all 150 mm)</source>
+        <translation>从包含点出发追踪的路径长度（0：主动脉 1000 mm，肝动脉 250 mm，所有 150 mm）</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>路径长度</translation>
+    </message>
+    <message>
+        <source>Place Include</source>
+        <translation>放置包含点</translation>
+    </message>
+    <message>
+        <source>Place Exclude</source>
+        <translation>放置排除点</translation>
+    </message>
+    <message>
+        <source>Click inside the vessel in any slice view to add an include point (drag a point to move it)</source>
+        <translation>在任一切片视图中点击血管内部以添加包含点（拖动点可移动它）</translation>
+    </message>
+    <message>
+        <source>Click in what must stay out (heart chamber, vein, kidney, bone) to add an exclude point</source>
+        <translation>点击必须排除的结构（心腔、静脉、肾脏、骨骼）以添加排除点</translation>
+    </message>
+    <message>
+        <source>Place Stop</source>
+        <translation>放置停止面</translation>
+    </message>
+    <message>
+        <source>Click in a slice view where the vessel must end: a stop plane in that view&apos;s plane through the point; the fronts do not cross it away from the include points</source>
+        <translation>在切片视图中点击血管必须终止之处：过该点、位于该视图平面内的停止面；波前不会越过它离开包含点</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>点</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>z (mm)</source>
+        <translation>z (mm)</translation>
+    </message>
+    <message>
+        <source>+N include point, xN exclude point, |N stop plane (its normal in the tag&apos;s tooltip)</source>
+        <translation>+N 包含点，xN 排除点，|N 停止面（其法向见标记的提示）</translation>
+    </message>
+    <message>
+        <source>Patient frame (LPS), mm</source>
+        <translation>患者坐标系（LPS），mm</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Remove the selected point</source>
+        <translation>移除所选的点</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>清除</translation>
+    </message>
+    <message>
+        <source>Segment from the points (a re-run replaces the label of the run before)</source>
+        <translation>从各点分割（重新运行将替换上一次运行的标签）</translation>
+    </message>
+    <message>
+        <source>Re-run when a point moves</source>
+        <translation>点移动时重新运行</translation>
+    </message>
+    <message>
+        <source>Stop plane, normal (%1, %2, %3) towards the side the fronts do not enter</source>
+        <translation>停止面，法向 (%1, %2, %3)，指向波前不进入的一侧</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <comment>verb: segment the vessels</comment>
+        <translation>分割</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::VesselViewPanel</name>
+    <message>
+        <source>The centerline segment shown along its length</source>
+        <translation>沿其长度显示的中心线段</translation>
+    </message>
+    <message>
+        <source>Rotation of the curved reformation about the centerline (degrees)</source>
+        <translation>曲面重建绕中心线的旋转（度）</translation>
+    </message>
+    <message>
+        <source>distance along the centerline (mm)</source>
+        <translation>沿中心线的距离 (mm)</translation>
+    </message>
+    <message>
+        <source>lumen diameter (mm)</source>
+        <translation>管腔直径 (mm)</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>段</translation>
+    </message>
+    <message>
+        <source>Rotation</source>
+        <translation>旋转</translation>
+    </message>
+    <message>
+        <source>segment %1</source>
+        <translation>段 %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2 mm)</source>
+        <translation>%1（%2 mm）</translation>
+    </message>
+    <message>
+        <source>lumen equivalent diameter (measured sections)</source>
+        <translation>管腔等效直径（测量截面）</translation>
+    </message>
+    <message>
+        <source>lumen diameter (2 x the centerline&apos;s radius: reads low)</source>
+        <translation>管腔直径（中心线半径的 2 倍：偏低）</translation>
+    </message>
+    <message>
+        <source>Straightened CPR, %1 deg
+%2 mm of centerline</source>
+        <translation>拉直 CPR，%1 度
+中心线 %2 mm</translation>
+    </message>
+    <message>
+        <source>Perpendicular to the centerline at %1 mm
+lumen %2 mm (circle: %3)</source>
+        <translation>在 %1 mm 处垂直于中心线
+管腔 %2 mm（圆：%3）</translation>
+    </message>
+    <message>
+        <source>equivalent diameter of the measured section</source>
+        <translation>测量截面的等效直径</translation>
+    </message>
+    <message>
+        <source>2 x the centerline&apos;s radius, which reads low; run the measurements</source>
+        <translation>中心线半径的 2 倍，偏低；请运行测量</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::WorkflowChecklist</name>
+    <message>
+        <source>Import a CT angiography series (DICOM folder or volume file).</source>
+        <translation>导入 CT 血管造影序列（DICOM 文件夹或体数据文件）。</translation>
+    </message>
+    <message>
+        <source>Segment the contrast-filled vessel lumen (automatic seed).</source>
+        <translation>分割充盈造影剂的血管管腔（自动种子）。</translation>
+    </message>
+    <message>
+        <source>Skeleton (VDSM) and centerlines of the lumen, with diameters in mm.</source>
+        <translation>管腔的骨架（VDSM）和中心线，直径以 mm 计。</translation>
+    </message>
+    <message>
+        <source>Tetrahedral wall mesh around the lumen (wall and thrombus thickness in mm).</source>
+        <translation>管腔周围的四面体管壁网格（管壁和血栓厚度以 mm 计）。</translation>
+    </message>
+    <message>
+        <source>Wall stress (kPa) at physiological blood pressure, converged or marked so.</source>
+        <translation>生理血压下的管壁应力 (kPa)，已收敛或有相应标记。</translation>
+    </message>
+    <message>
+        <source>Blood flow (SPH): velocity ratios and wall pressure along the centerline.</source>
+        <translation>血流 (SPH)：沿中心线的速度比和管壁压力。</translation>
+    </message>
+    <message>
+        <source>Drug delivery: perfused territory, tumour coverage and feeders for the catheter tip of the Drug Delivery dock.</source>
+        <translation>药物输送：“药物输送”停靠窗中导管尖端的灌注区域、肿瘤覆盖和供血支。</translation>
+    </message>
+    <message>
+        <source>Export the PDF report of the study&apos;s results.</source>
+        <translation>导出研究结果的 PDF 报告。</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>导入</translation>
+    </message>
+    <message>
+        <source>Skeleton &amp; Centerlines</source>
+        <translation>骨架与中心线</translation>
+    </message>
+    <message>
+        <source>Wall Mesh</source>
+        <translation>管壁网格</translation>
+    </message>
+    <message>
+        <source>Wall Stress</source>
+        <translation>管壁应力</translation>
+    </message>
+    <message>
+        <source>Blood Flow</source>
+        <translation>血流</translation>
+    </message>
+    <message>
+        <source>Drug Delivery</source>
+        <translation>药物输送</translation>
+    </message>
+    <message>
+        <source>Report</source>
+        <translation>报告</translation>
+    </message>
+    <message>
+        <source>not run</source>
+        <translation>未运行</translation>
+    </message>
+    <message>
+        <source>done: %1</source>
+        <translation>完成：%1</translation>
+    </message>
+    <message>
+        <source>stale: %1 was made from %2, which %3 has replaced since; run the step again</source>
+        <translation>过期：%1 由 %2 生成，而 %3 此后已替换了它；请重新运行此步骤</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>过期</translation>
+    </message>
+    <message>
+        <source>%1  (%2)</source>
+        <translation>%1  (%2)</translation>
+    </message>
+    <message>
+        <source>State: %1</source>
+        <translation>状态：%1</translation>
+    </message>
+    <message>
+        <source>Click to run.</source>
+        <translation>点击以运行。</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <comment>verb: segment the vessels</comment>
+        <translation>分割</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::viz::SliceView</name>
+    <message>
+        <source>W %1  L %2</source>
+        <translation>窗宽 %1  窗位 %2</translation>
+    </message>
+    <message>
+        <source>MIP slab %1 mm</source>
+        <translation>MIP 厚层 %1 mm</translation>
+    </message>
+    <message>
+        <source>Im %1/%2  %3 = %4 mm</source>
+        <translation>图像 %1/%2  %3 = %4 mm</translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3) mm</source>
+        <translation>(%1, %2, %3) mm</translation>
+    </message>
+    <message>
+        <source>%1 HU</source>
+        <translation>%1 HU</translation>
+    </message>
+</context>
+</TS>
