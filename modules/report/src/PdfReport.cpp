@@ -18,6 +18,8 @@ namespace {
 constexpr int kDotsPerInch = 300;
 constexpr double kMarginMm = 18.0;
 const char* const kFontFamily = "DejaVu Sans";
+/// Chinese (a patient's name, a segment named by the user): Debian's fonts-noto-cjk, the simplified Chinese face.
+const char* const kCjkFontFamily = "Noto Sans CJK SC";
 
 /// Lays the blocks out top to bottom on the writer's pages, starting a new page where a block does not fit.
 class PageLayout
@@ -97,7 +99,8 @@ public:
 private:
     QFont fontOf(double points, bool bold) const
     {
-        QFont font(kFontFamily);
+        QFont font;
+        font.setFamilies({kFontFamily, kCjkFontFamily});
         font.setPointSizeF(points);
         font.setBold(bold);
         font.setStyleStrategy(QFont::PreferNoShaping); // no ligatures: "fi" stays two letters for text search
