@@ -1685,6 +1685,85 @@
     </message>
 </context>
 <context>
+    <name>vsim::gui::EndoscopePanel</name>
+    <message>
+        <source>The centerline segment the camera flies along</source>
+        <translation>Das Mittelliniensegment, entlang dessen die Kamera fliegt</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>Fly the camera along the segment at the speed set</source>
+        <translation>Die Kamera mit der eingestellten Geschwindigkeit entlang des Segments fliegen</translation>
+    </message>
+    <message>
+        <source>Forwards (start to end)</source>
+        <translation>Vorwärts (Anfang zum Ende)</translation>
+    </message>
+    <message>
+        <source>Backwards (end to start)</source>
+        <translation>Rückwärts (Ende zum Anfang)</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Flight speed along the centerline (mm per second)</source>
+        <translation>Fluggeschwindigkeit entlang der Mittellinie (mm je Sekunde)</translation>
+    </message>
+    <message>
+        <source>The camera&apos;s position along the segment (mm from its start)</source>
+        <translation>Die Position der Kamera entlang des Segments (mm ab seinem Anfang)</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Focal length of the probe&apos;s lens (mm): longer narrows the field of view (4 mm sensor)</source>
+        <translation>Brennweite des Sondenobjektivs (mm): länger verengt das Sichtfeld (4-mm-Sensor)</translation>
+    </message>
+    <message>
+        <source>Distance in focus (mm along the view); out of focus the picture blurs and grows noisy</source>
+        <translation>Scharf gestellte Entfernung (mm entlang der Blickrichtung); unscharf wird das Bild verschwommen und verrauscht</translation>
+    </message>
+    <message>
+        <source>Aperture as an f-number: smaller lets in more light and shortens the depth of field</source>
+        <translation>Blende als Blendenzahl: kleiner lässt mehr Licht ein und verkürzt die Schärfentiefe</translation>
+    </message>
+    <message>
+        <source>Focus on Centre</source>
+        <translation>Auf die Mitte scharf stellen</translation>
+    </message>
+    <message>
+        <source>Set the focus distance to the wall at the picture&apos;s centre</source>
+        <translation>Die Schärfeentfernung auf die Wand in der Bildmitte setzen</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>Focal length</source>
+        <translation>Brennweite</translation>
+    </message>
+    <message>
+        <source>Focus distance</source>
+        <translation>Schärfeentfernung</translation>
+    </message>
+    <message>
+        <source>Aperture (f-number)</source>
+        <translation>Blende (Blendenzahl)</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+</context>
+<context>
     <name>vsim::gui::HelpWindow</name>
     <message>
         <source>VascuSim User Guide</source>
@@ -3035,6 +3114,26 @@ Ersetzen?</translation>
         <source>The vessel view follows a centerline: run Skeleton &amp;&amp; Centerlines first.</source>
         <translation>Die Gefäßansicht folgt einer Mittellinie: zuerst Skelett &amp;&amp; Mittellinien ausführen.</translation>
     </message>
+    <message>
+        <source>Virtual &amp;Endoscope</source>
+        <translation>Virtuelles &amp;Endoskop</translation>
+    </message>
+    <message>
+        <source>A camera inside the lumen flying along a centerline, with focal length and focus</source>
+        <translation>Eine Kamera im Lumen, die entlang einer Mittellinie fliegt, mit Brennweite und Schärfe</translation>
+    </message>
+    <message>
+        <source>Virtual endoscope</source>
+        <translation>Virtuelles Endoskop</translation>
+    </message>
+    <message>
+        <source>The endoscope flies along a centerline: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>Das Endoskop fliegt entlang einer Mittellinie: zuerst Skelett &amp;&amp; Mittellinien ausführen.</translation>
+    </message>
+    <message>
+        <source>Virtual Endoscope</source>
+        <translation>Virtuelles Endoskop</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ParameterForm</name>
@@ -3274,14 +3373,6 @@ Ersetzen?</translation>
     <message>
         <source>Rotation</source>
         <translation>Drehung</translation>
-    </message>
-    <message>
-        <source>segment %1</source>
-        <translation>Segment %1</translation>
-    </message>
-    <message>
-        <source>%1 (%2 mm)</source>
-        <translation>%1 (%2 mm)</translation>
     </message>
     <message>
         <source>lumen equivalent diameter (measured sections)</source>

@@ -1684,6 +1684,85 @@
     </message>
 </context>
 <context>
+    <name>vsim::gui::EndoscopePanel</name>
+    <message>
+        <source>The centerline segment the camera flies along</source>
+        <translation>相机沿其飞行的中心线段</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>Fly the camera along the segment at the speed set</source>
+        <translation>以设定速度沿该段飞行相机</translation>
+    </message>
+    <message>
+        <source>Forwards (start to end)</source>
+        <translation>向前（起点到终点）</translation>
+    </message>
+    <message>
+        <source>Backwards (end to start)</source>
+        <translation>向后（终点到起点）</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> mm/s</translation>
+    </message>
+    <message>
+        <source>Flight speed along the centerline (mm per second)</source>
+        <translation>沿中心线的飞行速度（毫米每秒）</translation>
+    </message>
+    <message>
+        <source>The camera&apos;s position along the segment (mm from its start)</source>
+        <translation>相机沿该段的位置（距起点的 mm）</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Focal length of the probe&apos;s lens (mm): longer narrows the field of view (4 mm sensor)</source>
+        <translation>探头镜头的焦距 (mm)：越长视野越窄（4 mm 传感器）</translation>
+    </message>
+    <message>
+        <source>Distance in focus (mm along the view); out of focus the picture blurs and grows noisy</source>
+        <translation>对焦距离（沿视线的 mm）；失焦时图像模糊且噪声增多</translation>
+    </message>
+    <message>
+        <source>Aperture as an f-number: smaller lets in more light and shortens the depth of field</source>
+        <translation>以 f 数表示的光圈：越小进光越多、景深越浅</translation>
+    </message>
+    <message>
+        <source>Focus on Centre</source>
+        <translation>对焦于中心</translation>
+    </message>
+    <message>
+        <source>Set the focus distance to the wall at the picture&apos;s centre</source>
+        <translation>将对焦距离设为图像中心处的管壁</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>段</translation>
+    </message>
+    <message>
+        <source>Focal length</source>
+        <translation>焦距</translation>
+    </message>
+    <message>
+        <source>Focus distance</source>
+        <translation>对焦距离</translation>
+    </message>
+    <message>
+        <source>Aperture (f-number)</source>
+        <translation>光圈（f 数）</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+</context>
+<context>
     <name>vsim::gui::HelpWindow</name>
     <message>
         <source>VascuSim User Guide</source>
@@ -3033,6 +3112,26 @@ Replace them?</source>
         <source>The vessel view follows a centerline: run Skeleton &amp;&amp; Centerlines first.</source>
         <translation>血管视图沿中心线显示：请先运行“骨架与中心线”。</translation>
     </message>
+    <message>
+        <source>Virtual &amp;Endoscope</source>
+        <translation>虚拟内窥镜(&amp;E)</translation>
+    </message>
+    <message>
+        <source>A camera inside the lumen flying along a centerline, with focal length and focus</source>
+        <translation>管腔内沿中心线飞行的相机，可调焦距和对焦</translation>
+    </message>
+    <message>
+        <source>Virtual endoscope</source>
+        <translation>虚拟内窥镜</translation>
+    </message>
+    <message>
+        <source>The endoscope flies along a centerline: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>内窥镜沿中心线飞行：请先运行“骨架与中心线”。</translation>
+    </message>
+    <message>
+        <source>Virtual Endoscope</source>
+        <translation>虚拟内窥镜</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ParameterForm</name>
@@ -3272,14 +3371,6 @@ Replace them?</source>
     <message>
         <source>Rotation</source>
         <translation>旋转</translation>
-    </message>
-    <message>
-        <source>segment %1</source>
-        <translation>段 %1</translation>
-    </message>
-    <message>
-        <source>%1 (%2 mm)</source>
-        <translation>%1（%2 mm）</translation>
     </message>
     <message>
         <source>lumen equivalent diameter (measured sections)</source>

@@ -49,6 +49,7 @@ struct NetworkRunResult;
 
 namespace vsim::gui {
 
+class EndoscopePanel;
 class HelpWindow;
 class InteractiveWall;
 class LinePlot;
@@ -113,6 +114,11 @@ public:
     HelpWindow* showHelp(const QString& section);
     /// The "3D + CPR" layout on the newest centerlines (false, with a message, without them).
     bool showVesselView();
+    /// The virtual endoscope (Vessels > Virtual Endoscope) in its dock, inside the lumen of the label the newest
+    /// centerlines were made from; its surface is made in the background when the scene has none. False, with a
+    /// message, without centerlines.
+    bool showEndoscope();
+    EndoscopePanel* endoscope() const { return m_endoscope; }
     /// Marks a measurement artifact for the report's measurements section (undoable).
     void setMeasurementInReport(const std::string& id, bool inReport);
     /// Segments the vessels of the newest image in the background (segmentationParameters(); automatic seed
@@ -355,6 +361,8 @@ private:
     std::set<std::string> m_hiddenArtifacts;
     QAction* m_measurementInReport = nullptr;
     bool m_vesselViewConnected = false;
+    EndoscopePanel* m_endoscope = nullptr;
+    QDockWidget* m_endoscopeDock = nullptr;
     HelpWindow* m_help = nullptr;
     std::optional<ViewState> m_pendingViewState; // applied once a reopened study's views are prepared
     LabelEditSession* m_labelEdit = nullptr;

@@ -5,6 +5,7 @@
 // cursor on the frame (a click in it scrubs). One player for every solver; the legend's range is the run's (fixed
 // while playing) or each frame's.
 
+#include "EndoscopePanel.h"
 #include "LinePlot.h"
 #include "MainWindow.h"
 #include "RunPlayer.h"
@@ -285,6 +286,8 @@ void MainWindow::drawRunFrame()
     {
         // With the wall loads around them (see-through) the particles are drawn smaller: 4-pixel sprites of the
         // particles next to the wall reach through the surface in front of them and hide it.
+        if (m_endoscope)
+            m_endoscope->setParticles(particles->positionsMm);
         if (particles->fields.count(field))
             view->showFieldPoints(particles->positionsMm, particles->fields.at(field), range.first, range.second,
                                   m_wallLoads ? 2.0 : 4.0, title);

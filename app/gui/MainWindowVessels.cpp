@@ -191,6 +191,10 @@ void MainWindow::createVesselMenu()
                                             [this] { extractSkeletonAndCenterlines(); });
     m_documentActions << vessels->addAction(tr("AAA &Sac (Outer Wall, Thrombus)"), this, [this] { measureSac(); });
     m_documentActions << vessels->addAction(tr("&Along the Vessel (3D + CPR)"), this, [this] { showVesselView(); });
+    QAction* endoscope = vessels->addAction(tr("Virtual &Endoscope"), this, [this] { showEndoscope(); });
+    endoscope->setObjectName("endoscopeAction");
+    endoscope->setToolTip(tr("A camera inside the lumen flying along a centerline, with focal length and focus"));
+    m_documentActions << endoscope;
     vessels->addSeparator();
     m_documentActions << vessels->addAction(tr("&Edit Label (Brush)"), this, [this] { startLabelEditing(); });
     m_documentActions << vessels->addAction(tr("&Parameters..."), this, [this] { editVesselParameters(); });

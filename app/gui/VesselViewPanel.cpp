@@ -1,5 +1,7 @@
 #include "VesselViewPanel.h"
 
+#include "SegmentChoices.h"
+
 #include "vsim/viz/PlaneImageView.h"
 
 #include <QComboBox>
@@ -71,17 +73,7 @@ void VesselViewPanel::setData(const CtVolume& ct, const SkeletonGraph& centerlin
     if (measured && measured->segments.size() == centerlines.edges.size())
         m_measured = *measured;
     const QSignalBlocker quiet(m_segments);
-    m_segments->clear();
-    int longest = -1;
-    for (std::size_t e = 0; e < centerlines.edges.size(); ++e)
-    {
-        if (centerlines.edges[e].points.size() < 2)
-            continue;
-        const QString name = e < names.size() && !names[e].empty() ? QString::fromStdString(names[e]) : tr("segment %1").arg(e + 1);
-        m_segments->addItem(tr("%1 (%2 mm)").arg(name).arg(centerlines.edges[e].length(), 0, 'f', 0), int(e));
-        if (longest < 0 || centerlines.edges[e].length() > centerlines.edges[std::size_t(longest)].length())
-            longest = int(e);
-    }
+    const int longest = fillSegmentChoices(m_segments, centerlines, names);
     m_edge = -1;
     if (longest >= 0)
     {
@@ -102,17 +94,12 @@ void VesselViewPanel::clear()
 
 void VesselViewPanel::setSegment(int edge)
 {
-    if (edge < 0 || std::size_t(edge) >= m_centerlines.edges.size() || edge == m_edge)
+    if (edge == m_edge)
         return;
-    const SkeletonGraph::Edge& chosen = m_centerlines.edges[std::size_t(edge)];
-    try
-    {
-        m_frames = imaging::centerlineFrames(chosen.points, chosen.radii, kStepMm);
-    }
-    catch (const std::exception&)
-    {
-        return; // a segment shorter than one step: nothing to show along it
-    }
+    std::optional<imaging::CenterlineFrames> frames = segmentFrames(m_centerlines, edge, kStepMm);
+    if (!frames)
+        return;
+    m_frames = std::move(*frames);
     m_edge = edge;
     if (const int index = m_segments->findData(edge); index >= 0 && index != m_segments->currentIndex())
     {

@@ -6,6 +6,7 @@
 // a CJK font (no missing-glyph boxes). Marker phantom (MarkerPhantom.h); screenshots in
 // test-output/gui-translations.
 #include "DicomImportDialog.h"
+#include "EndoscopePanel.h"
 #include "GuiTestMain.h"
 #include "Languages.h"
 #include "MainWindow.h"
@@ -149,6 +150,14 @@ QString markerStudy()
     return QString::fromStdString(bundle.string());
 }
 
+/// Shows `window` at 1400 x 900 on the marker study; false when it does not open.
+bool showOnMarkerStudy(gui::MainWindow& window)
+{
+    window.resize(1400, 900);
+    window.show();
+    return QTest::qWaitForWindowExposed(&window) && window.openStudy(markerStudy()) && test::waitForTask(window, 30000);
+}
+
 /// Whether every character of `text` drawn in `font` has a glyph (none is the missing-glyph box).
 bool allGlyphsFound(const QString& text, const QFont& font)
 {
@@ -193,11 +202,7 @@ private slots:
         PseudoTranslator pseudo;
         QApplication::installTranslator(&pseudo);
         gui::MainWindow window;
-        window.resize(1400, 900);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openStudy(markerStudy()));
-        QVERIFY(test::waitForTask(window, 30000));
+        QVERIFY(showOnMarkerStudy(window));
         // The study's own words (its name, the series description) are data, not interface.
         const QStringList data{"marker", "marker CT"};
         QStringList found = untranslatedTexts(&window, data);
@@ -211,6 +216,8 @@ private slots:
         found << untranslatedTexts(&report, data);
         gui::DicomImportDialog dicom(&window);
         found << untranslatedTexts(&dicom, data);
+        gui::EndoscopePanel endoscope; // made when first opened
+        found << untranslatedTexts(&endoscope, data);
         QApplication::removeTranslator(&pseudo);
         for (const QString& text : found)
             qWarning("outside tr(): %s", qPrintable(text));
@@ -269,11 +276,7 @@ private slots:
         QCOMPARE(gui::chosenLanguage(), language);
         QVERIFY(gui::installLanguage(gui::chosenLanguage()));
         gui::MainWindow window;
-        window.resize(1400, 900);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.openStudy(markerStudy()));
-        QVERIFY(test::waitForTask(window, 30000));
+        QVERIFY(showOnMarkerStudy(window));
         const QList<QAction*> menus = window.menuBar()->actions();
         QCOMPARE(menus.first()->text(), file);
         QVERIFY(std::any_of(menus.begin(), menus.end(), [&](QAction* menu) { return menu->text() == view; }));
