@@ -1,12 +1,13 @@
-// Measurement tools from the workstation (issue 20, item 2): a ruler dragged, an angle clicked and an ROI dragged
-// on the slice views of the marker phantom become measurement artifacts with the figures their points give
-// (ruler and angle to 0.01, the ROI inside the 3000 HU block exactly 3000 HU), drawn (cyan pixels) only in the view
-// and slice they were drawn in, undoable, kept when the study is saved and reopened, and listed in the report's
-// measurements section once marked; a double-click in the study tree goes to one.
+// Measurement tools from the workstation (issue 20, item 2): a ruler dragged, an angle clicked and an ROI
+// dragged on the slice views of the marker phantom become measurement artifacts with the figures their points
+// give (ruler and angle to 0.01, the ROI inside the 3000 HU block exactly 3000 HU), drawn (cyan pixels) only
+// in the view and slice they were drawn in, undoable, kept when the study is saved and reopened, and listed
+// in the report's measurements section once marked; a double-click in the study tree goes to one.
 #include "GuiTestMain.h"
 #include "MainWindow.h"
-#include "PixelChecks.h"
 #include "MarkerPhantom.h"
+#include "PixelChecks.h"
+#include "SliceMouse.h"
 #include "TestOutput.h"
 #include "ViewLayout.h"
 #include "vsim/app/StudyReport.h"
@@ -21,32 +22,6 @@
 
 using namespace vsim;
 using viz::SliceOrientation;
-
-namespace {
-
-void mouse(viz::SliceView* view, QEvent::Type type, const Eigen::Vector3d& atMm, Qt::MouseButtons buttons)
-{
-    const QPointF at = view->widgetAt(atMm);
-    QMouseEvent event(type, at, view->mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
-    QApplication::sendEvent(view, &event);
-}
-
-void drag(viz::SliceView* view, const Eigen::Vector3d& from, const Eigen::Vector3d& to)
-{
-    mouse(view, QEvent::MouseButtonPress, from, Qt::LeftButton);
-    mouse(view, QEvent::MouseMove, 0.5 * (from + to), Qt::LeftButton);
-    mouse(view, QEvent::MouseMove, to, Qt::LeftButton);
-    mouse(view, QEvent::MouseButtonRelease, to, Qt::NoButton);
-}
-
-void click(viz::SliceView* view, const Eigen::Vector3d& at)
-{
-    mouse(view, QEvent::MouseButtonPress, at, Qt::LeftButton);
-    mouse(view, QEvent::MouseButtonRelease, at, Qt::NoButton);
-}
-
-
-} // namespace
 
 class TestMeasure : public QObject
 {
@@ -83,8 +58,9 @@ private slots:
         // A ruler 30 mm along x and 40 mm along y in the axial plane: 50 mm.
         action(*window, "measureRulerAction")->trigger();
         QCOMPARE(axial->measureTool(), viz::MeasureTool::Ruler);
-        const Eigen::Vector3d a = m_phantom.marker + Eigen::Vector3d(-15.0, -20.0, 0.0), b = a + Eigen::Vector3d(30.0, 40.0, 0.0);
-        drag(axial, a, b);
+        const Eigen::Vector3d a = m_phantom.marker + Eigen::Vector3d(-15.0, -20.0, 0.0),
+                              b = a + Eigen::Vector3d(30.0, 40.0, 0.0);
+        test::sliceDrag(axial, a, b);
         QCOMPARE(study.artifacts().size(), before + 1);
         const study::Artifact ruler = study.artifacts().back();
         QCOMPARE(ruler.kind, study::ArtifactKind::Measurement);
@@ -96,7 +72,8 @@ private slots:
         const QImage drawn = axial->grabFramebuffer();
         drawn.save(test::outputFolder("gui-measure") + "/ruler.png");
         const int cyan = test::cyanPixels(drawn) - cyanBefore;
-        qInfo("the ruler: %d cyan pixels for a line of %.0f pixels", cyan, 50.0 / (axial->fieldOfView() / axial->height()));
+        qInfo("the ruler: %d cyan pixels for a line of %.0f pixels", cyan,
+              50.0 / (axial->fieldOfView() / axial->height()));
         QVERIFY(cyan > 0.8 * 50.0 / (axial->fieldOfView() / axial->height()));
         axial->stepSlices(2);
         QCOMPARE(axial->shownMeasurementCount(), 0); // 3 mm away from its slice
@@ -106,14 +83,16 @@ private slots:
         action(*window, "measureAngleAction")->trigger();
         QCOMPARE(axial->measureTool(), viz::MeasureTool::Angle);
         const Eigen::Vector3d vertex = m_phantom.marker + Eigen::Vector3d(10.0, 10.0, 0.0);
-        click(axial, vertex + Eigen::Vector3d(20.0, 0.0, 0.0));
-        click(axial, vertex);
+        test::sliceClick(axial, vertex + Eigen::Vector3d(20.0, 0.0, 0.0));
+        test::sliceClick(axial, vertex);
         QCOMPARE(study.artifacts().size(), before + 1); // not finished
-        click(axial, vertex + 20.0 * Eigen::Vector3d(std::cos(M_PI / 3.0), std::sin(M_PI / 3.0), 0.0));
+        test::sliceClick(axial,
+                         vertex + 20.0 * Eigen::Vector3d(std::cos(M_PI / 3.0), std::sin(M_PI / 3.0), 0.0));
         QCOMPARE(study.artifacts().size(), before + 2);
         QVERIFY(std::abs(study.loadMeasurement(study.artifacts().back().id).angleDegrees - 60.0) < 0.01);
         action(*window, "measureRoiAction")->trigger();
-        drag(axial, m_phantom.marker - Eigen::Vector3d(1.2, 1.2, 0.0), m_phantom.marker + Eigen::Vector3d(1.2, 1.2, 0.0));
+        test::sliceDrag(axial, m_phantom.marker - Eigen::Vector3d(1.2, 1.2, 0.0),
+                        m_phantom.marker + Eigen::Vector3d(1.2, 1.2, 0.0));
         QCOMPARE(study.artifacts().size(), before + 3);
         const ViewMeasurement roi = study.loadMeasurement(study.artifacts().back().id);
         QCOMPARE(roi.meanHu, double(test::kMarkerHu));
@@ -159,7 +138,8 @@ private slots:
                 emit againTree->itemDoubleClicked(againTree->topLevelItem(i), 0);
         QVERIFY((again->views()->sliceView(SliceOrientation::Axial)->cursor() - 0.5 * (a + b)).norm() < 1e-9);
         const report::Report report = app::buildStudyReport(again->document().study(), {});
-        const auto section = std::find_if(report.sections.begin(), report.sections.end(), [](const report::Section& s) { return s.id == "measurements"; });
+        const auto section = std::find_if(report.sections.begin(), report.sections.end(),
+                                          [](const report::Section& s) { return s.id == "measurements"; });
         QVERIFY(section != report.sections.end());
         const auto& table = std::get<report::Table>(section->blocks.front());
         QCOMPARE(table.rows.size(), std::size_t(1));

@@ -1,0 +1,270 @@
+// The workstation walked as a radiologist would (issue 20, "Must show"): the small patient-like AAA phantom
+// taken through every workflow step by single clicks in the checklist: Import (the DICOM dialog: scan, pick
+// the series, Import), Segment, Skeleton & Centerlines, Wall Mesh, Wall Stress, Blood Flow (reduced: 3 mm
+// particles, 4 ms, a minute at most on 2 cores), Drug Delivery and Report (the export dialog); on the way the
+// crosshair (a click moves the cursor, not the image), a ruler (a measurement artifact of the drawn length),
+// the CPR, the time player (its frames drive the views and the endoscope's blood cells), the endoscope, a
+// screenshot and a movie; then the same study in German and in Chinese. Each step checks the checklist's
+// state and a view's state or pixels; the pictures stay in test-output/gui-walk.
+#include "DicomFixtures.h"
+#include "DicomImportDialog.h"
+#include "EndoscopePanel.h"
+#include "GuiTestMain.h"
+#include "Languages.h"
+#include "MainWindow.h"
+#include "PixelChecks.h"
+#include "RunPlayer.h"
+#include "SliceMouse.h"
+#include "TestOutput.h"
+#include "VesselViewPanel.h"
+#include "ViewCapture.h"
+#include "ViewLayout.h"
+#include "WorkflowChecklist.h"
+#include "vsim/viz/EndoscopeView.h"
+#include "vsim/viz/PlaneImageView.h"
+#include "vsim/viz/SliceView.h"
+#include "vsim/viz/VolumeView3D.h"
+
+#include <QAction>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QProcess>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTimer>
+#include <QTreeWidget>
+
+#include <chrono>
+
+namespace fs = std::filesystem;
+using namespace vsim;
+using app::StepState;
+using app::WorkflowStep;
+using viz::SliceOrientation;
+
+namespace
+{
+
+void clickStep(gui::WorkflowChecklist* list, WorkflowStep step)
+{
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
+                      list->visualItemRect(list->itemOf(step)).center());
+}
+
+/// Clicks `step` and waits for its background task; the seconds it took.
+double runStep(gui::MainWindow& window, gui::WorkflowChecklist* list, WorkflowStep step)
+{
+    const auto start = std::chrono::steady_clock::now();
+    clickStep(list, step);
+    if (window.tasks().isBusy())
+        test::waitForTask(window, 300000);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Pixels of `picture` that are not near black or near grey: something coloured was drawn.
+int colouredPixels(const QImage& picture)
+{
+    int count = 0;
+    for (int y = 0; y < picture.height(); ++y)
+        for (int x = 0; x < picture.width(); ++x)
+        {
+            const QColor c = picture.pixelColor(x, y);
+            count += std::max({c.red(), c.green(), c.blue()}) - std::min({c.red(), c.green(), c.blue()}) > 60;
+        }
+    return count;
+}
+
+} // namespace
+
+class TestWalk : public QObject
+{
+    Q_OBJECT
+
+    QString m_output;
+    fs::path m_bundle;
+
+    void keep(gui::MainWindow& window, const QString& name)
+    {
+        QVERIFY(gui::captureWindow(&window).save(m_output + "/" + name + ".png"));
+    }
+
+private slots:
+    void initTestCase()
+    {
+        m_output = test::outputFolder("gui-walk");
+        QSettings().setValue("capture/folder", m_output + "/captures");
+    }
+
+    void everyStepBySingleClicks()
+    {
+        const fs::path folder = test::freshFolder("gui-walk", "aaa");
+        test::writePhantomSeries(dicom::PhantomKind::Aaa, test::smallPhantomOptions(), folder);
+        m_bundle = test::freshFolder("gui-walk", "study") / "walk.vsim";
+        gui::MainWindow window;
+        window.resize(1500, 1100);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.newStudy(QString::fromStdString(m_bundle.string())));
+        auto* list = window.findChild<gui::WorkflowChecklist*>("workflow");
+        QVERIFY(list);
+
+        // Import: the dialog scans the folder; the series picked; Import.
+        clickStep(list, WorkflowStep::Import);
+        auto* dialog = window.findChild<gui::DicomImportDialog*>("dicomImportDialog");
+        QVERIFY(dialog && dialog->isVisible());
+        QSignalSpy scanned(dialog, &gui::DicomImportDialog::scanFinished);
+        dialog->scan(QString::fromStdString(folder.string()));
+        QVERIFY(scanned.wait(60000));
+        auto* series = dialog->findChild<QTreeWidget*>("dicomSeriesTree");
+        QTreeWidgetItem* item = series->topLevelItem(0);
+        while (item->childCount() > 0)
+            item = item->child(0);
+        series->setCurrentItem(item);
+        QPushButton* import = nullptr;
+        for (QPushButton* button : dialog->findChildren<QPushButton*>())
+            if (button->text() == "Import")
+                import = button;
+        QVERIFY(import && import->isEnabled());
+        QTest::mouseClick(import, Qt::LeftButton);
+        QVERIFY(test::waitForTask(window));
+        QCOMPARE(list->state(WorkflowStep::Import), StepState::Done);
+        viz::SliceView* axial = window.views()->sliceView(SliceOrientation::Axial);
+        QVERIFY(axial->hasImage());
+
+        // The crosshair: a click sets the cursor there; the image stays where it was.
+        const QImage before = axial->grabFramebuffer();
+        const Eigen::Vector3d target = axial->cursor() + Eigen::Vector3d(12.0, -8.0, 0.0);
+        test::sliceClick(axial, target);
+        QVERIFY((axial->cursor() - target).norm() < 1.0);
+        QVERIFY(window.views()->sliceView(SliceOrientation::Coronal)->cursor().y() - target.y() < 1.0);
+        QVERIFY((axial->widgetAt(target) - QPointF(axial->widgetAt(target))).manhattanLength() < 1e-9);
+        QCOMPARE(axial->grabFramebuffer().size(), before.size());
+
+        const double segment = runStep(window, list, WorkflowStep::Segment);
+        QCOMPARE(list->state(WorkflowStep::Segment), StepState::Done);
+        QVERIFY(axial->hasLabel());
+        const double centerlines = runStep(window, list, WorkflowStep::Centerlines);
+        QCOMPARE(list->state(WorkflowStep::Centerlines), StepState::Done);
+        keep(window, "1-segmented");
+
+        // A ruler of 40 mm along x in the axial plane: a measurement of 40.0 mm.
+        const study::Study& study = window.document().study();
+        const std::size_t artifacts = study.artifacts().size();
+        window.findChild<QAction*>("measureRulerAction")->trigger();
+        test::sliceDrag(axial, target, target + Eigen::Vector3d(40.0, 0.0, 0.0));
+        QCOMPARE(study.artifacts().size(), artifacts + 1);
+        QVERIFY(std::abs(study.loadMeasurement(study.artifacts().back().id).lengthMm - 40.0) < 0.05);
+        window.findChild<QAction*>("measureRulerAction")->trigger(); // the tool off again
+        window.setMeasurementInReport(study.artifacts().back().id, true);
+
+        // The CPR along the longest segment, and the endoscope inside the lumen.
+        QVERIFY(window.showVesselView());
+        gui::VesselViewPanel* vessel = window.views()->vesselPanel();
+        QCOMPARE(vessel->reformationView()->pictureHeight(), int(vessel->frames().points.size()));
+        keep(window, "2-cpr");
+        if (window.showEndoscope() && window.tasks().isBusy())
+            QVERIFY(test::waitForTask(window));
+        gui::EndoscopePanel* endoscope = window.endoscope();
+        QVERIFY(endoscope && endoscope->hasData());
+        endoscope->setArc(0.3 * endoscope->frames().lengthMm());
+        endoscope->focusOnCentre();
+        QVERIFY(colouredPixels(endoscope->view()->picture()) > endoscope->view()->picture().width() * 20);
+        window.views()->setLayoutMode(gui::LayoutMode::TwoByTwo);
+
+        const double mesh = runStep(window, list, WorkflowStep::WallMesh);
+        QCOMPARE(list->state(WorkflowStep::WallMesh), StepState::Done);
+        const double stress = runStep(window, list, WorkflowStep::WallStress);
+        QCOMPARE(list->state(WorkflowStep::WallStress), StepState::Done);
+        QVERIFY(colouredPixels(gui::captureView(window.views()->volumeView())) >
+                500); // the stress-coloured wall
+        keep(window, "3-wall-stress");
+
+        window.bloodFlowSetup().set("spacing_mm", 3.0);
+        window.bloodFlowSetup().set("end_time_s", 0.004);
+        window.bloodFlowSetup().set("frames", 4);
+        const double flow = runStep(window, list, WorkflowStep::Flow);
+        QCOMPARE(list->state(WorkflowStep::Flow), StepState::Done);
+        QVERIFY2(flow < 60.0, qPrintable(QString::number(flow)));
+
+        // The time player on the flow run: each frame's particles in the views and past the endoscope.
+        QVERIFY(window.openRunPlayer(study.newestArtifact(study::ArtifactKind::Run)));
+        QVERIFY(test::waitForTask(window));
+        gui::RunPlayer* player = window.runPlayer();
+        QVERIFY(player && player->frameCount() >= 2);
+        player->setFrame(player->frameCount() - 1);
+        QVERIFY(endoscope->view()->particleCount() > 0);
+        keep(window, "4-flow-played");
+        const gui::MovieResult movie = window.saveMovie(gui::MainWindow::MovieSource::PlayedRun);
+        QCOMPARE(movie.frames, player->frameCount());
+        QVERIFY(QFileInfo::exists(movie.folder + "/frame-0001.png"));
+        const QString screenshot = window.saveScreenshot(nullptr);
+        QVERIFY(!screenshot.isEmpty() && QImage(screenshot).width() > 1000);
+
+        const double drug = runStep(window, list, WorkflowStep::Drug);
+        QCOMPARE(list->state(WorkflowStep::Drug), StepState::Done);
+        keep(window, "5-drug");
+
+        // Report: the export dialog, a PDF in the test's folder.
+        const QString pdf = m_output + "/walk-report.pdf";
+        QFile::remove(pdf);
+        QTimer::singleShot(200,
+                           [pdf]
+                           {
+                               auto* modal = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+                               QVERIFY(modal);
+                               modal->findChild<QLineEdit*>()->setText(pdf);
+                               modal->accept();
+                           });
+        runStep(window, list, WorkflowStep::Report);
+        QVERIFY(QFileInfo::exists(pdf));
+        QCOMPARE(list->state(WorkflowStep::Report), StepState::Done);
+        if (!QStandardPaths::findExecutable("pdftotext").isEmpty())
+        {
+            QProcess text;
+            text.start("pdftotext", {"-raw", pdf, "-"});
+            QVERIFY(text.waitForFinished(60000));
+            const QString words = QString::fromUtf8(text.readAllStandardOutput());
+            for (const char* expected : {"Ruler", "wall stress", "kPa", "velocity"})
+                QVERIFY2(words.contains(expected, Qt::CaseInsensitive), expected);
+        }
+        qInfo("steps: segment %.1f s, centerlines %.1f s, wall mesh %.1f s, wall stress %.1f s, flow %.1f s, "
+              "drug %.1f s",
+              segment, centerlines, mesh, stress, flow, drug);
+        QVERIFY(window.saveStudy());
+        keep(window, "6-report");
+    }
+
+    void theStudyInGermanAndChinese_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("segmentDone");
+        QTest::newRow("de") << "de" << QString::fromUtf8("Segmentieren  (erledigt)");
+        QTest::newRow("zh_CN") << "zh_CN" << QString::fromUtf8("分割  (完成)");
+    }
+
+    // The walked study reopened in each language: the checklist says every step is done in that language.
+    void theStudyInGermanAndChinese()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, segmentDone);
+        QVERIFY(gui::installLanguage(language));
+        {
+            gui::MainWindow window;
+            window.resize(1500, 1100);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QVERIFY(window.openStudy(QString::fromStdString(m_bundle.string())));
+            QVERIFY(test::waitForTask(window));
+            auto* list = window.findChild<gui::WorkflowChecklist*>("workflow");
+            QCOMPARE(list->itemOf(WorkflowStep::Segment)->text(), segmentDone);
+            for (WorkflowStep step : app::kWorkflowSteps)
+                QCOMPARE(list->state(step), StepState::Done);
+            keep(window, "7-walked-" + language);
+        }
+        gui::installLanguage("en");
+    }
+};
+
+VSIM_GUI_TEST_MAIN(TestWalk)
+#include "tst_walk.moc"
