@@ -18,6 +18,8 @@ PACKAGES=(
     fonts-dejavu-core fonts-noto-cjk libfontconfig-dev
     # Qt's own translations (standard buttons, file dialogs) in German and Chinese
     qt6-translations-l10n
+    # MP4 movies of a view (the frames are PNG without it)
+    ffmpeg
     # headless GUI tests and report checks
     xvfb xauth libgl1-mesa-dri mesa-utils poppler-utils
     # reference tools used by tests and benchmarks

@@ -198,6 +198,8 @@ private slots:
         const gui::MovieResult movie = window.saveMovie(gui::MainWindow::MovieSource::PlayedRun);
         QCOMPARE(movie.frames, player->frameCount());
         QVERIFY(QFileInfo::exists(movie.folder + "/frame-0001.png"));
+        if (!QStandardPaths::findExecutable("ffmpeg").isEmpty()) // install-deps installs it
+            QVERIFY2(QFileInfo(movie.mp4).size() > 1000, qPrintable(movie.note));
         const QString screenshot = window.saveScreenshot(nullptr);
         QVERIFY(!screenshot.isEmpty() && QImage(screenshot).width() > 1000);
 

@@ -37,48 +37,65 @@ std::array<int, 3> boxWidths(double sigma)
     return widths;
 }
 
-/// A box filter of odd `boxWidth` along rows (`alongRows`) or columns by a running sum, edges clamped.
-std::vector<float> boxPass(const std::vector<float>& in, int width, int height, int boxWidth, bool alongRows)
+/// A box filter of odd `boxWidth` along rows, edges replicated: a running sum over a padded copy of each row.
+void boxRows(std::vector<float>& plane, int width, int height, int boxWidth)
 {
     const int radius = boxWidth / 2;
-    const int lines = alongRows ? height : width, length = alongRows ? width : height;
-    std::vector<float> out(in.size());
-    auto index = [&](int line, int at)
+    std::vector<float> padded(std::size_t(width + 2 * radius));
+    const float scale = 1.0f / float(boxWidth);
+    for (int y = 0; y < height; ++y)
     {
-        at = std::clamp(at, 0, length - 1);
-        return alongRows ? std::size_t(line) * std::size_t(width) + std::size_t(at)
-                         : std::size_t(at) * std::size_t(width) + std::size_t(line);
-    };
-    for (int line = 0; line < lines; ++line)
-    {
+        float* row = plane.data() + std::size_t(y) * std::size_t(width);
+        std::fill(padded.begin(), padded.begin() + radius, row[0]);
+        std::copy(row, row + width, padded.begin() + radius);
+        std::fill(padded.begin() + radius + width, padded.end(), row[width - 1]);
         double sum = 0.0;
-        for (int k = -radius; k <= radius; ++k)
-            sum += in[index(line, k)];
-        for (int at = 0; at < length; ++at)
+        for (int k = 0; k < boxWidth; ++k)
+            sum += padded[std::size_t(k)];
+        for (int x = 0; x < width; ++x)
         {
-            out[index(line, at)] = float(sum / boxWidth);
-            sum += in[index(line, at + radius + 1)] - in[index(line, at - radius)];
+            row[x] = float(sum) * scale;
+            if (x + 1 < width)
+                sum += padded[std::size_t(x + boxWidth)] - padded[std::size_t(x)];
         }
     }
-    return out;
+}
+
+/// The same along columns, all columns at once (a running sum per column, rows replicated past the edges).
+void boxColumns(std::vector<float>& plane, int width, int height, int boxWidth)
+{
+    const int radius = boxWidth / 2;
+    const float scale = 1.0f / float(boxWidth);
+    auto row = [&](int y) { return plane.data() + std::size_t(std::clamp(y, 0, height - 1)) * std::size_t(width); };
+    std::vector<float> sum(std::size_t(width), 0.0f), out(plane.size());
+    for (int k = -radius; k <= radius; ++k)
+    {
+        const float* source = row(k);
+        for (int x = 0; x < width; ++x)
+            sum[std::size_t(x)] += source[x];
+    }
+    for (int y = 0; y < height; ++y)
+    {
+        float* target = out.data() + std::size_t(y) * std::size_t(width);
+        const float *entering = row(y + radius + 1), *leaving = row(y - radius);
+        for (int x = 0; x < width; ++x)
+        {
+            target[x] = sum[std::size_t(x)] * scale;
+            sum[std::size_t(x)] += entering[x] - leaving[x];
+        }
+    }
+    plane.swap(out);
 }
 
 /// A Gaussian blur as three box blurs each way: time independent of sigma.
 std::vector<float> gaussianBlur(std::vector<float> plane, int width, int height, double sigma)
 {
     for (int boxWidth : boxWidths(sigma))
-        plane = boxPass(boxPass(plane, width, height, boxWidth, true), width, height, boxWidth, false);
+    {
+        boxRows(plane, width, height, boxWidth);
+        boxColumns(plane, width, height, boxWidth);
+    }
     return plane;
-}
-
-Planes blurred(const Planes& planes, int width, int height, double sigma)
-{
-    if (sigma <= 0.0)
-        return planes;
-    Planes result;
-    for (std::size_t c = 0; c < 3; ++c)
-        result[c] = gaussianBlur(planes[c], width, height, sigma);
-    return result;
 }
 
 } // namespace
@@ -145,10 +162,25 @@ QImage lensImage(const QImage& sharp, const std::vector<float>& depthMm, const E
         *medianBlurPx = median;
 
     // The stack, only as deep as the blurs present need.
-    const float deepest = count ? *std::max_element(sigma.begin(), sigma.end()) : 0.0f;
-    std::vector<Planes> stack{planes};
-    for (std::size_t level = 1; level < kLevels.size() && kLevels[level - 1] < deepest; ++level)
-        stack.push_back(blurred(planes, width, height, kLevels[level]));
+    // The stack: only the levels about the blurs present (the sharp level 0 is free); each level's channels are
+    // blurred in parallel.
+    const auto [shallowest, deepest] = count ? std::minmax_element(sigma.begin(), sigma.end())
+                                             : std::pair{sigma.begin(), sigma.begin()};
+    std::vector<Planes> stack(kLevels.size());
+    stack[0] = planes;
+    std::vector<std::pair<std::size_t, std::size_t>> jobs; // (level, channel)
+    std::size_t levels = 1;
+    for (std::size_t level = 1; level < kLevels.size() && count && kLevels[level - 1] < *deepest; ++level, ++levels)
+        if (level + 1 >= kLevels.size() || kLevels[level + 1] >= *shallowest)
+            for (std::size_t c = 0; c < 3; ++c)
+                jobs.emplace_back(level, c);
+    stack.resize(levels);
+#pragma omp parallel for schedule(dynamic)
+    for (std::ptrdiff_t j = 0; j < std::ptrdiff_t(jobs.size()); ++j)
+    {
+        const auto [level, c] = jobs[std::size_t(j)];
+        stack[level][c] = gaussianBlur(planes[c], width, height, kLevels[level]);
+    }
 
     const double noiseSd = lens.noiseAtFullDefocus * std::min(1.0, median / lens.fullDefocusBlurPx);
     std::mt19937 random(seed);
