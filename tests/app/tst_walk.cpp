@@ -93,6 +93,8 @@ private slots:
     void initTestCase()
     {
         m_output = test::outputFolder("gui-walk");
+        QDir(m_output + "/captures").removeRecursively(); // this suite's own output from an earlier run
+        QVERIFY(QDir().mkpath(m_output + "/captures"));
         QSettings().setValue("capture/folder", m_output + "/captures");
     }
 
@@ -197,6 +199,7 @@ private slots:
         keep(window, "4-flow-played");
         const gui::MovieResult movie = window.saveMovie(gui::MainWindow::MovieSource::PlayedRun);
         QCOMPARE(movie.frames, player->frameCount());
+        QVERIFY(movie.folder.startsWith(m_output + "/captures/"));
         QVERIFY(QFileInfo::exists(movie.folder + "/frame-0001.png"));
         if (!QStandardPaths::findExecutable("ffmpeg").isEmpty()) // install-deps installs it
             QVERIFY2(QFileInfo(movie.mp4).size() > 1000, qPrintable(movie.note));
