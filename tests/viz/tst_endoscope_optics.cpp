@@ -153,7 +153,7 @@ private slots:
         lens.fNumber = 2.0;
         lens.lampReachMm = 100.0;
         lens.noiseAtFullDefocus = 30.0;
-        lens.fullDefocusBlurPx = 4.0;
+        lens.fullDefocusBlurFraction = 4.0 / kWidth; // full at 4 px
         const QImage grey = edgePicture(128, 128);
         for (double focus : {12.0, 10.0, 8.0, 4.0})
         {

@@ -182,7 +182,7 @@ QImage lensImage(const QImage& sharp, const std::vector<float>& depthMm, const E
         stack[level][c] = gaussianBlur(planes[c], width, height, kLevels[level]);
     }
 
-    const double noiseSd = lens.noiseAtFullDefocus * std::min(1.0, median / lens.fullDefocusBlurPx);
+    const double noiseSd = lens.noiseAtFullDefocus * std::min(1.0, median / (lens.fullDefocusBlurFraction * width));
     std::mt19937 random(seed);
     std::normal_distribution<double> noise(0.0, 1.0);
     QImage result(width, height, QImage::Format_RGB888);

@@ -268,7 +268,7 @@ void VolumeView3D::showFieldLines(const std::vector<std::vector<Eigen::Vector3d>
     mapper->SetScalarModeToUseCellData();
     m_scene->fieldLines = vtkSmartPointer<vtkActor>::New();
     m_scene->fieldLines->SetMapper(mapper);
-    m_scene->fieldLines->GetProperty()->SetLineWidth(float(widthPixels));
+    m_scene->fieldLines->GetProperty()->SetLineWidth(float(widthPixels * devicePixelRatioF())); // screen pixels
     m_scene->fieldLines->GetProperty()->SetLighting(!radiiMm.empty());
     renderer()->AddActor(m_scene->fieldLines);
     showLegend(mapper->GetLookupTable(), legendTitle);
@@ -299,7 +299,7 @@ void VolumeView3D::showFieldPoints(const std::vector<Eigen::Vector3d>& points, c
     mapper->SetScalarModeToUsePointData();
     m_scene->fieldLines = vtkSmartPointer<vtkActor>::New();
     m_scene->fieldLines->SetMapper(mapper);
-    m_scene->fieldLines->GetProperty()->SetPointSize(float(sizePixels));
+    m_scene->fieldLines->GetProperty()->SetPointSize(float(sizePixels * devicePixelRatioF())); // screen pixels
     m_scene->fieldLines->GetProperty()->SetRenderPointsAsSpheres(true);
     renderer()->AddActor(m_scene->fieldLines);
     showLegend(mapper->GetLookupTable(), legendTitle);
@@ -408,7 +408,7 @@ void VolumeView3D::addLines(const SkeletonGraph& graph, const QColor& colour, do
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->GetProperty()->SetColor(colour.redF(), colour.greenF(), colour.blueF());
-    actor->GetProperty()->SetLineWidth(float(widthPixels));
+    actor->GetProperty()->SetLineWidth(float(widthPixels * devicePixelRatioF())); // screen pixels
     actor->GetProperty()->SetLighting(false);
     renderer()->AddActor(actor);
     m_scene->lines.push_back(actor);

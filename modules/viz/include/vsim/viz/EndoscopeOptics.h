@@ -9,7 +9,7 @@
 // per pixel by a Gaussian of standard deviation c / 4 (a uniform disc's, per axis), gathered from a stack of
 // blurred copies. The thesis's observation that an unfocused probe shows "a significant amount of noise" that
 // focusing removes is modelled as sensor noise that grows with the defocus: the standard deviation of added
-// Gaussian noise is noiseAtFullDefocus x min(1, median blur / fullDefocusBlurPx). Light falls off from the
+// Gaussian noise is noiseAtFullDefocus x min(1, median blur / (fullDefocusBlurFraction x width)). Light falls off from the
 // probe's lamp as min(1, (lampReachMm / d)^2), and the camera's automatic gain lifts a wide lumen's dim
 // picture. No Qt widgets, no VTK: the view (EndoscopeView) renders and calls these.
 
@@ -30,8 +30,9 @@ struct EndoscopeLens
     double lampReachMm = 12.0;     ///< full brightness up to this depth, then 1 / d^2
     bool autoGain = true; ///< the camera's gain brings the 90th percentile of brightness to 200 (x8 at most)
     double noiseAtFullDefocus = 28; ///< grey levels (0-255), standard deviation
-    double fullDefocusBlurPx =
-        4.0; ///< the median blur (standard deviation, pixels) at which the noise is full
+    /// The median blur (standard deviation) at which the noise is full, as a fraction of the picture's width: the
+    /// same optics give the same noise at any resolution (1.25 %: 4 pixels across 320).
+    double fullDefocusBlurFraction = 0.0125;
 };
 
 /// The horizontal field of view (degrees): 2 atan(sensor / 2f).
