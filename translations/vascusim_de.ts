@@ -3402,6 +3402,10 @@ Lumen %2 mm (Kreis: %3)</translation>
         <source>2 x the centerline&apos;s radius, which reads low; run the measurements</source>
         <translation>2 x Radius der Mittellinie, der zu niedrig misst; die Messungen ausführen</translation>
     </message>
+    <message>
+        <source>outer wall %1 mm (yellow: the largest caliper of the sac&apos;s labels here)</source>
+        <translation>Außenwand %1 mm (gelb: die größte Messweite der Sack-Labels hier)</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::WorkflowChecklist</name>

@@ -3400,6 +3400,10 @@ lumen %2 mm (circle: %3)</source>
         <source>2 x the centerline&apos;s radius, which reads low; run the measurements</source>
         <translation>中心线半径的 2 倍，偏低；请运行测量</translation>
     </message>
+    <message>
+        <source>outer wall %1 mm (yellow: the largest caliper of the sac&apos;s labels here)</source>
+        <translation>外壁 %1 mm（黄色：此处瘤囊标签的最大卡尺宽度）</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::WorkflowChecklist</name>

@@ -7,10 +7,8 @@
 
 #include <iostream>
 
-namespace vsim::cli
-{
-namespace
-{
+namespace vsim::cli {
+namespace {
 
 std::string tableNames(const std::vector<app::ParameterTable>& tables)
 {

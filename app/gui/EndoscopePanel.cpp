@@ -20,10 +20,8 @@
 #include <cmath>
 #include <limits>
 
-namespace vsim::gui
-{
-namespace
-{
+namespace vsim::gui {
+namespace {
 
 constexpr double kStepMm = 0.25; // the frames' arc step: the slider's resolution
 constexpr int kTimerMs = 50;     // 20 camera moves a second while playing
@@ -140,11 +138,7 @@ void EndoscopePanel::setSegment(int edge)
         return;
     m_frames = std::move(*frames);
     m_edge = edge;
-    if (const int index = m_segments->findData(edge); index >= 0 && index != m_segments->currentIndex())
-    {
-        const QSignalBlocker quiet(m_segments);
-        m_segments->setCurrentIndex(index);
-    }
+    showSegmentChoice(m_segments, edge);
     {
         const QSignalBlocker quiet(m_position);
         m_position->setRange(0, int(m_frames.points.size()) - 1);

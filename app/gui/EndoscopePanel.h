@@ -22,13 +22,11 @@ class QPushButton;
 class QSlider;
 class QTimer;
 
-namespace vsim::viz
-{
+namespace vsim::viz {
 class EndoscopeView;
 }
 
-namespace vsim::gui
-{
+namespace vsim::gui {
 
 class EndoscopePanel : public QWidget
 {

@@ -9,10 +9,8 @@
 
 #include <memory>
 
-namespace vsim::gui
-{
-namespace
-{
+namespace vsim::gui {
+namespace {
 
 const char* const kLanguageKey = "language";
 

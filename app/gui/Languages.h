@@ -6,8 +6,7 @@
 #include <QString>
 #include <QStringList>
 
-namespace vsim::gui
-{
+namespace vsim::gui {
 
 /// The language codes VascuSim is translated into besides its English source: "de", "zh_CN".
 QStringList translatedLanguages();

@@ -5,41 +5,15 @@
 #include "MainWindow.h"
 #include "SceneCache.h"
 #include "ViewLayout.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/app/SegmentNames.h"
 
 #include <QDockWidget>
 
 #include <algorithm>
-#include <deque>
 #include <memory>
-#include <set>
 
-namespace vsim::gui
-{
-namespace
-{
-
-/// The label an artifact was made from, following its provenance's inputs back (centerlines <- skeleton <-
-/// label).
-std::string sourceLabel(const study::Study& study, const std::string& id)
-{
-    std::deque<std::string> open{id};
-    std::set<std::string> seen;
-    while (!open.empty())
-    {
-        const std::string next = open.front();
-        open.pop_front();
-        if (!seen.insert(next).second || !study.hasArtifact(next))
-            continue;
-        const study::Artifact& artifact = study.artifact(next);
-        if (artifact.kind == study::ArtifactKind::Label)
-            return next;
-        open.insert(open.end(), artifact.provenance.inputs.begin(), artifact.provenance.inputs.end());
-    }
-    return study.newestArtifact(study::ArtifactKind::Label);
-}
-
-} // namespace
+namespace vsim::gui {
 
 bool MainWindow::showEndoscope()
 {
@@ -47,7 +21,7 @@ bool MainWindow::showEndoscope()
         m_document.hasStudy() ? m_document.study().newestArtifact(study::ArtifactKind::Skeleton, "centerline")
                               : std::string();
     const std::string labelId =
-        centerlinesId.empty() ? std::string() : sourceLabel(m_document.study(), centerlinesId);
+        centerlinesId.empty() ? std::string() : app::lumenLabelOfCenterlines(m_document.study(), centerlinesId);
     if (centerlinesId.empty() || labelId.empty())
     {
         showError(tr("Virtual endoscope"),

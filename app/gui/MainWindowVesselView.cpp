@@ -1,8 +1,10 @@
 // The "3D + CPR" layout (View > Layout, Vessels > Along the Vessel): the vessel view of the newest centerlines on
-// the shown CT; moving along it moves the MPRs' cursor there.
+// the shown CT, with the AAA sac's outer-wall caliper when the sac was measured; moving along it moves the MPRs'
+// cursor there.
 #include "MainWindow.h"
 #include "VesselViewPanel.h"
 #include "ViewLayout.h"
+#include "vsim/app/SacRecord.h"
 #include "vsim/app/SegmentNames.h"
 #include "vsim/viz/SliceView.h"
 
@@ -30,6 +32,10 @@ bool MainWindow::showVesselView()
         const auto measured = m_scene.measurements.find(centerlinesId);
         panel->setData(axial->image(), centerlines, app::segmentNames(m_document.study(), centerlinesId, centerlines),
                        measured == m_scene.measurements.end() ? nullptr : &measured->second);
+        // The AAA sac's labels, when measured: the cross-section's outer-wall caliper.
+        std::string sacId;
+        app::newestSacFigures(m_document.study(), &sacId);
+        panel->setSacLabels(sacId.empty() ? std::nullopt : std::optional(m_document.study().loadLabel(sacId)));
         m_views->setLayoutMode(LayoutMode::VolumePlusCpr);
         return panel->hasData();
     }

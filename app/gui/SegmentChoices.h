@@ -6,13 +6,13 @@
 
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QSignalBlocker>
 
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace vsim::gui
-{
+namespace vsim::gui {
 
 /// Fills `choices` with the segments of two points or more, named by `names` (anatomical, or "segment N");
 /// returns the longest segment's edge index, -1 when there is none.
@@ -37,6 +37,16 @@ inline int fillSegmentChoices(QComboBox* choices, const SkeletonGraph& centerlin
             longest = int(e);
     }
     return longest;
+}
+
+/// Shows `edge` as the current choice without announcing it (the owner changed the segment itself).
+inline void showSegmentChoice(QComboBox* choices, int edge)
+{
+    if (const int index = choices->findData(edge); index >= 0 && index != choices->currentIndex())
+    {
+        const QSignalBlocker quiet(choices);
+        choices->setCurrentIndex(index);
+    }
 }
 
 /// The frames of segment `edge` every `stepMm`; none for an edge out of range or shorter than one step.

@@ -101,11 +101,7 @@ void VesselViewPanel::setSegment(int edge)
         return;
     m_frames = std::move(*frames);
     m_edge = edge;
-    if (const int index = m_segments->findData(edge); index >= 0 && index != m_segments->currentIndex())
-    {
-        const QSignalBlocker quiet(m_segments);
-        m_segments->setCurrentIndex(index);
-    }
+    showSegmentChoice(m_segments, edge);
     bool fromSections = false;
     lumenDiameterAt(0.0, &fromSections);
     LinePlot::Curve diameter{fromSections ? tr("lumen equivalent diameter (measured sections)")
@@ -167,6 +163,20 @@ double VesselViewPanel::lumenDiameterAt(double arcMm, bool* measured) const
     return nearest->equivalentDiameterMm;
 }
 
+void VesselViewPanel::setSacLabels(std::optional<LabelVolume> sacLabels)
+{
+    m_sacLabels = std::move(sacLabels);
+    refreshPosition();
+}
+
+std::optional<imaging::PlaneCaliper> VesselViewPanel::outerCaliperAt(double arcMm) const
+{
+    if (!m_sacLabels || m_frames.points.empty())
+        return std::nullopt;
+    return imaging::largestCaliper(
+        imaging::labelCrossSection(*m_sacLabels, m_frames, arcMm, kHalfWidthMm, kSectionPixelMm, m_angle));
+}
+
 Eigen::Vector3d VesselViewPanel::position() const
 {
     return m_frames.points.empty() ? Eigen::Vector3d::Zero() : m_frames.points[m_frames.indexAt(m_arcMm)];
@@ -190,11 +200,18 @@ void VesselViewPanel::refreshPosition()
     bool measured = false;
     const double diameter = lumenDiameterAt(m_arcMm, &measured);
     m_section->setCentreCircle(diameter > 0.0 ? std::optional<double>(0.5 * diameter) : std::nullopt);
-    m_section->setCaption(tr("Perpendicular to the centerline at %1 mm\nlumen %2 mm (circle: %3)")
-                              .arg(m_arcMm, 0, 'f', 1)
-                              .arg(diameter, 0, 'f', 1)
-                              .arg(measured ? tr("equivalent diameter of the measured section")
-                                            : tr("2 x the centerline's radius, which reads low; run the measurements")));
+    QString caption = tr("Perpendicular to the centerline at %1 mm\nlumen %2 mm (circle: %3)")
+                          .arg(m_arcMm, 0, 'f', 1)
+                          .arg(diameter, 0, 'f', 1)
+                          .arg(measured ? tr("equivalent diameter of the measured section")
+                                        : tr("2 x the centerline's radius, which reads low; run the measurements"));
+    const std::optional<imaging::PlaneCaliper> outer = outerCaliperAt(m_arcMm);
+    m_section->setCaliper(outer ? std::optional(std::pair{QPointF(outer->fromMm.x(), outer->fromMm.y()),
+                                                          QPointF(outer->toMm.x(), outer->toMm.y())})
+                                : std::nullopt);
+    if (outer)
+        caption += '\n' + tr("outer wall %1 mm (yellow: the largest caliper of the sac's labels here)").arg(outer->lengthMm, 0, 'f', 1);
+    m_section->setCaption(caption);
     m_cpr->setMarkerRow(m_arcMm);
     m_plot->setCursor(m_arcMm);
 }

@@ -37,6 +37,11 @@ public:
                  const imaging::VesselMeasurements* measured = nullptr);
     /// The lumen diameter the caliper draws at an arc position (mm), and whether it comes from a measured section.
     double lumenDiameterAt(double arcMm, bool* measured = nullptr) const;
+    /// The AAA sac's labels (1 lumen, 4 thrombus, 5 wall; the sac step's label), or none: with them the
+    /// cross-section draws the outer-wall caliper, the largest caliper of the labels' section (yellow).
+    void setSacLabels(std::optional<LabelVolume> sacLabels);
+    /// The outer-wall caliper at an arc position (mm), none without the sac or outside it.
+    std::optional<imaging::PlaneCaliper> outerCaliperAt(double arcMm) const;
     void clear();
     bool hasData() const { return !m_frames.points.empty(); }
 
@@ -66,6 +71,7 @@ private:
     CtVolume m_ct;
     SkeletonGraph m_centerlines;
     std::optional<imaging::VesselMeasurements> m_measured;
+    std::optional<LabelVolume> m_sacLabels;
     imaging::CenterlineFrames m_frames;
     int m_edge = -1;
     double m_arcMm = 0.0, m_angle = 0.0;

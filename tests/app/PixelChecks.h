@@ -1,8 +1,12 @@
 #pragma once
 
 // Pixel checks shared by the GUI tests: how many pixels of a picture carry the measurements' and calipers' cyan
-// (viz: SliceMeasurementLayer, PlaneImageView), whatever their antialiased brightness.
+// (viz: SliceMeasurementLayer, PlaneImageView), or the outer-wall caliper's yellow within a part of the picture,
+// whatever their antialiased brightness.
 #include <QImage>
+#include <QRect>
+
+#include <algorithm>
 
 namespace vsim::test {
 
@@ -14,6 +18,18 @@ inline int cyanPixels(const QImage& image)
         {
             const QRgb p = image.pixel(x, y);
             count += qBlue(p) > 150 && qGreen(p) > 0.7 * qBlue(p) && qRed(p) < 0.5 * qBlue(p);
+        }
+    return count;
+}
+
+inline int yellowPixels(const QImage& image, const QRect& within)
+{
+    int count = 0;
+    for (int y = std::max(0, within.top()); y <= std::min(image.height() - 1, within.bottom()); ++y)
+        for (int x = std::max(0, within.left()); x <= std::min(image.width() - 1, within.right()); ++x)
+        {
+            const QRgb p = image.pixel(x, y);
+            count += qRed(p) > 150 && qGreen(p) > 0.6 * qRed(p) && qBlue(p) < 0.45 * qRed(p);
         }
     return count;
 }

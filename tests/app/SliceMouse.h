@@ -9,8 +9,7 @@
 
 #include <Eigen/Core>
 
-namespace vsim::test
-{
+namespace vsim::test {
 
 inline void sliceMouse(viz::SliceView* view, QEvent::Type type, const Eigen::Vector3d& atMm,
                        Qt::MouseButtons buttons)

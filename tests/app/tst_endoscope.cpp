@@ -19,8 +19,7 @@
 namespace fs = std::filesystem;
 using namespace vsim;
 
-namespace
-{
+namespace {
 
 /// The standard deviation of a picture's green channel minus its 3 x 3 mean, over the central half: the fine
 /// grain.

@@ -38,8 +38,7 @@
 
 using namespace vsim;
 
-namespace
-{
+namespace {
 
 const QString kOpen = QStringLiteral("\u27e6"), kClose = QStringLiteral("\u27e7");
 

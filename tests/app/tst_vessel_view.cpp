@@ -95,6 +95,8 @@ private slots:
             difference += std::abs(straight.values[i] - turned.values[i]);
         QVERIFY(difference / double(straight.values.size()) > 5.0);
         captureWindow(panel).save(test::outputFolder("gui-vessel-view") + "/vessel-view.png");
+
+        QVERIFY(!panel->outerCaliperAt(panel->arc())); // no sac measured: no outer-wall caliper
     }
 };
 

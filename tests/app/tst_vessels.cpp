@@ -8,10 +8,15 @@
 #include "LabelEditSession.h"
 #include "MainWindow.h"
 #include "ParameterForm.h"
+#include "PixelChecks.h"
 #include "SegmentationPointsPanel.h"
 #include "StudyDocument.h"
+#include "TestOutput.h"
+#include "VesselViewPanel.h"
+#include "ViewCapture.h"
 #include "ViewLayout.h"
 #include "vsim/app/SegmentNames.h"
+#include "vsim/viz/PlaneImageView.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 #include "vsim/dicom/AnatomyPhantom.h"
@@ -20,6 +25,7 @@
 #include "vsim/imaging/GuidedSegmentation.h"
 #include "vsim/imaging/VesselSegmentation.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QMouseEvent>
@@ -273,7 +279,8 @@ private slots:
 
     /// Vessels > AAA Sac on a patient-like AAA (aortic lumen from the guided segmentation): the sac label is added
     /// (undoable) and the dock's first row is the SVS outer diameter, its definition in the tooltip, within 3 mm of
-    /// the phantom's truth at these 1.1 mm voxels; a click takes the cursor to its section.
+    /// the phantom's truth at these 1.1 mm voxels; a click takes the cursor to its section; along the vessel the
+    /// cross-section's outer-wall caliper matches the SVS diameter.
     void aaaSacInTheDock()
     {
         const fs::path folder = test::freshFolder("gui-vessels", "patient-aaa");
@@ -310,6 +317,37 @@ private slots:
         emit table->cellClicked(0, 0);
         const Eigen::Vector3d cursor = window.views()->sliceView(viz::SliceOrientation::Axial)->cursor();
         QVERIFY(std::abs(cursor.z() - phantom.measures.at("max_outer_diameter_z_mm")) < 5.0);
+
+        // Along the vessel, the cross-section draws the sac's outer-wall caliper: its widest over the centerlines'
+        // segments is the sac's SVS diameter within two voxels (the labels' staircase against the sac's contours).
+        QVERIFY(window.extractSkeletonAndCenterlines() && vsim::test::waitForTask(window));
+        QVERIFY(window.showVesselView());
+        gui::VesselViewPanel* panel = window.views()->vesselPanel();
+        double widestArc = 0.0, widest = 0.0;
+        int widestSegment = -1;
+        const QComboBox* segments = panel->findChild<QComboBox*>("vesselSegment");
+        for (int index = 0; index < segments->count(); ++index)
+        {
+            panel->setSegment(segments->itemData(index).toInt());
+            // Perpendicular to the aorta: sections of the long segments 10 mm or more from their ends (a plane at a
+            // junction cuts the sac obliquely).
+            const double length = panel->frames().lengthMm();
+            for (double arc = 10.0; length >= 40.0 && arc <= length - 10.0; arc += 1.0)
+                if (const auto caliper = panel->outerCaliperAt(arc); caliper && caliper->lengthMm > widest)
+                    widest = caliper->lengthMm, widestArc = arc, widestSegment = panel->segment();
+        }
+        panel->setSegment(widestSegment);
+        qInfo("vessel view: the outer-wall caliper's widest %.1f mm (the sac's SVS diameter %.1f mm)", widest, outer);
+        QVERIFY(std::abs(widest - outer) <= 2.0 * 1.1);
+        panel->setArc(widestArc);
+        QVERIFY(panel->crossSectionView()->caption().contains("outer wall"));
+        const QImage section = panel->crossSectionView()->grabFramebuffer();
+        const QRect middle(section.width() / 4, section.height() / 4, section.width() / 2, section.height() / 2);
+        QVERIFY(vsim::test::yellowPixels(section, middle) > 40); // the caliper line across the sac
+        gui::captureWindow(panel).save(vsim::test::outputFolder("gui-vessels") + "/vessel-view-sac.png");
+
+        window.document().undoStack()->undo(); // the centerlines, the skeleton, then the sac
+        window.document().undoStack()->undo();
         window.document().undoStack()->undo();
         QCOMPARE(study.artifacts().back().provenance.command, std::string("segment"));
     }

@@ -43,8 +43,7 @@ using app::StepState;
 using app::WorkflowStep;
 using viz::SliceOrientation;
 
-namespace
-{
+namespace {
 
 void clickStep(gui::WorkflowChecklist* list, WorkflowStep step)
 {

@@ -4,7 +4,8 @@
 // analytic arc sampled every 2 mm. Checked: the frames are orthonormal and do not twist on a planar curve; in the
 // straightened CPR every row's half-level band is 8 mm wide within 1 mm (median within 0.4 mm) and centred within
 // 0.5 mm, at two rotation angles; the cross-sections at three arc positions hold a disc of pi r^2 within 8 %,
-// centred within 0.4 mm.
+// centred within 0.4 mm; the label section's largest caliper is the tube's diameter within a voxel's
+// diagonal.
 #include "vsim/imaging/CurvedReformation.h"
 
 #include <QtTest>
@@ -148,6 +149,32 @@ private slots:
             QVERIFY(std::abs(area / (M_PI * kLumenMm * kLumenMm) - 1.0) < 0.08);
             QVERIFY(offset < 0.4);
         }
+    }
+
+    // The label section (nearest voxel) of the tube's voxels within 4 mm: its largest caliper is the tube's
+    // diameter within a voxel's diagonal (the staircase's corners), across the centre; a plane whose centre is
+    // unlabelled has none.
+    void labelSectionCaliper()
+    {
+        LabelVolume label(m_ct.geometry());
+        for (std::size_t v = 0; v < label.size(); ++v)
+            label.data()[v] = m_ct.data()[v] >= 170 ? 5 : 0; // the occupancy's half level: a 4 mm voxel tube
+        for (double arc : {15.0, 45.0, 80.0})
+        {
+            const imaging::PlaneImage section = imaging::labelCrossSection(label, m_frames, arc, 10.0, 0.2, 30.0);
+            const std::optional<imaging::PlaneCaliper> caliper = imaging::largestCaliper(section);
+            QVERIFY(caliper);
+            const Eigen::Vector2d centre(0.5 * (section.width - 1) * section.pixelMm, 0.5 * (section.height - 1) * section.pixelMm);
+            const Eigen::Vector2d middle = 0.5 * (caliper->fromMm + caliper->toMm);
+            qInfo("arc %.0f mm: largest caliper %.2f mm (2 r = %.1f), its middle %.2f mm off the centre", arc,
+                  caliper->lengthMm, 2.0 * kLumenMm, (middle - centre).norm());
+            // The voxel staircase's corners lengthen a largest caliper by up to a voxel's diagonal (1.39 mm here).
+            QVERIFY(caliper->lengthMm > 2.0 * kLumenMm - 0.4 && caliper->lengthMm < 2.0 * kLumenMm + 1.39);
+            QVERIFY((middle - centre).norm() < 0.8);
+        }
+        imaging::PlaneImage empty = imaging::labelCrossSection(label, m_frames, 45.0, 10.0, 0.2, 0.0);
+        std::fill(empty.values.begin(), empty.values.end(), 0.0f);
+        QVERIFY(!imaging::largestCaliper(empty));
     }
 };
 

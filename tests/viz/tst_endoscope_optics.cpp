@@ -14,8 +14,7 @@
 
 using namespace vsim::viz;
 
-namespace
-{
+namespace {
 
 constexpr int kWidth = 200, kHeight = 120;
 

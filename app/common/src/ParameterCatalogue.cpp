@@ -21,8 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace vsim::app
-{
+namespace vsim::app {
 
 std::vector<ParameterTable> parameterCatalogue()
 {

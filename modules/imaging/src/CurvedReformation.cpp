@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace vsim::imaging {
 namespace {
@@ -128,8 +129,12 @@ PlaneImage straightenedReformation(const CtVolume& ct, const CenterlineFrames& f
     return image;
 }
 
-PlaneImage crossSection(const CtVolume& ct, const CenterlineFrames& frames, double arcMm, double halfWidthMm, double pixelMm,
-                        double angleDegrees)
+namespace {
+
+/// The plane perpendicular to the centerline at `arcMm` (crossSection's layout), each pixel `sample`d at its point.
+template <typename Sample>
+PlaneImage perpendicularPlane(const CenterlineFrames& frames, double arcMm, double halfWidthMm, double pixelMm,
+                              double angleDegrees, Sample sample)
 {
     const std::size_t i = frames.indexAt(arcMm);
     const Eigen::Vector3d right = acrossDirection(frames, i, angleDegrees);
@@ -141,9 +146,72 @@ PlaneImage crossSection(const CtVolume& ct, const CenterlineFrames& frames, doub
     const double centre = 0.5 * (image.width - 1);
     for (int row = 0; row < image.height; ++row)
         for (int column = 0; column < image.width; ++column)
-            image.values[std::size_t(row) * std::size_t(image.width) + std::size_t(column)] = float(sampleTrilinear(
-                ct, frames.points[i] + (column - centre) * pixelMm * right + (centre - row) * pixelMm * up));
+            image.values[std::size_t(row) * std::size_t(image.width) + std::size_t(column)] =
+                float(sample(Eigen::Vector3d(frames.points[i] + (column - centre) * pixelMm * right + (centre - row) * pixelMm * up)));
     return image;
+}
+
+} // namespace
+
+PlaneImage crossSection(const CtVolume& ct, const CenterlineFrames& frames, double arcMm, double halfWidthMm, double pixelMm,
+                        double angleDegrees)
+{
+    return perpendicularPlane(frames, arcMm, halfWidthMm, pixelMm, angleDegrees,
+                              [&](const Eigen::Vector3d& p) { return sampleTrilinear(ct, p); });
+}
+
+PlaneImage labelCrossSection(const LabelVolume& labels, const CenterlineFrames& frames, double arcMm, double halfWidthMm,
+                             double pixelMm, double angleDegrees)
+{
+    const VolumeGeometry& g = labels.geometry();
+    return perpendicularPlane(frames, arcMm, halfWidthMm, pixelMm, angleDegrees, [&](const Eigen::Vector3d& p) {
+        const Eigen::Vector3d index = g.patientToIndex(p);
+        const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
+        return g.contains(i, j, k) ? double(labels.at(i, j, k)) : 0.0;
+    });
+}
+
+std::optional<PlaneCaliper> largestCaliper(const PlaneImage& labels)
+{
+    // The 4-connected region of nonzero pixels holding the centre.
+    const int w = labels.width, h = labels.height;
+    if (w == 0 || labels.at(w / 2, h / 2) == 0.0f)
+        return std::nullopt;
+    std::vector<char> inside(labels.values.size(), 0);
+    std::vector<std::pair<int, int>> open{{w / 2, h / 2}};
+    inside[std::size_t(h / 2) * std::size_t(w) + std::size_t(w / 2)] = 1;
+    std::vector<Eigen::Vector2d> edge; // the region's boundary pixels' centres (mm from the top-left pixel's)
+    while (!open.empty())
+    {
+        const auto [x, y] = open.back();
+        open.pop_back();
+        bool boundary = false;
+        for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+        {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h || labels.at(nx, ny) == 0.0f)
+            {
+                boundary = true;
+                continue;
+            }
+            char& seen = inside[std::size_t(ny) * std::size_t(w) + std::size_t(nx)];
+            if (!seen)
+                seen = 1, open.emplace_back(nx, ny);
+        }
+        if (boundary)
+            edge.emplace_back(x * labels.pixelMm, y * labels.pixelMm);
+    }
+    // The farthest pair of boundary pixels; the caliper reaches their outer edges (half a pixel each way).
+    PlaneCaliper best;
+    double farthest = -1.0;
+    for (std::size_t a = 0; a < edge.size(); ++a)
+        for (std::size_t b = a + 1; b < edge.size(); ++b)
+            if (const double d = (edge[a] - edge[b]).squaredNorm(); d > farthest)
+                farthest = d, best.fromMm = edge[a], best.toMm = edge[b];
+    if (farthest < 0.0)
+        return PlaneCaliper{edge.front(), edge.front(), labels.pixelMm};
+    best.lengthMm = std::sqrt(farthest) + labels.pixelMm;
+    return best;
 }
 
 } // namespace vsim::imaging

@@ -8,10 +8,8 @@
 #include <numbers>
 #include <random>
 
-namespace vsim::viz
-{
-namespace
-{
+namespace vsim::viz {
+namespace {
 
 /// The blur levels of the stack (standard deviation, pixels), a factor sqrt(2) apart; a pixel's blur is
 /// interpolated between the two about it.

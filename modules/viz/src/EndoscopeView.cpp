@@ -29,11 +29,9 @@
 #include <limits>
 #include <random>
 
-namespace vsim::viz
-{
+namespace vsim::viz {
 
-namespace
-{
+namespace {
 
 constexpr double kNearMm = 0.2, kFarMm = 600.0; // the clipping range: the probe's tip to well past any vessel
 constexpr double kTissue[3] = {0.86, 0.46, 0.42}; // the lumen's intima, pink

@@ -19,6 +19,8 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <Eigen/Core>
+
 #include <cmath>
 
 namespace vsim::viz {
@@ -30,6 +32,7 @@ struct PlaneImageView::Pipeline
     vtkSmartPointer<vtkImageData> image = vtkSmartPointer<vtkImageData>::New();
     vtkSmartPointer<vtkImageActor> actor = vtkSmartPointer<vtkImageActor>::New();
     vtkSmartPointer<vtkActor> lines = vtkSmartPointer<vtkActor>::New();
+    vtkSmartPointer<vtkActor> caliper = vtkSmartPointer<vtkActor>::New(); // yellow, with end ticks
     vtkSmartPointer<vtkTextActor> caption = vtkSmartPointer<vtkTextActor>::New();
 };
 
@@ -49,6 +52,13 @@ PlaneImageView::PlaneImageView(QWidget* parent) : VtkView(parent), m_pipeline(st
     p.lines->GetProperty()->SetLineWidth(2.0);
     p.lines->GetProperty()->LightingOff();
     renderer()->AddViewProp(p.lines);
+    auto caliperMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    caliperMapper->SetInputData(vtkSmartPointer<vtkPolyData>::New());
+    p.caliper->SetMapper(caliperMapper);
+    p.caliper->GetProperty()->SetColor(1.0, 0.85, 0.2);
+    p.caliper->GetProperty()->LightingOff();
+    p.caliper->VisibilityOff();
+    renderer()->AddViewProp(p.caliper);
     p.caption->GetTextProperty()->SetFontSize(12);
     p.caption->GetTextProperty()->SetColor(1.0, 0.85, 0.2);
     p.caption->GetTextProperty()->SetVerticalJustification(VTK_TEXT_TOP);
@@ -105,6 +115,12 @@ void PlaneImageView::setMarkerRow(std::optional<double> rowMm)
 void PlaneImageView::setCentreCircle(std::optional<double> radiusMm)
 {
     m_circleMm = radiusMm;
+    updateLines();
+}
+
+void PlaneImageView::setCaliper(std::optional<std::pair<QPointF, QPointF>> endsMm)
+{
+    m_caliperMm = endsMm;
     updateLines();
 }
 
@@ -169,6 +185,30 @@ void PlaneImageView::updateLines()
     static_cast<vtkPolyDataMapper*>(m_pipeline->lines->GetMapper())->SetInputData(data);
     m_pipeline->lines->GetProperty()->SetLineWidth(float(2.0 * devicePixelRatioF()));
     m_pipeline->lines->SetVisibility(cells->GetNumberOfCells() > 0);
+
+    // The caliper: its line and a tick across each end, 1.5 mm long (world y is minus the picture's row).
+    auto caliperPoints = vtkSmartPointer<vtkPoints>::New();
+    auto caliperCells = vtkSmartPointer<vtkCellArray>::New();
+    if (m_caliperMm)
+    {
+        const Eigen::Vector2d a(m_caliperMm->first.x(), -m_caliperMm->first.y()), b(m_caliperMm->second.x(), -m_caliperMm->second.y());
+        const Eigen::Vector2d along = (b - a).norm() > 0.0 ? Eigen::Vector2d((b - a).normalized()) : Eigen::Vector2d(1.0, 0.0);
+        const Eigen::Vector2d across(-along.y(), along.x());
+        auto segment = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+            const vtkIdType ids[2] = {caliperPoints->InsertNextPoint(from.x(), from.y(), 1.5),
+                                      caliperPoints->InsertNextPoint(to.x(), to.y(), 1.5)};
+            caliperCells->InsertNextCell(2, ids);
+        };
+        segment(a, b);
+        for (const Eigen::Vector2d& end : {a, b})
+            segment(end - 0.75 * across, end + 0.75 * across);
+    }
+    auto caliperData = vtkSmartPointer<vtkPolyData>::New();
+    caliperData->SetPoints(caliperPoints);
+    caliperData->SetLines(caliperCells);
+    static_cast<vtkPolyDataMapper*>(m_pipeline->caliper->GetMapper())->SetInputData(caliperData);
+    m_pipeline->caliper->GetProperty()->SetLineWidth(float(2.0 * devicePixelRatioF()));
+    m_pipeline->caliper->SetVisibility(bool(m_caliperMm));
     update();
 }
 

@@ -11,10 +11,8 @@
 
 #include <algorithm>
 
-namespace vsim::viz
-{
-namespace
-{
+namespace vsim::viz {
+namespace {
 
 bool latin1Only(const QString& text)
 {

@@ -9,8 +9,7 @@
 class vtkTextActor;
 class vtkTextProperty;
 
-namespace vsim::viz
-{
+namespace vsim::viz {
 
 /// Makes `property` able to draw `text`: VTK's own font for Latin-1 text, else a covering system font file;
 /// VTK's own font (with boxes) when the system has none.

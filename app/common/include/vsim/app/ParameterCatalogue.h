@@ -5,8 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace vsim::app
-{
+namespace vsim::app {
 
 /// One declared parameter table: the step it tunes and its declarations (Parameters.h).
 struct ParameterTable

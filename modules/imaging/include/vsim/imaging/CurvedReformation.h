@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 namespace vsim::imaging {
@@ -55,5 +56,19 @@ PlaneImage straightenedReformation(const CtVolume& ct, const CenterlineFrames& f
 /// along minus the direction 90 degrees further, centred on the centerline, +-halfWidthMm, pixels of `pixelMm`.
 PlaneImage crossSection(const CtVolume& ct, const CenterlineFrames& frames, double arcMm, double halfWidthMm, double pixelMm,
                         double angleDegrees);
+
+/// The same plane through a label volume: each pixel the label of the voxel nearest its point (0 outside).
+PlaneImage labelCrossSection(const LabelVolume& labels, const CenterlineFrames& frames, double arcMm, double halfWidthMm,
+                             double pixelMm, double angleDegrees);
+
+/// The largest caliper (Feret diameter) of a plane's labelled region about its centre pixel: the farthest pair of its
+/// boundary pixels (4-connected region of nonzero pixels), ends in mm from the top-left pixel's centre, the length
+/// reaching their outer edges. None when the centre pixel is not labelled.
+struct PlaneCaliper
+{
+    Eigen::Vector2d fromMm = Eigen::Vector2d::Zero(), toMm = Eigen::Vector2d::Zero();
+    double lengthMm = 0.0;
+};
+std::optional<PlaneCaliper> largestCaliper(const PlaneImage& labels);
 
 } // namespace vsim::imaging

@@ -18,8 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace vsim::viz
-{
+namespace vsim::viz {
 
 struct EndoscopeLens
 {

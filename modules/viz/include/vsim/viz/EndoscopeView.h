@@ -17,8 +17,7 @@
 #include <memory>
 #include <vector>
 
-namespace vsim::viz
-{
+namespace vsim::viz {
 
 class EndoscopeView : public QWidget
 {

@@ -3,9 +3,11 @@
 #include "vsim/viz/SliceOrientation.h"
 #include "vsim/viz/VtkView.h"
 
+#include <QPointF>
 #include <QString>
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace vsim::viz {
@@ -35,6 +37,9 @@ public:
     void setMarkerRow(std::optional<double> rowMm);
     /// A circle of `radiusMm` about the picture's centre (none: hidden).
     void setCentreCircle(std::optional<double> radiusMm);
+    /// A caliper (yellow, ticks at its ends) between two picture positions (mm from the top-left pixel's centre);
+    /// none: hidden.
+    void setCaliper(std::optional<std::pair<QPointF, QPointF>> endsMm);
     /// The widget position (logical pixels) of a picture position (mm from the top-left corner), and back.
     QPointF widgetAt(const QPointF& pictureMm) const;
     QPointF pictureAt(const QPointF& widgetPosition) const;
@@ -61,6 +66,7 @@ private:
     WindowLevel m_windowLevel = kCtaPreset;
     QString m_caption;
     std::optional<double> m_markerRowMm, m_circleMm;
+    std::optional<std::pair<QPointF, QPointF>> m_caliperMm;
     QPointF m_dragStart;
     WindowLevel m_dragStartWindowLevel;
     int m_wheelRemainder = 0;
