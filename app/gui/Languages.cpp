@@ -66,8 +66,7 @@ bool installLanguage(const QString& code)
     const bool qtFound =
         found && qt->load(locale, "qtbase", "_", QLibraryInfo::path(QLibraryInfo::TranslationsPath));
     replaceTranslator(1, qtFound ? std::move(qt) : nullptr);
-    if (found)
-        QLocale::setDefault(locale);
+    QLocale::setDefault(found ? locale : QLocale(QLocale::English)); // numbers and dates follow the texts
     return found;
 }
 

@@ -248,6 +248,29 @@ private slots:
         QVERIFY2(missing.isEmpty(), qPrintable(QString::number(missing.size()) + " untranslated"));
     }
 
+    // Item 6: every parameter field's tooltip names its unit, range, default and --param key.
+    void everyParameterTooltipHasItsUnitAndRange()
+    {
+        int fields = 0;
+        for (const app::ParameterTable& table : app::parameterCatalogue())
+        {
+            gui::ParameterForm form{ParameterSet(table.specs)};
+            for (const ParameterSpec& spec : table.specs)
+            {
+                const auto* field = form.findChild<QWidget*>(QString::fromStdString(spec.key));
+                QVERIFY2(field, spec.key.c_str());
+                const QString tip = field->toolTip();
+                const QString where = QString::fromStdString(table.name + " " + spec.key) + ": " + tip;
+                QVERIFY2(tip.contains(QString::fromStdString(spec.key)) && tip.contains("default"), qPrintable(where));
+                QVERIFY2(tip.contains(QString::fromStdString(numberText(spec.maximum))), qPrintable(where));
+                if (!spec.unit.empty())
+                    QVERIFY2(tip.contains(QString::fromStdString(spec.unit).toHtmlEscaped()), qPrintable(where));
+                ++fields;
+            }
+        }
+        qInfo("%d parameter fields, each tooltip with its unit, range, default and key", fields);
+    }
+
     void windowInEachLanguage_data()
     {
         QTest::addColumn<QString>("language");
