@@ -3406,6 +3406,18 @@ Lumen %2 mm (Kreis: %3)</translation>
         <source>outer wall %1 mm (yellow: the largest caliper of the sac&apos;s labels here)</source>
         <translation>Außenwand %1 mm (gelb: die größte Messweite der Sack-Labels hier)</translation>
     </message>
+    <message>
+        <source>segment %1</source>
+        <translation>Segment %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2 mm)</source>
+        <translation>%1 (%2 mm)</translation>
+    </message>
+    <message>
+        <source>%1 to %2 (%3 mm)</source>
+        <translation>%1 bis %2 (%3 mm)</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::WorkflowChecklist</name>

@@ -3404,6 +3404,18 @@ lumen %2 mm (circle: %3)</source>
         <source>outer wall %1 mm (yellow: the largest caliper of the sac&apos;s labels here)</source>
         <translation>外壁 %1 mm（黄色：此处瘤囊标签的最大卡尺宽度）</translation>
     </message>
+    <message>
+        <source>segment %1</source>
+        <translation>段 %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2 mm)</source>
+        <translation>%1（%2 mm）</translation>
+    </message>
+    <message>
+        <source>%1 to %2 (%3 mm)</source>
+        <translation>%1 至 %2（%3 mm）</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::WorkflowChecklist</name>

@@ -106,7 +106,7 @@ EndoscopePanel::EndoscopePanel(QWidget* parent) : QWidget(parent)
             [this](int index)
             {
                 if (index >= 0)
-                    setSegment(m_segments->itemData(index).toInt());
+                    setPath(m_segments->itemData(index).toList());
             });
     connect(m_position, &QSlider::valueChanged, this, [this](int step) { setArc(step * kStepMm); });
     for (QDoubleSpinBox* box : {m_focalLength, m_focus, m_fNumber})
@@ -121,24 +121,28 @@ void EndoscopePanel::setData(const TriangleMesh& lumen, const SkeletonGraph& cen
     pause();
     m_view->setLumen(lumen);
     m_centerlines = centerlines;
-    m_edge = -1;
+    m_path = {};
     m_frames = {};
     const QSignalBlocker quiet(m_segments);
     const int longest = fillSegmentChoices(m_segments, centerlines, names);
     if (longest >= 0)
-        setSegment(longest);
+        setPath(m_segments->itemData(longest).toList());
 }
 
-void EndoscopePanel::setSegment(int edge)
+void EndoscopePanel::setSegment(int edge) { setPath(VesselPath{edge + 1}); }
+
+int EndoscopePanel::segment() const { return m_path.size() == 1 ? std::abs(m_path.front().toInt()) - 1 : -1; }
+
+void EndoscopePanel::setPath(const VesselPath& path)
 {
-    if (edge == m_edge)
+    if (path == m_path)
         return;
-    std::optional<imaging::CenterlineFrames> frames = segmentFrames(m_centerlines, edge, kStepMm);
+    std::optional<imaging::CenterlineFrames> frames = pathFrames(m_centerlines, path, kStepMm);
     if (!frames)
         return;
     m_frames = std::move(*frames);
-    m_edge = edge;
-    showSegmentChoice(m_segments, edge);
+    m_path = path;
+    showSegmentChoice(m_segments, path);
     {
         const QSignalBlocker quiet(m_position);
         m_position->setRange(0, int(m_frames.points.size()) - 1);

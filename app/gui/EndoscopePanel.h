@@ -5,6 +5,7 @@
 // focal length, focus distance and aperture; "Focus on Centre" sets the focus to the wall at the picture's
 // centre. A flow run's particles show as blood cells when the run player plays one. The camera's position is
 // announced so that the slice views follow it.
+#include "SegmentChoices.h"
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/core/TriangleMesh.h"
 #include "vsim/imaging/CurvedReformation.h"
@@ -39,8 +40,12 @@ public:
     void setData(const TriangleMesh& lumen, const SkeletonGraph& centerlines,
                  const std::vector<std::string>& names);
     bool hasData() const { return !m_frames.points.empty(); }
+    /// One segment, or a path of segments across junctions (SegmentChoices.h), to fly along.
     void setSegment(int edge);
-    int segment() const { return m_edge; }
+    void setPath(const VesselPath& path);
+    /// The segment flown along; -1 on a path of several.
+    int segment() const;
+    const VesselPath& path() const { return m_path; }
     /// The camera at `arcMm` along the segment (clamped).
     void setArc(double arcMm);
     double arc() const { return m_arcMm; }
@@ -84,7 +89,7 @@ private:
     QTimer* m_timer;
     SkeletonGraph m_centerlines;
     imaging::CenterlineFrames m_frames;
-    int m_edge = -1;
+    VesselPath m_path;
     double m_arcMm = 0.0;
     int m_direction = 1;
 };

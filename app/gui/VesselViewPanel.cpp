@@ -56,7 +56,7 @@ VesselViewPanel::VesselViewPanel(QWidget* parent) : QWidget(parent)
 
     connect(m_segments, &QComboBox::currentIndexChanged, this, [this](int index) {
         if (index >= 0)
-            setSegment(m_segments->itemData(index).toInt());
+            setPath(m_segments->itemData(index).toList());
     });
     connect(m_rotation, &QSlider::valueChanged, this, [this](int degrees) { setAngle(degrees); });
     connect(m_cpr, &viz::PlaneImageView::clicked, this, [this](const QPointF& mm) { setArc(mm.y()); });
@@ -74,44 +74,63 @@ void VesselViewPanel::setData(const CtVolume& ct, const SkeletonGraph& centerlin
         m_measured = *measured;
     const QSignalBlocker quiet(m_segments);
     const int longest = fillSegmentChoices(m_segments, centerlines, names);
-    m_edge = -1;
+    m_path = {};
     if (longest >= 0)
     {
-        m_segments->setCurrentIndex(m_segments->findData(longest));
-        setSegment(longest);
+        m_segments->setCurrentIndex(longest);
+        setPath(m_segments->itemData(longest).toList());
     }
 }
 
 void VesselViewPanel::clear()
 {
     m_frames = {};
-    m_edge = -1;
+    m_path = {};
+    m_pathSections.clear();
     m_segments->clear();
     m_cpr->setPicture(0, 0, 1.0, {});
     m_section->setPicture(0, 0, 1.0, {});
     m_plot->setCurves({});
 }
 
-void VesselViewPanel::setSegment(int edge)
+void VesselViewPanel::setSegment(int edge) { setPath(VesselPath{edge + 1}); }
+
+int VesselViewPanel::segment() const { return m_path.size() == 1 ? std::abs(m_path.front().toInt()) - 1 : -1; }
+
+void VesselViewPanel::setPath(const VesselPath& path)
 {
-    if (edge == m_edge)
+    if (path == m_path)
         return;
-    std::optional<imaging::CenterlineFrames> frames = segmentFrames(m_centerlines, edge, kStepMm);
+    std::optional<imaging::CenterlineFrames> frames = pathFrames(m_centerlines, path, kStepMm);
     if (!frames)
         return;
     m_frames = std::move(*frames);
-    m_edge = edge;
-    showSegmentChoice(m_segments, edge);
-    bool fromSections = false;
-    lumenDiameterAt(0.0, &fromSections);
+    m_path = path;
+    showSegmentChoice(m_segments, path);
+    // The measured sections of the path's segments, at their arc along the path (a segment run backwards counts
+    // from its end).
+    m_pathSections.clear();
+    double offsetMm = 0.0;
+    for (const QVariant& step : path)
+    {
+        const std::size_t edge = std::size_t(std::abs(step.toInt()) - 1);
+        const double lengthMm = m_centerlines.edges[edge].length();
+        if (m_measured)
+            for (const imaging::CrossSection& section : m_measured->segments[edge].sections)
+                m_pathSections.emplace_back(offsetMm + (step.toInt() > 0 ? section.arcLengthMm : lengthMm - section.arcLengthMm),
+                                            section.equivalentDiameterMm);
+        offsetMm += lengthMm;
+    }
+    std::sort(m_pathSections.begin(), m_pathSections.end());
+    const bool fromSections = !m_pathSections.empty();
     LinePlot::Curve diameter{fromSections ? tr("lumen equivalent diameter (measured sections)")
                                           : tr("lumen diameter (2 x the centerline's radius: reads low)"),
                              QColor(60, 170, 230), {}, {}};
     if (fromSections)
-        for (const imaging::CrossSection& section : m_measured->segments[std::size_t(edge)].sections)
+        for (const auto& [arcMm, diameterMm] : m_pathSections)
         {
-            diameter.x.push_back(section.arcLengthMm);
-            diameter.y.push_back(section.equivalentDiameterMm);
+            diameter.x.push_back(arcMm);
+            diameter.y.push_back(diameterMm);
         }
     else
         for (std::size_t i = 0; i < m_frames.points.size(); ++i)
@@ -151,16 +170,14 @@ void VesselViewPanel::setArc(double arcMm)
 
 double VesselViewPanel::lumenDiameterAt(double arcMm, bool* measured) const
 {
-    const bool haveSections = m_measured && m_edge >= 0 && !m_measured->segments[std::size_t(m_edge)].sections.empty();
     if (measured)
-        *measured = haveSections;
-    if (!haveSections)
+        *measured = !m_pathSections.empty();
+    if (m_pathSections.empty())
         return m_frames.points.empty() ? 0.0 : 2.0 * m_frames.radiiMm[m_frames.indexAt(arcMm)];
-    const auto& sections = m_measured->segments[std::size_t(m_edge)].sections;
-    const auto nearest = std::min_element(sections.begin(), sections.end(), [&](const imaging::CrossSection& a, const imaging::CrossSection& b) {
-        return std::abs(a.arcLengthMm - arcMm) < std::abs(b.arcLengthMm - arcMm);
+    const auto nearest = std::min_element(m_pathSections.begin(), m_pathSections.end(), [&](const auto& a, const auto& b) {
+        return std::abs(a.first - arcMm) < std::abs(b.first - arcMm);
     });
-    return nearest->equivalentDiameterMm;
+    return nearest->second;
 }
 
 void VesselViewPanel::setSacLabels(std::optional<LabelVolume> sacLabels)

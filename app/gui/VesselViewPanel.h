@@ -1,6 +1,7 @@
 #pragma once
 
 #include "LinePlot.h"
+#include "SegmentChoices.h"
 #include "vsim/core/ImageVolume.h"
 #include "vsim/core/SkeletonGraph.h"
 #include "vsim/imaging/CurvedReformation.h"
@@ -45,8 +46,12 @@ public:
     void clear();
     bool hasData() const { return !m_frames.points.empty(); }
 
+    /// One segment, or a path of segments across junctions (SegmentChoices.h), along the view.
     void setSegment(int edge);
-    int segment() const { return m_edge; }
+    void setPath(const VesselPath& path);
+    /// The segment shown; -1 on a path of several.
+    int segment() const;
+    const VesselPath& path() const { return m_path; }
     /// Moves to an arc position (mm from the segment's start; clamped).
     void setArc(double arcMm);
     double arc() const { return m_arcMm; }
@@ -73,7 +78,8 @@ private:
     std::optional<imaging::VesselMeasurements> m_measured;
     std::optional<LabelVolume> m_sacLabels;
     imaging::CenterlineFrames m_frames;
-    int m_edge = -1;
+    VesselPath m_path;
+    std::vector<std::pair<double, double>> m_pathSections; ///< (arc along the path, equivalent diameter) mm
     double m_arcMm = 0.0, m_angle = 0.0;
     QComboBox* m_segments = nullptr;
     QSlider* m_rotation = nullptr;

@@ -14,6 +14,9 @@
 #include "vsim/viz/EndoscopeView.h"
 #include "vsim/viz/SliceView.h"
 
+#include <QComboBox>
+
+#include <algorithm>
 #include <cmath>
 
 namespace fs = std::filesystem;
@@ -83,7 +86,9 @@ private slots:
 
         // Inside the lumen, looking along it: the wall is hit all round; nearer at the edges than down the
         // middle.
-        panel->setArc(0.3 * panel->frames().lengthMm());
+        const int segmentEdge = panel->segment();
+        const double at30 = 0.3 * panel->frames().lengthMm();
+        panel->setArc(at30);
         const QImage sharp = view->sharpPicture();
         const std::vector<float>& depth = view->depthMm();
         const int w = sharp.width(), h = sharp.height();
@@ -125,6 +130,29 @@ private slots:
         QVERIFY(!panel->playing());
         QTimer::singleShot(0, [] {});
         panel->setDirection(1);
+
+        // Across the junction: a path from the inlet into a branch, flown through in one go.
+        auto* choices = panel->findChild<QComboBox*>("endoscopeSegment");
+        int pathChoice = -1;
+        for (int index = 0; index < choices->count() && pathChoice < 0; ++index)
+            if (choices->itemData(index).toList().size() >= 2)
+                pathChoice = index;
+        QVERIFY(pathChoice >= 0);
+        choices->setCurrentIndex(pathChoice);
+        QCOMPARE(panel->segment(), -1);
+        const double pathLength = panel->frames().lengthMm();
+        panel->setArc(0.0);
+        panel->play();
+        panel->setSpeed(50.0);
+        for (int second = 0; second * 50.0 < pathLength + 50.0 && panel->playing(); ++second)
+            panel->advance(1.0);
+        qInfo("path %s: %.1f mm flown to its end", qPrintable(choices->itemText(pathChoice)), panel->arc());
+        QVERIFY(!panel->playing() && std::abs(panel->arc() - pathLength) < 1e-9); // stops at the outlet
+        view->picture();
+        const auto wallHits = std::count_if(view->depthMm().begin(), view->depthMm().end(), [](float d) { return std::isfinite(d); });
+        QVERIFY(wallHits > 0.5 * double(view->depthMm().size())); // near the outlet, still inside the lumen
+        choices->setCurrentIndex(choices->findData(gui::VesselPath{segmentEdge + 1}));
+        panel->setArc(at30);
 
         // Focus: on the wall at the centre, sharp and clean; out of focus, blurred and noisy.
         panel->setFocalLength(2.0);

@@ -3,7 +3,7 @@
 // the cross-section perpendicular to it with the lumen caliper (cyan circle: the measured section's equivalent
 // diameter, within 15 % of the picture's half-level disc) on a bright lumen, and the diameter plot;
 // a click on the CPR or the plot and the wheel over the cross-section move along the centerline, and the MPR cursor
-// follows; the rotation slider turns the CPR. Screenshot kept in test-output/gui-vessel-view.
+// follows; the rotation slider turns the CPR; a path across the junction joins its segments. Screenshot kept in test-output/gui-vessel-view.
 #include "DicomFixtures.h"
 #include "GuiTestMain.h"
 #include "MainWindow.h"
@@ -15,6 +15,7 @@
 #include "vsim/viz/PlaneImageView.h"
 #include "vsim/viz/SliceView.h"
 
+#include <QComboBox>
 #include <QSlider>
 
 namespace fs = std::filesystem;
@@ -97,6 +98,29 @@ private slots:
         captureWindow(panel).save(test::outputFolder("gui-vessel-view") + "/vessel-view.png");
 
         QVERIFY(!panel->outerCaliperAt(panel->arc())); // no sac measured: no outer-wall caliper
+
+        // A path across the junction (the aorta into an iliac artery): one CPR along the segments joined, its length
+        // theirs, its rows one per 0.5 mm, the plot its sections in order.
+        auto* choices = panel->findChild<QComboBox*>("vesselSegment");
+        int pathChoice = -1;
+        for (int index = 0; index < choices->count() && pathChoice < 0; ++index)
+            if (choices->itemData(index).toList().size() >= 2)
+                pathChoice = index;
+        QVERIFY2(pathChoice >= 0, "no path across a junction offered");
+        choices->setCurrentIndex(pathChoice);
+        const gui::VesselPath path = choices->itemData(pathChoice).toList();
+        QCOMPARE(panel->path(), path);
+        QCOMPARE(panel->segment(), -1);
+        double joined = 0.0;
+        for (const QVariant& step : path)
+            joined += window.document().study().loadSkeleton(window.document().study().newestArtifact(
+                study::ArtifactKind::Skeleton, "centerline")).edges[std::size_t(std::abs(step.toInt()) - 1)].length();
+        qInfo("path %s: %.1f mm of frames for %.1f mm of segments", qPrintable(choices->itemText(pathChoice)),
+              panel->frames().lengthMm(), joined);
+        QVERIFY(std::abs(panel->frames().lengthMm() - joined) < 2.0);
+        QCOMPARE(panel->reformationView()->pictureHeight(), int(panel->frames().points.size()));
+        for (std::size_t i = 1; i < panel->frames().points.size(); ++i) // no jump at the junction
+            QVERIFY((panel->frames().points[i] - panel->frames().points[i - 1]).norm() < 0.6);
     }
 };
 

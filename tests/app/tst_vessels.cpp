@@ -328,7 +328,9 @@ private slots:
         const QComboBox* segments = panel->findChild<QComboBox*>("vesselSegment");
         for (int index = 0; index < segments->count(); ++index)
         {
-            panel->setSegment(segments->itemData(index).toInt());
+            if (segments->itemData(index).toList().size() != 1)
+                continue; // the paths across junctions: their planes there cut the sac obliquely
+            panel->setPath(segments->itemData(index).toList());
             // Perpendicular to the aorta: sections of the long segments 10 mm or more from their ends (a plane at a
             // junction cuts the sac obliquely).
             const double length = panel->frames().lengthMm();
