@@ -131,18 +131,12 @@ void EndoscopePanel::setData(const TriangleMesh& lumen, const SkeletonGraph& cen
 
 void EndoscopePanel::setSegment(int edge) { setPath(VesselPath{edge + 1}); }
 
-int EndoscopePanel::segment() const { return m_path.size() == 1 ? std::abs(m_path.front().toInt()) - 1 : -1; }
+int EndoscopePanel::segment() const { return singleSegment(m_path); }
 
 void EndoscopePanel::setPath(const VesselPath& path)
 {
-    if (path == m_path)
+    if (!adoptPath(m_centerlines, path, kStepMm, m_segments, m_path, m_frames))
         return;
-    std::optional<imaging::CenterlineFrames> frames = pathFrames(m_centerlines, path, kStepMm);
-    if (!frames)
-        return;
-    m_frames = std::move(*frames);
-    m_path = path;
-    showSegmentChoice(m_segments, path);
     {
         const QSignalBlocker quiet(m_position);
         m_position->setRange(0, int(m_frames.points.size()) - 1);

@@ -155,4 +155,23 @@ inline std::optional<imaging::CenterlineFrames> pathFrames(const SkeletonGraph& 
     }
 }
 
+/// The one segment a path runs along; -1 for a path of several (or none).
+inline int singleSegment(const VesselPath& path) { return path.size() == 1 ? std::abs(path.front().toInt()) - 1 : -1; }
+
+/// A view that follows the centerline takes `path`: its frames into `frames`, `current` set, the choices showing
+/// it. False (nothing changed) when it is `current` already or has no frames.
+inline bool adoptPath(const SkeletonGraph& centerlines, const VesselPath& path, double stepMm, QComboBox* choices,
+                      VesselPath& current, imaging::CenterlineFrames& frames)
+{
+    if (path == current)
+        return false;
+    std::optional<imaging::CenterlineFrames> made = pathFrames(centerlines, path, stepMm);
+    if (!made)
+        return false;
+    frames = std::move(*made);
+    current = path;
+    showSegmentChoice(choices, path);
+    return true;
+}
+
 } // namespace vsim::gui

@@ -95,18 +95,12 @@ void VesselViewPanel::clear()
 
 void VesselViewPanel::setSegment(int edge) { setPath(VesselPath{edge + 1}); }
 
-int VesselViewPanel::segment() const { return m_path.size() == 1 ? std::abs(m_path.front().toInt()) - 1 : -1; }
+int VesselViewPanel::segment() const { return singleSegment(m_path); }
 
 void VesselViewPanel::setPath(const VesselPath& path)
 {
-    if (path == m_path)
+    if (!adoptPath(m_centerlines, path, kStepMm, m_segments, m_path, m_frames))
         return;
-    std::optional<imaging::CenterlineFrames> frames = pathFrames(m_centerlines, path, kStepMm);
-    if (!frames)
-        return;
-    m_frames = std::move(*frames);
-    m_path = path;
-    showSegmentChoice(m_segments, path);
     // The measured sections of the path's segments, at their arc along the path (a segment run backwards counts
     // from its end).
     m_pathSections.clear();
