@@ -37,9 +37,13 @@ inline std::vector<std::pair<VesselPath, double>> inletPaths(const SkeletonGraph
     int inlet = -1;
     double widest = -1.0;
     for (const SkeletonGraph::Edge& edge : centerlines.edges)
+    {
+        if (edge.radii.empty())
+            continue;
         for (const auto& [node, radius] : {std::pair{edge.from, edge.radii.front()}, std::pair{edge.to, edge.radii.back()}})
             if (centerlines.degree(node) == 1 && radius > widest)
                 widest = radius, inlet = node;
+    }
     std::vector<std::pair<VesselPath, double>> paths;
     if (inlet < 0)
         return paths;
