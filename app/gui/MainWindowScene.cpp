@@ -225,6 +225,8 @@ void MainWindow::restoreScene()
 {
     m_scene = SceneCache();
     m_drawnScene.clear();
+    if (m_endoscopeDock)
+        m_endoscopeDock->hide(); // inside the study before; Vessels > Virtual Endoscope enters this one's lumen
     m_guidedLabelId.clear(); // a new study starts without points; its guided label's points come back on request
     imaging::SegmentationRequest noPoints;
     noPoints.target = imaging::SegmentationTarget::Aorta;
