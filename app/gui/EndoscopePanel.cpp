@@ -188,9 +188,8 @@ void EndoscopePanel::setFocusDistance(double mm)
 
 void EndoscopePanel::focusOnCentre()
 {
-    m_view->picture(); // the depth of the pose shown now
+    const QImage shown = m_view->picture(); // rendered for the pose shown now, with its depth
     const std::vector<float>& depth = m_view->depthMm();
-    const QImage shown = m_view->picture();
     if (depth.empty())
         return;
     // The nearest wall within the picture's central tenth: what a probe's centre-weighted autofocus would

@@ -128,7 +128,6 @@ private slots:
         QVERIFY(std::abs(panel->arc() - start - 10.0) < 1e-6);
         panel->pause();
         QVERIFY(!panel->playing());
-        QTimer::singleShot(0, [] {});
         panel->setDirection(1);
 
         // Across the junction: a path from the inlet into a branch, flown through in one go.

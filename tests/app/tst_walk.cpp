@@ -134,13 +134,14 @@ private slots:
         QVERIFY(axial->hasImage());
 
         // The crosshair: a click sets the cursor there; the image stays where it was.
-        const QImage before = axial->grabFramebuffer();
+        const Eigen::Vector3d centreBefore = axial->viewCentre();
         const Eigen::Vector3d target = axial->cursor() + Eigen::Vector3d(12.0, -8.0, 0.0);
+        const QPointF targetOnScreen = axial->widgetAt(target);
         test::sliceClick(axial, target);
         QVERIFY((axial->cursor() - target).norm() < 1.0);
-        QVERIFY(window.views()->sliceView(SliceOrientation::Coronal)->cursor().y() - target.y() < 1.0);
-        QVERIFY((axial->widgetAt(target) - QPointF(axial->widgetAt(target))).manhattanLength() < 1e-9);
-        QCOMPARE(axial->grabFramebuffer().size(), before.size());
+        QVERIFY(std::abs(window.views()->sliceView(SliceOrientation::Coronal)->cursor().y() - target.y()) < 1.0);
+        QVERIFY((axial->viewCentre() - centreBefore).norm() < 1e-9); // the image did not move
+        QVERIFY((axial->widgetAt(target) - targetOnScreen).manhattanLength() < 1e-6);
 
         const double segment = runStep(window, list, WorkflowStep::Segment);
         QCOMPARE(list->state(WorkflowStep::Segment), StepState::Done);
