@@ -37,6 +37,1169 @@
     </message>
 </context>
 <context>
+    <name>Report</name>
+    <message>
+        <source>(not recorded)</source>
+        <translation>(nicht erfasst)</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patient</translation>
+    </message>
+    <message>
+        <source>anonymized</source>
+        <translation>anonymisiert</translation>
+    </message>
+    <message>
+        <source>Patient ID</source>
+        <translation>Patienten-ID</translation>
+    </message>
+    <message>
+        <source>Birth date</source>
+        <translation>Geburtsdatum</translation>
+    </message>
+    <message>
+        <source>Institution</source>
+        <translation>Einrichtung</translation>
+    </message>
+    <message>
+        <source>Study date</source>
+        <translation>Untersuchungsdatum</translation>
+    </message>
+    <message>
+        <source>Study</source>
+        <translation>Untersuchung</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>Serie</translation>
+    </message>
+    <message>
+        <source>Software</source>
+        <translation>Software</translation>
+    </message>
+    <message>
+        <source>Report date</source>
+        <translation>Berichtsdatum</translation>
+    </message>
+    <message>
+        <source>Analyses not run</source>
+        <translation>Nicht durchgeführte Analysen</translation>
+    </message>
+    <message>
+        <source>planning support, needs clinical judgement</source>
+        <translation>Planungsunterstützung, erfordert klinische Beurteilung</translation>
+    </message>
+    <message>
+        <source>page %1</source>
+        <translation>Seite %1</translation>
+    </message>
+    <message>
+        <source>Metric</source>
+        <translation>Kenngröße</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Results are computed from the patient&apos;s images by physical models for planning support only. They are not a diagnosis and need clinical judgement.</source>
+        <translation>Die Ergebnisse werden mit physikalischen Modellen aus den Bildern des Patienten berechnet und dienen nur der Planungsunterstützung. Sie sind keine Diagnose und erfordern eine klinische Beurteilung.</translation>
+    </message>
+    <message>
+        <source>Measurements marked for the report on the workstation. Points in the patient frame (LPS, mm).</source>
+        <translation>Auf der Workstation für den Bericht markierte Messungen. Punkte im Patientenkoordinatensystem (LPS, mm).</translation>
+    </message>
+    <message>
+        <source>Measurement</source>
+        <translation>Messung</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>Messwert</translation>
+    </message>
+    <message>
+        <source>Definition</source>
+        <translation>Definition</translation>
+    </message>
+    <message>
+        <source>Points [mm]</source>
+        <translation>Punkte [mm]</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Messungen</translation>
+    </message>
+    <message>
+        <source>Filling of the tree downstream of the tip</source>
+        <translation>Füllung des Gefäßbaums distal der Katheterspitze</translation>
+    </message>
+    <message>
+        <source>Time from the start of the injection [s]</source>
+        <translation>Zeit ab Injektionsbeginn [s]</translation>
+    </message>
+    <message>
+        <source>Volume filled by the drug [%]</source>
+        <translation>Vom Wirkstoff gefülltes Volumen [%]</translation>
+    </message>
+    <message>
+        <source>filled</source>
+        <translation>gefüllt</translation>
+    </message>
+    <message>
+        <source>Drug flow per branch (segments downstream of the tip, largest flow first)</source>
+        <translation>Wirkstofffluss je Ast (Segmente distal der Spitze, größter Fluss zuerst)</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>Nodes</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Radius [mm]</source>
+        <translation>Radius [mm]</translation>
+    </message>
+    <message>
+        <source>Length [mm]</source>
+        <translation>Länge [mm]</translation>
+    </message>
+    <message>
+        <source>Drug flow [ml/min]</source>
+        <translation>Wirkstofffluss [ml/min]</translation>
+    </message>
+    <message>
+        <source>Share [%]</source>
+        <translation>Anteil [%]</translation>
+    </message>
+    <message>
+        <source>Filled after [s]</source>
+        <translation>Gefüllt nach [s]</translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation>nie</translation>
+    </message>
+    <message>
+        <source>%1 more</source>
+        <translation>%1 weitere</translation>
+    </message>
+    <message>
+        <source>Chemoembolization: drug delivery through the hepatic arteries</source>
+        <translation>Chemoembolisation: Wirkstoffgabe über die Leberarterien</translation>
+    </message>
+    <message>
+        <source>sphere x,y,z,radius %1 mm</source>
+        <translation>Kugel x,y,z,Radius %1 mm</translation>
+    </message>
+    <message>
+        <source>label %1</source>
+        <translation>Label %1</translation>
+    </message>
+    <message>
+        <source>none given</source>
+        <translation>nicht angegeben</translation>
+    </message>
+    <message>
+        <source>Catheter tip: %1 (a node of the network, or a point x,y,z in mm, patient LPS). Tumour: %2. Blood enters at: %3.</source>
+        <translation>Katheterspitze: %1 (ein Knoten des Netzes oder ein Punkt x,y,z in mm, Patienten-LPS). Tumor: %2. Bluteinstrom: %3.</translation>
+    </message>
+    <message>
+        <source>the root of the tree</source>
+        <translation>die Wurzel des Gefäßbaums</translation>
+    </message>
+    <message>
+        <source>the tree&apos;s largest end</source>
+        <translation>das größte Ende des Gefäßbaums</translation>
+    </message>
+    <message>
+        <source>Feeders added by hand: segments %1.</source>
+        <translation>Von Hand hinzugefügte Feeder: Segmente %1.</translation>
+    </message>
+    <message>
+        <source>Feeders removed by hand: segments %1.</source>
+        <translation>Von Hand entfernte Feeder: Segmente %1.</translation>
+    </message>
+    <message>
+        <source>Injection and filling</source>
+        <translation>Injektion und Füllung</translation>
+    </message>
+    <message>
+        <source>Injected mixture</source>
+        <translation>Injiziertes Gemisch</translation>
+    </message>
+    <message>
+        <source>Injected mass</source>
+        <translation>Injizierte Masse</translation>
+    </message>
+    <message>
+        <source>Gas void fraction</source>
+        <translation>Gasvolumenanteil</translation>
+    </message>
+    <message>
+        <source>Mixture density</source>
+        <translation>Dichte des Gemischs</translation>
+    </message>
+    <message>
+        <source>Mixture viscosity</source>
+        <translation>Viskosität des Gemischs</translation>
+    </message>
+    <message>
+        <source>Pressure at the tip</source>
+        <translation>Druck an der Spitze</translation>
+    </message>
+    <message>
+        <source>First outlet reached after</source>
+        <translation>Erster Ausgang erreicht nach</translation>
+    </message>
+    <message>
+        <source>Last outlet reached after</source>
+        <translation>Letzter Ausgang erreicht nach</translation>
+    </message>
+    <message>
+        <source>Outlets downstream of the tip</source>
+        <translation>Ausgänge distal der Spitze</translation>
+    </message>
+    <message>
+        <source>Largest Reynolds number</source>
+        <translation>Größte Reynolds-Zahl</translation>
+    </message>
+    <message>
+        <source>Blood flow and the catheter (time-averaged, Newtonian blood)</source>
+        <translation>Blutfluss und Katheter (zeitgemittelt, newtonsches Blut)</translation>
+    </message>
+    <message>
+        <source>Arterial inflow at the tree&apos;s root</source>
+        <translation>Arterieller Zufluss an der Wurzel des Gefäßbaums</translation>
+    </message>
+    <message>
+        <source>Mean pressure at the root</source>
+        <translation>Mittlerer Druck an der Wurzel</translation>
+    </message>
+    <message>
+        <source>Vessel&apos;s own flow at the tip (catheter in, no injection)</source>
+        <translation>Eigenfluss des Gefäßes an der Spitze (Katheter liegt, keine Injektion)</translation>
+    </message>
+    <message>
+        <source>Blood reaching the tip during the injection</source>
+        <translation>Blut, das während der Injektion die Spitze erreicht</translation>
+    </message>
+    <message>
+        <source>Injected mixture in the flow below the tip (volume)</source>
+        <translation>Injiziertes Gemisch im Fluss distal der Spitze (Volumen)</translation>
+    </message>
+    <message>
+        <source>Drug (liquid phase) in the flow below the tip (volume)</source>
+        <translation>Wirkstoff (flüssige Phase) im Fluss distal der Spitze (Volumen)</translation>
+    </message>
+    <message>
+        <source>Catheter&apos;s share of the lumen at the tip (area)</source>
+        <translation>Anteil des Katheters am Lumen an der Spitze (Fläche)</translation>
+    </message>
+    <message>
+        <source>Wedged catheter (1: yes)</source>
+        <translation>Katheter in Wedge-Position (1: ja)</translation>
+    </message>
+    <message>
+        <source>Drug refluxing past the tip</source>
+        <translation>Wirkstoffreflux an der Spitze vorbei</translation>
+    </message>
+    <message>
+        <source>Fixed-point iterations (fractions and viscosities)</source>
+        <translation>Fixpunktiterationen (Anteile und Viskositäten)</translation>
+    </message>
+    <message>
+        <source>Perfusion territory and tumour coverage (TACE grading: A lesion and margin, B lesion only, C lesion partly; margin 5 mm under 25 mm, else 10 mm)</source>
+        <translation>Perfusionsterritorium und Tumorabdeckung (TACE-Einteilung: A Läsion und Saum, B nur Läsion, C Läsion teilweise; Saum 5 mm unter 25 mm, sonst 10 mm)</translation>
+    </message>
+    <message>
+        <source>Liver (label)</source>
+        <translation>Leber (Label)</translation>
+    </message>
+    <message>
+        <source>Perfused territory from the tip</source>
+        <translation>Von der Spitze aus perfundiertes Territorium</translation>
+    </message>
+    <message>
+        <source>Tumour in the territory</source>
+        <translation>Tumor im Territorium</translation>
+    </message>
+    <message>
+        <source>Non-tumour liver in the territory</source>
+        <translation>Nicht-tumoröse Leber im Territorium</translation>
+    </message>
+    <message>
+        <source>Coverage grade (1 A, 2 B, 3 C)</source>
+        <translation>Abdeckungsgrad (1 A, 2 B, 3 C)</translation>
+    </message>
+    <message>
+        <source>Lesion 1: longest diameter</source>
+        <translation>Läsion 1: größter Durchmesser</translation>
+    </message>
+    <message>
+        <source>Lesion 1: margin</source>
+        <translation>Läsion 1: Saum</translation>
+    </message>
+    <message>
+        <source>Lesion 1: covered</source>
+        <translation>Läsion 1: abgedeckt</translation>
+    </message>
+    <message>
+        <source>Lesion 1: margin covered</source>
+        <translation>Läsion 1: Saum abgedeckt</translation>
+    </message>
+    <message>
+        <source>Feeders (found: entering lesion + margin, or feeding 1 % of it; with the user&apos;s edits)</source>
+        <translation>Feeder (gefunden: in Läsion + Saum eintretend oder 1 % davon versorgend; mit den Änderungen des Benutzers)</translation>
+    </message>
+    <message>
+        <source>Feeders added by hand</source>
+        <translation>Von Hand hinzugefügte Feeder</translation>
+    </message>
+    <message>
+        <source>Feeders found and removed by hand</source>
+        <translation>Gefundene und von Hand entfernte Feeder</translation>
+    </message>
+    <message>
+        <source>Feeders the drug from the tip reaches</source>
+        <translation>Feeder, die der Wirkstoff von der Spitze aus erreicht</translation>
+    </message>
+    <message>
+        <source>Drug to non-tumour liver</source>
+        <translation>Wirkstoff in nicht-tumoröse Leber</translation>
+    </message>
+    <message>
+        <source>Drug leaving the liver (extrahepatic outlets)</source>
+        <translation>Wirkstoff, der die Leber verlässt (extrahepatische Ausgänge)</translation>
+    </message>
+    <message>
+        <source>Best tip position&apos;s grade (1 A, 2 B, 3 C)</source>
+        <translation>Grad der besten Spitzenposition (1 A, 2 B, 3 C)</translation>
+    </message>
+    <message>
+        <source>Best tip position&apos;s non-tumour liver</source>
+        <translation>Nicht-tumoröse Leber bei der besten Spitzenposition</translation>
+    </message>
+    <message>
+        <source>Working C-arm angle for the path to the tip (patient supine; + LAO / - RAO, + cranial / - caudal; within LAO/RAO 60 and cranial/caudal 40 degrees)</source>
+        <translation>Arbeitswinkel des C-Bogens für den Weg zur Spitze (Patient in Rückenlage; + LAO / - RAO, + kranial / - kaudal; innerhalb LAO/RAO 60 und kranial/kaudal 40 Grad)</translation>
+    </message>
+    <message>
+        <source>Path from node (the common hepatic artery&apos;s upper end when named, else the root)</source>
+        <translation>Weg ab Knoten (oberes Ende der A. hepatica communis, wenn benannt, sonst die Wurzel)</translation>
+    </message>
+    <message>
+        <source>LAO (+) / RAO (-)</source>
+        <translation>LAO (+) / RAO (-)</translation>
+    </message>
+    <message>
+        <source>Cranial (+) / caudal (-)</source>
+        <translation>Kranial (+) / kaudal (-)</translation>
+    </message>
+    <message>
+        <source>Path foreshortened at the working angle</source>
+        <translation>Verkürzung des Wegs im Arbeitswinkel</translation>
+    </message>
+    <message>
+        <source>Path overlapped by other vessels at the working angle</source>
+        <translation>Überlagerung des Wegs durch andere Gefäße im Arbeitswinkel</translation>
+    </message>
+    <message>
+        <source>Path foreshortened from the front (AP)</source>
+        <translation>Verkürzung des Wegs von vorn (AP)</translation>
+    </message>
+    <message>
+        <source>Path overlapped from the front (AP)</source>
+        <translation>Überlagerung des Wegs von vorn (AP)</translation>
+    </message>
+    <message>
+        <source>Targeting</source>
+        <translation>Zielgenauigkeit</translation>
+    </message>
+    <message>
+        <source>Drug reaching the tumour</source>
+        <translation>Wirkstoff, der den Tumor erreicht</translation>
+    </message>
+    <message>
+        <source>Drug reaching non-target liver</source>
+        <translation>Wirkstoff, der Nicht-Ziel-Leber erreicht</translation>
+    </message>
+    <message>
+        <source>Outlets feeding the tumour</source>
+        <translation>Ausgänge, die den Tumor versorgen</translation>
+    </message>
+    <message>
+        <source>Tumour share at the best tip position</source>
+        <translation>Tumoranteil bei der besten Spitzenposition</translation>
+    </message>
+    <message>
+        <source>Candidate catheter tip positions, ranked by coverage grade, then the lesions&apos; share perfused, then the least non-tumour liver perfused</source>
+        <translation>Mögliche Positionen der Katheterspitze, geordnet nach Abdeckungsgrad, dann nach perfundiertem Anteil der Läsionen, dann nach der geringsten perfundierten nicht-tumorösen Leber</translation>
+    </message>
+    <message>
+        <source>Candidate catheter tip positions, ranked by the drug share reaching the tumour</source>
+        <translation>Mögliche Positionen der Katheterspitze, geordnet nach dem Wirkstoffanteil, der den Tumor erreicht</translation>
+    </message>
+    <message>
+        <source>Rank</source>
+        <translation>Rang</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Position x, y, z [mm]</source>
+        <translation>Position x, y, z [mm]</translation>
+    </message>
+    <message>
+        <source>Tumour share [%]</source>
+        <translation>Tumoranteil [%]</translation>
+    </message>
+    <message>
+        <source>Depth [segments]</source>
+        <translation>Tiefe [Segmente]</translation>
+    </message>
+    <message>
+        <source>Grade</source>
+        <translation>Grad</translation>
+    </message>
+    <message>
+        <source>Lesions perfused [%]</source>
+        <translation>Perfundierte Läsionen [%]</translation>
+    </message>
+    <message>
+        <source>Non-tumour liver [ml]</source>
+        <translation>Nicht-tumoröse Leber [ml]</translation>
+    </message>
+    <message>
+        <source>Two-phase drug against a pure liquid at the control points</source>
+        <translation>Zweiphasiger Wirkstoff gegenüber reiner Flüssigkeit an den Kontrollpunkten</translation>
+    </message>
+    <message>
+        <source>A: drug flow, two-phase</source>
+        <translation>A: Wirkstofffluss, zweiphasig</translation>
+    </message>
+    <message>
+        <source>A: drug flow, pure liquid</source>
+        <translation>A: Wirkstofffluss, reine Flüssigkeit</translation>
+    </message>
+    <message>
+        <source>A: two-phase lower by (same injected rate)</source>
+        <translation>A: zweiphasig niedriger um (gleiche Injektionsrate)</translation>
+    </message>
+    <message>
+        <source>A: two-phase lower by (same tip pressure)</source>
+        <translation>A: zweiphasig niedriger um (gleicher Druck an der Spitze)</translation>
+    </message>
+    <message>
+        <source>A: whole flow, two-phase against liquid (split shift)</source>
+        <translation>A: Gesamtfluss, zweiphasig gegenüber Flüssigkeit (Verschiebung der Aufteilung)</translation>
+    </message>
+    <message>
+        <source>B: drug flow, two-phase</source>
+        <translation>B: Wirkstofffluss, zweiphasig</translation>
+    </message>
+    <message>
+        <source>B: drug flow, pure liquid</source>
+        <translation>B: Wirkstofffluss, reine Flüssigkeit</translation>
+    </message>
+    <message>
+        <source>B: two-phase lower by (same injected rate)</source>
+        <translation>B: zweiphasig niedriger um (gleiche Injektionsrate)</translation>
+    </message>
+    <message>
+        <source>B: two-phase lower by (same tip pressure)</source>
+        <translation>B: zweiphasig niedriger um (gleicher Druck an der Spitze)</translation>
+    </message>
+    <message>
+        <source>B: whole flow, two-phase against liquid (split shift)</source>
+        <translation>B: Gesamtfluss, zweiphasig gegenüber Flüssigkeit (Verschiebung der Aufteilung)</translation>
+    </message>
+    <message>
+        <source>The drug flow is the liquid phase&apos;s volume flow, (1 - v) c Q, with v the void fraction and c the injected mixture&apos;s share of the flow (1 when the drug flows alone); the pure liquid is the same injection with v = 0 (thesis ch. 6.4). Its drop is close to v by that definition. The split shift is the change of the whole flow: what the mixture&apos;s other viscosity does to the split.</source>
+        <translation>Der Wirkstofffluss ist der Volumenstrom der flüssigen Phase, (1 - v) c Q, mit v dem Gasvolumenanteil und c dem Anteil des injizierten Gemischs am Fluss (1, wenn der Wirkstoff allein fließt); die reine Flüssigkeit ist dieselbe Injektion mit v = 0 (Dissertation Kap. 6.4). Ihr Rückgang liegt nach dieser Definition nahe bei v. Die Verschiebung der Aufteilung ist die Änderung des Gesamtflusses: was die andere Viskosität des Gemischs an der Aufteilung ändert.</translation>
+    </message>
+    <message>
+        <source>The tree coloured by drug flow (ml/min; grey: no drug), seen from the front</source>
+        <translation>Der Gefäßbaum nach Wirkstofffluss eingefärbt (ml/min; grau: kein Wirkstoff), Ansicht von vorn</translation>
+    </message>
+    <message>
+        <source>drug flow [ml/min]</source>
+        <translation>Wirkstofffluss [ml/min]</translation>
+    </message>
+    <message>
+        <source>Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; the static equilibrium by Newton&apos;s method (sparse LU) to the force tolerance. The imaged geometry is taken as unloaded (CT shows the vessel at its pressure); the intraluminal thrombus, where the wall mesh has it, as its own layer (Wang et al. 2001).</source>
+        <translation>Wandmechanik: quadratische (10-Knoten-)Tetraeder-FEM, die hyperelastische AAA-Wand nach Raghavan &amp; Vorp 2000 (nahezu inkompressibel), der Blutdruck als mitgehende Last auf dem Lumen, Enden fixiert; das statische Gleichgewicht mit dem Newton-Verfahren (dünnbesetzte LU) bis zur Krafttoleranz. Die abgebildete Geometrie gilt als unbelastet (das CT zeigt das Gefäß unter seinem Druck); der intraluminale Thrombus, wo das Wandnetz ihn enthält, als eigene Schicht (Wang et al. 2001).</translation>
+    </message>
+    <message>
+        <source>Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), lumped mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. 4); the physiological protocol&apos;s figures from the static equilibrium after the load path.</source>
+        <translation>Wandmechanik: Tetraeder-FEM (korotierende lineare Elastizität oder St. Venant-Kirchhoff), konzentrierte Masse, Rayleigh-Dämpfung, implizites Euler-Verfahren mit Block-Jacobi-vorkonditioniertem CG (Dissertation Kap. 4); die Werte des physiologischen Protokolls aus dem statischen Gleichgewicht nach dem Lastpfad.</translation>
+    </message>
+    <message>
+        <source>Blood flow: weakly compressible SPH (thesis ch. 5; Liu quartic kernel, Tait equation of state, delta-SPH density diffusion, Morris viscosity with no-slip walls whose pressure is extrapolated from the blood, leapfrog with an adaptive step) on particles seeded in the lumen label; a flow-rate inlet at the largest vessel&apos;s end and pressure outlets with particle buffers; double precision on the CPU.</source>
+        <translation>Blutfluss: schwach kompressibles SPH (Dissertation Kap. 5; quartischer Liu-Kern, Tait-Zustandsgleichung, Delta-SPH-Dichtediffusion, Morris-Viskosität mit haftenden Wänden, deren Druck aus dem Blut extrapoliert wird, Leapfrog mit adaptivem Zeitschritt) auf Partikeln, die im Lumen-Label gesetzt werden; ein Volumenstrom-Einlass am Ende des größten Gefäßes und Druckauslässe mit Partikelpuffern; doppelte Genauigkeit auf der CPU.</translation>
+    </message>
+    <message>
+        <source>the CPU backend in double precision, explicit steps (no linear solves)</source>
+        <translation>auf dem CPU-Backend in doppelter Genauigkeit, explizite Schritte (keine linearen Löser)</translation>
+    </message>
+    <message>
+        <source>Drug delivery: two-phase homogeneous fluid in a network of conical Hagen-Poiseuille pipes, Kirchhoff solve, plug filling (thesis ch. 6).</source>
+        <translation>Wirkstoffgabe: zweiphasiges homogenes Fluid in einem Netz konischer Hagen-Poiseuille-Rohre, Kirchhoff-Lösung, Pfropfenfüllung (Dissertation Kap. 6).</translation>
+    </message>
+    <message>
+        <source>the run used the %1 backend, the cases the %2</source>
+        <translation>der Lauf nutzte das Backend %1, die Fälle %2</translation>
+    </message>
+    <message>
+        <source>the run&apos;s linear solves were direct (factorised), the cases&apos; iterative (at most %1 iterations)</source>
+        <translation>die linearen Lösungen des Laufs waren direkt (faktorisiert), die der Fälle iterativ (höchstens %1 Iterationen)</translation>
+    </message>
+    <message>
+        <source>the run&apos;s solves stopped at %1 iterations, the cases&apos; at %2</source>
+        <translation>die Lösungen des Laufs endeten bei %1 Iterationen, die der Fälle bei %2</translation>
+    </message>
+    <message>
+        <source>the run solved to a relative residual of %1, the cases to %2 or tighter</source>
+        <translation>der Lauf löste bis zu einem relativen Residuum von %1, die Fälle bis %2 oder enger</translation>
+    </message>
+    <message>
+        <source>The cases ran %1.</source>
+        <translation>Die Fälle liefen %1.</translation>
+    </message>
+    <message>
+        <source>That is the configuration of the reported run.</source>
+        <translation>Das ist die Konfiguration des berichteten Laufs.</translation>
+    </message>
+    <message>
+        <source>What differs from the reported run: %1. The cases show the method, not this run&apos;s solver settings.</source>
+        <translation>Abweichungen vom berichteten Lauf: %1. Die Fälle belegen die Methode, nicht die Lösereinstellungen dieses Laufs.</translation>
+    </message>
+    <message>
+        <source>Runs: parameters, solver, validation</source>
+        <translation>Läufe: Parameter, Löser, Validierung</translation>
+    </message>
+    <message>
+        <source>Item</source>
+        <translation>Eintrag</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Befehl</translation>
+    </message>
+    <message>
+        <source>Backend</source>
+        <translation>Backend</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Schritte</translation>
+    </message>
+    <message>
+        <source>1 (steady solve)</source>
+        <translation>1 (stationäre Lösung)</translation>
+    </message>
+    <message>
+        <source>Wall-clock time</source>
+        <translation>Laufzeit</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>nicht erfasst</translation>
+    </message>
+    <message>
+        <source>Convergence</source>
+        <translation>Konvergenz</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Eingaben</translation>
+    </message>
+    <message>
+        <source>Made</source>
+        <translation>Erstellt</translation>
+    </message>
+    <message>
+        <source>%1 by VascuSim %2</source>
+        <translation>%1 mit VascuSim %2</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Parameters of %1</source>
+        <translation>Parameter von %1</translation>
+    </message>
+    <message>
+        <source>Validation of this solver in this build (vascusim-cli validate)</source>
+        <translation>Validierung dieses Lösers in diesem Build (vascusim-cli validate)</translation>
+    </message>
+    <message>
+        <source>Case</source>
+        <translation>Fall</translation>
+    </message>
+    <message>
+        <source>What is compared</source>
+        <translation>Was verglichen wird</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>bestanden</translation>
+    </message>
+    <message>
+        <source>FAILED</source>
+        <translation>NICHT BESTANDEN</translation>
+    </message>
+    <message>
+        <source>Distance along the centerline from the inlet [mm]</source>
+        <translation>Abstand entlang der Mittellinie vom Einlass [mm]</translation>
+    </message>
+    <message>
+        <source>Velocity along the centerline (cross-sections of the same run, time-averaged)</source>
+        <translation>Geschwindigkeit entlang der Mittellinie (Querschnitte desselben Laufs, zeitgemittelt)</translation>
+    </message>
+    <message>
+        <source>Velocity [m/s]</source>
+        <translation>Geschwindigkeit [m/s]</translation>
+    </message>
+    <message>
+        <source>peak (fastest 5 % of the section)</source>
+        <translation>Spitze (schnellste 5 % des Querschnitts)</translation>
+    </message>
+    <message>
+        <source>mean (flow rate / area)</source>
+        <translation>Mittel (Volumenstrom / Fläche)</translation>
+    </message>
+    <message>
+        <source>Mean pressure along the centerline (gauge; the same sections)</source>
+        <translation>Mittlerer Druck entlang der Mittellinie (Überdruck; dieselben Querschnitte)</translation>
+    </message>
+    <message>
+        <source>Pressure [mmHg]</source>
+        <translation>Druck [mmHg]</translation>
+    </message>
+    <message>
+        <source>section mean</source>
+        <translation>Querschnittsmittel</translation>
+    </message>
+    <message>
+        <source>largest TAWSS %1 Pa</source>
+        <translation>größte TAWSS %1 Pa</translation>
+    </message>
+    <message>
+        <source>TAWSS [Pa]</source>
+        <translation>TAWSS [Pa]</translation>
+    </message>
+    <message>
+        <source>Stenosis / blockage</source>
+        <translation>Stenose / Verschluss</translation>
+    </message>
+    <message>
+        <source>The narrowest segment (cross-sections perpendicular to the centerline)</source>
+        <translation>Das engste Segment (Querschnitte senkrecht zur Mittellinie)</translation>
+    </message>
+    <message>
+        <source>Diameter stenosis</source>
+        <translation>Durchmesserstenose</translation>
+    </message>
+    <message>
+        <source>Area stenosis</source>
+        <translation>Flächenstenose</translation>
+    </message>
+    <message>
+        <source>Reference diameter (median)</source>
+        <translation>Referenzdurchmesser (Median)</translation>
+    </message>
+    <message>
+        <source>Minimal diameter</source>
+        <translation>Minimaler Durchmesser</translation>
+    </message>
+    <message>
+        <source>Segment length</source>
+        <translation>Segmentlänge</translation>
+    </message>
+    <message>
+        <source>Diameter along the narrowest segment</source>
+        <translation>Durchmesser entlang des engsten Segments</translation>
+    </message>
+    <message>
+        <source>reference diameter</source>
+        <translation>Referenzdurchmesser</translation>
+    </message>
+    <message>
+        <source>Blockage velocity ratios and the pressure drop come from a blood-flow run (Flow &gt; Blood Flow, vascusim-cli simulate sph); the study&apos;s run has no settled flow to measure them (see its warnings).</source>
+        <translation>Geschwindigkeitsverhältnisse und Druckabfall an der Engstelle stammen aus einem Blutflusslauf (Fluss &gt; Blutfluss, vascusim-cli simulate sph); der Lauf dieser Studie hat keinen eingeschwungenen Fluss, an dem sie sich messen ließen (siehe seine Warnungen).</translation>
+    </message>
+    <message>
+        <source>Blockage velocity ratios and the pressure drop come from a blood-flow run (Flow &gt; Blood Flow, vascusim-cli simulate sph); this study has none.</source>
+        <translation>Geschwindigkeitsverhältnisse und Druckabfall an der Engstelle stammen aus einem Blutflusslauf (Fluss &gt; Blutfluss, vascusim-cli simulate sph); diese Studie hat keinen.</translation>
+    </message>
+    <message>
+        <source>Blood flow (SPH run %1): the throat against the sections %2 mm upstream and downstream along the centerline, time-averaged over the settled flow; pressures gauge, the outlets at %3 mmHg</source>
+        <translation>Blutfluss (SPH-Lauf %1): die Engstelle gegenüber den Querschnitten %2 mm stromauf und stromab entlang der Mittellinie, zeitgemittelt über den eingeschwungenen Fluss; Drücke als Überdruck, die Auslässe bei %3 mmHg</translation>
+    </message>
+    <message>
+        <source>Peak velocity ratio, throat / upstream (PSV ratio&apos;s counterpart)</source>
+        <translation>Verhältnis der Spitzengeschwindigkeit, Engstelle / stromauf (Gegenstück zum PSV-Verhältnis)</translation>
+    </message>
+    <message>
+        <source>Peak velocity ratio, throat / downstream</source>
+        <translation>Verhältnis der Spitzengeschwindigkeit, Engstelle / stromab</translation>
+    </message>
+    <message>
+        <source>Mean velocity ratio, throat / upstream (a mass check)</source>
+        <translation>Verhältnis der mittleren Geschwindigkeit, Engstelle / stromauf (eine Massenprüfung)</translation>
+    </message>
+    <message>
+        <source>Flow area ratio, upstream / throat (from the particles)</source>
+        <translation>Verhältnis der Strömungsfläche, stromauf / Engstelle (aus den Partikeln)</translation>
+    </message>
+    <message>
+        <source>Throat peak velocity (fastest 5 % of the section)</source>
+        <translation>Spitzengeschwindigkeit in der Engstelle (schnellste 5 % des Querschnitts)</translation>
+    </message>
+    <message>
+        <source>Pressure drop, upstream - downstream (section means)</source>
+        <translation>Druckabfall, stromauf - stromab (Querschnittsmittel)</translation>
+    </message>
+    <message>
+        <source>Distal / proximal pressure (gauge)</source>
+        <translation>Distaler / proximaler Druck (Überdruck)</translation>
+    </message>
+    <message>
+        <source>Flow rate throat / upstream (1 when settled)</source>
+        <translation>Volumenstrom Engstelle / stromauf (1 im eingeschwungenen Zustand)</translation>
+    </message>
+    <message>
+        <source>Wall loads on the lumen surface (the same run and window; tau_w from the particles next to the wall)</source>
+        <translation>Wandlasten auf der Lumenoberfläche (derselbe Lauf und dasselbe Zeitfenster; tau_w aus den wandnahen Partikeln)</translation>
+    </message>
+    <message>
+        <source>Largest time-averaged wall shear stress (TAWSS)</source>
+        <translation>Größte zeitgemittelte Wandschubspannung (TAWSS)</translation>
+    </message>
+    <message>
+        <source>Mean TAWSS over the surface</source>
+        <translation>Mittlere TAWSS über die Oberfläche</translation>
+    </message>
+    <message>
+        <source>Largest oscillatory shear index (0: steady)</source>
+        <translation>Größter oszillatorischer Scherindex (0: stationär)</translation>
+    </message>
+    <message>
+        <source>Highest wall pressure (gauge)</source>
+        <translation>Höchster Wanddruck (Überdruck)</translation>
+    </message>
+    <message>
+        <source>Lowest wall pressure (gauge)</source>
+        <translation>Niedrigster Wanddruck (Überdruck)</translation>
+    </message>
+    <message>
+        <source>Time-averaged wall shear stress (TAWSS, Pa) on the lumen surface, averaged over %1-%2 ms of the same run, seen from the front; grey: no value (past an open end, or within a kernel support of it)</source>
+        <translation>Zeitgemittelte Wandschubspannung (TAWSS, Pa) auf der Lumenoberfläche, gemittelt über %1-%2 ms desselben Laufs, Ansicht von vorn; grau: kein Wert (jenseits eines offenen Endes oder innerhalb eines Kernträgers davon)</translation>
+    </message>
+    <message>
+        <source>These blood-flow figures come from a run that is %1.</source>
+        <translation>Diese Blutflusswerte stammen aus einem Lauf, der %1 ist.</translation>
+    </message>
+    <message>
+        <source> - NOT CONVERGED</source>
+        <translation> - NICHT KONVERGIERT</translation>
+    </message>
+    <message>
+        <source> - STOPPED EARLY</source>
+        <translation> - VORZEITIG BEENDET</translation>
+    </message>
+    <message>
+        <source>Read these figures with care: %1.</source>
+        <translation>Diese Werte mit Vorsicht lesen: %1.</translation>
+    </message>
+    <message>
+        <source>Catheter tip (node, or x,y,z in mm)</source>
+        <translation>Katheterspitze (Knoten oder x,y,z in mm)</translation>
+    </message>
+    <message>
+        <source>Tumour sphere (x, y, z, radius; mm)</source>
+        <translation>Tumorkugel (x, y, z, Radius; mm)</translation>
+    </message>
+    <message>
+        <source>Tumour label</source>
+        <translation>Tumor-Label</translation>
+    </message>
+    <message>
+        <source>Network file</source>
+        <translation>Netzdatei</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Kontrollpunkte</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Distance along the centerline [mm]</source>
+        <translation>Abstand entlang der Mittellinie [mm]</translation>
+    </message>
+    <message>
+        <source>Equivalent diameter [mm]</source>
+        <translation>Äquivalenter Durchmesser [mm]</translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation>Durchmesser</translation>
+    </message>
+    <message>
+        <source>%1: not rendered (3D snapshots need a display; run under xvfb-run).</source>
+        <translation>%1: nicht gerendert (3D-Aufnahmen brauchen eine Anzeige; unter xvfb-run ausführen).</translation>
+    </message>
+    <message>
+        <source>%1: not rendered (%2).</source>
+        <translation>%1: nicht gerendert (%2).</translation>
+    </message>
+    <message>
+        <source>Perfused territory: the run had no liver label (simulate network --liver-label).</source>
+        <translation>Perfundiertes Territorium: der Lauf hatte kein Leber-Label (simulate network --liver-label).</translation>
+    </message>
+    <message>
+        <source>Perfused territory: the run again gave no territory.</source>
+        <translation>Perfundiertes Territorium: die Wiederholung des Laufs ergab kein Territorium.</translation>
+    </message>
+    <message>
+        <source>Perfused territory from the tip on the axial CT slice through the largest lesion (W 400 / L 40 HU; patient right on the left; the workstation&apos;s colours): green perfused liver, blue perfused tumour, red tumour not perfused, yellow margin not perfused, the liver not perfused unmarked (slice z = %1 mm)</source>
+        <translation>Von der Spitze aus perfundiertes Territorium auf der axialen CT-Schicht durch die größte Läsion (W 400 / L 40 HU; Patient rechts im Bild links; Farben der Workstation): grün perfundierte Leber, blau perfundierter Tumor, rot nicht perfundierter Tumor, gelb nicht perfundierter Saum, nicht perfundierte Leber ohne Markierung (Schicht z = %1 mm)</translation>
+    </message>
+    <message>
+        <source>Perfused territory: not drawn (%1).</source>
+        <translation>Perfundiertes Territorium: nicht gezeichnet (%1).</translation>
+    </message>
+    <message>
+        <source>Working angle: none for this run (the tip at the root, or working_angle 0).</source>
+        <translation>Arbeitswinkel: keiner für diesen Lauf (Spitze an der Wurzel oder working_angle 0).</translation>
+    </message>
+    <message>
+        <source>DSA-like view at the working angle (%1, %2 deg; patient supine, the head up): the tree the contrast opacifies, the path to the tip twice as dense (%3 mm pixels)</source>
+        <translation>DSA-ähnliche Ansicht im Arbeitswinkel (%1, %2 Grad; Patient in Rückenlage, Kopf oben): der vom Kontrastmittel dargestellte Gefäßbaum, der Weg zur Spitze doppelt so dicht (%3-mm-Pixel)</translation>
+    </message>
+    <message>
+        <source>cranial</source>
+        <translation>kranial</translation>
+    </message>
+    <message>
+        <source>caudal</source>
+        <translation>kaudal</translation>
+    </message>
+    <message>
+        <source>Diameter along the centerline (the segment of the maximum diameter)</source>
+        <translation>Durchmesser entlang der Mittellinie (das Segment des maximalen Durchmessers)</translation>
+    </message>
+    <message>
+        <source>repair threshold, men: 55 mm</source>
+        <translation>Behandlungsschwelle, Männer: 55 mm</translation>
+    </message>
+    <message>
+        <source>repair threshold, women: 50 mm</source>
+        <translation>Behandlungsschwelle, Frauen: 50 mm</translation>
+    </message>
+    <message>
+        <source>Repair is usually considered from a maximum diameter of 5.5 cm in men and 5.0 cm in women; this one is at or above both repair thresholds.</source>
+        <translation>Eine Behandlung wird üblicherweise ab einem maximalen Durchmesser von 5,5 cm bei Männern und 5,0 cm bei Frauen erwogen; dieser liegt auf oder über beiden Schwellen.</translation>
+    </message>
+    <message>
+        <source>Repair is usually considered from a maximum diameter of 5.5 cm in men and 5.0 cm in women; this one is at or above the threshold for women (5.0 cm), below the one for men (5.5 cm).</source>
+        <translation>Eine Behandlung wird üblicherweise ab einem maximalen Durchmesser von 5,5 cm bei Männern und 5,0 cm bei Frauen erwogen; dieser liegt auf oder über der Schwelle für Frauen (5,0 cm), unter der für Männer (5,5 cm).</translation>
+    </message>
+    <message>
+        <source>Repair is usually considered from a maximum diameter of 5.5 cm in men and 5.0 cm in women; this one is below both repair thresholds.</source>
+        <translation>Eine Behandlung wird üblicherweise ab einem maximalen Durchmesser von 5,5 cm bei Männern und 5,0 cm bei Frauen erwogen; dieser liegt unter beiden Schwellen.</translation>
+    </message>
+    <message>
+        <source>Maximum diameter, outer wall to outer wall (SVS)</source>
+        <translation>Maximaler Durchmesser, Außenwand zu Außenwand (SVS)</translation>
+    </message>
+    <message>
+        <source>Lumen diameter there (equivalent)</source>
+        <translation>Lumendurchmesser dort (äquivalent)</translation>
+    </message>
+    <message>
+        <source>Largest thrombus thickness</source>
+        <translation>Größte Thrombusdicke</translation>
+    </message>
+    <message>
+        <source>Sac volume</source>
+        <translation>Volumen des Aneurysmasacks</translation>
+    </message>
+    <message>
+        <source>Sac length</source>
+        <translation>Länge des Aneurysmasacks</translation>
+    </message>
+    <message>
+        <source>Neck diameter (outer, at the lowest renal artery)</source>
+        <translation>Halsdurchmesser (außen, an der untersten Nierenarterie)</translation>
+    </message>
+    <message>
+        <source>Neck length</source>
+        <translation>Halslänge</translation>
+    </message>
+    <message>
+        <source>Neck angulation</source>
+        <translation>Halsangulation</translation>
+    </message>
+    <message>
+        <source>Right common iliac diameter (outer)</source>
+        <translation>Durchmesser der rechten A. iliaca communis (außen)</translation>
+    </message>
+    <message>
+        <source>Left common iliac diameter (outer)</source>
+        <translation>Durchmesser der linken A. iliaca communis (außen)</translation>
+    </message>
+    <message>
+        <source>Wall thickness (assumed, not measured)</source>
+        <translation>Wanddicke (angenommen, nicht gemessen)</translation>
+    </message>
+    <message>
+        <source>The aneurysm sac (%1)</source>
+        <translation>Der Aneurysmasack (%1)</translation>
+    </message>
+    <message>
+        <source>Definitions.</source>
+        <translation>Definitionen.</translation>
+    </message>
+    <message>
+        <source>%1: %2.</source>
+        <translation>%1: %2.</translation>
+    </message>
+    <message>
+        <source>AAA rupture-risk review</source>
+        <translation>AAA-Rupturrisiko-Beurteilung</translation>
+    </message>
+    <message>
+        <source>The contrast lumen (cross-sections perpendicular to the centerline)</source>
+        <translation>Das kontrastierte Lumen (Querschnitte senkrecht zur Mittellinie)</translation>
+    </message>
+    <message>
+        <source>Maximum lumen diameter (equivalent)</source>
+        <translation>Maximaler Lumendurchmesser (äquivalent)</translation>
+    </message>
+    <message>
+        <source>Largest lumen caliper width</source>
+        <translation>Größte Lumen-Caliperweite</translation>
+    </message>
+    <message>
+        <source>These are lumen diameters; guidelines measure the aneurysm outer wall to outer wall with the thrombus (vascusim-cli sac). Against the lumen: %1</source>
+        <translation>Dies sind Lumendurchmesser; Leitlinien messen das Aneurysma von Außenwand zu Außenwand einschließlich Thrombus (vascusim-cli sac). Bezogen auf das Lumen: %1</translation>
+    </message>
+    <message>
+        <source>No centerlines and no sac: the maximum diameter was not measured.</source>
+        <translation>Keine Mittellinien und kein Aneurysmasack: der maximale Durchmesser wurde nicht gemessen.</translation>
+    </message>
+    <message>
+        <source>Wall stress at blood pressure (physiological protocol)</source>
+        <translation>Wandspannung unter Blutdruck (physiologisches Protokoll)</translation>
+    </message>
+    <message>
+        <source>Target blood pressure on the lumen</source>
+        <translation>Ziel-Blutdruck auf dem Lumen</translation>
+    </message>
+    <message>
+        <source>Pressure reached (the figures below are at this pressure)</source>
+        <translation>Erreichter Druck (die folgenden Werte gelten bei diesem Druck)</translation>
+    </message>
+    <message>
+        <source>Peak wall stress in the sac (von Mises, 99th percentile of its elements)</source>
+        <translation>Maximale Wandspannung im Aneurysmasack (von Mises, 99. Perzentil seiner Elemente)</translation>
+    </message>
+    <message>
+        <source>Peak wall stress in the sac (von Mises, largest nodal value)</source>
+        <translation>Maximale Wandspannung im Aneurysmasack (von Mises, größter Knotenwert)</translation>
+    </message>
+    <message>
+        <source>  its place: along the centerline below the lowest renal artery</source>
+        <translation>  Ort: entlang der Mittellinie unterhalb der untersten Nierenarterie</translation>
+    </message>
+    <message>
+        <source>  its clock position (seen from the feet; 12 anterior, 3 patient&apos;s left)</source>
+        <translation>  Uhrzeigerposition (von den Füßen gesehen; 12 anterior, 3 links des Patienten)</translation>
+    </message>
+    <message>
+        <source>Peak wall rupture index in the sac (stress / strength, 99th percentile)</source>
+        <translation>Maximaler Wandrupturindex im Aneurysmasack (Spannung / Festigkeit, 99. Perzentil)</translation>
+    </message>
+    <message>
+        <source>Peak wall rupture index in the sac (largest nodal value)</source>
+        <translation>Maximaler Wandrupturindex im Aneurysmasack (größter Knotenwert)</translation>
+    </message>
+    <message>
+        <source>  its clock position</source>
+        <translation>  Uhrzeigerposition</translation>
+    </message>
+    <message>
+        <source>Highest element stress on the whole wall (von Mises; a branch ostium or the iliac crotch may set it)</source>
+        <translation>Höchste Elementspannung auf der gesamten Wand (von Mises; ein Abgangsostium oder die Iliakalgabel kann sie bestimmen)</translation>
+    </message>
+    <message>
+        <source>Highest element stress on the whole wall (von Mises)</source>
+        <translation>Höchste Elementspannung auf der gesamten Wand (von Mises)</translation>
+    </message>
+    <message>
+        <source>  at x (patient LPS)</source>
+        <translation>  bei x (Patienten-LPS)</translation>
+    </message>
+    <message>
+        <source>  at y</source>
+        <translation>  bei y</translation>
+    </message>
+    <message>
+        <source>  at z</source>
+        <translation>  bei z</translation>
+    </message>
+    <message>
+        <source>Highest largest principal stress on the whole wall</source>
+        <translation>Höchste größte Hauptspannung auf der gesamten Wand</translation>
+    </message>
+    <message>
+        <source>Largest wall displacement</source>
+        <translation>Größte Wandverschiebung</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>nicht angegeben</translation>
+    </message>
+    <message>
+        <source> (the sac&apos;s neck outer diameter, or 20 mm without a sac)</source>
+        <translation> (Außendurchmesser des Aneurysmahalses, ohne Aneurysmasack 20 mm)</translation>
+    </message>
+    <message>
+        <source>the sac&apos;s neck outer diameter (20 mm without a sac)</source>
+        <translation>der Außendurchmesser des Aneurysmahalses (ohne Aneurysmasack 20 mm)</translation>
+    </message>
+    <message>
+        <source>inside the sac the thrombus crossed along each element&apos;s radius from the centerline and the outer wall-to-wall chord through the centerline there (the sac&apos;s labels), elsewhere the centerline diameter and a thrombus of %1 mm</source>
+        <translation>im Aneurysmasack der Thrombus entlang des Radius jedes Elements von der Mittellinie aus und die Außenwand-zu-Außenwand-Sehne durch die Mittellinie dort (die Labels des Aneurysmasacks), andernorts der Mittellinien-Durchmesser und ein Thrombus von %1 mm</translation>
+    </message>
+    <message>
+        <source>thrombus %1 mm (assumed), the centerline diameter</source>
+        <translation>Thrombus %1 mm (angenommen), der Mittellinien-Durchmesser</translation>
+    </message>
+    <message>
+        <source>Sex and family history were not both given, so no rupture index is reported (neither is assumed).</source>
+        <translation>Geschlecht und Familienanamnese wurden nicht beide angegeben, daher wird kein Rupturindex berichtet (keines von beiden wird angenommen).</translation>
+    </message>
+    <message>
+        <source>A rupture index of 1 means the stress reaches the estimated strength; it is given inside the aneurysm sac only (the regression was fitted to sacs).</source>
+        <translation>Ein Rupturindex von 1 bedeutet, dass die Spannung die geschätzte Festigkeit erreicht; er wird nur innerhalb des Aneurysmasacks angegeben (die Regression wurde an Aneurysmasäcken angepasst).</translation>
+    </message>
+    <message>
+        <source>No sac was measured (vascusim-cli sac), so no rupture index is given: the regression holds for the aneurysm sac only.</source>
+        <translation>Es wurde kein Aneurysmasack gemessen (vascusim-cli sac), daher wird kein Rupturindex angegeben: die Regression gilt nur für den Aneurysmasack.</translation>
+    </message>
+    <message>
+        <source>Strength model: Vande Geest et al. 2006 (wall strength from the local thrombus thickness, the local diameter over the non-aneurysmal reference, family history and sex), with %1; reference diameter %2, sex %3, family history of AAA %4. %5</source>
+        <translation>Festigkeitsmodell: Vande Geest et al. 2006 (Wandfestigkeit aus lokaler Thrombusdicke, lokalem Durchmesser bezogen auf die nicht-aneurysmatische Referenz, Familienanamnese und Geschlecht), mit %1; Referenzdurchmesser %2, Geschlecht %3, AAA in der Familienanamnese %4. %5</translation>
+    </message>
+    <message>
+        <source>female</source>
+        <translation>weiblich</translation>
+    </message>
+    <message>
+        <source>male</source>
+        <translation>männlich</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>Wall stress (von Mises, kPa; the elements&apos; values averaged to the surface points) at blood pressure, seen from the front; PWS and PWRI mark the sac&apos;s nodal maxima (clock position seen from the feet, 12 h anterior)</source>
+        <translation>Wandspannung (von Mises, kPa; die Elementwerte auf die Oberflächenpunkte gemittelt) unter Blutdruck, Ansicht von vorn; PWS und PWRI markieren die Knotenmaxima des Aneurysmasacks (Uhrzeigerposition von den Füßen gesehen, 12 Uhr anterior)</translation>
+    </message>
+    <message>
+        <source>von Mises [kPa]</source>
+        <translation>von Mises [kPa]</translation>
+    </message>
+    <message>
+        <source>The physiological wall-stress run was not made for this study.</source>
+        <translation>Der physiologische Wandspannungslauf wurde für diese Studie nicht durchgeführt.</translation>
+    </message>
+    <message>
+        <source>Tearing (thesis protocol: pressure ramp on the middle of the vessel)</source>
+        <translation>Einreißen (Protokoll der Dissertation: Druckrampe auf die Gefäßmitte)</translation>
+    </message>
+    <message>
+        <source>Pressure at the first tear (-1: none)</source>
+        <translation>Druck beim ersten Riss (-1: keiner)</translation>
+    </message>
+    <message>
+        <source>Torn elements</source>
+        <translation>Gerissene Elemente</translation>
+    </message>
+    <message>
+        <source>Fracture entropy</source>
+        <translation>Bruchentropie</translation>
+    </message>
+    <message>
+        <source>Pressure at the end of the run</source>
+        <translation>Druck am Ende des Laufs</translation>
+    </message>
+    <message>
+        <source>Research protocol: the thesis&apos;s ramp pressures (by default 8-12 MPa, about 600 times systolic) are not physiological, and its tear strength is no measured wall strength; these figures reproduce the thesis&apos;s experiment and say nothing about this patient&apos;s rupture risk.</source>
+        <translation>Forschungsprotokoll: die Rampendrücke der Dissertation (standardmäßig 8-12 MPa, etwa das 600-Fache des systolischen Drucks) sind nicht physiologisch, und ihre Reißfestigkeit ist keine gemessene Wandfestigkeit; diese Werte reproduzieren das Experiment der Dissertation und sagen nichts über das Rupturrisiko dieses Patienten aus.</translation>
+    </message>
+    <message>
+        <source>Tearing was quasi-static: the wall in equilibrium at each pressure, the onset bracketed by bisection to 0.5 %, one element released per equilibrium.</source>
+        <translation>Das Einreißen war quasistatisch: die Wand bei jedem Druck im Gleichgewicht, der Beginn durch Bisektion auf 0,5 % eingegrenzt, ein Element je Gleichgewicht freigegeben.</translation>
+    </message>
+    <message>
+        <source>Tearing followed the thesis&apos;s damped ramp: the wall lags the load, so the onset pressure depends on the ramp&apos;s rate.</source>
+        <translation>Das Einreißen folgte der gedämpften Rampe der Dissertation: die Wand folgt der Last verzögert, daher hängt der Einrissdruck von der Rampengeschwindigkeit ab.</translation>
+    </message>
+    <message>
+        <source>The thesis tearing protocol was not run for this study.</source>
+        <translation>Das Einreißprotokoll der Dissertation wurde für diese Studie nicht ausgeführt.</translation>
+    </message>
+    <message>
+        <source>VascuSim planning report</source>
+        <translation>VascuSim-Planungsbericht</translation>
+    </message>
+    <message>
+        <source>AAA rupture-risk review: the study has no AAA sac (vascusim-cli sac) and no wall-mechanics run (simulate fem).</source>
+        <translation>AAA-Rupturrisiko-Beurteilung: die Studie hat keinen AAA-Sack (vascusim-cli sac) und keinen Wandmechaniklauf (simulate fem).</translation>
+    </message>
+    <message>
+        <source>Stenosis / blockage: no segment of the centerlines narrows by 40 % or more, and the study has no blood-flow run (velocity ratios, pressure drop).</source>
+        <translation>Stenose / Verschluss: kein Segment der Mittellinien verengt sich um 40 % oder mehr, und die Studie hat keinen Blutflusslauf (Geschwindigkeitsverhältnisse, Druckabfall).</translation>
+    </message>
+    <message>
+        <source>Chemoembolization: the study has no drug-delivery run (simulate network).</source>
+        <translation>Chemoembolisation: die Studie hat keinen Lauf zur Wirkstoffgabe (simulate network).</translation>
+    </message>
+    <message>
+        <source>Surgical smoke: the study has no smoke run (the smoke solver is not part of this version).</source>
+        <translation>Chirurgischer Rauch: die Studie hat keinen Rauchlauf (der Rauchlöser ist nicht Teil dieser Version).</translation>
+    </message>
+    <message>
+        <source> (posterior)</source>
+        <translation> (posterior)</translation>
+    </message>
+</context>
+<context>
     <name>vsim::Parameters</name>
     <message>
         <source>Layer 1: window and region growing</source>
@@ -1321,6 +2484,88 @@
     <message>
         <source>a run that has not reached its end after this many steps stops with a message (a collapsing time step)</source>
         <translation>ein Lauf, der nach so vielen Schritten sein Ende nicht erreicht hat, hält mit einer Meldung an (ein kollabierender Zeitschritt)</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::RunStatus</name>
+    <message>
+        <source>force residual %1 (tolerance %2)</source>
+        <translation>Kraftresiduum %1 (Toleranz %2)</translation>
+    </message>
+    <message>
+        <source>converged</source>
+        <translation>konvergiert</translation>
+    </message>
+    <message>
+        <source>converged, %1</source>
+        <translation>konvergiert, %1</translation>
+    </message>
+    <message>
+        <source>%1 of %2 solves ended above their tolerance</source>
+        <translation>%1 von %2 Lösungen endeten über ihrer Toleranz</translation>
+    </message>
+    <message>
+        <source> at the %1-iteration cap</source>
+        <translation> an der Grenze von %1 Iterationen</translation>
+    </message>
+    <message>
+        <source>, worst relative residual %1 (tolerance %2)</source>
+        <translation>, schlechtestes relatives Residuum %1 (Toleranz %2)</translation>
+    </message>
+    <message>
+        <source>not converged: %1</source>
+        <translation>nicht konvergiert: %1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>stopped by a guard</source>
+        <translation>von einer Schutzprüfung gestoppt</translation>
+    </message>
+    <message>
+        <source>stopped by its end condition</source>
+        <translation>durch seine Endbedingung beendet</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source> at %1 %2 of %3 %4</source>
+        <translation> bei %1 %2 von %3 %4</translation>
+    </message>
+    <message>
+        <source>NOT CONVERGED (%1)</source>
+        <translation>NICHT KONVERGIERT (%1)</translation>
+    </message>
+    <message>
+        <source>STOPPED EARLY (%1)</source>
+        <translation>VORZEITIG BEENDET (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::ViewMeasurement</name>
+    <message>
+        <source>mean %1 HU, SD %2 HU, area %3 mm2</source>
+        <translation>Mittel %1 HU, SD %2 HU, Fläche %3 mm2</translation>
+    </message>
+    <message>
+        <source>straight distance between the two points in the patient frame (mm)</source>
+        <translation>gerader Abstand zwischen den beiden Punkten im Patientenkoordinatensystem (mm)</translation>
+    </message>
+    <message>
+        <source>angle at the middle point between the two arms (degrees)</source>
+        <translation>Winkel am mittleren Punkt zwischen den beiden Schenkeln (Grad)</translation>
+    </message>
+    <message>
+        <source>CT values (HU) of the voxels nearest the in-plane samples inside the ellipse, one sample per finest voxel spacing squared: mean and sample standard deviation; area of the ellipse, pi a b (mm2)</source>
+        <translation>CT-Werte (HU) der Voxel, die den Stichproben in der Ebene innerhalb der Ellipse am nächsten liegen, eine Stichprobe je Quadrat des feinsten Voxelabstands: Mittelwert und Stichproben-Standardabweichung; Fläche der Ellipse, pi a b (mm2)</translation>
     </message>
 </context>
 <context>
@@ -3517,6 +4762,65 @@ Lumen %2 mm (Kreis: %3)</translation>
         <source>Segment</source>
         <comment>verb: segment the vessels</comment>
         <translation>Segmentieren</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::imaging::AneurysmSac</name>
+    <message>
+        <source>largest outer-wall to outer-wall caliper perpendicular to the centerline of the outer contour, thrombus and wall included (SVS 2018)</source>
+        <translation>größte Caliperweite von Außenwand zu Außenwand senkrecht zur Mittellinie der Außenkontur, Thrombus und Wand eingeschlossen (SVS 2018)</translation>
+    </message>
+    <message>
+        <source>patient position (LPS) of the centre of that cross-section</source>
+        <translation>Patientenposition (LPS) des Mittelpunkts dieses Querschnitts</translation>
+    </message>
+    <message>
+        <source>equivalent diameter of the contrast lumen&apos;s perpendicular cross-section there</source>
+        <translation>äquivalenter Durchmesser des senkrechten Querschnitts des kontrastierten Lumens dort</translation>
+    </message>
+    <message>
+        <source>outer diameter perpendicular to the centerline at the origin of the lowest renal artery (the median 3 to 8 mm below it, clear of the branch; without the renal arteries in the label: the narrowest within 80 mm above the widest section)</source>
+        <translation>Außendurchmesser senkrecht zur Mittellinie am Abgang der untersten Nierenarterie (der Median 3 bis 8 mm darunter, abseits des Abgangs; ohne Nierenarterien im Label: der engste innerhalb von 80 mm oberhalb des weitesten Querschnitts)</translation>
+    </message>
+    <message>
+        <source>centerline length from the lowest renal artery&apos;s origin to the start of the sac</source>
+        <translation>Mittellinienlänge vom Abgang der untersten Nierenarterie bis zum Beginn des Aneurysmasacks</translation>
+    </message>
+    <message>
+        <source>angle between the neck axis (lowest renal artery to the sac&apos;s start) and the sac axis (the sac&apos;s start to its end)</source>
+        <translation>Winkel zwischen der Halsachse (unterste Nierenarterie bis Beginn des Aneurysmasacks) und der Sackachse (Beginn bis Ende des Aneurysmasacks)</translation>
+    </message>
+    <message>
+        <source>patient position (LPS z) of the lowest renal artery&apos;s origin</source>
+        <translation>Patientenposition (LPS z) des Abgangs der untersten Nierenarterie</translation>
+    </message>
+    <message>
+        <source>outer diameter of the left common iliac artery perpendicular to its centerline: the median 10 to 40 mm below the crotch</source>
+        <translation>Außendurchmesser der linken A. iliaca communis senkrecht zu ihrer Mittellinie: der Median 10 bis 40 mm unterhalb der Gabelung</translation>
+    </message>
+    <message>
+        <source>outer diameter of the right common iliac artery perpendicular to its centerline: the median 10 to 40 mm below the crotch</source>
+        <translation>Außendurchmesser der rechten A. iliaca communis senkrecht zu ihrer Mittellinie: der Median 10 bis 40 mm unterhalb der Gabelung</translation>
+    </message>
+    <message>
+        <source>1.5 x the neck diameter (30 mm without a neck)</source>
+        <translation>1,5 x Halsdurchmesser (ohne Hals 30 mm)</translation>
+    </message>
+    <message>
+        <source>assumed, not measured: the wall is that shell inside the outer contour</source>
+        <translation>angenommen, nicht gemessen: die Wand ist diese Schale innerhalb der Außenkontur</translation>
+    </message>
+    <message>
+        <source>volume inside the outer contour between the perpendicular planes at the sac&apos;s ends</source>
+        <translation>Volumen innerhalb der Außenkontur zwischen den senkrechten Ebenen an den Enden des Aneurysmasacks</translation>
+    </message>
+    <message>
+        <source>centerline length of the sac (outer diameter over the threshold, contiguous)</source>
+        <translation>Mittellinienlänge des Aneurysmasacks (Außendurchmesser über der Schwelle, zusammenhängend)</translation>
+    </message>
+    <message>
+        <source>largest distance from the lumen to the wall&apos;s inner surface along the rays of an axial section, within the sac</source>
+        <translation>größter Abstand vom Lumen zur Innenfläche der Wand entlang der Strahlen eines axialen Querschnitts, innerhalb des Aneurysmasacks</translation>
     </message>
 </context>
 <context>

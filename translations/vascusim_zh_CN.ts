@@ -37,6 +37,1169 @@
     </message>
 </context>
 <context>
+    <name>Report</name>
+    <message>
+        <source>(not recorded)</source>
+        <translation>（未记录）</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>患者</translation>
+    </message>
+    <message>
+        <source>anonymized</source>
+        <translation>已匿名</translation>
+    </message>
+    <message>
+        <source>Patient ID</source>
+        <translation>患者 ID</translation>
+    </message>
+    <message>
+        <source>Birth date</source>
+        <translation>出生日期</translation>
+    </message>
+    <message>
+        <source>Institution</source>
+        <translation>机构</translation>
+    </message>
+    <message>
+        <source>Study date</source>
+        <translation>检查日期</translation>
+    </message>
+    <message>
+        <source>Study</source>
+        <translation>检查</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>序列</translation>
+    </message>
+    <message>
+        <source>Software</source>
+        <translation>软件</translation>
+    </message>
+    <message>
+        <source>Report date</source>
+        <translation>报告日期</translation>
+    </message>
+    <message>
+        <source>Analyses not run</source>
+        <translation>未进行的分析</translation>
+    </message>
+    <message>
+        <source>planning support, needs clinical judgement</source>
+        <translation>规划辅助，需结合临床判断</translation>
+    </message>
+    <message>
+        <source>page %1</source>
+        <translation>第 %1 页</translation>
+    </message>
+    <message>
+        <source>Metric</source>
+        <translation>指标</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Results are computed from the patient&apos;s images by physical models for planning support only. They are not a diagnosis and need clinical judgement.</source>
+        <translation>结果由物理模型根据患者影像计算，仅供规划参考。它们不构成诊断，需结合临床判断。</translation>
+    </message>
+    <message>
+        <source>Measurements marked for the report on the workstation. Points in the patient frame (LPS, mm).</source>
+        <translation>在工作站上标记为纳入报告的测量。点位于患者坐标系（LPS，mm）。</translation>
+    </message>
+    <message>
+        <source>Measurement</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Definition</source>
+        <translation>定义</translation>
+    </message>
+    <message>
+        <source>Points [mm]</source>
+        <translation>点 [mm]</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>Filling of the tree downstream of the tip</source>
+        <translation>导管尖端下游血管树的充盈</translation>
+    </message>
+    <message>
+        <source>Time from the start of the injection [s]</source>
+        <translation>自注射开始的时间 [s]</translation>
+    </message>
+    <message>
+        <source>Volume filled by the drug [%]</source>
+        <translation>药物充盈的容积 [%]</translation>
+    </message>
+    <message>
+        <source>filled</source>
+        <translation>已充盈</translation>
+    </message>
+    <message>
+        <source>Drug flow per branch (segments downstream of the tip, largest flow first)</source>
+        <translation>各分支的药物流量（尖端下游的血管段，流量从大到小）</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>血管段</translation>
+    </message>
+    <message>
+        <source>Nodes</source>
+        <translation>节点</translation>
+    </message>
+    <message>
+        <source>Radius [mm]</source>
+        <translation>半径 [mm]</translation>
+    </message>
+    <message>
+        <source>Length [mm]</source>
+        <translation>长度 [mm]</translation>
+    </message>
+    <message>
+        <source>Drug flow [ml/min]</source>
+        <translation>药物流量 [ml/min]</translation>
+    </message>
+    <message>
+        <source>Share [%]</source>
+        <translation>占比 [%]</translation>
+    </message>
+    <message>
+        <source>Filled after [s]</source>
+        <translation>充盈时间 [s]</translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation>从未</translation>
+    </message>
+    <message>
+        <source>%1 more</source>
+        <translation>另有 %1 个</translation>
+    </message>
+    <message>
+        <source>Chemoembolization: drug delivery through the hepatic arteries</source>
+        <translation>化疗栓塞：经肝动脉的药物输送</translation>
+    </message>
+    <message>
+        <source>sphere x,y,z,radius %1 mm</source>
+        <translation>球体 x,y,z,半径 %1 mm</translation>
+    </message>
+    <message>
+        <source>label %1</source>
+        <translation>标签 %1</translation>
+    </message>
+    <message>
+        <source>none given</source>
+        <translation>未给出</translation>
+    </message>
+    <message>
+        <source>Catheter tip: %1 (a node of the network, or a point x,y,z in mm, patient LPS). Tumour: %2. Blood enters at: %3.</source>
+        <translation>导管尖端：%1（网络中的一个节点，或以 mm 表示的点 x,y,z，患者 LPS）。肿瘤：%2。血流入口：%3。</translation>
+    </message>
+    <message>
+        <source>the root of the tree</source>
+        <translation>血管树的根部</translation>
+    </message>
+    <message>
+        <source>the tree&apos;s largest end</source>
+        <translation>血管树最粗的末端</translation>
+    </message>
+    <message>
+        <source>Feeders added by hand: segments %1.</source>
+        <translation>手动添加的供血血管：血管段 %1。</translation>
+    </message>
+    <message>
+        <source>Feeders removed by hand: segments %1.</source>
+        <translation>手动移除的供血血管：血管段 %1。</translation>
+    </message>
+    <message>
+        <source>Injection and filling</source>
+        <translation>注射与充盈</translation>
+    </message>
+    <message>
+        <source>Injected mixture</source>
+        <translation>注入的混合物</translation>
+    </message>
+    <message>
+        <source>Injected mass</source>
+        <translation>注入的质量</translation>
+    </message>
+    <message>
+        <source>Gas void fraction</source>
+        <translation>气体体积分数</translation>
+    </message>
+    <message>
+        <source>Mixture density</source>
+        <translation>混合物密度</translation>
+    </message>
+    <message>
+        <source>Mixture viscosity</source>
+        <translation>混合物黏度</translation>
+    </message>
+    <message>
+        <source>Pressure at the tip</source>
+        <translation>尖端处压力</translation>
+    </message>
+    <message>
+        <source>First outlet reached after</source>
+        <translation>到达首个出口的时间</translation>
+    </message>
+    <message>
+        <source>Last outlet reached after</source>
+        <translation>到达最后一个出口的时间</translation>
+    </message>
+    <message>
+        <source>Outlets downstream of the tip</source>
+        <translation>尖端下游的出口数</translation>
+    </message>
+    <message>
+        <source>Largest Reynolds number</source>
+        <translation>最大雷诺数</translation>
+    </message>
+    <message>
+        <source>Blood flow and the catheter (time-averaged, Newtonian blood)</source>
+        <translation>血流与导管（时间平均，牛顿流体血液）</translation>
+    </message>
+    <message>
+        <source>Arterial inflow at the tree&apos;s root</source>
+        <translation>血管树根部的动脉流入量</translation>
+    </message>
+    <message>
+        <source>Mean pressure at the root</source>
+        <translation>根部平均压力</translation>
+    </message>
+    <message>
+        <source>Vessel&apos;s own flow at the tip (catheter in, no injection)</source>
+        <translation>尖端处血管自身流量（导管在位，无注射）</translation>
+    </message>
+    <message>
+        <source>Blood reaching the tip during the injection</source>
+        <translation>注射期间到达尖端的血流</translation>
+    </message>
+    <message>
+        <source>Injected mixture in the flow below the tip (volume)</source>
+        <translation>尖端下游血流中注入混合物的比例（体积）</translation>
+    </message>
+    <message>
+        <source>Drug (liquid phase) in the flow below the tip (volume)</source>
+        <translation>尖端下游血流中药物（液相）的比例（体积）</translation>
+    </message>
+    <message>
+        <source>Catheter&apos;s share of the lumen at the tip (area)</source>
+        <translation>尖端处导管占管腔的比例（面积）</translation>
+    </message>
+    <message>
+        <source>Wedged catheter (1: yes)</source>
+        <translation>导管楔入（1：是）</translation>
+    </message>
+    <message>
+        <source>Drug refluxing past the tip</source>
+        <translation>越过尖端反流的药物</translation>
+    </message>
+    <message>
+        <source>Fixed-point iterations (fractions and viscosities)</source>
+        <translation>不动点迭代次数（分数与黏度）</translation>
+    </message>
+    <message>
+        <source>Perfusion territory and tumour coverage (TACE grading: A lesion and margin, B lesion only, C lesion partly; margin 5 mm under 25 mm, else 10 mm)</source>
+        <translation>灌注区域与肿瘤覆盖（TACE 分级：A 病灶及边缘，B 仅病灶，C 部分病灶；病灶小于 25 mm 时边缘 5 mm，否则 10 mm）</translation>
+    </message>
+    <message>
+        <source>Liver (label)</source>
+        <translation>肝脏（标签）</translation>
+    </message>
+    <message>
+        <source>Perfused territory from the tip</source>
+        <translation>自尖端灌注的区域</translation>
+    </message>
+    <message>
+        <source>Tumour in the territory</source>
+        <translation>区域内的肿瘤</translation>
+    </message>
+    <message>
+        <source>Non-tumour liver in the territory</source>
+        <translation>区域内的非肿瘤肝组织</translation>
+    </message>
+    <message>
+        <source>Coverage grade (1 A, 2 B, 3 C)</source>
+        <translation>覆盖等级（1 A，2 B，3 C）</translation>
+    </message>
+    <message>
+        <source>Lesion 1: longest diameter</source>
+        <translation>病灶 1：最长径</translation>
+    </message>
+    <message>
+        <source>Lesion 1: margin</source>
+        <translation>病灶 1：边缘</translation>
+    </message>
+    <message>
+        <source>Lesion 1: covered</source>
+        <translation>病灶 1：覆盖比例</translation>
+    </message>
+    <message>
+        <source>Lesion 1: margin covered</source>
+        <translation>病灶 1：边缘覆盖比例</translation>
+    </message>
+    <message>
+        <source>Feeders (found: entering lesion + margin, or feeding 1 % of it; with the user&apos;s edits)</source>
+        <translation>供血血管（检出：进入病灶及边缘，或供应其 1 %；含用户的修改）</translation>
+    </message>
+    <message>
+        <source>Feeders added by hand</source>
+        <translation>手动添加的供血血管</translation>
+    </message>
+    <message>
+        <source>Feeders found and removed by hand</source>
+        <translation>检出后手动移除的供血血管</translation>
+    </message>
+    <message>
+        <source>Feeders the drug from the tip reaches</source>
+        <translation>药物自尖端可到达的供血血管</translation>
+    </message>
+    <message>
+        <source>Drug to non-tumour liver</source>
+        <translation>进入非肿瘤肝组织的药物</translation>
+    </message>
+    <message>
+        <source>Drug leaving the liver (extrahepatic outlets)</source>
+        <translation>离开肝脏的药物（肝外出口）</translation>
+    </message>
+    <message>
+        <source>Best tip position&apos;s grade (1 A, 2 B, 3 C)</source>
+        <translation>最佳尖端位置的等级（1 A，2 B，3 C）</translation>
+    </message>
+    <message>
+        <source>Best tip position&apos;s non-tumour liver</source>
+        <translation>最佳尖端位置的非肿瘤肝组织</translation>
+    </message>
+    <message>
+        <source>Working C-arm angle for the path to the tip (patient supine; + LAO / - RAO, + cranial / - caudal; within LAO/RAO 60 and cranial/caudal 40 degrees)</source>
+        <translation>到达尖端路径的 C 臂工作角度（患者仰卧；+ LAO / - RAO，+ 头位 / - 足位；LAO/RAO 60 度、头位/足位 40 度以内）</translation>
+    </message>
+    <message>
+        <source>Path from node (the common hepatic artery&apos;s upper end when named, else the root)</source>
+        <translation>路径起始节点（已命名时为肝总动脉上端，否则为根部）</translation>
+    </message>
+    <message>
+        <source>LAO (+) / RAO (-)</source>
+        <translation>LAO (+) / RAO (-)</translation>
+    </message>
+    <message>
+        <source>Cranial (+) / caudal (-)</source>
+        <translation>头位 (+) / 足位 (-)</translation>
+    </message>
+    <message>
+        <source>Path foreshortened at the working angle</source>
+        <translation>工作角度下路径的缩短</translation>
+    </message>
+    <message>
+        <source>Path overlapped by other vessels at the working angle</source>
+        <translation>工作角度下路径被其他血管重叠</translation>
+    </message>
+    <message>
+        <source>Path foreshortened from the front (AP)</source>
+        <translation>正位（AP）下路径的缩短</translation>
+    </message>
+    <message>
+        <source>Path overlapped from the front (AP)</source>
+        <translation>正位（AP）下路径的重叠</translation>
+    </message>
+    <message>
+        <source>Targeting</source>
+        <translation>靶向</translation>
+    </message>
+    <message>
+        <source>Drug reaching the tumour</source>
+        <translation>到达肿瘤的药物</translation>
+    </message>
+    <message>
+        <source>Drug reaching non-target liver</source>
+        <translation>到达非靶肝组织的药物</translation>
+    </message>
+    <message>
+        <source>Outlets feeding the tumour</source>
+        <translation>供应肿瘤的出口</translation>
+    </message>
+    <message>
+        <source>Tumour share at the best tip position</source>
+        <translation>最佳尖端位置的肿瘤份额</translation>
+    </message>
+    <message>
+        <source>Candidate catheter tip positions, ranked by coverage grade, then the lesions&apos; share perfused, then the least non-tumour liver perfused</source>
+        <translation>候选导管尖端位置，依次按覆盖等级、病灶灌注比例、非肿瘤肝组织灌注最少排序</translation>
+    </message>
+    <message>
+        <source>Candidate catheter tip positions, ranked by the drug share reaching the tumour</source>
+        <translation>候选导管尖端位置，按到达肿瘤的药物份额排序</translation>
+    </message>
+    <message>
+        <source>Rank</source>
+        <translation>排名</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>节点</translation>
+    </message>
+    <message>
+        <source>Position x, y, z [mm]</source>
+        <translation>位置 x, y, z [mm]</translation>
+    </message>
+    <message>
+        <source>Tumour share [%]</source>
+        <translation>肿瘤份额 [%]</translation>
+    </message>
+    <message>
+        <source>Depth [segments]</source>
+        <translation>深度 [血管段]</translation>
+    </message>
+    <message>
+        <source>Grade</source>
+        <translation>等级</translation>
+    </message>
+    <message>
+        <source>Lesions perfused [%]</source>
+        <translation>病灶灌注 [%]</translation>
+    </message>
+    <message>
+        <source>Non-tumour liver [ml]</source>
+        <translation>非肿瘤肝组织 [ml]</translation>
+    </message>
+    <message>
+        <source>Two-phase drug against a pure liquid at the control points</source>
+        <translation>控制点处两相药物与纯液体的比较</translation>
+    </message>
+    <message>
+        <source>A: drug flow, two-phase</source>
+        <translation>A：药物流量，两相</translation>
+    </message>
+    <message>
+        <source>A: drug flow, pure liquid</source>
+        <translation>A：药物流量，纯液体</translation>
+    </message>
+    <message>
+        <source>A: two-phase lower by (same injected rate)</source>
+        <translation>A：两相较低的幅度（相同注射速率）</translation>
+    </message>
+    <message>
+        <source>A: two-phase lower by (same tip pressure)</source>
+        <translation>A：两相较低的幅度（相同尖端压力）</translation>
+    </message>
+    <message>
+        <source>A: whole flow, two-phase against liquid (split shift)</source>
+        <translation>A：总流量，两相与液体比较（分流偏移）</translation>
+    </message>
+    <message>
+        <source>B: drug flow, two-phase</source>
+        <translation>B：药物流量，两相</translation>
+    </message>
+    <message>
+        <source>B: drug flow, pure liquid</source>
+        <translation>B：药物流量，纯液体</translation>
+    </message>
+    <message>
+        <source>B: two-phase lower by (same injected rate)</source>
+        <translation>B：两相较低的幅度（相同注射速率）</translation>
+    </message>
+    <message>
+        <source>B: two-phase lower by (same tip pressure)</source>
+        <translation>B：两相较低的幅度（相同尖端压力）</translation>
+    </message>
+    <message>
+        <source>B: whole flow, two-phase against liquid (split shift)</source>
+        <translation>B：总流量，两相与液体比较（分流偏移）</translation>
+    </message>
+    <message>
+        <source>The drug flow is the liquid phase&apos;s volume flow, (1 - v) c Q, with v the void fraction and c the injected mixture&apos;s share of the flow (1 when the drug flows alone); the pure liquid is the same injection with v = 0 (thesis ch. 6.4). Its drop is close to v by that definition. The split shift is the change of the whole flow: what the mixture&apos;s other viscosity does to the split.</source>
+        <translation>药物流量为液相的体积流量 (1 - v) c Q，其中 v 为气体体积分数，c 为注入混合物在流量中的份额（药物单独流动时为 1）；纯液体即 v = 0 的同一注射（论文第 6.4 章）。按此定义，其下降幅度接近 v。分流偏移是总流量的变化：即混合物不同的黏度对分流的影响。</translation>
+    </message>
+    <message>
+        <source>The tree coloured by drug flow (ml/min; grey: no drug), seen from the front</source>
+        <translation>按药物流量着色的血管树（ml/min；灰色：无药物），正面观</translation>
+    </message>
+    <message>
+        <source>drug flow [ml/min]</source>
+        <translation>药物流量 [ml/min]</translation>
+    </message>
+    <message>
+        <source>Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; the static equilibrium by Newton&apos;s method (sparse LU) to the force tolerance. The imaged geometry is taken as unloaded (CT shows the vessel at its pressure); the intraluminal thrombus, where the wall mesh has it, as its own layer (Wang et al. 2001).</source>
+        <translation>壁力学：二次（10 节点）四面体有限元，Raghavan &amp; Vorp 2000 超弹性 AAA 壁（近不可压缩），血压作为作用于管腔的随动载荷，两端固定；以牛顿法（稀疏 LU）求解静力平衡至力容差。成像几何视为无载荷状态（CT 显示的是处于其压力下的血管）；腔内血栓在壁网格包含时作为独立层（Wang et al. 2001）。</translation>
+    </message>
+    <message>
+        <source>Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), lumped mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. 4); the physiological protocol&apos;s figures from the static equilibrium after the load path.</source>
+        <translation>壁力学：四面体有限元（共旋线弹性或 St. Venant-Kirchhoff），集中质量，Rayleigh 阻尼，后向欧拉法配合块 Jacobi 预条件共轭梯度（论文第 4 章）；生理方案的数值取自加载路径之后的静力平衡。</translation>
+    </message>
+    <message>
+        <source>Blood flow: weakly compressible SPH (thesis ch. 5; Liu quartic kernel, Tait equation of state, delta-SPH density diffusion, Morris viscosity with no-slip walls whose pressure is extrapolated from the blood, leapfrog with an adaptive step) on particles seeded in the lumen label; a flow-rate inlet at the largest vessel&apos;s end and pressure outlets with particle buffers; double precision on the CPU.</source>
+        <translation>血流：弱可压缩 SPH（论文第 5 章；Liu 四次核函数，Tait 状态方程，delta-SPH 密度扩散，Morris 黏性及无滑移壁面，壁面压力由血液外推，自适应步长的蛙跳积分），粒子布置于管腔标签内；最粗血管末端为流量入口，压力出口带粒子缓冲区；CPU 上双精度计算。</translation>
+    </message>
+    <message>
+        <source>the CPU backend in double precision, explicit steps (no linear solves)</source>
+        <translation>CPU 后端双精度，显式步进（无线性求解）</translation>
+    </message>
+    <message>
+        <source>Drug delivery: two-phase homogeneous fluid in a network of conical Hagen-Poiseuille pipes, Kirchhoff solve, plug filling (thesis ch. 6).</source>
+        <translation>药物输送：锥形 Hagen-Poiseuille 管网络中的两相均质流体，基尔霍夫求解，活塞式充盈（论文第 6 章）。</translation>
+    </message>
+    <message>
+        <source>the run used the %1 backend, the cases the %2</source>
+        <translation>本次运行使用 %1 后端，验证用例使用 %2</translation>
+    </message>
+    <message>
+        <source>the run&apos;s linear solves were direct (factorised), the cases&apos; iterative (at most %1 iterations)</source>
+        <translation>本次运行的线性求解为直接法（分解），验证用例为迭代法（最多 %1 次迭代）</translation>
+    </message>
+    <message>
+        <source>the run&apos;s solves stopped at %1 iterations, the cases&apos; at %2</source>
+        <translation>本次运行的求解在 %1 次迭代时停止，验证用例在 %2 次</translation>
+    </message>
+    <message>
+        <source>the run solved to a relative residual of %1, the cases to %2 or tighter</source>
+        <translation>本次运行求解至相对残差 %1，验证用例至 %2 或更严</translation>
+    </message>
+    <message>
+        <source>The cases ran %1.</source>
+        <translation>验证用例的运行方式：%1。</translation>
+    </message>
+    <message>
+        <source>That is the configuration of the reported run.</source>
+        <translation>这与所报告运行的配置一致。</translation>
+    </message>
+    <message>
+        <source>What differs from the reported run: %1. The cases show the method, not this run&apos;s solver settings.</source>
+        <translation>与所报告运行的不同之处：%1。验证用例证明的是方法，而非本次运行的求解器设置。</translation>
+    </message>
+    <message>
+        <source>Runs: parameters, solver, validation</source>
+        <translation>运行：参数、求解器、验证</translation>
+    </message>
+    <message>
+        <source>Item</source>
+        <translation>项目</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>求解器</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Backend</source>
+        <translation>后端</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步数</translation>
+    </message>
+    <message>
+        <source>1 (steady solve)</source>
+        <translation>1（稳态求解）</translation>
+    </message>
+    <message>
+        <source>Wall-clock time</source>
+        <translation>实际耗时</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>未记录</translation>
+    </message>
+    <message>
+        <source>Convergence</source>
+        <translation>收敛</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>输入</translation>
+    </message>
+    <message>
+        <source>Made</source>
+        <translation>创建</translation>
+    </message>
+    <message>
+        <source>%1 by VascuSim %2</source>
+        <translation>%1，由 VascuSim %2 生成</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Parameters of %1</source>
+        <translation>%1 的参数</translation>
+    </message>
+    <message>
+        <source>Validation of this solver in this build (vascusim-cli validate)</source>
+        <translation>此构建中该求解器的验证（vascusim-cli validate）</translation>
+    </message>
+    <message>
+        <source>Case</source>
+        <translation>用例</translation>
+    </message>
+    <message>
+        <source>What is compared</source>
+        <translation>比较内容</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>FAILED</source>
+        <translation>未通过</translation>
+    </message>
+    <message>
+        <source>Distance along the centerline from the inlet [mm]</source>
+        <translation>沿中心线距入口的距离 [mm]</translation>
+    </message>
+    <message>
+        <source>Velocity along the centerline (cross-sections of the same run, time-averaged)</source>
+        <translation>沿中心线的速度（同一运行的截面，时间平均）</translation>
+    </message>
+    <message>
+        <source>Velocity [m/s]</source>
+        <translation>速度 [m/s]</translation>
+    </message>
+    <message>
+        <source>peak (fastest 5 % of the section)</source>
+        <translation>峰值（截面中最快的 5 %）</translation>
+    </message>
+    <message>
+        <source>mean (flow rate / area)</source>
+        <translation>平均（流量 / 面积）</translation>
+    </message>
+    <message>
+        <source>Mean pressure along the centerline (gauge; the same sections)</source>
+        <translation>沿中心线的平均压力（表压；相同截面）</translation>
+    </message>
+    <message>
+        <source>Pressure [mmHg]</source>
+        <translation>压力 [mmHg]</translation>
+    </message>
+    <message>
+        <source>section mean</source>
+        <translation>截面平均</translation>
+    </message>
+    <message>
+        <source>largest TAWSS %1 Pa</source>
+        <translation>最大 TAWSS %1 Pa</translation>
+    </message>
+    <message>
+        <source>TAWSS [Pa]</source>
+        <translation>TAWSS [Pa]</translation>
+    </message>
+    <message>
+        <source>Stenosis / blockage</source>
+        <translation>狭窄 / 阻塞</translation>
+    </message>
+    <message>
+        <source>The narrowest segment (cross-sections perpendicular to the centerline)</source>
+        <translation>最窄血管段（垂直于中心线的截面）</translation>
+    </message>
+    <message>
+        <source>Diameter stenosis</source>
+        <translation>直径狭窄率</translation>
+    </message>
+    <message>
+        <source>Area stenosis</source>
+        <translation>面积狭窄率</translation>
+    </message>
+    <message>
+        <source>Reference diameter (median)</source>
+        <translation>参考直径（中位数）</translation>
+    </message>
+    <message>
+        <source>Minimal diameter</source>
+        <translation>最小直径</translation>
+    </message>
+    <message>
+        <source>Segment length</source>
+        <translation>血管段长度</translation>
+    </message>
+    <message>
+        <source>Diameter along the narrowest segment</source>
+        <translation>沿最窄血管段的直径</translation>
+    </message>
+    <message>
+        <source>reference diameter</source>
+        <translation>参考直径</translation>
+    </message>
+    <message>
+        <source>Blockage velocity ratios and the pressure drop come from a blood-flow run (Flow &gt; Blood Flow, vascusim-cli simulate sph); the study&apos;s run has no settled flow to measure them (see its warnings).</source>
+        <translation>阻塞处的速度比和压降来自血流运行（流动 &gt; 血流，vascusim-cli simulate sph）；本研究的运行没有可供测量的稳定血流（见其警告）。</translation>
+    </message>
+    <message>
+        <source>Blockage velocity ratios and the pressure drop come from a blood-flow run (Flow &gt; Blood Flow, vascusim-cli simulate sph); this study has none.</source>
+        <translation>阻塞处的速度比和压降来自血流运行（流动 &gt; 血流，vascusim-cli simulate sph）；本研究没有血流运行。</translation>
+    </message>
+    <message>
+        <source>Blood flow (SPH run %1): the throat against the sections %2 mm upstream and downstream along the centerline, time-averaged over the settled flow; pressures gauge, the outlets at %3 mmHg</source>
+        <translation>血流（SPH 运行 %1）：狭窄喉部与沿中心线上下游 %2 mm 处截面的比较，在稳定血流上时间平均；压力为表压，出口为 %3 mmHg</translation>
+    </message>
+    <message>
+        <source>Peak velocity ratio, throat / upstream (PSV ratio&apos;s counterpart)</source>
+        <translation>峰值速度比，喉部 / 上游（对应 PSV 比）</translation>
+    </message>
+    <message>
+        <source>Peak velocity ratio, throat / downstream</source>
+        <translation>峰值速度比，喉部 / 下游</translation>
+    </message>
+    <message>
+        <source>Mean velocity ratio, throat / upstream (a mass check)</source>
+        <translation>平均速度比，喉部 / 上游（质量校核）</translation>
+    </message>
+    <message>
+        <source>Flow area ratio, upstream / throat (from the particles)</source>
+        <translation>流通面积比，上游 / 喉部（由粒子计算）</translation>
+    </message>
+    <message>
+        <source>Throat peak velocity (fastest 5 % of the section)</source>
+        <translation>喉部峰值速度（截面中最快的 5 %）</translation>
+    </message>
+    <message>
+        <source>Pressure drop, upstream - downstream (section means)</source>
+        <translation>压降，上游 - 下游（截面平均）</translation>
+    </message>
+    <message>
+        <source>Distal / proximal pressure (gauge)</source>
+        <translation>远端 / 近端压力（表压）</translation>
+    </message>
+    <message>
+        <source>Flow rate throat / upstream (1 when settled)</source>
+        <translation>流量 喉部 / 上游（稳定时为 1）</translation>
+    </message>
+    <message>
+        <source>Wall loads on the lumen surface (the same run and window; tau_w from the particles next to the wall)</source>
+        <translation>管腔表面的壁面载荷（同一运行与时间窗；tau_w 由近壁粒子计算）</translation>
+    </message>
+    <message>
+        <source>Largest time-averaged wall shear stress (TAWSS)</source>
+        <translation>最大时间平均壁面切应力（TAWSS）</translation>
+    </message>
+    <message>
+        <source>Mean TAWSS over the surface</source>
+        <translation>表面平均 TAWSS</translation>
+    </message>
+    <message>
+        <source>Largest oscillatory shear index (0: steady)</source>
+        <translation>最大振荡剪切指数（0：稳定）</translation>
+    </message>
+    <message>
+        <source>Highest wall pressure (gauge)</source>
+        <translation>最高壁面压力（表压）</translation>
+    </message>
+    <message>
+        <source>Lowest wall pressure (gauge)</source>
+        <translation>最低壁面压力（表压）</translation>
+    </message>
+    <message>
+        <source>Time-averaged wall shear stress (TAWSS, Pa) on the lumen surface, averaged over %1-%2 ms of the same run, seen from the front; grey: no value (past an open end, or within a kernel support of it)</source>
+        <translation>管腔表面的时间平均壁面切应力（TAWSS，Pa），在同一运行的 %1-%2 ms 内平均，正面观；灰色：无数值（位于开口端之外或其核函数支撑范围内）</translation>
+    </message>
+    <message>
+        <source>These blood-flow figures come from a run that is %1.</source>
+        <translation>这些血流数值来自一个状态为 %1 的运行。</translation>
+    </message>
+    <message>
+        <source> - NOT CONVERGED</source>
+        <translation> - 未收敛</translation>
+    </message>
+    <message>
+        <source> - STOPPED EARLY</source>
+        <translation> - 提前停止</translation>
+    </message>
+    <message>
+        <source>Read these figures with care: %1.</source>
+        <translation>请谨慎解读这些数值：%1。</translation>
+    </message>
+    <message>
+        <source>Catheter tip (node, or x,y,z in mm)</source>
+        <translation>导管尖端（节点，或以 mm 表示的 x,y,z）</translation>
+    </message>
+    <message>
+        <source>Tumour sphere (x, y, z, radius; mm)</source>
+        <translation>肿瘤球体（x, y, z, 半径；mm）</translation>
+    </message>
+    <message>
+        <source>Tumour label</source>
+        <translation>肿瘤标签</translation>
+    </message>
+    <message>
+        <source>Network file</source>
+        <translation>网络文件</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>控制点</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Distance along the centerline [mm]</source>
+        <translation>沿中心线的距离 [mm]</translation>
+    </message>
+    <message>
+        <source>Equivalent diameter [mm]</source>
+        <translation>等效直径 [mm]</translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation>直径</translation>
+    </message>
+    <message>
+        <source>%1: not rendered (3D snapshots need a display; run under xvfb-run).</source>
+        <translation>%1：未渲染（3D 快照需要显示环境；请在 xvfb-run 下运行）。</translation>
+    </message>
+    <message>
+        <source>%1: not rendered (%2).</source>
+        <translation>%1：未渲染（%2）。</translation>
+    </message>
+    <message>
+        <source>Perfused territory: the run had no liver label (simulate network --liver-label).</source>
+        <translation>灌注区域：该运行没有肝脏标签（simulate network --liver-label）。</translation>
+    </message>
+    <message>
+        <source>Perfused territory: the run again gave no territory.</source>
+        <translation>灌注区域：重新运行未得到区域。</translation>
+    </message>
+    <message>
+        <source>Perfused territory from the tip on the axial CT slice through the largest lesion (W 400 / L 40 HU; patient right on the left; the workstation&apos;s colours): green perfused liver, blue perfused tumour, red tumour not perfused, yellow margin not perfused, the liver not perfused unmarked (slice z = %1 mm)</source>
+        <translation>自尖端灌注的区域，显示于经过最大病灶的轴位 CT 层面（W 400 / L 40 HU；患者右侧位于图像左侧；工作站配色）：绿色为灌注的肝脏，蓝色为灌注的肿瘤，红色为未灌注的肿瘤，黄色为未灌注的边缘，未灌注的肝脏不作标记（层面 z = %1 mm）</translation>
+    </message>
+    <message>
+        <source>Perfused territory: not drawn (%1).</source>
+        <translation>灌注区域：未绘制（%1）。</translation>
+    </message>
+    <message>
+        <source>Working angle: none for this run (the tip at the root, or working_angle 0).</source>
+        <translation>工作角度：本次运行没有（尖端位于根部，或 working_angle 为 0）。</translation>
+    </message>
+    <message>
+        <source>DSA-like view at the working angle (%1, %2 deg; patient supine, the head up): the tree the contrast opacifies, the path to the tip twice as dense (%3 mm pixels)</source>
+        <translation>工作角度下的类 DSA 视图（%1，%2 度；患者仰卧，头部朝上）：造影剂显影的血管树，到尖端的路径以双倍密度显示（像素 %3 mm）</translation>
+    </message>
+    <message>
+        <source>cranial</source>
+        <translation>头位</translation>
+    </message>
+    <message>
+        <source>caudal</source>
+        <translation>足位</translation>
+    </message>
+    <message>
+        <source>Diameter along the centerline (the segment of the maximum diameter)</source>
+        <translation>沿中心线的直径（最大直径所在的血管段）</translation>
+    </message>
+    <message>
+        <source>repair threshold, men: 55 mm</source>
+        <translation>修复阈值，男性：55 mm</translation>
+    </message>
+    <message>
+        <source>repair threshold, women: 50 mm</source>
+        <translation>修复阈值，女性：50 mm</translation>
+    </message>
+    <message>
+        <source>Repair is usually considered from a maximum diameter of 5.5 cm in men and 5.0 cm in women; this one is at or above both repair thresholds.</source>
+        <translation>通常在男性最大直径 5.5 cm、女性 5.0 cm 起考虑修复；此例达到或超过两个修复阈值。</translation>
+    </message>
+    <message>
+        <source>Repair is usually considered from a maximum diameter of 5.5 cm in men and 5.0 cm in women; this one is at or above the threshold for women (5.0 cm), below the one for men (5.5 cm).</source>
+        <translation>通常在男性最大直径 5.5 cm、女性 5.0 cm 起考虑修复；此例达到或超过女性阈值（5.0 cm），低于男性阈值（5.5 cm）。</translation>
+    </message>
+    <message>
+        <source>Repair is usually considered from a maximum diameter of 5.5 cm in men and 5.0 cm in women; this one is below both repair thresholds.</source>
+        <translation>通常在男性最大直径 5.5 cm、女性 5.0 cm 起考虑修复；此例低于两个修复阈值。</translation>
+    </message>
+    <message>
+        <source>Maximum diameter, outer wall to outer wall (SVS)</source>
+        <translation>最大直径，外壁至外壁（SVS）</translation>
+    </message>
+    <message>
+        <source>Lumen diameter there (equivalent)</source>
+        <translation>该处管腔直径（等效）</translation>
+    </message>
+    <message>
+        <source>Largest thrombus thickness</source>
+        <translation>最大血栓厚度</translation>
+    </message>
+    <message>
+        <source>Sac volume</source>
+        <translation>瘤囊容积</translation>
+    </message>
+    <message>
+        <source>Sac length</source>
+        <translation>瘤囊长度</translation>
+    </message>
+    <message>
+        <source>Neck diameter (outer, at the lowest renal artery)</source>
+        <translation>瘤颈直径（外径，位于最低肾动脉处）</translation>
+    </message>
+    <message>
+        <source>Neck length</source>
+        <translation>瘤颈长度</translation>
+    </message>
+    <message>
+        <source>Neck angulation</source>
+        <translation>瘤颈成角</translation>
+    </message>
+    <message>
+        <source>Right common iliac diameter (outer)</source>
+        <translation>右髂总动脉直径（外径）</translation>
+    </message>
+    <message>
+        <source>Left common iliac diameter (outer)</source>
+        <translation>左髂总动脉直径（外径）</translation>
+    </message>
+    <message>
+        <source>Wall thickness (assumed, not measured)</source>
+        <translation>壁厚（假定值，未测量）</translation>
+    </message>
+    <message>
+        <source>The aneurysm sac (%1)</source>
+        <translation>动脉瘤瘤囊（%1）</translation>
+    </message>
+    <message>
+        <source>Definitions.</source>
+        <translation>定义。</translation>
+    </message>
+    <message>
+        <source>%1: %2.</source>
+        <translation>%1：%2。</translation>
+    </message>
+    <message>
+        <source>AAA rupture-risk review</source>
+        <translation>AAA 破裂风险评估</translation>
+    </message>
+    <message>
+        <source>The contrast lumen (cross-sections perpendicular to the centerline)</source>
+        <translation>造影管腔（垂直于中心线的截面）</translation>
+    </message>
+    <message>
+        <source>Maximum lumen diameter (equivalent)</source>
+        <translation>最大管腔直径（等效）</translation>
+    </message>
+    <message>
+        <source>Largest lumen caliper width</source>
+        <translation>最大管腔卡尺宽度</translation>
+    </message>
+    <message>
+        <source>These are lumen diameters; guidelines measure the aneurysm outer wall to outer wall with the thrombus (vascusim-cli sac). Against the lumen: %1</source>
+        <translation>以上为管腔直径；指南要求测量动脉瘤外壁至外壁（含血栓）的直径（vascusim-cli sac）。按管腔计：%1</translation>
+    </message>
+    <message>
+        <source>No centerlines and no sac: the maximum diameter was not measured.</source>
+        <translation>无中心线且无瘤囊：未测量最大直径。</translation>
+    </message>
+    <message>
+        <source>Wall stress at blood pressure (physiological protocol)</source>
+        <translation>血压下的壁应力（生理方案）</translation>
+    </message>
+    <message>
+        <source>Target blood pressure on the lumen</source>
+        <translation>作用于管腔的目标血压</translation>
+    </message>
+    <message>
+        <source>Pressure reached (the figures below are at this pressure)</source>
+        <translation>达到的压力（以下数值对应此压力）</translation>
+    </message>
+    <message>
+        <source>Peak wall stress in the sac (von Mises, 99th percentile of its elements)</source>
+        <translation>瘤囊内峰值壁应力（von Mises，其单元的第 99 百分位）</translation>
+    </message>
+    <message>
+        <source>Peak wall stress in the sac (von Mises, largest nodal value)</source>
+        <translation>瘤囊内峰值壁应力（von Mises，最大节点值）</translation>
+    </message>
+    <message>
+        <source>  its place: along the centerline below the lowest renal artery</source>
+        <translation>  位置：沿中心线位于最低肾动脉以下</translation>
+    </message>
+    <message>
+        <source>  its clock position (seen from the feet; 12 anterior, 3 patient&apos;s left)</source>
+        <translation>  钟点位置（从足侧观察；12 点为前方，3 点为患者左侧）</translation>
+    </message>
+    <message>
+        <source>Peak wall rupture index in the sac (stress / strength, 99th percentile)</source>
+        <translation>瘤囊内峰值壁破裂指数（应力 / 强度，第 99 百分位）</translation>
+    </message>
+    <message>
+        <source>Peak wall rupture index in the sac (largest nodal value)</source>
+        <translation>瘤囊内峰值壁破裂指数（最大节点值）</translation>
+    </message>
+    <message>
+        <source>  its clock position</source>
+        <translation>  钟点位置</translation>
+    </message>
+    <message>
+        <source>Highest element stress on the whole wall (von Mises; a branch ostium or the iliac crotch may set it)</source>
+        <translation>整个壁面上的最高单元应力（von Mises；可能出现在分支开口或髂动脉分叉处）</translation>
+    </message>
+    <message>
+        <source>Highest element stress on the whole wall (von Mises)</source>
+        <translation>整个壁面上的最高单元应力（von Mises）</translation>
+    </message>
+    <message>
+        <source>  at x (patient LPS)</source>
+        <translation>  位于 x（患者 LPS）</translation>
+    </message>
+    <message>
+        <source>  at y</source>
+        <translation>  位于 y</translation>
+    </message>
+    <message>
+        <source>  at z</source>
+        <translation>  位于 z</translation>
+    </message>
+    <message>
+        <source>Highest largest principal stress on the whole wall</source>
+        <translation>整个壁面上的最大主应力最高值</translation>
+    </message>
+    <message>
+        <source>Largest wall displacement</source>
+        <translation>最大壁位移</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>未给出</translation>
+    </message>
+    <message>
+        <source> (the sac&apos;s neck outer diameter, or 20 mm without a sac)</source>
+        <translation>（瘤颈外径，无瘤囊时为 20 mm）</translation>
+    </message>
+    <message>
+        <source>the sac&apos;s neck outer diameter (20 mm without a sac)</source>
+        <translation>瘤颈外径（无瘤囊时为 20 mm）</translation>
+    </message>
+    <message>
+        <source>inside the sac the thrombus crossed along each element&apos;s radius from the centerline and the outer wall-to-wall chord through the centerline there (the sac&apos;s labels), elsewhere the centerline diameter and a thrombus of %1 mm</source>
+        <translation>瘤囊内采用沿各单元自中心线半径方向穿过的血栓厚度及该处经中心线的外壁至外壁弦长（瘤囊标签），其他部位采用中心线直径及 %1 mm 的血栓</translation>
+    </message>
+    <message>
+        <source>thrombus %1 mm (assumed), the centerline diameter</source>
+        <translation>血栓 %1 mm（假定值），中心线直径</translation>
+    </message>
+    <message>
+        <source>Sex and family history were not both given, so no rupture index is reported (neither is assumed).</source>
+        <translation>未同时给出性别和家族史，因此不报告破裂指数（两者均不作假定）。</translation>
+    </message>
+    <message>
+        <source>A rupture index of 1 means the stress reaches the estimated strength; it is given inside the aneurysm sac only (the regression was fitted to sacs).</source>
+        <translation>破裂指数为 1 表示应力达到估计强度；仅在动脉瘤瘤囊内给出（该回归基于瘤囊拟合）。</translation>
+    </message>
+    <message>
+        <source>No sac was measured (vascusim-cli sac), so no rupture index is given: the regression holds for the aneurysm sac only.</source>
+        <translation>未测量瘤囊（vascusim-cli sac），因此不给出破裂指数：该回归仅适用于动脉瘤瘤囊。</translation>
+    </message>
+    <message>
+        <source>Strength model: Vande Geest et al. 2006 (wall strength from the local thrombus thickness, the local diameter over the non-aneurysmal reference, family history and sex), with %1; reference diameter %2, sex %3, family history of AAA %4. %5</source>
+        <translation>强度模型：Vande Geest et al. 2006（壁强度由局部血栓厚度、局部直径与非瘤段参考直径之比、家族史和性别得出），采用 %1；参考直径 %2，性别 %3，AAA 家族史 %4。%5</translation>
+    </message>
+    <message>
+        <source>female</source>
+        <translation>女</translation>
+    </message>
+    <message>
+        <source>male</source>
+        <translation>男</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>有</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Wall stress (von Mises, kPa; the elements&apos; values averaged to the surface points) at blood pressure, seen from the front; PWS and PWRI mark the sac&apos;s nodal maxima (clock position seen from the feet, 12 h anterior)</source>
+        <translation>血压下的壁应力（von Mises，kPa；单元值平均至表面点），正面观；PWS 和 PWRI 标记瘤囊的节点最大值（钟点位置从足侧观察，12 点为前方）</translation>
+    </message>
+    <message>
+        <source>von Mises [kPa]</source>
+        <translation>von Mises [kPa]</translation>
+    </message>
+    <message>
+        <source>The physiological wall-stress run was not made for this study.</source>
+        <translation>本研究未进行生理壁应力运行。</translation>
+    </message>
+    <message>
+        <source>Tearing (thesis protocol: pressure ramp on the middle of the vessel)</source>
+        <translation>撕裂（论文方案：作用于血管中段的压力斜坡）</translation>
+    </message>
+    <message>
+        <source>Pressure at the first tear (-1: none)</source>
+        <translation>首次撕裂时的压力（-1：无）</translation>
+    </message>
+    <message>
+        <source>Torn elements</source>
+        <translation>撕裂的单元数</translation>
+    </message>
+    <message>
+        <source>Fracture entropy</source>
+        <translation>断裂熵</translation>
+    </message>
+    <message>
+        <source>Pressure at the end of the run</source>
+        <translation>运行结束时的压力</translation>
+    </message>
+    <message>
+        <source>Research protocol: the thesis&apos;s ramp pressures (by default 8-12 MPa, about 600 times systolic) are not physiological, and its tear strength is no measured wall strength; these figures reproduce the thesis&apos;s experiment and say nothing about this patient&apos;s rupture risk.</source>
+        <translation>研究方案：论文的斜坡压力（默认 8-12 MPa，约为收缩压的 600 倍）并非生理值，其撕裂强度也不是实测的壁强度；这些数值复现论文的实验，不能说明该患者的破裂风险。</translation>
+    </message>
+    <message>
+        <source>Tearing was quasi-static: the wall in equilibrium at each pressure, the onset bracketed by bisection to 0.5 %, one element released per equilibrium.</source>
+        <translation>撕裂为准静态：每个压力下壁处于平衡，撕裂起点以二分法界定至 0.5 %，每次平衡释放一个单元。</translation>
+    </message>
+    <message>
+        <source>Tearing followed the thesis&apos;s damped ramp: the wall lags the load, so the onset pressure depends on the ramp&apos;s rate.</source>
+        <translation>撕裂遵循论文的阻尼斜坡：壁的响应滞后于载荷，因此起始压力取决于斜坡速率。</translation>
+    </message>
+    <message>
+        <source>The thesis tearing protocol was not run for this study.</source>
+        <translation>本研究未运行论文的撕裂方案。</translation>
+    </message>
+    <message>
+        <source>VascuSim planning report</source>
+        <translation>VascuSim 规划报告</translation>
+    </message>
+    <message>
+        <source>AAA rupture-risk review: the study has no AAA sac (vascusim-cli sac) and no wall-mechanics run (simulate fem).</source>
+        <translation>AAA 破裂风险评估：本研究没有 AAA 瘤囊（vascusim-cli sac），也没有壁力学运行（simulate fem）。</translation>
+    </message>
+    <message>
+        <source>Stenosis / blockage: no segment of the centerlines narrows by 40 % or more, and the study has no blood-flow run (velocity ratios, pressure drop).</source>
+        <translation>狭窄 / 阻塞：中心线上没有狭窄 40 % 及以上的血管段，本研究也没有血流运行（速度比、压降）。</translation>
+    </message>
+    <message>
+        <source>Chemoembolization: the study has no drug-delivery run (simulate network).</source>
+        <translation>化疗栓塞：本研究没有药物输送运行（simulate network）。</translation>
+    </message>
+    <message>
+        <source>Surgical smoke: the study has no smoke run (the smoke solver is not part of this version).</source>
+        <translation>手术烟雾：本研究没有烟雾运行（此版本不含烟雾求解器）。</translation>
+    </message>
+    <message>
+        <source> (posterior)</source>
+        <translation>（后方）</translation>
+    </message>
+</context>
+<context>
     <name>vsim::Parameters</name>
     <message>
         <source>Layer 1: window and region growing</source>
@@ -1321,6 +2484,88 @@
     <message>
         <source>a run that has not reached its end after this many steps stops with a message (a collapsing time step)</source>
         <translation>此步数后仍未到达终点的运行会停止并给出消息（时间步长崩塌）</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::RunStatus</name>
+    <message>
+        <source>force residual %1 (tolerance %2)</source>
+        <translation>力残差 %1（容差 %2）</translation>
+    </message>
+    <message>
+        <source>converged</source>
+        <translation>已收敛</translation>
+    </message>
+    <message>
+        <source>converged, %1</source>
+        <translation>已收敛，%1</translation>
+    </message>
+    <message>
+        <source>%1 of %2 solves ended above their tolerance</source>
+        <translation>%2 次求解中有 %1 次结束时高于容差</translation>
+    </message>
+    <message>
+        <source> at the %1-iteration cap</source>
+        <translation>，达到 %1 次迭代上限</translation>
+    </message>
+    <message>
+        <source>, worst relative residual %1 (tolerance %2)</source>
+        <translation>，最差相对残差 %1（容差 %2）</translation>
+    </message>
+    <message>
+        <source>not converged: %1</source>
+        <translation>未收敛：%1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <source>stopped by a guard</source>
+        <translation>被保护检查终止</translation>
+    </message>
+    <message>
+        <source>stopped by its end condition</source>
+        <translation>因结束条件停止</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>压力</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source> at %1 %2 of %3 %4</source>
+        <translation>，%1 达到 %2 / %3 %4</translation>
+    </message>
+    <message>
+        <source>NOT CONVERGED (%1)</source>
+        <translation>未收敛（%1）</translation>
+    </message>
+    <message>
+        <source>STOPPED EARLY (%1)</source>
+        <translation>提前停止（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::ViewMeasurement</name>
+    <message>
+        <source>mean %1 HU, SD %2 HU, area %3 mm2</source>
+        <translation>平均 %1 HU，标准差 %2 HU，面积 %3 mm2</translation>
+    </message>
+    <message>
+        <source>straight distance between the two points in the patient frame (mm)</source>
+        <translation>患者坐标系中两点之间的直线距离（mm）</translation>
+    </message>
+    <message>
+        <source>angle at the middle point between the two arms (degrees)</source>
+        <translation>中间点处两臂之间的夹角（度）</translation>
+    </message>
+    <message>
+        <source>CT values (HU) of the voxels nearest the in-plane samples inside the ellipse, one sample per finest voxel spacing squared: mean and sample standard deviation; area of the ellipse, pi a b (mm2)</source>
+        <translation>椭圆内平面采样点最近体素的 CT 值（HU），每个最小体素间距平方取一个样本：平均值与样本标准差；椭圆面积 pi a b（mm2）</translation>
     </message>
 </context>
 <context>
@@ -3515,6 +4760,65 @@ lumen %2 mm (circle: %3)</source>
         <source>Segment</source>
         <comment>verb: segment the vessels</comment>
         <translation>分割</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::imaging::AneurysmSac</name>
+    <message>
+        <source>largest outer-wall to outer-wall caliper perpendicular to the centerline of the outer contour, thrombus and wall included (SVS 2018)</source>
+        <translation>垂直于外轮廓中心线的最大外壁至外壁卡尺距离，包括血栓和血管壁（SVS 2018）</translation>
+    </message>
+    <message>
+        <source>patient position (LPS) of the centre of that cross-section</source>
+        <translation>该截面中心的患者位置（LPS）</translation>
+    </message>
+    <message>
+        <source>equivalent diameter of the contrast lumen&apos;s perpendicular cross-section there</source>
+        <translation>该处造影管腔垂直截面的等效直径</translation>
+    </message>
+    <message>
+        <source>outer diameter perpendicular to the centerline at the origin of the lowest renal artery (the median 3 to 8 mm below it, clear of the branch; without the renal arteries in the label: the narrowest within 80 mm above the widest section)</source>
+        <translation>最低肾动脉开口处垂直于中心线的外径（取其下方 3 至 8 mm 的中位数，避开分支；标签中无肾动脉时：最宽截面上方 80 mm 内的最窄处）</translation>
+    </message>
+    <message>
+        <source>centerline length from the lowest renal artery&apos;s origin to the start of the sac</source>
+        <translation>最低肾动脉开口至瘤囊起点的中心线长度</translation>
+    </message>
+    <message>
+        <source>angle between the neck axis (lowest renal artery to the sac&apos;s start) and the sac axis (the sac&apos;s start to its end)</source>
+        <translation>瘤颈轴（最低肾动脉至瘤囊起点）与瘤囊轴（瘤囊起点至终点）之间的夹角</translation>
+    </message>
+    <message>
+        <source>patient position (LPS z) of the lowest renal artery&apos;s origin</source>
+        <translation>最低肾动脉开口的患者位置（LPS z）</translation>
+    </message>
+    <message>
+        <source>outer diameter of the left common iliac artery perpendicular to its centerline: the median 10 to 40 mm below the crotch</source>
+        <translation>左髂总动脉垂直于其中心线的外径：分叉下方 10 至 40 mm 的中位数</translation>
+    </message>
+    <message>
+        <source>outer diameter of the right common iliac artery perpendicular to its centerline: the median 10 to 40 mm below the crotch</source>
+        <translation>右髂总动脉垂直于其中心线的外径：分叉下方 10 至 40 mm 的中位数</translation>
+    </message>
+    <message>
+        <source>1.5 x the neck diameter (30 mm without a neck)</source>
+        <translation>1.5 倍瘤颈直径（无瘤颈时为 30 mm）</translation>
+    </message>
+    <message>
+        <source>assumed, not measured: the wall is that shell inside the outer contour</source>
+        <translation>假定值，未测量：血管壁为外轮廓内侧的这一壳层</translation>
+    </message>
+    <message>
+        <source>volume inside the outer contour between the perpendicular planes at the sac&apos;s ends</source>
+        <translation>瘤囊两端垂直平面之间外轮廓内的容积</translation>
+    </message>
+    <message>
+        <source>centerline length of the sac (outer diameter over the threshold, contiguous)</source>
+        <translation>瘤囊的中心线长度（外径超过阈值的连续段）</translation>
+    </message>
+    <message>
+        <source>largest distance from the lumen to the wall&apos;s inner surface along the rays of an axial section, within the sac</source>
+        <translation>瘤囊内沿轴位截面射线从管腔到血管壁内表面的最大距离</translation>
     </message>
 </context>
 <context>

@@ -199,11 +199,12 @@ std::vector<CommandSpec> declareCommands()
          validateSolvers},
         {"report", 0, 0,
          {kStudy, required("out"), value("sections"), value("page"), value("dicom-pdf"), flag("anonymize"),
-          value("metrics-csv"), value("metrics-json"), flag("no-validation"), flag("overwrite"), kWait},
+          value("metrics-csv"), value("metrics-json"), flag("no-validation"), flag("overwrite"), value("language"), kWait},
          "report --study <study.vsim> --out <report.pdf> [--sections aaa,stenosis,chemoembolization,smoke,measurements,runs]\n"
          "       [--page a4|letter] [--dicom-pdf <out.dcm>] [--anonymize] [--metrics-csv F] [--metrics-json F]\n"
-         "       [--no-validation] [--overwrite]\n"
-         "    the clinical report (PDF); existing output files are replaced only with --overwrite",
+         "       [--no-validation] [--overwrite] [--language en|de|zh_CN|<catalogue.qm>]\n"
+         "    the clinical report (PDF) in English (default), German or Simplified Chinese (or a compiled\n"
+         "    translation); existing output files are replaced only with --overwrite",
          writeReport},
         {"demo", 0, 0, {required("out"), value("size")},
          "demo --out <dir> [--size 512x512x400]\n"

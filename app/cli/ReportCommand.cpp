@@ -1,6 +1,7 @@
 #include "ReportCommand.h"
 
 #include "vsim/app/StudyReport.h"
+#include "vsim/app/TextLanguage.h"
 #include "CliSupport.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/OutputSafety.h"
@@ -74,6 +75,7 @@ int writeReport(const Arguments& arguments, const Progress& progress)
     options.validate = !arguments.hasOption("no-validation");
     options.sections = sectionList(arguments.option("sections"));
     const auto application = guiApplication();
+    app::installTextLanguage(arguments.option("language", "en"));
     const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
     const QByteArray pdf = report::renderPdf(report, page);
     report::writeText(std::string(pdf.constData(), std::size_t(pdf.size())), out);

@@ -1,10 +1,21 @@
 #include "HelpWindow.h"
 
+#include <QFile>
+#include <QLocale>
 #include <QTextBrowser>
 #include <QUrl>
 #include <QVBoxLayout>
 
 namespace vsim::gui {
+
+QString guidePage(const QLocale& locale)
+{
+    // "de_DE" -> guide_de.html, "zh_CN" -> guide_zh_CN.html; English (and any language without a guide): guide.html.
+    for (const QString& code : {locale.name(), locale.name().section('_', 0, 0)})
+        if (QFile::exists(":/help/guide_" + code + ".html"))
+            return "qrc:/help/guide_" + code + ".html";
+    return "qrc:/help/guide.html";
+}
 
 HelpWindow::HelpWindow(QWidget* parent) : QDialog(parent)
 {
@@ -15,7 +26,7 @@ HelpWindow::HelpWindow(QWidget* parent) : QDialog(parent)
     m_browser->setObjectName("helpBrowser");
     m_browser->setOpenExternalLinks(false);
     m_browser->setSearchPaths({":/help"});
-    m_browser->setSource(QUrl("qrc:/help/guide.html"));
+    m_browser->setSource(QUrl(guidePage(QLocale())));
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_browser);

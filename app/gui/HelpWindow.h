@@ -2,11 +2,15 @@
 
 #include <QDialog>
 
+class QLocale;
 class QTextBrowser;
 
 namespace vsim::gui {
 
-/// Help > User Guide (F1): the guide of resources/help (both cases walked through with pictures made by the GUI
+/// The guide's page for a language: resources/help/guide_<code>.html ("de", "zh_CN"), else the English guide.html.
+QString guidePage(const QLocale& locale);
+
+/// Help > User Guide (F1): the guide of resources/help in the workstation's language (both cases walked through with pictures made by the GUI
 /// tests, the mouse and keyboard table, the definitions and units) in a browser with working links.
 class HelpWindow : public QDialog
 {

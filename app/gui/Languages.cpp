@@ -1,6 +1,8 @@
 // Languages.h: the translators from :/i18n (built from translations/*.ts) and Qt's own catalogue.
 #include "Languages.h"
 
+#include "vsim/app/TextLanguage.h"
+
 #include <QApplication>
 #include <QLibraryInfo>
 #include <QLocale>
@@ -58,6 +60,7 @@ void setChosenLanguage(const QString& code)
 
 bool installLanguage(const QString& code)
 {
+    app::useQtTranslations(); // the libraries' texts (the report, definitions) through the same catalogues
     const QLocale locale = code.isEmpty() ? QLocale() : QLocale(code);
     auto ours = std::make_unique<QTranslator>();
     const bool found = locale.language() != QLocale::English && ours->load(locale, "vascusim", "_", ":/i18n");

@@ -146,7 +146,7 @@ void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurement
         const int row = m_measurementTable->rowCount();
         m_measurementTable->insertRow(row);
         auto* item = new QTableWidgetItem(format.arg(value->second, 0, 'f', 1));
-        const auto& definitions = imaging::aneurysmSacDefinitions();
+        const auto definitions = imaging::aneurysmSacDefinitions(true);
         if (const auto definition = definitions.find(key); definition != definitions.end())
             item->setToolTip(QString::fromStdString(definition->second));
         if (std::string(key) == "max_outer_diameter_mm" && sac.count("max_outer_diameter_z_mm"))

@@ -1,7 +1,7 @@
 # The translation completeness test (issue 20, item 7): lupdate over the same sources as the build, on copies of the
 # committed catalogues, must find no new text and leave none unfinished or vanished. A tr() text added without a
 # translation, a changed source text, or a parameter table changed without scripts/update-translations.sh fails.
-#   cmake -DLUPDATE=... -DTS_FILES="a.ts;b.ts" -DSOURCES="..." -DINCLUDES="..." -DWORK=dir -P check_translations.cmake
+#   cmake -DLUPDATE=... -DTS_FILES="a.ts;b.ts" -DSOURCES="..." -DOPTIONS="..." -DINCLUDES="..." -DWORK=dir -P check_translations.cmake
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(copies)
@@ -14,7 +14,7 @@ set(include_options)
 foreach(dir ${INCLUDES})
     list(APPEND include_options -I${dir})
 endforeach()
-execute_process(COMMAND ${LUPDATE} ${SOURCES} ${include_options} -no-obsolete -locations none -ts ${copies}
+execute_process(COMMAND ${LUPDATE} ${SOURCES} ${include_options} ${OPTIONS} -ts ${copies}
     OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
 message("${out}")
 if(NOT status EQUAL 0)

@@ -3,6 +3,7 @@
 // was drawn.
 #include "ReportSections.h"
 
+#include "vsim/core/Localized.h"
 #include "vsim/core/ViewMeasurement.h"
 
 #include <cstdio>
@@ -22,8 +23,10 @@ std::string pointText(const Eigen::Vector3d& p)
 std::optional<report::Section> measurementsSection(const study::Study& study)
 {
     report::Table table;
-    table.caption = "Measurements marked for the report on the workstation. Points in the patient frame (LPS, mm).";
-    table.columns = {"Measurement", "Figure", "Definition", "Points [mm]"};
+    table.caption = localized(
+        "Report", "Measurements marked for the report on the workstation. Points in the patient frame (LPS, mm).");
+    table.columns = {localized("Report", "Measurement"), localized("Report", "Figure"),
+                     localized("Report", "Definition"), localized("Report", "Points [mm]")};
     for (const study::Artifact& artifact : study.artifacts())
     {
         const auto inReport = artifact.attributes.find("in_report");
@@ -35,14 +38,14 @@ std::optional<report::Section> measurementsSection(const study::Study& study)
         for (const Eigen::Vector3d& p : m.pointsMm)
             points += (points.empty() ? "" : " ") + pointText(p);
         const std::size_t colon = artifact.name.find(':');
-        table.rows.push_back({colon == std::string::npos ? artifact.name : artifact.name.substr(0, colon), measurementText(m),
-                              measurementDefinition(m.kind), points});
+        table.rows.push_back({colon == std::string::npos ? artifact.name : artifact.name.substr(0, colon),
+                              measurementText(m, true), measurementDefinition(m.kind, true), points});
     }
     if (table.rows.empty())
         return std::nullopt;
     report::Section section;
     section.id = "measurements";
-    section.title = "Measurements";
+    section.title = localized("Report", "Measurements");
     section.blocks.push_back(std::move(table));
     return section;
 }

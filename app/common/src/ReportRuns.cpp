@@ -29,31 +29,42 @@ SolverInfo solverOf(const study::Artifact& run)
 {
     if (run.provenance.command == "simulate fem")
         return {textOr(run.provenance.parameters, "wall_model", "0") == "1"
-                    ? "Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan & Vorp 2000 hyperelastic AAA "
-                      "wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; "
-                      "the static equilibrium by Newton's method (sparse LU) to the force tolerance. The imaged "
-                      "geometry is taken as unloaded (CT shows the vessel at its pressure); the intraluminal thrombus, where the "
-                      "wall mesh has it, as its own layer (Wang et al. 2001)."
-                    : "Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), "
-                      "lumped mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. "
-                      "4); the physiological protocol's figures from the static equilibrium after the load path.",
+                    ? localized("Report",
+                                "Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan & Vorp 2000 "
+                                "hyperelastic AAA wall (nearly incompressible), the blood pressure as a follower "
+                                "load on the lumen, ends held; the static equilibrium by Newton's method (sparse "
+                                "LU) to the force tolerance. The imaged geometry is taken as unloaded (CT shows "
+                                "the vessel at its pressure); the intraluminal thrombus, where the wall mesh has "
+                                "it, as its own layer (Wang et al. 2001).")
+                    : localized("Report", "Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. "
+                                          "Venant-Kirchhoff), lumped mass, Rayleigh damping, backward Euler with "
+                                          "block-Jacobi preconditioned CG (thesis ch. 4); the physiological protocol's "
+                                          "figures from the static equilibrium after the load path."),
                 sim::fem::femProtocolParameters(textOr(run.provenance.parameters, "protocol", "physiological")),
-                sim::fem::femParameters(), sim::fem::femValidationCases(),
+                sim::fem::femParameters(),
+                sim::fem::femValidationCases(),
                 [](const std::string& name, const Progress& p) { return sim::fem::runFemValidation(name, p); },
                 sim::fem::femValidationConfiguration()};
     if (run.provenance.command == "simulate sph")
         // The report re-runs the quick cases (seconds); the flow cases (a minute or more each) run in the test suite
         // and with vascusim-cli validate sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis.
-        return {"Blood flow: weakly compressible SPH (thesis ch. 5; Liu quartic kernel, Tait equation of state, "
-                "delta-SPH density diffusion, Morris viscosity with no-slip walls whose pressure is extrapolated from "
-                "the blood, leapfrog with an adaptive step) on particles seeded in the lumen label; a flow-rate inlet "
-                "at the largest vessel's end and pressure outlets with particle buffers; double precision on the CPU.",
-                sim::sph::sphParameters(), sim::sph::sphParameters(), {"sph-kernel", "sph-fpm"},
+        return {localized("Report",
+                          "Blood flow: weakly compressible SPH (thesis ch. 5; Liu quartic kernel, Tait equation "
+                          "of state, delta-SPH density diffusion, Morris viscosity with no-slip walls whose "
+                          "pressure is extrapolated from the blood, leapfrog with an adaptive step) on particles "
+                          "seeded in the lumen label; a flow-rate inlet at the largest vessel's end and pressure "
+                          "outlets with particle buffers; double precision on the CPU."),
+                sim::sph::sphParameters(),
+                sim::sph::sphParameters(),
+                {"sph-kernel", "sph-fpm"},
                 [](const std::string& name, const Progress& p) { return sim::sph::runSphValidation(name, p); },
-                {"cpu", 0, 0.0, "the CPU backend in double precision, explicit steps (no linear solves)"}};
-    return {"Drug delivery: two-phase homogeneous fluid in a network of conical Hagen-Poiseuille pipes, Kirchhoff "
-            "solve, plug filling (thesis ch. 6).",
-            sim::network::networkParameters(), sim::network::networkParameters(), sim::network::networkValidationCases(),
+                {"cpu", 0, 0.0,
+                 localized("Report", "the CPU backend in double precision, explicit steps (no linear solves)")}};
+    return {localized("Report", "Drug delivery: two-phase homogeneous fluid in a network of conical Hagen-Poiseuille "
+                                "pipes, Kirchhoff solve, plug filling (thesis ch. 6)."),
+            sim::network::networkParameters(),
+            sim::network::networkParameters(),
+            sim::network::networkValidationCases(),
             [](const std::string& name, const Progress& p) { return sim::network::runNetworkValidation(name, p); },
             sim::network::networkValidationConfiguration()};
 }
@@ -66,24 +77,33 @@ std::string validationAgainstRun(const ValidationConfiguration& validation, cons
     const std::string backend = textOr(recorded, "backend", "cpu");
     std::vector<std::string> differences;
     if (backend != validation.backend)
-        differences.push_back("the run used the " + backend + " backend, the cases the " + validation.backend);
+        differences.push_back(withArguments(localized("Report", "the run used the %1 backend, the cases the %2"),
+                                            {backend, validation.backend}));
     const RunStatus status = runStatusOf(run);
     if (status.solves > 0 && status.iterationCap == 0 && validation.iterationCap > 0)
-        differences.push_back("the run's linear solves were direct (factorised), the cases' iterative (at most " +
-                              std::to_string(validation.iterationCap) + " iterations)");
+        differences.push_back(withArguments(
+            localized("Report", "the run's linear solves were direct (factorised), the cases' iterative (at most %1 "
+                                "iterations)"),
+            {std::to_string(validation.iterationCap)}));
     if (status.iterationCap > 0 && status.iterationCap < validation.iterationCap)
-        differences.push_back("the run's solves stopped at " + std::to_string(status.iterationCap) +
-                              " iterations, the cases' at " + std::to_string(validation.iterationCap));
+        differences.push_back(
+            withArguments(localized("Report", "the run's solves stopped at %1 iterations, the cases' at %2"),
+                          {std::to_string(status.iterationCap), std::to_string(validation.iterationCap)}));
     if (status.tolerance > validation.loosestTolerance && validation.loosestTolerance > 0.0)
-        differences.push_back("the run solved to a relative residual of " + report::formatMetric(status.tolerance) +
-                              ", the cases to " + report::formatMetric(validation.loosestTolerance) + " or tighter");
-    std::string sentence = "The cases ran " + validation.text + ". ";
+        differences.push_back(withArguments(
+            localized("Report", "the run solved to a relative residual of %1, the cases to %2 or tighter"),
+            {report::formatMetric(status.tolerance), report::formatMetric(validation.loosestTolerance)}));
+    const std::string ran = withArguments(localized("Report", "The cases ran %1."), {validation.text});
     if (differences.empty())
-        return sentence + "That is the configuration of the reported run.";
-    sentence += "What differs from the reported run: ";
+        return ran + " " + localized("Report", "That is the configuration of the reported run.");
+    std::string listed;
     for (std::size_t i = 0; i < differences.size(); ++i)
-        sentence += (i ? "; " : "") + differences[i];
-    return sentence + ". The cases show the method, not this run's solver settings.";
+        listed += (i ? "; " : "") + differences[i];
+    return ran + " " +
+           withArguments(localized("Report",
+                                   "What differs from the reported run: %1. The cases show the method, not this "
+                                   "run's solver settings."),
+                         {listed});
 }
 
 } // namespace
@@ -91,7 +111,7 @@ std::string validationAgainstRun(const ValidationConfiguration& validation, cons
 report::Section runsSection(const std::vector<const study::Artifact*>& runs, const ReportOptions& options,
                             const Progress& progress)
 {
-    report::Section section{"runs", "Runs: parameters, solver, validation", {}};
+    report::Section section{"runs", localized("Report", "Runs: parameters, solver, validation"), {}};
     std::set<std::string> validated; // commands whose solver's cases are in the section
     for (std::size_t i = 0; i < runs.size(); ++i)
     {
@@ -99,45 +119,56 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
         const SolverInfo solver = solverOf(run);
         report::Table summary;
         summary.caption = run.name + " (" + run.id + ")";
-        summary.columns = {"Item", "Value"};
+        summary.columns = {localized("Report", "Item"), localized("Report", "Value")};
         const auto& parameters = run.provenance.parameters;
         const std::string protocol = textOr(parameters, "protocol");
         const std::string device = textOr(parameters, "device");
-        summary.rows = {{"Solver", solver.description},
-                        {"Command", run.provenance.command + (protocol.empty() ? "" : " --protocol " + protocol)},
-                        {"Backend", textOr(parameters, "backend", "cpu") + (device.empty() ? "" : " (" + device + ")")},
-                        {"Steps", textOr(run.attributes, "steps", "1 (steady solve)")},
-                        {"Wall-clock time", [&] {
-                             const auto seconds = runMetric(run, "wall_clock_s", "", "s");
-                             return seconds ? seconds->text + " s" : std::string("not recorded");
-                         }()},
-                        {"Convergence", runStatusOf(run).convergenceText()},
-                        {"Inputs", [&] {
-                             std::string list;
-                             for (const std::string& input : run.provenance.inputs)
-                                 list += (list.empty() ? "" : ", ") + input;
-                             return list;
-                         }()},
-                        {"Made", run.provenance.time + " by VascuSim " + run.provenance.softwareVersion}};
-        for (const std::string& warning : run.warnings)
-            summary.rows.push_back({"Warning", warning});
+        summary.rows = {
+            {localized("Report", "Solver"), solver.description},
+            {localized("Report", "Command"),
+             run.provenance.command + (protocol.empty() ? "" : " --protocol " + protocol)},
+            {localized("Report", "Backend"),
+             textOr(parameters, "backend", "cpu") + (device.empty() ? "" : " (" + device + ")")},
+            {localized("Report", "Steps"), textOr(run.attributes, "steps", localized("Report", "1 (steady solve)"))},
+            {localized("Report", "Wall-clock time"),
+             [&]
+             {
+                 const auto seconds = runMetric(run, "wall_clock_s", "", "s");
+                 return seconds ? seconds->text + " s" : localized("Report", "not recorded");
+             }()},
+            {localized("Report", "Convergence"), runStatusOf(run).convergenceText(true)},
+            {localized("Report", "Inputs"),
+             [&]
+             {
+                 std::string list;
+                 for (const std::string& input : run.provenance.inputs)
+                     list += (list.empty() ? "" : ", ") + input;
+                 return list;
+             }()},
+            {localized("Report", "Made"), withArguments(localized("Report", "%1 by VascuSim %2"),
+                                                        {run.provenance.time, run.provenance.softwareVersion})}};
+        for (const std::string& warning : run.warnings) // the solver's words, as it wrote them
+            summary.rows.push_back({localized("Report", "Warning"), warning});
         section.blocks.push_back(summary);
-        section.blocks.push_back(parameterTable(run, solver.parameters, solver.declared, "Parameters of " + run.id));
+        section.blocks.push_back(parameterTable(run, solver.parameters, solver.declared,
+                                                withArguments(localized("Report", "Parameters of %1"), {run.id})));
 
         if (!options.validate)
             continue;
         if (!validated.count(run.provenance.command)) // each solver's cases once
         {
             report::Table cases;
-            cases.caption = "Validation of this solver in this build (vascusim-cli validate)";
-            cases.columns = {"Case", "What is compared", "Result"};
+            cases.caption = localized("Report", "Validation of this solver in this build (vascusim-cli validate)");
+            cases.columns = {localized("Report", "Case"), localized("Report", "What is compared"),
+                             localized("Report", "Result")};
             for (std::size_t c = 0; c < solver.validationCases.size(); ++c)
             {
                 const Progress part =
                     progress.subRange((i + double(c) / solver.validationCases.size()) / runs.size(),
                                       (i + double(c + 1) / solver.validationCases.size()) / runs.size());
                 const ValidationResult result = solver.validate(solver.validationCases[c], part);
-                cases.rows.push_back({result.name, result.description, result.passed() ? "passed" : "FAILED"});
+                cases.rows.push_back({result.name, result.description,
+                                      result.passed() ? localized("Report", "passed") : localized("Report", "FAILED")});
             }
             validated.insert(run.provenance.command);
             section.blocks.push_back(cases);

@@ -22,12 +22,21 @@ std::vector<report::Plot> alongCenterlinePlots(const study::Artifact& flow)
     const std::vector<SectionAlongCenterline> along = sectionsAlongCenterline(flow);
     if (along.empty())
         return {};
-    report::Plot velocity{"Velocity along the centerline (cross-sections of the same run, time-averaged)",
-                          "Distance along the centerline from the inlet [mm]", "Velocity [m/s]", {}, {}};
-    report::PlotSeries peak{"peak (fastest 5 % of the section)", {}}, mean{"mean (flow rate / area)", {}};
-    report::Plot pressure{"Mean pressure along the centerline (gauge; the same sections)",
-                          "Distance along the centerline from the inlet [mm]", "Pressure [mmHg]", {}, {}};
-    report::PlotSeries level{"section mean", {}};
+    const std::string distance = localized("Report", "Distance along the centerline from the inlet [mm]");
+    report::Plot velocity{
+        localized("Report", "Velocity along the centerline (cross-sections of the same run, time-averaged)"),
+        distance,
+        localized("Report", "Velocity [m/s]"),
+        {},
+        {}};
+    report::PlotSeries peak{localized("Report", "peak (fastest 5 % of the section)"), {}},
+        mean{localized("Report", "mean (flow rate / area)"), {}};
+    report::Plot pressure{localized("Report", "Mean pressure along the centerline (gauge; the same sections)"),
+                          distance,
+                          localized("Report", "Pressure [mmHg]"),
+                          {},
+                          {}};
+    report::PlotSeries level{localized("Report", "section mean"), {}};
     for (const SectionAlongCenterline& s : along)
     {
         peak.points.emplace_back(s.arcMm, s.peakVelocityMS);
@@ -65,8 +74,9 @@ QImage wallShearPicture(const study::Study& study, const study::Artifact& surfac
     if (largest == tawss.size())
         throw Error("no vertex of the wall-load surface was sampled");
     const double high = std::max(tawss[largest], 1e-6);
-    const viz::Callout callout{surface.points[largest], "largest TAWSS " + fixed(high, 2) + " Pa"};
-    return viz::snapshotSurface(surface, "tawss_pa", {"TAWSS [Pa]", 0.0, high}, pixels, {callout});
+    const viz::Callout callout{surface.points[largest],
+                               withArguments(localized("Report", "largest TAWSS %1 Pa"), {fixed(high, 2)})};
+    return viz::snapshotSurface(surface, "tawss_pa", {localized("Report", "TAWSS [Pa]"), 0.0, high}, pixels, {callout});
 }
 
 } // namespace
@@ -81,55 +91,73 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
     const imaging::SegmentMeasurements& worst = measured->segments[std::size_t(measured->worstStenosisSegment)];
     if (worst.diameterStenosisPercent < kReportedStenosisPercent)
         return std::nullopt;
-    report::Section section{"stenosis", "Stenosis / blockage", {}};
-    report::MetricTable geometry{"The narrowest segment (cross-sections perpendicular to the centerline)", {}};
-    geometry.rows = {report::metric("diameter_stenosis_percent", "Diameter stenosis", worst.diameterStenosisPercent, "%"),
-                     report::metric("area_stenosis_percent", "Area stenosis", worst.areaStenosisPercent, "%"),
-                     report::metric("reference_diameter_mm", "Reference diameter (median)", worst.referenceDiameterMm, "mm"),
-                     report::metric("minimal_diameter_mm", "Minimal diameter", worst.minimalDiameterMm, "mm"),
-                     report::metric("segment_length_mm", "Segment length", worst.lengthMm, "mm")};
+    report::Section section{"stenosis", localized("Report", "Stenosis / blockage"), {}};
+    report::MetricTable geometry{
+        localized("Report", "The narrowest segment (cross-sections perpendicular to the centerline)"), {}};
+    geometry.rows = {
+        report::metric("diameter_stenosis_percent", localized("Report", "Diameter stenosis"),
+                       worst.diameterStenosisPercent, "%"),
+        report::metric("area_stenosis_percent", localized("Report", "Area stenosis"), worst.areaStenosisPercent, "%"),
+        report::metric("reference_diameter_mm", localized("Report", "Reference diameter (median)"),
+                       worst.referenceDiameterMm, "mm"),
+        report::metric("minimal_diameter_mm", localized("Report", "Minimal diameter"), worst.minimalDiameterMm, "mm"),
+        report::metric("segment_length_mm", localized("Report", "Segment length"), worst.lengthMm, "mm")};
     section.blocks.push_back(geometry);
-    report::Plot plot = diameterPlot(worst, "Diameter along the narrowest segment");
-    plot.references = {{"reference diameter", worst.referenceDiameterMm}};
+    report::Plot plot = diameterPlot(worst, localized("Report", "Diameter along the narrowest segment"));
+    plot.references = {{localized("Report", "reference diameter"), worst.referenceDiameterMm}};
     section.blocks.push_back(plot);
     const study::Artifact* flow = newestRun(study, "simulate sph", {}, {}, study::ArtifactKind::Run);
     if (!flow || !flow->attributes.count("stenosis_peak_velocity_ratio"))
     {
         section.blocks.push_back(report::Paragraph{
-            std::string("Blockage velocity ratios and the pressure drop come from a blood-flow run (Flow > Blood Flow, "
-                        "vascusim-cli simulate sph); ") +
-            (flow ? "the study's run has no settled flow to measure them (see its warnings)." : "this study has none.")});
+            flow ? localized("Report",
+                             "Blockage velocity ratios and the pressure drop come from a blood-flow run (Flow > "
+                             "Blood Flow, vascusim-cli simulate sph); the study's run has no settled flow to "
+                             "measure them (see its warnings).")
+                 : localized("Report",
+                             "Blockage velocity ratios and the pressure drop come from a blood-flow run (Flow > "
+                             "Blood Flow, vascusim-cli simulate sph); this study has none.")});
         return section;
     }
     const std::string compared = textOr(flow->attributes, "stenosis_compared_at_mm", "?");
     const std::string outlets = textOr(flow->provenance.parameters, "outlet_pressure_pa", "0");
-    report::MetricTable figures{"Blood flow (SPH run " + flow->id + "): the throat against the sections " +
-                                    numberText(std::atof(compared.c_str())) +
-                                    " mm upstream and downstream along the centerline, time-averaged over the settled "
-                                    "flow; pressures gauge, the outlets at " +
-                                    numberText(units::paToMmHg(std::atof(outlets.c_str()))) + " mmHg",
-                                {}};
-    addMetrics(figures, *flow,
-               {{"stenosis_peak_velocity_ratio", "Peak velocity ratio, throat / upstream (PSV ratio's counterpart)", ""},
-                {"stenosis_peak_velocity_ratio_downstream", "Peak velocity ratio, throat / downstream", ""},
-                {"stenosis_mean_velocity_ratio", "Mean velocity ratio, throat / upstream (a mass check)", ""},
-                {"stenosis_area_ratio", "Flow area ratio, upstream / throat (from the particles)", ""},
-                {"stenosis_throat_peak_velocity_m_s", "Throat peak velocity (fastest 5 % of the section)", "m/s"},
-                {"stenosis_pressure_drop_mmhg", "Pressure drop, upstream - downstream (section means)", "mmHg"},
-                {"stenosis_pressure_ratio", "Distal / proximal pressure (gauge)", ""},
-                {"stenosis_flow_rate_ratio", "Flow rate throat / upstream (1 when settled)", ""}});
+    report::MetricTable figures{
+        withArguments(localized("Report", "Blood flow (SPH run %1): the throat against the sections %2 mm upstream and "
+                                          "downstream along the centerline, time-averaged over the settled flow; "
+                                          "pressures gauge, the outlets at %3 mmHg"),
+                      {flow->id, numberText(std::atof(compared.c_str())),
+                       numberText(units::paToMmHg(std::atof(outlets.c_str())))}),
+        {}};
+    addMetrics(
+        figures, *flow,
+        {{"stenosis_peak_velocity_ratio",
+          localized("Report", "Peak velocity ratio, throat / upstream (PSV ratio's counterpart)"), ""},
+         {"stenosis_peak_velocity_ratio_downstream", localized("Report", "Peak velocity ratio, throat / downstream"),
+          ""},
+         {"stenosis_mean_velocity_ratio", localized("Report", "Mean velocity ratio, throat / upstream (a mass check)"),
+          ""},
+         {"stenosis_area_ratio", localized("Report", "Flow area ratio, upstream / throat (from the particles)"), ""},
+         {"stenosis_throat_peak_velocity_m_s", localized("Report", "Throat peak velocity (fastest 5 % of the section)"),
+          "m/s"},
+         {"stenosis_pressure_drop_mmhg", localized("Report", "Pressure drop, upstream - downstream (section means)"),
+          "mmHg"},
+         {"stenosis_pressure_ratio", localized("Report", "Distal / proximal pressure (gauge)"), ""},
+         {"stenosis_flow_rate_ratio", localized("Report", "Flow rate throat / upstream (1 when settled)"), ""}});
     section.blocks.push_back(figures);
     if (flow->attributes.count("wall_largest_tawss_pa"))
     {
-        report::MetricTable wall{"Wall loads on the lumen surface (the same run and window; tau_w from the particles "
-                                 "next to the wall)",
+        report::MetricTable wall{localized("Report",
+                                           "Wall loads on the lumen surface (the same run and window; tau_w from "
+                                           "the particles next to the wall)"),
                                  {}};
-        addMetrics(wall, *flow,
-                   {{"wall_largest_tawss_pa", "Largest time-averaged wall shear stress (TAWSS)", "Pa", 1.0, 2},
-                    {"wall_mean_tawss_pa", "Mean TAWSS over the surface", "Pa", 1.0, 2},
-                    {"wall_largest_osi", "Largest oscillatory shear index (0: steady)", "", 1.0, 2},
-                    {"wall_highest_pressure_pa", "Highest wall pressure (gauge)", "Pa"},
-                    {"wall_lowest_pressure_pa", "Lowest wall pressure (gauge)", "Pa"}});
+        addMetrics(
+            wall, *flow,
+            {{"wall_largest_tawss_pa", localized("Report", "Largest time-averaged wall shear stress (TAWSS)"), "Pa",
+              1.0, 2},
+             {"wall_mean_tawss_pa", localized("Report", "Mean TAWSS over the surface"), "Pa", 1.0, 2},
+             {"wall_largest_osi", localized("Report", "Largest oscillatory shear index (0: steady)"), "", 1.0, 2},
+             {"wall_highest_pressure_pa", localized("Report", "Highest wall pressure (gauge)"), "Pa"},
+             {"wall_lowest_pressure_pa", localized("Report", "Lowest wall pressure (gauge)"), "Pa"}});
         section.blocks.push_back(wall);
     }
     for (report::Plot& plot : alongCenterlinePlots(*flow))
@@ -139,16 +167,19 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
         const auto& parameters = loads->provenance.parameters;
         const double from = std::atof(textOr(parameters, "averaged_from_s", "0").c_str()),
                      over = std::atof(textOr(parameters, "averaged_over_s", "0").c_str());
-        const std::string caption = "Time-averaged wall shear stress (TAWSS, Pa) on the lumen surface, averaged over " +
-                                    fixed(1e3 * from, 1) + "-" + fixed(1e3 * (from + over), 1) +
-                                    " ms of the same run, seen from the front; grey: no value (past an open end, or "
-                                    "within a kernel support of it)";
+        const std::string caption = withArguments(
+            localized("Report",
+                      "Time-averaged wall shear stress (TAWSS, Pa) on the lumen surface, averaged over %1-%2 ms "
+                      "of the same run, seen from the front; grey: no value (past an open end, or within a "
+                      "kernel support of it)"),
+            {fixed(1e3 * from, 1), fixed(1e3 * (from + over), 1)});
         section.blocks.push_back(snapshotOrNote(caption, options, [&] {
             return wallShearPicture(study, *loads, QSize(options.snapshotPixels, options.snapshotPixels * 3 / 4));
         }));
     }
-    if (const std::string warning = runStatusWarning(runStatusOf(*flow)); !warning.empty())
-        section.blocks.push_back(report::Paragraph{"These blood-flow figures come from a run that is " + warning + "."});
+    if (const std::string warning = runStatusOf(*flow).warningText(true); !warning.empty())
+        section.blocks.push_back(report::Paragraph{
+            withArguments(localized("Report", "These blood-flow figures come from a run that is %1."), {warning})});
     return section;
 }
 

@@ -3,6 +3,7 @@
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Units.h"
 #include "vsim/viz/Snapshot.h"
 
@@ -71,10 +72,11 @@ std::optional<report::Paragraph> markRunStatus(report::MetricTable& table, const
     if (status.converged() && status.complete())
         return std::nullopt;
     if (!status.converged())
-        table.caption += " - NOT CONVERGED";
+        table.caption += localized("Report", " - NOT CONVERGED");
     if (!status.complete())
-        table.caption += " - STOPPED EARLY";
-    return report::Paragraph{"Read these figures with care: " + runStatusWarning(status) + "."};
+        table.caption += localized("Report", " - STOPPED EARLY");
+    return report::Paragraph{
+        withArguments(localized("Report", "Read these figures with care: %1."), {status.warningText(true)})};
 }
 
 namespace {
@@ -98,12 +100,13 @@ std::string parameterValueText(const std::string& recorded, const std::string& u
 /// device are in the run's summary table, not here.
 std::optional<std::string> sourceLabel(const std::string& key)
 {
-    static const std::map<std::string, std::string> kLabels = {
-        {"tip", "Catheter tip (node, or x,y,z in mm)"},
-        {"tumour_mm", "Tumour sphere (x, y, z, radius; mm)"},
-        {"tumour_label", "Tumour label"},
-        {"network_file", "Network file"},
-        {"control_points", "Control points"}};
+    const std::map<std::string, std::string> kLabels = {
+        // looked up now: the language may have changed
+        {"tip", localized("Report", "Catheter tip (node, or x,y,z in mm)")},
+        {"tumour_mm", localized("Report", "Tumour sphere (x, y, z, radius; mm)")},
+        {"tumour_label", localized("Report", "Tumour label")},
+        {"network_file", localized("Report", "Network file")},
+        {"control_points", localized("Report", "Control points")}};
     if (key == "protocol" || key == "backend" || key == "device")
         return std::nullopt;
     const auto found = kLabels.find(key);
@@ -123,11 +126,12 @@ report::Table parameterTable(const study::Artifact& run, const std::vector<Param
 {
     report::Table table;
     table.caption = caption;
-    table.columns = {"Parameter", "Value"};
+    table.columns = {localized("Report", "Parameter"), localized("Report", "Value")};
     const auto& recorded = run.provenance.parameters;
     for (const ParameterSpec& spec : specs)
         if (const auto found = recorded.find(spec.key); found != recorded.end())
-            table.rows.push_back({spec.label, parameterValueText(found->second, spec.unit)});
+            table.rows.push_back(
+                {localizedText("vsim::Parameters", spec.label), parameterValueText(found->second, spec.unit)});
     std::map<std::string, ParameterSpec> declared;
     for (const ParameterSpec& spec : declaredSpecs)
         declared.emplace(spec.key, spec);
@@ -157,9 +161,9 @@ report::Plot diameterPlot(const imaging::SegmentMeasurements& segment, const std
 {
     report::Plot plot;
     plot.caption = caption;
-    plot.xLabel = "Distance along the centerline [mm]";
-    plot.yLabel = "Equivalent diameter [mm]";
-    report::PlotSeries series{"diameter", {}};
+    plot.xLabel = localized("Report", "Distance along the centerline [mm]");
+    plot.yLabel = localized("Report", "Equivalent diameter [mm]");
+    report::PlotSeries series{localized("Report", "diameter"), {}};
     for (const imaging::CrossSection& section : segment.sections)
         if (!section.nearJunction && section.equivalentDiameterMm > 0.0)
             series.points.emplace_back(section.arcLengthMm, section.equivalentDiameterMm);
@@ -171,14 +175,15 @@ report::Block snapshotOrNote(const std::string& caption, const ReportOptions& op
                              const std::function<QImage()>& render)
 {
     if (!viz::canRenderSnapshots())
-        return report::Paragraph{caption + ": not rendered (3D snapshots need a display; run under xvfb-run)."};
+        return report::Paragraph{withArguments(
+            localized("Report", "%1: not rendered (3D snapshots need a display; run under xvfb-run)."), {caption})};
     try
     {
         return report::Figure{caption, options.renderSnapshot ? options.renderSnapshot(render) : render()};
     }
     catch (const Error& error)
     {
-        return report::Paragraph{caption + ": not rendered (" + error.what() + ")."};
+        return report::Paragraph{withArguments(localized("Report", "%1: not rendered (%2)."), {caption, error.what()})};
     }
 }
 

@@ -4,6 +4,7 @@
 // with units, parameter tables from the declarations, offscreen snapshots that degrade to a note.
 
 #include "vsim/app/StudyReport.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/report/ReportModel.h"
@@ -41,7 +42,7 @@ std::optional<report::Metric> runMetric(const study::Artifact& run, const std::s
 struct MetricRow
 {
     const char* key;
-    const char* label;
+    std::string label; ///< in the reader's language
     const char* unit;
     double scale = 1.0;
     int decimals = -1; ///< -1: the unit's (report::formatMetric)

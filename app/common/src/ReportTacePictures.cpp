@@ -31,12 +31,9 @@ QImage widened(const QImage& image, int pixels)
 
 report::Block territoryPicture(const study::Study& study, const study::Artifact& run, int pixels)
 {
-    const std::string caption =
-        "Perfused territory from the tip on the axial CT slice through the largest lesion (W 400 / L 40 HU; patient "
-        "right on the left; the workstation's colours): green perfused liver, blue perfused tumour, red tumour not "
-        "perfused, yellow margin not perfused, the liver not perfused unmarked";
     if (!run.provenance.parameters.count("liver_label"))
-        return report::Paragraph{"Perfused territory: the run had no liver label (simulate network --liver-label)."};
+        return report::Paragraph{
+            localized("Report", "Perfused territory: the run had no liver label (simulate network --liver-label).")};
     try
     {
         std::vector<std::string> warnings;
@@ -45,7 +42,7 @@ report::Block territoryPicture(const study::Study& study, const study::Artifact&
         setup.parameters.set("working_angle", 0);
         const sim::network::NetworkRunResult again = sim::network::runNetwork(setup);
         if (!again.territories || !again.perfused)
-            return report::Paragraph{"Perfused territory: the run again gave no territory."};
+            return report::Paragraph{localized("Report", "Perfused territory: the run again gave no territory.")};
         const LabelVolume territory = sim::network::territoryLabel(*again.territories, *again.perfused, again.lesions);
         const VolumeGeometry& g = territory.geometry();
         Eigen::Vector3d centre = Eigen::Vector3d::Zero();
@@ -77,12 +74,19 @@ report::Block territoryPicture(const study::Study& study, const study::Artifact&
                 auto mix = [&](double top) { return int(std::lround((1.0 - over[3]) * grey + over[3] * 255.0 * top)); };
                 picture.setPixel(i, j, qRgb(mix(over[0]), mix(over[1]), mix(over[2])));
             }
-        return report::Figure{caption + " (slice z = " + std::to_string(int(std::lround(g.indexToPatient(Eigen::Vector3d(0, 0, k)).z()))) + " mm)",
-                              widened(picture, pixels)};
+        const std::string caption = withArguments(
+            localized("Report",
+                      "Perfused territory from the tip on the axial CT slice through the largest lesion (W 400 "
+                      "/ L 40 HU; patient right on the left; the workstation's colours): green perfused liver, "
+                      "blue perfused tumour, red tumour not perfused, yellow margin not perfused, the liver not "
+                      "perfused unmarked (slice z = %1 mm)"),
+            {std::to_string(int(std::lround(g.indexToPatient(Eigen::Vector3d(0, 0, k)).z())))});
+        return report::Figure{caption, widened(picture, pixels)};
     }
     catch (const Error& error)
     {
-        return report::Paragraph{"Perfused territory: not drawn (" + std::string(error.what()) + ")."};
+        return report::Paragraph{
+            withArguments(localized("Report", "Perfused territory: not drawn (%1)."), {error.what()})};
     }
 }
 
@@ -91,19 +95,21 @@ report::Block workingViewPicture(const VesselNetwork& network, const study::Arti
     const auto lao = run.attributes.find("working_lao_deg"), cranial = run.attributes.find("working_cranial_deg");
     const auto tip = run.attributes.find("tip_node");
     if (lao == run.attributes.end() || cranial == run.attributes.end() || tip == run.attributes.end())
-        return report::Paragraph{"Working angle: none for this run (the tip at the root, or working_angle 0)."};
+        return report::Paragraph{
+            localized("Report", "Working angle: none for this run (the tip at the root, or working_angle 0).")};
     const sim::network::CArmAngles angles{std::stod(lao->second), std::stod(cranial->second)};
     const sim::network::ProjectionImage view = sim::network::dsaProjection(network, int(std::stod(tip->second)), angles);
-    auto side = [](double degrees, const char* plus, const char* minus) {
-        char text[48];
-        std::snprintf(text, sizeof text, "%s %.1f", degrees >= 0.0 ? plus : minus, std::abs(degrees));
-        return std::string(text);
-    };
-    return report::Figure{"DSA-like view at the working angle (" + side(angles.laoDeg, "LAO", "RAO") + ", " +
-                              side(angles.cranialDeg, "cranial", "caudal") +
-                              " deg; patient supine, the head up): the tree the contrast opacifies, the path to the tip "
-                              "twice as dense (" + fixed(view.pixelMm, 2) + " mm pixels)",
-                          widened(projectionPicture(view), pixels)};
+    auto side = [](double degrees, const std::string& plus, const std::string& minus)
+    { return (degrees >= 0.0 ? plus : minus) + " " + fixed(std::abs(degrees), 1); };
+    return report::Figure{
+        withArguments(localized("Report",
+                                "DSA-like view at the working angle (%1, %2 deg; patient supine, the head up): "
+                                "the tree the contrast opacifies, the path to the tip twice as dense (%3 mm "
+                                "pixels)"),
+                      {side(angles.laoDeg, "LAO", "RAO"),
+                       side(angles.cranialDeg, localized("Report", "cranial"), localized("Report", "caudal")),
+                       fixed(view.pixelMm, 2)}),
+        widened(projectionPicture(view), pixels)};
 }
 
 } // namespace vsim::app::detail

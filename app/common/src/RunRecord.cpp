@@ -33,12 +33,7 @@ RunStatus runStatusOf(const study::Artifact& run)
 
 std::string runStatusWarning(const RunStatus& status)
 {
-    std::string warning;
-    if (!status.converged())
-        warning = "NOT CONVERGED (" + status.convergenceText().substr(std::string("not converged: ").size()) + ")";
-    if (!status.complete())
-        warning += (warning.empty() ? "" : "; ") + std::string("STOPPED EARLY (") + status.stopText() + ")";
-    return warning;
+    return status.warningText();
 }
 
 std::string runStatusJson(const RunStatus& status)

@@ -3,6 +3,7 @@
 #include "ReportSections.h"
 #include "ReportSupport.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Version.h"
 
 #include <algorithm>
@@ -37,6 +38,7 @@ std::string readableDate(const std::string& date)
 report::ReportHeader header(const study::Study& study, bool anonymize)
 {
     report::ReportHeader h;
+    h.title = localized("Report", "VascuSim planning report");
     h.anonymized = anonymize;
     if (!anonymize)
     {
@@ -78,27 +80,30 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
         if (auto section = detail::aaaSection(study, options, sections, runs, progress.subRange(0.0, 0.4)))
             report.sections.push_back(std::move(*section));
         else
-            report.notRun.push_back("AAA rupture-risk review: the study has no AAA sac (vascusim-cli sac) and no "
-                                    "wall-mechanics run (simulate fem).");
+            report.notRun.push_back(localized("Report",
+                                              "AAA rupture-risk review: the study has no AAA sac (vascusim-cli "
+                                              "sac) and no wall-mechanics run (simulate fem)."));
     }
     if (wanted("stenosis"))
     {
         if (auto section = detail::stenosisSection(study, sections, options, progress.subRange(0.4, 0.6)))
             report.sections.push_back(std::move(*section));
         else
-            report.notRun.push_back("Stenosis / blockage: no segment of the centerlines narrows by 40 % or more, and "
-                                    "the study has no blood-flow run (velocity ratios, pressure drop).");
+            report.notRun.push_back(localized("Report", "Stenosis / blockage: no segment of the centerlines narrows by "
+                                                        "40 % or more, and the study has no blood-flow run (velocity "
+                                                        "ratios, pressure drop)."));
     }
     if (wanted("chemoembolization"))
     {
         if (auto section = detail::drugSection(study, options, runs))
             report.sections.push_back(std::move(*section));
         else
-            report.notRun.push_back("Chemoembolization: the study has no drug-delivery run (simulate network).");
+            report.notRun.push_back(
+                localized("Report", "Chemoembolization: the study has no drug-delivery run (simulate network)."));
     }
     if (wanted("smoke"))
-        report.notRun.push_back("Surgical smoke: the study has no smoke run (the smoke solver is not part of this "
-                                "version).");
+        report.notRun.push_back(localized("Report", "Surgical smoke: the study has no smoke run (the smoke solver is "
+                                                    "not part of this version)."));
     if (wanted("measurements"))
         if (auto section = detail::measurementsSection(study))
             report.sections.push_back(std::move(*section));

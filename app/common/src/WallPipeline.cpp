@@ -161,7 +161,7 @@ std::vector<viz::Callout> sacPeakCallouts(const study::Artifact& run)
         const bool behind = hours && hours->value > 3.0 && hours->value < 9.0; // the far side seen from the front
         callouts.push_back({Eigen::Vector3d(x->value, y->value, z->value),
                             name + " " + value->text + unit + (hours ? ", " + hours->text + " h" : "") +
-                                (behind ? " (posterior)" : "")});
+                                (behind ? localized("Report", " (posterior)") : std::string())});
     }
     return callouts;
 }

@@ -1,5 +1,6 @@
 #include "vsim/core/RunStatus.h"
 
+#include "vsim/core/Localized.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,38 +46,69 @@ void RunStatus::recordSolve(int solveIterations, double residual, double solveTo
         ++unconvergedSolves;
 }
 
-std::string RunStatus::convergenceText() const
+std::string RunStatus::convergenceText(bool forPeople) const
 {
-    const std::string force = forceResidual < 0.0 ? std::string()
-                                                   : "force residual " + shortNumber(forceResidual) + " (tolerance " +
-                                                         shortNumber(forceTolerance) + ")";
+    const LocalizedWhen localized{forPeople};
+    const std::string force = forceResidual < 0.0
+                                  ? std::string()
+                                  : withArguments(localized("vsim::RunStatus", "force residual %1 (tolerance %2)"),
+                                                  {shortNumber(forceResidual), shortNumber(forceTolerance)});
     if (converged())
-        return force.empty() ? "converged" : "converged, " + force;
-    std::string text = "not converged: ";
+        return force.empty() ? localized("vsim::RunStatus", "converged")
+                             : withArguments(localized("vsim::RunStatus", "converged, %1"), {force});
+    std::string details;
     if (unconvergedSolves > 0)
     {
-        text += std::to_string(unconvergedSolves) + " of " + std::to_string(solves) + " solves ended above their tolerance";
+        details = withArguments(localized("vsim::RunStatus", "%1 of %2 solves ended above their tolerance"),
+                                {std::to_string(unconvergedSolves), std::to_string(solves)});
         if (iterationCap > 0)
-            text += " at the " + std::to_string(iterationCap) + "-iteration cap";
-        text += ", worst relative residual " + shortNumber(worstResidual) + " (tolerance " + shortNumber(tolerance) + ")";
+            details +=
+                withArguments(localized("vsim::RunStatus", " at the %1-iteration cap"), {std::to_string(iterationCap)});
+        details += withArguments(localized("vsim::RunStatus", ", worst relative residual %1 (tolerance %2)"),
+                                 {shortNumber(worstResidual), shortNumber(tolerance)});
         if (!force.empty())
-            text += "; ";
+            details += "; ";
     }
-    return text + force;
+    return withArguments(localized("vsim::RunStatus", "not converged: %1"), {details + force});
 }
 
-std::string RunStatus::stopText() const
+std::string RunStatus::stopText(bool forPeople) const
 {
+    const LocalizedWhen localized{forPeople};
     if (stoppedBy == StoppedBy::End)
         return {};
-    std::string text = stoppedBy == StoppedBy::Cancel        ? "cancelled"
-                       : stoppedBy == StoppedBy::Guard       ? "stopped by a guard"
-                                                             : "stopped by its end condition";
+    std::string text = stoppedBy == StoppedBy::Cancel  ? localized("vsim::RunStatus", "cancelled")
+                       : stoppedBy == StoppedBy::Guard ? localized("vsim::RunStatus", "stopped by a guard")
+                                                       : localized("vsim::RunStatus", "stopped by its end condition");
     if (!reachedQuantity.empty())
-        text += " at " + reachedQuantity + " " + fixed(reached) + " of " + fixed(target) + " " + reachedUnit;
+    {
+        const std::string quantity = reachedQuantity == "pressure" ? localized("vsim::RunStatus", "pressure")
+                                     : reachedQuantity == "time"   ? localized("vsim::RunStatus", "time")
+                                                                   : reachedQuantity;
+        text += withArguments(localized("vsim::RunStatus", " at %1 %2 of %3 %4"),
+                              {quantity, fixed(reached), fixed(target), reachedUnit});
+    }
     if (!stopMessage.empty())
         text += ": " + stopMessage;
     return text;
+}
+
+std::string RunStatus::warningText(bool forPeople) const
+{
+    const LocalizedWhen localized{forPeople};
+    std::string warning;
+    if (!converged())
+    {
+        // The details without the "not converged: " that convergenceText() starts with.
+        const std::string text = convergenceText(forPeople);
+        const std::string lead = withArguments(localized("vsim::RunStatus", "not converged: %1"), {""});
+        warning = withArguments(localized("vsim::RunStatus", "NOT CONVERGED (%1)"),
+                                {text.compare(0, lead.size(), lead) == 0 ? text.substr(lead.size()) : text});
+    }
+    if (!complete())
+        warning += (warning.empty() ? "" : "; ") +
+                   withArguments(localized("vsim::RunStatus", "STOPPED EARLY (%1)"), {stopText(forPeople)});
+    return warning;
 }
 
 std::map<std::string, double> RunStatus::metrics() const

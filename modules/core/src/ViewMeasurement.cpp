@@ -1,6 +1,7 @@
 #include "vsim/core/ViewMeasurement.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 
 #include <cmath>
 #include <cstdio>
@@ -31,29 +32,40 @@ ViewMeasurement::Kind measurementKindFromName(const std::string& name)
     throw Error("unknown measurement kind '" + name + "' (ruler, angle or roi)");
 }
 
-std::string measurementText(const ViewMeasurement& m)
+std::string measurementText(const ViewMeasurement& m, bool forPeople)
 {
-    char text[160];
+    const LocalizedWhen localized{forPeople};
+    const auto number = [](double value, const char* format)
+    {
+        char text[64];
+        std::snprintf(text, sizeof text, format, value);
+        return std::string(text);
+    };
     switch (m.kind)
     {
-    case ViewMeasurement::Kind::Ruler: std::snprintf(text, sizeof text, "%.1f mm", m.lengthMm); break;
-    case ViewMeasurement::Kind::Angle: std::snprintf(text, sizeof text, "%.1f deg", m.angleDegrees); break;
+    case ViewMeasurement::Kind::Ruler: return number(m.lengthMm, "%.1f") + " mm";
+    case ViewMeasurement::Kind::Angle: return number(m.angleDegrees, "%.1f") + " deg";
     case ViewMeasurement::Kind::Roi:
-        std::snprintf(text, sizeof text, "mean %.0f HU, SD %.0f HU, area %.0f mm2", m.meanHu, m.sdHu, m.areaMm2);
-        break;
+        return withArguments(localized("vsim::ViewMeasurement", "mean %1 HU, SD %2 HU, area %3 mm2"),
+                             {number(m.meanHu, "%.0f"), number(m.sdHu, "%.0f"), number(m.areaMm2, "%.0f")});
     }
-    return text;
+    return {};
 }
 
-std::string measurementDefinition(ViewMeasurement::Kind kind)
+std::string measurementDefinition(ViewMeasurement::Kind kind, bool forPeople)
 {
+    const LocalizedWhen localized{forPeople};
     switch (kind)
     {
-    case ViewMeasurement::Kind::Ruler: return "straight distance between the two points in the patient frame (mm)";
-    case ViewMeasurement::Kind::Angle: return "angle at the middle point between the two arms (degrees)";
+    case ViewMeasurement::Kind::Ruler:
+        return localized("vsim::ViewMeasurement", "straight distance between the two points in the patient frame (mm)");
+    case ViewMeasurement::Kind::Angle:
+        return localized("vsim::ViewMeasurement", "angle at the middle point between the two arms (degrees)");
     case ViewMeasurement::Kind::Roi:
-        return "CT values (HU) of the voxels nearest the in-plane samples inside the ellipse, one sample per finest "
-               "voxel spacing squared: mean and sample standard deviation; area of the ellipse, pi a b (mm2)";
+        return localized("vsim::ViewMeasurement",
+                         "CT values (HU) of the voxels nearest the in-plane samples inside the "
+                         "ellipse, one sample per finest voxel spacing squared: mean and sample "
+                         "standard deviation; area of the ellipse, pi a b (mm2)");
     }
     return {};
 }

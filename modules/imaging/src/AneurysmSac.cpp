@@ -4,6 +4,7 @@
 #include "SacLandmarks.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 
 #include <Eigen/Geometry>
 
@@ -27,32 +28,53 @@ constexpr double kSacNeckFactor = 1.5, kSacFallbackMm = 30.0;
 
 } // namespace
 
-const std::map<std::string, std::string>& aneurysmSacDefinitions()
+std::map<std::string, std::string> aneurysmSacDefinitions(bool forPeople)
 {
-    static const std::map<std::string, std::string> definitions{
-        {"max_outer_diameter_mm", "largest outer-wall to outer-wall caliper perpendicular to the centerline of the outer "
-                                  "contour, thrombus and wall included (SVS 2018)"},
-        {"max_outer_diameter_z_mm", "patient position (LPS) of the centre of that cross-section"},
-        {"lumen_diameter_at_max_mm", "equivalent diameter of the contrast lumen's perpendicular cross-section there"},
-        {"neck_diameter_mm", "outer diameter perpendicular to the centerline at the origin of the lowest renal artery "
-                             "(the median 3 to 8 mm below it, clear of the branch; without the renal arteries in the "
-                             "label: the narrowest within 80 mm above the widest section)"},
-        {"neck_length_mm", "centerline length from the lowest renal artery's origin to the start of the sac"},
-        {"neck_angulation_deg", "angle between the neck axis (lowest renal artery to the sac's start) and the sac axis "
-                                "(the sac's start to its end)"},
-        {"lowest_renal_z_mm", "patient position (LPS z) of the lowest renal artery's origin"},
-        {"left_common_iliac_diameter_mm", "outer diameter of the left common iliac artery perpendicular to its "
-                                          "centerline: the median 10 to 40 mm below the crotch"},
-        {"right_common_iliac_diameter_mm", "outer diameter of the right common iliac artery perpendicular to its "
-                                           "centerline: the median 10 to 40 mm below the crotch"},
-        {"sac_threshold_diameter_mm", "1.5 x the neck diameter (30 mm without a neck)"},
-        {"wall_thickness_mm", "assumed, not measured: the wall is that shell inside the outer contour"},
-        {"sac_volume_ml", "volume inside the outer contour between the perpendicular planes at the sac's ends"},
-        {"sac_length_mm", "centerline length of the sac (outer diameter over the threshold, contiguous)"},
-        {"max_thrombus_thickness_mm", "largest distance from the lumen to the wall's inner surface along the rays of an "
-                                      "axial section, within the sac"},
+    const LocalizedWhen localized{forPeople};
+    return {
+        {"max_outer_diameter_mm",
+         localized("vsim::imaging::AneurysmSac",
+                   "largest outer-wall to outer-wall caliper perpendicular to the centerline of the outer "
+                   "contour, thrombus and wall included (SVS 2018)")},
+        {"max_outer_diameter_z_mm",
+         localized("vsim::imaging::AneurysmSac", "patient position (LPS) of the centre of that cross-section")},
+        {"lumen_diameter_at_max_mm",
+         localized("vsim::imaging::AneurysmSac",
+                   "equivalent diameter of the contrast lumen's perpendicular cross-section there")},
+        {"neck_diameter_mm",
+         localized("vsim::imaging::AneurysmSac",
+                   "outer diameter perpendicular to the centerline at the origin of the lowest renal artery "
+                   "(the median 3 to 8 mm below it, clear of the branch; without the renal arteries in the "
+                   "label: the narrowest within 80 mm above the widest section)")},
+        {"neck_length_mm",
+         localized("vsim::imaging::AneurysmSac",
+                   "centerline length from the lowest renal artery's origin to the start of the sac")},
+        {"neck_angulation_deg",
+         localized("vsim::imaging::AneurysmSac",
+                   "angle between the neck axis (lowest renal artery to the sac's start) and the sac axis "
+                   "(the sac's start to its end)")},
+        {"lowest_renal_z_mm",
+         localized("vsim::imaging::AneurysmSac", "patient position (LPS z) of the lowest renal artery's origin")},
+        {"left_common_iliac_diameter_mm",
+         localized("vsim::imaging::AneurysmSac", "outer diameter of the left common iliac artery perpendicular to its "
+                                                 "centerline: the median 10 to 40 mm below the crotch")},
+        {"right_common_iliac_diameter_mm",
+         localized("vsim::imaging::AneurysmSac", "outer diameter of the right common iliac artery perpendicular to its "
+                                                 "centerline: the median 10 to 40 mm below the crotch")},
+        {"sac_threshold_diameter_mm",
+         localized("vsim::imaging::AneurysmSac", "1.5 x the neck diameter (30 mm without a neck)")},
+        {"wall_thickness_mm", localized("vsim::imaging::AneurysmSac",
+                                        "assumed, not measured: the wall is that shell inside the outer contour")},
+        {"sac_volume_ml",
+         localized("vsim::imaging::AneurysmSac",
+                   "volume inside the outer contour between the perpendicular planes at the sac's ends")},
+        {"sac_length_mm", localized("vsim::imaging::AneurysmSac",
+                                    "centerline length of the sac (outer diameter over the threshold, contiguous)")},
+        {"max_thrombus_thickness_mm",
+         localized("vsim::imaging::AneurysmSac",
+                   "largest distance from the lumen to the wall's inner surface along the rays of an "
+                   "axial section, within the sac")},
     };
-    return definitions;
 }
 
 AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, double wallThicknessMm,
@@ -212,8 +234,9 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
         f["lowest_renal_z_mm"] = centreline[*renal].z();
     for (const auto& [key, value] : commonIliacDiameters(ct, lumen, sections))
         f[key] = value;
+    const std::map<std::string, std::string> definitions = aneurysmSacDefinitions();
     for (const auto& [key, value] : f)
-        if (const auto definition = aneurysmSacDefinitions().find(key); definition != aneurysmSacDefinitions().end())
+        if (const auto definition = definitions.find(key); definition != definitions.end())
             sac.definitions[key] = definition->second;
     progress.report(1.0, "sac measured");
     return sac;

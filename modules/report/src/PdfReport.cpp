@@ -2,6 +2,7 @@
 
 #include "PlotPainter.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 
 #include <QBuffer>
 #include <QFile>
@@ -46,29 +47,31 @@ public:
         text(h.title, 16, true);
         space(2);
         std::vector<std::pair<std::string, std::string>> rows;
+        const std::string notRecorded = localized("Report", "(not recorded)");
+        const auto given = [&](const std::string& value) { return value.empty() ? notRecorded : value; };
         if (h.anonymized)
-            rows.push_back({"Patient", "anonymized"});
+            rows.push_back({localized("Report", "Patient"), localized("Report", "anonymized")});
         else
         {
-            rows.push_back({"Patient", h.patientName.empty() ? "(not recorded)" : h.patientName});
-            rows.push_back({"Patient ID", h.patientId.empty() ? "(not recorded)" : h.patientId});
+            rows.push_back({localized("Report", "Patient"), given(h.patientName)});
+            rows.push_back({localized("Report", "Patient ID"), given(h.patientId)});
             if (!h.patientBirthDate.empty())
-                rows.push_back({"Birth date", h.patientBirthDate});
-            rows.push_back({"Institution", h.institution.empty() ? "(not recorded)" : h.institution});
+                rows.push_back({localized("Report", "Birth date"), h.patientBirthDate});
+            rows.push_back({localized("Report", "Institution"), given(h.institution)});
         }
-        rows.push_back({"Study date", h.studyDate.empty() ? "(not recorded)" : h.studyDate});
+        rows.push_back({localized("Report", "Study date"), given(h.studyDate)});
         if (!h.studyDescription.empty())
-            rows.push_back({"Study", h.studyDescription});
+            rows.push_back({localized("Report", "Study"), h.studyDescription});
         if (!h.seriesDescription.empty())
-            rows.push_back({"Series", h.seriesDescription});
-        rows.push_back({"Software", h.softwareVersion});
-        rows.push_back({"Report date", h.reportDate});
+            rows.push_back({localized("Report", "Series"), h.seriesDescription});
+        rows.push_back({localized("Report", "Software"), h.softwareVersion});
+        rows.push_back({localized("Report", "Report date"), h.reportDate});
         Table table;
         for (auto& [key, value] : rows)
             table.rows.push_back({key, value});
         drawTable(table, {0.25, 0.75}, false);
         space(2);
-        boxed(kPlanningStatement);
+        boxed(planningStatement());
         space(4);
     }
 
@@ -90,7 +93,7 @@ public:
         if (analyses.empty())
             return;
         space(3);
-        text("Analyses not run", 13, true);
+        text(localized("Report", "Analyses not run"), 13, true);
         space(1);
         for (const std::string& analysis : analyses)
             text("- " + analysis, 9.5, false);
@@ -127,11 +130,14 @@ private:
     {
         m_painter.setFont(fontOf(7.5, false));
         m_painter.setPen(Qt::darkGray);
-        const QString left = QString::fromStdString(m_report.header.softwareVersion + " - " + m_report.header.title +
-                                                    " - planning support, needs clinical judgement");
+        const QString left =
+            QString::fromStdString(m_report.header.softwareVersion + " - " + m_report.header.title + " - " +
+                                   localized("Report", "planning support, needs clinical judgement"));
         const QRectF band(m_area.left(), m_area.bottom() + 3 * m_mm, m_area.width(), 5 * m_mm);
         m_painter.drawText(band, Qt::AlignLeft | Qt::AlignVCenter, left);
-        m_painter.drawText(band, Qt::AlignRight | Qt::AlignVCenter, QString("page %1").arg(m_page));
+        m_painter.drawText(
+            band, Qt::AlignRight | Qt::AlignVCenter,
+            QString::fromStdString(withArguments(localized("Report", "page %1"), {std::to_string(m_page)})));
         m_painter.setPen(Qt::black);
     }
 
@@ -201,7 +207,7 @@ private:
         ensure(captionHeight(metrics.caption) + 15 * m_mm); // a caption does not end a page alone
         caption(metrics.caption);
         Table table;
-        table.columns = {"Metric", "Value"};
+        table.columns = {localized("Report", "Metric"), localized("Report", "Value")};
         for (const Metric& m : metrics.rows)
             table.rows.push_back({m.label, m.unit.empty() ? m.text : m.text + " " + m.unit});
         drawTable(table, {0.68, 0.32}, true);

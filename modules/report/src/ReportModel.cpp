@@ -1,9 +1,17 @@
 #include "vsim/report/ReportModel.h"
 
+#include "vsim/core/Localized.h"
+
 #include <cmath>
 #include <cstdio>
 
 namespace vsim::report {
+
+std::string planningStatement()
+{
+    return localized("Report", "Results are computed from the patient's images by physical models for planning support "
+                               "only. They are not a diagnosis and need clinical judgement.");
+}
 
 std::string formatMetric(double value)
 {

@@ -45,10 +45,15 @@ struct RunStatus
     /// True when the run reached its target (ran to its end or a physical end condition).
     bool complete() const { return stoppedBy == StoppedBy::End || stoppedBy == StoppedBy::EndCondition; }
     /// "converged" or "not converged: 200 of 200 solves ended at the 100-iteration cap, worst relative residual
-    /// 3.1e-03 above the tolerance 1e-06".
-    std::string convergenceText() const;
-    /// "" when the run ran to its end; else e.g. "stopped by a guard at pressure 9.1 of 16.0 kPa: <message>".
-    std::string stopText() const;
+    /// 3.1e-03 above the tolerance 1e-06". `forPeople`: in the reader's language (localized(), for reports);
+    /// else English, as the study and metrics.json keep it.
+    std::string convergenceText(bool forPeople = false) const;
+    /// "" when the run ran to its end; else e.g. "stopped by a guard at pressure 9.1 of 16.0 kPa: <message>" (the
+    /// solver's message stays as it wrote it).
+    std::string stopText(bool forPeople = false) const;
+    /// What a reader must know before reading the figures: "" when the solves converged and the run reached its
+    /// target; else "NOT CONVERGED (...)" and / or "STOPPED EARLY (...)", joined by "; ".
+    std::string warningText(bool forPeople = false) const;
 
     /// The record as run metrics (run_converged 0/1, run_solves, run_unconverged_solves, run_mean_iterations,
     /// run_iteration_cap, run_tolerance, run_final_residual, run_worst_residual, run_complete 0/1, with a force

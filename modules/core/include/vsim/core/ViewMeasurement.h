@@ -42,9 +42,9 @@ std::string kindName(ViewMeasurement::Kind kind);
 ViewMeasurement::Kind measurementKindFromName(const std::string& name);
 /// The measurement's figures in words with their units, e.g. "45.2 mm", "32.5 deg", "mean 245 HU, SD 12 HU, area
 /// 154 mm2 (ellipse)".
-std::string measurementText(const ViewMeasurement& measurement);
+std::string measurementText(const ViewMeasurement& measurement, bool forPeople = false);
 /// What the figures mean (for tooltips and the report).
-std::string measurementDefinition(ViewMeasurement::Kind kind);
+std::string measurementDefinition(ViewMeasurement::Kind kind, bool forPeople = false);
 
 /// The ROI ellipse: centre, semi-axes (mm) along planeRight and planeUp.
 struct RoiEllipse

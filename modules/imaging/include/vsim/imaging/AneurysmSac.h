@@ -38,8 +38,9 @@ struct AneurysmSac
     std::vector<std::string> warnings;
 };
 
-/// The definition of each figure measureAneurysmSac reports (by key), as the CLI, the dock and the report print it.
-const std::map<std::string, std::string>& aneurysmSacDefinitions();
+/// The definition of each figure measureAneurysmSac reports (by key), as the CLI, the dock and the report print it;
+/// `forPeople`: in the reader's language (core Localized.h), else English as the study keeps it.
+std::map<std::string, std::string> aneurysmSacDefinitions(bool forPeople = false);
 
 /// Throws vsim::Error when the lumen label holds no aorta-sized cross-section (>= 50 mm2) or when over 20 % of the
 /// rays meet no outer edge within 60 mm (no fat around the aorta: no contour to measure), vsim::Cancelled.

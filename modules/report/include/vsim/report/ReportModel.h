@@ -14,14 +14,13 @@
 
 namespace vsim::report {
 
-/// Said on every report: the results support planning and do not replace clinical judgement.
-inline constexpr const char* kPlanningStatement =
-    "Results are computed from the patient's images by physical models for planning support only. They are not a "
-    "diagnosis and need clinical judgement.";
+/// Said on every report, in the reader's language: the results support planning and do not replace clinical
+/// judgement.
+std::string planningStatement();
 
 struct ReportHeader
 {
-    std::string title = "VascuSim planning report";
+    std::string title = "VascuSim planning report";       ///< app::buildStudyReport gives it in the reader's language
     std::string patientName, patientId, patientBirthDate; ///< empty when anonymized
     std::string studyDate, studyDescription, seriesDescription, institution;
     std::string softwareVersion; ///< "VascuSim 0.2.0"
