@@ -2487,6 +2487,257 @@
     </message>
 </context>
 <context>
+    <name>vsim::Progress</name>
+    <message>
+        <source>painting the anatomy</source>
+        <translation>Anatomie wird gezeichnet</translation>
+    </message>
+    <message>
+        <source>scanner noise</source>
+        <translation>Scannerrauschen</translation>
+    </message>
+    <message>
+        <source>rendering truth labels</source>
+        <translation>Referenz-Labels werden gerendert</translation>
+    </message>
+    <message>
+        <source>writing DICOM</source>
+        <translation>DICOM wird geschrieben</translation>
+    </message>
+    <message>
+        <source>decoding DICOM</source>
+        <translation>DICOM wird dekodiert</translation>
+    </message>
+    <message>
+        <source>DICOM imported</source>
+        <translation>DICOM importiert</translation>
+    </message>
+    <message>
+        <source>reading DICOM headers</source>
+        <translation>DICOM-Header werden gelesen</translation>
+    </message>
+    <message>
+        <source>phantom written</source>
+        <translation>Phantom geschrieben</translation>
+    </message>
+    <message>
+        <source>point-spread function</source>
+        <translation>Punktspreizfunktion</translation>
+    </message>
+    <message>
+        <source>resampling</source>
+        <translation>Neuabtastung</translation>
+    </message>
+    <message>
+        <source>aortic lumen followed</source>
+        <translation>Aortenlumen verfolgt</translation>
+    </message>
+    <message>
+        <source>outer contour</source>
+        <translation>Außenkontur</translation>
+    </message>
+    <message>
+        <source>thrombus and wall</source>
+        <translation>Thrombus und Wand</translation>
+    </message>
+    <message>
+        <source>perpendicular diameters</source>
+        <translation>senkrechte Durchmesser</translation>
+    </message>
+    <message>
+        <source>sac measured</source>
+        <translation>Aneurysmasack gemessen</translation>
+    </message>
+    <message>
+        <source>fast marching</source>
+        <translation>Fast Marching</translation>
+    </message>
+    <message>
+        <source>minimal paths</source>
+        <translation>minimale Pfade</translation>
+    </message>
+    <message>
+        <source>centerlines</source>
+        <translation>Mittellinien</translation>
+    </message>
+    <message>
+        <source>segmented</source>
+        <translation>segmentiert</translation>
+    </message>
+    <message>
+        <source>liver</source>
+        <translation>Leber</translation>
+    </message>
+    <message>
+        <source>smoothing</source>
+        <translation>Glättung</translation>
+    </message>
+    <message>
+        <source>growing</source>
+        <translation>Wachstum</translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation>Öffnung</translation>
+    </message>
+    <message>
+        <source>closing</source>
+        <translation>Schließung</translation>
+    </message>
+    <message>
+        <source>lesion grown</source>
+        <translation>Läsion gewachsen</translation>
+    </message>
+    <message>
+        <source>organ grown</source>
+        <translation>Organ gewachsen</translation>
+    </message>
+    <message>
+        <source>partial-volume radii</source>
+        <translation>Partialvolumen-Radien</translation>
+    </message>
+    <message>
+        <source>thinning</source>
+        <translation>Ausdünnung</translation>
+    </message>
+    <message>
+        <source>pruning</source>
+        <translation>Beschneiden</translation>
+    </message>
+    <message>
+        <source>skeleton</source>
+        <translation>Skelett</translation>
+    </message>
+    <message>
+        <source>measuring</source>
+        <translation>Messung</translation>
+    </message>
+    <message>
+        <source>vesselness</source>
+        <translation>Gefäßhaftigkeit</translation>
+    </message>
+    <message>
+        <source>finding contrast-filled vessels</source>
+        <translation>kontrastierte Gefäße werden gesucht</translation>
+    </message>
+    <message>
+        <source>segmenting vessels</source>
+        <translation>Gefäße werden segmentiert</translation>
+    </message>
+    <message>
+        <source>level set</source>
+        <translation>Level-Set</translation>
+    </message>
+    <message>
+        <source>clean-up</source>
+        <translation>Bereinigung</translation>
+    </message>
+    <message>
+        <source>iso-surface</source>
+        <translation>Isofläche</translation>
+    </message>
+    <message>
+        <source>decimating</source>
+        <translation>Vereinfachung</translation>
+    </message>
+    <message>
+        <source>surface</source>
+        <translation>Oberfläche</translation>
+    </message>
+    <message>
+        <source>damping</source>
+        <translation>Dämpfung</translation>
+    </message>
+    <message>
+        <source>quasi-static tearing at %1</source>
+        <translation>quasistatisches Einreißen bei %1</translation>
+    </message>
+    <message>
+        <source>lesions and margins</source>
+        <translation>Läsionen und Säume</translation>
+    </message>
+    <message>
+        <source>ranking catheter positions by coverage</source>
+        <translation>Katheterpositionen werden nach Abdeckung geordnet</translation>
+    </message>
+    <message>
+        <source>flow solved</source>
+        <translation>Fluss gelöst</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>fertig</translation>
+    </message>
+    <message>
+        <source>ranking catheter positions</source>
+        <translation>Katheterpositionen werden geordnet</translation>
+    </message>
+    <message>
+        <source>perfusion territories</source>
+        <translation>Perfusionsterritorien</translation>
+    </message>
+    <message>
+        <source>liver voxels</source>
+        <translation>Leber-Voxel</translation>
+    </message>
+    <message>
+        <source>working angle</source>
+        <translation>Arbeitswinkel</translation>
+    </message>
+    <message>
+        <source>converting to HU</source>
+        <translation>Umrechnung in HU</translation>
+    </message>
+    <message>
+        <source>reading %1</source>
+        <translation>%1 wird gelesen</translation>
+    </message>
+    <message>
+        <source>read</source>
+        <translation>gelesen</translation>
+    </message>
+    <message>
+        <source>vessel ends from the centerlines</source>
+        <translation>Gefäßenden aus den Mittellinien</translation>
+    </message>
+    <message>
+        <source>particles from the lumen label</source>
+        <translation>Partikel aus dem Lumen-Label</translation>
+    </message>
+    <message>
+        <source>the lumen&apos;s surface for the wall loads</source>
+        <translation>Lumenoberfläche für die Wandlasten</translation>
+    </message>
+    <message>
+        <source>demo study written</source>
+        <translation>Demo-Studie geschrieben</translation>
+    </message>
+    <message>
+        <source>mask read</source>
+        <translation>Maske gelesen</translation>
+    </message>
+    <message>
+        <source>AAA section</source>
+        <translation>AAA-Abschnitt</translation>
+    </message>
+    <message>
+        <source>report</source>
+        <translation>Bericht</translation>
+    </message>
+    <message>
+        <source>lumen surface</source>
+        <translation>Lumenoberfläche</translation>
+    </message>
+    <message>
+        <source>remeshing</source>
+        <translation>Neuvernetzung</translation>
+    </message>
+    <message>
+        <source>wall</source>
+        <translation>Wand</translation>
+    </message>
+</context>
+<context>
     <name>vsim::RunStatus</name>
     <message>
         <source>force residual %1 (tolerance %2)</source>

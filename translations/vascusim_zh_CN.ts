@@ -2487,6 +2487,257 @@
     </message>
 </context>
 <context>
+    <name>vsim::Progress</name>
+    <message>
+        <source>painting the anatomy</source>
+        <translation>绘制解剖结构</translation>
+    </message>
+    <message>
+        <source>scanner noise</source>
+        <translation>扫描仪噪声</translation>
+    </message>
+    <message>
+        <source>rendering truth labels</source>
+        <translation>渲染真值标签</translation>
+    </message>
+    <message>
+        <source>writing DICOM</source>
+        <translation>写入 DICOM</translation>
+    </message>
+    <message>
+        <source>decoding DICOM</source>
+        <translation>解码 DICOM</translation>
+    </message>
+    <message>
+        <source>DICOM imported</source>
+        <translation>DICOM 已导入</translation>
+    </message>
+    <message>
+        <source>reading DICOM headers</source>
+        <translation>读取 DICOM 头信息</translation>
+    </message>
+    <message>
+        <source>phantom written</source>
+        <translation>体模已写入</translation>
+    </message>
+    <message>
+        <source>point-spread function</source>
+        <translation>点扩散函数</translation>
+    </message>
+    <message>
+        <source>resampling</source>
+        <translation>重采样</translation>
+    </message>
+    <message>
+        <source>aortic lumen followed</source>
+        <translation>已追踪主动脉管腔</translation>
+    </message>
+    <message>
+        <source>outer contour</source>
+        <translation>外轮廓</translation>
+    </message>
+    <message>
+        <source>thrombus and wall</source>
+        <translation>血栓与管壁</translation>
+    </message>
+    <message>
+        <source>perpendicular diameters</source>
+        <translation>垂直直径</translation>
+    </message>
+    <message>
+        <source>sac measured</source>
+        <translation>瘤囊已测量</translation>
+    </message>
+    <message>
+        <source>fast marching</source>
+        <translation>快速行进</translation>
+    </message>
+    <message>
+        <source>minimal paths</source>
+        <translation>最小路径</translation>
+    </message>
+    <message>
+        <source>centerlines</source>
+        <translation>中心线</translation>
+    </message>
+    <message>
+        <source>segmented</source>
+        <translation>已分割</translation>
+    </message>
+    <message>
+        <source>liver</source>
+        <translation>肝脏</translation>
+    </message>
+    <message>
+        <source>smoothing</source>
+        <translation>平滑</translation>
+    </message>
+    <message>
+        <source>growing</source>
+        <translation>区域生长</translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation>开运算</translation>
+    </message>
+    <message>
+        <source>closing</source>
+        <translation>闭运算</translation>
+    </message>
+    <message>
+        <source>lesion grown</source>
+        <translation>病灶生长完成</translation>
+    </message>
+    <message>
+        <source>organ grown</source>
+        <translation>器官生长完成</translation>
+    </message>
+    <message>
+        <source>partial-volume radii</source>
+        <translation>部分容积半径</translation>
+    </message>
+    <message>
+        <source>thinning</source>
+        <translation>细化</translation>
+    </message>
+    <message>
+        <source>pruning</source>
+        <translation>剪枝</translation>
+    </message>
+    <message>
+        <source>skeleton</source>
+        <translation>骨架</translation>
+    </message>
+    <message>
+        <source>measuring</source>
+        <translation>测量中</translation>
+    </message>
+    <message>
+        <source>vesselness</source>
+        <translation>血管性</translation>
+    </message>
+    <message>
+        <source>finding contrast-filled vessels</source>
+        <translation>查找造影剂充盈的血管</translation>
+    </message>
+    <message>
+        <source>segmenting vessels</source>
+        <translation>分割血管</translation>
+    </message>
+    <message>
+        <source>level set</source>
+        <translation>水平集</translation>
+    </message>
+    <message>
+        <source>clean-up</source>
+        <translation>清理</translation>
+    </message>
+    <message>
+        <source>iso-surface</source>
+        <translation>等值面</translation>
+    </message>
+    <message>
+        <source>decimating</source>
+        <translation>网格简化</translation>
+    </message>
+    <message>
+        <source>surface</source>
+        <translation>表面</translation>
+    </message>
+    <message>
+        <source>damping</source>
+        <translation>阻尼</translation>
+    </message>
+    <message>
+        <source>quasi-static tearing at %1</source>
+        <translation>准静态撕裂，压力 %1</translation>
+    </message>
+    <message>
+        <source>lesions and margins</source>
+        <translation>病灶与边缘</translation>
+    </message>
+    <message>
+        <source>ranking catheter positions by coverage</source>
+        <translation>按覆盖度排序导管位置</translation>
+    </message>
+    <message>
+        <source>flow solved</source>
+        <translation>流动已求解</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>ranking catheter positions</source>
+        <translation>排序导管位置</translation>
+    </message>
+    <message>
+        <source>perfusion territories</source>
+        <translation>灌注区域</translation>
+    </message>
+    <message>
+        <source>liver voxels</source>
+        <translation>肝脏体素</translation>
+    </message>
+    <message>
+        <source>working angle</source>
+        <translation>工作角度</translation>
+    </message>
+    <message>
+        <source>converting to HU</source>
+        <translation>转换为 HU</translation>
+    </message>
+    <message>
+        <source>reading %1</source>
+        <translation>读取 %1</translation>
+    </message>
+    <message>
+        <source>read</source>
+        <translation>已读取</translation>
+    </message>
+    <message>
+        <source>vessel ends from the centerlines</source>
+        <translation>由中心线得到血管末端</translation>
+    </message>
+    <message>
+        <source>particles from the lumen label</source>
+        <translation>由管腔标签生成粒子</translation>
+    </message>
+    <message>
+        <source>the lumen&apos;s surface for the wall loads</source>
+        <translation>用于壁面载荷的管腔表面</translation>
+    </message>
+    <message>
+        <source>demo study written</source>
+        <translation>演示研究已写入</translation>
+    </message>
+    <message>
+        <source>mask read</source>
+        <translation>掩模已读取</translation>
+    </message>
+    <message>
+        <source>AAA section</source>
+        <translation>AAA 部分</translation>
+    </message>
+    <message>
+        <source>report</source>
+        <translation>报告</translation>
+    </message>
+    <message>
+        <source>lumen surface</source>
+        <translation>管腔表面</translation>
+    </message>
+    <message>
+        <source>remeshing</source>
+        <translation>重新划分网格</translation>
+    </message>
+    <message>
+        <source>wall</source>
+        <translation>管壁</translation>
+    </message>
+</context>
+<context>
     <name>vsim::RunStatus</name>
     <message>
         <source>force residual %1 (tolerance %2)</source>

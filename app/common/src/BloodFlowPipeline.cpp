@@ -3,6 +3,7 @@
 #include "SphPipelineSupport.h"
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Units.h"
 #include "vsim/mesh/ParticleSeeding.h"
 #include "vsim/mesh/VesselSurface.h"
@@ -118,7 +119,7 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
 {
     BloodFlowRun flow;
     const sim::sph::SphStepperFactory stepper = chooseSphStepper(setup.backend, flow.device, flow.warnings);
-    progress.report(0.0, "vessel ends from the centerlines");
+    progress.report(0.0, localized("vsim::Progress", "vessel ends from the centerlines"));
     const SphVessels vessels = sphVessels(study, setup.centerlinesId, "the inlet", flow.warnings, progress.subRange(0.0, 0.05));
     const VesselNetwork& network = vessels.network;
     const std::string& labelId = vessels.labelId;
@@ -256,7 +257,7 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
         }
         flow.boundaries.push_back(boundary);
     }
-    progress.report(0.05, "particles from the lumen label");
+    progress.report(0.05, localized("vsim::Progress", "particles from the lumen label"));
     SimulationInput input;
     input.data["particles"] = mesh::seedVesselParticles(label, seeding);
     input.sources["particles"] = labelId;
@@ -277,7 +278,7 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
         flow.sectionCentresMm.push_back(centre);
     }
     // The wall loads on the lumen's surface, averaged over the sections' window, every 10th step.
-    progress.report(0.05, "the lumen's surface for the wall loads");
+    progress.report(0.05, localized("vsim::Progress", "the lumen's surface for the wall loads"));
     ParameterSet surfaceParameters(mesh::surfaceParameters());
     surfaceParameters.set("target_vertices", double(kWallSurfaceVertices));
     flow.wallSurface = mesh::extractVesselSurface(label, 1, surfaceParameters).surface;

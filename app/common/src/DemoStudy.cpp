@@ -1,6 +1,7 @@
 #include "vsim/app/DemoStudy.h"
 
 #include "vsim/app/DicomStudyImport.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PhantomWriter.h"
@@ -25,7 +26,7 @@ fs::path ensureDemoStudy(const fs::path& bundle, const Progress& progress)
     const dicom::DicomScanResult scan = dicom::scanDicom(phantom.dicomFolder, progress.subRange(0.6, 0.65));
     importDicomSeriesIntoStudy(demo, chooseSeries(scan, {}), phantom.dicomFolder, {}, progress.subRange(0.65, 0.9));
     demo.save();
-    progress.report(1.0, "demo study written");
+    progress.report(1.0, localized("vsim::Progress", "demo study written"));
     removeWrittenFiles(phantom.written(), scratch);
     return bundle;
 }

@@ -3,6 +3,7 @@
 #include "SphPipelineSupport.h"
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Units.h"
 #include "vsim/mesh/ParticleSeeding.h"
 
@@ -125,7 +126,7 @@ InjectionRun runInjection(const study::Study& study, const InjectionSetup& setup
 {
     InjectionRun injection;
     const sim::sph::SphStepperFactory stepper = chooseSphStepper(setup.backend, injection.device, injection.warnings);
-    progress.report(0.0, "vessel ends from the centerlines");
+    progress.report(0.0, localized("vsim::Progress", "vessel ends from the centerlines"));
     const SphVessels vessels =
         sphVessels(study, setup.centerlinesId, "the needle", injection.warnings, progress.subRange(0.0, 0.05));
     const VesselNetwork& network = vessels.network;
@@ -180,7 +181,7 @@ InjectionRun runInjection(const study::Study& study, const InjectionSetup& setup
             parameters.set(std::string("gravity_") + char('x' + a) + "_m_s2", kGravity * injection.gravityDirection[a]);
 
     // The particles: the lumen's walls with the needle's buffer, the vessel emptied, the other ends opened.
-    progress.report(0.05, "particles from the lumen label");
+    progress.report(0.05, localized("vsim::Progress", "particles from the lumen label"));
     const double depthMm = 2.0 * parameters.get("smoothing_ratio") * spacingMm; // the kernel's support
     mesh::ParticleSeeding seeding;
     seeding.spacingMm = spacingMm;

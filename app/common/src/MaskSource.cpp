@@ -1,6 +1,7 @@
 #include "vsim/app/MaskSource.h"
 
 #include "vsim/app/DicomStudyImport.h"
+#include "vsim/core/Localized.h"
 #include "vsim/dicom/DicomImport.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/DicomSegmentation.h"
@@ -44,7 +45,7 @@ MaskSource readMaskSource(const std::filesystem::path& input, const std::string&
         source.warnings = volume.warnings;
         source.kind = "DICOM mask series";
     }
-    progress.report(1.0, "mask read");
+    progress.report(1.0, localized("vsim::Progress", "mask read"));
     return source;
 }
 

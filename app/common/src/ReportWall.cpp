@@ -279,7 +279,7 @@ std::optional<report::Section> aaaSection(const study::Study& study, const Repor
     else
         section.blocks.push_back(
             report::Paragraph{localized("Report", "The thesis tearing protocol was not run for this study.")});
-    progress.report(1.0, "AAA section");
+    progress.report(1.0, localized("vsim::Progress", "AAA section"));
     return section;
 }
 

@@ -111,7 +111,7 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
         report.sources.push_back(run->id);
     if (wanted("runs") && !runs.empty())
         report.sections.push_back(detail::runsSection(runs, options, progress.subRange(0.6, 1.0)));
-    progress.report(1.0, "report");
+    progress.report(1.0, localized("vsim::Progress", "report"));
     return report;
 }
 

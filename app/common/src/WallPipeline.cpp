@@ -4,6 +4,7 @@
 #include "vsim/app/RunRecord.h"
 #include "vsim/app/SacRecord.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/mesh/SurfaceRemeshing.h"
 #include "vsim/mesh/WallBoundary.h"
 #include "vsim/mesh/VesselSurface.h"
@@ -102,21 +103,21 @@ WallMeshBuild buildWallMesh(const LabelVolume& label, const SkeletonGraph& cente
 {
     ParameterSet surfaceParameters(mesh::surfaceParameters());
     surfaceParameters.set("target_vertices", targetVertices);
-    progress.report(0.0, "lumen surface");
+    progress.report(0.0, localized("vsim::Progress", "lumen surface"));
     const mesh::VesselSurface decimated = mesh::extractVesselSurface(label, 1, surfaceParameters, progress.subRange(0.0, 0.7));
     WallMeshBuild build;
     // Decimation keeps the shape but leaves slivers; remeshing evens the triangles (SurfaceRemeshing.h).
     build.remeshEdgeMm = mesh::edgeForVertexBudget(decimated.surface.area(), targetVertices);
-    progress.report(0.7, "remeshing");
+    progress.report(0.7, localized("vsim::Progress", "remeshing"));
     const TriangleMesh lumen =
         mesh::remeshIsotropic(decimated.surface, mesh::vesselSizing(centerlines, 0.8, build.remeshEdgeMm));
     progress.throwIfCancelled();
-    progress.report(0.9, "wall");
+    progress.report(0.9, localized("vsim::Progress", "wall"));
     build.lumenVertices = lumen.points.size();
     build.smallestSurfaceAngleDeg = mesh::minTriangleAngle(lumen);
     build.wall = mesh::buildWallMesh(lumen, mesh::vesselEnds(centerlines), thicknessMm,
                                      sacLabels ? sacOuterWallDistance(*sacLabels) : mesh::OuterWallDistance{});
-    progress.report(1.0, "wall");
+    progress.report(1.0, localized("vsim::Progress", "wall"));
     return build;
 }
 

@@ -3,6 +3,7 @@
 #include "AnatomyPainter.h"
 #include "ScannerModel.h"
 
+#include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
 
 #include <algorithm>
@@ -77,7 +78,7 @@ CtVolume renderAnatomyCt(const AnatomyPhantom& phantom, const VolumeGeometry& ge
                 canvas.paint(layer);
             canvas.resolve(ideal.values.data() + k * pixels, bloom.values.data() + k * pixels);
         },
-        [&](std::size_t done) { painting.report(double(done) / double(slices), "painting the anatomy"); });
+        [&](std::size_t done) { painting.report(double(done) / double(slices), localized("vsim::Progress", "painting the anatomy")); });
 
     const ScannerSettings& scanner = phantom.scanner;
     const double sigmaXy = scanner.psfFwhmMm / kFwhmPerSigma, sigmaZ = scanner.sliceThicknessMm / kFwhmPerSigma;
@@ -107,7 +108,7 @@ CtVolume renderAnatomyCt(const AnatomyPhantom& phantom, const VolumeGeometry& ge
             for (std::size_t p = 0; p < pixels; ++p)
                 out[p] = std::int16_t(std::clamp(std::lround(slice[p]), long(hu::kMinimum), long(hu::kMaximum)));
         },
-        [&](std::size_t done) { noising.report(double(done) / double(slices), "scanner noise"); });
+        [&](std::size_t done) { noising.report(double(done) / double(slices), localized("vsim::Progress", "scanner noise")); });
     return volume;
 }
 
@@ -118,7 +119,7 @@ LabelVolume renderAnatomyLabels(const AnatomyPhantom& phantom, const VolumeGeome
     const std::size_t pixels = pixelsOf(geometry), slices = std::size_t(geometry.dims[2]);
     parallelFor(
         slices, [&](std::size_t k) { detail::labelSlice(phantom, geometry, int(k), labels.data() + k * pixels); },
-        [&](std::size_t done) { progress.report(double(done) / double(slices), "rendering truth labels"); });
+        [&](std::size_t done) { progress.report(double(done) / double(slices), localized("vsim::Progress", "rendering truth labels")); });
     return labels;
 }
 

@@ -1,6 +1,7 @@
 #include "vsim/dicom/CtSeriesWriter.h"
 
 #include "DcmtkSetup.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
 #include "vsim/core/Version.h"
 
@@ -319,10 +320,10 @@ WrittenSeries writeCtSeries(const CtVolume& pixels, const SliceStack& stack, con
         putFunctionalGroups(dataset, context);
         const std::vector<Uint16> stored = storedValues(pixels.data(), pixels.size(), description.signedPixels);
         dataset.putAndInsertUint16Array(DCM_PixelData, stored.data(), static_cast<unsigned long>(stored.size()));
-        progress.report(0.5, "writing DICOM");
+        progress.report(0.5, localized("vsim::Progress", "writing DICOM"));
         written.files.push_back(folder / fileName(description, 1));
         saveEncoded(file, encodingOf(description.transferSyntax), written.files.back());
-        progress.report(1.0, "writing DICOM");
+        progress.report(1.0, localized("vsim::Progress", "writing DICOM"));
         return written;
     }
 
@@ -344,7 +345,7 @@ WrittenSeries writeCtSeries(const CtVolume& pixels, const SliceStack& stack, con
             written.files[k] = folder / fileName(description, std::size_t(instance));
             saveEncoded(file, encodingOf(description.transferSyntax), written.files[k]);
         },
-        [&](std::size_t done) { progress.report(double(done) / double(slices), "writing DICOM"); });
+        [&](std::size_t done) { progress.report(double(done) / double(slices), localized("vsim::Progress", "writing DICOM")); });
     return written;
 }
 

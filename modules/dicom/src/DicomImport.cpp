@@ -1,6 +1,7 @@
 #include "vsim/dicom/DicomImport.h"
 
 #include "StackResampler.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
 #include "vsim/dicom/SeriesGeometry.h"
 
@@ -101,7 +102,7 @@ void decodeSorted(const DicomSeries& series, const std::vector<DicomSlice>& sort
                             error.context());
             }
         },
-        [&](std::size_t done) { progress.report(double(done) / double(work.size()), "decoding DICOM"); }, threads);
+        [&](std::size_t done) { progress.report(double(done) / double(work.size()), localized("vsim::Progress", "decoding DICOM")); }, threads);
     clamped = clampedValues;
 }
 
@@ -166,7 +167,7 @@ DicomVolume importDicomSeries(const DicomSeries& series, const DicomImportOption
         std::snprintf(tilt, sizeof tilt, "%.3f", plan.tiltDegrees);
         result.attributes["gantry_tilt_deg"] = tilt;
     }
-    progress.report(1.0, "DICOM imported");
+    progress.report(1.0, localized("vsim::Progress", "DICOM imported"));
     return result;
 }
 

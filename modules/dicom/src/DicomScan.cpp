@@ -1,6 +1,7 @@
 #include "vsim/dicom/DicomScan.h"
 
 #include "DcmtkSetup.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/core/ParallelFor.h"
 
@@ -273,7 +274,7 @@ DicomScanResult scanDicom(const fs::path& input, const Progress& progress)
                 outcomes[f] = Outcome::Damaged;
             }
         },
-        [&](std::size_t done) { progress.report(double(done) / double(files.size()), "reading DICOM headers"); });
+        [&](std::size_t done) { progress.report(double(done) / double(files.size()), localized("vsim::Progress", "reading DICOM headers")); });
 
     std::vector<DicomImageHeader> images;
     for (std::size_t f = 0; f < files.size(); ++f)

@@ -1,5 +1,6 @@
 #include "vsim/dicom/PhantomWriter.h"
 
+#include "vsim/core/Localized.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/dicom/AnatomyPhantom.h"
 #include "vsim/dicom/PhantomRender.h"
@@ -57,7 +58,7 @@ PhantomFiles writePhantom(PhantomKind kind, const PhantomOptions& options, const
     truthFile << truth;
     if (!truthFile.flush())
         throw Error("cannot write truth.json", {{"file", files.truthJson.string()}});
-    progress.report(1.0, "phantom written");
+    progress.report(1.0, localized("vsim::Progress", "phantom written"));
     return files;
 }
 

@@ -1,5 +1,6 @@
 #include "ScannerModel.h"
 
+#include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
 
 #include <algorithm>
@@ -83,7 +84,7 @@ void blurAlongAxis(FloatVolume& volume, int axis, double sigmaVoxels, const Prog
                     volume.values[start + n * stride[axis]] = blurred[n];
             }
         },
-        [&](std::size_t done) { progress.report(double(done) / double(items), "point-spread function"); });
+        [&](std::size_t done) { progress.report(double(done) / double(items), localized("vsim::Progress", "point-spread function")); });
 }
 
 void addCorrelatedNoise(float* slice, int columns, int rows, double noiseHu, double grainVoxels, std::uint64_t seed,

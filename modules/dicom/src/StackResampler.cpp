@@ -1,5 +1,6 @@
 #include "StackResampler.h"
 
+#include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
 
 #include <algorithm>
@@ -66,7 +67,7 @@ CtVolume resampleStack(const CtVolume& pixels, const SliceStack& stack, const st
                     slice[index] = std::isnan(value) ? kPaddingHu : std::int16_t(std::lround(value));
                 }
         },
-        [&](std::size_t done) { progress.report(double(done) / grid.dims[2], "resampling"); });
+        [&](std::size_t done) { progress.report(double(done) / grid.dims[2], localized("vsim::Progress", "resampling")); });
     return out;
 }
 

@@ -86,7 +86,7 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
         throw Error("the wall thickness must be 0..5 mm", {{"value", std::to_string(wallThicknessMm)}});
     const VolumeGeometry& g = ct.geometry();
     std::vector<Section> sections = trackAorta(lumen);
-    progress.report(0.1, "aortic lumen followed");
+    progress.report(0.1, localized("vsim::Progress", "aortic lumen followed"));
 
     AneurysmSac sac;
     sac.labels = LabelVolume(g);
@@ -96,7 +96,7 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
     for (std::size_t s = 0; s < sections.size(); ++s)
     {
         castRays(ct, lumen, sections[s]);
-        progress.report(0.1 + 0.4 * double(s + 1) / double(sections.size()), "outer contour");
+        progress.report(0.1 + 0.4 * double(s + 1) / double(sections.size()), localized("vsim::Progress", "outer contour"));
     }
     // The outer wall is the aorta's edge against fat or a denser neighbour; where most rays meet neither within
     // 60 mm (no fat around the aorta: an analytic phantom, a cachectic patient) there is no contour to measure.
@@ -130,7 +130,7 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
             }
         const Vector2d centre = sum / double(std::max<std::size_t>(count, 1));
         section.outerCentreMm = g.indexToPatient(Vector3d(centre.x(), centre.y(), section.k));
-        progress.report(0.5 + 0.1 * double(s + 1) / double(sections.size()), "thrombus and wall");
+        progress.report(0.5 + 0.1 * double(s + 1) / double(sections.size()), localized("vsim::Progress", "thrombus and wall"));
     }
 
     // The outer contour's centerline, smoothed over +-5 mm, and the perpendicular sections.
@@ -153,7 +153,7 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
             perpendicularSection(sections, g, &Section::outer, centreline[s], tangent);
         sections[s].lumenAreaMm2 = perpendicularSection(sections, g, &Section::lumenEdge, centreline[s], tangent).second;
         sections[s].arcMm = s == 0 ? 0.0 : sections[s - 1].arcMm + (centreline[s] - centreline[s - 1]).norm();
-        progress.report(0.6 + 0.35 * double(s + 1) / double(sections.size()), "perpendicular diameters");
+        progress.report(0.6 + 0.35 * double(s + 1) / double(sections.size()), localized("vsim::Progress", "perpendicular diameters"));
     }
 
     // The widest section, the neck above it, the sac around it.
@@ -238,7 +238,7 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
     for (const auto& [key, value] : f)
         if (const auto definition = definitions.find(key); definition != definitions.end())
             sac.definitions[key] = definition->second;
-    progress.report(1.0, "sac measured");
+    progress.report(1.0, localized("vsim::Progress", "sac measured"));
     return sac;
 }
 

@@ -1,6 +1,7 @@
 #include "vsim/imaging/Centerlines.h"
 
 #include "LabelGeometry.h"
+#include "vsim/core/Localized.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <Eigen/Dense>
@@ -136,7 +137,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
     const LabelVolume binary = cropLabel(label, value, 2).binary;
     const VolumeGeometry& geometry = binary.geometry();
     const RealVolume distance = insideDistanceMm(binary, 1);
-    progress.report(0.2, "fast marching");
+    progress.report(0.2, localized("vsim::Progress", "fast marching"));
 
     // Speed: fastest on the medial axis, ((d + h/2) / (peak + h/2))^power with d the distance of a voxel's centre to
     // the wall's voxels and h the finest spacing (the wall itself lies half a voxel out: a vessel two voxels across
@@ -191,7 +192,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
     marching->SetInput(interop::toItk(speed)); // zero speed outside the lumen: those voxels are never reached
     marching->Update();
     const RealVolume arrival = interop::fromItk<float>(marching->GetOutput());
-    progress.report(0.6, "minimal paths");
+    progress.report(0.6, localized("vsim::Progress", "minimal paths"));
 
     auto timeAt = [&](const std::array<int, 3>& v) { return double(arrival.at(v[0], v[1], v[2])); };
     constexpr double kUnreached = 1e30;
@@ -302,7 +303,7 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
         }
         result.edges.push_back(std::move(edge));
     }
-    progress.report(1.0, "centerlines");
+    progress.report(1.0, localized("vsim::Progress", "centerlines"));
     return result;
 }
 

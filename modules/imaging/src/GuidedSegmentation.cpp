@@ -6,6 +6,7 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Hounsfield.h"
+#include "vsim/core/Localized.h"
 
 #include <algorithm>
 #include <array>
@@ -405,7 +406,7 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
                                   " mm) or a branch limit: the vessel continues beyond the label");
     if (voxels == 0)
         throw Error("the points grew no vessel: pick them inside the contrast-filled lumen");
-    progress.report(1.0, "segmented");
+    progress.report(1.0, localized("vsim::Progress", "segmented"));
     return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include "MaskOps.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Median.h"
 
 #include <algorithm>
@@ -142,14 +143,14 @@ LesionGrowing growLesion(const CtVolume& ct, const std::vector<Eigen::Vector3d>&
                 smooth[boxIndex(i, j, k)] = ct.at(first[0] + i, first[1] + j, first[2] + k);
                 inside[boxIndex(i, j, k)] = inLiver(first[0] + i, first[1] + j, first[2] + k) ? 1 : 0;
             }
-        progress.report(0.2 * double(k + 1) / size[2], "liver");
+        progress.report(0.2 * double(k + 1) / size[2], localized("vsim::Progress", "liver"));
     }
     const double sigmaMm = parameters.get("lesion_smoothing_mm");
     for (int a = 0; a < 3; ++a)
     {
         progress.throwIfCancelled();
         smoothAxis(smooth, dims, a, sigmaMm / g.spacing[a]);
-        progress.report(0.2 + 0.15 * (a + 1), "smoothing");
+        progress.report(0.2 + 0.15 * (a + 1), localized("vsim::Progress", "smoothing"));
     }
     // The parenchyma's level and spread, and the lesion's near the points.
     std::vector<double> parenchyma, core;
@@ -190,7 +191,7 @@ LesionGrowing growLesion(const CtVolume& ct, const std::vector<Eigen::Vector3d>&
     floodFill(dims, seedIndices,
               [&](std::size_t v) { return inside[v] && (hypodense ? smooth[v] <= threshold : smooth[v] >= threshold); },
               grown, true);
-    progress.report(0.7, "growing");
+    progress.report(0.7, localized("vsim::Progress", "growing"));
     const std::array<double, 3> spacing{g.spacing.x(), g.spacing.y(), g.spacing.z()};
     LesionGrowing result;
     std::vector<std::uint8_t> kept = grown;
@@ -213,11 +214,11 @@ LesionGrowing growLesion(const CtVolume& ct, const std::vector<Eigen::Vector3d>&
                 kept[v] = kept[v] && grown[v];
         }
     }
-    progress.report(0.8, "opening");
+    progress.report(0.8, localized("vsim::Progress", "opening"));
     if (const double closing = parameters.get("lesion_closing_mm"); closing > 0.0)
         kept = erodeBall(dims, dilateBall(dims, kept, spacing, closing), spacing, closing);
     kept = withCavitiesFilled(dims, kept);
-    progress.report(0.95, "closing");
+    progress.report(0.95, localized("vsim::Progress", "closing"));
 
     result.label = LabelVolume(g);
     std::size_t voxels = 0;
@@ -234,7 +235,7 @@ LesionGrowing growLesion(const CtVolume& ct, const std::vector<Eigen::Vector3d>&
     result.figures["parenchyma_sd_hu"] = spread;
     result.figures["lesion_hu"] = lesion;
     result.figures["threshold_hu"] = threshold;
-    progress.report(1.0, "lesion grown");
+    progress.report(1.0, localized("vsim::Progress", "lesion grown"));
     return result;
 }
 

@@ -3,6 +3,7 @@
 #include "GuidedHelpers.h"
 #include "MaskOps.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Median.h"
 
 #include <algorithm>
@@ -76,7 +77,7 @@ OrganGrowing growOrgan(const CtVolume& ct, const std::vector<Eigen::Vector3d>& p
         for (int j = 0; j < box.dims[1]; ++j)
             for (int i = 0; i < box.dims[0]; ++i)
                 smooth[box.index(i, j, k)] = float(detail::smoothedHu(ct, box.first[0] + i, box.first[1] + j, box.first[2] + k));
-        progress.report(0.4 * double(k + 1) / box.dims[2], "smoothing");
+        progress.report(0.4 * double(k + 1) / box.dims[2], localized("vsim::Progress", "smoothing"));
     }
     // The points' window: the median and the robust spread of the smoothed HU within 7 mm of them.
     std::vector<double> near;
@@ -108,7 +109,7 @@ OrganGrowing growOrgan(const CtVolume& ct, const std::vector<Eigen::Vector3d>& p
         seedIndices.push_back(box.index(s.x() - box.first[0], s.y() - box.first[1], s.z() - box.first[2]));
     std::vector<std::uint8_t> grown(box.size(), 0);
     floodFill(dims, seedIndices, [&](std::size_t i) { return smooth[i] >= low && smooth[i] <= high; }, grown, true);
-    progress.report(0.55, "growing");
+    progress.report(0.55, localized("vsim::Progress", "growing"));
     std::vector<std::uint8_t> core = grown;
     const int opening = stepsFor(parameters.get("opening_mm"), g.spacing);
     for (int s = 0; s < opening; ++s)
@@ -133,14 +134,14 @@ OrganGrowing growOrgan(const CtVolume& ct, const std::vector<Eigen::Vector3d>& p
         for (std::size_t i = 0; i < kept.size(); ++i)
             kept[i] = kept[i] && grown[i];
     }
-    progress.report(0.75, "opening");
+    progress.report(0.75, localized("vsim::Progress", "opening"));
     const int closing = stepsFor(parameters.get("closing_mm"), g.spacing);
     for (int s = 0; s < closing; ++s)
         kept = dilate6(dims, kept);
     for (int s = 0; s < closing; ++s)
         kept = erode6(dims, kept);
     kept = withCavitiesFilled(dims, kept);
-    progress.report(0.95, "closing");
+    progress.report(0.95, localized("vsim::Progress", "closing"));
 
     result.label = LabelVolume(g);
     std::size_t voxels = 0;
@@ -158,7 +159,7 @@ OrganGrowing growOrgan(const CtVolume& ct, const std::vector<Eigen::Vector3d>& p
     result.figures["window_low_hu"] = low;
     result.figures["window_high_hu"] = high;
     result.figures["seed_median_hu"] = centre;
-    progress.report(1.0, "organ grown");
+    progress.report(1.0, localized("vsim::Progress", "organ grown"));
     return result;
 }
 

@@ -4,6 +4,7 @@
 
 #include "BlurredTubeFit.h"
 #include "TissueProfile.h"
+#include "vsim/core/Localized.h"
 
 #include <Eigen/Geometry>
 
@@ -325,7 +326,7 @@ std::vector<PartialVolumeRadius> measurePass(const CtVolume& ct, const SkeletonG
                     if (distance < owner.distance)
                         owner = {int(e), float(distance), float(arc), owner.inTube};
                 }
-        progress.report(double(e + 1) / double(edges), "partial-volume radii");
+        progress.report(double(e + 1) / double(edges), localized("vsim::Progress", "partial-volume radii"));
     }
     // Clearances. Near a junction the branches' lumens merge (at 35 degrees two 0.7 mm branches part only 2.5 mm
     // from the fork) and thinning places the junction node towards the wider parent: three radii of the widest

@@ -2,6 +2,7 @@
 
 #include "LabelGeometry.h"
 #include "SkeletonGrid.h"
+#include "vsim/core/Localized.h"
 
 #include <algorithm>
 #include <functional>
@@ -58,7 +59,7 @@ void thin(SkeletonGrid& grid, const Progress& progress)
         }
         objects.erase(std::remove_if(objects.begin(), objects.end(), [&](std::size_t i) { return !grid.voxels[i]; }),
                       objects.end());
-        progress.report(1.0 - double(objects.size()) / double(initial), "thinning");
+        progress.report(1.0 - double(objects.size()) / double(initial), localized("vsim::Progress", "thinning"));
     }
 }
 
@@ -427,7 +428,7 @@ SkeletonResult extractSkeleton(const LabelVolume& label, std::uint8_t value, con
         if (vdsmPass(grid, spacing, lumen) == 0)
             break;
     deleteSimpleCrowdedVoxels(grid);
-    progress.report(0.8, "pruning");
+    progress.report(0.8, localized("vsim::Progress", "pruning"));
     // One voxel of margin holds the background nearest to the lumen (the volume's border is not background).
     const CroppedDistance distance = croppedInsideDistanceMm(label, value, 1);
     auto radiusAt = [&](std::size_t index) {
@@ -484,7 +485,7 @@ SkeletonResult extractSkeleton(const LabelVolume& label, std::uint8_t value, con
         result.graph.edges.push_back(std::move(edge));
     }
     result.skeleton = grid.toLabel(geometry);
-    progress.report(1.0, "skeleton");
+    progress.report(1.0, localized("vsim::Progress", "skeleton"));
     return result;
 }
 

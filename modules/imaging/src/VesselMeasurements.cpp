@@ -1,5 +1,6 @@
 #include "vsim/imaging/VesselMeasurements.h"
 
+#include "vsim/core/Localized.h"
 #include "vsim/core/Median.h"
 
 #include <Eigen/Geometry>
@@ -181,7 +182,7 @@ VesselMeasurements measureVessels(const LabelVolume& label, const SkeletonGraph&
             segment.diameterStenosisPercent > result.segments[std::size_t(result.worstStenosisSegment)].diameterStenosisPercent)
             result.worstStenosisSegment = int(result.segments.size());
         result.segments.push_back(std::move(segment));
-        progress.report(double(e + 1) / double(centerlines.edges.size()), "measuring");
+        progress.report(double(e + 1) / double(centerlines.edges.size()), localized("vsim::Progress", "measuring"));
     }
     return result;
 }

@@ -4,6 +4,7 @@
 #include "ShellOffsets.h"
 #include "WorkBox.h"
 
+#include "vsim/core/Localized.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <algorithm>
@@ -63,7 +64,7 @@ public:
             const auto [i, j, k] = m_box.voxel(b);
             image.data()[b] = float(m_ct.at(i, j, k));
         }
-        progress.report(0.0, "vesselness");
+        progress.report(0.0, localized("vsim::Progress", "vesselness"));
         const std::vector<float> vesselness = frangiVesselness(interop::toItk(image).GetPointer(), m_settings.scales);
         progress.throwIfCancelled();
         m_cost.resize(vesselness.size());
@@ -263,7 +264,7 @@ PathResult joinByMinimalPaths(const CtVolume& ct, LabelVolume& label, const Fron
         if (!costed)
             joiner.computeCost(progress.subRange(0.0, 0.6)), costed = true;
         const std::vector<std::uint32_t> path = joiner.minimalPath(*start, seed.boneHu, progress);
-        progress.report(0.6 + 0.4 * double(step + 1) / double(order.size()), "minimal paths");
+        progress.report(0.6 + 0.4 * double(step + 1) / double(order.size()), localized("vsim::Progress", "minimal paths"));
         if (path.empty())
         {
             result.notes.push_back("the point " + mmText(seed.pointMm) +

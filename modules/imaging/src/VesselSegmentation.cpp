@@ -4,6 +4,7 @@
 #include "MaskOps.h"
 #include "Vesselness.h"
 #include "vsim/core/Hounsfield.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Median.h"
 #include "vsim/interop/ItkImage.h"
 
@@ -203,7 +204,7 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
     SegmentationResult result;
 
     // Layer 1a, whole volume: the contrast window on the raw HU, the seed, the coarse region.
-    progress.report(0.0, "finding contrast-filled vessels");
+    progress.report(0.0, localized("vsim::Progress", "finding contrast-filled vessels"));
     Mask window(ct.size());
     std::transform(ct.data(), ct.data() + ct.size(), window.begin(),
                    [=](std::int16_t hu) { return std::uint8_t(hu >= minHu && hu <= maxHu); });
@@ -254,7 +255,7 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
     floodFill(dims, {seedIndex}, [&](std::size_t index) { return window[index] != 0; }, coarse);
     window.clear();
     window.shrink_to_fit();
-    progress.report(0.2, "segmenting vessels");
+    progress.report(0.2, localized("vsim::Progress", "segmenting vessels"));
 
     // Layers 1b-4 in the region around the coarse vessels.
     Dims margin;
@@ -273,7 +274,7 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
     coarse.shrink_to_fit();
     const FloatImage::Pointer smooth = smoothedFloat(roi, p.get("smoothing_sigma_mm"));
     const float* hu = smooth->GetBufferPointer();
-    progress.report(0.35, "segmenting vessels");
+    progress.report(0.35, localized("vsim::Progress", "segmenting vessels"));
 
     // Blood inside the coarse region, tissue in a shell 2-3 voxels outside it.
     const Mask interior = erode6(roiDims, roiCoarse);
@@ -306,7 +307,7 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
     if (vessel[linearOf(roiDims, roiSeed)] == 0)
         throw Error("the seed lies where the smoothed image is below the vessel boundary (" + number(threshold) +
                     " HU): click nearer the centre of the vessel");
-    progress.report(0.5, "vesselness");
+    progress.report(0.5, localized("vsim::Progress", "vesselness"));
 
     // Layer 2: thin branches the window lost. Candidates are tubular (vesselness) with some contrast; only
     // candidates beyond a 2-voxel band around the region count, so the layer extends branches and never
@@ -334,7 +335,7 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
         result.figures["vesselness_added_voxels"] = double(added);
     }
     progress.throwIfCancelled();
-    progress.report(0.65, "level set");
+    progress.report(0.65, localized("vsim::Progress", "level set"));
 
     // Layer 3: the level set moves the voxel boundary onto the boundary level, smoothed by curvature.
     {
@@ -350,7 +351,7 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
         vessel = refineWithLevelSet(contrast, vessel, settings, &steps);
         result.figures["level_set_steps"] = double(steps);
     }
-    progress.report(0.8, "clean-up");
+    progress.report(0.8, localized("vsim::Progress", "clean-up"));
 
     // Clean-up: bone exclusion, then hole filling (background not reachable from the region's border).
     const int boneSteps = int(std::lround(p.get("bone_margin_mm") / roi.geometry().spacing.minCoeff()));
@@ -398,7 +399,7 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
         throw Error("the segmentation is empty: try a seed inside a vessel or a lower min_contrast_hu");
     result.figures["voxels"] = double(voxels);
     result.figures["volume_ml"] = double(voxels) * geometry.spacing.prod() / 1000.0;
-    progress.report(1.0, "segmented");
+    progress.report(1.0, localized("vsim::Progress", "segmented"));
     return result;
 }
 

@@ -1,5 +1,6 @@
 #include "vsim/mesh/VesselSurface.h"
 
+#include "vsim/core/Localized.h"
 #include "vsim/interop/VtkMesh.h"
 
 #include <vtkFieldData.h>
@@ -81,7 +82,7 @@ std::vector<ParameterSpec> surfaceParameters()
 VesselSurface extractVesselSurface(const LabelVolume& label, std::uint8_t value, const ParameterSet& p,
                                    const Progress& progress)
 {
-    progress.report(0.0, "iso-surface");
+    progress.report(0.0, localized("vsim::Progress", "iso-surface"));
     auto iso = vtkSmartPointer<vtkFlyingEdges3D>::New();
     iso->SetInputData(binaryImage(label, value));
     iso->SetValue(0, 0.5);
@@ -91,7 +92,7 @@ VesselSurface extractVesselSurface(const LabelVolume& label, std::uint8_t value,
     iso->Update();
     vtkSmartPointer<vtkPolyData> surface = iso->GetOutput();
     toPatientFrame(surface, label.geometry());
-    progress.report(0.3, "smoothing");
+    progress.report(0.3, localized("vsim::Progress", "smoothing"));
 
     const int iterations = int(p.get("smoothing_iterations"));
     if (iterations > 0)
@@ -114,7 +115,7 @@ VesselSurface extractVesselSurface(const LabelVolume& label, std::uint8_t value,
     const double target = p.get("target_vertices");
     if (target > 0 && target < double(result.fullVertices))
     {
-        progress.report(0.6, "decimating");
+        progress.report(0.6, localized("vsim::Progress", "decimating"));
         auto decimate = vtkSmartPointer<vtkQuadricDecimation>::New();
         decimate->SetInputData(surface);
         decimate->SetTargetReduction(1.0 - target / double(result.fullVertices));
@@ -136,7 +137,7 @@ VesselSurface extractVesselSurface(const LabelVolume& label, std::uint8_t value,
     if (result.surface.signedVolume() < 0.0) // a left-handed direction matrix turns the triangles inside out
         for (auto& triangle : result.surface.triangles)
             std::swap(triangle[1], triangle[2]);
-    progress.report(1.0, "surface");
+    progress.report(1.0, localized("vsim::Progress", "surface"));
     return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Hounsfield.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/interop/ItkImage.h"
 #include "vsim/study/Study.h"
@@ -74,7 +75,7 @@ CtVolume toHounsfield(interop::ItkImage3<float>* image, std::vector<std::string>
         clamped += kept != nearest;
         hounsfield.data()[v] = static_cast<std::int16_t>(kept);
         if ((v & 0xFFFFF) == 0)
-            progress.report(0.6 + 0.4 * static_cast<double>(v) / static_cast<double>(count), "converting to HU");
+            progress.report(0.6 + 0.4 * static_cast<double>(v) / static_cast<double>(count), localized("vsim::Progress", "converting to HU"));
     }
     if (rounded)
         warnings.push_back(std::to_string(rounded) + " voxels were not whole numbers and were rounded to integer HU");
@@ -105,7 +106,7 @@ ImportedVolume readVolumeFile(const std::filesystem::path& file, const Progress&
     if (!std::filesystem::is_regular_file(file))
         throw Error("volume file does not exist", {{"file", file.filename().string()}});
     FormatChoice format = chooseFormat(file);
-    progress.report(0.0, "reading " + format.name);
+    progress.report(0.0, withArguments(localized("vsim::Progress", "reading %1"), {format.name}));
     try
     {
         format.io->SetFileName(file.string());
@@ -131,10 +132,10 @@ ImportedVolume readVolumeFile(const std::filesystem::path& file, const Progress&
     else
     {
         auto real = readAs<float>(file, format.io);
-        progress.report(0.6, "converting to HU");
+        progress.report(0.6, localized("vsim::Progress", "converting to HU"));
         result.image = toHounsfield(real.GetPointer(), result.warnings, progress);
     }
-    progress.report(1.0, "read");
+    progress.report(1.0, localized("vsim::Progress", "read"));
     return result;
 }
 

@@ -1,6 +1,7 @@
 #include "vsim/sim/fem/FemValidation.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/CorotationalFem.h"
 #include "vsim/sim/fem/QuadraticFem.h"
@@ -344,7 +345,7 @@ ValidationResult dampingTest(const Progress& progress)
         const std::string tag = " (beta = " + std::string(beta > 0.1 ? "0.22" : "0.005") + " s)";
         result.figures.push_back({"steps where the energy rose" + tag, double(rises), 0.0, 0.5, ""});
         result.figures.push_back({"energy left after 0.3 s / initial" + tag, previous / initial, 0.0, 0.9, ""});
-        progress.report(++stage / 2.0, "damping");
+        progress.report(++stage / 2.0, localized("vsim::Progress", "damping"));
     }
     return result;
 }

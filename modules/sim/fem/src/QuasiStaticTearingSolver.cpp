@@ -1,6 +1,7 @@
 #include "vsim/sim/fem/QuasiStaticTearingSolver.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -91,7 +92,7 @@ StepOutcome QuasiStaticTearingSolver::step(RunStatus& status, const Progress& pr
     }
     if (m_releasePending)
         return record(release(status, progress));
-    progress.report(m_safe / m_setup.endPa, "quasi-static tearing at " + megapascals(m_safe)); // the axis's share
+    progress.report(m_safe / m_setup.endPa, withArguments(localized("vsim::Progress", "quasi-static tearing at %1"), {megapascals(m_safe)})); // the axis's share
     m_over = std::min(m_setup.endPa, m_safe + m_setup.incrementPa);
     if (!equilibrium(m_over, status, progress))
         return record(StepOutcome::guard("the equilibrium at " + megapascals(m_over) + " failed: " + m_failure));

@@ -3,6 +3,7 @@
 #include "TerritoryGrid.h"
 #include "vsim/core/DistanceTransform.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/sim/network/TipOrientation.h"
 
 #include <algorithm>
@@ -122,7 +123,7 @@ std::vector<Lesion> findLesions(const LiverTerritories& t, const Progress& progr
                     if (distance[boxIndex(i, j, k)] <= reachSquared)
                         if (const long v = liverVoxel(t, t.geometry.linearIndex(i, j, k)); v >= 0 && !t.tumour[std::size_t(v)])
                             lesion.margin.push_back(std::size_t(v));
-        progress.report(double(l + 1) / double(lesions.size()), "lesions and margins");
+        progress.report(double(l + 1) / double(lesions.size()), localized("vsim::Progress", "lesions and margins"));
     }
     std::stable_sort(lesions.begin(), lesions.end(), [](const Lesion& a, const Lesion& b) { return a.voxels.size() > b.voxels.size(); });
     return lesions;
@@ -279,7 +280,7 @@ std::vector<TipCandidate> rankTipsByCoverage(const VesselNetwork& network, const
             for (std::size_t v : lesion.voxels)
                 covered += perfused.perfused[v] ? 1 : 0;
         c.coveredPercent = lesionVoxels ? 100.0 * double(covered) / double(lesionVoxels) : 0.0;
-        progress.report(double(i + 1) / double(ranking.size()), "ranking catheter positions by coverage");
+        progress.report(double(i + 1) / double(ranking.size()), localized("vsim::Progress", "ranking catheter positions by coverage"));
     }
     std::stable_sort(ranking.begin(), ranking.end(), [](const TipCandidate& a, const TipCandidate& b) {
         if (a.grade != b.grade)

@@ -1,6 +1,7 @@
 #include "vsim/sim/network/NetworkRun.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/ConicalPipe.h"
 #include "vsim/sim/network/Inlet.h"
@@ -372,7 +373,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     if (!(rate > 0.0))
         throw Error("the tip pressure does not drive any flow into the network (it is at or below the outlets')");
     r.filling = fillingTimes(net, r.twoPhase);
-    progress.report(0.2, "flow solved");
+    progress.report(0.2, localized("vsim::Progress", "flow solved"));
 
     const std::vector<Eigen::Vector3d> points =
         setup.controlPointsMm.empty() ? defaultControlPoints(net, r.twoPhase) : setup.controlPointsMm;
@@ -486,7 +487,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     for (const auto& [node, time] : r.filling.arrival)
         first = std::min(first, time);
     r.metrics["first_arrival_s"] = first == kNever ? -1.0 : first;
-    progress.report(1.0, "done");
+    progress.report(1.0, localized("vsim::Progress", "done"));
     r.metrics["wall_clock_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return r;
 }

@@ -1,6 +1,7 @@
 #include "vsim/sim/network/Targeting.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,7 +75,7 @@ std::vector<TipCandidate> rankTipPositions(const VesselNetwork& network, const s
     {
         progress.throwIfCancelled();
         ranking[i].tumourFraction = deliveredFraction(solve(ranking[i].node), feeders);
-        progress.report(double(i + 1) / double(ranking.size()), "ranking catheter positions");
+        progress.report(double(i + 1) / double(ranking.size()), localized("vsim::Progress", "ranking catheter positions"));
     }
     std::stable_sort(ranking.begin(), ranking.end(), [](const TipCandidate& a, const TipCandidate& b) {
         if (std::abs(a.tumourFraction - b.tumourFraction) > 1e-9)

@@ -4,6 +4,7 @@
 
 #include "vsim/core/DistanceTransform.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/TipOrientation.h"
@@ -163,7 +164,7 @@ std::vector<int> nearestPolylines(const LiverTerritories& t, const std::vector<P
         },
         [&](std::size_t done) {
             progress.throwIfCancelled();
-            progress.report(double(done) / double(rows), "perfusion territories");
+            progress.report(double(done) / double(rows), localized("vsim::Progress", "perfusion territories"));
         });
     return nearest;
 }
@@ -217,7 +218,7 @@ LiverTerritories liverTerritories(const VesselNetwork& network, const LabelRegio
     if (tumour || tumourShape)
         for (std::size_t v = 0; v < t.voxels.size(); ++v)
             t.tumour[v] = u ? tumour->holds(u[t.voxels[v]]) : tumour ? tumour->contains(t.position(v)) : tumourShape(t.position(v));
-    progress.report(0.1, "liver voxels");
+    progress.report(0.1, localized("vsim::Progress", "liver voxels"));
 
     // The hepatic outlets, and the segments that lead to one: the vessels whose tissue is liver.
     const TipOrientation fromRoot = orientFromTip(network, network.root);

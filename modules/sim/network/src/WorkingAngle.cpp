@@ -1,6 +1,7 @@
 #include "vsim/sim/network/WorkingAngle.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/sim/network/TipOrientation.h"
 
 #include <Eigen/Geometry>
@@ -192,7 +193,7 @@ WorkingAngle workingAngle(const VesselNetwork& network, int tipNode, const Progr
         progress.throwIfCancelled();
         for (double cranial = -kCranialRangeDeg; cranial <= kCranialRangeDeg + 1e-9; cranial += 5.0)
             consider(lao, cranial);
-        progress.report(0.8 * (lao + kLaoRangeDeg) / (2.0 * kLaoRangeDeg), "working angle");
+        progress.report(0.8 * (lao + kLaoRangeDeg) / (2.0 * kLaoRangeDeg), localized("vsim::Progress", "working angle"));
     }
     for (const auto& [step, reach] : {std::pair{1.0, 5.0}, std::pair{0.25, 1.0}})
     {
@@ -201,7 +202,7 @@ WorkingAngle workingAngle(const VesselNetwork& network, int tipNode, const Progr
             for (double dc = -reach; dc <= reach + 1e-9; dc += step)
                 consider(centre.laoDeg + dl, centre.cranialDeg + dc);
     }
-    progress.report(1.0, "working angle");
+    progress.report(1.0, localized("vsim::Progress", "working angle"));
     return best;
 }
 
