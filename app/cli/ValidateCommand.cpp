@@ -4,6 +4,7 @@
 #include "vsim/sim/fem/FemValidation.h"
 #include "vsim/sim/heat/HeatValidation.h"
 #include "vsim/sim/network/NetworkValidation.h"
+#include "vsim/sim/smoke/SmokeValidation.h"
 #include "vsim/sim/sph/SphValidation.h"
 
 #include <nlohmann/json.hpp>
@@ -18,7 +19,7 @@ namespace {
 /// One solver's validation cases and how to run one of them.
 struct CaseFamily
 {
-    std::string name; ///< as given on the command line: "fem", "network", "heat", "sph"
+    std::string name; ///< as given on the command line: "fem", "network", "heat", "sph", "smoke"
     std::vector<std::string> cases;
     std::function<ValidationResult(const std::string&, const Progress&)> run;
 };
@@ -31,7 +32,9 @@ std::vector<CaseFamily> caseFamilies()
             {"heat", sim::heat::heatValidationCases(),
              [](const std::string& c, const Progress& p) { return sim::heat::runHeatValidation(c, p); }},
             {"sph", sim::sph::sphValidationCases(),
-             [](const std::string& c, const Progress& p) { return sim::sph::runSphValidation(c, p); }}};
+             [](const std::string& c, const Progress& p) { return sim::sph::runSphValidation(c, p); }},
+            {"smoke", sim::smoke::smokeValidationCases(),
+             [](const std::string& c, const Progress& p) { return sim::smoke::runSmokeValidation(c, p); }}};
 }
 
 } // namespace

@@ -1,0 +1,212 @@
+#include "vsim/sim/smoke/PressureProjection.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vsim::sim::smoke {
+namespace {
+
+double dot(const std::vector<float>& a, const std::vector<float>& b)
+{
+    double sum = 0.0;
+    const long n = long(a.size());
+#pragma omp parallel for reduction(+ : sum) schedule(static)
+    for (long c = 0; c < n; ++c)
+        sum += double(a[std::size_t(c)]) * double(b[std::size_t(c)]);
+    return sum;
+}
+
+} // namespace
+
+void applySolidBoundaries(SmokeGrid& grid)
+{
+    const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
+    const auto wallAt = [&](int face) { return grid.boundaries[std::size_t(face)] == DomainBoundary::Wall; };
+    // A face between a solid cell and another cell takes the solid's normal velocity (two solids: their mean).
+    const auto solidNormal = [&](int ia, int ja, int ka, int ib, int jb, int kb, int axis, float& face) {
+        const bool a = grid.inside(ia, ja, ka) && grid.isSolid(ia, ja, ka);
+        const bool b = grid.inside(ib, jb, kb) && grid.isSolid(ib, jb, kb);
+        if (!a && !b)
+            return;
+        float sum = 0.0f;
+        if (a)
+            sum += grid.solidVelocity[grid.cell(ia, ja, ka)][axis];
+        if (b)
+            sum += grid.solidVelocity[grid.cell(ib, jb, kb)][axis];
+        face = sum / float(int(a) + int(b));
+    };
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+        {
+            for (int i = 0; i <= nx; ++i)
+            {
+                float& face = grid.u[grid.uFace(i, j, k)];
+                if ((i == 0 && wallAt(0)) || (i == nx && wallAt(1)))
+                    face = 0.0f;
+                else
+                    solidNormal(i - 1, j, k, i, j, k, 0, face);
+            }
+        }
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j <= ny; ++j)
+            for (int i = 0; i < nx; ++i)
+            {
+                float& face = grid.v[grid.vFace(i, j, k)];
+                if ((j == 0 && wallAt(2)) || (j == ny && wallAt(3)))
+                    face = 0.0f;
+                else
+                    solidNormal(i, j - 1, k, i, j, k, 1, face);
+            }
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k <= nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i)
+            {
+                float& face = grid.w[grid.wFace(i, j, k)];
+                if ((k == 0 && wallAt(4)) || (k == nz && wallAt(5)))
+                    face = 0.0f;
+                else
+                    solidNormal(i, j, k - 1, i, j, k, 2, face);
+            }
+}
+
+std::vector<float> divergence(const SmokeGrid& grid)
+{
+    std::vector<float> div(grid.cells(), 0.0f);
+    const float inverse = float(1.0 / grid.h);
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < grid.nz; ++k)
+        for (int j = 0; j < grid.ny; ++j)
+            for (int i = 0; i < grid.nx; ++i)
+            {
+                const std::size_t c = grid.cell(i, j, k);
+                if (grid.solid[c])
+                    continue;
+                div[c] = inverse * (grid.u[grid.uFace(i + 1, j, k)] - grid.u[grid.uFace(i, j, k)] +
+                                    grid.v[grid.vFace(i, j + 1, k)] - grid.v[grid.vFace(i, j, k)] +
+                                    grid.w[grid.wFace(i, j, k + 1)] - grid.w[grid.wFace(i, j, k)]);
+            }
+    return div;
+}
+
+void PressureProjection::prepare(const SmokeGrid& grid)
+{
+    m_multigrid.prepare(grid);
+    for (std::vector<float>* work : {&m_psi, &m_b, &m_r, &m_z, &m_p, &m_q})
+        work->assign(grid.cells(), 0.0f);
+}
+
+ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, int maxIterations)
+{
+    if (m_psi.size() != grid.cells())
+        prepare(grid);
+    applySolidBoundaries(grid);
+    ProjectionReport report;
+    // b = -h^2 div u' on the fluid cells: A psi = b makes the corrected velocity divergence-free.
+    const std::vector<float> div = divergence(grid);
+    const float scale = float(-grid.h * grid.h);
+    for (std::size_t c = 0; c < div.size(); ++c)
+        m_b[c] = scale * div[c];
+    m_multigrid.removeNullSpace(m_b);
+    const double bNorm = std::sqrt(dot(m_b, m_b));
+    if (bNorm > 0.0)
+    {
+        // Preconditioned conjugate gradients from the last psi.
+        m_multigrid.apply(m_psi, m_q);
+        for (std::size_t c = 0; c < m_r.size(); ++c)
+            m_r[c] = m_b[c] - m_q[c];
+        m_multigrid.removeNullSpace(m_r);
+        double residual = std::sqrt(dot(m_r, m_r)) / bNorm;
+        m_multigrid.precondition(m_r, m_z);
+        m_p = m_z;
+        double rz = dot(m_r, m_z);
+        int iteration = 0;
+        while (residual > tolerance && iteration < maxIterations && rz > 0.0)
+        {
+            m_multigrid.apply(m_p, m_q);
+            const double pq = dot(m_p, m_q);
+            if (!(pq > 0.0))
+                break;
+            const float alpha = float(rz / pq);
+            const long n = long(m_psi.size());
+#pragma omp parallel for schedule(static)
+            for (long c = 0; c < n; ++c)
+            {
+                m_psi[std::size_t(c)] += alpha * m_p[std::size_t(c)];
+                m_r[std::size_t(c)] -= alpha * m_q[std::size_t(c)];
+            }
+            ++iteration;
+            residual = std::sqrt(dot(m_r, m_r)) / bNorm;
+            if (residual <= tolerance)
+                break;
+            m_multigrid.precondition(m_r, m_z);
+            const double rzNext = dot(m_r, m_z);
+            const float beta = float(rzNext / rz);
+            rz = rzNext;
+#pragma omp parallel for schedule(static)
+            for (long c = 0; c < n; ++c)
+                m_p[std::size_t(c)] = m_z[std::size_t(c)] + beta * m_p[std::size_t(c)];
+        }
+        // The true residual of the final psi (the recurrence drifts in single precision).
+        m_multigrid.apply(m_psi, m_q);
+        for (std::size_t c = 0; c < m_r.size(); ++c)
+            m_r[c] = m_b[c] - m_q[c];
+        m_multigrid.removeNullSpace(m_r);
+        report.iterations = iteration;
+        report.relativeResidual = std::sqrt(dot(m_r, m_r)) / bNorm;
+    }
+    report.converged = report.relativeResidual <= tolerance;
+
+    // u = u' - grad psi on the faces between fluid cells and on open domain faces (psi = 0 outside).
+    const std::vector<std::uint8_t>& fluid = m_multigrid.fluid();
+    const float inverse = float(1.0 / grid.h);
+    const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
+    const auto open = [&](int face) { return grid.boundaries[std::size_t(face)] == DomainBoundary::Open; };
+    const auto psiAt = [&](int i, int j, int k) { return m_psi[grid.cell(i, j, k)]; };
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+        {
+            for (int i = 0; i <= nx; ++i)
+            {
+                const bool left = i > 0 && fluid[grid.cell(i - 1, j, k)], right = i < nx && fluid[grid.cell(i, j, k)];
+                const bool leftOpen = i == 0 && open(0), rightOpen = i == nx && open(1);
+                if ((left && right) || (left && rightOpen) || (right && leftOpen))
+                    grid.u[grid.uFace(i, j, k)] -=
+                        inverse * ((right ? psiAt(i, j, k) : 0.0f) - (left ? psiAt(i - 1, j, k) : 0.0f));
+            }
+        }
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j <= ny; ++j)
+            for (int i = 0; i < nx; ++i)
+            {
+                const bool low = j > 0 && fluid[grid.cell(i, j - 1, k)], high = j < ny && fluid[grid.cell(i, j, k)];
+                const bool lowOpen = j == 0 && open(2), highOpen = j == ny && open(3);
+                if ((low && high) || (low && highOpen) || (high && lowOpen))
+                    grid.v[grid.vFace(i, j, k)] -=
+                        inverse * ((high ? psiAt(i, j, k) : 0.0f) - (low ? psiAt(i, j - 1, k) : 0.0f));
+            }
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k <= nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i)
+            {
+                const bool low = k > 0 && fluid[grid.cell(i, j, k - 1)], high = k < nz && fluid[grid.cell(i, j, k)];
+                const bool lowOpen = k == 0 && open(4), highOpen = k == nz && open(5);
+                if ((low && high) || (low && highOpen) || (high && lowOpen))
+                    grid.w[grid.wFace(i, j, k)] -=
+                        inverse * ((high ? psiAt(i, j, k) : 0.0f) - (low ? psiAt(i, j, k - 1) : 0.0f));
+            }
+
+    const std::vector<float> after = divergence(grid);
+    for (float value : after)
+        report.maxDivergence = std::max(report.maxDivergence, double(std::abs(value)));
+    const double speed = grid.maxSpeed();
+    report.divergenceRatio = speed > 0.0 ? report.maxDivergence * grid.h / speed : 0.0;
+    return report;
+}
+
+} // namespace vsim::sim::smoke

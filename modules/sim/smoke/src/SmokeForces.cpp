@@ -1,0 +1,102 @@
+#include "vsim/sim/smoke/SmokeForces.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+
+namespace vsim::sim::smoke {
+
+void addBuoyancy(SmokeGrid& grid, double dt, double alpha, double beta)
+{
+#pragma omp parallel for schedule(static)
+    for (int k = 1; k < grid.nz; ++k)
+        for (int j = 0; j < grid.ny; ++j)
+            for (int i = 0; i < grid.nx; ++i)
+            {
+                const std::size_t below = grid.cell(i, j, k - 1), above = grid.cell(i, j, k);
+                if (grid.solid[below] || grid.solid[above])
+                    continue;
+                const double t = 0.5 * (grid.temperature[below] + grid.temperature[above]);
+                const double rho = 0.5 * (grid.density[below] + grid.density[above]);
+                grid.w[grid.wFace(i, j, k)] += float(dt * (beta * t - alpha * rho));
+            }
+}
+
+std::vector<Eigen::Vector3f> cellVorticity(const SmokeGrid& grid)
+{
+    std::vector<Eigen::Vector3f> omega(grid.cells(), Eigen::Vector3f::Zero());
+    const auto velocity = [&](int i, int j, int k) { return grid.cellVelocity(i, j, k); };
+    // d/dx of the cell velocity by central differences, one-sided at the domain's edge.
+    const auto derivative = [&](int i, int j, int k, int axis) {
+        int lo[3] = {i, j, k}, hi[3] = {i, j, k};
+        const int n[3] = {grid.nx, grid.ny, grid.nz};
+        lo[axis] = std::max(lo[axis] - 1, 0), hi[axis] = std::min(hi[axis] + 1, n[axis] - 1);
+        const int span = hi[axis] - lo[axis];
+        if (span == 0)
+            return Eigen::Vector3d::Zero().eval();
+        return ((velocity(hi[0], hi[1], hi[2]) - velocity(lo[0], lo[1], lo[2])) / (span * grid.h)).eval();
+    };
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < grid.nz; ++k)
+        for (int j = 0; j < grid.ny; ++j)
+            for (int i = 0; i < grid.nx; ++i)
+            {
+                if (grid.isSolid(i, j, k))
+                    continue;
+                const Eigen::Vector3d dx = derivative(i, j, k, 0), dy = derivative(i, j, k, 1), dz = derivative(i, j, k, 2);
+                omega[grid.cell(i, j, k)] = Eigen::Vector3d(dy.z() - dz.y(), dz.x() - dx.z(), dx.y() - dy.x()).cast<float>();
+            }
+    return omega;
+}
+
+void addVorticityConfinement(SmokeGrid& grid, double dt, double epsilon)
+{
+    if (epsilon <= 0.0)
+        return;
+    const std::vector<Eigen::Vector3f> omega = cellVorticity(grid);
+    std::vector<float> magnitude(grid.cells());
+    for (std::size_t c = 0; c < grid.cells(); ++c)
+        magnitude[c] = omega[c].norm();
+    std::vector<Eigen::Vector3f> force(grid.cells(), Eigen::Vector3f::Zero());
+#pragma omp parallel for schedule(static)
+    for (int k = 1; k < grid.nz - 1; ++k)
+        for (int j = 1; j < grid.ny - 1; ++j)
+            for (int i = 1; i < grid.nx - 1; ++i)
+            {
+                const std::size_t c = grid.cell(i, j, k);
+                if (grid.solid[c])
+                    continue;
+                const Eigen::Vector3f gradient(magnitude[grid.cell(i + 1, j, k)] - magnitude[grid.cell(i - 1, j, k)],
+                                               magnitude[grid.cell(i, j + 1, k)] - magnitude[grid.cell(i, j - 1, k)],
+                                               magnitude[grid.cell(i, j, k + 1)] - magnitude[grid.cell(i, j, k - 1)]);
+                const float length = gradient.norm();
+                if (length <= 1e-12f)
+                    continue;
+                force[c] = float(epsilon * grid.h) * (gradient / length).cross(omega[c]);
+            }
+    addCellForces(grid, force, dt);
+}
+
+void addCellForces(SmokeGrid& grid, const std::vector<Eigen::Vector3f>& force, double dt)
+{
+    const float step = float(dt);
+    const auto fluid = [&](int i, int j, int k) { return !grid.isSolid(i, j, k); };
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < grid.nz; ++k)
+        for (int j = 0; j < grid.ny; ++j)
+            for (int i = 0; i < grid.nx; ++i)
+            {
+                if (!fluid(i, j, k))
+                    continue;
+                const Eigen::Vector3f& f = force[grid.cell(i, j, k)];
+                // Each cell adds half its force to its upper faces; the lower half comes from the neighbour below.
+                if (i + 1 < grid.nx && fluid(i + 1, j, k))
+                    grid.u[grid.uFace(i + 1, j, k)] += 0.5f * step * (f.x() + force[grid.cell(i + 1, j, k)].x());
+                if (j + 1 < grid.ny && fluid(i, j + 1, k))
+                    grid.v[grid.vFace(i, j + 1, k)] += 0.5f * step * (f.y() + force[grid.cell(i, j + 1, k)].y());
+                if (k + 1 < grid.nz && fluid(i, j, k + 1))
+                    grid.w[grid.wFace(i, j, k + 1)] += 0.5f * step * (f.z() + force[grid.cell(i, j, k + 1)].z());
+            }
+}
+
+} // namespace vsim::sim::smoke
