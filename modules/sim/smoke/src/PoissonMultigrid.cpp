@@ -88,19 +88,20 @@ void PoissonMultigrid::applyLevel(const Level& level, const std::vector<float>& 
                     y[c] = 0.0f;
                     continue;
                 }
+                // x is 0 in every cell that is not fluid (the V-cycle and CG keep it so): all neighbours add.
                 float sum = float(level.diagonal[c]) * x[c];
-                if (i > 0 && level.fluid[c - 1])
+                if (i > 0)
                     sum -= x[c - 1];
-                if (i + 1 < nx && level.fluid[c + 1])
+                if (i + 1 < nx)
                     sum -= x[c + 1];
                 const std::size_t row = std::size_t(nx), slab = std::size_t(nx) * ny;
-                if (j > 0 && level.fluid[c - row])
+                if (j > 0)
                     sum -= x[c - row];
-                if (j + 1 < ny && level.fluid[c + row])
+                if (j + 1 < ny)
                     sum -= x[c + row];
-                if (k > 0 && level.fluid[c - slab])
+                if (k > 0)
                     sum -= x[c - slab];
-                if (k + 1 < nz && level.fluid[c + slab])
+                if (k + 1 < nz)
                     sum -= x[c + slab];
                 y[c] = sum;
             }
@@ -128,17 +129,17 @@ void PoissonMultigrid::smooth(const Level& level, std::vector<float>& x, const s
                     if (!level.fluid[c] || level.diagonal[c] == 0)
                         continue;
                     float sum = b[c];
-                    if (i > 0 && level.fluid[c - 1])
+                    if (i > 0)
                         sum += x[c - 1];
-                    if (i + 1 < nx && level.fluid[c + 1])
+                    if (i + 1 < nx)
                         sum += x[c + 1];
-                    if (j > 0 && level.fluid[c - row])
+                    if (j > 0)
                         sum += x[c - row];
-                    if (j + 1 < ny && level.fluid[c + row])
+                    if (j + 1 < ny)
                         sum += x[c + row];
-                    if (k > 0 && level.fluid[c - slab])
+                    if (k > 0)
                         sum += x[c - slab];
-                    if (k + 1 < nz && level.fluid[c + slab])
+                    if (k + 1 < nz)
                         sum += x[c + slab];
                     x[c] = sum / float(level.diagonal[c]);
                 }
@@ -161,14 +162,22 @@ void PoissonMultigrid::vcycle(std::size_t depth, const std::vector<float>& b, st
         smooth(level, x, b, 0);
     applyLevel(level, x, level.r);
     const Level& coarse = m_levels[depth + 1];
-    std::fill(coarse.b.begin(), coarse.b.end(), 0.0f);
-    for (int k = 0; k < level.nz; ++k)
-        for (int j = 0; j < level.ny; ++j)
-            for (int i = 0; i < level.nx; ++i)
+    // Each coarse cell gathers half the residual of its (up to eight) fluid children.
+#pragma omp parallel for schedule(static)
+    for (int K = 0; K < coarse.nz; ++K)
+        for (int J = 0; J < coarse.ny; ++J)
+            for (int I = 0; I < coarse.nx; ++I)
             {
-                const std::size_t c = level.index(i, j, k);
-                if (level.fluid[c])
-                    coarse.b[coarse.index(i / 2, j / 2, k / 2)] += 0.5f * (b[c] - level.r[c]);
+                float sum = 0.0f;
+                for (int k = 2 * K; k < std::min(2 * K + 2, level.nz); ++k)
+                    for (int j = 2 * J; j < std::min(2 * J + 2, level.ny); ++j)
+                        for (int i = 2 * I; i < std::min(2 * I + 2, level.nx); ++i)
+                        {
+                            const std::size_t c = level.index(i, j, k);
+                            if (level.fluid[c])
+                                sum += b[c] - level.r[c];
+                        }
+                coarse.b[coarse.index(I, J, K)] = 0.5f * sum;
             }
     vcycle(depth + 1, coarse.b, coarse.x);
 #pragma omp parallel for schedule(static)

@@ -22,6 +22,35 @@ void applySolidBoundaries(SmokeGrid& grid)
 {
     const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
     const auto wallAt = [&](int face) { return grid.boundaries[std::size_t(face)] == DomainBoundary::Wall; };
+    if (std::none_of(grid.solid.begin(), grid.solid.end(), [](std::uint8_t s) { return s != 0; }))
+    {
+        // No solid cell: only the domain's walls, plane by plane.
+        for (int k = 0; k < nz; ++k)
+            for (int j = 0; j < ny; ++j)
+            {
+                if (wallAt(0))
+                    grid.u[grid.uFace(0, j, k)] = 0.0f;
+                if (wallAt(1))
+                    grid.u[grid.uFace(nx, j, k)] = 0.0f;
+            }
+        for (int k = 0; k < nz; ++k)
+            for (int i = 0; i < nx; ++i)
+            {
+                if (wallAt(2))
+                    grid.v[grid.vFace(i, 0, k)] = 0.0f;
+                if (wallAt(3))
+                    grid.v[grid.vFace(i, ny, k)] = 0.0f;
+            }
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i)
+            {
+                if (wallAt(4))
+                    grid.w[grid.wFace(i, j, 0)] = 0.0f;
+                if (wallAt(5))
+                    grid.w[grid.wFace(i, j, nz)] = 0.0f;
+            }
+        return;
+    }
     // A face between a solid cell and another cell takes the solid's normal velocity (two solids: their mean).
     const auto solidNormal = [&](int ia, int ja, int ka, int ib, int jb, int kb, int axis, float& face) {
         const bool a = grid.inside(ia, ja, ka) && grid.isSolid(ia, ja, ka);
@@ -104,6 +133,11 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
         prepare(grid);
     applySolidBoundaries(grid);
     ProjectionReport report;
+    // The operator reads every neighbour and counts on 0 outside the fluid (a body that moved leaves old values).
+    const std::vector<std::uint8_t>& fluidCells = m_multigrid.fluid();
+    for (std::size_t c = 0; c < m_psi.size(); ++c)
+        if (!fluidCells[c])
+            m_psi[c] = 0.0f;
     // b = -h^2 div u' on the fluid cells: A psi = b makes the corrected velocity divergence-free.
     const std::vector<float> div = divergence(grid);
     const float scale = float(-grid.h * grid.h);
@@ -131,14 +165,17 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
                 break;
             const float alpha = float(rz / pq);
             const long n = long(m_psi.size());
-#pragma omp parallel for schedule(static)
+            double rr = 0.0;
+#pragma omp parallel for reduction(+ : rr) schedule(static)
             for (long c = 0; c < n; ++c)
             {
                 m_psi[std::size_t(c)] += alpha * m_p[std::size_t(c)];
-                m_r[std::size_t(c)] -= alpha * m_q[std::size_t(c)];
+                const float next = m_r[std::size_t(c)] - alpha * m_q[std::size_t(c)];
+                m_r[std::size_t(c)] = next;
+                rr += double(next) * next;
             }
             ++iteration;
-            residual = std::sqrt(dot(m_r, m_r)) / bNorm;
+            residual = std::sqrt(rr) / bNorm;
             if (residual <= tolerance)
                 break;
             m_multigrid.precondition(m_r, m_z);

@@ -24,32 +24,39 @@ void addBuoyancy(SmokeGrid& grid, double dt, double alpha, double beta)
 
 std::vector<Eigen::Vector3f> cellVorticity(const SmokeGrid& grid)
 {
-    std::vector<Eigen::Vector3f> omega(grid.cells(), Eigen::Vector3f::Zero());
-    const auto velocity = [&](int i, int j, int k) { return grid.cellVelocity(i, j, k); };
-    // d/dx of the cell velocity by central differences, one-sided at the domain's edge.
-    const auto derivative = [&](int i, int j, int k, int axis) {
-        int lo[3] = {i, j, k}, hi[3] = {i, j, k};
-        const int n[3] = {grid.nx, grid.ny, grid.nz};
-        lo[axis] = std::max(lo[axis] - 1, 0), hi[axis] = std::min(hi[axis] + 1, n[axis] - 1);
-        const int span = hi[axis] - lo[axis];
-        if (span == 0)
-            return Eigen::Vector3d::Zero().eval();
-        return ((velocity(hi[0], hi[1], hi[2]) - velocity(lo[0], lo[1], lo[2])) / (span * grid.h)).eval();
-    };
+    const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
+    std::vector<Eigen::Vector3f> centres(grid.cells()), omega(grid.cells(), Eigen::Vector3f::Zero());
 #pragma omp parallel for schedule(static)
-    for (int k = 0; k < grid.nz; ++k)
-        for (int j = 0; j < grid.ny; ++j)
-            for (int i = 0; i < grid.nx; ++i)
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i)
+                centres[grid.cell(i, j, k)] = {0.5f * (grid.u[grid.uFace(i, j, k)] + grid.u[grid.uFace(i + 1, j, k)]),
+                                               0.5f * (grid.v[grid.vFace(i, j, k)] + grid.v[grid.vFace(i, j + 1, k)]),
+                                               0.5f * (grid.w[grid.wFace(i, j, k)] + grid.w[grid.wFace(i, j, k + 1)])};
+    const float inverse = float(1.0 / grid.h);
+    const std::size_t row = std::size_t(nx), slab = std::size_t(nx) * ny;
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i)
             {
-                if (grid.isSolid(i, j, k))
+                const std::size_t c = grid.cell(i, j, k);
+                if (grid.solid[c])
                     continue;
-                const Eigen::Vector3d dx = derivative(i, j, k, 0), dy = derivative(i, j, k, 1), dz = derivative(i, j, k, 2);
-                omega[grid.cell(i, j, k)] = Eigen::Vector3d(dy.z() - dz.y(), dz.x() - dx.z(), dx.y() - dy.x()).cast<float>();
+                // d/dx_a of the cell velocity: central differences, one-sided at the domain's edge.
+                const auto derivative = [&](int at, int n, std::size_t stride) -> Eigen::Vector3f {
+                    const std::size_t lo = at > 0 ? c - stride : c, hi = at + 1 < n ? c + stride : c;
+                    const int span = (at > 0) + (at + 1 < n);
+                    return span ? Eigen::Vector3f((centres[hi] - centres[lo]) * (inverse / float(span)))
+                                : Eigen::Vector3f::Zero();
+                };
+                const Eigen::Vector3f dx = derivative(i, nx, 1), dy = derivative(j, ny, row), dz = derivative(k, nz, slab);
+                omega[c] = {dy.z() - dz.y(), dz.x() - dx.z(), dx.y() - dy.x()};
             }
     return omega;
 }
 
-void addVorticityConfinement(SmokeGrid& grid, double dt, double epsilon)
+void accumulateVorticityConfinement(const SmokeGrid& grid, double epsilon, std::vector<Eigen::Vector3f>& force)
 {
     if (epsilon <= 0.0)
         return;
@@ -57,7 +64,6 @@ void addVorticityConfinement(SmokeGrid& grid, double dt, double epsilon)
     std::vector<float> magnitude(grid.cells());
     for (std::size_t c = 0; c < grid.cells(); ++c)
         magnitude[c] = omega[c].norm();
-    std::vector<Eigen::Vector3f> force(grid.cells(), Eigen::Vector3f::Zero());
 #pragma omp parallel for schedule(static)
     for (int k = 1; k < grid.nz - 1; ++k)
         for (int j = 1; j < grid.ny - 1; ++j)
@@ -72,9 +78,8 @@ void addVorticityConfinement(SmokeGrid& grid, double dt, double epsilon)
                 const float length = gradient.norm();
                 if (length <= 1e-12f)
                     continue;
-                force[c] = float(epsilon * grid.h) * (gradient / length).cross(omega[c]);
+                force[c] += float(epsilon * grid.h) * (gradient / length).cross(omega[c]);
             }
-    addCellForces(grid, force, dt);
 }
 
 void addCellForces(SmokeGrid& grid, const std::vector<Eigen::Vector3f>& force, double dt)

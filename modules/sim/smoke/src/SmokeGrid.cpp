@@ -1,7 +1,10 @@
 #include "vsim/sim/smoke/SmokeGrid.h"
 
+#include "vsim/core/Error.h"
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace vsim::sim::smoke {
 namespace {
@@ -28,6 +31,9 @@ float trilinear(const std::vector<float>& field, int sx, int sy, int sz, const E
 
 SmokeGrid SmokeGrid::make(int nx, int ny, int nz, double h, const DomainBoundaries& boundaries)
 {
+    if (nx < 2 || ny < 2 || nz < 2 || !(h > 0.0))
+        throw Error("a smoke grid needs at least 2 cells along each axis and a positive cell size (got " +
+                    std::to_string(nx) + " x " + std::to_string(ny) + " x " + std::to_string(nz) + ")");
     SmokeGrid grid;
     grid.nx = nx, grid.ny = ny, grid.nz = nz, grid.h = h, grid.boundaries = boundaries;
     grid.u.assign(std::size_t(nx + 1) * ny * nz, 0.0f);

@@ -3,6 +3,7 @@
 #include "vsim/sim/smoke/SmokeForces.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -54,7 +55,7 @@ void SmokeSimulation::placeSphere()
 
 void SmokeSimulation::seedParticles(const Eigen::Vector3d& centre, double radius, int count)
 {
-    m_particles.seed(m_grid, cellVorticity(m_grid), centre, radius, count, m_random);
+    m_particles.seed(m_grid, centre, radius, count, m_random);
 }
 
 double SmokeSimulation::stableStep(double maxDt) const
@@ -74,43 +75,48 @@ ProjectionReport SmokeSimulation::project()
 
 void SmokeSimulation::applySources(double dt)
 {
-    std::vector<Eigen::Vector3f> push(m_grid.cells(), Eigen::Vector3f::Zero());
-    bool pushed = false;
     for (const SmokeSource& source : m_sources)
     {
         if (m_time < source.onsetS || m_time >= source.endS)
             continue;
-        for (int k = 0; k < m_grid.nz; ++k)
-            for (int j = 0; j < m_grid.ny; ++j)
-                for (int i = 0; i < m_grid.nx; ++i)
+        // The cells whose centres lie in the source's sphere (its bounding box searched).
+        const Eigen::Vector3d low = (source.centre - m_grid.origin) / m_grid.h - Eigen::Vector3d::Constant(source.radius / m_grid.h + 1.0);
+        const Eigen::Vector3d high = (source.centre - m_grid.origin) / m_grid.h + Eigen::Vector3d::Constant(source.radius / m_grid.h + 1.0);
+        for (int k = std::max(0, int(low.z())); k <= std::min(m_grid.nz - 1, int(high.z())); ++k)
+            for (int j = std::max(0, int(low.y())); j <= std::min(m_grid.ny - 1, int(high.y())); ++j)
+                for (int i = std::max(0, int(low.x())); i <= std::min(m_grid.nx - 1, int(high.x())); ++i)
                 {
                     const std::size_t c = m_grid.cell(i, j, k);
                     if (m_grid.solid[c] || (m_grid.centre(i, j, k) - source.centre).norm() > source.radius)
                         continue;
                     m_grid.density[c] += float(source.densityRate * dt);
                     m_grid.temperature[c] = std::max(m_grid.temperature[c], float(source.temperatureK));
-                    // The source sets its velocity: the acceleration that brings the cell there in this step.
-                    push[c] = ((source.velocity - m_grid.cellVelocity(i, j, k)) / dt).cast<float>();
-                    pushed = true;
+                    // The source sets its velocity on the faces of its cells.
+                    m_grid.u[m_grid.uFace(i, j, k)] = m_grid.u[m_grid.uFace(i + 1, j, k)] = float(source.velocity.x());
+                    m_grid.v[m_grid.vFace(i, j, k)] = m_grid.v[m_grid.vFace(i, j + 1, k)] = float(source.velocity.y());
+                    m_grid.w[m_grid.wFace(i, j, k)] = m_grid.w[m_grid.wFace(i, j, k + 1)] = float(source.velocity.z());
                 }
         m_particleDebt += source.particlesPerSecond * dt;
         const int born = int(m_particleDebt);
         if (born > 0)
         {
             m_particleDebt -= born;
-            m_particles.seed(m_grid, cellVorticity(m_grid), source.centre, source.radius, born, m_random);
+            m_particles.seed(m_grid, source.centre, source.radius, born, m_random);
         }
     }
-    if (pushed)
-        addCellForces(m_grid, push, dt);
 }
 
 SmokeStepReport SmokeSimulation::step(double dt)
 {
     SmokeStepReport report;
     report.dt = dt;
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
+    auto started = Clock::now();
     applySources(dt);
-    advect(m_grid, dt, m_settings.scheme, m_settings.scalarScheme);
+    advect(m_grid, dt, m_settings.scheme, m_settings.scalarScheme, m_steps % 2 == 1);
+    report.advectionSeconds = seconds(started);
+    started = Clock::now();
     if (m_settings.coolingPerS > 0.0)
     {
         const float keep = float(std::exp(-m_settings.coolingPerS * dt));
@@ -118,8 +124,13 @@ SmokeStepReport SmokeSimulation::step(double dt)
             t *= keep;
     }
     addBuoyancy(m_grid, dt, m_settings.buoyancyAlpha, m_settings.buoyancyBeta);
-    addVorticityConfinement(m_grid, dt, m_settings.confinement);
-    m_particles.applyForcing(m_grid, dt, m_settings.particleStrength, m_settings.particleRadius);
+    if (m_settings.confinement > 0.0 || (m_settings.particleStrength > 0.0 && m_particles.size() > 0))
+    {
+        m_force.assign(m_grid.cells(), Eigen::Vector3f::Zero());
+        accumulateVorticityConfinement(m_grid, m_settings.confinement, m_force);
+        m_particles.accumulateForcing(m_grid, m_settings.particleStrength, m_settings.particleRadius, m_force);
+        addCellForces(m_grid, m_force, dt);
+    }
     if (m_sphere)
     {
         if (m_sphere->falls)
@@ -127,9 +138,15 @@ SmokeStepReport SmokeSimulation::step(double dt)
         m_sphere->centre += dt * m_sphere->velocity;
         placeSphere();
     }
+    report.forceSeconds = seconds(started);
+    started = Clock::now();
     report.projection = project();
+    report.projectionSeconds = seconds(started);
+    started = Clock::now();
     m_particles.advance(m_grid, dt);
+    report.particleSeconds = seconds(started);
     m_time += dt;
+    ++m_steps;
     report.time = m_time;
     report.particles = m_particles.size();
     report.cfl = m_grid.maxSpeed() * dt / m_grid.h;

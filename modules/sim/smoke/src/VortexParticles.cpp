@@ -17,39 +17,22 @@ bool insideFluid(const SmokeGrid& grid, const Eigen::Vector3d& x)
     return grid.inside(i, j, k) && !grid.isSolid(i, j, k);
 }
 
-/// The curl field sampled at x, trilinear over the cell centres (the edge cells beyond the domain).
-Eigen::Vector3d curlAt(const SmokeGrid& grid, const std::vector<Eigen::Vector3f>& curl, const Eigen::Vector3d& x)
-{
-    const Eigen::Vector3d p = (x - grid.origin) / grid.h - Eigen::Vector3d(0.5, 0.5, 0.5);
-    const int n[3] = {grid.nx, grid.ny, grid.nz};
-    int lo[3];
-    double t[3];
-    for (int axis = 0; axis < 3; ++axis)
-    {
-        const double clamped = std::clamp(p[axis], 0.0, double(n[axis] - 1));
-        lo[axis] = std::min(int(clamped), std::max(n[axis] - 2, 0));
-        t[axis] = clamped - lo[axis];
-    }
-    Eigen::Vector3d value = Eigen::Vector3d::Zero();
-    for (int corner = 0; corner < 8; ++corner)
-    {
-        double weight = 1.0;
-        int at[3];
-        for (int axis = 0; axis < 3; ++axis)
-        {
-            const int up = (corner >> axis) & 1;
-            at[axis] = std::min(lo[axis] + up, n[axis] - 1);
-            weight *= up ? t[axis] : 1.0 - t[axis];
-        }
-        value += weight * curl[grid.cell(at[0], at[1], at[2])].cast<double>();
-    }
-    return value;
-}
-
 } // namespace
 
-void VortexParticles::seed(const SmokeGrid& grid, const std::vector<Eigen::Vector3f>& curl, const Eigen::Vector3d& centre,
-                           double radius, int count, std::mt19937& random)
+Eigen::Vector3d VortexParticles::vorticityAt(const SmokeGrid& grid, const Eigen::Vector3d& x)
+{
+    const double delta = 0.5 * grid.h;
+    Eigen::Vector3d d[3]; // d[a] = du/dx_a
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        const Eigen::Vector3d step = delta * Eigen::Vector3d::Unit(axis);
+        d[axis] = (grid.velocityAt(x + step) - grid.velocityAt(x - step)) / (2.0 * delta);
+    }
+    return {d[1].z() - d[2].y(), d[2].x() - d[0].z(), d[0].y() - d[1].x()};
+}
+
+void VortexParticles::seed(const SmokeGrid& grid, const Eigen::Vector3d& centre, double radius, int count,
+                           std::mt19937& random)
 {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (int n = 0; n < count; ++n)
@@ -60,7 +43,7 @@ void VortexParticles::seed(const SmokeGrid& grid, const std::vector<Eigen::Vecto
         while (offset.squaredNorm() > 1.0);
         const Eigen::Vector3d x = centre + radius * offset;
         if (insideFluid(grid, x))
-            m_particles.push_back({x, curlAt(grid, curl, x)});
+            m_particles.push_back({x, vorticityAt(grid, x)});
     }
 }
 
@@ -90,11 +73,11 @@ void VortexParticles::advance(const SmokeGrid& grid, double dt)
                       m_particles.end());
 }
 
-void VortexParticles::applyForcing(SmokeGrid& grid, double dt, double epsilon, double radius) const
+void VortexParticles::accumulateForcing(const SmokeGrid& grid, double epsilon, double radius,
+                                        std::vector<Eigen::Vector3f>& force) const
 {
     if (m_particles.empty() || epsilon <= 0.0 || radius <= 0.0)
         return;
-    std::vector<Eigen::Vector3f> force(grid.cells(), Eigen::Vector3f::Zero());
     const int reach = int(std::ceil(radius / grid.h));
     const double strength = epsilon * grid.h;
     for (const VortexParticle& particle : m_particles)
@@ -116,7 +99,6 @@ void VortexParticles::applyForcing(SmokeGrid& grid, double dt, double epsilon, d
                     force[grid.cell(i, j, k)] += (strength * (toParticle / distance).cross(weighted)).cast<float>();
                 }
     }
-    addCellForces(grid, force, dt);
 }
 
 } // namespace vsim::sim::smoke

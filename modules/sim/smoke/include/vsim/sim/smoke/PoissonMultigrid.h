@@ -23,7 +23,7 @@ public:
     /// Builds the operator and its hierarchy for the grid's solid cells and domain boundaries.
     void prepare(const SmokeGrid& grid);
 
-    /// y = A x on the finest level (solid cells: 0).
+    /// y = A x on the finest level (solid cells: 0). x must be 0 in the cells that are not fluid.
     void apply(const std::vector<float>& x, std::vector<float>& y) const;
     /// z = M^-1 r: one V-cycle from z = 0 (solid cells: 0; zero mean where the operator is singular).
     void precondition(const std::vector<float>& r, std::vector<float>& z) const;

@@ -27,8 +27,8 @@ void addBuoyancy(SmokeGrid& grid, double dt, double alpha, double beta);
 std::vector<Eigen::Vector3f> cellVorticity(const SmokeGrid& grid);
 
 /// Vorticity confinement: f = epsilon h (N x w) with N = grad|w| / |grad|w|| (eqs. 7.8 - 7.9) at the fluid cells,
-/// u += dt f on the faces. epsilon is the dimensionless strength of Fedkiw et al.
-void addVorticityConfinement(SmokeGrid& grid, double dt, double epsilon);
+/// added to `force` (m/s^2 at the cell centres). epsilon is the dimensionless strength of Fedkiw et al.
+void accumulateVorticityConfinement(const SmokeGrid& grid, double epsilon, std::vector<Eigen::Vector3f>& force);
 
 /// u += dt f on the faces from accelerations f (m/s^2) at the cell centres (a face takes the mean of its two cells;
 /// faces next to solids or on walls are left to the boundary conditions).

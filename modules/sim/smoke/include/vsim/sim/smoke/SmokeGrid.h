@@ -35,7 +35,8 @@ struct SmokeGrid
     std::vector<std::uint8_t> solid;         ///< 1: the cell is inside a solid
     std::vector<Eigen::Vector3f> solidVelocity; ///< the solid's velocity in solid cells (m/s)
 
-    /// A grid of nx x ny x nz cells of edge h, at rest, no smoke, no solid.
+    /// A grid of nx x ny x nz cells of edge h, at rest, no smoke, no solid. Throws vsim::Error below 2 cells
+    /// along an axis.
     static SmokeGrid make(int nx, int ny, int nz, double h, const DomainBoundaries& boundaries = {});
 
     std::size_t cells() const { return std::size_t(nx) * ny * nz; }

@@ -69,6 +69,9 @@ struct SmokeStepReport
     double cfl = 0.0;   ///< largest |u| dt / h after the step
     ProjectionReport projection;
     std::size_t particles = 0;
+    /// Wall-clock seconds of the step's parts: sources and advection, forces (buoyancy, confinement, particle
+    /// forcing), the projection, the vortex particles' motion.
+    double advectionSeconds = 0.0, forceSeconds = 0.0, projectionSeconds = 0.0, particleSeconds = 0.0;
     std::string guard; ///< not empty: the step failed (not finite, CFL); the state is not usable
 };
 
@@ -106,9 +109,11 @@ private:
     std::vector<SmokeSource> m_sources;
     std::optional<MovingSphere> m_sphere;
     VortexParticles m_particles;
+    std::vector<Eigen::Vector3f> m_force; ///< confinement and particle forcing at the cell centres (m/s^2)
     PressureProjection m_projection;
     std::mt19937 m_random;
     double m_time = 0.0;
+    long m_steps = 0;
     double m_particleDebt = 0.0; ///< fractions of particles owed by the sources
 };
 

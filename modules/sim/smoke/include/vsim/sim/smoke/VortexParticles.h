@@ -29,18 +29,21 @@ struct VortexParticle
 class VortexParticles
 {
 public:
-    /// Adds `count` particles uniformly inside the sphere (centre, radius; m), each with the vorticity `curl`
-    /// (cell-centred, 1/s) sampled where it lands; a place in a solid is skipped.
-    void seed(const SmokeGrid& grid, const std::vector<Eigen::Vector3f>& curl, const Eigen::Vector3d& centre,
-              double radius, int count, std::mt19937& random);
+    /// Adds `count` particles uniformly inside the sphere (centre, radius; m), each with the grid's vorticity
+    /// where it lands (vorticityAt); a place in a solid is skipped.
+    void seed(const SmokeGrid& grid, const Eigen::Vector3d& centre, double radius, int count, std::mt19937& random);
     void add(const VortexParticle& particle) { m_particles.push_back(particle); }
 
     /// Moves every particle with the grid velocity over dt (midpoint rule) and stretches its vorticity,
     /// w += dt (w . grad) u; removes those outside the domain, in a solid, or whose vorticity is not finite.
     void advance(const SmokeGrid& grid, double dt);
 
-    /// u += dt f on the faces from every particle's forcing within `radius` (m); epsilon is dimensionless.
-    void applyForcing(SmokeGrid& grid, double dt, double epsilon, double radius) const;
+    /// Adds every particle's forcing within `radius` (m) to `force` (m/s^2 at the cell centres); epsilon is
+    /// dimensionless.
+    void accumulateForcing(const SmokeGrid& grid, double epsilon, double radius, std::vector<Eigen::Vector3f>& force) const;
+
+    /// The vorticity of the grid's velocity at x (1/s): central differences of the interpolated velocity, h/2 apart.
+    static Eigen::Vector3d vorticityAt(const SmokeGrid& grid, const Eigen::Vector3d& x);
 
     const std::vector<VortexParticle>& particles() const { return m_particles; }
     std::size_t size() const { return m_particles.size(); }
