@@ -17,6 +17,7 @@ bool open(const DomainBoundaries& boundaries, int face)
 } // namespace
 
 PoissonMultigrid::Level PoissonMultigrid::makeLevel(int nx, int ny, int nz, std::vector<std::uint8_t> fluid,
+                                                    const std::vector<std::uint8_t>& ambient,
                                                     const DomainBoundaries& boundaries)
 {
     Level level;
@@ -38,7 +39,7 @@ PoissonMultigrid::Level PoissonMultigrid::makeLevel(int nx, int ny, int nz, std:
                     if (a < 0 || b < 0 || d < 0 || a >= nx || b >= ny || d >= nz)
                         count += open(boundaries, f) ? 1 : 0;
                     else
-                        count += level.fluid[level.index(a, b, d)] ? 1 : 0;
+                        count += level.fluid[level.index(a, b, d)] || ambient[level.index(a, b, d)] ? 1 : 0;
                 }
                 level.diagonal[c] = std::uint8_t(count);
             }
@@ -52,25 +53,35 @@ void PoissonMultigrid::prepare(const SmokeGrid& grid)
 {
     m_boundaries = grid.boundaries;
     m_singular = std::none_of(grid.boundaries.begin(), grid.boundaries.end(),
-                              [](DomainBoundary b) { return b == DomainBoundary::Open; });
+                              [](DomainBoundary b) { return b == DomainBoundary::Open; }) &&
+                 std::none_of(grid.solid.begin(), grid.solid.end(), [](std::uint8_t s) { return s == kVent; });
     m_levels.clear();
-    std::vector<std::uint8_t> fluid(grid.cells());
+    std::vector<std::uint8_t> fluid(grid.cells()), ambient(grid.cells());
     for (std::size_t c = 0; c < fluid.size(); ++c)
-        fluid[c] = grid.solid[c] ? 0 : 1;
-    m_levels.push_back(makeLevel(grid.nx, grid.ny, grid.nz, std::move(fluid), m_boundaries));
+        fluid[c] = grid.solid[c] == kFluid, ambient[c] = grid.solid[c] == kVent;
+    m_levels.push_back(makeLevel(grid.nx, grid.ny, grid.nz, std::move(fluid), ambient, m_boundaries));
     while (m_levels.back().fluid.size() > kCoarsestCells)
     {
         const Level& fine = m_levels.back();
         const int cx = (fine.nx + 1) / 2, cy = (fine.ny + 1) / 2, cz = (fine.nz + 1) / 2;
         if (cx < 2 || cy < 2 || cz < 2)
             break;
-        std::vector<std::uint8_t> coarse(std::size_t(cx) * cy * cz, 0);
+        // A coarse cell is fluid when any child is; a vent when none is fluid and one is a vent.
+        std::vector<std::uint8_t> coarse(std::size_t(cx) * cy * cz, 0), coarseAmbient(coarse.size(), 0);
         for (int k = 0; k < fine.nz; ++k)
             for (int j = 0; j < fine.ny; ++j)
                 for (int i = 0; i < fine.nx; ++i)
+                {
+                    const std::size_t parent = std::size_t(i / 2) + std::size_t(cx) * (j / 2 + std::size_t(cy) * (k / 2));
                     if (fine.fluid[fine.index(i, j, k)])
-                        coarse[std::size_t(i / 2) + std::size_t(cx) * (j / 2 + std::size_t(cy) * (k / 2))] = 1;
-        m_levels.push_back(makeLevel(cx, cy, cz, std::move(coarse), m_boundaries));
+                        coarse[parent] = 1;
+                    else if (ambient[fine.index(i, j, k)])
+                        coarseAmbient[parent] = 1;
+                }
+        for (std::size_t c = 0; c < coarse.size(); ++c)
+            coarseAmbient[c] = coarseAmbient[c] && !coarse[c];
+        m_levels.push_back(makeLevel(cx, cy, cz, std::move(coarse), coarseAmbient, m_boundaries));
+        ambient = std::move(coarseAmbient);
     }
 }
 

@@ -123,6 +123,9 @@ std::vector<float> divergence(const SmokeGrid& grid)
 void PressureProjection::prepare(const SmokeGrid& grid)
 {
     m_multigrid.prepare(grid);
+    m_sides.resize(grid.cells());
+    for (std::size_t c = 0; c < grid.cells(); ++c)
+        m_sides[c] = grid.solid[c] == kFluid ? 1 : grid.solid[c] == kVent ? 2 : 0;
     for (std::vector<float>* work : {&m_psi, &m_b, &m_r, &m_z, &m_p, &m_q})
         work->assign(grid.cells(), 0.0f);
 }
@@ -196,46 +199,45 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
     }
     report.converged = report.relativeResidual <= tolerance;
 
-    // u = u' - grad psi on the faces between fluid cells and on open domain faces (psi = 0 outside).
-    const std::vector<std::uint8_t>& fluid = m_multigrid.fluid();
+    // u = u' - grad psi on the faces between fluid cells, and between a fluid cell and the ambient (an open domain
+    // face or a vent cell, psi = 0 there).
     const float inverse = float(1.0 / grid.h);
     const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
     const auto open = [&](int face) { return grid.boundaries[std::size_t(face)] == DomainBoundary::Open; };
-    const auto psiAt = [&](int i, int j, int k) { return m_psi[grid.cell(i, j, k)]; };
+    // Each side of a face: 1 fluid (psi of the cell), 2 ambient (psi 0), 0 a wall or a solid (no correction).
+    const std::uint8_t openSide[6] = {std::uint8_t(open(0) ? 2 : 0), std::uint8_t(open(1) ? 2 : 0), std::uint8_t(open(2) ? 2 : 0),
+                                      std::uint8_t(open(3) ? 2 : 0), std::uint8_t(open(4) ? 2 : 0), std::uint8_t(open(5) ? 2 : 0)};
+    const std::vector<std::uint8_t>& kind = m_sides;
+    const auto correct = [&](float& face, std::uint8_t low, std::uint8_t high, std::size_t lowCell, std::size_t highCell) {
+        if ((low == 1 && high != 0) || (high == 1 && low != 0))
+            face -= inverse * ((high == 1 ? m_psi[highCell] : 0.0f) - (low == 1 ? m_psi[lowCell] : 0.0f));
+    };
+    const std::size_t row = std::size_t(nx), slab = std::size_t(nx) * ny;
 #pragma omp parallel for schedule(static)
     for (int k = 0; k < nz; ++k)
         for (int j = 0; j < ny; ++j)
-        {
             for (int i = 0; i <= nx; ++i)
             {
-                const bool left = i > 0 && fluid[grid.cell(i - 1, j, k)], right = i < nx && fluid[grid.cell(i, j, k)];
-                const bool leftOpen = i == 0 && open(0), rightOpen = i == nx && open(1);
-                if ((left && right) || (left && rightOpen) || (right && leftOpen))
-                    grid.u[grid.uFace(i, j, k)] -=
-                        inverse * ((right ? psiAt(i, j, k) : 0.0f) - (left ? psiAt(i - 1, j, k) : 0.0f));
+                const std::size_t c = grid.cell(std::min(i, nx - 1), j, k) + (i == nx ? 1 : 0);
+                correct(grid.u[grid.uFace(i, j, k)], i > 0 ? kind[c - 1] : openSide[0], i < nx ? kind[c] : openSide[1], c - (i > 0), c);
             }
-        }
 #pragma omp parallel for schedule(static)
     for (int k = 0; k < nz; ++k)
         for (int j = 0; j <= ny; ++j)
             for (int i = 0; i < nx; ++i)
             {
-                const bool low = j > 0 && fluid[grid.cell(i, j - 1, k)], high = j < ny && fluid[grid.cell(i, j, k)];
-                const bool lowOpen = j == 0 && open(2), highOpen = j == ny && open(3);
-                if ((low && high) || (low && highOpen) || (high && lowOpen))
-                    grid.v[grid.vFace(i, j, k)] -=
-                        inverse * ((high ? psiAt(i, j, k) : 0.0f) - (low ? psiAt(i, j - 1, k) : 0.0f));
+                const std::size_t c = std::size_t(i) + row * std::size_t(j) + slab * std::size_t(k); // linear in j
+                correct(grid.v[grid.vFace(i, j, k)], j > 0 ? kind[c - row] : openSide[2], j < ny ? kind[c] : openSide[3],
+                        j > 0 ? c - row : c, c);
             }
 #pragma omp parallel for schedule(static)
     for (int k = 0; k <= nz; ++k)
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i)
             {
-                const bool low = k > 0 && fluid[grid.cell(i, j, k - 1)], high = k < nz && fluid[grid.cell(i, j, k)];
-                const bool lowOpen = k == 0 && open(4), highOpen = k == nz && open(5);
-                if ((low && high) || (low && highOpen) || (high && lowOpen))
-                    grid.w[grid.wFace(i, j, k)] -=
-                        inverse * ((high ? psiAt(i, j, k) : 0.0f) - (low ? psiAt(i, j, k - 1) : 0.0f));
+                const std::size_t c = std::size_t(i) + row * std::size_t(j) + slab * std::size_t(k); // linear in k
+                correct(grid.w[grid.wFace(i, j, k)], k > 0 ? kind[c - slab] : openSide[4], k < nz ? kind[c] : openSide[5],
+                        k > 0 ? c - slab : c, c);
             }
 
     const std::vector<float> after = divergence(grid);

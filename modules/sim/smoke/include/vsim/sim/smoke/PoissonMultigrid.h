@@ -3,7 +3,7 @@
 // The pressure Poisson operator of the MAC grid and its multigrid preconditioner (McAdams, Sifakis & Teran 2010,
 // "A parallel multigrid Poisson solver for fluids simulation"): A x = sum over a fluid cell's faces of (x_cell -
 // x_neighbour), with no term through a solid face (Neumann, dp/dn = 0) and x = 0 beyond an open domain face
-// (Dirichlet, ambient pressure). The hierarchy halves the grid (a coarse cell is fluid when any of its eight
+// (Dirichlet, ambient pressure), and so in a vent cell. The hierarchy halves the grid (a coarse cell is fluid when any of its eight
 // children is); one V-cycle smooths with red-black Gauss-Seidel, red then black going down and black then red
 // coming up, so that the preconditioner is symmetric as conjugate gradients needs; the residual goes down as the
 // children's sum over two (the coarse operator is the same stencil at twice the spacing), the correction comes up
@@ -45,7 +45,9 @@ private:
         std::size_t index(int i, int j, int k) const { return std::size_t(i) + std::size_t(nx) * (j + std::size_t(ny) * k); }
     };
 
-    static Level makeLevel(int nx, int ny, int nz, std::vector<std::uint8_t> fluid, const DomainBoundaries& boundaries);
+    /// `ambient`: 1 where a cell is a vent (x = 0 there, as beyond an open face).
+    static Level makeLevel(int nx, int ny, int nz, std::vector<std::uint8_t> fluid, const std::vector<std::uint8_t>& ambient,
+                           const DomainBoundaries& boundaries);
     void applyLevel(const Level& level, const std::vector<float>& x, std::vector<float>& y) const;
     void smooth(const Level& level, std::vector<float>& x, const std::vector<float>& b, int colourFirst) const;
     void vcycle(std::size_t depth, const std::vector<float>& b, std::vector<float>& x) const;

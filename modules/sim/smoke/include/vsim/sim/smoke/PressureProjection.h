@@ -43,6 +43,7 @@ public:
 
 private:
     PoissonMultigrid m_multigrid;
+    std::vector<std::uint8_t> m_sides; ///< per cell: 1 fluid, 2 a vent (ambient), 0 solid
     std::vector<float> m_psi, m_b, m_r, m_z, m_p, m_q;
 };
 

@@ -23,6 +23,10 @@ enum class DomainBoundary : std::uint8_t
 /// The domain's faces in the order x-, x+, y-, y+, z-, z+.
 using DomainBoundaries = std::array<DomainBoundary, 6>;
 
+/// What a cell is: fluid; solid (anatomy, a moving body: no flow through its faces); or a vent, where the pressure
+/// is ambient (an insufflation port, a trocar: flow and smoke leave and enter through it, like an open face).
+inline constexpr std::uint8_t kFluid = 0, kSolid = 1, kVent = 2;
+
 struct SmokeGrid
 {
     int nx = 0, ny = 0, nz = 0;
@@ -32,7 +36,7 @@ struct SmokeGrid
     std::vector<float> u, v, w;              ///< face velocities (m/s)
     std::vector<float> density;              ///< smoke density at the cell centres (kg/m^3)
     std::vector<float> temperature;          ///< rise above the ambient at the cell centres (K)
-    std::vector<std::uint8_t> solid;         ///< 1: the cell is inside a solid
+    std::vector<std::uint8_t> solid;         ///< kFluid, kSolid (inside a solid) or kVent
     std::vector<Eigen::Vector3f> solidVelocity; ///< the solid's velocity in solid cells (m/s)
 
     /// A grid of nx x ny x nz cells of edge h, at rest, no smoke, no solid. Throws vsim::Error below 2 cells
@@ -45,7 +49,8 @@ struct SmokeGrid
     std::size_t vFace(int i, int j, int k) const { return std::size_t(i) + std::size_t(nx) * (j + std::size_t(ny + 1) * k); }
     std::size_t wFace(int i, int j, int k) const { return std::size_t(i) + std::size_t(nx) * (j + std::size_t(ny) * k); }
     bool inside(int i, int j, int k) const { return i >= 0 && j >= 0 && k >= 0 && i < nx && j < ny && k < nz; }
-    bool isSolid(int i, int j, int k) const { return solid[cell(i, j, k)] != 0; }
+    bool isSolid(int i, int j, int k) const { return solid[cell(i, j, k)] == kSolid; }
+    bool isFluid(std::size_t c) const { return solid[c] == kFluid; }
     /// The centre of cell (i, j, k) (m).
     Eigen::Vector3d centre(int i, int j, int k) const
     {
