@@ -1,6 +1,7 @@
 // The declarations of vascusim-cli's commands: options, positional arguments and usage (CommandLine.h).
 
 #include "BloodFlowCommand.h"
+#include "SmokeCommand.h"
 #include "CommandLine.h"
 #include "DemoCommand.h"
 #include "NetworkCommands.h"
@@ -189,6 +190,18 @@ std::vector<CommandSpec> declareCommands()
          "    and in the box, how far the blood has run) and the mass balance; a Run of particle frames; the frame\n"
          "    series to DIR. Wall absorption of the injected drug: --param absorption_distance_mm=0.1 (CPU)",
          simulateInjection},
+        {"simulate smoke", 1, 1,
+         {kStudy, value("scenario"), value("grid"), value("particles"), value("frames"), value("backend"), kParam,
+          value("out"), kWait},
+         "simulate smoke --study <study.vsim> [--scenario ball-drop|evh|liver-ablation] [--grid 64] [--particles N]\n"
+         "               [--frames 20] [--backend cpu] [--param key=value ...] [--out DIR]\n"
+         "    surgical smoke (thesis ch. 7, illustrative scenes): ball-drop (the thesis demo, a 1 m box), evh (a CO2\n"
+         "    tunnel around the study's longest centerline segment, smoke from 9 s after the cautery's contact),\n"
+         "    liver-ablation (a dome over the study's liver label, else a box phantom, with a suction port); stable\n"
+         "    fluids with vorticity confinement and vortex particles, the projection by MGPCG. Prints the\n"
+         "    endoscope's obscuration curve (Beer-Lambert, K_m 8.7 m^2/g) with the times to 50 % and 90 %, a Run of\n"
+         "    smoke density frames; the frame series to DIR. `vascusim-cli parameters smoke` lists the parameters",
+         simulateSmoke},
         {"validate", 1, 1, {},
          "validate <case|fem|network|sph|heat|all>\n"
          "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"

@@ -17,6 +17,7 @@
 #include "vsim/sim/heat/HeatDiffusion.h"
 #include "vsim/sim/network/NetworkRun.h"
 #include "vsim/sim/network/Territories.h"
+#include "vsim/sim/smoke/SmokeSolver.h"
 #include "vsim/sim/sph/SphSolver.h"
 
 #include <nlohmann/json.hpp>
@@ -41,6 +42,7 @@ std::vector<ParameterTable> parameterCatalogue()
         {"blood-flow", bloodFlowSetupParameters()},
         {"sph", sim::sph::sphParameters()},
         {"injection", injectionSetupParameters()},
+        {"smoke", sim::smoke::smokeParameters()},
         {"heat", sim::heat::heatParameters()},
         {"run-control", sim::runControlParameters()},
     };

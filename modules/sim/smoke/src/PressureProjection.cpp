@@ -130,7 +130,8 @@ void PressureProjection::prepare(const SmokeGrid& grid)
         work->assign(grid.cells(), 0.0f);
 }
 
-ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, int maxIterations)
+ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, int maxIterations,
+                                             const std::vector<float>* sourceDivergence)
 {
     if (m_psi.size() != grid.cells())
         prepare(grid);
@@ -145,7 +146,7 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
     const std::vector<float> div = divergence(grid);
     const float scale = float(-grid.h * grid.h);
     for (std::size_t c = 0; c < div.size(); ++c)
-        m_b[c] = scale * div[c];
+        m_b[c] = scale * (div[c] - (sourceDivergence ? (*sourceDivergence)[c] : 0.0f));
     m_multigrid.removeNullSpace(m_b);
     const double bNorm = std::sqrt(dot(m_b, m_b));
     if (bNorm > 0.0)
@@ -241,8 +242,9 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
             }
 
     const std::vector<float> after = divergence(grid);
-    for (float value : after)
-        report.maxDivergence = std::max(report.maxDivergence, double(std::abs(value)));
+    for (std::size_t c = 0; c < after.size(); ++c)
+        report.maxDivergence = std::max(report.maxDivergence,
+                                        double(std::abs(after[c] - (sourceDivergence ? (*sourceDivergence)[c] : 0.0f))));
     const double speed = grid.maxSpeed();
     report.divergenceRatio = speed > 0.0 ? report.maxDivergence * grid.h / speed : 0.0;
     return report;

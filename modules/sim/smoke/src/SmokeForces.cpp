@@ -6,20 +6,31 @@
 
 namespace vsim::sim::smoke {
 
-void addBuoyancy(SmokeGrid& grid, double dt, double alpha, double beta)
+void addBuoyancy(SmokeGrid& grid, double dt, double alpha, double beta, const Eigen::Vector3d& up)
 {
+    const int n[3] = {grid.nx, grid.ny, grid.nz};
+    std::vector<float>* faces[3] = {&grid.u, &grid.v, &grid.w};
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        if (up[axis] == 0.0)
+            continue;
+        const double scale = dt * up[axis];
+        const int d[3] = {axis == 0, axis == 1, axis == 2};
+        std::vector<float>& face = *faces[axis];
 #pragma omp parallel for schedule(static)
-    for (int k = 1; k < grid.nz; ++k)
-        for (int j = 0; j < grid.ny; ++j)
-            for (int i = 0; i < grid.nx; ++i)
-            {
-                const std::size_t below = grid.cell(i, j, k - 1), above = grid.cell(i, j, k);
-                if (grid.solid[below] || grid.solid[above])
-                    continue;
-                const double t = 0.5 * (grid.temperature[below] + grid.temperature[above]);
-                const double rho = 0.5 * (grid.density[below] + grid.density[above]);
-                grid.w[grid.wFace(i, j, k)] += float(dt * (beta * t - alpha * rho));
-            }
+        for (int k = d[2]; k < n[2]; ++k)
+            for (int j = d[1]; j < n[1]; ++j)
+                for (int i = d[0]; i < n[0]; ++i)
+                {
+                    const std::size_t below = grid.cell(i - d[0], j - d[1], k - d[2]), above = grid.cell(i, j, k);
+                    if (grid.solid[below] || grid.solid[above])
+                        continue;
+                    const double t = 0.5 * (grid.temperature[below] + grid.temperature[above]);
+                    const double rho = 0.5 * (grid.density[below] + grid.density[above]);
+                    const std::size_t f = axis == 0 ? grid.uFace(i, j, k) : axis == 1 ? grid.vFace(i, j, k) : grid.wFace(i, j, k);
+                    face[f] += float(scale * (beta * t - alpha * rho));
+                }
+    }
 }
 
 std::vector<Eigen::Vector3f> cellVorticity(const SmokeGrid& grid)

@@ -1,5 +1,6 @@
 #include "vsim/sim/smoke/SmokeSimulation.h"
 
+#include "vsim/core/Error.h"
 #include "vsim/sim/smoke/SmokeForces.h"
 
 #include <algorithm>
@@ -53,6 +54,25 @@ void SmokeSimulation::placeSphere()
             m_grid.density[c] = 0.0f, m_grid.temperature[c] = 0.0f;
 }
 
+void SmokeSimulation::setSuction(const SmokeSuction& suction)
+{
+    if (m_projection.multigrid().singular())
+        throw Error("a suction needs a vent or an open face for the gas it takes out to be replaced");
+    std::vector<std::size_t> cells;
+    for (int k = 0; k < m_grid.nz; ++k)
+        for (int j = 0; j < m_grid.ny; ++j)
+            for (int i = 0; i < m_grid.nx; ++i)
+                if (m_grid.isFluid(m_grid.cell(i, j, k)) && (m_grid.centre(i, j, k) - suction.centre).norm() <= suction.radius)
+                    cells.push_back(m_grid.cell(i, j, k));
+    if (cells.empty())
+        throw Error("the suction port has no fluid cell within its radius");
+    m_suction = suction;
+    m_sink.assign(m_grid.cells(), 0.0f);
+    const double perCell = suction.flowM3S / (double(cells.size()) * m_grid.h * m_grid.h * m_grid.h);
+    for (std::size_t c : cells)
+        m_sink[c] = float(-perCell);
+}
+
 void SmokeSimulation::seedParticles(const Eigen::Vector3d& centre, double radius, int count)
 {
     m_particles.seed(m_grid, centre, radius, count, m_random);
@@ -70,7 +90,8 @@ double SmokeSimulation::stableStep(double maxDt) const
 
 ProjectionReport SmokeSimulation::project()
 {
-    return m_projection.project(m_grid, m_settings.tolerance, m_settings.maxIterations);
+    const bool sucking = m_suction && m_time >= m_suction->onS && m_time < m_suction->offS;
+    return m_projection.project(m_grid, m_settings.tolerance, m_settings.maxIterations, sucking ? &m_sink : nullptr);
 }
 
 void SmokeSimulation::applySources(double dt)
@@ -123,7 +144,7 @@ SmokeStepReport SmokeSimulation::step(double dt)
         for (float& t : m_grid.temperature)
             t *= keep;
     }
-    addBuoyancy(m_grid, dt, m_settings.buoyancyAlpha, m_settings.buoyancyBeta);
+    addBuoyancy(m_grid, dt, m_settings.buoyancyAlpha, m_settings.buoyancyBeta, m_settings.up);
     if (m_settings.confinement > 0.0 || (m_settings.particleStrength > 0.0 && m_particles.size() > 0))
     {
         m_force.assign(m_grid.cells(), Eigen::Vector3f::Zero());
@@ -134,8 +155,19 @@ SmokeStepReport SmokeSimulation::step(double dt)
     if (m_sphere)
     {
         if (m_sphere->falls)
-            m_sphere->velocity.z() -= kGravity * dt;
+            m_sphere->velocity -= kGravity * dt * m_settings.up;
         m_sphere->centre += dt * m_sphere->velocity;
+        // The domain's walls stop it (it comes to rest on the floor: no bounce).
+        const Eigen::Vector3d low = m_grid.origin + Eigen::Vector3d::Constant(m_sphere->radius);
+        const Eigen::Vector3d high =
+            m_grid.origin + m_grid.h * Eigen::Vector3d(m_grid.nx, m_grid.ny, m_grid.nz) - Eigen::Vector3d::Constant(m_sphere->radius);
+        const Eigen::Vector3d inside = m_sphere->centre.cwiseMax(low).cwiseMin(high);
+        if (inside != m_sphere->centre)
+        {
+            m_sphere->centre = inside;
+            m_sphere->velocity.setZero();
+            m_sphere->falls = false;
+        }
         placeSphere();
     }
     report.forceSeconds = seconds(started);

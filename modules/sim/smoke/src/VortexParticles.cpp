@@ -62,7 +62,9 @@ void VortexParticles::advance(const SmokeGrid& grid, double dt)
             stretch += particle.vorticity[axis] *
                        (grid.velocityAt(particle.position + step) - grid.velocityAt(particle.position - step)) / (2.0 * delta);
         }
-        particle.vorticity += dt * stretch;
+        // Thesis 7.2.3: each step starts from the grid's vorticity at the particle ([204]), which the stretching
+        // then carries on over the step; a particle's vorticity cannot run away from the flow's.
+        particle.vorticity = vorticityAt(grid, particle.position) + dt * stretch;
         const Eigen::Vector3d middle = particle.position + 0.5 * dt * grid.velocityAt(particle.position);
         particle.position += dt * grid.velocityAt(middle);
     }

@@ -18,7 +18,7 @@ struct ProjectionReport
     int iterations = 0;
     double relativeResidual = 0.0;   ///< ||b - A psi|| / ||b|| at the end (0 when b = 0)
     bool converged = false;          ///< relativeResidual <= the tolerance asked for
-    double maxDivergence = 0.0;      ///< largest |div u| over the fluid cells afterwards (1/s)
+    double maxDivergence = 0.0;      ///< largest |div u - the source's| over the fluid cells afterwards (1/s)
     double divergenceRatio = 0.0;    ///< maxDivergence h / max |u| (dimensionless; 0 at rest)
 };
 
@@ -35,8 +35,10 @@ public:
     /// Builds the operator for the grid's solids and boundaries; call again after they change.
     void prepare(const SmokeGrid& grid);
     /// Projects the grid's velocity: the solid faces first, then the solve to `tolerance` (relative residual) in
-    /// at most `maxIterations` conjugate-gradient iterations.
-    ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations);
+    /// at most `maxIterations` conjugate-gradient iterations. `sourceDivergence` (1/s per cell, optional) is the
+    /// divergence the flow keeps: a suction's sink (negative) takes that much volume out of its cells.
+    ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations,
+                             const std::vector<float>* sourceDivergence = nullptr);
     /// psi of the last projection (m^2/s; the pressure is rho psi / dt).
     const std::vector<float>& potential() const { return m_psi; }
     const PoissonMultigrid& multigrid() const { return m_multigrid; }

@@ -2,7 +2,7 @@
 
 // The body forces of the smoke step (thesis eqs. 7.3 - 7.4, 7.7 - 7.9), as accelerations (m/s^2) on the faces:
 // Boussinesq buoyancy of hot, smoke-laden air, and vorticity confinement (Fedkiw, Stam & Jensen 2001), which puts
-// back the small swirls the coarse grid's interpolation smooths away. The grid's z axis points up.
+// back the small swirls the coarse grid's interpolation smooths away.
 
 #include "vsim/sim/smoke/SmokeGrid.h"
 
@@ -18,9 +18,11 @@ inline constexpr double kGravity = 9.81;
 inline constexpr double kAmbientK = 293.15;
 inline constexpr double kAirDensity = 1.204; // kg/m^3 at 20 degC, 1 atm
 
-/// w += dt (beta T - alpha rho_smoke) on the z faces between cells that are not solid (T and rho averaged to the
-/// face). alpha in m/s^2 per kg/m^3, beta in m/s^2 per K.
-void addBuoyancy(SmokeGrid& grid, double dt, double alpha, double beta);
+/// u += dt (beta T - alpha rho_smoke) up on the faces between cells that are not solid (T and rho averaged to the
+/// face); `up` is the unit vector against gravity in the grid's axes (a supine patient's anterior). alpha in
+/// m/s^2 per kg/m^3, beta in m/s^2 per K.
+void addBuoyancy(SmokeGrid& grid, double dt, double alpha, double beta,
+                 const Eigen::Vector3d& up = Eigen::Vector3d::UnitZ());
 
 /// The vorticity w = curl u at the cell centres (1/s), central differences of the cell velocities (one-sided at
 /// the domain's edge); 0 in solid cells.

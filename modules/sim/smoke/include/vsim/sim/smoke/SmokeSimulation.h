@@ -35,13 +35,24 @@ struct SmokeSource
     double particlesPerSecond = 0.0; ///< vortex particles born per second
 };
 
+/// A suction (smoke evacuation) port: takes `flowM3S` of gas, with the smoke it carries, out of the cells within
+/// `radius` of `centre` while it is on; the gas comes back in through the vents or open faces.
+struct SmokeSuction
+{
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< m
+    double radius = 0.0;                              ///< m
+    double flowM3S = 0.0;                             ///< m^3/s (1 l/min = 1.667e-5 m^3/s)
+    double onS = 0.0, offS = std::numeric_limits<double>::infinity(); ///< s
+};
+
 /// A rigid sphere moving through the domain (the thesis's falling ball): position, velocity, and gravity on it.
 struct MovingSphere
 {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();   ///< m
     double radius = 0.0;                                ///< m
     Eigen::Vector3d velocity = Eigen::Vector3d::Zero(); ///< m/s
-    bool falls = false;                                 ///< accelerated by gravity (-z); no drag
+    bool falls = false;                                 ///< accelerated by gravity (against `up`); no drag; it
+                                                        ///< comes to rest at the domain's walls
 };
 
 struct SmokeSettings
@@ -50,6 +61,7 @@ struct SmokeSettings
     AdvectionScheme scalarScheme = AdvectionScheme::Conservative;        ///< for the smoke and the heat
     double buoyancyAlpha = 0.0; ///< m/s^2 per kg/m^3 of smoke (pulls down)
     double buoyancyBeta = 0.0;  ///< m/s^2 per K (lifts)
+    Eigen::Vector3d up = Eigen::Vector3d::UnitZ(); ///< against gravity, in the grid's axes
     double coolingPerS = 0.0;   ///< temperature relaxation rate (1/s)
     double confinement = 0.0;   ///< vorticity confinement epsilon (dimensionless)
     double particleStrength = 0.0; ///< the vortex particles' forcing epsilon (dimensionless)
@@ -82,6 +94,9 @@ public:
     SmokeSimulation(SmokeGrid grid, const SmokeSettings& settings);
 
     void addSource(const SmokeSource& source) { m_sources.push_back(source); }
+    /// Throws vsim::Error when the domain has neither a vent nor an open face (the gas would have nowhere to come
+    /// from).
+    void setSuction(const SmokeSuction& suction);
     void setSphere(const MovingSphere& sphere);
     /// Seeds vortex particles from the grid's current vorticity (the Taylor-Green case).
     void seedParticles(const Eigen::Vector3d& centre, double radius, int count);
@@ -107,6 +122,8 @@ private:
     SmokeSettings m_settings;
     std::vector<std::uint8_t> m_staticSolid;
     std::vector<SmokeSource> m_sources;
+    std::optional<SmokeSuction> m_suction;
+    std::vector<float> m_sink; ///< the suction's divergence per cell while it is on (1/s)
     std::optional<MovingSphere> m_sphere;
     VortexParticles m_particles;
     std::vector<Eigen::Vector3f> m_force; ///< confinement and particle forcing at the cell centres (m/s^2)

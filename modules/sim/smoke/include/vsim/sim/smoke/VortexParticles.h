@@ -2,7 +2,9 @@
 
 // Vortex particles (thesis 7.2.3, after Selle, Rasmussen & Fedkiw 2005): particles that carry vorticity through
 // the flow, so that swirls the grid smooths away live on. Each particle is seeded with the grid's vorticity where
-// it is born, moves with the grid velocity (eq. 7.18), its vorticity stretched by the velocity gradient (eq. 7.19),
+// it is born, moves with the grid velocity (eq. 7.18); each step its vorticity starts from the grid's at its place
+// (the thesis: "the velocity field obtained from the grid-based method was used to compute the initial vorticities
+// of the vortex particles at the beginning of each time step") and is stretched by the velocity gradient (eq. 7.19),
 // and at each step it pushes the grid within a control radius r: at a cell a distance d away the particle's
 // vorticity weighs w_a = w_p exp(-d^2 / 2 r^2) (the clamped Gaussian of eq. 7.20 scaled to 1 at the particle), and
 // the force f = epsilon h (N x w_a) with N the unit vector from the cell towards the particle, the confinement
