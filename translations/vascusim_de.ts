@@ -2485,6 +2485,194 @@
         <source>a run that has not reached its end after this many steps stops with a message (a collapsing time step)</source>
         <translation>ein Lauf, der nach so vielen Schritten sein Ende nicht erreicht hat, hält mit einer Meldung an (ein kollabierender Zeitschritt)</translation>
     </message>
+    <message>
+        <source>Grid</source>
+        <translation>Gitter</translation>
+    </message>
+    <message>
+        <source>Cells along the longest edge</source>
+        <translation>Zellen entlang der längsten Kante</translation>
+    </message>
+    <message>
+        <source>the grid&apos;s resolution (the thesis demo: 256); cubic cells</source>
+        <translation>die Auflösung des Gitters (Demo der Dissertation: 256); würfelförmige Zellen</translation>
+    </message>
+    <message>
+        <source>Longest step</source>
+        <translation>Längster Zeitschritt</translation>
+    </message>
+    <message>
+        <source>the step is shorter when the flow is fast (cfl)</source>
+        <translation>der Schritt wird kürzer, wenn die Strömung schnell ist (cfl)</translation>
+    </message>
+    <message>
+        <source>cells the fastest flow crosses in one step (semi-Lagrangian advection is stable beyond 1)</source>
+        <translation>Zellen, die die schnellste Strömung in einem Schritt durchquert (semi-Lagrange-Advektion ist auch über 1 stabil)</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Velocity advection</source>
+        <translation>Advektion der Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>0 semi-Lagrangian, 1 MacCormack with the limiter (Selle et al. 2008)</source>
+        <translation>0 semi-Lagrange, 1 MacCormack mit Begrenzer (Selle et al. 2008)</translation>
+    </message>
+    <message>
+        <source>Projection tolerance</source>
+        <translation>Toleranz der Projektion</translation>
+    </message>
+    <message>
+        <source>relative residual of the pressure solve (MGPCG)</source>
+        <translation>relatives Residuum der Drucklösung (MGPCG)</translation>
+    </message>
+    <message>
+        <source>Projection iterations</source>
+        <translation>Iterationen der Projektion</translation>
+    </message>
+    <message>
+        <source>conjugate-gradient iterations per projection at most</source>
+        <translation>höchstens so viele CG-Iterationen je Projektion</translation>
+    </message>
+    <message>
+        <source>Vorticity confinement</source>
+        <translation>Wirbelstärkeerhaltung (Vorticity Confinement)</translation>
+    </message>
+    <message>
+        <source>epsilon of Fedkiw et al. 2001 (thesis eq. 7.9): f = epsilon h (N x w)</source>
+        <translation>Epsilon nach Fedkiw et al. 2001 (Dissertation Gl. 7.9): f = epsilon h (N x w)</translation>
+    </message>
+    <message>
+        <source>Vortex particle strength</source>
+        <translation>Stärke der Wirbelpartikel</translation>
+    </message>
+    <message>
+        <source>epsilon of the particles&apos; forcing (thesis eqs. 7.20-7.23); too large is unstable</source>
+        <translation>Epsilon des Antriebs durch die Partikel (Dissertation Gl. 7.20-7.23); zu groß ist instabil</translation>
+    </message>
+    <message>
+        <source>Vortex particle radius</source>
+        <translation>Radius der Wirbelpartikel</translation>
+    </message>
+    <message>
+        <source>the clamped Gaussian&apos;s control radius r</source>
+        <translation>der Wirkradius r der abgeschnittenen Gauß-Funktion</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Vortex particles</source>
+        <translation>Wirbelpartikel</translation>
+    </message>
+    <message>
+        <source>born at the source over its duration (thesis: 1,100 in the demo, 400 in EVH)</source>
+        <translation>an der Quelle während ihrer Dauer erzeugt (Dissertation: 1.100 in der Demo, 400 bei EVH)</translation>
+    </message>
+    <message>
+        <source>Smoke emission</source>
+        <translation>Rauchemission</translation>
+    </message>
+    <message>
+        <source>particulate mass the cautery releases (an assumption: published rates vary widely)</source>
+        <translation>Partikelmasse, die der Kauter freisetzt (eine Annahme: veröffentlichte Raten streuen stark)</translation>
+    </message>
+    <message>
+        <source>Plume temperature</source>
+        <translation>Temperatur der Rauchfahne</translation>
+    </message>
+    <message>
+        <source>the plume&apos;s rise above the ambient at the source</source>
+        <translation>Übertemperatur der Rauchfahne gegenüber der Umgebung an der Quelle</translation>
+    </message>
+    <message>
+        <source>Plume speed</source>
+        <translation>Geschwindigkeit der Rauchfahne</translation>
+    </message>
+    <message>
+        <source>initial velocity of the plume, along gravity&apos;s up (liver ablation: lower, thesis)</source>
+        <translation>Anfangsgeschwindigkeit der Rauchfahne, entgegen der Schwerkraft (Leberablation: geringer, Dissertation)</translation>
+    </message>
+    <message>
+        <source>Smoke onset</source>
+        <translation>Rauchbeginn</translation>
+    </message>
+    <message>
+        <source>when the smoke starts after the tool&apos;s contact (EVH: 9 s, thesis)</source>
+        <translation>wann der Rauch nach dem Kontakt des Instruments beginnt (EVH: 9 s, Dissertation)</translation>
+    </message>
+    <message>
+        <source>Smoke duration</source>
+        <translation>Rauchdauer</translation>
+    </message>
+    <message>
+        <source>how long it emits</source>
+        <translation>wie lange er austritt</translation>
+    </message>
+    <message>
+        <source>Plume cooling</source>
+        <translation>Abkühlung der Rauchfahne</translation>
+    </message>
+    <message>
+        <source>rate at which the plume&apos;s temperature rise relaxes (mixing, walls)</source>
+        <translation>Rate, mit der die Übertemperatur der Rauchfahne abklingt (Vermischung, Wände)</translation>
+    </message>
+    <message>
+        <source>Suction</source>
+        <translation>Absaugung</translation>
+    </message>
+    <message>
+        <source>smoke evacuation flow at the suction port (scenes with a port)</source>
+        <translation>Absaugfluss am Absaugport (Szenen mit Port)</translation>
+    </message>
+    <message>
+        <source>Suction on</source>
+        <translation>Absaugung ein</translation>
+    </message>
+    <message>
+        <source>when the suction starts</source>
+        <translation>wann die Absaugung beginnt</translation>
+    </message>
+    <message>
+        <source>Suction off</source>
+        <translation>Absaugung aus</translation>
+    </message>
+    <message>
+        <source>when it stops</source>
+        <translation>wann sie endet</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Sicht</translation>
+    </message>
+    <message>
+        <source>Mass extinction coefficient</source>
+        <translation>Massenextinktionskoeffizient</translation>
+    </message>
+    <message>
+        <source>Beer-Lambert&apos;s K_m (8.7 m^2/g: Mulholland &amp; Croarkin 2000)</source>
+        <translation>K_m nach Beer-Lambert (8,7 m^2/g: Mulholland &amp; Croarkin 2000)</translation>
+    </message>
+    <message>
+        <source>Visibility threshold</source>
+        <translation>Sichtbarkeitsschwelle</translation>
+    </message>
+    <message>
+        <source>a pixel is obscured below this transmittance</source>
+        <translation>ein Pixel gilt unterhalb dieser Transmission als verdeckt</translation>
+    </message>
+    <message>
+        <source>Obscuration sampling</source>
+        <translation>Abtastung der Verdeckung</translation>
+    </message>
+    <message>
+        <source>interval of the obscuration curve</source>
+        <translation>Intervall der Verdeckungskurve</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Progress</name>
@@ -2735,6 +2923,10 @@
     <message>
         <source>wall</source>
         <translation>Wand</translation>
+    </message>
+    <message>
+        <source>smoke scene</source>
+        <translation>Rauchszene</translation>
     </message>
 </context>
 <context>

@@ -2485,6 +2485,194 @@
         <source>a run that has not reached its end after this many steps stops with a message (a collapsing time step)</source>
         <translation>此步数后仍未到达终点的运行会停止并给出消息（时间步长崩塌）</translation>
     </message>
+    <message>
+        <source>Grid</source>
+        <translation>网格</translation>
+    </message>
+    <message>
+        <source>Cells along the longest edge</source>
+        <translation>最长边上的单元数</translation>
+    </message>
+    <message>
+        <source>the grid&apos;s resolution (the thesis demo: 256); cubic cells</source>
+        <translation>网格分辨率（论文演示：256）；立方体单元</translation>
+    </message>
+    <message>
+        <source>Longest step</source>
+        <translation>最大时间步长</translation>
+    </message>
+    <message>
+        <source>the step is shorter when the flow is fast (cfl)</source>
+        <translation>流动较快时步长更短（cfl）</translation>
+    </message>
+    <message>
+        <source>cells the fastest flow crosses in one step (semi-Lagrangian advection is stable beyond 1)</source>
+        <translation>最快流动在一步内穿过的单元数（半拉格朗日平流在大于 1 时仍稳定）</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>求解器</translation>
+    </message>
+    <message>
+        <source>Velocity advection</source>
+        <translation>速度平流</translation>
+    </message>
+    <message>
+        <source>0 semi-Lagrangian, 1 MacCormack with the limiter (Selle et al. 2008)</source>
+        <translation>0 半拉格朗日，1 带限制器的 MacCormack（Selle et al. 2008）</translation>
+    </message>
+    <message>
+        <source>Projection tolerance</source>
+        <translation>投影容差</translation>
+    </message>
+    <message>
+        <source>relative residual of the pressure solve (MGPCG)</source>
+        <translation>压力求解的相对残差（MGPCG）</translation>
+    </message>
+    <message>
+        <source>Projection iterations</source>
+        <translation>投影迭代次数</translation>
+    </message>
+    <message>
+        <source>conjugate-gradient iterations per projection at most</source>
+        <translation>每次投影的共轭梯度迭代上限</translation>
+    </message>
+    <message>
+        <source>Vorticity confinement</source>
+        <translation>涡量约束</translation>
+    </message>
+    <message>
+        <source>epsilon of Fedkiw et al. 2001 (thesis eq. 7.9): f = epsilon h (N x w)</source>
+        <translation>Fedkiw et al. 2001 的 epsilon（论文式 7.9）：f = epsilon h (N x w)</translation>
+    </message>
+    <message>
+        <source>Vortex particle strength</source>
+        <translation>涡粒子强度</translation>
+    </message>
+    <message>
+        <source>epsilon of the particles&apos; forcing (thesis eqs. 7.20-7.23); too large is unstable</source>
+        <translation>粒子作用力的 epsilon（论文式 7.20-7.23）；过大会不稳定</translation>
+    </message>
+    <message>
+        <source>Vortex particle radius</source>
+        <translation>涡粒子半径</translation>
+    </message>
+    <message>
+        <source>the clamped Gaussian&apos;s control radius r</source>
+        <translation>截断高斯核的控制半径 r</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>源</translation>
+    </message>
+    <message>
+        <source>Vortex particles</source>
+        <translation>涡粒子</translation>
+    </message>
+    <message>
+        <source>born at the source over its duration (thesis: 1,100 in the demo, 400 in EVH)</source>
+        <translation>在源处于其持续时间内生成（论文：演示 1,100 个，EVH 400 个）</translation>
+    </message>
+    <message>
+        <source>Smoke emission</source>
+        <translation>烟雾排放量</translation>
+    </message>
+    <message>
+        <source>particulate mass the cautery releases (an assumption: published rates vary widely)</source>
+        <translation>电刀释放的颗粒物质量（假定值：文献报道差异很大）</translation>
+    </message>
+    <message>
+        <source>Plume temperature</source>
+        <translation>烟羽温度</translation>
+    </message>
+    <message>
+        <source>the plume&apos;s rise above the ambient at the source</source>
+        <translation>源处烟羽高于环境的温升</translation>
+    </message>
+    <message>
+        <source>Plume speed</source>
+        <translation>烟羽速度</translation>
+    </message>
+    <message>
+        <source>initial velocity of the plume, along gravity&apos;s up (liver ablation: lower, thesis)</source>
+        <translation>烟羽初速度，沿重力反方向（肝消融：较低，论文）</translation>
+    </message>
+    <message>
+        <source>Smoke onset</source>
+        <translation>烟雾开始时间</translation>
+    </message>
+    <message>
+        <source>when the smoke starts after the tool&apos;s contact (EVH: 9 s, thesis)</source>
+        <translation>器械接触后烟雾开始的时间（EVH：9 s，论文）</translation>
+    </message>
+    <message>
+        <source>Smoke duration</source>
+        <translation>烟雾持续时间</translation>
+    </message>
+    <message>
+        <source>how long it emits</source>
+        <translation>排放持续的时间</translation>
+    </message>
+    <message>
+        <source>Plume cooling</source>
+        <translation>烟羽冷却</translation>
+    </message>
+    <message>
+        <source>rate at which the plume&apos;s temperature rise relaxes (mixing, walls)</source>
+        <translation>烟羽温升衰减的速率（混合、壁面）</translation>
+    </message>
+    <message>
+        <source>Suction</source>
+        <translation>抽吸</translation>
+    </message>
+    <message>
+        <source>smoke evacuation flow at the suction port (scenes with a port)</source>
+        <translation>抽吸口的排烟流量（带抽吸口的场景）</translation>
+    </message>
+    <message>
+        <source>Suction on</source>
+        <translation>抽吸开启</translation>
+    </message>
+    <message>
+        <source>when the suction starts</source>
+        <translation>抽吸开始的时间</translation>
+    </message>
+    <message>
+        <source>Suction off</source>
+        <translation>抽吸关闭</translation>
+    </message>
+    <message>
+        <source>when it stops</source>
+        <translation>抽吸停止的时间</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>视野</translation>
+    </message>
+    <message>
+        <source>Mass extinction coefficient</source>
+        <translation>质量消光系数</translation>
+    </message>
+    <message>
+        <source>Beer-Lambert&apos;s K_m (8.7 m^2/g: Mulholland &amp; Croarkin 2000)</source>
+        <translation>Beer-Lambert 的 K_m（8.7 m^2/g：Mulholland &amp; Croarkin 2000）</translation>
+    </message>
+    <message>
+        <source>Visibility threshold</source>
+        <translation>可见度阈值</translation>
+    </message>
+    <message>
+        <source>a pixel is obscured below this transmittance</source>
+        <translation>透射率低于此值时像素视为被遮挡</translation>
+    </message>
+    <message>
+        <source>Obscuration sampling</source>
+        <translation>遮挡采样间隔</translation>
+    </message>
+    <message>
+        <source>interval of the obscuration curve</source>
+        <translation>遮挡曲线的时间间隔</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Progress</name>
@@ -2735,6 +2923,10 @@
     <message>
         <source>wall</source>
         <translation>管壁</translation>
+    </message>
+    <message>
+        <source>smoke scene</source>
+        <translation>烟雾场景</translation>
     </message>
 </context>
 <context>
