@@ -322,7 +322,7 @@ static const char* const kParameterTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Parameters", "Vortex particle strength"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "epsilon of the particles' forcing (thesis eqs. 7.20-7.23); too large is unstable"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Vortex particle radius"),
-    QT_TRANSLATE_NOOP("vsim::Parameters", "the clamped Gaussian's control radius r"),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "the clamped Gaussian's control radius r, in cells"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Source"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Vortex particles"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "born at the source over its duration (thesis: 1,100 in the demo, 400 in EVH)"),

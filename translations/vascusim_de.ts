@@ -1191,12 +1191,108 @@
         <translation>Chemoembolisation: die Studie hat keinen Lauf zur Wirkstoffgabe (simulate network).</translation>
     </message>
     <message>
-        <source>Surgical smoke: the study has no smoke run (the smoke solver is not part of this version).</source>
-        <translation>Chirurgischer Rauch: die Studie hat keinen Rauchlauf (der Rauchlöser ist nicht Teil dieser Version).</translation>
-    </message>
-    <message>
         <source> (posterior)</source>
         <translation> (posterior)</translation>
+    </message>
+    <message>
+        <source>Surgical smoke: stable fluids on a MAC grid (thesis ch. 7; semi-Lagrangian velocity advection, conservative limited transport of the smoke, Boussinesq buoyancy, vorticity confinement and vortex particles), the pressure projection by multigrid-preconditioned conjugate gradients; single precision on the CPU.</source>
+        <translation>Chirurgischer Rauch: Stable Fluids auf einem MAC-Gitter (Dissertation Kap. 7; semi-Lagrange-Advektion der Geschwindigkeit, konservativer begrenzter Transport des Rauchs, Boussinesq-Auftrieb, Vorticity Confinement und Wirbelpartikel), die Druckprojektion mit Mehrgitter-vorkonditionierten konjugierten Gradienten; einfache Genauigkeit auf der CPU.</translation>
+    </message>
+    <message>
+        <source>Endoscopic vessel harvesting: a CO2 tunnel drawn around 60 mm of the study&apos;s longest centerline segment (a pre-operative CT shows no tunnel), the cautery&apos;s contact on the vessel&apos;s anterior wall, smoke from 9 s after contact (thesis ch. 7), the endoscope 25 mm back in the tunnel.</source>
+        <translation>Endoskopische Gefäßentnahme: ein CO2-Tunnel um 60 mm des längsten Mittelliniensegments der Studie gelegt (ein präoperatives CT zeigt keinen Tunnel), der Kontakt des Kauters an der Vorderwand des Gefäßes, Rauch ab 9 s nach dem Kontakt (Dissertation Kap. 7), das Endoskop 25 mm zurück im Tunnel.</translation>
+    </message>
+    <message>
+        <source>Liver ablation under laparoscopy: an insufflated dome over the liver (the study&apos;s liver label, or a box phantom without one), the probe&apos;s smoke at the liver&apos;s surface, the insufflator a vent in the roof, a suction port beside the probe, the laparoscope looking down at the site.</source>
+        <translation>Leberablation unter Laparoskopie: eine insufflierte Kuppel über der Leber (das Leber-Label der Studie oder ohne dieses ein Quader-Phantom), der Rauch der Sonde an der Leberoberfläche, der Insufflator eine Öffnung im Dach, ein Absaugport neben der Sonde, das Laparoskop blickt von oben auf die Stelle.</translation>
+    </message>
+    <message>
+        <source>The thesis demo: a 1 m box open at the top, smoke rising from the floor, a ball dropped through it.</source>
+        <translation>Die Demo der Dissertation: ein oben offener Kasten von 1 m, vom Boden aufsteigender Rauch, eine hindurchfallende Kugel.</translation>
+    </message>
+    <message>
+        <source>Surgical smoke (illustrative scene)</source>
+        <translation>Chirurgischer Rauch (veranschaulichende Szene)</translation>
+    </message>
+    <message>
+        <source>The scene is illustrative: its geometry is synthetic and the smoke&apos;s emission is an assumption; the figures show how the smoke spreads and clears, not this patient&apos;s case.</source>
+        <translation>Die Szene ist veranschaulichend: ihre Geometrie ist synthetisch und die Rauchemission eine Annahme; die Werte zeigen, wie sich der Rauch ausbreitet und abzieht, nicht den Fall dieses Patienten.</translation>
+    </message>
+    <message>
+        <source>The endoscope&apos;s view</source>
+        <translation>Die Sicht des Endoskops</translation>
+    </message>
+    <message>
+        <source>Time to 50 % of the view obscured</source>
+        <translation>Zeit bis 50 % der Sicht verdeckt sind</translation>
+    </message>
+    <message>
+        <source>Time to 90 % of the view obscured</source>
+        <translation>Zeit bis 90 % der Sicht verdeckt sind</translation>
+    </message>
+    <message>
+        <source>Largest share of the view obscured</source>
+        <translation>Größter verdeckter Anteil der Sicht</translation>
+    </message>
+    <message>
+        <source>Share of the view obscured at the end</source>
+        <translation>Verdeckter Anteil der Sicht am Ende</translation>
+    </message>
+    <message>
+        <source>Smoke in the cavity at the end</source>
+        <translation>Rauch im Hohlraum am Ende</translation>
+    </message>
+    <message>
+        <source>Time to clear after the suction starts (under 10 % obscured)</source>
+        <translation>Zeit bis zur freien Sicht nach Beginn der Absaugung (unter 10 % verdeckt)</translation>
+    </message>
+    <message>
+        <source>Smoke removed in the suction&apos;s first 10 s</source>
+        <translation>In den ersten 10 s der Absaugung entfernter Rauch</translation>
+    </message>
+    <message>
+        <source>A pixel of the endoscope&apos;s view is obscured when less than %1 % of the light from the scene passes the smoke (Beer-Lambert, the mass extinction coefficient %2 m^2/g: Mulholland &amp; Croarkin 2000).</source>
+        <translation>Ein Pixel der Endoskopsicht gilt als verdeckt, wenn weniger als %1 % des Lichts der Szene den Rauch durchdringen (Beer-Lambert, Massenextinktionskoeffizient %2 m^2/g: Mulholland &amp; Croarkin 2000).</translation>
+    </message>
+    <message>
+        <source>Not reached within the run: %1.</source>
+        <translation>Im Lauf nicht erreicht: %1.</translation>
+    </message>
+    <message>
+        <source>The suction&apos;s flow is calibrated to a published measurement (proximal evacuation removing about 85 % of the smoke in 10 s, Chou 2024): a calibration, not a validation.</source>
+        <translation>Der Absaugfluss ist an einer veröffentlichten Messung kalibriert (proximale Absaugung entfernt etwa 85 % des Rauchs in 10 s, Chou 2024): eine Kalibrierung, keine Validierung.</translation>
+    </message>
+    <message>
+        <source>The endoscope&apos;s view obscured by the smoke over time</source>
+        <translation>Die durch den Rauch verdeckte Sicht des Endoskops über die Zeit</translation>
+    </message>
+    <message>
+        <source>Time [s]</source>
+        <translation>Zeit [s]</translation>
+    </message>
+    <message>
+        <source>View obscured [%]</source>
+        <translation>Verdeckte Sicht [%]</translation>
+    </message>
+    <message>
+        <source>obscured</source>
+        <translation>verdeckt</translation>
+    </message>
+    <message>
+        <source>50 %</source>
+        <translation>50 %</translation>
+    </message>
+    <message>
+        <source>90 %</source>
+        <translation>90 %</translation>
+    </message>
+    <message>
+        <source>Surgical smoke: the study has no smoke run (simulate smoke).</source>
+        <translation>Chirurgischer Rauch: die Studie hat keinen Rauchlauf (simulate smoke).</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Szenario</translation>
     </message>
 </context>
 <context>
@@ -2558,10 +2654,6 @@
         <translation>Radius der Wirbelpartikel</translation>
     </message>
     <message>
-        <source>the clamped Gaussian&apos;s control radius r</source>
-        <translation>der Wirkradius r der abgeschnittenen Gauß-Funktion</translation>
-    </message>
-    <message>
         <source>Source</source>
         <translation>Quelle</translation>
     </message>
@@ -2672,6 +2764,10 @@
     <message>
         <source>interval of the obscuration curve</source>
         <translation>Intervall der Verdeckungskurve</translation>
+    </message>
+    <message>
+        <source>the clamped Gaussian&apos;s control radius r, in cells</source>
+        <translation>der Wirkradius r der abgeschnittenen Gauß-Funktion, in Zellen</translation>
     </message>
 </context>
 <context>

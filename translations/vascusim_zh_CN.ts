@@ -1191,12 +1191,108 @@
         <translation>化疗栓塞：本研究没有药物输送运行（simulate network）。</translation>
     </message>
     <message>
-        <source>Surgical smoke: the study has no smoke run (the smoke solver is not part of this version).</source>
-        <translation>手术烟雾：本研究没有烟雾运行（此版本不含烟雾求解器）。</translation>
-    </message>
-    <message>
         <source> (posterior)</source>
         <translation>（后方）</translation>
+    </message>
+    <message>
+        <source>Surgical smoke: stable fluids on a MAC grid (thesis ch. 7; semi-Lagrangian velocity advection, conservative limited transport of the smoke, Boussinesq buoyancy, vorticity confinement and vortex particles), the pressure projection by multigrid-preconditioned conjugate gradients; single precision on the CPU.</source>
+        <translation>手术烟雾：MAC 网格上的稳定流体方法（论文第 7 章；速度的半拉格朗日平流、烟雾的守恒限制输运、Boussinesq 浮力、涡量约束与涡粒子），压力投影采用多重网格预条件共轭梯度；CPU 上单精度计算。</translation>
+    </message>
+    <message>
+        <source>Endoscopic vessel harvesting: a CO2 tunnel drawn around 60 mm of the study&apos;s longest centerline segment (a pre-operative CT shows no tunnel), the cautery&apos;s contact on the vessel&apos;s anterior wall, smoke from 9 s after contact (thesis ch. 7), the endoscope 25 mm back in the tunnel.</source>
+        <translation>内镜血管采集：围绕本研究最长中心线血管段 60 mm 绘制的 CO2 隧道（术前 CT 不显示隧道），电刀接触血管前壁，接触后 9 s 起产生烟雾（论文第 7 章），内镜位于隧道内后方 25 mm 处。</translation>
+    </message>
+    <message>
+        <source>Liver ablation under laparoscopy: an insufflated dome over the liver (the study&apos;s liver label, or a box phantom without one), the probe&apos;s smoke at the liver&apos;s surface, the insufflator a vent in the roof, a suction port beside the probe, the laparoscope looking down at the site.</source>
+        <translation>腹腔镜下肝消融：肝脏上方的充气穹顶（本研究的肝脏标签，无标签时为长方体体模），探头在肝脏表面产生烟雾，气腹机为顶部的通气口，探头旁设抽吸口，腹腔镜自上方观察该处。</translation>
+    </message>
+    <message>
+        <source>The thesis demo: a 1 m box open at the top, smoke rising from the floor, a ball dropped through it.</source>
+        <translation>论文演示：顶部开口的 1 m 箱体，烟雾自底部升起，一个球从中落下。</translation>
+    </message>
+    <message>
+        <source>Surgical smoke (illustrative scene)</source>
+        <translation>手术烟雾（示意场景）</translation>
+    </message>
+    <message>
+        <source>The scene is illustrative: its geometry is synthetic and the smoke&apos;s emission is an assumption; the figures show how the smoke spreads and clears, not this patient&apos;s case.</source>
+        <translation>该场景仅为示意：其几何为合成，烟雾排放量为假定值；这些数值显示烟雾如何扩散和消散，而非该患者的具体情况。</translation>
+    </message>
+    <message>
+        <source>The endoscope&apos;s view</source>
+        <translation>内镜视野</translation>
+    </message>
+    <message>
+        <source>Time to 50 % of the view obscured</source>
+        <translation>视野 50 % 被遮挡的时间</translation>
+    </message>
+    <message>
+        <source>Time to 90 % of the view obscured</source>
+        <translation>视野 90 % 被遮挡的时间</translation>
+    </message>
+    <message>
+        <source>Largest share of the view obscured</source>
+        <translation>视野被遮挡的最大比例</translation>
+    </message>
+    <message>
+        <source>Share of the view obscured at the end</source>
+        <translation>结束时视野被遮挡的比例</translation>
+    </message>
+    <message>
+        <source>Smoke in the cavity at the end</source>
+        <translation>结束时腔内的烟雾量</translation>
+    </message>
+    <message>
+        <source>Time to clear after the suction starts (under 10 % obscured)</source>
+        <translation>抽吸开始后视野恢复清晰的时间（遮挡低于 10 %）</translation>
+    </message>
+    <message>
+        <source>Smoke removed in the suction&apos;s first 10 s</source>
+        <translation>抽吸最初 10 s 内清除的烟雾</translation>
+    </message>
+    <message>
+        <source>A pixel of the endoscope&apos;s view is obscured when less than %1 % of the light from the scene passes the smoke (Beer-Lambert, the mass extinction coefficient %2 m^2/g: Mulholland &amp; Croarkin 2000).</source>
+        <translation>当来自场景的光穿过烟雾的比例低于 %1 % 时，内镜视野中的像素视为被遮挡（Beer-Lambert，质量消光系数 %2 m^2/g：Mulholland &amp; Croarkin 2000）。</translation>
+    </message>
+    <message>
+        <source>Not reached within the run: %1.</source>
+        <translation>运行期间未达到：%1。</translation>
+    </message>
+    <message>
+        <source>The suction&apos;s flow is calibrated to a published measurement (proximal evacuation removing about 85 % of the smoke in 10 s, Chou 2024): a calibration, not a validation.</source>
+        <translation>抽吸流量依据已发表的测量进行校准（近端排烟在 10 s 内清除约 85 % 的烟雾，Chou 2024）：这是校准而非验证。</translation>
+    </message>
+    <message>
+        <source>The endoscope&apos;s view obscured by the smoke over time</source>
+        <translation>内镜视野随时间被烟雾遮挡的情况</translation>
+    </message>
+    <message>
+        <source>Time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <source>View obscured [%]</source>
+        <translation>视野遮挡 [%]</translation>
+    </message>
+    <message>
+        <source>obscured</source>
+        <translation>遮挡</translation>
+    </message>
+    <message>
+        <source>50 %</source>
+        <translation>50 %</translation>
+    </message>
+    <message>
+        <source>90 %</source>
+        <translation>90 %</translation>
+    </message>
+    <message>
+        <source>Surgical smoke: the study has no smoke run (simulate smoke).</source>
+        <translation>手术烟雾：本研究没有烟雾运行（simulate smoke）。</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>场景</translation>
     </message>
 </context>
 <context>
@@ -2558,10 +2654,6 @@
         <translation>涡粒子半径</translation>
     </message>
     <message>
-        <source>the clamped Gaussian&apos;s control radius r</source>
-        <translation>截断高斯核的控制半径 r</translation>
-    </message>
-    <message>
         <source>Source</source>
         <translation>源</translation>
     </message>
@@ -2672,6 +2764,10 @@
     <message>
         <source>interval of the obscuration curve</source>
         <translation>遮挡曲线的时间间隔</translation>
+    </message>
+    <message>
+        <source>the clamped Gaussian&apos;s control radius r, in cells</source>
+        <translation>截断高斯核的控制半径 r，以单元计</translation>
     </message>
 </context>
 <context>

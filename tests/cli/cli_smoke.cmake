@@ -55,3 +55,16 @@ run_cli(2 gpu simulate smoke --study ${study} --backend cuda)
 if(NOT unknown MATCHES "unknown smoke scenario 'fire'" OR NOT gpu MATCHES "--backend")
     message(FATAL_ERROR "bad input must be refused with a message:\n${unknown}\n${gpu}")
 endif()
+
+# The report gains a smoke section (the newest smoke run: the liver box phantom's), labelled illustrative, with the
+# obscuration's times and curve and the suction's calibration said to be one.
+run_cli(0 ignored report --study ${study} --out ${WORK}/report.pdf --sections smoke,runs --no-validation)
+execute_process(COMMAND pdftotext ${WORK}/report.pdf - OUTPUT_VARIABLE text RESULT_VARIABLE code)
+string(REGEX REPLACE "[ \n]+" " " text "${text}")
+foreach(expected "Surgical smoke \\(illustrative scene\\)" "Time to 50 % of the view obscured [0-9.]+ s"
+        "Smoke removed in the suction's first 10 s [0-9.]+ %" "a calibration, not a validation"
+        "The endoscope's view obscured by the smoke over time")
+    if(NOT text MATCHES "${expected}")
+        message(FATAL_ERROR "the report's smoke section lacks '${expected}':\n${text}")
+    endif()
+endforeach()

@@ -7,6 +7,8 @@
 #include "vsim/sim/fem/FemValidation.h"
 #include "vsim/sim/network/NetworkRun.h"
 #include "vsim/sim/network/NetworkValidation.h"
+#include "vsim/sim/smoke/SmokeSolver.h"
+#include "vsim/sim/smoke/SmokeValidation.h"
 #include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/sph/SphValidation.h"
 
@@ -60,6 +62,18 @@ SolverInfo solverOf(const study::Artifact& run)
                 [](const std::string& name, const Progress& p) { return sim::sph::runSphValidation(name, p); },
                 {"cpu", 0, 0.0,
                  localized("Report", "the CPU backend in double precision, explicit steps (no linear solves)")}};
+    if (run.provenance.command == "simulate smoke")
+    {
+        const std::vector<ParameterSpec> parameters =
+            sim::smoke::smokeParameters(textOr(run.provenance.parameters, "scenario", "ball-drop"));
+        return {localized("Report", "Surgical smoke: stable fluids on a MAC grid (thesis ch. 7; semi-Lagrangian velocity "
+                                    "advection, conservative limited transport of the smoke, Boussinesq buoyancy, "
+                                    "vorticity confinement and vortex particles), the pressure projection by "
+                                    "multigrid-preconditioned conjugate gradients; single precision on the CPU."),
+                parameters, parameters, sim::smoke::smokeValidationCases(),
+                [](const std::string& name, const Progress& p) { return sim::smoke::runSmokeValidation(name, p); },
+                sim::smoke::smokeValidationConfiguration()};
+    }
     return {localized("Report", "Drug delivery: two-phase homogeneous fluid in a network of conical Hagen-Poiseuille "
                                 "pipes, Kirchhoff solve, plug filling (thesis ch. 6)."),
             sim::network::networkParameters(),

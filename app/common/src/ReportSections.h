@@ -29,6 +29,10 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
 std::optional<report::Section> drugSection(const study::Study& study, const ReportOptions& options,
                                            std::vector<const study::Artifact*>& runs);
 
+/// Surgical smoke: the newest smoke run's obscuration of the endoscope's view (times, curve), the scene labelled
+/// illustrative.
+std::optional<report::Section> smokeSection(const study::Study& study, std::vector<const study::Artifact*>& runs);
+
 /// The measurements (rulers, angles, ROIs) marked "in report" on the workstation; nothing when none is marked.
 std::optional<report::Section> measurementsSection(const study::Study& study);
 

@@ -106,7 +106,8 @@ std::optional<std::string> sourceLabel(const std::string& key)
         {"tumour_mm", localized("Report", "Tumour sphere (x, y, z, radius; mm)")},
         {"tumour_label", localized("Report", "Tumour label")},
         {"network_file", localized("Report", "Network file")},
-        {"control_points", localized("Report", "Control points")}};
+        {"control_points", localized("Report", "Control points")},
+        {"scenario", localized("Report", "Scenario")}};
     if (key == "protocol" || key == "backend" || key == "device")
         return std::nullopt;
     const auto found = kLabels.find(key);

@@ -102,8 +102,12 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
                 localized("Report", "Chemoembolization: the study has no drug-delivery run (simulate network)."));
     }
     if (wanted("smoke"))
-        report.notRun.push_back(localized("Report", "Surgical smoke: the study has no smoke run (the smoke solver is "
-                                                    "not part of this version)."));
+    {
+        if (auto section = detail::smokeSection(study, runs))
+            report.sections.push_back(std::move(*section));
+        else
+            report.notRun.push_back(localized("Report", "Surgical smoke: the study has no smoke run (simulate smoke)."));
+    }
     if (wanted("measurements"))
         if (auto section = detail::measurementsSection(study))
             report.sections.push_back(std::move(*section));

@@ -94,7 +94,7 @@ ProjectionReport SmokeSimulation::project()
     return m_projection.project(m_grid, m_settings.tolerance, m_settings.maxIterations, sucking ? &m_sink : nullptr);
 }
 
-void SmokeSimulation::applySources(double dt)
+void SmokeSimulation::applySources(double dt, bool setVelocity)
 {
     for (const SmokeSource& source : m_sources)
     {
@@ -110,13 +110,20 @@ void SmokeSimulation::applySources(double dt)
                     const std::size_t c = m_grid.cell(i, j, k);
                     if (m_grid.solid[c] || (m_grid.centre(i, j, k) - source.centre).norm() > source.radius)
                         continue;
+                    if (setVelocity)
+                    {
+                        // The source sets its velocity on the faces of its cells (before the projection, which
+                        // makes the flow around it divergence-free).
+                        m_grid.u[m_grid.uFace(i, j, k)] = m_grid.u[m_grid.uFace(i + 1, j, k)] = float(source.velocity.x());
+                        m_grid.v[m_grid.vFace(i, j, k)] = m_grid.v[m_grid.vFace(i, j + 1, k)] = float(source.velocity.y());
+                        m_grid.w[m_grid.wFace(i, j, k)] = m_grid.w[m_grid.wFace(i, j, k + 1)] = float(source.velocity.z());
+                        continue;
+                    }
                     m_grid.density[c] += float(source.densityRate * dt);
                     m_grid.temperature[c] = std::max(m_grid.temperature[c], float(source.temperatureK));
-                    // The source sets its velocity on the faces of its cells.
-                    m_grid.u[m_grid.uFace(i, j, k)] = m_grid.u[m_grid.uFace(i + 1, j, k)] = float(source.velocity.x());
-                    m_grid.v[m_grid.vFace(i, j, k)] = m_grid.v[m_grid.vFace(i, j + 1, k)] = float(source.velocity.y());
-                    m_grid.w[m_grid.wFace(i, j, k)] = m_grid.w[m_grid.wFace(i, j, k + 1)] = float(source.velocity.z());
                 }
+        if (setVelocity)
+            continue;
         m_particleDebt += source.particlesPerSecond * dt;
         const int born = int(m_particleDebt);
         if (born > 0)
@@ -134,7 +141,7 @@ SmokeStepReport SmokeSimulation::step(double dt)
     using Clock = std::chrono::steady_clock;
     const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
     auto started = Clock::now();
-    applySources(dt);
+    applySources(dt, false);
     advect(m_grid, dt, m_settings.scheme, m_settings.scalarScheme, m_steps % 2 == 1);
     report.advectionSeconds = seconds(started);
     started = Clock::now();
@@ -170,6 +177,7 @@ SmokeStepReport SmokeSimulation::step(double dt)
         }
         placeSphere();
     }
+    applySources(dt, true);
     report.forceSeconds = seconds(started);
     started = Clock::now();
     report.projection = project();

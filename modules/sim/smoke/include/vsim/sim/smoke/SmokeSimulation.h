@@ -1,9 +1,10 @@
 #pragma once
 
 // One stable-fluids step of surgical smoke (thesis ch. 7; Stam 1999, Fedkiw et al. 2001, Selle et al. 2005), in
-// this order: the sources add smoke, heat, their velocity and newborn vortex particles; the velocity, the smoke and
-// the temperature are advected (semi-Lagrangian, MacCormack as an option); buoyancy, vorticity confinement and the
-// vortex particles' forcing act; the moving body takes its new place; the projection makes the flow
+// this order: the sources add smoke, heat and newborn vortex particles; the velocity, the smoke and the temperature
+// are advected (semi-Lagrangian, MacCormack as an option) by the last projected, divergence-free velocity;
+// buoyancy, vorticity confinement and the vortex particles' forcing act and the sources set their velocity; the
+// moving body takes its new place; the projection makes the flow
 // divergence-free with no flow through solids; the vortex particles move and stretch. Inviscid (the thesis: gas
 // viscosity is negligible at these scales); the temperature relaxes towards the ambient at a cooling rate.
 
@@ -115,7 +116,9 @@ public:
     ProjectionReport project();
 
 private:
-    void applySources(double dt);
+    /// The sources' smoke, heat and newborn particles (before the advection), or their velocity (`setVelocity`:
+    /// after the forces, before the projection).
+    void applySources(double dt, bool setVelocity);
     void placeSphere();
 
     SmokeGrid m_grid;
