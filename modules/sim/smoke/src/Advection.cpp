@@ -86,6 +86,19 @@ Eigen::Vector3f nodeVelocity(const Velocity& velocity, int i, int j, int k)
     return result;
 }
 
+/// body(n, i, j, k, p) for every node of the lattice, in parallel: n its index, p its place in cells.
+template <class Body>
+void forEachNode(const Lattice& shape, const Body& body)
+{
+    const int sx = shape.sx, sy = shape.sy, sz = shape.sz;
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < sz; ++k)
+        for (int j = 0; j < sy; ++j)
+            for (int i = 0; i < sx; ++i)
+                body(std::size_t(i) + std::size_t(sx) * (j + std::size_t(sy) * k), i, j, k,
+                     Eigen::Vector3f(float(i), float(j), float(k)) + shape.offset);
+}
+
 /// Advects one lattice field in place (`kind`: 0, 1, 2 the u, v, w faces, 3 the cells) from `old`, its values at
 /// the start of the step (a copy: `field` is overwritten). `dtCells` = dt / h.
 template <int kind>
@@ -94,47 +107,26 @@ void advectField(std::vector<float>& field, const std::vector<float>& old, const
 {
     Lattice source = shape;
     source.data = &old;
-    std::vector<float> forward;
-    if (scheme == AdvectionScheme::MacCormack)
-        forward.resize(field.size());
-    const int sx = shape.sx, sy = shape.sy, sz = shape.sz;
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < sz; ++k)
-        for (int j = 0; j < sy; ++j)
-            for (int i = 0; i < sx; ++i)
-            {
-                const std::size_t n = std::size_t(i) + std::size_t(sx) * (j + std::size_t(sy) * k);
-                const Eigen::Vector3f p = Eigen::Vector3f(float(i), float(j), float(k)) + shape.offset;
-                field[n] = source.sample(traceBack(velocity, p, nodeVelocity<kind>(velocity, i, j, k), dtCells));
-            }
+    forEachNode(shape, [&](std::size_t n, int i, int j, int k, const Eigen::Vector3f& p) {
+        field[n] = source.sample(traceBack(velocity, p, nodeVelocity<kind>(velocity, i, j, k), dtCells));
+    });
     if (scheme != AdvectionScheme::MacCormack)
         return;
     // The forward trace of the semi-Lagrangian result back to the old time: its difference from the old field is
     // twice the scheme's error there.
+    std::vector<float> forward(field.size());
     Lattice advected = shape;
     advected.data = &field;
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < sz; ++k)
-        for (int j = 0; j < sy; ++j)
-            for (int i = 0; i < sx; ++i)
-            {
-                const std::size_t n = std::size_t(i) + std::size_t(sx) * (j + std::size_t(sy) * k);
-                const Eigen::Vector3f p = Eigen::Vector3f(float(i), float(j), float(k)) + shape.offset;
-                forward[n] = advected.sample(traceBack(velocity, p, nodeVelocity<kind>(velocity, i, j, k), -dtCells));
-            }
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < sz; ++k)
-        for (int j = 0; j < sy; ++j)
-            for (int i = 0; i < sx; ++i)
-            {
-                const std::size_t n = std::size_t(i) + std::size_t(sx) * (j + std::size_t(sy) * k);
-                const Eigen::Vector3f p = Eigen::Vector3f(float(i), float(j), float(k)) + shape.offset;
-                float low = 0.0f, high = 0.0f;
-                source.sample(traceBack(velocity, p, nodeVelocity<kind>(velocity, i, j, k), dtCells), &low, &high);
-                const float corrected = field[n] + 0.5f * (old[n] - forward[n]);
-                if (corrected >= low && corrected <= high) // the limiter: else the semi-Lagrangian value stays
-                    field[n] = corrected;
-            }
+    forEachNode(shape, [&](std::size_t n, int i, int j, int k, const Eigen::Vector3f& p) {
+        forward[n] = advected.sample(traceBack(velocity, p, nodeVelocity<kind>(velocity, i, j, k), -dtCells));
+    });
+    forEachNode(shape, [&](std::size_t n, int i, int j, int k, const Eigen::Vector3f& p) {
+        float low = 0.0f, high = 0.0f;
+        source.sample(traceBack(velocity, p, nodeVelocity<kind>(velocity, i, j, k), dtCells), &low, &high);
+        const float corrected = field[n] + 0.5f * (old[n] - forward[n]);
+        if (corrected >= low && corrected <= high) // the limiter: else the semi-Lagrangian value stays
+            field[n] = corrected;
+    });
 }
 
 float minmod(float a, float b)

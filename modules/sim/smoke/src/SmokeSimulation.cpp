@@ -184,6 +184,8 @@ SmokeStepReport SmokeSimulation::step(double dt)
     report.projectionSeconds = seconds(started);
     started = Clock::now();
     m_particles.advance(m_grid, dt);
+    if (m_suction && m_time >= m_suction->onS && m_time < m_suction->offS)
+        m_particles.removeWithin(m_suction->centre, m_suction->radius);
     report.particleSeconds = seconds(started);
     m_time += dt;
     ++m_steps;

@@ -14,7 +14,7 @@ bool insideFluid(const SmokeGrid& grid, const Eigen::Vector3d& x)
 {
     const Eigen::Vector3d p = (x - grid.origin) / grid.h;
     const int i = int(std::floor(p.x())), j = int(std::floor(p.y())), k = int(std::floor(p.z()));
-    return grid.inside(i, j, k) && !grid.isSolid(i, j, k);
+    return grid.inside(i, j, k) && grid.isFluid(grid.cell(i, j, k)); // not in a solid, nor gone out by a vent
 }
 
 } // namespace
@@ -72,6 +72,13 @@ void VortexParticles::advance(const SmokeGrid& grid, double dt)
                                      [&](const VortexParticle& p) {
                                          return !p.vorticity.allFinite() || !insideFluid(grid, p.position);
                                      }),
+                      m_particles.end());
+}
+
+void VortexParticles::removeWithin(const Eigen::Vector3d& centre, double radius)
+{
+    m_particles.erase(std::remove_if(m_particles.begin(), m_particles.end(),
+                                     [&](const VortexParticle& p) { return (p.position - centre).norm() <= radius; }),
                       m_particles.end());
 }
 

@@ -11,7 +11,7 @@
 // force of a vortex centred on the particle (eqs. 7.21 - 7.23). The printed eq. 7.23 points N away from the
 // particle, which would spin the flow against the particle's vorticity and damp it; the printed eq. 7.22 also
 // carries a factor |w_p| |u . w_a| whose units are not those of an acceleration: both are left out here.
-// Particles that leave the domain or enter a solid are removed.
+// Particles that leave the domain, enter a solid or a vent, or are sucked into a suction port are removed.
 
 #include "vsim/sim/smoke/SmokeGrid.h"
 
@@ -37,8 +37,12 @@ public:
     void add(const VortexParticle& particle) { m_particles.push_back(particle); }
 
     /// Moves every particle with the grid velocity over dt (midpoint rule) and stretches its vorticity,
-    /// w += dt (w . grad) u; removes those outside the domain, in a solid, or whose vorticity is not finite.
+    /// w += dt (w . grad) u; removes those outside the domain, in a solid or a vent, or whose vorticity is not
+    /// finite.
     void advance(const SmokeGrid& grid, double dt);
+
+    /// Removes the particles within `radius` of `centre` (m): those a suction port takes out with the gas.
+    void removeWithin(const Eigen::Vector3d& centre, double radius);
 
     /// Adds every particle's forcing within `radius` (m) to `force` (m/s^2 at the cell centres); epsilon is
     /// dimensionless.
