@@ -339,7 +339,7 @@ static const char* const kParameterTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Parameters", "Plume cooling"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "rate at which the plume's temperature rise relaxes (mixing, walls)"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Suction"),
-    QT_TRANSLATE_NOOP("vsim::Parameters", "smoke evacuation flow at the suction port (scenes with a port)"),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "smoke evacuation flow at the suction port (scenes with a port); liver-ablation's 20 l/min is calibrated to remove 85 % of the smoke in 10 s (Chou 2024) in the box phantom at 64 cells"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Suction on"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "when the suction starts"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Suction off"),

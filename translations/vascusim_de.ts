@@ -2718,10 +2718,6 @@
         <translation>Absaugung</translation>
     </message>
     <message>
-        <source>smoke evacuation flow at the suction port (scenes with a port)</source>
-        <translation>Absaugfluss am Absaugport (Szenen mit Port)</translation>
-    </message>
-    <message>
         <source>Suction on</source>
         <translation>Absaugung ein</translation>
     </message>
@@ -2768,6 +2764,10 @@
     <message>
         <source>the clamped Gaussian&apos;s control radius r, in cells</source>
         <translation>der Wirkradius r der abgeschnittenen Gauß-Funktion, in Zellen</translation>
+    </message>
+    <message>
+        <source>smoke evacuation flow at the suction port (scenes with a port); liver-ablation&apos;s 20 l/min is calibrated to remove 85 % of the smoke in 10 s (Chou 2024) in the box phantom at 64 cells</source>
+        <translation>Absaugfluss am Absaugport (Szenen mit Port); die 20 l/min der Leberablation sind so kalibriert, dass im Quader-Phantom mit 64 Zellen 85 % des Rauchs in 10 s entfernt werden (Chou 2024)</translation>
     </message>
 </context>
 <context>

@@ -2718,10 +2718,6 @@
         <translation>抽吸</translation>
     </message>
     <message>
-        <source>smoke evacuation flow at the suction port (scenes with a port)</source>
-        <translation>抽吸口的排烟流量（带抽吸口的场景）</translation>
-    </message>
-    <message>
         <source>Suction on</source>
         <translation>抽吸开启</translation>
     </message>
@@ -2768,6 +2764,10 @@
     <message>
         <source>the clamped Gaussian&apos;s control radius r, in cells</source>
         <translation>截断高斯核的控制半径 r，以单元计</translation>
+    </message>
+    <message>
+        <source>smoke evacuation flow at the suction port (scenes with a port); liver-ablation&apos;s 20 l/min is calibrated to remove 85 % of the smoke in 10 s (Chou 2024) in the box phantom at 64 cells</source>
+        <translation>抽吸口的排烟流量（带抽吸口的场景）；肝消融的 20 l/min 经校准，在 64 单元的长方体体模中 10 s 内清除 85 % 的烟雾（Chou 2024）</translation>
     </message>
 </context>
 <context>
