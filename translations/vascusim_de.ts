@@ -4918,6 +4918,42 @@ Ersetzen?</translation>
         <source>Virtual Endoscope</source>
         <translation>Virtuelles Endoskop</translation>
     </message>
+    <message>
+        <source>Surgical &amp;Smoke (Illustrative)</source>
+        <translation>Chirurgischer &amp;Rauch (veranschaulichend)</translation>
+    </message>
+    <message>
+        <source>&amp;Ball Drop (Thesis Demo)</source>
+        <translation>&amp;Kugelfall (Demo der Dissertation)</translation>
+    </message>
+    <message>
+        <source>&amp;Endoscopic Vessel Harvesting</source>
+        <translation>&amp;Endoskopische Gefäßentnahme</translation>
+    </message>
+    <message>
+        <source>&amp;Liver Ablation with Suction</source>
+        <translation>&amp;Leberablation mit Absaugung</translation>
+    </message>
+    <message>
+        <source>Surgical smoke</source>
+        <translation>Chirurgischer Rauch</translation>
+    </message>
+    <message>
+        <source>The EVH tunnel is drawn around a vessel&apos;s centerline: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>Der EVH-Tunnel wird um die Mittellinie eines Gefäßes gelegt: zuerst Skelett &amp;&amp; Mittellinien ausführen.</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>nicht erreicht</translation>
+    </message>
+    <message>
+        <source>after %1 s</source>
+        <translation>nach %1 s</translation>
+    </message>
+    <message>
+        <source>Surgical smoke (illustrative): the endoscope&apos;s view 50 % obscured %1, 90 % %2; at most %3 % obscured</source>
+        <translation>Chirurgischer Rauch (veranschaulichend): die Endoskopsicht zu 50 % verdeckt %1, zu 90 % %2; höchstens %3 % verdeckt</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ParameterForm</name>

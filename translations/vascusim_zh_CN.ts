@@ -4916,6 +4916,42 @@ Replace them?</source>
         <source>Virtual Endoscope</source>
         <translation>虚拟内窥镜</translation>
     </message>
+    <message>
+        <source>Surgical &amp;Smoke (Illustrative)</source>
+        <translation>手术烟雾（示意）(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Ball Drop (Thesis Demo)</source>
+        <translation>落球（论文演示）(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Endoscopic Vessel Harvesting</source>
+        <translation>内镜血管采集(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Liver Ablation with Suction</source>
+        <translation>带抽吸的肝消融(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Surgical smoke</source>
+        <translation>手术烟雾</translation>
+    </message>
+    <message>
+        <source>The EVH tunnel is drawn around a vessel&apos;s centerline: run Skeleton &amp;&amp; Centerlines first.</source>
+        <translation>EVH 隧道围绕血管中心线绘制：请先运行 骨架与中心线。</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>未达到</translation>
+    </message>
+    <message>
+        <source>after %1 s</source>
+        <translation>%1 s 后</translation>
+    </message>
+    <message>
+        <source>Surgical smoke (illustrative): the endoscope&apos;s view 50 % obscured %1, 90 % %2; at most %3 % obscured</source>
+        <translation>手术烟雾（示意）：内镜视野 50 % 被遮挡：%1，90 %：%2；最多 %3 % 被遮挡</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ParameterForm</name>

@@ -167,6 +167,10 @@ public:
     /// background (Flow > Needle Injection) with the Flow > Blood Flow Parameters' "Needle injection" page and the SPH
     /// solver's; the run is added (undoable) and played, the fill in the status bar.
     bool simulateNeedleInjection();
+    /// Runs a smoke scenario ("ball-drop", "evh", "liver-ablation"; app/SmokePipeline.h) in the background (Flow >
+    /// Surgical Smoke); the run is added (undoable) and played, the endoscope's obscuration times in the status bar.
+    /// False without a study, or for evh without centerlines.
+    bool simulateSmoke(const std::string& scenario);
     ParameterSet& injectionSetup() { return m_injectionSetup; }
     /// Colours the played (else the newest) blood-flow run's wall loads (Flow > Wall Loads: field "tawss_pa", "osi" or
     /// "wall_pressure_pa") on the lumen surface in 3D, its legend on the left naming the field, the unit, the time
@@ -260,6 +264,7 @@ private:
     void createWallMenu();
     void createDrugMenu();
     void createFlowMenu();
+    void createSmokeMenu(QMenu* flow);
     void createLayoutAndCaptureMenus(QMenu* view);
     /// View > Language: the system's, English, Deutsch, 简体中文 (Languages.h).
     void createLanguageMenu(QMenu* view);

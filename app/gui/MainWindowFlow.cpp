@@ -39,6 +39,7 @@ void MainWindow::createFlowMenu()
     loads->addAction(tr("Time-Averaged Wall &Shear Stress"), this, [this] { showWallLoads("tawss_pa"); });
     loads->addAction(tr("&Oscillatory Shear Index"), this, [this] { showWallLoads("osi"); });
     loads->addAction(tr("Mean Wall &Pressure"), this, [this] { showWallLoads("wall_pressure_pa"); });
+    createSmokeMenu(flow);
     m_documentActions << flow->addAction(tr("Blood Flow &Parameters..."), this, [this] {
         editParametersInDialog(this, tr("Blood flow parameters"),
                                {{tr("Inlet, outlets, figures"), &m_bloodFlowSetup},

@@ -143,11 +143,15 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
              run.provenance.command + (protocol.empty() ? "" : " --protocol " + protocol)},
             {localized("Report", "Backend"),
              textOr(parameters, "backend", "cpu") + (device.empty() ? "" : " (" + device + ")")},
-            {localized("Report", "Steps"), textOr(run.attributes, "steps", localized("Report", "1 (steady solve)"))},
+            // The run driver's runs record run_steps and run_wall_seconds; the wall's static solve its own keys.
+            {localized("Report", "Steps"),
+             textOr(run.attributes, "steps", textOr(run.attributes, "run_steps", localized("Report", "1 (steady solve)")))},
             {localized("Report", "Wall-clock time"),
              [&]
              {
-                 const auto seconds = runMetric(run, "wall_clock_s", "", "s");
+                 auto seconds = runMetric(run, "wall_clock_s", "", "s");
+                 if (!seconds)
+                     seconds = runMetric(run, "run_wall_seconds", "", "s");
                  return seconds ? seconds->text + " s" : localized("Report", "not recorded");
              }()},
             {localized("Report", "Convergence"), runStatusOf(run).convergenceText(true)},
