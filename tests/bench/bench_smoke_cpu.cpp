@@ -14,7 +14,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -47,7 +46,6 @@ int main(int argc, char** argv)
     settings.particleStrength = 0.3;
     settings.particleRadius = 2.0 / n;
     settings.coolingPerS = 0.5;
-    if (std::getenv("VSIM_BENCH_SL")) settings.scalarScheme = AdvectionScheme::SemiLagrangian;
     SmokeSimulation simulation(SmokeGrid::make(n, n, n, 1.0 / n, boundaries), settings);
     SmokeSource source;
     source.centre = {0.5, 0.5, 0.1};
