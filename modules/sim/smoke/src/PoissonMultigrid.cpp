@@ -49,12 +49,17 @@ PoissonMultigrid::Level PoissonMultigrid::makeLevel(int nx, int ny, int nz, std:
     return level;
 }
 
+bool PoissonMultigrid::isSingular(const SmokeGrid& grid)
+{
+    return std::none_of(grid.boundaries.begin(), grid.boundaries.end(),
+                        [](DomainBoundary b) { return b == DomainBoundary::Open; }) &&
+           std::none_of(grid.solid.begin(), grid.solid.end(), [](std::uint8_t s) { return s == kVent; });
+}
+
 void PoissonMultigrid::prepare(const SmokeGrid& grid)
 {
     m_boundaries = grid.boundaries;
-    m_singular = std::none_of(grid.boundaries.begin(), grid.boundaries.end(),
-                              [](DomainBoundary b) { return b == DomainBoundary::Open; }) &&
-                 std::none_of(grid.solid.begin(), grid.solid.end(), [](std::uint8_t s) { return s == kVent; });
+    m_singular = isSingular(grid);
     m_levels.clear();
     std::vector<std::uint8_t> fluid(grid.cells()), ambient(grid.cells());
     for (std::size_t c = 0; c < fluid.size(); ++c)

@@ -9,19 +9,34 @@
 #include <cstdio>
 
 namespace vsim::sim::smoke {
-namespace {
 
-bool finite(const std::vector<float>& values)
+SmokeSimulation::SmokeSimulation(SmokeGrid grid, const SmokeSettings& settings, std::unique_ptr<SmokeBackend> backend)
+    : m_grid(std::move(grid)), m_settings(settings),
+      m_backend(backend ? std::move(backend) : std::make_unique<CpuSmokeBackend>()), m_staticSolid(m_grid.solid),
+      m_random(settings.seed)
 {
-    return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
 }
 
-} // namespace
-
-SmokeSimulation::SmokeSimulation(SmokeGrid grid, const SmokeSettings& settings)
-    : m_grid(std::move(grid)), m_settings(settings), m_staticSolid(m_grid.solid), m_random(settings.seed)
+const SmokeGrid& SmokeSimulation::grid() const
 {
-    m_projection.prepare(m_grid);
+    if (!m_hostCurrent)
+    {
+        m_backend->download(m_grid);
+        m_hostCurrent = true;
+    }
+    return m_grid;
+}
+
+SmokeBackend& SmokeSimulation::backend()
+{
+    if (!m_backendCurrent)
+    {
+        grid(); // the host's copy first, should the backend have run before
+        m_backend->upload(m_grid);
+        m_backendCurrent = true;
+    }
+    m_hostCurrent = m_backend->onHostGrid();
+    return *m_backend;
 }
 
 void SmokeSimulation::setSphere(const MovingSphere& sphere)
@@ -32,55 +47,37 @@ void SmokeSimulation::setSphere(const MovingSphere& sphere)
 
 void SmokeSimulation::placeSphere()
 {
-    std::vector<std::uint8_t> solid = m_staticSolid;
-    std::fill(m_grid.solidVelocity.begin(), m_grid.solidVelocity.end(), Eigen::Vector3f::Zero());
-    if (m_sphere)
-        for (int k = 0; k < m_grid.nz; ++k)
-            for (int j = 0; j < m_grid.ny; ++j)
-                for (int i = 0; i < m_grid.nx; ++i)
-                    if ((m_grid.centre(i, j, k) - m_sphere->centre).norm() <= m_sphere->radius)
-                    {
-                        const std::size_t c = m_grid.cell(i, j, k);
-                        solid[c] = 1;
-                        m_grid.solidVelocity[c] = m_sphere->velocity.cast<float>();
-                    }
-    if (solid != m_grid.solid)
-    {
-        m_grid.solid = std::move(solid);
-        m_projection.prepare(m_grid);
-    }
-    for (std::size_t c = 0; c < m_grid.cells(); ++c)
-        if (m_grid.solid[c])
-            m_grid.density[c] = 0.0f, m_grid.temperature[c] = 0.0f;
+    backend().placeSolids(m_grid, m_staticSolid, m_sphere ? &*m_sphere : nullptr);
 }
 
 void SmokeSimulation::setSuction(const SmokeSuction& suction)
 {
-    if (m_projection.multigrid().singular())
+    const SmokeGrid& grid = this->grid();
+    if (PoissonMultigrid::isSingular(grid))
         throw Error("a suction needs a vent or an open face for the gas it takes out to be replaced");
     std::vector<std::size_t> cells;
-    for (int k = 0; k < m_grid.nz; ++k)
-        for (int j = 0; j < m_grid.ny; ++j)
-            for (int i = 0; i < m_grid.nx; ++i)
-                if (m_grid.isFluid(m_grid.cell(i, j, k)) && (m_grid.centre(i, j, k) - suction.centre).norm() <= suction.radius)
-                    cells.push_back(m_grid.cell(i, j, k));
+    for (int k = 0; k < grid.nz; ++k)
+        for (int j = 0; j < grid.ny; ++j)
+            for (int i = 0; i < grid.nx; ++i)
+                if (grid.isFluid(grid.cell(i, j, k)) && (grid.centre(i, j, k) - suction.centre).norm() <= suction.radius)
+                    cells.push_back(grid.cell(i, j, k));
     if (cells.empty())
         throw Error("the suction port has no fluid cell within its radius");
     m_suction = suction;
-    m_sink.assign(m_grid.cells(), 0.0f);
-    const double perCell = suction.flowM3S / (double(cells.size()) * m_grid.h * m_grid.h * m_grid.h);
+    m_sink.assign(grid.cells(), 0.0f);
+    const double perCell = suction.flowM3S / (double(cells.size()) * grid.h * grid.h * grid.h);
     for (std::size_t c : cells)
         m_sink[c] = float(-perCell);
 }
 
 void SmokeSimulation::seedParticles(const Eigen::Vector3d& centre, double radius, int count)
 {
-    m_particles.seed(m_grid, centre, radius, count, m_random);
+    backend().seedParticles(m_grid, m_particles, VortexParticles::places(centre, radius, count, m_random));
 }
 
 double SmokeSimulation::stableStep(double maxDt) const
 {
-    double speed = m_grid.maxSpeed();
+    double speed = m_hostCurrent ? m_grid.maxSpeed() : m_backend->maxSpeed(m_grid);
     for (const SmokeSource& source : m_sources)
         speed = std::max(speed, source.velocity.norm());
     if (m_sphere)
@@ -91,7 +88,7 @@ double SmokeSimulation::stableStep(double maxDt) const
 ProjectionReport SmokeSimulation::project()
 {
     const bool sucking = m_suction && m_time >= m_suction->onS && m_time < m_suction->offS;
-    return m_projection.project(m_grid, m_settings.tolerance, m_settings.maxIterations, sucking ? &m_sink : nullptr);
+    return backend().project(m_grid, m_settings.tolerance, m_settings.maxIterations, sucking ? &m_sink : nullptr);
 }
 
 void SmokeSimulation::applySources(double dt, bool setVelocity)
@@ -100,28 +97,7 @@ void SmokeSimulation::applySources(double dt, bool setVelocity)
     {
         if (m_time < source.onsetS || m_time >= source.endS)
             continue;
-        // The cells whose centres lie in the source's sphere (its bounding box searched).
-        const Eigen::Vector3d low = (source.centre - m_grid.origin) / m_grid.h - Eigen::Vector3d::Constant(source.radius / m_grid.h + 1.0);
-        const Eigen::Vector3d high = (source.centre - m_grid.origin) / m_grid.h + Eigen::Vector3d::Constant(source.radius / m_grid.h + 1.0);
-        for (int k = std::max(0, int(low.z())); k <= std::min(m_grid.nz - 1, int(high.z())); ++k)
-            for (int j = std::max(0, int(low.y())); j <= std::min(m_grid.ny - 1, int(high.y())); ++j)
-                for (int i = std::max(0, int(low.x())); i <= std::min(m_grid.nx - 1, int(high.x())); ++i)
-                {
-                    const std::size_t c = m_grid.cell(i, j, k);
-                    if (m_grid.solid[c] || (m_grid.centre(i, j, k) - source.centre).norm() > source.radius)
-                        continue;
-                    if (setVelocity)
-                    {
-                        // The source sets its velocity on the faces of its cells (before the projection, which
-                        // makes the flow around it divergence-free).
-                        m_grid.u[m_grid.uFace(i, j, k)] = m_grid.u[m_grid.uFace(i + 1, j, k)] = float(source.velocity.x());
-                        m_grid.v[m_grid.vFace(i, j, k)] = m_grid.v[m_grid.vFace(i, j + 1, k)] = float(source.velocity.y());
-                        m_grid.w[m_grid.wFace(i, j, k)] = m_grid.w[m_grid.wFace(i, j, k + 1)] = float(source.velocity.z());
-                        continue;
-                    }
-                    m_grid.density[c] += float(source.densityRate * dt);
-                    m_grid.temperature[c] = std::max(m_grid.temperature[c], float(source.temperatureK));
-                }
+        backend().applySource(m_grid, source, dt, setVelocity);
         if (setVelocity)
             continue;
         m_particleDebt += source.particlesPerSecond * dt;
@@ -129,7 +105,7 @@ void SmokeSimulation::applySources(double dt, bool setVelocity)
         if (born > 0)
         {
             m_particleDebt -= born;
-            m_particles.seed(m_grid, source.centre, source.radius, born, m_random);
+            backend().seedParticles(m_grid, m_particles, VortexParticles::places(source.centre, source.radius, born, m_random));
         }
     }
 }
@@ -140,25 +116,15 @@ SmokeStepReport SmokeSimulation::step(double dt)
     report.dt = dt;
     using Clock = std::chrono::steady_clock;
     const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
+    SmokeBackend& backend = this->backend();
     auto started = Clock::now();
     applySources(dt, false);
-    advect(m_grid, dt, m_settings.scheme, m_settings.scalarScheme, m_steps % 2 == 1);
+    backend.advect(m_grid, dt, m_settings, m_steps % 2 == 1);
     report.advectionSeconds = seconds(started);
     started = Clock::now();
-    if (m_settings.coolingPerS > 0.0)
-    {
-        const float keep = float(std::exp(-m_settings.coolingPerS * dt));
-        for (float& t : m_grid.temperature)
-            t *= keep;
-    }
-    addBuoyancy(m_grid, dt, m_settings.buoyancyAlpha, m_settings.buoyancyBeta, m_settings.up);
+    backend.addHeatForces(m_grid, dt, m_settings);
     if (m_settings.confinement > 0.0 || (m_settings.particleStrength > 0.0 && m_particles.size() > 0))
-    {
-        m_force.assign(m_grid.cells(), Eigen::Vector3f::Zero());
-        accumulateVorticityConfinement(m_grid, m_settings.confinement, m_force);
-        m_particles.accumulateForcing(m_grid, m_settings.particleStrength, m_settings.particleRadius, m_force);
-        addCellForces(m_grid, m_force, dt);
-    }
+        backend.addVortexForces(m_grid, dt, m_settings, m_particles);
     if (m_sphere)
     {
         if (m_sphere->falls)
@@ -183,7 +149,7 @@ SmokeStepReport SmokeSimulation::step(double dt)
     report.projection = project();
     report.projectionSeconds = seconds(started);
     started = Clock::now();
-    m_particles.advance(m_grid, dt);
+    backend.advanceParticles(m_grid, m_particles, dt);
     if (m_suction && m_time >= m_suction->onS && m_time < m_suction->offS)
         m_particles.removeWithin(m_suction->centre, m_suction->radius);
     report.particleSeconds = seconds(started);
@@ -191,13 +157,12 @@ SmokeStepReport SmokeSimulation::step(double dt)
     ++m_steps;
     report.time = m_time;
     report.particles = m_particles.size();
-    report.cfl = m_grid.maxSpeed() * dt / m_grid.h;
-    for (const std::vector<float>* field : {&m_grid.u, &m_grid.v, &m_grid.w, &m_grid.density, &m_grid.temperature})
-        if (!finite(*field))
-        {
-            report.guard = "the flow is no longer finite at t = " + std::to_string(m_time) + " s";
-            return report;
-        }
+    report.cfl = backend.maxSpeed(m_grid) * dt / m_grid.h;
+    if (!backend.finite(m_grid))
+    {
+        report.guard = "the flow is no longer finite at t = " + std::to_string(m_time) + " s";
+        return report;
+    }
     if (report.cfl > m_settings.cflGuard)
     {
         char text[160];

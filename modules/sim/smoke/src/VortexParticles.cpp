@@ -31,20 +31,28 @@ Eigen::Vector3d VortexParticles::vorticityAt(const SmokeGrid& grid, const Eigen:
     return {d[1].z() - d[2].y(), d[2].x() - d[0].z(), d[0].y() - d[1].x()};
 }
 
-void VortexParticles::seed(const SmokeGrid& grid, const Eigen::Vector3d& centre, double radius, int count,
-                           std::mt19937& random)
+std::vector<Eigen::Vector3d> VortexParticles::places(const Eigen::Vector3d& centre, double radius, int count,
+                                                     std::mt19937& random)
 {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::vector<Eigen::Vector3d> result;
+    result.reserve(std::size_t(std::max(count, 0)));
     for (int n = 0; n < count; ++n)
     {
         Eigen::Vector3d offset;
         do
             offset = Eigen::Vector3d(unit(random), unit(random), unit(random));
         while (offset.squaredNorm() > 1.0);
-        const Eigen::Vector3d x = centre + radius * offset;
+        result.push_back(centre + radius * offset);
+    }
+    return result;
+}
+
+void VortexParticles::seedAt(const SmokeGrid& grid, const std::vector<Eigen::Vector3d>& places)
+{
+    for (const Eigen::Vector3d& x : places)
         if (insideFluid(grid, x))
             m_particles.push_back({x, vorticityAt(grid, x)});
-    }
 }
 
 void VortexParticles::advance(const SmokeGrid& grid, double dt)

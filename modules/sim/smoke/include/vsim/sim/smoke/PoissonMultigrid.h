@@ -31,6 +31,8 @@ public:
     void removeNullSpace(std::vector<float>& x) const;
 
     bool singular() const { return m_singular; }
+    /// Whether the grid's operator is singular: no open domain face and no vent cell.
+    static bool isSingular(const SmokeGrid& grid);
     int levels() const { return int(m_levels.size()); }
     /// 1 for a fluid cell of the finest level.
     const std::vector<std::uint8_t>& fluid() const { return m_levels.front().fluid; }

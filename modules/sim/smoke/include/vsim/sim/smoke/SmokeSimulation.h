@@ -10,12 +10,14 @@
 
 #include "vsim/sim/smoke/Advection.h"
 #include "vsim/sim/smoke/PressureProjection.h"
+#include "vsim/sim/smoke/SmokeBackend.h"
 #include "vsim/sim/smoke/SmokeGrid.h"
 #include "vsim/sim/smoke/VortexParticles.h"
 
 #include <Eigen/Core>
 
 #include <limits>
+#include <memory>
 #include <optional>
 #include <random>
 #include <string>
@@ -91,8 +93,9 @@ struct SmokeStepReport
 class SmokeSimulation
 {
 public:
-    /// The grid's solid cells are the static anatomy.
-    SmokeSimulation(SmokeGrid grid, const SmokeSettings& settings);
+    /// The grid's solid cells are the static anatomy. `backend` does the work over the cells (SmokeBackend.h):
+    /// the CPU's when null.
+    SmokeSimulation(SmokeGrid grid, const SmokeSettings& settings, std::unique_ptr<SmokeBackend> backend = nullptr);
 
     void addSource(const SmokeSource& source) { m_sources.push_back(source); }
     /// Throws vsim::Error when the domain has neither a vent nor an open face (the gas would have nowhere to come
@@ -107,8 +110,10 @@ public:
     /// Advances by dt (s).
     SmokeStepReport step(double dt);
 
-    const SmokeGrid& grid() const { return m_grid; }
-    SmokeGrid& grid() { return m_grid; }
+    /// The grid now (downloaded from a device backend when the host's copy is behind).
+    const SmokeGrid& grid() const;
+    /// "cpu", or the device backend's name.
+    std::string backendName() const { return m_backend->name(); }
     const VortexParticles& particles() const { return m_particles; }
     const std::optional<MovingSphere>& sphere() const { return m_sphere; }
     double time() const { return m_time; }
@@ -120,17 +125,21 @@ private:
     /// after the forces, before the projection).
     void applySources(double dt, bool setVelocity);
     void placeSphere();
+    /// The backend, with the host grid uploaded to it first when the backend's copy is behind; the host's copy is
+    /// behind afterwards unless the backend works on it.
+    SmokeBackend& backend();
 
-    SmokeGrid m_grid;
+    mutable SmokeGrid m_grid;
     SmokeSettings m_settings;
+    std::unique_ptr<SmokeBackend> m_backend;
+    mutable bool m_hostCurrent = true;
+    bool m_backendCurrent = false;
     std::vector<std::uint8_t> m_staticSolid;
     std::vector<SmokeSource> m_sources;
     std::optional<SmokeSuction> m_suction;
     std::vector<float> m_sink; ///< the suction's divergence per cell while it is on (1/s)
     std::optional<MovingSphere> m_sphere;
     VortexParticles m_particles;
-    std::vector<Eigen::Vector3f> m_force; ///< confinement and particle forcing at the cell centres (m/s^2)
-    PressureProjection m_projection;
     std::mt19937 m_random;
     double m_time = 0.0;
     long m_steps = 0;

@@ -33,8 +33,18 @@ class VortexParticles
 public:
     /// Adds `count` particles uniformly inside the sphere (centre, radius; m), each with the grid's vorticity
     /// where it lands (vorticityAt); a place in a solid is skipped.
-    void seed(const SmokeGrid& grid, const Eigen::Vector3d& centre, double radius, int count, std::mt19937& random);
+    void seed(const SmokeGrid& grid, const Eigen::Vector3d& centre, double radius, int count, std::mt19937& random)
+    {
+        seedAt(grid, places(centre, radius, count, random));
+    }
+    /// `count` places drawn uniformly inside the sphere (centre, radius; m).
+    static std::vector<Eigen::Vector3d> places(const Eigen::Vector3d& centre, double radius, int count,
+                                               std::mt19937& random);
+    /// Adds a particle at each place that lies in a fluid cell, with the grid's vorticity there.
+    void seedAt(const SmokeGrid& grid, const std::vector<Eigen::Vector3d>& places);
     void add(const VortexParticle& particle) { m_particles.push_back(particle); }
+    /// Replaces every particle (a device backend's moved and stretched ones).
+    void replace(std::vector<VortexParticle> particles) { m_particles = std::move(particles); }
 
     /// Moves every particle with the grid velocity over dt (midpoint rule) and stretches its vorticity,
     /// w += dt (w . grad) u; removes those outside the domain, in a solid or a vent, or whose vorticity is not
