@@ -194,7 +194,7 @@ std::vector<CommandSpec> declareCommands()
          {kStudy, value("scenario"), value("grid"), value("particles"), value("frames"), value("backend"), kParam,
           value("out"), kWait},
          "simulate smoke --study <study.vsim> [--scenario ball-drop|evh|liver-ablation] [--grid 64] [--particles N]\n"
-         "               [--frames 20] [--backend cpu] [--param key=value ...] [--out DIR]\n"
+         "               [--frames 20] [--backend auto|cpu|cuda] [--param key=value ...] [--out DIR]\n"
          "    surgical smoke (thesis ch. 7, illustrative scenes): ball-drop (the thesis demo, a 1 m box), evh (a CO2\n"
          "    tunnel around the study's longest centerline segment, smoke from 9 s after the cautery's contact),\n"
          "    liver-ablation (a dome over the study's liver label, else a box phantom, with a suction port); stable\n"

@@ -14,9 +14,9 @@ int simulateSmoke(const Arguments& arguments, const Progress& progress)
 {
     const std::string scenario = arguments.option("scenario", "ball-drop");
     app::SmokeSetup setup = app::smokeSetup(scenario);
-    const std::string backend = arguments.option("backend", "cpu");
-    if (backend != "cpu" && backend != "auto")
-        throw UsageError("--backend: the smoke solver runs on the CPU in this version (cpu or auto), not '" + backend + "'");
+    setup.backend = arguments.option("backend", "auto");
+    if (setup.backend != "cpu" && setup.backend != "auto" && setup.backend != "cuda")
+        throw UsageError("--backend: auto, cpu or cuda, not '" + setup.backend + "'");
     if (arguments.hasOption("out"))
         checkOutputFolder(arguments.option("out"), "run");
     applyParameters(arguments, setup.parameters);

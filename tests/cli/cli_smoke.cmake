@@ -51,9 +51,17 @@ if(NOT warning MATCHES "box phantom" OR removed LESS 20)
 endif()
 
 run_cli(1 unknown simulate smoke --study ${study} --scenario fire)
-run_cli(2 gpu simulate smoke --study ${study} --backend cuda)
-if(NOT unknown MATCHES "unknown smoke scenario 'fire'" OR NOT gpu MATCHES "--backend")
+run_cli(2 gpu simulate smoke --study ${study} --backend gpu)
+if(NOT unknown MATCHES "unknown smoke scenario 'fire'" OR NOT gpu MATCHES "--backend: auto, cpu or cuda")
     message(FATAL_ERROR "bad input must be refused with a message:\n${unknown}\n${gpu}")
+endif()
+# The CUDA backend asked for where there is none (this machine): refused, with the way on.
+execute_process(COMMAND nvidia-smi -L RESULT_VARIABLE noDevice OUTPUT_QUIET ERROR_QUIET)
+if(NOT noDevice EQUAL 0)
+    run_cli(1 cuda simulate smoke --study ${study} --backend cuda --grid 16 --frames 1)
+    if(NOT cuda MATCHES "CUDA (device|backend).*--backend cpu or auto")
+        message(FATAL_ERROR "--backend cuda without a device must say so:\n${cuda}")
+    endif()
 endif()
 
 # The report gains a smoke section (the newest smoke run: the liver box phantom's), labelled illustrative, with the

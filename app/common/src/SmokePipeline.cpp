@@ -5,6 +5,12 @@
 #include "vsim/core/Localized.h"
 #include "vsim/sim/common/RunDriver.h"
 
+#include "BackendChoice.h"
+
+#ifdef VSIM_HAVE_CUDA
+#include "vsim/cuda_smoke/CudaSmokeBackend.h"
+#endif
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -107,6 +113,13 @@ SmokeRun runSmoke(const study::Study& study, const SmokeSetup& setup, const Prog
                   scene.grid.h * 1e3);
     result.grid = grid;
     sim::smoke::SmokeSolver solver(std::move(scene));
+    if (chooseCuda(setup.backend, result.device))
+    {
+#ifdef VSIM_HAVE_CUDA
+        solver.setBackend(cuda::cudaSmokeBackendFactory());
+        result.backend = "cuda";
+#endif
+    }
     sim::RunControl control;
     control.frameEvery = setup.parameters.get("end_time_s") / std::max(1, setup.frames);
     result.run = sim::runSolver(solver, {}, setup.parameters, control, progress.subRange(0.02, 1.0));
@@ -127,7 +140,8 @@ std::string smokeDocument(const SmokeRun& run)
                           {"description", run.description},
                           {"grid", run.grid},
                           {"inputs", run.inputs},
-                          {"backend", "cpu (single precision)"},
+                          {"backend", run.backend == "cuda" ? "cuda (single precision, " + run.device + ")"
+                                                            : "cpu (single precision)"},
                           {"run_status", nlohmann::json::parse(runStatusJson(run.run.status))},
                           {"parameters", parameters},
                           {"metrics", run.run.metrics},
@@ -147,7 +161,9 @@ std::string addSmokeRun(study::Study& study, const SmokeRun& run)
     for (const ParameterSpec& spec : run.parameters.specs())
         provenance.parameters[spec.key] = preciseNumberText(run.parameters.get(spec.key));
     provenance.parameters["scenario"] = run.scenario;
-    provenance.parameters["backend"] = "cpu";
+    provenance.parameters["backend"] = run.backend;
+    if (!run.device.empty())
+        provenance.parameters["device"] = run.device;
     std::vector<std::string> warnings = run.warnings;
     if (const std::string status = runStatusWarning(run.run.status); !status.empty())
         warnings.insert(warnings.begin(), status);

@@ -1,10 +1,11 @@
 #include "SphPipelineSupport.h"
 
+#include "BackendChoice.h"
+
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
 
 #ifdef VSIM_HAVE_CUDA
-#include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_sph/CudaSph.h"
 #endif
 
@@ -95,36 +96,28 @@ EndPlane endPlane(const VesselNetwork& network, int node, double spacingMm)
 sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, std::string& device,
                                              std::vector<std::string>& warnings)
 {
-    if (requested != "auto" && requested != "cpu" && requested != "cuda")
-        throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
-    if (requested == "cpu")
+    if (!chooseCuda(requested, device))
         return {};
 #ifdef VSIM_HAVE_CUDA
-    if (!cuda::devices().empty())
-    {
-        device = cuda::deviceSummary();
-        if (requested == "cuda")
-            return cuda::cudaSphStepperFactory();
-        return [&warnings](const sim::sph::SphSolver& solver) -> std::unique_ptr<sim::sph::SphStepper>
-        {
-            try
-            {
-                return cuda::cudaSphStepperFactory()(solver);
-            }
-            catch (const Error& refused)
-            {
-                warnings.push_back(std::string("ran on the CPU: ") + refused.what());
-                return nullptr;
-            }
-        };
-    }
-    const std::string unavailable = "there is no CUDA device";
-#else
-    const std::string unavailable = "this build has no CUDA backend (nvcc was not found when it was configured)";
-#endif
     if (requested == "cuda")
-        throw Error(unavailable + ": use --backend cpu or auto");
+        return cuda::cudaSphStepperFactory();
+    // auto: a solver the GPU's stepper refuses (SphStepper's limits) runs on the CPU, with a warning.
+    return [&warnings](const sim::sph::SphSolver& solver) -> std::unique_ptr<sim::sph::SphStepper>
+    {
+        try
+        {
+            return cuda::cudaSphStepperFactory()(solver);
+        }
+        catch (const Error& refused)
+        {
+            warnings.push_back(std::string("ran on the CPU: ") + refused.what());
+            return nullptr;
+        }
+    };
+#else
+    (void)warnings;
     return {};
+#endif
 }
 
 

@@ -1,6 +1,6 @@
 #include "vsim/cuda_fem/CudaBackwardEuler.h"
 
-#include "DeviceBuffer.cuh"
+#include "vsim/cuda_common/DeviceBuffer.cuh"
 #include "DeviceMultigrid.cuh"
 #include "FemKernels.cuh"
 #include "vsim/cuda_common/CudaCheck.h"

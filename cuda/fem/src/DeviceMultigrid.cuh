@@ -3,7 +3,7 @@
 // sim::fem::AggregationMultigrid on the GPU: its coarse levels uploaded as they were set up on the host, and one
 // V-cycle recorded into a stream under capture (the PCG's graph), the same cycle as AggregationMultigrid::apply.
 
-#include "DeviceBuffer.cuh"
+#include "vsim/cuda_common/DeviceBuffer.cuh"
 #include "MultigridKernels.cuh"
 #include "vsim/sim/fem/AggregationMultigrid.h"
 

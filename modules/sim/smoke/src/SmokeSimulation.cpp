@@ -64,10 +64,12 @@ void SmokeSimulation::setSuction(const SmokeSuction& suction)
     if (cells.empty())
         throw Error("the suction port has no fluid cell within its radius");
     m_suction = suction;
-    m_sink.assign(grid.cells(), 0.0f);
+    // The sink's divergence (1/s), spread evenly over the port's cells.
+    std::vector<float> sink(grid.cells(), 0.0f);
     const double perCell = suction.flowM3S / (double(cells.size()) * grid.h * grid.h * grid.h);
     for (std::size_t c : cells)
-        m_sink[c] = float(-perCell);
+        sink[c] = float(-perCell);
+    backend().setSink(sink);
 }
 
 void SmokeSimulation::seedParticles(const Eigen::Vector3d& centre, double radius, int count)
@@ -88,7 +90,7 @@ double SmokeSimulation::stableStep(double maxDt) const
 ProjectionReport SmokeSimulation::project()
 {
     const bool sucking = m_suction && m_time >= m_suction->onS && m_time < m_suction->offS;
-    return backend().project(m_grid, m_settings.tolerance, m_settings.maxIterations, sucking ? &m_sink : nullptr);
+    return backend().project(m_grid, m_settings.tolerance, m_settings.maxIterations, sucking);
 }
 
 void SmokeSimulation::applySources(double dt, bool setVelocity)

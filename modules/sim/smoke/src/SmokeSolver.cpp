@@ -97,7 +97,8 @@ void SmokeSolver::initialize(const SimulationInput&, const ParameterSet& paramet
     m_suctionOnS = -1.0;
     m_visible = parameters.get("visible_transmittance");
     m_sampleEveryS = parameters.get("obscuration_every_s");
-    m_simulation = std::make_unique<SmokeSimulation>(m_scene.grid, settings);
+    m_simulation = std::make_unique<SmokeSimulation>(m_scene.grid, settings,
+                                                     m_backendFactory ? m_backendFactory(m_scene.grid) : nullptr);
     SmokeSource source = m_scene.source;
     const double duration = parameters.get("source_duration_s");
     source.onsetS = parameters.get("source_onset_s");

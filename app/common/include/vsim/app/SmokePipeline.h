@@ -22,6 +22,7 @@ struct SmokeSetup
     std::string scenario = "ball-drop"; ///< sim::smoke::smokeScenarios()
     ParameterSet parameters{sim::smoke::smokeParameters("ball-drop")};
     int frames = 20; ///< frames over the run
+    std::string backend = "auto"; ///< auto (the GPU when present), cpu, cuda
 };
 
 struct SmokeRun
@@ -32,6 +33,8 @@ struct SmokeRun
     std::vector<std::pair<double, double>> obscuration; ///< (s, obscured fraction)
     ParameterSet parameters{sim::smoke::smokeParameters("ball-drop")};
     std::string grid; ///< "64 x 64 x 64 cells of 15.6 mm"
+    std::string backend = "cpu"; ///< where it ran: cpu or cuda
+    std::string device;          ///< the GPU, when on cuda
     std::vector<std::string> warnings;
 };
 
@@ -39,7 +42,7 @@ struct SmokeRun
 SmokeSetup smokeSetup(const std::string& scenario);
 
 /// Builds the scene on the study and runs it. Throws vsim::Error when the scenario needs what the study lacks
-/// (evh: centerlines).
+/// (evh: centerlines), for an unknown backend, and for cuda without a device.
 SmokeRun runSmoke(const study::Study& study, const SmokeSetup& setup, const Progress& progress = {});
 
 /// The run's document (the CLI's output, the run folder's metrics.json).

@@ -53,9 +53,10 @@ public:
     /// hold no smoke and no heat.
     virtual void placeSolids(SmokeGrid& grid, const std::vector<std::uint8_t>& staticSolid,
                              const MovingSphere* sphere) = 0;
-    /// PressureProjection.h's project() (`sink`: the suction's divergence per cell, or null).
-    virtual ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations,
-                                     const std::vector<float>* sink) = 0;
+    /// The suction's divergence per cell (1/s), which project() keeps when asked to.
+    virtual void setSink(const std::vector<float>& sink) = 0;
+    /// PressureProjection.h's project(), with the sink when `withSink`.
+    virtual ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations, bool withSink) = 0;
     /// VortexParticles::advance.
     virtual void advanceParticles(const SmokeGrid& grid, VortexParticles& particles, double dt) = 0;
     /// VortexParticles::seedAt: particles at `places` (m) that lie in fluid, with the grid's vorticity there.
@@ -81,8 +82,8 @@ public:
     void addVortexForces(SmokeGrid& grid, double dt, const SmokeSettings& settings,
                          const VortexParticles& particles) override;
     void placeSolids(SmokeGrid& grid, const std::vector<std::uint8_t>& staticSolid, const MovingSphere* sphere) override;
-    ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations,
-                             const std::vector<float>* sink) override;
+    void setSink(const std::vector<float>& sink) override { m_sink = sink; }
+    ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations, bool withSink) override;
     void advanceParticles(const SmokeGrid& grid, VortexParticles& particles, double dt) override;
     void seedParticles(const SmokeGrid& grid, VortexParticles& particles,
                        const std::vector<Eigen::Vector3d>& places) override;
@@ -92,6 +93,7 @@ public:
 private:
     PressureProjection m_projection;
     bool m_prepared = false;
+    std::vector<float> m_sink;
     std::vector<Eigen::Vector3f> m_force; ///< confinement and particle forcing at the cell centres (m/s^2)
 };
 

@@ -137,7 +137,6 @@ private:
     std::vector<std::uint8_t> m_staticSolid;
     std::vector<SmokeSource> m_sources;
     std::optional<SmokeSuction> m_suction;
-    std::vector<float> m_sink; ///< the suction's divergence per cell while it is on (1/s)
     std::optional<MovingSphere> m_sphere;
     VortexParticles m_particles;
     std::mt19937 m_random;

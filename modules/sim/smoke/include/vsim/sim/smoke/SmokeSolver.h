@@ -49,10 +49,16 @@ public:
     /// The endoscope's view now.
     ObscurationView view() const;
     const SmokeScene& scene() const { return m_scene; }
+    /// Where the steps' work over the cells runs (SmokeBackend.h): the factory's backend from the next
+    /// initialize() on; empty: the CPU's.
+    void setBackend(SmokeBackendFactory factory) { m_backendFactory = std::move(factory); }
+    /// "cpu" or "cuda" (after initialize()).
+    std::string backendName() const { return m_simulation ? m_simulation->backendName() : "cpu"; }
 
 private:
     SmokeScene m_scene;
     std::unique_ptr<SmokeSimulation> m_simulation;
+    SmokeBackendFactory m_backendFactory;
     double m_endTimeS = 0.0, m_maxStepS = 0.0, m_extinction = 0.0, m_visible = 0.5, m_sampleEveryS = 0.1;
     double m_nextSampleS = 0.0, m_lastStepS = 0.0;
     std::vector<std::pair<double, double>> m_curve;

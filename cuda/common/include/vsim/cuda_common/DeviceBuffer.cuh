@@ -1,6 +1,6 @@
 #pragma once
 
-// A device array freed with its owner (move-only), for the wall solver's host code.
+// A device array freed with its owner (move-only), for the GPU backends' host code.
 
 #include "vsim/cuda_common/CudaCheck.h"
 

@@ -1,0 +1,15 @@
+#pragma once
+
+// Which backend a run asks for (`--backend auto|cpu|cuda`, the GUI's choice), shared by the pipelines whose
+// solvers have a GPU backend (blood flow, injection, smoke). Internal to app/common.
+
+#include <string>
+
+namespace vsim::app {
+
+/// True when the run should go to the GPU: "cuda", or "auto" with a device present; `device` then names it.
+/// Throws vsim::Error for an unknown name, and for "cuda" when this build has no CUDA backend or there is no
+/// device.
+bool chooseCuda(const std::string& requested, std::string& device);
+
+} // namespace vsim::app

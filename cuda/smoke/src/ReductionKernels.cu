@@ -1,0 +1,150 @@
+#include "SmokeKernels.cuh"
+
+#include "vsim/cuda_common/CudaCheck.h"
+
+namespace vsim::cuda::smoke {
+namespace {
+
+constexpr int kReduceBlocks = 1024;
+
+/// The block's sum of `value` (double), by warp shuffles and shared memory; valid in thread 0.
+__device__ double blockSum(double value)
+{
+    __shared__ double warps[kBlock / 32];
+    for (int offset = 16; offset > 0; offset /= 2)
+        value += __shfl_down_sync(0xffffffffu, value, offset);
+    if (threadIdx.x % 32 == 0)
+        warps[threadIdx.x / 32] = value;
+    __syncthreads();
+    value = threadIdx.x < kBlock / 32 ? warps[threadIdx.x] : 0.0;
+    if (threadIdx.x < 32)
+        for (int offset = 16; offset > 0; offset /= 2)
+            value += __shfl_down_sync(0xffffffffu, value, offset);
+    return value;
+}
+
+__device__ double blockMax(double value)
+{
+    __shared__ double warps[kBlock / 32];
+    for (int offset = 16; offset > 0; offset /= 2)
+        value = fmax(value, __shfl_down_sync(0xffffffffu, value, offset));
+    if (threadIdx.x % 32 == 0)
+        warps[threadIdx.x / 32] = value;
+    __syncthreads();
+    value = threadIdx.x < kBlock / 32 ? warps[threadIdx.x] : 0.0;
+    if (threadIdx.x < 32)
+        for (int offset = 16; offset > 0; offset /= 2)
+            value = fmax(value, __shfl_down_sync(0xffffffffu, value, offset));
+    return value;
+}
+
+/// The largest of non-negative doubles, by their bits (ordered as unsigned integers).
+__device__ void atomicMaxNonNegative(double* target, double value)
+{
+    atomicMax(reinterpret_cast<unsigned long long*>(target), static_cast<unsigned long long>(__double_as_longlong(value)));
+}
+
+__global__ void dotKernel(const float* a, const float* b, std::size_t n, double* out)
+{
+    double sum = 0.0;
+    for (std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x; c < n; c += std::size_t(gridDim.x) * blockDim.x)
+        sum += double(a[c]) * double(b[c]);
+    sum = blockSum(sum);
+    if (threadIdx.x == 0)
+        atomicAdd(out, sum);
+}
+
+__global__ void sumOnFluidKernel(const float* x, const std::uint8_t* fluid, std::size_t n, double* out)
+{
+    double sum = 0.0, count = 0.0;
+    for (std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x; c < n; c += std::size_t(gridDim.x) * blockDim.x)
+        if (fluid[c])
+            sum += x[c], count += 1.0;
+    sum = blockSum(sum);
+    __syncthreads();
+    count = blockSum(count);
+    if (threadIdx.x == 0)
+        atomicAdd(out, sum), atomicAdd(out + 1, count);
+}
+
+__device__ double absOrInfinity(float value)
+{
+    return isnan(value) ? double(INFINITY) : fabs(double(value));
+}
+
+__global__ void maxAbsKernel(const float* a, std::size_t na, const float* b, std::size_t nb, const float* c,
+                             std::size_t nc, double* out)
+{
+    double largest = 0.0;
+    const std::size_t stride = std::size_t(gridDim.x) * blockDim.x, first = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
+    for (std::size_t n = first; n < na; n += stride)
+        largest = fmax(largest, absOrInfinity(a[n]));
+    for (std::size_t n = first; n < nb; n += stride)
+        largest = fmax(largest, absOrInfinity(b[n]));
+    for (std::size_t n = first; n < nc; n += stride)
+        largest = fmax(largest, absOrInfinity(c[n]));
+    largest = blockMax(largest);
+    if (threadIdx.x == 0)
+        atomicMaxNonNegative(out, largest);
+}
+
+__global__ void notFiniteKernel(const float* field, std::size_t n, double* out)
+{
+    double count = 0.0;
+    for (std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x; c < n; c += std::size_t(gridDim.x) * blockDim.x)
+        count += isfinite(field[c]) ? 0.0 : 1.0;
+    count = blockSum(count);
+    if (threadIdx.x == 0 && count > 0.0)
+        atomicAdd(out, count);
+}
+
+unsigned reduceBlocks(std::size_t n)
+{
+    return std::max(1u, std::min(unsigned(kReduceBlocks), blocksFor(n)));
+}
+
+double fetch(const double* scratch, int index = 0)
+{
+    double values[2];
+    VSIM_CUDA_CHECK(cudaMemcpy(values, scratch, 2 * sizeof(double), cudaMemcpyDeviceToHost));
+    return values[index];
+}
+
+} // namespace
+
+double dot(const float* a, const float* b, std::size_t n, double* scratch)
+{
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 2 * sizeof(double)));
+    dotKernel<<<reduceBlocks(n), kBlock>>>(a, b, n, scratch);
+    return fetch(scratch);
+}
+
+void sumOnFluid(const float* x, const std::uint8_t* fluid, std::size_t n, double* scratch, double& sum, double& count)
+{
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 2 * sizeof(double)));
+    sumOnFluidKernel<<<reduceBlocks(n), kBlock>>>(x, fluid, n, scratch);
+    double values[2];
+    VSIM_CUDA_CHECK(cudaMemcpy(values, scratch, 2 * sizeof(double), cudaMemcpyDeviceToHost));
+    sum = values[0], count = values[1];
+}
+
+double maxAbs(const float* a, std::size_t na, const float* b, std::size_t nb, const float* c, std::size_t nc,
+              double* scratch)
+{
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 2 * sizeof(double)));
+    maxAbsKernel<<<reduceBlocks(std::max(na, std::max(nb, nc))), kBlock>>>(a, na, b, nb, c, nc, scratch);
+    return fetch(scratch);
+}
+
+double countNotFinite(const GridView& g, double* scratch)
+{
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 2 * sizeof(double)));
+    const std::size_t cells = g.cells();
+    const std::size_t sizes[5] = {nodes(latticeOf(g, 0)), nodes(latticeOf(g, 1)), nodes(latticeOf(g, 2)), cells, cells};
+    const float* fields[5] = {g.u, g.v, g.w, g.density, g.temperature};
+    for (int f = 0; f < 5; ++f)
+        notFiniteKernel<<<reduceBlocks(sizes[f]), kBlock>>>(fields[f], sizes[f], scratch);
+    return fetch(scratch);
+}
+
+} // namespace vsim::cuda::smoke

@@ -1,0 +1,103 @@
+#pragma once
+
+// The launchers of the smoke step's kernels (host functions; each runs on the default stream). The algorithm is
+// the CPU's, file by file: AdvectionKernels.cu is modules/sim/smoke's Advection.cpp, ForceKernels.cu its
+// SmokeForces.cpp, the sources, the solids and VortexParticles.cpp, ProjectionKernels.cu its PressureProjection.cpp
+// and PoissonMultigrid.cpp's operator, ReductionKernels.cu the sums and maxima they need.
+
+#include "SmokeDevice.cuh"
+
+namespace vsim::cuda::smoke {
+
+// ---- advection (AdvectionKernels.cu)
+/// The semi-Lagrangian (and with `macCormack` the corrected) advection of lattice `kind` (0, 1, 2 the u, v, w
+/// faces, 3 the cells) into `field` from `old`, through the velocity (u0, v0, w0) of the step's start.
+/// `forward`: scratch of the lattice's size.
+void advectLattice(const GridView& g, int kind, float* field, const float* old, const float* u0, const float* v0,
+                   const float* w0, float dtCells, bool macCormack, float* forward);
+/// One axis's sweep of the conservative transport of density and temperature (Advection.cpp's transportAlong):
+/// `velocity` the axis's face velocities at the step's start, `substeps` sub-steps of `ratio` = dt / substeps / h,
+/// `start` the two fields at the step's start (density then temperature, cells() each), `flux` 2 x faces scratch.
+void transportAxis(const GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
+                   float* flux);
+/// Negative smoke and heat to zero; none in cells that are not fluid.
+void clampScalars(const GridView& g);
+
+// ---- forces, sources, solids, particles (ForceKernels.cu)
+/// A source's cells in the box [lo, hi] (cells, inclusive): smoke and heat over dt, or its velocity on their faces.
+void applySource(const GridView& g, const int lo[3], const int hi[3], double cx, double cy, double cz, double radius,
+                 float densityAdded, float temperature, float vx, float vy, float vz, bool setVelocity);
+/// temperature *= keep, then the buoyancy along `up` (SmokeForces.cpp's addBuoyancy).
+void addHeatForces(const GridView& g, float keep, double dt, double alpha, double beta, const double up[3]);
+/// force (3 per cell, zeroed here) = vorticity confinement (epsilon); `omega` 3 per cell and `magnitude` 1 per
+/// cell are scratch.
+void vorticityConfinement(const GridView& g, double epsilon, float* force, float* omega, float* magnitude);
+/// The vortex particles' forcing added to `force` (particles: 6 doubles each, position then vorticity).
+void particleForcing(const GridView& g, const double* particles, int count, double epsilon, double radius, float* force);
+/// u += dt f on the faces between cells that are not solid (SmokeForces.cpp's addCellForces).
+void addCellForces(const GridView& g, const float* force, float dt);
+/// The solids: the static mask and the sphere (radius <= 0: none) with its velocity; solid cells lose their smoke
+/// and heat. Sets *changed (device) to 1 when a cell's kind changed.
+void placeSolids(const GridView& g, const std::uint8_t* staticSolid, double cx, double cy, double cz, double radius,
+                 float vx, float vy, float vz, int* changed);
+/// VortexParticles::advance on `count` particles (6 doubles each) in place; keep[n] = 0 for those to remove.
+void advanceParticles(const GridView& g, double* particles, int count, double dt, int* keep);
+/// The grid's vorticity at `count` places (3 doubles each) into particles (6 doubles each); keep[n] = 0 where the
+/// place is not in a fluid cell.
+void seedParticles(const GridView& g, const double* places, int count, double* particles, int* keep);
+
+// ---- the projection (ProjectionKernels.cu)
+/// Faces of solids and of the domain's walls take the solid's normal velocity (applySolidBoundaries).
+void applySolidBoundaries(const GridView& g);
+/// b = -h^2 (div u - sink) on the fluid cells (0 elsewhere); psi = 0 where a cell is not fluid.
+void projectionRightSide(const GridView& g, const std::uint8_t* fluid, const float* sink, float* b, float* psi);
+/// u -= grad psi / h on the faces between fluid cells and between fluid and the ambient (open faces, vents).
+void correctVelocity(const GridView& g, const float* psi);
+/// |div u - sink| per cell into `out` (cells()).
+void divergenceLeft(const GridView& g, const float* sink, float* out);
+
+// ---- the Poisson operator and its multigrid levels (ProjectionKernels.cu)
+struct LevelView
+{
+    int nx, ny, nz;
+    const std::uint8_t* fluid;
+    const std::uint8_t* diagonal;
+    __host__ __device__ std::size_t cells() const { return std::size_t(nx) * ny * nz; }
+};
+/// fluid and ambient (vent) flags of the finest level from the solid kinds.
+void finestFlags(const GridView& g, std::uint8_t* fluid, std::uint8_t* ambient);
+/// A coarse level's flags from the fine one's (fluid when a child is; ambient when none is fluid and one is).
+void coarsenFlags(int fx, int fy, int fz, const std::uint8_t* fineFluid, const std::uint8_t* fineAmbient, int cx, int cy,
+                  int cz, std::uint8_t* fluid, std::uint8_t* ambient);
+/// The diagonal: the faces of each fluid cell towards fluid, a vent or an open domain face.
+void levelDiagonal(int nx, int ny, int nz, const std::uint8_t* fluid, const std::uint8_t* ambient, const std::uint8_t open[6],
+                   std::uint8_t* diagonal);
+void applyLevel(const LevelView& level, const float* x, float* y);
+/// One red-black pass pair: colour `colourFirst`, then the other.
+void smoothLevel(const LevelView& level, float* x, const float* b, int colourFirst);
+/// The coarsest level: `sweeps` pass pairs from colour 0, then `sweeps` from colour 1, in one block.
+void solveCoarsest(const LevelView& level, float* x, const float* b, int sweeps);
+/// coarse.b = half the sum over each coarse cell's fluid children of (b - r).
+void restrictResidual(const LevelView& fine, const float* b, const float* r, const LevelView& coarse, float* coarseB);
+/// x += the parent's correction on the fluid cells.
+void prolongCorrection(const LevelView& fine, float* x, const LevelView& coarse, const float* coarseX);
+/// x -= mean on the fluid cells.
+void subtractOnFluid(const LevelView& level, float* x, float mean);
+/// psi += alpha p; r -= alpha q.
+void updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r);
+/// r = b - q.
+void difference(std::size_t n, const float* b, const float* q, float* r);
+/// p = z + beta p.
+void updateDirection(std::size_t n, float beta, const float* z, float* p);
+
+// ---- reductions (ReductionKernels.cu): each returns its value to the host (one small copy)
+double dot(const float* a, const float* b, std::size_t n, double* scratch);
+/// Sum and count of x over the fluid cells.
+void sumOnFluid(const float* x, const std::uint8_t* fluid, std::size_t n, double* scratch, double& sum, double& count);
+/// Largest |x| over three arrays (any may be null with n 0); NaN counts as +infinity.
+double maxAbs(const float* a, std::size_t na, const float* b, std::size_t nb, const float* c, std::size_t nc,
+              double* scratch);
+/// The number of values that are not finite over the grid's velocity, smoke and temperature.
+double countNotFinite(const GridView& g, double* scratch);
+
+} // namespace vsim::cuda::smoke
