@@ -10,13 +10,17 @@
 // level (1e-6 after 10 - 20 steps: the bound there is 1e-4) and the flow's instability (buoyant plumes,
 // confinement) then grows the difference, as it grows any: the plume's test runs the CPU against itself with the
 // source's rate changed by 1e-6 and bounds the GPU's difference after 60 steps by the larger of 3 times that
-// and 1e-3. The smoke mass, the particles alive and the iterations agree throughout. Skips without a device.
+// and 1e-3. The smoke mass, the particles alive and the iterations agree throughout. Last, the run driver with
+// the GPU as the solver's backend (SmokeSolver::setBackend, what `simulate smoke --backend cuda` runs): the
+// liver box with its suction through 22 s at 32 cells, the run's figures against the CPU's. Skips without a device.
 
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_smoke/CudaSmokeBackend.h"
 #include "vsim/sim/smoke/SmokeForces.h"
 #include "vsim/sim/smoke/SmokeScenes.h"
 #include "vsim/sim/smoke/SmokeSimulation.h"
+#include "vsim/sim/smoke/SmokeSolver.h"
+#include "vsim/sim/common/RunDriver.h"
 
 #include <QtTest>
 
@@ -213,6 +217,36 @@ private slots:
         verifyRoundingLevel(d[0]);
         QVERIFY2(d[1].density < 1e-2 && d[1].velocity < 1e-2 && d[1].mass < 1e-3, "the liver box parted");
         QVERIFY(d[1].iterationGap <= 1);
+    }
+
+    /// What `simulate smoke --backend cuda` runs: the solver on the run driver with the GPU's backend.
+    void runDriverWithTheGpuBackend()
+    {
+        ParameterSet parameters(smokeParameters("liver-ablation"));
+        parameters.set("grid_cells", 32);
+        parameters.set("end_time_s", 22.0); // the suction from 10 s: its first 10 s
+        std::map<std::string, double> figures[2];
+        for (int onGpu = 0; onGpu < 2; ++onGpu)
+        {
+            SmokeSolver solver(liverBoxScene(32));
+            if (onGpu)
+                solver.setBackend(cuda::cudaSmokeBackendFactory());
+            sim::RunControl control;
+            control.frameEvery = 4.0;
+            const SolverRun run = sim::runSolver(solver, {}, parameters, control);
+            QCOMPARE(QString::fromStdString(solver.backendName()), QString(onGpu ? "cuda" : "cpu"));
+            QVERIFY(run.status.stoppedBy == RunStatus::StoppedBy::End);
+            QVERIFY(run.status.converged());
+            figures[onGpu] = run.metrics;
+        }
+        for (const char* key : {"smoke_mass_mg", "peak_density_mg_m3", "smoke_removed_in_10s_percent", "peak_obscured_fraction",
+                                "mean_projection_iterations"})
+        {
+            const double cpu = figures[0].at(key), gpu = figures[1].at(key);
+            qInfo("%s: CPU %.6g, GPU %.6g", key, cpu, gpu);
+            QVERIFY2(std::abs(gpu - cpu) <= 0.02 * std::abs(cpu) + 1e-9, key);
+        }
+        QVERIFY(figures[1].at("worst_relative_residual") <= 1e-4);
     }
 
     void closedBoxWithMacCormack()

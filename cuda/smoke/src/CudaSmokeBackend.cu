@@ -22,6 +22,8 @@ namespace {
 constexpr int kSmoothingSweeps = 2;  // as PoissonMultigrid.cpp
 constexpr int kCoarsestSweeps = 30;
 constexpr std::size_t kCoarsestCells = 512;
+constexpr int kCgAttempts = 3;       // as PressureProjection.cpp
+constexpr int kStallIterations = 10;
 
 template <typename T>
 void copyIn(Buffer<T>& buffer, const T* host, std::size_t n)
@@ -330,15 +332,23 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
     d.removeNullSpace(d.b.data);
     host::ProjectionReport report;
     const double bNorm = std::sqrt(dot(d.b.data, d.b.data, n, d.scratch.data));
-    if (bNorm > 0.0)
+    // Preconditioned conjugate gradients from the last psi, restarted from its psi when the true residual is
+    // above the tolerance, from 0 when stalled (PressureProjection.cpp).
+    bool stalled = false;
+    for (int attempt = 0; attempt < kCgAttempts && bNorm > 0.0 && report.iterations < maxIterations; ++attempt)
     {
-        // Preconditioned conjugate gradients from the last psi (PressureProjection.cpp).
+        if (attempt > 0 && report.relativeResidual <= tolerance)
+            break;
+        if (stalled)
+            VSIM_CUDA_CHECK(cudaMemsetAsync(d.psi.data, 0, n * sizeof(float)));
         double residual = d.trueResidual() / bNorm;
         d.precondition(d.r.data, d.z.data);
         VSIM_CUDA_CHECK(cudaMemcpyAsync(d.p.data, d.z.data, n * sizeof(float), cudaMemcpyDeviceToDevice));
         double rz = dot(d.r.data, d.z.data, n, d.scratch.data);
-        int iteration = 0;
-        while (residual > tolerance && iteration < maxIterations && rz > 0.0)
+        int iteration = 0, sinceProgress = 0;
+        double best = residual;
+        stalled = false;
+        while (residual > tolerance && report.iterations + iteration < maxIterations && rz > 0.0)
         {
             applyLevel(d.levels[0].view(), d.p.data, d.q.data);
             const double pq = dot(d.p.data, d.q.data, n, d.scratch.data);
@@ -349,6 +359,13 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
             residual = std::sqrt(dot(d.r.data, d.r.data, n, d.scratch.data)) / bNorm;
             if (residual <= tolerance)
                 break;
+            if (residual < 0.5 * best)
+                best = residual, sinceProgress = 0;
+            else if (++sinceProgress >= kStallIterations)
+            {
+                stalled = true;
+                break;
+            }
             d.precondition(d.r.data, d.z.data);
             const double rzNext = dot(d.r.data, d.z.data, n, d.scratch.data);
             const float beta = float(rzNext / rz);
@@ -356,7 +373,7 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
             updateDirection(n, beta, d.z.data, d.p.data);
         }
         // The true residual of the final psi (the recurrence drifts in single precision).
-        report.iterations = iteration;
+        report.iterations += iteration;
         report.relativeResidual = d.trueResidual() / bNorm;
     }
     report.converged = report.relativeResidual <= tolerance;

@@ -6,6 +6,9 @@
 namespace vsim::sim::smoke {
 namespace {
 
+constexpr int kCgAttempts = 3;       // the first solve and up to two restarts
+constexpr int kStallIterations = 10; // iterations without halving the residual: stalled
+
 double dot(const std::vector<float>& a, const std::vector<float>& b)
 {
     double sum = 0.0;
@@ -149,9 +152,18 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
         m_b[c] = scale * (div[c] - (sourceDivergence ? (*sourceDivergence)[c] : 0.0f));
     m_multigrid.removeNullSpace(m_b);
     const double bNorm = std::sqrt(dot(m_b, m_b));
-    if (bNorm > 0.0)
+    // Preconditioned conjugate gradients from the last psi. In single precision the recurrence's residual drifts
+    // from the true one, so the solve can stop on a recurrence below the tolerance with the true residual above
+    // it: CG then restarts from its psi with the true residual (at most twice); one that stalls (its residual not
+    // halved in 10 iterations: the rounding of b - A psi for a large warm start, near 1e-7 |A psi|, can exceed a
+    // nearly divergence-free flow's small b) restarts from psi = 0. All within maxIterations.
+    bool stalled = false;
+    for (int attempt = 0; attempt < kCgAttempts && bNorm > 0.0 && report.iterations < maxIterations; ++attempt)
     {
-        // Preconditioned conjugate gradients from the last psi.
+        if (attempt > 0 && report.relativeResidual <= tolerance)
+            break;
+        if (stalled)
+            std::fill(m_psi.begin(), m_psi.end(), 0.0f);
         m_multigrid.apply(m_psi, m_q);
         for (std::size_t c = 0; c < m_r.size(); ++c)
             m_r[c] = m_b[c] - m_q[c];
@@ -160,8 +172,10 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
         m_multigrid.precondition(m_r, m_z);
         m_p = m_z;
         double rz = dot(m_r, m_z);
-        int iteration = 0;
-        while (residual > tolerance && iteration < maxIterations && rz > 0.0)
+        int iteration = 0, sinceProgress = 0;
+        double best = residual;
+        stalled = false;
+        while (residual > tolerance && report.iterations + iteration < maxIterations && rz > 0.0)
         {
             m_multigrid.apply(m_p, m_q);
             const double pq = dot(m_p, m_q);
@@ -182,6 +196,13 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
             residual = std::sqrt(rr) / bNorm;
             if (residual <= tolerance)
                 break;
+            if (residual < 0.5 * best)
+                best = residual, sinceProgress = 0;
+            else if (++sinceProgress >= kStallIterations)
+            {
+                stalled = true;
+                break;
+            }
             m_multigrid.precondition(m_r, m_z);
             const double rzNext = dot(m_r, m_z);
             const float beta = float(rzNext / rz);
@@ -195,7 +216,7 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
         for (std::size_t c = 0; c < m_r.size(); ++c)
             m_r[c] = m_b[c] - m_q[c];
         m_multigrid.removeNullSpace(m_r);
-        report.iterations = iteration;
+        report.iterations += iteration;
         report.relativeResidual = std::sqrt(dot(m_r, m_r)) / bNorm;
     }
     report.converged = report.relativeResidual <= tolerance;
