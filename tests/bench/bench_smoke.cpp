@@ -51,7 +51,7 @@ double median(std::vector<double> values)
 double leastBytesPerCell(int substeps, int iterations)
 {
     const double vcycle = (4 + 8 * 9 + 10 + 9.5 + 9.5) * 8.0 / 7.0;      // zero, 8 half smoothing passes, A x, transfers
-    const double advection = 24 + 48 + 16 + 58.0 * substeps + 17 + 12;   // copies, 3 lattices, start, fluxes, clamp, maxima
+    const double advection = 24 + 48 + 16 + 29.0 * substeps + 17 + 12;   // copies, 3 lattices, start, sweeps, clamp, maxima
     const double forces = 8 + 17 + 95;                                    // cooling, buoyancy, vorticity and confinement
     const double projectionSetUp = 27 + 26 + 4 + 26 + vcycle + 16 + 26 + 39 + 17 + 4 + 12;
     const double perIteration = 10 + 8 + 24 + 4 + vcycle + 8 + 12;

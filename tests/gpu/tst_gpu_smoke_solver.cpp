@@ -83,6 +83,12 @@ std::vector<Differences> runPair(SmokeSimulation& first, SmokeSimulation& second
         const SmokeGrid& x = first.grid();
         const SmokeGrid& y = second.grid();
         result.density = largestDifference(x.density, y.density) / std::max(largestValue(x.density), 1e-30);
+        std::size_t worst = 0;
+        for (std::size_t c = 0; c < x.density.size(); ++c)
+            if (std::abs(x.density[c] - y.density[c]) > std::abs(x.density[worst] - y.density[worst]))
+                worst = c;
+        qInfo("  the largest density difference at cell (%zu, %zu, %zu): %.6g against %.6g", worst % std::size_t(x.nx),
+              worst / std::size_t(x.nx) % std::size_t(x.ny), worst / (std::size_t(x.nx) * x.ny), x.density[worst], y.density[worst]);
         const double speed = std::max(x.maxSpeed(), 1e-30);
         result.velocity = std::max({largestDifference(x.u, y.u), largestDifference(x.v, y.v), largestDifference(x.w, y.w)}) / speed;
         result.mass = std::abs(x.smokeMass() - y.smokeMass()) / std::max(x.smokeMass(), 1e-30);
@@ -188,18 +194,19 @@ private slots:
     /// The parity run: the plume at 64^3.
     void plumeAt64()
     {
-        const std::vector<Differences> gpu = runBoth(plume(64), {20, 60}, 1.0 / 30.0);
-        verifyRoundingLevel(gpu[0]);
+        const std::vector<Differences> gpu = runBoth(plume(64), {1, 2, 3, 5, 10, 20, 60}, 1.0 / 30.0);
+        verifyRoundingLevel(gpu[5]);
         // The same plume on the CPU with the source's rate changed by 1e-6: how far rounding-level differences grow.
         std::unique_ptr<SmokeSimulation> reference = plume(64)(nullptr), perturbed = plume(64, 1.0 + 1e-6)(nullptr);
         const Differences growth = runPair(*reference, *perturbed, {60}, 1.0 / 30.0, "CPU / CPU with the rate 1e-6 off").back();
         const double bound = std::max(1e-3, 3.0 * std::max(growth.density, growth.velocity));
-        QVERIFY2(gpu[1].density < bound && gpu[1].velocity < bound,
-                 qPrintable(QString("density %1, velocity %2 against %3").arg(gpu[1].density).arg(gpu[1].velocity).arg(bound)));
-        QVERIFY(gpu[1].mass < 1e-5);
-        QCOMPARE(gpu[1].particles, 0L);
-        QVERIFY(gpu[1].iterationGap <= 1);
-        QVERIFY(gpu[1].worstResidual <= 1e-4);
+        const Differences& last = gpu.back();
+        QVERIFY2(last.density < bound && last.velocity < bound,
+                 qPrintable(QString("density %1, velocity %2 against %3").arg(last.density).arg(last.velocity).arg(bound)));
+        QVERIFY(last.mass < 1e-5);
+        QCOMPARE(last.particles, 0L);
+        QVERIFY(last.iterationGap <= 1);
+        QVERIFY(last.worstResidual <= 1e-4);
     }
 
     void ballDrop()

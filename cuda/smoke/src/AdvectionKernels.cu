@@ -6,6 +6,8 @@
 
 #include "vsim/cuda_common/CudaCheck.h"
 
+#include <utility>
+
 namespace vsim::cuda::smoke {
 namespace {
 
@@ -103,12 +105,21 @@ __device__ float minmod(float a, float b)
     return a * b <= 0.0f ? 0.0f : (fabsf(a) < fabsf(b) ? a : b);
 }
 
-/// Whether smoke passes face (i, j, k) of the axis's lattice: neither side solid, not a wall of the domain.
-__device__ bool passes(const GridView& g, int axis, int i, int j, int k)
+/// The extent of the grid along `axis` (cells).
+template <int axis>
+__device__ int extentAlong(const GridView& g)
 {
-    const int n[3] = {g.nx, g.ny, g.nz};
-    const int at = axis == 0 ? i : axis == 1 ? j : k;
-    const bool lowInside = at > 0, highInside = at < n[axis];
+    return axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
+}
+
+/// Whether smoke passes face (i, j, k) of the axis's lattice: neither side solid, not a wall of the domain. (The
+/// axis is a template argument throughout: indexing the kernel's parameters by a run-time axis would copy them
+/// to local memory in every thread.)
+template <int axis>
+__device__ bool passes(const GridView& g, int i, int j, int k)
+{
+    const int at = axis == 0 ? i : axis == 1 ? j : k, n = extentAlong<axis>(g);
+    const bool lowInside = at > 0, highInside = at < n;
     if ((lowInside && g.solid[g.cell(i - (axis == 0), j - (axis == 1), k - (axis == 2))] == kSolid) ||
         (highInside && g.solid[g.cell(i, j, k)] == kSolid))
         return false;
@@ -119,20 +130,18 @@ __device__ bool passes(const GridView& g, int axis, int i, int j, int k)
     return true;
 }
 
-__global__ void fluxKernel(GridView g, int axis, const float* velocity, float* flux)
+/// The flux of smoke and heat through face (i, j, k) of the axis's lattice: the face velocity times the upwind
+/// cell's value with its minmod-limited slope (Advection.cpp's transportAlong), from the fields `in`.
+template <int axis>
+__device__ void faceFlux(const GridView& g, const float* velocity, const float* const in[2], int i, int j, int k,
+                         std::size_t f, float flux[2])
 {
-    const LatticeShape shape = latticeOf(g, axis);
-    const std::size_t faces = nodes(shape), f = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (f >= faces)
-        return;
-    const int i = int(f % std::size_t(shape.sx)), j = int((f / std::size_t(shape.sx)) % std::size_t(shape.sy)),
-              k = int(f / (std::size_t(shape.sx) * std::size_t(shape.sy)));
-    if (!passes(g, axis, i, j, k))
+    if (!passes<axis>(g, i, j, k))
     {
-        flux[f] = flux[faces + f] = 0.0f;
+        flux[0] = flux[1] = 0.0f;
         return;
     }
-    const int n[3] = {g.nx, g.ny, g.nz};
+    const int n = extentAlong<axis>(g);
     const int at = axis == 0 ? i : axis == 1 ? j : k;
     const long long stride = axis == 0 ? 1 : axis == 1 ? (long long)(g.nx) : (long long)(g.nx) * g.ny;
     const long long here = (long long)(i) + (long long)(g.nx) * (j + (long long)(g.ny) * k);
@@ -145,41 +154,52 @@ __global__ void fluxKernel(GridView g, int axis, const float* velocity, float* f
     for (int o = 0; o < 3; ++o)
     {
         const int index = at + offsets[o];
-        present[o] = index >= 0 && index < n[axis];
+        present[o] = index >= 0 && index < n;
         cells[o] = present[o] ? std::size_t(here + offsets[o] * stride) : 0;
         present[o] = present[o] && !g.solid[cells[o]];
     }
-    const float* values[2] = {g.density, g.temperature};
 #pragma unroll
     for (int m = 0; m < 2; ++m)
     {
-        const float centre = present[0] ? values[m][cells[0]] : 0.0f;
-        const float behind = present[1] ? values[m][cells[1]] : 0.0f;
-        const float ahead = present[2] ? values[m][cells[2]] : 0.0f;
-        flux[m * faces + f] =
-            speed * (centre + 0.5f * float(direction) * minmod(direction * (centre - behind), direction * (ahead - centre)));
+        const float centre = present[0] ? in[m][cells[0]] : 0.0f;
+        const float behind = present[1] ? in[m][cells[1]] : 0.0f;
+        const float ahead = present[2] ? in[m][cells[2]] : 0.0f;
+        flux[m] = speed * (centre + 0.5f * float(direction) * minmod(direction * (centre - behind), direction * (ahead - centre)));
     }
 }
 
-__global__ void transportUpdateKernel(GridView g, int axis, const float* velocity, float ratio, const float* start,
-                                      const float* flux)
+/// One sub-step of the axis's sweep at each cell, from the fields `in` into `out`: the fluxes through its two
+/// faces (each face's computed by both its cells, alike), less the step's start value times the sweep's own
+/// divergence. Solid cells keep their values.
+template <int axis>
+__global__ void transportKernel(GridView g, const float* velocity, float ratio, const float* start, const float* density,
+                                const float* temperature, float* outDensity, float* outTemperature)
 {
     const std::size_t cells = g.cells(), c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (c >= cells || g.solid[c])
+    if (c >= cells)
         return;
+    const float* const in[2] = {density, temperature};
+    float* const out[2] = {outDensity, outTemperature};
+    if (g.solid[c])
+    {
+        out[0][c] = in[0][c], out[1][c] = in[1][c];
+        return;
+    }
     const int i = int(c % std::size_t(g.nx)), j = int((c / std::size_t(g.nx)) % std::size_t(g.ny)),
               k = int(c / (std::size_t(g.nx) * std::size_t(g.ny)));
     const LatticeShape shape = latticeOf(g, axis);
-    const std::size_t faces = nodes(shape);
     const auto faceIndex = [&](int x, int y, int z) { return std::size_t(x) + std::size_t(shape.sx) * (y + std::size_t(shape.sy) * z); };
     const int hi = i + (axis == 0), hj = j + (axis == 1), hk = k + (axis == 2);
     const std::size_t low = faceIndex(i, j, k), high = faceIndex(hi, hj, hk);
+    float lowFlux[2], highFlux[2];
+    faceFlux<axis>(g, velocity, in, i, j, k, low, lowFlux);
+    faceFlux<axis>(g, velocity, in, hi, hj, hk, high, highFlux);
     // The sweep's own divergence: the velocity through the faces where smoke passes.
-    const float divergence = (passes(g, axis, hi, hj, hk) ? velocity[high] : 0.0f) - (passes(g, axis, i, j, k) ? velocity[low] : 0.0f);
-    float* values[2] = {g.density, g.temperature};
+    const float divergence =
+        (passes<axis>(g, hi, hj, hk) ? velocity[high] : 0.0f) - (passes<axis>(g, i, j, k) ? velocity[low] : 0.0f);
 #pragma unroll
     for (int m = 0; m < 2; ++m)
-        values[m][c] -= ratio * ((flux[m * faces + high] - flux[m * faces + low]) - start[m * cells + c] * divergence);
+        out[m][c] = in[m][c] - ratio * ((highFlux[m] - lowFlux[m]) - start[m * cells + c] * divergence);
 }
 
 __global__ void clampKernel(GridView g)
@@ -208,15 +228,23 @@ void advectLattice(const GridView& g, int kind, float* field, const float* old, 
     correctionKernel<<<blocks, kBlock>>>(vel, shape, kind, field, old, forward, dtCells);
 }
 
-void transportAxis(const GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
-                   float* flux)
+void transportAxis(GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
+                   float*& density, float*& temperature, float*& spareDensity, float*& spareTemperature)
 {
-    const unsigned faceBlocks = blocksFor(nodes(latticeOf(g, axis))), cellBlocks = blocksFor(g.cells());
+    const unsigned blocks = blocksFor(g.cells());
     for (int sub = 0; sub < substeps; ++sub)
     {
-        fluxKernel<<<faceBlocks, kBlock>>>(g, axis, velocity, flux);
-        transportUpdateKernel<<<cellBlocks, kBlock>>>(g, axis, velocity, ratio, start, flux);
+        g.density = density, g.temperature = temperature;
+        switch (axis)
+        {
+        case 0: transportKernel<0><<<blocks, kBlock>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        case 1: transportKernel<1><<<blocks, kBlock>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        default: transportKernel<2><<<blocks, kBlock>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        }
+        std::swap(density, spareDensity);
+        std::swap(temperature, spareTemperature);
     }
+    g.density = density, g.temperature = temperature;
 }
 
 void clampScalars(const GridView& g)

@@ -64,7 +64,7 @@ struct CudaSmokeBackend::Device
     GridView g;
     Buffer<float> u, v, w, density, temperature, solidVelocity;
     Buffer<std::uint8_t> solid, staticSolid;
-    Buffer<float> u0, v0, w0, forward, start, flux, force, omega, magnitude;
+    Buffer<float> u0, v0, w0, forward, start, spareDensity, spareTemperature, force, omega, magnitude;
     Buffer<float> psi, b, r, z, p, q, sink, left;
     Buffer<double> scratch, particles, places;
     Buffer<int> changed, keep;
@@ -199,7 +199,8 @@ void CudaSmokeBackend::upload(const host::SmokeGrid& grid)
     d.hasVent = std::any_of(grid.solid.begin(), grid.solid.end(), [](std::uint8_t s) { return s == host::kVent; });
     const std::size_t largestLattice = std::max({grid.u.size(), grid.v.size(), grid.w.size()});
     ensure(d.u0, grid.u.size()), ensure(d.v0, grid.v.size()), ensure(d.w0, grid.w.size());
-    ensure(d.forward, largestLattice), ensure(d.start, 2 * cells), ensure(d.flux, 2 * largestLattice);
+    ensure(d.forward, largestLattice), ensure(d.start, 2 * cells);
+    ensure(d.spareDensity, cells), ensure(d.spareTemperature, cells);
     ensure(d.force, 3 * cells), ensure(d.omega, 3 * cells), ensure(d.magnitude, cells);
     for (Buffer<float>* work : {&d.psi, &d.b, &d.r, &d.z, &d.p, &d.q, &d.left})
         ensure(*work, cells);
@@ -254,13 +255,22 @@ void CudaSmokeBackend::advect(host::SmokeGrid& grid, double dt, const host::Smok
     if (settings.scalarScheme == host::AdvectionScheme::Conservative)
     {
         const std::size_t sizes[3] = {d.u0.count, d.v0.count, d.w0.count};
+        float *density = d.density.data, *temperature = d.temperature.data;
+        float *spareDensity = d.spareDensity.data, *spareTemperature = d.spareTemperature.data;
         for (int pass = 0; pass < 3; ++pass)
         {
             const int axis = reverseSweeps ? 2 - pass : pass;
             const double fastest = maxAbs(old[axis], sizes[axis], nullptr, 0, nullptr, 0, d.scratch.data);
-            const int substeps = std::max(1, int(std::ceil(fastest * dt / grid.h / 0.5)));
-            transportAxis(d.g, axis, old[axis], substeps, float(dt / substeps / grid.h), d.start.data, d.flux.data);
+            const int substeps = host::transportSubsteps(fastest, dt, grid.h);
+            transportAxis(d.g, axis, old[axis], substeps, float(dt / substeps / grid.h), d.start.data, density, temperature,
+                          spareDensity, spareTemperature);
         }
+        // The sub-steps alternate between each field's two buffers: keep the result's as the field's.
+        if (density != d.density.data)
+            std::swap(d.density, d.spareDensity);
+        if (temperature != d.temperature.data)
+            std::swap(d.temperature, d.spareTemperature);
+        d.bind();
     }
     else
     {
@@ -449,7 +459,7 @@ std::size_t CudaSmokeBackend::deviceBytes() const
     const Device& d = *m_device;
     std::size_t bytes = 0;
     for (const Buffer<float>* b : {&d.u, &d.v, &d.w, &d.density, &d.temperature, &d.solidVelocity, &d.u0, &d.v0, &d.w0,
-                                   &d.forward, &d.start, &d.flux, &d.force, &d.omega, &d.magnitude, &d.psi, &d.b, &d.r,
+                                   &d.forward, &d.start, &d.spareDensity, &d.spareTemperature, &d.force, &d.omega, &d.magnitude, &d.psi, &d.b, &d.r,
                                    &d.z, &d.p, &d.q, &d.sink, &d.left})
         bytes += b->bytes();
     bytes += d.solid.bytes() + d.staticSolid.bytes() + d.particles.bytes() + d.places.bytes();

@@ -13,8 +13,10 @@ __device__ void unpack(std::size_t c, int nx, int ny, int& i, int& j, int& k)
 }
 
 /// The face of `axis` at node (i, j, k) takes 0 on a wall of the domain, else the solid's normal velocity when a
-/// side is solid (two solids: their mean).
-__global__ void solidBoundaryKernel(GridView g, int axis)
+/// side is solid (two solids: their mean). (The axis is a template argument: indexing the kernel's parameters by
+/// a run-time axis would copy them to local memory in every thread.)
+template <int axis>
+__global__ void solidBoundaryKernel(GridView g)
 {
     const LatticeShape shape = latticeOf(g, axis);
     const std::size_t f = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
@@ -80,7 +82,8 @@ __device__ int sideOf(const GridView& g, std::size_t c)
     return g.solid[c] == kFluid ? 1 : g.solid[c] == kVent ? 2 : 0;
 }
 
-__global__ void correctKernel(GridView g, int axis, const float* psi)
+template <int axis>
+__global__ void correctKernel(GridView g, const float* psi)
 {
     const LatticeShape shape = latticeOf(g, axis);
     const std::size_t f = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
@@ -312,8 +315,9 @@ __global__ void directionKernel(std::size_t n, float beta, const float* z, float
 
 void applySolidBoundaries(const GridView& g)
 {
-    for (int axis = 0; axis < 3; ++axis)
-        solidBoundaryKernel<<<blocksFor(nodes(latticeOf(g, axis))), kBlock>>>(g, axis);
+    solidBoundaryKernel<0><<<blocksFor(nodes(latticeOf(g, 0))), kBlock>>>(g);
+    solidBoundaryKernel<1><<<blocksFor(nodes(latticeOf(g, 1))), kBlock>>>(g);
+    solidBoundaryKernel<2><<<blocksFor(nodes(latticeOf(g, 2))), kBlock>>>(g);
 }
 
 void projectionRightSide(const GridView& g, const std::uint8_t* fluid, const float* sink, float* b, float* psi)
@@ -323,8 +327,9 @@ void projectionRightSide(const GridView& g, const std::uint8_t* fluid, const flo
 
 void correctVelocity(const GridView& g, const float* psi)
 {
-    for (int axis = 0; axis < 3; ++axis)
-        correctKernel<<<blocksFor(nodes(latticeOf(g, axis))), kBlock>>>(g, axis, psi);
+    correctKernel<0><<<blocksFor(nodes(latticeOf(g, 0))), kBlock>>>(g, psi);
+    correctKernel<1><<<blocksFor(nodes(latticeOf(g, 1))), kBlock>>>(g, psi);
+    correctKernel<2><<<blocksFor(nodes(latticeOf(g, 2))), kBlock>>>(g, psi);
 }
 
 void divergenceLeft(const GridView& g, const float* sink, float* out)

@@ -17,9 +17,11 @@ void advectLattice(const GridView& g, int kind, float* field, const float* old, 
                    const float* w0, float dtCells, bool macCormack, float* forward);
 /// One axis's sweep of the conservative transport of density and temperature (Advection.cpp's transportAlong):
 /// `velocity` the axis's face velocities at the step's start, `substeps` sub-steps of `ratio` = dt / substeps / h,
-/// `start` the two fields at the step's start (density then temperature, cells() each), `flux` 2 x faces scratch.
-void transportAxis(const GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
-                   float* flux);
+/// `start` the two fields at the step's start (density then temperature, cells() each). Each sub-step writes the
+/// spare arrays from the current ones and swaps them: afterwards `density` and `temperature` (and g's) point at
+/// the result, the spares at the other buffers.
+void transportAxis(GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
+                   float*& density, float*& temperature, float*& spareDensity, float*& spareTemperature);
 /// Negative smoke and heat to zero; none in cells that are not fluid.
 void clampScalars(const GridView& g);
 

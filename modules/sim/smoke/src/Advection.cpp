@@ -153,7 +153,7 @@ void transportAlong(const std::vector<std::vector<float>*>& fields, const std::v
     float fastest = 0.0f;
     for (float value : velocity)
         fastest = std::max(fastest, std::abs(value));
-    const int substeps = std::max(1, int(std::ceil(fastest * dt / grid.h / 0.5)));
+    const int substeps = transportSubsteps(fastest, dt, grid.h);
     const float ratio = float(dt / substeps / grid.h);
     const int extent[3] = {n[0] + (axis == 0), n[1] + (axis == 1), n[2] + (axis == 2)};
     // 1 where smoke passes the face: neither side solid, and not a wall of the domain.
@@ -279,6 +279,11 @@ void transportConservative(std::vector<float>& density, std::vector<float>& temp
 }
 
 } // namespace
+
+int transportSubsteps(double fastest, double dt, double h)
+{
+    return std::max(1, int(std::ceil(fastest * dt / h / 0.5 - 1e-3)));
+}
 
 void advect(SmokeGrid& grid, double dt, AdvectionScheme velocityScheme, AdvectionScheme scalarScheme,
             bool reverseSweeps)

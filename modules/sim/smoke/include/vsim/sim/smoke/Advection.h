@@ -24,6 +24,12 @@ enum class AdvectionScheme
     Conservative ///< finite volume, limited (the smoke and the heat only; the velocity then moves by MacCormack)
 };
 
+/// The conservative transport's sub-steps along an axis whose fastest face moves at `fastest` (m/s) over dt (s)
+/// on cells of h (m): each at most half a cell. A Courant number within 1e-3 above a whole number of half cells
+/// counts as that number: the stable step puts the fastest flow at exactly a whole number of cells, where the
+/// rounding of the velocity would otherwise decide between two counts (and two backends part by a sub-step).
+int transportSubsteps(double fastest, double dt, double h);
+
 /// Advects the velocity by `velocityScheme` and the smoke density and the temperature by `scalarScheme`, over
 /// dt (s). Solid cells keep no smoke. The conservative transport sweeps the axes x, y, z, or z, y, x when
 /// `reverseSweeps` (alternate it from step to step).
