@@ -8,6 +8,7 @@ namespace {
 constexpr int kSmoothingSweeps = 2;     // red-black sweeps before and after the coarse correction
 constexpr int kCoarsestSweeps = 30;     // symmetric sweeps that stand for a solve on the coarsest level
 constexpr std::size_t kCoarsestCells = 512;
+constexpr std::size_t kParallelCells = 32768; // smaller levels run on one thread: a parallel region costs more there
 
 bool open(const DomainBoundaries& boundaries, int face)
 {
@@ -93,7 +94,7 @@ void PoissonMultigrid::prepare(const SmokeGrid& grid)
 void PoissonMultigrid::applyLevel(const Level& level, const std::vector<float>& x, std::vector<float>& y) const
 {
     const int nx = level.nx, ny = level.ny, nz = level.nz;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (level.fluid.size() >= kParallelCells)
     for (int k = 0; k < nz; ++k)
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i)
@@ -136,7 +137,7 @@ void PoissonMultigrid::smooth(const Level& level, std::vector<float>& x, const s
     for (int pass = 0; pass < 2; ++pass)
     {
         const int colour = (colourFirst + pass) % 2;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (level.fluid.size() >= kParallelCells)
         for (int k = 0; k < nz; ++k)
             for (int j = 0; j < ny; ++j)
                 for (int i = (j + k + colour) % 2; i < nx; i += 2)
@@ -179,7 +180,7 @@ void PoissonMultigrid::vcycle(std::size_t depth, const std::vector<float>& b, st
     applyLevel(level, x, level.r);
     const Level& coarse = m_levels[depth + 1];
     // Each coarse cell gathers half the residual of its (up to eight) fluid children.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (coarse.fluid.size() >= kParallelCells)
     for (int K = 0; K < coarse.nz; ++K)
         for (int J = 0; J < coarse.ny; ++J)
             for (int I = 0; I < coarse.nx; ++I)
@@ -196,7 +197,7 @@ void PoissonMultigrid::vcycle(std::size_t depth, const std::vector<float>& b, st
                 coarse.b[coarse.index(I, J, K)] = 0.5f * sum;
             }
     vcycle(depth + 1, coarse.b, coarse.x);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (level.fluid.size() >= kParallelCells)
     for (int k = 0; k < level.nz; ++k)
         for (int j = 0; j < level.ny; ++j)
             for (int i = 0; i < level.nx; ++i)

@@ -36,6 +36,7 @@ SmokeBackend& SmokeSimulation::backend()
         m_backendCurrent = true;
     }
     m_hostCurrent = m_backend->onHostGrid();
+    m_speed = -1.0; // the work asked for may change the velocity
     return *m_backend;
 }
 
@@ -79,7 +80,7 @@ void SmokeSimulation::seedParticles(const Eigen::Vector3d& centre, double radius
 
 double SmokeSimulation::stableStep(double maxDt) const
 {
-    double speed = m_hostCurrent ? m_grid.maxSpeed() : m_backend->maxSpeed(m_grid);
+    double speed = m_speed >= 0.0 ? m_speed : m_hostCurrent ? m_grid.maxSpeed() : m_backend->maxSpeed(m_grid);
     for (const SmokeSource& source : m_sources)
         speed = std::max(speed, source.velocity.norm());
     if (m_sphere)
@@ -159,7 +160,8 @@ SmokeStepReport SmokeSimulation::step(double dt)
     ++m_steps;
     report.time = m_time;
     report.particles = m_particles.size();
-    report.cfl = backend.maxSpeed(m_grid) * dt / m_grid.h;
+    m_speed = backend.maxSpeed(m_grid);
+    report.cfl = m_speed * dt / m_grid.h;
     if (!backend.finite(m_grid))
     {
         report.guard = "the flow is no longer finite at t = " + std::to_string(m_time) + " s";

@@ -134,6 +134,7 @@ private:
     std::unique_ptr<SmokeBackend> m_backend;
     mutable bool m_hostCurrent = true;
     bool m_backendCurrent = false;
+    double m_speed = -1.0; ///< the largest face speed after the last step (m/s); < 0: not known
     std::vector<std::uint8_t> m_staticSolid;
     std::vector<SmokeSource> m_sources;
     std::optional<SmokeSuction> m_suction;
