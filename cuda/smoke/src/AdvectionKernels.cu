@@ -112,94 +112,95 @@ __device__ int extentAlong(const GridView& g)
     return axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
 }
 
-/// Whether smoke passes face (i, j, k) of the axis's lattice: neither side solid, not a wall of the domain. (The
-/// axis is a template argument throughout: indexing the kernel's parameters by a run-time axis would copy them
-/// to local memory in every thread.)
-template <int axis>
-__device__ bool passes(const GridView& g, int i, int j, int k)
+/// A cell's neighbourhood along the sweep's axis, offsets -2 ... 2: inside the domain, its kind, its smoke and heat.
+struct AxisStencil
 {
-    const int at = axis == 0 ? i : axis == 1 ? j : k, n = extentAlong<axis>(g);
-    const bool lowInside = at > 0, highInside = at < n;
-    if ((lowInside && g.solid[g.cell(i - (axis == 0), j - (axis == 1), k - (axis == 2))] == kSolid) ||
-        (highInside && g.solid[g.cell(i, j, k)] == kSolid))
-        return false;
-    if (!lowInside)
-        return g.open[2 * axis];
-    if (!highInside)
-        return g.open[2 * axis + 1];
-    return true;
-}
+    bool inside[5];
+    std::uint8_t kind[5];
+    float value[2][5];
 
-/// The flux of smoke and heat through face (i, j, k) of the axis's lattice: the face velocity times the upwind
-/// cell's value with its minmod-limited slope (Advection.cpp's transportAlong), from the fields `in`.
-template <int axis>
-__device__ void faceFlux(const GridView& g, const float* velocity, const float* const in[2], int i, int j, int k,
-                         std::size_t f, float flux[2])
+    /// Whether cell o holds smoke (inside, fluid: a solid or a vent holds none).
+    __device__ bool present(int o) const { return inside[o + 2] && kind[o + 2] == kFluid; }
+};
+
+/// The flux of smoke and heat through the face between stencil cells q and q + 1 (q = -1: the cell's low face,
+/// 0: its high face): the face velocity times the upwind cell's value with its minmod-limited slope
+/// (Advection.cpp's transportAlong); 0 where smoke does not pass (a solid on either side, a wall of the domain).
+/// Returns whether it passes. q and the axis are template arguments: every index below is known when compiled
+/// (a run-time index into the stencil, or into the kernel's parameters, would go through local memory).
+template <int axis, int q>
+__device__ bool faceFlux(const GridView& g, const AxisStencil& s, float speed, float flux[2])
 {
-    if (!passes<axis>(g, i, j, k))
+    const bool lowInside = s.inside[q + 2], highInside = s.inside[q + 3];
+    bool through = !((lowInside && s.kind[q + 2] == kSolid) || (highInside && s.kind[q + 3] == kSolid));
+    if (through && !lowInside)
+        through = g.open[2 * axis];
+    else if (through && !highInside)
+        through = g.open[2 * axis + 1];
+    if (!through)
     {
         flux[0] = flux[1] = 0.0f;
-        return;
-    }
-    const int n = extentAlong<axis>(g);
-    const int at = axis == 0 ? i : axis == 1 ? j : k;
-    const long long stride = axis == 0 ? 1 : axis == 1 ? (long long)(g.nx) : (long long)(g.nx) * g.ny;
-    const long long here = (long long)(i) + (long long)(g.nx) * (j + (long long)(g.ny) * k);
-    const float speed = velocity[f];
-    const int upwind = speed >= 0.0f ? -1 : 0, direction = speed >= 0.0f ? 1 : -1;
-    const int offsets[3] = {upwind, upwind - direction, upwind + direction};
-    bool present[3];
-    std::size_t cells[3];
-#pragma unroll
-    for (int o = 0; o < 3; ++o)
-    {
-        const int index = at + offsets[o];
-        present[o] = index >= 0 && index < n;
-        cells[o] = present[o] ? std::size_t(here + offsets[o] * stride) : 0;
-        present[o] = present[o] && !g.solid[cells[o]];
+        return false;
     }
 #pragma unroll
     for (int m = 0; m < 2; ++m)
     {
-        const float centre = present[0] ? in[m][cells[0]] : 0.0f;
-        const float behind = present[1] ? in[m][cells[1]] : 0.0f;
-        const float ahead = present[2] ? in[m][cells[2]] : 0.0f;
-        flux[m] = speed * (centre + 0.5f * float(direction) * minmod(direction * (centre - behind), direction * (ahead - centre)));
+        const auto at = [&](int o) { return s.present(o) ? s.value[m][o + 2] : 0.0f; };
+        if (speed >= 0.0f) // upwind: cell q; behind it q - 1, ahead q + 1
+        {
+            const float centre = at(q), behind = at(q - 1), ahead = at(q + 1);
+            flux[m] = speed * (centre + 0.5f * minmod(centre - behind, ahead - centre));
+        }
+        else // upwind: cell q + 1; behind it q + 2, ahead q
+        {
+            const float centre = at(q + 1), behind = at(q + 2), ahead = at(q);
+            flux[m] = speed * (centre - 0.5f * minmod(-(centre - behind), -(ahead - centre)));
+        }
     }
+    return true;
 }
 
 /// One sub-step of the axis's sweep at each cell, from the fields `in` into `out`: the fluxes through its two
 /// faces (each face's computed by both its cells, alike), less the step's start value times the sweep's own
-/// divergence. Solid cells keep their values.
+/// divergence. Solid cells keep their values. 32-bit indices (the backend refuses grids of 2^31 cells or more).
 template <int axis>
 __global__ void transportKernel(GridView g, const float* velocity, float ratio, const float* start, const float* density,
                                 const float* temperature, float* outDensity, float* outTemperature)
 {
-    const std::size_t cells = g.cells(), c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
+    const unsigned nx = unsigned(g.nx), ny = unsigned(g.ny), cells = nx * ny * unsigned(g.nz);
+    const unsigned c = blockIdx.x * blockDim.x + threadIdx.x;
     if (c >= cells)
         return;
-    const float* const in[2] = {density, temperature};
-    float* const out[2] = {outDensity, outTemperature};
     if (g.solid[c])
     {
-        out[0][c] = in[0][c], out[1][c] = in[1][c];
+        outDensity[c] = density[c], outTemperature[c] = temperature[c];
         return;
     }
-    const int i = int(c % std::size_t(g.nx)), j = int((c / std::size_t(g.nx)) % std::size_t(g.ny)),
-              k = int(c / (std::size_t(g.nx) * std::size_t(g.ny)));
-    const LatticeShape shape = latticeOf(g, axis);
-    const auto faceIndex = [&](int x, int y, int z) { return std::size_t(x) + std::size_t(shape.sx) * (y + std::size_t(shape.sy) * z); };
-    const int hi = i + (axis == 0), hj = j + (axis == 1), hk = k + (axis == 2);
-    const std::size_t low = faceIndex(i, j, k), high = faceIndex(hi, hj, hk);
-    float lowFlux[2], highFlux[2];
-    faceFlux<axis>(g, velocity, in, i, j, k, low, lowFlux);
-    faceFlux<axis>(g, velocity, in, hi, hj, hk, high, highFlux);
-    // The sweep's own divergence: the velocity through the faces where smoke passes.
-    const float divergence =
-        (passes<axis>(g, hi, hj, hk) ? velocity[high] : 0.0f) - (passes<axis>(g, i, j, k) ? velocity[low] : 0.0f);
+    const unsigned i = c % nx, j = (c / nx) % ny, k = c / (nx * ny);
+    const int at = int(axis == 0 ? i : axis == 1 ? j : k), n = extentAlong<axis>(g);
+    const int stride = axis == 0 ? 1 : axis == 1 ? int(nx) : int(nx * ny);
+    AxisStencil s;
 #pragma unroll
-    for (int m = 0; m < 2; ++m)
-        out[m][c] = in[m][c] - ratio * ((highFlux[m] - lowFlux[m]) - start[m * cells + c] * divergence);
+    for (int o = -2; o <= 2; ++o)
+    {
+        const bool inside = at + o >= 0 && at + o < n;
+        const unsigned cell = unsigned(int(c) + o * stride);
+        s.inside[o + 2] = inside;
+        s.kind[o + 2] = inside ? g.solid[cell] : kSolid;
+        s.value[0][o + 2] = inside ? density[cell] : 0.0f;
+        s.value[1][o + 2] = inside ? temperature[cell] : 0.0f;
+    }
+    // The faces' lattice: x fastest, (nx + 1, ny, nz) for u, (nx, ny + 1, nz) for v, (nx, ny, nz + 1) for w.
+    const unsigned sx = nx + (axis == 0), sy = ny + (axis == 1);
+    const unsigned low = i + sx * (j + sy * k), high = low + (axis == 0 ? 1u : axis == 1 ? sx : sx * sy);
+    const float lowSpeed = velocity[low], highSpeed = velocity[high];
+    float lowFlux[2], highFlux[2];
+    const bool lowPasses = faceFlux<axis, -1>(g, s, lowSpeed, lowFlux);
+    const bool highPasses = faceFlux<axis, 0>(g, s, highSpeed, highFlux);
+    // The sweep's own divergence: the velocity through the faces where smoke passes.
+    const float divergence = (highPasses ? highSpeed : 0.0f) - (lowPasses ? lowSpeed : 0.0f);
+    outDensity[c] = s.value[0][2] - ratio * ((highFlux[0] - lowFlux[0]) - start[c] * divergence);
+    outTemperature[c] = s.value[1][2] - ratio * ((highFlux[1] - lowFlux[1]) - start[cells + c] * divergence);
 }
 
 __global__ void clampKernel(GridView g)

@@ -70,6 +70,8 @@ struct CudaSmokeBackend::Device
     Buffer<int> changed, keep;
     std::vector<Level> levels;
     bool singular = false, prepared = false, hasVent = false, haveSink = false;
+    bool anySolid = true;   ///< a cell is not fluid (a solid, the ball, a vent): the general boundary pass
+    bool staticAny = false; ///< the static anatomy has a cell that is not fluid
 
     void bind()
     {
@@ -167,6 +169,9 @@ CudaSmokeBackend::CudaSmokeBackend(const host::SmokeGrid& grid) : m_device(std::
 {
     if (devices().empty())
         throw Error("the smoke's CUDA backend needs a CUDA device, and there is none");
+    // The kernels index faces in 32 bits.
+    if (double(grid.nx + 1) * double(grid.ny + 1) * double(grid.nz + 1) >= 2147483648.0)
+        throw Error("the smoke's CUDA backend takes grids of fewer than 2^31 cells");
     Device& d = *m_device;
     d.g.nx = grid.nx, d.g.ny = grid.ny, d.g.nz = grid.nz, d.g.h = grid.h;
     d.g.ox = grid.origin.x(), d.g.oy = grid.origin.y(), d.g.oz = grid.origin.z();
@@ -197,6 +202,7 @@ void CudaSmokeBackend::upload(const host::SmokeGrid& grid)
     copyIn(d.solid, grid.solid.data(), cells);
     copyIn(d.solidVelocity, grid.solidVelocity.empty() ? nullptr : grid.solidVelocity.front().data(), 3 * cells);
     d.hasVent = std::any_of(grid.solid.begin(), grid.solid.end(), [](std::uint8_t s) { return s == host::kVent; });
+    d.anySolid = std::any_of(grid.solid.begin(), grid.solid.end(), [](std::uint8_t s) { return s != host::kFluid; });
     const std::size_t largestLattice = std::max({grid.u.size(), grid.v.size(), grid.w.size()});
     ensure(d.u0, grid.u.size()), ensure(d.v0, grid.v.size()), ensure(d.w0, grid.w.size());
     ensure(d.forward, largestLattice), ensure(d.start, 2 * cells);
@@ -311,7 +317,11 @@ void CudaSmokeBackend::placeSolids(host::SmokeGrid& grid, const std::vector<std:
 {
     Device& d = *m_device;
     if (d.staticSolid.count != staticSolid.size())
+    {
         d.staticSolid.upload(staticSolid);
+        d.staticAny = std::any_of(staticSolid.begin(), staticSolid.end(), [](std::uint8_t s) { return s != host::kFluid; });
+    }
+    d.anySolid = sphere || d.staticAny;
     VSIM_CUDA_CHECK(cudaMemsetAsync(d.changed.data, 0, sizeof(int)));
     smoke::placeSolids(d.g, d.staticSolid.data, sphere ? sphere->centre.x() : 0.0, sphere ? sphere->centre.y() : 0.0,
                        sphere ? sphere->centre.z() : 0.0, sphere ? sphere->radius : 0.0,
@@ -337,7 +347,7 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
         d.prepareMultigrid();
     const std::size_t n = grid.cells();
     const float* sink = withSink && d.haveSink ? d.sink.data : nullptr;
-    applySolidBoundaries(d.g);
+    applySolidBoundaries(d.g, d.anySolid);
     projectionRightSide(d.g, d.levels[0].fluid.data, sink, d.b.data, d.psi.data);
     d.removeNullSpace(d.b.data);
     host::ProjectionReport report;

@@ -45,6 +45,28 @@ __global__ void solidBoundaryKernel(GridView g)
     face[f] = sum / float(int(a) + int(b));
 }
 
+/// Without solids only the domain's walls: their faces to 0, one thread per face of the two planes across `axis`.
+template <int axis>
+__global__ void wallFacesKernel(GridView g)
+{
+    const LatticeShape shape = latticeOf(g, axis);
+    const int a = axis == 0 ? shape.sy : shape.sx, b = axis == 2 ? shape.sy : shape.sz; // the plane's two extents
+    const int t = int(blockIdx.x * blockDim.x + threadIdx.x);
+    if (t >= a * b)
+        return;
+    const int p = t % a, r = t / a;
+    const int n = axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
+    float* face = axis == 0 ? g.u : axis == 1 ? g.v : g.w;
+    const auto index = [&](int along) {
+        const int i = axis == 0 ? along : p, j = axis == 0 ? p : axis == 1 ? along : r, k = axis == 2 ? along : r;
+        return std::size_t(i) + std::size_t(shape.sx) * (j + std::size_t(shape.sy) * k);
+    };
+    if (!g.open[2 * axis])
+        face[index(0)] = 0.0f;
+    if (!g.open[2 * axis + 1])
+        face[index(n)] = 0.0f;
+}
+
 __device__ float divergenceAt(const GridView& g, std::size_t c, int i, int j, int k, float inverse)
 {
     const std::size_t ux = std::size_t(i) + std::size_t(g.nx + 1) * (j + std::size_t(g.ny) * k);
@@ -313,8 +335,15 @@ __global__ void directionKernel(std::size_t n, float beta, const float* z, float
 
 } // namespace
 
-void applySolidBoundaries(const GridView& g)
+void applySolidBoundaries(const GridView& g, bool anySolid)
 {
+    if (!anySolid)
+    {
+        wallFacesKernel<0><<<blocksFor(std::size_t(g.ny) * g.nz), kBlock>>>(g);
+        wallFacesKernel<1><<<blocksFor(std::size_t(g.nx) * g.nz), kBlock>>>(g);
+        wallFacesKernel<2><<<blocksFor(std::size_t(g.nx) * g.ny), kBlock>>>(g);
+        return;
+    }
     solidBoundaryKernel<0><<<blocksFor(nodes(latticeOf(g, 0))), kBlock>>>(g);
     solidBoundaryKernel<1><<<blocksFor(nodes(latticeOf(g, 1))), kBlock>>>(g);
     solidBoundaryKernel<2><<<blocksFor(nodes(latticeOf(g, 2))), kBlock>>>(g);

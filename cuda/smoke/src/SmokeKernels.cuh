@@ -49,8 +49,9 @@ void advanceParticles(const GridView& g, double* particles, int count, double dt
 void seedParticles(const GridView& g, const double* places, int count, double* particles, int* keep);
 
 // ---- the projection (ProjectionKernels.cu)
-/// Faces of solids and of the domain's walls take the solid's normal velocity (applySolidBoundaries).
-void applySolidBoundaries(const GridView& g);
+/// Faces of solids and of the domain's walls take the solid's normal velocity (applySolidBoundaries); without
+/// any solid or vent cell (`anySolid` false) only the walls' faces are visited, as the CPU's.
+void applySolidBoundaries(const GridView& g, bool anySolid);
 /// b = -h^2 (div u - sink) on the fluid cells (0 elsewhere); psi = 0 where a cell is not fluid.
 void projectionRightSide(const GridView& g, const std::uint8_t* fluid, const float* sink, float* b, float* psi);
 /// u -= grad psi / h on the faces between fluid cells and between fluid and the ambient (open faces, vents).
