@@ -59,8 +59,8 @@ __device__ float3 nodeVelocity(const Velocity& vel, int kind, int i, int j, int 
 /// Where node n came from over the step (dtCells = dt / h; negative: the forward trace), in cells.
 __device__ float3 traceBack(const Velocity& vel, const LatticeShape& shape, int kind, std::size_t n, float dtCells)
 {
-    const int i = int(n % std::size_t(shape.sx)), j = int((n / std::size_t(shape.sx)) % std::size_t(shape.sy)),
-              k = int(n / (std::size_t(shape.sx) * std::size_t(shape.sy)));
+    const unsigned u = unsigned(n), sx = unsigned(shape.sx), sy = unsigned(shape.sy); // 32 bits: see transportKernel
+    const int i = int(u % sx), j = int((u / sx) % sy), k = int(u / (sx * sy));
     const float px = float(i) + shape.ox, py = float(j) + shape.oy, pz = float(k) + shape.oz;
     const float3 at = nodeVelocity(vel, kind, i, j, k);
     const float half = 0.5f * dtCells;

@@ -370,13 +370,12 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
         stalled = false;
         while (residual > tolerance && report.iterations + iteration < maxIterations && rz > 0.0)
         {
-            applyLevel(d.levels[0].view(), d.p.data, d.q.data);
-            const double pq = dot(d.p.data, d.q.data, n, d.scratch.data);
+            const double pq = applyLevelDot(d.levels[0].view(), d.p.data, d.q.data, d.scratch.data);
             if (!(pq > 0.0))
                 break;
-            updateSolution(n, float(rz / pq), d.p.data, d.q.data, d.psi.data, d.r.data);
+            const double rr = updateSolution(n, float(rz / pq), d.p.data, d.q.data, d.psi.data, d.r.data, d.scratch.data);
             ++iteration;
-            residual = std::sqrt(dot(d.r.data, d.r.data, n, d.scratch.data)) / bNorm;
+            residual = std::sqrt(rr) / bNorm;
             if (residual <= tolerance)
                 break;
             if (residual < 0.5 * best)

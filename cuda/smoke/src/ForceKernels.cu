@@ -7,10 +7,11 @@
 namespace vsim::cuda::smoke {
 namespace {
 
+/// Cell c's (i, j, k), in 32 bits (the backend refuses grids of 2^31 cells or more).
 __device__ void cellOf(const GridView& g, std::size_t c, int& i, int& j, int& k)
 {
-    i = int(c % std::size_t(g.nx)), j = int((c / std::size_t(g.nx)) % std::size_t(g.ny)),
-    k = int(c / (std::size_t(g.nx) * std::size_t(g.ny)));
+    const unsigned u = unsigned(c), nx = unsigned(g.nx), ny = unsigned(g.ny);
+    i = int(u % nx), j = int((u / nx) % ny), k = int(u / (nx * ny));
 }
 
 /// |centre of cell (i, j, k) - (cx, cy, cz)| in metres, in double precision as on the CPU.
@@ -60,8 +61,8 @@ __global__ void buoyancyKernel(GridView g, int axis, double scale, double alpha,
     const std::size_t f = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
     if (f >= nodes(shape))
         return;
-    const int i = int(f % std::size_t(shape.sx)), j = int((f / std::size_t(shape.sx)) % std::size_t(shape.sy)),
-              k = int(f / (std::size_t(shape.sx) * std::size_t(shape.sy)));
+    const unsigned u = unsigned(f), sx = unsigned(shape.sx), sy = unsigned(shape.sy);
+    const int i = int(u % sx), j = int((u / sx) % sy), k = int(u / (sx * sy));
     const int at = axis == 0 ? i : axis == 1 ? j : k, n = axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
     if (at == 0 || at == n)
         return;

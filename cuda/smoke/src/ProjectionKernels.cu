@@ -1,5 +1,6 @@
 // PressureProjection.cpp and PoissonMultigrid.cpp's operator, smoother and transfers on the device.
 
+#include "BlockReduce.cuh"
 #include "SmokeKernels.cuh"
 
 #include "vsim/cuda_common/CudaCheck.h"
@@ -7,9 +8,12 @@
 namespace vsim::cuda::smoke {
 namespace {
 
+/// Cell or face c's (i, j, k) on an nx x ny x ... lattice, in 32 bits (64-bit division costs many instructions;
+/// the backend refuses grids of 2^31 cells or more).
 __device__ void unpack(std::size_t c, int nx, int ny, int& i, int& j, int& k)
 {
-    i = int(c % std::size_t(nx)), j = int((c / std::size_t(nx)) % std::size_t(ny)), k = int(c / (std::size_t(nx) * std::size_t(ny)));
+    const unsigned u = unsigned(c), x = unsigned(nx), y = unsigned(ny);
+    i = int(u % x), j = int((u / x) % y), k = int(u / (x * y));
 }
 
 /// The face of `axis` at node (i, j, k) takes 0 on a wall of the domain, else the solid's normal velocity when a
@@ -189,16 +193,11 @@ __global__ void diagonalKernel(int nx, int ny, int nz, const std::uint8_t* fluid
     diagonal[c] = std::uint8_t(count);
 }
 
-__global__ void applyKernel(LevelView level, const float* x, float* y)
+/// (A x)_c, 0 outside the fluid.
+__device__ float applyAt(const LevelView& level, std::size_t c, const float* x)
 {
-    const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (c >= level.cells())
-        return;
     if (!level.fluid[c])
-    {
-        y[c] = 0.0f;
-        return;
-    }
+        return 0.0f;
     int i, j, k;
     unpack(c, level.nx, level.ny, i, j, k);
     const std::size_t row = std::size_t(level.nx), slab = row * level.ny;
@@ -215,7 +214,30 @@ __global__ void applyKernel(LevelView level, const float* x, float* y)
         sum -= x[c - slab];
     if (k + 1 < level.nz)
         sum -= x[c + slab];
-    y[c] = sum;
+    return sum;
+}
+
+__global__ void applyKernel(LevelView level, const float* x, float* y)
+{
+    const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
+    if (c < level.cells())
+        y[c] = applyAt(level, c, x);
+}
+
+/// y = A x and the sum of x . y (every thread reaches the block's sum).
+__global__ void applyDotKernel(LevelView level, const float* x, float* y, double* out)
+{
+    const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
+    double product = 0.0;
+    if (c < level.cells())
+    {
+        const float value = applyAt(level, c, x);
+        y[c] = value;
+        product = double(x[c]) * double(value);
+    }
+    product = blockSum(product);
+    if (threadIdx.x == 0)
+        atomicAdd(out, product);
 }
 
 /// Gauss-Seidel at cell c (its neighbours of the other colour fixed).
@@ -243,20 +265,34 @@ __device__ void relax(const LevelView& level, std::size_t c, int i, int j, int k
 /// The cells of one colour: i = 2 t + (j + k + colour) % 2.
 __global__ void smoothKernel(LevelView level, float* x, const float* b, int colour)
 {
-    const int half = (level.nx + 1) / 2;
-    const std::size_t t = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (t >= std::size_t(half) * level.ny * level.nz)
+    const unsigned half = unsigned(level.nx + 1) / 2, ny = unsigned(level.ny);
+    const unsigned t = blockIdx.x * blockDim.x + threadIdx.x;
+    if (t >= half * ny * unsigned(level.nz))
         return;
-    const int j = int((t / std::size_t(half)) % std::size_t(level.ny)), k = int(t / (std::size_t(half) * level.ny));
-    const int i = 2 * int(t % std::size_t(half)) + (j + k + colour) % 2;
+    const int j = int((t / half) % ny), k = int(t / (half * ny));
+    const int i = 2 * int(t % half) + (j + k + colour) % 2;
     if (i >= level.nx)
         return;
     relax(level, std::size_t(i) + std::size_t(level.nx) * (j + std::size_t(level.ny) * k), i, j, k, x, b);
 }
 
-__global__ void coarsestKernel(LevelView level, float* x, const float* b, int sweeps)
+/// The coarsest level's sweeps in one block. With `inShared` the level (x, b, its flags: 10 bytes a cell) is
+/// copied to shared memory first and x back at the end: each pass then waits on shared memory, not on global.
+__global__ void coarsestKernel(LevelView global, float* globalX, const float* globalB, int sweeps, bool inShared)
 {
-    const std::size_t cells = level.cells();
+    extern __shared__ float shared[];
+    const std::size_t cells = global.cells();
+    LevelView level = global;
+    float* x = globalX;
+    const float* b = globalB;
+    if (inShared)
+    {
+        float* sharedB = shared + cells;
+        std::uint8_t* flags = reinterpret_cast<std::uint8_t*>(shared + 2 * cells);
+        for (std::size_t c = threadIdx.x; c < cells; c += blockDim.x)
+            sharedB[c] = globalB[c], flags[c] = global.fluid[c], flags[cells + c] = global.diagonal[c];
+        x = shared, b = sharedB, level.fluid = flags, level.diagonal = flags + cells;
+    }
     for (std::size_t c = threadIdx.x; c < cells; c += blockDim.x)
         x[c] = 0.0f;
     __syncthreads();
@@ -274,6 +310,9 @@ __global__ void coarsestKernel(LevelView level, float* x, const float* b, int sw
                 }
                 __syncthreads();
             }
+    if (inShared)
+        for (std::size_t c = threadIdx.x; c < cells; c += blockDim.x)
+            globalX[c] = x[c];
 }
 
 __global__ void restrictKernel(LevelView fine, const float* b, const float* r, LevelView coarse, float* coarseB)
@@ -312,11 +351,21 @@ __global__ void subtractKernel(LevelView level, float* x, float mean)
         x[c] -= mean;
 }
 
-__global__ void updateSolutionKernel(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r)
+__global__ void updateSolutionKernel(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r,
+                                     double* out)
 {
     const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
+    double squared = 0.0;
     if (c < n)
-        psi[c] += alpha * p[c], r[c] -= alpha * q[c];
+    {
+        psi[c] += alpha * p[c];
+        const float next = r[c] - alpha * q[c];
+        r[c] = next;
+        squared = double(next) * double(next);
+    }
+    squared = blockSum(squared);
+    if (threadIdx.x == 0)
+        atomicAdd(out, squared);
 }
 
 __global__ void differenceKernel(std::size_t n, const float* b, const float* q, float* r)
@@ -400,7 +449,10 @@ void smoothLevel(const LevelView& level, float* x, const float* b, int colourFir
 
 void solveCoarsest(const LevelView& level, float* x, const float* b, int sweeps)
 {
-    coarsestKernel<<<1, 1024>>>(level, x, b, sweeps);
+    constexpr std::size_t kSharedBytes = 40 * 1024; // within the 48 KiB a block has without opting in
+    const std::size_t bytes = level.cells() * (2 * sizeof(float) + 2);
+    const bool inShared = bytes <= kSharedBytes;
+    coarsestKernel<<<1, 1024, inShared ? bytes : 0>>>(level, x, b, sweeps, inShared);
 }
 
 void restrictResidual(const LevelView& fine, const float* b, const float* r, const LevelView& coarse, float* coarseB)
@@ -418,9 +470,18 @@ void subtractOnFluid(const LevelView& level, float* x, float mean)
     subtractKernel<<<blocksFor(level.cells()), kBlock>>>(level, x, mean);
 }
 
-void updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r)
+double updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r, double* scratch)
 {
-    updateSolutionKernel<<<blocksFor(n), kBlock>>>(n, alpha, p, q, psi, r);
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, sizeof(double)));
+    updateSolutionKernel<<<blocksFor(n), kBlock>>>(n, alpha, p, q, psi, r, scratch);
+    return fetchScalar(scratch);
+}
+
+double applyLevelDot(const LevelView& level, const float* x, float* y, double* scratch)
+{
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, sizeof(double)));
+    applyDotKernel<<<blocksFor(level.cells()), kBlock>>>(level, x, y, scratch);
+    return fetchScalar(scratch);
 }
 
 void difference(std::size_t n, const float* b, const float* q, float* r)

@@ -1,3 +1,4 @@
+#include "BlockReduce.cuh"
 #include "SmokeKernels.cuh"
 
 #include "vsim/cuda_common/CudaCheck.h"
@@ -6,43 +7,6 @@ namespace vsim::cuda::smoke {
 namespace {
 
 constexpr int kReduceBlocks = 1024;
-
-/// The block's sum of `value` (double), by warp shuffles and shared memory; valid in thread 0.
-__device__ double blockSum(double value)
-{
-    __shared__ double warps[kBlock / 32];
-    for (int offset = 16; offset > 0; offset /= 2)
-        value += __shfl_down_sync(0xffffffffu, value, offset);
-    if (threadIdx.x % 32 == 0)
-        warps[threadIdx.x / 32] = value;
-    __syncthreads();
-    value = threadIdx.x < kBlock / 32 ? warps[threadIdx.x] : 0.0;
-    if (threadIdx.x < 32)
-        for (int offset = 16; offset > 0; offset /= 2)
-            value += __shfl_down_sync(0xffffffffu, value, offset);
-    return value;
-}
-
-__device__ double blockMax(double value)
-{
-    __shared__ double warps[kBlock / 32];
-    for (int offset = 16; offset > 0; offset /= 2)
-        value = fmax(value, __shfl_down_sync(0xffffffffu, value, offset));
-    if (threadIdx.x % 32 == 0)
-        warps[threadIdx.x / 32] = value;
-    __syncthreads();
-    value = threadIdx.x < kBlock / 32 ? warps[threadIdx.x] : 0.0;
-    if (threadIdx.x < 32)
-        for (int offset = 16; offset > 0; offset /= 2)
-            value = fmax(value, __shfl_down_sync(0xffffffffu, value, offset));
-    return value;
-}
-
-/// The largest of non-negative doubles, by their bits (ordered as unsigned integers).
-__device__ void atomicMaxNonNegative(double* target, double value)
-{
-    atomicMax(reinterpret_cast<unsigned long long*>(target), static_cast<unsigned long long>(__double_as_longlong(value)));
-}
 
 __global__ void dotKernel(const float* a, const float* b, std::size_t n, double* out)
 {
@@ -103,14 +67,19 @@ unsigned reduceBlocks(std::size_t n)
     return std::max(1u, std::min(unsigned(kReduceBlocks), blocksFor(n)));
 }
 
-double fetch(const double* scratch, int index = 0)
+double fetch(const double* scratch)
 {
-    double values[2];
-    VSIM_CUDA_CHECK(cudaMemcpy(values, scratch, 2 * sizeof(double), cudaMemcpyDeviceToHost));
-    return values[index];
+    return fetchScalar(scratch);
 }
 
 } // namespace
+
+double fetchScalar(const double* scratch)
+{
+    double value = 0.0;
+    VSIM_CUDA_CHECK(cudaMemcpy(&value, scratch, sizeof(double), cudaMemcpyDeviceToHost));
+    return value;
+}
 
 double dot(const float* a, const float* b, std::size_t n, double* scratch)
 {

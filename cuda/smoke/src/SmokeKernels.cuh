@@ -86,14 +86,18 @@ void restrictResidual(const LevelView& fine, const float* b, const float* r, con
 void prolongCorrection(const LevelView& fine, float* x, const LevelView& coarse, const float* coarseX);
 /// x -= mean on the fluid cells.
 void subtractOnFluid(const LevelView& level, float* x, float mean);
-/// psi += alpha p; r -= alpha q.
-void updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r);
+/// psi += alpha p; r -= alpha q; returns the new r's squared norm (`scratch`: 2 doubles on the device).
+double updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r, double* scratch);
+/// y = A x on the level; returns x . y (`scratch`: 2 doubles on the device).
+double applyLevelDot(const LevelView& level, const float* x, float* y, double* scratch);
 /// r = b - q.
 void difference(std::size_t n, const float* b, const float* q, float* r);
 /// p = z + beta p.
 void updateDirection(std::size_t n, float beta, const float* z, float* p);
 
 // ---- reductions (ReductionKernels.cu): each returns its value to the host (one small copy)
+/// The double at `scratch` on the device, copied to the host.
+double fetchScalar(const double* scratch);
 double dot(const float* a, const float* b, std::size_t n, double* scratch);
 /// Sum and count of x over the fluid cells.
 void sumOnFluid(const float* x, const std::uint8_t* fluid, std::size_t n, double* scratch, double& sum, double& count);
