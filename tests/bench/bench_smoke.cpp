@@ -13,8 +13,7 @@
 // least (SmokeTraffic below: each kernel reading and writing its arrays once) over the median step time, against
 // the device's copy bandwidth measured in the same run: how far the step is from the memory-bandwidth bound.
 
-#include "vsim/sim/smoke/SmokeForces.h"
-#include "vsim/sim/smoke/SmokeSimulation.h"
+#include "SmokePlume.h"
 
 #ifdef VSIM_BENCH_SMOKE_CUDA
 #include "vsim/cuda_common/DeviceInfo.h"
@@ -101,30 +100,14 @@ int main(int argc, char** argv)
     const int steps = argc > 2 ? std::stoi(argv[2]) : 20;
     const int repetitions = argc > 3 ? std::stoi(argv[3]) : 3;
     const int warmup = argc > 4 ? std::stoi(argv[4]) : 40;
-    DomainBoundaries boundaries{};
-    boundaries[5] = DomainBoundary::Open;
-    SmokeSettings settings;
-    settings.buoyancyAlpha = kGravity / kAirDensity;
-    settings.buoyancyBeta = kGravity / kAmbientK;
-    settings.confinement = 0.3;
-    settings.particleStrength = 0.3;
-    settings.particleRadius = 2.0 / n;
-    settings.coolingPerS = 0.5;
-    SmokeGrid grid = SmokeGrid::make(n, n, n, 1.0 / n, boundaries);
 #ifdef VSIM_BENCH_SMOKE_CUDA
-    std::unique_ptr<SmokeBackend> backend = vsim::cuda::cudaSmokeBackendFactory()(grid);
+    std::unique_ptr<SmokeBackend> backend = vsim::cuda::cudaSmokeBackendFactory()(vsim::test::plumeGrid(n));
 #else
     std::unique_ptr<SmokeBackend> backend;
 #endif
-    SmokeSimulation simulation(std::move(grid), settings, std::move(backend));
-    SmokeSource source;
-    source.centre = {0.5, 0.5, 0.1};
-    source.radius = 0.06;
-    source.densityRate = 1e-3;
-    source.temperatureK = 80.0;
-    source.velocity = {0.0, 0.0, 0.5};
-    source.particlesPerSecond = 600.0;
-    simulation.addSource(source);
+    const std::unique_ptr<SmokeSimulation> owned = vsim::test::plumeSimulation(n, std::move(backend));
+    SmokeSimulation& simulation = *owned;
+    const SmokeSettings settings = vsim::test::plumeSettings(n);
     const double frame = 1.0 / 30.0;
     for (int s = 0; s < warmup; ++s)
         if (!simulation.step(simulation.stableStep(frame)).guard.empty())

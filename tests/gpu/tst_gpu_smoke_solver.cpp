@@ -15,6 +15,7 @@
 // liver box with its suction through 22 s at 32 cells, the run's figures against the CPU's. Skips without a device.
 
 #include "vsim/cuda_common/DeviceInfo.h"
+#include "SmokePlume.h"
 #include "vsim/cuda_smoke/CudaSmokeBackend.h"
 #include "vsim/sim/smoke/SmokeForces.h"
 #include "vsim/sim/smoke/SmokeScenes.h"
@@ -120,36 +121,12 @@ void verifyRoundingLevel(const Differences& d, double massBound = 1e-6)
     QVERIFY(d.worstResidual <= 1e-4);
 }
 
-SmokeSettings plumeSettings(int n)
-{
-    SmokeSettings settings;
-    settings.buoyancyAlpha = kGravity / kAirDensity;
-    settings.buoyancyBeta = kGravity / kAmbientK;
-    settings.confinement = 0.3;
-    settings.particleStrength = 0.3;
-    settings.particleRadius = 2.0 / n;
-    settings.coolingPerS = 0.5;
-    return settings;
-}
+using test::plumeSettings;
 
-/// The benchmark's plume (tests/bench/bench_smoke.cpp): a 1 m box of n^3 cells, open at the top.
+/// The benchmark's plume (tests/support/SmokePlume.h).
 Build plume(int n, double rateFactor = 1.0)
 {
-    return [n, rateFactor](std::unique_ptr<SmokeBackend> backend) {
-        DomainBoundaries boundaries{};
-        boundaries[5] = DomainBoundary::Open;
-        auto simulation = std::make_unique<SmokeSimulation>(SmokeGrid::make(n, n, n, 1.0 / n, boundaries),
-                                                            plumeSettings(n), std::move(backend));
-        SmokeSource source;
-        source.centre = {0.5, 0.5, 0.1};
-        source.radius = 0.06;
-        source.densityRate = 1e-3 * rateFactor;
-        source.temperatureK = 80.0;
-        source.velocity = {0.0, 0.0, 0.5};
-        source.particlesPerSecond = 600.0;
-        simulation->addSource(source);
-        return simulation;
-    };
+    return [n, rateFactor](std::unique_ptr<SmokeBackend> backend) { return test::plumeSimulation(n, std::move(backend), rateFactor); };
 }
 
 /// A scene's simulation as SmokeSolver builds it, with fixed rates.

@@ -16,19 +16,36 @@ __device__ void unpack(std::size_t c, int nx, int ny, int& i, int& j, int& k)
     i = int(u % x), j = int((u / x) % y), k = int(u / (x * y));
 }
 
+/// Face f of the axis's lattice: (i, j, k), its place along the axis and the grid's extent there.
+struct FaceSite
+{
+    int i, j, k, at, n;
+};
+
+/// False past the lattice's end.
+template <int axis>
+__device__ bool faceAt(const GridView& g, std::size_t f, FaceSite& site)
+{
+    const LatticeShape shape = latticeOf(g, axis);
+    if (f >= nodes(shape))
+        return false;
+    unpack(f, shape.sx, shape.sy, site.i, site.j, site.k);
+    site.at = axis == 0 ? site.i : axis == 1 ? site.j : site.k;
+    site.n = axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
+    return true;
+}
+
 /// The face of `axis` at node (i, j, k) takes 0 on a wall of the domain, else the solid's normal velocity when a
 /// side is solid (two solids: their mean). (The axis is a template argument: indexing the kernel's parameters by
 /// a run-time axis would copy them to local memory in every thread.)
 template <int axis>
 __global__ void solidBoundaryKernel(GridView g)
 {
-    const LatticeShape shape = latticeOf(g, axis);
     const std::size_t f = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (f >= nodes(shape))
+    FaceSite site;
+    if (!faceAt<axis>(g, f, site))
         return;
-    int i, j, k;
-    unpack(f, shape.sx, shape.sy, i, j, k);
-    const int at = axis == 0 ? i : axis == 1 ? j : k, n = axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
+    const int i = site.i, j = site.j, k = site.k, at = site.at, n = site.n;
     float* face = axis == 0 ? g.u : axis == 1 ? g.v : g.w;
     if ((at == 0 && !g.open[2 * axis]) || (at == n && !g.open[2 * axis + 1]))
     {
@@ -111,13 +128,11 @@ __device__ int sideOf(const GridView& g, std::size_t c)
 template <int axis>
 __global__ void correctKernel(GridView g, const float* psi)
 {
-    const LatticeShape shape = latticeOf(g, axis);
     const std::size_t f = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (f >= nodes(shape))
+    FaceSite site;
+    if (!faceAt<axis>(g, f, site))
         return;
-    int i, j, k;
-    unpack(f, shape.sx, shape.sy, i, j, k);
-    const int at = axis == 0 ? i : axis == 1 ? j : k, n = axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
+    const int i = site.i, j = site.j, k = site.k, at = site.at, n = site.n;
     const std::size_t high = at < n ? g.cell(i, j, k) : 0;
     const std::size_t low = at > 0 ? g.cell(i - (axis == 0), j - (axis == 1), k - (axis == 2)) : 0;
     const int lowSide = at > 0 ? sideOf(g, low) : (g.open[2 * axis] ? 2 : 0);
