@@ -4734,10 +4734,6 @@ Ersetzen?</translation>
         <translation>%1 über die %2 jedes Bildes</translation>
     </message>
     <message>
-        <source>Voxel-grid frames are drawn in the slice views only</source>
-        <translation>Bilder auf dem Voxelgitter werden nur in den Schnittansichten gezeichnet</translation>
-    </message>
-    <message>
         <source>&amp;Layout</source>
         <translation>&amp;Layout</translation>
     </message>

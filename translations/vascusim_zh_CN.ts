@@ -4732,10 +4732,6 @@ Replace them?</source>
         <translation>每帧 %2 上的 %1</translation>
     </message>
     <message>
-        <source>Voxel-grid frames are drawn in the slice views only</source>
-        <translation>体素网格帧只在切片视图中绘制</translation>
-    </message>
-    <message>
         <source>&amp;Layout</source>
         <translation>布局(&amp;L)</translation>
     </message>

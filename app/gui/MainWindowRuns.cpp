@@ -266,6 +266,17 @@ void MainWindow::drawRunFrame()
     view->clearLines();
     view->clearFieldLines();
     view->setVolumeVisible(false);
+    if (const auto* grid = std::get_if<GridFields>(&frame.data))
+    {
+        // A field on a grid (a smoke run's density): volume-rendered; clear where not chosen.
+        const auto found = grid->fields.find(field);
+        if (found != grid->fields.end())
+            view->showFieldVolume(found->second, range.first, range.second, title);
+        else
+            view->clearFieldVolume();
+    }
+    else
+        view->clearFieldVolume();
     if (const auto* mesh = std::get_if<TetMesh>(&frame.data))
     {
         if (mesh->cellFields.count(field))
@@ -298,8 +309,6 @@ void MainWindow::drawRunFrame()
             view->setFieldSurfaceOpacity(0.5);
         }
     }
-    else
-        statusBar()->showMessage(tr("Voxel-grid frames are drawn in the slice views only"), 8000);
 }
 
 void MainWindow::closeRunPlayer()
@@ -311,6 +320,7 @@ void MainWindow::closeRunPlayer()
     m_playedRunId.clear();
     m_wallLoads.reset();
     m_views->volumeView()->clearFieldLines();
+    m_views->volumeView()->clearFieldVolume();
     for (viz::SliceOrientation orientation : kSliceOrientations)
         m_views->sliceView(orientation)->clearField();
     m_drawnScene.clear(); // the study's own 3D content again

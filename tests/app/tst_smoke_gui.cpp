@@ -7,6 +7,9 @@
 #include "GuiTestMain.h"
 #include "MainWindow.h"
 #include "RunPlayer.h"
+#include "TestOutput.h"
+#include "ViewLayout.h"
+#include "vsim/viz/VolumeView3D.h"
 
 #include <QMenu>
 #include <QStatusBar>
@@ -45,6 +48,13 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.runPlayer() && window.runPlayer()->frameCount() >= 10, 60000);
         QCOMPARE(window.runPlayer()->field(), QString("smoke_density_mg_m3"));
         QVERIFY(study.artifact(runId).attributes.count("peak_obscured_fraction"));
+        // The 3D view volume-renders the density with its legend; closing the run takes it away.
+        QTRY_VERIFY_WITH_TIMEOUT(window.views()->volumeView()->hasFieldVolume(), 20000);
+        QVERIFY2(window.views()->volumeView()->legendTitle().contains("smoke_density"),
+                 qPrintable(window.views()->volumeView()->legendTitle()));
+        window.runPlayer()->setFrame(window.runPlayer()->frameCount() - 1);
+        QVERIFY(window.views()->volumeView()->hasFieldVolume());
+        window.grab().save(test::outputFolder("gui") + "/smoke-ball-drop-volume.png");
     }
 };
 

@@ -38,6 +38,7 @@
 #include <QMouseEvent>
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace vsim::viz {
@@ -78,6 +79,11 @@ struct VolumeView3D::Scene
     std::vector<vtkSmartPointer<vtkProp>> callouts;
     std::size_t calloutCount = 0;
     vtkSmartPointer<vtkActor> fieldSurface, fieldLines, tubelets;
+    // The field volume (a smoke run's density): its own mapper and prop beside the CT's.
+    RealVolume fieldVoxels;
+    vtkSmartPointer<vtkSmartVolumeMapper> fieldMapper;
+    vtkSmartPointer<vtkVolume> fieldVolume;
+    Eigen::Vector3d fieldLow = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()), fieldHigh;
     vtkSmartPointer<vtkRenderer> overlay; // layer 1: the tubelets on top of the vessels
     int tubeletQuads = 0;
     vtkSmartPointer<vtkScalarBarActor> legend, surfaceLegend; // points and lines on the right, surfaces on the left
@@ -150,6 +156,67 @@ void VolumeView3D::clearImage()
     m_image = CtVolume();
     m_scene->volume->VisibilityOff();
     update();
+}
+
+void VolumeView3D::showFieldVolume(const RealVolume& field, double low, double high, const QString& legendTitle)
+{
+    Scene& scene = *m_scene;
+    if (!scene.fieldVolume)
+    {
+        scene.fieldMapper = vtkSmartPointer<vtkSmartVolumeMapper>::New();
+        scene.fieldVolume = vtkSmartPointer<vtkVolume>::New();
+        scene.fieldVolume->SetMapper(scene.fieldMapper);
+        renderer()->AddVolume(scene.fieldVolume);
+    }
+    scene.fieldVoxels = field;
+    vtkSmartPointer<vtkImageData> image = interop::toVtk(scene.fieldVoxels);
+    image->SetOrigin(0.0, 0.0, 0.0);
+    const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    image->SetDirectionMatrix(identity);
+    scene.fieldMapper->SetInputData(image);
+    scene.fieldVolume->SetUserMatrix(interop::scaledIndexToPatient(field.geometry()));
+    // Smoke: clear at `low`, grey-white and denser towards `high` (at most 0.6 a voxel: the far side shows through).
+    const double top = high > low ? high : low + 1.0;
+    auto opacity = vtkSmartPointer<vtkPiecewiseFunction>::New();
+    opacity->AddPoint(low, 0.0);
+    opacity->AddPoint(low + 0.05 * (top - low), 0.02);
+    opacity->AddPoint(top, 0.6);
+    auto colour = vtkSmartPointer<vtkColorTransferFunction>::New();
+    colour->AddRGBPoint(low, 0.45, 0.45, 0.47);
+    colour->AddRGBPoint(top, 0.95, 0.95, 0.92);
+    auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+    property->SetScalarOpacity(opacity);
+    property->SetColor(colour);
+    property->SetInterpolationTypeToLinear();
+    property->ShadeOff();
+    scene.fieldVolume->SetProperty(property);
+    scene.fieldVolume->VisibilityOn();
+    showLegend(colour, legendTitle);
+    // A new box (a new run): frame it.
+    const VolumeGeometry& geometry = field.geometry();
+    const Eigen::Vector3d first = geometry.indexToPatient(Eigen::Vector3d::Zero());
+    const Eigen::Vector3d last = geometry.indexToPatient(
+        Eigen::Vector3d(geometry.dims[0] - 1, geometry.dims[1] - 1, geometry.dims[2] - 1));
+    const Eigen::Vector3d lowMm = first.cwiseMin(last), highMm = first.cwiseMax(last);
+    if (!(lowMm.isApprox(scene.fieldLow) && highMm.isApprox(scene.fieldHigh)))
+    {
+        scene.fieldLow = lowMm, scene.fieldHigh = highMm;
+        showAnteriorViewOf(lowMm, highMm);
+    }
+    update();
+}
+
+void VolumeView3D::clearFieldVolume()
+{
+    if (m_scene->fieldVolume)
+        m_scene->fieldVolume->VisibilityOff();
+    m_scene->fieldVoxels = RealVolume();
+    update();
+}
+
+bool VolumeView3D::hasFieldVolume() const
+{
+    return m_scene->fieldVolume && m_scene->fieldVolume->GetVisibility();
 }
 
 void VolumeView3D::addSurface(const TriangleMesh& surface, const QColor& colour)

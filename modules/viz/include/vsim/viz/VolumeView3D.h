@@ -75,6 +75,13 @@ public:
     int showTubelets(const std::vector<std::vector<Eigen::Vector3d>>& trails, double widthMm, const QColor& colour);
     int tubeletQuadCount() const;
     void setVolumeVisible(bool visible);
+    /// Volume-renders a scalar field on a grid (mm, LPS: a smoke run's density) as smoke: grey-white, clear at or
+    /// below `low` and denser towards `high`, with its legend on the right titled `legendTitle`; replaces an earlier
+    /// field volume (the view keeps a copy of the voxels). The camera frames it when its box differs from the last
+    /// one shown (a new run).
+    void showFieldVolume(const RealVolume& field, double low, double high, const QString& legendTitle);
+    void clearFieldVolume();
+    bool hasFieldVolume() const;
     /// How the CT is drawn: rendered (CTA colours, bone and contrast opaque) or as a maximum intensity projection in
     /// grey (the habit of angiography: the opacified vessels and bone the brightest), behind a tree drawn over it.
     enum class VolumeStyle
