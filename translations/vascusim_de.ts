@@ -4950,6 +4950,26 @@ Ersetzen?</translation>
         <source>Surgical smoke (illustrative): the endoscope&apos;s view 50 % obscured %1, 90 % %2; at most %3 % obscured</source>
         <translation>Chirurgischer Rauch (veranschaulichend): die Endoskopsicht zu 50 % verdeckt %1, zu 90 % %2; höchstens %3 % verdeckt</translation>
     </message>
+    <message>
+        <source>Smoke &amp;Parameters...</source>
+        <translation>Rauch-&amp;Parameter...</translation>
+    </message>
+    <message>
+        <source>Surgical smoke parameters</source>
+        <translation>Parameter des chirurgischen Rauchs</translation>
+    </message>
+    <message>
+        <source>Ball drop</source>
+        <translation>Kugelfall</translation>
+    </message>
+    <message>
+        <source>Vessel harvesting</source>
+        <translation>Gefäßentnahme</translation>
+    </message>
+    <message>
+        <source>Liver ablation</source>
+        <translation>Leberablation</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ParameterForm</name>

@@ -4948,6 +4948,26 @@ Replace them?</source>
         <source>Surgical smoke (illustrative): the endoscope&apos;s view 50 % obscured %1, 90 % %2; at most %3 % obscured</source>
         <translation>手术烟雾（示意）：内镜视野 50 % 被遮挡：%1，90 %：%2；最多 %3 % 被遮挡</translation>
     </message>
+    <message>
+        <source>Smoke &amp;Parameters...</source>
+        <translation>烟雾参数(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>Surgical smoke parameters</source>
+        <translation>手术烟雾参数</translation>
+    </message>
+    <message>
+        <source>Ball drop</source>
+        <translation>落球</translation>
+    </message>
+    <message>
+        <source>Vessel harvesting</source>
+        <translation>血管采集</translation>
+    </message>
+    <message>
+        <source>Liver ablation</source>
+        <translation>肝消融</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ParameterForm</name>

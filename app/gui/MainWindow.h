@@ -171,6 +171,8 @@ public:
     /// Surgical Smoke); the run is added (undoable) and played, the endoscope's obscuration times in the status bar.
     /// False without a study, or for evh without centerlines.
     bool simulateSmoke(const std::string& scenario);
+    /// The parameters each smoke scenario runs with (Flow > Surgical Smoke > Smoke Parameters...).
+    ParameterSet& smokeParameters(const std::string& scenario) { return m_smokeParameters.at(scenario); }
     ParameterSet& injectionSetup() { return m_injectionSetup; }
     /// Colours the played (else the newest) blood-flow run's wall loads (Flow > Wall Loads: field "tawss_pa", "osi" or
     /// "wall_pressure_pa") on the lumen surface in 3D, its legend on the left naming the field, the unit, the time
@@ -340,6 +342,7 @@ private:
     ParameterSet m_femParameters;
     ParameterSet m_networkParameters;
     ParameterSet m_bloodFlowSetup, m_injectionSetup, m_sphParameters;
+    std::map<std::string, ParameterSet> m_smokeParameters; ///< per scenario
     DrugDeliveryRequest m_drugRequest;
     app::NetworkRunIds m_lastDrugRun; ///< the drug run this window made last: the next replaces it unless kept
     DrugDeliveryPanel* m_drugPanel = nullptr;

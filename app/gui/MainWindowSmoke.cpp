@@ -1,11 +1,13 @@
 // Flow > Surgical Smoke (issue 21): a scenario (the thesis's ball drop, endoscopic vessel harvesting around the
 // study's vessel, liver ablation over its liver label or a box phantom) run in the background with progress and
 // Cancel (app/SmokePipeline.h), the run added to the study (undoable) and played in the Run Player, the endoscope's
-// obscuration times in the status bar. The scenes are illustrative; the parameters are the scenario's defaults
-// (vascusim-cli simulate smoke --param changes them).
+// obscuration times in the status bar. The scenes are illustrative; each scenario's parameters (its own defaults)
+// are edited in Smoke Parameters... (a page per scenario), as `vascusim-cli simulate smoke --param` sets them. The
+// GPU runs it when one is present (the backend `auto`).
 
 #include "ArtifactCommands.h"
 #include "MainWindow.h"
+#include "ParameterForm.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/app/SmokePipeline.h"
 
@@ -24,6 +26,15 @@ void MainWindow::createSmokeMenu(QMenu* flow)
     smoke->addAction(tr("&Ball Drop (Thesis Demo)"), this, [this] { simulateSmoke("ball-drop"); });
     smoke->addAction(tr("&Endoscopic Vessel Harvesting"), this, [this] { simulateSmoke("evh"); });
     smoke->addAction(tr("&Liver Ablation with Suction"), this, [this] { simulateSmoke("liver-ablation"); });
+    for (const std::string& scenario : sim::smoke::smokeScenarios())
+        m_smokeParameters.emplace(scenario, ParameterSet(sim::smoke::smokeParameters(scenario)));
+    smoke->addSeparator();
+    smoke->addAction(tr("Smoke &Parameters..."), this, [this] {
+        editParametersInDialog(this, tr("Surgical smoke parameters"),
+                               {{tr("Ball drop"), &m_smokeParameters.at("ball-drop")},
+                                {tr("Vessel harvesting"), &m_smokeParameters.at("evh")},
+                                {tr("Liver ablation"), &m_smokeParameters.at("liver-ablation")}});
+    });
 }
 
 bool MainWindow::simulateSmoke(const std::string& scenario)
@@ -36,7 +47,8 @@ bool MainWindow::simulateSmoke(const std::string& scenario)
                                            "Centerlines first."));
         return false;
     }
-    const app::SmokeSetup setup = app::smokeSetup(scenario);
+    app::SmokeSetup setup = app::smokeSetup(scenario);
+    setup.parameters = m_smokeParameters.at(scenario);
     auto run = std::make_shared<app::SmokeRun>();
     return m_tasks.run(
         tr("Surgical smoke"), [this, setup, run](const Progress& progress) { *run = app::runSmoke(m_document.study(), setup, progress); },

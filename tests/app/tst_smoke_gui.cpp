@@ -14,6 +14,8 @@
 #include <QMenu>
 #include <QStatusBar>
 
+#include <cmath>
+
 namespace fs = std::filesystem;
 using namespace vsim;
 
@@ -33,7 +35,9 @@ private slots:
 
         const QMenu* menu = window.findChild<QMenu*>("smokeMenu");
         QVERIFY(menu);
-        QCOMPARE(menu->actions().size(), 3);
+        QCOMPARE(menu->actions().size(), 5); // three scenarios, a separator, the parameters
+        // The form's values are what a run uses: a shorter ball drop.
+        window.smokeParameters("ball-drop").set("end_time_s", 2.0);
         QVERIFY(menu->menuAction()->isEnabled());
 
         QVERIFY(!window.simulateSmoke("evh")); // no centerlines yet
@@ -47,6 +51,7 @@ private slots:
         // The player opens when the run is kept and reads the frames in the background.
         QTRY_VERIFY_WITH_TIMEOUT(window.runPlayer() && window.runPlayer()->frameCount() >= 10, 60000);
         QCOMPARE(window.runPlayer()->field(), QString("smoke_density_mg_m3"));
+        QVERIFY2(std::abs(window.runPlayer()->positions().back() - 2.0) < 1e-6, "the run ends at the form's 2 s");
         QVERIFY(study.artifact(runId).attributes.count("peak_obscured_fraction"));
         // The 3D view volume-renders the density with its legend; closing the run takes it away.
         QTRY_VERIFY_WITH_TIMEOUT(window.views()->volumeView()->hasFieldVolume(), 20000);
