@@ -5354,6 +5354,14 @@ Lumen %2 mm (Kreis: %3)</translation>
         <comment>verb: segment the vessels</comment>
         <translation>Segmentieren</translation>
     </message>
+    <message>
+        <source>Surgical smoke (illustrative): the liver-ablation scene with its suction and the endoscope&apos;s obscuration over time; Flow &gt; Surgical Smoke has the other scenes.</source>
+        <translation>Chirurgischer Rauch (veranschaulichend): die Szene der Leberablation mit ihrer Absaugung und die Verdeckung der Endoskopsicht über die Zeit; Strömung &gt; Chirurgischer Rauch enthält die anderen Szenen.</translation>
+    </message>
+    <message>
+        <source>Surgical Smoke</source>
+        <translation>Chirurgischer Rauch</translation>
+    </message>
 </context>
 <context>
     <name>vsim::imaging::AneurysmSac</name>

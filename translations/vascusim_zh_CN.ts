@@ -5352,6 +5352,14 @@ lumen %2 mm (circle: %3)</source>
         <comment>verb: segment the vessels</comment>
         <translation>分割</translation>
     </message>
+    <message>
+        <source>Surgical smoke (illustrative): the liver-ablation scene with its suction and the endoscope&apos;s obscuration over time; Flow &gt; Surgical Smoke has the other scenes.</source>
+        <translation>手术烟雾（示意）：带抽吸的肝消融场景及内镜视野随时间的遮挡；其他场景见 血流 &gt; 手术烟雾。</translation>
+    </message>
+    <message>
+        <source>Surgical Smoke</source>
+        <translation>手术烟雾</translation>
+    </message>
 </context>
 <context>
     <name>vsim::imaging::AneurysmSac</name>

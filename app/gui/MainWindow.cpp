@@ -157,6 +157,7 @@ bool MainWindow::runWorkflowStep(app::WorkflowStep step)
     case app::WorkflowStep::WallStress: return simulateWall("physiological");
     case app::WorkflowStep::Flow: return simulateBloodFlow();
     case app::WorkflowStep::Drug: return simulateDrugDelivery(m_drugPanel ? m_drugPanel->request() : m_drugRequest);
+    case app::WorkflowStep::Smoke: return simulateSmoke("liver-ablation");
     case app::WorkflowStep::Report: showReportExportDialog(); return true;
     }
     return false;

@@ -21,6 +21,7 @@ QString stepHelp(app::WorkflowStep step)
     case app::WorkflowStep::WallStress: return WorkflowChecklist::tr("Wall stress (kPa) at physiological blood pressure, converged or marked so.");
     case app::WorkflowStep::Flow: return WorkflowChecklist::tr("Blood flow (SPH): velocity ratios and wall pressure along the centerline.");
     case app::WorkflowStep::Drug: return WorkflowChecklist::tr("Drug delivery: perfused territory, tumour coverage and feeders for the catheter tip of the Drug Delivery dock.");
+    case app::WorkflowStep::Smoke: return WorkflowChecklist::tr("Surgical smoke (illustrative): the liver-ablation scene with its suction and the endoscope's obscuration over time; Flow > Surgical Smoke has the other scenes.");
     case app::WorkflowStep::Report: return WorkflowChecklist::tr("Export the PDF report of the study's results.");
     }
     return {};
@@ -68,6 +69,7 @@ QString WorkflowChecklist::stepName(app::WorkflowStep step)
     case app::WorkflowStep::WallStress: return tr("Wall Stress");
     case app::WorkflowStep::Flow: return tr("Blood Flow");
     case app::WorkflowStep::Drug: return tr("Drug Delivery");
+    case app::WorkflowStep::Smoke: return tr("Surgical Smoke");
     case app::WorkflowStep::Report: return tr("Report");
     }
     return {};

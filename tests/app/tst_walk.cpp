@@ -210,6 +210,14 @@ private slots:
         QCOMPARE(list->state(WorkflowStep::Drug), StepState::Done);
         keep(window, "5-drug");
 
+        // Surgical smoke: the liver-ablation scene, short and coarse here (its form's values), played in 3D.
+        window.smokeParameters("liver-ablation").set("grid_cells", 24);
+        window.smokeParameters("liver-ablation").set("end_time_s", 2.0);
+        runStep(window, list, WorkflowStep::Smoke);
+        QCOMPARE(list->state(WorkflowStep::Smoke), StepState::Done);
+        QTRY_VERIFY_WITH_TIMEOUT(window.runPlayer() && window.runPlayer()->frameCount() >= 2, 60000);
+        keep(window, "5-smoke");
+
         // Report: the export dialog, a PDF in the test's folder.
         const QString pdf = m_output + "/walk-report.pdf";
         QFile::remove(pdf);

@@ -70,6 +70,7 @@ const std::vector<std::string>& stepCommands(WorkflowStep step)
         {"simulate fem"},
         {"simulate sph"},
         {"simulate network"},
+        {"simulate smoke"},
         {"report"},
     };
     return commands[std::size_t(step)];

@@ -15,7 +15,7 @@ class Study;
 
 namespace vsim::app {
 
-/// The steps of the workstation's workflow, in order (ARCHITECTURE.md; smoke and PACS add theirs the same way).
+/// The steps of the workstation's workflow, in order (ARCHITECTURE.md; PACS adds its own the same way).
 enum class WorkflowStep
 {
     Import,      ///< a CT image (any image artifact, whatever made it)
@@ -25,12 +25,13 @@ enum class WorkflowStep
     WallStress,  ///< the wall-stress run
     Flow,        ///< the blood-flow (SPH) run
     Drug,        ///< the drug-delivery run
+    Smoke,       ///< a surgical-smoke run (illustrative)
     Report,      ///< the PDF report
 };
 
 inline constexpr WorkflowStep kWorkflowSteps[] = {WorkflowStep::Import,   WorkflowStep::Segment,    WorkflowStep::Centerlines,
                                                   WorkflowStep::WallMesh, WorkflowStep::WallStress, WorkflowStep::Flow,
-                                                  WorkflowStep::Drug,     WorkflowStep::Report};
+                                                  WorkflowStep::Drug,     WorkflowStep::Smoke,      WorkflowStep::Report};
 
 enum class StepState
 {
