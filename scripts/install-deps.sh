@@ -24,6 +24,8 @@ PACKAGES=(
     xvfb xauth libgl1-mesa-dri mesa-utils poppler-utils
     # reference tools used by tests and benchmarks
     dcm2niix python3-numpy python3-skimage calculix-ccx
+    # a real PACS for the DICOM network tests (started by the tests themselves on loopback ports)
+    orthanc
     # sparse direct solvers of the wall analysis (CHOLMOD, UMFPACK) and a fast BLAS under them
     libsuitesparse-dev libopenblas0-pthread
 )

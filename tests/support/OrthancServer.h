@@ -1,0 +1,140 @@
+#pragma once
+
+// A real Orthanc (Debian package orthanc, /usr/sbin/Orthanc) for the PACS tests (issue 22): its own configuration,
+// storage and index in a fresh folder, DICOM on a free loopback port, no HTTP server, our AE title VASCUSIM
+// registered as a modality. `strict` lets only registered modalities echo, store, find, get and move (an unknown
+// AE is refused), so that a permissive server does not hide a fault. The server stops with the object, also when a
+// test fails.
+
+#include "vsim/core/Error.h"
+#include "vsim/dicom/PacsClient.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QThread>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace vsim::test {
+
+/// A loopback TCP port that nothing listens on now: bound to port 0, read, released.
+inline int freeLoopbackPort()
+{
+    const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = 0;
+    socklen_t length = sizeof address;
+    int port = 0;
+    if (socket >= 0 && ::bind(socket, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
+        ::getsockname(socket, reinterpret_cast<sockaddr*>(&address), &length) == 0)
+        port = ntohs(address.sin_port);
+    if (socket >= 0)
+        ::close(socket);
+    return port;
+}
+
+class OrthancServer
+{
+public:
+    static QString executable()
+    {
+        const QString inPath = QStandardPaths::findExecutable("Orthanc");
+        return inPath.isEmpty() ? QStandardPaths::findExecutable("Orthanc", {"/usr/sbin"}) : inPath;
+    }
+
+    /// Starts the server in `folder` (emptied first); waits until it answers an echo (15 s at most). Throws
+    /// vsim::Error when it does not start.
+    OrthancServer(const std::filesystem::path& folder, bool strict)
+    {
+        std::filesystem::remove_all(folder);
+        std::filesystem::create_directories(folder);
+        m_port = freeLoopbackPort();
+        const QString root = QString::fromStdString(folder.string());
+        QJsonObject config{{"Name", "vascusim-test"},
+                           {"StorageDirectory", root + "/storage"},
+                           {"IndexDirectory", root + "/index"},
+                           {"HttpServerEnabled", false},
+                           {"DicomServerEnabled", true},
+                           {"DicomAet", "ORTHANC"},
+                           {"DicomPort", m_port},
+                           {"DicomCheckCalledAet", true},
+                           {"DicomCheckModalityHost", false},
+                           {"RemoteAccessAllowed", false},
+                           {"Plugins", QJsonArray()},
+                           {"DicomModalities", QJsonObject{{"vascusim", QJsonArray{"VASCUSIM", "127.0.0.1", 11112}}}}};
+        for (const char* operation : {"Echo", "Store", "Find", "Get", "Move"})
+            config.insert(QString("DicomAlwaysAllow") + operation, !strict);
+        const QString path = QString::fromStdString((folder / "orthanc.json").string());
+        QFile file(path);
+        file.open(QIODevice::WriteOnly);
+        file.write(QJsonDocument(config).toJson());
+        file.close();
+        m_process = std::make_unique<QProcess>();
+        m_process->setProcessChannelMode(QProcess::MergedChannels);
+        m_process->setStandardOutputFile(QString::fromStdString((folder / "orthanc.log").string()));
+        m_process->start(executable(), {path});
+        if (!m_process->waitForStarted(10000))
+            throw Error("Orthanc did not start: " + m_process->errorString().toStdString());
+        for (int attempt = 0; attempt < 150; ++attempt)
+        {
+            try
+            {
+                dicom::pacsEcho(node());
+                return;
+            }
+            catch (const Error&)
+            {
+                if (m_process->state() == QProcess::NotRunning)
+                    break;
+                QThread::msleep(100);
+            }
+        }
+        throw Error("Orthanc did not answer an echo on port " + std::to_string(m_port) + " (see " +
+                    (folder / "orthanc.log").string() + ")");
+    }
+
+    ~OrthancServer()
+    {
+        if (m_process && m_process->state() != QProcess::NotRunning)
+        {
+            m_process->terminate();
+            if (!m_process->waitForFinished(10000))
+                m_process->kill(), m_process->waitForFinished(5000);
+        }
+    }
+
+    OrthancServer(const OrthancServer&) = delete;
+    OrthancServer& operator=(const OrthancServer&) = delete;
+
+    int port() const { return m_port; }
+    /// The node as VascuSim (AE title VASCUSIM) reaches it.
+    dicom::PacsNode node() const
+    {
+        dicom::PacsNode node;
+        node.calledAeTitle = "ORTHANC";
+        node.host = "127.0.0.1";
+        node.port = m_port;
+        node.timeoutS = 10;
+        return node;
+    }
+
+private:
+    int m_port = 0;
+    std::unique_ptr<QProcess> m_process;
+};
+
+} // namespace vsim::test
