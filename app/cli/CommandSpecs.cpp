@@ -5,6 +5,7 @@
 #include "CommandLine.h"
 #include "DemoCommand.h"
 #include "NetworkCommands.h"
+#include "PacsCommand.h"
 #include "ReportCommand.h"
 #include "ValidateCommand.h"
 #include "WallCommands.h"
@@ -202,6 +203,19 @@ std::vector<CommandSpec> declareCommands()
          "    endoscope's obscuration curve (Beer-Lambert, K_m 8.7 m^2/g) with the times to 50 % and 90 %, a Run of\n"
          "    smoke density frames; the frame series to DIR. `vascusim-cli parameters smoke` lists the parameters",
          simulateSmoke},
+        {"pacs echo", 1, 1, {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout")},
+         "pacs echo --aet AE --host HOST --port N [--calling-aet VASCUSIM] [--timeout 30]\n"
+         "    C-ECHO to a PACS node: exit 0 when it answers, else 1 with the reason (connection refused or silent,\n"
+         "    association rejected: our AE title not registered there, or its AE title not AE)",
+         pacsEchoCommand},
+        {"pacs find", 1, 1,
+         {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout"), value("patient-name"),
+          value("patient-id"), value("date"), value("modality")},
+         "pacs find --aet AE --host HOST --port N [--patient-name 'DOE^J*'] [--patient-id ID]\n"
+         "          [--date YYYYMMDD[-YYYYMMDD]] [--modality CT] [--calling-aet VASCUSIM] [--timeout 30]\n"
+         "    C-FIND at the study level (Study Root): the matching studies as JSON (UID, patient, date, description,\n"
+         "    accession number, modalities, number of series); names in UTF-8",
+         pacsFindCommand},
         {"validate", 1, 1, {},
          "validate <case|fem|network|sph|heat|all>\n"
          "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"

@@ -3,7 +3,8 @@
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(commands "info x" import phantom segment sac surface skeleton centerline measure "mesh wall" "mesh sheet" "mesh import"
-    "simulate fem" "simulate network" "validate x" report demo demo-study parameters)
+    "simulate fem" "simulate network" "simulate smoke" "pacs echo" "pacs find" "validate x" report demo demo-study
+    parameters)
 foreach(command IN LISTS commands)
     separate_arguments(words UNIX_COMMAND "${command}")
     run_cli(2 out ${words} --studdy ${WORK}/x.vsim)

@@ -3,7 +3,8 @@
 // with DCMTK's storescu (another implementation than ours), then: C-ECHO; C-FIND at the study level by patient ID,
 // by a name with a wildcard, by modality and by a date range, each against what was uploaded; the failures (a
 // wrong called AE title, a port where nothing listens, an unknown calling AE on a strict server) give messages
-// that say what to fix. Skips, saying so, where Orthanc is not installed (scripts/install-deps.sh installs it).
+// that say what to fix; `vascusim-cli pacs echo|find` the same way, with its exit codes. Skips, saying so, where
+// Orthanc is not installed (scripts/install-deps.sh installs it).
 
 #include "DicomFixtures.h"
 #include "OrthancServer.h"
@@ -43,6 +44,21 @@ std::unique_ptr<test::OrthancServer> startOrthanc(const char* name, bool strict,
         failure = QString::fromStdString(error.what());
         return nullptr;
     }
+}
+
+struct CliResult
+{
+    int code = -1;
+    QString output; ///< stdout and stderr
+};
+
+CliResult runCli(const QStringList& arguments)
+{
+    QProcess cli;
+    cli.setProcessChannelMode(QProcess::MergedChannels);
+    cli.start(VSIM_CLI, arguments);
+    cli.waitForFinished(120000);
+    return {cli.exitStatus() == QProcess::NormalExit ? cli.exitCode() : -1, QString::fromUtf8(cli.readAll())};
 }
 
 QString errorOf(const std::function<void()>& call)
@@ -113,6 +129,33 @@ private slots:
         outOfRange.dateFrom = "20261201";
         QCOMPARE(dicom::findStudies(node, inRange).size(), std::size_t(1));
         QVERIFY(dicom::findStudies(node, outOfRange).empty());
+    }
+
+    void cliEchoAndFind()
+    {
+        QString failure;
+        const std::unique_ptr<test::OrthancServer> orthanc = startOrthanc("orthanc-cli", false, failure);
+        QVERIFY2(orthanc, qPrintable(failure));
+        const dicom::PacsNode node = orthanc->node();
+        const QStringList where{"--aet", "ORTHANC", "--host", "127.0.0.1", "--port", QString::number(node.port)};
+        CliResult echo = runCli(QStringList{"pacs", "echo"} + where);
+        QVERIFY2(echo.code == 0 && echo.output.contains("\"echo\": \"ok\""), qPrintable(echo.output));
+
+        dicom::CtSeriesDescription description;
+        description.patientId = "PACS-CLI-1";
+        const test::PhantomSeries series = test::writePhantomSeries(dicom::PhantomKind::Stenosis, test::smallPhantomOptions(),
+                                                                    test::freshFolder("pacs", "cli-series"), description);
+        QCOMPARE(storeWithStorescu(node, series.written.files), 0);
+        CliResult find = runCli(QStringList{"pacs", "find", "--patient-id", "PACS-CLI-1"} + where);
+        QVERIFY2(find.code == 0 && find.output.contains(QString::fromStdString(series.written.studyInstanceUid)),
+                 qPrintable(find.output));
+
+        CliResult wrongTitle = runCli({"pacs", "echo", "--aet", "NOTORTHANC", "--host", "127.0.0.1", "--port", QString::number(node.port)});
+        QVERIFY2(wrongTitle.code == 1 && wrongTitle.output.contains("rejected the association"), qPrintable(wrongTitle.output));
+        CliResult badPort = runCli({"pacs", "echo", "--aet", "ORTHANC", "--host", "127.0.0.1", "--port", "70000"});
+        QVERIFY2(badPort.code == 2 && badPort.output.contains("--port"), qPrintable(badPort.output));
+        CliResult badDate = runCli(QStringList{"pacs", "find", "--date", "2026-11-01"} + where);
+        QVERIFY2(badDate.code == 2 && badDate.output.contains("--date"), qPrintable(badDate.output));
     }
 
     void failuresSayWhatToFix()

@@ -1,0 +1,15 @@
+#pragma once
+
+// vascusim-cli pacs echo | find (issue 22): a PACS node given by --aet, --host and --port.
+
+#include "CommandLine.h"
+#include "vsim/core/Progress.h"
+
+namespace vsim::cli {
+
+/// C-ECHO; prints {"echo": "ok", ...}. Exit 1 with the reason when the node does not answer.
+int pacsEchoCommand(const Arguments& arguments, const Progress& progress);
+/// Study-level C-FIND with --patient-name, --patient-id, --date FROM-TO (YYYYMMDD), --modality; prints the matches.
+int pacsFindCommand(const Arguments& arguments, const Progress& progress);
+
+} // namespace vsim::cli
