@@ -216,6 +216,13 @@ std::vector<CommandSpec> declareCommands()
          "    C-FIND at the study level (Study Root): the matching studies as JSON (UID, patient, date, description,\n"
          "    accession number, modalities, number of series); names in UTF-8",
          pacsFindCommand},
+        {"pacs get", 1, 1,
+         {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout"), required("study-uid"),
+          required("out")},
+         "pacs get --aet AE --host HOST --port N --study-uid UID --out DIR [--calling-aet VASCUSIM] [--timeout 30]\n"
+         "    C-GET of a study (CT, enhanced CT, SEG, encapsulated PDF, secondary capture) into DIR/dicom (DIR new,\n"
+         "    empty or VascuSim's); a failed or partial transfer leaves no files. Then: import DIR/dicom --study S",
+         pacsGetCommand},
         {"validate", 1, 1, {},
          "validate <case|fem|network|sph|heat|all>\n"
          "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"

@@ -1,5 +1,6 @@
 #include "PacsCommand.h"
 
+#include "vsim/core/OutputSafety.h"
 #include "vsim/dicom/PacsClient.h"
 
 #include <nlohmann/json.hpp>
@@ -75,6 +76,24 @@ int pacsFindCommand(const Arguments& arguments, const Progress&)
                            {"modalities", match.modalities},
                            {"series", match.seriesCount}});
     std::cout << nlohmann::json{{"pacs", dicom::describe(node)}, {"level", "STUDY"}, {"studies", studies}}.dump(2) << "\n";
+    return 0;
+}
+
+int pacsGetCommand(const Arguments& arguments, const Progress& progress)
+{
+    const dicom::PacsNode node = nodeFrom(arguments);
+    const std::filesystem::path out = arguments.option("out");
+    checkOutputFolder(out, "pacs retrieve");
+    claimOutputFolder(out, "pacs retrieve");
+    const std::filesystem::path folder = out / "dicom";
+    const std::vector<std::filesystem::path> files = dicom::retrieveStudy(node, arguments.option("study-uid"), folder, progress);
+    std::cout << nlohmann::json{{"pacs", dicom::describe(node)},
+                                {"study_instance_uid", arguments.option("study-uid")},
+                                {"files", files.size()},
+                                {"folder", folder.string()},
+                                {"next", "vascusim-cli import " + folder.string() + " --study <study.vsim>"}}
+                     .dump(2)
+              << "\n";
     return 0;
 }
 

@@ -3,7 +3,7 @@
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(commands "info x" import phantom segment sac surface skeleton centerline measure "mesh wall" "mesh sheet" "mesh import"
-    "simulate fem" "simulate network" "simulate smoke" "pacs echo" "pacs find" "validate x" report demo demo-study
+    "simulate fem" "simulate network" "simulate smoke" "pacs echo" "pacs find" "pacs get" "validate x" report demo demo-study
     parameters)
 foreach(command IN LISTS commands)
     separate_arguments(words UNIX_COMMAND "${command}")

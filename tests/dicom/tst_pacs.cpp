@@ -9,6 +9,7 @@
 #include "DicomFixtures.h"
 #include "OrthancServer.h"
 #include "vsim/core/Error.h"
+#include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PacsClient.h"
 
 #include <QProcess>
@@ -129,6 +130,20 @@ private slots:
         outOfRange.dateFrom = "20261201";
         QCOMPARE(dicom::findStudies(node, inRange).size(), std::size_t(1));
         QVERIFY(dicom::findStudies(node, outOfRange).empty());
+
+        // C-GET: every slice back, in the series sent; an unknown study fails and leaves nothing.
+        const std::filesystem::path retrieved = test::freshFolder("pacs", "retrieved");
+        const std::vector<std::filesystem::path> files = dicom::retrieveStudy(node, series.written.studyInstanceUid, retrieved);
+        QCOMPARE(files.size(), series.written.files.size());
+        const std::vector<dicom::DicomSeries> scanned = dicom::scanDicom(retrieved).series;
+        QCOMPARE(scanned.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(scanned[0].seriesInstanceUid), QString::fromStdString(series.written.seriesInstanceUid));
+        QCOMPARE(scanned[0].headers.size(), series.written.files.size());
+        const std::filesystem::path empty = test::freshFolder("pacs", "retrieved-nothing");
+        const QString unknown = errorOf([&] { dicom::retrieveStudy(node, "1.2.3.4.5.6.7.8.9", empty); });
+        QVERIFY2(!unknown.isEmpty(), "an unknown study must fail");
+        QVERIFY(std::filesystem::is_empty(empty));
+        QVERIFY(errorOf([&] { dicom::retrieveStudy(node, series.written.studyInstanceUid, retrieved); }).contains("not empty"));
     }
 
     void cliEchoAndFind()
@@ -149,6 +164,19 @@ private slots:
         CliResult find = runCli(QStringList{"pacs", "find", "--patient-id", "PACS-CLI-1"} + where);
         QVERIFY2(find.code == 0 && find.output.contains(QString::fromStdString(series.written.studyInstanceUid)),
                  qPrintable(find.output));
+
+        const QString out = QString::fromStdString(test::freshFolder("pacs", "cli-get").string()) + "/study";
+        CliResult get = runCli(QStringList{"pacs", "get", "--study-uid", QString::fromStdString(series.written.studyInstanceUid),
+                                           "--out", out} + where);
+        QVERIFY2(get.code == 0 && QDir(out + "/dicom").entryList(QDir::Files).size() == int(series.written.files.size()),
+                 qPrintable(get.output));
+        // The retrieved series imports (find -> get -> import).
+        const QString study = QString::fromStdString(test::freshFolder("pacs", "cli-study").string()) + "/retrieved.vsim";
+        CliResult imported = runCli({"import", out + "/dicom", "--study", study});
+        QVERIFY2(imported.code == 0, qPrintable(imported.output));
+        CliResult again = runCli(QStringList{"pacs", "get", "--study-uid", QString::fromStdString(series.written.studyInstanceUid),
+                                             "--out", out} + where);
+        QVERIFY2(again.code == 1 && again.output.contains("not empty"), qPrintable(again.output));
 
         CliResult wrongTitle = runCli({"pacs", "echo", "--aet", "NOTORTHANC", "--host", "127.0.0.1", "--port", QString::number(node.port)});
         QVERIFY2(wrongTitle.code == 1 && wrongTitle.output.contains("rejected the association"), qPrintable(wrongTitle.output));

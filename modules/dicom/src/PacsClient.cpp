@@ -11,17 +11,43 @@
 #include <dcmtk/dcmnet/scu.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <memory>
 
 namespace vsim::dicom {
 namespace {
 
-/// An association to `node` proposing the given abstract syntaxes (explicit then implicit little endian).
+/// A presentation context to propose: an abstract syntax and our role (SCP for the storage classes of a C-GET,
+/// whose objects come back on the same association).
+struct Proposed
+{
+    const char* abstractSyntax;
+    T_ASC_SC_ROLE role = ASC_SC_ROLE_DEFAULT;
+};
+
+/// The SCU of a C-GET: counts the objects it writes and reports them.
+class RetrievingScu : public DcmSCU
+{
+public:
+    mutable std::vector<std::filesystem::path> files; ///< DCMTK tells of each in a const function
+    const Progress* progress = nullptr;
+
+protected:
+    void notifyInstanceStored(const OFString& filename, const OFString&, const OFString&) const override
+    {
+        files.emplace_back(filename.c_str());
+        if (progress)
+            progress->report(0.0, "retrieved " + std::to_string(files.size()) + " objects");
+    }
+};
+
+/// An association to `node` on `scu` proposing the given contexts (explicit then implicit little endian).
 class Association
 {
 public:
-    Association(const PacsNode& node, const std::vector<const char*>& abstractSyntaxes) : m_node(node)
+    Association(const PacsNode& node, const std::vector<Proposed>& contexts, DcmSCU* scu = nullptr)
+        : m_node(node), m_owned(scu ? nullptr : std::make_unique<DcmSCU>()), m_scu(scu ? *scu : *m_owned)
     {
         ensureDcmtkCodecs(); // and DCMTK's own logging quiet
         if (node.calledAeTitle.empty() || node.calledAeTitle.size() > 16 || node.callingAeTitle.empty() ||
@@ -41,8 +67,8 @@ public:
         OFList<OFString> syntaxes;
         syntaxes.push_back(UID_LittleEndianExplicitTransferSyntax);
         syntaxes.push_back(UID_LittleEndianImplicitTransferSyntax);
-        for (const char* abstractSyntax : abstractSyntaxes)
-            m_scu.addPresentationContext(abstractSyntax, syntaxes);
+        for (const Proposed& context : contexts)
+            m_scu.addPresentationContext(context.abstractSyntax, syntaxes, context.role);
         check(m_scu.initNetwork(), "could not start the network");
         const OFCondition negotiated = m_scu.negotiateAssociation();
         if (negotiated == DUL_ASSOCIATIONREJECTED)
@@ -79,7 +105,8 @@ public:
 
 private:
     PacsNode m_node;
-    DcmSCU m_scu;
+    std::unique_ptr<DcmSCU> m_owned;
+    DcmSCU& m_scu;
 };
 
 std::string text(DcmItem& item, const DcmTagKey& tag)
@@ -97,14 +124,14 @@ std::string describe(const PacsNode& node)
 
 void pacsEcho(const PacsNode& node)
 {
-    Association association(node, {UID_VerificationSOPClass});
+    Association association(node, {{UID_VerificationSOPClass}});
     const T_ASC_PresentationContextID id = association.context(UID_VerificationSOPClass, "verification (C-ECHO)");
     association.check(association.scu().sendECHORequest(id), "the echo failed");
 }
 
 std::vector<StudyMatch> findStudies(const PacsNode& node, const StudyQuery& query)
 {
-    Association association(node, {UID_FINDStudyRootQueryRetrieveInformationModel});
+    Association association(node, {{UID_FINDStudyRootQueryRetrieveInformationModel}});
     const T_ASC_PresentationContextID id =
         association.context(UID_FINDStudyRootQueryRetrieveInformationModel, "study-root queries (C-FIND)");
     DcmDataset request;
@@ -153,6 +180,65 @@ std::vector<StudyMatch> findStudies(const PacsNode& node, const StudyQuery& quer
     if (!failure.empty())
         throw Error(failure + " (" + describe(node) + ")");
     return matches;
+}
+
+std::vector<std::filesystem::path> retrieveStudy(const PacsNode& node, const std::string& studyInstanceUid,
+                                                const std::filesystem::path& folder, const Progress& progress)
+{
+    if (studyInstanceUid.empty())
+        throw Error("a retrieve needs the study's instance UID");
+    std::error_code error;
+    if (std::filesystem::exists(folder, error) && !std::filesystem::is_empty(folder, error))
+        throw Error("the retrieve's folder is not empty: " + folder.string());
+    std::filesystem::create_directories(folder, error);
+    if (error)
+        throw Error("cannot create the retrieve's folder " + folder.string() + ": " + error.message());
+    RetrievingScu scu;
+    scu.progress = &progress;
+    scu.setStorageDir(folder.string().c_str());
+    scu.setStorageMode(DCMSCU_STORAGE_DISK);
+    // The objects a study holds that VascuSim reads or made.
+    std::vector<Proposed> contexts = {{UID_GETStudyRootQueryRetrieveInformationModel}};
+    for (const char* storage : {UID_CTImageStorage, UID_EnhancedCTImageStorage, UID_SegmentationStorage,
+                                UID_EncapsulatedPDFStorage, UID_SecondaryCaptureImageStorage})
+        contexts.push_back({storage, ASC_SC_ROLE_SCP});
+    OFList<RetrieveResponse*> responses;
+    OFCondition sent;
+    std::string failure;
+    {
+        Association association(node, contexts, &scu);
+        const T_ASC_PresentationContextID id =
+            association.context(UID_GETStudyRootQueryRetrieveInformationModel, "study-root retrieval (C-GET)");
+        DcmDataset request;
+        request.putAndInsertString(DCM_QueryRetrieveLevel, "STUDY");
+        request.putAndInsertString(DCM_StudyInstanceUID, studyInstanceUid.c_str());
+        sent = scu.sendCGETRequest(id, &request, &responses);
+        for (RetrieveResponse* response : responses)
+        {
+            std::unique_ptr<RetrieveResponse> owned(response);
+            if (response->m_status == STATUS_Pending)
+                continue;
+            if (response->m_status != STATUS_Success || response->m_numberOfFailedSubops > 0)
+            {
+                char status[8];
+                std::snprintf(status, sizeof status, "%04X", unsigned(response->m_status));
+                failure = std::string("the PACS ended the retrieve with status 0x") + status + ", " +
+                          std::to_string(response->m_numberOfFailedSubops) + " objects failed";
+            }
+        }
+        if (sent.bad() && failure.empty())
+            failure = std::string("the retrieve broke off: ") + sent.text();
+    }
+    if (failure.empty() && scu.files.empty())
+        failure = "the PACS sent nothing for study " + studyInstanceUid;
+    if (!failure.empty())
+    {
+        // No half retrieve: the objects written so far go (the folder was empty or new).
+        for (const std::filesystem::path& file : scu.files)
+            std::filesystem::remove(file, error);
+        throw Error(failure + " (" + describe(node) + ")");
+    }
+    return scu.files;
 }
 
 } // namespace vsim::dicom
