@@ -38,11 +38,11 @@ struct Differences
 {
     double density = 0.0;   ///< largest |difference| / largest density
     double velocity = 0.0;  ///< largest |difference| / largest speed
-    double mass = 0.0;      ///< |difference| / the CPU's mass
-    long particles = 0;     ///< CPU's alive - GPU's alive
+    double mass = 0.0;      ///< |difference| / the first's mass
+    long particles = 0;     ///< the first's alive - the second's alive
     int iterationGap = 0;   ///< largest |difference| of a projection's iterations
-    double worstResidual = 0.0; ///< the GPU's worst relative residual
-    int gpuIterations = 0, cpuIterations = 0;
+    double worstResidual = 0.0; ///< the second's worst relative residual
+    int firstIterations = 0, secondIterations = 0;
 };
 
 double largestDifference(const std::vector<float>& a, const std::vector<float>& b)
@@ -77,7 +77,7 @@ std::vector<Differences> runPair(SmokeSimulation& first, SmokeSimulation& second
             qFatal("a guard stopped the run: %s %s", a.guard.c_str(), b.guard.c_str());
         running.iterationGap = std::max(running.iterationGap, std::abs(a.projection.iterations - b.projection.iterations));
         running.worstResidual = std::max(running.worstResidual, b.projection.relativeResidual);
-        running.cpuIterations += a.projection.iterations, running.gpuIterations += b.projection.iterations;
+        running.firstIterations += a.projection.iterations, running.secondIterations += b.projection.iterations;
         if (std::find(checkpoints.begin(), checkpoints.end(), s) == checkpoints.end())
             continue;
         Differences result = running;
@@ -97,7 +97,7 @@ std::vector<Differences> runPair(SmokeSimulation& first, SmokeSimulation& second
         qInfo("%s, %d steps: density %.2e, velocity %.2e, mass %.2e of the first's; particles %zu / %zu; iterations "
               "%d / %d (largest gap %d), the second's worst residual %.2e",
               label, s, result.density, result.velocity, result.mass, first.particles().size(), second.particles().size(),
-              result.cpuIterations, result.gpuIterations, result.iterationGap, result.worstResidual);
+              result.firstIterations, result.secondIterations, result.iterationGap, result.worstResidual);
         results.push_back(result);
     }
     return results;

@@ -312,7 +312,7 @@ void CudaSmokeBackend::addVortexForces(host::SmokeGrid&, double dt, const host::
     smoke::addCellForces(d.g, d.force.data, float(dt));
 }
 
-void CudaSmokeBackend::placeSolids(host::SmokeGrid& grid, const std::vector<std::uint8_t>& staticSolid,
+void CudaSmokeBackend::placeSolids(host::SmokeGrid&, const std::vector<std::uint8_t>& staticSolid,
                                    const host::MovingSphere* sphere)
 {
     Device& d = *m_device;
@@ -329,7 +329,6 @@ void CudaSmokeBackend::placeSolids(host::SmokeGrid& grid, const std::vector<std:
                        sphere ? float(sphere->velocity.z()) : 0.0f, d.changed.data);
     int changed = 0;
     VSIM_CUDA_CHECK(cudaMemcpy(&changed, d.changed.data, sizeof(int), cudaMemcpyDeviceToHost));
-    (void)grid;
     if (changed || !d.prepared)
         d.prepareMultigrid();
 }

@@ -67,11 +67,6 @@ unsigned reduceBlocks(std::size_t n)
     return std::max(1u, std::min(unsigned(kReduceBlocks), blocksFor(n)));
 }
 
-double fetch(const double* scratch)
-{
-    return fetchScalar(scratch);
-}
-
 } // namespace
 
 double fetchScalar(const double* scratch)
@@ -85,7 +80,7 @@ double dot(const float* a, const float* b, std::size_t n, double* scratch)
 {
     VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 2 * sizeof(double)));
     dotKernel<<<reduceBlocks(n), kBlock>>>(a, b, n, scratch);
-    return fetch(scratch);
+    return fetchScalar(scratch);
 }
 
 void sumOnFluid(const float* x, const std::uint8_t* fluid, std::size_t n, double* scratch, double& sum, double& count)
@@ -102,7 +97,7 @@ double maxAbs(const float* a, std::size_t na, const float* b, std::size_t nb, co
 {
     VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 2 * sizeof(double)));
     maxAbsKernel<<<reduceBlocks(std::max(na, std::max(nb, nc))), kBlock>>>(a, na, b, nb, c, nc, scratch);
-    return fetch(scratch);
+    return fetchScalar(scratch);
 }
 
 double countNotFinite(const GridView& g, double* scratch)
@@ -113,7 +108,7 @@ double countNotFinite(const GridView& g, double* scratch)
     const float* fields[5] = {g.u, g.v, g.w, g.density, g.temperature};
     for (int f = 0; f < 5; ++f)
         notFiniteKernel<<<reduceBlocks(sizes[f]), kBlock>>>(fields[f], sizes[f], scratch);
-    return fetch(scratch);
+    return fetchScalar(scratch);
 }
 
 } // namespace vsim::cuda::smoke

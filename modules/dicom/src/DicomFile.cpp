@@ -1,5 +1,6 @@
 #include "vsim/dicom/DicomFile.h"
 
+#include "DatasetText.h"
 #include "DcmtkSetup.h"
 #include "FunctionalGroups.h"
 
@@ -28,19 +29,9 @@ using detail::functionalGroup;
 
 constexpr Uint32 kHeaderReadLength = 4096; // bytes; longer values (pixel data) stay on disk until accessed
 
-std::string trimmed(const char* text)
-{
-    std::string value = text ? text : "";
-    const auto begin = value.find_first_not_of(" \t\r\n");
-    if (begin == std::string::npos)
-        return {};
-    return value.substr(begin, value.find_last_not_of(" \t\r\n") - begin + 1);
-}
-
 std::string text(DcmItem& item, const DcmTagKey& tag)
 {
-    OFString value;
-    return item.findAndGetOFStringArray(tag, value).good() ? trimmed(value.c_str()) : std::string();
+    return detail::datasetText(item, tag);
 }
 
 int integer(DcmItem& item, const DcmTagKey& tag, int fallback = 0)

@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 
+#include "DatasetText.h"
 #include "DcmtkSetup.h"
 
 #include <dcmtk/config/osconfig.h>
@@ -109,12 +110,6 @@ private:
     DcmSCU& m_scu;
 };
 
-std::string text(DcmItem& item, const DcmTagKey& tag)
-{
-    OFString value;
-    return item.findAndGetOFStringArray(tag, value).good() ? std::string(value.c_str()) : std::string();
-}
-
 } // namespace
 
 std::string describe(const PacsNode& node)
@@ -164,14 +159,14 @@ std::vector<StudyMatch> findStudies(const PacsNode& node, const StudyQuery& quer
             continue;
         DcmDataset& answer = *response->m_dataset;
         StudyMatch match;
-        match.studyInstanceUid = text(answer, DCM_StudyInstanceUID);
-        match.patientName = text(answer, DCM_PatientName);
-        match.patientId = text(answer, DCM_PatientID);
-        match.studyDate = text(answer, DCM_StudyDate);
-        match.studyDescription = text(answer, DCM_StudyDescription);
-        match.accessionNumber = text(answer, DCM_AccessionNumber);
-        match.modalities = text(answer, DCM_ModalitiesInStudy);
-        const std::string series = text(answer, DCM_NumberOfStudyRelatedSeries);
+        match.studyInstanceUid = detail::datasetText(answer, DCM_StudyInstanceUID);
+        match.patientName = detail::datasetText(answer, DCM_PatientName);
+        match.patientId = detail::datasetText(answer, DCM_PatientID);
+        match.studyDate = detail::datasetText(answer, DCM_StudyDate);
+        match.studyDescription = detail::datasetText(answer, DCM_StudyDescription);
+        match.accessionNumber = detail::datasetText(answer, DCM_AccessionNumber);
+        match.modalities = detail::datasetText(answer, DCM_ModalitiesInStudy);
+        const std::string series = detail::datasetText(answer, DCM_NumberOfStudyRelatedSeries);
         match.seriesCount = series.empty() ? -1 : int(std::strtol(series.c_str(), nullptr, 10));
         if (!match.studyInstanceUid.empty())
             matches.push_back(std::move(match));

@@ -2,6 +2,7 @@
 #include "TextFonts.h"
 
 #include "FieldScene.h"
+#include "VolumeProperties.h"
 
 #include "vsim/core/Error.h"
 #include "vsim/interop/VtkImage.h"
@@ -19,7 +20,6 @@
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
-#include <vtkPiecewiseFunction.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPointData.h>
@@ -93,43 +93,10 @@ struct VolumeView3D::Scene
 
 VolumeView3D::VolumeView3D(QWidget* parent) : VtkView(parent), m_scene(std::make_unique<Scene>())
 {
-    // CTA transfer function (HU): air and soft tissue transparent, contrast blood red and bone ivory, opaque.
-    auto opacity = vtkSmartPointer<vtkPiecewiseFunction>::New();
-    opacity->AddPoint(-1024, 0.0);
-    opacity->AddPoint(150, 0.0);
-    opacity->AddPoint(250, 0.25);
-    opacity->AddPoint(450, 0.7);
-    opacity->AddPoint(3000, 0.9);
-    auto colour = vtkSmartPointer<vtkColorTransferFunction>::New();
-    colour->AddRGBPoint(-1024, 0.0, 0.0, 0.0);
-    colour->AddRGBPoint(200, 0.75, 0.15, 0.1);
-    colour->AddRGBPoint(450, 0.95, 0.4, 0.3);
-    colour->AddRGBPoint(700, 0.95, 0.92, 0.85);
-    colour->AddRGBPoint(3000, 1.0, 1.0, 1.0);
-    auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-    property->SetScalarOpacity(opacity);
-    property->SetColor(colour);
-    property->SetInterpolationTypeToLinear();
-    property->ShadeOn();
-    property->SetAmbient(0.4);
-    m_scene->rendered = property;
-    // The maximum intensity projection (HU): grey from above soft tissue and its noise's maxima along a ray (200) to
-    // dense contrast (700), clear below.
-    auto greyOpacity = vtkSmartPointer<vtkPiecewiseFunction>::New();
-    greyOpacity->AddPoint(-1024, 0.0);
-    greyOpacity->AddPoint(200, 0.0);
-    greyOpacity->AddPoint(700, 0.85);
-    greyOpacity->AddPoint(3000, 0.85);
-    auto grey = vtkSmartPointer<vtkColorTransferFunction>::New();
-    grey->AddRGBPoint(200, 0.0, 0.0, 0.0);
-    grey->AddRGBPoint(700, 1.0, 1.0, 1.0);
-    m_scene->maximumIntensity = vtkSmartPointer<vtkVolumeProperty>::New();
-    m_scene->maximumIntensity->SetScalarOpacity(greyOpacity);
-    m_scene->maximumIntensity->SetColor(grey);
-    m_scene->maximumIntensity->SetInterpolationTypeToLinear();
-    m_scene->maximumIntensity->ShadeOff();
+    m_scene->rendered = detail::ctaRenderedProperty();
+    m_scene->maximumIntensity = detail::ctaMaximumIntensityProperty();
     m_scene->volume->SetMapper(m_scene->mapper);
-    m_scene->volume->SetProperty(property);
+    m_scene->volume->SetProperty(m_scene->rendered);
     m_scene->volume->VisibilityOff();
     renderer()->AddVolume(m_scene->volume);
     renderer()->SetBackground(0.08, 0.09, 0.12);
@@ -175,23 +142,10 @@ void VolumeView3D::showFieldVolume(const RealVolume& field, double low, double h
     image->SetDirectionMatrix(identity);
     scene.fieldMapper->SetInputData(image);
     scene.fieldVolume->SetUserMatrix(interop::scaledIndexToPatient(field.geometry()));
-    // Smoke: clear at `low`, grey-white and denser towards `high` (at most 0.6 a voxel: the far side shows through).
-    const double top = high > low ? high : low + 1.0;
-    auto opacity = vtkSmartPointer<vtkPiecewiseFunction>::New();
-    opacity->AddPoint(low, 0.0);
-    opacity->AddPoint(low + 0.05 * (top - low), 0.02);
-    opacity->AddPoint(top, 0.6);
-    auto colour = vtkSmartPointer<vtkColorTransferFunction>::New();
-    colour->AddRGBPoint(low, 0.45, 0.45, 0.47);
-    colour->AddRGBPoint(top, 0.95, 0.95, 0.92);
-    auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-    property->SetScalarOpacity(opacity);
-    property->SetColor(colour);
-    property->SetInterpolationTypeToLinear();
-    property->ShadeOff();
+    const vtkSmartPointer<vtkVolumeProperty> property = detail::smokeProperty(low, high);
     scene.fieldVolume->SetProperty(property);
     scene.fieldVolume->VisibilityOn();
-    showLegend(colour, legendTitle);
+    showLegend(property->GetRGBTransferFunction(), legendTitle);
     // A new box (a new run): frame it.
     const VolumeGeometry& geometry = field.geometry();
     const Eigen::Vector3d first = geometry.indexToPatient(Eigen::Vector3d::Zero());
