@@ -16,6 +16,8 @@ for binary in $binaries; do
     ldd "$binary" | awk '/=> \// {print $3}' | grep -v -E '/(libc|libm|libgcc_s|libstdc\+\+|libpthread|libdl|librt)\.so' |
         xargs -r -I{} cp -L -n {} "$out/lib/"
 done
+# The GPU plugin (tst_gpu_plugin loads it from $VASCUSIM_GPU_PLUGIN=.dev/gpu/libvascusim-gpu.so there).
+[ ! -f "$build/lib/vascusim/libvascusim-gpu.so" ] || cp "$build/lib/vascusim/libvascusim-gpu.so" "$out/"
 du -sh "$out"
 # The GPU tests need no fast BLAS (SuiteSparse's CPU solves are not what they measure): the reference BLAS and
 # LAPACK instead of OpenBLAS (36 MB) keep the bundle under the device tool's 64 MiB.

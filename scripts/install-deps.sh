@@ -26,6 +26,8 @@ PACKAGES=(
     dcm2niix python3-numpy python3-skimage calculix-ccx
     # a real PACS for the DICOM network tests (started by the tests themselves on loopback ports)
     orthanc
+    # the package test: Debian's package checker on the built .deb
+    lintian
     # sparse direct solvers of the wall analysis (CHOLMOD, UMFPACK) and a fast BLAS under them
     libsuitesparse-dev libopenblas0-pthread
 )

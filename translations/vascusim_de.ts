@@ -4970,6 +4970,225 @@ Ersetzen?</translation>
         <source>Liver ablation</source>
         <translation>Leberablation</translation>
     </message>
+    <message>
+        <source>Query/Retrieve (&amp;PACS)...</source>
+        <translation>Suchen/Abrufen (&amp;PACS)...</translation>
+    </message>
+    <message>
+        <source>Retrieve from PACS</source>
+        <translation>Aus dem PACS abrufen</translation>
+    </message>
+    <message>
+        <source>Open or create a study first: the retrieved CT is imported into it.</source>
+        <translation>Öffnen oder erstellen Sie zuerst eine Studie: Das abgerufene CT wird in sie importiert.</translation>
+    </message>
+    <message>
+        <source>Retrieve %1 from PACS</source>
+        <translation>%1 aus dem PACS abrufen</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::PacsDialog</name>
+    <message>
+        <source>Query/Retrieve (PACS)</source>
+        <translation>Suchen/Abrufen (PACS)</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patient</translation>
+    </message>
+    <message>
+        <source>Patient ID</source>
+        <translation>Patienten-ID</translation>
+    </message>
+    <message>
+        <source>Study date</source>
+        <translation>Studiendatum</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Accession</source>
+        <translation>Zugangsnummer</translation>
+    </message>
+    <message>
+        <source>Modalities</source>
+        <translation>Modalitäten</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>Serien</translation>
+    </message>
+    <message>
+        <source>Choose or enter a PACS node, then Echo or Search.</source>
+        <translation>Einen PACS-Knoten wählen oder eingeben, dann Echo oder Suchen.</translation>
+    </message>
+    <message>
+        <source>Retrieve and Import</source>
+        <translation>Abrufen und importieren</translation>
+    </message>
+    <message>
+        <source>Fetch the selected study (C-GET) and import its CT into the open study</source>
+        <translation>Die gewählte Studie abrufen (C-GET) und ihr CT in die offene Studie importieren</translation>
+    </message>
+    <message>
+        <source>PACS node</source>
+        <translation>PACS-Knoten</translation>
+    </message>
+    <message>
+        <source>Saved:</source>
+        <translation>Gespeichert:</translation>
+    </message>
+    <message>
+        <source>e.g. Radiology PACS</source>
+        <translation>z. B. Radiologie-PACS</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>AE title:</source>
+        <translation>AE-Titel:</translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation>Host:</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <source>Our AE title, as the PACS has it registered</source>
+        <translation>Unser AE-Titel, wie er im PACS eingetragen ist</translation>
+    </message>
+    <message>
+        <source>Our AE title:</source>
+        <translation>Unser AE-Titel:</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Timeout:</source>
+        <translation>Zeitlimit:</translation>
+    </message>
+    <message>
+        <source>empty: UUID-based UIDs (2.25...)</source>
+        <translation>leer: UIDs aus UUIDs (2.25...)</translation>
+    </message>
+    <message>
+        <source>The organisation&apos;s DICOM UID root for the reports and segmentations VascuSim makes</source>
+        <translation>Die DICOM-UID-Wurzel der Einrichtung für die Berichte und Segmentierungen, die VascuSim erzeugt</translation>
+    </message>
+    <message>
+        <source>UID root:</source>
+        <translation>UID-Wurzel:</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Echo</source>
+        <translation>Echo</translation>
+    </message>
+    <message>
+        <source>Test the connection (C-ECHO)</source>
+        <translation>Die Verbindung prüfen (C-ECHO)</translation>
+    </message>
+    <message>
+        <source>Find studies</source>
+        <translation>Studien suchen</translation>
+    </message>
+    <message>
+        <source>e.g. DOE^J* (wildcards * and ?)</source>
+        <translation>z. B. MUSTER^M* (Platzhalter * und ?)</translation>
+    </message>
+    <message>
+        <source>Patient name:</source>
+        <translation>Patientenname:</translation>
+    </message>
+    <message>
+        <source>Patient ID:</source>
+        <translation>Patienten-ID:</translation>
+    </message>
+    <message>
+        <source>YYYYMMDD</source>
+        <translation>JJJJMMTT</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <source>Study date:</source>
+        <translation>Studiendatum:</translation>
+    </message>
+    <message>
+        <source>Modality:</source>
+        <translation>Modalität:</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Give the node a name to save it.</source>
+        <translation>Geben Sie dem Knoten einen Namen, um ihn zu speichern.</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>Echo to %1...</source>
+        <translation>Echo an %1...</translation>
+    </message>
+    <message>
+        <source>%1 answers the echo.</source>
+        <translation>%1 antwortet auf das Echo.</translation>
+    </message>
+    <message>
+        <source>Echo failed: %1</source>
+        <translation>Echo gescheitert: %1</translation>
+    </message>
+    <message>
+        <source>A study date is YYYYMMDD (8 digits).</source>
+        <translation>Ein Studiendatum ist JJJJMMTT (8 Ziffern).</translation>
+    </message>
+    <message>
+        <source>Searching %1...</source>
+        <translation>Suche in %1...</translation>
+    </message>
+    <message>
+        <source>Search failed: %1</source>
+        <translation>Suche gescheitert: %1</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>Studies found: %1.</source>
+        <translation>Gefundene Studien: %1.</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ParameterForm</name>

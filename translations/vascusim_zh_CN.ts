@@ -4968,6 +4968,225 @@ Replace them?</source>
         <source>Liver ablation</source>
         <translation>肝消融</translation>
     </message>
+    <message>
+        <source>Query/Retrieve (&amp;PACS)...</source>
+        <translation>查询/获取 (&amp;PACS)...</translation>
+    </message>
+    <message>
+        <source>Retrieve from PACS</source>
+        <translation>从 PACS 获取</translation>
+    </message>
+    <message>
+        <source>Open or create a study first: the retrieved CT is imported into it.</source>
+        <translation>请先打开或创建一个研究：获取的 CT 将导入其中。</translation>
+    </message>
+    <message>
+        <source>Retrieve %1 from PACS</source>
+        <translation>从 PACS 获取 %1</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::PacsDialog</name>
+    <message>
+        <source>Query/Retrieve (PACS)</source>
+        <translation>查询/获取 (PACS)</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>患者</translation>
+    </message>
+    <message>
+        <source>Patient ID</source>
+        <translation>患者 ID</translation>
+    </message>
+    <message>
+        <source>Study date</source>
+        <translation>检查日期</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>描述</translation>
+    </message>
+    <message>
+        <source>Accession</source>
+        <translation>检查号</translation>
+    </message>
+    <message>
+        <source>Modalities</source>
+        <translation>模态</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>序列</translation>
+    </message>
+    <message>
+        <source>Choose or enter a PACS node, then Echo or Search.</source>
+        <translation>选择或输入 PACS 节点，然后执行 Echo 或搜索。</translation>
+    </message>
+    <message>
+        <source>Retrieve and Import</source>
+        <translation>获取并导入</translation>
+    </message>
+    <message>
+        <source>Fetch the selected study (C-GET) and import its CT into the open study</source>
+        <translation>获取所选研究（C-GET）并将其 CT 导入当前打开的研究</translation>
+    </message>
+    <message>
+        <source>PACS node</source>
+        <translation>PACS 节点</translation>
+    </message>
+    <message>
+        <source>Saved:</source>
+        <translation>已保存：</translation>
+    </message>
+    <message>
+        <source>e.g. Radiology PACS</source>
+        <translation>例如 放射科 PACS</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>名称：</translation>
+    </message>
+    <message>
+        <source>AE title:</source>
+        <translation>AE 标题：</translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation>主机：</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>端口：</translation>
+    </message>
+    <message>
+        <source>Our AE title, as the PACS has it registered</source>
+        <translation>PACS 中登记的我方 AE 标题</translation>
+    </message>
+    <message>
+        <source>Our AE title:</source>
+        <translation>我方 AE 标题：</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>Timeout:</source>
+        <translation>超时：</translation>
+    </message>
+    <message>
+        <source>empty: UUID-based UIDs (2.25...)</source>
+        <translation>留空：基于 UUID 的 UID (2.25...)</translation>
+    </message>
+    <message>
+        <source>The organisation&apos;s DICOM UID root for the reports and segmentations VascuSim makes</source>
+        <translation>本机构用于 VascuSim 生成的报告和分割的 DICOM UID 根</translation>
+    </message>
+    <message>
+        <source>UID root:</source>
+        <translation>UID 根：</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>保存</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Echo</source>
+        <translation>Echo</translation>
+    </message>
+    <message>
+        <source>Test the connection (C-ECHO)</source>
+        <translation>测试连接（C-ECHO）</translation>
+    </message>
+    <message>
+        <source>Find studies</source>
+        <translation>查找研究</translation>
+    </message>
+    <message>
+        <source>e.g. DOE^J* (wildcards * and ?)</source>
+        <translation>例如 DOE^J*（通配符 * 和 ?）</translation>
+    </message>
+    <message>
+        <source>Patient name:</source>
+        <translation>患者姓名：</translation>
+    </message>
+    <message>
+        <source>Patient ID:</source>
+        <translation>患者 ID：</translation>
+    </message>
+    <message>
+        <source>YYYYMMDD</source>
+        <translation>YYYYMMDD</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>至</translation>
+    </message>
+    <message>
+        <source>Study date:</source>
+        <translation>检查日期：</translation>
+    </message>
+    <message>
+        <source>Modality:</source>
+        <translation>模态：</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>搜索</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>Give the node a name to save it.</source>
+        <translation>请为节点命名后再保存。</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>未保存：%1</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>已保存 %1。</translation>
+    </message>
+    <message>
+        <source>Echo to %1...</source>
+        <translation>向 %1 发送 Echo...</translation>
+    </message>
+    <message>
+        <source>%1 answers the echo.</source>
+        <translation>%1 响应了 Echo。</translation>
+    </message>
+    <message>
+        <source>Echo failed: %1</source>
+        <translation>Echo 失败：%1</translation>
+    </message>
+    <message>
+        <source>A study date is YYYYMMDD (8 digits).</source>
+        <translation>检查日期格式为 YYYYMMDD（8 位数字）。</translation>
+    </message>
+    <message>
+        <source>Searching %1...</source>
+        <translation>正在搜索 %1...</translation>
+    </message>
+    <message>
+        <source>Search failed: %1</source>
+        <translation>搜索失败：%1</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1，%2</translation>
+    </message>
+    <message>
+        <source>Studies found: %1.</source>
+        <translation>找到的研究：%1。</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ParameterForm</name>

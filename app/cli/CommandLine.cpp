@@ -1,5 +1,8 @@
 #include "CommandLine.h"
 
+#include "vsim/core/DicomUid.h"
+#include "vsim/core/Error.h"
+
 #include <algorithm>
 #include <set>
 
@@ -109,10 +112,27 @@ Arguments parseArguments(const CommandSpec& spec, const std::vector<std::string>
     return arguments;
 }
 
+void applyProcessOptions(const Arguments& arguments)
+{
+    // The commands that make DICOM objects take --uid-root (vsim/core/DicomUid.h): the organisation's UID root.
+    if (!arguments.hasOption("uid-root"))
+        return;
+    try
+    {
+        setDicomUidRoot(arguments.option("uid-root"));
+    }
+    catch (const Error& error)
+    {
+        throw UsageError(std::string("--uid-root: ") + error.what());
+    }
+}
+
 int runCommandLine(const std::vector<std::string>& words, const Progress& progress)
 {
     const CommandSpec& spec = findCommand(words);
-    return spec.run(parseArguments(spec, {words.begin() + 1, words.end()}), progress);
+    const Arguments arguments = parseArguments(spec, {words.begin() + 1, words.end()});
+    applyProcessOptions(arguments);
+    return spec.run(arguments, progress);
 }
 
 double quantityOption(const Arguments& arguments, const std::string& option, const std::string& unit, double fallback)

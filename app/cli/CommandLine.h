@@ -54,6 +54,9 @@ std::string usageText();
 /// Parses the words after the command name (the subcommand included) against `spec`; --name=value is accepted
 /// too. Throws UsageError as the header says.
 Arguments parseArguments(const CommandSpec& spec, const std::vector<std::string>& words);
+/// Applies the options that set process-wide state before a command runs (--uid-root); throws UsageError for a bad
+/// value.
+void applyProcessOptions(const Arguments& arguments);
 /// Runs `words` (a command name and its arguments) as vascusim-cli would; returns its exit code and throws what
 /// the command throws (UsageError for bad usage).
 int runCommandLine(const std::vector<std::string>& words, const Progress& progress);

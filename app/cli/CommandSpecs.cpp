@@ -24,6 +24,8 @@ OptionSpec required(const std::string& name) { return {name, Arity::Value, true}
 const OptionSpec kWait = value("wait");
 const OptionSpec kParam = repeatable("param");
 const OptionSpec kStudy = required("study");
+/// The organisation's DICOM UID root for the objects a command makes (runCommandLine applies it).
+const OptionSpec kUidRoot = value("uid-root");
 
 std::vector<CommandSpec> declareCommands()
 {
@@ -91,8 +93,8 @@ std::vector<CommandSpec> declareCommands()
          "measure --study <study.vsim> [--centerlines ID] [--label ID] [--json FILE [--overwrite]] [--param key=value ...]\n"
          "    cross-sections, lengths, radii, maximum diameter, stenosis (reads the study only)",
          measureStudy},
-        {"export-label", 0, 0, {kStudy, value("label"), required("out"), flag("overwrite")},
-         "export-label --study <study.vsim> [--label ID] --out FILE.dcm [--overwrite]\n"
+        {"export-label", 0, 0, {kStudy, value("label"), required("out"), flag("overwrite"), kUidRoot},
+         "export-label --study <study.vsim> [--label ID] --out FILE.dcm [--overwrite] [--uid-root ROOT]\n"
          "    a label as a DICOM SEG (one segment per value: lumen 1, a sac's thrombus 4 and wall 5) in the CT's\n"
          "    study and frame of reference, for PACS, 3D Slicer or a vendor workstation (reads the study only)",
          exportLabelFromStudy},
@@ -218,11 +220,23 @@ std::vector<CommandSpec> declareCommands()
          pacsFindCommand},
         {"pacs get", 1, 1,
          {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout"), required("study-uid"),
-          required("out")},
-         "pacs get --aet AE --host HOST --port N --study-uid UID --out DIR [--calling-aet VASCUSIM] [--timeout 30]\n"
+          required("out"), value("move")},
+         "pacs get --aet AE --host HOST --port N --study-uid UID --out DIR [--move PORT] [--calling-aet VASCUSIM]\n"
+         "         [--timeout 30]\n"
          "    C-GET of a study (CT, enhanced CT, SEG, encapsulated PDF, secondary capture) into DIR/dicom (DIR new,\n"
-         "    empty or VascuSim's); a failed or partial transfer leaves no files. Then: import DIR/dicom --study S",
+         "    empty or VascuSim's); a failed, partial or cancelled transfer leaves no files. --move PORT: by C-MOVE\n"
+         "    instead, to our own listener on PORT (the PACS must know our AE title there). Then: import DIR/dicom\n"
+         "    --study S (a series already in S is recognised and not imported twice)",
          pacsGetCommand},
+        {"pacs store", 2, 100000,
+         {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout"), value("anonymized"),
+          kUidRoot},
+         "pacs store FILE.dcm... --aet AE --host HOST --port N [--anonymized refuse|new-study] [--uid-root ROOT]\n"
+         "          [--calling-aet VASCUSIM] [--timeout 30]\n"
+         "    C-STORE of DICOM files (the report's --dicom-pdf, export-label's SEG) into the study each names.\n"
+         "    Every file is checked first: a de-identified one (report --anonymize) is refused, nothing sent, unless\n"
+         "    --anonymized new-study, which stores it as a new study under new UIDs (the file is not changed)",
+         pacsStoreCommand},
         {"validate", 1, 1, {},
          "validate <case|fem|network|sph|heat|all>\n"
          "    analytic validation (JSON) of the wall solver (fem-patch, fem-rotation, fem-cantilever, fem-lame,\n"
@@ -233,12 +247,15 @@ std::vector<CommandSpec> declareCommands()
          validateSolvers},
         {"report", 0, 0,
          {kStudy, required("out"), value("sections"), value("page"), value("dicom-pdf"), flag("anonymize"),
-          value("metrics-csv"), value("metrics-json"), flag("no-validation"), flag("overwrite"), value("language"), kWait},
+          value("metrics-csv"), value("metrics-json"), flag("no-validation"), flag("overwrite"), value("language"), kWait,
+          kUidRoot},
          "report --study <study.vsim> --out <report.pdf> [--sections aaa,stenosis,chemoembolization,smoke,measurements,runs]\n"
          "       [--page a4|letter] [--dicom-pdf <out.dcm>] [--anonymize] [--metrics-csv F] [--metrics-json F]\n"
-         "       [--no-validation] [--overwrite] [--language en|de|zh_CN|<catalogue.qm>]\n"
+         "       [--no-validation] [--overwrite] [--language en|de|zh_CN|<catalogue.qm>] [--uid-root ROOT]\n"
          "    the clinical report (PDF) in English (default), German or Simplified Chinese (or a compiled\n"
-         "    translation); existing output files are replaced only with --overwrite",
+         "    translation); existing output files are replaced only with --overwrite. --anonymize: no patient\n"
+         "    identifiers, and the DICOM PDF is its own new study (Patient Identity Removed YES). --uid-root: the\n"
+         "    organisation's DICOM UID root (default: 2.25 UUID UIDs)",
          writeReport},
         {"demo", 0, 0, {required("out"), value("size")},
          "demo --out <dir> [--size 512x512x400]\n"

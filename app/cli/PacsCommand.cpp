@@ -10,17 +10,22 @@
 namespace vsim::cli {
 namespace {
 
+int portNumber(const std::string& text, const std::string& option)
+{
+    char* end = nullptr;
+    const long number = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || number < 1 || number > 65535)
+        throw UsageError(option + ": a TCP port from 1 to 65535, not '" + text + "'");
+    return int(number);
+}
+
 dicom::PacsNode nodeFrom(const Arguments& arguments)
 {
     dicom::PacsNode node;
     node.calledAeTitle = arguments.option("aet");
     node.host = arguments.option("host");
-    const std::string port = arguments.option("port");
+    node.port = portNumber(arguments.option("port"), "--port");
     char* end = nullptr;
-    const long number = std::strtol(port.c_str(), &end, 10);
-    if (port.empty() || *end != '\0' || number < 1 || number > 65535)
-        throw UsageError("--port: a TCP port from 1 to 65535, not '" + port + "'");
-    node.port = int(number);
     node.callingAeTitle = arguments.option("calling-aet", node.callingAeTitle);
     if (arguments.hasOption("timeout"))
     {
@@ -86,14 +91,42 @@ int pacsGetCommand(const Arguments& arguments, const Progress& progress)
     checkOutputFolder(out, "pacs retrieve");
     claimOutputFolder(out, "pacs retrieve");
     const std::filesystem::path folder = out / "dicom";
-    const std::vector<std::filesystem::path> files = dicom::retrieveStudy(node, arguments.option("study-uid"), folder, progress);
+    const std::string studyUid = arguments.option("study-uid");
+    const int movePort = arguments.hasOption("move") ? portNumber(arguments.option("move"), "--move") : 0;
+    const std::vector<std::filesystem::path> files = movePort > 0
+                                                         ? dicom::moveStudy(node, studyUid, folder, movePort, progress)
+                                                         : dicom::retrieveStudy(node, studyUid, folder, progress);
     std::cout << nlohmann::json{{"pacs", dicom::describe(node)},
+                                {"retrieve", movePort > 0 ? "C-MOVE to port " + std::to_string(movePort) : "C-GET"},
                                 {"study_instance_uid", arguments.option("study-uid")},
                                 {"files", files.size()},
                                 {"folder", folder.string()},
                                 {"next", "vascusim-cli import " + folder.string() + " --study <study.vsim>"}}
                      .dump(2)
               << "\n";
+    return 0;
+}
+
+int pacsStoreCommand(const Arguments& arguments, const Progress& progress)
+{
+    const dicom::PacsNode node = nodeFrom(arguments);
+    const std::string anonymized = arguments.option("anonymized", "refuse");
+    if (anonymized != "refuse" && anonymized != "new-study")
+        throw UsageError("--anonymized: refuse or new-study, not '" + anonymized + "'");
+    const std::vector<std::filesystem::path> files(arguments.positional.begin() + 1, arguments.positional.end());
+    const std::vector<dicom::StoredObject> stored = dicom::storeFiles(
+        node, files, anonymized == "new-study" ? dicom::AnonymizedObjects::NewStudy : dicom::AnonymizedObjects::Refuse,
+        progress);
+    nlohmann::json objects = nlohmann::json::array();
+    for (const dicom::StoredObject& object : stored)
+        objects.push_back({{"file", object.file.string()},
+                           {"modality", object.modality},
+                           {"sop_class_uid", object.sopClassUid},
+                           {"sop_instance_uid", object.sopInstanceUid},
+                           {"series_instance_uid", object.seriesInstanceUid},
+                           {"study_instance_uid", object.studyInstanceUid},
+                           {"as_new_study", object.asNewStudy}});
+    std::cout << nlohmann::json{{"pacs", dicom::describe(node)}, {"stored", objects}}.dump(2) << "\n";
     return 0;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 
-// vascusim-cli pacs echo | find | get (issue 22): a PACS node given by --aet, --host and --port.
+// vascusim-cli pacs echo | find | get | store (issue 22): a PACS node given by --aet, --host and --port.
 
 #include "CommandLine.h"
 #include "vsim/core/Progress.h"
@@ -11,7 +11,10 @@ namespace vsim::cli {
 int pacsEchoCommand(const Arguments& arguments, const Progress& progress);
 /// Study-level C-FIND with --patient-name, --patient-id, --date FROM-TO (YYYYMMDD), --modality; prints the matches.
 int pacsFindCommand(const Arguments& arguments, const Progress& progress);
-/// C-GET of --study-uid into <--out>/dicom (--out new, empty or VascuSim's); prints the files' count and folder.
+/// C-GET (or C-MOVE with --move PORT) of --study-uid into <--out>/dicom (--out new, empty or VascuSim's); prints the
+/// files' count and folder.
 int pacsGetCommand(const Arguments& arguments, const Progress& progress);
+/// C-STORE of the positional files (--anonymized refuse|new-study); prints what was stored, in which study.
+int pacsStoreCommand(const Arguments& arguments, const Progress& progress);
 
 } // namespace vsim::cli

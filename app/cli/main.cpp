@@ -60,6 +60,7 @@ int main(int argc, char** argv)
             return 0;
         }
         const vsim::cli::Arguments arguments = vsim::cli::parseArguments(spec, rest);
+        vsim::cli::applyProcessOptions(arguments);
         vsim::study::setLockProgramName("vascusim-cli " + spec.name);
         return spec.run(arguments, progress);
     }

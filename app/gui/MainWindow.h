@@ -17,6 +17,7 @@
 #include "vsim/core/TetMesh.h"
 #include "vsim/core/TriangleMesh.h"
 #include "vsim/dicom/DicomScan.h"
+#include "vsim/dicom/PacsClient.h"
 #include "vsim/imaging/GuidedSegmentation.h"
 #include "vsim/viz/BrushMode.h"
 
@@ -90,6 +91,12 @@ public:
                      std::shared_ptr<const dicom::DicomScanResult> scan = {});
     /// Opens the Import DICOM dialog and imports what the user picks.
     void showDicomImportDialog();
+    /// Opens File > Query/Retrieve (PACS); Retrieve runs retrieveFromPacs on the chosen study.
+    void showPacsDialog();
+    /// Fetches the study from the node (C-GET) into VascuSim's PACS folder, then imports its CT like importDicom; in
+    /// the background with progress and Cancel (a cancelled or failed fetch leaves no files). False when refused
+    /// (no study open, busy).
+    bool retrieveFromPacs(const dicom::PacsNode& node, const QString& studyUid, const QString& label = {});
     /// Runs a step of the workflow checklist as its menu entry does; false when refused (no study, busy, missing
     /// input: the message says which).
     bool runWorkflowStep(app::WorkflowStep step);

@@ -2,6 +2,7 @@
 // study (written on first use under ~/.local/share/VascuSim).
 #include "Languages.h"
 #include "MainWindow.h"
+#include "PacsNodes.h"
 #include "vsim/app/DemoStudy.h"
 
 #include <QApplication>
@@ -25,6 +26,7 @@ int main(int argc, char** argv)
     QApplication::setOrganizationName("VascuSim");
     QApplication::setApplicationName("VascuSim");
     vsim::gui::installLanguage(vsim::gui::chosenLanguage());
+    vsim::gui::applySavedUidRoot();
 
     QCommandLineParser parser;
     parser.setApplicationDescription("VascuSim clinical planning workstation");

@@ -2,9 +2,19 @@
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 run_cli(0 version --version)
-foreach(component VascuSim Qt VTK ITK DCMTK Eigen "CUDA runtime" GPU)
+foreach(component VascuSim Qt VTK ITK DCMTK Eigen "GPU plugin" "CUDA runtime" GPU)
     if(NOT version MATCHES "${component} [^\n]+")
         message(FATAL_ERROR "--version does not name ${component}:\n${version}")
+    endif()
+endforeach()
+# The GPU plugin (app/common/src/GpuPlugin.h): a file that is not one is refused, an absent one is 'not installed';
+# either way the CLI runs, on the CPU.
+foreach(plugin ${CLI} ${WORK}/no-such-plugin.so)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E env VASCUSIM_GPU_PLUGIN=${plugin} ${CLI} --version
+                    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT code EQUAL 0 OR NOT out MATCHES "GPU plugin (refused: [^\n]*does not load|not installed)"
+       OR NOT out MATCHES "GPU not used: every solver runs on the CPU")
+        message(FATAL_ERROR "--version with VASCUSIM_GPU_PLUGIN=${plugin}: exit ${code}\n${out}\n${err}")
     endif()
 endforeach()
 

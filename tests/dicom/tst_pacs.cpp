@@ -3,8 +3,11 @@
 // with DCMTK's storescu (another implementation than ours), then: C-ECHO; C-FIND at the study level by patient ID,
 // by a name with a wildcard, by modality and by a date range, each against what was uploaded; the failures (a
 // wrong called AE title, a port where nothing listens, an unknown calling AE on a strict server) give messages
-// that say what to fix; `vascusim-cli pacs echo|find` the same way, with its exit codes. Skips, saying so, where
-// Orthanc is not installed (scripts/install-deps.sh installs it).
+// that say what to fix; `vascusim-cli pacs echo|find` the same way, with its exit codes. The round trip through
+// the CLI: find -> get -> import -> segment -> report -> store the report's PDF and the labels' SEG into the
+// patient's study -> find them -> get them back -> dcmdump them; an anonymized report refused, then stored as a new
+// study on request; the UID root applied. Skips, saying so, where Orthanc is not installed (scripts/install-deps.sh
+// installs it).
 
 #include "DicomFixtures.h"
 #include "OrthancServer.h"
@@ -12,6 +15,9 @@
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PacsClient.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QtTest>
 
@@ -19,26 +25,13 @@ using namespace vsim;
 
 namespace {
 
-/// Sends the files with storescu (DCMTK's C-STORE SCU) from AE title VASCUSIM; returns its exit code.
-int storeWithStorescu(const dicom::PacsNode& node, const std::vector<std::filesystem::path>& files)
-{
-    QStringList arguments{"-aet", QString::fromStdString(node.callingAeTitle), "-aec", QString::fromStdString(node.calledAeTitle),
-                          QString::fromStdString(node.host), QString::number(node.port)};
-    for (const std::filesystem::path& file : files)
-        arguments << QString::fromStdString(file.string());
-    QProcess storescu;
-    storescu.start("storescu", arguments);
-    storescu.waitForFinished(60000);
-    return storescu.exitStatus() == QProcess::NormalExit ? storescu.exitCode() : -1;
-}
-
 /// Starts an Orthanc in the suite's folder `name`; null (and `failure` set) when it does not start.
-std::unique_ptr<test::OrthancServer> startOrthanc(const char* name, bool strict, QString& failure)
+std::unique_ptr<test::OrthancServer> startOrthanc(const char* name, bool strict, QString& failure, int vascusimPort = 11112)
 {
     try
     {
         return std::make_unique<test::OrthancServer>(std::filesystem::path(test::outputFolder("pacs").toStdString()) / name,
-                                                     strict);
+                                                     strict, vascusimPort);
     }
     catch (const Error& error)
     {
@@ -60,6 +53,43 @@ CliResult runCli(const QStringList& arguments)
     cli.start(VSIM_CLI, arguments);
     cli.waitForFinished(120000);
     return {cli.exitStatus() == QProcess::NormalExit ? cli.exitCode() : -1, QString::fromUtf8(cli.readAll())};
+}
+
+/// Every value of `tag` ("0008,0060") that dcmdump lists in `file`, nested sequences included, top level first.
+QStringList dumpedValues(const QString& file, const QString& tag)
+{
+    QProcess dcmdump;
+    dcmdump.start("dcmdump", {"-Un", "+P", tag, file}); // -Un: UIDs as numbers, not names
+    dcmdump.waitForFinished(30000);
+    QStringList values;
+    for (const QString& line : QString::fromUtf8(dcmdump.readAllStandardOutput()).split('\n', Qt::SkipEmptyParts))
+    {
+        const qsizetype open = line.indexOf('['), close = line.indexOf(']');
+        if (open >= 0 && close > open)
+            values << line.mid(open + 1, close - open - 1);
+    }
+    return values;
+}
+
+QString dumpedValue(const QString& file, const QString& tag)
+{
+    const QStringList values = dumpedValues(file, tag);
+    return values.isEmpty() ? QString() : values[0];
+}
+
+/// The one file of `folder` whose Modality is `modality`.
+QString fileOfModality(const QString& folder, const QString& modality)
+{
+    QStringList matches;
+    for (const QString& name : QDir(folder).entryList(QDir::Files))
+        if (dumpedValue(folder + "/" + name, "0008,0060") == modality)
+            matches << folder + "/" + name;
+    return matches.size() == 1 ? matches[0] : QString();
+}
+
+QJsonObject jsonOf(const QString& output)
+{
+    return QJsonDocument::fromJson(output.mid(output.indexOf('{')).toUtf8()).object();
 }
 
 QString errorOf(const std::function<void()>& call)
@@ -105,7 +135,7 @@ private slots:
         description.studyDate = "20261115";
         const test::PhantomSeries series = test::writePhantomSeries(dicom::PhantomKind::Aaa, test::smallPhantomOptions(),
                                                                     test::freshFolder("pacs", "series"), description);
-        QCOMPARE(storeWithStorescu(node, series.written.files), 0);
+        QCOMPARE(orthanc->uploadWithStorescu(series.written.files), 0);
 
         dicom::StudyQuery byId;
         byId.patientId = "PACS-TEST-1";
@@ -160,7 +190,7 @@ private slots:
         description.patientId = "PACS-CLI-1";
         const test::PhantomSeries series = test::writePhantomSeries(dicom::PhantomKind::Stenosis, test::smallPhantomOptions(),
                                                                     test::freshFolder("pacs", "cli-series"), description);
-        QCOMPARE(storeWithStorescu(node, series.written.files), 0);
+        QCOMPARE(orthanc->uploadWithStorescu(series.written.files), 0);
         CliResult find = runCli(QStringList{"pacs", "find", "--patient-id", "PACS-CLI-1"} + where);
         QVERIFY2(find.code == 0 && find.output.contains(QString::fromStdString(series.written.studyInstanceUid)),
                  qPrintable(find.output));
@@ -174,6 +204,9 @@ private slots:
         const QString study = QString::fromStdString(test::freshFolder("pacs", "cli-study").string()) + "/retrieved.vsim";
         CliResult imported = runCli({"import", out + "/dicom", "--study", study});
         QVERIFY2(imported.code == 0, qPrintable(imported.output));
+        // Fetched twice: recognised by its Series Instance UID, not imported again.
+        CliResult twice = runCli({"import", out + "/dicom", "--study", study});
+        QVERIFY2(twice.code == 1 && twice.output.contains("already in the study"), qPrintable(twice.output));
         CliResult again = runCli(QStringList{"pacs", "get", "--study-uid", QString::fromStdString(series.written.studyInstanceUid),
                                              "--out", out} + where);
         QVERIFY2(again.code == 1 && again.output.contains("not empty"), qPrintable(again.output));
@@ -184,6 +217,152 @@ private slots:
         QVERIFY2(badPort.code == 2 && badPort.output.contains("--port"), qPrintable(badPort.output));
         CliResult badDate = runCli(QStringList{"pacs", "find", "--date", "2026-11-01"} + where);
         QVERIFY2(badDate.code == 2 && badDate.output.contains("--date"), qPrintable(badDate.output));
+    }
+
+    void roundTripThroughTheCli()
+    {
+        QString failure;
+        const std::unique_ptr<test::OrthancServer> orthanc = startOrthanc("orthanc-round-trip", false, failure);
+        QVERIFY2(orthanc, qPrintable(failure));
+        const QStringList where{"--aet", "ORTHANC", "--host", "127.0.0.1", "--port", QString::number(orthanc->node().port)};
+        dicom::CtSeriesDescription description;
+        description.patientName = "ROUND^TRIP";
+        description.patientId = "PACS-ROUND-1";
+        const test::PhantomSeries series = test::writePhantomSeries(dicom::PhantomKind::Stenosis, test::smallPhantomOptions(),
+                                                                    test::freshFolder("pacs", "round-series"), description);
+        QCOMPARE(orthanc->uploadWithStorescu(series.written.files), 0);
+        const QString studyUid = QString::fromStdString(series.written.studyInstanceUid);
+        const QString work = QString::fromStdString(test::freshFolder("pacs", "round-trip").string());
+
+        // find -> get -> import -> segment -> report (DICOM PDF) and the label as SEG, under our UID root.
+        CliResult find = runCli(QStringList{"pacs", "find", "--patient-id", "PACS-ROUND-1"} + where);
+        QVERIFY2(find.code == 0 && find.output.contains(studyUid), qPrintable(find.output));
+        CliResult get = runCli(QStringList{"pacs", "get", "--study-uid", studyUid, "--out", work + "/get"} + where);
+        QVERIFY2(get.code == 0, qPrintable(get.output));
+        const QString study = work + "/patient.vsim";
+        for (const QStringList& step : {QStringList{"import", work + "/get/dicom", "--study", study},
+                                        QStringList{"segment", "--study", study},
+                                        QStringList{"report", "--study", study, "--out", work + "/report.pdf", "--dicom-pdf",
+                                                    work + "/report.dcm", "--uid-root", "1.2.826.0.1.3680043.10.999"},
+                                        QStringList{"report", "--study", study, "--out", work + "/anonymous.pdf",
+                                                    "--dicom-pdf", work + "/anonymous.dcm", "--anonymize"},
+                                        QStringList{"export-label", "--study", study, "--out", work + "/labels.dcm"}})
+        {
+            const CliResult result = runCli(step);
+            QVERIFY2(result.code == 0, qPrintable(step.join(' ') + ": " + result.output));
+        }
+
+        // store: both into the patient's study; then the PACS lists them there.
+        CliResult store = runCli(QStringList{"pacs", "store", work + "/report.dcm", work + "/labels.dcm"} + where);
+        QVERIFY2(store.code == 0, qPrintable(store.output));
+        const QJsonArray stored = jsonOf(store.output)["stored"].toArray();
+        QCOMPARE(stored.size(), 2);
+        for (const QJsonValue& object : stored)
+            QCOMPARE(object["study_instance_uid"].toString(), studyUid);
+        find = runCli(QStringList{"pacs", "find", "--patient-id", "PACS-ROUND-1"} + where);
+        const QJsonArray studies = jsonOf(find.output)["studies"].toArray();
+        QVERIFY2(find.code == 0 && studies.size() == 1, qPrintable(find.output));
+        QCOMPARE(studies[0]["series"].toInt(), 3);
+        const QString modalities = studies[0]["modalities"].toString();
+        QVERIFY2(modalities.contains("CT") && modalities.contains("DOC") && modalities.contains("SEG"), qPrintable(modalities));
+
+        // get them back and read them with dcmdump: the PDF and the SEG in the CT's study, the SEG referencing the
+        // CT series, the UIDs under the root given.
+        get = runCli(QStringList{"pacs", "get", "--study-uid", studyUid, "--out", work + "/back"} + where);
+        QVERIFY2(get.code == 0, qPrintable(get.output));
+        const QString pdf = fileOfModality(work + "/back/dicom", "DOC"), seg = fileOfModality(work + "/back/dicom", "SEG");
+        QVERIFY2(!pdf.isEmpty() && !seg.isEmpty(), "the PDF and the SEG come back, one each");
+        QCOMPARE(dumpedValue(pdf, "0008,0016"), QString("1.2.840.10008.5.1.4.1.1.104.1")); // Encapsulated PDF Storage
+        QCOMPARE(dumpedValue(pdf, "0042,0012"), QString("application/pdf"));
+        QCOMPARE(dumpedValue(pdf, "0020,000d"), studyUid);
+        QVERIFY(dumpedValue(pdf, "0008,0018").startsWith("1.2.826.0.1.3680043.10.999."));
+        QCOMPARE(dumpedValue(pdf, "0010,0020"), QString("PACS-ROUND-1"));
+        QCOMPARE(dumpedValue(seg, "0008,0016"), QString("1.2.840.10008.5.1.4.1.1.66.4")); // Segmentation Storage
+        QCOMPARE(dumpedValue(seg, "0020,000d"), studyUid);
+        QVERIFY(dumpedValues(seg, "0020,000e").contains(QString::fromStdString(series.written.seriesInstanceUid)));
+
+        // The anonymized report: refused (nothing sent), then on request a new study of its own.
+        CliResult refused = runCli(QStringList{"pacs", "store", work + "/anonymous.dcm", work + "/labels.dcm"} + where);
+        QVERIFY2(refused.code == 1 && refused.output.contains("de-identified") && refused.output.contains("Nothing was sent"),
+                 qPrintable(refused.output));
+        find = runCli(QStringList{"pacs", "find"} + where);
+        QCOMPARE(jsonOf(find.output)["studies"].toArray().size(), 1);
+        CliResult asNew = runCli(QStringList{"pacs", "store", work + "/anonymous.dcm", "--anonymized", "new-study"} + where);
+        QVERIFY2(asNew.code == 0, qPrintable(asNew.output));
+        const QJsonObject anonymous = jsonOf(asNew.output)["stored"].toArray()[0].toObject();
+        QVERIFY(anonymous["as_new_study"].toBool() && anonymous["study_instance_uid"].toString() != studyUid);
+        find = runCli(QStringList{"pacs", "find", "--patient-id", "ANONYMIZED"} + where);
+        const QJsonArray anonymousStudies = jsonOf(find.output)["studies"].toArray();
+        QVERIFY2(anonymousStudies.size() == 1 &&
+                     anonymousStudies[0]["study_instance_uid"].toString() == anonymous["study_instance_uid"].toString(),
+                 qPrintable(find.output));
+        CliResult badOption = runCli(QStringList{"pacs", "store", work + "/anonymous.dcm", "--anonymized", "keep"} + where);
+        QVERIFY2(badOption.code == 2 && badOption.output.contains("--anonymized"), qPrintable(badOption.output));
+        CliResult notDicom = runCli(QStringList{"pacs", "store", work + "/report.pdf"} + where);
+        QVERIFY2(notDicom.code == 1 && notDicom.output.contains("not a DICOM file"), qPrintable(notDicom.output));
+        CliResult badRoot = runCli({"report", "--study", study, "--out", work + "/r2.pdf", "--uid-root", "1.02.3"});
+        QVERIFY2(badRoot.code == 2 && badRoot.output.contains("--uid-root") && !QFile::exists(work + "/r2.pdf"),
+                 qPrintable(badRoot.output));
+    }
+
+    /// C-MOVE to our own listener; a destination the PACS does not know, or where nothing listens, fails and leaves
+    /// nothing; Cancel during a C-GET or a C-MOVE leaves nothing.
+    void moveToOurListenerAndCancel()
+    {
+        QString failure;
+        const int listenPort = test::freeLoopbackPort();
+        const std::unique_ptr<test::OrthancServer> orthanc = startOrthanc("orthanc-move", false, failure, listenPort);
+        QVERIFY2(orthanc, qPrintable(failure));
+        const dicom::PacsNode node = orthanc->node();
+        dicom::CtSeriesDescription description;
+        description.patientId = "PACS-MOVE-1";
+        const test::PhantomSeries series = test::writePhantomSeries(dicom::PhantomKind::Aaa, test::smallPhantomOptions(),
+                                                                    test::freshFolder("pacs", "move-series"), description);
+        QCOMPARE(orthanc->uploadWithStorescu(series.written.files), 0);
+        const std::string uid = series.written.studyInstanceUid;
+
+        const std::filesystem::path moved = test::freshFolder("pacs", "moved");
+        const std::vector<std::filesystem::path> files = dicom::moveStudy(node, uid, moved, listenPort);
+        QCOMPARE(files.size(), series.written.files.size());
+        const std::vector<dicom::DicomSeries> scanned = dicom::scanDicom(moved).series;
+        QCOMPARE(scanned.size(), std::size_t(1));
+        QCOMPARE(scanned[0].headers.size(), series.written.files.size());
+
+        const std::filesystem::path nowhere = test::freshFolder("pacs", "moved-nowhere");
+        const QString notListening = errorOf([&] { dicom::moveStudy(node, uid, nowhere, test::freeLoopbackPort()); });
+        QVERIFY2(!notListening.isEmpty() && std::filesystem::is_empty(nowhere), qPrintable(notListening));
+        dicom::PacsNode unknown = node;
+        unknown.callingAeTitle = "UNKNOWNAE";
+        const QString unknownDestination = errorOf([&] { dicom::moveStudy(unknown, uid, nowhere, listenPort); });
+        QVERIFY2(unknownDestination.contains("is our AE title UNKNOWNAE registered at the PACS") &&
+                     std::filesystem::is_empty(nowhere),
+                 qPrintable(unknownDestination));
+
+        CancellationToken token;
+        token.cancel();
+        const Progress cancelled([](double, const std::string&) {}, token);
+        for (bool move : {false, true})
+        {
+            const std::filesystem::path folder = test::freshFolder("pacs", move ? "move-cancelled" : "get-cancelled");
+            bool threw = false;
+            try
+            {
+                move ? dicom::moveStudy(node, uid, folder, listenPort, cancelled)
+                     : dicom::retrieveStudy(node, uid, folder, cancelled);
+            }
+            catch (const Cancelled&)
+            {
+                threw = true;
+            }
+            QVERIFY2(threw && std::filesystem::is_empty(folder), move ? "C-MOVE cancel" : "C-GET cancel");
+        }
+
+        const QString out = QString::fromStdString(test::freshFolder("pacs", "cli-move").string()) + "/study";
+        CliResult get = runCli({"pacs", "get", "--aet", "ORTHANC", "--host", "127.0.0.1", "--port", QString::number(node.port),
+                                "--study-uid", QString::fromStdString(uid), "--out", out, "--move", QString::number(listenPort)});
+        QVERIFY2(get.code == 0 && get.output.contains("C-MOVE") &&
+                     QDir(out + "/dicom").entryList(QDir::Files).size() == int(series.written.files.size()),
+                 qPrintable(get.output));
     }
 
     void failuresSayWhatToFix()

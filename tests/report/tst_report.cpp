@@ -205,6 +205,8 @@ private slots:
         QCOMPARE(std::string(value.c_str()), std::string("NO"));
         QVERIFY(second.getDataset()->findAndGetOFString(DCM_PatientName, value).good());
         QCOMPARE(std::string(value.c_str()), std::string("ANONYMIZED"));
+        QVERIFY(second.getDataset()->findAndGetOFString(DCM_PatientIdentityRemoved, value).good());
+        QCOMPARE(std::string(value.c_str()), std::string("YES"));
     }
 
     void metricsExportAsCsvAndJson()

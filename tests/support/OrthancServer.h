@@ -2,7 +2,7 @@
 
 // A real Orthanc (Debian package orthanc, /usr/sbin/Orthanc) for the PACS tests (issue 22): its own configuration,
 // storage and index in a fresh folder, DICOM on a free loopback port, no HTTP server, our AE title VASCUSIM
-// registered as a modality. `strict` lets only registered modalities echo, store, find, get and move (an unknown
+// registered as a modality at the port `vascusimPort` (where a C-MOVE sends to). `strict` lets only registered modalities echo, store, find, get and move (an unknown
 // AE is refused), so that a permissive server does not hide a fault. The server stops with the object, also when a
 // test fails.
 
@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace vsim::test {
 
@@ -58,7 +59,7 @@ public:
 
     /// Starts the server in `folder` (emptied first); waits until it answers an echo (15 s at most). Throws
     /// vsim::Error when it does not start.
-    OrthancServer(const std::filesystem::path& folder, bool strict)
+    OrthancServer(const std::filesystem::path& folder, bool strict, int vascusimPort = 11112)
     {
         std::filesystem::remove_all(folder);
         std::filesystem::create_directories(folder);
@@ -75,7 +76,7 @@ public:
                            {"DicomCheckModalityHost", false},
                            {"RemoteAccessAllowed", false},
                            {"Plugins", QJsonArray()},
-                           {"DicomModalities", QJsonObject{{"vascusim", QJsonArray{"VASCUSIM", "127.0.0.1", 11112}}}}};
+                           {"DicomModalities", QJsonObject{{"vascusim", QJsonArray{"VASCUSIM", "127.0.0.1", vascusimPort}}}}};
         for (const char* operation : {"Echo", "Store", "Find", "Get", "Move"})
             config.insert(QString("DicomAlwaysAllow") + operation, !strict);
         const QString path = QString::fromStdString((folder / "orthanc.json").string());
@@ -130,6 +131,22 @@ public:
         node.port = m_port;
         node.timeoutS = 10;
         return node;
+    }
+
+    /// Uploads the files with DCMTK's storescu (another C-STORE implementation than ours) from AE title VASCUSIM;
+    /// storescu's exit code (-1 when it crashed or hung for a minute).
+    int uploadWithStorescu(const std::vector<std::filesystem::path>& files) const
+    {
+        const dicom::PacsNode target = node();
+        QStringList arguments{"-aet", QString::fromStdString(target.callingAeTitle), "-aec",
+                              QString::fromStdString(target.calledAeTitle), QString::fromStdString(target.host),
+                              QString::number(target.port)};
+        for (const std::filesystem::path& file : files)
+            arguments << QString::fromStdString(file.string());
+        QProcess storescu;
+        storescu.start("storescu", arguments);
+        storescu.waitForFinished(60000);
+        return storescu.exitStatus() == QProcess::NormalExit ? storescu.exitCode() : -1;
     }
 
 private:

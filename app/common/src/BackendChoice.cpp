@@ -1,10 +1,8 @@
 #include "BackendChoice.h"
 
-#include "vsim/core/Error.h"
+#include "GpuPlugin.h"
 
-#ifdef VSIM_HAVE_CUDA
-#include "vsim/cuda_common/DeviceInfo.h"
-#endif
+#include "vsim/core/Error.h"
 
 namespace vsim::app {
 
@@ -14,16 +12,12 @@ bool chooseCuda(const std::string& requested, std::string& device)
         throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
     if (requested == "cpu")
         return false;
-#ifdef VSIM_HAVE_CUDA
-    if (!cuda::devices().empty())
+    const std::string unavailable = gpuUnavailableReason();
+    if (unavailable.empty())
     {
-        device = cuda::deviceSummary();
+        device = gpuPlugin()->deviceSummary();
         return true;
     }
-    const std::string unavailable = "there is no CUDA device";
-#else
-    const std::string unavailable = "this build has no CUDA backend (nvcc was not found when it was configured)";
-#endif
     if (requested == "cuda")
         throw Error(unavailable + ": use --backend cpu or auto");
     return false;

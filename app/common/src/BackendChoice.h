@@ -8,8 +8,8 @@
 namespace vsim::app {
 
 /// True when the run should go to the GPU: "cuda", or "auto" with a device present; `device` then names it.
-/// Throws vsim::Error for an unknown name, and for "cuda" when this build has no CUDA backend or there is no
-/// device.
+/// Throws vsim::Error for an unknown name, and for "cuda" when the GPU plugin (GpuPlugin.h) is not installed or
+/// there is no device.
 bool chooseCuda(const std::string& requested, std::string& device);
 
 } // namespace vsim::app

@@ -86,6 +86,14 @@ json seriesJson(const dicom::DicomSeries& series)
 std::string addDicomVolumeToStudy(study::Study& study, dicom::DicomVolume volume, const std::filesystem::path& source,
                                   const std::optional<HounsfieldRescale>& rescale)
 {
+    // A series fetched or imported twice is recognised: the study keeps one copy (PS3.3 C.7.3.1: the Series
+    // Instance UID names the series wherever it comes from).
+    const std::string seriesUid = attribute(volume.attributes, "series_instance_uid");
+    for (const study::Artifact& artifact : study.artifacts())
+        if (!seriesUid.empty() && artifact.kind == study::ArtifactKind::Image &&
+            attribute(artifact.attributes, "series_instance_uid") == seriesUid)
+            throw Error("this series is already in the study, as " + artifact.id + " (" + artifact.name +
+                        "): it is not imported twice");
     acceptAsHounsfield(volume.image, rescale, volume.warnings); // before the study changes: a refusal adds nothing
     adoptStudyMetadata(study, volume.attributes);
     study::Provenance provenance;

@@ -6,10 +6,7 @@
 #include "vsim/sim/common/RunDriver.h"
 
 #include "BackendChoice.h"
-
-#ifdef VSIM_HAVE_CUDA
-#include "vsim/cuda_smoke/CudaSmokeBackend.h"
-#endif
+#include "GpuPlugin.h"
 
 #include <nlohmann/json.hpp>
 
@@ -115,10 +112,8 @@ SmokeRun runSmoke(const study::Study& study, const SmokeSetup& setup, const Prog
     sim::smoke::SmokeSolver solver(std::move(scene));
     if (chooseCuda(setup.backend, result.device))
     {
-#ifdef VSIM_HAVE_CUDA
-        solver.setBackend(cuda::cudaSmokeBackendFactory());
+        solver.setBackend(gpuPlugin()->smokeBackendFactory());
         result.backend = "cuda";
-#endif
     }
     sim::RunControl control;
     control.frameEvery = setup.parameters.get("end_time_s") / std::max(1, setup.frames);

@@ -1,13 +1,10 @@
 #include "SphPipelineSupport.h"
 
 #include "BackendChoice.h"
+#include "GpuPlugin.h"
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Units.h"
-
-#ifdef VSIM_HAVE_CUDA
-#include "vsim/cuda_sph/CudaSph.h"
-#endif
 
 #include <algorithm>
 #include <queue>
@@ -98,15 +95,15 @@ sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, std::
 {
     if (!chooseCuda(requested, device))
         return {};
-#ifdef VSIM_HAVE_CUDA
+    const sim::sph::SphStepperFactory gpuStepper = gpuPlugin()->sphStepperFactory();
     if (requested == "cuda")
-        return cuda::cudaSphStepperFactory();
+        return gpuStepper;
     // auto: a solver the GPU's stepper refuses (SphStepper's limits) runs on the CPU, with a warning.
-    return [&warnings](const sim::sph::SphSolver& solver) -> std::unique_ptr<sim::sph::SphStepper>
+    return [&warnings, gpuStepper](const sim::sph::SphSolver& solver) -> std::unique_ptr<sim::sph::SphStepper>
     {
         try
         {
-            return cuda::cudaSphStepperFactory()(solver);
+            return gpuStepper(solver);
         }
         catch (const Error& refused)
         {
@@ -114,10 +111,6 @@ sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, std::
             return nullptr;
         }
     };
-#else
-    (void)warnings;
-    return {};
-#endif
 }
 
 

@@ -143,18 +143,19 @@ std::string addReport(study::Study& study, const report::Report& report, const s
 report::DocumentIdentity documentIdentity(const study::Study& study, bool anonymize)
 {
     report::DocumentIdentity identity;
-    identity.studyInstanceUid = metadata(study, "study_instance_uid");
-    identity.studyDate = metadata(study, "study_date");
-    identity.studyTime = imageAttribute(study, "study_time");
-    identity.studyDescription = metadata(study, "study_description");
     identity.softwareVersion = kVersion;
     identity.identifiesPatient = !anonymize;
     if (anonymize)
     {
+        // Its own new study (an empty UID makes one): the patient's study UID, dates and texts identify the patient.
         identity.patientName = "ANONYMIZED";
         identity.patientId = "ANONYMIZED";
         return identity;
     }
+    identity.studyInstanceUid = metadata(study, "study_instance_uid");
+    identity.studyDate = metadata(study, "study_date");
+    identity.studyTime = imageAttribute(study, "study_time");
+    identity.studyDescription = metadata(study, "study_description");
     identity.patientName = metadata(study, "patient_name");
     identity.patientId = metadata(study, "patient_id");
     identity.patientBirthDate = metadata(study, "patient_birth_date");

@@ -1,5 +1,7 @@
 #include "vsim/app/VersionInfo.h"
 
+#include "GpuPlugin.h"
+
 #include "vsim/core/Version.h"
 
 #include <Eigen/Core>
@@ -7,10 +9,6 @@
 #include <dcmtk/config/osconfig.h>
 #include <itkVersion.h>
 #include <vtkVersion.h>
-
-#ifdef VSIM_HAVE_CUDA
-#include "vsim/cuda_common/DeviceInfo.h"
-#endif
 
 namespace vsim::app {
 
@@ -25,13 +23,17 @@ std::vector<std::pair<std::string, std::string>> libraryVersions()
         {"Eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
                       std::to_string(EIGEN_MINOR_VERSION)},
     };
-#ifdef VSIM_HAVE_CUDA
-    versions.emplace_back("CUDA runtime", cuda::runtimeVersion());
-    versions.emplace_back("GPU", cuda::deviceSummary());
-#else
-    versions.emplace_back("CUDA runtime", "not built (no nvcc at configure time)");
-    versions.emplace_back("GPU", "not used");
-#endif
+    versions.emplace_back("GPU plugin", gpuPluginStatus());
+    if (const GpuPluginApi* plugin = gpuPlugin())
+    {
+        versions.emplace_back("CUDA runtime", plugin->runtimeVersion());
+        versions.emplace_back("GPU", plugin->deviceSummary());
+    }
+    else
+    {
+        versions.emplace_back("CUDA runtime", "none (no GPU plugin)");
+        versions.emplace_back("GPU", "not used: every solver runs on the CPU");
+    }
     return versions;
 }
 

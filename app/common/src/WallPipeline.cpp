@@ -1,5 +1,6 @@
 #include "vsim/app/WallPipeline.h"
 
+#include "GpuPlugin.h"
 #include "ReportSupport.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/app/SacRecord.h"
@@ -10,11 +11,6 @@
 #include "vsim/mesh/VesselSurface.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
-
-#ifdef VSIM_HAVE_CUDA
-#include "vsim/cuda_common/DeviceInfo.h"
-#include "vsim/cuda_fem/CudaBackwardEuler.h"
-#endif
 
 
 #include <algorithm>
@@ -167,29 +163,33 @@ std::vector<viz::Callout> sacPeakCallouts(const study::Artifact& run)
     return callouts;
 }
 
+namespace {
+
+/// Why this wall run cannot go to the GPU: no plugin or device, or a model the GPU stepper does not have; "" if it can.
+std::string wallGpuUnavailable(const std::string& protocol, const ParameterSet& parameters)
+{
+    if (std::string reason = gpuUnavailableReason(); !reason.empty())
+        return reason;
+    if (sim::fem::femUsesQuadraticWall(protocol, parameters))
+        return "the quadratic hyperelastic wall (wall_model 1) runs on the CPU: its GPU solver is not built yet";
+    if (sim::fem::femUsesQuasiStaticTearing(protocol, parameters))
+        return "quasi-static tearing (quasi_static 1) runs on the CPU: the GPU has no static solver yet";
+    if (sim::fem::femMaterial(parameters).model != sim::fem::ElasticMaterial::Model::CorotationalLinear)
+        return "the CUDA backend runs the co-rotational linear model only";
+    return {};
+}
+
+} // namespace
+
 WallBackend chooseWallBackend(const std::string& requested, const std::string& protocol, const ParameterSet& parameters)
 {
     if (requested != "auto" && requested != "cpu" && requested != "cuda")
         throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
     if (requested == "cpu")
         return {};
-    std::string unavailable;
-#ifdef VSIM_HAVE_CUDA
-    const std::vector<cuda::DeviceInfo> devices = cuda::devices();
-    if (devices.empty())
-        unavailable = "there is no CUDA device";
-    else if (sim::fem::femUsesQuadraticWall(protocol, parameters))
-        unavailable = "the quadratic hyperelastic wall (wall_model 1) runs on the CPU: its GPU solver is not built yet";
-    else if (sim::fem::femUsesQuasiStaticTearing(protocol, parameters))
-        unavailable = "quasi-static tearing (quasi_static 1) runs on the CPU: the GPU has no static solver yet";
-    else if (sim::fem::femMaterial(parameters).model != sim::fem::ElasticMaterial::Model::CorotationalLinear)
-        unavailable = "the CUDA backend runs the co-rotational linear model only";
+    const std::string unavailable = wallGpuUnavailable(protocol, parameters);
     if (unavailable.empty())
-        return {"cuda", cuda::deviceSummary(), cuda::cudaStepperFactory()};
-#else
-    (void)protocol, (void)parameters;
-    unavailable = "this build has no CUDA backend (nvcc was not found when it was configured)";
-#endif
+        return {"cuda", gpuPlugin()->deviceSummary(), gpuPlugin()->wallStepperFactory()};
     if (requested == "cuda")
         throw Error(unavailable + ": use --backend cpu or auto");
     return {};

@@ -1,6 +1,7 @@
 #include "vsim/dicom/CtSeriesWriter.h"
 
 #include "DcmtkSetup.h"
+#include "vsim/core/DicomUid.h"
 #include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
 #include "vsim/core/Version.h"
@@ -271,13 +272,6 @@ TransferSyntax transferSyntaxFromName(const std::string& name)
             return syntax;
     throw Error("unknown transfer syntax '" + name +
                 "'; known: explicit-le, implicit-le, jpeg-lossless, jpeg-ls, rle, jpeg-extended");
-}
-
-std::string newDicomUid()
-{
-    char uid[100];
-    dcmGenerateUniqueIdentifier(uid, SITE_INSTANCE_UID_ROOT);
-    return uid;
 }
 
 WrittenSeries writeCtSeries(const CtVolume& pixels, const SliceStack& stack, const CtSeriesDescription& description,

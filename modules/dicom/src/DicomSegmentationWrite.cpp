@@ -6,6 +6,7 @@
 
 #include "DcmtkSetup.h"
 
+#include "vsim/core/DicomUid.h"
 #include "vsim/core/Error.h"
 
 #include <dcmtk/config/osconfig.h>
@@ -81,15 +82,15 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
     std::unique_ptr<DcmSegmentation> seg(created);
     check(seg->getPatient().setPatientName(description.patientName.c_str()), "patient name");
     check(seg->getPatient().setPatientID(description.patientId.c_str()), "patient ID");
-    char uid[100];
-    check(seg->getStudy().setStudyInstanceUID(description.studyInstanceUid.empty()
-                                                  ? dcmGenerateUniqueIdentifier(uid, SITE_STUDY_UID_ROOT)
-                                                  : description.studyInstanceUid.c_str()),
+    // Every UID under the configured root (vsim/core/DicomUid.h), not DCMTK's own.
+    check(seg->getStudy().setStudyInstanceUID(
+              (description.studyInstanceUid.empty() ? newDicomUid() : description.studyInstanceUid).c_str()),
           "study UID");
-    check(seg->getFrameOfReference().setFrameOfReferenceUID(description.frameOfReferenceUid.empty()
-                                                                ? dcmGenerateUniqueIdentifier(uid)
-                                                                : description.frameOfReferenceUid.c_str()),
+    check(seg->getFrameOfReference().setFrameOfReferenceUID(
+              (description.frameOfReferenceUid.empty() ? newDicomUid() : description.frameOfReferenceUid).c_str()),
           "frame of reference");
+    check(seg->getSeries().setSeriesInstanceUID(newDicomUid().c_str()), "series UID");
+    check(seg->getSOPCommon().setSOPInstanceUID(newDicomUid().c_str()), "instance UID");
     check(seg->getSeries().setSeriesDescription(description.seriesDescription.c_str()), "series description");
     check(seg->getSeries().setSeriesNumber("900"), "series number");
 
@@ -167,8 +168,8 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
         }
     }
     IODMultiframeDimensionModule& dimensions = seg->getDimensions();
-    char organisation[100];
-    dcmGenerateUniqueIdentifier(organisation);
+    const std::string organisationUid = newDicomUid();
+    const char* organisation = organisationUid.c_str();
     check(dimensions.addDimensionIndex(DCM_ReferencedSegmentNumber, organisation, DCM_SegmentIdentificationSequence,
                                        "Segment"),
           "dimensions");

@@ -3,7 +3,7 @@
 #include "vsim/core/Error.h"
 
 #include "DatasetText.h"
-#include "DcmtkSetup.h"
+#include "PacsAssociation.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -19,95 +19,35 @@
 namespace vsim::dicom {
 namespace {
 
-/// A presentation context to propose: an abstract syntax and our role (SCP for the storage classes of a C-GET,
-/// whose objects come back on the same association).
-struct Proposed
-{
-    const char* abstractSyntax;
-    T_ASC_SC_ROLE role = ASC_SC_ROLE_DEFAULT;
-};
+using detail::Association;
+using detail::Proposed;
 
-/// The SCU of a C-GET: counts the objects it writes and reports them.
+/// The SCU of a C-GET: collects the files it writes; progress and Cancel through the watcher.
 class RetrievingScu : public DcmSCU
 {
 public:
+    explicit RetrievingScu(const detail::RetrieveWatcher& watcher) : m_watcher(watcher) {}
+
     mutable std::vector<std::filesystem::path> files; ///< DCMTK tells of each in a const function
-    const Progress* progress = nullptr;
 
 protected:
     void notifyInstanceStored(const OFString& filename, const OFString&, const OFString&) const override
     {
         files.emplace_back(filename.c_str());
-        if (progress)
-            progress->report(0.0, "retrieved " + std::to_string(files.size()) + " objects");
-    }
-};
-
-/// An association to `node` on `scu` proposing the given contexts (explicit then implicit little endian).
-class Association
-{
-public:
-    Association(const PacsNode& node, const std::vector<Proposed>& contexts, DcmSCU* scu = nullptr)
-        : m_node(node), m_owned(scu ? nullptr : std::make_unique<DcmSCU>()), m_scu(scu ? *scu : *m_owned)
-    {
-        ensureDcmtkCodecs(); // and DCMTK's own logging quiet
-        if (node.calledAeTitle.empty() || node.calledAeTitle.size() > 16 || node.callingAeTitle.empty() ||
-            node.callingAeTitle.size() > 16)
-            throw Error("AE titles have 1 to 16 characters (PACS '" + node.calledAeTitle + "', ours '" +
-                        node.callingAeTitle + "')");
-        if (node.host.empty() || node.port < 1 || node.port > 65535)
-            throw Error("a PACS node needs a host and a port from 1 to 65535 (" + describe(node) + ")");
-        m_scu.setAETitle(node.callingAeTitle.c_str());
-        m_scu.setPeerAETitle(node.calledAeTitle.c_str());
-        m_scu.setPeerHostName(node.host.c_str());
-        m_scu.setPeerPort(Uint16(node.port));
-        m_scu.setACSETimeout(Uint32(node.timeoutS));
-        m_scu.setConnectionTimeout(Sint32(node.timeoutS));
-        m_scu.setDIMSEBlockingMode(DIMSE_NONBLOCKING);
-        m_scu.setDIMSETimeout(Uint32(node.timeoutS));
-        OFList<OFString> syntaxes;
-        syntaxes.push_back(UID_LittleEndianExplicitTransferSyntax);
-        syntaxes.push_back(UID_LittleEndianImplicitTransferSyntax);
-        for (const Proposed& context : contexts)
-            m_scu.addPresentationContext(context.abstractSyntax, syntaxes, context.role);
-        check(m_scu.initNetwork(), "could not start the network");
-        const OFCondition negotiated = m_scu.negotiateAssociation();
-        if (negotiated == DUL_ASSOCIATIONREJECTED)
-            throw Error("the PACS " + describe(node) + " rejected the association: is our AE title '" + node.callingAeTitle +
-                        "' registered there, and is its own '" + node.calledAeTitle + "'?");
-        check(negotiated, "could not connect");
+        m_watcher.objectReceived();
     }
 
-    ~Association()
+    OFCondition handleCGETResponse(const T_ASC_PresentationContextID id, RetrieveResponse* response,
+                                   OFBool& continueSession) override
     {
-        if (m_scu.isConnected())
-            m_scu.releaseAssociation();
-    }
-
-    Association(const Association&) = delete;
-    Association& operator=(const Association&) = delete;
-
-    DcmSCU& scu() { return m_scu; }
-
-    /// The accepted presentation context for `abstractSyntax`; throws when the PACS accepted none.
-    T_ASC_PresentationContextID context(const char* abstractSyntax, const char* what)
-    {
-        const T_ASC_PresentationContextID id = m_scu.findPresentationContextID(abstractSyntax, "");
-        if (id == 0)
-            throw Error("the PACS " + describe(m_node) + " does not offer " + what);
-        return id;
-    }
-
-    void check(const OFCondition& condition, const std::string& what) const
-    {
-        if (condition.bad())
-            throw Error(what + " (" + describe(m_node) + "): " + condition.text());
+        const OFCondition handled = DcmSCU::handleCGETResponse(id, response, continueSession);
+        if (response != nullptr && m_watcher.response(*response))
+            sendCANCELRequest(id);
+        return handled;
     }
 
 private:
-    PacsNode m_node;
-    std::unique_ptr<DcmSCU> m_owned;
-    DcmSCU& m_scu;
+    const detail::RetrieveWatcher& m_watcher;
 };
 
 } // namespace
@@ -182,23 +122,14 @@ std::vector<std::filesystem::path> retrieveStudy(const PacsNode& node, const std
 {
     if (studyInstanceUid.empty())
         throw Error("a retrieve needs the study's instance UID");
-    std::error_code error;
-    if (std::filesystem::exists(folder, error) && !std::filesystem::is_empty(folder, error))
-        throw Error("the retrieve's folder is not empty: " + folder.string());
-    std::filesystem::create_directories(folder, error);
-    if (error)
-        throw Error("cannot create the retrieve's folder " + folder.string() + ": " + error.message());
-    RetrievingScu scu;
-    scu.progress = &progress;
+    detail::prepareRetrieveFolder(folder);
+    const detail::RetrieveWatcher watcher(progress);
+    RetrievingScu scu(watcher);
     scu.setStorageDir(folder.string().c_str());
     scu.setStorageMode(DCMSCU_STORAGE_DISK);
-    // The objects a study holds that VascuSim reads or made.
     std::vector<Proposed> contexts = {{UID_GETStudyRootQueryRetrieveInformationModel}};
-    for (const char* storage : {UID_CTImageStorage, UID_EnhancedCTImageStorage, UID_SegmentationStorage,
-                                UID_EncapsulatedPDFStorage, UID_SecondaryCaptureImageStorage})
-        contexts.push_back({storage, ASC_SC_ROLE_SCP});
-    OFList<RetrieveResponse*> responses;
-    OFCondition sent;
+    for (const char* storage : detail::retrievedStorageClasses())
+        contexts.push_back({storage, ASC_SC_ROLE_SCP}); // the objects come back on the same association
     std::string failure;
     {
         Association association(node, contexts, &scu);
@@ -207,30 +138,24 @@ std::vector<std::filesystem::path> retrieveStudy(const PacsNode& node, const std
         DcmDataset request;
         request.putAndInsertString(DCM_QueryRetrieveLevel, "STUDY");
         request.putAndInsertString(DCM_StudyInstanceUID, studyInstanceUid.c_str());
-        sent = scu.sendCGETRequest(id, &request, &responses);
+        OFList<RetrieveResponse*> responses;
+        const OFCondition sent = scu.sendCGETRequest(id, &request, &responses);
+        failure = detail::retrieveFailure(responses);
         for (RetrieveResponse* response : responses)
-        {
-            std::unique_ptr<RetrieveResponse> owned(response);
-            if (response->m_status == STATUS_Pending)
-                continue;
-            if (response->m_status != STATUS_Success || response->m_numberOfFailedSubops > 0)
-            {
-                char status[8];
-                std::snprintf(status, sizeof status, "%04X", unsigned(response->m_status));
-                failure = std::string("the PACS ended the retrieve with status 0x") + status + ", " +
-                          std::to_string(response->m_numberOfFailedSubops) + " objects failed";
-            }
-        }
+            delete response;
         if (sent.bad() && failure.empty())
             failure = std::string("the retrieve broke off: ") + sent.text();
+    }
+    if (watcher.cancelled())
+    {
+        detail::removeReceived(scu.files);
+        throw Cancelled();
     }
     if (failure.empty() && scu.files.empty())
         failure = "the PACS sent nothing for study " + studyInstanceUid;
     if (!failure.empty())
     {
-        // No half retrieve: the objects written so far go (the folder was empty or new).
-        for (const std::filesystem::path& file : scu.files)
-            std::filesystem::remove(file, error);
+        detail::removeReceived(scu.files);
         throw Error(failure + " (" + describe(node) + ")");
     }
     return scu.files;

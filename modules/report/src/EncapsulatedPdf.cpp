@@ -1,5 +1,6 @@
 #include "vsim/report/EncapsulatedPdf.h"
 
+#include "vsim/core/DicomUid.h"
 #include "vsim/core/Error.h"
 
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -11,13 +12,6 @@
 
 namespace vsim::report {
 namespace {
-
-std::string newUid()
-{
-    char uid[100];
-    dcmGenerateUniqueIdentifier(uid, SITE_INSTANCE_UID_ROOT);
-    return uid;
-}
 
 void put(DcmDataset& data, const DcmTagKey& tag, const std::string& value)
 {
@@ -41,17 +35,17 @@ std::string writeEncapsulatedPdf(const QByteArray& pdf, const DocumentIdentity& 
     char date[16], time[16];
     std::strftime(date, sizeof date, "%Y%m%d", &utc);
     std::strftime(time, sizeof time, "%H%M%S", &utc);
-    const std::string seriesUid = newUid();
+    const std::string seriesUid = newDicomUid();
 
     put(data, DCM_SOPClassUID, UID_EncapsulatedPDFStorage);
-    put(data, DCM_SOPInstanceUID, newUid());
+    put(data, DCM_SOPInstanceUID, newDicomUid());
     put(data, DCM_SpecificCharacterSet, "ISO_IR 192");
     // Patient and general study: the study the report belongs to.
     put(data, DCM_PatientName, identity.patientName);
     put(data, DCM_PatientID, identity.patientId);
     put(data, DCM_PatientBirthDate, identity.patientBirthDate);
     put(data, DCM_PatientSex, identity.patientSex);
-    put(data, DCM_StudyInstanceUID, identity.studyInstanceUid.empty() ? newUid() : identity.studyInstanceUid);
+    put(data, DCM_StudyInstanceUID, identity.studyInstanceUid.empty() ? newDicomUid() : identity.studyInstanceUid);
     put(data, DCM_StudyDate, identity.studyDate);
     put(data, DCM_StudyTime, identity.studyTime);
     put(data, DCM_ReferringPhysicianName, "");
@@ -73,6 +67,13 @@ std::string writeEncapsulatedPdf(const QByteArray& pdf, const DocumentIdentity& 
     put(data, DCM_ContentTime, time);
     put(data, DCM_AcquisitionDateTime, std::string(date) + time);
     put(data, DCM_BurnedInAnnotation, identity.identifiesPatient ? "YES" : "NO");
+    if (!identity.identifiesPatient)
+    {
+        // PS3.15 E.1: the de-identification stated, so that `pacs store` keeps this out of a patient's study.
+        put(data, DCM_PatientIdentityRemoved, "YES");
+        put(data, DCM_DeidentificationMethod, "VascuSim report --anonymize: a new study; no patient name, ID, "
+                                              "dates or study text");
+    }
     put(data, DCM_DocumentTitle, identity.documentTitle);
     put(data, DCM_MIMETypeOfEncapsulatedDocument, "application/pdf");
     if (data.putAndInsertUint32(DCM_EncapsulatedDocumentLength, Uint32(pdf.size())).bad())

@@ -62,7 +62,7 @@ struct WallBackend
 /// figures.
 std::vector<viz::Callout> sacPeakCallouts(const study::Artifact& run);
 
-/// Resolves `requested` for `protocol`: "cpu"; "cuda" (throws vsim::Error when this build has no CUDA backend,
+/// Resolves `requested` for `protocol`: "cpu"; "cuda" (throws vsim::Error when the GPU plugin is not installed,
 /// there is no device, the run is the quadratic hyperelastic wall, or the material model is not the co-rotational
 /// one); "auto": the GPU when "cuda" would work, else the CPU.
 WallBackend chooseWallBackend(const std::string& requested, const std::string& protocol, const ParameterSet& parameters);

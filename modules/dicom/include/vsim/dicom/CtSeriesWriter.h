@@ -65,7 +65,4 @@ struct WrittenSeries
 WrittenSeries writeCtSeries(const CtVolume& pixels, const SliceStack& stack, const CtSeriesDescription& description,
                             const std::filesystem::path& folder, const Progress& progress = {});
 
-/// A new globally unique DICOM UID under VascuSim's root.
-std::string newDicomUid();
-
 } // namespace vsim::dicom

@@ -1,7 +1,7 @@
 #pragma once
 
 // A DICOM network client for a PACS (issue 22; DCMTK dcmnet, PS3.4 / PS3.7): C-ECHO to test a node, C-FIND at the
-// study level of the Study Root information model, C-GET of a study into a folder. Each call opens one association from our AE title to the node's
+// study level of the Study Root information model, C-GET or C-MOVE of a study into a folder, C-STORE of our results. Each call opens one association from our AE title to the node's
 // and releases it. Failures come back as vsim::Error with what went wrong in words: the connection refused or not
 // answered within the timeout, the association rejected (the node does not know our AE title, or its own is not
 // the one configured), a response that is not success. Text in queries and answers is UTF-8 (ISO_IR 192).
@@ -51,6 +51,39 @@ std::vector<StudyMatch> findStudies(const PacsNode& node, const StudyQuery& quer
 /// (nothing half retrieved is left).
 std::vector<std::filesystem::path> retrieveStudy(const PacsNode& node, const std::string& studyInstanceUid,
                                                 const std::filesystem::path& folder, const Progress& progress = {});
+
+/// C-MOVE of every object of the study to VascuSim itself: a storage listener with our AE title opens on
+/// `listenPort` for the move, and the PACS sends the objects there on an association of its own. The PACS must
+/// know our AE title with this machine's address and that port (its configuration, as for any move destination;
+/// C-GET needs none). Files into `folder` with retrieveStudy's guarantees, and throws as it does, also when the
+/// port cannot be opened; a move that delivered nothing asks whether our AE title is registered there.
+std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const std::string& studyInstanceUid,
+                                            const std::filesystem::path& folder, int listenPort,
+                                            const Progress& progress = {});
+
+/// What to do with a de-identified object (Patient Identity Removed YES, e.g. a report made with --anonymize).
+enum class AnonymizedObjects
+{
+    Refuse,  ///< nothing is sent; the message says why (the default: it must not join a patient's study)
+    NewStudy ///< sent as a new study: new study, series and instance UIDs (the file itself is not changed)
+};
+
+/// One object sent by storeFiles.
+struct StoredObject
+{
+    std::filesystem::path file;
+    std::string sopClassUid, sopInstanceUid, studyInstanceUid, seriesInstanceUid, modality;
+    bool asNewStudy = false; ///< its UIDs were replaced (AnonymizedObjects::NewStudy)
+};
+
+/// C-STORE of DICOM files (e.g. the report's Encapsulated PDF and the labels' SEG) to the node, on one association.
+/// Every file is read and checked before anything is sent. Throws vsim::Error when a file is not DICOM, when a
+/// de-identified one is refused (`anonymized`), as pacsEcho, when the PACS accepts no presentation context for a
+/// file's class, and when an object is not stored (the message names which, with the status; the objects stored
+/// before it stay on the PACS, which has no undo). The files are never changed.
+std::vector<StoredObject> storeFiles(const PacsNode& node, const std::vector<std::filesystem::path>& files,
+                                     AnonymizedObjects anonymized = AnonymizedObjects::Refuse,
+                                     const Progress& progress = {});
 
 /// "ORTHANC at 127.0.0.1:4242" (for messages).
 std::string describe(const PacsNode& node);

@@ -19,7 +19,8 @@ struct DocumentIdentity
     std::string institution;
     std::string documentTitle = "VascuSim planning report";
     std::string softwareVersion;   ///< "0.2.0"
-    bool identifiesPatient = true; ///< Burned In Annotation: whether the PDF names the patient
+    /// Burned In Annotation: whether the PDF names the patient. When false, Patient Identity Removed is YES.
+    bool identifiesPatient = true;
 };
 
 /// Writes `pdf` as an Encapsulated PDF Storage instance (explicit VR little endian, with file meta information).

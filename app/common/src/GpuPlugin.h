@@ -1,0 +1,25 @@
+#pragma once
+
+// Finds and loads the GPU plugin (GpuPluginApi.h) once per process. Internal to app/common.
+//
+// Where it looks: $VASCUSIM_GPU_PLUGIN when set (a file), otherwise <executable's folder>/../lib/vascusim/
+// libvascusim-gpu.so, which is /usr/lib/vascusim/ for the installed package and build/<preset>/lib/vascusim/ in a
+// build tree.
+
+#include "vsim/app/GpuPluginApi.h"
+
+#include <string>
+
+namespace vsim::app {
+
+/// The plugin's table, or nullptr when it is not installed or was refused (gpuPluginStatus() says which).
+const GpuPluginApi* gpuPlugin();
+
+/// One line for people: "loaded from <file>", "not installed (<file> is absent)" or "refused: <reason>".
+std::string gpuPluginStatus();
+
+/// Why there is no GPU backend, for a run that asked for one: "no CUDA backend: the GPU plugin is ..." or "there is
+/// no CUDA device". Empty when there is one.
+std::string gpuUnavailableReason();
+
+} // namespace vsim::app

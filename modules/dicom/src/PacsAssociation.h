@@ -1,0 +1,201 @@
+#pragma once
+
+// One DICOM association to a PACS node, shared by the PACS client's calls (PacsClient.cpp, PacsStore.cpp):
+// checks the node's settings, proposes the presentation contexts, negotiates, maps a rejection to words, and
+// releases at the end of its scope. Internal to the dicom module.
+
+#include "vsim/core/Error.h"
+#include "vsim/dicom/PacsClient.h"
+
+#include "DcmtkSetup.h"
+
+#include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmnet/scu.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vsim::dicom::detail {
+
+/// A presentation context to propose: an abstract syntax and our role (SCP for the storage classes of a C-GET,
+/// whose objects come back on the same association).
+struct Proposed
+{
+    std::string abstractSyntax;
+    T_ASC_SC_ROLE role = ASC_SC_ROLE_DEFAULT;
+    /// A transfer syntax to propose first (an object's own, for C-STORE); explicit and implicit little endian follow.
+    std::string transferSyntax = {};
+};
+
+/// An association to `node` on `scu` proposing the given contexts (explicit then implicit little endian).
+class Association
+{
+public:
+    Association(const PacsNode& node, const std::vector<Proposed>& contexts, DcmSCU* scu = nullptr)
+        : m_node(node), m_owned(scu ? nullptr : std::make_unique<DcmSCU>()), m_scu(scu ? *scu : *m_owned)
+    {
+        ensureDcmtkCodecs(); // and DCMTK's own logging quiet
+        if (node.calledAeTitle.empty() || node.calledAeTitle.size() > 16 || node.callingAeTitle.empty() ||
+            node.callingAeTitle.size() > 16)
+            throw Error("AE titles have 1 to 16 characters (PACS '" + node.calledAeTitle + "', ours '" +
+                        node.callingAeTitle + "')");
+        if (node.host.empty() || node.port < 1 || node.port > 65535)
+            throw Error("a PACS node needs a host and a port from 1 to 65535 (" + describe(node) + ")");
+        m_scu.setAETitle(node.callingAeTitle.c_str());
+        m_scu.setPeerAETitle(node.calledAeTitle.c_str());
+        m_scu.setPeerHostName(node.host.c_str());
+        m_scu.setPeerPort(Uint16(node.port));
+        m_scu.setACSETimeout(Uint32(node.timeoutS));
+        m_scu.setConnectionTimeout(Sint32(node.timeoutS));
+        m_scu.setDIMSEBlockingMode(DIMSE_NONBLOCKING);
+        m_scu.setDIMSETimeout(Uint32(node.timeoutS));
+        for (const Proposed& context : contexts)
+        {
+            OFList<OFString> syntaxes;
+            for (const std::string& syntax : {context.transferSyntax, std::string(UID_LittleEndianExplicitTransferSyntax),
+                                              std::string(UID_LittleEndianImplicitTransferSyntax)})
+                if (!syntax.empty() && std::find(syntaxes.begin(), syntaxes.end(), OFString(syntax.c_str())) == syntaxes.end())
+                    syntaxes.push_back(syntax.c_str());
+            m_scu.addPresentationContext(context.abstractSyntax.c_str(), syntaxes, context.role);
+        }
+        check(m_scu.initNetwork(), "could not start the network");
+        const OFCondition negotiated = m_scu.negotiateAssociation();
+        if (negotiated == DUL_ASSOCIATIONREJECTED)
+            throw Error("the PACS " + describe(node) + " rejected the association: is our AE title '" + node.callingAeTitle +
+                        "' registered there, and is its own '" + node.calledAeTitle + "'?");
+        check(negotiated, "could not connect");
+    }
+
+    ~Association()
+    {
+        if (m_scu.isConnected())
+            m_scu.releaseAssociation();
+    }
+
+    Association(const Association&) = delete;
+    Association& operator=(const Association&) = delete;
+
+    DcmSCU& scu() { return m_scu; }
+
+    /// The accepted presentation context for `abstractSyntax`; throws when the PACS accepted none.
+    T_ASC_PresentationContextID context(const std::string& abstractSyntax, const std::string& what)
+    {
+        const T_ASC_PresentationContextID id = m_scu.findPresentationContextID(abstractSyntax.c_str(), "");
+        if (id == 0)
+            throw Error("the PACS " + describe(m_node) + " does not offer " + what);
+        return id;
+    }
+
+    void check(const OFCondition& condition, const std::string& what) const
+    {
+        if (condition.bad())
+            throw Error(what + " (" + describe(m_node) + "): " + condition.text());
+    }
+
+private:
+    PacsNode m_node;
+    std::unique_ptr<DcmSCU> m_owned;
+    DcmSCU& m_scu;
+};
+
+/// Follows a C-GET's or C-MOVE's responses and received objects: reports the fraction of sub-operations done, and
+/// turns the user's Cancel into a C-CANCEL (PS3.7 9.3.2.3) at the next response, so that DCMTK's loops are never
+/// left by an exception. The caller removes what was received when cancelled() or failed.
+class RetrieveWatcher
+{
+public:
+    explicit RetrieveWatcher(const Progress& progress) : m_progress(progress) {}
+
+    /// An object arrived (counted for PACSes that send no pending responses).
+    void objectReceived() const
+    {
+        ++m_received;
+        report(m_received, m_total, "retrieved " + std::to_string(m_received) + " objects");
+    }
+
+    /// A response of the retrieve; true when the retrieve must be cancelled now (once).
+    bool response(const RetrieveResponse& answer) const
+    {
+        const long done = long(answer.m_numberOfCompletedSubops) + answer.m_numberOfFailedSubops +
+                          answer.m_numberOfWarningSubops;
+        if (answer.m_status == STATUS_Pending)
+            m_total = done + answer.m_numberOfRemainingSubops;
+        report(done, m_total, "retrieved " + std::to_string(done) + " of " + std::to_string(m_total) + " objects");
+        if (m_cancelRequested && !m_cancelSent)
+            return m_cancelSent = true;
+        return false;
+    }
+
+    bool cancelled() const { return m_cancelRequested; }
+
+private:
+    void report(long done, long total, const std::string& stage) const
+    {
+        try
+        {
+            m_progress.report(total > 0 ? std::min(1.0, double(done) / double(total)) : 0.0, stage);
+        }
+        catch (const Cancelled&)
+        {
+            m_cancelRequested = true;
+        }
+    }
+
+    const Progress& m_progress;
+    mutable long m_received = 0, m_total = 0;
+    mutable bool m_cancelRequested = false, m_cancelSent = false;
+};
+
+/// Removes the files a failed or cancelled retrieve wrote (its folder was new or empty): nothing half retrieved.
+inline void removeReceived(const std::vector<std::filesystem::path>& files)
+{
+    std::error_code ignored;
+    for (const std::filesystem::path& file : files)
+        std::filesystem::remove(file, ignored);
+}
+
+/// Checks that `folder` is new or empty and creates it.
+inline void prepareRetrieveFolder(const std::filesystem::path& folder)
+{
+    std::error_code error;
+    if (std::filesystem::exists(folder, error) && !std::filesystem::is_empty(folder, error))
+        throw Error("the retrieve's folder is not empty: " + folder.string());
+    std::filesystem::create_directories(folder, error);
+    if (error)
+        throw Error("cannot create the retrieve's folder " + folder.string() + ": " + error.message());
+}
+
+/// The storage classes a retrieve accepts: the objects a study holds that VascuSim reads or made.
+inline const std::vector<const char*>& retrievedStorageClasses()
+{
+    static const std::vector<const char*> classes = {UID_CTImageStorage, UID_EnhancedCTImageStorage,
+                                                     UID_SegmentationStorage, UID_EncapsulatedPDFStorage,
+                                                     UID_SecondaryCaptureImageStorage};
+    return classes;
+}
+
+/// The failure that the final response of a retrieve reports, or "" for success.
+inline std::string retrieveFailure(const OFList<RetrieveResponse*>& responses)
+{
+    std::string failure;
+    for (const RetrieveResponse* response : responses)
+    {
+        if (response->m_status == STATUS_Pending)
+            continue;
+        if (response->m_status != STATUS_Success || response->m_numberOfFailedSubops > 0)
+        {
+            char status[8];
+            std::snprintf(status, sizeof status, "%04X", unsigned(response->m_status));
+            failure = std::string("the PACS ended the retrieve with status 0x") + status + ", " +
+                      std::to_string(response->m_numberOfFailedSubops) + " objects failed";
+        }
+    }
+    return failure;
+}
+
+} // namespace vsim::dicom::detail

@@ -1,0 +1,151 @@
+// C-MOVE of a study to VascuSim's own storage listener (PS3.4 C.4.2; issue 22). The move request goes on one
+// association; the PACS opens a second one to the move destination (our AE title at our listener) and stores the
+// objects there, while its pending responses on the first tell how far it is.
+
+#include "vsim/dicom/PacsClient.h"
+
+#include "vsim/core/Error.h"
+
+#include "PacsAssociation.h"
+
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmnet/dstorscp.h>
+
+#include <atomic>
+#include <mutex>
+#include <thread>
+
+namespace vsim::dicom {
+namespace {
+
+/// The move destination: a storage SCP that writes each object it receives into the folder, until stopped. It runs
+/// on its own thread; the progress comes from the move's responses on the caller's.
+class MoveListener : public DcmStorageSCP
+{
+public:
+    std::vector<std::filesystem::path> files() const
+    {
+        std::lock_guard lock(m_mutex);
+        return m_files;
+    }
+
+    void stop() { m_stop = true; }
+
+protected:
+    void notifyInstanceStored(const OFString& filename, const OFString&, const OFString&, DcmDataset*) const override
+    {
+        std::lock_guard lock(m_mutex);
+        m_files.emplace_back(filename.c_str());
+    }
+
+    OFBool stopAfterConnectionTimeout() override { return m_stop; }
+    OFBool stopAfterCurrentAssociation() override { return m_stop; }
+
+private:
+    mutable std::mutex m_mutex;
+    mutable std::vector<std::filesystem::path> m_files;
+    std::atomic<bool> m_stop{false};
+};
+
+/// The SCU of the move request: progress and Cancel through the watcher.
+class MovingScu : public DcmSCU
+{
+public:
+    explicit MovingScu(const detail::RetrieveWatcher& watcher) : m_watcher(watcher) {}
+
+protected:
+    OFCondition handleMOVEResponse(const T_ASC_PresentationContextID id, RetrieveResponse* response,
+                                   OFBool& waitForNext) override
+    {
+        const OFCondition handled = DcmSCU::handleMOVEResponse(id, response, waitForNext);
+        if (response != nullptr && m_watcher.response(*response))
+            sendCANCELRequest(id);
+        return handled;
+    }
+
+private:
+    const detail::RetrieveWatcher& m_watcher;
+};
+
+} // namespace
+
+std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const std::string& studyInstanceUid,
+                                            const std::filesystem::path& folder, int listenPort,
+                                            const Progress& progress)
+{
+    if (studyInstanceUid.empty())
+        throw Error("a retrieve needs the study's instance UID");
+    if (listenPort < 1 || listenPort > 65535)
+        throw Error("the move's listening port must be from 1 to 65535, not " + std::to_string(listenPort));
+    detail::prepareRetrieveFolder(folder);
+    const detail::RetrieveWatcher watcher(progress);
+
+    MoveListener listener;
+    listener.setAETitle(node.callingAeTitle.c_str());
+    listener.setPort(Uint16(listenPort));
+    listener.setConnectionBlockingMode(DUL_NOBLOCK);
+    listener.setConnectionTimeout(1); // s: how soon it notices stop()
+    listener.setACSETimeout(Uint32(node.timeoutS));
+    listener.setDIMSETimeout(Uint32(node.timeoutS));
+    listener.setHostLookupEnabled(OFFalse);
+    listener.setOutputDirectory(folder.string().c_str());
+    listener.setDirectoryGenerationMode(DcmStorageSCP::DGM_NoSubdirectory);
+    listener.setFilenameGenerationMode(DcmStorageSCP::FGM_SOPInstanceUID);
+    OFList<OFString> syntaxes;
+    syntaxes.push_back(UID_LittleEndianExplicitTransferSyntax);
+    syntaxes.push_back(UID_LittleEndianImplicitTransferSyntax);
+    for (const char* storage : detail::retrievedStorageClasses())
+        listener.addPresentationContext(storage, syntaxes);
+    const OFCondition opened = listener.openListenPort();
+    if (opened.bad())
+        throw Error("cannot listen on port " + std::to_string(listenPort) + " for the move: " + opened.text() +
+                    " (is another program using it?)");
+    std::thread listening([&listener] { listener.acceptAssociations(); });
+
+    std::string failure;
+    try
+    {
+        MovingScu scu(watcher);
+        detail::Association association(node, {{UID_MOVEStudyRootQueryRetrieveInformationModel}}, &scu);
+        const T_ASC_PresentationContextID id =
+            association.context(UID_MOVEStudyRootQueryRetrieveInformationModel, "study-root retrieval (C-MOVE)");
+        DcmDataset request;
+        request.putAndInsertString(DCM_QueryRetrieveLevel, "STUDY");
+        request.putAndInsertString(DCM_StudyInstanceUID, studyInstanceUid.c_str());
+        OFList<RetrieveResponse*> responses;
+        const OFCondition sent = scu.sendMOVERequest(id, node.callingAeTitle.c_str(), &request, &responses);
+        failure = detail::retrieveFailure(responses);
+        for (RetrieveResponse* response : responses)
+            delete response;
+        if (sent.bad() && failure.empty())
+            failure = std::string("the move broke off: ") + sent.text();
+    }
+    catch (const Error& error)
+    {
+        failure = error.what();
+    }
+    // The final response comes after the PACS's last store; the listener then stops within its 1 s timeout.
+    listener.stop();
+    listening.join();
+    const std::vector<std::filesystem::path> files = listener.files();
+    if (watcher.cancelled())
+    {
+        detail::removeReceived(files);
+        throw Cancelled();
+    }
+    if (failure.empty() && files.empty())
+        failure = "the PACS sent nothing for study " + studyInstanceUid;
+    // A move that delivered nothing most often went nowhere: the PACS sends to the address it has for our AE title
+    // (0xA801 "move destination unknown"; Orthanc answers 0xC000).
+    if (!failure.empty() && files.empty())
+        failure += "; is our AE title " + node.callingAeTitle + " registered at the PACS with this machine's address "
+                   "and port " + std::to_string(listenPort) + "?";
+    if (!failure.empty())
+    {
+        detail::removeReceived(files);
+        throw Error(failure + (failure.find(describe(node)) == std::string::npos ? " (" + describe(node) + ")" : ""));
+    }
+    return files;
+}
+
+} // namespace vsim::dicom
