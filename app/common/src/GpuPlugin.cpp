@@ -28,7 +28,7 @@ fs::path pluginFile()
     const fs::path executable = fs::read_symlink("/proc/self/exe", error);
     if (error)
         return {};
-    return executable.parent_path().parent_path() / "lib" / "vascusim" / "libvascusim-gpu.so";
+    return executable.parent_path().parent_path() / VSIM_GPU_PLUGIN_DIR / "libvascusim-gpu.so";
 }
 
 LoadedPlugin load()

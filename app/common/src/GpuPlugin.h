@@ -2,9 +2,9 @@
 
 // Finds and loads the GPU plugin (GpuPluginApi.h) once per process. Internal to app/common.
 //
-// Where it looks: $VASCUSIM_GPU_PLUGIN when set (a file), otherwise <executable's folder>/../lib/vascusim/
-// libvascusim-gpu.so, which is /usr/lib/vascusim/ for the installed package and build/<preset>/lib/vascusim/ in a
-// build tree.
+// Where it looks: $VASCUSIM_GPU_PLUGIN when set (a file), otherwise <executable's folder>/../VSIM_GPU_PLUGIN_DIR/
+// libvascusim-gpu.so: /usr/lib/x86_64-linux-gnu/vascusim/ for the installed package (Debian's private library
+// folder), build/<preset>/lib/x86_64-linux-gnu/vascusim/ in a build tree.
 
 #include "vsim/app/GpuPluginApi.h"
 
