@@ -16,8 +16,13 @@ for binary in $binaries; do
     ldd "$binary" | awk '/=> \// {print $3}' | grep -v -E '/(libc|libm|libgcc_s|libstdc\+\+|libpthread|libdl|librt)\.so' |
         xargs -r -I{} cp -L -n {} "$out/lib/"
 done
-# The GPU plugin (tst_gpu_plugin loads it from $VASCUSIM_GPU_PLUGIN=.dev/gpu/libvascusim-gpu.so there).
-find "$build/lib" -name libvascusim-gpu.so -exec cp {} "$out/" \; 2>/dev/null || true
+# The GPU plugin and its libraries (tst_gpu_plugin loads it from $VASCUSIM_GPU_PLUGIN=.dev/gpu/libvascusim-gpu.so).
+plugin=$(find "$build/lib" -name libvascusim-gpu.so 2>/dev/null | head -1)
+if [ -n "$plugin" ]; then
+    cp "$plugin" "$out/"
+    ldd "$plugin" | awk '/=> \// {print $3}' | grep -v -E '/(libc|libm|libgcc_s|libstdc\+\+|libpthread|libdl|librt)\.so' |
+        xargs -r -I{} cp -L -n {} "$out/lib/"
+fi
 du -sh "$out"
 # The GPU tests need no fast BLAS (SuiteSparse's CPU solves are not what they measure): the reference BLAS and
 # LAPACK instead of OpenBLAS (36 MB) keep the bundle under the device tool's 64 MiB.

@@ -138,7 +138,7 @@ def main():
                 fail(f"the anonymized report still holds '{identifier}'")
         # Its own new study: the patient's study UID would link it back (pacs store keeps it out of that study).
         if "anonymized" not in anonymous_text or dicom_value(dump_of(anonymous_dcm), "0020,000d") == metadata.get("study_instance_uid") \
-                or dicom_value(dump_of(anonymous_dcm), "0012,0062") != "YES":
+                or dicom_value(anonymous_dump, "0012,0062") != "YES":
             fail("the anonymized report does not say so, kept the patient's study UID, or lacks Patient Identity Removed")
     print(f"check_report: {folder}: {len(report['metrics'])} metrics, {pages} pages, DICOM series {series}")
 

@@ -10,6 +10,7 @@
 #include "DcmtkSetup.h"
 
 #include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmnet/scu.h>
 
@@ -151,12 +152,85 @@ private:
     mutable bool m_cancelRequested = false, m_cancelSent = false;
 };
 
+/// The SCU of a C-GET or a C-MOVE: progress and Cancel through the watcher; the files a C-GET writes (a C-MOVE's go
+/// to its listener).
+class RetrievingScu : public DcmSCU
+{
+public:
+    explicit RetrievingScu(const RetrieveWatcher& watcher) : m_watcher(watcher) {}
+
+    mutable std::vector<std::filesystem::path> files; ///< DCMTK tells of each in a const function
+
+protected:
+    void notifyInstanceStored(const OFString& filename, const OFString&, const OFString&) const override
+    {
+        files.emplace_back(filename.c_str());
+        m_watcher.objectReceived();
+    }
+
+    OFCondition handleCGETResponse(const T_ASC_PresentationContextID id, RetrieveResponse* response,
+                                   OFBool& continueSession) override
+    {
+        const OFCondition handled = DcmSCU::handleCGETResponse(id, response, continueSession);
+        watch(id, response);
+        return handled;
+    }
+
+    OFCondition handleMOVEResponse(const T_ASC_PresentationContextID id, RetrieveResponse* response,
+                                   OFBool& waitForNext) override
+    {
+        const OFCondition handled = DcmSCU::handleMOVEResponse(id, response, waitForNext);
+        watch(id, response);
+        return handled;
+    }
+
+private:
+    void watch(T_ASC_PresentationContextID id, const RetrieveResponse* response)
+    {
+        if (response != nullptr && m_watcher.response(*response))
+            sendCANCELRequest(id);
+    }
+
+    const RetrieveWatcher& m_watcher;
+};
+
+/// The request of a study-level retrieve.
+inline void studyRetrieveRequest(DcmDataset& request, const std::string& studyInstanceUid)
+{
+    request.putAndInsertString(DCM_QueryRetrieveLevel, "STUDY");
+    request.putAndInsertString(DCM_StudyInstanceUID, studyInstanceUid.c_str());
+}
+
 /// Removes the files a failed or cancelled retrieve wrote (its folder was new or empty): nothing half retrieved.
 inline void removeReceived(const std::vector<std::filesystem::path>& files)
 {
     std::error_code ignored;
     for (const std::filesystem::path& file : files)
         std::filesystem::remove(file, ignored);
+}
+
+/// Ends a retrieve: the files when it brought some and did not fail; otherwise removes what arrived and throws
+/// Cancelled, or vsim::Error with the failure (`hintWhenEmpty` added when nothing arrived) and the node.
+inline std::vector<std::filesystem::path> settleRetrieve(const RetrieveWatcher& watcher,
+                                                        const std::vector<std::filesystem::path>& files,
+                                                        std::string failure, const std::string& studyInstanceUid,
+                                                        const PacsNode& node, const std::string& hintWhenEmpty = {})
+{
+    if (watcher.cancelled())
+    {
+        removeReceived(files);
+        throw Cancelled();
+    }
+    if (failure.empty() && files.empty())
+        failure = "the PACS sent nothing for study " + studyInstanceUid;
+    if (failure.empty())
+        return files;
+    removeReceived(files);
+    if (files.empty() && !hintWhenEmpty.empty())
+        failure += "; " + hintWhenEmpty;
+    if (failure.find(describe(node)) == std::string::npos)
+        failure += " (" + describe(node) + ")";
+    throw Error(failure);
 }
 
 /// Checks that `folder` is new or empty and creates it.

@@ -17,40 +17,9 @@
 #include <memory>
 
 namespace vsim::dicom {
-namespace {
 
 using detail::Association;
 using detail::Proposed;
-
-/// The SCU of a C-GET: collects the files it writes; progress and Cancel through the watcher.
-class RetrievingScu : public DcmSCU
-{
-public:
-    explicit RetrievingScu(const detail::RetrieveWatcher& watcher) : m_watcher(watcher) {}
-
-    mutable std::vector<std::filesystem::path> files; ///< DCMTK tells of each in a const function
-
-protected:
-    void notifyInstanceStored(const OFString& filename, const OFString&, const OFString&) const override
-    {
-        files.emplace_back(filename.c_str());
-        m_watcher.objectReceived();
-    }
-
-    OFCondition handleCGETResponse(const T_ASC_PresentationContextID id, RetrieveResponse* response,
-                                   OFBool& continueSession) override
-    {
-        const OFCondition handled = DcmSCU::handleCGETResponse(id, response, continueSession);
-        if (response != nullptr && m_watcher.response(*response))
-            sendCANCELRequest(id);
-        return handled;
-    }
-
-private:
-    const detail::RetrieveWatcher& m_watcher;
-};
-
-} // namespace
 
 std::string describe(const PacsNode& node)
 {
@@ -124,7 +93,7 @@ std::vector<std::filesystem::path> retrieveStudy(const PacsNode& node, const std
         throw Error("a retrieve needs the study's instance UID");
     detail::prepareRetrieveFolder(folder);
     const detail::RetrieveWatcher watcher(progress);
-    RetrievingScu scu(watcher);
+    detail::RetrievingScu scu(watcher);
     scu.setStorageDir(folder.string().c_str());
     scu.setStorageMode(DCMSCU_STORAGE_DISK);
     std::vector<Proposed> contexts = {{UID_GETStudyRootQueryRetrieveInformationModel}};
@@ -136,8 +105,7 @@ std::vector<std::filesystem::path> retrieveStudy(const PacsNode& node, const std
         const T_ASC_PresentationContextID id =
             association.context(UID_GETStudyRootQueryRetrieveInformationModel, "study-root retrieval (C-GET)");
         DcmDataset request;
-        request.putAndInsertString(DCM_QueryRetrieveLevel, "STUDY");
-        request.putAndInsertString(DCM_StudyInstanceUID, studyInstanceUid.c_str());
+        detail::studyRetrieveRequest(request, studyInstanceUid);
         OFList<RetrieveResponse*> responses;
         const OFCondition sent = scu.sendCGETRequest(id, &request, &responses);
         failure = detail::retrieveFailure(responses);
@@ -146,19 +114,7 @@ std::vector<std::filesystem::path> retrieveStudy(const PacsNode& node, const std
         if (sent.bad() && failure.empty())
             failure = std::string("the retrieve broke off: ") + sent.text();
     }
-    if (watcher.cancelled())
-    {
-        detail::removeReceived(scu.files);
-        throw Cancelled();
-    }
-    if (failure.empty() && scu.files.empty())
-        failure = "the PACS sent nothing for study " + studyInstanceUid;
-    if (!failure.empty())
-    {
-        detail::removeReceived(scu.files);
-        throw Error(failure + " (" + describe(node) + ")");
-    }
-    return scu.files;
+    return detail::settleRetrieve(watcher, scu.files, failure, studyInstanceUid, node);
 }
 
 } // namespace vsim::dicom

@@ -47,26 +47,6 @@ private:
     std::atomic<bool> m_stop{false};
 };
 
-/// The SCU of the move request: progress and Cancel through the watcher.
-class MovingScu : public DcmSCU
-{
-public:
-    explicit MovingScu(const detail::RetrieveWatcher& watcher) : m_watcher(watcher) {}
-
-protected:
-    OFCondition handleMOVEResponse(const T_ASC_PresentationContextID id, RetrieveResponse* response,
-                                   OFBool& waitForNext) override
-    {
-        const OFCondition handled = DcmSCU::handleMOVEResponse(id, response, waitForNext);
-        if (response != nullptr && m_watcher.response(*response))
-            sendCANCELRequest(id);
-        return handled;
-    }
-
-private:
-    const detail::RetrieveWatcher& m_watcher;
-};
-
 } // namespace
 
 std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const std::string& studyInstanceUid,
@@ -105,13 +85,12 @@ std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const std::st
     std::string failure;
     try
     {
-        MovingScu scu(watcher);
+        detail::RetrievingScu scu(watcher);
         detail::Association association(node, {{UID_MOVEStudyRootQueryRetrieveInformationModel}}, &scu);
         const T_ASC_PresentationContextID id =
             association.context(UID_MOVEStudyRootQueryRetrieveInformationModel, "study-root retrieval (C-MOVE)");
         DcmDataset request;
-        request.putAndInsertString(DCM_QueryRetrieveLevel, "STUDY");
-        request.putAndInsertString(DCM_StudyInstanceUID, studyInstanceUid.c_str());
+        detail::studyRetrieveRequest(request, studyInstanceUid);
         OFList<RetrieveResponse*> responses;
         const OFCondition sent = scu.sendMOVERequest(id, node.callingAeTitle.c_str(), &request, &responses);
         failure = detail::retrieveFailure(responses);
@@ -127,25 +106,11 @@ std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const std::st
     // The final response comes after the PACS's last store; the listener then stops within its 1 s timeout.
     listener.stop();
     listening.join();
-    const std::vector<std::filesystem::path> files = listener.files();
-    if (watcher.cancelled())
-    {
-        detail::removeReceived(files);
-        throw Cancelled();
-    }
-    if (failure.empty() && files.empty())
-        failure = "the PACS sent nothing for study " + studyInstanceUid;
     // A move that delivered nothing most often went nowhere: the PACS sends to the address it has for our AE title
     // (0xA801 "move destination unknown"; Orthanc answers 0xC000).
-    if (!failure.empty() && files.empty())
-        failure += "; is our AE title " + node.callingAeTitle + " registered at the PACS with this machine's address "
-                   "and port " + std::to_string(listenPort) + "?";
-    if (!failure.empty())
-    {
-        detail::removeReceived(files);
-        throw Error(failure + (failure.find(describe(node)) == std::string::npos ? " (" + describe(node) + ")" : ""));
-    }
-    return files;
+    return detail::settleRetrieve(watcher, listener.files(), failure, studyInstanceUid, node,
+                                  "is our AE title " + node.callingAeTitle + " registered at the PACS with this "
+                                  "machine's address and port " + std::to_string(listenPort) + "?");
 }
 
 } // namespace vsim::dicom
