@@ -2,7 +2,8 @@
 // with a temporary configuration and stops it at the end, also when a test fails). A phantom CT series is uploaded
 // with DCMTK's storescu (another implementation than ours), then: C-ECHO; C-FIND at the study level by patient ID,
 // by a name with a wildcard, by modality and by a date range, each against what was uploaded; the failures (a
-// wrong called AE title, a port where nothing listens, an unknown calling AE on a strict server) give messages
+// wrong called AE title, a port where nothing listens, a node that never answers, an unknown calling AE on a strict
+// server for echo, find, get and store, while VASCUSIM gets and stores there) give messages
 // that say what to fix; `vascusim-cli pacs echo|find` the same way, with its exit codes. The round trip through
 // the CLI: find -> get -> import -> segment -> report -> store the report's PDF and the labels' SEG into the
 // patient's study -> find them -> get them back -> dcmdump them; an anonymized report refused, then stored as a new
@@ -386,7 +387,8 @@ private slots:
         QVERIFY(errorOf([&] { dicom::pacsEcho(badTitle); }).contains("1 to 16 characters"));
     }
 
-    /// Only registered modalities: VASCUSIM echoes and finds, an unknown AE title is refused.
+    /// Only registered modalities: VASCUSIM echoes, finds, gets and stores; an unknown AE title is refused each time
+    /// and leaves nothing.
     void strictServerRefusesStrangers()
     {
         QString failure;
@@ -395,11 +397,52 @@ private slots:
         const test::OrthancServer& server = *orthanc;
         dicom::pacsEcho(server.node());
         QVERIFY(dicom::findStudies(server.node(), {}).empty());
+        dicom::CtSeriesDescription description;
+        description.patientId = "PACS-STRICT-1";
+        const test::PhantomSeries series = test::writePhantomSeries(dicom::PhantomKind::Stenosis, test::smallPhantomOptions(),
+                                                                    test::freshFolder("pacs", "strict-series"), description);
+        QCOMPARE(server.uploadWithStorescu(series.written.files), 0);
+        const std::string uid = series.written.studyInstanceUid;
+        QCOMPARE(dicom::findStudies(server.node(), {}).size(), std::size_t(1));
+        const std::filesystem::path got = test::freshFolder("pacs", "strict-get");
+        QCOMPARE(dicom::retrieveStudy(server.node(), uid, got).size(), series.written.files.size());
+        const std::vector<dicom::StoredObject> stored = dicom::storeFiles(server.node(), {series.written.files.front()});
+        QCOMPARE(stored.size(), std::size_t(1));
+
         dicom::PacsNode stranger = server.node();
         stranger.callingAeTitle = "STRANGER";
         const QString refused = errorOf([&] { dicom::pacsEcho(stranger); });
         QVERIFY2(!refused.isEmpty(), "an unknown AE title must be refused");
         qInfo("an unknown AE on the strict server: %s", qPrintable(refused));
+        QVERIFY(!errorOf([&] { dicom::findStudies(stranger, {}); }).isEmpty());
+        const std::filesystem::path strangerGet = test::freshFolder("pacs", "strict-stranger-get");
+        QVERIFY(!errorOf([&] { dicom::retrieveStudy(stranger, uid, strangerGet); }).isEmpty());
+        QVERIFY(std::filesystem::is_empty(strangerGet));
+        QVERIFY(!errorOf([&] { dicom::storeFiles(stranger, {series.written.files.front()}); }).isEmpty());
+    }
+
+    /// A PACS that accepts the connection and never answers: the node's timeout ends the wait with a message.
+    void silentServerTimesOut()
+    {
+        const int listening = ::socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t length = sizeof address;
+        QVERIFY(::bind(listening, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0);
+        QVERIFY(::listen(listening, 4) == 0);
+        QVERIFY(::getsockname(listening, reinterpret_cast<sockaddr*>(&address), &length) == 0);
+        dicom::PacsNode silent{"SILENT", "127.0.0.1", ntohs(address.sin_port)};
+        silent.timeoutS = 2;
+        QElapsedTimer clock;
+        clock.start();
+        const QString timedOut = errorOf([&] { dicom::pacsEcho(silent); });
+        const double seconds = clock.elapsed() / 1000.0;
+        ::close(listening);
+        qInfo("a silent PACS: %.1f s, '%s'", seconds, qPrintable(timedOut));
+        QVERIFY2(timedOut.contains("did not answer within 2 s") && timedOut.contains(QString::number(silent.port)),
+                 qPrintable(timedOut));
+        QVERIFY2(seconds < 10.0, "the 2 s timeout bounds the wait");
     }
 };
 

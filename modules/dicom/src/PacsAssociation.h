@@ -69,6 +69,9 @@ public:
         if (negotiated == DUL_ASSOCIATIONREJECTED)
             throw Error("the PACS " + describe(node) + " rejected the association: is our AE title '" + node.callingAeTitle +
                         "' registered there, and is its own '" + node.calledAeTitle + "'?");
+        if (negotiated == DUL_READTIMEOUT)
+            throw Error("the PACS " + describe(node) + " took the connection but did not answer within " +
+                        std::to_string(node.timeoutS) + " s (is it a DICOM node, and is the port its DICOM port?)");
         check(negotiated, "could not connect");
     }
 
