@@ -107,6 +107,14 @@ private:
     DcmSCU& m_scu;
 };
 
+/// A DIMSE status as the standard writes it, e.g. "0xA700" (PS3.7 C).
+inline std::string statusText(Uint16 status)
+{
+    char text[8];
+    std::snprintf(text, sizeof text, "%04X", unsigned(status));
+    return std::string("0x") + text;
+}
+
 /// Follows a C-GET's or C-MOVE's responses and received objects: reports the fraction of sub-operations done, and
 /// turns the user's Cancel into a C-CANCEL (PS3.7 9.3.2.3) at the next response, so that DCMTK's loops are never
 /// left by an exception. The caller removes what was received when cancelled() or failed.
@@ -265,12 +273,8 @@ inline std::string retrieveFailure(const OFList<RetrieveResponse*>& responses)
         if (response->m_status == STATUS_Pending)
             continue;
         if (response->m_status != STATUS_Success || response->m_numberOfFailedSubops > 0)
-        {
-            char status[8];
-            std::snprintf(status, sizeof status, "%04X", unsigned(response->m_status));
-            failure = std::string("the PACS ended the retrieve with status 0x") + status + ", " +
+            failure = "the PACS ended the retrieve with status " + statusText(response->m_status) + ", " +
                       std::to_string(response->m_numberOfFailedSubops) + " objects failed";
-        }
     }
     return failure;
 }

@@ -59,11 +59,7 @@ std::vector<StudyMatch> findStudies(const PacsNode& node, const StudyQuery& quer
         std::unique_ptr<QRResponse> owned(response);
         if (response->m_status != STATUS_Success && response->m_status != STATUS_FIND_Pending_MatchesAreContinuing &&
             response->m_status != STATUS_FIND_Pending_WarningUnsupportedOptionalKeys)
-        {
-            char status[8];
-            std::snprintf(status, sizeof status, "%04X", unsigned(response->m_status));
-            failure = std::string("the PACS answered the query with status 0x") + status;
-        }
+            failure = "the PACS answered the query with status " + detail::statusText(response->m_status);
         if (!response->m_dataset)
             continue;
         DcmDataset& answer = *response->m_dataset;

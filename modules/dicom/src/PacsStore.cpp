@@ -13,7 +13,6 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcxfer.h>
 
-#include <cstdio>
 #include <memory>
 #include <set>
 
@@ -63,13 +62,6 @@ Outgoing readOutgoing(const std::filesystem::path& file, AnonymizedObjects anony
     return outgoing;
 }
 
-std::string hex(Uint16 status)
-{
-    char text[8];
-    std::snprintf(text, sizeof text, "%04X", unsigned(status));
-    return text;
-}
-
 } // namespace
 
 std::vector<StoredObject> storeFiles(const PacsNode& node, const std::vector<std::filesystem::path>& files,
@@ -108,8 +100,8 @@ std::vector<StoredObject> storeFiles(const PacsNode& node, const std::vector<std
                         sent.text() + "; " + done);
         // 0000 success; Bxxx warnings (coercion, elements discarded) still store the object (PS3.4 B.2.3).
         if (status != STATUS_Success && (status & 0xF000) != 0xB000)
-            throw Error("the PACS " + describe(node) + " refused " + item.object.file.string() + " with status 0x" +
-                        hex(status) + "; " + done);
+            throw Error("the PACS " + describe(node) + " refused " + item.object.file.string() + " with status " +
+                        detail::statusText(status) + "; " + done);
         stored.push_back(item.object);
     }
     progress.report(1.0, "stored " + std::to_string(stored.size()) + " objects");
