@@ -3,7 +3,7 @@
 // with DCMTK's storescu (another implementation than ours), then: C-ECHO; C-FIND at the study level by patient ID,
 // by a name with a wildcard, by modality and by a date range, each against what was uploaded; the failures (a
 // wrong called AE title, a port where nothing listens, a node that never answers, an unknown calling AE on a strict
-// server for echo, find, get and store, while VASCUSIM gets and stores there) give messages
+// server for echo, find, get, move and store, while VASCUSIM gets, moves and stores there) give messages
 // that say what to fix; `vascusim-cli pacs echo|find` the same way, with its exit codes. The round trip through
 // the CLI: find -> get -> import -> segment -> report -> store the report's PDF and the labels' SEG into the
 // patient's study -> find them -> get them back -> dcmdump them; an anonymized report refused, then stored as a new
@@ -387,12 +387,13 @@ private slots:
         QVERIFY(errorOf([&] { dicom::pacsEcho(badTitle); }).contains("1 to 16 characters"));
     }
 
-    /// Only registered modalities: VASCUSIM echoes, finds, gets and stores; an unknown AE title is refused each time
-    /// and leaves nothing.
+    /// Only registered modalities: VASCUSIM echoes, finds, gets, moves and stores; an unknown AE title is refused
+    /// each time and leaves nothing.
     void strictServerRefusesStrangers()
     {
         QString failure;
-        const std::unique_ptr<test::OrthancServer> orthanc = startOrthanc("orthanc-strict", true, failure);
+        const int listenPort = test::freeLoopbackPort();
+        const std::unique_ptr<test::OrthancServer> orthanc = startOrthanc("orthanc-strict", true, failure, listenPort);
         QVERIFY2(orthanc, qPrintable(failure));
         const test::OrthancServer& server = *orthanc;
         dicom::pacsEcho(server.node());
@@ -406,6 +407,8 @@ private slots:
         QCOMPARE(dicom::findStudies(server.node(), {}).size(), std::size_t(1));
         const std::filesystem::path got = test::freshFolder("pacs", "strict-get");
         QCOMPARE(dicom::retrieveStudy(server.node(), uid, got).size(), series.written.files.size());
+        const std::filesystem::path moved = test::freshFolder("pacs", "strict-move");
+        QCOMPARE(dicom::moveStudy(server.node(), uid, moved, listenPort).size(), series.written.files.size());
         const std::vector<dicom::StoredObject> stored = dicom::storeFiles(server.node(), {series.written.files.front()});
         QCOMPARE(stored.size(), std::size_t(1));
 
@@ -418,6 +421,9 @@ private slots:
         const std::filesystem::path strangerGet = test::freshFolder("pacs", "strict-stranger-get");
         QVERIFY(!errorOf([&] { dicom::retrieveStudy(stranger, uid, strangerGet); }).isEmpty());
         QVERIFY(std::filesystem::is_empty(strangerGet));
+        const std::filesystem::path strangerMove = test::freshFolder("pacs", "strict-stranger-move");
+        QVERIFY(!errorOf([&] { dicom::moveStudy(stranger, uid, strangerMove, listenPort); }).isEmpty());
+        QVERIFY(std::filesystem::is_empty(strangerMove));
         QVERIFY(!errorOf([&] { dicom::storeFiles(stranger, {series.written.files.front()}); }).isEmpty());
     }
 
