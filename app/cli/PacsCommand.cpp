@@ -10,13 +10,19 @@
 namespace vsim::cli {
 namespace {
 
-int portNumber(const std::string& text, const std::string& option)
+/// A whole number from `low` to `high` given to `option`; UsageError naming `what` it must be otherwise.
+int wholeNumber(const std::string& text, const std::string& option, long low, long high, const std::string& what)
 {
     char* end = nullptr;
     const long number = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || number < 1 || number > 65535)
-        throw UsageError(option + ": a TCP port from 1 to 65535, not '" + text + "'");
+    if (text.empty() || *end != '\0' || number < low || number > high)
+        throw UsageError(option + ": " + what + ", not '" + text + "'");
     return int(number);
+}
+
+int portNumber(const std::string& text, const std::string& option)
+{
+    return wholeNumber(text, option, 1, 65535, "a TCP port from 1 to 65535");
 }
 
 dicom::PacsNode nodeFrom(const Arguments& arguments)
@@ -25,15 +31,9 @@ dicom::PacsNode nodeFrom(const Arguments& arguments)
     node.calledAeTitle = arguments.option("aet");
     node.host = arguments.option("host");
     node.port = portNumber(arguments.option("port"), "--port");
-    char* end = nullptr;
     node.callingAeTitle = arguments.option("calling-aet", node.callingAeTitle);
     if (arguments.hasOption("timeout"))
-    {
-        const long seconds = std::strtol(arguments.option("timeout").c_str(), &end, 10);
-        if (*end != '\0' || seconds < 1 || seconds > 600)
-            throw UsageError("--timeout: whole seconds from 1 to 600");
-        node.timeoutS = int(seconds);
-    }
+        node.timeoutS = wholeNumber(arguments.option("timeout"), "--timeout", 1, 600, "whole seconds from 1 to 600");
     return node;
 }
 
@@ -87,18 +87,18 @@ int pacsFindCommand(const Arguments& arguments, const Progress&)
 int pacsGetCommand(const Arguments& arguments, const Progress& progress)
 {
     const dicom::PacsNode node = nodeFrom(arguments);
+    const int movePort = arguments.hasOption("move") ? portNumber(arguments.option("move"), "--move") : 0;
+    const std::string studyUid = arguments.option("study-uid");
     const std::filesystem::path out = arguments.option("out");
-    checkOutputFolder(out, "pacs retrieve");
+    checkOutputFolder(out, "pacs retrieve"); // every option checked before the folder is claimed
     claimOutputFolder(out, "pacs retrieve");
     const std::filesystem::path folder = out / "dicom";
-    const std::string studyUid = arguments.option("study-uid");
-    const int movePort = arguments.hasOption("move") ? portNumber(arguments.option("move"), "--move") : 0;
     const std::vector<std::filesystem::path> files = movePort > 0
                                                          ? dicom::moveStudy(node, studyUid, folder, movePort, progress)
                                                          : dicom::retrieveStudy(node, studyUid, folder, progress);
     std::cout << nlohmann::json{{"pacs", dicom::describe(node)},
                                 {"retrieve", movePort > 0 ? "C-MOVE to port " + std::to_string(movePort) : "C-GET"},
-                                {"study_instance_uid", arguments.option("study-uid")},
+                                {"study_instance_uid", studyUid},
                                 {"files", files.size()},
                                 {"folder", folder.string()},
                                 {"next", "vascusim-cli import " + folder.string() + " --study <study.vsim>"}}

@@ -23,10 +23,8 @@ class TestPacsDialog : public QObject
 private slots:
     void findRetrieveAndImport()
     {
-        if (test::OrthancServer::executable().isEmpty())
-            QSKIP("Orthanc is not installed (Debian package orthanc; scripts/install-deps.sh installs it)");
-        if (QStandardPaths::findExecutable("storescu").isEmpty())
-            QSKIP("storescu is not installed (Debian package dcmtk)");
+        if (const QString reason = test::OrthancServer::unavailableReason(); !reason.isEmpty())
+            QSKIP(qPrintable(reason));
         const test::OrthancServer orthanc(fs::path(test::outputFolder("gui-pacs").toStdString()) / "orthanc", false);
         dicom::CtSeriesDescription description;
         description.patientName = "GUI^PACS";

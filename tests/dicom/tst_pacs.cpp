@@ -114,10 +114,8 @@ class TestPacs : public QObject
 private slots:
     void init()
     {
-        if (test::OrthancServer::executable().isEmpty())
-            QSKIP("Orthanc is not installed (Debian package orthanc; scripts/install-deps.sh installs it)");
-        if (QStandardPaths::findExecutable("storescu").isEmpty())
-            QSKIP("storescu is not installed (Debian package dcmtk)");
+        if (const QString reason = test::OrthancServer::unavailableReason(); !reason.isEmpty())
+            QSKIP(qPrintable(reason));
     }
 
     void echoAndFindStudies()

@@ -57,6 +57,16 @@ public:
         return inPath.isEmpty() ? QStandardPaths::findExecutable("Orthanc", {"/usr/sbin"}) : inPath;
     }
 
+    /// Why the PACS tests cannot run here ("" when they can): Orthanc or DCMTK's storescu missing.
+    static QString unavailableReason()
+    {
+        if (executable().isEmpty())
+            return "Orthanc is not installed (Debian package orthanc; scripts/install-deps.sh installs it)";
+        if (QStandardPaths::findExecutable("storescu").isEmpty())
+            return "storescu is not installed (Debian package dcmtk)";
+        return {};
+    }
+
     /// Starts the server in `folder` (emptied first); waits until it answers an echo (15 s at most). Throws
     /// vsim::Error when it does not start.
     OrthancServer(const std::filesystem::path& folder, bool strict, int vascusimPort = 11112)

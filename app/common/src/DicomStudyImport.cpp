@@ -34,6 +34,17 @@ void adoptStudyMetadata(study::Study& study, const std::map<std::string, std::st
             study.setMetadata(key, attribute(attributes, key));
 }
 
+/// The study's image imported from the series `seriesUid`; null when none is (or the UID is empty).
+const study::Artifact* imageOfSeries(const study::Study& study, const std::string& seriesUid)
+{
+    if (seriesUid.empty())
+        return nullptr;
+    for (const study::Artifact& artifact : study.artifacts())
+        if (artifact.kind == study::ArtifactKind::Image && attribute(artifact.attributes, "series_instance_uid") == seriesUid)
+            return &artifact;
+    return nullptr;
+}
+
 json vec(const Eigen::Vector3d& v)
 {
     return json::array({v.x(), v.y(), v.z()});
@@ -88,12 +99,9 @@ std::string addDicomVolumeToStudy(study::Study& study, dicom::DicomVolume volume
 {
     // A series fetched or imported twice is recognised: the study keeps one copy (PS3.3 C.7.3.1: the Series
     // Instance UID names the series wherever it comes from).
-    const std::string seriesUid = attribute(volume.attributes, "series_instance_uid");
-    for (const study::Artifact& artifact : study.artifacts())
-        if (!seriesUid.empty() && artifact.kind == study::ArtifactKind::Image &&
-            attribute(artifact.attributes, "series_instance_uid") == seriesUid)
-            throw Error("this series is already in the study, as " + artifact.id + " (" + artifact.name +
-                        "): it is not imported twice");
+    if (const study::Artifact* artifact = imageOfSeries(study, attribute(volume.attributes, "series_instance_uid")))
+        throw Error("this series is already in the study, as " + artifact->id + " (" + artifact->name +
+                    "): it is not imported twice");
     acceptAsHounsfield(volume.image, rescale, volume.warnings); // before the study changes: a refusal adds nothing
     adoptStudyMetadata(study, volume.attributes);
     study::Provenance provenance;
