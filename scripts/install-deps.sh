@@ -24,8 +24,9 @@ PACKAGES=(
     xvfb xauth libgl1-mesa-dri mesa-utils poppler-utils
     # reference tools used by tests and benchmarks
     dcm2niix python3-numpy python3-skimage calculix-ccx
-    # a real PACS for the DICOM network tests (started by the tests themselves on loopback ports)
-    orthanc
+    # a real PACS for the DICOM network tests (started by the tests themselves on loopback ports); openssl makes
+    # the certificates of its DICOM TLS test
+    orthanc openssl
     # the package test: Debian's package checker on the built .deb
     lintian
     # sparse direct solvers of the wall analysis (CHOLMOD, UMFPACK) and a fast BLAS under them

@@ -27,6 +27,16 @@ const OptionSpec kStudy = required("study");
 /// The organisation's DICOM UID root for the objects a command makes (runCommandLine applies it).
 const OptionSpec kUidRoot = value("uid-root");
 
+/// The PACS node's options (every pacs command) and then `more`.
+std::vector<OptionSpec> pacsNodeAnd(std::vector<OptionSpec> more)
+{
+    std::vector<OptionSpec> options{required("aet"),  required("host"),  required("port"),    value("calling-aet"),
+                                    value("timeout"), flag("tls"),       value("tls-trusted"), value("tls-cert"),
+                                    value("tls-key")};
+    options.insert(options.end(), more.begin(), more.end());
+    return options;
+}
+
 std::vector<CommandSpec> declareCommands()
 {
     return {
@@ -205,34 +215,33 @@ std::vector<CommandSpec> declareCommands()
          "    endoscope's obscuration curve (Beer-Lambert, K_m 8.7 m^2/g) with the times to 50 % and 90 %, a Run of\n"
          "    smoke density frames; the frame series to DIR. `vascusim-cli parameters smoke` lists the parameters",
          simulateSmoke},
-        {"pacs echo", 1, 1, {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout")},
+        {"pacs echo", 1, 1, pacsNodeAnd({}),
          "pacs echo --aet AE --host HOST --port N [--calling-aet VASCUSIM] [--timeout 30]\n"
+         "          [--tls --tls-trusted PACS.pem [--tls-cert OURS.pem --tls-key OURS.key]]\n"
          "    C-ECHO to a PACS node: exit 0 when it answers, else 1 with the reason (connection refused or silent,\n"
-         "    association rejected: our AE title not registered there, or its AE title not AE)",
+         "    association rejected: our AE title not registered there, or its AE title not AE). --tls: DICOM TLS\n"
+         "    (BCP 195), the PACS's certificate verified against --tls-trusted; ours shown when given (PEM files,\n"
+         "    the key not encrypted). Every pacs command takes these node options",
          pacsEchoCommand},
-        {"pacs find", 1, 1,
-         {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout"), value("patient-name"),
-          value("patient-id"), value("date"), value("modality")},
-         "pacs find --aet AE --host HOST --port N [--patient-name 'DOE^J*'] [--patient-id ID]\n"
-         "          [--date YYYYMMDD[-YYYYMMDD]] [--modality CT] [--calling-aet VASCUSIM] [--timeout 30]\n"
-         "    C-FIND at the study level (Study Root): the matching studies as JSON (UID, patient, date, description,\n"
-         "    accession number, modalities, number of series); names in UTF-8",
+        {"pacs find", 1, 1, pacsNodeAnd({value("level"), value("patient-name"), value("patient-id"), value("date"),
+                                         value("modality"), value("study-uid")}),
+         "pacs find --aet AE --host HOST --port N [--level patient|study|series] [--patient-name 'DOE^J*']\n"
+         "          [--patient-id ID] [--date YYYYMMDD[-YYYYMMDD]] [--modality CT] [--study-uid UID]\n"
+         "    C-FIND as JSON, names in UTF-8. study (default; Study Root): UID, patient, date, description,\n"
+         "    accession number, modalities, number of series; patient (Patient Root; --patient-name, --patient-id):\n"
+         "    name, ID, birth date, sex, number of studies; series (--study-uid required; --modality): UID,\n"
+         "    modality, number, description, date, number of instances",
          pacsFindCommand},
-        {"pacs get", 1, 1,
-         {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout"), required("study-uid"),
-          required("out"), value("move")},
-         "pacs get --aet AE --host HOST --port N --study-uid UID --out DIR [--move PORT] [--calling-aet VASCUSIM]\n"
-         "         [--timeout 30]\n"
-         "    C-GET of a study (CT, enhanced CT, SEG, encapsulated PDF, secondary capture) into DIR/dicom (DIR new,\n"
-         "    empty or VascuSim's); a failed, partial or cancelled transfer leaves no files. --move PORT: by C-MOVE\n"
-         "    instead, to our own listener on PORT (the PACS must know our AE title there). Then: import DIR/dicom\n"
-         "    --study S (a series already in S is recognised and not imported twice)",
+        {"pacs get", 1, 1, pacsNodeAnd({required("study-uid"), value("series-uid"), required("out"), value("move")}),
+         "pacs get --aet AE --host HOST --port N --study-uid UID [--series-uid UID] --out DIR [--move PORT]\n"
+         "    C-GET of a study, or of one series of it (CT, enhanced CT, SEG, encapsulated PDF, secondary capture)\n"
+         "    into DIR/dicom (DIR new, empty or VascuSim's); a failed, partial or cancelled transfer leaves no\n"
+         "    files. --move PORT: by C-MOVE instead, to our own listener on PORT (the PACS must know our AE title\n"
+         "    there; on a TLS node the listener needs --tls-cert and --tls-key). Then: import DIR/dicom --study S\n"
+         "    (a series already in S is recognised and not imported twice)",
          pacsGetCommand},
-        {"pacs store", 2, 100000,
-         {required("aet"), required("host"), required("port"), value("calling-aet"), value("timeout"), value("anonymized"),
-          kUidRoot},
+        {"pacs store", 2, 100000, pacsNodeAnd({value("anonymized"), kUidRoot}),
          "pacs store FILE.dcm... --aet AE --host HOST --port N [--anonymized refuse|new-study] [--uid-root ROOT]\n"
-         "          [--calling-aet VASCUSIM] [--timeout 30]\n"
          "    C-STORE of DICOM files (the report's --dicom-pdf, export-label's SEG) into the study each names.\n"
          "    Every file is checked first: a de-identified one (report --anonymize) is refused, nothing sent, unless\n"
          "    --anonymized new-study, which stores it as a new study under new UIDs (the file is not changed)",

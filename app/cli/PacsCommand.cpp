@@ -34,6 +34,17 @@ dicom::PacsNode nodeFrom(const Arguments& arguments)
     node.callingAeTitle = arguments.option("calling-aet", node.callingAeTitle);
     if (arguments.hasOption("timeout"))
         node.timeoutS = wholeNumber(arguments.option("timeout"), "--timeout", 1, 600, "whole seconds from 1 to 600");
+    node.tls.enabled = arguments.hasOption("tls");
+    node.tls.trustedCertificates = arguments.option("tls-trusted");
+    node.tls.certificate = arguments.option("tls-cert");
+    node.tls.privateKey = arguments.option("tls-key");
+    const bool anyFile = !node.tls.trustedCertificates.empty() || !node.tls.certificate.empty() || !node.tls.privateKey.empty();
+    if (anyFile && !node.tls.enabled)
+        throw UsageError("--tls-trusted, --tls-cert and --tls-key go with --tls (DICOM TLS)");
+    if (node.tls.enabled && node.tls.trustedCertificates.empty())
+        throw UsageError("--tls needs --tls-trusted: the PACS's certificate or its authority's (PEM)");
+    if (node.tls.certificate.empty() != node.tls.privateKey.empty())
+        throw UsageError("--tls-cert and --tls-key go together (our certificate and its private key)");
     return node;
 }
 
@@ -56,9 +67,37 @@ int pacsEchoCommand(const Arguments& arguments, const Progress&)
     return 0;
 }
 
-int pacsFindCommand(const Arguments& arguments, const Progress&)
+namespace {
+
+nlohmann::json findPatientsJson(const dicom::PacsNode& node, const Arguments& arguments, const Progress& progress)
 {
-    const dicom::PacsNode node = nodeFrom(arguments);
+    nlohmann::json patients = nlohmann::json::array();
+    for (const dicom::PatientMatch& match :
+         dicom::findPatients(node, {arguments.option("patient-name"), arguments.option("patient-id")}, progress))
+        patients.push_back({{"patient_name", match.patientName},
+                            {"patient_id", match.patientId},
+                            {"birth_date", match.birthDate},
+                            {"sex", match.sex},
+                            {"studies", match.studyCount}});
+    return {{"pacs", dicom::describe(node)}, {"level", "PATIENT"}, {"patients", patients}};
+}
+
+nlohmann::json findSeriesJson(const dicom::PacsNode& node, const Arguments& arguments, const Progress& progress)
+{
+    const std::string studyUid = arguments.option("study-uid");
+    nlohmann::json series = nlohmann::json::array();
+    for (const dicom::SeriesMatch& match : dicom::findSeries(node, studyUid, arguments.option("modality"), progress))
+        series.push_back({{"series_instance_uid", match.seriesInstanceUid},
+                          {"modality", match.modality},
+                          {"series_number", match.seriesNumber},
+                          {"series_description", match.seriesDescription},
+                          {"series_date", match.seriesDate},
+                          {"instances", match.instanceCount}});
+    return {{"pacs", dicom::describe(node)}, {"level", "SERIES"}, {"study_instance_uid", studyUid}, {"series", series}};
+}
+
+nlohmann::json findStudiesJson(const dicom::PacsNode& node, const Arguments& arguments, const Progress& progress)
+{
     dicom::StudyQuery query;
     query.patientName = arguments.option("patient-name");
     query.patientId = arguments.option("patient-id");
@@ -71,7 +110,7 @@ int pacsFindCommand(const Arguments& arguments, const Progress&)
         query.dateTo = checkedDate(dash == std::string::npos ? range : range.substr(dash + 1));
     }
     nlohmann::json studies = nlohmann::json::array();
-    for (const dicom::StudyMatch& match : dicom::findStudies(node, query))
+    for (const dicom::StudyMatch& match : dicom::findStudies(node, query, progress))
         studies.push_back({{"study_instance_uid", match.studyInstanceUid},
                            {"patient_name", match.patientName},
                            {"patient_id", match.patientId},
@@ -80,7 +119,40 @@ int pacsFindCommand(const Arguments& arguments, const Progress&)
                            {"accession_number", match.accessionNumber},
                            {"modalities", match.modalities},
                            {"series", match.seriesCount}});
-    std::cout << nlohmann::json{{"pacs", dicom::describe(node)}, {"level", "STUDY"}, {"studies", studies}}.dump(2) << "\n";
+    return {{"pacs", dicom::describe(node)}, {"level", "STUDY"}, {"studies", studies}};
+}
+
+} // namespace
+
+int pacsFindCommand(const Arguments& arguments, const Progress& progress)
+{
+    const dicom::PacsNode node = nodeFrom(arguments);
+    const std::string level = arguments.option("level", "study");
+    const auto refuse = [&](const char* option, const char* levels) {
+        if (arguments.hasOption(option))
+            throw UsageError(std::string("--") + option + " is a filter of the " + levels + ", not of --level " + level);
+    };
+    if (level == "patient")
+    {
+        for (const char* option : {"date", "modality", "study-uid"})
+            refuse(option, "study and series levels");
+        std::cout << findPatientsJson(node, arguments, progress).dump(2) << "\n";
+    }
+    else if (level == "series")
+    {
+        if (!arguments.hasOption("study-uid"))
+            throw UsageError("--level series needs --study-uid: the study whose series are listed");
+        for (const char* option : {"patient-name", "patient-id", "date"})
+            refuse(option, "patient and study levels");
+        std::cout << findSeriesJson(node, arguments, progress).dump(2) << "\n";
+    }
+    else if (level == "study")
+    {
+        refuse("study-uid", "series level");
+        std::cout << findStudiesJson(node, arguments, progress).dump(2) << "\n";
+    }
+    else
+        throw UsageError("--level: patient, study or series, not '" + level + "'");
     return 0;
 }
 
@@ -88,17 +160,18 @@ int pacsGetCommand(const Arguments& arguments, const Progress& progress)
 {
     const dicom::PacsNode node = nodeFrom(arguments);
     const int movePort = arguments.hasOption("move") ? portNumber(arguments.option("move"), "--move") : 0;
-    const std::string studyUid = arguments.option("study-uid");
+    const dicom::RetrieveTarget target(arguments.option("study-uid"), arguments.option("series-uid"));
     const std::filesystem::path out = arguments.option("out");
     checkOutputFolder(out, "pacs retrieve"); // every option checked before the folder is claimed
     claimOutputFolder(out, "pacs retrieve");
     const std::filesystem::path folder = out / "dicom";
     const std::vector<std::filesystem::path> files = movePort > 0
-                                                         ? dicom::moveStudy(node, studyUid, folder, movePort, progress)
-                                                         : dicom::retrieveStudy(node, studyUid, folder, progress);
+                                                         ? dicom::moveStudy(node, target, folder, movePort, progress)
+                                                         : dicom::retrieveStudy(node, target, folder, progress);
     std::cout << nlohmann::json{{"pacs", dicom::describe(node)},
                                 {"retrieve", movePort > 0 ? "C-MOVE to port " + std::to_string(movePort) : "C-GET"},
-                                {"study_instance_uid", studyUid},
+                                {"study_instance_uid", target.studyInstanceUid},
+                                {"series_instance_uid", target.seriesInstanceUid},
                                 {"files", files.size()},
                                 {"folder", folder.string()},
                                 {"next", "vascusim-cli import " + folder.string() + " --study <study.vsim>"}}

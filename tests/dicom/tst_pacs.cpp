@@ -1,7 +1,9 @@
 // The PACS client against a real Orthanc (issue 22; tests/support/OrthancServer.h starts one on a loopback port
 // with a temporary configuration and stops it at the end, also when a test fails). A phantom CT series is uploaded
 // with DCMTK's storescu (another implementation than ours), then: C-ECHO; C-FIND at the study level by patient ID,
-// by a name with a wildcard, by modality and by a date range, each against what was uploaded; the failures (a
+// by a name with a wildcard, by modality and by a date range, each against what was uploaded, at the patient and
+// the series level, and cancelled; C-GET of a study and of one series; DICOM TLS (echo, find, get, move, store;
+// the PACS's certificate not trusted, ours not trusted there, plain DICOM on its TLS port); the failures (a
 // wrong called AE title, a port where nothing listens, a node that never answers, an unknown calling AE on a strict
 // server for echo, find, get, move and store, while VASCUSIM gets, moves and stores there) give messages
 // that say what to fix; `vascusim-cli pacs echo|find` the same way, with its exit codes. The round trip through
@@ -169,10 +171,130 @@ private slots:
         QCOMPARE(QString::fromStdString(scanned[0].seriesInstanceUid), QString::fromStdString(series.written.seriesInstanceUid));
         QCOMPARE(scanned[0].headers.size(), series.written.files.size());
         const std::filesystem::path empty = test::freshFolder("pacs", "retrieved-nothing");
-        const QString unknown = errorOf([&] { dicom::retrieveStudy(node, "1.2.3.4.5.6.7.8.9", empty); });
+        const QString unknown = errorOf([&] { dicom::retrieveStudy(node, std::string("1.2.3.4.5.6.7.8.9"), empty); });
         QVERIFY2(!unknown.isEmpty(), "an unknown study must fail");
         QVERIFY(std::filesystem::is_empty(empty));
         QVERIFY(errorOf([&] { dicom::retrieveStudy(node, series.written.studyInstanceUid, retrieved); }).contains("not empty"));
+
+        // The patient level (Patient Root) and the series level (Study Root), each against what was uploaded.
+        const std::vector<dicom::PatientMatch> patients = dicom::findPatients(node, {"", "PACS-TEST-1"});
+        QCOMPARE(patients.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(patients[0].patientName), QString("MÜLLER^JÜRGEN"));
+        QCOMPARE(patients[0].studyCount, 1);
+        QVERIFY(dicom::findPatients(node, {"", "NOBODY"}).empty());
+        const std::vector<dicom::SeriesMatch> seriesFound = dicom::findSeries(node, series.written.studyInstanceUid);
+        QCOMPARE(seriesFound.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(seriesFound[0].seriesInstanceUid), QString::fromStdString(series.written.seriesInstanceUid));
+        QCOMPARE(QString::fromStdString(seriesFound[0].modality), QString("CT"));
+        QCOMPARE(seriesFound[0].instanceCount, int(series.written.files.size()));
+        QVERIFY(dicom::findSeries(node, series.written.studyInstanceUid, "SEG").empty());
+        QVERIFY(errorOf([&] { dicom::findSeries(node, ""); }).contains("study's instance UID"));
+        // C-GET of the one series; an unknown series of the study fails and leaves nothing.
+        const std::filesystem::path oneSeries = test::freshFolder("pacs", "retrieved-series");
+        const dicom::RetrieveTarget target(series.written.studyInstanceUid, series.written.seriesInstanceUid);
+        QCOMPARE(dicom::retrieveStudy(node, target, oneSeries).size(), series.written.files.size());
+        const std::filesystem::path noSeries = test::freshFolder("pacs", "retrieved-no-series");
+        const QString unknownSeries =
+            errorOf([&] { dicom::retrieveStudy(node, {series.written.studyInstanceUid, "1.2.3.4.5"}, noSeries); });
+        QVERIFY2(unknownSeries.contains("series 1.2.3.4.5") && std::filesystem::is_empty(noSeries), qPrintable(unknownSeries));
+
+        // Cancel during a query: a C-CANCEL at the first answer, vsim::Cancelled here.
+        CancellationToken token;
+        token.cancel();
+        const Progress cancelled([](double, const std::string&) {}, token);
+        for (int level = 0; level < 3; ++level)
+        {
+            bool threw = false;
+            try
+            {
+                if (level == 0)
+                    dicom::findPatients(node, {}, cancelled);
+                else if (level == 1)
+                    dicom::findStudies(node, {}, cancelled);
+                else
+                    dicom::findSeries(node, series.written.studyInstanceUid, {}, cancelled);
+            }
+            catch (const Cancelled&)
+            {
+                threw = true;
+            }
+            QVERIFY2(threw, "a cancelled query throws Cancelled");
+        }
+        dicom::pacsEcho(node); // and the PACS still answers
+    }
+
+    /// DICOM TLS against an Orthanc that speaks only TLS on its DICOM port and trusts only our certificate.
+    void tlsNode()
+    {
+        const std::filesystem::path certificates = test::freshFolder("pacs", "tls-certificates");
+        for (const char* name : {"orthanc", "vascusim", "stranger"})
+            if (!test::makeSelfSignedCertificate(certificates, name))
+                QSKIP("the openssl command is not there or failed (Debian package openssl)");
+        const auto pem = [&](const char* name, const char* extension) {
+            return (certificates / (std::string(name) + extension)).string();
+        };
+        const test::OrthancTls tls{pem("orthanc", ".pem"), pem("orthanc", ".key"), pem("vascusim", ".pem"),
+                                   pem("vascusim", ".key")};
+        const int listenPort = test::freeLoopbackPort();
+        std::unique_ptr<test::OrthancServer> orthanc;
+        try
+        {
+            orthanc = std::make_unique<test::OrthancServer>(std::filesystem::path(test::outputFolder("pacs").toStdString()) /
+                                                                "orthanc-tls",
+                                                            false, listenPort, tls);
+        }
+        catch (const Error& error)
+        {
+            QFAIL(error.what());
+        }
+        const dicom::PacsNode node = orthanc->node();
+        QVERIFY(dicom::describe(node).find("(TLS)") != std::string::npos);
+        dicom::CtSeriesDescription description;
+        description.patientId = "PACS-TLS-1";
+        const test::PhantomSeries series = test::writePhantomSeries(dicom::PhantomKind::Stenosis, test::smallPhantomOptions(),
+                                                                    test::freshFolder("pacs", "tls-series"), description);
+        QCOMPARE(orthanc->uploadWithStorescu(series.written.files), 0); // storescu over TLS
+        const std::string uid = series.written.studyInstanceUid;
+        QCOMPARE(dicom::findStudies(node, {}).size(), std::size_t(1));
+        const std::filesystem::path got = test::freshFolder("pacs", "tls-get");
+        QCOMPARE(dicom::retrieveStudy(node, uid, got).size(), series.written.files.size());
+        const std::filesystem::path moved = test::freshFolder("pacs", "tls-move");
+        QCOMPARE(dicom::moveStudy(node, uid, moved, listenPort).size(), series.written.files.size());
+        QCOMPARE(dicom::storeFiles(node, {series.written.files.front()}).size(), std::size_t(1));
+
+        dicom::PacsNode plain = node;
+        plain.tls = {};
+        plain.timeoutS = 3;
+        const QString plainFailed = errorOf([&] { dicom::pacsEcho(plain); });
+        QVERIFY2(!plainFailed.isEmpty(), "plain DICOM on the TLS port must fail");
+        qInfo("plain DICOM on the TLS port: %s", qPrintable(plainFailed));
+        dicom::PacsNode untrustedServer = node;
+        untrustedServer.tls.trustedCertificates = pem("stranger", ".pem");
+        const QString notTrusted = errorOf([&] { dicom::pacsEcho(untrustedServer); });
+        QVERIFY2(notTrusted.contains("TLS") && notTrusted.contains("stranger.pem"), qPrintable(notTrusted));
+        dicom::PacsNode untrustedClient = node;
+        untrustedClient.tls.certificate = pem("stranger", ".pem");
+        untrustedClient.tls.privateKey = pem("stranger", ".key");
+        const QString refused = errorOf([&] { dicom::pacsEcho(untrustedClient); });
+        QVERIFY2(!refused.isEmpty(), "a client certificate the PACS does not trust must fail");
+        qInfo("our certificate not trusted there: %s", qPrintable(refused));
+        dicom::PacsNode mismatched = node;
+        mismatched.tls.privateKey = pem("stranger", ".key");
+        QVERIFY(errorOf([&] { dicom::pacsEcho(mismatched); }).contains("is not that of the certificate"));
+        dicom::PacsNode missing = node;
+        missing.tls.trustedCertificates = (certificates / "none.pem").string();
+        QVERIFY(errorOf([&] { dicom::pacsEcho(missing); }).contains("not a file"));
+
+        // The CLI: the node's TLS options, and their misuse.
+        const QStringList where{"--aet", "ORTHANC", "--host", "127.0.0.1", "--port", QString::number(node.port), "--tls",
+                                "--tls-trusted", QString::fromStdString(pem("orthanc", ".pem")), "--tls-cert",
+                                QString::fromStdString(pem("vascusim", ".pem")), "--tls-key",
+                                QString::fromStdString(pem("vascusim", ".key"))};
+        CliResult echo = runCli(QStringList{"pacs", "echo"} + where);
+        QVERIFY2(echo.code == 0 && echo.output.contains("(TLS)"), qPrintable(echo.output));
+        CliResult withoutTls = runCli({"pacs", "echo", "--aet", "ORTHANC", "--host", "127.0.0.1", "--port",
+                                       QString::number(node.port), "--tls-trusted", QString::fromStdString(pem("orthanc", ".pem"))});
+        QVERIFY2(withoutTls.code == 2 && withoutTls.output.contains("go with --tls"), qPrintable(withoutTls.output));
     }
 
     void cliEchoAndFind()
@@ -264,6 +386,27 @@ private slots:
         QCOMPARE(studies[0]["series"].toInt(), 3);
         const QString modalities = studies[0]["modalities"].toString();
         QVERIFY2(modalities.contains("CT") && modalities.contains("DOC") && modalities.contains("SEG"), qPrintable(modalities));
+        // The series level lists the three; the patient level the one patient with the one study.
+        CliResult seriesFind = runCli(QStringList{"pacs", "find", "--level", "series", "--study-uid", studyUid} + where);
+        const QJsonArray seriesList = jsonOf(seriesFind.output)["series"].toArray();
+        QVERIFY2(seriesFind.code == 0 && seriesList.size() == 3, qPrintable(seriesFind.output));
+        QString segSeries;
+        for (const QJsonValue& one : seriesList)
+            if (one["modality"].toString() == "SEG")
+                segSeries = one["series_instance_uid"].toString();
+        QVERIFY2(!segSeries.isEmpty(), qPrintable(seriesFind.output));
+        CliResult patientFind = runCli(QStringList{"pacs", "find", "--level", "patient", "--patient-id", "PACS-ROUND-1"} + where);
+        const QJsonArray patientList = jsonOf(patientFind.output)["patients"].toArray();
+        QVERIFY2(patientFind.code == 0 && patientList.size() == 1 && patientList[0]["studies"].toInt() == 1,
+                 qPrintable(patientFind.output));
+        CliResult noStudy = runCli(QStringList{"pacs", "find", "--level", "series"} + where);
+        QVERIFY2(noStudy.code == 2 && noStudy.output.contains("--study-uid"), qPrintable(noStudy.output));
+        CliResult badLevel = runCli(QStringList{"pacs", "find", "--level", "image"} + where);
+        QVERIFY2(badLevel.code == 2 && badLevel.output.contains("--level"), qPrintable(badLevel.output));
+        // C-GET of the SEG series alone: the one object.
+        CliResult segGet = runCli(QStringList{"pacs", "get", "--study-uid", studyUid, "--series-uid", segSeries, "--out",
+                                              work + "/seg-only"} + where);
+        QVERIFY2(segGet.code == 0 && QDir(work + "/seg-only/dicom").entryList(QDir::Files).size() == 1, qPrintable(segGet.output));
 
         // get them back and read them with dcmdump: the PDF and the SEG in the CT's study, the SEG referencing the
         // CT series, the UIDs under the root given.

@@ -3,8 +3,9 @@
 // A real Orthanc (Debian package orthanc, /usr/sbin/Orthanc) for the PACS tests (issue 22): its own configuration,
 // storage and index in a fresh folder, DICOM on a free loopback port, no HTTP server, our AE title VASCUSIM
 // registered as a modality at the port `vascusimPort` (where a C-MOVE sends to). `strict` lets only registered modalities echo, store, find, get and move (an unknown
-// AE is refused), so that a permissive server does not hide a fault. The server stops with the object, also when a
-// test fails.
+// AE is refused), so that a permissive server does not hide a fault. With OrthancTls, the DICOM port speaks DICOM TLS
+// only (Orthanc 1.9 and later), requires a client certificate it trusts, and moves to VASCUSIM over TLS. The server
+// stops with the object, also when a test fails.
 
 #include "vsim/core/Error.h"
 #include "vsim/dicom/PacsClient.h"
@@ -25,6 +26,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,26 @@ inline int freeLoopbackPort()
     return port;
 }
 
+/// Certificates (PEM) for an Orthanc that speaks DICOM TLS, and the client's that VascuSim shows.
+struct OrthancTls
+{
+    std::string serverCertificate, serverKey; ///< Orthanc's
+    std::string clientCertificate, clientKey; ///< VascuSim's (Orthanc trusts it)
+};
+
+/// A self-signed certificate and its key from the openssl command (`name`.pem, `name`.key in `folder`); false when
+/// openssl is not there or fails.
+inline bool makeSelfSignedCertificate(const std::filesystem::path& folder, const std::string& name)
+{
+    QProcess openssl;
+    openssl.setProcessChannelMode(QProcess::MergedChannels);
+    openssl.start("openssl", {"req", "-x509", "-nodes", "-days", "2", "-newkey", "rsa:2048", "-subj",
+                              QString::fromStdString("/CN=" + name), "-keyout",
+                              QString::fromStdString((folder / (name + ".key")).string()), "-out",
+                              QString::fromStdString((folder / (name + ".pem")).string())});
+    return openssl.waitForFinished(60000) && openssl.exitStatus() == QProcess::NormalExit && openssl.exitCode() == 0;
+}
+
 class OrthancServer
 {
 public:
@@ -69,7 +91,9 @@ public:
 
     /// Starts the server in `folder` (emptied first); waits until it answers an echo (15 s at most). Throws
     /// vsim::Error when it does not start.
-    OrthancServer(const std::filesystem::path& folder, bool strict, int vascusimPort = 11112)
+    OrthancServer(const std::filesystem::path& folder, bool strict, int vascusimPort = 11112,
+                  std::optional<OrthancTls> tls = std::nullopt)
+        : m_tls(std::move(tls))
     {
         std::filesystem::remove_all(folder);
         std::filesystem::create_directories(folder);
@@ -87,6 +111,17 @@ public:
                            {"RemoteAccessAllowed", false},
                            {"Plugins", QJsonArray()},
                            {"DicomModalities", QJsonObject{{"vascusim", QJsonArray{"VASCUSIM", "127.0.0.1", vascusimPort}}}}};
+        if (m_tls)
+        {
+            config.insert("DicomTlsEnabled", true);
+            config.insert("DicomTlsCertificate", QString::fromStdString(m_tls->serverCertificate));
+            config.insert("DicomTlsPrivateKey", QString::fromStdString(m_tls->serverKey));
+            config.insert("DicomTlsTrustedCertificates", QString::fromStdString(m_tls->clientCertificate));
+            config.insert("DicomTlsRemoteCertificateRequired", true);
+            config.insert("DicomModalities",
+                          QJsonObject{{"vascusim", QJsonObject{{"AET", "VASCUSIM"}, {"Host", "127.0.0.1"},
+                                                               {"Port", vascusimPort}, {"UseDicomTls", true}}}});
+        }
         for (const char* operation : {"Echo", "Store", "Find", "Get", "Move"})
             config.insert(QString("DicomAlwaysAllow") + operation, !strict);
         const QString path = QString::fromStdString((folder / "orthanc.json").string());
@@ -140,6 +175,8 @@ public:
         node.host = "127.0.0.1";
         node.port = m_port;
         node.timeoutS = 10;
+        if (m_tls)
+            node.tls = {true, m_tls->serverCertificate, m_tls->clientCertificate, m_tls->clientKey};
         return node;
     }
 
@@ -151,6 +188,10 @@ public:
         QStringList arguments{"-aet", QString::fromStdString(target.callingAeTitle), "-aec",
                               QString::fromStdString(target.calledAeTitle), QString::fromStdString(target.host),
                               QString::number(target.port)};
+        if (m_tls) // the key not encrypted: no password prompt
+            arguments << "--enable-tls" << QString::fromStdString(m_tls->clientKey)
+                      << QString::fromStdString(m_tls->clientCertificate) << "--add-cert-file"
+                      << QString::fromStdString(m_tls->serverCertificate);
         for (const std::filesystem::path& file : files)
             arguments << QString::fromStdString(file.string());
         QProcess storescu;
@@ -160,6 +201,7 @@ public:
     }
 
 private:
+    std::optional<OrthancTls> m_tls;
     int m_port = 0;
     std::unique_ptr<QProcess> m_process;
 };

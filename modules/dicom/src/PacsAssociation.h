@@ -1,8 +1,8 @@
 #pragma once
 
 // One DICOM association to a PACS node, shared by the PACS client's calls (PacsClient.cpp, PacsStore.cpp):
-// checks the node's settings, proposes the presentation contexts, negotiates, maps a rejection to words, and
-// releases at the end of its scope. Internal to the dicom module.
+// checks the node's settings, proposes the presentation contexts, negotiates (over TLS on a TLS node), maps a
+// rejection to words, and releases at the end of its scope. Internal to the dicom module.
 
 #include "vsim/core/Error.h"
 #include "vsim/dicom/PacsClient.h"
@@ -13,6 +13,7 @@
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmnet/scu.h>
+#include <dcmtk/dcmtls/tlslayer.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -22,6 +23,11 @@
 #include <vector>
 
 namespace vsim::dicom::detail {
+
+/// The TLS layer of our end of an association (PacsTls.cpp): a requestor verifies the PACS and shows our
+/// certificate when one is set; an acceptor (the move's listener) always shows ours. Throws vsim::Error naming the
+/// file that is missing, unreadable or does not match.
+std::unique_ptr<DcmTLSTransportLayer> makeTlsLayer(const PacsTls& tls, bool acceptor);
 
 /// A presentation context to propose: an abstract syntax and our role (SCP for the storage classes of a C-GET,
 /// whose objects come back on the same association).
@@ -33,12 +39,19 @@ struct Proposed
     std::string transferSyntax = {};
 };
 
+/// DCMTK's SCU with its TLS switch in reach (DcmSCU keeps it protected; DcmTLSSCU would fix the SCU's class).
+class PacsScu : public DcmSCU
+{
+public:
+    using DcmSCU::useSecureConnection;
+};
+
 /// An association to `node` on `scu` proposing the given contexts (explicit then implicit little endian).
 class Association
 {
 public:
-    Association(const PacsNode& node, const std::vector<Proposed>& contexts, DcmSCU* scu = nullptr)
-        : m_node(node), m_owned(scu ? nullptr : std::make_unique<DcmSCU>()), m_scu(scu ? *scu : *m_owned)
+    Association(const PacsNode& node, const std::vector<Proposed>& contexts, PacsScu* scu = nullptr)
+        : m_node(node), m_owned(scu ? nullptr : std::make_unique<PacsScu>()), m_scu(scu ? *scu : *m_owned)
     {
         ensureDcmtkCodecs(); // and DCMTK's own logging quiet
         if (node.calledAeTitle.empty() || node.calledAeTitle.size() > 16 || node.callingAeTitle.empty() ||
@@ -65,13 +78,23 @@ public:
             m_scu.addPresentationContext(context.abstractSyntax.c_str(), syntaxes, context.role);
         }
         check(m_scu.initNetwork(), "could not start the network");
+        if (node.tls.enabled)
+        {
+            m_tls = makeTlsLayer(node.tls, false);
+            check(m_scu.useSecureConnection(m_tls.get()), "could not set up DICOM TLS");
+        }
         const OFCondition negotiated = m_scu.negotiateAssociation();
         if (negotiated == DUL_ASSOCIATIONREJECTED)
             throw Error("the PACS " + describe(node) + " rejected the association: is our AE title '" + node.callingAeTitle +
                         "' registered there, and is its own '" + node.calledAeTitle + "'?");
         if (negotiated == DUL_READTIMEOUT)
             throw Error("the PACS " + describe(node) + " took the connection but did not answer within " +
-                        std::to_string(node.timeoutS) + " s (is it a DICOM node, and is the port its DICOM port?)");
+                        std::to_string(node.timeoutS) + " s (is it a DICOM node, and is the port its DICOM port" +
+                        (node.tls.enabled ? ", and does it speak DICOM TLS there?)" : "?)"));
+        if (negotiated.bad() && node.tls.enabled)
+            throw Error("could not connect over DICOM TLS (" + describe(node) + "): " + negotiated.text() +
+                        " (does the PACS speak TLS on this port, is its certificate among ours trusted (" +
+                        node.tls.trustedCertificates + "), and does it trust ours?)");
         check(negotiated, "could not connect");
     }
 
@@ -103,8 +126,9 @@ public:
 
 private:
     PacsNode m_node;
-    std::unique_ptr<DcmSCU> m_owned;
-    DcmSCU& m_scu;
+    std::unique_ptr<PacsScu> m_owned;
+    PacsScu& m_scu;
+    std::unique_ptr<DcmTLSTransportLayer> m_tls; ///< outlives the association (the SCU does not own it)
 };
 
 /// A DIMSE status as the standard writes it, e.g. "0xA700" (PS3.7 C).
@@ -165,7 +189,7 @@ private:
 
 /// The SCU of a C-GET or a C-MOVE: progress and Cancel through the watcher; the files a C-GET writes (a C-MOVE's go
 /// to its listener).
-class RetrievingScu : public DcmSCU
+class RetrievingScu : public PacsScu
 {
 public:
     explicit RetrievingScu(const RetrieveWatcher& watcher) : m_watcher(watcher) {}
@@ -205,11 +229,16 @@ private:
     const RetrieveWatcher& m_watcher;
 };
 
-/// The request of a study-level retrieve.
-inline void studyRetrieveRequest(DcmDataset& request, const std::string& studyInstanceUid)
+/// The request of a study- or series-level retrieve; throws when the target names no study.
+inline void retrieveRequest(DcmDataset& request, const RetrieveTarget& target)
 {
-    request.putAndInsertString(DCM_QueryRetrieveLevel, "STUDY");
-    request.putAndInsertString(DCM_StudyInstanceUID, studyInstanceUid.c_str());
+    if (target.studyInstanceUid.empty())
+        throw Error("a retrieve needs the study's instance UID");
+    const bool series = !target.seriesInstanceUid.empty();
+    request.putAndInsertString(DCM_QueryRetrieveLevel, series ? "SERIES" : "STUDY");
+    request.putAndInsertString(DCM_StudyInstanceUID, target.studyInstanceUid.c_str());
+    if (series)
+        request.putAndInsertString(DCM_SeriesInstanceUID, target.seriesInstanceUid.c_str());
 }
 
 /// Removes the files a failed or cancelled retrieve wrote (its folder was new or empty): nothing half retrieved.
@@ -224,7 +253,7 @@ inline void removeReceived(const std::vector<std::filesystem::path>& files)
 /// Cancelled, or vsim::Error with the failure (`hintWhenEmpty` added when nothing arrived) and the node.
 inline std::vector<std::filesystem::path> settleRetrieve(const RetrieveWatcher& watcher,
                                                         const std::vector<std::filesystem::path>& files,
-                                                        std::string failure, const std::string& studyInstanceUid,
+                                                        std::string failure, const RetrieveTarget& target,
                                                         const PacsNode& node, const std::string& hintWhenEmpty = {})
 {
     if (watcher.cancelled())
@@ -233,10 +262,12 @@ inline std::vector<std::filesystem::path> settleRetrieve(const RetrieveWatcher& 
         throw Cancelled();
     }
     if (failure.empty() && files.empty())
-        failure = "the PACS sent nothing for study " + studyInstanceUid;
+        failure = "the PACS sent nothing for " + target.describe();
     if (failure.empty())
         return files;
     removeReceived(files);
+    if (failure.find(target.studyInstanceUid) == std::string::npos)
+        failure += " (" + target.describe() + ")";
     if (files.empty() && !hintWhenEmpty.empty())
         failure += "; " + hintWhenEmpty;
     if (failure.find(describe(node)) == std::string::npos)

@@ -1,6 +1,6 @@
-// C-MOVE of a study to VascuSim's own storage listener (PS3.4 C.4.2; issue 22). The move request goes on one
-// association; the PACS opens a second one to the move destination (our AE title at our listener) and stores the
-// objects there, while its pending responses on the first tell how far it is.
+// C-MOVE of a study or a series to VascuSim's own storage listener (PS3.4 C.4.2; issue 22). The move request goes
+// on one association; the PACS opens a second one to the move destination (our AE title at our listener, over TLS
+// on a TLS node) and stores the objects there, while its pending responses on the first tell how far it is.
 
 #include "vsim/dicom/PacsClient.h"
 
@@ -49,18 +49,22 @@ private:
 
 } // namespace
 
-std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const std::string& studyInstanceUid,
+std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const RetrieveTarget& target,
                                             const std::filesystem::path& folder, int listenPort,
                                             const Progress& progress)
 {
-    if (studyInstanceUid.empty())
-        throw Error("a retrieve needs the study's instance UID");
+    DcmDataset request;
+    detail::retrieveRequest(request, target); // checks the target before the folder is made
     if (listenPort < 1 || listenPort > 65535)
         throw Error("the move's listening port must be from 1 to 65535, not " + std::to_string(listenPort));
+    // The listener's TLS layer first: a certificate that is missing fails before any folder is made.
+    const std::unique_ptr<DcmTLSTransportLayer> tls = node.tls.enabled ? detail::makeTlsLayer(node.tls, true) : nullptr;
     detail::prepareRetrieveFolder(folder);
     const detail::RetrieveWatcher watcher(progress);
 
     MoveListener listener;
+    if (tls)
+        listener.getConfig().setTransportLayer(tls.get());
     listener.setAETitle(node.callingAeTitle.c_str());
     listener.setPort(Uint16(listenPort));
     listener.setConnectionBlockingMode(DUL_NOBLOCK);
@@ -89,8 +93,6 @@ std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const std::st
         detail::Association association(node, {{UID_MOVEStudyRootQueryRetrieveInformationModel}}, &scu);
         const T_ASC_PresentationContextID id =
             association.context(UID_MOVEStudyRootQueryRetrieveInformationModel, "study-root retrieval (C-MOVE)");
-        DcmDataset request;
-        detail::studyRetrieveRequest(request, studyInstanceUid);
         OFList<RetrieveResponse*> responses;
         const OFCondition sent = scu.sendMOVERequest(id, node.callingAeTitle.c_str(), &request, &responses);
         failure = detail::retrieveFailure(responses);
@@ -108,7 +110,7 @@ std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const std::st
     listening.join();
     // A move that delivered nothing most often went nowhere: the PACS sends to the address it has for our AE title
     // (0xA801 "move destination unknown"; Orthanc answers 0xC000).
-    return detail::settleRetrieve(watcher, listener.files(), failure, studyInstanceUid, node,
+    return detail::settleRetrieve(watcher, listener.files(), failure, target, node,
                                   "is our AE title " + node.callingAeTitle + " registered at the PACS with this "
                                   "machine's address and port " + std::to_string(listenPort) + "?");
 }
