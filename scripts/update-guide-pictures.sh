@@ -12,7 +12,8 @@ pictures = {'gui/dicom-import-dialog.png': 'import.png', 'gui/vessels.png': 'ves
             'gui/run-player-wall-mid.png': 'wall-stress.png', 'gui-vessel-view/vessel-view.png': 'vessel-view.png',
             'gui-measure/ruler.png': 'ruler.png', 'gui-drug/screenshot/drug.png': 'drug.png',
             'gui-drug/territory/territory.png': 'territory.png', 'gui/slice-overlays-x1.png': 'slice-view.png',
-            'gui-endoscope/endoscope-focused.png': 'endoscope.png', 'gui/pacs-dialog.png': 'pacs.png'}
+            'gui-endoscope/endoscope-focused.png': 'endoscope.png', 'gui/pacs-dialog.png': 'pacs.png',
+            'gui/pacs-send.png': 'pacs-send.png'}
 for source, name in pictures.items():
     picture = Image.open(f'{shots}/{source}').convert('RGB')
     if picture.width > 900:

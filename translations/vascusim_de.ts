@@ -4986,6 +4986,18 @@ Ersetzen?</translation>
         <source>Retrieve %1 from PACS</source>
         <translation>%1 aus dem PACS abrufen</translation>
     </message>
+    <message>
+        <source>Send to PAC&amp;S...</source>
+        <translation>An PAC&amp;S senden...</translation>
+    </message>
+    <message>
+        <source>Send to PACS %1</source>
+        <translation>An PACS %1 senden</translation>
+    </message>
+    <message>
+        <source>Sent %1 objects to %2.</source>
+        <translation>%1 Objekte an %2 gesendet.</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::PacsDialog</name>
@@ -4994,16 +5006,8 @@ Ersetzen?</translation>
         <translation>Suchen/Abrufen (PACS)</translation>
     </message>
     <message>
-        <source>Patient</source>
-        <translation>Patient</translation>
-    </message>
-    <message>
         <source>Patient ID</source>
         <translation>Patienten-ID</translation>
-    </message>
-    <message>
-        <source>Study date</source>
-        <translation>Studiendatum</translation>
     </message>
     <message>
         <source>Description</source>
@@ -5018,20 +5022,12 @@ Ersetzen?</translation>
         <translation>Modalitäten</translation>
     </message>
     <message>
-        <source>Series</source>
-        <translation>Serien</translation>
-    </message>
-    <message>
         <source>Choose or enter a PACS node, then Echo or Search.</source>
         <translation>Einen PACS-Knoten wählen oder eingeben, dann Echo oder Suchen.</translation>
     </message>
     <message>
         <source>Retrieve and Import</source>
         <translation>Abrufen und importieren</translation>
-    </message>
-    <message>
-        <source>Fetch the selected study (C-GET) and import its CT into the open study</source>
-        <translation>Die gewählte Studie abrufen (C-GET) und ihr CT in die offene Studie importieren</translation>
     </message>
     <message>
         <source>PACS node</source>
@@ -5104,10 +5100,6 @@ Ersetzen?</translation>
     <message>
         <source>Test the connection (C-ECHO)</source>
         <translation>Die Verbindung prüfen (C-ECHO)</translation>
-    </message>
-    <message>
-        <source>Find studies</source>
-        <translation>Studien suchen</translation>
     </message>
     <message>
         <source>e.g. DOE^J* (wildcards * and ?)</source>
@@ -5188,6 +5180,193 @@ Ersetzen?</translation>
     <message>
         <source>Studies found: %1.</source>
         <translation>Gefundene Studien: %1.</translation>
+    </message>
+    <message>
+        <source>Patient / series</source>
+        <translation>Patient / Serie</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop the echo or the query (C-CANCEL)</source>
+        <translation>Echo oder Suche beenden (C-CANCEL)</translation>
+    </message>
+    <message>
+        <source>Fetch the selected study or series (C-GET) and import its CT into the open study</source>
+        <translation>Die gewählte Studie oder Serie holen (C-GET) und ihr CT in die offene Studie importieren</translation>
+    </message>
+    <message>
+        <source>DICOM TLS</source>
+        <translation>DICOM TLS</translation>
+    </message>
+    <message>
+        <source>Encrypt the connection (DICOM TLS, BCP 195); the PACS must prove itself with a trusted certificate</source>
+        <translation>Die Verbindung verschlüsseln (DICOM TLS, BCP 195); das PACS muss sich mit einem vertrauenswürdigen Zertifikat ausweisen</translation>
+    </message>
+    <message>
+        <source>PEM files (*.pem *.crt *.cer *.key);;All files (*)</source>
+        <translation>PEM-Dateien (*.pem *.crt *.cer *.key);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Trusted certificates:</source>
+        <translation>Vertrauenswürdige Zertifikate:</translation>
+    </message>
+    <message>
+        <source>The PACS&apos;s certificate or its authority&apos;s (PEM)</source>
+        <translation>Das Zertifikat des PACS oder seiner Zertifizierungsstelle (PEM)</translation>
+    </message>
+    <message>
+        <source>Our certificate:</source>
+        <translation>Unser Zertifikat:</translation>
+    </message>
+    <message>
+        <source>Ours, for a PACS that requires one (PEM; optional)</source>
+        <translation>Unseres, für ein PACS, das eines verlangt (PEM; optional)</translation>
+    </message>
+    <message>
+        <source>Our private key:</source>
+        <translation>Unser privater Schlüssel:</translation>
+    </message>
+    <message>
+        <source>The private key of our certificate (PEM, not encrypted)</source>
+        <translation>Der private Schlüssel unseres Zertifikats (PEM, unverschlüsselt)</translation>
+    </message>
+    <message>
+        <source>Find</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Studies</source>
+        <translation>Studien</translation>
+    </message>
+    <message>
+        <source>Patients</source>
+        <translation>Patienten</translation>
+    </message>
+    <message>
+        <source>List studies, or patients whose studies open below them; a study opens onto its series</source>
+        <translation>Studien auflisten, oder Patienten, unter denen sich ihre Studien öffnen; eine Studie öffnet sich zu ihren Serien</translation>
+    </message>
+    <message>
+        <source>List:</source>
+        <translation>Auflisten:</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>series</source>
+        <translation>Serien</translation>
+    </message>
+    <message>
+        <source>Patients found: %1.</source>
+        <translation>Gefundene Patienten: %1.</translation>
+    </message>
+    <message>
+        <source>born %1</source>
+        <translation>geb. %1</translation>
+    </message>
+    <message>
+        <source>studies</source>
+        <translation>Studien</translation>
+    </message>
+    <message>
+        <source>Wait for the running query, or Cancel it, then open this row again.</source>
+        <translation>Auf die laufende Suche warten oder sie abbrechen, dann diese Zeile erneut öffnen.</translation>
+    </message>
+    <message>
+        <source>Finding the studies of %1...</source>
+        <translation>Suche die Studien von %1...</translation>
+    </message>
+    <message>
+        <source>Finding the series of %1...</source>
+        <translation>Suche die Serien von %1...</translation>
+    </message>
+    <message>
+        <source>%1 #%2</source>
+        <translation>%1 Nr. %2</translation>
+    </message>
+    <message>
+        <source>images</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <source>Nothing found below this row.</source>
+        <translation>Unter dieser Zeile nichts gefunden.</translation>
+    </message>
+    <message>
+        <source>Found: %1.</source>
+        <translation>Gefunden: %1.</translation>
+    </message>
+    <message>
+        <source>%1 of %2, %3</source>
+        <translation>%1 von %2, %3</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::PacsSendDialog</name>
+    <message>
+        <source>Send to PACS</source>
+        <translation>An PACS senden</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>PACS node:</source>
+        <translation>PACS-Knoten:</translation>
+    </message>
+    <message>
+        <source>No PACS node is saved: add one in File &gt; Query/Retrieve (PACS).</source>
+        <translation>Kein PACS-Knoten gespeichert: einen unter Datei &gt; Suchen/Abrufen (PACS) hinzufügen.</translation>
+    </message>
+    <message>
+        <source>%1: none in the study</source>
+        <translation>%1: keiner in der Studie</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>Newest report as a DICOM Encapsulated PDF</source>
+        <translation>Neuester Bericht als DICOM Encapsulated PDF</translation>
+    </message>
+    <message>
+        <source>Newest label as a DICOM SEG</source>
+        <translation>Neuestes Label als DICOM-SEG</translation>
+    </message>
+    <message>
+        <source>Do not send it (never into the patient&apos;s study)</source>
+        <translation>Nicht senden (nie in die Studie des Patienten)</translation>
+    </message>
+    <message>
+        <source>Send it as a new anonymized study</source>
+        <translation>Als neue anonymisierte Studie senden</translation>
+    </message>
+    <message>
+        <source>An anonymized report:</source>
+        <translation>Ein anonymisierter Bericht:</translation>
+    </message>
+    <message>
+        <source>The objects go into the patient&apos;s study, referencing the CT series, under the UID root of Query/Retrieve.</source>
+        <translation>Die Objekte gehen in die Studie des Patienten, mit Verweis auf die CT-Serie, unter der UID-Wurzel aus Suchen/Abrufen.</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
     </message>
 </context>
 <context>

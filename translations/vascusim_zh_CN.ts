@@ -4984,6 +4984,18 @@ Replace them?</source>
         <source>Retrieve %1 from PACS</source>
         <translation>从 PACS 获取 %1</translation>
     </message>
+    <message>
+        <source>Send to PAC&amp;S...</source>
+        <translation>发送到 PAC&amp;S...</translation>
+    </message>
+    <message>
+        <source>Send to PACS %1</source>
+        <translation>发送到 PACS %1</translation>
+    </message>
+    <message>
+        <source>Sent %1 objects to %2.</source>
+        <translation>已向 %2 发送 %1 个对象。</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::PacsDialog</name>
@@ -4992,16 +5004,8 @@ Replace them?</source>
         <translation>查询/获取 (PACS)</translation>
     </message>
     <message>
-        <source>Patient</source>
-        <translation>患者</translation>
-    </message>
-    <message>
         <source>Patient ID</source>
         <translation>患者 ID</translation>
-    </message>
-    <message>
-        <source>Study date</source>
-        <translation>检查日期</translation>
     </message>
     <message>
         <source>Description</source>
@@ -5016,20 +5020,12 @@ Replace them?</source>
         <translation>模态</translation>
     </message>
     <message>
-        <source>Series</source>
-        <translation>序列</translation>
-    </message>
-    <message>
         <source>Choose or enter a PACS node, then Echo or Search.</source>
         <translation>选择或输入 PACS 节点，然后执行 Echo 或搜索。</translation>
     </message>
     <message>
         <source>Retrieve and Import</source>
         <translation>获取并导入</translation>
-    </message>
-    <message>
-        <source>Fetch the selected study (C-GET) and import its CT into the open study</source>
-        <translation>获取所选研究（C-GET）并将其 CT 导入当前打开的研究</translation>
     </message>
     <message>
         <source>PACS node</source>
@@ -5102,10 +5098,6 @@ Replace them?</source>
     <message>
         <source>Test the connection (C-ECHO)</source>
         <translation>测试连接（C-ECHO）</translation>
-    </message>
-    <message>
-        <source>Find studies</source>
-        <translation>查找研究</translation>
     </message>
     <message>
         <source>e.g. DOE^J* (wildcards * and ?)</source>
@@ -5186,6 +5178,193 @@ Replace them?</source>
     <message>
         <source>Studies found: %1.</source>
         <translation>找到的研究：%1。</translation>
+    </message>
+    <message>
+        <source>Patient / series</source>
+        <translation>患者 / 序列</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>数量</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Stop the echo or the query (C-CANCEL)</source>
+        <translation>停止 Echo 或查询（C-CANCEL）</translation>
+    </message>
+    <message>
+        <source>Fetch the selected study or series (C-GET) and import its CT into the open study</source>
+        <translation>获取所选研究或序列（C-GET）并将其 CT 导入当前打开的研究</translation>
+    </message>
+    <message>
+        <source>DICOM TLS</source>
+        <translation>DICOM TLS</translation>
+    </message>
+    <message>
+        <source>Encrypt the connection (DICOM TLS, BCP 195); the PACS must prove itself with a trusted certificate</source>
+        <translation>加密连接（DICOM TLS，BCP 195）；PACS 必须以受信任的证书证明身份</translation>
+    </message>
+    <message>
+        <source>PEM files (*.pem *.crt *.cer *.key);;All files (*)</source>
+        <translation>PEM 文件 (*.pem *.crt *.cer *.key);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Trusted certificates:</source>
+        <translation>受信任证书：</translation>
+    </message>
+    <message>
+        <source>The PACS&apos;s certificate or its authority&apos;s (PEM)</source>
+        <translation>PACS 的证书或其证书颁发机构的证书（PEM）</translation>
+    </message>
+    <message>
+        <source>Our certificate:</source>
+        <translation>我方证书：</translation>
+    </message>
+    <message>
+        <source>Ours, for a PACS that requires one (PEM; optional)</source>
+        <translation>我方证书，供要求证书的 PACS 使用（PEM；可选）</translation>
+    </message>
+    <message>
+        <source>Our private key:</source>
+        <translation>我方私钥：</translation>
+    </message>
+    <message>
+        <source>The private key of our certificate (PEM, not encrypted)</source>
+        <translation>我方证书的私钥（PEM，未加密）</translation>
+    </message>
+    <message>
+        <source>Find</source>
+        <translation>查找</translation>
+    </message>
+    <message>
+        <source>Studies</source>
+        <translation>研究</translation>
+    </message>
+    <message>
+        <source>Patients</source>
+        <translation>患者</translation>
+    </message>
+    <message>
+        <source>List studies, or patients whose studies open below them; a study opens onto its series</source>
+        <translation>列出研究，或列出患者（其研究在其下展开）；研究展开后显示其序列</translation>
+    </message>
+    <message>
+        <source>List:</source>
+        <translation>列出：</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>已取消。</translation>
+    </message>
+    <message>
+        <source>series</source>
+        <translation>个序列</translation>
+    </message>
+    <message>
+        <source>Patients found: %1.</source>
+        <translation>找到的患者：%1。</translation>
+    </message>
+    <message>
+        <source>born %1</source>
+        <translation>出生于 %1</translation>
+    </message>
+    <message>
+        <source>studies</source>
+        <translation>项研究</translation>
+    </message>
+    <message>
+        <source>Wait for the running query, or Cancel it, then open this row again.</source>
+        <translation>请等待正在进行的查询或将其取消，然后再次展开此行。</translation>
+    </message>
+    <message>
+        <source>Finding the studies of %1...</source>
+        <translation>正在查找 %1 的研究...</translation>
+    </message>
+    <message>
+        <source>Finding the series of %1...</source>
+        <translation>正在查找 %1 的序列...</translation>
+    </message>
+    <message>
+        <source>%1 #%2</source>
+        <translation>%1 #%2</translation>
+    </message>
+    <message>
+        <source>images</source>
+        <translation>幅图像</translation>
+    </message>
+    <message>
+        <source>Nothing found below this row.</source>
+        <translation>此行下未找到任何内容。</translation>
+    </message>
+    <message>
+        <source>Found: %1.</source>
+        <translation>找到：%1。</translation>
+    </message>
+    <message>
+        <source>%1 of %2, %3</source>
+        <translation>%2 的 %1，%3</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::gui::PacsSendDialog</name>
+    <message>
+        <source>Send to PACS</source>
+        <translation>发送到 PACS</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>PACS node:</source>
+        <translation>PACS 节点：</translation>
+    </message>
+    <message>
+        <source>No PACS node is saved: add one in File &gt; Query/Retrieve (PACS).</source>
+        <translation>尚未保存 PACS 节点：请在 文件 &gt; 查询/获取 (PACS) 中添加。</translation>
+    </message>
+    <message>
+        <source>%1: none in the study</source>
+        <translation>%1：研究中没有</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1：%2（%3）</translation>
+    </message>
+    <message>
+        <source>Newest report as a DICOM Encapsulated PDF</source>
+        <translation>最新报告，作为 DICOM 封装 PDF</translation>
+    </message>
+    <message>
+        <source>Newest label as a DICOM SEG</source>
+        <translation>最新标签，作为 DICOM SEG</translation>
+    </message>
+    <message>
+        <source>Do not send it (never into the patient&apos;s study)</source>
+        <translation>不发送（绝不存入患者的研究）</translation>
+    </message>
+    <message>
+        <source>Send it as a new anonymized study</source>
+        <translation>作为新的匿名研究发送</translation>
+    </message>
+    <message>
+        <source>An anonymized report:</source>
+        <translation>匿名报告：</translation>
+    </message>
+    <message>
+        <source>The objects go into the patient&apos;s study, referencing the CT series, under the UID root of Query/Retrieve.</source>
+        <translation>这些对象存入患者的研究，引用 CT 序列，使用 查询/获取 中的 UID 根。</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>发送</translation>
     </message>
 </context>
 <context>

@@ -56,6 +56,7 @@ class InteractiveWall;
 class LinePlot;
 class RunPlayer;
 class LabelEditSession;
+struct PacsSendRequest;
 class SegmentationPointsPanel;
 class ViewLayout;
 
@@ -96,7 +97,13 @@ public:
     /// Fetches the study from the node (C-GET) into VascuSim's PACS folder, then imports its CT like importDicom; in
     /// the background with progress and Cancel (a cancelled or failed fetch leaves no files). False when refused
     /// (no study open, busy).
-    bool retrieveFromPacs(const dicom::PacsNode& node, const QString& studyUid, const QString& label = {});
+    bool retrieveFromPacs(const dicom::PacsNode& node, const dicom::RetrieveTarget& target, const QString& label = {});
+    /// Opens File > Send to PACS; Send runs sendToPacs.
+    void showPacsSendDialog();
+    /// Writes the chosen report (Encapsulated PDF) and label (SEG) into VascuSim's outbox folder and stores them on
+    /// the node (C-STORE) in the background, with progress and Cancel; the outbox files are removed afterwards.
+    /// False when refused (no study open, nothing chosen, busy).
+    bool sendToPacs(const PacsSendRequest& request);
     /// Runs a step of the workflow checklist as its menu entry does; false when refused (no study, busy, missing
     /// input: the message says which).
     bool runWorkflowStep(app::WorkflowStep step);

@@ -50,6 +50,7 @@ void MainWindow::createMenus()
     m_documentActions << file->addAction(tr("Import &DICOM..."), QKeySequence(tr("Ctrl+D")), this,
                                          &MainWindow::showDicomImportDialog);
     m_documentActions << file->addAction(tr("Query/Retrieve (&PACS)..."), this, &MainWindow::showPacsDialog);
+    m_documentActions << file->addAction(tr("Send to PAC&S..."), this, &MainWindow::showPacsSendDialog);
     m_documentActions << file->addAction(tr("&Import Volume..."), QKeySequence(tr("Ctrl+I")), this, [this] {
         const QString volume = QFileDialog::getOpenFileName(this, tr("Import volume"), startFolder("volume"), tr(kVolumeFilter));
         rememberFolder("volume", volume);

@@ -1,12 +1,19 @@
-// File > Query/Retrieve (PACS): the dialog, then the fetch (C-GET) into VascuSim's PACS folder and the import of its
-// CT, one after the other in the task runner (progress and Cancel in the status bar).
+// File > Query/Retrieve (PACS): the dialog, then the fetch (C-GET) of the study or series into VascuSim's PACS folder
+// and the import of its CT, one after the other in the task runner (progress and Cancel in the status bar).
+// File > Send to PACS: the study's report and label as DICOM objects, stored on a node in the background.
 
 #include "MainWindow.h"
 #include "PacsDialog.h"
+#include "PacsSendDialog.h"
+#include "vsim/app/DicomResults.h"
+#include "vsim/core/Error.h"
 
 #include <QDateTime>
 #include <QDir>
 #include <QStandardPaths>
+#include <QStatusBar>
+
+#include <filesystem>
 
 namespace vsim::gui {
 
@@ -15,12 +22,12 @@ void MainWindow::showPacsDialog()
     auto* dialog = new PacsDialog(this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
-        retrieveFromPacs(dialog->node(), dialog->selectedStudyUid(), dialog->selectedStudyLabel());
+        retrieveFromPacs(dialog->node(), dialog->selectedTarget(), dialog->selectedLabel());
     });
     dialog->open();
 }
 
-bool MainWindow::retrieveFromPacs(const dicom::PacsNode& node, const QString& studyUid, const QString& label)
+bool MainWindow::retrieveFromPacs(const dicom::PacsNode& node, const dicom::RetrieveTarget& target, const QString& label)
 {
     if (!m_document.hasStudy())
     {
@@ -29,14 +36,74 @@ bool MainWindow::retrieveFromPacs(const dicom::PacsNode& node, const QString& st
     }
     // VascuSim's own folder for what it fetches (a new one each time: a retrieve needs a new or empty folder).
     const QString folder = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-                               .filePath("pacs/" + studyUid + "-" +
+                               .filePath("pacs/" + QString::fromStdString(target.studyInstanceUid) + "-" +
                                          QDateTime::currentDateTimeUtc().toString("yyyyMMddTHHmmsszzz"));
     return m_tasks.run(
         label.isEmpty() ? tr("Retrieve from PACS") : tr("Retrieve %1 from PACS").arg(label),
-        [node, uid = studyUid.toStdString(), path = folder.toStdString()](const Progress& progress) {
-            dicom::retrieveStudy(node, uid, path, progress);
+        [node, target, path = folder.toStdString()](const Progress& progress) {
+            dicom::retrieveStudy(node, target, path, progress);
         },
         [this, folder] { importDicom(folder); });
+}
+
+void MainWindow::showPacsSendDialog()
+{
+    if (!m_document.hasStudy())
+        return;
+    auto* dialog = new PacsSendDialog(m_document.study(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] { sendToPacs(dialog->request()); });
+    dialog->open();
+}
+
+bool MainWindow::sendToPacs(const PacsSendRequest& request)
+{
+    if (!m_document.hasStudy() || (request.reportId.empty() && request.labelId.empty()))
+        return false;
+    // VascuSim's own outbox, a new folder each time: the files it writes there are removed after the send.
+    const std::filesystem::path outbox =
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+            .filePath("pacs-outbox/" + QDateTime::currentDateTimeUtc().toString("yyyyMMddTHHmmsszzz"))
+            .toStdString();
+    auto stored = std::make_shared<std::vector<dicom::StoredObject>>();
+    return m_tasks.run(
+        tr("Send to PACS %1").arg(request.nodeName),
+        [this, request, outbox, stored](const Progress& progress) {
+            if (std::filesystem::exists(outbox))
+                throw Error("the outbox folder exists already: " + outbox.string());
+            std::filesystem::create_directories(outbox);
+            std::vector<std::filesystem::path> files;
+            const auto removeOurs = [&] {
+                std::error_code ignored;
+                for (const std::filesystem::path& file : files)
+                    std::filesystem::remove(file, ignored);
+                std::filesystem::remove(outbox, ignored); // empty now: only ours were there
+            };
+            try
+            {
+                const study::Study& study = m_document.study();
+                if (!request.reportId.empty())
+                {
+                    files.push_back(outbox / "report.dcm");
+                    app::writeReportEncapsulatedPdf(study, request.reportId, files.back());
+                }
+                if (!request.labelId.empty())
+                {
+                    files.push_back(outbox / "label-seg.dcm");
+                    app::writeLabelSegmentation(study, request.labelId, files.back());
+                }
+                *stored = dicom::storeFiles(request.node, files, request.anonymized, progress);
+            }
+            catch (...)
+            {
+                removeOurs();
+                throw;
+            }
+            removeOurs();
+        },
+        [this, request, stored] {
+            statusBar()->showMessage(tr("Sent %1 objects to %2.").arg(stored->size()).arg(request.nodeName), 10000);
+        });
 }
 
 } // namespace vsim::gui

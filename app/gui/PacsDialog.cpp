@@ -5,6 +5,7 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -14,7 +15,8 @@
 #include <QPushButton>
 #include <QRegularExpressionValidator>
 #include <QSpinBox>
-#include <QTableWidget>
+#include <QToolButton>
+#include <QTreeWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent>
 
@@ -35,7 +37,53 @@ QString isoDate(const std::string& dicomDate)
                                  : text(dicomDate);
 }
 
+enum Column
+{
+    kName,
+    kPatientId,
+    kDate,
+    kDescription,
+    kAccession,
+    kModality,
+    kCount,
+    kColumns
+};
+
+constexpr int kKindRole = Qt::UserRole;     ///< PacsDialog::Row
+constexpr int kUidRole = Qt::UserRole + 1;  ///< the patient's ID, the study's or the series' instance UID
+constexpr int kStudyRole = Qt::UserRole + 2; ///< a series row's study UID
+
+QTreeWidgetItem* row(PacsDialog::Row kind, const QStringList& cells, const QString& uid)
+{
+    auto* item = new QTreeWidgetItem(cells);
+    item->setData(kName, kKindRole, int(kind));
+    item->setData(kName, kUidRole, uid);
+    return item;
+}
+
+/// The "..." child that gives a patient or a study its expand arrow until its children are loaded.
+void addPlaceholder(QTreeWidgetItem* parent)
+{
+    parent->addChild(row(PacsDialog::Row::Placeholder, {QStringLiteral("...")}, {}));
+}
+
+PacsDialog::Row kindOf(const QTreeWidgetItem* item)
+{
+    return PacsDialog::Row(item->data(kName, kKindRole).toInt());
+}
+
+QString count(int number, const QString& unit)
+{
+    return number < 0 ? QString() : QStringLiteral("%1 %2").arg(number).arg(unit);
+}
+
 } // namespace
+
+struct PacsDialog::Job
+{
+    CancellationToken token;
+    bool abandoned = false; ///< cancelled: its end is not shown (GUI thread only)
+};
 
 PacsDialog::PacsDialog(QWidget* parent) : QDialog(parent)
 {
@@ -46,44 +94,45 @@ PacsDialog::PacsDialog(QWidget* parent) : QDialog(parent)
     top->addWidget(createFilterBox(), 1);
     layout->addLayout(top);
 
-    m_results = new QTableWidget(0, 7, this);
-    m_results->setHorizontalHeaderLabels({tr("Patient"), tr("Patient ID"), tr("Study date"), tr("Description"),
-                                          tr("Accession"), tr("Modalities"), tr("Series")});
-    m_results->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_results = new QTreeWidget(this);
+    m_results->setColumnCount(kColumns);
+    m_results->setHeaderLabels({tr("Patient / series"), tr("Patient ID"), tr("Date"), tr("Description"), tr("Accession"),
+                                tr("Modalities"), tr("Count")});
     m_results->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_results->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_results->horizontalHeader()->setStretchLastSection(true);
-    m_results->verticalHeader()->hide();
+    m_results->setAlternatingRowColors(true);
+    m_results->header()->setStretchLastSection(true);
     layout->addWidget(m_results, 1);
+    auto* statusRow = new QHBoxLayout;
     m_status = new QLabel(tr("Choose or enter a PACS node, then Echo or Search."), this);
     m_status->setWordWrap(true);
-    layout->addWidget(m_status);
+    statusRow->addWidget(m_status, 1);
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setToolTip(tr("Stop the echo or the query (C-CANCEL)"));
+    statusRow->addWidget(m_cancel);
+    layout->addLayout(statusRow);
 
     auto* buttons = new QDialogButtonBox(this);
     m_retrieve = buttons->addButton(tr("Retrieve and Import"), QDialogButtonBox::AcceptRole);
-    m_retrieve->setToolTip(tr("Fetch the selected study (C-GET) and import its CT into the open study"));
+    m_retrieve->setToolTip(tr("Fetch the selected study or series (C-GET) and import its CT into the open study"));
     buttons->addButton(QDialogButtonBox::Close);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
-    connect(m_results, &QTableWidget::itemSelectionChanged, this, &PacsDialog::updateButtons);
-    connect(m_results, &QTableWidget::cellDoubleClicked, this, [this] {
-        if (m_retrieve->isEnabled())
+    connect(m_cancel, &QPushButton::clicked, this, &PacsDialog::cancel);
+    connect(m_results, &QTreeWidget::itemSelectionChanged, this, &PacsDialog::updateButtons);
+    connect(m_results, &QTreeWidget::itemExpanded, this, &PacsDialog::loadChildren);
+    connect(m_results, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+        if (kindOf(item) == Row::Series && m_retrieve->isEnabled())
             accept();
     });
-    connect(&m_watcher, &QFutureWatcher<void>::finished, this, [this] {
-        std::function<void()> done = std::move(m_done);
-        done();
-        updateButtons();
-    });
     fillSavedNodes({});
-    resize(1000, 560);
+    resize(1100, 720);
     updateButtons();
 }
 
 PacsDialog::~PacsDialog()
 {
-    m_watcher.waitForFinished(); // a node's timeout bounds it
+    cancel(); // a running job ends on its own (its node's timeout bounds it) and touches nothing of the dialog
 }
 
 QWidget* PacsDialog::createNodeBox()
@@ -115,30 +164,67 @@ QWidget* PacsDialog::createNodeBox()
     m_timeout->setValue(30);
     m_timeout->setSuffix(tr(" s"));
     form->addRow(tr("Timeout:"), m_timeout);
+    form->addRow(createTlsBox(box));
     m_uidRoot = new QLineEdit(savedUidRoot(), box);
     m_uidRoot->setPlaceholderText(tr("empty: UUID-based UIDs (2.25...)"));
     m_uidRoot->setToolTip(tr("The organisation's DICOM UID root for the reports and segmentations VascuSim makes"));
     form->addRow(tr("UID root:"), m_uidRoot);
-    auto* row = new QHBoxLayout;
+    auto* buttons = new QHBoxLayout;
     auto* save = new QPushButton(tr("Save"), box);
     auto* remove = new QPushButton(tr("Remove"), box);
     m_echo = new QPushButton(tr("Echo"), box);
     m_echo->setToolTip(tr("Test the connection (C-ECHO)"));
-    row->addWidget(save);
-    row->addWidget(remove);
-    row->addStretch();
-    row->addWidget(m_echo);
-    form->addRow(row);
+    buttons->addWidget(save);
+    buttons->addWidget(remove);
+    buttons->addStretch();
+    buttons->addWidget(m_echo);
+    form->addRow(buttons);
     connect(save, &QPushButton::clicked, this, &PacsDialog::saveNode);
     connect(remove, &QPushButton::clicked, this, &PacsDialog::removeNode);
     connect(m_echo, &QPushButton::clicked, this, &PacsDialog::echo);
     return box;
 }
 
+QGroupBox* PacsDialog::createTlsBox(QWidget* parent)
+{
+    m_tls = new QGroupBox(tr("DICOM TLS"), parent);
+    m_tls->setCheckable(true);
+    m_tls->setChecked(false);
+    m_tls->setToolTip(tr("Encrypt the connection (DICOM TLS, BCP 195); the PACS must prove itself with a trusted "
+                         "certificate"));
+    auto* form = new QFormLayout(m_tls);
+    const auto fileRow = [this, form](const QString& label, const QString& tip, const QString& filter) {
+        auto* edit = new QLineEdit(m_tls);
+        edit->setToolTip(tip);
+        auto* browse = new QToolButton(m_tls);
+        browse->setText(QStringLiteral("..."));
+        connect(browse, &QToolButton::clicked, this, [this, edit, label, filter] {
+            const QString file = QFileDialog::getOpenFileName(this, label, edit->text(), filter);
+            if (!file.isEmpty())
+                edit->setText(file);
+        });
+        auto* line = new QHBoxLayout;
+        line->addWidget(edit, 1);
+        line->addWidget(browse);
+        form->addRow(label, line);
+        return edit;
+    };
+    const QString pem = tr("PEM files (*.pem *.crt *.cer *.key);;All files (*)");
+    m_trusted = fileRow(tr("Trusted certificates:"), tr("The PACS's certificate or its authority's (PEM)"), pem);
+    m_certificate = fileRow(tr("Our certificate:"), tr("Ours, for a PACS that requires one (PEM; optional)"), pem);
+    m_privateKey = fileRow(tr("Our private key:"), tr("The private key of our certificate (PEM, not encrypted)"), pem);
+    return m_tls;
+}
+
 QWidget* PacsDialog::createFilterBox()
 {
-    auto* box = new QGroupBox(tr("Find studies"), this);
+    auto* box = new QGroupBox(tr("Find"), this);
     auto* form = new QFormLayout(box);
+    m_level = new QComboBox(box);
+    m_level->addItem(tr("Studies"), int(Level::Studies));
+    m_level->addItem(tr("Patients"), int(Level::Patients));
+    m_level->setToolTip(tr("List studies, or patients whose studies open below them; a study opens onto its series"));
+    form->addRow(tr("List:"), m_level);
     m_patientName = new QLineEdit(box);
     m_patientName->setPlaceholderText(tr("e.g. DOE^J* (wildcards * and ?)"));
     form->addRow(tr("Patient name:"), m_patientName);
@@ -176,6 +262,10 @@ dicom::PacsNode PacsDialog::node() const
     node.port = m_port->value();
     node.callingAeTitle = m_callingAeTitle->text().trimmed().toStdString();
     node.timeoutS = m_timeout->value();
+    node.tls.enabled = m_tls->isChecked();
+    node.tls.trustedCertificates = m_trusted->text().trimmed().toStdString();
+    node.tls.certificate = m_certificate->text().trimmed().toStdString();
+    node.tls.privateKey = m_privateKey->text().trimmed().toStdString();
     return node;
 }
 
@@ -187,6 +277,10 @@ void PacsDialog::setNode(const QString& name, const dicom::PacsNode& node)
     m_port->setValue(node.port);
     m_callingAeTitle->setText(text(node.callingAeTitle));
     m_timeout->setValue(node.timeoutS);
+    m_tls->setChecked(node.tls.enabled);
+    m_trusted->setText(text(node.tls.trustedCertificates));
+    m_certificate->setText(text(node.tls.certificate));
+    m_privateKey->setText(text(node.tls.privateKey));
 }
 
 void PacsDialog::fillSavedNodes(const QString& current)
@@ -249,20 +343,46 @@ void PacsDialog::removeNode()
     fillSavedNodes({});
 }
 
-void PacsDialog::runInBackground(std::function<void()> work, std::function<void()> done)
+void PacsDialog::runInBackground(std::function<void(const Progress&)> work, std::function<void(const QString&)> done)
 {
-    m_error->clear();
-    m_done = std::move(done);
-    m_watcher.setFuture(QtConcurrent::run([work = std::move(work), error = m_error] {
+    auto job = std::make_shared<Job>();
+    m_job = job;
+    auto* watcher = new QFutureWatcher<QString>(this);
+    connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, job, done = std::move(done)] {
+        watcher->deleteLater();
+        if (job->abandoned)
+            return;
+        m_job.reset();
+        done(watcher->result());
+        updateButtons();
+    });
+    // The work holds no pointer into the dialog: it may outlive it after Cancel.
+    watcher->setFuture(QtConcurrent::run([work = std::move(work), token = job->token]() -> QString {
         try
         {
-            work();
+            work(Progress([](double, const std::string&) {}, token));
+            return {};
+        }
+        catch (const Cancelled&)
+        {
+            return QStringLiteral("cancelled");
         }
         catch (const std::exception& failure)
         {
-            *error = failure.what();
+            return QString::fromStdString(failure.what());
         }
     }));
+    updateButtons();
+}
+
+void PacsDialog::cancel()
+{
+    if (!m_job)
+        return;
+    m_job->abandoned = true;
+    m_job->token.cancel(); // a query sends its C-CANCEL at the next answer
+    m_job.reset();
+    m_status->setText(tr("Cancelled."));
     updateButtons();
 }
 
@@ -272,10 +392,10 @@ void PacsDialog::echo()
         return;
     const dicom::PacsNode target = node();
     m_status->setText(tr("Echo to %1...").arg(text(dicom::describe(target))));
-    runInBackground([target] { dicom::pacsEcho(target); },
-                    [this, target] {
-                        m_status->setText(m_error->empty() ? tr("%1 answers the echo.").arg(text(dicom::describe(target)))
-                                                           : tr("Echo failed: %1").arg(text(*m_error)));
+    runInBackground([target](const Progress&) { dicom::pacsEcho(target); },
+                    [this, target](const QString& error) {
+                        m_status->setText(error.isEmpty() ? tr("%1 answers the echo.").arg(text(dicom::describe(target)))
+                                                          : tr("Echo failed: %1").arg(error));
                         emit echoFinished();
                     });
 }
@@ -290,17 +410,43 @@ void PacsDialog::setFilters(const QString& patientName, const QString& patientId
     m_modality->setCurrentText(modality);
 }
 
+void PacsDialog::setLevel(Level level)
+{
+    m_level->setCurrentIndex(m_level->findData(int(level)));
+}
+
+dicom::StudyQuery PacsDialog::studyQuery(const std::string& patientId) const
+{
+    dicom::StudyQuery query;
+    query.patientName = patientId.empty() ? m_patientName->text().trimmed().toStdString() : std::string();
+    query.patientId = patientId.empty() ? m_patientId->text().trimmed().toStdString() : patientId;
+    query.dateFrom = m_dateFrom->text().toStdString();
+    query.dateTo = m_dateTo->text().toStdString();
+    query.modality = m_modality->currentText().trimmed().toStdString();
+    return query;
+}
+
+namespace {
+
+QTreeWidgetItem* studyRow(const dicom::StudyMatch& match)
+{
+    QTreeWidgetItem* item =
+        row(PacsDialog::Row::Study,
+            {text(match.patientName), text(match.patientId), isoDate(match.studyDate), text(match.studyDescription),
+             text(match.accessionNumber), text(match.modalities), count(match.seriesCount, PacsDialog::tr("series"))},
+            text(match.studyInstanceUid));
+    addPlaceholder(item);
+    return item;
+}
+
+} // namespace
+
 void PacsDialog::search()
 {
     if (isBusy())
         return;
     const dicom::PacsNode target = node();
-    dicom::StudyQuery query;
-    query.patientName = m_patientName->text().trimmed().toStdString();
-    query.patientId = m_patientId->text().trimmed().toStdString();
-    query.dateFrom = m_dateFrom->text().toStdString();
-    query.dateTo = m_dateTo->text().toStdString();
-    query.modality = m_modality->currentText().trimmed().toStdString();
+    const dicom::StudyQuery query = studyQuery({});
     for (const std::string& date : {query.dateFrom, query.dateTo})
         if (!date.empty() && date.size() != 8)
         {
@@ -308,43 +454,103 @@ void PacsDialog::search()
             emit searchFinished();
             return;
         }
+    const bool patients = Level(m_level->currentData().toInt()) == Level::Patients;
     m_status->setText(tr("Searching %1...").arg(text(dicom::describe(target))));
-    runInBackground([target, query, matches = m_matches] { *matches = dicom::findStudies(target, query); },
-                    [this] {
-                        if (!m_error->empty())
-                        {
-                            m_matches->clear();
-                            m_status->setText(tr("Search failed: %1").arg(text(*m_error)));
-                        }
-                        else
-                            m_status->setText(tr("Studies found: %1.").arg(m_matches->size()));
-                        showMatches();
-                        emit searchFinished();
-                    });
+    auto studies = std::make_shared<std::vector<dicom::StudyMatch>>();
+    auto people = std::make_shared<std::vector<dicom::PatientMatch>>();
+    runInBackground(
+        [target, query, patients, studies, people](const Progress& progress) {
+            if (patients)
+                *people = dicom::findPatients(target, {query.patientName, query.patientId}, progress);
+            else
+                *studies = dicom::findStudies(target, query, progress);
+        },
+        [this, patients, studies, people](const QString& error) {
+            m_results->clear();
+            if (!error.isEmpty())
+                m_status->setText(tr("Search failed: %1").arg(error));
+            else if (patients)
+                m_status->setText(tr("Patients found: %1.").arg(people->size()));
+            else
+                m_status->setText(tr("Studies found: %1.").arg(studies->size()));
+            for (const dicom::PatientMatch& match : *people)
+            {
+                QTreeWidgetItem* item = row(Row::Patient,
+                                            {text(match.patientName), text(match.patientId),
+                                             match.birthDate.empty() ? QString() : tr("born %1").arg(isoDate(match.birthDate)),
+                                             text(match.sex), {}, {}, count(match.studyCount, tr("studies"))},
+                                            text(match.patientId));
+                addPlaceholder(item);
+                m_results->addTopLevelItem(item);
+            }
+            for (const dicom::StudyMatch& match : *studies)
+                m_results->addTopLevelItem(studyRow(match));
+            for (int column = 0; column < kColumns; ++column)
+                m_results->resizeColumnToContents(column);
+            if (m_results->topLevelItemCount() > 0)
+                m_results->setCurrentItem(m_results->topLevelItem(0));
+            emit searchFinished();
+        });
 }
 
-void PacsDialog::showMatches()
+void PacsDialog::loadChildren(QTreeWidgetItem* item)
 {
-    m_results->setRowCount(0);
-    for (const dicom::StudyMatch& match : *m_matches)
+    if (item == nullptr || item->childCount() != 1 || kindOf(item->child(0)) != Row::Placeholder)
+        return; // loaded already
+    if (isBusy())
     {
-        const int row = m_results->rowCount();
-        m_results->insertRow(row);
-        const QStringList cells{text(match.patientName), text(match.patientId), isoDate(match.studyDate),
-                                text(match.studyDescription), text(match.accessionNumber), text(match.modalities),
-                                match.seriesCount < 0 ? QString() : QString::number(match.seriesCount)};
-        for (int column = 0; column < cells.size(); ++column)
-            m_results->setItem(row, column, new QTableWidgetItem(cells[column]));
-        m_results->item(row, 0)->setData(Qt::UserRole, text(match.studyInstanceUid));
+        item->setExpanded(false);
+        m_status->setText(tr("Wait for the running query, or Cancel it, then open this row again."));
+        return;
     }
-    m_results->resizeColumnsToContents();
-    if (m_results->rowCount() > 0)
-        m_results->selectRow(0);
+    const dicom::PacsNode target = node();
+    const bool patient = kindOf(item) == Row::Patient;
+    const std::string key = item->data(kName, kUidRole).toString().toStdString();
+    const dicom::StudyQuery query = studyQuery(key);
+    const std::string modality = m_modality->currentText().trimmed().toStdString();
+    m_status->setText(patient ? tr("Finding the studies of %1...").arg(item->text(kName))
+                              : tr("Finding the series of %1...").arg(item->text(kDescription)));
+    auto studies = std::make_shared<std::vector<dicom::StudyMatch>>();
+    auto series = std::make_shared<std::vector<dicom::SeriesMatch>>();
+    runInBackground(
+        [target, patient, key, query, modality, studies, series](const Progress& progress) {
+            if (patient)
+                *studies = dicom::findStudies(target, query, progress);
+            else // the study's every series: the modality filter chose the studies, a study's SEG or PDF belongs to it
+                *series = dicom::findSeries(target, key, {}, progress);
+        },
+        [this, item, key, studies, series](const QString& error) {
+            if (!error.isEmpty())
+            {
+                item->setExpanded(false);
+                m_status->setText(tr("Search failed: %1").arg(error));
+                emit childrenLoaded();
+                return;
+            }
+            delete item->takeChild(0);
+            for (const dicom::StudyMatch& match : *studies)
+                item->addChild(studyRow(match));
+            for (const dicom::SeriesMatch& match : *series)
+            {
+                QTreeWidgetItem* child =
+                    row(Row::Series,
+                        {match.seriesNumber.empty() ? text(match.modality)
+                                                    : tr("%1 #%2").arg(text(match.modality), text(match.seriesNumber)),
+                         {}, isoDate(match.seriesDate), text(match.seriesDescription), {}, text(match.modality),
+                         count(match.instanceCount, tr("images"))},
+                        text(match.seriesInstanceUid));
+                child->setData(kName, kStudyRole, QString::fromStdString(key));
+                item->addChild(child);
+            }
+            m_status->setText(studies->empty() && series->empty() ? tr("Nothing found below this row.")
+                                                                   : tr("Found: %1.").arg(item->childCount()));
+            emit childrenLoaded();
+        });
 }
 
 bool PacsDialog::isBusy() const
 {
-    return m_watcher.isRunning();
+    return m_job != nullptr;
 }
 
 QString PacsDialog::statusText() const
@@ -352,19 +558,31 @@ QString PacsDialog::statusText() const
     return m_status->text();
 }
 
-QString PacsDialog::selectedStudyUid() const
+dicom::RetrieveTarget PacsDialog::selectedTarget() const
 {
-    const QList<QTableWidgetItem*> selected = m_results->selectedItems();
-    return selected.isEmpty() ? QString() : m_results->item(selected.first()->row(), 0)->data(Qt::UserRole).toString();
+    const QTreeWidgetItem* item = m_results->currentItem();
+    if (item == nullptr || !item->isSelected())
+        return {std::string()};
+    const std::string uid = item->data(kName, kUidRole).toString().toStdString();
+    switch (kindOf(item))
+    {
+    case Row::Study:
+        return {uid};
+    case Row::Series:
+        return {item->data(kName, kStudyRole).toString().toStdString(), uid};
+    default:
+        return {std::string()};
+    }
 }
 
-QString PacsDialog::selectedStudyLabel() const
+QString PacsDialog::selectedLabel() const
 {
-    const QList<QTableWidgetItem*> selected = m_results->selectedItems();
-    if (selected.isEmpty())
+    const QTreeWidgetItem* item = m_results->currentItem();
+    if (item == nullptr)
         return {};
-    const int row = selected.first()->row();
-    return tr("%1, %2").arg(m_results->item(row, 3)->text(), m_results->item(row, 2)->text());
+    if (kindOf(item) == Row::Series && item->parent() != nullptr)
+        return tr("%1 of %2, %3").arg(item->text(kName), item->parent()->text(kDescription), item->parent()->text(kDate));
+    return tr("%1, %2").arg(item->text(kDescription), item->text(kDate));
 }
 
 void PacsDialog::updateButtons()
@@ -372,7 +590,8 @@ void PacsDialog::updateButtons()
     const bool busy = isBusy();
     m_echo->setEnabled(!busy);
     m_search->setEnabled(!busy);
-    m_retrieve->setEnabled(!busy && !selectedStudyUid().isEmpty());
+    m_cancel->setEnabled(busy);
+    m_retrieve->setEnabled(!busy && !selectedTarget().studyInstanceUid.empty());
 }
 
 } // namespace vsim::gui

@@ -29,6 +29,10 @@ QList<PacsNodeEntry> loadPacsNodes()
         entry.node.port = settings.value("port", 104).toInt();
         entry.node.callingAeTitle = settings.value("calling_ae_title", "VASCUSIM").toString().toStdString();
         entry.node.timeoutS = settings.value("timeout_s", 30).toInt();
+        entry.node.tls.enabled = settings.value("tls", false).toBool();
+        entry.node.tls.trustedCertificates = settings.value("tls_trusted_certificates").toString().toStdString();
+        entry.node.tls.certificate = settings.value("tls_certificate").toString().toStdString();
+        entry.node.tls.privateKey = settings.value("tls_private_key").toString().toStdString();
         nodes << entry;
     }
     settings.endArray();
@@ -50,6 +54,10 @@ void savePacsNodes(const QList<PacsNodeEntry>& nodes)
         settings.setValue("port", entry.node.port);
         settings.setValue("calling_ae_title", QString::fromStdString(entry.node.callingAeTitle));
         settings.setValue("timeout_s", entry.node.timeoutS);
+        settings.setValue("tls", entry.node.tls.enabled); // the files' paths only: the keys stay where they are
+        settings.setValue("tls_trusted_certificates", QString::fromStdString(entry.node.tls.trustedCertificates));
+        settings.setValue("tls_certificate", QString::fromStdString(entry.node.tls.certificate));
+        settings.setValue("tls_private_key", QString::fromStdString(entry.node.tls.privateKey));
     }
     settings.endArray();
 }

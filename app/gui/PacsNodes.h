@@ -2,7 +2,7 @@
 
 // The PACS nodes and the DICOM UID root as the workstation's settings keep them (QSettings "pacs/nodes",
 // "dicom/uid_root"), as Horos's and Slicer's DICOM settings do: a name for people and the node's AE title, host, port,
-// our AE title and timeout.
+// our AE title, timeout and DICOM TLS (whether, and the paths of the certificate files: never their contents).
 
 #include "vsim/dicom/PacsClient.h"
 
