@@ -10,12 +10,43 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QFile>
+#include <QTimeZone>
 #include <QStandardPaths>
 #include <QStatusBar>
 
 #include <filesystem>
 
 namespace vsim::gui {
+namespace {
+
+constexpr const char* kFetchTime = "yyyyMMddTHHmmsszzz"; ///< UTC, the end of a retrieve folder's name
+constexpr qint64 kKeepFetchedS = 24 * 3600;               ///< how long fetched files stay for a re-import (s)
+
+/// The clean-up policy of VascuSim's PACS folder: a retrieve's files are there to be imported (the study keeps its
+/// own copy of the volume), then kept a day for a re-import; each new retrieve removes the older ones. Only what
+/// VascuSim made is touched: folders named <study UID>-<UTC time> holding plain files only.
+void pruneFetchedStudies(const QDir& pacsFolder)
+{
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    for (const QFileInfo& entry : pacsFolder.entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot))
+    {
+        const QString name = entry.fileName();
+        const qsizetype dash = name.lastIndexOf('-');
+        QDateTime fetched = QDateTime::fromString(name.mid(dash + 1), kFetchTime);
+        fetched.setTimeZone(QTimeZone::utc());
+        if (dash <= 0 || !fetched.isValid() || fetched.secsTo(now) < kKeepFetchedS)
+            continue;
+        const QDir folder(entry.absoluteFilePath());
+        if (!folder.entryList(QDir::Dirs | QDir::NoDotAndDotDot | QDir::System).isEmpty())
+            continue; // not what a retrieve writes
+        for (const QString& file : folder.entryList(QDir::Files | QDir::Hidden))
+            QFile::remove(folder.filePath(file));
+        pacsFolder.rmdir(name);
+    }
+}
+
+} // namespace
 
 void MainWindow::showPacsDialog()
 {
@@ -35,9 +66,10 @@ bool MainWindow::retrieveFromPacs(const dicom::PacsNode& node, const dicom::Retr
         return false;
     }
     // VascuSim's own folder for what it fetches (a new one each time: a retrieve needs a new or empty folder).
-    const QString folder = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-                               .filePath("pacs/" + QString::fromStdString(target.studyInstanceUid) + "-" +
-                                         QDateTime::currentDateTimeUtc().toString("yyyyMMddTHHmmsszzz"));
+    const QDir pacsFolder(QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath("pacs"));
+    pruneFetchedStudies(pacsFolder);
+    const QString folder = pacsFolder.filePath(QString::fromStdString(target.studyInstanceUid) + "-" +
+                                               QDateTime::currentDateTimeUtc().toString(kFetchTime));
     return m_tasks.run(
         label.isEmpty() ? tr("Retrieve from PACS") : tr("Retrieve %1 from PACS").arg(label),
         [node, target, path = folder.toStdString()](const Progress& progress) {

@@ -135,6 +135,19 @@ private slots:
         QCOMPARE(tree->topLevelItemCount(), 1);
         Q_UNUSED(seriesRow);
 
+        // The PACS folder's clean-up: a fetch older than a day goes at the next retrieve; a recent one and what
+        // VascuSim did not make stay.
+        const QDir pacsFolder(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/pacs");
+        const QString old = "1.2.3-20200101T000000000", recent = "1.2.3-" +
+            QDateTime::currentDateTimeUtc().addSecs(-3600).toString("yyyyMMddTHHmmsszzz"), foreign = "notes-20200101T000000000";
+        for (const QString& name : {old, recent, foreign})
+        {
+            QVERIFY(pacsFolder.mkpath(name));
+            QFile file(pacsFolder.filePath(name + "/IM1"));
+            QVERIFY(file.open(QIODevice::WriteOnly));
+        }
+        QVERIFY(pacsFolder.mkpath(foreign + "/subfolder")); // not what a retrieve writes
+
         // Retrieve and Import of the series, as the dialog's button does.
         const dicom::RetrieveTarget oneSeries(series.written.studyInstanceUid, series.written.seriesInstanceUid);
         QVERIFY(window.retrieveFromPacs(dialog->node(), oneSeries, "CT #1"));
@@ -143,6 +156,9 @@ private slots:
         const study::Study& opened = window.document().study();
         QCOMPARE(opened.artifacts().size(), std::size_t(1));
         QCOMPARE(opened.artifacts().front().attributes.at("series_instance_uid"), series.written.seriesInstanceUid);
+        QVERIFY(!pacsFolder.exists(old));
+        QVERIFY(pacsFolder.exists(recent + "/IM1") && pacsFolder.exists(foreign + "/IM1"));
+        QVERIFY(QDir(pacsFolder.filePath(recent)).removeRecursively() && QDir(pacsFolder.filePath(foreign)).removeRecursively());
 
         // The same study again: fetched, recognised, not imported twice (the message says so).
         QVERIFY(window.retrieveFromPacs(dialog->node(), series.written.studyInstanceUid));

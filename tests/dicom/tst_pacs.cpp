@@ -3,7 +3,9 @@
 // with DCMTK's storescu (another implementation than ours), then: C-ECHO; C-FIND at the study level by patient ID,
 // by a name with a wildcard, by modality and by a date range, each against what was uploaded, at the patient and
 // the series level, and cancelled; C-GET of a study and of one series; DICOM TLS (echo, find, get, move, store;
-// the PACS's certificate not trusted, ours not trusted there, plain DICOM on its TLS port); the failures (a
+// the PACS's certificate not trusted, ours not trusted there, plain DICOM on its TLS port); a study holding an MR
+// image besides its CT retrieved whole, then broken (a file removed from the PACS's storage: a partial transfer
+// that leaves nothing); the failures (a
 // wrong called AE title, a port where nothing listens, a node that never answers, an unknown calling AE on a strict
 // server for echo, find, get, move and store, while VASCUSIM gets, moves and stores there) give messages
 // that say what to fix; `vascusim-cli pacs echo|find` the same way, with its exit codes. The round trip through
@@ -14,6 +16,7 @@
 
 #include "DicomFixtures.h"
 #include "OrthancServer.h"
+#include "vsim/core/DicomUid.h"
 #include "vsim/core/Error.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PacsClient.h"
@@ -505,6 +508,52 @@ private slots:
         QVERIFY2(get.code == 0 && get.output.contains("C-MOVE") &&
                      QDir(out + "/dicom").entryList(QDir::Files).size() == int(series.written.files.size()),
                  qPrintable(get.output));
+    }
+
+    /// A study with an MR image besides its CT comes whole (the other objects of a study do not fail its retrieve).
+    /// Then a partial transfer: one stored file removed from the PACS's storage, the PACS sends the others and fails
+    /// that one; the C-GET and the C-MOVE both fail, naming the failure, and leave no file.
+    void partialTransferLeavesNothing()
+    {
+        QString failure;
+        const int listenPort = test::freeLoopbackPort();
+        const std::unique_ptr<test::OrthancServer> orthanc = startOrthanc("orthanc-partial", false, failure, listenPort);
+        QVERIFY2(orthanc, qPrintable(failure));
+        const dicom::PacsNode node = orthanc->node();
+        dicom::CtSeriesDescription description;
+        description.patientId = "PACS-PARTIAL-1";
+        const test::PhantomSeries series = test::writePhantomSeries(dicom::PhantomKind::Stenosis, test::smallPhantomOptions(),
+                                                                    test::freshFolder("pacs", "partial-series"), description);
+        // One slice made an MR image of the same study (DCMTK's dcmodify: class, modality, new series and instance).
+        const std::filesystem::path mr = test::freshFolder("pacs", "partial-mr") / "mr.dcm";
+        std::filesystem::copy_file(series.written.files.front(), mr);
+        QProcess dcmodify;
+        dcmodify.start("dcmodify", {"-nb", "-gin", "-m", "(0008,0016)=1.2.840.10008.5.1.4.1.1.4", "-m", "(0008,0060)=MR", "-m",
+                                    QString::fromStdString("(0020,000e)=" + newDicomUid()), QString::fromStdString(mr.string())});
+        QVERIFY(dcmodify.waitForFinished(30000) && dcmodify.exitCode() == 0);
+        std::vector<std::filesystem::path> upload = series.written.files;
+        upload.push_back(mr);
+        QCOMPARE(orthanc->uploadWithStorescu(upload), 0);
+        const std::string uid = series.written.studyInstanceUid;
+        QCOMPARE(dicom::findSeries(node, uid).size(), std::size_t(2));
+        const std::filesystem::path whole = test::freshFolder("pacs", "partial-whole");
+        QCOMPARE(dicom::retrieveStudy(node, uid, whole).size(), upload.size());
+        const std::filesystem::path wholeMoved = test::freshFolder("pacs", "partial-whole-move");
+        QCOMPARE(dicom::moveStudy(node, uid, wholeMoved, listenPort).size(), upload.size());
+
+        std::vector<std::filesystem::path> stored;
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(orthanc->storageFolder()))
+            if (entry.is_regular_file())
+                stored.push_back(entry.path());
+        QVERIFY(stored.size() >= upload.size());
+        std::filesystem::remove(stored.front());
+        const std::filesystem::path got = test::freshFolder("pacs", "partial-get");
+        const QString getFailed = errorOf([&] { dicom::retrieveStudy(node, uid, got); });
+        QVERIFY2(getFailed.contains("failed") && std::filesystem::is_empty(got), qPrintable(getFailed));
+        const std::filesystem::path moved = test::freshFolder("pacs", "partial-move");
+        const QString moveFailed = errorOf([&] { dicom::moveStudy(node, uid, moved, listenPort); });
+        QVERIFY2(moveFailed.contains("failed") && std::filesystem::is_empty(moved), qPrintable(moveFailed));
+        qInfo("partial C-GET: %s; partial C-MOVE: %s", qPrintable(getFailed), qPrintable(moveFailed));
     }
 
     void failuresSayWhatToFix()

@@ -93,7 +93,7 @@ public:
     /// vsim::Error when it does not start.
     OrthancServer(const std::filesystem::path& folder, bool strict, int vascusimPort = 11112,
                   std::optional<OrthancTls> tls = std::nullopt)
-        : m_tls(std::move(tls))
+        : m_tls(std::move(tls)), m_folder(folder)
     {
         std::filesystem::remove_all(folder);
         std::filesystem::create_directories(folder);
@@ -109,6 +109,7 @@ public:
                            {"DicomCheckCalledAet", true},
                            {"DicomCheckModalityHost", false},
                            {"RemoteAccessAllowed", false},
+                           {"MaximumStorageCacheSize", 0}, // MB: every transfer reads the storage (a test breaks it)
                            {"Plugins", QJsonArray()},
                            {"DicomModalities", QJsonObject{{"vascusim", QJsonArray{"VASCUSIM", "127.0.0.1", vascusimPort}}}}};
         if (m_tls)
@@ -167,6 +168,8 @@ public:
     OrthancServer& operator=(const OrthancServer&) = delete;
 
     int port() const { return m_port; }
+    /// Where Orthanc keeps the files it stored (a test removes one to break a transfer).
+    std::filesystem::path storageFolder() const { return m_folder / "storage"; }
     /// The node as VascuSim (AE title VASCUSIM) reaches it.
     dicom::PacsNode node() const
     {
@@ -202,6 +205,7 @@ public:
 
 private:
     std::optional<OrthancTls> m_tls;
+    std::filesystem::path m_folder;
     int m_port = 0;
     std::unique_ptr<QProcess> m_process;
 };

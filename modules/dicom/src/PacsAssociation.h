@@ -286,13 +286,13 @@ inline void prepareRetrieveFolder(const std::filesystem::path& folder)
         throw Error("cannot create the retrieve's folder " + folder.string() + ": " + error.message());
 }
 
-/// The storage classes a retrieve accepts: the objects a study holds that VascuSim reads or made.
-inline const std::vector<const char*>& retrievedStorageClasses()
+/// The storage classes a retrieve accepts: DCMTK's list of the 120 most common (CT, enhanced CT, SEG, encapsulated
+/// PDF and secondary capture among them, which VascuSim reads or made; MR, PET, the dose and other structured
+/// reports, key objects and presentation states too), so that a study's other objects do not fail its retrieve.
+/// With the retrieve's own context they fit the 128 contexts of one association (PS3.8 9.3.2.2).
+inline std::vector<const char*> retrievedStorageClasses()
 {
-    static const std::vector<const char*> classes = {UID_CTImageStorage, UID_EnhancedCTImageStorage,
-                                                     UID_SegmentationStorage, UID_EncapsulatedPDFStorage,
-                                                     UID_SecondaryCaptureImageStorage};
-    return classes;
+    return {dcmLongSCUStorageSOPClassUIDs, dcmLongSCUStorageSOPClassUIDs + numberOfDcmLongSCUStorageSOPClassUIDs};
 }
 
 /// The failure that the final response of a retrieve reports, or "" for success.
@@ -304,8 +304,10 @@ inline std::string retrieveFailure(const OFList<RetrieveResponse*>& responses)
         if (response->m_status == STATUS_Pending)
             continue;
         if (response->m_status != STATUS_Success || response->m_numberOfFailedSubops > 0)
-            failure = "the PACS ended the retrieve with status " + statusText(response->m_status) + ", " +
-                      std::to_string(response->m_numberOfFailedSubops) + " objects failed";
+            failure = "the PACS ended the retrieve with status " + statusText(response->m_status) + " (objects sent " +
+                      std::to_string(response->m_numberOfCompletedSubops) + ", failed " +
+                      std::to_string(response->m_numberOfFailedSubops) + ", not sent " +
+                      std::to_string(response->m_numberOfRemainingSubops) + ")";
     }
     return failure;
 }
