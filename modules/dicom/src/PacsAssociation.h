@@ -1,6 +1,6 @@
 #pragma once
 
-// One DICOM association to a PACS node, shared by the PACS client's calls (PacsClient.cpp, PacsStore.cpp):
+// One DICOM association to a PACS node, shared by the PACS client's calls (PacsClient, PacsFind, PacsMove, PacsStore):
 // checks the node's settings, proposes the presentation contexts, negotiates (over TLS on a TLS node), maps a
 // rejection to words, and releases at the end of its scope. Internal to the dicom module.
 
@@ -93,7 +93,7 @@ public:
                         (node.tls.enabled ? ", and does it speak DICOM TLS there?)" : "?)"));
         if (negotiated.bad() && node.tls.enabled)
             throw Error("could not connect over DICOM TLS (" + describe(node) + "): " + negotiated.text() +
-                        " (does the PACS speak TLS on this port, is its certificate among ours trusted (" +
+                        " (does the PACS speak TLS on this port, is its certificate among those we trust (" +
                         node.tls.trustedCertificates + "), and does it trust ours?)");
         check(negotiated, "could not connect");
     }
