@@ -3087,6 +3087,10 @@
         <source>STOPPED EARLY (%1)</source>
         <translation>VORZEITIG BEENDET (%1)</translation>
     </message>
+    <message>
+        <source>, %1 of them at the %2-iteration cap</source>
+        <translation>, %1 davon an der Grenze von %2 Iterationen</translation>
+    </message>
 </context>
 <context>
     <name>vsim::ViewMeasurement</name>

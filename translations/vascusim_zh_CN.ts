@@ -3087,6 +3087,10 @@
         <source>STOPPED EARLY (%1)</source>
         <translation>提前停止（%1）</translation>
     </message>
+    <message>
+        <source>, %1 of them at the %2-iteration cap</source>
+        <translation>，其中 %1 次达到 %2 次迭代上限</translation>
+    </message>
 </context>
 <context>
     <name>vsim::ViewMeasurement</name>

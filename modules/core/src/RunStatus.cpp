@@ -43,7 +43,11 @@ void RunStatus::recordSolve(int solveIterations, double residual, double solveTo
     finalResidual = residual;
     worstResidual = std::max(worstResidual, residual);
     if (!(residual <= solveTolerance)) // NaN counts as not converged
+    {
         ++unconvergedSolves;
+        if (cap > 0 && solveIterations >= cap)
+            ++solvesAtCap;
+    }
 }
 
 std::string RunStatus::convergenceText(bool forPeople) const
@@ -61,9 +65,12 @@ std::string RunStatus::convergenceText(bool forPeople) const
     {
         details = withArguments(localized("vsim::RunStatus", "%1 of %2 solves ended above their tolerance"),
                                 {std::to_string(unconvergedSolves), std::to_string(solves)});
-        if (iterationCap > 0)
+        if (iterationCap > 0 && solvesAtCap > 0 && solvesAtCap == unconvergedSolves)
             details +=
                 withArguments(localized("vsim::RunStatus", " at the %1-iteration cap"), {std::to_string(iterationCap)});
+        else if (iterationCap > 0 && solvesAtCap > 0)
+            details += withArguments(localized("vsim::RunStatus", ", %1 of them at the %2-iteration cap"),
+                                     {std::to_string(solvesAtCap), std::to_string(iterationCap)});
         details += withArguments(localized("vsim::RunStatus", ", worst relative residual %1 (tolerance %2)"),
                                  {shortNumber(worstResidual), shortNumber(tolerance)});
         if (!force.empty())
@@ -117,6 +124,7 @@ std::map<std::string, double> RunStatus::metrics() const
                                          {"run_complete", complete() ? 1.0 : 0.0},
                                          {"run_solves", double(solves)},
                                          {"run_unconverged_solves", double(unconvergedSolves)},
+                                         {"run_solves_at_cap", double(solvesAtCap)},
                                          {"run_mean_iterations", solves ? double(iterations) / double(solves) : 0.0},
                                          {"run_iteration_cap", double(iterationCap)},
                                          {"run_tolerance", tolerance},
@@ -155,6 +163,7 @@ RunStatus RunStatus::fromRecords(const std::map<std::string, double>& metrics,
     RunStatus status;
     status.solves = long(number("run_solves", 0));
     status.unconvergedSolves = long(number("run_unconverged_solves", 0));
+    status.solvesAtCap = long(number("run_solves_at_cap", 0)); // unknown in older studies: the cap is not claimed
     status.iterations = long(number("run_mean_iterations", 0) * double(status.solves) + 0.5);
     status.iterationCap = int(number("run_iteration_cap", 0));
     status.tolerance = number("run_tolerance", 0);

@@ -21,7 +21,9 @@ struct RunStatus
     };
 
     long solves = 0;             ///< linear (or nonlinear) solves recorded
-    long unconvergedSolves = 0;  ///< solves that ended above their tolerance (at the iteration cap)
+    long unconvergedSolves = 0;  ///< solves that ended above their tolerance
+    long solvesAtCap = 0;        ///< of those, the ones that took the whole iteration cap (the others stopped early:
+                                 ///< a breakdown or a stall)
     long iterations = 0;         ///< iterations of all solves together (0 for direct solvers)
     int iterationCap = 0;        ///< the largest number of iterations a solve may take (0: direct)
     double tolerance = 0.0;      ///< relative residual a solve must reach
@@ -44,8 +46,9 @@ struct RunStatus
     bool converged() const { return unconvergedSolves == 0 && (forceResidual < 0.0 || forceResidual <= forceTolerance); }
     /// True when the run reached its target (ran to its end or a physical end condition).
     bool complete() const { return stoppedBy == StoppedBy::End || stoppedBy == StoppedBy::EndCondition; }
-    /// "converged" or "not converged: 200 of 200 solves ended at the 100-iteration cap, worst relative residual
-    /// 3.1e-03 above the tolerance 1e-06". `forPeople`: in the reader's language (localized(), for reports);
+    /// "converged" or "not converged: 200 of 200 solves ended above their tolerance at the 100-iteration cap, worst
+    /// relative residual 3.1e-03 (tolerance 1e-06)"; the cap is named only for the solves that reached it ("3 of
+    /// 200 ..., 1 of them at the ..." when the others stopped before it). `forPeople`: in the reader's language (localized(), for reports);
     /// else English, as the study and metrics.json keep it.
     std::string convergenceText(bool forPeople = false) const;
     /// "" when the run ran to its end; else e.g. "stopped by a guard at pressure 9.1 of 16.0 kPa: <message>" (the
@@ -55,7 +58,7 @@ struct RunStatus
     /// target; else "NOT CONVERGED (...)" and / or "STOPPED EARLY (...)", joined by "; ".
     std::string warningText(bool forPeople = false) const;
 
-    /// The record as run metrics (run_converged 0/1, run_solves, run_unconverged_solves, run_mean_iterations,
+    /// The record as run metrics (run_converged 0/1, run_solves, run_unconverged_solves, run_solves_at_cap, run_mean_iterations,
     /// run_iteration_cap, run_tolerance, run_final_residual, run_worst_residual, run_complete 0/1, with a force
     /// residual run_force_residual and run_force_tolerance,
     /// run_reached_<quantity>_<unit>, run_target_<quantity>_<unit>), for the study's attributes and metrics.json.
