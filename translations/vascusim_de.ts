@@ -1296,6 +1296,1345 @@
     </message>
 </context>
 <context>
+    <name>vsim::Error</name>
+    <message>
+        <source>the series belongs to another patient than the study (Patient ID differs); import it into a study of its own</source>
+        <translation>die Serie gehört zu einem anderen Patienten als die Studie (Patienten-ID verschieden); importieren Sie sie in eine eigene Studie</translation>
+    </message>
+    <message>
+        <source>the needle&apos;s bore, the generation rate and the box&apos;s depth must be positive, the box&apos;s margin not negative</source>
+        <translation>Kanülenbohrung, Erzeugungsrate und Tiefe des Behälters müssen positiv sein, der Rand des Behälters darf nicht negativ sein</translation>
+    </message>
+    <message>
+        <source>cannot write the run file</source>
+        <translation>die Laufdatei kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>the drug run records no centerlines to run again from</source>
+        <translation>der Wirkstofflauf verzeichnet keine Mittellinien, von denen aus er erneut laufen könnte</translation>
+    </message>
+    <message>
+        <source>artifact</source>
+        <translation>Artefakt</translation>
+    </message>
+    <message>
+        <source>cannot create the run folder</source>
+        <translation>der Ordner des Laufs kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>folder</source>
+        <translation>Ordner</translation>
+    </message>
+    <message>
+        <source>cannot write metrics.json</source>
+        <translation>metrics.json kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>the wall-load surface has no TAWSS</source>
+        <translation>die Wandlast-Oberfläche hat keine TAWSS</translation>
+    </message>
+    <message>
+        <source>no vertex of the wall-load surface was sampled</source>
+        <translation>kein Eckpunkt der Wandlast-Oberfläche wurde abgetastet</translation>
+    </message>
+    <message>
+        <source>not a centerlines artifact</source>
+        <translation>kein Mittellinien-Artefakt</translation>
+    </message>
+    <message>
+        <source>segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>a segment&apos;s name cannot be empty</source>
+        <translation>der Name eines Segments darf nicht leer sein</translation>
+    </message>
+    <message>
+        <source>the evh scenario places its tunnel around a vessel: the study has no centerlines (vascusim-cli centerlines)</source>
+        <translation>das EVH-Szenario legt seinen Tunnel um ein Gefäß: die Studie hat keine Mittellinien (vascusim-cli centerlines)</translation>
+    </message>
+    <message>
+        <source>the study&apos;s centerlines have no segment for the evh tunnel</source>
+        <translation>die Mittellinien der Studie haben kein Segment für den EVH-Tunnel</translation>
+    </message>
+    <message>
+        <source>not a translation catalogue (.qm)</source>
+        <translation>kein Übersetzungskatalog (.qm)</translation>
+    </message>
+    <message>
+        <source>a sheet needs a positive size, a cell size and at least 0.05 mm thickness</source>
+        <translation>eine Schicht braucht eine positive Größe, eine Zellgröße und mindestens 0,05 mm Dicke</translation>
+    </message>
+    <message>
+        <source>scaledSum: x and y differ in length</source>
+        <translation>scaledSum: x und y sind verschieden lang</translation>
+    </message>
+    <message>
+        <source>no CUDA device: run the wall solver on the CPU (--backend cpu)</source>
+        <translation>kein CUDA-Gerät: rechnen Sie die Wand auf der CPU (--backend cpu)</translation>
+    </message>
+    <message>
+        <source>the CUDA backend runs the co-rotational linear model only: run St. Venant-Kirchhoff on the CPU (--backend cpu)</source>
+        <translation>das CUDA-Backend rechnet nur das korotierende lineare Modell: rechnen Sie St. Venant-Kirchhoff auf der CPU (--backend cpu)</translation>
+    </message>
+    <message>
+        <source>the smoke&apos;s CUDA backend needs a CUDA device, and there is none</source>
+        <translation>das CUDA-Backend des Rauchs braucht ein CUDA-Gerät, und es gibt keines</translation>
+    </message>
+    <message>
+        <source>the smoke&apos;s CUDA backend takes grids of fewer than 2^31 cells</source>
+        <translation>das CUDA-Backend des Rauchs nimmt Gitter mit weniger als 2^31 Zellen</translation>
+    </message>
+    <message>
+        <source>the smoke&apos;s CUDA backend was made for another grid</source>
+        <translation>das CUDA-Backend des Rauchs wurde für ein anderes Gitter angelegt</translation>
+    </message>
+    <message>
+        <source>no CUDA device: run the SPH solver on the CPU (--backend cpu)</source>
+        <translation>kein CUDA-Gerät: rechnen Sie SPH auf der CPU (--backend cpu)</translation>
+    </message>
+    <message>
+        <source>the CUDA SPH backend runs no periodic axes or tracer absorption yet: run this case on the CPU (--backend cpu)</source>
+        <translation>das CUDA-SPH-Backend rechnet noch keine periodischen Achsen und keine Tracer-Aufnahme: rechnen Sie diesen Fall auf der CPU (--backend cpu)</translation>
+    </message>
+    <message>
+        <source>cancelled by the user</source>
+        <translation>vom Benutzer abgebrochen</translation>
+    </message>
+    <message>
+        <source>image volume adopted an empty buffer</source>
+        <translation>das Bildvolumen hat einen leeren Puffer übernommen</translation>
+    </message>
+    <message>
+        <source>--rescale needs a finite, non-zero slope and a finite intercept</source>
+        <translation>--rescale braucht eine endliche Steigung ungleich null und einen endlichen Achsenabschnitt</translation>
+    </message>
+    <message>
+        <source>option</source>
+        <translation>Option</translation>
+    </message>
+    <message>
+        <source>cannot write into the output folder</source>
+        <translation>in den Ausgabeordner kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>the output path is a file, not a folder; VascuSim does not replace it</source>
+        <translation>der Ausgabepfad ist eine Datei, kein Ordner; VascuSim ersetzt sie nicht</translation>
+    </message>
+    <message>
+        <source>path</source>
+        <translation>Pfad</translation>
+    </message>
+    <message>
+        <source>the output folder holds files VascuSim did not write; choose a new or empty folder</source>
+        <translation>der Ausgabeordner enthält Dateien, die VascuSim nicht geschrieben hat; wählen Sie einen neuen oder leeren Ordner</translation>
+    </message>
+    <message>
+        <source>the output path is a folder; VascuSim writes a file there only where nothing is</source>
+        <translation>der Ausgabepfad ist ein Ordner; VascuSim schreibt eine Datei nur dorthin, wo nichts ist</translation>
+    </message>
+    <message>
+        <source>the output file exists; give --overwrite to replace it</source>
+        <translation>die Ausgabedatei existiert; geben Sie --overwrite an, um sie zu ersetzen</translation>
+    </message>
+    <message>
+        <source>the output path is not a regular file; VascuSim does not replace it</source>
+        <translation>der Ausgabepfad ist keine reguläre Datei; VascuSim ersetzt ihn nicht</translation>
+    </message>
+    <message>
+        <source>parameter declared twice</source>
+        <translation>Parameter doppelt deklariert</translation>
+    </message>
+    <message>
+        <source>key</source>
+        <translation>Schlüssel</translation>
+    </message>
+    <message>
+        <source>parameter default outside its declared range</source>
+        <translation>Standardwert des Parameters außerhalb seines Bereichs</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>Standardwert</translation>
+    </message>
+    <message>
+        <source>range</source>
+        <translation>Bereich</translation>
+    </message>
+    <message>
+        <source>known parameters</source>
+        <translation>bekannte Parameter</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>the principal axis of no points</source>
+        <translation>die Hauptachse von null Punkten</translation>
+    </message>
+    <message>
+        <source>skeleton edge refers to a missing node</source>
+        <translation>eine Skelettkante verweist auf einen fehlenden Knoten</translation>
+    </message>
+    <message>
+        <source>skeleton edge has fewer than two points</source>
+        <translation>eine Skelettkante hat weniger als zwei Punkte</translation>
+    </message>
+    <message>
+        <source>skeleton edge has point, voxel and radius lists of different lengths</source>
+        <translation>eine Skelettkante hat Punkt-, Voxel- und Radiuslisten verschiedener Länge</translation>
+    </message>
+    <message>
+        <source>skeleton edge has a radius that is not positive</source>
+        <translation>eine Skelettkante hat einen nicht positiven Radius</translation>
+    </message>
+    <message>
+        <source>tetrahedron refers to a missing point</source>
+        <translation>ein Tetraeder verweist auf einen fehlenden Punkt</translation>
+    </message>
+    <message>
+        <source>element</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <source>inverted or degenerate tetrahedron</source>
+        <translation>umgestülpter oder entarteter Tetraeder</translation>
+    </message>
+    <message>
+        <source>point field length differs from the point count</source>
+        <translation>die Länge des Punktfelds weicht von der Punktzahl ab</translation>
+    </message>
+    <message>
+        <source>field</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>cell field length differs from the element count</source>
+        <translation>die Länge des Zellfelds weicht von der Elementzahl ab</translation>
+    </message>
+    <message>
+        <source>triangle refers to a missing point</source>
+        <translation>ein Dreieck verweist auf einen fehlenden Punkt</translation>
+    </message>
+    <message>
+        <source>triangle</source>
+        <translation>Dreieck</translation>
+    </message>
+    <message>
+        <source>triangle repeats a point</source>
+        <translation>ein Dreieck wiederholt einen Punkt</translation>
+    </message>
+    <message>
+        <source>node</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>an ROI takes two corner points</source>
+        <translation>eine ROI braucht zwei Eckpunkte</translation>
+    </message>
+    <message>
+        <source>volume dimension is not positive</source>
+        <translation>eine Volumenabmessung ist nicht positiv</translation>
+    </message>
+    <message>
+        <source>axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <source>size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>voxel spacing must be positive and finite (mm)</source>
+        <translation>der Voxelabstand muss positiv und endlich sein (mm)</translation>
+    </message>
+    <message>
+        <source>spacing</source>
+        <translation>Abstand</translation>
+    </message>
+    <message>
+        <source>volume origin is not finite</source>
+        <translation>der Ursprung des Volumens ist nicht endlich</translation>
+    </message>
+    <message>
+        <source>direction matrix is not orthonormal</source>
+        <translation>die Richtungsmatrix ist nicht orthonormal</translation>
+    </message>
+    <message>
+        <source>deviation</source>
+        <translation>Abweichung</translation>
+    </message>
+    <message>
+        <source>the AAA phantom&apos;s aneurysm is smaller than 1.5 times its neck; choose a larger --max-diameter</source>
+        <translation>das Aneurysma des AAA-Phantoms ist kleiner als das 1,5-Fache seines Halses; wählen Sie einen größeren --max-diameter</translation>
+    </message>
+    <message>
+        <source>unknown transfer syntax</source>
+        <translation>unbekannte Transfersyntax</translation>
+    </message>
+    <message>
+        <source>cannot set a DICOM attribute</source>
+        <translation>ein DICOM-Attribut kann nicht gesetzt werden</translation>
+    </message>
+    <message>
+        <source>tag</source>
+        <translation>Tag</translation>
+    </message>
+    <message>
+        <source>reason</source>
+        <translation>Grund</translation>
+    </message>
+    <message>
+        <source>cannot create a DICOM sequence item</source>
+        <translation>ein DICOM-Sequenzelement kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>HU value outside -1024..3071 cannot be stored in 12 unsigned bits</source>
+        <translation>ein HU-Wert außerhalb von -1024..3071 lässt sich nicht in 12 vorzeichenlosen Bits speichern</translation>
+    </message>
+    <message>
+        <source>cannot encode the pixel data</source>
+        <translation>die Pixeldaten können nicht kodiert werden</translation>
+    </message>
+    <message>
+        <source>cannot write DICOM file</source>
+        <translation>die DICOM-Datei kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>the pixels and the slice stack of a CT series disagree</source>
+        <translation>Pixel und Schichtstapel einer CT-Serie stimmen nicht überein</translation>
+    </message>
+    <message>
+        <source>file name prefix must have at most 2 characters (8-character DICOMDIR names)</source>
+        <translation>das Dateinamen-Präfix darf höchstens 2 Zeichen haben (8-stellige DICOMDIR-Namen)</translation>
+    </message>
+    <message>
+        <source>cannot create the output folder</source>
+        <translation>der Ausgabeordner kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>DICOM image has no rows or columns</source>
+        <translation>das DICOM-Bild hat keine Zeilen oder Spalten</translation>
+    </message>
+    <message>
+        <source>inconsistent Bits Stored / High Bit</source>
+        <translation>widersprüchliche Bits Stored / High Bit</translation>
+    </message>
+    <message>
+        <source>frame index out of range</source>
+        <translation>Frame-Index außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>frame</source>
+        <translation>Frame</translation>
+    </message>
+    <message>
+        <source>pixel data is shorter than the image it describes (truncated file?)</source>
+        <translation>die Pixeldaten sind kürzer als das Bild, das sie beschreiben (abgeschnittene Datei?)</translation>
+    </message>
+    <message>
+        <source>JPEG 2000 code stream size differs from the image&apos;s rows and columns</source>
+        <translation>die Größe des JPEG-2000-Codestroms weicht von Zeilen und Spalten des Bildes ab</translation>
+    </message>
+    <message>
+        <source>JPEG 2000 pixel data has no code stream header</source>
+        <translation>die JPEG-2000-Pixeldaten haben keinen Codestrom-Header</translation>
+    </message>
+    <message>
+        <source>compressed pixel data has no fragments</source>
+        <translation>die komprimierten Pixeldaten haben keine Fragmente</translation>
+    </message>
+    <message>
+        <source>compressed pixel data fragment unreadable</source>
+        <translation>ein Fragment der komprimierten Pixeldaten ist nicht lesbar</translation>
+    </message>
+    <message>
+        <source>multi-frame JPEG 2000 with several fragments per frame is not supported</source>
+        <translation>Mehrbild-JPEG-2000 mit mehreren Fragmenten je Frame wird nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: no start of image</source>
+        <translation>beschädigter JPEG-Strom: kein Bildanfang</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: marker expected</source>
+        <translation>beschädigter JPEG-Strom: Marker erwartet</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: ends in fill bytes</source>
+        <translation>beschädigter JPEG-Strom: endet in Füllbytes</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: unexpected marker before the scan</source>
+        <translation>beschädigter JPEG-Strom: unerwarteter Marker vor dem Scan</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: truncated marker segment</source>
+        <translation>beschädigter JPEG-Strom: abgeschnittenes Markersegment</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: bad marker segment length</source>
+        <translation>beschädigter JPEG-Strom: falsche Länge eines Markersegments</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: scan without a frame header</source>
+        <translation>beschädigter JPEG-Strom: Scan ohne Frame-Header</translation>
+    </message>
+    <message>
+        <source>cannot decode the JPEG 2000 code stream</source>
+        <translation>der JPEG-2000-Codestrom kann nicht dekodiert werden</translation>
+    </message>
+    <message>
+        <source>cannot decompress the pixel data</source>
+        <translation>die Pixeldaten können nicht dekomprimiert werden</translation>
+    </message>
+    <message>
+        <source>transfer_syntax</source>
+        <translation>Transfersyntax</translation>
+    </message>
+    <message>
+        <source>pixel data missing</source>
+        <translation>Pixeldaten fehlen</translation>
+    </message>
+    <message>
+        <source>pixel data longer than the file (damaged length or truncated file)</source>
+        <translation>Pixeldaten länger als die Datei (beschädigte Länge oder abgeschnittene Datei)</translation>
+    </message>
+    <message>
+        <source>cannot read the pixel data</source>
+        <translation>die Pixeldaten können nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>cannot open the file</source>
+        <translation>die Datei kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>not a greyscale image</source>
+        <translation>kein Graustufenbild</translation>
+    </message>
+    <message>
+        <source>photometric</source>
+        <translation>photometrische Interpretation</translation>
+    </message>
+    <message>
+        <source>damaged or truncated DICOM file</source>
+        <translation>beschädigte oder abgeschnittene DICOM-Datei</translation>
+    </message>
+    <message>
+        <source>decodeFramesToHu: one output per frame expected</source>
+        <translation>decodeFramesToHu: eine Ausgabe je Frame erwartet</translation>
+    </message>
+    <message>
+        <source>needed_bytes</source>
+        <translation>benötigte Bytes</translation>
+    </message>
+    <message>
+        <source>available_bytes</source>
+        <translation>verfügbare Bytes</translation>
+    </message>
+    <message>
+        <source>cannot read the DICOMDIR</source>
+        <translation>das DICOMDIR kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>the DICOMDIR has no directory records</source>
+        <translation>das DICOMDIR hat keine Verzeichniseinträge</translation>
+    </message>
+    <message>
+        <source>no such file or folder</source>
+        <translation>keine solche Datei und kein solcher Ordner</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s per-frame functional groups do not match its number of frames</source>
+        <translation>die Per-Frame Functional Groups des DICOM SEG passen nicht zu seiner Frame-Zahl</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s frames have several orientations: not one volume</source>
+        <translation>die Frames des DICOM SEG haben mehrere Orientierungen: kein einzelnes Volumen</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s frames are shifted within their planes: not one volume</source>
+        <translation>die Frames des DICOM SEG sind in ihren Ebenen verschoben: kein einzelnes Volumen</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG has no readable pixel data (compressed SEG objects are not supported)</source>
+        <translation>das DICOM SEG hat keine lesbaren Pixeldaten (komprimierte SEG-Objekte werden nicht unterstützt)</translation>
+    </message>
+    <message>
+        <source>the label cannot be written as a DICOM SEG (empty, or over 65535 pixels a row)</source>
+        <translation>das Label kann nicht als DICOM SEG geschrieben werden (leer oder über 65535 Pixel je Zeile)</translation>
+    </message>
+    <message>
+        <source>the label has no labelled voxel to write as a DICOM SEG</source>
+        <translation>das Label hat kein markiertes Voxel, das als DICOM SEG geschrieben werden könnte</translation>
+    </message>
+    <message>
+        <source>writing the DICOM SEG failed at the referenced series</source>
+        <translation>das Schreiben des DICOM SEG ist an der referenzierten Serie gescheitert</translation>
+    </message>
+    <message>
+        <source>a retrieve needs the study&apos;s instance UID</source>
+        <translation>ein Abruf braucht die Instance UID der Studie</translation>
+    </message>
+    <message>
+        <source>a series query needs the study&apos;s instance UID</source>
+        <translation>eine Serienabfrage braucht die Instance UID der Studie</translation>
+    </message>
+    <message>
+        <source>nothing to store: name one or more DICOM files</source>
+        <translation>nichts zu senden: nennen Sie eine oder mehrere DICOM-Dateien</translation>
+    </message>
+    <message>
+        <source>phantom size must be 8..4096 voxels per axis</source>
+        <translation>die Phantomgröße muss 8..4096 Voxel je Achse betragen</translation>
+    </message>
+    <message>
+        <source>phantom spacing must be 0.05..20 mm</source>
+        <translation>der Phantom-Voxelabstand muss 0,05..20 mm betragen</translation>
+    </message>
+    <message>
+        <source>phantom noise must be 0..500 HU</source>
+        <translation>das Phantomrauschen muss 0..500 HU betragen</translation>
+    </message>
+    <message>
+        <source>phantom blur must be at most 10 mm</source>
+        <translation>die Phantomunschärfe darf höchstens 10 mm betragen</translation>
+    </message>
+    <message>
+        <source>aneurysm diameter must be 20..120 mm</source>
+        <translation>der Aneurysmadurchmesser muss 20..120 mm betragen</translation>
+    </message>
+    <message>
+        <source>phantom PSF FWHM must be 0.1..5 mm</source>
+        <translation>die Halbwertsbreite der Phantom-PSF muss 0,1..5 mm betragen</translation>
+    </message>
+    <message>
+        <source>stenosis must be 0..95 percent</source>
+        <translation>die Stenose muss 0..95 Prozent betragen</translation>
+    </message>
+    <message>
+        <source>the second stenosis must be 0..95 percent</source>
+        <translation>die zweite Stenose muss 0..95 Prozent betragen</translation>
+    </message>
+    <message>
+        <source>the vessel diameter must be 1..40 mm</source>
+        <translation>der Gefäßdurchmesser muss 1..40 mm betragen</translation>
+    </message>
+    <message>
+        <source>the stenosis length must be 2..100 mm (0: drawn from the seed)</source>
+        <translation>die Stenoselänge muss 2..100 mm betragen (0: aus dem Startwert gezogen)</translation>
+    </message>
+    <message>
+        <source>cannot write truth.json</source>
+        <translation>truth.json kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>the series has images without Image Position/Orientation (Patient): it cannot be placed in the patient frame</source>
+        <translation>die Serie hat Bilder ohne Image Position/Orientation (Patient): sie lässt sich nicht ins Patientenkoordinatensystem legen</translation>
+    </message>
+    <message>
+        <source>the series has images without Pixel Spacing</source>
+        <translation>die Serie hat Bilder ohne Pixel Spacing</translation>
+    </message>
+    <message>
+        <source>the series has no images</source>
+        <translation>die Serie hat keine Bilder</translation>
+    </message>
+    <message>
+        <source>the lumen label is not on the CT&apos;s grid</source>
+        <translation>das Lumen-Label liegt nicht auf dem Gitter des CT</translation>
+    </message>
+    <message>
+        <source>the wall thickness must be 0..5 mm</source>
+        <translation>die Wanddicke muss 0..5 mm betragen</translation>
+    </message>
+    <message>
+        <source>no abdominal aorta found (a round contrast-filled cross-section in front of the spine in three neighbouring slices): give a point inside it with --seed x,y,z</source>
+        <translation>keine Bauchaorta gefunden (ein runder kontrastgefüllter Querschnitt vor der Wirbelsäule in drei benachbarten Schichten): geben Sie mit --seed x,y,z einen Punkt darin an</translation>
+    </message>
+    <message>
+        <source>the label holds no aorta-sized cross-section (50 mm2 or more): segment the aorta first (vascusim-cli segment --target aorta)</source>
+        <translation>das Label enthält keinen Querschnitt von Aortengröße (50 mm2 oder mehr): segmentieren Sie zuerst die Aorta (vascusim-cli segment --target aorta)</translation>
+    </message>
+    <message>
+        <source>the skeleton is empty: run the skeleton step first</source>
+        <translation>das Skelett ist leer: führen Sie zuerst den Skelettschritt aus</translation>
+    </message>
+    <message>
+        <source>the centerline step must be positive</source>
+        <translation>die Schrittweite der Mittellinie muss positiv sein</translation>
+    </message>
+    <message>
+        <source>the guided segmentation needs at least one include point inside the vessel</source>
+        <translation>die geführte Segmentierung braucht mindestens einen Einschlusspunkt im Gefäß</translation>
+    </message>
+    <message>
+        <source>at most 250 include and exclude points</source>
+        <translation>höchstens 250 Einschluss- und Ausschlusspunkte</translation>
+    </message>
+    <message>
+        <source>the points grew no vessel: pick them inside the contrast-filled lumen</source>
+        <translation>aus den Punkten ist kein Gefäß gewachsen: setzen Sie sie in das kontrastgefüllte Lumen</translation>
+    </message>
+    <message>
+        <source>cannot merge a paint and an erase stroke</source>
+        <translation>ein Mal- und ein Radierstrich lassen sich nicht zusammenführen</translation>
+    </message>
+    <message>
+        <source>there is no label to edit</source>
+        <translation>es gibt kein Label zum Bearbeiten</translation>
+    </message>
+    <message>
+        <source>the brush needs a positive radius</source>
+        <translation>der Pinsel braucht einen positiven Radius</translation>
+    </message>
+    <message>
+        <source>the brush needs a plane</source>
+        <translation>der Pinsel braucht eine Ebene</translation>
+    </message>
+    <message>
+        <source>the label is empty: segment the vessels first</source>
+        <translation>das Label ist leer: segmentieren Sie zuerst die Gefäße</translation>
+    </message>
+    <message>
+        <source>the liver label holds no voxel near the points</source>
+        <translation>das Leber-Label hat kein Voxel in der Nähe der Punkte</translation>
+    </message>
+    <message>
+        <source>place at least one point inside the lesion</source>
+        <translation>setzen Sie mindestens einen Punkt in die Läsion</translation>
+    </message>
+    <message>
+        <source>a point lies outside the CT</source>
+        <translation>ein Punkt liegt außerhalb des CT</translation>
+    </message>
+    <message>
+        <source>point_mm</source>
+        <translation>Punkt (mm)</translation>
+    </message>
+    <message>
+        <source>a point lies outside the liver label: place the points inside the lesion, in the liver</source>
+        <translation>ein Punkt liegt außerhalb des Leber-Labels: setzen Sie die Punkte in die Läsion, in der Leber</translation>
+    </message>
+    <message>
+        <source>level set: the mask and the contrast image differ in size</source>
+        <translation>Level-Set: Maske und Kontrastbild sind verschieden groß</translation>
+    </message>
+    <message>
+        <source>place at least one point inside the organ</source>
+        <translation>setzen Sie mindestens einen Punkt in das Organ</translation>
+    </message>
+    <message>
+        <source>the points&apos; intensity window holds nothing: place them inside the organ</source>
+        <translation>das Intensitätsfenster der Punkte erfasst nichts: setzen Sie sie in das Organ</translation>
+    </message>
+    <message>
+        <source>no centerlines to measure</source>
+        <translation>keine Mittellinien zum Messen</translation>
+    </message>
+    <message>
+        <source>no centerlines to measure: run vascusim-cli centerline first</source>
+        <translation>keine Mittellinien zum Messen: führen Sie zuerst vascusim-cli centerline aus</translation>
+    </message>
+    <message>
+        <source>no CT image to segment</source>
+        <translation>kein CT-Bild zum Segmentieren</translation>
+    </message>
+    <message>
+        <source>min_contrast_hu must be below max_contrast_hu</source>
+        <translation>min_contrast_hu muss unter max_contrast_hu liegen</translation>
+    </message>
+    <message>
+        <source>the segmentation is empty: try a seed inside a vessel or a lower min_contrast_hu</source>
+        <translation>die Segmentierung ist leer: versuchen Sie einen Startpunkt im Gefäß oder ein niedrigeres min_contrast_hu</translation>
+    </message>
+    <message>
+        <source>Dice needs two labels on the same grid</source>
+        <translation>Dice braucht zwei Labels auf demselben Gitter</translation>
+    </message>
+    <message>
+        <source>the ROI holds no voxel of the image: draw it larger or inside the volume</source>
+        <translation>die ROI enthält kein Voxel des Bildes: zeichnen Sie sie größer oder innerhalb des Volumens</translation>
+    </message>
+    <message>
+        <source>an angle&apos;s arms must have a length: its points coincide</source>
+        <translation>die Schenkel eines Winkels brauchen eine Länge: seine Punkte fallen zusammen</translation>
+    </message>
+    <message>
+        <source>ITK image is not fully buffered from index 0; cannot adopt it</source>
+        <translation>das ITK-Bild ist nicht vollständig ab Index 0 gepuffert; es kann nicht übernommen werden</translation>
+    </message>
+    <message>
+        <source>cannot write NRRD image</source>
+        <translation>das NRRD-Bild kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>cannot read NRRD image</source>
+        <translation>das NRRD-Bild kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>cannot read NRRD header</source>
+        <translation>der NRRD-Header kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>image file is not 3D</source>
+        <translation>die Bilddatei ist nicht dreidimensional</translation>
+    </message>
+    <message>
+        <source>VTK image has no scalars</source>
+        <translation>das VTK-Bild hat keine Skalare</translation>
+    </message>
+    <message>
+        <source>VTK image scalars are not single-component of the expected type</source>
+        <translation>die Skalare des VTK-Bildes sind nicht einkomponentig vom erwarteten Typ</translation>
+    </message>
+    <message>
+        <source>vtk type</source>
+        <translation>VTK-Typ</translation>
+    </message>
+    <message>
+        <source>no surface to convert</source>
+        <translation>keine Oberfläche zum Umwandeln</translation>
+    </message>
+    <message>
+        <source>surface polygon is not a triangle</source>
+        <translation>ein Oberflächenpolygon ist kein Dreieck</translation>
+    </message>
+    <message>
+        <source>points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>no tetrahedral mesh to convert</source>
+        <translation>kein Tetraedernetz zum Umwandeln</translation>
+    </message>
+    <message>
+        <source>mesh cell is not a linear tetrahedron</source>
+        <translation>eine Netzzelle ist kein linearer Tetraeder</translation>
+    </message>
+    <message>
+        <source>cell</source>
+        <translation>Zelle</translation>
+    </message>
+    <message>
+        <source>vtk cell type</source>
+        <translation>VTK-Zelltyp</translation>
+    </message>
+    <message>
+        <source>no vessel network to convert</source>
+        <translation>kein Gefäßnetz zum Umwandeln</translation>
+    </message>
+    <message>
+        <source>not a vessel network frame: a line does not run from node to node</source>
+        <translation>kein Frame eines Gefäßnetzes: eine Linie verläuft nicht von Knoten zu Knoten</translation>
+    </message>
+    <message>
+        <source>line</source>
+        <translation>Linie</translation>
+    </message>
+    <message>
+        <source>a grid field does not match its grid</source>
+        <translation>ein Gitterfeld passt nicht zu seinem Gitter</translation>
+    </message>
+    <message>
+        <source>not a voxel-grid frame: no point arrays</source>
+        <translation>kein Frame eines Voxelgitters: keine Punkt-Arrays</translation>
+    </message>
+    <message>
+        <source>not a voxel-grid frame: a point array is not one value per voxel</source>
+        <translation>kein Frame eines Voxelgitters: ein Punkt-Array hat nicht einen Wert je Voxel</translation>
+    </message>
+    <message>
+        <source>not a particle frame: it has lines or polygons</source>
+        <translation>kein Partikel-Frame: er hat Linien oder Polygone</translation>
+    </message>
+    <message>
+        <source>particle seeding needs a positive spacing and 1 to 8 wall layers</source>
+        <translation>das Setzen der Partikel braucht einen positiven Abstand und 1 bis 8 Wandschichten</translation>
+    </message>
+    <message>
+        <source>an open end needs a unit normal, a positive radius and a positive buffer depth</source>
+        <translation>ein offenes Ende braucht eine Einheitsnormale, einen positiven Radius und eine positive Puffertiefe</translation>
+    </message>
+    <message>
+        <source>a vertex budget needs a positive area and vertex count</source>
+        <translation>ein Eckpunktbudget braucht eine positive Fläche und Eckpunktzahl</translation>
+    </message>
+    <message>
+        <source>vessel sizing needs centerlines with points</source>
+        <translation>die Gefäßgrößen brauchen Mittellinien mit Punkten</translation>
+    </message>
+    <message>
+        <source>the surface to remesh is empty</source>
+        <translation>die neu zu vernetzende Oberfläche ist leer</translation>
+    </message>
+    <message>
+        <source>cannot write STL file</source>
+        <translation>die STL-Datei kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>array</source>
+        <translation>Array</translation>
+    </message>
+    <message>
+        <source>no boundary face of the mesh faces the lumen point; give a point inside the vessel&apos;s lumen</source>
+        <translation>keine Randfläche des Netzes ist dem Lumenpunkt zugewandt; geben Sie einen Punkt im Lumen des Gefäßes an</translation>
+    </message>
+    <message>
+        <source>say where the blood pressure acts: --pressure-array NAME (point data, nonzero on the lumen surface) or --lumen-point x,y,z (a point inside the lumen, mm)</source>
+        <translation>sagen Sie, wo der Blutdruck wirkt: --pressure-array NAME (Punktdaten, ungleich null auf der Lumenoberfläche) oder --lumen-point x,y,z (ein Punkt im Lumen, mm)</translation>
+    </message>
+    <message>
+        <source>say which nodes are held: --fixed-array NAME (point data, nonzero on held nodes) or --fix-open-ends (the end cuts at the lumen surface&apos;s open ends)</source>
+        <translation>sagen Sie, welche Knoten gehalten werden: --fixed-array NAME (Punktdaten, ungleich null an gehaltenen Knoten) oder --fix-open-ends (die Endschnitte an den offenen Enden der Lumenoberfläche)</translation>
+    </message>
+    <message>
+        <source>no boundary face is selected for the pressure: the wall would carry no load</source>
+        <translation>keine Randfläche ist für den Druck gewählt: die Wand trüge keine Last</translation>
+    </message>
+    <message>
+        <source>the pressure would act on the whole boundary (inner, outer and end faces): the lumen surface is not parted from the rest by sharp edges; give --pressure-array</source>
+        <translation>der Druck wirkte auf den ganzen Rand (Innen-, Außen- und Endflächen): die Lumenoberfläche ist nicht durch scharfe Kanten vom Rest getrennt; geben Sie --pressure-array an</translation>
+    </message>
+    <message>
+        <source>the pressure surface is closed (no open ends): give the held nodes with --fixed-array</source>
+        <translation>die Druckfläche ist geschlossen (keine offenen Enden): geben Sie die gehaltenen Knoten mit --fixed-array an</translation>
+    </message>
+    <message>
+        <source>no node is held: the wall would float free</source>
+        <translation>kein Knoten wird gehalten: die Wand schwebte frei</translation>
+    </message>
+    <message>
+        <source>the lumen surface is empty: extract the surface first</source>
+        <translation>die Lumenoberfläche ist leer: extrahieren Sie zuerst die Oberfläche</translation>
+    </message>
+    <message>
+        <source>a lumen vertex has no normal (degenerate surface)</source>
+        <translation>ein Lumen-Eckpunkt hat keine Normale (entartete Oberfläche)</translation>
+    </message>
+    <message>
+        <source>the tetrahedral mesh is not a vessel wall (no wall_layer field)</source>
+        <translation>das Tetraedernetz ist keine Gefäßwand (kein Feld wall_layer)</translation>
+    </message>
+    <message>
+        <source>no PDF to encapsulate</source>
+        <translation>kein PDF zum Einkapseln</translation>
+    </message>
+    <message>
+        <source>cannot set the encapsulated document&apos;s length</source>
+        <translation>die Länge des eingekapselten Dokuments kann nicht gesetzt werden</translation>
+    </message>
+    <message>
+        <source>cannot write the file</source>
+        <translation>die Datei kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>the PDF could not be rendered (no fonts or no QGuiApplication)</source>
+        <translation>das PDF ließ sich nicht erzeugen (keine Schriften oder keine QGuiApplication)</translation>
+    </message>
+    <message>
+        <source>cannot write the report</source>
+        <translation>der Bericht kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>run control: frame intervals must be &gt;= 0, keep_every and max_steps &gt;= 1</source>
+        <translation>Laufsteuerung: Frame-Intervalle müssen &gt;= 0 sein, keep_every und max_steps &gt;= 1</translation>
+    </message>
+    <message>
+        <source>multigrid: the matrix, positions and constraints differ in size</source>
+        <translation>Mehrgitter: Matrix, Positionen und Zwangsbedingungen sind verschieden groß</translation>
+    </message>
+    <message>
+        <source>multigrid: the coarsest level is not positive definite</source>
+        <translation>Mehrgitter: die gröbste Stufe ist nicht positiv definit</translation>
+    </message>
+    <message>
+        <source>the time step must be positive and the Rayleigh coefficients non-negative</source>
+        <translation>der Zeitschritt muss positiv sein und die Rayleigh-Koeffizienten nicht negativ</translation>
+    </message>
+    <message>
+        <source>the external forces do not match the mesh</source>
+        <translation>die äußeren Kräfte passen nicht zum Netz</translation>
+    </message>
+    <message>
+        <source>conjugate gradients: the matrix, right-hand side, guess and constraints differ in size</source>
+        <translation>konjugierte Gradienten: Matrix, rechte Seite, Startwert und Zwangsbedingungen sind verschieden groß</translation>
+    </message>
+    <message>
+        <source>the mesh has no elements</source>
+        <translation>das Netz hat keine Elemente</translation>
+    </message>
+    <message>
+        <source>the matrix does not have this mesh&apos;s pattern</source>
+        <translation>die Matrix hat nicht das Besetzungsmuster dieses Netzes</translation>
+    </message>
+    <message>
+        <source>this wall has an intraluminal thrombus layer, which the linear wall model (wall_model 0) cannot tell from the wall: run wall_model 1, or build the wall without --thrombus</source>
+        <translation>diese Wand hat eine intraluminale Thrombusschicht, die das lineare Wandmodell (wall_model 0) nicht von der Wand unterscheiden kann: rechnen Sie wall_model 1, oder bauen Sie die Wand ohne --thrombus</translation>
+    </message>
+    <message>
+        <source>the physiological protocol needs centerlines (for the local diameter)</source>
+        <translation>das physiologische Protokoll braucht Mittellinien (für den lokalen Durchmesser)</translation>
+    </message>
+    <message>
+        <source>equilibrium_tolerance 0 (the damped path&apos;s last state) needs wall_model 0</source>
+        <translation>equilibrium_tolerance 0 (der letzte Zustand des gedämpften Pfads) braucht wall_model 0</translation>
+    </message>
+    <message>
+        <source>the wall has no element to take its peak stress from</source>
+        <translation>die Wand hat kein Element, aus dem sich ihre Spitzenspannung nehmen ließe</translation>
+    </message>
+    <message>
+        <source>GMRES: the matrix, right-hand side and constraints differ in size</source>
+        <translation>GMRES: Matrix, rechte Seite und Zwangsbedingungen sind verschieden groß</translation>
+    </message>
+    <message>
+        <source>hyperelastic polynomial material needs c10 + c01 &gt; 0, c20, c02 &gt;= 0 and a bulk modulus &gt; 0</source>
+        <translation>das hyperelastische Polynom-Material braucht c10 + c01 &gt; 0, c20, c02 &gt;= 0 und einen Kompressionsmodul &gt; 0</translation>
+    </message>
+    <message>
+        <source>the quadratic wall model needs a material</source>
+        <translation>das quadratische Wandmodell braucht ein Material</translation>
+    </message>
+    <message>
+        <source>quasi-static tearing needs a ramp start &lt; end, a positive increment and tear strength, and an onset tolerance in (0, 0.5)</source>
+        <translation>quasistatisches Reißen braucht einen Rampenbeginn &lt; Ende, ein positives Inkrement und eine positive Reißfestigkeit sowie eine Einsatztoleranz in (0, 0,5)</translation>
+    </message>
+    <message>
+        <source>the element field does not match the mesh</source>
+        <translation>das Elementfeld passt nicht zum Netz</translation>
+    </message>
+    <message>
+        <source>no element of the wall lies in the aneurysm sac: is the sac measured on the image this wall was built from?</source>
+        <translation>kein Element der Wand liegt im Aneurysmasack: wurde der Sack auf dem Bild gemessen, aus dem diese Wand gebaut wurde?</translation>
+    </message>
+    <message>
+        <source>no step along the Newton direction keeps every element uninverted</source>
+        <translation>kein Schritt entlang der Newton-Richtung lässt alle Elemente unumgestülpt</translation>
+    </message>
+    <message>
+        <source>the static wall analysis needs a positive pressure and at least one load increment</source>
+        <translation>die statische Wandanalyse braucht einen positiven Druck und mindestens ein Lastinkrement</translation>
+    </message>
+    <message>
+        <source>a structured mesh needs at least one cell per axis</source>
+        <translation>ein strukturiertes Netz braucht mindestens eine Zelle je Achse</translation>
+    </message>
+    <message>
+        <source>a tube wall needs 0 &lt; inner &lt; outer radius, a positive length and at least 3 cells around</source>
+        <translation>eine Rohrwand braucht 0 &lt; Innen- &lt; Außenradius, eine positive Länge und mindestens 3 Zellen im Umfang</translation>
+    </message>
+    <message>
+        <source>an annulus sector needs 0 &lt; inner &lt; outer radius, a positive angle and height</source>
+        <translation>ein Ringsektor braucht 0 &lt; Innen- &lt; Außenradius, einen positiven Winkel und eine positive Höhe</translation>
+    </message>
+    <message>
+        <source>the tangent stiffness could not be factorised (a part of the wall is not held by the fixed ends, or the load is past the wall&apos;s limit)</source>
+        <translation>die Tangentensteifigkeit ließ sich nicht faktorisieren (ein Teil der Wand wird nicht von den festen Enden gehalten, oder die Last liegt jenseits der Grenze der Wand)</translation>
+    </message>
+    <message>
+        <source>tearing would remove every element of the wall</source>
+        <translation>das Reißen entfernte jedes Element der Wand</translation>
+    </message>
+    <message>
+        <source>the tetrahedral mesh is not a vessel wall (wall_layer / end_set fields missing): build it with &apos;mesh wall&apos;</source>
+        <translation>das Tetraedernetz ist keine Gefäßwand (Felder wall_layer / end_set fehlen): bauen Sie es mit &apos;mesh wall&apos;</translation>
+    </message>
+    <message>
+        <source>the wall has no fixed end (end_set is 0 everywhere): build it from centerlines with ends</source>
+        <translation>die Wand hat kein festes Ende (end_set ist überall 0): bauen Sie sie aus Mittellinien mit Enden</translation>
+    </message>
+    <message>
+        <source>no lumen face carries the pressure</source>
+        <translation>keine Lumenfläche trägt den Druck</translation>
+    </message>
+    <message>
+        <source>the run has no pressure curve</source>
+        <translation>der Lauf hat keine Druckkurve</translation>
+    </message>
+    <message>
+        <source>dragging the wall needs the CPU backend (the GPU stepper has no contact springs)</source>
+        <translation>das Ziehen der Wand braucht das CPU-Backend (der GPU-Zeitschritt hat keine Kontaktfedern)</translation>
+    </message>
+    <message>
+        <source>the heat solver takes no input (its cube comes from the parameters)</source>
+        <translation>der Wärmelöser nimmt keine Eingabe (sein Würfel kommt aus den Parametern)</translation>
+    </message>
+    <message>
+        <source>the injection rate must be positive</source>
+        <translation>die Injektionsrate muss positiv sein</translation>
+    </message>
+    <message>
+        <source>the arterial inflow must be positive</source>
+        <translation>der arterielle Zufluss muss positiv sein</translation>
+    </message>
+    <message>
+        <source>the catheter&apos;s radius and the viscosities must be positive</source>
+        <translation>der Radius des Katheters und die Viskositäten müssen positiv sein</translation>
+    </message>
+    <message>
+        <source>the filling takes no input: its network comes with the solved run</source>
+        <translation>die Füllung nimmt keine Eingabe: ihr Netz kommt mit dem gelösten Lauf</translation>
+    </message>
+    <message>
+        <source>the flow system is singular: the part downstream of the tip has no outlet pressure to refer to</source>
+        <translation>das Strömungssystem ist singulär: der Teil stromab der Spitze hat keinen Auslassdruck als Bezug</translation>
+    </message>
+    <message>
+        <source>the injection needs a positive rate or a tip pressure</source>
+        <translation>die Injektion braucht eine positive Rate oder einen Spitzendruck</translation>
+    </message>
+    <message>
+        <source>feeder edit: there is no lesion for a feeder to feed</source>
+        <translation>Zuführer bearbeiten: es gibt keine Läsion, die ein Zuführer versorgen könnte</translation>
+    </message>
+    <message>
+        <source>the centerlines have no vessel segments: extract them first (vascusim-cli centerline)</source>
+        <translation>die Mittellinien haben keine Gefäßsegmente: extrahieren Sie sie zuerst (vascusim-cli centerline)</translation>
+    </message>
+    <message>
+        <source>feeders are edited on a run with a liver label: give the liver (and the tumour) first</source>
+        <translation>Zuführer werden an einem Lauf mit Leber-Label bearbeitet: geben Sie zuerst die Leber (und den Tumor) an</translation>
+    </message>
+    <message>
+        <source>a tip pressure drives the injected drug alone (blood_flow=0); with blood flow the injection is a rate</source>
+        <translation>ein Spitzendruck treibt nur den injizierten Wirkstoff (blood_flow=0); mit Blutfluss ist die Injektion eine Rate</translation>
+    </message>
+    <message>
+        <source>the tip pressure does not drive any flow into the network (it is at or below the outlets&apos;)</source>
+        <translation>der Spitzendruck treibt keinen Fluss ins Netz (er liegt auf oder unter dem der Auslässe)</translation>
+    </message>
+    <message>
+        <source>the tumour&apos;s radius must be positive</source>
+        <translation>der Radius des Tumors muss positiv sein</translation>
+    </message>
+    <message>
+        <source>the liver label has no voxel of the liver&apos;s value</source>
+        <translation>das Leber-Label hat kein Voxel mit dem Wert der Leber</translation>
+    </message>
+    <message>
+        <source>no end of the vessel tree lies in the liver: there is no territory to share out</source>
+        <translation>kein Ende des Gefäßbaums liegt in der Leber: es gibt kein Versorgungsgebiet aufzuteilen</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>phase densities and viscosities must be positive</source>
+        <translation>Dichten und Viskositäten der Phasen müssen positiv sein</translation>
+    </message>
+    <message>
+        <source>the working angle needs a tip away from the root: there is no path to see</source>
+        <translation>der Arbeitswinkel braucht eine Spitze abseits der Wurzel: es gibt keinen Pfad zu sehen</translation>
+    </message>
+    <message>
+        <source>the endoscope camera is outside the smoke&apos;s domain or inside tissue</source>
+        <translation>die Endoskopkamera liegt außerhalb des Rauchgebiets oder im Gewebe</translation>
+    </message>
+    <message>
+        <source>the liver label is empty: the liver-ablation dome needs the liver&apos;s surface</source>
+        <translation>das Leber-Label ist leer: die Kuppel der Leberablation braucht die Oberfläche der Leber</translation>
+    </message>
+    <message>
+        <source>the EVH tunnel needs a centerline of 20 mm or more</source>
+        <translation>der EVH-Tunnel braucht eine Mittellinie von 20 mm oder mehr</translation>
+    </message>
+    <message>
+        <source>a suction needs a vent or an open face for the gas it takes out to be replaced</source>
+        <translation>eine Absaugung braucht eine Belüftung oder eine offene Fläche, damit das abgesaugte Gas ersetzt wird</translation>
+    </message>
+    <message>
+        <source>the suction port has no fluid cell within its radius</source>
+        <translation>die Absaugöffnung hat keine Fluidzelle in ihrem Radius</translation>
+    </message>
+    <message>
+        <source>the dam break needs a positive particle spacing</source>
+        <translation>der Dammbruch braucht einen positiven Partikelabstand</translation>
+    </message>
+    <message>
+        <source>the dam break needs at least 1000 particles</source>
+        <translation>der Dammbruch braucht mindestens 1000 Partikel</translation>
+    </message>
+    <message>
+        <source>sph-fpm: the moment matrix is singular at a particle next to the wall</source>
+        <translation>sph-fpm: die Momentenmatrix ist an einem Partikel neben der Wand singulär</translation>
+    </message>
+    <message>
+        <source>sph-fpm: no particle next to the wall was evaluated</source>
+        <translation>sph-fpm: kein Partikel neben der Wand wurde ausgewertet</translation>
+    </message>
+    <message>
+        <source>the neighbour grid&apos;s reach must be a positive length</source>
+        <translation>die Reichweite des Nachbarschaftsgitters muss eine positive Länge sein</translation>
+    </message>
+    <message>
+        <source>a particle&apos;s position is not finite: the neighbour grid cannot place it</source>
+        <translation>die Position eines Partikels ist nicht endlich: das Nachbarschaftsgitter kann es nicht einordnen</translation>
+    </message>
+    <message>
+        <source>the SPH smoothing length must be a positive length</source>
+        <translation>die SPH-Glättungslänge muss eine positive Länge sein</translation>
+    </message>
+    <message>
+        <source>the SPH input&apos;s particles need the field &apos;wall&apos; (1 at wall particles, 0 in the fluid)</source>
+        <translation>die Partikel der SPH-Eingabe brauchen das Feld &apos;wall&apos; (1 an Wandpartikeln, 0 im Fluid)</translation>
+    </message>
+    <message>
+        <source>the SPH input has no particles</source>
+        <translation>die SPH-Eingabe hat keine Partikel</translation>
+    </message>
+    <message>
+        <source>the stenosis figures need one averaged flow per section</source>
+        <translation>die Stenosekennzahlen brauchen eine gemittelte Strömung je Querschnitt</translation>
+    </message>
+    <message>
+        <source>a section the stenosis is compared with holds no fluid</source>
+        <translation>ein Querschnitt, mit dem die Stenose verglichen wird, enthält kein Fluid</translation>
+    </message>
+    <message>
+        <source>kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>cannot write skeleton</source>
+        <translation>das Skelett kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>cannot write the measurement</source>
+        <translation>die Messung kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>cannot parse skeleton</source>
+        <translation>das Skelett kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>cannot parse the measurement</source>
+        <translation>die Messung kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>unknown artifact kind</source>
+        <translation>unbekannte Artefaktart</translation>
+    </message>
+    <message>
+        <source>the mask has no labelled voxel</source>
+        <translation>die Maske hat kein markiertes Voxel</translation>
+    </message>
+    <message>
+        <source>study.json is not a VascuSim study manifest</source>
+        <translation>study.json ist kein Studienmanifest von VascuSim</translation>
+    </message>
+    <message>
+        <source>software_version</source>
+        <translation>Softwareversion</translation>
+    </message>
+    <message>
+        <source>study.json is malformed</source>
+        <translation>study.json ist fehlerhaft</translation>
+    </message>
+    <message>
+        <source>the mesh file does not exist</source>
+        <translation>die Netzdatei existiert nicht</translation>
+    </message>
+    <message>
+        <source>not a VTK XML unstructured grid (.vtu)</source>
+        <translation>kein unstrukturiertes VTK-XML-Gitter (.vtu)</translation>
+    </message>
+    <message>
+        <source>the mesh has no tetrahedra</source>
+        <translation>das Netz hat keine Tetraeder</translation>
+    </message>
+    <message>
+        <source>a position must be [x, y, z] in mm</source>
+        <translation>eine Position muss [x, y, z] in mm sein</translation>
+    </message>
+    <message>
+        <source>not a vascusim network file (&quot;format&quot;: &quot;vascusim-network&quot; is missing)</source>
+        <translation>keine Netzdatei von VascuSim (&quot;format&quot;: &quot;vascusim-network&quot; fehlt)</translation>
+    </message>
+    <message>
+        <source>unsupported network file version (this build reads version 1)</source>
+        <translation>nicht unterstützte Version der Netzdatei (dieser Build liest Version 1)</translation>
+    </message>
+    <message>
+        <source>network file not found</source>
+        <translation>Netzdatei nicht gefunden</translation>
+    </message>
+    <message>
+        <source>cannot write the network file</source>
+        <translation>die Netzdatei kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>a run frame of an unknown format</source>
+        <translation>ein Frame eines Laufs in unbekanntem Format</translation>
+    </message>
+    <message>
+        <source>not a run this VascuSim reads</source>
+        <translation>kein Lauf, den diese Version von VascuSim liest</translation>
+    </message>
+    <message>
+        <source>cannot parse a run&apos;s run.json</source>
+        <translation>die run.json eines Laufs kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>a run is written with its frames in memory</source>
+        <translation>ein Lauf wird mit seinen Frames im Speicher geschrieben</translation>
+    </message>
+    <message>
+        <source>a run&apos;s run.json lacks an entry</source>
+        <translation>der run.json eines Laufs fehlt ein Eintrag</translation>
+    </message>
+    <message>
+        <source>the folder is a study already; open it instead of creating a new one</source>
+        <translation>der Ordner ist bereits eine Studie; öffnen Sie ihn, statt eine neue anzulegen</translation>
+    </message>
+    <message>
+        <source>the folder became a study while waiting for its lock; open it instead</source>
+        <translation>der Ordner wurde zur Studie, während auf seine Sperre gewartet wurde; öffnen Sie ihn stattdessen</translation>
+    </message>
+    <message>
+        <source>not a VascuSim study: study.json is missing</source>
+        <translation>keine Studie von VascuSim: study.json fehlt</translation>
+    </message>
+    <message>
+        <source>cannot add an empty image to the study</source>
+        <translation>ein leeres Bild kann der Studie nicht hinzugefügt werden</translation>
+    </message>
+    <message>
+        <source>cannot add an empty label volume to the study</source>
+        <translation>ein leeres Label-Volumen kann der Studie nicht hinzugefügt werden</translation>
+    </message>
+    <message>
+        <source>cannot add an empty surface to the study</source>
+        <translation>eine leere Oberfläche kann der Studie nicht hinzugefügt werden</translation>
+    </message>
+    <message>
+        <source>cannot add an empty tetrahedral mesh to the study</source>
+        <translation>ein leeres Tetraedernetz kann der Studie nicht hinzugefügt werden</translation>
+    </message>
+    <message>
+        <source>cannot add an empty vessel network to the study</source>
+        <translation>ein leeres Gefäßnetz kann der Studie nicht hinzugefügt werden</translation>
+    </message>
+    <message>
+        <source>a run added to the study needs its frames</source>
+        <translation>ein der Studie hinzugefügter Lauf braucht seine Frames</translation>
+    </message>
+    <message>
+        <source>a report added to the study must be a PDF</source>
+        <translation>ein der Studie hinzugefügter Bericht muss ein PDF sein</translation>
+    </message>
+    <message>
+        <source>the study is open read-only; save it under a new name, or reopen it for writing when its writer has finished</source>
+        <translation>die Studie ist schreibgeschützt geöffnet; speichern Sie sie unter neuem Namen, oder öffnen Sie sie zum Schreiben erneut, wenn ihr Schreiber fertig ist</translation>
+    </message>
+    <message>
+        <source>study.json was changed by another program since this study was opened; nothing was written. Save under a new name (Save As) to keep this version</source>
+        <translation>study.json wurde seit dem Öffnen dieser Studie von einem anderen Programm geändert; nichts wurde geschrieben. Speichern Sie unter neuem Namen (Speichern unter), um diese Version zu behalten</translation>
+    </message>
+    <message>
+        <source>the folder for the new study is not empty; choose a new folder</source>
+        <translation>der Ordner für die neue Studie ist nicht leer; wählen Sie einen neuen Ordner</translation>
+    </message>
+    <message>
+        <source>holder</source>
+        <translation>Inhaber</translation>
+    </message>
+    <message>
+        <source>host</source>
+        <translation>Rechner</translation>
+    </message>
+    <message>
+        <source>not a NIfTI, NRRD or MetaImage volume (or the file cannot be read)</source>
+        <translation>kein NIfTI-, NRRD- oder MetaImage-Volumen (oder die Datei ist nicht lesbar)</translation>
+    </message>
+    <message>
+        <source>cannot read the volume</source>
+        <translation>das Volumen kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>the volume file is truncated: it holds fewer bytes than its header announces</source>
+        <translation>die Volumendatei ist abgeschnitten: sie enthält weniger Bytes, als ihr Header angibt</translation>
+    </message>
+    <message>
+        <source>bytes</source>
+        <translation>Bytes</translation>
+    </message>
+    <message>
+        <source>voxel bytes expected</source>
+        <translation>erwartete Voxel-Bytes</translation>
+    </message>
+    <message>
+        <source>volume file does not exist</source>
+        <translation>die Volumendatei existiert nicht</translation>
+    </message>
+    <message>
+        <source>cannot read the volume header</source>
+        <translation>der Header des Volumens kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>the volume is not 3D</source>
+        <translation>das Volumen ist nicht dreidimensional</translation>
+    </message>
+    <message>
+        <source>dimensions</source>
+        <translation>Dimensionen</translation>
+    </message>
+    <message>
+        <source>the volume has more than one component per voxel (colour or vector data)</source>
+        <translation>das Volumen hat mehr als eine Komponente je Voxel (Farb- oder Vektordaten)</translation>
+    </message>
+    <message>
+        <source>components</source>
+        <translation>Komponenten</translation>
+    </message>
+    <message>
+        <source>cannot write VTK XML file</source>
+        <translation>die VTK-XML-Datei kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>file does not exist</source>
+        <translation>die Datei existiert nicht</translation>
+    </message>
+    <message>
+        <source>cannot read VTK XML file</source>
+        <translation>die VTK-XML-Datei kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>field lines need one value (and radius pair) per line</source>
+        <translation>Feldlinien brauchen einen Wert (und ein Radiuspaar) je Linie</translation>
+    </message>
+    <message>
+        <source>3D snapshots need a display (set DISPLAY, or run under xvfb-run)</source>
+        <translation>3D-Aufnahmen brauchen ein Display (setzen Sie DISPLAY oder starten Sie unter xvfb-run)</translation>
+    </message>
+    <message>
+        <source>a snapshot needs at least 16 x 16 pixels</source>
+        <translation>eine Aufnahme braucht mindestens 16 x 16 Pixel</translation>
+    </message>
+    <message>
+        <source>the offscreen snapshot could not be read back</source>
+        <translation>die Offscreen-Aufnahme ließ sich nicht zurücklesen</translation>
+    </message>
+    <message>
+        <source>field points need one value per point</source>
+        <translation>Feldpunkte brauchen einen Wert je Punkt</translation>
+    </message>
+</context>
+<context>
     <name>vsim::Parameters</name>
     <message>
         <source>Layer 1: window and region growing</source>
@@ -5429,6 +6768,18 @@ Ersetzen?</translation>
     <message>
         <source>Paper:</source>
         <translation>Papier:</translation>
+    </message>
+    <message>
+        <source>The language of the report&apos;s texts and numbers; the workstation&apos;s by default</source>
+        <translation>Die Sprache der Texte und Zahlen des Berichts; standardmäßig die der Arbeitsstation</translation>
+    </message>
+    <message>
+        <source>Language:</source>
+        <translation>Sprache:</translation>
+    </message>
+    <message>
+        <source>Run the solvers&apos; validation cases into the report (seconds to a minute)</source>
+        <translation>Die Validierungsfälle der Löser in den Bericht rechnen (Sekunden bis eine Minute)</translation>
     </message>
 </context>
 <context>

@@ -1296,6 +1296,1345 @@
     </message>
 </context>
 <context>
+    <name>vsim::Error</name>
+    <message>
+        <source>the series belongs to another patient than the study (Patient ID differs); import it into a study of its own</source>
+        <translation>该序列属于与本研究不同的患者（患者 ID 不同）；请将其导入单独的研究</translation>
+    </message>
+    <message>
+        <source>the needle&apos;s bore, the generation rate and the box&apos;s depth must be positive, the box&apos;s margin not negative</source>
+        <translation>针孔、生成速率和盒子深度必须为正，盒子边距不得为负</translation>
+    </message>
+    <message>
+        <source>cannot write the run file</source>
+        <translation>无法写入运行文件</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <source>the drug run records no centerlines to run again from</source>
+        <translation>该药物运行未记录可重新运行所用的中心线</translation>
+    </message>
+    <message>
+        <source>artifact</source>
+        <translation>工件</translation>
+    </message>
+    <message>
+        <source>cannot create the run folder</source>
+        <translation>无法创建运行文件夹</translation>
+    </message>
+    <message>
+        <source>folder</source>
+        <translation>文件夹</translation>
+    </message>
+    <message>
+        <source>cannot write metrics.json</source>
+        <translation>无法写入 metrics.json</translation>
+    </message>
+    <message>
+        <source>the wall-load surface has no TAWSS</source>
+        <translation>壁面载荷表面没有 TAWSS</translation>
+    </message>
+    <message>
+        <source>no vertex of the wall-load surface was sampled</source>
+        <translation>壁面载荷表面的顶点均未被采样</translation>
+    </message>
+    <message>
+        <source>not a centerlines artifact</source>
+        <translation>不是中心线工件</translation>
+    </message>
+    <message>
+        <source>segment</source>
+        <translation>节段</translation>
+    </message>
+    <message>
+        <source>a segment&apos;s name cannot be empty</source>
+        <translation>节段名称不能为空</translation>
+    </message>
+    <message>
+        <source>the evh scenario places its tunnel around a vessel: the study has no centerlines (vascusim-cli centerlines)</source>
+        <translation>EVH 场景将隧道置于血管周围：该研究没有中心线（vascusim-cli centerlines）</translation>
+    </message>
+    <message>
+        <source>the study&apos;s centerlines have no segment for the evh tunnel</source>
+        <translation>该研究的中心线中没有可用于 EVH 隧道的节段</translation>
+    </message>
+    <message>
+        <source>not a translation catalogue (.qm)</source>
+        <translation>不是翻译目录（.qm）</translation>
+    </message>
+    <message>
+        <source>a sheet needs a positive size, a cell size and at least 0.05 mm thickness</source>
+        <translation>薄层需要正的尺寸、单元尺寸和至少 0.05 mm 的厚度</translation>
+    </message>
+    <message>
+        <source>scaledSum: x and y differ in length</source>
+        <translation>scaledSum：x 与 y 长度不同</translation>
+    </message>
+    <message>
+        <source>no CUDA device: run the wall solver on the CPU (--backend cpu)</source>
+        <translation>没有 CUDA 设备：请在 CPU 上运行管壁求解器（--backend cpu）</translation>
+    </message>
+    <message>
+        <source>the CUDA backend runs the co-rotational linear model only: run St. Venant-Kirchhoff on the CPU (--backend cpu)</source>
+        <translation>CUDA 后端仅支持共旋线性模型：St. Venant-Kirchhoff 模型请在 CPU 上运行（--backend cpu）</translation>
+    </message>
+    <message>
+        <source>the smoke&apos;s CUDA backend needs a CUDA device, and there is none</source>
+        <translation>烟雾的 CUDA 后端需要 CUDA 设备，但没有找到</translation>
+    </message>
+    <message>
+        <source>the smoke&apos;s CUDA backend takes grids of fewer than 2^31 cells</source>
+        <translation>烟雾的 CUDA 后端只接受少于 2^31 个单元的网格</translation>
+    </message>
+    <message>
+        <source>the smoke&apos;s CUDA backend was made for another grid</source>
+        <translation>烟雾的 CUDA 后端是为另一网格创建的</translation>
+    </message>
+    <message>
+        <source>no CUDA device: run the SPH solver on the CPU (--backend cpu)</source>
+        <translation>没有 CUDA 设备：请在 CPU 上运行 SPH 求解器（--backend cpu）</translation>
+    </message>
+    <message>
+        <source>the CUDA SPH backend runs no periodic axes or tracer absorption yet: run this case on the CPU (--backend cpu)</source>
+        <translation>CUDA SPH 后端尚不支持周期轴或示踪剂吸收：请在 CPU 上运行此算例（--backend cpu）</translation>
+    </message>
+    <message>
+        <source>cancelled by the user</source>
+        <translation>已被用户取消</translation>
+    </message>
+    <message>
+        <source>image volume adopted an empty buffer</source>
+        <translation>图像体积接收了空缓冲区</translation>
+    </message>
+    <message>
+        <source>--rescale needs a finite, non-zero slope and a finite intercept</source>
+        <translation>--rescale 需要有限且非零的斜率和有限的截距</translation>
+    </message>
+    <message>
+        <source>option</source>
+        <translation>选项</translation>
+    </message>
+    <message>
+        <source>cannot write into the output folder</source>
+        <translation>无法写入输出文件夹</translation>
+    </message>
+    <message>
+        <source>the output path is a file, not a folder; VascuSim does not replace it</source>
+        <translation>输出路径是文件而不是文件夹；VascuSim 不会替换它</translation>
+    </message>
+    <message>
+        <source>path</source>
+        <translation>路径</translation>
+    </message>
+    <message>
+        <source>the output folder holds files VascuSim did not write; choose a new or empty folder</source>
+        <translation>输出文件夹包含非 VascuSim 写入的文件；请选择新的或空的文件夹</translation>
+    </message>
+    <message>
+        <source>the output path is a folder; VascuSim writes a file there only where nothing is</source>
+        <translation>输出路径是文件夹；VascuSim 只在空位置写入文件</translation>
+    </message>
+    <message>
+        <source>the output file exists; give --overwrite to replace it</source>
+        <translation>输出文件已存在；如需替换请使用 --overwrite</translation>
+    </message>
+    <message>
+        <source>the output path is not a regular file; VascuSim does not replace it</source>
+        <translation>输出路径不是普通文件；VascuSim 不会替换它</translation>
+    </message>
+    <message>
+        <source>parameter declared twice</source>
+        <translation>参数重复声明</translation>
+    </message>
+    <message>
+        <source>key</source>
+        <translation>键</translation>
+    </message>
+    <message>
+        <source>parameter default outside its declared range</source>
+        <translation>参数默认值超出其声明范围</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>range</source>
+        <translation>范围</translation>
+    </message>
+    <message>
+        <source>known parameters</source>
+        <translation>已知参数</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>the principal axis of no points</source>
+        <translation>零个点的主轴</translation>
+    </message>
+    <message>
+        <source>skeleton edge refers to a missing node</source>
+        <translation>骨架边引用了不存在的节点</translation>
+    </message>
+    <message>
+        <source>skeleton edge has fewer than two points</source>
+        <translation>骨架边少于两个点</translation>
+    </message>
+    <message>
+        <source>skeleton edge has point, voxel and radius lists of different lengths</source>
+        <translation>骨架边的点、体素和半径列表长度不同</translation>
+    </message>
+    <message>
+        <source>skeleton edge has a radius that is not positive</source>
+        <translation>骨架边存在非正半径</translation>
+    </message>
+    <message>
+        <source>tetrahedron refers to a missing point</source>
+        <translation>四面体引用了不存在的点</translation>
+    </message>
+    <message>
+        <source>element</source>
+        <translation>单元</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>点</translation>
+    </message>
+    <message>
+        <source>inverted or degenerate tetrahedron</source>
+        <translation>四面体翻转或退化</translation>
+    </message>
+    <message>
+        <source>point field length differs from the point count</source>
+        <translation>点场长度与点数不一致</translation>
+    </message>
+    <message>
+        <source>field</source>
+        <translation>场</translation>
+    </message>
+    <message>
+        <source>cell field length differs from the element count</source>
+        <translation>单元场长度与单元数不一致</translation>
+    </message>
+    <message>
+        <source>triangle refers to a missing point</source>
+        <translation>三角形引用了不存在的点</translation>
+    </message>
+    <message>
+        <source>triangle</source>
+        <translation>三角形</translation>
+    </message>
+    <message>
+        <source>triangle repeats a point</source>
+        <translation>三角形含有重复的点</translation>
+    </message>
+    <message>
+        <source>node</source>
+        <translation>节点</translation>
+    </message>
+    <message>
+        <source>an ROI takes two corner points</source>
+        <translation>ROI 需要两个角点</translation>
+    </message>
+    <message>
+        <source>volume dimension is not positive</source>
+        <translation>体积尺寸不为正</translation>
+    </message>
+    <message>
+        <source>axis</source>
+        <translation>轴</translation>
+    </message>
+    <message>
+        <source>size</source>
+        <translation>大小</translation>
+    </message>
+    <message>
+        <source>voxel spacing must be positive and finite (mm)</source>
+        <translation>体素间距必须为正且有限（mm）</translation>
+    </message>
+    <message>
+        <source>spacing</source>
+        <translation>间距</translation>
+    </message>
+    <message>
+        <source>volume origin is not finite</source>
+        <translation>体积原点不是有限值</translation>
+    </message>
+    <message>
+        <source>direction matrix is not orthonormal</source>
+        <translation>方向矩阵不是正交归一的</translation>
+    </message>
+    <message>
+        <source>deviation</source>
+        <translation>偏差</translation>
+    </message>
+    <message>
+        <source>the AAA phantom&apos;s aneurysm is smaller than 1.5 times its neck; choose a larger --max-diameter</source>
+        <translation>AAA 体模的动脉瘤小于其瘤颈的 1.5 倍；请选择更大的 --max-diameter</translation>
+    </message>
+    <message>
+        <source>unknown transfer syntax</source>
+        <translation>未知的传输语法</translation>
+    </message>
+    <message>
+        <source>cannot set a DICOM attribute</source>
+        <translation>无法设置 DICOM 属性</translation>
+    </message>
+    <message>
+        <source>tag</source>
+        <translation>标签</translation>
+    </message>
+    <message>
+        <source>reason</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <source>cannot create a DICOM sequence item</source>
+        <translation>无法创建 DICOM 序列项</translation>
+    </message>
+    <message>
+        <source>HU value outside -1024..3071 cannot be stored in 12 unsigned bits</source>
+        <translation>-1024..3071 以外的 HU 值无法以 12 位无符号数存储</translation>
+    </message>
+    <message>
+        <source>cannot encode the pixel data</source>
+        <translation>无法编码像素数据</translation>
+    </message>
+    <message>
+        <source>cannot write DICOM file</source>
+        <translation>无法写入 DICOM 文件</translation>
+    </message>
+    <message>
+        <source>the pixels and the slice stack of a CT series disagree</source>
+        <translation>CT 序列的像素与层面堆栈不一致</translation>
+    </message>
+    <message>
+        <source>file name prefix must have at most 2 characters (8-character DICOMDIR names)</source>
+        <translation>文件名前缀最多 2 个字符（DICOMDIR 名称为 8 个字符）</translation>
+    </message>
+    <message>
+        <source>cannot create the output folder</source>
+        <translation>无法创建输出文件夹</translation>
+    </message>
+    <message>
+        <source>DICOM image has no rows or columns</source>
+        <translation>DICOM 图像没有行或列</translation>
+    </message>
+    <message>
+        <source>inconsistent Bits Stored / High Bit</source>
+        <translation>Bits Stored / High Bit 不一致</translation>
+    </message>
+    <message>
+        <source>frame index out of range</source>
+        <translation>帧索引超出范围</translation>
+    </message>
+    <message>
+        <source>frame</source>
+        <translation>帧</translation>
+    </message>
+    <message>
+        <source>pixel data is shorter than the image it describes (truncated file?)</source>
+        <translation>像素数据短于其描述的图像（文件被截断？）</translation>
+    </message>
+    <message>
+        <source>JPEG 2000 code stream size differs from the image&apos;s rows and columns</source>
+        <translation>JPEG 2000 码流尺寸与图像行列数不符</translation>
+    </message>
+    <message>
+        <source>JPEG 2000 pixel data has no code stream header</source>
+        <translation>JPEG 2000 像素数据没有码流头</translation>
+    </message>
+    <message>
+        <source>compressed pixel data has no fragments</source>
+        <translation>压缩像素数据没有片段</translation>
+    </message>
+    <message>
+        <source>compressed pixel data fragment unreadable</source>
+        <translation>压缩像素数据片段无法读取</translation>
+    </message>
+    <message>
+        <source>multi-frame JPEG 2000 with several fragments per frame is not supported</source>
+        <translation>不支持每帧多个片段的多帧 JPEG 2000</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: no start of image</source>
+        <translation>JPEG 数据流损坏：缺少图像起始标记</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: marker expected</source>
+        <translation>JPEG 数据流损坏：此处应为标记</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: ends in fill bytes</source>
+        <translation>JPEG 数据流损坏：以填充字节结束</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: unexpected marker before the scan</source>
+        <translation>JPEG 数据流损坏：扫描前出现意外标记</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: truncated marker segment</source>
+        <translation>JPEG 数据流损坏：标记段被截断</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: bad marker segment length</source>
+        <translation>JPEG 数据流损坏：标记段长度错误</translation>
+    </message>
+    <message>
+        <source>damaged JPEG stream: scan without a frame header</source>
+        <translation>JPEG 数据流损坏：扫描缺少帧头</translation>
+    </message>
+    <message>
+        <source>cannot decode the JPEG 2000 code stream</source>
+        <translation>无法解码 JPEG 2000 码流</translation>
+    </message>
+    <message>
+        <source>cannot decompress the pixel data</source>
+        <translation>无法解压缩像素数据</translation>
+    </message>
+    <message>
+        <source>transfer_syntax</source>
+        <translation>传输语法</translation>
+    </message>
+    <message>
+        <source>pixel data missing</source>
+        <translation>缺少像素数据</translation>
+    </message>
+    <message>
+        <source>pixel data longer than the file (damaged length or truncated file)</source>
+        <translation>像素数据长于文件（长度损坏或文件被截断）</translation>
+    </message>
+    <message>
+        <source>cannot read the pixel data</source>
+        <translation>无法读取像素数据</translation>
+    </message>
+    <message>
+        <source>cannot open the file</source>
+        <translation>无法打开文件</translation>
+    </message>
+    <message>
+        <source>not a greyscale image</source>
+        <translation>不是灰度图像</translation>
+    </message>
+    <message>
+        <source>photometric</source>
+        <translation>光度解释</translation>
+    </message>
+    <message>
+        <source>damaged or truncated DICOM file</source>
+        <translation>DICOM 文件损坏或被截断</translation>
+    </message>
+    <message>
+        <source>decodeFramesToHu: one output per frame expected</source>
+        <translation>decodeFramesToHu：每帧应有一个输出</translation>
+    </message>
+    <message>
+        <source>needed_bytes</source>
+        <translation>所需字节数</translation>
+    </message>
+    <message>
+        <source>available_bytes</source>
+        <translation>可用字节数</translation>
+    </message>
+    <message>
+        <source>cannot read the DICOMDIR</source>
+        <translation>无法读取 DICOMDIR</translation>
+    </message>
+    <message>
+        <source>the DICOMDIR has no directory records</source>
+        <translation>DICOMDIR 没有目录记录</translation>
+    </message>
+    <message>
+        <source>no such file or folder</source>
+        <translation>没有此文件或文件夹</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s per-frame functional groups do not match its number of frames</source>
+        <translation>DICOM SEG 的逐帧功能组与其帧数不符</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s frames have several orientations: not one volume</source>
+        <translation>DICOM SEG 的帧具有多个方向：不是单一体积</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s frames are shifted within their planes: not one volume</source>
+        <translation>DICOM SEG 的帧在平面内存在偏移：不是单一体积</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG has no readable pixel data (compressed SEG objects are not supported)</source>
+        <translation>DICOM SEG 没有可读的像素数据（不支持压缩的 SEG 对象）</translation>
+    </message>
+    <message>
+        <source>the label cannot be written as a DICOM SEG (empty, or over 65535 pixels a row)</source>
+        <translation>标签无法写为 DICOM SEG（为空，或每行超过 65535 像素）</translation>
+    </message>
+    <message>
+        <source>the label has no labelled voxel to write as a DICOM SEG</source>
+        <translation>标签中没有可写为 DICOM SEG 的已标记体素</translation>
+    </message>
+    <message>
+        <source>writing the DICOM SEG failed at the referenced series</source>
+        <translation>写入 DICOM SEG 时在引用序列处失败</translation>
+    </message>
+    <message>
+        <source>a retrieve needs the study&apos;s instance UID</source>
+        <translation>检索需要研究的实例 UID</translation>
+    </message>
+    <message>
+        <source>a series query needs the study&apos;s instance UID</source>
+        <translation>序列查询需要研究的实例 UID</translation>
+    </message>
+    <message>
+        <source>nothing to store: name one or more DICOM files</source>
+        <translation>没有可存储的内容：请指定一个或多个 DICOM 文件</translation>
+    </message>
+    <message>
+        <source>phantom size must be 8..4096 voxels per axis</source>
+        <translation>体模尺寸必须为每轴 8..4096 个体素</translation>
+    </message>
+    <message>
+        <source>phantom spacing must be 0.05..20 mm</source>
+        <translation>体模间距必须为 0.05..20 mm</translation>
+    </message>
+    <message>
+        <source>phantom noise must be 0..500 HU</source>
+        <translation>体模噪声必须为 0..500 HU</translation>
+    </message>
+    <message>
+        <source>phantom blur must be at most 10 mm</source>
+        <translation>体模模糊最大为 10 mm</translation>
+    </message>
+    <message>
+        <source>aneurysm diameter must be 20..120 mm</source>
+        <translation>动脉瘤直径必须为 20..120 mm</translation>
+    </message>
+    <message>
+        <source>phantom PSF FWHM must be 0.1..5 mm</source>
+        <translation>体模 PSF 半高宽必须为 0.1..5 mm</translation>
+    </message>
+    <message>
+        <source>stenosis must be 0..95 percent</source>
+        <translation>狭窄必须为 0..95%</translation>
+    </message>
+    <message>
+        <source>the second stenosis must be 0..95 percent</source>
+        <translation>第二处狭窄必须为 0..95%</translation>
+    </message>
+    <message>
+        <source>the vessel diameter must be 1..40 mm</source>
+        <translation>血管直径必须为 1..40 mm</translation>
+    </message>
+    <message>
+        <source>the stenosis length must be 2..100 mm (0: drawn from the seed)</source>
+        <translation>狭窄长度必须为 2..100 mm（0：由随机种子决定）</translation>
+    </message>
+    <message>
+        <source>cannot write truth.json</source>
+        <translation>无法写入 truth.json</translation>
+    </message>
+    <message>
+        <source>the series has images without Image Position/Orientation (Patient): it cannot be placed in the patient frame</source>
+        <translation>该序列有图像缺少 Image Position/Orientation (Patient)：无法置于患者坐标系中</translation>
+    </message>
+    <message>
+        <source>the series has images without Pixel Spacing</source>
+        <translation>该序列有图像缺少 Pixel Spacing</translation>
+    </message>
+    <message>
+        <source>the series has no images</source>
+        <translation>该序列没有图像</translation>
+    </message>
+    <message>
+        <source>the lumen label is not on the CT&apos;s grid</source>
+        <translation>管腔标签不在 CT 的网格上</translation>
+    </message>
+    <message>
+        <source>the wall thickness must be 0..5 mm</source>
+        <translation>管壁厚度必须为 0..5 mm</translation>
+    </message>
+    <message>
+        <source>no abdominal aorta found (a round contrast-filled cross-section in front of the spine in three neighbouring slices): give a point inside it with --seed x,y,z</source>
+        <translation>未找到腹主动脉（在三个相邻层面中脊柱前方的圆形造影剂充盈截面）：请用 --seed x,y,z 指定其中一点</translation>
+    </message>
+    <message>
+        <source>the label holds no aorta-sized cross-section (50 mm2 or more): segment the aorta first (vascusim-cli segment --target aorta)</source>
+        <translation>标签中没有主动脉大小的截面（50 mm2 或以上）：请先分割主动脉（vascusim-cli segment --target aorta）</translation>
+    </message>
+    <message>
+        <source>the skeleton is empty: run the skeleton step first</source>
+        <translation>骨架为空：请先运行骨架步骤</translation>
+    </message>
+    <message>
+        <source>the centerline step must be positive</source>
+        <translation>中心线步长必须为正</translation>
+    </message>
+    <message>
+        <source>the guided segmentation needs at least one include point inside the vessel</source>
+        <translation>引导分割至少需要一个位于血管内的包含点</translation>
+    </message>
+    <message>
+        <source>at most 250 include and exclude points</source>
+        <translation>包含点和排除点最多 250 个</translation>
+    </message>
+    <message>
+        <source>the points grew no vessel: pick them inside the contrast-filled lumen</source>
+        <translation>这些点未生长出血管：请将它们放在造影剂充盈的管腔内</translation>
+    </message>
+    <message>
+        <source>cannot merge a paint and an erase stroke</source>
+        <translation>无法合并绘制笔划和擦除笔划</translation>
+    </message>
+    <message>
+        <source>there is no label to edit</source>
+        <translation>没有可编辑的标签</translation>
+    </message>
+    <message>
+        <source>the brush needs a positive radius</source>
+        <translation>画笔需要正的半径</translation>
+    </message>
+    <message>
+        <source>the brush needs a plane</source>
+        <translation>画笔需要一个平面</translation>
+    </message>
+    <message>
+        <source>the label is empty: segment the vessels first</source>
+        <translation>标签为空：请先分割血管</translation>
+    </message>
+    <message>
+        <source>the liver label holds no voxel near the points</source>
+        <translation>肝脏标签在这些点附近没有体素</translation>
+    </message>
+    <message>
+        <source>place at least one point inside the lesion</source>
+        <translation>请在病灶内至少放置一个点</translation>
+    </message>
+    <message>
+        <source>a point lies outside the CT</source>
+        <translation>有一个点位于 CT 之外</translation>
+    </message>
+    <message>
+        <source>point_mm</source>
+        <translation>点（mm）</translation>
+    </message>
+    <message>
+        <source>a point lies outside the liver label: place the points inside the lesion, in the liver</source>
+        <translation>有一个点位于肝脏标签之外：请将点放在肝内的病灶中</translation>
+    </message>
+    <message>
+        <source>level set: the mask and the contrast image differ in size</source>
+        <translation>水平集：掩模与造影图像大小不同</translation>
+    </message>
+    <message>
+        <source>place at least one point inside the organ</source>
+        <translation>请在器官内至少放置一个点</translation>
+    </message>
+    <message>
+        <source>the points&apos; intensity window holds nothing: place them inside the organ</source>
+        <translation>这些点的强度窗内没有任何体素：请将它们放在器官内</translation>
+    </message>
+    <message>
+        <source>no centerlines to measure</source>
+        <translation>没有可测量的中心线</translation>
+    </message>
+    <message>
+        <source>no centerlines to measure: run vascusim-cli centerline first</source>
+        <translation>没有可测量的中心线：请先运行 vascusim-cli centerline</translation>
+    </message>
+    <message>
+        <source>no CT image to segment</source>
+        <translation>没有可分割的 CT 图像</translation>
+    </message>
+    <message>
+        <source>min_contrast_hu must be below max_contrast_hu</source>
+        <translation>min_contrast_hu 必须小于 max_contrast_hu</translation>
+    </message>
+    <message>
+        <source>the segmentation is empty: try a seed inside a vessel or a lower min_contrast_hu</source>
+        <translation>分割结果为空：请尝试将种子点放在血管内或降低 min_contrast_hu</translation>
+    </message>
+    <message>
+        <source>Dice needs two labels on the same grid</source>
+        <translation>Dice 需要同一网格上的两个标签</translation>
+    </message>
+    <message>
+        <source>the ROI holds no voxel of the image: draw it larger or inside the volume</source>
+        <translation>ROI 中没有图像体素：请画大一些或画在体积内</translation>
+    </message>
+    <message>
+        <source>an angle&apos;s arms must have a length: its points coincide</source>
+        <translation>角的边必须有长度：其点重合</translation>
+    </message>
+    <message>
+        <source>ITK image is not fully buffered from index 0; cannot adopt it</source>
+        <translation>ITK 图像未从索引 0 完整缓冲；无法接收</translation>
+    </message>
+    <message>
+        <source>cannot write NRRD image</source>
+        <translation>无法写入 NRRD 图像</translation>
+    </message>
+    <message>
+        <source>cannot read NRRD image</source>
+        <translation>无法读取 NRRD 图像</translation>
+    </message>
+    <message>
+        <source>cannot read NRRD header</source>
+        <translation>无法读取 NRRD 头</translation>
+    </message>
+    <message>
+        <source>image file is not 3D</source>
+        <translation>图像文件不是三维的</translation>
+    </message>
+    <message>
+        <source>VTK image has no scalars</source>
+        <translation>VTK 图像没有标量</translation>
+    </message>
+    <message>
+        <source>VTK image scalars are not single-component of the expected type</source>
+        <translation>VTK 图像标量不是预期类型的单分量数据</translation>
+    </message>
+    <message>
+        <source>vtk type</source>
+        <translation>VTK 类型</translation>
+    </message>
+    <message>
+        <source>no surface to convert</source>
+        <translation>没有可转换的表面</translation>
+    </message>
+    <message>
+        <source>surface polygon is not a triangle</source>
+        <translation>表面多边形不是三角形</translation>
+    </message>
+    <message>
+        <source>points</source>
+        <translation>点数</translation>
+    </message>
+    <message>
+        <source>no tetrahedral mesh to convert</source>
+        <translation>没有可转换的四面体网格</translation>
+    </message>
+    <message>
+        <source>mesh cell is not a linear tetrahedron</source>
+        <translation>网格单元不是线性四面体</translation>
+    </message>
+    <message>
+        <source>cell</source>
+        <translation>单元</translation>
+    </message>
+    <message>
+        <source>vtk cell type</source>
+        <translation>VTK 单元类型</translation>
+    </message>
+    <message>
+        <source>no vessel network to convert</source>
+        <translation>没有可转换的血管网络</translation>
+    </message>
+    <message>
+        <source>not a vessel network frame: a line does not run from node to node</source>
+        <translation>不是血管网络帧：有一条线不是连接节点到节点</translation>
+    </message>
+    <message>
+        <source>line</source>
+        <translation>线</translation>
+    </message>
+    <message>
+        <source>a grid field does not match its grid</source>
+        <translation>网格场与其网格不匹配</translation>
+    </message>
+    <message>
+        <source>not a voxel-grid frame: no point arrays</source>
+        <translation>不是体素网格帧：没有点数组</translation>
+    </message>
+    <message>
+        <source>not a voxel-grid frame: a point array is not one value per voxel</source>
+        <translation>不是体素网格帧：点数组并非每个体素一个值</translation>
+    </message>
+    <message>
+        <source>not a particle frame: it has lines or polygons</source>
+        <translation>不是粒子帧：其中含有线或多边形</translation>
+    </message>
+    <message>
+        <source>particle seeding needs a positive spacing and 1 to 8 wall layers</source>
+        <translation>粒子布置需要正的间距和 1 到 8 层壁面</translation>
+    </message>
+    <message>
+        <source>an open end needs a unit normal, a positive radius and a positive buffer depth</source>
+        <translation>开口端需要单位法向量、正的半径和正的缓冲深度</translation>
+    </message>
+    <message>
+        <source>a vertex budget needs a positive area and vertex count</source>
+        <translation>顶点预算需要正的面积和顶点数</translation>
+    </message>
+    <message>
+        <source>vessel sizing needs centerlines with points</source>
+        <translation>血管尺寸计算需要带点的中心线</translation>
+    </message>
+    <message>
+        <source>the surface to remesh is empty</source>
+        <translation>待重新网格化的表面为空</translation>
+    </message>
+    <message>
+        <source>cannot write STL file</source>
+        <translation>无法写入 STL 文件</translation>
+    </message>
+    <message>
+        <source>array</source>
+        <translation>数组</translation>
+    </message>
+    <message>
+        <source>no boundary face of the mesh faces the lumen point; give a point inside the vessel&apos;s lumen</source>
+        <translation>网格的边界面均不朝向管腔点；请给出血管管腔内的一点</translation>
+    </message>
+    <message>
+        <source>say where the blood pressure acts: --pressure-array NAME (point data, nonzero on the lumen surface) or --lumen-point x,y,z (a point inside the lumen, mm)</source>
+        <translation>请指明血压作用位置：--pressure-array NAME（点数据，在管腔表面非零）或 --lumen-point x,y,z（管腔内一点，mm）</translation>
+    </message>
+    <message>
+        <source>say which nodes are held: --fixed-array NAME (point data, nonzero on held nodes) or --fix-open-ends (the end cuts at the lumen surface&apos;s open ends)</source>
+        <translation>请指明固定的节点：--fixed-array NAME（点数据，在固定节点上非零）或 --fix-open-ends（管腔表面开口端的端部截面）</translation>
+    </message>
+    <message>
+        <source>no boundary face is selected for the pressure: the wall would carry no load</source>
+        <translation>没有为压力选择边界面：管壁将不承受任何载荷</translation>
+    </message>
+    <message>
+        <source>the pressure would act on the whole boundary (inner, outer and end faces): the lumen surface is not parted from the rest by sharp edges; give --pressure-array</source>
+        <translation>压力将作用于整个边界（内、外表面和端面）：管腔表面未被锐利边缘与其余部分分开；请给出 --pressure-array</translation>
+    </message>
+    <message>
+        <source>the pressure surface is closed (no open ends): give the held nodes with --fixed-array</source>
+        <translation>压力表面是封闭的（没有开口端）：请用 --fixed-array 给出固定节点</translation>
+    </message>
+    <message>
+        <source>no node is held: the wall would float free</source>
+        <translation>没有固定节点：管壁将自由漂移</translation>
+    </message>
+    <message>
+        <source>the lumen surface is empty: extract the surface first</source>
+        <translation>管腔表面为空：请先提取表面</translation>
+    </message>
+    <message>
+        <source>a lumen vertex has no normal (degenerate surface)</source>
+        <translation>有管腔顶点没有法向量（表面退化）</translation>
+    </message>
+    <message>
+        <source>the tetrahedral mesh is not a vessel wall (no wall_layer field)</source>
+        <translation>该四面体网格不是血管壁（没有 wall_layer 场）</translation>
+    </message>
+    <message>
+        <source>no PDF to encapsulate</source>
+        <translation>没有可封装的 PDF</translation>
+    </message>
+    <message>
+        <source>cannot set the encapsulated document&apos;s length</source>
+        <translation>无法设置封装文档的长度</translation>
+    </message>
+    <message>
+        <source>cannot write the file</source>
+        <translation>无法写入文件</translation>
+    </message>
+    <message>
+        <source>the PDF could not be rendered (no fonts or no QGuiApplication)</source>
+        <translation>无法生成 PDF（没有字体或没有 QGuiApplication）</translation>
+    </message>
+    <message>
+        <source>cannot write the report</source>
+        <translation>无法写入报告</translation>
+    </message>
+    <message>
+        <source>run control: frame intervals must be &gt;= 0, keep_every and max_steps &gt;= 1</source>
+        <translation>运行控制：帧间隔必须 &gt;= 0，keep_every 和 max_steps 必须 &gt;= 1</translation>
+    </message>
+    <message>
+        <source>multigrid: the matrix, positions and constraints differ in size</source>
+        <translation>多重网格：矩阵、位置与约束的大小不同</translation>
+    </message>
+    <message>
+        <source>multigrid: the coarsest level is not positive definite</source>
+        <translation>多重网格：最粗层不是正定的</translation>
+    </message>
+    <message>
+        <source>the time step must be positive and the Rayleigh coefficients non-negative</source>
+        <translation>时间步长必须为正，Rayleigh 系数不得为负</translation>
+    </message>
+    <message>
+        <source>the external forces do not match the mesh</source>
+        <translation>外力与网格不匹配</translation>
+    </message>
+    <message>
+        <source>conjugate gradients: the matrix, right-hand side, guess and constraints differ in size</source>
+        <translation>共轭梯度：矩阵、右端项、初值与约束的大小不同</translation>
+    </message>
+    <message>
+        <source>the mesh has no elements</source>
+        <translation>网格没有单元</translation>
+    </message>
+    <message>
+        <source>the matrix does not have this mesh&apos;s pattern</source>
+        <translation>矩阵不具有此网格的稀疏模式</translation>
+    </message>
+    <message>
+        <source>this wall has an intraluminal thrombus layer, which the linear wall model (wall_model 0) cannot tell from the wall: run wall_model 1, or build the wall without --thrombus</source>
+        <translation>该管壁含有腔内血栓层，线性管壁模型（wall_model 0）无法将其与管壁区分：请运行 wall_model 1，或不带 --thrombus 构建管壁</translation>
+    </message>
+    <message>
+        <source>the physiological protocol needs centerlines (for the local diameter)</source>
+        <translation>生理方案需要中心线（用于局部直径）</translation>
+    </message>
+    <message>
+        <source>equilibrium_tolerance 0 (the damped path&apos;s last state) needs wall_model 0</source>
+        <translation>equilibrium_tolerance 0（阻尼路径的最后状态）需要 wall_model 0</translation>
+    </message>
+    <message>
+        <source>the wall has no element to take its peak stress from</source>
+        <translation>管壁没有可取峰值应力的单元</translation>
+    </message>
+    <message>
+        <source>GMRES: the matrix, right-hand side and constraints differ in size</source>
+        <translation>GMRES：矩阵、右端项与约束的大小不同</translation>
+    </message>
+    <message>
+        <source>hyperelastic polynomial material needs c10 + c01 &gt; 0, c20, c02 &gt;= 0 and a bulk modulus &gt; 0</source>
+        <translation>超弹性多项式材料需要 c10 + c01 &gt; 0、c20、c02 &gt;= 0 以及体积模量 &gt; 0</translation>
+    </message>
+    <message>
+        <source>the quadratic wall model needs a material</source>
+        <translation>二次管壁模型需要材料</translation>
+    </message>
+    <message>
+        <source>quasi-static tearing needs a ramp start &lt; end, a positive increment and tear strength, and an onset tolerance in (0, 0.5)</source>
+        <translation>准静态撕裂需要斜坡起点 &lt; 终点、正的增量和撕裂强度，以及位于 (0, 0.5) 的起始容差</translation>
+    </message>
+    <message>
+        <source>the element field does not match the mesh</source>
+        <translation>单元场与网格不匹配</translation>
+    </message>
+    <message>
+        <source>no element of the wall lies in the aneurysm sac: is the sac measured on the image this wall was built from?</source>
+        <translation>管壁没有单元位于动脉瘤囊内：瘤囊是否是在构建该管壁的图像上测量的？</translation>
+    </message>
+    <message>
+        <source>no step along the Newton direction keeps every element uninverted</source>
+        <translation>沿牛顿方向的任何步长都无法保证所有单元不翻转</translation>
+    </message>
+    <message>
+        <source>the static wall analysis needs a positive pressure and at least one load increment</source>
+        <translation>静态管壁分析需要正的压力和至少一个载荷增量</translation>
+    </message>
+    <message>
+        <source>a structured mesh needs at least one cell per axis</source>
+        <translation>结构化网格每个轴至少需要一个单元</translation>
+    </message>
+    <message>
+        <source>a tube wall needs 0 &lt; inner &lt; outer radius, a positive length and at least 3 cells around</source>
+        <translation>管壁需要 0 &lt; 内半径 &lt; 外半径、正的长度以及周向至少 3 个单元</translation>
+    </message>
+    <message>
+        <source>an annulus sector needs 0 &lt; inner &lt; outer radius, a positive angle and height</source>
+        <translation>环形扇区需要 0 &lt; 内半径 &lt; 外半径、正的角度和高度</translation>
+    </message>
+    <message>
+        <source>the tangent stiffness could not be factorised (a part of the wall is not held by the fixed ends, or the load is past the wall&apos;s limit)</source>
+        <translation>切线刚度无法分解（部分管壁未被固定端约束，或载荷超过管壁极限）</translation>
+    </message>
+    <message>
+        <source>tearing would remove every element of the wall</source>
+        <translation>撕裂将移除管壁的所有单元</translation>
+    </message>
+    <message>
+        <source>the tetrahedral mesh is not a vessel wall (wall_layer / end_set fields missing): build it with &apos;mesh wall&apos;</source>
+        <translation>该四面体网格不是血管壁（缺少 wall_layer / end_set 场）：请用 &apos;mesh wall&apos; 构建</translation>
+    </message>
+    <message>
+        <source>the wall has no fixed end (end_set is 0 everywhere): build it from centerlines with ends</source>
+        <translation>管壁没有固定端（end_set 处处为 0）：请由带端点的中心线构建</translation>
+    </message>
+    <message>
+        <source>no lumen face carries the pressure</source>
+        <translation>没有管腔面承受压力</translation>
+    </message>
+    <message>
+        <source>the run has no pressure curve</source>
+        <translation>该运行没有压力曲线</translation>
+    </message>
+    <message>
+        <source>dragging the wall needs the CPU backend (the GPU stepper has no contact springs)</source>
+        <translation>拖动管壁需要 CPU 后端（GPU 步进器没有接触弹簧）</translation>
+    </message>
+    <message>
+        <source>the heat solver takes no input (its cube comes from the parameters)</source>
+        <translation>热求解器不接受输入（其立方体来自参数）</translation>
+    </message>
+    <message>
+        <source>the injection rate must be positive</source>
+        <translation>注射速率必须为正</translation>
+    </message>
+    <message>
+        <source>the arterial inflow must be positive</source>
+        <translation>动脉流入量必须为正</translation>
+    </message>
+    <message>
+        <source>the catheter&apos;s radius and the viscosities must be positive</source>
+        <translation>导管半径和黏度必须为正</translation>
+    </message>
+    <message>
+        <source>the filling takes no input: its network comes with the solved run</source>
+        <translation>充盈计算不接受输入：其网络来自已求解的运行</translation>
+    </message>
+    <message>
+        <source>the flow system is singular: the part downstream of the tip has no outlet pressure to refer to</source>
+        <translation>流动方程组奇异：导管尖端下游部分没有可参照的出口压力</translation>
+    </message>
+    <message>
+        <source>the injection needs a positive rate or a tip pressure</source>
+        <translation>注射需要正的速率或尖端压力</translation>
+    </message>
+    <message>
+        <source>feeder edit: there is no lesion for a feeder to feed</source>
+        <translation>供血支编辑：没有可供血的病灶</translation>
+    </message>
+    <message>
+        <source>the centerlines have no vessel segments: extract them first (vascusim-cli centerline)</source>
+        <translation>中心线中没有血管节段：请先提取（vascusim-cli centerline）</translation>
+    </message>
+    <message>
+        <source>feeders are edited on a run with a liver label: give the liver (and the tumour) first</source>
+        <translation>供血支需在带肝脏标签的运行上编辑：请先给出肝脏（和肿瘤）</translation>
+    </message>
+    <message>
+        <source>a tip pressure drives the injected drug alone (blood_flow=0); with blood flow the injection is a rate</source>
+        <translation>尖端压力仅驱动注入的药物（blood_flow=0）；有血流时注射以速率给出</translation>
+    </message>
+    <message>
+        <source>the tip pressure does not drive any flow into the network (it is at or below the outlets&apos;)</source>
+        <translation>尖端压力未能驱动任何流量进入网络（其等于或低于出口压力）</translation>
+    </message>
+    <message>
+        <source>the tumour&apos;s radius must be positive</source>
+        <translation>肿瘤半径必须为正</translation>
+    </message>
+    <message>
+        <source>the liver label has no voxel of the liver&apos;s value</source>
+        <translation>肝脏标签中没有肝脏取值的体素</translation>
+    </message>
+    <message>
+        <source>no end of the vessel tree lies in the liver: there is no territory to share out</source>
+        <translation>血管树没有末端位于肝内：没有可划分的供血区域</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>phase densities and viscosities must be positive</source>
+        <translation>各相的密度和黏度必须为正</translation>
+    </message>
+    <message>
+        <source>the working angle needs a tip away from the root: there is no path to see</source>
+        <translation>工作角度需要远离根部的尖端：没有可观察的路径</translation>
+    </message>
+    <message>
+        <source>the endoscope camera is outside the smoke&apos;s domain or inside tissue</source>
+        <translation>内镜相机位于烟雾区域之外或组织内</translation>
+    </message>
+    <message>
+        <source>the liver label is empty: the liver-ablation dome needs the liver&apos;s surface</source>
+        <translation>肝脏标签为空：肝消融穹顶需要肝脏表面</translation>
+    </message>
+    <message>
+        <source>the EVH tunnel needs a centerline of 20 mm or more</source>
+        <translation>EVH 隧道需要 20 mm 或更长的中心线</translation>
+    </message>
+    <message>
+        <source>a suction needs a vent or an open face for the gas it takes out to be replaced</source>
+        <translation>抽吸需要通气口或开放面，以补充被抽出的气体</translation>
+    </message>
+    <message>
+        <source>the suction port has no fluid cell within its radius</source>
+        <translation>抽吸口半径内没有流体单元</translation>
+    </message>
+    <message>
+        <source>the dam break needs a positive particle spacing</source>
+        <translation>溃坝算例需要正的粒子间距</translation>
+    </message>
+    <message>
+        <source>the dam break needs at least 1000 particles</source>
+        <translation>溃坝算例至少需要 1000 个粒子</translation>
+    </message>
+    <message>
+        <source>sph-fpm: the moment matrix is singular at a particle next to the wall</source>
+        <translation>sph-fpm：壁面附近某粒子的矩矩阵奇异</translation>
+    </message>
+    <message>
+        <source>sph-fpm: no particle next to the wall was evaluated</source>
+        <translation>sph-fpm：未评估任何壁面附近的粒子</translation>
+    </message>
+    <message>
+        <source>the neighbour grid&apos;s reach must be a positive length</source>
+        <translation>邻域网格的作用范围必须为正长度</translation>
+    </message>
+    <message>
+        <source>a particle&apos;s position is not finite: the neighbour grid cannot place it</source>
+        <translation>有粒子位置不是有限值：邻域网格无法放置它</translation>
+    </message>
+    <message>
+        <source>the SPH smoothing length must be a positive length</source>
+        <translation>SPH 光滑长度必须为正长度</translation>
+    </message>
+    <message>
+        <source>the SPH input&apos;s particles need the field &apos;wall&apos; (1 at wall particles, 0 in the fluid)</source>
+        <translation>SPH 输入的粒子需要 &apos;wall&apos; 场（壁面粒子为 1，流体中为 0）</translation>
+    </message>
+    <message>
+        <source>the SPH input has no particles</source>
+        <translation>SPH 输入没有粒子</translation>
+    </message>
+    <message>
+        <source>the stenosis figures need one averaged flow per section</source>
+        <translation>狭窄指标需要每个截面一个平均流量</translation>
+    </message>
+    <message>
+        <source>a section the stenosis is compared with holds no fluid</source>
+        <translation>与狭窄比较的截面中没有流体</translation>
+    </message>
+    <message>
+        <source>kind</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>cannot write skeleton</source>
+        <translation>无法写入骨架</translation>
+    </message>
+    <message>
+        <source>cannot write the measurement</source>
+        <translation>无法写入测量</translation>
+    </message>
+    <message>
+        <source>cannot parse skeleton</source>
+        <translation>无法解析骨架</translation>
+    </message>
+    <message>
+        <source>cannot parse the measurement</source>
+        <translation>无法解析测量</translation>
+    </message>
+    <message>
+        <source>unknown artifact kind</source>
+        <translation>未知的工件类型</translation>
+    </message>
+    <message>
+        <source>the mask has no labelled voxel</source>
+        <translation>掩模中没有已标记的体素</translation>
+    </message>
+    <message>
+        <source>study.json is not a VascuSim study manifest</source>
+        <translation>study.json 不是 VascuSim 研究清单</translation>
+    </message>
+    <message>
+        <source>software_version</source>
+        <translation>软件版本</translation>
+    </message>
+    <message>
+        <source>study.json is malformed</source>
+        <translation>study.json 格式错误</translation>
+    </message>
+    <message>
+        <source>the mesh file does not exist</source>
+        <translation>网格文件不存在</translation>
+    </message>
+    <message>
+        <source>not a VTK XML unstructured grid (.vtu)</source>
+        <translation>不是 VTK XML 非结构化网格（.vtu）</translation>
+    </message>
+    <message>
+        <source>the mesh has no tetrahedra</source>
+        <translation>网格没有四面体</translation>
+    </message>
+    <message>
+        <source>a position must be [x, y, z] in mm</source>
+        <translation>位置必须是以 mm 为单位的 [x, y, z]</translation>
+    </message>
+    <message>
+        <source>not a vascusim network file (&quot;format&quot;: &quot;vascusim-network&quot; is missing)</source>
+        <translation>不是 VascuSim 网络文件（缺少 &quot;format&quot;: &quot;vascusim-network&quot;）</translation>
+    </message>
+    <message>
+        <source>unsupported network file version (this build reads version 1)</source>
+        <translation>不支持的网络文件版本（本版本读取版本 1）</translation>
+    </message>
+    <message>
+        <source>network file not found</source>
+        <translation>未找到网络文件</translation>
+    </message>
+    <message>
+        <source>cannot write the network file</source>
+        <translation>无法写入网络文件</translation>
+    </message>
+    <message>
+        <source>a run frame of an unknown format</source>
+        <translation>运行帧的格式未知</translation>
+    </message>
+    <message>
+        <source>not a run this VascuSim reads</source>
+        <translation>不是本 VascuSim 可读取的运行</translation>
+    </message>
+    <message>
+        <source>cannot parse a run&apos;s run.json</source>
+        <translation>无法解析运行的 run.json</translation>
+    </message>
+    <message>
+        <source>a run is written with its frames in memory</source>
+        <translation>运行需在其帧位于内存中时写入</translation>
+    </message>
+    <message>
+        <source>a run&apos;s run.json lacks an entry</source>
+        <translation>运行的 run.json 缺少条目</translation>
+    </message>
+    <message>
+        <source>the folder is a study already; open it instead of creating a new one</source>
+        <translation>该文件夹已是一个研究；请打开它，而不是新建</translation>
+    </message>
+    <message>
+        <source>the folder became a study while waiting for its lock; open it instead</source>
+        <translation>等待锁期间该文件夹已成为研究；请改为打开它</translation>
+    </message>
+    <message>
+        <source>not a VascuSim study: study.json is missing</source>
+        <translation>不是 VascuSim 研究：缺少 study.json</translation>
+    </message>
+    <message>
+        <source>cannot add an empty image to the study</source>
+        <translation>无法向研究添加空图像</translation>
+    </message>
+    <message>
+        <source>cannot add an empty label volume to the study</source>
+        <translation>无法向研究添加空标签体积</translation>
+    </message>
+    <message>
+        <source>cannot add an empty surface to the study</source>
+        <translation>无法向研究添加空表面</translation>
+    </message>
+    <message>
+        <source>cannot add an empty tetrahedral mesh to the study</source>
+        <translation>无法向研究添加空四面体网格</translation>
+    </message>
+    <message>
+        <source>cannot add an empty vessel network to the study</source>
+        <translation>无法向研究添加空血管网络</translation>
+    </message>
+    <message>
+        <source>a run added to the study needs its frames</source>
+        <translation>添加到研究的运行需要其帧</translation>
+    </message>
+    <message>
+        <source>a report added to the study must be a PDF</source>
+        <translation>添加到研究的报告必须是 PDF</translation>
+    </message>
+    <message>
+        <source>the study is open read-only; save it under a new name, or reopen it for writing when its writer has finished</source>
+        <translation>该研究以只读方式打开；请另存为新名称，或在其写入者完成后重新以可写方式打开</translation>
+    </message>
+    <message>
+        <source>study.json was changed by another program since this study was opened; nothing was written. Save under a new name (Save As) to keep this version</source>
+        <translation>自打开该研究以来 study.json 已被其他程序修改；未写入任何内容。请以新名称保存（另存为）以保留此版本</translation>
+    </message>
+    <message>
+        <source>the folder for the new study is not empty; choose a new folder</source>
+        <translation>新研究的文件夹不为空；请选择新的文件夹</translation>
+    </message>
+    <message>
+        <source>holder</source>
+        <translation>持有者</translation>
+    </message>
+    <message>
+        <source>host</source>
+        <translation>主机</translation>
+    </message>
+    <message>
+        <source>not a NIfTI, NRRD or MetaImage volume (or the file cannot be read)</source>
+        <translation>不是 NIfTI、NRRD 或 MetaImage 体积（或文件无法读取）</translation>
+    </message>
+    <message>
+        <source>cannot read the volume</source>
+        <translation>无法读取体积</translation>
+    </message>
+    <message>
+        <source>the volume file is truncated: it holds fewer bytes than its header announces</source>
+        <translation>体积文件被截断：其字节数少于文件头声明的数量</translation>
+    </message>
+    <message>
+        <source>bytes</source>
+        <translation>字节数</translation>
+    </message>
+    <message>
+        <source>voxel bytes expected</source>
+        <translation>预期体素字节数</translation>
+    </message>
+    <message>
+        <source>volume file does not exist</source>
+        <translation>体积文件不存在</translation>
+    </message>
+    <message>
+        <source>cannot read the volume header</source>
+        <translation>无法读取体积文件头</translation>
+    </message>
+    <message>
+        <source>the volume is not 3D</source>
+        <translation>该体积不是三维的</translation>
+    </message>
+    <message>
+        <source>dimensions</source>
+        <translation>维度</translation>
+    </message>
+    <message>
+        <source>the volume has more than one component per voxel (colour or vector data)</source>
+        <translation>该体积每个体素有多个分量（彩色或矢量数据）</translation>
+    </message>
+    <message>
+        <source>components</source>
+        <translation>分量</translation>
+    </message>
+    <message>
+        <source>cannot write VTK XML file</source>
+        <translation>无法写入 VTK XML 文件</translation>
+    </message>
+    <message>
+        <source>file does not exist</source>
+        <translation>文件不存在</translation>
+    </message>
+    <message>
+        <source>cannot read VTK XML file</source>
+        <translation>无法读取 VTK XML 文件</translation>
+    </message>
+    <message>
+        <source>field lines need one value (and radius pair) per line</source>
+        <translation>场线每条线需要一个值（及一对半径）</translation>
+    </message>
+    <message>
+        <source>3D snapshots need a display (set DISPLAY, or run under xvfb-run)</source>
+        <translation>3D 快照需要显示器（请设置 DISPLAY，或在 xvfb-run 下运行）</translation>
+    </message>
+    <message>
+        <source>a snapshot needs at least 16 x 16 pixels</source>
+        <translation>快照至少需要 16 x 16 像素</translation>
+    </message>
+    <message>
+        <source>the offscreen snapshot could not be read back</source>
+        <translation>无法读回离屏快照</translation>
+    </message>
+    <message>
+        <source>field points need one value per point</source>
+        <translation>场点每个点需要一个值</translation>
+    </message>
+</context>
+<context>
     <name>vsim::Parameters</name>
     <message>
         <source>Layer 1: window and region growing</source>
@@ -5427,6 +6766,18 @@ Replace them?</source>
     <message>
         <source>Paper:</source>
         <translation>纸张：</translation>
+    </message>
+    <message>
+        <source>The language of the report&apos;s texts and numbers; the workstation&apos;s by default</source>
+        <translation>报告文本和数字所用的语言；默认与工作站一致</translation>
+    </message>
+    <message>
+        <source>Language:</source>
+        <translation>语言：</translation>
+    </message>
+    <message>
+        <source>Run the solvers&apos; validation cases into the report (seconds to a minute)</source>
+        <translation>运行求解器的验证算例并写入报告（数秒至一分钟）</translation>
     </message>
 </context>
 <context>

@@ -1,8 +1,8 @@
 #include "ReportCommand.h"
 
+#include "CliSupport.h"
 #include "vsim/app/StudyReport.h"
 #include "vsim/app/TextLanguage.h"
-#include "CliSupport.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/report/EncapsulatedPdf.h"
@@ -74,8 +74,9 @@ int writeReport(const Arguments& arguments, const Progress& progress)
     options.anonymize = arguments.hasOption("anonymize");
     options.validate = !arguments.hasOption("no-validation");
     options.sections = sectionList(arguments.option("sections"));
+    options.language = arguments.option("language", "en");
     const auto application = guiApplication();
-    app::installTextLanguage(arguments.option("language", "en"));
+    const app::ScopedTextLanguage language(options.language); // the texts and numbers built and rendered here
     const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
     const QByteArray pdf = report::renderPdf(report, page);
     report::writeText(std::string(pdf.constData(), std::size_t(pdf.size())), out);

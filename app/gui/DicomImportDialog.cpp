@@ -4,6 +4,7 @@
 
 #include "vsim/dicom/DicomImport.h"
 #include "vsim/dicom/SeriesGeometry.h"
+#include "vsim/viz/DecimalText.h"
 
 #include <QDialogButtonBox>
 #include <QFileDialog>
@@ -50,11 +51,14 @@ QString spacingText(const dicom::DicomSeries& series, QStringList& warnings)
         for (const std::string& warning : plan.warnings)
             warnings << QString::fromStdString(warning);
         const Eigen::Vector3d& s = plan.grid.spacing;
-        return QString("%1 x %2 x %3").arg(s.x(), 0, 'f', 2).arg(s.y(), 0, 'f', 2).arg(s.z(), 0, 'f', 2);
+        return QString("%1 x %2 x %3")
+            .arg(viz::decimalText(s.x(), 2))
+            .arg(viz::decimalText(s.y(), 2))
+            .arg(viz::decimalText(s.z(), 2));
     }
     catch (const Error& error)
     {
-        warnings << QString::fromStdString(error.message());
+        warnings << QString::fromStdString(error.messageForPeople());
         return QObject::tr("cannot be placed");
     }
 }
@@ -171,7 +175,7 @@ void DicomImportDialog::scan(const QString& path)
         catch (const Error& error)
         {
             auto failed = std::make_shared<dicom::DicomScanResult>();
-            failed->warnings.push_back(error.message());
+            failed->warnings.push_back(error.messageForPeople());
             return std::shared_ptr<const dicom::DicomScanResult>(failed);
         }
     }));

@@ -48,6 +48,14 @@ QString nativeLanguageName(const QString& code)
     return QStringLiteral("English");
 }
 
+QString installedLanguage()
+{
+    for (const QString& code : translatedLanguages())
+        if (QLocale().language() == QLocale(code).language())
+            return code;
+    return QStringLiteral("en");
+}
+
 QString chosenLanguage()
 {
     return QSettings().value(kLanguageKey, QString()).toString();
@@ -60,7 +68,6 @@ void setChosenLanguage(const QString& code)
 
 bool installLanguage(const QString& code)
 {
-    app::useQtTranslations(); // the libraries' texts (the report, definitions) through the same catalogues
     const QLocale locale = code.isEmpty() ? QLocale() : QLocale(code);
     auto ours = std::make_unique<QTranslator>();
     const bool found = locale.language() != QLocale::English && ours->load(locale, "vascusim", "_", ":/i18n");
@@ -70,6 +77,8 @@ bool installLanguage(const QString& code)
         found && qt->load(locale, "qtbase", "_", QLibraryInfo::path(QLibraryInfo::TranslationsPath));
     replaceTranslator(1, qtFound ? std::move(qt) : nullptr);
     QLocale::setDefault(found ? locale : QLocale(QLocale::English)); // numbers and dates follow the texts
+    // The libraries' texts (the report, definitions) through the same catalogues, with the language's decimal mark.
+    app::useQtTranslations(installedLanguage().toStdString());
     return found;
 }
 

@@ -19,5 +19,7 @@ void setChosenLanguage(const QString& code);
 /// dialogs) where the system has it, replacing any installed earlier; false when VascuSim has no translation
 /// for it (English then shows).
 bool installLanguage(const QString& code);
+/// The language installLanguage() put in place: "de", "zh_CN", or "en" when none of VascuSim's was found.
+QString installedLanguage();
 
 } // namespace vsim::gui

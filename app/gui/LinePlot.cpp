@@ -1,5 +1,7 @@
 #include "LinePlot.h"
 
+#include "vsim/viz/DecimalText.h"
+
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -11,10 +13,10 @@
 namespace vsim::gui {
 namespace {
 
-/// "12.5", "0.0031", "1647", "1.2e+05": short tick labels.
+/// "12.5", "0.0031", "1647", "1.2e+05": short tick labels, in the reader's decimal mark.
 QString tickText(double value)
 {
-    return QString::number(value, 'g', 3);
+    return viz::significantText(value, 3);
 }
 
 } // namespace

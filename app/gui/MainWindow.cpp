@@ -386,7 +386,7 @@ bool MainWindow::newStudy(const QString& bundle)
     }
     catch (const std::exception& error)
     {
-        showError(tr("New study"), QString::fromStdString(error.what()));
+        showError(tr("New study"), QString::fromStdString(textForPeople(error)));
         return false;
     }
 }
@@ -429,7 +429,7 @@ void MainWindow::showImageArtifact(const std::string& id)
     }
     catch (const std::exception& error)
     {
-        showError(tr("Show image"), QString::fromStdString(error.what()));
+        showError(tr("Show image"), QString::fromStdString(textForPeople(error)));
     }
 }
 
@@ -468,7 +468,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
             }
             catch (const std::exception& error)
             {
-                showError(tr("Save study"), QString::fromStdString(error.what()));
+                showError(tr("Save study"), QString::fromStdString(textForPeople(error)));
                 return event->ignore();
             }
         }

@@ -99,7 +99,7 @@ QString MainWindow::saveScreenshot(QWidget* view)
     }
     catch (const std::exception& error)
     {
-        showError(tr("Screenshot"), QString::fromStdString(error.what()));
+        showError(tr("Screenshot"), QString::fromStdString(textForPeople(error)));
         return {};
     }
 }
@@ -138,7 +138,7 @@ MovieResult MainWindow::saveMovie(MovieSource source)
     }
     catch (const std::exception& error)
     {
-        showError(tr("Movie"), QString::fromStdString(error.what()));
+        showError(tr("Movie"), QString::fromStdString(textForPeople(error)));
     }
     if (!run)
         volume->orbit(360.0 / kRotationFrames); // back where it started (72 x 5 degrees)

@@ -64,7 +64,7 @@ bool MainWindow::showEndoscope()
         }
         catch (const std::exception& error)
         {
-            showError(tr("Virtual endoscope"), QString::fromStdString(error.what()));
+            showError(tr("Virtual endoscope"), QString::fromStdString(textForPeople(error)));
         }
     };
     if (!needsSurface)

@@ -10,6 +10,7 @@
 #include "vsim/app/InjectionPipeline.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/core/Units.h"
+#include "vsim/viz/DecimalText.h"
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QMenu>
@@ -73,10 +74,10 @@ bool MainWindow::simulateBloodFlow()
             else if (flow->stenosis)
                 statusBar()->showMessage(
                     tr("Blood flow: peak velocity ratio %1 at %2 mm along the centerline (mean ratio %3), pressure drop %4 mmHg")
-                        .arg(flow->stenosis->peakRatio, 0, 'f', 2)
-                        .arg(flow->stenosis->distanceMm, 0, 'f', 0)
-                        .arg(flow->stenosis->meanRatio, 0, 'f', 2)
-                        .arg(units::paToMmHg(flow->stenosis->pressureDropPa), 0, 'f', 1),
+                        .arg(viz::decimalText(flow->stenosis->peakRatio, 2))
+                        .arg(viz::decimalText(flow->stenosis->distanceMm, 0))
+                        .arg(viz::decimalText(flow->stenosis->meanRatio, 2))
+                        .arg(viz::decimalText(units::paToMmHg(flow->stenosis->pressureDropPa), 1)),
                     10000);
             else
                 statusBar()->showMessage(tr("Blood flow: no stenosis figures (%1)")
@@ -111,9 +112,9 @@ bool MainWindow::simulateNeedleInjection()
                 showError(tr("Needle injection"), tr("Read these results with care: %1").arg(QString::fromStdString(warning)));
             else if (!injection->fill.empty())
                 statusBar()->showMessage(tr("Needle injection: %1 ml in the vessel, %2 ml collected in the box at %3 s")
-                                             .arg(injection->fill.back().inVesselMl, 0, 'g', 3)
-                                             .arg(injection->fill.back().collectedMl, 0, 'g', 3)
-                                             .arg(injection->fill.back().timeS, 0, 'f', 3),
+                                             .arg(viz::significantText(injection->fill.back().inVesselMl, 3))
+                                             .arg(viz::significantText(injection->fill.back().collectedMl, 3))
+                                             .arg(viz::decimalText(injection->fill.back().timeS, 3)),
                                          10000);
         });
 }
@@ -161,7 +162,9 @@ bool MainWindow::showWallLoads(const std::string& field)
     if (from != parameters.end() && over != parameters.end())
     {
         const double start = std::atof(from->second.c_str()), length = std::atof(over->second.c_str());
-        shown.title += tr(", averaged over %1-%2 ms").arg(1e3 * start, 0, 'f', 1).arg(1e3 * (start + length), 0, 'f', 1);
+        shown.title += tr(", averaged over %1-%2 ms")
+            .arg(viz::decimalText(1e3 * start, 1))
+            .arg(viz::decimalText(1e3 * (start + length), 1));
     }
     else
         shown.title += tr(", time-averaged");

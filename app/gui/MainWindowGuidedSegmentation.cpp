@@ -8,6 +8,7 @@
 #include "ViewLayout.h"
 #include "vsim/app/GuidedSegmentationRecord.h"
 #include "vsim/app/SacRecord.h"
+#include "vsim/viz/DecimalText.h"
 #include "vsim/viz/SliceView.h"
 
 #include <QDockWidget>
@@ -105,7 +106,7 @@ bool MainWindow::segmentFromPoints(const imaging::SegmentationRequest& request)
             m_document.undoStack()->endMacro();
             const auto& f = outcome->segmentation.figures;
             statusBar()->showMessage(tr("Segmented %1 ml (%2 leak(s) cut)%3")
-                                         .arg(f.at("volume_ml"), 0, 'f', 1)
+                                         .arg(viz::decimalText(f.at("volume_ml"), 1))
                                          .arg(int(f.at("leaks_cut")))
                                          .arg(replaces ? tr(", replacing the label of the run before") : QString()),
                                      8000);

@@ -88,14 +88,15 @@ std::string MainWindow::addWithRescaleIfAsked(const QString& title,
         {
             if (error.contextValue("option") != "--rescale")
             {
-                showError(title, QString::fromStdString(error.message()));
+                showError(title, QString::fromStdString(error.messageForPeople()));
                 return {};
             }
             // Not HU: the user may know the rescale (a volume of stored values); nothing was added.
             bool ok = false;
             const QString text = QInputDialog::getText(
                 this, tr("Not Hounsfield units"),
-                tr("%1\n\nRescale to HU (HU = slope x stored value + intercept):").arg(QString::fromStdString(error.message())),
+                tr("%1\n\nRescale to HU (HU = slope x stored value + intercept):")
+                    .arg(QString::fromStdString(error.messageForPeople())),
                 QLineEdit::Normal, rescale ? QString("%1, %2").arg(rescale->slope).arg(rescale->intercept) : "1, -1024", &ok);
             const auto numbers = numbersInText(text, 2);
             if (!ok || !numbers || numbers->size() != 2)

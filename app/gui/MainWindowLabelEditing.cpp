@@ -113,7 +113,7 @@ bool MainWindow::startLabelEditing(viz::BrushMode brush, double radiusMm)
     }
     catch (const std::exception& error)
     {
-        showError(tr("Edit label"), QString::fromStdString(error.what()));
+        showError(tr("Edit label"), QString::fromStdString(textForPeople(error)));
         return false;
     }
     discardLabelEdits();

@@ -108,7 +108,7 @@ std::string MainWindow::addMeasurement(const ViewMeasurement& drawn)
     }
     catch (const std::exception& error)
     {
-        showError(tr("Measure"), QString::fromStdString(error.what()));
+        showError(tr("Measure"), QString::fromStdString(textForPeople(error)));
         return {};
     }
 }

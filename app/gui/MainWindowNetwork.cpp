@@ -10,10 +10,11 @@
 #include "SegmentationPointsPanel.h"
 #include "ViewLayout.h"
 #include "vsim/app/NetworkPipeline.h"
+#include "vsim/core/Units.h"
 #include "vsim/imaging/LesionGrowing.h"
 #include "vsim/imaging/OrganGrowing.h"
-#include "vsim/core/Units.h"
 #include "vsim/sim/network/NetworkBuild.h"
+#include "vsim/viz/DecimalText.h"
 #include "vsim/viz/SliceView.h"
 
 #include <QDockWidget>
@@ -169,7 +170,7 @@ void MainWindow::showDrugDeliveryRun(std::shared_ptr<const sim::network::Network
     m_drugPanel->setRun(run, int(m_networkParameters.get("filling_steps")));
     statusBar()->showMessage(tr("Drug delivery: %1 outlets, last reached after %2 s")
                                  .arg(run->twoPhase.orientation.outlets.size())
-                                 .arg(run->filling.lastArrival, 0, 'f', 1),
+                                 .arg(viz::decimalText(run->filling.lastArrival, 1)),
                              8000);
 }
 
@@ -237,7 +238,7 @@ bool MainWindow::growOrganFromPoints(bool tumour)
                                         "Delivery dock")
                                          .arg(QString::fromStdString(organ))
                                          .arg(points.size())
-                                         .arg(grown->figures.at("volume_ml"), 0, 'f', 1)
+                                         .arg(viz::decimalText(grown->figures.at("volume_ml"), 1))
                                          .arg(QString::fromStdString(organ)),
                                      8000);
         });
@@ -264,7 +265,7 @@ void MainWindow::showTerritory(const sim::network::NetworkRunResult& run)
     if (run.coverage && !run.lesions.empty())
         statusBar()->showMessage(tr("Chemoembolization from the tip: coverage grade %1, territory %2 ml, %3 feeder(s)")
                                      .arg(QChar(run.coverage->grade))
-                                     .arg(run.perfused->volumeMl, 0, 'f', 1)
+                                     .arg(viz::decimalText(run.perfused->volumeMl, 1))
                                      .arg(run.feeders.size()),
                                  8000);
 }

@@ -4,6 +4,7 @@
 #include "FileLocations.h"
 #include "ReportExportDialog.h"
 #include "vsim/app/StudyReport.h"
+#include "vsim/app/TextLanguage.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/report/EncapsulatedPdf.h"
 #include "vsim/report/MetricsExport.h"
@@ -79,7 +80,7 @@ void MainWindow::openReportArtifact(const std::string& id)
     }
     catch (const Error& error)
     {
-        showError(tr("Report"), QString::fromStdString(error.message()));
+        showError(tr("Report"), QString::fromStdString(error.messageForPeople()));
     }
 }
 
@@ -115,7 +116,14 @@ bool MainWindow::exportReport(const ReportExportRequest& request)
         return false;
     app::ReportOptions options;
     options.anonymize = request.anonymize;
-    options.renderSnapshot = renderOnGuiThread;
+    options.language = request.language.toStdString();
+    options.validate = request.validate;
+    options.renderSnapshot = [language = options.language](const std::function<QImage()>& render) {
+        return renderOnGuiThread([&] {
+            const app::ScopedTextLanguage snapshotLanguage(language);
+            return render();
+        });
+    };
     auto built = std::make_shared<std::pair<report::Report, QByteArray>>();
     return m_tasks.run(
         tr("Report"),
@@ -123,6 +131,7 @@ bool MainWindow::exportReport(const ReportExportRequest& request)
             for (const QString& file : request.outputFiles()) // before the work: a refusal costs no time
                 checkOutputFile(file.toStdString(), request.overwrite);
             const study::Study& study = m_document.study();
+            const app::ScopedTextLanguage language(options.language); // the report's own, whatever the window's
             const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
             const QByteArray pdf = report::renderPdf(report, request.page);
             *built = {report, pdf};

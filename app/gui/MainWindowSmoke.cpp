@@ -10,6 +10,7 @@
 #include "ParameterForm.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/app/SmokePipeline.h"
+#include "vsim/viz/DecimalText.h"
 
 #include <QMenu>
 #include <QStatusBar>
@@ -67,13 +68,13 @@ bool MainWindow::simulateSmoke(const std::string& scenario)
                 return found == run->run.metrics.end() ? -1.0 : found->second;
             };
             const auto when = [&](double seconds) {
-                return seconds < 0.0 ? tr("not reached") : tr("after %1 s").arg(seconds, 0, 'f', 1);
+                return seconds < 0.0 ? tr("not reached") : tr("after %1 s").arg(viz::decimalText(seconds, 1));
             };
             statusBar()->showMessage(tr("Surgical smoke (illustrative): the endoscope's view 50 % obscured %1, 90 % %2; "
                                         "at most %3 % obscured")
                                          .arg(when(metric("time_to_50_percent_obscuration_s")))
                                          .arg(when(metric("time_to_90_percent_obscuration_s")))
-                                         .arg(100.0 * metric("peak_obscured_fraction"), 0, 'f', 0),
+                                         .arg(viz::decimalText(100.0 * metric("peak_obscured_fraction"), 0)),
                                      10000);
         });
 }

@@ -41,7 +41,7 @@ bool MainWindow::showVesselView()
     }
     catch (const std::exception& error)
     {
-        showError(tr("Along the vessel"), QString::fromStdString(error.what()));
+        showError(tr("Along the vessel"), QString::fromStdString(textForPeople(error)));
         return false;
     }
 }

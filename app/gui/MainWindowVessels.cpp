@@ -3,18 +3,19 @@
 
 #include "ArtifactCommands.h"
 #include "MainWindow.h"
+#include "ParameterForm.h"
 #include "StudyDocument.h"
 #include "TableHeaders.h"
+#include "ViewLayout.h"
 #include "vsim/app/SacRecord.h"
 #include "vsim/app/SegmentNames.h"
 #include "vsim/imaging/AneurysmSac.h"
-#include "ParameterForm.h"
-#include "ViewLayout.h"
 #include "vsim/imaging/Centerlines.h"
 #include "vsim/imaging/Skeletonization.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/imaging/VesselSegmentation.h"
 #include "vsim/mesh/VesselSurface.h"
+#include "vsim/viz/DecimalText.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
@@ -37,7 +38,7 @@ constexpr int kSegmentRole = Qt::UserRole + 2; // the segment's index, on the ro
 
 QTableWidgetItem* number(double value, int decimals)
 {
-    auto* item = new QTableWidgetItem(QString::number(value, 'f', decimals));
+    auto* item = new QTableWidgetItem(viz::decimalText(value, decimals));
     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
     return item;
 }
@@ -145,7 +146,7 @@ void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurement
             continue;
         const int row = m_measurementTable->rowCount();
         m_measurementTable->insertRow(row);
-        auto* item = new QTableWidgetItem(format.arg(value->second, 0, 'f', 1));
+        auto* item = new QTableWidgetItem(format.arg(viz::decimalText(value->second, 1)));
         const auto definitions = imaging::aneurysmSacDefinitions(true);
         if (const auto definition = definitions.find(key); definition != definitions.end())
             item->setToolTip(QString::fromStdString(definition->second));
@@ -159,7 +160,8 @@ void MainWindow::showMeasurements(const imaging::VesselMeasurements& measurement
     const auto widest = std::max_element(measurements.segments.begin(), measurements.segments.end(),
                                          [](const auto& a, const auto& b) { return a.maxDiameterMm < b.maxDiameterMm; });
     if (widest != measurements.segments.end())
-        addRow(tr("Maximum lumen diameter %1 mm (equivalent, perpendicular)").arg(measurements.maxDiameterMm, 0, 'f', 1),
+        addRow(tr("Maximum lumen diameter %1 mm (equivalent, perpendicular)")
+            .arg(viz::decimalText(measurements.maxDiameterMm, 1)),
                *widest, sectionOf(*widest, true), -1);
     for (std::size_t index = 0; index < measurements.segments.size(); ++index)
     {

@@ -12,6 +12,7 @@
 #include "vsim/app/SacRecord.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/sim/fem/FemProtocols.h"
+#include "vsim/viz/DecimalText.h"
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QCheckBox>
@@ -92,7 +93,7 @@ bool MainWindow::buildWallMesh()
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Wall mesh")));
             statusBar()->showMessage(tr("Wall: %1 elements, smallest dihedral angle %2 deg")
                                          .arg(build->wall.mesh.tets.size())
-                                         .arg(build->wall.minDihedralDeg, 0, 'f', 1),
+                                         .arg(viz::decimalText(build->wall.minDihedralDeg, 1)),
                                      8000);
         });
 }
@@ -134,10 +135,11 @@ bool MainWindow::simulateWall(const std::string& protocol)
                 const auto& m = run->metrics;
                 const bool sac = m.count("sac_pws_p99_kpa") > 0;
                 QString text = sac ? tr("Peak wall stress in the sac %1 kPa (99th percentile)")
-                                         .arg(m.at("sac_pws_p99_kpa"), 0, 'f', 0)
-                                   : tr("Highest wall stress %1 kPa (no sac measured)").arg(m.at("peak_von_mises_kpa"), 0, 'f', 0);
+                                         .arg(viz::decimalText(m.at("sac_pws_p99_kpa"), 0))
+                                   : tr("Highest wall stress %1 kPa (no sac measured)")
+                                       .arg(viz::decimalText(m.at("peak_von_mises_kpa"), 0));
                 if (sac && m.count("sac_pwri_p99"))
-                    text += tr(", rupture index %1").arg(m.at("sac_pwri_p99"), 0, 'f', 2);
+                    text += tr(", rupture index %1").arg(viz::decimalText(m.at("sac_pwri_p99"), 2));
                 else if (!m.count("peak_rupture_index"))
                     text += tr("; no rupture index: give the patient's sex and family history");
                 statusBar()->showMessage(text, 10000);
@@ -190,7 +192,7 @@ bool MainWindow::startInteractiveWall()
     }
     catch (const std::exception& error)
     {
-        showError(tr("Wall mechanics"), QString::fromStdString(error.what()));
+        showError(tr("Wall mechanics"), QString::fromStdString(textForPeople(error)));
         return false;
     }
     view->setDragEnabled(true);
@@ -226,7 +228,9 @@ bool MainWindow::startInteractiveWall()
     const double strength = m_femParameters.get("tear_strength_mpa");
     connect(tearing, &QCheckBox::toggled, this, [this, strength](bool on) { m_interactiveWall->setTearStrengthMpa(on ? strength : 0.0); });
     connect(m_interactiveWall, &InteractiveWall::frameShown, status, [status](double fps, double peak) {
-        status->setText(tr("%1 frames/s, peak von Mises %2 kPa").arg(fps, 0, 'f', 0).arg(peak, 0, 'f', 1));
+        status->setText(tr("%1 frames/s, peak von Mises %2 kPa")
+            .arg(viz::decimalText(fps, 0))
+            .arg(viz::decimalText(peak, 1)));
     });
     connect(m_interactiveWall, &InteractiveWall::stopped, this, [this, play](const QString& reason) {
         play->setChecked(false);

@@ -318,7 +318,7 @@ bool PacsDialog::saveNode()
     }
     catch (const Error& error)
     {
-        m_status->setText(tr("Not saved: %1").arg(text(error.message())));
+        m_status->setText(tr("Not saved: %1").arg(text(error.messageForPeople())));
         return false;
     }
     QList<PacsNodeEntry> nodes = loadPacsNodes();
@@ -369,7 +369,7 @@ void PacsDialog::runInBackground(std::function<void(const Progress&)> work, std:
         }
         catch (const std::exception& failure)
         {
-            return QString::fromStdString(failure.what());
+            return QString::fromStdString(textForPeople(failure));
         }
     }));
     updateButtons();

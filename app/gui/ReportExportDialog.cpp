@@ -1,5 +1,7 @@
 #include "ReportExportDialog.h"
 
+#include "Languages.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -9,6 +11,8 @@
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QPushButton>
+
+#include <algorithm>
 
 namespace vsim::gui {
 
@@ -28,9 +32,17 @@ ReportExportDialog::ReportExportDialog(const QString& suggestedPdf, QWidget* par
     m_page = new QComboBox(this);
     m_page->addItem(tr("A4"), int(report::PageSize::A4));
     m_page->addItem(tr("Letter"), int(report::PageSize::Letter));
+    m_language = new QComboBox(this);
+    m_language->setObjectName("reportLanguage");
+    for (const QString& code : QStringList{"en"} + translatedLanguages())
+        m_language->addItem(nativeLanguageName(code), code);
+    m_language->setCurrentIndex(std::max(0, m_language->findData(installedLanguage())));
+    m_language->setToolTip(tr("The language of the report's texts and numbers; the workstation's by default"));
     m_anonymize = new QCheckBox(tr("Anonymize (no patient name, ID, birth date or institution)"), this);
     m_dicom = new QCheckBox(tr("Also as DICOM Encapsulated PDF (a new series of the study)"), this);
     m_metrics = new QCheckBox(tr("Also the metrics as CSV and JSON"), this);
+    m_validate = new QCheckBox(tr("Run the solvers' validation cases into the report (seconds to a minute)"), this);
+    m_validate->setChecked(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -38,7 +50,9 @@ ReportExportDialog::ReportExportDialog(const QString& suggestedPdf, QWidget* par
     auto* form = new QFormLayout(this);
     form->addRow(tr("PDF file:"), pathRow);
     form->addRow(tr("Paper:"), m_page);
+    form->addRow(tr("Language:"), m_language);
     form->addRow(m_anonymize);
+    form->addRow(m_validate);
     form->addRow(m_dicom);
     form->addRow(m_metrics);
     form->addRow(buttons);
@@ -58,8 +72,11 @@ QStringList ReportExportRequest::outputFiles() const
 
 ReportExportRequest ReportExportDialog::request() const
 {
-    return {m_path->text(), report::PageSize(m_page->currentData().toInt()), m_anonymize->isChecked(),
-            m_dicom->isChecked(), m_metrics->isChecked()};
+    ReportExportRequest request{m_path->text(), report::PageSize(m_page->currentData().toInt()),
+                                m_anonymize->isChecked(), m_dicom->isChecked(), m_metrics->isChecked()};
+    request.language = m_language->currentData().toString();
+    request.validate = m_validate->isChecked();
+    return request;
 }
 
 } // namespace vsim::gui

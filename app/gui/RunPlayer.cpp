@@ -1,5 +1,7 @@
 #include "RunPlayer.h"
 
+#include "vsim/viz/DecimalText.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -102,7 +104,7 @@ QString RunPlayer::frameText() const
         .arg(m_frame + 1)
         .arg(frameCount())
         .arg(m_quantity)
-        .arg(m_positions[std::size_t(m_frame)], 0, 'g', 4)
+        .arg(viz::significantText(m_positions[std::size_t(m_frame)], 4))
         .arg(m_unit);
 }
 

@@ -1,5 +1,6 @@
 // SegmentChoices.h: the choices, the inlet's paths (depth first over the tree) and their joined frames.
 #include "SegmentChoices.h"
+#include "vsim/viz/DecimalText.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -75,7 +76,7 @@ int fillSegmentChoices(QComboBox* choices, const SkeletonGraph& centerlines,
         const double length = centerlines.edges[e].length();
         choices->addItem(QCoreApplication::translate("vsim::gui::VesselViewPanel", "%1 (%2 mm)")
                              .arg(segmentName(centerlines, names, e))
-                             .arg(length, 0, 'f', 0),
+                             .arg(viz::decimalText(length, 0)),
                          VesselPath{int(e) + 1});
         if (length > longestMm)
             longestMm = length, longest = choices->count() - 1;
@@ -86,7 +87,7 @@ int fillSegmentChoices(QComboBox* choices, const SkeletonGraph& centerlines,
         choices->addItem(QCoreApplication::translate("vsim::gui::VesselViewPanel", "%1 to %2 (%3 mm)")
                              .arg(segmentName(centerlines, names, edgeOf(path.front())),
                                   segmentName(centerlines, names, edgeOf(path.back())))
-                             .arg(length, 0, 'f', 0),
+                             .arg(viz::decimalText(length, 0)),
                          path);
     }
     return longest;

@@ -1,4 +1,5 @@
 #include "SegmentationPointsPanel.h"
+#include "vsim/viz/DecimalText.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -227,11 +228,13 @@ void SegmentationPointsPanel::refreshTable()
         {
             const Eigen::Vector3d& normal = m_stops[n - m_points.size()].normal;
             tag->setToolTip(tr("Stop plane, normal (%1, %2, %3) towards the side the fronts do not enter")
-                                .arg(normal.x(), 0, 'f', 2).arg(normal.y(), 0, 'f', 2).arg(normal.z(), 0, 'f', 2));
+                                .arg(viz::decimalText(normal.x(), 2))
+                                    .arg(viz::decimalText(normal.y(), 2))
+                                    .arg(viz::decimalText(normal.z(), 2)));
         }
         m_table->setItem(int(n), 0, tag);
         for (int axis = 0; axis < 3; ++axis)
-            m_table->setItem(int(n), axis + 1, new QTableWidgetItem(QString::number(tags[n].pointMm[axis], 'f', 1)));
+            m_table->setItem(int(n), axis + 1, new QTableWidgetItem(viz::decimalText(tags[n].pointMm[axis], 1)));
     }
     emit pointsChanged();
 }

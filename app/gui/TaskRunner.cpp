@@ -29,7 +29,7 @@ TaskRunner::TaskRunner(QObject* parent) : QObject(parent)
                 }
                 catch (const std::exception& error)
                 {
-                    emit failed(title, QString::fromStdString(error.what()));
+                    emit failed(title, QString::fromStdString(textForPeople(error)));
                     if (!m_busy)
                         emit idle();
                     return;
@@ -82,7 +82,7 @@ bool TaskRunner::run(const QString& title, Work work, std::function<void()> onSu
         }
         catch (const std::exception& error)
         {
-            m_error = QString::fromStdString(error.what());
+            m_error = QString::fromStdString(textForPeople(error));
         }
     }));
     return true;

@@ -2,6 +2,7 @@
 
 #include "SegmentChoices.h"
 
+#include "vsim/viz/DecimalText.h"
 #include "vsim/viz/PlaneImageView.h"
 
 #include <QComboBox>
@@ -199,7 +200,9 @@ void VesselViewPanel::rebuildReformation()
         return;
     const imaging::PlaneImage cpr = imaging::straightenedReformation(m_ct, m_frames, kHalfWidthMm, m_angle);
     m_cpr->setPicture(cpr.width, cpr.height, cpr.pixelMm, cpr.values);
-    m_cpr->setCaption(tr("Straightened CPR, %1 deg\n%2 mm of centerline").arg(m_angle, 0, 'f', 0).arg(m_frames.lengthMm(), 0, 'f', 0));
+    m_cpr->setCaption(tr("Straightened CPR, %1 deg\n%2 mm of centerline")
+        .arg(viz::decimalText(m_angle, 0))
+        .arg(viz::decimalText(m_frames.lengthMm(), 0)));
 }
 
 void VesselViewPanel::refreshPosition()
@@ -212,8 +215,8 @@ void VesselViewPanel::refreshPosition()
     const double diameter = lumenDiameterAt(m_arcMm, &measured);
     m_section->setCentreCircle(diameter > 0.0 ? std::optional<double>(0.5 * diameter) : std::nullopt);
     QString caption = tr("Perpendicular to the centerline at %1 mm\nlumen %2 mm (circle: %3)")
-                          .arg(m_arcMm, 0, 'f', 1)
-                          .arg(diameter, 0, 'f', 1)
+                          .arg(viz::decimalText(m_arcMm, 1))
+                          .arg(viz::decimalText(diameter, 1))
                           .arg(measured ? tr("equivalent diameter of the measured section")
                                         : tr("2 x the centerline's radius, which reads low; run the measurements"));
     const std::optional<imaging::PlaneCaliper> outer = outerCaliperAt(m_arcMm);
@@ -221,7 +224,8 @@ void VesselViewPanel::refreshPosition()
                                                           QPointF(outer->toMm.x(), outer->toMm.y())})
                                 : std::nullopt);
     if (outer)
-        caption += '\n' + tr("outer wall %1 mm (yellow: the largest caliper of the sac's labels here)").arg(outer->lengthMm, 0, 'f', 1);
+        caption += '\n' + tr("outer wall %1 mm (yellow: the largest caliper of the sac's labels here)")
+            .arg(viz::decimalText(outer->lengthMm, 1));
     m_section->setCaption(caption);
     m_cpr->setMarkerRow(m_arcMm);
     m_plot->setCursor(m_arcMm);

@@ -118,13 +118,14 @@ QStringList untranslatedTexts(QWidget* root, const QStringList& dataTexts)
                  ++i) // the groups; the artifacts under them are data
                 for (int column = 0; column < tree->columnCount(); ++column)
                     check(where + " item", tree->topLevelItem(i)->text(column));
-        if (auto* combo = qobject_cast<QComboBox*>(widget))
+        // A language is named in its own language (as every workstation's language list does): the report's
+        // language choice too.
+        if (auto* combo = qobject_cast<QComboBox*>(widget); combo && combo->objectName() != "reportLanguage")
             for (int i = 0; i < combo->count(); ++i)
                 check(where + " choice", combo->itemText(i));
         for (QAction* action : widget->actions())
         {
-            // A language is named in its own language (as every workstation's language list does); recent
-            // studies are paths.
+            // The languages (above); recent studies are paths.
             if (action->isSeparator() || action->objectName().startsWith("language_") ||
                 action->text().contains('/'))
                 continue;

@@ -4,8 +4,9 @@
 // particles, 2.5 ms, a minute at most on 2 cores), Drug Delivery and Report (the export dialog); on the way the
 // crosshair (a click moves the cursor, not the image), a ruler (a measurement artifact of the drawn length),
 // the CPR, the time player (its frames drive the views and the endoscope's blood cells), the endoscope, a
-// screenshot and a movie; then the same study in German and in Chinese. Each step checks the checklist's
-// state and a view's state or pixels; the pictures stay in test-output/gui-walk.
+// screenshot and a movie; then the same study in German and in Chinese: the checklist, the slice overlay's
+// decimal mark, and the report in the window's language and, chosen in the export dialog, in English. Each step
+// checks the checklist's state and a view's state or pixels; the pictures stay in test-output/gui-walk.
 #include "DicomFixtures.h"
 #include "DicomImportDialog.h"
 #include "EndoscopePanel.h"
@@ -13,6 +14,7 @@
 #include "Languages.h"
 #include "MainWindow.h"
 #include "PixelChecks.h"
+#include "ReportExportDialog.h"
 #include "RunPlayer.h"
 #include "SliceMouse.h"
 #include "TestOutput.h"
@@ -31,6 +33,7 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTimer>
 #include <QTreeWidget>
@@ -59,6 +62,17 @@ double runStep(gui::MainWindow& window, gui::WorkflowChecklist* list, WorkflowSt
     if (window.tasks().isBusy())
         test::waitForTask(window, 300000);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The PDF's text (pdftotext), or an empty text without poppler-utils.
+QString pdfText(const QString& pdf)
+{
+    if (QStandardPaths::findExecutable("pdftotext").isEmpty())
+        return {};
+    QProcess text;
+    text.start("pdftotext", {"-raw", pdf, "-"});
+    text.waitForFinished(60000);
+    return QString::fromUtf8(text.readAllStandardOutput());
 }
 
 /// Pixels of `picture` that are not near black or near grey: something coloured was drawn.
@@ -234,12 +248,8 @@ private slots:
         runStep(window, list, WorkflowStep::Report);
         QVERIFY(QFileInfo::exists(pdf));
         QCOMPARE(list->state(WorkflowStep::Report), StepState::Done);
-        if (!QStandardPaths::findExecutable("pdftotext").isEmpty())
+        if (const QString words = pdfText(pdf); !words.isEmpty())
         {
-            QProcess text;
-            text.start("pdftotext", {"-raw", pdf, "-"});
-            QVERIFY(text.waitForFinished(60000));
-            const QString words = QString::fromUtf8(text.readAllStandardOutput());
             for (const char* expected : {"Ruler", "wall stress", "kPa", "velocity"})
                 QVERIFY2(words.contains(expected, Qt::CaseInsensitive), expected);
         }
@@ -254,15 +264,23 @@ private slots:
     {
         QTest::addColumn<QString>("language");
         QTest::addColumn<QString>("segmentDone");
-        QTest::newRow("de") << "de" << QString::fromUtf8("Segmentieren  (erledigt)");
-        QTest::newRow("zh_CN") << "zh_CN" << QString::fromUtf8("分割  (完成)");
+        QTest::addColumn<QString>("reportTitle");
+        QTest::addColumn<QString>("decimalMark");
+        QTest::newRow("de") << "de" << QString::fromUtf8("Segmentieren  (erledigt)") << "VascuSim-Planungsbericht"
+                            << ",";
+        QTest::newRow("zh_CN") << "zh_CN" << QString::fromUtf8("分割  (完成)")
+                               << QString::fromUtf8("VascuSim 规划报告") << ".";
     }
 
-    // The walked study reopened in each language: the checklist says every step is done in that language.
+    // The walked study reopened in each language: the checklist says every step is done in that language, the
+    // slice overlay writes its numbers with the language's decimal mark, and the report comes in the window's
+    // language by default and in English when the export dialog says so, while the window stays in its own.
     void theStudyInGermanAndChinese()
     {
         QFETCH(QString, language);
         QFETCH(QString, segmentDone);
+        QFETCH(QString, reportTitle);
+        QFETCH(QString, decimalMark);
         QVERIFY(gui::installLanguage(language));
         {
             gui::MainWindow window;
@@ -275,7 +293,35 @@ private slots:
             QCOMPARE(list->itemOf(WorkflowStep::Segment)->text(), segmentDone);
             for (WorkflowStep step : app::kWorkflowSteps)
                 QCOMPARE(list->state(step), StepState::Done);
+            const QString position = window.views()->sliceView(SliceOrientation::Axial)->overlayText(Qt::BottomLeftCorner);
+            const QRegularExpression along("= -?\\d+(.)\\d mm");
+            QVERIFY2(along.match(position).hasMatch() && along.match(position).captured(1) == decimalMark,
+                     qPrintable(position));
             keep(window, "7-walked-" + language);
+
+            const gui::ReportExportDialog dialog("report.pdf");
+            QCOMPARE(dialog.request().language, language);
+            const QString folder = QString::fromStdString(test::freshFolder("gui-walk", "report-" + language).string());
+            gui::ReportExportRequest own{folder + "/own.pdf"};
+            own.language = dialog.request().language;
+            own.validate = false; // the walk's report ran them
+            gui::ReportExportRequest english = own;
+            english.pdf = folder + "/english.pdf";
+            english.language = "en";
+            QVERIFY(window.exportReport(own) && test::waitForTask(window, 300000));
+            QVERIFY(window.exportReport(english) && test::waitForTask(window, 300000));
+            QCOMPARE(list->itemOf(WorkflowStep::Segment)->text(), segmentDone); // the window kept its language
+            const QString ownText = pdfText(own.pdf), englishText = pdfText(english.pdf);
+            if (ownText.isEmpty())
+                QSKIP("no pdftotext (poppler-utils) to read the reports");
+            QVERIFY2(ownText.contains(reportTitle), qPrintable(ownText.left(300)));
+            QVERIFY2(englishText.contains("VascuSim planning report") && !englishText.contains(reportTitle),
+                     qPrintable(englishText.left(300)));
+            // A figure with its unit: "123,4 kPa" in German, "123.4 kPa" in English and Chinese.
+            const QRegularExpression figure("\\b\\d+([.,])\\d+ (kPa|mm|ml)\\b");
+            QVERIFY2(figure.match(ownText).hasMatch() && figure.match(ownText).captured(1) == decimalMark,
+                     qPrintable(figure.match(ownText).captured(0)));
+            QCOMPARE(figure.match(englishText).captured(1), QString("."));
         }
         gui::installLanguage("en");
     }

@@ -6,8 +6,9 @@
   warnings and parameters, as study.json keeps them) and unit symbols: a text the report writes without the
   catalogues fails here;
 - the German and the Chinese report: no source sentence (four words or more) of the catalogue whose translation
-  differs is left in English: a catalogue entry the report does not apply fails here; and the report's title is
-  in that language.
+  differs is left in English: a catalogue entry the report does not apply fails here; the report's title is
+  in that language; and its figures with a unit carry the language's decimal mark (German 3,5 mm; Chinese and
+  the pseudo-locale 3.5 mm).
 
 usage: check_report_language.py STUDY_BUNDLE PSEUDO_PDF GERMAN_PDF GERMAN_TS CHINESE_PDF CHINESE_TS"""
 
@@ -75,10 +76,23 @@ def check_pseudo(bundle, pdf):
     return len(re.findall("\u00ab", text))
 
 
-def check_translated(pdf, ts, title):
+def check_decimal_mark(pdf, text, mark):
+    """Every figure printed with decimals and a unit uses `mark`; there is at least one."""
+    figures = re.findall(r"(?<![\d.,])\d+([.,])\d+ ?(?:kPa|MPa|mmHg|mm|ml|Pa|cm/s|m/s|s|%)(?![A-Za-z])", text)
+    if not figures:
+        fail(pdf + ": no figure with decimals and a unit found")
+    wrong = [f for f in figures if f != mark]
+    if wrong:
+        samples = re.findall(r"(?<![\d.,])\d+[" + ("." if mark == "," else ",") + r"]\d+ ?[A-Za-z%/]+", text)[:5]
+        fail(pdf + ": %d of %d figures without the decimal mark '%s': %s" % (len(wrong), len(figures), mark, samples))
+    return len(figures)
+
+
+def check_translated(pdf, ts, title, mark):
     text = text_of(pdf)
     if title not in text:
         fail(pdf + ": the title '" + title + "' is missing")
+    check_decimal_mark(pdf, text, mark)
     left = []
     for source, translation in catalogue(ts):
         sentence = re.sub(r"\s+", " ", source).strip()
@@ -91,9 +105,11 @@ def check_translated(pdf, ts, title):
 def main():
     bundle, pseudo, german, german_ts, chinese, chinese_ts = sys.argv[1:7]
     marked = check_pseudo(bundle, pseudo)
-    check_translated(german, german_ts, "VascuSim-Planungsbericht")
-    check_translated(chinese, chinese_ts, "VascuSim 规划报告")
-    print(f"{bundle}: {marked} texts from the catalogues, none outside them; German and Chinese applied")
+    figures = check_decimal_mark(pseudo, text_of(pseudo), ".")
+    check_translated(german, german_ts, "VascuSim-Planungsbericht", ",")
+    check_translated(chinese, chinese_ts, "VascuSim 规划报告", ".")
+    print(f"{bundle}: {marked} texts from the catalogues, none outside them; German and Chinese applied; "
+          f"{figures} figures with the decimal mark of each language")
 
 
 if __name__ == "__main__":

@@ -137,6 +137,7 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
         const auto& parameters = run.provenance.parameters;
         const std::string protocol = textOr(parameters, "protocol");
         const std::string device = textOr(parameters, "device");
+        const RunStatus status = runStatusOf(run);
         summary.rows = {
             {localized("Report", "Solver"), solver.description},
             {localized("Report", "Command"),
@@ -154,7 +155,7 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
                      seconds = runMetric(run, "run_wall_seconds", "", "s");
                  return seconds ? seconds->text + " s" : localized("Report", "not recorded");
              }()},
-            {localized("Report", "Convergence"), runStatusOf(run).convergenceText(true)},
+            {localized("Report", "Convergence"), status.convergenceText(true)},
             {localized("Report", "Inputs"),
              [&]
              {
@@ -165,8 +166,11 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
              }()},
             {localized("Report", "Made"), withArguments(localized("Report", "%1 by VascuSim %2"),
                                                         {run.provenance.time, run.provenance.softwareVersion})}};
-        for (const std::string& warning : run.warnings) // the solver's words, as it wrote them
-            summary.rows.push_back({localized("Report", "Warning"), warning});
+        // The solver's words as it wrote them; the run status's own warning (stored in English) in the reader's.
+        const std::string statusWarning = status.warningText(false);
+        for (const std::string& warning : run.warnings)
+            summary.rows.push_back({localized("Report", "Warning"),
+                                    !warning.empty() && warning == statusWarning ? status.warningText(true) : warning});
         section.blocks.push_back(summary);
         section.blocks.push_back(parameterTable(run, solver.parameters, solver.declared,
                                                 withArguments(localized("Report", "Parameters of %1"), {run.id})));

@@ -25,7 +25,7 @@ std::string fixed(double value, int decimals)
 {
     char text[64];
     std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    return text;
+    return localizedNumber(text);
 }
 
 const study::Artifact* newestRun(const study::Study& study, const std::string& command, const std::string& key,
@@ -90,7 +90,7 @@ std::string parameterValueText(const std::string& recorded, const std::string& u
         return recorded;
     char text[64];
     std::snprintf(text, sizeof text, "%.4g", value);
-    std::string shown = std::string(text) + (unit.empty() ? "" : " " + unit);
+    std::string shown = localizedNumber(text) + (unit.empty() ? "" : " " + unit);
     if (unit == "mmHg")
         shown += " (" + report::formatMetric(units::mmHgToPa(value) * 1e-3, "kPa", 1) + " kPa)";
     return shown;

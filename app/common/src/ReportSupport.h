@@ -24,7 +24,7 @@ namespace vsim::app::detail {
 std::string textOr(const std::map<std::string, std::string>& values, const std::string& key,
                    const std::string& fallback = {});
 
-/// `value` with `decimals` digits after the point ("%.*f").
+/// `value` with `decimals` digits after the decimal mark ("%.*f", in the reader's mark: localizedNumber()).
 std::string fixed(double value, int decimals);
 
 /// The newest undamaged artifact made by `command` (e.g. "simulate fem") whose provenance parameter `key` is

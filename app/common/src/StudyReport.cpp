@@ -131,6 +131,7 @@ std::string addReport(study::Study& study, const report::Report& report, const s
     provenance.parameters = {{"sections", sections},
                              {"anonymized", options.anonymize ? "1" : "0"},
                              {"page", page},
+                             {"language", options.language},
                              {"validation", options.validate ? "1" : "0"}};
     const std::string id = study.addReport(pdf, options.anonymize ? "Report (anonymized)" : "Report", provenance);
     std::map<std::string, std::string> attributes;

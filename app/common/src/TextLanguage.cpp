@@ -9,7 +9,6 @@
 #include <QTranslator>
 
 #include <algorithm>
-#include <memory>
 
 namespace vsim::app {
 namespace {
@@ -19,11 +18,42 @@ std::string qtLookup(const char* context, const char* english)
     return QCoreApplication::translate(context, english).toStdString();
 }
 
+bool isCatalogueFile(const std::string& code)
+{
+    return code.size() > 3 && code.compare(code.size() - 3, 3, ".qm") == 0;
+}
+
+char decimalMarkOf(const std::string& code)
+{
+    if (isCatalogueFile(code))
+        return '.';
+    const QString mark = QLocale(QString::fromStdString(code)).decimalPoint();
+    return mark.size() == 1 && mark[0].unicode() < 128 ? char(mark[0].unicode()) : '.';
+}
+
+/// The catalogue of `code`, or nullptr for English.
+std::unique_ptr<QTranslator> loadCatalogue(const std::string& code)
+{
+    const std::vector<std::string> known = textLanguages();
+    const bool file = isCatalogueFile(code);
+    if (!file && std::find(known.begin(), known.end(), code) == known.end())
+        throw Error("unknown language '" + code + "'; use en, de, zh_CN or a catalogue file (.qm)");
+    if (code == "en")
+        return nullptr;
+    auto catalogue = std::make_unique<QTranslator>();
+    if (file && !catalogue->load(QString::fromStdString(code)))
+        throw Error("not a translation catalogue (.qm)", {{"file", code}});
+    if (!file && !catalogue->load(QLocale(QString::fromStdString(code)), "vascusim", "_", ":/i18n"))
+        throw Error("the " + code + " catalogue is missing from this build (:/i18n/vascusim_" + code + ".qm)");
+    return catalogue;
+}
+
 } // namespace
 
-void useQtTranslations()
+void useQtTranslations(const std::string& code)
 {
     setLocalizer(&qtLookup);
+    setDecimalMark(decimalMarkOf(code));
 }
 
 std::vector<std::string> textLanguages()
@@ -31,28 +61,17 @@ std::vector<std::string> textLanguages()
     return {"en", "de", "zh_CN"};
 }
 
-void installTextLanguage(const std::string& code)
+ScopedTextLanguage::ScopedTextLanguage(const std::string& code) : m_catalogue(loadCatalogue(code))
 {
-    const std::vector<std::string> known = textLanguages();
-    const bool file = code.size() > 3 && code.compare(code.size() - 3, 3, ".qm") == 0;
-    if (!file && std::find(known.begin(), known.end(), code) == known.end())
-        throw Error("unknown language '" + code + "'; use en, de, zh_CN or a catalogue file (.qm)");
-    if (!QCoreApplication::instance())
-        throw Error("a language needs a Qt application");
-    static std::unique_ptr<QTranslator> installed;
-    if (installed)
-        QCoreApplication::removeTranslator(installed.get());
-    installed.reset();
-    useQtTranslations();
-    if (code == "en")
-        return;
-    auto translator = std::make_unique<QTranslator>();
-    if (file && !translator->load(QString::fromStdString(code)))
-        throw Error("not a translation catalogue (.qm)", {{"file", code}});
-    if (!file && !translator->load(QLocale(QString::fromStdString(code)), "vascusim", "_", ":/i18n"))
-        throw Error("the " + code + " catalogue is missing from this build (:/i18n/vascusim_" + code + ".qm)");
-    QCoreApplication::installTranslator(translator.get());
-    installed = std::move(translator);
+    const QTranslator* catalogue = m_catalogue.get();
+    m_scope = std::make_unique<ThreadTextLanguage>(
+        [catalogue](const char* context, const char* english) {
+            const QString found = catalogue ? catalogue->translate(context, english) : QString();
+            return found.isEmpty() ? std::string(english) : found.toStdString();
+        },
+        decimalMarkOf(code));
 }
+
+ScopedTextLanguage::~ScopedTextLanguage() = default;
 
 } // namespace vsim::app

@@ -1,13 +1,15 @@
 #include "vsim/core/Error.h"
 
+#include "vsim/core/Localized.h"
+
 namespace vsim {
 namespace {
 
-std::string describe(const std::string& message, const Error::Context& context)
+std::string describe(const std::string& message, const Error::Context& context, bool forPeople = false)
 {
     std::string text = message;
     for (const auto& [key, value] : context)
-        text += "\n  " + key + ": " + value;
+        text += "\n  " + (forPeople ? localizedText("vsim::Error", key) : key) + ": " + value;
     return text;
 }
 
@@ -16,6 +18,22 @@ std::string describe(const std::string& message, const Error::Context& context)
 Error::Error(const std::string& message, Context context)
     : std::runtime_error(describe(message, context)), m_message(message), m_context(std::move(context))
 {
+}
+
+std::string Error::messageForPeople() const
+{
+    return localizedText("vsim::Error", m_message);
+}
+
+std::string Error::textForPeople() const
+{
+    return describe(messageForPeople(), m_context, true);
+}
+
+std::string textForPeople(const std::exception& error)
+{
+    const auto* ours = dynamic_cast<const Error*>(&error);
+    return ours ? ours->textForPeople() : std::string(error.what());
 }
 
 std::string Error::contextValue(const std::string& key) const

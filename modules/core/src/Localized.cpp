@@ -1,6 +1,7 @@
 #include "vsim/core/Localized.h"
 
 #include <atomic>
+#include <utility>
 
 namespace vsim {
 namespace {
@@ -11,6 +12,14 @@ std::atomic<Localizer>& installedLocalizer()
     return localizer;
 }
 
+std::atomic<char>& installedDecimalMark()
+{
+    static std::atomic<char> mark{'.'};
+    return mark;
+}
+
+thread_local const ThreadTextLanguage* innermostScope = nullptr;
+
 } // namespace
 
 void setLocalizer(Localizer localizer)
@@ -20,6 +29,8 @@ void setLocalizer(Localizer localizer)
 
 std::string localized(const char* context, const char* english)
 {
+    if (const ThreadTextLanguage* scope = ThreadTextLanguage::current())
+        return scope->lookup(context, english);
     const Localizer localizer = installedLocalizer().load();
     return localizer ? localizer(context, english) : std::string(english);
 }
@@ -29,9 +40,46 @@ std::string LocalizedWhen::operator()(const char* context, const char* english) 
     return forPeople ? localized(context, english) : std::string(english);
 }
 
+std::string LocalizedWhen::number(std::string printed) const
+{
+    return forPeople ? localizedNumber(std::move(printed)) : printed;
+}
+
 std::string localizedText(const char* context, const std::string& english)
 {
     return localized(context, english.c_str());
+}
+
+void setDecimalMark(char mark)
+{
+    installedDecimalMark().store(mark);
+}
+
+std::string localizedNumber(std::string printed)
+{
+    const ThreadTextLanguage* scope = ThreadTextLanguage::current();
+    const char mark = scope ? scope->decimalMark() : installedDecimalMark().load();
+    if (mark != '.')
+        for (char& c : printed)
+            if (c == '.')
+                c = mark;
+    return printed;
+}
+
+ThreadTextLanguage::ThreadTextLanguage(Lookup lookup, char decimalMark)
+    : m_lookup(std::move(lookup)), m_decimalMark(decimalMark), m_outer(innermostScope)
+{
+    innermostScope = this;
+}
+
+ThreadTextLanguage::~ThreadTextLanguage()
+{
+    innermostScope = m_outer;
+}
+
+const ThreadTextLanguage* ThreadTextLanguage::current()
+{
+    return innermostScope;
 }
 
 std::string withArguments(const std::string& pattern, const std::vector<std::string>& arguments)

@@ -56,7 +56,8 @@ std::string RunStatus::convergenceText(bool forPeople) const
     const std::string force = forceResidual < 0.0
                                   ? std::string()
                                   : withArguments(localized("vsim::RunStatus", "force residual %1 (tolerance %2)"),
-                                                  {shortNumber(forceResidual), shortNumber(forceTolerance)});
+                                                  {localized.number(shortNumber(forceResidual)),
+                                                   localized.number(shortNumber(forceTolerance))});
     if (converged())
         return force.empty() ? localized("vsim::RunStatus", "converged")
                              : withArguments(localized("vsim::RunStatus", "converged, %1"), {force});
@@ -72,7 +73,8 @@ std::string RunStatus::convergenceText(bool forPeople) const
             details += withArguments(localized("vsim::RunStatus", ", %1 of them at the %2-iteration cap"),
                                      {std::to_string(solvesAtCap), std::to_string(iterationCap)});
         details += withArguments(localized("vsim::RunStatus", ", worst relative residual %1 (tolerance %2)"),
-                                 {shortNumber(worstResidual), shortNumber(tolerance)});
+                                 {localized.number(shortNumber(worstResidual)),
+                                  localized.number(shortNumber(tolerance))});
         if (!force.empty())
             details += "; ";
     }
@@ -93,7 +95,8 @@ std::string RunStatus::stopText(bool forPeople) const
                                      : reachedQuantity == "time"   ? localized("vsim::RunStatus", "time")
                                                                    : reachedQuantity;
         text += withArguments(localized("vsim::RunStatus", " at %1 %2 of %3 %4"),
-                              {quantity, fixed(reached), fixed(target), reachedUnit});
+                              {quantity, localized.number(fixed(reached)), localized.number(fixed(target)),
+                               reachedUnit});
     }
     if (!stopMessage.empty())
         text += ": " + stopMessage;

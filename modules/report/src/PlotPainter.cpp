@@ -1,5 +1,7 @@
 #include "PlotPainter.h"
 
+#include "vsim/core/Localized.h"
+
 #include <QPainterPath>
 
 #include <algorithm>
@@ -29,7 +31,7 @@ std::vector<double> ticks(double low, double high, int count)
 
 QString tickText(double value)
 {
-    return QString::number(value, 'g', 5);
+    return QString::fromStdString(localizedNumber(QString::number(value, 'g', 5).toStdString()));
 }
 
 const QColor kSeriesColours[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44), QColor(148, 103, 189),

@@ -23,7 +23,7 @@ std::string formatMetric(double value)
         std::snprintf(text, sizeof text, "%.3e", value);
     else
         std::snprintf(text, sizeof text, "%.4g", value);
-    return text;
+    return localizedNumber(text);
 }
 
 namespace {
@@ -45,7 +45,8 @@ std::string fixedDecimals(double value, int decimals)
     std::snprintf(text, sizeof text, "%.*f", decimals, value);
     const std::string printed = text;
     // A small negative value rounded to zero prints as zero ("-0.0" would read as a sign that means something).
-    return printed[0] == '-' && printed.find_first_not_of("-0.") == std::string::npos ? printed.substr(1) : printed;
+    const bool zero = printed.find_first_not_of("-0.") == std::string::npos;
+    return localizedNumber(zero && printed[0] == '-' ? printed.substr(1) : printed);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "SliceOverlayLayer.h"
 #include "TextFonts.h"
+#include "vsim/viz/DecimalText.h"
 
 #include <vtkActor.h>
 #include <vtkCellArray.h>
@@ -130,7 +131,7 @@ void SliceOverlayLayer::update(const Eigen::Vector2d& crosshairMm, int widthPixe
     setSegments(m_scaleBar, {{left, bottom, right, bottom}, {left, bottom, left, bottom + tick}, {right, bottom, right, bottom + tick}},
                 {kTextColour, kTextColour, kTextColour});
     m_scaleBar->SetVisibility(m_scaleBarMm > 0.0);
-    m_scaleText->SetInput(QStringLiteral("%1 mm").arg(m_scaleBarMm).toUtf8().constData());
+    m_scaleText->SetInput(QStringLiteral("%1 mm").arg(significantText(m_scaleBarMm, 3)).toUtf8().constData());
     m_scaleText->GetPositionCoordinate()->SetValue(0.5 * (left + right), bottom + 1.5 * tick, kInFront);
     m_scaleText->SetVisibility(m_scaleBarMm > 0.0);
 }

@@ -3,6 +3,7 @@
 #include "SliceViewPipeline.h"
 
 #include "vsim/interop/VtkImage.h"
+#include "vsim/viz/DecimalText.h"
 #include "vsim/viz/LabelPalette.h"
 
 #include <vtkCamera.h>
@@ -485,9 +486,11 @@ void SliceView::updateOverlay()
     overlay.setCornerText(Qt::TopLeftCorner, m_patientText);
     if (!hasImage())
         return update();
-    QString windowLevel = tr("W %1  L %2").arg(m_windowLevel.window, 0, 'f', 0).arg(m_windowLevel.level, 0, 'f', 0);
+    QString windowLevel = tr("W %1  L %2")
+        .arg(decimalText(m_windowLevel.window, 0))
+        .arg(decimalText(m_windowLevel.level, 0));
     if (m_slabMm > 0.0)
-        windowLevel += '\n' + tr("MIP slab %1 mm").arg(m_slabMm, 0, 'f', 1);
+        windowLevel += '\n' + tr("MIP slab %1 mm").arg(decimalText(m_slabMm, 1));
     overlay.setCornerText(Qt::TopRightCorner, windowLevel);
     const double along = m_cursor.dot(screenAxes(m_orientation).normal().cwiseAbs());
     const char* axisName = m_orientation == SliceOrientation::Axial ? "z" : m_orientation == SliceOrientation::Coronal ? "y" : "x";
@@ -495,7 +498,7 @@ void SliceView::updateOverlay()
                                                     .arg(sliceNumber())
                                                     .arg(sliceCount())
                                                     .arg(QLatin1String(axisName))
-                                                    .arg(along, 0, 'f', 1));
+                                                    .arg(decimalText(along, 1)));
     update();
 }
 
@@ -506,9 +509,12 @@ void SliceView::updateMouseReadout(const std::optional<QPointF>& widgetPosition)
     {
         const Eigen::Vector3d at = patientAt(*widgetPosition);
         const std::optional<double> value = valueAt(*widgetPosition);
-        text = tr("(%1, %2, %3) mm").arg(at.x(), 0, 'f', 1).arg(at.y(), 0, 'f', 1).arg(at.z(), 0, 'f', 1);
+        text = tr("(%1, %2, %3) mm")
+            .arg(decimalText(at.x(), 1))
+            .arg(decimalText(at.y(), 1))
+            .arg(decimalText(at.z(), 1));
         if (value)
-            text = tr("%1 HU").arg(*value, 0, 'f', 0) + "  " + text;
+            text = tr("%1 HU").arg(decimalText(*value, 0)) + "  " + text;
     }
     m_pipeline->overlay->setCornerText(Qt::BottomRightCorner, text);
     update();

@@ -27,6 +27,9 @@ struct ReportOptions
     std::set<std::string> sections; ///< empty: every section the study can fill; else these (reportSectionIds())
     bool validate = true;           ///< run the validation cases of the solvers reported (a few seconds)
     int snapshotPixels = 2000;      ///< width of the 3D snapshots (print resolution over the text width)
+    /// The report's language (TextLanguage.h: textLanguages() or a catalogue file), for its provenance: the
+    /// caller builds and renders the report inside a ScopedTextLanguage of it.
+    std::string language = "en";
     /// Runs a snapshot's rendering and returns the picture; empty: right here. The workstation renders on its GUI
     /// thread (OpenGL) while the report is built in the background.
     std::function<QImage(const std::function<QImage()>&)> renderSnapshot;

@@ -22,10 +22,19 @@ public:
     /// Returns the value of a context key, or an empty string.
     std::string contextValue(const std::string& key) const;
 
+    /// The message in the reader's language (localized() under "vsim::Error"; the catalogues hold every message
+    /// written as one literal, translations/ErrorTexts.cpp); what() and message() stay English, for logs.
+    std::string messageForPeople() const;
+    /// messageForPeople() and the context, its keys in the reader's language too.
+    std::string textForPeople() const;
+
 private:
     std::string m_message;
     Context m_context;
 };
+
+/// What a person reads of any exception: a vsim::Error's textForPeople(), else what().
+std::string textForPeople(const std::exception& error);
 
 /// Thrown when the user cancelled a long task; nothing was written.
 class Cancelled : public Error

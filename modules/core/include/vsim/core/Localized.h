@@ -6,6 +6,7 @@
 // comes back. lupdate finds the calls (-tr-function-alias translate+=localized), so the context and the text must
 // be string literals at the call.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,11 +28,42 @@ struct LocalizedWhen
 {
     bool forPeople = false;
     std::string operator()(const char* context, const char* english) const;
+    /// localizedNumber() when `forPeople`, else the number as printed.
+    std::string number(std::string printed) const;
 };
 
 /// A text whose literal lupdate reads elsewhere (a parameter table's label, from translations/ParameterTexts.cpp),
 /// looked up under `context` like localized().
 std::string localizedText(const char* context, const std::string& english);
+
+/// Sets the decimal mark of the installed language for localizedNumber(): '.' (English, Chinese) or ',' (German).
+void setDecimalMark(char mark);
+
+/// A number printed with a '.' (printf) in the reader's decimal mark: "3.5" stays in English, "3,5" in German.
+std::string localizedNumber(std::string printed);
+
+/// While alive, the texts localized() looks up on this thread and the decimal mark of localizedNumber() come from
+/// `lookup` and `decimalMark` instead of the installed language: a report written in a language other than the
+/// workstation's, on its own thread (app/common TextLanguage.h: ScopedTextLanguage). Scopes nest.
+class ThreadTextLanguage
+{
+public:
+    using Lookup = std::function<std::string(const char* context, const char* english)>;
+    ThreadTextLanguage(Lookup lookup, char decimalMark);
+    ~ThreadTextLanguage();
+    ThreadTextLanguage(const ThreadTextLanguage&) = delete;
+    ThreadTextLanguage& operator=(const ThreadTextLanguage&) = delete;
+
+    /// The innermost scope alive on this thread, or nullptr.
+    static const ThreadTextLanguage* current();
+    std::string lookup(const char* context, const char* english) const { return m_lookup(context, english); }
+    char decimalMark() const { return m_decimalMark; }
+
+private:
+    Lookup m_lookup;
+    char m_decimalMark;
+    const ThreadTextLanguage* m_outer;
+};
 
 /// `pattern` with %1 ... %9 replaced by `arguments` in order, in one pass (an argument holding "%2" stays as it
 /// is); a translation may move the placeholders.

@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""Writes, on stdout, the C++ file lupdate reads for the libraries' error messages (translations/ErrorTexts.cpp):
+every vsim::Error message written as one string literal (adjacent literals joined) and every context key written
+as a literal, in the context "vsim::Error" that Error::textForPeople() looks them up in. Messages composed at run
+time from values are not found and stay English. With --check FILE: exit 1 when FILE is not what would be written
+(tst_error_texts_current).
+usage: error_texts.py [--check FILE]   (from the repository root)"""
+import pathlib
+import re
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+# The code a person's messages come from; the CLI's own messages (usage, options) stay English, as its options do.
+SOURCES = ["modules", "cuda", "app/common", "app/gui"]
+LITERAL = r'"(?:[^"\\]|\\.)*"'
+CALL = re.compile(r"\bError\s*\(")
+
+
+def arguments_at(text, start):
+    """The text between the parenthesis before `start` and its partner."""
+    depth, i, in_string = 1, start, False
+    while depth and i < len(text):
+        c = text[i]
+        if in_string:
+            if c == "\\":
+                i += 1
+            elif c == '"':
+                in_string = False
+        elif c == '"':
+            in_string = True
+        elif c in "({[":
+            depth += 1
+        elif c in ")}]":
+            depth -= 1
+        i += 1
+    return text[start:i - 1]
+
+
+def texts():
+    found = []
+    files = sorted(p for folder in SOURCES for p in (ROOT / folder).rglob("*")
+                   if p.suffix in (".cpp", ".h", ".cu", ".cuh"))
+    for path in files:
+        text = path.read_text(encoding="utf-8")
+        for call in CALL.finditer(text):
+            arguments = arguments_at(text, call.end())
+            message = re.match(r"\s*((?:" + LITERAL + r"\s*)+)(?=,|$)", arguments)
+            if message:
+                found.append("".join(part[1:-1] for part in re.findall(LITERAL, message.group(1))))
+            found.extend(re.findall(r'\{\s*"([a-z_ ]+)"\s*,', arguments))  # context keys
+    unique = []
+    for text in found:
+        if text and text not in unique:
+            unique.append(text)
+    return unique
+
+
+def written():
+    lines = ["// Not compiled: lupdate's source for the libraries' error messages and context keys (core Error.h), which",
+             "// live in code without Qt. Written by scripts/update-translations.sh (scripts/error_texts.py) from every",
+             "// vsim::Error(\"literal\", {{\"key\", ...}}) in modules/, cuda/, app/common and app/gui; do not edit.",
+             "// Error::textForPeople() looks them up at run time.",
+             "static const char* const kErrorTexts[] = {"]
+    lines += ['    QT_TRANSLATE_NOOP("vsim::Error", "%s"),' % text for text in texts()]
+    lines.append("};")
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":
+    if len(sys.argv) == 3 and sys.argv[1] == "--check":
+        current = pathlib.Path(sys.argv[2]).read_text(encoding="utf-8")
+        if current != written():
+            print(sys.argv[2] + " is not current: run scripts/update-translations.sh and translate", file=sys.stderr)
+            sys.exit(1)
+        print(sys.argv[2] + ": current, %d texts" % len(texts()))
+    else:
+        sys.stdout.write(written())
