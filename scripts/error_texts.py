@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes, on stdout, the C++ file lupdate reads for the libraries' error messages (translations/ErrorTexts.cpp):
-every vsim::Error message written as one string literal (adjacent literals joined) and every context key written
-as a literal, in the context "vsim::Error" that Error::textForPeople() looks them up in. Messages composed at run
-time from values are not found and stay English. With --check FILE: exit 1 when FILE is not what would be written
+every vsim::Error message written as one string literal (adjacent literals joined) or as a pattern with its values
+apart (Pattern{"... %1 ...", {values}}), and every context key written as a literal, in the context "vsim::Error"
+that Error::textForPeople() looks them up in. Messages concatenated at run time are not found and stay English. With --check FILE: exit 1 when FILE is not what would be written
 (tst_error_texts_current).
 usage: error_texts.py [--check FILE]   (from the repository root)"""
 import pathlib
@@ -14,6 +14,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 SOURCES = ["modules", "cuda", "app/common", "app/gui"]
 LITERAL = r'"(?:[^"\\]|\\.)*"'
 CALL = re.compile(r"\bError\s*\(")
+PATTERN = re.compile(r"\bPattern\s*\{\s*((?:" + LITERAL + r"\s*)+),")  # Error(Pattern{"... %1 ...", {values}})
 
 
 def arguments_at(text, start):
@@ -42,6 +43,8 @@ def texts():
                    if p.suffix in (".cpp", ".h", ".cu", ".cuh"))
     for path in files:
         text = path.read_text(encoding="utf-8")
+        for pattern in PATTERN.finditer(text):
+            found.append("".join(part[1:-1] for part in re.findall(LITERAL, pattern.group(1))))
         for call in CALL.finditer(text):
             arguments = arguments_at(text, call.end())
             message = re.match(r"\s*((?:" + LITERAL + r"\s*)+)(?=,|$)", arguments)
@@ -58,7 +61,8 @@ def texts():
 def written():
     lines = ["// Not compiled: lupdate's source for the libraries' error messages and context keys (core Error.h), which",
              "// live in code without Qt. Written by scripts/update-translations.sh (scripts/error_texts.py) from every",
-             "// vsim::Error(\"literal\", {{\"key\", ...}}) in modules/, cuda/, app/common and app/gui; do not edit.",
+             "// vsim::Error(\"literal\", {{\"key\", ...}}) and Pattern{\"... %1 ...\", ...} in modules/, cuda/, app/common",
+             "// and app/gui; do not edit.",
              "// Error::textForPeople() looks them up at run time.",
              "static const char* const kErrorTexts[] = {"]
     lines += ['    QT_TRANSLATE_NOOP("vsim::Error", "%s"),' % text for text in texts()]

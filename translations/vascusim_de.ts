@@ -2633,6 +2633,754 @@
         <source>field points need one value per point</source>
         <translation>Feldpunkte brauchen einen Wert je Punkt</translation>
     </message>
+    <message>
+        <source>unknown backend &apos;%1&apos; (auto, cpu, cuda)</source>
+        <translation>unbekanntes Backend &apos;%1&apos; (auto, cpu, cuda)</translation>
+    </message>
+    <message>
+        <source>%1: use --backend cpu or auto</source>
+        <translation>%1: verwenden Sie --backend cpu oder auto</translation>
+    </message>
+    <message>
+        <source>this series is already in the study, as %1 (%2): it is not imported twice</source>
+        <translation>diese Serie ist bereits in der Studie, als %1 (%2): sie wird nicht zweimal importiert</translation>
+    </message>
+    <message>
+        <source>no series &apos;%1&apos; among the %2 series found (see --list)</source>
+        <translation>keine Serie &apos;%1&apos; unter den %2 gefundenen Serien (siehe --list)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not %2 numbers separated by commas</source>
+        <translation>&apos;%1&apos; sind nicht %2 durch Kommas getrennte Zahlen</translation>
+    </message>
+    <message>
+        <source>the needle&apos;s bore (%1 mm) needs at least two particles across: a spacing of at most %2 mm</source>
+        <translation>die Bohrung der Kanüle (%1 mm) braucht mindestens zwei Partikel im Querschnitt: einen Abstand von höchstens %2 mm</translation>
+    </message>
+    <message>
+        <source>the tumour volume has no voxel of value %1</source>
+        <translation>das Tumorvolumen hat kein Voxel mit dem Wert %1</translation>
+    </message>
+    <message>
+        <source>the tumour must be a label or image artifact, not a %1</source>
+        <translation>der Tumor muss ein Label- oder Bild-Artefakt sein, kein %1</translation>
+    </message>
+    <message>
+        <source>the %1 must be a label or image artifact, not a %2</source>
+        <translation>%1 muss ein Label- oder Bild-Artefakt sein, kein %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a segment number (feeders.csv lists them)</source>
+        <translation>%1: &apos;%2&apos; ist keine Segmentnummer (feeders.csv listet sie)</translation>
+    </message>
+    <message>
+        <source>no such segment: the centerlines have segments 0 to %1</source>
+        <translation>kein solches Segment: die Mittellinien haben die Segmente 0 bis %1</translation>
+    </message>
+    <message>
+        <source>unknown smoke scenario &apos;%1&apos; (ball-drop, evh, liver-ablation)</source>
+        <translation>unbekanntes Rauchszenario &apos;%1&apos; (ball-drop, evh, liver-ablation)</translation>
+    </message>
+    <message>
+        <source>the vessel ends %1 and %2 are not connected</source>
+        <translation>die Gefäßenden %1 und %2 sind nicht verbunden</translation>
+    </message>
+    <message>
+        <source>the centerlines &apos;%1&apos; have no lumen label to fill with particles</source>
+        <translation>die Mittellinien &apos;%1&apos; haben kein Lumen-Label, das mit Partikeln gefüllt werden könnte</translation>
+    </message>
+    <message>
+        <source>the vessels need at least two open ends (%1&apos;s and an outlet); the centerlines have %2</source>
+        <translation>die Gefäße brauchen mindestens zwei offene Enden (das von %1 und einen Auslass); die Mittellinien haben %2</translation>
+    </message>
+    <message>
+        <source>%1&apos;s node %2 is not a vessel end (ends: %3)</source>
+        <translation>Knoten %2 von %1 ist kein Gefäßende (Enden: %3)</translation>
+    </message>
+    <message>
+        <source>unknown report section &apos;%1&apos;; sections: aaa, stenosis, chemoembolization, smoke, measurements, runs</source>
+        <translation>unbekannter Berichtsabschnitt &apos;%1&apos;; Abschnitte: aaa, stenosis, chemoembolization, smoke, measurements, runs</translation>
+    </message>
+    <message>
+        <source>unknown language &apos;%1&apos;; use en, de, zh_CN or a catalogue file (.qm)</source>
+        <translation>unbekannte Sprache &apos;%1&apos;; verwenden Sie en, de, zh_CN oder eine Katalogdatei (.qm)</translation>
+    </message>
+    <message>
+        <source>the %1 catalogue is missing from this build (:/i18n/vascusim_%2.qm)</source>
+        <translation>der Katalog %1 fehlt in diesem Build (:/i18n/vascusim_%2.qm)</translation>
+    </message>
+    <message>
+        <source>the frame has no cell field &apos;%1&apos;</source>
+        <translation>der Frame hat kein Zellfeld &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown protocol &apos;%1&apos; (thesis-rupture, physiological, interactive)</source>
+        <translation>unbekanntes Protokoll &apos;%1&apos; (thesis-rupture, physiological, interactive)</translation>
+    </message>
+    <message>
+        <source>could not write %1</source>
+        <translation>%1 konnte nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>the outbox folder exists already: %1</source>
+        <translation>der Postausgangsordner existiert bereits: %1</translation>
+    </message>
+    <message>
+        <source>could not write the movie frame %1</source>
+        <translation>das Filmbild %1 konnte nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>CUDA call failed: %1: %2</source>
+        <translation>CUDA-Aufruf gescheitert: %1: %2</translation>
+    </message>
+    <message>
+        <source>the CUDA SPH backend takes at most %1 open boundaries; this case has %2</source>
+        <translation>das CUDA-SPH-Backend nimmt höchstens %1 offene Ränder; dieser Fall hat %2</translation>
+    </message>
+    <message>
+        <source>the CUDA SPH backend does not carry a tracer yet: inlet &apos;%1&apos; lets one in; run this case on the CPU (--backend cpu)</source>
+        <translation>das CUDA-SPH-Backend transportiert noch keinen Tracer: der Einlass &apos;%1&apos; lässt einen ein; rechnen Sie diesen Fall auf der CPU (--backend cpu)</translation>
+    </message>
+    <message>
+        <source>the SPH domain spans too many cells for the GPU grid: %1</source>
+        <translation>das SPH-Gebiet umfasst zu viele Zellen für das GPU-Gitter: %1</translation>
+    </message>
+    <message>
+        <source>the study has no artifact &apos;%1&apos;</source>
+        <translation>die Studie hat kein Artefakt &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>a UID root is digits in components separated by dots, without leading zeros, at most 32 characters (e.g. 1.2.826.0.1.3680043.10.1234), not &apos;%1&apos;</source>
+        <translation>eine UID-Wurzel besteht aus Ziffern in durch Punkte getrennten Komponenten, ohne führende Nullen, höchstens 32 Zeichen (z. B. 1.2.826.0.1.3680043.10.1234), nicht &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the values are not CT Hounsfield units: %1%2</source>
+        <translation>die Werte sind keine CT-Hounsfield-Einheiten: %1%2</translation>
+    </message>
+    <message>
+        <source>cannot create the output folder: %1 is a file</source>
+        <translation>der Ausgabeordner kann nicht angelegt werden: %1 ist eine Datei</translation>
+    </message>
+    <message>
+        <source>the output folder is VascuSim&apos;s %1 folder, not a %2 folder; choose a new or empty folder</source>
+        <translation>der Ausgabeordner ist ein %1-Ordner von VascuSim, kein %2-Ordner; wählen Sie einen neuen oder leeren Ordner</translation>
+    </message>
+    <message>
+        <source>cannot create the output folder: %1</source>
+        <translation>der Ausgabeordner kann nicht angelegt werden: %1</translation>
+    </message>
+    <message>
+        <source>unknown parameter &apos;%1&apos;</source>
+        <translation>unbekannter Parameter &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>parameter &apos;%1&apos; is not a finite number</source>
+        <translation>Parameter &apos;%1&apos; ist keine endliche Zahl</translation>
+    </message>
+    <message>
+        <source>parameter &apos;%1&apos; = %2 is outside its range %3</source>
+        <translation>Parameter &apos;%1&apos; = %2 liegt außerhalb seines Bereichs %3</translation>
+    </message>
+    <message>
+        <source>parameter &apos;%1&apos; must be a whole number, got %2</source>
+        <translation>Parameter &apos;%1&apos; muss eine ganze Zahl sein, erhalten: %2</translation>
+    </message>
+    <message>
+        <source>expected key=value, got &apos;%1&apos;</source>
+        <translation>erwartet Schlüssel=Wert, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>parameter &apos;%1&apos; needs a number, got &apos;%2&apos;</source>
+        <translation>Parameter &apos;%1&apos; braucht eine Zahl, erhalten: &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>the particle field %1 has %2 values for %3 particles</source>
+        <translation>das Partikelfeld %1 hat %2 Werte für %3 Partikel</translation>
+    </message>
+    <message>
+        <source>the solver needs a %1 as its input &apos;%2&apos;, and none was given</source>
+        <translation>der Löser braucht ein %1 als Eingabe &apos;%2&apos;, und keines wurde angegeben</translation>
+    </message>
+    <message>
+        <source>the solver&apos;s input &apos;%1&apos; must be a %2, not a %3</source>
+        <translation>die Eingabe &apos;%1&apos; des Lösers muss ein %2 sein, kein %3</translation>
+    </message>
+    <message>
+        <source>node %1 has a position that is not a number</source>
+        <translation>Knoten %1 hat eine Position, die keine Zahl ist</translation>
+    </message>
+    <message>
+        <source>%1 refers to a node that does not exist</source>
+        <translation>%1 verweist auf einen Knoten, der nicht existiert</translation>
+    </message>
+    <message>
+        <source>%1 starts and ends at node %2</source>
+        <translation>%1 beginnt und endet an Knoten %2</translation>
+    </message>
+    <message>
+        <source>%1 has a length that is not positive</source>
+        <translation>%1 hat eine nicht positive Länge</translation>
+    </message>
+    <message>
+        <source>%1 has a negative or invalid resistance</source>
+        <translation>%1 hat einen negativen oder ungültigen Widerstand</translation>
+    </message>
+    <message>
+        <source>%1 has a radius that is zero or negative (%2, %3 mm)</source>
+        <translation>%1 hat einen Radius von null oder darunter (%2, %3 mm)</translation>
+    </message>
+    <message>
+        <source>%1 (nodes %2 - %3) closes a cycle: the network must be a tree</source>
+        <translation>%1 (Knoten %2 - %3) schließt einen Kreis: das Netz muss ein Baum sein</translation>
+    </message>
+    <message>
+        <source>an outlet condition names node %1, which does not exist</source>
+        <translation>eine Auslassbedingung nennt Knoten %1, der nicht existiert</translation>
+    </message>
+    <message>
+        <source>the outlet at node %1 has a pressure that is not a number</source>
+        <translation>der Auslass an Knoten %1 hat einen Druck, der keine Zahl ist</translation>
+    </message>
+    <message>
+        <source>the outlet at node %1 has a negative or invalid resistance</source>
+        <translation>der Auslass an Knoten %1 hat einen negativen oder ungültigen Widerstand</translation>
+    </message>
+    <message>
+        <source>the network&apos;s root is node %1, which does not exist</source>
+        <translation>die Wurzel des Netzes ist Knoten %1, der nicht existiert</translation>
+    </message>
+    <message>
+        <source>segment field &apos;%1&apos; has %2 values for %3 segments</source>
+        <translation>das Segmentfeld &apos;%1&apos; hat %2 Werte für %3 Segmente</translation>
+    </message>
+    <message>
+        <source>unknown measurement kind &apos;%1&apos; (ruler, angle or roi)</source>
+        <translation>unbekannte Messart &apos;%1&apos; (ruler, angle oder roi)</translation>
+    </message>
+    <message>
+        <source>the %1 phantom exists in the analytic style only (--style analytic)</source>
+        <translation>das Phantom %1 gibt es nur im analytischen Stil (--style analytic)</translation>
+    </message>
+    <message>
+        <source>unknown transfer syntax &apos;%1&apos;; known: explicit-le, implicit-le, jpeg-lossless, jpeg-ls, rle, jpeg-extended</source>
+        <translation>unbekannte Transfersyntax &apos;%1&apos;; bekannt: explicit-le, implicit-le, jpeg-lossless, jpeg-ls, rle, jpeg-extended</translation>
+    </message>
+    <message>
+        <source>unsupported pixel layout: %1 bits allocated</source>
+        <translation>nicht unterstütztes Pixelformat: %1 Bits Allocated</translation>
+    </message>
+    <message>
+        <source>invalid Number of Frames: %1</source>
+        <translation>ungültige Number of Frames: %1</translation>
+    </message>
+    <message>
+        <source>the series needs %1 of memory for %2 x %3 x %4 voxels, but only %5 is available</source>
+        <translation>die Serie braucht %1 Speicher für %2 x %3 x %4 Voxel, verfügbar sind nur %5</translation>
+    </message>
+    <message>
+        <source>cannot decode image %1 of the series: %2</source>
+        <translation>Bild %1 der Serie kann nicht dekodiert werden: %2</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG has no %1 for every frame: its geometry is unknown</source>
+        <translation>das DICOM SEG hat nicht für jeden Frame ein %1: seine Geometrie ist unbekannt</translation>
+    </message>
+    <message>
+        <source>cannot read %1 as DICOM</source>
+        <translation>%1 kann nicht als DICOM gelesen werden</translation>
+    </message>
+    <message>
+        <source>%1 is not a DICOM Segmentation object (SOP class %2)</source>
+        <translation>%1 ist kein DICOM-Segmentierungsobjekt (SOP-Klasse %2)</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s image description is incomplete or unsupported (rows %1, columns %2, frames %3, %4 bits, type %5)</source>
+        <translation>die Bildbeschreibung des DICOM SEG ist unvollständig oder nicht unterstützt (Zeilen %1, Spalten %2, Frames %3, %4 Bits, Typ %5)</translation>
+    </message>
+    <message>
+        <source>frame %1 of the DICOM SEG names no segment (1..255)</source>
+        <translation>Frame %1 des DICOM SEG nennt kein Segment (1..255)</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s frames are not a regular stack (positions along the normal are not whole multiples of %1 mm apart)</source>
+        <translation>die Frames des DICOM SEG bilden keinen regelmäßigen Stapel (die Positionen entlang der Normalen liegen nicht ganzzahlige Vielfache von %1 mm auseinander)</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s grid is too large (%1 x %2 x %3 voxels)</source>
+        <translation>das Gitter des DICOM SEG ist zu groß (%1 x %2 x %3 Voxel)</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s pixel data is shorter than its frames (%1 of %2 bytes)</source>
+        <translation>die Pixeldaten des DICOM SEG sind kürzer als seine Frames (%1 von %2 Bytes)</translation>
+    </message>
+    <message>
+        <source>writing the DICOM SEG failed at %1: %2</source>
+        <translation>das Schreiben des DICOM SEG ist bei %1 gescheitert: %2</translation>
+    </message>
+    <message>
+        <source>writing the DICOM SEG failed at the derivation image of slice %1</source>
+        <translation>das Schreiben des DICOM SEG ist am Ableitungsbild der Schicht %1 gescheitert</translation>
+    </message>
+    <message>
+        <source>writing the DICOM SEG failed: segment %1 for label value %2</source>
+        <translation>das Schreiben des DICOM SEG ist gescheitert: Segment %1 für den Label-Wert %2</translation>
+    </message>
+    <message>
+        <source>AE titles have 1 to 16 characters (PACS &apos;%1&apos;, ours &apos;%2&apos;)</source>
+        <translation>AE-Titel haben 1 bis 16 Zeichen (PACS &apos;%1&apos;, unserer &apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>a PACS node needs a host and a port from 1 to 65535 (%1)</source>
+        <translation>ein PACS-Knoten braucht einen Host und einen Port von 1 bis 65535 (%1)</translation>
+    </message>
+    <message>
+        <source>the PACS %1 rejected the association: is our AE title &apos;%2&apos; registered there, and is its own &apos;%3&apos;?</source>
+        <translation>das PACS %1 hat die Assoziation abgelehnt: ist unser AE-Titel &apos;%2&apos; dort registriert, und ist seiner &apos;%3&apos;?</translation>
+    </message>
+    <message>
+        <source>the PACS %1 took the connection but did not answer within %2 s (is it a DICOM node, is the port its DICOM port, and does it speak DICOM TLS there?)</source>
+        <translation>das PACS %1 hat die Verbindung angenommen, aber nicht innerhalb von %2 s geantwortet (ist es ein DICOM-Knoten, ist der Port sein DICOM-Port, und spricht es dort DICOM TLS?)</translation>
+    </message>
+    <message>
+        <source>the PACS %1 took the connection but did not answer within %2 s (is it a DICOM node, and is the port its DICOM port?)</source>
+        <translation>das PACS %1 hat die Verbindung angenommen, aber nicht innerhalb von %2 s geantwortet (ist es ein DICOM-Knoten, und ist der Port sein DICOM-Port?)</translation>
+    </message>
+    <message>
+        <source>could not connect over DICOM TLS (%1): %2 (does the PACS speak TLS on this port, is its certificate among those we trust (%3), and does it trust ours?)</source>
+        <translation>keine Verbindung über DICOM TLS (%1): %2 (spricht das PACS auf diesem Port TLS, ist sein Zertifikat unter denen, denen wir vertrauen (%3), und vertraut es unserem?)</translation>
+    </message>
+    <message>
+        <source>the PACS %1 does not offer %2</source>
+        <translation>das PACS %1 bietet %2 nicht an</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3</source>
+        <translation>%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>the retrieve&apos;s folder is not empty: %1</source>
+        <translation>der Ordner des Abrufs ist nicht leer: %1</translation>
+    </message>
+    <message>
+        <source>cannot create the retrieve&apos;s folder %1: %2</source>
+        <translation>der Ordner %1 des Abrufs kann nicht angelegt werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>the move&apos;s listening port must be from 1 to 65535, not %1</source>
+        <translation>der Empfangsport der Verschiebung muss von 1 bis 65535 sein, nicht %1</translation>
+    </message>
+    <message>
+        <source>cannot listen on port %1 for the move: %2 (is another program using it?)</source>
+        <translation>auf Port %1 kann für die Verschiebung nicht gelauscht werden: %2 (verwendet ihn ein anderes Programm?)</translation>
+    </message>
+    <message>
+        <source>not a DICOM file: %1 (%2)</source>
+        <translation>keine DICOM-Datei: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>a DICOM object to store needs its SOP class, instance and study UIDs: %1</source>
+        <translation>ein zu sendendes DICOM-Objekt braucht seine SOP-Klasse sowie Instance- und Study-UIDs: %1</translation>
+    </message>
+    <message>
+        <source>%1 is de-identified (Patient Identity Removed YES, e.g. a report made with --anonymize): it is not stored into a patient&apos;s study. Nothing was sent; to store it as a new anonymized study, ask for that (pacs store --anonymized new-study)</source>
+        <translation>%1 ist de-identifiziert (Patient Identity Removed YES, z. B. ein mit --anonymize erstellter Bericht): es wird nicht in die Studie eines Patienten gesendet. Nichts wurde gesendet; um es als neue anonymisierte Studie zu senden, verlangen Sie das (pacs store --anonymized new-study)</translation>
+    </message>
+    <message>
+        <source>the store of %1 broke off (%2): %3; %4</source>
+        <translation>das Senden von %1 brach ab (%2): %3; %4</translation>
+    </message>
+    <message>
+        <source>the PACS %1 refused %2 with status %3; %4</source>
+        <translation>das PACS %1 hat %2 mit Status %3 abgelehnt; %4</translation>
+    </message>
+    <message>
+        <source>DICOM TLS: %1: %2</source>
+        <translation>DICOM TLS: %1: %2</translation>
+    </message>
+    <message>
+        <source>DICOM TLS needs %1 (a PEM file)</source>
+        <translation>DICOM TLS braucht %1 (eine PEM-Datei)</translation>
+    </message>
+    <message>
+        <source>DICOM TLS: %1 is not a file: %2</source>
+        <translation>DICOM TLS: %1 ist keine Datei: %2</translation>
+    </message>
+    <message>
+        <source>DICOM TLS: the private key %1 is not that of the certificate %2</source>
+        <translation>DICOM TLS: der private Schlüssel %1 gehört nicht zum Zertifikat %2</translation>
+    </message>
+    <message>
+        <source>unknown phantom kind &apos;%1&apos;; known kinds: aaa, stenosis, hepatic-tree, bifurcation</source>
+        <translation>unbekannte Phantomart &apos;%1&apos;; bekannt: aaa, stenosis, hepatic-tree, bifurcation</translation>
+    </message>
+    <message>
+        <source>unknown phantom style &apos;%1&apos;; known styles: patient, analytic</source>
+        <translation>unbekannter Phantomstil &apos;%1&apos;; bekannt: patient, analytic</translation>
+    </message>
+    <message>
+        <source>the vessel label is disconnected: skeleton nodes %1 and %2 cannot be reached from the root through the lumen; segment one vessel tree from a seed, or join the parts with the brush</source>
+        <translation>das Gefäß-Label ist nicht zusammenhängend: die Skelettknoten %1 und %2 sind von der Wurzel aus nicht durch das Lumen erreichbar; segmentieren Sie einen Gefäßbaum von einem Startpunkt aus, oder verbinden Sie die Teile mit dem Pinsel</translation>
+    </message>
+    <message>
+        <source>the centerline is shorter than one step (%1 mm)</source>
+        <translation>die Mittellinie ist kürzer als ein Schritt (%1 mm)</translation>
+    </message>
+    <message>
+        <source>the point %1 lies outside the image; pick it on the images</source>
+        <translation>der Punkt %1 liegt außerhalb des Bildes; wählen Sie ihn auf den Bildern</translation>
+    </message>
+    <message>
+        <source>no tissue darker than the point %1 around it (%2 HU): is it inside a vessel, and is the image contrast-enhanced CT?</source>
+        <translation>kein Gewebe um den Punkt %1 ist dunkler als er (%2 HU): liegt er in einem Gefäß, und ist das Bild ein kontrastverstärktes CT?</translation>
+    </message>
+    <message>
+        <source>the point %1 is not in a contrast-filled vessel (%2 HU against %3 HU around it); pick a point inside the lumen</source>
+        <translation>der Punkt %1 liegt in keinem kontrastgefüllten Gefäß (%2 HU gegenüber %3 HU in der Umgebung); wählen Sie einen Punkt im Lumen</translation>
+    </message>
+    <message>
+        <source>unknown segmentation target &apos;%1&apos;; known targets: aorta, hepatic, all</source>
+        <translation>unbekanntes Segmentierungsziel &apos;%1&apos;; bekannt: aorta, hepatic, all</translation>
+    </message>
+    <message>
+        <source>the intensities are not CT Hounsfield units (%1): import the CT rescaled to HU (vascusim-cli import --rescale SLOPE,INTERCEPT), not MR</source>
+        <translation>die Intensitäten sind keine CT-Hounsfield-Einheiten (%1): importieren Sie das CT auf HU skaliert (vascusim-cli import --rescale SLOPE,INTERCEPT), kein MR</translation>
+    </message>
+    <message>
+        <source>the points&apos; tissue (%1 HU) lies within the liver&apos;s own range (%2 +/- %3 HU): place them in the lesion&apos;s darker (or brighter) part, or lower lesion_sigmas</source>
+        <translation>das Gewebe der Punkte (%1 HU) liegt im eigenen Bereich der Leber (%2 +/- %3 HU): setzen Sie sie in den dunkleren (oder helleren) Teil der Läsion, oder senken Sie lesion_sigmas</translation>
+    </message>
+    <message>
+        <source>the seed (%1, %2, %3) mm lies outside the image: click inside a vessel</source>
+        <translation>der Startpunkt (%1, %2, %3) mm liegt außerhalb des Bildes: klicken Sie in ein Gefäß</translation>
+    </message>
+    <message>
+        <source>the seed is not in a contrast-filled vessel: %1 HU there, outside %2..%3 HU; click inside a bright vessel or change min_contrast_hu / max_contrast_hu</source>
+        <translation>der Startpunkt liegt in keinem kontrastgefüllten Gefäß: dort %1 HU, außerhalb von %2..%3 HU; klicken Sie in ein helles Gefäß oder ändern Sie min_contrast_hu / max_contrast_hu</translation>
+    </message>
+    <message>
+        <source>no contrast-filled vessel found (no thick region of %1..%2 HU): is this a contrast-enhanced CTA? Give a seed inside a vessel or lower min_contrast_hu</source>
+        <translation>kein kontrastgefülltes Gefäß gefunden (kein dicker Bereich von %1..%2 HU): ist dies eine kontrastverstärkte CTA? Geben Sie einen Startpunkt in einem Gefäß an oder senken Sie min_contrast_hu</translation>
+    </message>
+    <message>
+        <source>the seed lies where the smoothed image is below the vessel boundary (%1 HU): click nearer the centre of the vessel</source>
+        <translation>der Startpunkt liegt dort, wo das geglättete Bild unter der Gefäßgrenze (%1 HU) liegt: klicken Sie näher an die Gefäßmitte</translation>
+    </message>
+    <message>
+        <source>a %1 takes %2 points</source>
+        <translation>ein %1 braucht %2 Punkte</translation>
+    </message>
+    <message>
+        <source>not a vessel network frame: the array %1 is missing</source>
+        <translation>kein Frame eines Gefäßnetzes: das Array %1 fehlt</translation>
+    </message>
+    <message>
+        <source>the label has no lumen voxels (value %1) to fill with particles</source>
+        <translation>das Label hat keine Lumen-Voxel (Wert %1), die mit Partikeln gefüllt werden könnten</translation>
+    </message>
+    <message>
+        <source>a particle spacing of %1 mm needs %2 lattice points over the lumen: choose a larger spacing</source>
+        <translation>ein Partikelabstand von %1 mm braucht %2 Gitterpunkte über dem Lumen: wählen Sie einen größeren Abstand</translation>
+    </message>
+    <message>
+        <source>the mesh has no point-data array &apos;%1&apos; for %2 (its arrays: %3)</source>
+        <translation>das Netz hat kein Punktdaten-Array &apos;%1&apos; für %2 (seine Arrays: %3)</translation>
+    </message>
+    <message>
+        <source>the vessel end %1 cuts no triangle of the lumen surface: is the surface from the same label as the centerlines?</source>
+        <translation>das Gefäßende %1 schneidet kein Dreieck der Lumenoberfläche: stammt die Oberfläche aus demselben Label wie die Mittellinien?</translation>
+    </message>
+    <message>
+        <source>the wall thickness must lie in 0.1..10 mm (%1 given)</source>
+        <translation>die Wanddicke muss in 0,1..10 mm liegen (%1 angegeben)</translation>
+    </message>
+    <message>
+        <source>cannot set a DICOM attribute of the report: %1</source>
+        <translation>ein DICOM-Attribut des Berichts kann nicht gesetzt werden: %1</translation>
+    </message>
+    <message>
+        <source>cannot encapsulate the PDF: %1</source>
+        <translation>das PDF kann nicht eingekapselt werden: %1</translation>
+    </message>
+    <message>
+        <source>cannot write the DICOM report: %1</source>
+        <translation>der DICOM-Bericht kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>unknown page size &apos;%1&apos;; use a4 or letter</source>
+        <translation>unbekanntes Papierformat &apos;%1&apos;; verwenden Sie a4 oder letter</translation>
+    </message>
+    <message>
+        <source>%1: the initial state holds %2</source>
+        <translation>%1: der Anfangszustand enthält %2</translation>
+    </message>
+    <message>
+        <source>a spring constraint names node %1 of %2</source>
+        <translation>eine Federbedingung nennt Knoten %1 von %2</translation>
+    </message>
+    <message>
+        <source>element %1 refers to node %2 of %3</source>
+        <translation>Element %1 verweist auf Knoten %2 von %3</translation>
+    </message>
+    <message>
+        <source>element %1: %2</source>
+        <translation>Element %1: %2</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus must be positive (%1 Pa given)</source>
+        <translation>der Elastizitätsmodul muss positiv sein (%1 Pa angegeben)</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio must lie in (-1, 0.5) (%1 given)</source>
+        <translation>die Querkontraktionszahl muss in (-1, 0,5) liegen (%1 angegeben)</translation>
+    </message>
+    <message>
+        <source>the density must be positive (%1 kg/m^3 given)</source>
+        <translation>die Dichte muss positiv sein (%1 kg/m^3 angegeben)</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos; (known: %2)</source>
+        <translation>unbekannter Validierungsfall &apos;%1&apos; (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>St. Venant-Kirchhoff material needs mu &gt; 0 and lambda &gt;= 0 (got mu %1 Pa, lambda %2 Pa)</source>
+        <translation>das St.-Venant-Kirchhoff-Material braucht mu &gt; 0 und lambda &gt;= 0 (erhalten: mu %1 Pa, lambda %2 Pa)</translation>
+    </message>
+    <message>
+        <source>the quadratic wall model has %1 material indices for %2 elements</source>
+        <translation>das quadratische Wandmodell hat %1 Materialindizes für %2 Elemente</translation>
+    </message>
+    <message>
+        <source>element %1 has material %2 of %3</source>
+        <translation>Element %1 hat Material %2 von %3</translation>
+    </message>
+    <message>
+        <source>quadratic element %1 is degenerate or inverted (volume %2 m^3)</source>
+        <translation>das quadratische Element %1 ist entartet oder umgestülpt (Volumen %2 m^3)</translation>
+    </message>
+    <message>
+        <source>%1 elements are inverted at the start of the static solve%2</source>
+        <translation>%1 Elemente sind zu Beginn der statischen Lösung umgestülpt%2</translation>
+    </message>
+    <message>
+        <source>the saved wall state has %1 nodes, the wall %2</source>
+        <translation>der gespeicherte Wandzustand hat %1 Knoten, die Wand %2</translation>
+    </message>
+    <message>
+        <source>heat-decay: the run at %1 cells stopped: %2</source>
+        <translation>heat-decay: der Lauf mit %1 Zellen hielt an: %2</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos; (known: heat-decay)</source>
+        <translation>unbekannter Validierungsfall &apos;%1&apos; (bekannt: heat-decay)</translation>
+    </message>
+    <message>
+        <source>outlet node %1 has no boundary condition (a pressure or a terminal resistance)</source>
+        <translation>der Auslassknoten %1 hat keine Randbedingung (einen Druck oder einen Endwiderstand)</translation>
+    </message>
+    <message>
+        <source>node %1 takes in flow but no open vessel leaves it</source>
+        <translation>Knoten %1 nimmt Fluss auf, aber kein offenes Gefäß verlässt ihn</translation>
+    </message>
+    <message>
+        <source>the inlet segment %1 does not exist (the tree has %2 segments)</source>
+        <translation>das Einlasssegment %1 existiert nicht (der Baum hat %2 Segmente)</translation>
+    </message>
+    <message>
+        <source>the inlet &apos;%1&apos; is not a point x,y,z (mm)</source>
+        <translation>der Einlass &apos;%1&apos; ist kein Punkt x,y,z (mm)</translation>
+    </message>
+    <message>
+        <source>the inlet point %1 lies %2 mm from the nearest vessel (at most %3 mm)</source>
+        <translation>der Einlasspunkt %1 liegt %2 mm vom nächsten Gefäß entfernt (höchstens %3 mm)</translation>
+    </message>
+    <message>
+        <source>no segment of the tree is named &apos;%1&apos;%2</source>
+        <translation>kein Segment des Baums heißt &apos;%1&apos;%2</translation>
+    </message>
+    <message>
+        <source>feeder edit: segment %1 is not in the network (%2 segments)</source>
+        <translation>Zuführer bearbeiten: Segment %1 ist nicht im Netz (%2 Segmente)</translation>
+    </message>
+    <message>
+        <source>feeder edit: segment %1 is both added and removed</source>
+        <translation>Zuführer bearbeiten: Segment %1 wird zugleich hinzugefügt und entfernt</translation>
+    </message>
+    <message>
+        <source>end radii are given for %1 of %2 centerline edges</source>
+        <translation>Endradien sind für %1 von %2 Mittellinienkanten angegeben</translation>
+    </message>
+    <message>
+        <source>centerline edge %1 has no positive radius: measure the vessels again</source>
+        <translation>die Mittellinienkante %1 hat keinen positiven Radius: messen Sie die Gefäße erneut</translation>
+    </message>
+    <message>
+        <source>control point %1 is not on the tree downstream of the tip</source>
+        <translation>der Kontrollpunkt %1 liegt nicht stromab der Spitze auf dem Baum</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos;; network cases: network-cylinder, network-cone, network-conservation, network-bifurcation, network-confluence, network-annulus, network-mixing, network-two-phase-split</source>
+        <translation>unbekannter Validierungsfall &apos;%1&apos;; Netzfälle: network-cylinder, network-cone, network-conservation, network-bifurcation, network-confluence, network-annulus, network-mixing, network-two-phase-split</translation>
+    </message>
+    <message>
+        <source>the catheter tip is node %1, which is not in the network</source>
+        <translation>die Katheterspitze ist Knoten %1, der nicht im Netz ist</translation>
+    </message>
+    <message>
+        <source>the catheter tip (node %1) is on a part of the network that is not connected to its root</source>
+        <translation>die Katheterspitze (Knoten %1) liegt auf einem Teil des Netzes, der nicht mit seiner Wurzel verbunden ist</translation>
+    </message>
+    <message>
+        <source>nothing is downstream of the catheter tip (node %1 is an end of the tree): place it nearer the root (node %2)</source>
+        <translation>stromab der Katheterspitze liegt nichts (Knoten %1 ist ein Ende des Baums): setzen Sie sie näher an die Wurzel (Knoten %2)</translation>
+    </message>
+    <message>
+        <source>the void fraction must be in [0, 1), not %1</source>
+        <translation>der Hohlraumanteil muss in [0, 1) liegen, nicht %1</translation>
+    </message>
+    <message>
+        <source>the catheter tip (node %1) is not connected to the root</source>
+        <translation>die Katheterspitze (Knoten %1) ist nicht mit der Wurzel verbunden</translation>
+    </message>
+    <message>
+        <source>a smoke grid needs at least 2 cells along each axis and a positive cell size (got %1 x %2 x %3)</source>
+        <translation>ein Rauchgitter braucht mindestens 2 Zellen je Achse und eine positive Zellgröße (erhalten: %1 x %2 x %3)</translation>
+    </message>
+    <message>
+        <source>smoke-taylor-green: %1</source>
+        <translation>smoke-taylor-green: %1</translation>
+    </message>
+    <message>
+        <source>smoke-mass: %1</source>
+        <translation>smoke-mass: %1</translation>
+    </message>
+    <message>
+        <source>smoke-ball: %1</source>
+        <translation>smoke-ball: %1</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos; (known: smoke-divergence, smoke-taylor-green, smoke-mass, smoke-ball)</source>
+        <translation>unbekannter Validierungsfall &apos;%1&apos; (bekannt: smoke-divergence, smoke-taylor-green, smoke-mass, smoke-ball)</translation>
+    </message>
+    <message>
+        <source>%1: the run stopped: %2</source>
+        <translation>%1: der Lauf hielt an: %2</translation>
+    </message>
+    <message>
+        <source>a periodic axis must be at least 2.5 kernel supports long (%1 mm)</source>
+        <translation>eine periodische Achse muss mindestens 2,5 Kernträger lang sein (%1 mm)</translation>
+    </message>
+    <message>
+        <source>the particles spread over more than %1 neighbour cells</source>
+        <translation>die Partikel verteilen sich über mehr als %1 Nachbarzellen</translation>
+    </message>
+    <message>
+        <source>the open boundary &apos;%1&apos; needs a unit normal and a positive radius</source>
+        <translation>der offene Rand &apos;%1&apos; braucht eine Einheitsnormale und einen positiven Radius</translation>
+    </message>
+    <message>
+        <source>a buffer particle names open boundary %1 of %2</source>
+        <translation>ein Pufferpartikel nennt den offenen Rand %1 von %2</translation>
+    </message>
+    <message>
+        <source>the open boundary &apos;%1&apos; has no buffer particles behind it</source>
+        <translation>der offene Rand &apos;%1&apos; hat keine Pufferpartikel hinter sich</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos; (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis)</source>
+        <translation>unbekannter Validierungsfall &apos;%1&apos; (bekannt: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis)</translation>
+    </message>
+    <message>
+        <source>the stenosis pipe needs a mean speed &gt; 0 and room for the sections past the throat (length &gt;= %1 mm)</source>
+        <translation>das Stenoserohr braucht eine mittlere Geschwindigkeit &gt; 0 und Platz für die Querschnitte hinter der Engstelle (Länge &gt;= %1 mm)</translation>
+    </message>
+    <message>
+        <source>no section lies %1 mm from both ends of the path to compare with</source>
+        <translation>kein Querschnitt liegt %1 mm von beiden Enden des Pfads entfernt, mit dem verglichen werden könnte</translation>
+    </message>
+    <message>
+        <source>unknown artifact kind &apos;%1&apos;</source>
+        <translation>unbekannte Artefaktart &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>cannot replace file: %1</source>
+        <translation>die Datei kann nicht ersetzt werden: %1</translation>
+    </message>
+    <message>
+        <source>the mask&apos;s grid does not match the image&apos;s (%1): mask %2; image %3</source>
+        <translation>das Gitter der Maske passt nicht zu dem des Bildes (%1): Maske %2; Bild %3</translation>
+    </message>
+    <message>
+        <source>the mask holds the value %1, outside the labels 1..255: give the label value to use (--label-value N)</source>
+        <translation>die Maske enthält den Wert %1, außerhalb der Labels 1..255: geben Sie den zu verwendenden Label-Wert an (--label-value N)</translation>
+    </message>
+    <message>
+        <source>the study was written by a newer VascuSim (schema %1); this build reads schema %2 and older</source>
+        <translation>die Studie wurde von einer neueren Version von VascuSim geschrieben (Schema %1); dieser Build liest Schema %2 und älter</translation>
+    </message>
+    <message>
+        <source>segment %1 of the network file: %2</source>
+        <translation>Segment %1 der Netzdatei: %2</translation>
+    </message>
+    <message>
+        <source>cannot read the network file: %1</source>
+        <translation>die Netzdatei kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>the run has no frame %1 (it kept %2)</source>
+        <translation>der Lauf hat keinen Frame %1 (er hat %2 behalten)</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; is a %2, not a %3</source>
+        <translation>das Artefakt &apos;%1&apos; ist ein %2, kein %3</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; is damaged: %2</source>
+        <translation>das Artefakt &apos;%1&apos; ist beschädigt: %2</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; is a %2, not a run</source>
+        <translation>das Artefakt &apos;%1&apos; ist ein %2, kein Lauf</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; is not a volume</source>
+        <translation>das Artefakt &apos;%1&apos; ist kein Volumen</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; was not removed; nothing to restore</source>
+        <translation>das Artefakt &apos;%1&apos; wurde nicht entfernt; nichts wiederherzustellen</translation>
+    </message>
+    <message>
+        <source>cannot open the study&apos;s lock file: %1</source>
+        <translation>die Sperrdatei der Studie kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>cannot lock the study: %1</source>
+        <translation>die Studie kann nicht gesperrt werden: %1</translation>
+    </message>
+    <message>
+        <source>the study is being written by %1; wait for it (--wait SECONDS) or open the study read-only</source>
+        <translation>die Studie wird gerade von %1 geschrieben; warten Sie darauf (--wait SEKUNDEN) oder öffnen Sie die Studie schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>cannot move the stale lock aside: %1</source>
+        <translation>die verwaiste Sperre kann nicht beiseitegelegt werden: %1</translation>
+    </message>
+    <message>
+        <source>the surface has no field &apos;%1&apos; to colour by</source>
+        <translation>die Oberfläche hat kein Feld &apos;%1&apos; zum Einfärben</translation>
+    </message>
+    <message>
+        <source>the %1 frame has no field &apos;%2&apos; to show in the slices</source>
+        <translation>der Frame %1 hat kein Feld &apos;%2&apos;, das in den Schichten gezeigt werden könnte</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

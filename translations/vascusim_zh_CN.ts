@@ -2633,6 +2633,754 @@
         <source>field points need one value per point</source>
         <translation>场点每个点需要一个值</translation>
     </message>
+    <message>
+        <source>unknown backend &apos;%1&apos; (auto, cpu, cuda)</source>
+        <translation>未知后端 &apos;%1&apos;（auto、cpu、cuda）</translation>
+    </message>
+    <message>
+        <source>%1: use --backend cpu or auto</source>
+        <translation>%1：请使用 --backend cpu 或 auto</translation>
+    </message>
+    <message>
+        <source>this series is already in the study, as %1 (%2): it is not imported twice</source>
+        <translation>该序列已在研究中，为 %1（%2）：不会重复导入</translation>
+    </message>
+    <message>
+        <source>no series &apos;%1&apos; among the %2 series found (see --list)</source>
+        <translation>在找到的 %2 个序列中没有序列 &apos;%1&apos;（见 --list）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not %2 numbers separated by commas</source>
+        <translation>&apos;%1&apos; 不是以逗号分隔的 %2 个数字</translation>
+    </message>
+    <message>
+        <source>the needle&apos;s bore (%1 mm) needs at least two particles across: a spacing of at most %2 mm</source>
+        <translation>针孔（%1 mm）横截面至少需要两个粒子：间距最多 %2 mm</translation>
+    </message>
+    <message>
+        <source>the tumour volume has no voxel of value %1</source>
+        <translation>肿瘤体积中没有值为 %1 的体素</translation>
+    </message>
+    <message>
+        <source>the tumour must be a label or image artifact, not a %1</source>
+        <translation>肿瘤必须是标签或图像工件，而不是 %1</translation>
+    </message>
+    <message>
+        <source>the %1 must be a label or image artifact, not a %2</source>
+        <translation>%1 必须是标签或图像工件，而不是 %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a segment number (feeders.csv lists them)</source>
+        <translation>%1：&apos;%2&apos; 不是节段编号（见 feeders.csv）</translation>
+    </message>
+    <message>
+        <source>no such segment: the centerlines have segments 0 to %1</source>
+        <translation>没有该节段：中心线的节段编号为 0 到 %1</translation>
+    </message>
+    <message>
+        <source>unknown smoke scenario &apos;%1&apos; (ball-drop, evh, liver-ablation)</source>
+        <translation>未知烟雾场景 &apos;%1&apos;（ball-drop、evh、liver-ablation）</translation>
+    </message>
+    <message>
+        <source>the vessel ends %1 and %2 are not connected</source>
+        <translation>血管末端 %1 与 %2 不相连</translation>
+    </message>
+    <message>
+        <source>the centerlines &apos;%1&apos; have no lumen label to fill with particles</source>
+        <translation>中心线 &apos;%1&apos; 没有可填充粒子的管腔标签</translation>
+    </message>
+    <message>
+        <source>the vessels need at least two open ends (%1&apos;s and an outlet); the centerlines have %2</source>
+        <translation>血管至少需要两个开口端（%1 的及一个出口）；中心线有 %2 个</translation>
+    </message>
+    <message>
+        <source>%1&apos;s node %2 is not a vessel end (ends: %3)</source>
+        <translation>%1 的节点 %2 不是血管末端（末端：%3）</translation>
+    </message>
+    <message>
+        <source>unknown report section &apos;%1&apos;; sections: aaa, stenosis, chemoembolization, smoke, measurements, runs</source>
+        <translation>未知报告章节 &apos;%1&apos;；章节：aaa、stenosis、chemoembolization、smoke、measurements、runs</translation>
+    </message>
+    <message>
+        <source>unknown language &apos;%1&apos;; use en, de, zh_CN or a catalogue file (.qm)</source>
+        <translation>未知语言 &apos;%1&apos;；请使用 en、de、zh_CN 或目录文件（.qm）</translation>
+    </message>
+    <message>
+        <source>the %1 catalogue is missing from this build (:/i18n/vascusim_%2.qm)</source>
+        <translation>本版本缺少 %1 目录（:/i18n/vascusim_%2.qm）</translation>
+    </message>
+    <message>
+        <source>the frame has no cell field &apos;%1&apos;</source>
+        <translation>该帧没有单元场 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown protocol &apos;%1&apos; (thesis-rupture, physiological, interactive)</source>
+        <translation>未知方案 &apos;%1&apos;（thesis-rupture、physiological、interactive）</translation>
+    </message>
+    <message>
+        <source>could not write %1</source>
+        <translation>无法写入 %1</translation>
+    </message>
+    <message>
+        <source>the outbox folder exists already: %1</source>
+        <translation>发件箱文件夹已存在：%1</translation>
+    </message>
+    <message>
+        <source>could not write the movie frame %1</source>
+        <translation>无法写入影片帧 %1</translation>
+    </message>
+    <message>
+        <source>CUDA call failed: %1: %2</source>
+        <translation>CUDA 调用失败：%1：%2</translation>
+    </message>
+    <message>
+        <source>the CUDA SPH backend takes at most %1 open boundaries; this case has %2</source>
+        <translation>CUDA SPH 后端最多支持 %1 个开放边界；此算例有 %2 个</translation>
+    </message>
+    <message>
+        <source>the CUDA SPH backend does not carry a tracer yet: inlet &apos;%1&apos; lets one in; run this case on the CPU (--backend cpu)</source>
+        <translation>CUDA SPH 后端尚不支持示踪剂：入口 &apos;%1&apos; 会引入示踪剂；请在 CPU 上运行此算例（--backend cpu）</translation>
+    </message>
+    <message>
+        <source>the SPH domain spans too many cells for the GPU grid: %1</source>
+        <translation>SPH 区域的单元数超出 GPU 网格容量：%1</translation>
+    </message>
+    <message>
+        <source>the study has no artifact &apos;%1&apos;</source>
+        <translation>该研究没有工件 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>a UID root is digits in components separated by dots, without leading zeros, at most 32 characters (e.g. 1.2.826.0.1.3680043.10.1234), not &apos;%1&apos;</source>
+        <translation>UID 根由以点分隔的数字组成，不含前导零，最多 32 个字符（如 1.2.826.0.1.3680043.10.1234），而不是 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the values are not CT Hounsfield units: %1%2</source>
+        <translation>这些值不是 CT 亨氏单位：%1%2</translation>
+    </message>
+    <message>
+        <source>cannot create the output folder: %1 is a file</source>
+        <translation>无法创建输出文件夹：%1 是一个文件</translation>
+    </message>
+    <message>
+        <source>the output folder is VascuSim&apos;s %1 folder, not a %2 folder; choose a new or empty folder</source>
+        <translation>输出文件夹是 VascuSim 的 %1 文件夹，而不是 %2 文件夹；请选择新的或空的文件夹</translation>
+    </message>
+    <message>
+        <source>cannot create the output folder: %1</source>
+        <translation>无法创建输出文件夹：%1</translation>
+    </message>
+    <message>
+        <source>unknown parameter &apos;%1&apos;</source>
+        <translation>未知参数 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>parameter &apos;%1&apos; is not a finite number</source>
+        <translation>参数 &apos;%1&apos; 不是有限数</translation>
+    </message>
+    <message>
+        <source>parameter &apos;%1&apos; = %2 is outside its range %3</source>
+        <translation>参数 &apos;%1&apos; = %2 超出其范围 %3</translation>
+    </message>
+    <message>
+        <source>parameter &apos;%1&apos; must be a whole number, got %2</source>
+        <translation>参数 &apos;%1&apos; 必须为整数，得到 %2</translation>
+    </message>
+    <message>
+        <source>expected key=value, got &apos;%1&apos;</source>
+        <translation>应为 key=value，得到 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>parameter &apos;%1&apos; needs a number, got &apos;%2&apos;</source>
+        <translation>参数 &apos;%1&apos; 需要一个数字，得到 &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>the particle field %1 has %2 values for %3 particles</source>
+        <translation>粒子场 %1 有 %2 个值，而粒子数为 %3</translation>
+    </message>
+    <message>
+        <source>the solver needs a %1 as its input &apos;%2&apos;, and none was given</source>
+        <translation>求解器需要 %1 作为输入 &apos;%2&apos;，但未提供</translation>
+    </message>
+    <message>
+        <source>the solver&apos;s input &apos;%1&apos; must be a %2, not a %3</source>
+        <translation>求解器输入 &apos;%1&apos; 必须是 %2，而不是 %3</translation>
+    </message>
+    <message>
+        <source>node %1 has a position that is not a number</source>
+        <translation>节点 %1 的位置不是数字</translation>
+    </message>
+    <message>
+        <source>%1 refers to a node that does not exist</source>
+        <translation>%1 引用了不存在的节点</translation>
+    </message>
+    <message>
+        <source>%1 starts and ends at node %2</source>
+        <translation>%1 的起点和终点都是节点 %2</translation>
+    </message>
+    <message>
+        <source>%1 has a length that is not positive</source>
+        <translation>%1 的长度不为正</translation>
+    </message>
+    <message>
+        <source>%1 has a negative or invalid resistance</source>
+        <translation>%1 的阻力为负或无效</translation>
+    </message>
+    <message>
+        <source>%1 has a radius that is zero or negative (%2, %3 mm)</source>
+        <translation>%1 的半径为零或负（%2、%3 mm）</translation>
+    </message>
+    <message>
+        <source>%1 (nodes %2 - %3) closes a cycle: the network must be a tree</source>
+        <translation>%1（节点 %2 - %3）形成了环路：网络必须是树</translation>
+    </message>
+    <message>
+        <source>an outlet condition names node %1, which does not exist</source>
+        <translation>出口条件指定的节点 %1 不存在</translation>
+    </message>
+    <message>
+        <source>the outlet at node %1 has a pressure that is not a number</source>
+        <translation>节点 %1 处出口的压力不是数字</translation>
+    </message>
+    <message>
+        <source>the outlet at node %1 has a negative or invalid resistance</source>
+        <translation>节点 %1 处出口的阻力为负或无效</translation>
+    </message>
+    <message>
+        <source>the network&apos;s root is node %1, which does not exist</source>
+        <translation>网络的根节点 %1 不存在</translation>
+    </message>
+    <message>
+        <source>segment field &apos;%1&apos; has %2 values for %3 segments</source>
+        <translation>节段场 &apos;%1&apos; 有 %2 个值，而节段数为 %3</translation>
+    </message>
+    <message>
+        <source>unknown measurement kind &apos;%1&apos; (ruler, angle or roi)</source>
+        <translation>未知测量类型 &apos;%1&apos;（ruler、angle 或 roi）</translation>
+    </message>
+    <message>
+        <source>the %1 phantom exists in the analytic style only (--style analytic)</source>
+        <translation>%1 体模仅有解析样式（--style analytic）</translation>
+    </message>
+    <message>
+        <source>unknown transfer syntax &apos;%1&apos;; known: explicit-le, implicit-le, jpeg-lossless, jpeg-ls, rle, jpeg-extended</source>
+        <translation>未知传输语法 &apos;%1&apos;；已知：explicit-le、implicit-le、jpeg-lossless、jpeg-ls、rle、jpeg-extended</translation>
+    </message>
+    <message>
+        <source>unsupported pixel layout: %1 bits allocated</source>
+        <translation>不支持的像素布局：分配位数 %1</translation>
+    </message>
+    <message>
+        <source>invalid Number of Frames: %1</source>
+        <translation>无效的 Number of Frames：%1</translation>
+    </message>
+    <message>
+        <source>the series needs %1 of memory for %2 x %3 x %4 voxels, but only %5 is available</source>
+        <translation>该序列的 %2 x %3 x %4 个体素需要 %1 内存，但只有 %5 可用</translation>
+    </message>
+    <message>
+        <source>cannot decode image %1 of the series: %2</source>
+        <translation>无法解码该序列的图像 %1：%2</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG has no %1 for every frame: its geometry is unknown</source>
+        <translation>DICOM SEG 并非每帧都有 %1：其几何未知</translation>
+    </message>
+    <message>
+        <source>cannot read %1 as DICOM</source>
+        <translation>无法将 %1 作为 DICOM 读取</translation>
+    </message>
+    <message>
+        <source>%1 is not a DICOM Segmentation object (SOP class %2)</source>
+        <translation>%1 不是 DICOM 分割对象（SOP 类 %2）</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s image description is incomplete or unsupported (rows %1, columns %2, frames %3, %4 bits, type %5)</source>
+        <translation>DICOM SEG 的图像描述不完整或不受支持（行 %1、列 %2、帧 %3、%4 位、类型 %5）</translation>
+    </message>
+    <message>
+        <source>frame %1 of the DICOM SEG names no segment (1..255)</source>
+        <translation>DICOM SEG 的帧 %1 未指定分割段（1..255）</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s frames are not a regular stack (positions along the normal are not whole multiples of %1 mm apart)</source>
+        <translation>DICOM SEG 的帧不是规则堆栈（沿法向的位置间距不是 %1 mm 的整数倍）</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s grid is too large (%1 x %2 x %3 voxels)</source>
+        <translation>DICOM SEG 的网格过大（%1 x %2 x %3 个体素）</translation>
+    </message>
+    <message>
+        <source>the DICOM SEG&apos;s pixel data is shorter than its frames (%1 of %2 bytes)</source>
+        <translation>DICOM SEG 的像素数据短于其帧（%2 字节中只有 %1）</translation>
+    </message>
+    <message>
+        <source>writing the DICOM SEG failed at %1: %2</source>
+        <translation>写入 DICOM SEG 时在 %1 处失败：%2</translation>
+    </message>
+    <message>
+        <source>writing the DICOM SEG failed at the derivation image of slice %1</source>
+        <translation>写入 DICOM SEG 时在层面 %1 的派生图像处失败</translation>
+    </message>
+    <message>
+        <source>writing the DICOM SEG failed: segment %1 for label value %2</source>
+        <translation>写入 DICOM SEG 失败：标签值 %2 对应的分割段 %1</translation>
+    </message>
+    <message>
+        <source>AE titles have 1 to 16 characters (PACS &apos;%1&apos;, ours &apos;%2&apos;)</source>
+        <translation>AE 标题为 1 到 16 个字符（PACS &apos;%1&apos;，本机 &apos;%2&apos;）</translation>
+    </message>
+    <message>
+        <source>a PACS node needs a host and a port from 1 to 65535 (%1)</source>
+        <translation>PACS 节点需要主机和 1 到 65535 之间的端口（%1）</translation>
+    </message>
+    <message>
+        <source>the PACS %1 rejected the association: is our AE title &apos;%2&apos; registered there, and is its own &apos;%3&apos;?</source>
+        <translation>PACS %1 拒绝了关联：本机 AE 标题 &apos;%2&apos; 是否已在其处注册，其自身标题是否为 &apos;%3&apos;？</translation>
+    </message>
+    <message>
+        <source>the PACS %1 took the connection but did not answer within %2 s (is it a DICOM node, is the port its DICOM port, and does it speak DICOM TLS there?)</source>
+        <translation>PACS %1 接受了连接，但未在 %2 秒内应答（它是否为 DICOM 节点，该端口是否为其 DICOM 端口，且是否在该端口使用 DICOM TLS？）</translation>
+    </message>
+    <message>
+        <source>the PACS %1 took the connection but did not answer within %2 s (is it a DICOM node, and is the port its DICOM port?)</source>
+        <translation>PACS %1 接受了连接，但未在 %2 秒内应答（它是否为 DICOM 节点，该端口是否为其 DICOM 端口？）</translation>
+    </message>
+    <message>
+        <source>could not connect over DICOM TLS (%1): %2 (does the PACS speak TLS on this port, is its certificate among those we trust (%3), and does it trust ours?)</source>
+        <translation>无法通过 DICOM TLS 连接（%1）：%2（PACS 是否在此端口使用 TLS，其证书是否在我们信任的证书中（%3），且它是否信任我们的证书？）</translation>
+    </message>
+    <message>
+        <source>the PACS %1 does not offer %2</source>
+        <translation>PACS %1 不提供 %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2): %3</source>
+        <translation>%1（%2）：%3</translation>
+    </message>
+    <message>
+        <source>the retrieve&apos;s folder is not empty: %1</source>
+        <translation>检索文件夹不为空：%1</translation>
+    </message>
+    <message>
+        <source>cannot create the retrieve&apos;s folder %1: %2</source>
+        <translation>无法创建检索文件夹 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>the move&apos;s listening port must be from 1 to 65535, not %1</source>
+        <translation>移动的监听端口必须在 1 到 65535 之间，而不是 %1</translation>
+    </message>
+    <message>
+        <source>cannot listen on port %1 for the move: %2 (is another program using it?)</source>
+        <translation>无法在端口 %1 上为移动监听：%2（是否有其他程序占用？）</translation>
+    </message>
+    <message>
+        <source>not a DICOM file: %1 (%2)</source>
+        <translation>不是 DICOM 文件：%1（%2）</translation>
+    </message>
+    <message>
+        <source>a DICOM object to store needs its SOP class, instance and study UIDs: %1</source>
+        <translation>待存储的 DICOM 对象需要其 SOP 类、实例 UID 和研究 UID：%1</translation>
+    </message>
+    <message>
+        <source>%1 is de-identified (Patient Identity Removed YES, e.g. a report made with --anonymize): it is not stored into a patient&apos;s study. Nothing was sent; to store it as a new anonymized study, ask for that (pacs store --anonymized new-study)</source>
+        <translation>%1 已去标识化（Patient Identity Removed YES，例如用 --anonymize 生成的报告）：不会存入患者的研究。未发送任何内容；如需作为新的匿名研究存储，请明确指定（pacs store --anonymized new-study）</translation>
+    </message>
+    <message>
+        <source>the store of %1 broke off (%2): %3; %4</source>
+        <translation>%1 的存储中断（%2）：%3；%4</translation>
+    </message>
+    <message>
+        <source>the PACS %1 refused %2 with status %3; %4</source>
+        <translation>PACS %1 以状态 %3 拒绝了 %2；%4</translation>
+    </message>
+    <message>
+        <source>DICOM TLS: %1: %2</source>
+        <translation>DICOM TLS：%1：%2</translation>
+    </message>
+    <message>
+        <source>DICOM TLS needs %1 (a PEM file)</source>
+        <translation>DICOM TLS 需要 %1（PEM 文件）</translation>
+    </message>
+    <message>
+        <source>DICOM TLS: %1 is not a file: %2</source>
+        <translation>DICOM TLS：%1 不是文件：%2</translation>
+    </message>
+    <message>
+        <source>DICOM TLS: the private key %1 is not that of the certificate %2</source>
+        <translation>DICOM TLS：私钥 %1 与证书 %2 不匹配</translation>
+    </message>
+    <message>
+        <source>unknown phantom kind &apos;%1&apos;; known kinds: aaa, stenosis, hepatic-tree, bifurcation</source>
+        <translation>未知体模类型 &apos;%1&apos;；已知类型：aaa、stenosis、hepatic-tree、bifurcation</translation>
+    </message>
+    <message>
+        <source>unknown phantom style &apos;%1&apos;; known styles: patient, analytic</source>
+        <translation>未知体模样式 &apos;%1&apos;；已知样式：patient、analytic</translation>
+    </message>
+    <message>
+        <source>the vessel label is disconnected: skeleton nodes %1 and %2 cannot be reached from the root through the lumen; segment one vessel tree from a seed, or join the parts with the brush</source>
+        <translation>血管标签不连通：骨架节点 %1 和 %2 无法从根部经管腔到达；请从一个种子点分割单一血管树，或用画笔连接各部分</translation>
+    </message>
+    <message>
+        <source>the centerline is shorter than one step (%1 mm)</source>
+        <translation>中心线短于一个步长（%1 mm）</translation>
+    </message>
+    <message>
+        <source>the point %1 lies outside the image; pick it on the images</source>
+        <translation>点 %1 位于图像之外；请在图像上选取</translation>
+    </message>
+    <message>
+        <source>no tissue darker than the point %1 around it (%2 HU): is it inside a vessel, and is the image contrast-enhanced CT?</source>
+        <translation>点 %1 周围没有比它更暗的组织（%2 HU）：它是否在血管内，图像是否为增强 CT？</translation>
+    </message>
+    <message>
+        <source>the point %1 is not in a contrast-filled vessel (%2 HU against %3 HU around it); pick a point inside the lumen</source>
+        <translation>点 %1 不在造影剂充盈的血管内（%2 HU，周围为 %3 HU）；请在管腔内选点</translation>
+    </message>
+    <message>
+        <source>unknown segmentation target &apos;%1&apos;; known targets: aorta, hepatic, all</source>
+        <translation>未知分割目标 &apos;%1&apos;；已知目标：aorta、hepatic、all</translation>
+    </message>
+    <message>
+        <source>the intensities are not CT Hounsfield units (%1): import the CT rescaled to HU (vascusim-cli import --rescale SLOPE,INTERCEPT), not MR</source>
+        <translation>强度值不是 CT 亨氏单位（%1）：请导入换算为 HU 的 CT（vascusim-cli import --rescale SLOPE,INTERCEPT），而非 MR</translation>
+    </message>
+    <message>
+        <source>the points&apos; tissue (%1 HU) lies within the liver&apos;s own range (%2 +/- %3 HU): place them in the lesion&apos;s darker (or brighter) part, or lower lesion_sigmas</source>
+        <translation>这些点处的组织（%1 HU）落在肝脏自身范围内（%2 +/- %3 HU）：请将点放在病灶较暗（或较亮）的部分，或降低 lesion_sigmas</translation>
+    </message>
+    <message>
+        <source>the seed (%1, %2, %3) mm lies outside the image: click inside a vessel</source>
+        <translation>种子点 (%1, %2, %3) mm 位于图像之外：请点击血管内部</translation>
+    </message>
+    <message>
+        <source>the seed is not in a contrast-filled vessel: %1 HU there, outside %2..%3 HU; click inside a bright vessel or change min_contrast_hu / max_contrast_hu</source>
+        <translation>种子点不在造影剂充盈的血管内：该处为 %1 HU，不在 %2..%3 HU 内；请点击明亮的血管或修改 min_contrast_hu / max_contrast_hu</translation>
+    </message>
+    <message>
+        <source>no contrast-filled vessel found (no thick region of %1..%2 HU): is this a contrast-enhanced CTA? Give a seed inside a vessel or lower min_contrast_hu</source>
+        <translation>未找到造影剂充盈的血管（没有 %1..%2 HU 的较厚区域）：这是增强 CTA 吗？请在血管内给出种子点或降低 min_contrast_hu</translation>
+    </message>
+    <message>
+        <source>the seed lies where the smoothed image is below the vessel boundary (%1 HU): click nearer the centre of the vessel</source>
+        <translation>种子点处的平滑图像低于血管边界（%1 HU）：请点击更靠近血管中心的位置</translation>
+    </message>
+    <message>
+        <source>a %1 takes %2 points</source>
+        <translation>%1 需要 %2 个点</translation>
+    </message>
+    <message>
+        <source>not a vessel network frame: the array %1 is missing</source>
+        <translation>不是血管网络帧：缺少数组 %1</translation>
+    </message>
+    <message>
+        <source>the label has no lumen voxels (value %1) to fill with particles</source>
+        <translation>标签中没有可填充粒子的管腔体素（值 %1）</translation>
+    </message>
+    <message>
+        <source>a particle spacing of %1 mm needs %2 lattice points over the lumen: choose a larger spacing</source>
+        <translation>%1 mm 的粒子间距需要在管腔上布置 %2 个格点：请选择更大的间距</translation>
+    </message>
+    <message>
+        <source>the mesh has no point-data array &apos;%1&apos; for %2 (its arrays: %3)</source>
+        <translation>网格没有用于 %2 的点数据数组 &apos;%1&apos;（现有数组：%3）</translation>
+    </message>
+    <message>
+        <source>the vessel end %1 cuts no triangle of the lumen surface: is the surface from the same label as the centerlines?</source>
+        <translation>血管末端 %1 未切割管腔表面的任何三角形：表面与中心线是否来自同一标签？</translation>
+    </message>
+    <message>
+        <source>the wall thickness must lie in 0.1..10 mm (%1 given)</source>
+        <translation>管壁厚度必须在 0.1..10 mm 之间（给定 %1）</translation>
+    </message>
+    <message>
+        <source>cannot set a DICOM attribute of the report: %1</source>
+        <translation>无法设置报告的 DICOM 属性：%1</translation>
+    </message>
+    <message>
+        <source>cannot encapsulate the PDF: %1</source>
+        <translation>无法封装 PDF：%1</translation>
+    </message>
+    <message>
+        <source>cannot write the DICOM report: %1</source>
+        <translation>无法写入 DICOM 报告：%1</translation>
+    </message>
+    <message>
+        <source>unknown page size &apos;%1&apos;; use a4 or letter</source>
+        <translation>未知纸张大小 &apos;%1&apos;；请使用 a4 或 letter</translation>
+    </message>
+    <message>
+        <source>%1: the initial state holds %2</source>
+        <translation>%1：初始状态含有 %2</translation>
+    </message>
+    <message>
+        <source>a spring constraint names node %1 of %2</source>
+        <translation>弹簧约束指定了 %2 个节点中的节点 %1</translation>
+    </message>
+    <message>
+        <source>element %1 refers to node %2 of %3</source>
+        <translation>单元 %1 引用了 %3 个节点中的节点 %2</translation>
+    </message>
+    <message>
+        <source>element %1: %2</source>
+        <translation>单元 %1：%2</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus must be positive (%1 Pa given)</source>
+        <translation>杨氏模量必须为正（给定 %1 Pa）</translation>
+    </message>
+    <message>
+        <source>Poisson&apos;s ratio must lie in (-1, 0.5) (%1 given)</source>
+        <translation>泊松比必须在 (-1, 0.5) 内（给定 %1）</translation>
+    </message>
+    <message>
+        <source>the density must be positive (%1 kg/m^3 given)</source>
+        <translation>密度必须为正（给定 %1 kg/m^3）</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos; (known: %2)</source>
+        <translation>未知验证算例 &apos;%1&apos;（已知：%2）</translation>
+    </message>
+    <message>
+        <source>St. Venant-Kirchhoff material needs mu &gt; 0 and lambda &gt;= 0 (got mu %1 Pa, lambda %2 Pa)</source>
+        <translation>St. Venant-Kirchhoff 材料需要 mu &gt; 0 且 lambda &gt;= 0（得到 mu %1 Pa，lambda %2 Pa）</translation>
+    </message>
+    <message>
+        <source>the quadratic wall model has %1 material indices for %2 elements</source>
+        <translation>二次管壁模型有 %1 个材料索引，而单元数为 %2</translation>
+    </message>
+    <message>
+        <source>element %1 has material %2 of %3</source>
+        <translation>单元 %1 的材料为 %3 个中的第 %2 个</translation>
+    </message>
+    <message>
+        <source>quadratic element %1 is degenerate or inverted (volume %2 m^3)</source>
+        <translation>二次单元 %1 退化或翻转（体积 %2 m^3）</translation>
+    </message>
+    <message>
+        <source>%1 elements are inverted at the start of the static solve%2</source>
+        <translation>静态求解开始时有 %1 个单元翻转%2</translation>
+    </message>
+    <message>
+        <source>the saved wall state has %1 nodes, the wall %2</source>
+        <translation>保存的管壁状态有 %1 个节点，而管壁有 %2 个</translation>
+    </message>
+    <message>
+        <source>heat-decay: the run at %1 cells stopped: %2</source>
+        <translation>heat-decay：%1 个单元的运行已停止：%2</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos; (known: heat-decay)</source>
+        <translation>未知验证算例 &apos;%1&apos;（已知：heat-decay）</translation>
+    </message>
+    <message>
+        <source>outlet node %1 has no boundary condition (a pressure or a terminal resistance)</source>
+        <translation>出口节点 %1 没有边界条件（压力或末端阻力）</translation>
+    </message>
+    <message>
+        <source>node %1 takes in flow but no open vessel leaves it</source>
+        <translation>节点 %1 有流入，但没有开放血管流出</translation>
+    </message>
+    <message>
+        <source>the inlet segment %1 does not exist (the tree has %2 segments)</source>
+        <translation>入口节段 %1 不存在（树有 %2 个节段）</translation>
+    </message>
+    <message>
+        <source>the inlet &apos;%1&apos; is not a point x,y,z (mm)</source>
+        <translation>入口 &apos;%1&apos; 不是点 x,y,z（mm）</translation>
+    </message>
+    <message>
+        <source>the inlet point %1 lies %2 mm from the nearest vessel (at most %3 mm)</source>
+        <translation>入口点 %1 距最近的血管 %2 mm（最多 %3 mm）</translation>
+    </message>
+    <message>
+        <source>no segment of the tree is named &apos;%1&apos;%2</source>
+        <translation>树中没有名为 &apos;%1&apos; 的节段%2</translation>
+    </message>
+    <message>
+        <source>feeder edit: segment %1 is not in the network (%2 segments)</source>
+        <translation>供血支编辑：节段 %1 不在网络中（%2 个节段）</translation>
+    </message>
+    <message>
+        <source>feeder edit: segment %1 is both added and removed</source>
+        <translation>供血支编辑：节段 %1 同时被添加和移除</translation>
+    </message>
+    <message>
+        <source>end radii are given for %1 of %2 centerline edges</source>
+        <translation>只为 %2 条中心线边中的 %1 条给出了端部半径</translation>
+    </message>
+    <message>
+        <source>centerline edge %1 has no positive radius: measure the vessels again</source>
+        <translation>中心线边 %1 没有正的半径：请重新测量血管</translation>
+    </message>
+    <message>
+        <source>control point %1 is not on the tree downstream of the tip</source>
+        <translation>控制点 %1 不在导管尖端下游的树上</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos;; network cases: network-cylinder, network-cone, network-conservation, network-bifurcation, network-confluence, network-annulus, network-mixing, network-two-phase-split</source>
+        <translation>未知验证算例 &apos;%1&apos;；网络算例：network-cylinder、network-cone、network-conservation、network-bifurcation、network-confluence、network-annulus、network-mixing、network-two-phase-split</translation>
+    </message>
+    <message>
+        <source>the catheter tip is node %1, which is not in the network</source>
+        <translation>导管尖端为节点 %1，但它不在网络中</translation>
+    </message>
+    <message>
+        <source>the catheter tip (node %1) is on a part of the network that is not connected to its root</source>
+        <translation>导管尖端（节点 %1）位于未与根部相连的网络部分</translation>
+    </message>
+    <message>
+        <source>nothing is downstream of the catheter tip (node %1 is an end of the tree): place it nearer the root (node %2)</source>
+        <translation>导管尖端下游没有任何节段（节点 %1 是树的末端）：请将其放得更靠近根部（节点 %2）</translation>
+    </message>
+    <message>
+        <source>the void fraction must be in [0, 1), not %1</source>
+        <translation>空隙率必须在 [0, 1) 内，而不是 %1</translation>
+    </message>
+    <message>
+        <source>the catheter tip (node %1) is not connected to the root</source>
+        <translation>导管尖端（节点 %1）未与根部相连</translation>
+    </message>
+    <message>
+        <source>a smoke grid needs at least 2 cells along each axis and a positive cell size (got %1 x %2 x %3)</source>
+        <translation>烟雾网格每个轴至少需要 2 个单元且单元尺寸为正（得到 %1 x %2 x %3）</translation>
+    </message>
+    <message>
+        <source>smoke-taylor-green: %1</source>
+        <translation>smoke-taylor-green：%1</translation>
+    </message>
+    <message>
+        <source>smoke-mass: %1</source>
+        <translation>smoke-mass：%1</translation>
+    </message>
+    <message>
+        <source>smoke-ball: %1</source>
+        <translation>smoke-ball：%1</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos; (known: smoke-divergence, smoke-taylor-green, smoke-mass, smoke-ball)</source>
+        <translation>未知验证算例 &apos;%1&apos;（已知：smoke-divergence、smoke-taylor-green、smoke-mass、smoke-ball）</translation>
+    </message>
+    <message>
+        <source>%1: the run stopped: %2</source>
+        <translation>%1：运行已停止：%2</translation>
+    </message>
+    <message>
+        <source>a periodic axis must be at least 2.5 kernel supports long (%1 mm)</source>
+        <translation>周期轴长度至少为 2.5 个核支撑域（%1 mm）</translation>
+    </message>
+    <message>
+        <source>the particles spread over more than %1 neighbour cells</source>
+        <translation>粒子分布超过 %1 个邻域单元</translation>
+    </message>
+    <message>
+        <source>the open boundary &apos;%1&apos; needs a unit normal and a positive radius</source>
+        <translation>开放边界 &apos;%1&apos; 需要单位法向量和正的半径</translation>
+    </message>
+    <message>
+        <source>a buffer particle names open boundary %1 of %2</source>
+        <translation>缓冲粒子指定了 %2 个开放边界中的第 %1 个</translation>
+    </message>
+    <message>
+        <source>the open boundary &apos;%1&apos; has no buffer particles behind it</source>
+        <translation>开放边界 &apos;%1&apos; 后方没有缓冲粒子</translation>
+    </message>
+    <message>
+        <source>unknown validation case &apos;%1&apos; (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis)</source>
+        <translation>未知验证算例 &apos;%1&apos;（已知：sph-kernel、sph-fpm、sph-hydrostatic、sph-poiseuille、sph-womersley、sph-mass、sph-stenosis）</translation>
+    </message>
+    <message>
+        <source>the stenosis pipe needs a mean speed &gt; 0 and room for the sections past the throat (length &gt;= %1 mm)</source>
+        <translation>狭窄管需要平均速度 &gt; 0，并为喉部之后的截面留出空间（长度 &gt;= %1 mm）</translation>
+    </message>
+    <message>
+        <source>no section lies %1 mm from both ends of the path to compare with</source>
+        <translation>路径上没有距两端均为 %1 mm 的可比较截面</translation>
+    </message>
+    <message>
+        <source>unknown artifact kind &apos;%1&apos;</source>
+        <translation>未知工件类型 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>cannot replace file: %1</source>
+        <translation>无法替换文件：%1</translation>
+    </message>
+    <message>
+        <source>the mask&apos;s grid does not match the image&apos;s (%1): mask %2; image %3</source>
+        <translation>掩模网格与图像网格不一致（%1）：掩模 %2；图像 %3</translation>
+    </message>
+    <message>
+        <source>the mask holds the value %1, outside the labels 1..255: give the label value to use (--label-value N)</source>
+        <translation>掩模含有值 %1，超出标签范围 1..255：请给出要使用的标签值（--label-value N）</translation>
+    </message>
+    <message>
+        <source>the study was written by a newer VascuSim (schema %1); this build reads schema %2 and older</source>
+        <translation>该研究由较新版本的 VascuSim 写入（架构 %1）；本版本可读取架构 %2 及更早版本</translation>
+    </message>
+    <message>
+        <source>segment %1 of the network file: %2</source>
+        <translation>网络文件的节段 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot read the network file: %1</source>
+        <translation>无法读取网络文件：%1</translation>
+    </message>
+    <message>
+        <source>the run has no frame %1 (it kept %2)</source>
+        <translation>该运行没有帧 %1（它保留了 %2 帧）</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; is a %2, not a %3</source>
+        <translation>工件 &apos;%1&apos; 是 %2，而不是 %3</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; is damaged: %2</source>
+        <translation>工件 &apos;%1&apos; 已损坏：%2</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; is a %2, not a run</source>
+        <translation>工件 &apos;%1&apos; 是 %2，而不是运行</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; is not a volume</source>
+        <translation>工件 &apos;%1&apos; 不是体积</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; was not removed; nothing to restore</source>
+        <translation>工件 &apos;%1&apos; 未被移除；无需恢复</translation>
+    </message>
+    <message>
+        <source>cannot open the study&apos;s lock file: %1</source>
+        <translation>无法打开研究的锁文件：%1</translation>
+    </message>
+    <message>
+        <source>cannot lock the study: %1</source>
+        <translation>无法锁定研究：%1</translation>
+    </message>
+    <message>
+        <source>the study is being written by %1; wait for it (--wait SECONDS) or open the study read-only</source>
+        <translation>该研究正由 %1 写入；请等待（--wait SECONDS）或以只读方式打开研究</translation>
+    </message>
+    <message>
+        <source>cannot move the stale lock aside: %1</source>
+        <translation>无法移开过期的锁：%1</translation>
+    </message>
+    <message>
+        <source>the surface has no field &apos;%1&apos; to colour by</source>
+        <translation>表面没有可用于着色的场 &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the %1 frame has no field &apos;%2&apos; to show in the slices</source>
+        <translation>%1 帧没有可在切片中显示的场 &apos;%2&apos;</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

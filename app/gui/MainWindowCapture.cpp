@@ -93,7 +93,7 @@ QString MainWindow::saveScreenshot(QWidget* view)
         const QImage picture = view ? captureView(view) : captureWindow(this);
         const QString file = freeFilePath(captureFolder(), timeStamp(view ? view->objectName() : QStringLiteral("window")), "png");
         if (picture.isNull() || !picture.save(file, "PNG"))
-            throw Error("could not write " + file.toStdString());
+            throw Error(Pattern{"could not write %1", {file.toStdString()}});
         statusBar()->showMessage(tr("Screenshot saved: %1").arg(file), 8000);
         return file;
     }

@@ -102,7 +102,7 @@ bool MainWindow::sendToPacs(const PacsSendRequest& request)
         tr("Send to PACS %1").arg(request.nodeName),
         [this, request, outbox, stored](const Progress& progress) {
             if (std::filesystem::exists(outbox))
-                throw Error("the outbox folder exists already: " + outbox.string());
+                throw Error(Pattern{"the outbox folder exists already: %1", {outbox.string()}});
             std::filesystem::create_directories(outbox);
             std::vector<std::filesystem::path> files;
             const auto removeOurs = [&] {

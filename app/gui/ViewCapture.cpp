@@ -66,7 +66,7 @@ MovieResult writeMovie(const QString& parent, const QString& stem, int frameCoun
         }
         const QString file = QDir(result.folder).filePath(QStringLiteral("frame-%1.png").arg(i + 1, 4, 10, QChar('0')));
         if (!frame(i).save(file, "PNG"))
-            throw Error("could not write the movie frame " + file.toStdString());
+            throw Error(Pattern{"could not write the movie frame %1", {file.toStdString()}});
         written.push_back(file.toStdString());
         ++result.frames;
     }

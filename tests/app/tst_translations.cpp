@@ -3,8 +3,8 @@
 // tab, header, tooltip and parameter form is read: a user-visible text without the brackets never went
 // through tr(). Then the shipped German and Simplified Chinese catalogues: every parameter table's text is
 // translated, the window built under each shows its menus in that language, and the Chinese glyphs come from
-// a CJK font (no missing-glyph boxes). Marker phantom (MarkerPhantom.h); screenshots in
-// test-output/gui-translations.
+// a CJK font (no missing-glyph boxes), and the libraries' error messages come in the window's language. Marker
+// phantom (MarkerPhantom.h); screenshots in test-output/gui-translations.
 #include "DicomImportDialog.h"
 #include "EndoscopePanel.h"
 #include "GuiTestMain.h"
@@ -18,6 +18,7 @@
 #include "ViewCapture.h"
 #include "ViewLayout.h"
 #include "vsim/app/ParameterCatalogue.h"
+#include "vsim/core/Error.h"
 #include "vsim/study/Study.h"
 #include "vsim/viz/SliceView.h"
 
@@ -310,12 +311,14 @@ private slots:
         QTest::addColumn<QString>("file");
         QTest::addColumn<QString>("view");
         QTest::addColumn<QString>("guideTitle");
+        QTest::addColumn<QString>("fileKey");
         QTest::newRow("de") << "de"
                             << "&Datei"
                             << "&Ansicht"
-                            << "VascuSim-Benutzerhandbuch";
+                            << "VascuSim-Benutzerhandbuch"
+                            << "Datei";
         QTest::newRow("zh_CN") << "zh_CN" << QString::fromUtf8("文件(&F)") << QString::fromUtf8("视图(&V)")
-                               << QString::fromUtf8("VascuSim 用户指南");
+                               << QString::fromUtf8("VascuSim 用户指南") << QString::fromUtf8("文件");
     }
 
     // View > Language keeps the choice; the next window (as at the next start) speaks it, and its text
@@ -326,6 +329,7 @@ private slots:
         QFETCH(QString, file);
         QFETCH(QString, view);
         QFETCH(QString, guideTitle);
+        QFETCH(QString, fileKey);
         {
             gui::MainWindow chooser;
             QAction* choice = chooser.findChild<QAction*>("language_" + language);
@@ -354,6 +358,16 @@ private slots:
         // Help > User Guide opens the guide in that language.
         gui::HelpWindow help(&window);
         QCOMPARE(help.browser()->documentTitle(), guideTitle);
+        // The libraries' error messages as the window shows them: a literal message, its context key, and a
+        // pattern's words around its value, in that language; what() stays English (logs, the CLI).
+        const Error plain("the skeleton is empty: run the skeleton step first", {{"file", "walk.vsim"}});
+        const Error pattern(Pattern{"the study has no artifact '%1'", {"run-3"}});
+        const QString shown = QString::fromStdString(plain.textForPeople());
+        QVERIFY2(!shown.contains("skeleton is empty") && shown.contains(fileKey + ": walk.vsim"), qPrintable(shown));
+        QVERIFY(std::string(plain.what()).find("the skeleton is empty") == 0);
+        const QString filled = QString::fromStdString(pattern.messageForPeople());
+        QVERIFY2(filled.contains("'run-3'") && !filled.contains("has no artifact"), qPrintable(filled));
+        QCOMPARE(pattern.message(), std::string("the study has no artifact 'run-3'"));
         window.close();
         QVERIFY(gui::installLanguage("en") ==
                 false); // English is the source: no catalogue, the texts as written

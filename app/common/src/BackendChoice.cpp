@@ -9,7 +9,7 @@ namespace vsim::app {
 bool chooseCuda(const std::string& requested, std::string& device)
 {
     if (requested != "auto" && requested != "cpu" && requested != "cuda")
-        throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
+        throw Error(Pattern{"unknown backend '%1' (auto, cpu, cuda)", {requested}});
     if (requested == "cpu")
         return false;
     const std::string unavailable = gpuUnavailableReason();
@@ -19,7 +19,7 @@ bool chooseCuda(const std::string& requested, std::string& device)
         return true;
     }
     if (requested == "cuda")
-        throw Error(unavailable + ": use --backend cpu or auto");
+        throw Error(Pattern{"%1: use --backend cpu or auto", {unavailable}});
     return false;
 }
 

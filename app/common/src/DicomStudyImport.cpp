@@ -100,8 +100,8 @@ std::string addDicomVolumeToStudy(study::Study& study, dicom::DicomVolume volume
     // A series fetched or imported twice is recognised: the study keeps one copy (PS3.3 C.7.3.1: the Series
     // Instance UID names the series wherever it comes from).
     if (const study::Artifact* artifact = imageOfSeries(study, attribute(volume.attributes, "series_instance_uid")))
-        throw Error("this series is already in the study, as " + artifact->id + " (" + artifact->name +
-                    "): it is not imported twice");
+        throw Error(Pattern{"this series is already in the study, as %1 (%2): it is not imported twice",
+                            {artifact->id, artifact->name}});
     acceptAsHounsfield(volume.image, rescale, volume.warnings); // before the study changes: a refusal adds nothing
     adoptStudyMetadata(study, volume.attributes);
     study::Provenance provenance;
@@ -131,8 +131,8 @@ const dicom::DicomSeries& chooseSeries(const dicom::DicomScanResult& scan, const
     {
         if (const dicom::DicomSeries* series = scan.find(keyOrUid))
             return *series;
-        throw Error("no series '" + keyOrUid + "' among the " + std::to_string(scan.series.size()) +
-                    " series found (see --list)");
+        throw Error(Pattern{"no series '%1' among the %2 series found (see --list)",
+                            {keyOrUid, std::to_string(scan.series.size())}});
     }
     if (const dicom::DicomSeries* series = scan.defaultSeries())
         return *series;

@@ -18,10 +18,10 @@ std::vector<double> numbers(const std::string& text, std::size_t count)
         char* end = nullptr;
         values.push_back(std::strtod(item.c_str(), &end));
         if (end == item.c_str())
-            throw Error("'" + text + "' is not " + std::to_string(count) + " numbers separated by commas");
+            throw Error(Pattern{"'%1' is not %2 numbers separated by commas", {text, std::to_string(count)}});
     }
     if (values.size() != count)
-        throw Error("'" + text + "' is not " + std::to_string(count) + " numbers separated by commas");
+        throw Error(Pattern{"'%1' is not %2 numbers separated by commas", {text, std::to_string(count)}});
     return values;
 }
 

@@ -143,8 +143,8 @@ InjectionRun runInjection(const study::Study& study, const InjectionSetup& setup
         parameters.set("spacing_mm", setup.needleBoreMm / 3.0);
     const double spacingMm = parameters.get("spacing_mm");
     if (setup.needleBoreMm < 2.0 * spacingMm)
-        throw Error("the needle's bore (" + numberText(setup.needleBoreMm) + " mm) needs at least two particles "
-                    "across: a spacing of at most " + numberText(0.5 * setup.needleBoreMm) + " mm");
+        throw Error(Pattern{"the needle's bore (%1 mm) needs at least two particles across: a spacing of at most %2 mm",
+                            {numberText(setup.needleBoreMm), numberText(0.5 * setup.needleBoreMm)}});
     if (!given(setup, "void_fraction"))
         parameters.set("void_fraction", kTable51VoidFraction);
     if (!given(setup, "reference_pressure_pa"))

@@ -120,7 +120,7 @@ std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& stu
         for (std::size_t i = 0; i < volume.size() && !any; ++i)
             any = value == 0 ? volume.data()[i] != 0 : volume.data()[i] == value;
         if (!any)
-            throw Error("the tumour volume has no voxel of value " + std::to_string(value));
+            throw Error(Pattern{"the tumour volume has no voxel of value %1", {std::to_string(value)}});
         return [volume, value](const Eigen::Vector3d& p) {
             const Eigen::Vector3d index = volume.geometry().patientToIndex(p);
             const int i = int(std::lround(index.x())), j = int(std::lround(index.y())), k = int(std::lround(index.z()));
@@ -134,7 +134,7 @@ std::function<bool(const Eigen::Vector3d&)> volumeRegion(const study::Study& stu
         return regionOf(study.loadLabel(artifactId));
     if (kind == study::ArtifactKind::Image)
         return regionOf(study.loadImage(artifactId));
-    throw Error("the tumour must be a label or image artifact, not a " + study::kindName(kind));
+    throw Error(Pattern{"the tumour must be a label or image artifact, not a %1", {study::kindName(kind)}});
 }
 
 LabelVolume labelArtifact(const study::Study& study, const std::string& artifactId, const std::string& what)
@@ -143,7 +143,7 @@ LabelVolume labelArtifact(const study::Study& study, const std::string& artifact
     if (kind == study::ArtifactKind::Label)
         return study.loadLabel(artifactId);
     if (kind != study::ArtifactKind::Image)
-        throw Error("the " + what + " must be a label or image artifact, not a " + study::kindName(kind));
+        throw Error(Pattern{"the %1 must be a label or image artifact, not a %2", {what, study::kindName(kind)}});
     const CtVolume image = study.loadImage(artifactId);
     LabelVolume label(image.geometry());
     for (std::size_t i = 0; i < image.size(); ++i)
@@ -169,7 +169,8 @@ void applyRecordedChoices(sim::network::NetworkRunSetup& setup, const std::map<s
         {
             item.erase(std::remove(item.begin(), item.end(), ' '), item.end());
             if (item.empty() || !std::all_of(item.begin(), item.end(), [](unsigned char c) { return std::isdigit(c); }))
-                throw Error(std::string(key) + ": '" + item + "' is not a segment number (feeders.csv lists them)");
+                throw Error(Pattern{"%1: '%2' is not a segment number (feeders.csv lists them)",
+                                    {std::string(key), item}});
             list.push_back(std::stoi(item));
         }
         return list;

@@ -47,7 +47,7 @@ void renameSegment(study::Study& study, const std::string& centerlinesId, std::s
         throw Error("not a centerlines artifact", {{"artifact", centerlinesId}});
     const std::size_t count = study.loadSkeleton(centerlinesId).edges.size();
     if (index >= count)
-        throw Error("no such segment: the centerlines have segments 0 to " + std::to_string(count - 1),
+        throw Error(Pattern{"no such segment: the centerlines have segments 0 to %1", {std::to_string(count - 1)}},
                     {{"segment", std::to_string(index)}});
     if (name.find_first_not_of(" \t") == std::string::npos)
         throw Error("a segment's name cannot be empty");

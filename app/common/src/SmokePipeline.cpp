@@ -65,7 +65,7 @@ SmokeSetup smokeSetup(const std::string& scenario)
 {
     const std::vector<std::string> known = sim::smoke::smokeScenarios();
     if (std::find(known.begin(), known.end(), scenario) == known.end())
-        throw Error("unknown smoke scenario '" + scenario + "' (ball-drop, evh, liver-ablation)");
+        throw Error(Pattern{"unknown smoke scenario '%1' (ball-drop, evh, liver-ablation)", {scenario}});
     SmokeSetup setup;
     setup.scenario = scenario;
     setup.parameters = ParameterSet(sim::smoke::smokeParameters(scenario));

@@ -51,7 +51,7 @@ RadiusPath pathBetween(const VesselNetwork& network, int from, int to)
         }
     }
     if (viaSegment[std::size_t(to)] == -2)
-        throw Error("the vessel ends " + std::to_string(from) + " and " + std::to_string(to) + " are not connected");
+        throw Error(Pattern{"the vessel ends %1 and %2 are not connected", {std::to_string(from), std::to_string(to)}});
     std::vector<std::pair<int, int>> steps; // (segment, its start node on the way) from `to` back to `from`
     for (int node = to; node != from;)
     {
@@ -120,11 +120,11 @@ SphVessels sphVessels(const study::Study& study, const std::string& centerlinesI
     SphVessels vessels{buildStudyNetwork(study, centerlinesId, warnings, progress), labelOfCenterlines(study, centerlinesId),
                        {}};
     if (vessels.labelId.empty())
-        throw Error("the centerlines '" + centerlinesId + "' have no lumen label to fill with particles");
+        throw Error(Pattern{"the centerlines '%1' have no lumen label to fill with particles", {centerlinesId}});
     vessels.ends = vessels.network.endNodes();
     if (vessels.ends.size() < 2)
-        throw Error("the vessels need at least two open ends (" + feeder + "'s and an outlet); the centerlines have " +
-                    std::to_string(vessels.ends.size()));
+        throw Error(Pattern{"the vessels need at least two open ends (%1's and an outlet); the centerlines have %2",
+                            {feeder, std::to_string(vessels.ends.size())}});
     return vessels;
 }
 
@@ -136,7 +136,7 @@ int chosenEnd(const SphVessels& vessels, int wanted, const std::string& role)
         std::string list;
         for (int e : vessels.ends)
             list += (list.empty() ? "" : ", ") + std::to_string(e);
-        throw Error(role + "'s node " + std::to_string(node) + " is not a vessel end (ends: " + list + ")");
+        throw Error(Pattern{"%1's node %2 is not a vessel end (ends: %3)", {role, std::to_string(node), list}});
     }
     return node;
 }

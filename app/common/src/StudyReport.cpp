@@ -68,7 +68,9 @@ report::Report buildStudyReport(const study::Study& study, const ReportOptions& 
     const std::vector<std::string> known = reportSectionIds();
     for (const std::string& id : options.sections)
         if (std::find(known.begin(), known.end(), id) == known.end())
-            throw Error("unknown report section '" + id + "'; sections: aaa, stenosis, chemoembolization, smoke, measurements, runs");
+            throw Error(Pattern{"unknown report section '%1'; sections: aaa, stenosis, chemoembolization, smoke, "
+                                "measurements, runs",
+                                {id}});
     auto wanted = [&](const std::string& id) { return options.sections.empty() || options.sections.count(id) > 0; };
 
     report::Report report;

@@ -37,14 +37,14 @@ std::unique_ptr<QTranslator> loadCatalogue(const std::string& code)
     const std::vector<std::string> known = textLanguages();
     const bool file = isCatalogueFile(code);
     if (!file && std::find(known.begin(), known.end(), code) == known.end())
-        throw Error("unknown language '" + code + "'; use en, de, zh_CN or a catalogue file (.qm)");
+        throw Error(Pattern{"unknown language '%1'; use en, de, zh_CN or a catalogue file (.qm)", {code}});
     if (code == "en")
         return nullptr;
     auto catalogue = std::make_unique<QTranslator>();
     if (file && !catalogue->load(QString::fromStdString(code)))
         throw Error("not a translation catalogue (.qm)", {{"file", code}});
     if (!file && !catalogue->load(QLocale(QString::fromStdString(code)), "vascusim", "_", ":/i18n"))
-        throw Error("the " + code + " catalogue is missing from this build (:/i18n/vascusim_" + code + ".qm)");
+        throw Error(Pattern{"the %1 catalogue is missing from this build (:/i18n/vascusim_%2.qm)", {code, code}});
     return catalogue;
 }
 

@@ -41,7 +41,7 @@ TriangleMesh frameSurface(const TetMesh& frame, const std::string& cellField)
 {
     const auto values = frame.cellFields.find(cellField);
     if (values == frame.cellFields.end())
-        throw Error("the frame has no cell field '" + cellField + "'");
+        throw Error(Pattern{"the frame has no cell field '%1'", {cellField}});
     TriangleMesh surface;
     surface.points = frame.points;
     std::vector<std::size_t> owners;
@@ -184,14 +184,14 @@ std::string wallGpuUnavailable(const std::string& protocol, const ParameterSet& 
 WallBackend chooseWallBackend(const std::string& requested, const std::string& protocol, const ParameterSet& parameters)
 {
     if (requested != "auto" && requested != "cpu" && requested != "cuda")
-        throw Error("unknown backend '" + requested + "' (auto, cpu, cuda)");
+        throw Error(Pattern{"unknown backend '%1' (auto, cpu, cuda)", {requested}});
     if (requested == "cpu")
         return {};
     const std::string unavailable = wallGpuUnavailable(protocol, parameters);
     if (unavailable.empty())
         return {"cuda", gpuPlugin()->deviceSummary(), gpuPlugin()->wallStepperFactory()};
     if (requested == "cuda")
-        throw Error(unavailable + ": use --backend cpu or auto");
+        throw Error(Pattern{"%1: use --backend cpu or auto", {unavailable}});
     return {};
 }
 
@@ -211,7 +211,7 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
         run = sim::fem::runPhysiological(wall, centerlines, parameters, progress, backend.stepper, sac ? &*sac : nullptr);
     }
     else
-        throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
+        throw Error(Pattern{"unknown protocol '%1' (thesis-rupture, physiological, interactive)", {protocol}});
     run.metrics["wall_clock_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return run;
 }

@@ -263,8 +263,8 @@ sph::OpenBoundaryArgs boundaryArgs(const sim::sph::OpenBoundaries& boundaries, c
     sph::OpenBoundaryArgs args;
     const auto& list = boundaries.boundaries();
     if (list.size() > std::size_t(sph::kMaxOpenBoundaries))
-        throw Error("the CUDA SPH backend takes at most " + std::to_string(sph::kMaxOpenBoundaries) +
-                    " open boundaries; this case has " + std::to_string(list.size()));
+        throw Error(Pattern{"the CUDA SPH backend takes at most %1 open boundaries; this case has %2",
+                            {std::to_string(sph::kMaxOpenBoundaries), std::to_string(list.size())}});
     args.count = int(list.size());
     args.depth = float(boundaries.depth());
     args.capacity = capacity;
@@ -272,8 +272,9 @@ sph::OpenBoundaryArgs boundaryArgs(const sim::sph::OpenBoundaries& boundaries, c
     {
         const sim::sph::OpenBoundary& b = list[k];
         if (b.tracer)
-            throw Error("the CUDA SPH backend does not carry a tracer yet: inlet '" + b.name +
-                        "' lets one in; run this case on the CPU (--backend cpu)");
+            throw Error(Pattern{"the CUDA SPH backend does not carry a tracer yet: inlet '%1' lets one in; run this "
+                                "case on the CPU (--backend cpu)",
+                                {b.name}});
         sph::OpenBoundaryParams& p = args.b[k];
         const Eigen::Vector3d centre = b.centreM - boxLowM;
         for (int a = 0; a < 3; ++a)
@@ -333,7 +334,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     const std::size_t cells = std::size_t(params.dims[0]) * std::size_t(params.tilesY) * tilesZ *
                               std::size_t(params.tile) * std::size_t(params.tile);
     if (cells >= (std::size_t(1) << 31))
-        throw Error("the SPH domain spans too many cells for the GPU grid: " + std::to_string(cells));
+        throw Error(Pattern{"the SPH domain spans too many cells for the GPU grid: %1", {std::to_string(cells)}});
     params.removedKey = unsigned(cells);
     // With open boundaries the count changes: room for a tenth more particles and two buffers' worth of
     // copies in one step.

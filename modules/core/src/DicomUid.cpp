@@ -71,8 +71,9 @@ std::string newDicomUid()
 void setDicomUidRoot(const std::string& root)
 {
     if (!root.empty() && !validPrefix(root))
-        throw Error("a UID root is digits in components separated by dots, without leading zeros, at most 32 "
-                    "characters (e.g. 1.2.826.0.1.3680043.10.1234), not '" + root + "'");
+        throw Error(Pattern{"a UID root is digits in components separated by dots, without leading zeros, at most 32 "
+                            "characters (e.g. 1.2.826.0.1.3680043.10.1234), not '%1'",
+                            {root}});
     std::lock_guard lock(g_mutex);
     g_root = root;
 }

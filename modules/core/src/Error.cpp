@@ -16,13 +16,20 @@ std::string describe(const std::string& message, const Error::Context& context, 
 } // namespace
 
 Error::Error(const std::string& message, Context context)
-    : std::runtime_error(describe(message, context)), m_message(message), m_context(std::move(context))
+    : std::runtime_error(describe(message, context)), m_message(message), m_context(std::move(context)), m_words(message)
 {
+}
+
+Error::Error(const Pattern& message, Context context)
+    : Error(withArguments(message.text, message.values), std::move(context))
+{
+    m_words = message.text;
+    m_values = message.values;
 }
 
 std::string Error::messageForPeople() const
 {
-    return localizedText("vsim::Error", m_message);
+    return withArguments(localizedText("vsim::Error", m_words), m_values);
 }
 
 std::string Error::textForPeople() const

@@ -67,10 +67,10 @@ void acceptAsHounsfield(CtVolume& ct, const std::optional<HounsfieldRescale>& re
     const std::string why = whyNotHounsfield(ct);
     if (why.empty())
         return;
-    throw Error("the values are not CT Hounsfield units: " + why +
-                    (rescale ? ", even after the rescale given"
+    throw Error(Pattern{"the values are not CT Hounsfield units: %1%2",
+                        {why, (rescale ? ", even after the rescale given"
                              : ". If they are CT numbers stored without their rescale, import again with "
-                               "--rescale SLOPE,INTERCEPT (stored values 0..4095 usually need --rescale 1,-1024)"),
+                               "--rescale SLOPE,INTERCEPT (stored values 0..4095 usually need --rescale 1,-1024)")}},
                 {{"option", "--rescale"}});
 }
 

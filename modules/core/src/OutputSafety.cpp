@@ -48,7 +48,8 @@ void checkOutputFolder(const fs::path& folder, const std::string& purpose)
         while (!ancestor.empty() && !fs::exists(ancestor, error) && ancestor != ancestor.parent_path())
             ancestor = ancestor.parent_path();
         if (!ancestor.empty() && fs::exists(ancestor, error) && !fs::is_directory(ancestor, error))
-            throw Error("cannot create the output folder: " + ancestor.string() + " is a file", {{"folder", folder.string()}});
+            throw Error(Pattern{"cannot create the output folder: %1 is a file",
+                                {ancestor.string()}}, {{"folder", folder.string()}});
         return;
     }
     if (!fs::is_directory(status))
@@ -59,8 +60,8 @@ void checkOutputFolder(const fs::path& folder, const std::string& purpose)
     std::ifstream marker(folder / kOwnedFolderMarker);
     std::string other;
     if (marker && std::getline(marker, other) && other.rfind("vascusim ", 0) == 0)
-        throw Error("the output folder is VascuSim's " + other.substr(9) + " folder, not a " + purpose +
-                        " folder; choose a new or empty folder",
+        throw Error(Pattern{"the output folder is VascuSim's %1 folder, not a %2 folder; choose a new or empty folder",
+                            {other.substr(9), purpose}},
                     {{"folder", folder.string()}});
     if (!fs::is_empty(folder, error))
         throw Error("the output folder holds files VascuSim did not write; choose a new or empty folder",
@@ -75,7 +76,8 @@ void claimOutputFolder(const fs::path& folder, const std::string& purpose)
     {
         fs::create_directories(folder, error);
         if (error)
-            throw Error("cannot create the output folder: " + error.message(), {{"folder", folder.string()}});
+            throw Error(Pattern{"cannot create the output folder: %1",
+                                {error.message()}}, {{"folder", folder.string()}});
     }
     if (!isOwnedFolder(folder, purpose))
         writeMarker(folder, purpose);

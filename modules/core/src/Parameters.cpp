@@ -55,7 +55,7 @@ const ParameterSpec& ParameterSet::spec(const std::string& key) const
     std::string known;
     for (const ParameterSpec& spec : m_specs)
         known += (known.empty() ? "" : ", ") + spec.key;
-    throw Error("unknown parameter '" + key + "'", {{"key", key}, {"known parameters", known}});
+    throw Error(Pattern{"unknown parameter '%1'", {key}}, {{"key", key}, {"known parameters", known}});
 }
 
 void ParameterSet::set(const std::string& key, double value)
@@ -63,13 +63,13 @@ void ParameterSet::set(const std::string& key, double value)
     const ParameterSpec& declared = spec(key);
     const Error::Context context{{"key", key}, {"value", formatNumber(value)}, {"range", describeRange(declared)}};
     if (!std::isfinite(value))
-        throw Error("parameter '" + key + "' is not a finite number", context);
+        throw Error(Pattern{"parameter '%1' is not a finite number", {key}}, context);
     if (value < declared.minimum || value > declared.maximum)
-        throw Error("parameter '" + key + "' = " + formatNumber(value) + " is outside its range " +
-                        describeRange(declared),
+        throw Error(Pattern{"parameter '%1' = %2 is outside its range %3",
+                            {key, formatNumber(value), describeRange(declared)}},
                     context);
     if (declared.kind == ParameterSpec::Kind::Integer && value != std::round(value))
-        throw Error("parameter '" + key + "' must be a whole number, got " + formatNumber(value), context);
+        throw Error(Pattern{"parameter '%1' must be a whole number, got %2", {key, formatNumber(value)}}, context);
     m_values[key] = value;
 }
 
@@ -77,13 +77,14 @@ void ParameterSet::setFromText(const std::string& assignment)
 {
     const auto equals = assignment.find('=');
     if (equals == std::string::npos)
-        throw Error("expected key=value, got '" + assignment + "'", {{"text", assignment}});
+        throw Error(Pattern{"expected key=value, got '%1'", {assignment}}, {{"text", assignment}});
     const std::string key = trim(assignment.substr(0, equals));
     const std::string valueText = trim(assignment.substr(equals + 1));
     double value = 0.0;
     const auto [end, status] = std::from_chars(valueText.data(), valueText.data() + valueText.size(), value);
     if (status != std::errc() || end != valueText.data() + valueText.size() || valueText.empty())
-        throw Error("parameter '" + key + "' needs a number, got '" + valueText + "'", {{"key", key}, {"value", valueText}});
+        throw Error(Pattern{"parameter '%1' needs a number, got '%2'",
+                            {key, valueText}}, {{"key", key}, {"value", valueText}});
     set(key, value);
 }
 

@@ -90,8 +90,8 @@ void throwBadInput(const std::string& role, const SimulationInput& input, const 
 {
     const auto found = input.data.find(role);
     if (found == input.data.end())
-        throw Error("the solver needs a " + wanted + " as its input '" + role + "', and none was given");
-    throw Error("the solver's input '" + role + "' must be a " + wanted + ", not a " + dataKindName(found->second));
+        throw Error(Pattern{"the solver needs a %1 as its input '%2', and none was given", {wanted, role}});
+    throw Error(Pattern{"the solver's input '%1' must be a %2, not a %3", {role, wanted, dataKindName(found->second)}});
 }
 } // namespace detail
 

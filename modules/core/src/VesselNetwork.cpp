@@ -54,7 +54,8 @@ void VesselNetwork::validate() const
     const int nodeCount = int(nodes.size());
     for (std::size_t n = 0; n < nodes.size(); ++n)
         if (!nodes[n].positionMm.allFinite())
-            throw Error("node " + std::to_string(n) + " has a position that is not a number", {{"node", std::to_string(n)}});
+            throw Error(Pattern{"node %1 has a position that is not a number",
+                                {std::to_string(n)}}, {{"node", std::to_string(n)}});
     std::vector<int> parent(nodes.size());
     std::iota(parent.begin(), parent.end(), 0);
     for (std::size_t s = 0; s < segments.size(); ++s)
@@ -62,41 +63,46 @@ void VesselNetwork::validate() const
         const Segment& segment = segments[s];
         const Error::Context where{{"segment", std::to_string(s)}};
         if (segment.from < 0 || segment.from >= nodeCount || segment.to < 0 || segment.to >= nodeCount)
-            throw Error(segmentName(s) + " refers to a node that does not exist", where);
+            throw Error(Pattern{"%1 refers to a node that does not exist", {segmentName(s)}}, where);
         if (segment.from == segment.to)
-            throw Error(segmentName(s) + " starts and ends at node " + std::to_string(segment.from), where);
+            throw Error(Pattern{"%1 starts and ends at node %2",
+                                {segmentName(s), std::to_string(segment.from)}}, where);
         if (!(segment.lengthMm > 0.0) || !std::isfinite(segment.lengthMm))
-            throw Error(segmentName(s) + " has a length that is not positive", where);
+            throw Error(Pattern{"%1 has a length that is not positive", {segmentName(s)}}, where);
         if (!(segment.resistance >= 0.0) || !std::isfinite(segment.resistance))
-            throw Error(segmentName(s) + " has a negative or invalid resistance", where);
+            throw Error(Pattern{"%1 has a negative or invalid resistance", {segmentName(s)}}, where);
         if (!(segment.startRadiusMm > 0.0) || !(segment.endRadiusMm > 0.0) || !std::isfinite(segment.startRadiusMm) ||
             !std::isfinite(segment.endRadiusMm))
-            throw Error(segmentName(s) + " has a radius that is zero or negative (" + std::to_string(segment.startRadiusMm) +
-                            ", " + std::to_string(segment.endRadiusMm) + " mm)",
+            throw Error(Pattern{"%1 has a radius that is zero or negative (%2, %3 mm)",
+                                {segmentName(s), std::to_string(segment.startRadiusMm),
+                                 std::to_string(segment.endRadiusMm)}},
                         where);
         const int a = findSet(parent, segment.from), b = findSet(parent, segment.to);
         if (a == b)
-            throw Error(segmentName(s) + " (nodes " + std::to_string(segment.from) + " - " + std::to_string(segment.to) +
-                            ") closes a cycle: the network must be a tree",
+            throw Error(Pattern{"%1 (nodes %2 - %3) closes a cycle: the network must be a tree",
+                                {segmentName(s), std::to_string(segment.from), std::to_string(segment.to)}},
                         where);
         parent[std::size_t(a)] = b;
     }
     for (const Outlet& outlet : outlets)
     {
         if (outlet.node < 0 || outlet.node >= nodeCount)
-            throw Error("an outlet condition names node " + std::to_string(outlet.node) + ", which does not exist");
+            throw Error(Pattern{"an outlet condition names node %1, which does not exist",
+                                {std::to_string(outlet.node)}});
         const Error::Context where{{"node", std::to_string(outlet.node)}};
         if (!std::isfinite(outlet.pressurePa))
-            throw Error("the outlet at node " + std::to_string(outlet.node) + " has a pressure that is not a number", where);
+            throw Error(Pattern{"the outlet at node %1 has a pressure that is not a number",
+                                {std::to_string(outlet.node)}}, where);
         if (outlet.type == Outlet::Type::Resistance && (!(outlet.resistance >= 0.0) || !std::isfinite(outlet.resistance)))
-            throw Error("the outlet at node " + std::to_string(outlet.node) + " has a negative or invalid resistance", where);
+            throw Error(Pattern{"the outlet at node %1 has a negative or invalid resistance",
+                                {std::to_string(outlet.node)}}, where);
     }
     if (root >= nodeCount || root < -1)
-        throw Error("the network's root is node " + std::to_string(root) + ", which does not exist");
+        throw Error(Pattern{"the network's root is node %1, which does not exist", {std::to_string(root)}});
     for (const auto& [name, values] : segmentFields)
         if (values.size() != segments.size())
-            throw Error("segment field '" + name + "' has " + std::to_string(values.size()) + " values for " +
-                        std::to_string(segments.size()) + " segments");
+            throw Error(Pattern{"segment field '%1' has %2 values for %3 segments",
+                                {name, std::to_string(values.size()), std::to_string(segments.size())}});
 }
 
 } // namespace vsim

@@ -29,7 +29,7 @@ ViewMeasurement::Kind measurementKindFromName(const std::string& name)
     for (ViewMeasurement::Kind kind : {ViewMeasurement::Kind::Ruler, ViewMeasurement::Kind::Angle, ViewMeasurement::Kind::Roi})
         if (kindName(kind) == name)
             return kind;
-    throw Error("unknown measurement kind '" + name + "' (ruler, angle or roi)");
+    throw Error(Pattern{"unknown measurement kind '%1' (ruler, angle or roi)", {name}});
 }
 
 std::string measurementText(const ViewMeasurement& m, bool forPeople)

@@ -19,7 +19,8 @@ AnatomyPhantom buildAnatomyPhantom(PhantomKind kind, const PhantomOptions& optio
     case PhantomKind::Stenosis: return detail::buildAnatomyStenosis(options, scanner);
     case PhantomKind::Bifurcation: break;
     }
-    throw Error("the " + phantomKindName(kind) + " phantom exists in the analytic style only (--style analytic)");
+    throw Error(Pattern{"the %1 phantom exists in the analytic style only (--style analytic)",
+                        {phantomKindName(kind)}});
 }
 
 std::string anatomyTruthJson(const AnatomyPhantom& phantom, const PhantomOptions& options)

@@ -270,8 +270,9 @@ TransferSyntax transferSyntaxFromName(const std::string& name)
                                   TransferSyntax::JpegExtended})
         if (transferSyntaxName(syntax) == name)
             return syntax;
-    throw Error("unknown transfer syntax '" + name +
-                "'; known: explicit-le, implicit-le, jpeg-lossless, jpeg-ls, rle, jpeg-extended");
+    throw Error(Pattern{"unknown transfer syntax '%1'; known: explicit-le, implicit-le, jpeg-lossless, jpeg-ls, rle, "
+                        "jpeg-extended",
+                        {name}});
 }
 
 WrittenSeries writeCtSeries(const CtVolume& pixels, const SliceStack& stack, const CtSeriesDescription& description,

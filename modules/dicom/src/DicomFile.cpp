@@ -155,13 +155,13 @@ DicomImageHeader headerOf(DcmFileFormat& fileFormat, const std::filesystem::path
     if (format.rows <= 0 || format.columns <= 0)
         throw Error("DICOM image has no rows or columns");
     if (format.bitsAllocated != 8 && format.bitsAllocated != 16)
-        throw Error("unsupported pixel layout: " + std::to_string(format.bitsAllocated) + " bits allocated");
+        throw Error(Pattern{"unsupported pixel layout: %1 bits allocated", {std::to_string(format.bitsAllocated)}});
     if (format.bitsStored < 1 || format.bitsStored > format.bitsAllocated || format.highBit >= format.bitsAllocated ||
         format.highBit + 1 < format.bitsStored)
         throw Error("inconsistent Bits Stored / High Bit");
     const int frameCount = integer(dataset, DCM_NumberOfFrames, 1);
     if (frameCount < 1 || frameCount > 65535)
-        throw Error("invalid Number of Frames: " + std::to_string(frameCount));
+        throw Error(Pattern{"invalid Number of Frames: %1", {std::to_string(frameCount)}});
     header.frames = readFrames(dataset, frameCount);
 
     const std::pair<const char*, DcmTagKey> attributes[] = {

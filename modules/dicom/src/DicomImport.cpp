@@ -56,9 +56,9 @@ void refuseIfTooLarge(const DicomSeries& series, const SeriesGeometry& plan, con
     if (limit != 0 && needed > limit)
     {
         const auto& d = plan.grid.dims;
-        throw Error("the series needs " + gibibytes(needed) + " of memory for " + std::to_string(d[0]) + " x " +
-                        std::to_string(d[1]) + " x " + std::to_string(d[2]) + " voxels, but only " +
-                        gibibytes(limit) + " is available",
+        throw Error(Pattern{"the series needs %1 of memory for %2 x %3 x %4 voxels, but only %5 is available",
+                            {gibibytes(needed), std::to_string(d[0]), std::to_string(d[1]), std::to_string(d[2]),
+                             gibibytes(limit)}},
                     {{"needed_bytes", std::to_string(needed)}, {"available_bytes", std::to_string(limit)}});
     }
 }
@@ -97,8 +97,8 @@ void decodeSorted(const DicomSeries& series, const std::vector<DicomSlice>& sort
             }
             catch (const Error& error)
             {
-                throw Error("cannot decode image " + std::to_string(header.instanceNumber) + " of the series: " +
-                                error.message(),
+                throw Error(Pattern{"cannot decode image %1 of the series: %2",
+                                    {std::to_string(header.instanceNumber), error.message()}},
                             error.context());
             }
         },

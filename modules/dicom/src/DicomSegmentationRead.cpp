@@ -32,7 +32,7 @@ std::vector<double> numbers(DcmItem* item, const DcmTagKey& tag, unsigned long c
     std::vector<double> values(count);
     for (unsigned long n = 0; n < count; ++n)
         if (!item || item->findAndGetFloat64(tag, values[n], n).bad())
-            throw Error("the DICOM SEG has no " + what + " for every frame: its geometry is unknown");
+            throw Error(Pattern{"the DICOM SEG has no %1 for every frame: its geometry is unknown", {what}});
     return values;
 }
 
@@ -60,11 +60,12 @@ SegmentationMask readDicomSegmentation(const std::filesystem::path& file, std::s
     ensureDcmtkCodecs();
     DcmFileFormat format;
     if (format.loadFile(file.c_str()).bad())
-        throw Error("cannot read " + file.filename().string() + " as DICOM");
+        throw Error(Pattern{"cannot read %1 as DICOM", {file.filename().string()}});
     DcmDataset* ds = format.getDataset();
     OFString sopClass, type;
     if (ds->findAndGetOFString(DCM_SOPClassUID, sopClass).bad() || sopClass != UID_SegmentationStorage)
-        throw Error(file.filename().string() + " is not a DICOM Segmentation object (SOP class " + sopClass.c_str() + ")");
+        throw Error(Pattern{"%1 is not a DICOM Segmentation object (SOP class %2)",
+                            {file.filename().string(), sopClass.c_str()}});
     Uint16 rows = 0, columns = 0, bits = 0, maxFraction = 255;
     Sint32 frameCount = 0;
     ds->findAndGetUint16(DCM_Rows, rows);
@@ -76,9 +77,10 @@ SegmentationMask readDicomSegmentation(const std::filesystem::path& file, std::s
     if (!binary)
         ds->findAndGetUint16(DCM_MaximumFractionalValue, maxFraction);
     if (rows == 0 || columns == 0 || frameCount <= 0 || (binary ? bits != 1 : bits != 8))
-        throw Error("the DICOM SEG's image description is incomplete or unsupported (rows " + std::to_string(rows) +
-                    ", columns " + std::to_string(columns) + ", frames " + std::to_string(frameCount) + ", " +
-                    std::to_string(bits) + " bits, type " + type.c_str() + ")");
+        throw Error(Pattern{"the DICOM SEG's image description is incomplete or unsupported (rows %1, columns %2, "
+                            "frames %3, %4 bits, type %5)",
+                            {std::to_string(rows), std::to_string(columns), std::to_string(frameCount),
+                             std::to_string(bits), type.c_str()}});
 
     SegmentationMask result;
     DcmSequenceOfItems* segments = nullptr;
@@ -126,7 +128,7 @@ SegmentationMask readDicomSegmentation(const std::filesystem::path& file, std::s
         DcmItem* identification = functionalGroup(item, shared, DCM_SegmentIdentificationSequence);
         if (!identification || identification->findAndGetUint16(DCM_ReferencedSegmentNumber, segment).bad() ||
             segment < 1 || segment > 255)
-            throw Error("frame " + std::to_string(f + 1) + " of the DICOM SEG names no segment (1..255)");
+            throw Error(Pattern{"frame %1 of the DICOM SEG names no segment (1..255)", {std::to_string(f + 1)}});
         frames[std::size_t(f)].segment = segment;
     }
 
@@ -154,8 +156,9 @@ SegmentationMask readDicomSegmentation(const std::filesystem::path& file, std::s
     {
         const double steps = (level - first) / step;
         if (std::abs(steps - std::round(steps)) > 0.01)
-            throw Error("the DICOM SEG's frames are not a regular stack (positions along the normal are not whole "
-                        "multiples of " + std::to_string(step) + " mm apart)");
+            throw Error(Pattern{"the DICOM SEG's frames are not a regular stack (positions along the normal are not "
+                                "whole multiples of %1 mm apart)",
+                                {std::to_string(step)}});
     }
     const Frame& lowest = frames[std::size_t(std::min_element(along.begin(), along.end()) - along.begin())];
     VolumeGeometry g;
@@ -172,8 +175,8 @@ SegmentationMask readDicomSegmentation(const std::filesystem::path& file, std::s
             throw Error("the DICOM SEG's frames are shifted within their planes: not one volume");
     }
     if (g.dims[2] > 4096 || g.voxelCount() > maxVoxels)
-        throw Error("the DICOM SEG's grid is too large (" + std::to_string(g.dims[0]) + " x " + std::to_string(g.dims[1]) +
-                    " x " + std::to_string(g.dims[2]) + " voxels)");
+        throw Error(Pattern{"the DICOM SEG's grid is too large (%1 x %2 x %3 voxels)",
+                            {std::to_string(g.dims[0]), std::to_string(g.dims[1]), std::to_string(g.dims[2])}});
 
     const Uint8* pixels = nullptr;
     unsigned long bytes = 0;
@@ -182,8 +185,8 @@ SegmentationMask readDicomSegmentation(const std::filesystem::path& file, std::s
     const std::size_t perFrame1 = std::size_t(rows) * columns;
     const std::size_t needed = binary ? (perFrame1 * std::size_t(frameCount) + 7) / 8 : perFrame1 * std::size_t(frameCount);
     if (bytes < needed)
-        throw Error("the DICOM SEG's pixel data is shorter than its frames (" + std::to_string(bytes) + " of " +
-                    std::to_string(needed) + " bytes)");
+        throw Error(Pattern{"the DICOM SEG's pixel data is shorter than its frames (%1 of %2 bytes)",
+                            {std::to_string(bytes), std::to_string(needed)}});
     result.mask = CtVolume(g);
     std::fill(result.mask.data(), result.mask.data() + g.voxelCount(), std::int16_t(0));
     std::size_t overlaps = 0;

@@ -31,7 +31,7 @@ namespace {
 void check(const OFCondition& condition, const std::string& what)
 {
     if (condition.bad())
-        throw Error("writing the DICOM SEG failed at " + what + ": " + condition.text());
+        throw Error(Pattern{"writing the DICOM SEG failed at %1: %2", {what, condition.text()}});
 }
 
 std::string decimal(double value)
@@ -54,7 +54,8 @@ std::unique_ptr<FGDerivationImage> sourceOf(const SegmentationDescription& descr
         sources, "Segmentation", CodeSequenceMacro("113076", "DCM", "Segmentation"),
         CodeSequenceMacro("121322", "DCM", "Source image for image processing operation")));
     if (!derivation)
-        throw Error("writing the DICOM SEG failed at the derivation image of slice " + std::to_string(k + 1));
+        throw Error(Pattern{"writing the DICOM SEG failed at the derivation image of slice %1",
+                            {std::to_string(k + 1)}});
     return derivation;
 }
 
@@ -130,8 +131,8 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
         Uint16 number = 0;
         check(seg->addSegment(segment, number), "segment " + name);
         if (number != value)
-            throw Error("writing the DICOM SEG failed: segment " + std::to_string(number) + " for label value " +
-                        std::to_string(value));
+            throw Error(Pattern{"writing the DICOM SEG failed: segment %1 for label value %2",
+                                {std::to_string(number), std::to_string(value)}});
         if (!used)
             continue;
         for (int k = 0; k < g.dims[2]; ++k)

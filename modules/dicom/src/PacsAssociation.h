@@ -56,10 +56,10 @@ public:
         ensureDcmtkCodecs(); // and DCMTK's own logging quiet
         if (node.calledAeTitle.empty() || node.calledAeTitle.size() > 16 || node.callingAeTitle.empty() ||
             node.callingAeTitle.size() > 16)
-            throw Error("AE titles have 1 to 16 characters (PACS '" + node.calledAeTitle + "', ours '" +
-                        node.callingAeTitle + "')");
+            throw Error(Pattern{"AE titles have 1 to 16 characters (PACS '%1', ours '%2')",
+                                {node.calledAeTitle, node.callingAeTitle}});
         if (node.host.empty() || node.port < 1 || node.port > 65535)
-            throw Error("a PACS node needs a host and a port from 1 to 65535 (" + describe(node) + ")");
+            throw Error(Pattern{"a PACS node needs a host and a port from 1 to 65535 (%1)", {describe(node)}});
         m_scu.setAETitle(node.callingAeTitle.c_str());
         m_scu.setPeerAETitle(node.calledAeTitle.c_str());
         m_scu.setPeerHostName(node.host.c_str());
@@ -85,16 +85,21 @@ public:
         }
         const OFCondition negotiated = m_scu.negotiateAssociation();
         if (negotiated == DUL_ASSOCIATIONREJECTED)
-            throw Error("the PACS " + describe(node) + " rejected the association: is our AE title '" + node.callingAeTitle +
-                        "' registered there, and is its own '" + node.calledAeTitle + "'?");
+            throw Error(Pattern{"the PACS %1 rejected the association: is our AE title '%2' registered there, and is "
+                                "its own '%3'?",
+                                {describe(node), node.callingAeTitle, node.calledAeTitle}});
         if (negotiated == DUL_READTIMEOUT)
-            throw Error("the PACS " + describe(node) + " took the connection but did not answer within " +
-                        std::to_string(node.timeoutS) + " s (is it a DICOM node, and is the port its DICOM port" +
-                        (node.tls.enabled ? ", and does it speak DICOM TLS there?)" : "?)"));
+            throw Error(node.tls.enabled
+                            ? Pattern{"the PACS %1 took the connection but did not answer within %2 s (is it a DICOM "
+                                      "node, is the port its DICOM port, and does it speak DICOM TLS there?)",
+                                      {describe(node), std::to_string(node.timeoutS)}}
+                            : Pattern{"the PACS %1 took the connection but did not answer within %2 s (is it a DICOM "
+                                      "node, and is the port its DICOM port?)",
+                                      {describe(node), std::to_string(node.timeoutS)}});
         if (negotiated.bad() && node.tls.enabled)
-            throw Error("could not connect over DICOM TLS (" + describe(node) + "): " + negotiated.text() +
-                        " (does the PACS speak TLS on this port, is its certificate among those we trust (" +
-                        node.tls.trustedCertificates + "), and does it trust ours?)");
+            throw Error(Pattern{"could not connect over DICOM TLS (%1): %2 (does the PACS speak TLS on this port, is "
+                                "its certificate among those we trust (%3), and does it trust ours?)",
+                                {describe(node), negotiated.text(), node.tls.trustedCertificates}});
         check(negotiated, "could not connect");
     }
 
@@ -114,14 +119,14 @@ public:
     {
         const T_ASC_PresentationContextID id = m_scu.findPresentationContextID(abstractSyntax.c_str(), "");
         if (id == 0)
-            throw Error("the PACS " + describe(m_node) + " does not offer " + what);
+            throw Error(Pattern{"the PACS %1 does not offer %2", {describe(m_node), what}});
         return id;
     }
 
     void check(const OFCondition& condition, const std::string& what) const
     {
         if (condition.bad())
-            throw Error(what + " (" + describe(m_node) + "): " + condition.text());
+            throw Error(Pattern{"%1 (%2): %3", {what, describe(m_node), condition.text()}});
     }
 
 private:
@@ -280,10 +285,10 @@ inline void prepareRetrieveFolder(const std::filesystem::path& folder)
 {
     std::error_code error;
     if (std::filesystem::exists(folder, error) && !std::filesystem::is_empty(folder, error))
-        throw Error("the retrieve's folder is not empty: " + folder.string());
+        throw Error(Pattern{"the retrieve's folder is not empty: %1", {folder.string()}});
     std::filesystem::create_directories(folder, error);
     if (error)
-        throw Error("cannot create the retrieve's folder " + folder.string() + ": " + error.message());
+        throw Error(Pattern{"cannot create the retrieve's folder %1: %2", {folder.string(), error.message()}});
 }
 
 /// The storage classes a retrieve accepts: DCMTK's list of the 120 most common (CT, enhanced CT, SEG, encapsulated

@@ -86,7 +86,7 @@ Answers runFind(const PacsNode& node, const char* model, const std::string& what
         throw Cancelled();
     association.check(sent, "the query failed");
     if (!failure.empty())
-        throw Error(failure + " (" + describe(node) + ")");
+        throw Error(Pattern{"%1 (%2)", {failure, describe(node)}});
     return answers;
 }
 

@@ -56,7 +56,7 @@ std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const Retriev
     DcmDataset request;
     detail::retrieveRequest(request, target); // checks the target before the folder is made
     if (listenPort < 1 || listenPort > 65535)
-        throw Error("the move's listening port must be from 1 to 65535, not " + std::to_string(listenPort));
+        throw Error(Pattern{"the move's listening port must be from 1 to 65535, not %1", {std::to_string(listenPort)}});
     // The listener's TLS layer first: a certificate that is missing fails before any folder is made.
     const std::unique_ptr<DcmTLSTransportLayer> tls = node.tls.enabled ? detail::makeTlsLayer(node.tls, true) : nullptr;
     detail::prepareRetrieveFolder(folder);
@@ -82,8 +82,8 @@ std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const Retriev
         listener.addPresentationContext(storage, syntaxes);
     const OFCondition opened = listener.openListenPort();
     if (opened.bad())
-        throw Error("cannot listen on port " + std::to_string(listenPort) + " for the move: " + opened.text() +
-                    " (is another program using it?)");
+        throw Error(Pattern{"cannot listen on port %1 for the move: %2 (is another program using it?)",
+                            {std::to_string(listenPort), opened.text()}});
     std::thread listening([&listener] { listener.acceptAssociations(); });
 
     std::string failure;

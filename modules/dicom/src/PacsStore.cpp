@@ -31,7 +31,7 @@ Outgoing readOutgoing(const std::filesystem::path& file, AnonymizedObjects anony
     Outgoing outgoing{std::make_unique<DcmFileFormat>(), {}, {}};
     const OFCondition loaded = outgoing.format->loadFile(file.string().c_str());
     if (loaded.bad())
-        throw Error("not a DICOM file: " + file.string() + " (" + loaded.text() + ")");
+        throw Error(Pattern{"not a DICOM file: %1 (%2)", {file.string(), loaded.text()}});
     DcmDataset& data = *outgoing.format->getDataset();
     StoredObject& object = outgoing.object;
     object.file = file;
@@ -41,13 +41,15 @@ Outgoing readOutgoing(const std::filesystem::path& file, AnonymizedObjects anony
     object.seriesInstanceUid = detail::datasetText(data, DCM_SeriesInstanceUID);
     object.modality = detail::datasetText(data, DCM_Modality);
     if (object.sopClassUid.empty() || object.sopInstanceUid.empty() || object.studyInstanceUid.empty())
-        throw Error("a DICOM object to store needs its SOP class, instance and study UIDs: " + file.string());
+        throw Error(Pattern{"a DICOM object to store needs its SOP class, instance and study UIDs: %1",
+                            {file.string()}});
     if (detail::datasetText(data, DCM_PatientIdentityRemoved) == "YES")
     {
         if (anonymized == AnonymizedObjects::Refuse)
-            throw Error(file.string() + " is de-identified (Patient Identity Removed YES, e.g. a report made with "
-                        "--anonymize): it is not stored into a patient's study. Nothing was sent; to store it as a "
-                        "new anonymized study, ask for that (pacs store --anonymized new-study)");
+            throw Error(Pattern{"%1 is de-identified (Patient Identity Removed YES, e.g. a report made with "
+                                "--anonymize): it is not stored into a patient's study. Nothing was sent; to store it "
+                                "as a new anonymized study, ask for that (pacs store --anonymized new-study)",
+                                {file.string()}});
         // A new study of its own: whatever UIDs it carries (another tool's anonymizer may have kept the patient's).
         object.studyInstanceUid = newDicomUid();
         object.seriesInstanceUid = newDicomUid();
@@ -96,12 +98,12 @@ std::vector<StoredObject> storeFiles(const PacsNode& node, const std::vector<std
                                                 : std::to_string(stored.size()) + " of " +
                                                       std::to_string(outgoing.size()) + " objects were stored before it";
         if (sent.bad())
-            throw Error("the store of " + item.object.file.string() + " broke off (" + describe(node) + "): " +
-                        sent.text() + "; " + done);
+            throw Error(Pattern{"the store of %1 broke off (%2): %3; %4",
+                                {item.object.file.string(), describe(node), sent.text(), done}});
         // 0000 success; Bxxx warnings (coercion, elements discarded) still store the object (PS3.4 B.2.3).
         if (status != STATUS_Success && (status & 0xF000) != 0xB000)
-            throw Error("the PACS " + describe(node) + " refused " + item.object.file.string() + " with status " +
-                        detail::statusText(status) + "; " + done);
+            throw Error(Pattern{"the PACS %1 refused %2 with status %3; %4",
+                                {describe(node), item.object.file.string(), detail::statusText(status), done}});
         stored.push_back(item.object);
     }
     progress.report(1.0, "stored " + std::to_string(stored.size()) + " objects");

@@ -16,17 +16,17 @@ namespace {
 void checkTls(const OFCondition& condition, const std::string& what)
 {
     if (condition.bad())
-        throw Error("DICOM TLS: " + what + ": " + condition.text());
+        throw Error(Pattern{"DICOM TLS: %1: %2", {what, condition.text()}});
 }
 
 /// The PEM file `path` given for `what`; throws when it is not set or not there.
 const char* pemFile(const std::string& path, const std::string& what)
 {
     if (path.empty())
-        throw Error("DICOM TLS needs " + what + " (a PEM file)");
+        throw Error(Pattern{"DICOM TLS needs %1 (a PEM file)", {what}});
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
-        throw Error("DICOM TLS: " + what + " is not a file: " + path);
+        throw Error(Pattern{"DICOM TLS: %1 is not a file: %2", {what, path}});
     return path.c_str();
 }
 
@@ -49,8 +49,8 @@ std::unique_ptr<DcmTLSTransportLayer> makeTlsLayer(const PacsTls& tls, bool acce
         checkTls(layer->setCertificateFile(pemFile(tls.certificate, whose), DCF_Filetype_PEM),
                  "cannot read our certificate " + tls.certificate);
         if (!layer->checkPrivateKeyMatchesCertificate())
-            throw Error("DICOM TLS: the private key " + tls.privateKey + " is not that of the certificate " +
-                        tls.certificate);
+            throw Error(Pattern{"DICOM TLS: the private key %1 is not that of the certificate %2",
+                                {tls.privateKey, tls.certificate}});
     }
     layer->setCertificateVerification(DCV_requireCertificate);
     return layer;

@@ -282,7 +282,7 @@ PhantomKind phantomKindFromName(const std::string& name)
          {PhantomKind::Aaa, PhantomKind::Stenosis, PhantomKind::HepaticTree, PhantomKind::Bifurcation})
         if (phantomKindName(kind) == name)
             return kind;
-    throw Error("unknown phantom kind '" + name + "'; known kinds: aaa, stenosis, hepatic-tree, bifurcation");
+    throw Error(Pattern{"unknown phantom kind '%1'; known kinds: aaa, stenosis, hepatic-tree, bifurcation", {name}});
 }
 
 std::string phantomStyleName(PhantomStyle style)
@@ -295,7 +295,7 @@ PhantomStyle phantomStyleFromName(const std::string& name)
     for (PhantomStyle style : {PhantomStyle::Patient, PhantomStyle::Analytic})
         if (phantomStyleName(style) == name)
             return style;
-    throw Error("unknown phantom style '" + name + "'; known styles: patient, analytic");
+    throw Error(Pattern{"unknown phantom style '%1'; known styles: patient, analytic", {name}});
 }
 
 double VesselSegment::lengthMm() const

@@ -232,9 +232,10 @@ SkeletonGraph extractCenterlines(const LabelVolume& label, std::uint8_t value, c
         const auto voxelFrom = nearestVoxel(geometry, skeleton.nodes[std::size_t(from)].position);
         const auto voxelTo = nearestVoxel(geometry, skeleton.nodes[std::size_t(to)].position);
         if (timeAt(voxelFrom) >= kUnreached || timeAt(voxelTo) >= kUnreached)
-            throw Error("the vessel label is disconnected: skeleton nodes " + std::to_string(from) + " and " +
-                        std::to_string(to) + " cannot be reached from the root through the lumen; segment one vessel "
-                        "tree from a seed, or join the parts with the brush");
+            throw Error(Pattern{"the vessel label is disconnected: skeleton nodes %1 and %2 cannot be reached from "
+                                "the root through the lumen; segment one vessel tree from a seed, or join the parts "
+                                "with the brush",
+                                {std::to_string(from), std::to_string(to)}});
         // Descend from the node farther from the root down to the nearer one.
         const bool toIsChild = timeAt(voxelTo) >= timeAt(voxelFrom);
         std::vector<std::array<int, 3>> voxels = descend(toIsChild ? voxelTo : voxelFrom,

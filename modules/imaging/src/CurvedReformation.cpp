@@ -37,7 +37,7 @@ CenterlineFrames centerlineFrames(const std::vector<Eigen::Vector3d>& polyline, 
     for (std::size_t i = 1; i < polyline.size(); ++i)
         cumulative.push_back(cumulative.back() + (polyline[i] - polyline[i - 1]).norm());
     if (polyline.size() < 2 || cumulative.back() < stepMm)
-        throw Error("the centerline is shorter than one step (" + std::to_string(stepMm) + " mm)");
+        throw Error(Pattern{"the centerline is shorter than one step (%1 mm)", {std::to_string(stepMm)}});
     CenterlineFrames frames;
     frames.stepMm = stepMm;
     const int count = int(std::floor(cumulative.back() / stepMm)) + 1;

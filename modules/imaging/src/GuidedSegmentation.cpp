@@ -134,7 +134,7 @@ detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool inc
     const Vector3d index = g.patientToIndex(point);
     const int ci = int(std::lround(index.x())), cj = int(std::lround(index.y())), ck = int(std::lround(index.z()));
     if (!g.contains(ci, cj, ck))
-        throw Error("the point " + mmText(point) + " lies outside the image; pick it on the images");
+        throw Error(Pattern{"the point %1 lies outside the image; pick it on the images", {mmText(point)}});
     const Vector3d s = g.spacing;
     double blood = -1e9;
     const auto forBall = [&](double radius, const auto& visit) {
@@ -180,8 +180,9 @@ detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool inc
             tissue.push_back(hu), tissueSmoothed.push_back(detail::smoothedHu(ct, i, j, k));
     // An exclude point inside a chamber may have no soft tissue in its shell: its window then reaches 300 HU down.
     if (tissue.size() < 20 && include)
-        throw Error("no tissue darker than the point " + mmText(point) + " around it (" + std::to_string(int(blood)) +
-                    " HU): is it inside a vessel, and is the image contrast-enhanced CT?");
+        throw Error(Pattern{"no tissue darker than the point %1 around it (%2 HU): is it inside a vessel, and is the "
+                            "image contrast-enhanced CT?",
+                            {mmText(point), std::to_string(int(blood))}});
     double tissueHu = blood - 300.0;
     if (tissue.size() >= 20)
     {
@@ -190,8 +191,9 @@ detail::FrontSeed seedWindow(const CtVolume& ct, const Vector3d& point, bool inc
         tissueHu = tissue[3 * tissue.size() / 4];
     }
     if (include && blood - tissueHu < 60.0)
-        throw Error("the point " + mmText(point) + " is not in a contrast-filled vessel (" + std::to_string(int(blood)) +
-                    " HU against " + std::to_string(int(tissueHu)) + " HU around it); pick a point inside the lumen");
+        throw Error(Pattern{"the point %1 is not in a contrast-filled vessel (%2 HU against %3 HU around it); pick a "
+                            "point inside the lumen",
+                            {mmText(point), std::to_string(int(blood)), std::to_string(int(tissueHu))}});
     detail::FrontSeed seed;
     seed.pointMm = point;
     seed.include = include;
@@ -260,7 +262,7 @@ SegmentationTarget segmentationTargetFromName(const std::string& name)
     for (SegmentationTarget target : {SegmentationTarget::Aorta, SegmentationTarget::Hepatic, SegmentationTarget::All})
         if (segmentationTargetName(target) == name)
             return target;
-    throw Error("unknown segmentation target '" + name + "'; known targets: aorta, hepatic, all");
+    throw Error(Pattern{"unknown segmentation target '%1'; known targets: aorta, hepatic, all", {name}});
 }
 
 std::vector<ParameterSpec> guidedSegmentationParameters()
@@ -296,8 +298,9 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
                                      const SegmentationRequest& request, const Progress& progress)
 {
     if (const std::string why = whyNotHounsfield(ct); !why.empty())
-        throw Error("the intensities are not CT Hounsfield units (" + why +
-                    "): import the CT rescaled to HU (vascusim-cli import --rescale SLOPE,INTERCEPT), not MR");
+        throw Error(Pattern{"the intensities are not CT Hounsfield units (%1): import the CT rescaled to HU "
+                            "(vascusim-cli import --rescale SLOPE,INTERCEPT), not MR",
+                            {why}});
     std::vector<Vector3d> includes = request.includeMm;
     const bool automatic = includes.empty() && request.target == SegmentationTarget::Aorta;
     if (automatic)

@@ -179,9 +179,10 @@ LesionGrowing growLesion(const CtVolume& ct, const std::vector<Eigen::Vector3d>&
     const double margin = std::max(k * spread, kLeastContrastShare * std::abs(level - lesion));
     const double threshold = hypodense ? level - margin : level + margin;
     if (hypodense ? lesion > threshold : lesion < threshold)
-        throw Error("the points' tissue (" + std::to_string(int(std::lround(lesion))) + " HU) lies within the liver's own range (" +
-                    std::to_string(int(std::lround(level))) + " +/- " + std::to_string(int(std::lround(k * spread))) +
-                    " HU): place them in the lesion's darker (or brighter) part, or lower lesion_sigmas");
+        throw Error(Pattern{"the points' tissue (%1 HU) lies within the liver's own range (%2 +/- %3 HU): place them "
+                            "in the lesion's darker (or brighter) part, or lower lesion_sigmas",
+                            {std::to_string(int(std::lround(lesion))), std::to_string(int(std::lround(level))),
+                             std::to_string(int(std::lround(k * spread)))}});
 
     // Growing, the opening by reconstruction, the closing and the cavities, within the liver.
     std::vector<std::size_t> seedIndices;

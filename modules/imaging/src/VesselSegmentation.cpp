@@ -41,8 +41,9 @@ std::string number(double value, const char* format = "%.0f")
 void requireHounsfieldUnits(const CtVolume& ct)
 {
     if (const std::string why = whyNotHounsfield(ct); !why.empty())
-        throw Error("the intensities are not CT Hounsfield units (" + why +
-                    "): import the CT rescaled to HU (vascusim-cli import --rescale SLOPE,INTERCEPT), not MR");
+        throw Error(Pattern{"the intensities are not CT Hounsfield units (%1): import the CT rescaled to HU "
+                            "(vascusim-cli import --rescale SLOPE,INTERCEPT), not MR",
+                            {why}});
 }
 
 /// The largest component (26-connected) of `mask`; returns its voxels' linear indices.
@@ -214,13 +215,14 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
         const Eigen::Vector3d continuous = geometry.patientToIndex(*seedMm);
         const Dims voxel{int(std::lround(continuous.x())), int(std::lround(continuous.y())), int(std::lround(continuous.z()))};
         if (!geometry.contains(voxel[0], voxel[1], voxel[2]))
-            throw Error("the seed (" + number(seedMm->x(), "%.1f") + ", " + number(seedMm->y(), "%.1f") + ", " +
-                        number(seedMm->z(), "%.1f") + ") mm lies outside the image: click inside a vessel");
+            throw Error(Pattern{"the seed (%1, %2, %3) mm lies outside the image: click inside a vessel",
+                                {number(seedMm->x(), "%.1f"), number(seedMm->y(), "%.1f"),
+                                 number(seedMm->z(), "%.1f")}});
         seedIndex = linearOf(dims, voxel);
         if (!window[seedIndex])
-            throw Error("the seed is not in a contrast-filled vessel: " + std::to_string(ct.data()[seedIndex]) +
-                        " HU there, outside " + number(minHu) + ".." + number(maxHu) +
-                        " HU; click inside a bright vessel or change min_contrast_hu / max_contrast_hu");
+            throw Error(Pattern{"the seed is not in a contrast-filled vessel: %1 HU there, outside %2..%3 HU; click "
+                                "inside a bright vessel or change min_contrast_hu / max_contrast_hu",
+                                {std::to_string(ct.data()[seedIndex]), number(minHu), number(maxHu)}});
         result.seedMm = *seedMm;
     }
     else
@@ -233,8 +235,9 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
         const std::vector<std::size_t> component = largestComponent(dims, core);
         const double voxelMl = geometry.spacing.prod() / 1000.0;
         if (component.empty() || double(component.size()) * voxelMl < 0.05)
-            throw Error("no contrast-filled vessel found (no thick region of " + number(minHu) + ".." + number(maxHu) +
-                        " HU): is this a contrast-enhanced CTA? Give a seed inside a vessel or lower min_contrast_hu");
+            throw Error(Pattern{"no contrast-filled vessel found (no thick region of %1..%2 HU): is this a "
+                                "contrast-enhanced CTA? Give a seed inside a vessel or lower min_contrast_hu",
+                                {number(minHu), number(maxHu)}});
         Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
         for (std::size_t index : component)
         {
@@ -305,8 +308,9 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
     floodFill(roiDims, {linearOf(roiDims, roiSeed)}, [&](std::size_t i) { return hu[i] >= threshold && hu[i] <= maxHu; },
               vessel);
     if (vessel[linearOf(roiDims, roiSeed)] == 0)
-        throw Error("the seed lies where the smoothed image is below the vessel boundary (" + number(threshold) +
-                    " HU): click nearer the centre of the vessel");
+        throw Error(Pattern{"the seed lies where the smoothed image is below the vessel boundary (%1 HU): click "
+                            "nearer the centre of the vessel",
+                            {number(threshold)}});
     progress.report(0.5, localized("vsim::Progress", "vesselness"));
 
     // Layer 2: thin branches the window lost. Candidates are tubular (vesselness) with some contrast; only

@@ -47,7 +47,8 @@ void measure(ViewMeasurement& measurement, const CtVolume& ct)
 {
     const auto& p = measurement.pointsMm;
     if (int(p.size()) != pointCount(measurement.kind))
-        throw Error("a " + kindName(measurement.kind) + " takes " + std::to_string(pointCount(measurement.kind)) + " points");
+        throw Error(Pattern{"a %1 takes %2 points",
+                            {kindName(measurement.kind), std::to_string(pointCount(measurement.kind))}});
     switch (measurement.kind)
     {
     case ViewMeasurement::Kind::Ruler: measurement.lengthMm = (p[1] - p[0]).norm(); break;

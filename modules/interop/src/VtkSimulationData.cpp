@@ -29,7 +29,7 @@ vtkDataArray* requiredArray(vtkFieldData* data, const char* name)
 {
     vtkDataArray* array = data ? data->GetArray(name) : nullptr;
     if (!array)
-        throw Error(std::string("not a vessel network frame: the array ") + name + " is missing");
+        throw Error(Pattern{"not a vessel network frame: the array %1 is missing", {name}});
     return array;
 }
 

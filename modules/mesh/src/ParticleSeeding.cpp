@@ -38,7 +38,8 @@ void lumenBounds(const LabelVolume& label, std::uint8_t lumen, Eigen::Vector3d& 
                     any = true;
                 }
     if (!any)
-        throw Error("the label has no lumen voxels (value " + std::to_string(int(lumen)) + ") to fill with particles");
+        throw Error(Pattern{"the label has no lumen voxels (value %1) to fill with particles",
+                            {std::to_string(int(lumen))}});
 }
 
 /// Where a lattice point stands against the open ends: in an end's buffer (its index), cut off beyond a buffer, or
@@ -97,8 +98,9 @@ ParticleSet seedVesselParticles(const LabelVolume& label, const ParticleSeeding&
         points *= double(lattice.dims[std::size_t(a)]);
     }
     if (points > double(kMaxLatticePoints))
-        throw Error("a particle spacing of " + std::to_string(seeding.spacingMm) + " mm needs " +
-                    std::to_string(points) + " lattice points over the lumen: choose a larger spacing");
+        throw Error(Pattern{"a particle spacing of %1 mm needs %2 lattice points over the lumen: choose a larger "
+                            "spacing",
+                            {std::to_string(seeding.spacingMm), std::to_string(points)}});
 
     // Fluid: the lattice points whose nearest voxel is lumen; behind an open end, those within its disk whose foot
     // on the plane is (the extruded section), and nothing beyond the buffer. `placement`: 0 free, e + 1 in end e's

@@ -25,8 +25,8 @@ const std::vector<double>& pointArray(const TetMesh& mesh, const std::string& na
         std::string names;
         for (const auto& [key, values] : mesh.pointFields)
             names += (names.empty() ? "" : ", ") + key;
-        throw Error(std::string("the mesh has no point-data array '") + name + "' for " + option +
-                        " (its arrays: " + (names.empty() ? "none" : names) + ")",
+        throw Error(Pattern{"the mesh has no point-data array '%1' for %2 (its arrays: %3)",
+                            {name, option, (names.empty() ? "none" : names)}},
                     {{"array", name}});
     }
     return found->second;

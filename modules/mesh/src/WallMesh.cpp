@@ -62,8 +62,9 @@ std::pair<TriangleMesh, std::vector<int>> openEnds(const TriangleMesh& lumen, co
     }
     for (std::size_t e = 0; e < ends.size(); ++e)
         if (cutPerEnd[e] == 0)
-            throw Error("the vessel end " + std::to_string(e + 1) + " cuts no triangle of the lumen surface: is the "
-                        "surface from the same label as the centerlines?");
+            throw Error(Pattern{"the vessel end %1 cuts no triangle of the lumen surface: is the surface from the "
+                                "same label as the centerlines?",
+                                {std::to_string(e + 1)}});
     // Keep the largest connected piece: a cut can leave a loose ring of a vessel's cap, which nothing would hold.
     {
         std::vector<int> parent(lumen.points.size());
@@ -195,7 +196,7 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
     if (lumen.triangles.empty())
         throw Error("the lumen surface is empty: extract the surface first");
     if (!(thicknessMm >= 0.1 && thicknessMm <= 10.0))
-        throw Error("the wall thickness must lie in 0.1..10 mm (" + std::to_string(thicknessMm) + " given)");
+        throw Error(Pattern{"the wall thickness must lie in 0.1..10 mm (%1 given)", {std::to_string(thicknessMm)}});
     WallMesh wall;
     const auto [surface, endOf] = openEnds(lumen, ends, wall.warnings);
     const int n = int(surface.points.size());

@@ -17,7 +17,7 @@ void put(DcmDataset& data, const DcmTagKey& tag, const std::string& value)
 {
     const OFCondition status = data.putAndInsertString(tag, value.c_str());
     if (status.bad())
-        throw Error(std::string("cannot set a DICOM attribute of the report: ") + status.text());
+        throw Error(Pattern{"cannot set a DICOM attribute of the report: %1", {status.text()}});
 }
 
 } // namespace
@@ -85,10 +85,10 @@ std::string writeEncapsulatedPdf(const QByteArray& pdf, const DocumentIdentity& 
     const OFCondition document =
         data.putAndInsertUint8Array(DCM_EncapsulatedDocument, bytes.data(), static_cast<unsigned long>(bytes.size()));
     if (document.bad())
-        throw Error(std::string("cannot encapsulate the PDF: ") + document.text());
+        throw Error(Pattern{"cannot encapsulate the PDF: %1", {document.text()}});
     const OFCondition saved = format.saveFile(file.string().c_str(), EXS_LittleEndianExplicit);
     if (saved.bad())
-        throw Error(std::string("cannot write the DICOM report: ") + saved.text(), {{"file", file.string()}});
+        throw Error(Pattern{"cannot write the DICOM report: %1", {saved.text()}}, {{"file", file.string()}});
     return seriesUid;
 }
 

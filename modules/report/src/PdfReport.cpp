@@ -336,7 +336,7 @@ PageSize pageSizeFromName(const std::string& name)
         return PageSize::A4;
     if (lower == "letter")
         return PageSize::Letter;
-    throw Error("unknown page size '" + name + "'; use a4 or letter");
+    throw Error(Pattern{"unknown page size '%1'; use a4 or letter", {name}});
 }
 
 QByteArray renderPdf(const Report& report, PageSize size)

@@ -26,7 +26,7 @@ ArtifactKind kindFromName(const std::string& name)
     for (ArtifactKind kind : kArtifactKinds)
         if (kindName(kind) == name)
             return kind;
-    throw Error("unknown artifact kind '" + name + "'", {{"kind", name}});
+    throw Error(Pattern{"unknown artifact kind '%1'", {name}}, {{"kind", name}});
 }
 
 } // namespace vsim::study

@@ -89,7 +89,7 @@ ViewMeasurement measurementFromJson(const json& document)
     for (const auto& point : document.at("points_mm"))
         m.pointsMm.push_back(vectorFromJson(point));
     if (int(m.pointsMm.size()) != pointCount(m.kind))
-        throw Error("a " + kindName(m.kind) + " takes " + std::to_string(pointCount(m.kind)) + " points");
+        throw Error(Pattern{"a %1 takes %2 points", {kindName(m.kind), std::to_string(pointCount(m.kind))}});
     m.planeRight = vectorFromJson(document.at("plane_right"));
     m.planeUp = vectorFromJson(document.at("plane_up"));
     m.lengthMm = document.value("length_mm", 0.0);

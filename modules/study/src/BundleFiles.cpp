@@ -18,7 +18,7 @@ namespace {
 
 Error ioError(const std::string& what, const std::filesystem::path& file)
 {
-    return Error(what + ": " + std::strerror(errno), {{"file", file.string()}});
+    return Error(Pattern{"%1: %2", {what, std::strerror(errno)}}, {{"file", file.string()}});
 }
 
 void syncPath(const std::filesystem::path& path, int flags)
@@ -98,7 +98,7 @@ void writeFileAtomically(const std::filesystem::path& target, const std::string&
     std::error_code error;
     std::filesystem::rename(temporary, target, error);
     if (error)
-        throw Error("cannot replace file: " + error.message(), {{"file", target.string()}});
+        throw Error(Pattern{"cannot replace file: %1", {error.message()}}, {{"file", target.string()}});
     syncDirectory(target.parent_path());
 }
 

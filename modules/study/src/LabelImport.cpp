@@ -28,8 +28,8 @@ LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, s
 {
     const VolumeGeometry& source = mask.geometry();
     auto refuse = [&](const std::string& why) {
-        return Error("the mask's grid does not match the image's (" + why + "): mask " + describe(source) + "; image " +
-                     describe(image));
+        return Error(Pattern{"the mask's grid does not match the image's (%1): mask %2; image %3",
+                             {why, describe(source), describe(image)}});
     };
     // Each mask axis must run along an image axis (either way: a stack stored in the other order) with its voxel
     // size: a signed permutation of the image's lattice.
@@ -69,8 +69,9 @@ LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, s
                 if (own == 0)
                     continue;
                 if (!value && (own < 1 || own > 255))
-                    throw Error("the mask holds the value " + std::to_string(own) +
-                                ", outside the labels 1..255: give the label value to use (--label-value N)");
+                    throw Error(Pattern{"the mask holds the value %1, outside the labels 1..255: give the label value "
+                                        "to use (--label-value N)",
+                                        {std::to_string(own)}});
                 ++labelled;
                 std::array<int, 3> at{di, dj, dk};
                 const std::array<int, 3> index{i, j, k};

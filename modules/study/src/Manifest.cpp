@@ -63,8 +63,9 @@ Manifest manifestFromText(const std::string& text)
             throw Error("study.json is not a VascuSim study manifest");
         const int schema = document.at("schema_version").get<int>();
         if (schema > kSchemaVersion)
-            throw Error("the study was written by a newer VascuSim (schema " + std::to_string(schema) +
-                            "); this build reads schema " + std::to_string(kSchemaVersion) + " and older",
+            throw Error(Pattern{"the study was written by a newer VascuSim (schema %1); this build reads schema %2 "
+                                "and older",
+                                {std::to_string(schema), std::to_string(kSchemaVersion)}},
                         {{"software_version", document.value("software_version", "unknown")}});
         // Schema 2 only adds the run kind: a schema 1 manifest reads as it is. Migrations go here as they appear.
         Manifest manifest;

@@ -99,7 +99,7 @@ VesselNetwork networkFromJsonText(const std::string& text)
             }
             catch (const json::exception& exception)
             {
-                throw Error("segment " + std::to_string(index) + " of the network file: " + exception.what(),
+                throw Error(Pattern{"segment %1 of the network file: %2", {std::to_string(index), exception.what()}},
                             {{"segment", std::to_string(index)}});
             }
             network.segments.push_back(std::move(segment));
@@ -122,7 +122,7 @@ VesselNetwork networkFromJsonText(const std::string& text)
     }
     catch (const json::exception& exception)
     {
-        throw Error(std::string("cannot read the network file: ") + exception.what());
+        throw Error(Pattern{"cannot read the network file: %1", {exception.what()}});
     }
     network.validate();
     return network;

@@ -202,7 +202,8 @@ RunFrame readRunFrame(const fs::path& runJson, std::size_t index)
     const json document = readRunJson(runJson);
     const json& frames = document.at("frames");
     if (index >= frames.size())
-        throw Error("the run has no frame " + std::to_string(index) + " (it kept " + std::to_string(frames.size()) + ")");
+        throw Error(Pattern{"the run has no frame %1 (it kept %2)",
+                            {std::to_string(index), std::to_string(frames.size())}});
     RunFrame frame = frameEntry(frames.at(index));
     frame.data = readFrame(runJson.parent_path() / frames.at(index).at("file").get<std::string>());
     return frame;

@@ -104,7 +104,7 @@ struct Study::State
         for (Artifact& artifact : manifest.artifacts)
             if (artifact.id == id)
                 return artifact;
-        throw Error("the study has no artifact '" + id + "'", {{"artifact", id}});
+        throw Error(Pattern{"the study has no artifact '%1'", {id}}, {{"artifact", id}});
     }
 
     std::string add(ArtifactData data, const std::string& name, Provenance provenance, std::vector<std::string> warnings)
@@ -127,12 +127,12 @@ struct Study::State
     {
         const Artifact& artifact = find(id);
         if (artifact.kind != expected)
-            throw Error("artifact '" + id + "' is a " + kindName(artifact.kind) + ", not a " + kindName(expected),
+            throw Error(Pattern{"artifact '%1' is a %2, not a %3", {id, kindName(artifact.kind), kindName(expected)}},
                         {{"artifact", id}});
         if (const auto found = pending.find(id); found != pending.end())
             return found->second;
         if (artifact.damaged)
-            throw Error("artifact '" + artifact.name + "' is damaged: " + artifact.damage, {{"artifact", id}});
+            throw Error(Pattern{"artifact '%1' is damaged: %2", {artifact.name, artifact.damage}}, {{"artifact", id}});
         return readArtifactFile(artifact.kind, bundle / artifact.file);
     }
 };
@@ -263,7 +263,8 @@ std::string Study::addSkeleton(const SkeletonGraph& skeleton, const std::string&
 std::string Study::addMeasurement(const ViewMeasurement& measurement, const std::string& name, Provenance provenance)
 {
     if (int(measurement.pointsMm.size()) != pointCount(measurement.kind))
-        throw Error("a " + kindName(measurement.kind) + " takes " + std::to_string(pointCount(measurement.kind)) + " points");
+        throw Error(Pattern{"a %1 takes %2 points",
+                            {kindName(measurement.kind), std::to_string(pointCount(measurement.kind))}});
     return m_state->add(measurement, name, std::move(provenance), {});
 }
 
@@ -332,7 +333,7 @@ SolverRun Study::loadRun(const std::string& id, bool withFrames) const
     if (entry.kind != ArtifactKind::Run || m_state->pending.count(id) || withFrames)
         return std::get<SolverRun>(m_state->load(id, ArtifactKind::Run));
     if (entry.damaged)
-        throw Error("artifact '" + entry.name + "' is damaged: " + entry.damage, {{"artifact", id}});
+        throw Error(Pattern{"artifact '%1' is damaged: %2", {entry.name, entry.damage}}, {{"artifact", id}});
     return readRunFolder(m_state->bundle / entry.file, false);
 }
 
@@ -340,16 +341,17 @@ RunFrame Study::loadRunFrame(const std::string& id, std::size_t index) const
 {
     const Artifact& entry = m_state->find(id);
     if (entry.kind != ArtifactKind::Run)
-        throw Error("artifact '" + id + "' is a " + kindName(entry.kind) + ", not a run", {{"artifact", id}});
+        throw Error(Pattern{"artifact '%1' is a %2, not a run", {id, kindName(entry.kind)}}, {{"artifact", id}});
     if (const auto found = m_state->pending.find(id); found != m_state->pending.end())
     {
         const SolverRun& run = std::get<SolverRun>(found->second);
         if (index >= run.frames.size())
-            throw Error("the run has no frame " + std::to_string(index) + " (it kept " + std::to_string(run.frames.size()) + ")");
+            throw Error(Pattern{"the run has no frame %1 (it kept %2)",
+                                {std::to_string(index), std::to_string(run.frames.size())}});
         return run.frames[index];
     }
     if (entry.damaged)
-        throw Error("artifact '" + entry.name + "' is damaged: " + entry.damage, {{"artifact", id}});
+        throw Error(Pattern{"artifact '%1' is damaged: %2", {entry.name, entry.damage}}, {{"artifact", id}});
     return readRunFrame(m_state->bundle / entry.file, index);
 }
 
@@ -364,9 +366,9 @@ VolumeGeometry Study::volumeGeometry(const std::string& id) const
             return label->geometry();
     }
     if (entry.kind != ArtifactKind::Image && entry.kind != ArtifactKind::Label)
-        throw Error("artifact '" + id + "' is not a volume", {{"artifact", id}});
+        throw Error(Pattern{"artifact '%1' is not a volume", {id}}, {{"artifact", id}});
     if (entry.damaged)
-        throw Error("artifact '" + entry.name + "' is damaged: " + entry.damage, {{"artifact", id}});
+        throw Error(Pattern{"artifact '%1' is damaged: %2", {entry.name, entry.damage}}, {{"artifact", id}});
     return readVolumeGeometry(m_state->bundle / entry.file);
 }
 
@@ -397,7 +399,7 @@ void Study::restoreArtifact(const std::string& id)
 {
     const auto found = m_state->removed.find(id);
     if (found == m_state->removed.end())
-        throw Error("artifact '" + id + "' was not removed; nothing to restore", {{"artifact", id}});
+        throw Error(Pattern{"artifact '%1' was not removed; nothing to restore", {id}}, {{"artifact", id}});
     Artifact artifact = found->second.first;
     artifact.file.clear(); // written again at the next save
     m_state->pending.insert_or_assign(id, std::move(found->second.second));

@@ -103,7 +103,7 @@ int openLockFile(const fs::path& bundle)
     const fs::path file = bundle / kStudyLockFile;
     const int descriptor = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (descriptor < 0)
-        throw Error(std::string("cannot open the study's lock file: ") + std::strerror(errno),
+        throw Error(Pattern{"cannot open the study's lock file: %1", {std::strerror(errno)}},
                     {{"file", file.string()}});
     return descriptor;
 }
@@ -148,12 +148,13 @@ StudyLock StudyLock::acquire(const fs::path& bundle, double waitSeconds)
         if (failure == 0)
             break;
         if (failure != EAGAIN && failure != EACCES)
-            throw Error(std::string("cannot lock the study: ") + std::strerror(failure), {{"folder", bundle.string()}});
+            throw Error(Pattern{"cannot lock the study: %1", {std::strerror(failure)}}, {{"folder", bundle.string()}});
         if (std::chrono::steady_clock::now() >= deadline)
         {
             const LockHolder holder = readLiveHolder(handle->descriptor);
-            throw Error("the study is being written by " + holder.describe() +
-                            "; wait for it (--wait SECONDS) or open the study read-only",
+            throw Error(Pattern{"the study is being written by %1; wait for it (--wait SECONDS) or open the study "
+                                "read-only",
+                                {holder.describe()}},
                         {{"folder", bundle.string()}, {"holder", holder.describe()}, {"host", holder.host}});
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -176,7 +177,7 @@ StudyLock StudyLock::breakAndAcquire(const fs::path& bundle)
     std::error_code error;
     fs::rename(file, aside, error);
     if (error)
-        throw Error("cannot move the stale lock aside: " + error.message(), {{"file", file.string()}});
+        throw Error(Pattern{"cannot move the stale lock aside: %1", {error.message()}}, {{"file", file.string()}});
     return acquire(bundle, 0.0);
 }
 

@@ -51,7 +51,7 @@ vtkSmartPointer<vtkPolyData> fieldSurface(const TriangleMesh& surface, const std
 {
     const auto values = surface.pointFields.find(field);
     if (values == surface.pointFields.end())
-        throw Error("the surface has no field '" + field + "' to colour by");
+        throw Error(Pattern{"the surface has no field '%1' to colour by", {field}});
     vtkSmartPointer<vtkPolyData> polyData = interop::toVtk(surface);
     auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
     scalars->SetName(field.c_str());

@@ -37,7 +37,7 @@ constexpr double kSmallestTubeMm = 0.3; // a segment sized only by its resistanc
 
 [[noreturn]] void noField(const SimulationData& frame, const std::string& field)
 {
-    throw Error("the " + dataKindName(frame) + " frame has no field '" + field + "' to show in the slices");
+    throw Error(Pattern{"the %1 frame has no field '%2' to show in the slices", {dataKindName(frame), field}});
 }
 
 /// The frame as a VTK dataset whose array `field` (cell data when `cellData`) holds the values to colour by.

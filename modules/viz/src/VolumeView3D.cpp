@@ -223,7 +223,7 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
 {
     const auto values = surface.pointFields.find(field);
     if (values == surface.pointFields.end())
-        throw Error("the surface has no field '" + field + "' to colour by");
+        throw Error(Pattern{"the surface has no field '%1' to colour by", {field}});
     // A surface of the same size as the one shown (the interactive wall, frame after frame) only gets new
     // points and values; anything else builds a new actor.
     vtkPolyData* shown = m_scene->fieldSurface

@@ -138,7 +138,7 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
     std::string why;
     bool stateBroken = false; // a frame showed values that are not finite: no later snapshot is good
     if (!frames.take(solver.snapshot(), 0, solver.position(), false, why))
-        throw Error(solver.name() + ": the initial state holds " + why);
+        throw Error(Pattern{"%1: the initial state holds %2", {solver.name(), why}});
     try
     {
         while (true)

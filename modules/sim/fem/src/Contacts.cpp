@@ -15,7 +15,8 @@ std::vector<ContactStiffness> addContactForces(const Contacts& contacts, const E
     for (const SpringConstraint& spring : contacts.springs)
     {
         if (spring.node < 0 || spring.node >= nodes)
-            throw Error("a spring constraint names node " + std::to_string(spring.node) + " of " + std::to_string(nodes));
+            throw Error(Pattern{"a spring constraint names node %1 of %2",
+                                {std::to_string(spring.node), std::to_string(nodes)}});
         forces.segment<3>(3 * spring.node) -= spring.stiffness * (x.segment<3>(3 * spring.node) - spring.anchor);
         stiffness.push_back({spring.node, spring.stiffness * Eigen::Matrix3d::Identity()});
     }

@@ -47,8 +47,8 @@ CorotationalFem::CorotationalFem(std::vector<Eigen::Vector3d> restPositions, std
         {
             const int node = m_tets[t][std::size_t(a)];
             if (node < 0 || std::size_t(node) >= m_rest.size())
-                throw Error("element " + std::to_string(t) + " refers to node " + std::to_string(node) + " of " +
-                            std::to_string(m_rest.size()));
+                throw Error(Pattern{"element %1 refers to node %2 of %3",
+                                    {std::to_string(t), std::to_string(node), std::to_string(m_rest.size())}});
             corners[std::size_t(a)] = m_rest[std::size_t(node)];
         }
         try
@@ -57,7 +57,7 @@ CorotationalFem::CorotationalFem(std::vector<Eigen::Vector3d> restPositions, std
         }
         catch (const Error& error)
         {
-            throw Error("element " + std::to_string(t) + ": " + error.what());
+            throw Error(Pattern{"element %1: %2", {std::to_string(t), error.what()}});
         }
         const double quarter = 0.25 * m_material.densityKgPerM3 * m_elements.back().volume;
         for (int node : m_tets[t])

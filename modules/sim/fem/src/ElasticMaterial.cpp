@@ -30,11 +30,11 @@ Eigen::Matrix<double, 6, 6> ElasticMaterial::elasticityMatrix() const
 void ElasticMaterial::validate() const
 {
     if (!(youngModulusPa > 0.0) || !std::isfinite(youngModulusPa))
-        throw Error("Young's modulus must be positive (" + std::to_string(youngModulusPa) + " Pa given)");
+        throw Error(Pattern{"Young's modulus must be positive (%1 Pa given)", {std::to_string(youngModulusPa)}});
     if (!(poissonRatio > -1.0 && poissonRatio < 0.5))
-        throw Error("Poisson's ratio must lie in (-1, 0.5) (" + std::to_string(poissonRatio) + " given)");
+        throw Error(Pattern{"Poisson's ratio must lie in (-1, 0.5) (%1 given)", {std::to_string(poissonRatio)}});
     if (!(densityKgPerM3 > 0.0) || !std::isfinite(densityKgPerM3))
-        throw Error("the density must be positive (" + std::to_string(densityKgPerM3) + " kg/m^3 given)");
+        throw Error(Pattern{"the density must be positive (%1 kg/m^3 given)", {std::to_string(densityKgPerM3)}});
 }
 
 } // namespace vsim::sim::fem

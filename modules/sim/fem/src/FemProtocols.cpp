@@ -124,7 +124,7 @@ std::vector<ParameterSpec> femProtocolParameters(const std::string& protocol)
     else if (protocol == "thesis-rupture")
         groups.push_back("Thesis rupture protocol");
     else if (protocol != "interactive")
-        throw Error("unknown protocol '" + protocol + "' (thesis-rupture, physiological, interactive)");
+        throw Error(Pattern{"unknown protocol '%1' (thesis-rupture, physiological, interactive)", {protocol}});
     std::vector<ParameterSpec> used;
     for (const ParameterSpec& spec : femParameters())
         if (std::find(groups.begin(), groups.end(), spec.group) != groups.end() &&

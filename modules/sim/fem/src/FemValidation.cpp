@@ -382,7 +382,7 @@ ValidationResult runFemValidation(const std::string& name, const Progress& progr
         std::string known;
         for (const std::string& c : femValidationCases())
             known += (known.empty() ? "" : ", ") + c;
-        throw Error("unknown validation case '" + name + "' (known: " + known + ")");
+        throw Error(Pattern{"unknown validation case '%1' (known: %2)", {name, known}});
     }
     const auto start = std::chrono::steady_clock::now();
     ValidationResult result = found->second(progress);

@@ -93,8 +93,8 @@ double HyperelasticMaterial::initialShearModulus() const
 void HyperelasticMaterial::validate() const
 {
     if (law == Law::StVenantKirchhoff && (!(mu > 0.0) || !(lambda >= 0.0)))
-        throw Error("St. Venant-Kirchhoff material needs mu > 0 and lambda >= 0 (got mu " + std::to_string(mu) +
-                    " Pa, lambda " + std::to_string(lambda) + " Pa)");
+        throw Error(Pattern{"St. Venant-Kirchhoff material needs mu > 0 and lambda >= 0 (got mu %1 Pa, lambda %2 Pa)",
+                            {std::to_string(mu), std::to_string(lambda)}});
     if (law == Law::IsochoricPolynomial && (!(initialShearModulus() > 0.0) || !(bulkModulus > 0.0) || c20 < 0.0 || c02 < 0.0))
         throw Error("hyperelastic polynomial material needs c10 + c01 > 0, c20, c02 >= 0 and a bulk modulus > 0");
 }

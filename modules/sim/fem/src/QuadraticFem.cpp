@@ -72,19 +72,20 @@ QuadraticFem::QuadraticFem(QuadraticTetMesh mesh, std::vector<HyperelasticMateri
     if (m_elementMaterial.empty())
         m_elementMaterial.assign(m_mesh.elements.size(), 0);
     if (m_elementMaterial.size() != m_mesh.elements.size())
-        throw Error("the quadratic wall model has " + std::to_string(m_elementMaterial.size()) + " material indices for " +
-                    std::to_string(m_mesh.elements.size()) + " elements");
+        throw Error(Pattern{"the quadratic wall model has %1 material indices for %2 elements",
+                            {std::to_string(m_elementMaterial.size()), std::to_string(m_mesh.elements.size())}});
     m_rest.resize(m_mesh.elements.size());
     for (std::size_t e = 0; e < m_mesh.elements.size(); ++e)
     {
         if (m_elementMaterial[e] >= m_materials.size())
-            throw Error("element " + std::to_string(e) + " has material " + std::to_string(m_elementMaterial[e]) +
-                        " of " + std::to_string(m_materials.size()));
+            throw Error(Pattern{"element %1 has material %2 of %3",
+                                {std::to_string(e), std::to_string(m_elementMaterial[e]),
+                                 std::to_string(m_materials.size())}});
         const auto& element = m_mesh.elements[e];
         for (int node : element)
             if (node < 0 || std::size_t(node) >= m_mesh.points.size())
-                throw Error("element " + std::to_string(e) + " refers to node " + std::to_string(node) + " of " +
-                            std::to_string(m_mesh.points.size()));
+                throw Error(Pattern{"element %1 refers to node %2 of %3",
+                                    {std::to_string(e), std::to_string(node), std::to_string(m_mesh.points.size())}});
         const Eigen::Vector3d x0 = m_mesh.points[std::size_t(element[0])];
         Eigen::Matrix3d edges;
         for (int c = 1; c < 4; ++c)
@@ -92,8 +93,8 @@ QuadraticFem::QuadraticFem(QuadraticTetMesh mesh, std::vector<HyperelasticMateri
         const double volume = edges.determinant() / 6.0;
         const double scale = std::max({edges.col(0).norm(), edges.col(1).norm(), edges.col(2).norm()});
         if (!(volume > 1e-6 * scale * scale * scale))
-            throw Error("quadratic element " + std::to_string(e) + " is degenerate or inverted (volume " +
-                        std::to_string(volume) + " m^3)");
+            throw Error(Pattern{"quadratic element %1 is degenerate or inverted (volume %2 m^3)",
+                                {std::to_string(e), std::to_string(volume)}});
         // Rows 1-3 of the gradients: the rows of edges^-1; row 0 minus their sum.
         const Eigen::Matrix3d inverse = edges.inverse();
         m_rest[e].gradients.bottomRows<3>() = inverse;

@@ -73,7 +73,8 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
         const Eigen::Vector3d where = 1e3 * model.firstInvertedCentroid();
         char place[96];
         std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
-        throw Error(std::to_string(inverted) + " elements are inverted at the start of the static solve" + place);
+        throw Error(Pattern{"%1 elements are inverted at the start of the static solve%2",
+                            {std::to_string(inverted), place}});
     }
     double reference = freeNorm(load, constrained); // the load at the start (a follower load changes after)
     if (reference == 0.0)

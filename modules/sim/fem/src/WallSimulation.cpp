@@ -201,8 +201,8 @@ std::vector<std::size_t> WallSimulation::elementsOverTearStrength() const
 void WallSimulation::restore(const Eigen::VectorXd& positions)
 {
     if (positions.size() != m_model.positions().size())
-        throw Error("the saved wall state has " + std::to_string(positions.size() / 3) + " nodes, the wall " +
-                    std::to_string(m_model.nodeCount()));
+        throw Error(Pattern{"the saved wall state has %1 nodes, the wall %2",
+                            {std::to_string(positions.size() / 3), std::to_string(m_model.nodeCount())}});
     m_model.positions() = positions;
     m_model.velocities().setZero();
     m_model.updateElements();

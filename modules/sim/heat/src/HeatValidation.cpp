@@ -23,7 +23,8 @@ double decayError(int cells, const Progress& progress)
     control.keepFramesInMemory = false;
     const SolverRun run = runSolver(solver, {}, parameters, control, progress);
     if (!run.status.complete())
-        throw Error("heat-decay: the run at " + std::to_string(cells) + " cells stopped: " + run.status.stopText());
+        throw Error(Pattern{"heat-decay: the run at %1 cells stopped: %2",
+                            {std::to_string(cells), run.status.stopText()}});
     return run.metrics.at("relative_l2_error");
 }
 
@@ -37,7 +38,7 @@ std::vector<std::string> heatValidationCases()
 ValidationResult runHeatValidation(const std::string& name, const Progress& progress)
 {
     if (name != "heat-decay")
-        throw Error("unknown validation case '" + name + "' (known: heat-decay)");
+        throw Error(Pattern{"unknown validation case '%1' (known: heat-decay)", {name}});
     const auto start = std::chrono::steady_clock::now();
     ValidationResult result;
     result.name = name;

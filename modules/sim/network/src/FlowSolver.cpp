@@ -44,8 +44,8 @@ FlowSolution solveNodalFlow(const VesselNetwork& network, const TipOrientation& 
         conditions[std::size_t(outlet.node)] = &outlet;
     for (int outlet : o.outlets)
         if (!conditions[std::size_t(outlet)])
-            throw Error("outlet node " + std::to_string(outlet) + " has no boundary condition (a pressure or a terminal "
-                        "resistance)",
+            throw Error(Pattern{"outlet node %1 has no boundary condition (a pressure or a terminal resistance)",
+                                {std::to_string(outlet)}},
                         {{"node", std::to_string(outlet)}});
     std::vector<char> isSource(network.nodes.size(), 0), connected(network.nodes.size(), 0);
     std::vector<double> fixedPressure(network.nodes.size(), std::nan(""));
@@ -65,7 +65,7 @@ FlowSolution solveNodalFlow(const VesselNetwork& network, const TipOrientation& 
             connected[std::size_t(network.segments[s].from)] = connected[std::size_t(network.segments[s].to)] = 1;
     for (const NodeSource& source : sources)
         if (!connected[std::size_t(source.node)])
-            throw Error("node " + std::to_string(source.node) + " takes in flow but no open vessel leaves it",
+            throw Error(Pattern{"node %1 takes in flow but no open vessel leaves it", {std::to_string(source.node)}},
                         {{"node", std::to_string(source.node)}});
     // Unknowns numbered children before parents: eliminating a tree from its leaves up creates no fill, so the
     // natural order needs no reordering and the factor has the matrix's pattern.

@@ -37,8 +37,8 @@ int depthOf(const TipOrientation& fromRoot, int segment)
 VesselNetwork treeBeyond(const VesselNetwork& network, int segment, std::vector<int>* nodeMap)
 {
     if (segment < 0 || std::size_t(segment) >= network.segments.size())
-        throw Error("the inlet segment " + std::to_string(segment) + " does not exist (the tree has " +
-                    std::to_string(network.segments.size()) + " segments)");
+        throw Error(Pattern{"the inlet segment %1 does not exist (the tree has %2 segments)",
+                            {std::to_string(segment), std::to_string(network.segments.size())}});
     const int root = network.root >= 0 ? network.root : largestEnd(network);
     const TipOrientation fromRoot = orientFromTip(network, root);
     const int upper = fromRoot.upstreamNode[std::size_t(segment)];
@@ -108,13 +108,14 @@ int inletSegment(const VesselNetwork& network, const std::string& text)
             }
             catch (const std::exception&)
             {
-                throw Error("the inlet '" + text + "' is not a point x,y,z (mm)");
+                throw Error(Pattern{"the inlet '%1' is not a point x,y,z (mm)", {text}});
             }
         }
         const auto [segment, distance] = nearestSegment(network, point);
         if (segment < 0 || distance > kInletReachMm)
-            throw Error("the inlet point " + text + " lies " + std::to_string(int(std::lround(distance))) +
-                        " mm from the nearest vessel (at most " + std::to_string(int(kInletReachMm)) + " mm)");
+            throw Error(Pattern{"the inlet point %1 lies %2 mm from the nearest vessel (at most %3 mm)",
+                                {text, std::to_string(int(std::lround(distance))),
+                                 std::to_string(int(kInletReachMm))}});
         return segment;
     }
     if (!text.empty() &&
@@ -122,8 +123,8 @@ int inletSegment(const VesselNetwork& network, const std::string& text)
     {
         const int segment = std::stoi(text);
         if (std::size_t(segment) >= network.segments.size())
-            throw Error("the inlet segment " + text + " does not exist (the tree has " +
-                        std::to_string(network.segments.size()) + " segments)");
+            throw Error(Pattern{"the inlet segment %1 does not exist (the tree has %2 segments)",
+                                {text, std::to_string(network.segments.size())}});
         return segment;
     }
     const TipOrientation fromRoot =
@@ -146,9 +147,9 @@ int inletSegment(const VesselNetwork& network, const std::string& text)
     std::string known;
     for (const std::string& name : names)
         known += (known.empty() ? "" : ", ") + name;
-    throw Error("no segment of the tree is named '" + text + "'" +
-                (known.empty() ? std::string(" (the tree has no named segments: give a segment number)")
-                               : " (its named segments: " + known + ")"));
+    throw Error(Pattern{"no segment of the tree is named '%1'%2",
+                        {text, (known.empty() ? std::string(" (the tree has no named segments: give a segment number)")
+                               : " (its named segments: " + known + ")")}});
 }
 
 } // namespace vsim::sim::network

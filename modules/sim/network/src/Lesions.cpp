@@ -214,11 +214,11 @@ std::vector<Feeder> editFeeders(std::vector<Feeder> found, const VesselNetwork& 
     for (const std::vector<int>* list : {&edits.added, &edits.removed})
         for (int s : *list)
             if (s < 0 || std::size_t(s) >= network.segments.size())
-                throw Error("feeder edit: segment " + std::to_string(s) + " is not in the network (" +
-                            std::to_string(network.segments.size()) + " segments)");
+                throw Error(Pattern{"feeder edit: segment %1 is not in the network (%2 segments)",
+                                    {std::to_string(s), std::to_string(network.segments.size())}});
     for (int s : edits.added)
         if (std::find(edits.removed.begin(), edits.removed.end(), s) != edits.removed.end())
-            throw Error("feeder edit: segment " + std::to_string(s) + " is both added and removed");
+            throw Error(Pattern{"feeder edit: segment %1 is both added and removed", {std::to_string(s)}});
     std::erase_if(found, [&](const Feeder& f) {
         return std::find(edits.removed.begin(), edits.removed.end(), f.segment) != edits.removed.end();
     });

@@ -92,8 +92,8 @@ VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std
     if (centerlines.edges.empty())
         throw Error("the centerlines have no vessel segments: extract them first (vascusim-cli centerline)");
     if (!endRadiiMm.empty() && endRadiiMm.size() != centerlines.edges.size())
-        throw Error("end radii are given for " + std::to_string(endRadiiMm.size()) + " of " +
-                    std::to_string(centerlines.edges.size()) + " centerline edges");
+        throw Error(Pattern{"end radii are given for %1 of %2 centerline edges",
+                            {std::to_string(endRadiiMm.size()), std::to_string(centerlines.edges.size())}});
     VesselNetwork network;
     for (const SkeletonGraph::Node& node : centerlines.nodes)
         network.nodes.push_back({node.position, {}});
@@ -118,7 +118,8 @@ VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std
             segment.endRadiusMm = median(std::vector<double>(tail, edge.radii.end()));
         }
         if (!(segment.startRadiusMm > 0.0 && segment.endRadiusMm > 0.0))
-            throw Error("centerline edge " + std::to_string(e) + " has no positive radius: measure the vessels again",
+            throw Error(Pattern{"centerline edge %1 has no positive radius: measure the vessels again",
+                                {std::to_string(e)}},
                         {{"segment", std::to_string(e)}});
         network.segments.push_back(std::move(segment));
     }

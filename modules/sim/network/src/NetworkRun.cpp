@@ -385,7 +385,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         const auto [segment, distance] =
             nearestSegment(net, points[i], [&](int s) { return r.twoPhase.orientation.active(s); });
         if (segment < 0 || distance > p.get("tip_reach_mm"))
-            throw Error("control point " + c.name + " is not on the tree downstream of the tip");
+            throw Error(Pattern{"control point %1 is not on the tree downstream of the tip", {c.name}});
         c.segment = segment;
         const std::size_t s = std::size_t(segment);
         const double twoPhaseFlow = std::abs(r.twoPhase.segmentFlow[s]), liquidFlow = std::abs(r.liquid.segmentFlow[s]);

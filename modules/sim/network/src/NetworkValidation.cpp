@@ -289,9 +289,10 @@ ValidationResult runNetworkValidation(const std::string& name, const Progress& p
     else if (name == "network-two-phase-split")
         result = twoPhaseSplit();
     else
-        throw Error("unknown validation case '" + name +
-                    "'; network cases: network-cylinder, network-cone, network-conservation, network-bifurcation, "
-                    "network-confluence, network-annulus, network-mixing, network-two-phase-split");
+        throw Error(Pattern{"unknown validation case '%1'; network cases: network-cylinder, network-cone, "
+                            "network-conservation, network-bifurcation, network-confluence, network-annulus, "
+                            "network-mixing, network-two-phase-split",
+                            {name}});
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     progress.report(1.0, name);
     return result;

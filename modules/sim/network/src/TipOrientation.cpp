@@ -38,15 +38,16 @@ int firstSegmentTowards(const VesselNetwork& network, const std::vector<std::vec
 TipOrientation orientFromTip(const VesselNetwork& network, int tip)
 {
     if (tip < 0 || tip >= int(network.nodes.size()))
-        throw Error("the catheter tip is node " + std::to_string(tip) + ", which is not in the network");
+        throw Error(Pattern{"the catheter tip is node %1, which is not in the network", {std::to_string(tip)}});
     const std::vector<std::vector<int>> incident = network.incidentSegments();
     int excluded = -1;
     if (network.root >= 0 && network.root != tip)
     {
         excluded = firstSegmentTowards(network, incident, tip, network.root);
         if (excluded == -2)
-            throw Error("the catheter tip (node " + std::to_string(tip) +
-                            ") is on a part of the network that is not connected to its root",
+            throw Error(Pattern{"the catheter tip (node %1) is on a part of the network that is not connected to its "
+                                "root",
+                                {std::to_string(tip)}},
                         {{"node", std::to_string(tip)}});
     }
     TipOrientation o;
@@ -78,8 +79,9 @@ TipOrientation orientFromTip(const VesselNetwork& network, int tip)
             o.outlets.push_back(node);
     }
     if (o.order.size() == 1)
-        throw Error("nothing is downstream of the catheter tip (node " + std::to_string(tip) +
-                        " is an end of the tree): place it nearer the root (node " + std::to_string(network.root) + ")",
+        throw Error(Pattern{"nothing is downstream of the catheter tip (node %1 is an end of the tree): place it "
+                            "nearer the root (node %2)",
+                            {std::to_string(tip), std::to_string(network.root)}},
                     {{"node", std::to_string(tip)}});
     return o;
 }

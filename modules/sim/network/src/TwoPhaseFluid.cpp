@@ -20,7 +20,7 @@ double TwoPhaseMixture::viscosity() const
 void TwoPhaseMixture::validate() const
 {
     if (!(voidFraction >= 0.0 && voidFraction < 1.0))
-        throw Error("the void fraction must be in [0, 1), not " + std::to_string(voidFraction),
+        throw Error(Pattern{"the void fraction must be in [0, 1), not %1", {std::to_string(voidFraction)}},
                     {{"parameter", "void_fraction"}});
     for (double value : {phases.liquidDensity, phases.gasDensity, phases.liquidViscosity, phases.gasViscosity})
         if (!(value > 0.0) || !std::isfinite(value))

@@ -71,7 +71,7 @@ AngleScene angleScene(const VesselNetwork& network, int tipNode)
     {
         const int s = fromRoot.parentSegment[std::size_t(node)];
         if (s < 0)
-            throw Error("the catheter tip (node " + std::to_string(tipNode) + ") is not connected to the root");
+            throw Error(Pattern{"the catheter tip (node %1) is not connected to the root", {std::to_string(tipNode)}});
         path.push_back(s);
         node = fromRoot.upstreamNode[std::size_t(s)];
     }

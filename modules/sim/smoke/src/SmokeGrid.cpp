@@ -32,8 +32,9 @@ float trilinear(const std::vector<float>& field, int sx, int sy, int sz, const E
 SmokeGrid SmokeGrid::make(int nx, int ny, int nz, double h, const DomainBoundaries& boundaries)
 {
     if (nx < 2 || ny < 2 || nz < 2 || !(h > 0.0))
-        throw Error("a smoke grid needs at least 2 cells along each axis and a positive cell size (got " +
-                    std::to_string(nx) + " x " + std::to_string(ny) + " x " + std::to_string(nz) + ")");
+        throw Error(Pattern{"a smoke grid needs at least 2 cells along each axis and a positive cell size (got %1 x "
+                            "%2 x %3)",
+                            {std::to_string(nx), std::to_string(ny), std::to_string(nz)}});
     SmokeGrid grid;
     grid.nx = nx, grid.ny = ny, grid.nz = nz, grid.h = h, grid.boundaries = boundaries;
     grid.u.assign(std::size_t(nx + 1) * ny * nz, 0.0f);

@@ -114,7 +114,7 @@ TaylorGreenRun taylorGreen(int n, double confinement, double particleStrength, c
     {
         const SmokeStepReport report = simulation.step(std::min(dt, end - simulation.time()));
         if (!report.guard.empty())
-            throw Error("smoke-taylor-green: " + report.guard);
+            throw Error(Pattern{"smoke-taylor-green: %1", {report.guard}});
         const double current = enstrophy(simulation.grid());
         enstrophyTime += 0.5 * (previousEnstrophy + current) * report.dt;
         previousEnstrophy = current;
@@ -172,7 +172,7 @@ double massDrift(AdvectionScheme scalarScheme, const Progress& progress)
     {
         const SmokeStepReport report = simulation.step(simulation.stableStep(0.01));
         if (!report.guard.empty())
-            throw Error("smoke-mass: " + report.guard);
+            throw Error(Pattern{"smoke-mass: %1", {report.guard}});
         progress.report((step + 1) / 500.0);
     }
     return simulation.grid().smokeMass() / initial - 1.0;
@@ -213,7 +213,7 @@ ValidationResult ballCase(const Progress& progress)
     {
         const SmokeStepReport report = simulation.step(simulation.stableStep(0.005));
         if (!report.guard.empty())
-            throw Error("smoke-ball: " + report.guard);
+            throw Error(Pattern{"smoke-ball: %1", {report.guard}});
         worstRatio = std::max(worstRatio, report.projection.divergenceRatio);
         const SmokeGrid& g = simulation.grid();
         const Eigen::Vector3d ball = simulation.sphere()->velocity;
@@ -263,8 +263,9 @@ ValidationResult runSmokeValidation(const std::string& name, const Progress& pro
     else if (name == "smoke-ball")
         result = ballCase(progress);
     else
-        throw Error("unknown validation case '" + name +
-                    "' (known: smoke-divergence, smoke-taylor-green, smoke-mass, smoke-ball)");
+        throw Error(Pattern{"unknown validation case '%1' (known: smoke-divergence, smoke-taylor-green, smoke-mass, "
+                            "smoke-ball)",
+                            {name}});
     result.name = name;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -25,7 +25,7 @@ SolverRun runCase(const std::string& caseName, SphSolver& solver, ParticleSet pa
     control.keepFramesInMemory = false;
     SolverRun run = runSolver(solver, input, parameters, control, progress);
     if (!run.status.complete())
-        throw Error(caseName + ": the run stopped: " + run.status.stopText());
+        throw Error(Pattern{"%1: the run stopped: %2", {caseName, run.status.stopText()}});
     return run;
 }
 

@@ -15,8 +15,8 @@ NeighbourGrid::NeighbourGrid(double reachM, const Eigen::Vector3d& periodicLengt
     // A periodic axis needs 2 k + 1 cells, so that a query visits each cell once.
     for (int a = 0; a < 3; ++a)
         if (!(m_period[a] >= 0.0) || (m_period[a] > 0.0 && m_period[a] < (2 * kCellsPerReach + 1) * m_cellSize))
-            throw Error("a periodic axis must be at least 2.5 kernel supports long (" +
-                        std::to_string(2.5e3 * reachM) + " mm)");
+            throw Error(Pattern{"a periodic axis must be at least 2.5 kernel supports long (%1 mm)",
+                                {std::to_string(2.5e3 * reachM)}});
 }
 
 std::array<int, 3> NeighbourGrid::cellOf(const Eigen::Vector3d& positionM) const
@@ -56,8 +56,7 @@ void NeighbourGrid::build(const std::vector<Eigen::Vector3d>& positionsM)
         }
         cells *= m_dims[std::size_t(a)];
         if (cells > kMaxCells)
-            throw Error("the particles spread over more than " + std::to_string(kMaxCells) +
-                        " neighbour cells");
+            throw Error(Pattern{"the particles spread over more than %1 neighbour cells", {std::to_string(kMaxCells)}});
     }
     // Counting sort: count per cell, prefix sum, place.
     std::vector<std::int64_t> cellOfParticle(positionsM.size());

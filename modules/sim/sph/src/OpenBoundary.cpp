@@ -81,21 +81,21 @@ void OpenBoundaries::initialize(const ParticleState& particles, double depthM, d
     m_pressure.assign(count, 0.0);
     for (const OpenBoundary& b : m_boundaries)
         if (std::abs(b.normal.norm() - 1.0) > 1e-9 || !(b.radiusM > 0.0))
-            throw Error("the open boundary '" + b.name + "' needs a unit normal and a positive radius");
+            throw Error(Pattern{"the open boundary '%1' needs a unit normal and a positive radius", {b.name}});
     const double volume = spacingM * spacingM * spacingM;
     std::vector<double> buffered(count, 0.0);
     for (std::size_t i = 0; i < particles.size(); ++i)
         if (particles.boundary[i])
         {
             if (particles.boundary[i] > count)
-                throw Error("a buffer particle names open boundary " + std::to_string(particles.boundary[i]) +
-                            " of " + std::to_string(count));
+                throw Error(Pattern{"a buffer particle names open boundary %1 of %2",
+                                    {std::to_string(particles.boundary[i]), std::to_string(count)}});
             buffered[particles.boundary[i] - 1u] += 1.0;
         }
     for (std::size_t k = 0; k < count; ++k)
     {
         if (buffered[k] == 0.0)
-            throw Error("the open boundary '" + m_boundaries[k].name + "' has no buffer particles behind it");
+            throw Error(Pattern{"the open boundary '%1' has no buffer particles behind it", {m_boundaries[k].name}});
         m_equivalentRadius[k] = std::sqrt(buffered[k] * volume / depthM / std::numbers::pi);
     }
     for (std::size_t i = 0; i < particles.size(); ++i)

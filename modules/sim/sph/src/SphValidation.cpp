@@ -32,7 +32,9 @@ ValidationResult runSphValidation(const std::string& name, const Progress& progr
     else if (name == "sph-stenosis")
         result = detail::stenosisCase(progress);
     else
-        throw Error("unknown validation case '" + name + "' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis)");
+        throw Error(Pattern{"unknown validation case '%1' (known: sph-kernel, sph-fpm, sph-hydrostatic, "
+                            "sph-poiseuille, sph-womersley, sph-mass, sph-stenosis)",
+                            {name}});
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

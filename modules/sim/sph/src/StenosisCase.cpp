@@ -36,8 +36,9 @@ detail::PipeShape pipeShape(const StenosisPipe& pipe)
 StenosisPipe StenosisPipe::atFlow(double meanSpeed, double length) const
 {
     if (!(meanSpeed > 0.0) || !(length >= throatAtMm + halfLengthMm + compareMm + 2.0 * sectionStepMm))
-        throw Error("the stenosis pipe needs a mean speed > 0 and room for the sections past the throat (length >= " +
-                    std::to_string(throatAtMm + halfLengthMm + compareMm + 2.0 * sectionStepMm) + " mm)");
+        throw Error(Pattern{"the stenosis pipe needs a mean speed > 0 and room for the sections past the throat "
+                            "(length >= %1 mm)",
+                            {std::to_string(throatAtMm + halfLengthMm + compareMm + 2.0 * sectionStepMm)}});
     StenosisPipe pipe = *this;
     pipe.soundSpeedMS = soundSpeedMS * meanSpeed / meanSpeedMS;
     pipe.meanSpeedMS = meanSpeed, pipe.lengthMm = length;

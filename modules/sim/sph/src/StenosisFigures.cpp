@@ -32,7 +32,8 @@ StenosisFigures stenosisFigures(const std::vector<double>& arcMm, const std::vec
             flows[k].particles > 0 && flows[k].areaM2 < smallest)
             smallest = flows[k].areaM2, figures.throat = k, found = true;
     if (!found)
-        throw Error("no section lies " + std::to_string(distanceMm) + " mm from both ends of the path to compare with");
+        throw Error(Pattern{"no section lies %1 mm from both ends of the path to compare with",
+                            {std::to_string(distanceMm)}});
     figures.throatArcMm = arcMm[figures.throat];
     figures.upstream = nearestSection(arcMm, figures.throatArcMm - distanceMm);
     figures.downstream = nearestSection(arcMm, figures.throatArcMm + distanceMm);

@@ -14,7 +14,7 @@ namespace vsim::cuda {
 inline void check(cudaError_t status, const char* call)
 {
     if (status != cudaSuccess)
-        throw Error(std::string("CUDA call failed: ") + call + ": " + cudaGetErrorString(status));
+        throw Error(Pattern{"CUDA call failed: %1: %2", {call, cudaGetErrorString(status)}});
 }
 
 } // namespace vsim::cuda
