@@ -375,6 +375,8 @@ static const char* const kErrorTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "an annulus sector needs 0 < inner < outer radius, a positive angle and height"),
     QT_TRANSLATE_NOOP("vsim::Error", "the tangent stiffness could not be factorised (a part of the wall is not held by the fixed ends, or the load is past the wall's limit)"),
     QT_TRANSLATE_NOOP("vsim::Error", "tearing would remove every element of the wall"),
+    QT_TRANSLATE_NOOP("vsim::Error", "an element is inverted at rest (negative volume)"),
+    QT_TRANSLATE_NOOP("vsim::Error", "an element is degenerate at rest (flat or zero volume)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the tetrahedral mesh is not a vessel wall (wall_layer / end_set fields missing): build it with 'mesh wall'"),
     QT_TRANSLATE_NOOP("vsim::Error", "the wall has no fixed end (end_set is 0 everywhere): build it from centerlines with ends"),
     QT_TRANSLATE_NOOP("vsim::Error", "no lumen face carries the pressure"),

@@ -3381,6 +3381,14 @@
         <source>the %1 frame has no field &apos;%2&apos; to show in the slices</source>
         <translation>der Frame %1 hat kein Feld &apos;%2&apos;, das in den Schichten gezeigt werden könnte</translation>
     </message>
+    <message>
+        <source>an element is inverted at rest (negative volume)</source>
+        <translation>ein Element ist in Ruhe umgestülpt (negatives Volumen)</translation>
+    </message>
+    <message>
+        <source>an element is degenerate at rest (flat or zero volume)</source>
+        <translation>ein Element ist in Ruhe entartet (flach oder Volumen null)</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -3381,6 +3381,14 @@
         <source>the %1 frame has no field &apos;%2&apos; to show in the slices</source>
         <translation>%1 帧没有可在切片中显示的场 &apos;%2&apos;</translation>
     </message>
+    <message>
+        <source>an element is inverted at rest (negative volume)</source>
+        <translation>有单元在静止状态下翻转（体积为负）</translation>
+    </message>
+    <message>
+        <source>an element is degenerate at rest (flat or zero volume)</source>
+        <translation>有单元在静止状态下退化（扁平或体积为零）</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

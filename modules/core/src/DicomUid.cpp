@@ -8,20 +8,22 @@
 namespace vsim {
 namespace {
 
+__extension__ typedef unsigned __int128 Uint128; // GCC's and Clang's 128-bit integer (not ISO C++)
+
 std::mutex g_mutex;
 std::string g_root;
 
 /// A uniformly random number below 2^bits (bits <= 128), from the system's entropy source.
-unsigned __int128 randomBits(int bits)
+Uint128 randomBits(int bits)
 {
     static std::random_device device;
-    unsigned __int128 value = 0;
+    Uint128 value = 0;
     for (int word = 0; word < 4; ++word)
         value = (value << 32) | device();
-    return bits >= 128 ? value : value & ((unsigned __int128)(1) << bits) - 1;
+    return bits >= 128 ? value : value & ((Uint128(1) << bits) - 1);
 }
 
-std::string decimal(unsigned __int128 value)
+std::string decimal(Uint128 value)
 {
     std::string digits;
     do
@@ -57,11 +59,11 @@ std::string newDicomUid()
     if (root.empty())
     {
         // A version 4 UUID (RFC 4122: 4 bits of version, 2 of variant) as one decimal integer under 2.25.
-        unsigned __int128 uuid = randomBits(128);
-        uuid &= ~((unsigned __int128)(0xF) << 76);
-        uuid |= (unsigned __int128)(0x4) << 76;
-        uuid &= ~((unsigned __int128)(0x3) << 62);
-        uuid |= (unsigned __int128)(0x2) << 62;
+        Uint128 uuid = randomBits(128);
+        uuid &= ~(Uint128(0xF) << 76);
+        uuid |= Uint128(0x4) << 76;
+        uuid &= ~(Uint128(0x3) << 62);
+        uuid |= Uint128(0x2) << 62;
         return "2.25." + decimal(uuid);
     }
     // 96 random bits plus 1: at most 29 digits, never the component "0"; decimal() writes no leading zeros.

@@ -35,8 +35,11 @@ TetRest restTetrahedron(const std::array<Eigen::Vector3d, 4>& rest, const Elasti
         for (int b = a + 1; b < 4; ++b)
             longest = std::max(longest, (rest[std::size_t(a)] - rest[std::size_t(b)]).norm());
     if (!(volume > 1e-6 * longest * longest * longest))
-        throw Error(volume < 0.0 ? "an element is inverted at rest (negative volume)"
-                                 : "an element is degenerate at rest (flat or zero volume)");
+    {
+        if (volume < 0.0)
+            throw Error("an element is inverted at rest (negative volume)");
+        throw Error("an element is degenerate at rest (flat or zero volume)");
+    }
     TetRest element;
     element.volume = volume;
     element.restEdgesInverse = edges.inverse();
