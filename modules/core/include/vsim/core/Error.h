@@ -33,7 +33,8 @@ public:
     std::string contextValue(const std::string& key) const;
 
     /// The message in the reader's language (localized() under "vsim::Error"; the catalogues hold every message
-    /// written as one literal, translations/ErrorTexts.cpp); what() and message() stay English, for logs.
+    /// written as one literal or as a Pattern, translations/ErrorTexts.cpp); what() and message() stay English,
+    /// for logs and the CLI.
     std::string messageForPeople() const;
     /// messageForPeople() and the context, its keys in the reader's language too.
     std::string textForPeople() const;
