@@ -76,7 +76,7 @@ int writeReport(const Arguments& arguments, const Progress& progress)
     options.sections = sectionList(arguments.option("sections"));
     options.language = arguments.option("language", "en");
     const auto application = guiApplication();
-    const app::ScopedTextLanguage language(options.language); // the texts and numbers built and rendered here
+    const app::ScopedTextLanguage language{app::TextLanguage(options.language)}; // the texts built and rendered here
     const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
     const QByteArray pdf = report::renderPdf(report, page);
     report::writeText(std::string(pdf.constData(), std::size_t(pdf.size())), out);

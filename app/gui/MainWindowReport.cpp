@@ -20,6 +20,8 @@
 #include <QStatusBar>
 #include <QThread>
 
+#include <optional>
+
 namespace vsim::gui {
 namespace {
 
@@ -118,7 +120,18 @@ bool MainWindow::exportReport(const ReportExportRequest& request)
     options.anonymize = request.anonymize;
     options.language = request.language.toStdString();
     options.validate = request.validate;
-    options.renderSnapshot = [language = options.language](const std::function<QImage()>& render) {
+    std::optional<app::TextLanguage> loaded; // the report's own, whatever the window's; loaded once
+    try
+    {
+        loaded.emplace(options.language);
+    }
+    catch (const Error& error)
+    {
+        showError(tr("Report"), QString::fromStdString(error.messageForPeople()));
+        return false;
+    }
+    const app::TextLanguage language = *loaded;
+    options.renderSnapshot = [language](const std::function<QImage()>& render) {
         return renderOnGuiThread([&] {
             const app::ScopedTextLanguage snapshotLanguage(language);
             return render();
@@ -127,11 +140,11 @@ bool MainWindow::exportReport(const ReportExportRequest& request)
     auto built = std::make_shared<std::pair<report::Report, QByteArray>>();
     return m_tasks.run(
         tr("Report"),
-        [this, request, options, built](const Progress& progress) {
+        [this, request, options, built, language](const Progress& progress) {
             for (const QString& file : request.outputFiles()) // before the work: a refusal costs no time
                 checkOutputFile(file.toStdString(), request.overwrite);
             const study::Study& study = m_document.study();
-            const app::ScopedTextLanguage language(options.language); // the report's own, whatever the window's
+            const app::ScopedTextLanguage reportLanguage(language);
             const report::Report report = app::buildStudyReport(study, options, progress.subRange(0.0, 0.9));
             const QByteArray pdf = report::renderPdf(report, request.page);
             *built = {report, pdf};

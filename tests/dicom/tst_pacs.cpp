@@ -33,7 +33,6 @@ using test::jsonOf;
 using test::runCli;
 using test::startOrthanc;
 
-
 class TestPacs : public QObject
 {
     Q_OBJECT

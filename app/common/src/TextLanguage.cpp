@@ -61,7 +61,12 @@ std::vector<std::string> textLanguages()
     return {"en", "de", "zh_CN"};
 }
 
-ScopedTextLanguage::ScopedTextLanguage(const std::string& code) : m_catalogue(loadCatalogue(code))
+TextLanguage::TextLanguage(const std::string& code)
+    : m_catalogue(loadCatalogue(code)), m_decimalMark(decimalMarkOf(code))
+{
+}
+
+ScopedTextLanguage::ScopedTextLanguage(const TextLanguage& language) : m_catalogue(language.m_catalogue)
 {
     const QTranslator* catalogue = m_catalogue.get();
     m_scope = std::make_unique<ThreadTextLanguage>(
@@ -69,7 +74,7 @@ ScopedTextLanguage::ScopedTextLanguage(const std::string& code) : m_catalogue(lo
             const QString found = catalogue ? catalogue->translate(context, english) : QString();
             return found.isEmpty() ? std::string(english) : found.toStdString();
         },
-        decimalMarkOf(code));
+        language.m_decimalMark);
 }
 
 ScopedTextLanguage::~ScopedTextLanguage() = default;

@@ -24,20 +24,33 @@ void useQtTranslations(const std::string& code = "en");
 /// The languages of the catalogues and the English source: "en", "de", "zh_CN".
 std::vector<std::string> textLanguages();
 
-/// While alive, this thread's localized() texts and numbers are in `code`'s language, whatever the application's:
-/// `code` is a textLanguages() code or a compiled catalogue file (*.qm: a translation in progress, the tests'
-/// pseudo-locale; numbers keep the '.'). The report is built and rendered inside one. Throws vsim::Error for
-/// another code, a file that is not a catalogue, or when this build lacks the catalogue.
+/// A language's catalogue, loaded once and shared by the threads that write in it (the report's background thread
+/// and its 3D snapshots on the GUI thread). `code` is a textLanguages() code or a compiled catalogue file (*.qm: a
+/// translation in progress, the tests' pseudo-locale; numbers keep the '.'). Throws vsim::Error for another code,
+/// a file that is not a catalogue, or when this build lacks the catalogue.
+class TextLanguage
+{
+public:
+    explicit TextLanguage(const std::string& code);
+
+private:
+    friend class ScopedTextLanguage;
+    std::shared_ptr<const QTranslator> m_catalogue; // none for English
+    char m_decimalMark = '.';
+};
+
+/// While alive, this thread's localized() texts and numbers are in `language`, whatever the application's. The
+/// report is built and rendered inside one.
 class ScopedTextLanguage
 {
 public:
-    explicit ScopedTextLanguage(const std::string& code);
+    explicit ScopedTextLanguage(const TextLanguage& language);
     ~ScopedTextLanguage();
     ScopedTextLanguage(const ScopedTextLanguage&) = delete;
     ScopedTextLanguage& operator=(const ScopedTextLanguage&) = delete;
 
 private:
-    std::unique_ptr<QTranslator> m_catalogue; // none for English
+    std::shared_ptr<const QTranslator> m_catalogue; // kept alive while the scope looks texts up in it
     std::unique_ptr<ThreadTextLanguage> m_scope;
 };
 
