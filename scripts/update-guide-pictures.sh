@@ -1,10 +1,13 @@
 #!/bin/sh
 # Refreshes the user guide's pictures (resources/help/pictures) from the screenshots the GUI tests keep in
-# build/default/test-output: run the GUI tests first (ctest -L gui under xvfb-run), then this script.
+# build/default/test-output: run the GUI tests first (ctest -L gui under xvfb-run), then this script. The English
+# interface's pictures come from several tests; the German and Chinese ones (pictures/<code>/) from the walk's
+# pass in each language (tst_gui_walk: test-output/gui-walk/guide-<code>), which the guides in those languages show.
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 shots="$root/build/default/test-output"
 /usr/bin/python3 - "$shots" "$root/resources/help/pictures" <<'PY'
+import os
 import sys
 from PIL import Image
 shots, out = sys.argv[1], sys.argv[2]
@@ -14,10 +17,14 @@ pictures = {'gui/dicom-import-dialog.png': 'import.png', 'gui/vessels.png': 'ves
             'gui-drug/territory/territory.png': 'territory.png', 'gui/slice-overlays-x1.png': 'slice-view.png',
             'gui-endoscope/endoscope-focused.png': 'endoscope.png', 'gui/pacs-dialog.png': 'pacs.png',
             'gui/pacs-send.png': 'pacs-send.png'}
+for code in ('de', 'zh_CN'):
+    for name in ('vessels', 'slice-view', 'import', 'wall-stress', 'vessel-view', 'endoscope'):
+        pictures[f'gui-walk/guide-{code}/{name}.png'] = f'{code}/{name}.png'
 for source, name in pictures.items():
     picture = Image.open(f'{shots}/{source}').convert('RGB')
     if picture.width > 900:
         picture = picture.resize((900, picture.height * 900 // picture.width), Image.LANCZOS)
+    os.makedirs(os.path.dirname(f'{out}/{name}'), exist_ok=True)
     picture.save(f'{out}/{name}', optimize=True)
     print(name, picture.size)
 PY

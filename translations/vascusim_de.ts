@@ -3389,6 +3389,486 @@
         <source>an element is degenerate at rest (flat or zero volume)</source>
         <translation>ein Element ist in Ruhe entartet (flach oder Volumen null)</translation>
     </message>
+    <message>
+        <source>a tumour grown in its own window holds its darkest part only: give the liver label with --within for the lesion&apos;s boundary against the parenchyma</source>
+        <translation>ein in eigenem Fenster gewachsener Tumor enthält nur seinen dunkelsten Teil: geben Sie das Leberlabel mit --within an, um die Grenze der Läsion zum Parenchym zu finden</translation>
+    </message>
+    <message>
+        <source>the run ends before the inflow has risen (%1 s): the figures are not of a settled flow</source>
+        <translation>der Lauf endet, bevor der Zufluss angestiegen ist (%1 s): die Kennzahlen stammen nicht von einer eingeschwungenen Strömung</translation>
+    </message>
+    <message>
+        <source>the averaging starts %1 s after the inflow&apos;s rise, under three settling times (3 x %2 s: the vessel&apos;s resistance x compliance at this sound speed): the figures may not be of a settled flow</source>
+        <translation>die Mittelung beginnt %1 s nach dem Anstieg des Zuflusses, unter drei Einschwingzeiten (3 x %2 s: Widerstand x Compliance des Gefäßes bei dieser Schallgeschwindigkeit): die Kennzahlen stammen womöglich nicht von einer eingeschwungenen Strömung</translation>
+    </message>
+    <message>
+        <source>no stenosis figures: %1</source>
+        <translation>keine Stenosekennzahlen: %1</translation>
+    </message>
+    <message>
+        <source>the run stopped before its averaging window (from %1 s): no section averages or stenosis figures</source>
+        <translation>der Lauf endete vor seinem Mittelungsfenster (ab %1 s): keine Querschnittsmittel oder Stenosekennzahlen</translation>
+    </message>
+    <message>
+        <source>no liver label in the study (vascusim-cli segment-organ --organ liver): the box phantom was used</source>
+        <translation>kein Leberlabel in der Studie (vascusim-cli segment-organ --organ liver): das Quader-Phantom wurde verwendet</translation>
+    </message>
+    <message>
+        <source>ran on the CPU: %1</source>
+        <translation>lief auf der CPU: %1</translation>
+    </message>
+    <message>
+        <source>stopped early: %1</source>
+        <translation>vorzeitig beendet: %1</translation>
+    </message>
+    <message>
+        <source>the open boundaries let in more particles than the GPU&apos;s arrays hold (%1)</source>
+        <translation>die offenen Ränder ließen mehr Teilchen ein, als die Felder der GPU fassen (%1)</translation>
+    </message>
+    <message>
+        <source>at t = %1 s %2</source>
+        <translation>bei t = %1 s: %2</translation>
+    </message>
+    <message>
+        <source>particle %1 has a value that is not finite</source>
+        <translation>Teilchen %1 hat einen nicht endlichen Wert</translation>
+    </message>
+    <message>
+        <source>particle %1 left the domain (through a wall or an open end without an outlet)</source>
+        <translation>Teilchen %1 hat das Gebiet verlassen (durch eine Wand oder ein offenes Ende ohne Auslass)</translation>
+    </message>
+    <message>
+        <source>fluid particle %1 went more than half a spacing into the wall: the time step or the sound speed is too large for the flow, or the wall thinner than the kernel (a segmentation&apos;s ragged edge: the walls&apos; backstop, parameter wall_repulsion 0.01)</source>
+        <translation>Fluidteilchen %1 drang mehr als einen halben Abstand in die Wand ein: Zeitschritt oder Schallgeschwindigkeit sind zu groß für die Strömung, oder die Wand ist dünner als der Kern (ein ausgefranster Segmentierungsrand: die Rückhaltung der Wände, Parameter wall_repulsion 0,01)</translation>
+    </message>
+    <message>
+        <source>a particle&apos;s density is %1 % from the rest density (guard %2 %): raise the sound speed or lower the inflow</source>
+        <translation>die Dichte eines Teilchens weicht %1 % von der Ruhedichte ab (Wächter %2 %): erhöhen Sie die Schallgeschwindigkeit oder senken Sie den Zufluss</translation>
+    </message>
+    <message>
+        <source>values rescaled to HU by the user&apos;s rescale: HU = %1 x stored + %2</source>
+        <translation>Werte mit der Umrechnung des Benutzers in HU umgerechnet: HU = %1 x gespeichert + %2</translation>
+    </message>
+    <message>
+        <source>%1 voxels clamped to the int16 range</source>
+        <translation>%1 Voxel auf den int16-Bereich begrenzt</translation>
+    </message>
+    <message>
+        <source>modality is %1, not CT: values are not Hounsfield units</source>
+        <translation>Modalität ist %1, nicht CT: die Werte sind keine Hounsfield-Einheiten</translation>
+    </message>
+    <message>
+        <source>%1 values outside -32768..32767 HU were clamped</source>
+        <translation>%1 Werte außerhalb von -32768..32767 HU wurden begrenzt</translation>
+    </message>
+    <message>
+        <source>modality is missing, not CT: values are not Hounsfield units</source>
+        <translation>Modalität fehlt, nicht CT: die Werte sind keine Hounsfield-Einheiten</translation>
+    </message>
+    <message>
+        <source>%1 localizer image skipped</source>
+        <translation>%1 Übersichtsaufnahme übersprungen</translation>
+    </message>
+    <message>
+        <source>%1 localizer images skipped</source>
+        <translation>%1 Übersichtsaufnahmen übersprungen</translation>
+    </message>
+    <message>
+        <source>series split into %1 sub-series (orientation, image size, pixel spacing, image type or acquisition differ); this is part %2</source>
+        <translation>Serie in %1 Teilserien aufgeteilt (Orientierung, Bildgröße, Pixelabstand, Bildtyp oder Akquisition unterscheiden sich); dies ist Teil %2</translation>
+    </message>
+    <message>
+        <source>%1 file is not DICOM (skipped)</source>
+        <translation>%1 Datei ist kein DICOM (übersprungen)</translation>
+    </message>
+    <message>
+        <source>%1 files are not DICOM (skipped)</source>
+        <translation>%1 Dateien sind kein DICOM (übersprungen)</translation>
+    </message>
+    <message>
+        <source>%1 DICOM file holds no image (DICOMDIR, reports, ...; skipped)</source>
+        <translation>%1 DICOM-Datei enthält kein Bild (DICOMDIR, Befunde, ...; übersprungen)</translation>
+    </message>
+    <message>
+        <source>%1 DICOM files hold no image (DICOMDIR, reports, ...; skipped)</source>
+        <translation>%1 DICOM-Dateien enthalten kein Bild (DICOMDIR, Befunde, ...; übersprungen)</translation>
+    </message>
+    <message>
+        <source>%1 DICOM file is damaged or truncated (skipped)</source>
+        <translation>%1 DICOM-Datei ist beschädigt oder abgeschnitten (übersprungen)</translation>
+    </message>
+    <message>
+        <source>%1 DICOM files are damaged or truncated (skipped)</source>
+        <translation>%1 DICOM-Dateien sind beschädigt oder abgeschnitten (übersprungen)</translation>
+    </message>
+    <message>
+        <source>%1 voxels belong to several segments: the higher segment number is kept</source>
+        <translation>%1 Voxel gehören zu mehreren Segmenten: die höhere Segmentnummer wird behalten</translation>
+    </message>
+    <message>
+        <source>%1 slices at duplicate positions dropped (kept the lowest instance number)</source>
+        <translation>%1 Schichten an doppelten Positionen verworfen (die niedrigste Instanznummer behalten)</translation>
+    </message>
+    <message>
+        <source>%1 missing slices (gaps up to %2 mm where the spacing is %3 mm): filled by interpolation</source>
+        <translation>%1 fehlende Schichten (Lücken bis %2 mm bei einem Abstand von %3 mm): durch Interpolation aufgefüllt</translation>
+    </message>
+    <message>
+        <source>uneven slice spacing (%1 to %2 mm): resampled to %3 mm</source>
+        <translation>ungleichmäßiger Schichtabstand (%1 bis %2 mm): auf %3 mm umgetastet</translation>
+    </message>
+    <message>
+        <source>gantry tilt of %1 degrees: resampled onto an orthogonal grid</source>
+        <translation>Gantry-Neigung von %1 Grad: auf ein orthogonales Gitter umgetastet</translation>
+    </message>
+    <message>
+        <source>the series has a single slice</source>
+        <translation>die Serie hat nur eine Schicht</translation>
+    </message>
+    <message>
+        <source>the lowest renal artery was not found in the lumen label: the neck is the narrowest outer diameter within 80 mm above the widest section</source>
+        <translation>die unterste Nierenarterie wurde im Lumenlabel nicht gefunden: der Hals ist der kleinste Außendurchmesser innerhalb von 80 mm über dem weitesten Querschnitt</translation>
+    </message>
+    <message>
+        <source>no sac: the widest outer diameter does not exceed 1.5 x the neck&apos;s</source>
+        <translation>kein Sack: der größte Außendurchmesser übersteigt nicht das 1,5-Fache des Halses</translation>
+    </message>
+    <message>
+        <source>the fronts reached the path-length limit (%1 mm) or a branch limit: the vessel continues beyond the label</source>
+        <translation>die Fronten erreichten die Weglängengrenze (%1 mm) oder eine Verzweigungsgrenze: das Gefäß setzt sich über das Label hinaus fort</translation>
+    </message>
+    <message>
+        <source>the opening removed every point&apos;s surroundings: the lesion is thinner than the opening there; the label is the grown region without the opening</source>
+        <translation>die Öffnung entfernte die Umgebung jedes Punkts: die Läsion ist dort dünner als die Öffnung; das Label ist die gewachsene Region ohne Öffnung</translation>
+    </message>
+    <message>
+        <source>the opening removed every point&apos;s surroundings: the organ is thinner than the opening there; the label is the grown region without the opening</source>
+        <translation>die Öffnung entfernte die Umgebung jedes Punkts: das Organ ist dort dünner als die Öffnung; das Label ist die gewachsene Region ohne Öffnung</translation>
+    </message>
+    <message>
+        <source>weak contrast: blood %1 HU against tissue %2 HU; the boundary may be unreliable</source>
+        <translation>schwacher Kontrast: Blut %1 HU gegen Gewebe %2 HU; die Grenze ist womöglich unzuverlässig</translation>
+    </message>
+    <message>
+        <source>%1 voxels next to bone or calcium excluded</source>
+        <translation>%1 Voxel neben Knochen oder Kalk ausgeschlossen</translation>
+    </message>
+    <message>
+        <source>%1 boundary faces outside the selection have all their nodes on the lumen surface and carry the pressure too (a wall one element thick there)</source>
+        <translation>%1 Randflächen außerhalb der Auswahl liegen mit allen Knoten auf der Lumenoberfläche und tragen ebenfalls den Druck (dort ist die Wand nur ein Element dick)</translation>
+    </message>
+    <message>
+        <source>%1 triangles in loose pieces left by the end cuts (or apart from the vessel tree) were dropped</source>
+        <translation>%1 Dreiecke in losen Stücken, die die Endschnitte hinterließen (oder abseits des Gefäßbaums), wurden verworfen</translation>
+    </message>
+    <message>
+        <source>the lumen surface is open away from the vessel ends (%1 boundary edges; is the segmentation cut by the image border?): those nodes stay free</source>
+        <translation>die Lumenoberfläche ist abseits der Gefäßenden offen (%1 Randkanten; schneidet der Bildrand die Segmentierung?): diese Knoten bleiben frei</translation>
+    </message>
+    <message>
+        <source>%1 elements are inverted where the offset folds (wall thicker than the local radius of curvature): use a thinner wall or a smoother surface</source>
+        <translation>%1 Elemente sind umgestülpt, wo sich der Versatz faltet (Wand dicker als der lokale Krümmungsradius): verwenden Sie eine dünnere Wand oder eine glattere Oberfläche</translation>
+    </message>
+    <message>
+        <source>end %1 has no open boundary</source>
+        <translation>Ende %1 hat keinen offenen Rand</translation>
+    </message>
+    <message>
+        <source>a value that is not finite: %1</source>
+        <translation>ein nicht endlicher Wert: %1</translation>
+    </message>
+    <message>
+        <source>the run did not reach its end within the step limit of %1 steps (a collapsing time step?)</source>
+        <translation>der Lauf erreichte sein Ende nicht innerhalb der Schrittgrenze von %1 Schritten (ein zusammenbrechender Zeitschritt?)</translation>
+    </message>
+    <message>
+        <source>step %1 left %2</source>
+        <translation>Schritt %1 hinterließ %2</translation>
+    </message>
+    <message>
+        <source>the equilibrium at the ramp&apos;s start %1 failed: %2</source>
+        <translation>das Gleichgewicht am Beginn der Rampe %1 schlug fehl: %2</translation>
+    </message>
+    <message>
+        <source>elements are over the tear strength already at the ramp&apos;s start %1: start lower</source>
+        <translation>Elemente liegen schon am Beginn der Rampe %1 über der Reißfestigkeit: beginnen Sie niedriger</translation>
+    </message>
+    <message>
+        <source>no equilibrium in %1 Newton updates (force residual %2)</source>
+        <translation>kein Gleichgewicht in %1 Newton-Schritten (Kraftresiduum %2)</translation>
+    </message>
+    <message>
+        <source>the equilibrium at %1 failed: %2</source>
+        <translation>das Gleichgewicht bei %1 schlug fehl: %2</translation>
+    </message>
+    <message>
+        <source>the fracture entropy passed %1 nats at %2</source>
+        <translation>die Bruchentropie überschritt %1 nats bei %2</translation>
+    </message>
+    <message>
+        <source>%1 elements torn at %2</source>
+        <translation>%1 Elemente gerissen bei %2</translation>
+    </message>
+    <message>
+        <source>the torn wall holds no equilibrium at %1 (rupture): %2</source>
+        <translation>die gerissene Wand hat bei %1 kein Gleichgewicht (Ruptur): %2</translation>
+    </message>
+    <message>
+        <source>the equilibrium at %1 % of the pressure did not converge in %2 Newton updates (force residual %3) even in increments of 1/16; the last converged increment is kept</source>
+        <translation>das Gleichgewicht bei %1 % des Drucks konvergierte nicht in %2 Newton-Schritten (Kraftresiduum %3), auch nicht in Inkrementen von 1/16; das letzte konvergierte Inkrement bleibt erhalten</translation>
+    </message>
+    <message>
+        <source>the equilibrium at %1 % of the pressure failed: %2 even in increments of 1/16; the last converged increment is kept</source>
+        <translation>das Gleichgewicht bei %1 % des Drucks schlug fehl: %2, auch in Inkrementen von 1/16; das letzte konvergierte Inkrement bleibt erhalten</translation>
+    </message>
+    <message>
+        <source>%1 at step %2 (t = %3 s, pressure %4 MPa); the last good state is kept</source>
+        <translation>%1 in Schritt %2 (t = %3 s, Druck %4 MPa); der letzte gültige Zustand bleibt erhalten</translation>
+    </message>
+    <message>
+        <source>%1 at step %2; the last good state is kept</source>
+        <translation>%1 in Schritt %2; der letzte gültige Zustand bleibt erhalten</translation>
+    </message>
+    <message>
+        <source>the fracture entropy reached %1 (end condition %2)</source>
+        <translation>die Bruchentropie erreichte %1 (Endbedingung %2)</translation>
+    </message>
+    <message>
+        <source>the equilibrium solve failed (%1); the figures are the load path&apos;s</source>
+        <translation>die Gleichgewichtslösung schlug fehl (%1); die Kennzahlen sind die des Lastpfads</translation>
+    </message>
+    <message>
+        <source>%1 elements inverted (the first near %2, %3, %4 mm)</source>
+        <translation>%1 Elemente umgestülpt (das erste nahe %2, %3, %4 mm)</translation>
+    </message>
+    <message>
+        <source>the solution is no longer finite (NaN or infinity)</source>
+        <translation>die Lösung ist nicht mehr endlich (NaN oder unendlich)</translation>
+    </message>
+    <message>
+        <source>the conjugate gradients broke down (the system is not positive definite)</source>
+        <translation>die konjugierten Gradienten sind zusammengebrochen (das System ist nicht positiv definit)</translation>
+    </message>
+    <message>
+        <source>at t = %1 s the temperature rise at node (%2, %3, %4) reached %5 K, above the initial maximum %6 K: the explicit step is unstable (time step %7 s; the stability limit is h^2/(6D) = %8 s)</source>
+        <translation>bei t = %1 s erreichte der Temperaturanstieg am Knoten (%2, %3, %4) %5 K, über dem anfänglichen Maximum %6 K: der explizite Schritt ist instabil (Zeitschritt %7 s; die Stabilitätsgrenze ist h^2/(6D) = %8 s)</translation>
+    </message>
+    <message>
+        <source>the injection (%1 ml/min) is at least the vessel&apos;s own flow at the tip (%2 ml/min)</source>
+        <translation>die Injektion (%1 ml/min) ist mindestens so groß wie der eigene Fluss des Gefäßes an der Spitze (%2 ml/min)</translation>
+    </message>
+    <message>
+        <source>the catheter fills %1 % of the lumen at the tip</source>
+        <translation>der Katheter füllt %1 % des Lumens an der Spitze</translation>
+    </message>
+    <message>
+        <source>the Reynolds number reaches %1: the flow may not be laminar there, and Hagen-Poiseuille does not hold</source>
+        <translation>die Reynolds-Zahl erreicht %1: die Strömung ist dort womöglich nicht laminar, und Hagen-Poiseuille gilt nicht</translation>
+    </message>
+    <message>
+        <source>wedged catheter: %1; the injection refluxes or stops the blood flow at the tip</source>
+        <translation>verkeilter Katheter: %1; die Injektion fließt zurück oder stoppt den Blutfluss an der Spitze</translation>
+    </message>
+    <message>
+        <source>%1 % of the injected drug refluxes past the catheter&apos;s tip (non-target delivery)</source>
+        <translation>%1 % des injizierten Wirkstoffs fließen an der Katheterspitze zurück (Fehlembolisation)</translation>
+    </message>
+    <message>
+        <source>a void fraction of %1 is past bubbly flow (about 0.25): the homogeneous model and the thesis&apos;s experiment do not cover it</source>
+        <translation>ein Gasanteil von %1 liegt jenseits der Blasenströmung (etwa 0,25): das homogene Modell und das Experiment der Dissertation decken ihn nicht ab</translation>
+    </message>
+    <message>
+        <source>coverage grade C from this tip: part of a lesion is not perfused (see the feeders)</source>
+        <translation>Abdeckungsgrad C von dieser Spitze: ein Teil einer Läsion wird nicht perfundiert (siehe die Zuflüsse)</translation>
+    </message>
+    <message>
+        <source>no outlet of the tree ends inside the tumour: nothing feeds it</source>
+        <translation>kein Auslass des Baums endet im Tumor: nichts versorgt ihn</translation>
+    </message>
+    <message>
+        <source>the flow is no longer finite at t = %1 s</source>
+        <translation>die Strömung ist bei t = %1 s nicht mehr endlich</translation>
+    </message>
+    <message>
+        <source>the flow crossed %1 cells in one step at t = %2 s (the limit is %3): the run is unstable (too strong a confinement or vortex forcing, or too long a step)</source>
+        <translation>die Strömung durchquerte bei t = %2 s %1 Zellen in einem Schritt (die Grenze ist %3): der Lauf ist instabil (zu starke Confinement- oder Wirbelkraft oder zu langer Schritt)</translation>
+    </message>
+    <message>
+        <source>(sorting the particles): %1</source>
+        <translation>(beim Sortieren der Teilchen): %1</translation>
+    </message>
+    <message>
+        <source>fluid particle %1 went %2 mm into the wall at %3: the time step or the sound speed is too large for the flow, or the wall thinner than the kernel (a segmentation&apos;s ragged edge: the walls&apos; backstop, parameter wall_repulsion 0.01)</source>
+        <translation>Fluidteilchen %1 drang bei %3 %2 mm in die Wand ein: Zeitschritt oder Schallgeschwindigkeit sind zu groß für die Strömung, oder die Wand ist dünner als der Kern (ein ausgefranster Segmentierungsrand: die Rückhaltung der Wände, Parameter wall_repulsion 0,01)</translation>
+    </message>
+    <message>
+        <source>%1 mm from the wall</source>
+        <translation>%1 mm von der Wand</translation>
+    </message>
+    <message>
+        <source>particle %1&apos;s density is %2 % from the rest density (guard %3 %) at %4, %5: raise the sound speed or lower the inflow</source>
+        <translation>die Dichte von Teilchen %1 weicht %2 % von der Ruhedichte ab (Wächter %3 %) bei %4, %5: erhöhen Sie die Schallgeschwindigkeit oder senken Sie den Zufluss</translation>
+    </message>
+    <message>
+        <source>away from the walls</source>
+        <translation>abseits der Wände</translation>
+    </message>
+    <message>
+        <source>the mask was on another grid of the same scan (offset %1, %2, %3 voxels): cut to the image&apos;s grid, every labelled voxel kept</source>
+        <translation>die Maske lag auf einem anderen Gitter desselben Scans (Versatz %1, %2, %3 Voxel): auf das Gitter des Bildes zugeschnitten, jedes markierte Voxel behalten</translation>
+    </message>
+    <message>
+        <source>the mask&apos;s voxels were stored in another axis order or direction: reordered onto the image&apos;s grid, voxel for voxel</source>
+        <translation>die Voxel der Maske waren in anderer Achsenreihenfolge oder Richtung gespeichert: Voxel für Voxel auf das Gitter des Bildes umgeordnet</translation>
+    </message>
+    <message>
+        <source>a frame of the run is missing: %1</source>
+        <translation>ein Bild des Laufs fehlt: %1</translation>
+    </message>
+    <message>
+        <source>a frame of the run differs from its record (damaged): %1</source>
+        <translation>ein Bild des Laufs weicht von seinem Eintrag ab (beschädigt): %1</translation>
+    </message>
+    <message>
+        <source>file is missing: %1</source>
+        <translation>Datei fehlt: %1</translation>
+    </message>
+    <message>
+        <source>file size differs from the manifest: %1</source>
+        <translation>Dateigröße weicht vom Manifest ab: %1</translation>
+    </message>
+    <message>
+        <source>file checksum differs from the manifest (damaged): %1</source>
+        <translation>Prüfsumme der Datei weicht vom Manifest ab (beschädigt): %1</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; (%2): %3</source>
+        <translation>Artefakt „%1“ (%2): %3</translation>
+    </message>
+    <message>
+        <source>leftover of an interrupted save, removed at the next save: %1</source>
+        <translation>Rest eines unterbrochenen Speicherns, wird beim nächsten Speichern entfernt: %1</translation>
+    </message>
+    <message>
+        <source>%1 voxels were not whole numbers and were rounded to integer HU</source>
+        <translation>%1 Voxel waren keine ganzen Zahlen und wurden auf ganzzahlige HU gerundet</translation>
+    </message>
+    <message>
+        <source>%1 voxels were outside the int16 range or not finite and were clamped</source>
+        <translation>%1 Voxel lagen außerhalb des int16-Bereichs oder waren nicht endlich und wurden begrenzt</translation>
+    </message>
+    <message>
+        <source>clamped 0.5 x 0.1 x 0.1 m beam (70 x 14 x 14 cells, %1 tets, E = 1 MPa, nu = 0) with a tip load: mean tip deflection against Timoshenko theory P L^3 / (3 E I) + P L / (k G A), k = 10 (1 + nu) / (12 + 11 nu)</source>
+        <translation>eingespannter Balken 0,5 x 0,1 x 0,1 m (70 x 14 x 14 Zellen, %1 Tetraeder, E = 1 MPa, nu = 0) mit Endlast: mittlere Endauslenkung gegen die Timoshenko-Theorie P L^3 / (3 E I) + P L / (k G A), k = 10 (1 + nu) / (12 + 11 nu)</translation>
+    </message>
+    <message>
+        <source>quarter of a thick-walled tube (a = 10 mm, b = 20 mm, %1 tets, E = 1 MPa, nu = 0.45) under 1 kPa inside, plane strain and symmetry planes: radial displacement and hoop stress against Lame&apos;s solution</source>
+        <translation>Viertel eines dickwandigen Rohrs (a = 10 mm, b = 20 mm, %1 Tetraeder, E = 1 MPa, nu = 0,45) unter 1 kPa Innendruck, ebener Dehnungszustand und Symmetrieebenen: radiale Verschiebung und Umfangsspannung gegen die Lösung von Lamé</translation>
+    </message>
+    <message>
+        <source>quarter of a thick-walled tube (a = 10 mm, b = 20 mm, %1 quadratic tets, E = 1 MPa, nu = 0.49, nearly incompressible) under 1 kPa inside (follower), plane strain and symmetry planes, Newton to 1e-8: radial displacement and the elements&apos; hoop stress (mean of the 4 quadrature points, no averaging over cells) against Lame&apos;s solution</source>
+        <translation>Viertel eines dickwandigen Rohrs (a = 10 mm, b = 20 mm, %1 quadratische Tetraeder, E = 1 MPa, nu = 0,49, nahezu inkompressibel) unter 1 kPa Innendruck (mitgehend), ebener Dehnungszustand und Symmetrieebenen, Newton bis 1e-8: radiale Verschiebung und die Umfangsspannung der Elemente (Mittel der 4 Quadraturpunkte, keine Mittelung über Zellen) gegen die Lösung von Lamé</translation>
+    </message>
+    <message>
+        <source>constant-strain patch: boundary nodes of a 4x4x4-cell cube (384 tets) moved by u = A X + c, interior solved; interior displacement and element stress against the exact linear field</source>
+        <translation>Patch-Test mit konstanter Dehnung: Randknoten eines Würfels aus 4x4x4 Zellen (384 Tetraeder) um u = A X + c verschoben, das Innere gelöst; innere Verschiebung und Elementspannung gegen das exakte lineare Feld</translation>
+    </message>
+    <message>
+        <source>a 0.1 x 0.05 x 0.05 m block (96 tets, E = 1 MPa) turned 90 degrees about z and moved: largest elastic force against E h^2 (h = element size)</source>
+        <translation>ein Block 0,1 x 0,05 x 0,05 m (96 Tetraeder, E = 1 MPa), um 90 Grad um z gedreht und verschoben: größte elastische Kraft gegen E h^2 (h = Elementgröße)</translation>
+    </message>
+    <message>
+        <source>a 0.2 m cantilever (240 tets) bent by a tip load, released without load; backward Euler, h = 1 ms, 300 steps, Rayleigh beta = 0.22 s (thesis) and 0.005 s: total energy (kinetic + elastic) must never rise</source>
+        <translation>ein 0,2-m-Kragbalken (240 Tetraeder), durch eine Endlast gebogen und ohne Last losgelassen; implizites Euler-Verfahren, h = 1 ms, 300 Schritte, Rayleigh-beta = 0,22 s (Dissertation) und 0,005 s: die Gesamtenergie (kinetisch + elastisch) darf nie steigen</translation>
+    </message>
+    <message>
+        <source>the slowest mode of a 20 mm cube of tissue (D 0.14 mm^2/s) after one decay time, on the run driver: relative L2 error against the exact solution, and its order of convergence</source>
+        <translation>die langsamste Mode eines 20-mm-Gewebewürfels (D 0,14 mm^2/s) nach einer Abklingzeit, mit der Laufsteuerung: relativer L2-Fehler gegen die exakte Lösung und seine Konvergenzordnung</translation>
+    </message>
+    <message>
+        <source>conical resistance with R1 = R2 against 8 mu L / (pi R^4)</source>
+        <translation>konischer Widerstand mit R1 = R2 gegen 8 mu L / (pi R^4)</translation>
+    </message>
+    <message>
+        <source>eq. 6.6 against eq. 6.4 integrated (Gauss-Legendre, 64 x 8 points)</source>
+        <translation>Gl. 6.6 gegen die integrierte Gl. 6.4 (Gauß-Legendre, 64 x 8 Punkte)</translation>
+    </message>
+    <message>
+        <source>Kirchhoff&apos;s law on a seeded random tree of 2,000 segments</source>
+        <translation>Kirchhoffsches Gesetz an einem zufälligen Baum (fester Startwert) aus 2.000 Segmenten</translation>
+    </message>
+    <message>
+        <source>tip -&gt; junction -&gt; two branches with terminal resistances into 1,000 and 2,000 Pa</source>
+        <translation>Spitze -&gt; Verzweigung -&gt; zwei Äste mit Endwiderständen gegen 1.000 und 2.000 Pa</translation>
+    </message>
+    <message>
+        <source>injected branch and a second inlet at 6,000 Pa joining before one outlet at 500 Pa</source>
+        <translation>injizierter Ast und ein zweiter Einlass bei 6.000 Pa, die vor einem Auslass bei 500 Pa zusammenfließen</translation>
+    </message>
+    <message>
+        <source>a catheter in a pipe: the annulus&apos;s Hagen-Poiseuille resistance</source>
+        <translation>ein Katheter in einem Rohr: der Hagen-Poiseuille-Widerstand des Ringspalts</translation>
+    </message>
+    <message>
+        <source>blood from the root and an injection at a tip, mixed at a confluence with a second inlet</source>
+        <translation>Blut von der Wurzel und eine Injektion an einer Spitze, gemischt an einem Zusammenfluss mit einem zweiten Einlass</translation>
+    </message>
+    <message>
+        <source>the injected mixture&apos;s viscosity shifts the split between the tip&apos;s branch and its sibling</source>
+        <translation>die Viskosität des injizierten Gemischs verschiebt die Aufteilung zwischen dem Ast der Spitze und seinem Nachbarast</translation>
+    </message>
+    <message>
+        <source>a puff of smoke (1e-3 kg/m^3, 30 K above the ambient, 0.15 m radius) rising by buoyancy in a closed 1 m box of 32^3 cells, 500 steps (the velocity by MacCormack with the limiter): the smoke mass at the end against the start, without renormalisation, moved by the limited finite-volume transport; moved by semi-Lagrangian MacCormack instead it drifted by %1 %</source>
+        <translation>eine Rauchwolke (1e-3 kg/m^3, 30 K über der Umgebung, Radius 0,15 m), die durch Auftrieb in einer geschlossenen 1-m-Box aus 32^3 Zellen aufsteigt, 500 Schritte (die Geschwindigkeit mit MacCormack und Begrenzer): die Rauchmasse am Ende gegen den Anfang, ohne Renormierung, bewegt durch den begrenzten Finite-Volumen-Transport; mit semi-Lagrange-MacCormack bewegt, driftete sie stattdessen um %1 %</translation>
+    </message>
+    <message>
+        <source>a random velocity field (uniform in +-1 m/s on the faces) in a 1 m box of 48^3 cells, walls with an open top and a solid sphere of 0.15 m radius at the centre, projected by MGPCG to a relative residual of 1e-6 on three seeds: the largest |div u| h / max |u| left</source>
+        <translation>ein zufälliges Geschwindigkeitsfeld (gleichverteilt in +-1 m/s auf den Flächen) in einer 1-m-Box aus 48^3 Zellen, Wände mit offener Oberseite und einer festen Kugel mit 0,15 m Radius in der Mitte, mit MGPCG auf ein relatives Residuum von 1e-6 projiziert, drei Startwerte: das größte verbleibende |div u| h / max |u|</translation>
+    </message>
+    <message>
+        <source>the inviscid Taylor-Green vortex u = (sin x cos y cos z, -cos x sin y cos z, 0) (pi/m, 1 m/s) in a 1 m free-slip box of 32^3 cells for 1 s: the effective numerical viscosity -(dE/dt) / integral |w|^2 with vorticity confinement (epsilon 0.5) and with vortex particles (epsilon 0.5, r = 2 h) against the plain semi-Lagrangian scheme</source>
+        <translation>der reibungsfreie Taylor-Green-Wirbel u = (sin x cos y cos z, -cos x sin y cos z, 0) (pi/m, 1 m/s) in einer reibungsfrei berandeten 1-m-Box aus 32^3 Zellen für 1 s: die effektive numerische Viskosität -(dE/dt) / Integral |w|^2 mit Wirbelstärkeverstärkung (epsilon 0,5) und mit Wirbelteilchen (epsilon 0,5, r = 2 h) gegen das einfache Semi-Lagrange-Verfahren</translation>
+    </message>
+    <message>
+        <source>a ball of 0.1 m radius dropped from rest at 0.75 m in still air (a 1 m box of 48^3 cells, open at the top), falling under gravity for 0.25 s: the flow through the ball (the faces it touches against its own velocity), the divergence left around it, and the air pushed aside</source>
+        <translation>eine Kugel mit 0,1 m Radius, aus der Ruhe in 0,75 m Höhe in ruhender Luft fallen gelassen (eine oben offene 1-m-Box aus 48^3 Zellen), 0,25 s unter Schwerkraft fallend: die Strömung durch die Kugel (die berührten Flächen gegen ihre eigene Geschwindigkeit), die verbleibende Divergenz um sie und die verdrängte Luft</translation>
+    </message>
+    <message>
+        <source>water at rest in an open tank (8 x 8 x 16 particles of 1 mm, 4 wall layers) after 0.3 s under gravity, and the same tank of mixture particles at void fraction 0.2 (thesis Table 5.1): the pressure in the middle of the column, 2h below the surface and deeper, against the hydrostatic pressure of the model&apos;s fluid</source>
+        <translation>ruhendes Wasser in einem offenen Behälter (8 x 8 x 16 Teilchen von 1 mm, 4 Wandschichten) nach 0,3 s unter Schwerkraft, und derselbe Behälter mit Gemischteilchen bei einem Gasanteil von 0,2 (Dissertation Tabelle 5.1): der Druck in der Mitte der Säule, 2h unter der Oberfläche und tiefer, gegen den hydrostatischen Druck des Modellfluids</translation>
+    </message>
+    <message>
+        <source>%1 (%2 particles evaluated)</source>
+        <translation>%1 (%2 Teilchen ausgewertet)</translation>
+    </message>
+    <message>
+        <source>the 3D quartic kernel (h = 2 mm): its integral, W(2h), dW/dr against a central difference, and its first moment on a 1 mm particle lattice against the identity</source>
+        <translation>der quartische 3D-Kern (h = 2 mm): sein Integral, W(2h), dW/dr gegen eine zentrale Differenz und sein erstes Moment auf einem 1-mm-Teilchengitter gegen die Identität</translation>
+    </message>
+    <message>
+        <source>the gradient of a linear field at jittered particles (1 mm, +-0.2 mm) within h of a wall, three seeds: the first-order Finite Particle Method against the exact gradient, and plain SPH&apos;s error beside it</source>
+        <translation>der Gradient eines linearen Felds an verrauschten Teilchen (1 mm, +-0,2 mm) innerhalb von h an einer Wand, drei Startwerte: die Finite-Teilchen-Methode erster Ordnung gegen den exakten Gradienten, daneben der Fehler des einfachen SPH</translation>
+    </message>
+    <message>
+        <source>pipe 1 mm across, 2 mm long, velocity inlet (parabolic, mean 0.05 m/s, tracer) and pressure outlet, tracer absorbed within 0.1 mm of the wall, 6 ms: inflow %1 ug, outflow %2 ug, absorbed %3 ug, mass change %4 ug (%5 steps)</source>
+        <translation>Rohr mit 1 mm Durchmesser, 2 mm lang, Geschwindigkeitseinlass (parabolisch, Mittel 0,05 m/s, Tracer) und Druckauslass, Tracer innerhalb von 0,1 mm an der Wand absorbiert, 6 ms: Zufluss %1 ug, Abfluss %2 ug, absorbiert %3 ug, Massenänderung %4 ug (%5 Schritte)</translation>
+    </message>
+    <message>
+        <source>plane Poiseuille flow, 20 particles across a 2 mm channel (periodic along and across the flow, peak 0.1 m/s, Re 2), after 7 decay times: every fluid particle&apos;s velocity against the steady profile</source>
+        <translation>ebene Poiseuille-Strömung, 20 Teilchen über einen 2-mm-Kanal (periodisch längs und quer zur Strömung, Spitze 0,1 m/s, Re 2), nach 7 Abklingzeiten: die Geschwindigkeit jedes Fluidteilchens gegen das stationäre Profil</translation>
+    </message>
+    <message>
+        <source>50 % diameter cosine stenosis in a 1.6 mm pipe, 0.05 m/s mean inflow (Re 48 in the throat), averaged 15-25 ms: peak velocity ratio %1 upstream (%2 -&gt; %3 m/s), %4 downstream</source>
+        <translation>50-%-Durchmesser-Kosinusstenose in einem 1,6-mm-Rohr, mittlerer Zufluss 0,05 m/s (Re 48 in der Engstelle), gemittelt über 15-25 ms: Spitzengeschwindigkeitsverhältnis %1 stromauf (%2 -&gt; %3 m/s), %4 stromab</translation>
+    </message>
+    <message>
+        <source>mean ratio %1 (area ratio %2); pressure drop %3 Pa over 3.2 mm; throat wall shear stress %4 Pa (TAWSS); %5 steps, %6 particles</source>
+        <translation>mittleres Verhältnis %1 (Flächenverhältnis %2); Druckabfall %3 Pa über 3,2 mm; Wandschubspannung in der Engstelle %4 Pa (TAWSS); %5 Schritte, %6 Teilchen</translation>
+    </message>
+    <message>
+        <source>pulsatile flow in a rigid pipe 20 particles across (0.1 mm, periodic along its axis) from rest, alpha 4 (four cycles) and 8 (three): the velocity next to the axis over the last cycle against Womersley&apos;s solution</source>
+        <translation>pulsierende Strömung in einem starren Rohr mit 20 Teilchen Durchmesser (0,1 mm, periodisch längs seiner Achse) aus der Ruhe, alpha 4 (vier Zyklen) und 8 (drei): die Geschwindigkeit nahe der Achse über den letzten Zyklus gegen die Womersley-Lösung</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5204,6 +5684,13 @@
     <message>
         <source>CT values (HU) of the voxels nearest the in-plane samples inside the ellipse, one sample per finest voxel spacing squared: mean and sample standard deviation; area of the ellipse, pi a b (mm2)</source>
         <translation>CT-Werte (HU) der Voxel, die den Stichproben in der Ebene innerhalb der Ellipse am nächsten liegen, eine Stichprobe je Quadrat des feinsten Voxelabstands: Mittelwert und Stichproben-Standardabweichung; Fläche der Ellipse, pi a b (mm2)</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::app::SegmentNames</name>
+    <message>
+        <source>unnamed (nodes %1-%2)</source>
+        <translation>unbenannt (Knoten %1-%2)</translation>
     </message>
 </context>
 <context>
@@ -7579,6 +8066,14 @@ Ersetzen?</translation>
     <message>
         <source>frame %1 / %2, %3 %4 %5</source>
         <translation>Bild %1 / %2, %3 %4 %5</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>Druck</translation>
     </message>
 </context>
 <context>

@@ -3389,6 +3389,486 @@
         <source>an element is degenerate at rest (flat or zero volume)</source>
         <translation>有单元在静止状态下退化（扁平或体积为零）</translation>
     </message>
+    <message>
+        <source>a tumour grown in its own window holds its darkest part only: give the liver label with --within for the lesion&apos;s boundary against the parenchyma</source>
+        <translation>在自身窗口中生长的肿瘤只包含其最暗的部分：请用 --within 给出肝脏标签，以得到病灶与实质的边界</translation>
+    </message>
+    <message>
+        <source>the run ends before the inflow has risen (%1 s): the figures are not of a settled flow</source>
+        <translation>运行在入流上升完成（%1 s）之前结束：这些指标不是来自稳定的流动</translation>
+    </message>
+    <message>
+        <source>the averaging starts %1 s after the inflow&apos;s rise, under three settling times (3 x %2 s: the vessel&apos;s resistance x compliance at this sound speed): the figures may not be of a settled flow</source>
+        <translation>平均从入流上升后 %1 s 开始，不足三个稳定时间（3 x %2 s：该声速下血管的阻力 x 顺应性）：这些指标可能不是来自稳定的流动</translation>
+    </message>
+    <message>
+        <source>no stenosis figures: %1</source>
+        <translation>无狭窄指标：%1</translation>
+    </message>
+    <message>
+        <source>the run stopped before its averaging window (from %1 s): no section averages or stenosis figures</source>
+        <translation>运行在平均窗口（自 %1 s 起）之前停止：没有截面平均值或狭窄指标</translation>
+    </message>
+    <message>
+        <source>no liver label in the study (vascusim-cli segment-organ --organ liver): the box phantom was used</source>
+        <translation>研究中没有肝脏标签（vascusim-cli segment-organ --organ liver）：已使用长方体体模</translation>
+    </message>
+    <message>
+        <source>ran on the CPU: %1</source>
+        <translation>已在 CPU 上运行：%1</translation>
+    </message>
+    <message>
+        <source>stopped early: %1</source>
+        <translation>提前停止：%1</translation>
+    </message>
+    <message>
+        <source>the open boundaries let in more particles than the GPU&apos;s arrays hold (%1)</source>
+        <translation>开放边界放入的粒子超过了 GPU 数组的容量（%1）</translation>
+    </message>
+    <message>
+        <source>at t = %1 s %2</source>
+        <translation>在 t = %1 s 时：%2</translation>
+    </message>
+    <message>
+        <source>particle %1 has a value that is not finite</source>
+        <translation>粒子 %1 含有非有限值</translation>
+    </message>
+    <message>
+        <source>particle %1 left the domain (through a wall or an open end without an outlet)</source>
+        <translation>粒子 %1 离开了计算域（穿过壁面或没有出口的开放端）</translation>
+    </message>
+    <message>
+        <source>fluid particle %1 went more than half a spacing into the wall: the time step or the sound speed is too large for the flow, or the wall thinner than the kernel (a segmentation&apos;s ragged edge: the walls&apos; backstop, parameter wall_repulsion 0.01)</source>
+        <translation>流体粒子 %1 进入壁内超过半个粒子间距：时间步长或声速对该流动过大，或壁比核函数更薄（分割的锯齿边缘：壁面的防穿透力，参数 wall_repulsion 0.01）</translation>
+    </message>
+    <message>
+        <source>a particle&apos;s density is %1 % from the rest density (guard %2 %): raise the sound speed or lower the inflow</source>
+        <translation>某粒子的密度偏离静止密度 %1 %（保护阈值 %2 %）：请提高声速或降低入流</translation>
+    </message>
+    <message>
+        <source>values rescaled to HU by the user&apos;s rescale: HU = %1 x stored + %2</source>
+        <translation>已按用户的换算将数值换算为 HU：HU = %1 x 存储值 + %2</translation>
+    </message>
+    <message>
+        <source>%1 voxels clamped to the int16 range</source>
+        <translation>%1 个体素被截断到 int16 范围</translation>
+    </message>
+    <message>
+        <source>modality is %1, not CT: values are not Hounsfield units</source>
+        <translation>模态为 %1，不是 CT：数值不是亨氏单位</translation>
+    </message>
+    <message>
+        <source>%1 values outside -32768..32767 HU were clamped</source>
+        <translation>%1 个超出 -32768..32767 HU 的值已被截断</translation>
+    </message>
+    <message>
+        <source>modality is missing, not CT: values are not Hounsfield units</source>
+        <translation>缺少模态，不是 CT：数值不是亨氏单位</translation>
+    </message>
+    <message>
+        <source>%1 localizer image skipped</source>
+        <translation>已跳过 %1 幅定位像</translation>
+    </message>
+    <message>
+        <source>%1 localizer images skipped</source>
+        <translation>已跳过 %1 幅定位像</translation>
+    </message>
+    <message>
+        <source>series split into %1 sub-series (orientation, image size, pixel spacing, image type or acquisition differ); this is part %2</source>
+        <translation>序列已拆分为 %1 个子序列（方向、图像尺寸、像素间距、图像类型或采集不同）；这是第 %2 部分</translation>
+    </message>
+    <message>
+        <source>%1 file is not DICOM (skipped)</source>
+        <translation>%1 个文件不是 DICOM（已跳过）</translation>
+    </message>
+    <message>
+        <source>%1 files are not DICOM (skipped)</source>
+        <translation>%1 个文件不是 DICOM（已跳过）</translation>
+    </message>
+    <message>
+        <source>%1 DICOM file holds no image (DICOMDIR, reports, ...; skipped)</source>
+        <translation>%1 个 DICOM 文件不含图像（DICOMDIR、报告等；已跳过）</translation>
+    </message>
+    <message>
+        <source>%1 DICOM files hold no image (DICOMDIR, reports, ...; skipped)</source>
+        <translation>%1 个 DICOM 文件不含图像（DICOMDIR、报告等；已跳过）</translation>
+    </message>
+    <message>
+        <source>%1 DICOM file is damaged or truncated (skipped)</source>
+        <translation>%1 个 DICOM 文件已损坏或被截断（已跳过）</translation>
+    </message>
+    <message>
+        <source>%1 DICOM files are damaged or truncated (skipped)</source>
+        <translation>%1 个 DICOM 文件已损坏或被截断（已跳过）</translation>
+    </message>
+    <message>
+        <source>%1 voxels belong to several segments: the higher segment number is kept</source>
+        <translation>%1 个体素属于多个分割段：保留编号较大的分割段</translation>
+    </message>
+    <message>
+        <source>%1 slices at duplicate positions dropped (kept the lowest instance number)</source>
+        <translation>已丢弃位置重复的 %1 个层面（保留实例号最小者）</translation>
+    </message>
+    <message>
+        <source>%1 missing slices (gaps up to %2 mm where the spacing is %3 mm): filled by interpolation</source>
+        <translation>缺失 %1 个层面（间隙最大 %2 mm，层间距为 %3 mm）：已通过插值填补</translation>
+    </message>
+    <message>
+        <source>uneven slice spacing (%1 to %2 mm): resampled to %3 mm</source>
+        <translation>层间距不均匀（%1 至 %2 mm）：已重采样为 %3 mm</translation>
+    </message>
+    <message>
+        <source>gantry tilt of %1 degrees: resampled onto an orthogonal grid</source>
+        <translation>机架倾斜 %1 度：已重采样到正交网格</translation>
+    </message>
+    <message>
+        <source>the series has a single slice</source>
+        <translation>该序列只有一个层面</translation>
+    </message>
+    <message>
+        <source>the lowest renal artery was not found in the lumen label: the neck is the narrowest outer diameter within 80 mm above the widest section</source>
+        <translation>在管腔标签中未找到最低肾动脉：瘤颈取最宽截面上方 80 mm 内最窄的外径</translation>
+    </message>
+    <message>
+        <source>no sac: the widest outer diameter does not exceed 1.5 x the neck&apos;s</source>
+        <translation>无瘤囊：最大外径未超过瘤颈的 1.5 倍</translation>
+    </message>
+    <message>
+        <source>the fronts reached the path-length limit (%1 mm) or a branch limit: the vessel continues beyond the label</source>
+        <translation>前沿到达路径长度上限（%1 mm）或分支上限：血管延伸到标签之外</translation>
+    </message>
+    <message>
+        <source>the opening removed every point&apos;s surroundings: the lesion is thinner than the opening there; the label is the grown region without the opening</source>
+        <translation>开运算移除了每个点的周围区域：该处病灶比开运算结构更薄；标签为未经开运算的生长区域</translation>
+    </message>
+    <message>
+        <source>the opening removed every point&apos;s surroundings: the organ is thinner than the opening there; the label is the grown region without the opening</source>
+        <translation>开运算移除了每个点的周围区域：该处器官比开运算结构更薄；标签为未经开运算的生长区域</translation>
+    </message>
+    <message>
+        <source>weak contrast: blood %1 HU against tissue %2 HU; the boundary may be unreliable</source>
+        <translation>对比度弱：血液 %1 HU 对比组织 %2 HU；边界可能不可靠</translation>
+    </message>
+    <message>
+        <source>%1 voxels next to bone or calcium excluded</source>
+        <translation>已排除邻近骨骼或钙化的 %1 个体素</translation>
+    </message>
+    <message>
+        <source>%1 boundary faces outside the selection have all their nodes on the lumen surface and carry the pressure too (a wall one element thick there)</source>
+        <translation>选区外有 %1 个边界面的所有节点都位于管腔表面上，也承受压力（该处壁厚仅一个单元）</translation>
+    </message>
+    <message>
+        <source>%1 triangles in loose pieces left by the end cuts (or apart from the vessel tree) were dropped</source>
+        <translation>已丢弃端部切割留下的（或与血管树分离的）零散碎片中的 %1 个三角形</translation>
+    </message>
+    <message>
+        <source>the lumen surface is open away from the vessel ends (%1 boundary edges; is the segmentation cut by the image border?): those nodes stay free</source>
+        <translation>管腔表面在血管端部以外处开放（%1 条边界边；分割是否被图像边界截断？）：这些节点保持自由</translation>
+    </message>
+    <message>
+        <source>%1 elements are inverted where the offset folds (wall thicker than the local radius of curvature): use a thinner wall or a smoother surface</source>
+        <translation>%1 个单元在偏移折叠处翻转（壁厚大于局部曲率半径）：请使用更薄的壁或更平滑的表面</translation>
+    </message>
+    <message>
+        <source>end %1 has no open boundary</source>
+        <translation>端口 %1 没有开放边界</translation>
+    </message>
+    <message>
+        <source>a value that is not finite: %1</source>
+        <translation>非有限值：%1</translation>
+    </message>
+    <message>
+        <source>the run did not reach its end within the step limit of %1 steps (a collapsing time step?)</source>
+        <translation>运行未在 %1 步的步数上限内到达终点（时间步长塌缩？）</translation>
+    </message>
+    <message>
+        <source>step %1 left %2</source>
+        <translation>第 %1 步留下了%2</translation>
+    </message>
+    <message>
+        <source>the equilibrium at the ramp&apos;s start %1 failed: %2</source>
+        <translation>在斜坡起点 %1 处求平衡失败：%2</translation>
+    </message>
+    <message>
+        <source>elements are over the tear strength already at the ramp&apos;s start %1: start lower</source>
+        <translation>在斜坡起点 %1 处已有单元超过撕裂强度：请从更低的值开始</translation>
+    </message>
+    <message>
+        <source>no equilibrium in %1 Newton updates (force residual %2)</source>
+        <translation>%1 次牛顿更新内未达到平衡（力残差 %2）</translation>
+    </message>
+    <message>
+        <source>the equilibrium at %1 failed: %2</source>
+        <translation>在 %1 处求平衡失败：%2</translation>
+    </message>
+    <message>
+        <source>the fracture entropy passed %1 nats at %2</source>
+        <translation>在 %2 时断裂熵超过 %1 nats</translation>
+    </message>
+    <message>
+        <source>%1 elements torn at %2</source>
+        <translation>在 %2 时 %1 个单元撕裂</translation>
+    </message>
+    <message>
+        <source>the torn wall holds no equilibrium at %1 (rupture): %2</source>
+        <translation>撕裂的壁在 %1 时无法保持平衡（破裂）：%2</translation>
+    </message>
+    <message>
+        <source>the equilibrium at %1 % of the pressure did not converge in %2 Newton updates (force residual %3) even in increments of 1/16; the last converged increment is kept</source>
+        <translation>在压力的 %1 % 处，即使以 1/16 的增量，平衡也未在 %2 次牛顿更新内收敛（力残差 %3）；保留最后一个收敛的增量</translation>
+    </message>
+    <message>
+        <source>the equilibrium at %1 % of the pressure failed: %2 even in increments of 1/16; the last converged increment is kept</source>
+        <translation>在压力的 %1 % 处求平衡失败：%2，即使以 1/16 的增量也是如此；保留最后一个收敛的增量</translation>
+    </message>
+    <message>
+        <source>%1 at step %2 (t = %3 s, pressure %4 MPa); the last good state is kept</source>
+        <translation>%1，发生在第 %2 步（t = %3 s，压力 %4 MPa）；保留最后一个有效状态</translation>
+    </message>
+    <message>
+        <source>%1 at step %2; the last good state is kept</source>
+        <translation>%1，发生在第 %2 步；保留最后一个有效状态</translation>
+    </message>
+    <message>
+        <source>the fracture entropy reached %1 (end condition %2)</source>
+        <translation>断裂熵达到 %1（终止条件 %2）</translation>
+    </message>
+    <message>
+        <source>the equilibrium solve failed (%1); the figures are the load path&apos;s</source>
+        <translation>平衡求解失败（%1）；这些指标来自加载路径</translation>
+    </message>
+    <message>
+        <source>%1 elements inverted (the first near %2, %3, %4 mm)</source>
+        <translation>%1 个单元翻转（第一个位于 %2, %3, %4 mm 附近）</translation>
+    </message>
+    <message>
+        <source>the solution is no longer finite (NaN or infinity)</source>
+        <translation>解不再有限（NaN 或无穷大）</translation>
+    </message>
+    <message>
+        <source>the conjugate gradients broke down (the system is not positive definite)</source>
+        <translation>共轭梯度法失效（系统不是正定的）</translation>
+    </message>
+    <message>
+        <source>at t = %1 s the temperature rise at node (%2, %3, %4) reached %5 K, above the initial maximum %6 K: the explicit step is unstable (time step %7 s; the stability limit is h^2/(6D) = %8 s)</source>
+        <translation>在 t = %1 s 时，节点 (%2, %3, %4) 的温升达到 %5 K，高于初始最大值 %6 K：显式步长不稳定（时间步长 %7 s；稳定性极限为 h^2/(6D) = %8 s）</translation>
+    </message>
+    <message>
+        <source>the injection (%1 ml/min) is at least the vessel&apos;s own flow at the tip (%2 ml/min)</source>
+        <translation>注射速率（%1 ml/min）不低于尖端处血管自身的流量（%2 ml/min）</translation>
+    </message>
+    <message>
+        <source>the catheter fills %1 % of the lumen at the tip</source>
+        <translation>导管在尖端处占据管腔的 %1 %</translation>
+    </message>
+    <message>
+        <source>the Reynolds number reaches %1: the flow may not be laminar there, and Hagen-Poiseuille does not hold</source>
+        <translation>雷诺数达到 %1：该处流动可能不是层流，哈根-泊肃叶定律不成立</translation>
+    </message>
+    <message>
+        <source>wedged catheter: %1; the injection refluxes or stops the blood flow at the tip</source>
+        <translation>导管楔嵌：%1；注射会反流或阻断尖端处的血流</translation>
+    </message>
+    <message>
+        <source>%1 % of the injected drug refluxes past the catheter&apos;s tip (non-target delivery)</source>
+        <translation>注入药物的 %1 % 越过导管尖端反流（非靶向递送）</translation>
+    </message>
+    <message>
+        <source>a void fraction of %1 is past bubbly flow (about 0.25): the homogeneous model and the thesis&apos;s experiment do not cover it</source>
+        <translation>空隙率 %1 已超出泡状流范围（约 0.25）：均相模型和论文的实验均不涵盖此情况</translation>
+    </message>
+    <message>
+        <source>coverage grade C from this tip: part of a lesion is not perfused (see the feeders)</source>
+        <translation>从此尖端的覆盖等级为 C：部分病灶未被灌注（见供血血管）</translation>
+    </message>
+    <message>
+        <source>no outlet of the tree ends inside the tumour: nothing feeds it</source>
+        <translation>血管树没有出口终止于肿瘤内：无血管供应它</translation>
+    </message>
+    <message>
+        <source>the flow is no longer finite at t = %1 s</source>
+        <translation>在 t = %1 s 时流场不再有限</translation>
+    </message>
+    <message>
+        <source>the flow crossed %1 cells in one step at t = %2 s (the limit is %3): the run is unstable (too strong a confinement or vortex forcing, or too long a step)</source>
+        <translation>在 t = %2 s 时流动一步穿越了 %1 个网格（极限为 %3）：运行不稳定（涡量约束或涡粒子强迫过强，或步长过长）</translation>
+    </message>
+    <message>
+        <source>(sorting the particles): %1</source>
+        <translation>（粒子排序时）：%1</translation>
+    </message>
+    <message>
+        <source>fluid particle %1 went %2 mm into the wall at %3: the time step or the sound speed is too large for the flow, or the wall thinner than the kernel (a segmentation&apos;s ragged edge: the walls&apos; backstop, parameter wall_repulsion 0.01)</source>
+        <translation>流体粒子 %1 在 %3 处进入壁内 %2 mm：时间步长或声速对该流动过大，或壁比核函数更薄（分割的锯齿边缘：壁面的防穿透力，参数 wall_repulsion 0.01）</translation>
+    </message>
+    <message>
+        <source>%1 mm from the wall</source>
+        <translation>距壁 %1 mm</translation>
+    </message>
+    <message>
+        <source>particle %1&apos;s density is %2 % from the rest density (guard %3 %) at %4, %5: raise the sound speed or lower the inflow</source>
+        <translation>粒子 %1 的密度偏离静止密度 %2 %（保护阈值 %3 %），位于 %4，%5：请提高声速或降低入流</translation>
+    </message>
+    <message>
+        <source>away from the walls</source>
+        <translation>远离壁面</translation>
+    </message>
+    <message>
+        <source>the mask was on another grid of the same scan (offset %1, %2, %3 voxels): cut to the image&apos;s grid, every labelled voxel kept</source>
+        <translation>掩膜位于同一扫描的另一网格上（偏移 %1, %2, %3 个体素）：已裁剪到图像网格，保留所有标记体素</translation>
+    </message>
+    <message>
+        <source>the mask&apos;s voxels were stored in another axis order or direction: reordered onto the image&apos;s grid, voxel for voxel</source>
+        <translation>掩膜的体素以另一种轴顺序或方向存储：已逐体素重排到图像网格</translation>
+    </message>
+    <message>
+        <source>a frame of the run is missing: %1</source>
+        <translation>运行缺少一帧：%1</translation>
+    </message>
+    <message>
+        <source>a frame of the run differs from its record (damaged): %1</source>
+        <translation>运行的一帧与其记录不符（已损坏）：%1</translation>
+    </message>
+    <message>
+        <source>file is missing: %1</source>
+        <translation>文件缺失：%1</translation>
+    </message>
+    <message>
+        <source>file size differs from the manifest: %1</source>
+        <translation>文件大小与清单不符：%1</translation>
+    </message>
+    <message>
+        <source>file checksum differs from the manifest (damaged): %1</source>
+        <translation>文件校验和与清单不符（已损坏）：%1</translation>
+    </message>
+    <message>
+        <source>artifact &apos;%1&apos; (%2): %3</source>
+        <translation>数据项“%1”（%2）：%3</translation>
+    </message>
+    <message>
+        <source>leftover of an interrupted save, removed at the next save: %1</source>
+        <translation>中断保存的残留文件，将在下次保存时删除：%1</translation>
+    </message>
+    <message>
+        <source>%1 voxels were not whole numbers and were rounded to integer HU</source>
+        <translation>%1 个体素不是整数，已四舍五入为整数 HU</translation>
+    </message>
+    <message>
+        <source>%1 voxels were outside the int16 range or not finite and were clamped</source>
+        <translation>%1 个体素超出 int16 范围或非有限值，已被截断</translation>
+    </message>
+    <message>
+        <source>clamped 0.5 x 0.1 x 0.1 m beam (70 x 14 x 14 cells, %1 tets, E = 1 MPa, nu = 0) with a tip load: mean tip deflection against Timoshenko theory P L^3 / (3 E I) + P L / (k G A), k = 10 (1 + nu) / (12 + 11 nu)</source>
+        <translation>一端固支的 0.5 x 0.1 x 0.1 m 梁（70 x 14 x 14 个网格，%1 个四面体，E = 1 MPa，nu = 0）受端部载荷：平均端部挠度与 Timoshenko 理论 P L^3 / (3 E I) + P L / (k G A)，k = 10 (1 + nu) / (12 + 11 nu) 对比</translation>
+    </message>
+    <message>
+        <source>quarter of a thick-walled tube (a = 10 mm, b = 20 mm, %1 tets, E = 1 MPa, nu = 0.45) under 1 kPa inside, plane strain and symmetry planes: radial displacement and hoop stress against Lame&apos;s solution</source>
+        <translation>厚壁管的四分之一（a = 10 mm，b = 20 mm，%1 个四面体，E = 1 MPa，nu = 0.45），内压 1 kPa，平面应变和对称面：径向位移和环向应力与 Lamé 解对比</translation>
+    </message>
+    <message>
+        <source>quarter of a thick-walled tube (a = 10 mm, b = 20 mm, %1 quadratic tets, E = 1 MPa, nu = 0.49, nearly incompressible) under 1 kPa inside (follower), plane strain and symmetry planes, Newton to 1e-8: radial displacement and the elements&apos; hoop stress (mean of the 4 quadrature points, no averaging over cells) against Lame&apos;s solution</source>
+        <translation>厚壁管的四分之一（a = 10 mm，b = 20 mm，%1 个二次四面体，E = 1 MPa，nu = 0.49，近不可压缩），内压 1 kPa（随动），平面应变和对称面，牛顿迭代至 1e-8：径向位移和单元环向应力（4 个积分点的平均，不跨单元平均）与 Lamé 解对比</translation>
+    </message>
+    <message>
+        <source>constant-strain patch: boundary nodes of a 4x4x4-cell cube (384 tets) moved by u = A X + c, interior solved; interior displacement and element stress against the exact linear field</source>
+        <translation>常应变分片试验：4x4x4 网格立方体（384 个四面体）的边界节点按 u = A X + c 移动，求解内部；内部位移和单元应力与精确线性场对比</translation>
+    </message>
+    <message>
+        <source>a 0.1 x 0.05 x 0.05 m block (96 tets, E = 1 MPa) turned 90 degrees about z and moved: largest elastic force against E h^2 (h = element size)</source>
+        <translation>一个 0.1 x 0.05 x 0.05 m 的块（96 个四面体，E = 1 MPa）绕 z 轴旋转 90 度并平移：最大弹性力与 E h^2（h = 单元尺寸）对比</translation>
+    </message>
+    <message>
+        <source>a 0.2 m cantilever (240 tets) bent by a tip load, released without load; backward Euler, h = 1 ms, 300 steps, Rayleigh beta = 0.22 s (thesis) and 0.005 s: total energy (kinetic + elastic) must never rise</source>
+        <translation>一根 0.2 m 悬臂梁（240 个四面体）受端部载荷弯曲后无载释放；后向欧拉法，h = 1 ms，300 步，Rayleigh beta = 0.22 s（论文）和 0.005 s：总能量（动能 + 弹性能）不得上升</translation>
+    </message>
+    <message>
+        <source>the slowest mode of a 20 mm cube of tissue (D 0.14 mm^2/s) after one decay time, on the run driver: relative L2 error against the exact solution, and its order of convergence</source>
+        <translation>20 mm 组织立方体（D 0.14 mm^2/s）最慢模态经过一个衰减时间后（在运行驱动器上）：相对于精确解的相对 L2 误差及其收敛阶</translation>
+    </message>
+    <message>
+        <source>conical resistance with R1 = R2 against 8 mu L / (pi R^4)</source>
+        <translation>R1 = R2 时的锥形阻力与 8 mu L / (pi R^4) 对比</translation>
+    </message>
+    <message>
+        <source>eq. 6.6 against eq. 6.4 integrated (Gauss-Legendre, 64 x 8 points)</source>
+        <translation>式 6.6 与积分后的式 6.4 对比（Gauss-Legendre，64 x 8 个点）</translation>
+    </message>
+    <message>
+        <source>Kirchhoff&apos;s law on a seeded random tree of 2,000 segments</source>
+        <translation>在含 2,000 个段的固定种子随机树上验证基尔霍夫定律</translation>
+    </message>
+    <message>
+        <source>tip -&gt; junction -&gt; two branches with terminal resistances into 1,000 and 2,000 Pa</source>
+        <translation>尖端 -&gt; 分叉 -&gt; 两个分支，末端阻力分别通向 1,000 和 2,000 Pa</translation>
+    </message>
+    <message>
+        <source>injected branch and a second inlet at 6,000 Pa joining before one outlet at 500 Pa</source>
+        <translation>注射分支与 6,000 Pa 的第二入口在 500 Pa 的单一出口前汇合</translation>
+    </message>
+    <message>
+        <source>a catheter in a pipe: the annulus&apos;s Hagen-Poiseuille resistance</source>
+        <translation>管中的导管：环形间隙的哈根-泊肃叶阻力</translation>
+    </message>
+    <message>
+        <source>blood from the root and an injection at a tip, mixed at a confluence with a second inlet</source>
+        <translation>来自根部的血液与尖端处的注射，在与第二入口的汇合处混合</translation>
+    </message>
+    <message>
+        <source>the injected mixture&apos;s viscosity shifts the split between the tip&apos;s branch and its sibling</source>
+        <translation>注入混合物的黏度改变尖端分支与其兄弟分支之间的分流</translation>
+    </message>
+    <message>
+        <source>a puff of smoke (1e-3 kg/m^3, 30 K above the ambient, 0.15 m radius) rising by buoyancy in a closed 1 m box of 32^3 cells, 500 steps (the velocity by MacCormack with the limiter): the smoke mass at the end against the start, without renormalisation, moved by the limited finite-volume transport; moved by semi-Lagrangian MacCormack instead it drifted by %1 %</source>
+        <translation>一团烟雾（1e-3 kg/m^3，高于环境 30 K，半径 0.15 m）在 32^3 网格的封闭 1 m 箱内因浮力上升，500 步（速度采用带限制器的 MacCormack）：由限制的有限体积输运移动、不做重归一化时，结束时与开始时的烟雾质量对比；若改用半拉格朗日 MacCormack 移动，则漂移 %1 %</translation>
+    </message>
+    <message>
+        <source>a random velocity field (uniform in +-1 m/s on the faces) in a 1 m box of 48^3 cells, walls with an open top and a solid sphere of 0.15 m radius at the centre, projected by MGPCG to a relative residual of 1e-6 on three seeds: the largest |div u| h / max |u| left</source>
+        <translation>一个随机速度场（面上在 +-1 m/s 内均匀分布），位于 48^3 网格的 1 m 箱内，顶部开放的壁面，中心有半径 0.15 m 的固体球，用 MGPCG 投影到相对残差 1e-6，三个种子：剩余的最大 |div u| h / max |u|</translation>
+    </message>
+    <message>
+        <source>the inviscid Taylor-Green vortex u = (sin x cos y cos z, -cos x sin y cos z, 0) (pi/m, 1 m/s) in a 1 m free-slip box of 32^3 cells for 1 s: the effective numerical viscosity -(dE/dt) / integral |w|^2 with vorticity confinement (epsilon 0.5) and with vortex particles (epsilon 0.5, r = 2 h) against the plain semi-Lagrangian scheme</source>
+        <translation>无黏 Taylor-Green 涡 u = (sin x cos y cos z, -cos x sin y cos z, 0)（pi/m，1 m/s），在 32^3 网格的 1 m 自由滑移箱内运行 1 s：带涡量约束（epsilon 0.5）和带涡粒子（epsilon 0.5，r = 2 h）时的有效数值黏度 -(dE/dt) / 积分 |w|^2，与普通半拉格朗日格式对比</translation>
+    </message>
+    <message>
+        <source>a ball of 0.1 m radius dropped from rest at 0.75 m in still air (a 1 m box of 48^3 cells, open at the top), falling under gravity for 0.25 s: the flow through the ball (the faces it touches against its own velocity), the divergence left around it, and the air pushed aside</source>
+        <translation>半径 0.1 m 的球从 0.75 m 高处在静止空气中由静止释放（顶部开放、48^3 网格的 1 m 箱），在重力下下落 0.25 s：穿过球体的流动（其接触的面与其自身速度对比）、其周围剩余的散度，以及被推开的空气</translation>
+    </message>
+    <message>
+        <source>water at rest in an open tank (8 x 8 x 16 particles of 1 mm, 4 wall layers) after 0.3 s under gravity, and the same tank of mixture particles at void fraction 0.2 (thesis Table 5.1): the pressure in the middle of the column, 2h below the surface and deeper, against the hydrostatic pressure of the model&apos;s fluid</source>
+        <translation>开放水箱中的静止水（8 x 8 x 16 个 1 mm 粒子，4 层壁）在重力下 0.3 s 后，以及空隙率 0.2 的混合粒子的同一水箱（论文表 5.1）：液柱中部、表面以下 2h 及更深处的压力与模型流体的静水压力对比</translation>
+    </message>
+    <message>
+        <source>%1 (%2 particles evaluated)</source>
+        <translation>%1（评估了 %2 个粒子）</translation>
+    </message>
+    <message>
+        <source>the 3D quartic kernel (h = 2 mm): its integral, W(2h), dW/dr against a central difference, and its first moment on a 1 mm particle lattice against the identity</source>
+        <translation>三维四次核函数（h = 2 mm）：其积分、W(2h)、dW/dr 与中心差分对比，以及其在 1 mm 粒子晶格上的一阶矩与单位矩阵对比</translation>
+    </message>
+    <message>
+        <source>the gradient of a linear field at jittered particles (1 mm, +-0.2 mm) within h of a wall, three seeds: the first-order Finite Particle Method against the exact gradient, and plain SPH&apos;s error beside it</source>
+        <translation>在距壁 h 以内的扰动粒子（1 mm，+-0.2 mm）上线性场的梯度，三个种子：一阶有限粒子法与精确梯度对比，并列出普通 SPH 的误差</translation>
+    </message>
+    <message>
+        <source>pipe 1 mm across, 2 mm long, velocity inlet (parabolic, mean 0.05 m/s, tracer) and pressure outlet, tracer absorbed within 0.1 mm of the wall, 6 ms: inflow %1 ug, outflow %2 ug, absorbed %3 ug, mass change %4 ug (%5 steps)</source>
+        <translation>直径 1 mm、长 2 mm 的管，速度入口（抛物线型，平均 0.05 m/s，示踪剂）和压力出口，示踪剂在距壁 0.1 mm 内被吸收，6 ms：流入 %1 ug，流出 %2 ug，吸收 %3 ug，质量变化 %4 ug（%5 步）</translation>
+    </message>
+    <message>
+        <source>plane Poiseuille flow, 20 particles across a 2 mm channel (periodic along and across the flow, peak 0.1 m/s, Re 2), after 7 decay times: every fluid particle&apos;s velocity against the steady profile</source>
+        <translation>平面泊肃叶流，2 mm 通道内横跨 20 个粒子（沿流向和横向周期，峰值 0.1 m/s，Re 2），经过 7 个衰减时间后：每个流体粒子的速度与稳态剖面对比</translation>
+    </message>
+    <message>
+        <source>50 % diameter cosine stenosis in a 1.6 mm pipe, 0.05 m/s mean inflow (Re 48 in the throat), averaged 15-25 ms: peak velocity ratio %1 upstream (%2 -&gt; %3 m/s), %4 downstream</source>
+        <translation>1.6 mm 管中直径 50 % 的余弦狭窄，平均入流 0.05 m/s（狭窄喉部 Re 48），在 15-25 ms 内平均：上游峰值流速比 %1（%2 -&gt; %3 m/s），下游 %4</translation>
+    </message>
+    <message>
+        <source>mean ratio %1 (area ratio %2); pressure drop %3 Pa over 3.2 mm; throat wall shear stress %4 Pa (TAWSS); %5 steps, %6 particles</source>
+        <translation>平均比 %1（面积比 %2）；3.2 mm 上的压降 %3 Pa；喉部壁面剪应力 %4 Pa（TAWSS）；%5 步，%6 个粒子</translation>
+    </message>
+    <message>
+        <source>pulsatile flow in a rigid pipe 20 particles across (0.1 mm, periodic along its axis) from rest, alpha 4 (four cycles) and 8 (three): the velocity next to the axis over the last cycle against Womersley&apos;s solution</source>
+        <translation>刚性管中的脉动流，横跨 20 个粒子（0.1 mm，沿轴向周期），从静止开始，alpha 4（四个周期）和 8（三个周期）：最后一个周期内轴线附近的速度与 Womersley 解对比</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5204,6 +5684,13 @@
     <message>
         <source>CT values (HU) of the voxels nearest the in-plane samples inside the ellipse, one sample per finest voxel spacing squared: mean and sample standard deviation; area of the ellipse, pi a b (mm2)</source>
         <translation>椭圆内平面采样点最近体素的 CT 值（HU），每个最小体素间距平方取一个样本：平均值与样本标准差；椭圆面积 pi a b（mm2）</translation>
+    </message>
+</context>
+<context>
+    <name>vsim::app::SegmentNames</name>
+    <message>
+        <source>unnamed (nodes %1-%2)</source>
+        <translation>未命名（节点 %1-%2）</translation>
     </message>
 </context>
 <context>
@@ -7577,6 +8064,14 @@ Replace them?</source>
     <message>
         <source>frame %1 / %2, %3 %4 %5</source>
         <translation>帧 %1 / %2，%3 %4 %5</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>压力</translation>
     </message>
 </context>
 <context>

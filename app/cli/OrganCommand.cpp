@@ -8,6 +8,7 @@
 #include "CommandLine.h"
 #include "vsim/imaging/LesionGrowing.h"
 #include "vsim/imaging/OrganGrowing.h"
+#include "vsim/core/StoredText.h"
 
 #include <iostream>
 
@@ -59,8 +60,9 @@ int segmentOrgan(const Arguments& arguments, const Progress& progress)
                   numberText(grown.figures.at("window_high_hu")) + " HU (median " +
                   numberText(grown.figures.at("seed_median_hu")) + " HU near the points)";
         if (organ == "tumour")
-            grown.warnings.push_back("a tumour grown in its own window holds its darkest part only: give the liver "
-                                     "label with --within for the lesion's boundary against the parenchyma");
+            grown.warnings.push_back(storedText("a tumour grown in its own window holds its darkest part only: give the "
+                                                "liver label with --within for the lesion's boundary against the "
+                                                "parenchyma"));
     }
     study::Provenance provenance;
     provenance.command = "segment-organ";

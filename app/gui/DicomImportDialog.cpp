@@ -5,6 +5,7 @@
 #include "vsim/dicom/DicomImport.h"
 #include "vsim/dicom/SeriesGeometry.h"
 #include "vsim/viz/DecimalText.h"
+#include "vsim/core/StoredText.h"
 
 #include <QDialogButtonBox>
 #include <QFileDialog>
@@ -49,7 +50,7 @@ QString spacingText(const dicom::DicomSeries& series, QStringList& warnings)
     {
         const dicom::SeriesGeometry plan = dicom::planSeriesGeometry(series);
         for (const std::string& warning : plan.warnings)
-            warnings << QString::fromStdString(warning);
+            warnings << QString::fromStdString(storedTextForPeople(warning));
         const Eigen::Vector3d& s = plan.grid.spacing;
         return QString("%1 x %2 x %3")
             .arg(viz::decimalText(s.x(), 2))
@@ -220,7 +221,7 @@ void DicomImportDialog::showScan()
         }
         QStringList warnings;
         for (const std::string& warning : series.warnings)
-            warnings << QString::fromStdString(warning);
+            warnings << QString::fromStdString(storedTextForPeople(warning));
         const QString spacing = spacingText(series, warnings);
         auto* item = new QTreeWidgetItem(
             study, {QString("%1: %2").arg(series.seriesNumber).arg(series.description.empty()
@@ -236,7 +237,7 @@ void DicomImportDialog::showScan()
     m_tree->expandAll();
     QStringList summary{tr("%n file(s), %1 series", nullptr, int(m_scan->filesSeen)).arg(m_scan->series.size())};
     for (const std::string& warning : m_scan->warnings)
-        summary << QString::fromStdString(warning);
+        summary << QString::fromStdString(storedTextForPeople(warning));
     m_summaryText = summary.join("; ");
     m_summary->setText(m_summaryText);
     for (int column : {Modality, Slices, Spacing})

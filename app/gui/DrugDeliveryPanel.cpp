@@ -6,9 +6,11 @@
 
 #include "NetworkProjectionView.h"
 #include "vsim/app/ProjectionPicture.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/NetworkBuild.h"
 #include "vsim/sim/network/Tracers.h"
+#include "vsim/viz/DecimalText.h"
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QCheckBox>
@@ -46,7 +48,8 @@ std::optional<std::vector<double>> numbersInText(const QString& text, std::size_
 }
 namespace {
 
-QString number(double value, int decimals) { return QString::number(value, 'f', decimals); }
+/// A figure shown (not parsed back) in the reader's decimal mark.
+QString number(double value, int decimals) { return viz::decimalText(value, decimals); }
 
 /// `text` (segment numbers, "3, 7") with `segment` in it or out of it, ascending; what is not a number is dropped.
 QString withSegment(const QString& text, int segment, bool in)
@@ -338,7 +341,7 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
                          number(100.0 * w.frontal.foreshortening, 1), number(100.0 * w.frontal.overlap, 1));
     }
     for (const std::string& warning : r.warnings)
-        text += "<br><i>" + QString::fromStdString(warning).toHtmlEscaped() + "</i>";
+        text += "<br><i>" + QString::fromStdString(storedTextForPeople(warning)).toHtmlEscaped() + "</i>";
     m_summary->setHtml(text);
 
     showFeeders();

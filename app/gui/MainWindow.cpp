@@ -4,6 +4,7 @@
 #include "LabelEditSession.h"
 #include "ViewLayout.h"
 #include "vsim/study/StudyLock.h"
+#include "vsim/core/StoredText.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -269,7 +270,7 @@ void MainWindow::refreshArtifactTree()
             item->setText(2, tr("%n warning(s)", nullptr, static_cast<int>(artifact.warnings.size())));
             QStringList warnings;
             for (const std::string& warning : artifact.warnings)
-                warnings << QString::fromStdString(warning);
+                warnings << QString::fromStdString(storedTextForPeople(warning));
             item->setToolTip(2, warnings.join('\n'));
         }
         item->setToolTip(0, tr("%1, made by \"%2\" on %3")
@@ -366,7 +367,7 @@ bool MainWindow::openStudy(const QString& bundle)
             {
                 QStringList lines;
                 for (const std::string& warning : warnings)
-                    lines << QString::fromStdString(warning);
+                    lines << QString::fromStdString(storedTextForPeople(warning));
                 showError(tr("Study opened with problems"), lines.join('\n'));
             }
         });

@@ -9,6 +9,7 @@
 #include "vsim/app/BloodFlowPipeline.h"
 #include "vsim/app/InjectionPipeline.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/viz/DecimalText.h"
 #include "vsim/viz/VolumeView3D.h"
@@ -81,7 +82,8 @@ bool MainWindow::simulateBloodFlow()
                     10000);
             else
                 statusBar()->showMessage(tr("Blood flow: no stenosis figures (%1)")
-                                             .arg(QString::fromStdString(flow->warnings.empty() ? "" : flow->warnings.back())),
+                                             .arg(QString::fromStdString(
+                                                 flow->warnings.empty() ? "" : storedTextForPeople(flow->warnings.back()))),
                                          10000);
         });
 }

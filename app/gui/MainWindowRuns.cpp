@@ -15,6 +15,7 @@
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
 
+#include <QCoreApplication>
 #include <QDockWidget>
 #include <QVBoxLayout>
 #include <QStatusBar>
@@ -24,6 +25,16 @@
 
 namespace vsim::gui {
 namespace {
+
+/// A run's axis ("time", "pressure": stored in English) in the reader's language.
+QString axisQuantityText(const std::string& quantity)
+{
+    if (quantity == "time")
+        return QCoreApplication::translate("vsim::gui::RunPlayer", "time");
+    if (quantity == "pressure")
+        return QCoreApplication::translate("vsim::gui::RunPlayer", "pressure");
+    return QString::fromStdString(quantity);
+}
 
 /// The fields a frame can be coloured by: a tet mesh's cell fields, a network's segment fields, a grid's fields.
 QStringList fieldsOf(const SimulationData& data)
@@ -167,7 +178,7 @@ bool MainWindow::openRunPlayer(const std::string& id)
                            m_runDock->setWindowTitle(
                                tr("Run Player: %1").arg(QString::fromStdString(m_document.study().artifact(id).name)));
                            m_runDock->show();
-                           m_runPlayer->setFrames(positions, QString::fromStdString(run->axis.quantity),
+                           m_runPlayer->setFrames(positions, axisQuantityText(run->axis.quantity),
                                                   QString::fromStdString(run->axis.unit),
                                                   run->frames.empty() ? QStringList() : fieldsOf(run->frames.front().data));
                            plotRunHistory();

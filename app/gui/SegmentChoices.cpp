@@ -1,5 +1,6 @@
 // SegmentChoices.h: the choices, the inlet's paths (depth first over the tree) and their joined frames.
 #include "SegmentChoices.h"
+#include "vsim/imaging/VesselNames.h"
 #include "vsim/viz/DecimalText.h"
 
 #include <QComboBox>
@@ -13,7 +14,8 @@ namespace vsim::gui {
 
 QString segmentName(const SkeletonGraph& centerlines, const std::vector<std::string>& names, std::size_t e)
 {
-    return e < names.size() && !names[e].empty()
+    // A segment without a name (none, or the automatic naming's "unnamed") goes by its number.
+    return e < names.size() && !names[e].empty() && names[e] != imaging::kUnnamedSegment
                ? QString::fromStdString(names[e])
                : QCoreApplication::translate("vsim::gui::VesselViewPanel", "segment %1").arg(e + 1);
 }

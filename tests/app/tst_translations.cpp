@@ -277,7 +277,8 @@ private slots:
     }
 
     // The guide in each language has the English guide's sections and pictures (a section added to one and not
-    // the others fails here), and the English guide opens where there is no translation.
+    // the others fails here; a language's own picture where it has one, and every picture there), and the English
+    // guide opens where there is no translation.
     void guideInEachLanguageMatchesTheEnglish()
     {
         const auto structure = [](const QString& page) {
@@ -287,10 +288,19 @@ private slots:
             const QString html = QString::fromUtf8(file.readAll());
             QStringList parts;
             static const QRegularExpression marks("(id|href|src)=\"([^\"]+)\"");
+            // A language's own picture (pictures/de/x.png) stands where the English page has pictures/x.png.
+            static const QRegularExpression ownPicture("^pictures/[a-zA-Z_]+/");
             for (auto match = marks.globalMatch(html); match.hasNext();)
             {
                 const auto found = match.next();
-                parts << found.captured(1) + "=" + found.captured(2);
+                QString value = found.captured(2);
+                if (found.captured(1) == "src")
+                {
+                    if (!QFile::exists(":/help/" + value))
+                        return QStringList{"missing picture " + value + " of " + page};
+                    value.replace(ownPicture, "pictures/");
+                }
+                parts << found.captured(1) + "=" + value;
             }
             return parts;
         };

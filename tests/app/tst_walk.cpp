@@ -88,6 +88,13 @@ int colouredPixels(const QImage& picture)
     return count;
 }
 
+/// Coloured pixels of the 3D view right of its colour legend (which takes the left of the view).
+int colouredPixelsBesideLegend(gui::MainWindow& window)
+{
+    const QImage picture = gui::captureView(window.views()->volumeView());
+    return colouredPixels(picture.copy(picture.width() / 4, 0, picture.width() - picture.width() / 4, picture.height()));
+}
+
 } // namespace
 
 class TestWalk : public QObject
@@ -100,6 +107,53 @@ class TestWalk : public QObject
     void keep(gui::MainWindow& window, const QString& name)
     {
         QVERIFY(gui::captureWindow(&window).save(m_output + "/" + name + ".png"));
+    }
+
+    /// The user guide's pictures in `language` (scripts/update-guide-pictures.sh takes them from guide-<language>):
+    /// the window (the guide's overview), the axial slice view with its overlays, the DICOM dialog on the walk's
+    /// series, the wall stress run played to its middle, the vessel view and the endoscope. Each shows what it
+    /// should (a series found, stress-coloured pixels, the lumen) before it is kept.
+    void keepGuidePictures(gui::MainWindow& window, const QString& language)
+    {
+        const QString folder = m_output + "/guide-" + language;
+        QVERIFY(QDir(folder).removeRecursively() && QDir().mkpath(folder));
+        window.views()->volumeView()->showAnteriorView();
+        QVERIFY(gui::captureWindow(&window).save(folder + "/vessels.png"));
+        QVERIFY(gui::captureView(window.views()->sliceView(SliceOrientation::Axial)).save(folder + "/slice-view.png"));
+
+        gui::DicomImportDialog dialog(&window);
+        dialog.resize(1100, 700);
+        dialog.show();
+        QSignalSpy previews(&dialog, &gui::DicomImportDialog::thumbnailsFinished);
+        dialog.scan(QString::fromStdString((fs::path(m_output.toStdString()) / "aaa").string()));
+        QVERIFY(previews.wait(60000));
+        QCOMPARE(dialog.findChild<QTreeWidget*>("dicomSeriesTree")->topLevelItemCount(), 1);
+        QVERIFY(dialog.grab().save(folder + "/import.png"));
+        dialog.close();
+
+        const study::Study& study = window.document().study();
+        std::string wallRun;
+        for (const study::Artifact& artifact : study.artifacts())
+            if (artifact.kind == study::ArtifactKind::Run && artifact.name.rfind("Wall", 0) == 0)
+                wallRun = artifact.id;
+        QVERIFY(!wallRun.empty());
+        QVERIFY(window.openRunPlayer(wallRun));
+        QVERIFY(test::waitForTask(window));
+        window.runPlayer()->setFrame(window.runPlayer()->frameCount() / 2);
+        window.views()->volumeView()->showAnteriorView(); // the study kept the camera of the last run played
+        QVERIFY(colouredPixelsBesideLegend(window) > 500);
+        QVERIFY(gui::captureWindow(&window).save(folder + "/wall-stress.png"));
+
+        QVERIFY(window.showVesselView());
+        QVERIFY(gui::captureWindow(window.views()->vesselPanel()).save(folder + "/vessel-view.png"));
+        if (window.showEndoscope() && window.tasks().isBusy())
+            QVERIFY(test::waitForTask(window));
+        gui::EndoscopePanel* endoscope = window.endoscope();
+        QVERIFY(endoscope && endoscope->hasData());
+        endoscope->setArc(0.3 * endoscope->frames().lengthMm());
+        endoscope->focusOnCentre();
+        QVERIFY(colouredPixels(endoscope->view()->picture()) > endoscope->view()->picture().width() * 20);
+        QVERIFY(gui::captureWindow(endoscope).save(folder + "/endoscope.png"));
     }
 
 private slots:
@@ -192,8 +246,7 @@ private slots:
         QCOMPARE(list->state(WorkflowStep::WallMesh), StepState::Done);
         const double stress = runStep(window, list, WorkflowStep::WallStress);
         QCOMPARE(list->state(WorkflowStep::WallStress), StepState::Done);
-        QVERIFY(colouredPixels(gui::captureView(window.views()->volumeView())) >
-                500); // the stress-coloured wall
+        QVERIFY(colouredPixelsBesideLegend(window) > 500); // the stress-coloured wall
         keep(window, "3-wall-stress");
 
         window.bloodFlowSetup().set("spacing_mm", 3.0);
@@ -298,6 +351,9 @@ private slots:
             QVERIFY2(along.match(position).hasMatch() && along.match(position).captured(1) == decimalMark,
                      qPrintable(position));
             keep(window, "7-walked-" + language);
+            keepGuidePictures(window, language);
+            if (QTest::currentTestFailed())
+                return;
 
             const gui::ReportExportDialog dialog("report.pdf");
             QCOMPARE(dialog.request().language, language);

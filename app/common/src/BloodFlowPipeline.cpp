@@ -4,6 +4,8 @@
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/mesh/ParticleSeeding.h"
 #include "vsim/mesh/VesselSurface.h"
@@ -212,13 +214,14 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
     const double endTime = parameters.get("end_time_s");
     flow.averagedFromS = period > 0.0 ? std::max(0.0, endTime - period) : flow.rampS + 0.5 * std::max(0.0, endTime - flow.rampS);
     if (period <= 0.0 && endTime <= flow.rampS)
-        flow.warnings.push_back("the run ends before the inflow has risen (" + std::to_string(flow.rampS) +
-                                " s): the figures are not of a settled flow");
+        flow.warnings.push_back(storedText(Pattern{
+            "the run ends before the inflow has risen (%1 s): the figures are not of a settled flow",
+            {numberText(flow.rampS)}}));
     else if (flow.averagedFromS < flow.rampS + 3.0 * flow.settlingS)
-        flow.warnings.push_back("the averaging starts " + std::to_string(flow.averagedFromS - flow.rampS) +
-                                " s after the inflow's rise, under three settling times (3 x " +
-                                std::to_string(flow.settlingS) + " s: the vessel's resistance x compliance at this "
-                                "sound speed): the figures may not be of a settled flow");
+        flow.warnings.push_back(storedText(Pattern{
+            "the averaging starts %1 s after the inflow's rise, under three settling times (3 x %2 s: the vessel's "
+            "resistance x compliance at this sound speed): the figures may not be of a settled flow",
+            {numberText(flow.averagedFromS - flow.rampS), numberText(flow.settlingS)}}));
 
     // The open ends and the particles.
     const double depthMm = 2.0 * parameters.get("smoothing_ratio") * spacingMm; // the kernel's support
@@ -313,12 +316,13 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
         }
         catch (const Error& error)
         {
-            flow.warnings.push_back(std::string("no stenosis figures: ") + error.what());
+            flow.warnings.push_back(storedText(Pattern{"no stenosis figures: %1", {error.message()}}));
         }
     }
     else
-        flow.warnings.push_back("the run stopped before its averaging window (from " + std::to_string(flow.averagedFromS) +
-                                " s): no section averages or stenosis figures");
+        flow.warnings.push_back(storedText(Pattern{
+            "the run stopped before its averaging window (from %1 s): no section averages or stenosis figures",
+            {numberText(flow.averagedFromS)}}));
     return flow;
 }
 

@@ -2,6 +2,7 @@
 
 #include "ReportSupport.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Validation.h"
 #include "vsim/sim/fem/FemProtocols.h"
 #include "vsim/sim/fem/FemValidation.h"
@@ -166,11 +167,13 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
              }()},
             {localized("Report", "Made"), withArguments(localized("Report", "%1 by VascuSim %2"),
                                                         {run.provenance.time, run.provenance.softwareVersion})}};
-        // The solver's words as it wrote them; the run status's own warning (stored in English) in the reader's.
+        // The warnings are stored in English: the run status's own is rebuilt, the solvers' are read as stored texts,
+        // both in the reader's language.
         const std::string statusWarning = status.warningText(false);
         for (const std::string& warning : run.warnings)
-            summary.rows.push_back({localized("Report", "Warning"),
-                                    !warning.empty() && warning == statusWarning ? status.warningText(true) : warning});
+            summary.rows.push_back({localized("Report", "Warning"), !warning.empty() && warning == statusWarning
+                                                                        ? status.warningText(true)
+                                                                        : storedTextForPeople(warning)});
         section.blocks.push_back(summary);
         section.blocks.push_back(parameterTable(run, solver.parameters, solver.declared,
                                                 withArguments(localized("Report", "Parameters of %1"), {run.id})));
@@ -189,7 +192,7 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
                     progress.subRange((i + double(c) / solver.validationCases.size()) / runs.size(),
                                       (i + double(c + 1) / solver.validationCases.size()) / runs.size());
                 const ValidationResult result = solver.validate(solver.validationCases[c], part);
-                cases.rows.push_back({result.name, result.description,
+                cases.rows.push_back({result.name, storedTextForPeople(result.description),
                                       result.passed() ? localized("Report", "passed") : localized("Report", "FAILED")});
             }
             validated.insert(run.provenance.command);

@@ -4,6 +4,7 @@
 
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 #include "vsim/imaging/VesselNames.h"
 
 namespace vsim::app {
@@ -60,7 +61,8 @@ std::string segmentTitle(const std::string& name, int fromNode, int toNode)
 {
     if (name != imaging::kUnnamedSegment)
         return name;
-    return name + " (nodes " + std::to_string(fromNode) + "-" + std::to_string(toNode) + ")";
+    return withArguments(localized("vsim::app::SegmentNames", "unnamed (nodes %1-%2)"),
+                         {std::to_string(fromNode), std::to_string(toNode)});
 }
 
 } // namespace vsim::app

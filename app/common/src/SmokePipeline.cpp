@@ -3,6 +3,7 @@
 #include "vsim/app/RunRecord.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/common/RunDriver.h"
 
 #include "BackendChoice.h"
@@ -95,8 +96,8 @@ SmokeRun runSmoke(const study::Study& study, const SmokeSetup& setup, const Prog
         if (liver.empty())
         {
             scene = sim::smoke::liverBoxScene(cells);
-            result.warnings.push_back("no liver label in the study (vascusim-cli segment-organ --organ liver): the box "
-                                      "phantom was used");
+            result.warnings.push_back(storedText("no liver label in the study (vascusim-cli segment-organ --organ "
+                                                 "liver): the box phantom was used"));
         }
         else
         {

@@ -4,6 +4,7 @@
 #include "GpuPlugin.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 
 #include <algorithm>
@@ -107,7 +108,7 @@ sim::sph::SphStepperFactory chooseSphStepper(const std::string& requested, std::
         }
         catch (const Error& refused)
         {
-            warnings.push_back(std::string("ran on the CPU: ") + refused.what());
+            warnings.push_back(storedText(Pattern{"ran on the CPU: %1", {refused.message()}}));
             return nullptr;
         }
     };

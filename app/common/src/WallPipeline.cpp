@@ -6,6 +6,7 @@
 #include "vsim/app/SacRecord.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/mesh/SurfaceRemeshing.h"
 #include "vsim/mesh/WallBoundary.h"
 #include "vsim/mesh/VesselSurface.h"
@@ -232,7 +233,7 @@ WallRunIds addWallRun(study::Study& study, const sim::fem::FemRunResult& run, co
         provenance.parameters["device"] = backend.device;
     std::vector<std::string> warnings;
     if (!run.stopReason.empty())
-        warnings.push_back("stopped early: " + run.stopReason);
+        warnings.push_back(storedText(Pattern{"stopped early: %1", {run.stopReason}}));
     if (const std::string status = runStatusWarning(run.status); !status.empty())
         warnings.push_back(status);
     SolverRun record = sim::fem::runOf(run);

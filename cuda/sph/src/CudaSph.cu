@@ -2,6 +2,7 @@
 
 #include "SphKernels.cuh"
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/cuda_common/CudaCheck.h"
 
 #include <cub/device/device_radix_sort.cuh>
@@ -177,8 +178,8 @@ struct CudaSph::Device
         sph::launchExchange(current.pointers(), boundaryArgs, n, nextId, tallies.data());
         VSIM_CUDA_CHECK(cudaMemcpy(&lastTallies, tallies.data(), sizeof lastTallies, cudaMemcpyDeviceToHost));
         if (lastTallies.overflow)
-            return "the open boundaries let in more particles than the GPU's arrays hold (" +
-                   std::to_string(capacity) + ")";
+            return storedText(Pattern{"the open boundaries let in more particles than the GPU's arrays hold (%1)",
+                                      {std::to_string(capacity)}});
         const int total = n + int(lastTallies.created);
         nextId += int(lastTallies.created);
         for (int k = 0; k < boundaryArgs.count; ++k)
@@ -386,11 +387,12 @@ std::string CudaSph::step()
 {
     Device& d = *m_device;
     const double dt = d.stableStep();
-    const std::string at = "at t = " + number(d.time + dt) + " s ";
+    // What went wrong at the step's end time (SphSolver's guards, the same words).
+    auto at = [&](const std::string& what) { return storedText(Pattern{"at t = %1 s %2", {number(d.time + dt), what}}); };
     d.resetReductions();
     sph::launchKickDrift(d.params, d.current.pointers(), d.rates(), float(dt), d.n);
     if (const std::string full = d.exchangeAndSort(); !full.empty())
-        return at + full;
+        return at(full);
     d.updateRates(d.time + dt);
     sph::launchKick(d.params, d.current.pointers(), d.rates(), float(dt), float(0.5 * d.settings.spacingM),
                     d.n, d.reductions.data());
@@ -398,19 +400,22 @@ std::string CudaSph::step()
     d.time += dt;
     d.stepS = dt;
     if (d.last.notFinite)
-        return at + "particle " + std::to_string(d.last.notFiniteId) + " has a value that is not finite";
+        return at(storedText(
+            Pattern{"particle %1 has a value that is not finite", {std::to_string(d.last.notFiniteId)}}));
     if (d.last.escaped)
-        return at + "particle " + std::to_string(d.last.escapedId) +
-               " left the domain (through a wall or an open end without an outlet)";
+        return at(storedText(Pattern{"particle %1 left the domain (through a wall or an open end without an outlet)",
+                                     {std::to_string(d.last.escapedId)}}));
     if (d.last.throughWall)
-        return at + "fluid particle " + std::to_string(d.last.throughWallId) +
-               " went more than half a spacing into the wall: the time step or the sound speed is too large "
-               "for the flow, or the wall thinner than the kernel (a segmentation's ragged edge: the walls' "
-               "backstop, parameter wall_repulsion 0.01)";
+        return at(storedText(Pattern{
+            "fluid particle %1 went more than half a spacing into the wall: the time step or the sound speed is too "
+            "large for the flow, or the wall thinner than the kernel (a segmentation's ragged edge: the walls' "
+            "backstop, parameter wall_repulsion 0.01)",
+            {std::to_string(d.last.throughWallId)}}));
     if (asFloat(d.last.largestDensityVariation) > d.settings.densityGuard)
-        return at + "a particle's density is " + number(100.0 * asFloat(d.last.largestDensityVariation)) +
-               " % from the rest density (guard " + number(100.0 * d.settings.densityGuard) +
-               " %): raise the sound speed or lower the inflow";
+        return at(storedText(Pattern{"a particle's density is %1 % from the rest density (guard %2 %): raise the "
+                                     "sound speed or lower the inflow",
+                                     {number(100.0 * asFloat(d.last.largestDensityVariation)),
+                                      number(100.0 * d.settings.densityGuard)}}));
     return {};
 }
 

@@ -1,6 +1,7 @@
 #include "vsim/core/Error.h"
 
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 
 namespace vsim {
 namespace {
@@ -29,7 +30,10 @@ Error::Error(const Pattern& message, Context context)
 
 std::string Error::messageForPeople() const
 {
-    return withArguments(localizedText("vsim::Error", m_words), m_values);
+    std::vector<std::string> values;
+    for (const std::string& value : m_values)
+        values.push_back(storedValueForPeople(value));
+    return withArguments(localizedText("vsim::Error", m_words), values);
 }
 
 std::string Error::textForPeople() const

@@ -1,6 +1,8 @@
 #include "vsim/core/Hounsfield.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,9 +62,11 @@ void acceptAsHounsfield(CtVolume& ct, const std::optional<HounsfieldRescale>& re
             clamped += kept != hu;
             data[v] = static_cast<std::int16_t>(kept);
         }
-        warnings.push_back("values rescaled to HU by the user's rescale: HU = " + std::to_string(rescale->slope) +
-                           " x stored + " + std::to_string(rescale->intercept) +
-                           (clamped ? "; " + std::to_string(clamped) + " voxels clamped to the int16 range" : ""));
+        warnings.push_back(storedText(Pattern{"values rescaled to HU by the user's rescale: HU = %1 x stored + %2",
+                                              {numberText(rescale->slope), numberText(rescale->intercept)}}) +
+                           (clamped ? "; " + storedText(Pattern{"%1 voxels clamped to the int16 range",
+                                                                {std::to_string(clamped)}})
+                                    : ""));
     }
     const std::string why = whyNotHounsfield(ct);
     if (why.empty())

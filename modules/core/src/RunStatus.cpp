@@ -1,6 +1,7 @@
 #include "vsim/core/RunStatus.h"
 
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,7 +100,7 @@ std::string RunStatus::stopText(bool forPeople) const
                                reachedUnit});
     }
     if (!stopMessage.empty())
-        text += ": " + stopMessage;
+        text += ": " + (forPeople ? storedTextForPeople(stopMessage) : stopMessage);
     return text;
 }
 

@@ -3,6 +3,7 @@
 #include "StackResampler.h"
 #include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/dicom/SeriesGeometry.h"
 
 #include <algorithm>
@@ -121,8 +122,10 @@ DicomVolume importDicomSeries(const DicomSeries& series, const DicomImportOption
     result.warnings = series.warnings;
     result.warnings.insert(result.warnings.end(), plan.warnings.begin(), plan.warnings.end());
     if (series.modality != "CT")
-        result.warnings.push_back("modality is " + (series.modality.empty() ? std::string("missing") : series.modality) +
-                                  ", not CT: values are not Hounsfield units");
+        result.warnings.push_back(
+            series.modality.empty()
+                ? storedText("modality is missing, not CT: values are not Hounsfield units")
+                : storedText(Pattern{"modality is %1, not CT: values are not Hounsfield units", {series.modality}}));
 
     std::size_t clamped = 0;
     if (!plan.resample)
@@ -138,7 +141,8 @@ DicomVolume importDicomSeries(const DicomSeries& series, const DicomImportOption
         result.image = resampleStack(source, stack, plan.offsets, plan.grid, progress.subRange(0.6, 1.0));
     }
     if (clamped > 0)
-        result.warnings.push_back(std::to_string(clamped) + " values outside -32768..32767 HU were clamped");
+        result.warnings.push_back(
+            storedText(Pattern{"%1 values outside -32768..32767 HU were clamped", {std::to_string(clamped)}}));
 
     result.attributes = series.attributes();
     result.attributes["series_key"] = series.key;

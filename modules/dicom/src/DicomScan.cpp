@@ -4,6 +4,7 @@
 #include "vsim/core/Localized.h"
 #include "vsim/core/OutputSafety.h"
 #include "vsim/core/ParallelFor.h"
+#include "vsim/core/StoredText.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -22,9 +23,10 @@ namespace vsim::dicom {
 namespace fs = std::filesystem;
 namespace {
 
-std::string plural(std::size_t count, const std::string& singular, const std::string& pluralForm)
+/// A stored text about `count` things: the first pattern for one, the second for several (%1: the count).
+std::string counted(std::size_t count, const Pattern& one, const Pattern& several)
 {
-    return std::to_string(count) + " " + (count == 1 ? singular : pluralForm);
+    return storedText(Pattern{count == 1 ? one.text : several.text, {std::to_string(count)}});
 }
 
 bool isDicomDir(const fs::path& file)
@@ -186,7 +188,8 @@ std::vector<DicomSeries> groupIntoSeries(std::vector<DicomImageHeader> headers, 
         bySeries[it->second].second.push_back(h);
     }
     if (localizers > 0)
-        warnings.push_back(plural(localizers, "localizer image", "localizer images") + " skipped");
+        warnings.push_back(counted(localizers, Pattern{"%1 localizer image skipped", {}},
+                                   Pattern{"%1 localizer images skipped", {}}));
 
     std::vector<DicomSeries> result;
     for (const auto& [uid, members] : bySeries)
@@ -210,9 +213,10 @@ std::vector<DicomSeries> groupIntoSeries(std::vector<DicomImageHeader> headers, 
             if (p > 0)
                 parts[p].key += '#' + std::to_string(p + 1);
             if (parts.size() > 1)
-                parts[p].warnings.push_back("series split into " + std::to_string(parts.size()) +
-                                            " sub-series (orientation, image size, pixel spacing, image type or "
-                                            "acquisition differ); this is part " + std::to_string(p + 1));
+                parts[p].warnings.push_back(storedText(Pattern{
+                    "series split into %1 sub-series (orientation, image size, pixel spacing, image type or "
+                    "acquisition differ); this is part %2",
+                    {std::to_string(parts.size()), std::to_string(p + 1)}}));
             result.push_back(std::move(parts[p]));
         }
     }
@@ -289,13 +293,15 @@ DicomScanResult scanDicom(const fs::path& input, const Progress& progress)
     }
     result.imageFiles = images.size();
     if (result.nonDicomFiles)
-        result.warnings.push_back(plural(result.nonDicomFiles, "file is", "files are") + " not DICOM (skipped)");
+        result.warnings.push_back(counted(result.nonDicomFiles, Pattern{"%1 file is not DICOM (skipped)", {}},
+                                          Pattern{"%1 files are not DICOM (skipped)", {}}));
     if (result.nonImageFiles)
-        result.warnings.push_back(plural(result.nonImageFiles, "DICOM file holds", "DICOM files hold") +
-                                  " no image (DICOMDIR, reports, ...; skipped)");
+        result.warnings.push_back(counted(result.nonImageFiles,
+                                          Pattern{"%1 DICOM file holds no image (DICOMDIR, reports, ...; skipped)", {}},
+                                          Pattern{"%1 DICOM files hold no image (DICOMDIR, reports, ...; skipped)", {}}));
     if (result.damagedFiles)
-        result.warnings.push_back(plural(result.damagedFiles, "DICOM file is", "DICOM files are") +
-                                  " damaged or truncated (skipped)");
+        result.warnings.push_back(counted(result.damagedFiles, Pattern{"%1 DICOM file is damaged or truncated (skipped)", {}},
+                                          Pattern{"%1 DICOM files are damaged or truncated (skipped)", {}}));
     result.series = groupIntoSeries(std::move(images), result.warnings);
     return result;
 }

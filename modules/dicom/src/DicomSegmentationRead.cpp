@@ -7,6 +7,7 @@
 #include "FunctionalGroups.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <dcmtk/config/osconfig.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
@@ -206,8 +207,8 @@ SegmentationMask readDicomSegmentation(const std::filesystem::path& file, std::s
         }
     }
     if (overlaps > 0)
-        result.warnings.push_back(std::to_string(overlaps) + " voxels belong to several segments: the higher segment "
-                                  "number is kept");
+        result.warnings.push_back(storedText(Pattern{
+            "%1 voxels belong to several segments: the higher segment number is kept", {std::to_string(overlaps)}}));
     return result;
 }
 

@@ -1,6 +1,7 @@
 #include "vsim/dicom/SeriesGeometry.h"
 
 #include "vsim/core/Median.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,10 +15,11 @@ using Eigen::Vector3d;
 
 constexpr double kDuplicateToleranceMm = 0.01;
 
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0)
+/// `value` with `decimals` decimals, for a stored text.
+std::string fixed(double value, int decimals)
 {
-    char buffer[256];
-    std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
     return buffer;
 }
 
@@ -107,8 +109,9 @@ SeriesGeometry planSeriesGeometry(const DicomSeries& series)
         plan.sorted.push_back(slice);
     }
     if (plan.duplicateSlices > 0)
-        plan.warnings.push_back(std::to_string(plan.duplicateSlices) +
-                                " slices at duplicate positions dropped (kept the lowest instance number)");
+        plan.warnings.push_back(storedText(Pattern{
+            "%1 slices at duplicate positions dropped (kept the lowest instance number)",
+            {std::to_string(plan.duplicateSlices)}}));
     const double h0 = height(plan.sorted.front());
     for (const DicomSlice& slice : plan.sorted)
         plan.offsets.push_back(height(slice) - h0);
@@ -119,7 +122,7 @@ SeriesGeometry planSeriesGeometry(const DicomSeries& series)
     {
         plan.grid = stack.nominalGeometry();
         plan.grid.spacing.z() = first.sliceThickness > 0.0 ? first.sliceThickness : 1.0;
-        plan.warnings.push_back("the series has a single slice");
+        plan.warnings.push_back(storedText("the series has a single slice"));
         return plan;
     }
 
@@ -140,12 +143,12 @@ SeriesGeometry planSeriesGeometry(const DicomSeries& series)
     }
     const auto [smallest, largest] = std::minmax_element(gaps.begin(), gaps.end());
     if (plan.missingSlices > 0)
-        plan.warnings.push_back(std::to_string(plan.missingSlices) +
-                                format(" missing slices (gaps up to %.2f mm where the spacing is %.2f mm): filled by "
-                                       "interpolation", *largest, spacing));
+        plan.warnings.push_back(storedText(Pattern{
+            "%1 missing slices (gaps up to %2 mm where the spacing is %3 mm): filled by interpolation",
+            {std::to_string(plan.missingSlices), fixed(*largest, 2), fixed(spacing, 2)}}));
     if (uneven)
-        plan.warnings.push_back(format("uneven slice spacing (%.3f to %.3f mm): resampled to %.3f mm", *smallest,
-                                       *largest, spacing));
+        plan.warnings.push_back(storedText(Pattern{"uneven slice spacing (%1 to %2 mm): resampled to %3 mm",
+                                                   {fixed(*smallest, 3), fixed(*largest, 3), fixed(spacing, 3)}}));
 
     // Gantry tilt: the slices advance off their normal.
     const Vector3d advance = stack.positions.back() - stack.positions.front();
@@ -158,7 +161,8 @@ SeriesGeometry planSeriesGeometry(const DicomSeries& series)
     {
         const double advanceSpacing = spacing / std::cos(plan.tiltDegrees * std::numbers::pi / 180.0);
         plan.grid = tiltedGrid(stack, advance, advanceSpacing);
-        plan.warnings.push_back(format("gantry tilt of %.2f degrees: resampled onto an orthogonal grid", plan.tiltDegrees));
+        plan.warnings.push_back(storedText(Pattern{"gantry tilt of %1 degrees: resampled onto an orthogonal grid",
+                                                   {fixed(plan.tiltDegrees, 2)}}));
     }
     else
     {

@@ -5,6 +5,7 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 
 #include <Eigen/Geometry>
 
@@ -182,8 +183,8 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
     {
         for (std::size_t s = peak; s-- > 0 && sections[peak].arcMm - sections[s].arcMm <= kNeckSearchMm;)
             neck = neck == 0.0 ? sections[s].diameterMm : std::min(neck, sections[s].diameterMm);
-        sac.warnings.push_back("the lowest renal artery was not found in the lumen label: the neck is the narrowest "
-                               "outer diameter within 80 mm above the widest section");
+        sac.warnings.push_back(storedText("the lowest renal artery was not found in the lumen label: the neck is the "
+                                          "narrowest outer diameter within 80 mm above the widest section"));
     }
     const double threshold = neck > 0.0 ? kSacNeckFactor * neck : kSacFallbackMm;
     std::size_t top = peak, bottom = peak;
@@ -229,7 +230,7 @@ AneurysmSac measureAneurysmSac(const CtVolume& ct, const LabelVolume& lumen, dou
         }
     }
     else
-        sac.warnings.push_back("no sac: the widest outer diameter does not exceed 1.5 x the neck's");
+        sac.warnings.push_back(storedText("no sac: the widest outer diameter does not exceed 1.5 x the neck's"));
     if (renal)
         f["lowest_renal_z_mm"] = centreline[*renal].z();
     for (const auto& [key, value] : commonIliacDiameters(ct, lumen, sections))

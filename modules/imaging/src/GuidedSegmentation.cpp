@@ -7,6 +7,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/Hounsfield.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <array>
@@ -405,8 +406,9 @@ SegmentationResult segmentFromPoints(const CtVolume& ct, const ParameterSet& par
     result.warnings.insert(result.warnings.end(), waves.leakNotes.begin(), waves.leakNotes.end());
     result.warnings.insert(result.warnings.end(), paths.notes.begin(), paths.notes.end());
     if (waves.limitedVoxels > 0)
-        result.warnings.push_back("the fronts reached the path-length limit (" + std::to_string(int(maxLength)) +
-                                  " mm) or a branch limit: the vessel continues beyond the label");
+        result.warnings.push_back(storedText(Pattern{"the fronts reached the path-length limit (%1 mm) or a branch "
+                                                     "limit: the vessel continues beyond the label",
+                                                     {std::to_string(int(maxLength))}}));
     if (voxels == 0)
         throw Error("the points grew no vessel: pick them inside the contrast-filled lumen");
     progress.report(1.0, localized("vsim::Progress", "segmented"));

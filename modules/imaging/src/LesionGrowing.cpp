@@ -4,6 +4,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
 #include "vsim/core/Median.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -204,8 +205,9 @@ LesionGrowing growLesion(const CtVolume& ct, const std::vector<Eigen::Vector3d>&
             if (eroded[s])
                 coreSeeds.push_back(s);
         if (coreSeeds.empty())
-            result.warnings.push_back("the opening removed every point's surroundings: the lesion is thinner than the "
-                                      "opening there; the label is the grown region without the opening");
+            result.warnings.push_back(storedText("the opening removed every point's surroundings: the lesion is "
+                                                 "thinner than the opening there; the label is the grown region "
+                                                 "without the opening"));
         else
         {
             std::vector<std::uint8_t> reached(count, 0);

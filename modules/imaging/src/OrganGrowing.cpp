@@ -5,6 +5,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
 #include "vsim/core/Median.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,8 +123,9 @@ OrganGrowing growOrgan(const CtVolume& ct, const std::vector<Eigen::Vector3d>& p
     OrganGrowing result;
     if (coreSeeds.empty())
     {
-        result.warnings.push_back("the opening removed every point's surroundings: the organ is thinner than the "
-                                  "opening there; the label is the grown region without the opening");
+        result.warnings.push_back(storedText("the opening removed every point's surroundings: the organ is thinner "
+                                             "than the opening there; the label is the grown region without the "
+                                             "opening"));
         kept = grown;
     }
     else

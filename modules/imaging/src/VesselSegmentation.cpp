@@ -6,6 +6,7 @@
 #include "vsim/core/Hounsfield.h"
 #include "vsim/core/Localized.h"
 #include "vsim/core/Median.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/interop/ItkImage.h"
 
 #include <itkBinaryThresholdImageFilter.h>
@@ -299,8 +300,8 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
     result.figures["tissue_hu"] = tissue;
     result.figures["threshold_hu"] = threshold;
     if (blood - tissue < 100.0)
-        result.warnings.push_back("weak contrast: blood " + number(blood) + " HU against tissue " + number(tissue) +
-                                  " HU; the boundary may be unreliable");
+        result.warnings.push_back(storedText(Pattern{
+            "weak contrast: blood %1 HU against tissue %2 HU; the boundary may be unreliable", {number(blood), number(tissue)}}));
 
     const Dims seedVoxel = indexOf(dims, seedIndex);
     const Dims roiSeed{seedVoxel[0] - box.start[0], seedVoxel[1] - box.start[1], seedVoxel[2] - box.start[2]};
@@ -369,7 +370,8 @@ SegmentationResult segmentVessels(const CtVolume& ct, const ParameterSet& p,
         if (vessel[i] && bone[i])
             vessel[i] = 0, ++boneRemoved;
     if (boneRemoved > 0)
-        result.warnings.push_back(std::to_string(boneRemoved) + " voxels next to bone or calcium excluded");
+        result.warnings.push_back(
+            storedText(Pattern{"%1 voxels next to bone or calcium excluded", {std::to_string(boneRemoved)}}));
     std::vector<std::size_t> border;
     for (int k = 0; k < roiDims[2]; ++k)
         for (int j = 0; j < roiDims[1]; ++j)

@@ -1,6 +1,7 @@
 #include "vsim/mesh/WallBoundary.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <Eigen/Geometry>
 
@@ -181,9 +182,10 @@ MarkedWall markWallBoundary(TetMesh mesh, const WallBoundarySelection& selection
     for (const Face& face : boundary.faces)
         implied += std::all_of(face.begin(), face.end(), [&](int node) { return layer[std::size_t(node)] == 0.0; });
     if (implied != marked.pressureFaces)
-        marked.warnings.push_back(std::to_string(implied - marked.pressureFaces) +
-                                  " boundary faces outside the selection have all their nodes on the lumen surface "
-                                  "and carry the pressure too (a wall one element thick there)");
+        marked.warnings.push_back(storedText(Pattern{
+            "%1 boundary faces outside the selection have all their nodes on the lumen surface and carry the pressure "
+            "too (a wall one element thick there)",
+            {std::to_string(implied - marked.pressureFaces)}}));
     mesh.pointFields["wall_layer"] = layer;
     mesh.pointFields["end_set"] = ends;
     marked.wall = std::move(mesh);

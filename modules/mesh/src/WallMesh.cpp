@@ -4,6 +4,7 @@
 #include "WallSmoothing.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <Eigen/Geometry>
 
@@ -84,8 +85,9 @@ std::pair<TriangleMesh, std::vector<int>> openEnds(const TriangleMesh& lumen, co
         kept.erase(std::remove_if(kept.begin(), kept.end(), [&](const auto& t) { return root(t[0]) != largest; }),
                    kept.end());
         if (kept.size() < before)
-            warnings.push_back(std::to_string(before - kept.size()) + " triangles in loose pieces left by the end cuts "
-                               "(or apart from the vessel tree) were dropped");
+            warnings.push_back(storedText(Pattern{
+                "%1 triangles in loose pieces left by the end cuts (or apart from the vessel tree) were dropped",
+                {std::to_string(before - kept.size())}}));
     }
     // Compact the vertices.
     std::vector<int> newIndex(lumen.points.size(), -1);
@@ -124,8 +126,9 @@ std::pair<TriangleMesh, std::vector<int>> openEnds(const TriangleMesh& lumen, co
                     ++stray;
             }
     if (stray > 0)
-        warnings.push_back("the lumen surface is open away from the vessel ends (" + std::to_string(stray / 2) +
-                           " boundary edges; is the segmentation cut by the image border?): those nodes stay free");
+        warnings.push_back(storedText(Pattern{"the lumen surface is open away from the vessel ends (%1 boundary edges; "
+                                              "is the segmentation cut by the image border?): those nodes stay free",
+                                              {std::to_string(stray / 2)}}));
     // (Flattening the loop onto the plane was tried: it turns the triangles next to the cut into slivers.)
     return {open, endOf};
 }
@@ -353,11 +356,13 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
     wall.minDihedralDeg = smallest;
     wall.meanMinDihedralDeg = sum / double(wall.mesh.tets.size());
     if (wall.inverted > 0)
-        wall.warnings.push_back(std::to_string(wall.inverted) + " elements are inverted where the offset folds (wall "
-                                "thicker than the local radius of curvature): use a thinner wall or a smoother surface");
+        wall.warnings.push_back(storedText(Pattern{"%1 elements are inverted where the offset folds (wall thicker than "
+                                                   "the local radius of curvature): use a thinner wall or a smoother "
+                                                   "surface",
+                                                   {std::to_string(wall.inverted)}}));
     for (std::size_t e = 0; e < ends.size(); ++e)
         if (wall.endNodes[e].empty())
-            wall.warnings.push_back("end " + std::to_string(e + 1) + " has no open boundary");
+            wall.warnings.push_back(storedText(Pattern{"end %1 has no open boundary", {std::to_string(e + 1)}}));
     return wall;
 }
 

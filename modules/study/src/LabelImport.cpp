@@ -1,6 +1,7 @@
 #include "vsim/study/LabelImport.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <array>
 #include <cmath>
@@ -90,12 +91,12 @@ LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, s
         throw refuse(std::to_string(outside) + " of its " + std::to_string(labelled) +
                      " labelled voxels lie outside the image");
     if (!sameLattice)
-        warnings.push_back("the mask's voxels were stored in another axis order or direction: reordered onto the "
-                           "image's grid, voxel for voxel");
+        warnings.push_back(storedText("the mask's voxels were stored in another axis order or direction: reordered "
+                                      "onto the image's grid, voxel for voxel"));
     if (di != 0 || dj != 0 || dk != 0 || d != image.dims)
-        warnings.push_back("the mask was on another grid of the same scan (offset " + std::to_string(di) + ", " +
-                           std::to_string(dj) + ", " + std::to_string(dk) +
-                           " voxels): cut to the image's grid, every labelled voxel kept");
+        warnings.push_back(storedText(Pattern{"the mask was on another grid of the same scan (offset %1, %2, %3 voxels): "
+                                              "cut to the image's grid, every labelled voxel kept",
+                                              {std::to_string(di), std::to_string(dj), std::to_string(dk)}}));
     return label;
 }
 

@@ -3,6 +3,7 @@
 #include "BundleFiles.h"
 #include "VtkXmlFiles.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/interop/VtkMesh.h"
 #include "vsim/interop/VtkSimulationData.h"
 
@@ -220,10 +221,10 @@ std::string checkRunFrames(const fs::path& runJson)
             const fs::path path = runJson.parent_path() / file;
             std::error_code error;
             if (!fs::exists(path, error))
-                return "a frame of the run is missing: " + file;
+                return storedText(Pattern{"a frame of the run is missing: %1", {file}});
             if (fs::file_size(path, error) != entry.at("bytes").get<std::uintmax_t>() ||
                 fileChecksum(path) != entry.at("crc32").get<std::uint32_t>())
-                return "a frame of the run differs from its record (damaged): " + file;
+                return storedText(Pattern{"a frame of the run differs from its record (damaged): %1", {file}});
         }
         return {};
     }

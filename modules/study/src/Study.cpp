@@ -6,6 +6,7 @@
 #include "RunFiles.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/OutputSafety.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Version.h"
 #include "vsim/study/StudyLock.h"
 
@@ -26,11 +27,11 @@ std::string checkArtifactFile(const fs::path& bundle, const Artifact& artifact)
     const fs::path file = bundle / artifact.file;
     std::error_code error;
     if (!fs::exists(file, error))
-        return "file is missing: " + artifact.file;
+        return storedText(Pattern{"file is missing: %1", {artifact.file}});
     if (fs::file_size(file, error) != artifact.bytes)
-        return "file size differs from the manifest: " + artifact.file;
+        return storedText(Pattern{"file size differs from the manifest: %1", {artifact.file}});
     if (fileChecksum(file) != artifact.checksum)
-        return "file checksum differs from the manifest (damaged): " + artifact.file;
+        return storedText(Pattern{"file checksum differs from the manifest (damaged): %1", {artifact.file}});
     if (artifact.kind == ArtifactKind::Run)
         return checkRunFrames(file);
     return {};
@@ -181,11 +182,12 @@ Study Study::open(const fs::path& bundle, Access access, double waitSeconds)
         artifact.damage = checkArtifactFile(bundle, artifact);
         artifact.damaged = !artifact.damage.empty();
         if (artifact.damaged)
-            state->openWarnings.push_back("artifact '" + artifact.name + "' (" + artifact.id + "): " + artifact.damage);
+            state->openWarnings.push_back(
+                storedText(Pattern{"artifact '%1' (%2): %3", {artifact.name, artifact.id, artifact.damage}}));
     }
     for (const fs::path& leftover : unreferencedFiles(bundle, state->manifest))
-        state->openWarnings.push_back("leftover of an interrupted save, removed at the next save: " +
-                                      fs::relative(leftover, bundle).string());
+        state->openWarnings.push_back(storedText(Pattern{"leftover of an interrupted save, removed at the next save: %1",
+                                                         {fs::relative(leftover, bundle).string()}}));
     return Study(std::move(state));
 }
 

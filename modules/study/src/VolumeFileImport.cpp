@@ -4,6 +4,7 @@
 #include "vsim/core/Hounsfield.h"
 #include "vsim/core/Localized.h"
 #include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/interop/ItkImage.h"
 #include "vsim/study/Study.h"
 
@@ -78,9 +79,11 @@ CtVolume toHounsfield(interop::ItkImage3<float>* image, std::vector<std::string>
             progress.report(0.6 + 0.4 * static_cast<double>(v) / static_cast<double>(count), localized("vsim::Progress", "converting to HU"));
     }
     if (rounded)
-        warnings.push_back(std::to_string(rounded) + " voxels were not whole numbers and were rounded to integer HU");
+        warnings.push_back(storedText(
+            Pattern{"%1 voxels were not whole numbers and were rounded to integer HU", {std::to_string(rounded)}}));
     if (clamped)
-        warnings.push_back(std::to_string(clamped) + " voxels were outside the int16 range or not finite and were clamped");
+        warnings.push_back(storedText(Pattern{"%1 voxels were outside the int16 range or not finite and were clamped",
+                                              {std::to_string(clamped)}}));
     return hounsfield;
 }
 

@@ -1,6 +1,7 @@
 #include "vsim/sim/common/RunDriver.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/UtcTime.h"
 
 #include <algorithm>
@@ -46,7 +47,7 @@ public:
     {
         if (const auto where = firstNonFinite(data))
         {
-            why = "a value that is not finite: " + *where;
+            why = storedText(Pattern{"a value that is not finite: %1", {*where}});
             return false;
         }
         RunFrame frame{m_run.framesTaken++, step, position, std::move(data)};
@@ -149,8 +150,9 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
             if (run.steps >= control.maxSteps)
             {
                 stop(status, RunStatus::StoppedBy::Guard,
-                     "the run did not reach its end within the step limit of " + std::to_string(control.maxSteps) +
-                         " steps (a collapsing time step?)");
+                     storedText(Pattern{"the run did not reach its end within the step limit of %1 steps (a "
+                                        "collapsing time step?)",
+                                        {std::to_string(control.maxSteps)}}));
                 break;
             }
             const double before = solver.position();
@@ -173,7 +175,8 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
                 {
                     // The state is broken and the solver did not see it: the frame before stays the last.
                     stateBroken = true;
-                    stop(status, RunStatus::StoppedBy::Guard, "step " + std::to_string(run.steps) + " left " + why);
+                    stop(status, RunStatus::StoppedBy::Guard,
+                         storedText(Pattern{"step %1 left %2", {std::to_string(run.steps), why}}));
                     break;
                 }
             if (ends)
@@ -184,7 +187,7 @@ SolverRun runSolver(Solver& solver, const SimulationInput& input, const Paramete
     }
     catch (const Cancelled&)
     {
-        stop(status, RunStatus::StoppedBy::Cancel, "cancelled by the user");
+        stop(status, RunStatus::StoppedBy::Cancel, storedText("cancelled by the user"));
     }
     // A guard or a cancel: the solver is at its last good state; keep it as the last frame.
     if (status.stoppedBy == RunStatus::StoppedBy::Guard || status.stoppedBy == RunStatus::StoppedBy::Cancel)

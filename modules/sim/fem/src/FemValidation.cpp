@@ -7,6 +7,7 @@
 #include "vsim/sim/fem/QuadraticFem.h"
 #include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 
@@ -34,8 +35,9 @@ ElasticMaterial material(double young, double poisson)
 ValidationResult patchTest(const Progress&)
 {
     ValidationResult result;
-    result.description = "constant-strain patch: boundary nodes of a 4x4x4-cell cube (384 tets) moved by u = A X + c, "
-                         "interior solved; interior displacement and element stress against the exact linear field";
+    result.description = storedText("constant-strain patch: boundary nodes of a 4x4x4-cell cube (384 tets) moved by "
+                                    "u = A X + c, interior solved; interior displacement and element stress against "
+                                    "the exact linear field");
     const StructuredTetMesh mesh = boxTetMesh(Eigen::Vector3d(1.0, 1.0, 1.0), {4, 4, 4});
     CorotationalFem model(mesh.points, mesh.tets, material(1e6, 0.3));
     Eigen::Matrix3d a;
@@ -76,8 +78,8 @@ ValidationResult patchTest(const Progress&)
 ValidationResult rotationTest(const Progress&)
 {
     ValidationResult result;
-    result.description = "a 0.1 x 0.05 x 0.05 m block (96 tets, E = 1 MPa) turned 90 degrees about z and moved: "
-                         "largest elastic force against E h^2 (h = element size)";
+    result.description = storedText("a 0.1 x 0.05 x 0.05 m block (96 tets, E = 1 MPa) turned 90 degrees about z and "
+                                    "moved: largest elastic force against E h^2 (h = element size)");
     const StructuredTetMesh mesh = boxTetMesh(Eigen::Vector3d(0.1, 0.05, 0.05), {4, 2, 2});
     CorotationalFem model(mesh.points, mesh.tets, material(1e6, 0.3));
     const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -127,9 +129,10 @@ ValidationResult cantileverTest(const Progress&)
     const StructuredTetMesh mesh = boxTetMesh(Eigen::Vector3d(length, side, side), {70, 14, 14});
     // nu = 0: beam theory ignores the Poisson contraction that a clamped 3D root prevents. Linear tets are stiff
     // in bending: 14 cells across the section keep the error near 2 % (6 cells: 11 %).
-    result.description = "clamped 0.5 x 0.1 x 0.1 m beam (70 x 14 x 14 cells, " + std::to_string(mesh.tets.size()) +
-                         " tets, E = 1 MPa, nu = 0) with a tip load: mean tip deflection against Timoshenko theory "
-                         "P L^3 / (3 E I) + P L / (k G A), k = 10 (1 + nu) / (12 + 11 nu)";
+    result.description = storedText(Pattern{"clamped 0.5 x 0.1 x 0.1 m beam (70 x 14 x 14 cells, %1 tets, E = 1 MPa, "
+                                            "nu = 0) with a tip load: mean tip deflection against Timoshenko theory "
+                                            "P L^3 / (3 E I) + P L / (k G A), k = 10 (1 + nu) / (12 + 11 nu)",
+                                            {std::to_string(mesh.tets.size())}});
     CorotationalFem model(mesh.points, mesh.tets, material(young, poisson));
     const double inertia = side * side * side * side / 12.0, area = side * side;
     const double shearModulus = young / (2.0 * (1.0 + poisson)), shearFactor = 10.0 * (1.0 + poisson) / (12.0 + 11.0 * poisson);
@@ -157,9 +160,10 @@ ValidationResult lameTest(const Progress&)
     ValidationResult result;
     const double a = 0.01, b = 0.02, pressure = 1e3, young = 1e6, poisson = 0.45;
     const StructuredTetMesh mesh = annulusSectorTetMesh(a, b, 0.5 * M_PI, 0.001, {16, 48, 1});
-    result.description = "quarter of a thick-walled tube (a = 10 mm, b = 20 mm, " + std::to_string(mesh.tets.size()) +
-                         " tets, E = 1 MPa, nu = 0.45) under 1 kPa inside, plane strain and symmetry planes: "
-                         "radial displacement and hoop stress against Lame's solution";
+    result.description = storedText(Pattern{"quarter of a thick-walled tube (a = 10 mm, b = 20 mm, %1 tets, E = 1 MPa, "
+                                            "nu = 0.45) under 1 kPa inside, plane strain and symmetry planes: radial "
+                                            "displacement and hoop stress against Lame's solution",
+                                            {std::to_string(mesh.tets.size())}});
     CorotationalFem model(mesh.points, mesh.tets, material(young, poisson));
     Constraints constrained(3 * model.nodeCount(), 0);
     for (int k = 0; k <= mesh.cells[2]; ++k)
@@ -246,10 +250,12 @@ ValidationResult lameQuadraticTest(const Progress&)
     QuadraticFem model(quadraticFromLinear(linear.points, linear.tets),
                        {HyperelasticMaterial::stVenantKirchhoff(young, poisson)});
     const QuadraticTetMesh& mesh = model.mesh();
-    result.description = "quarter of a thick-walled tube (a = 10 mm, b = 20 mm, " + std::to_string(mesh.elements.size()) +
-                         " quadratic tets, E = 1 MPa, nu = 0.49, nearly incompressible) under 1 kPa inside (follower), "
-                         "plane strain and symmetry planes, Newton to 1e-8: radial displacement and the elements' "
-                         "hoop stress (mean of the 4 quadrature points, no averaging over cells) against Lame's solution";
+    result.description = storedText(Pattern{
+        "quarter of a thick-walled tube (a = 10 mm, b = 20 mm, %1 quadratic tets, E = 1 MPa, nu = 0.49, nearly "
+        "incompressible) under 1 kPa inside (follower), plane strain and symmetry planes, Newton to 1e-8: radial "
+        "displacement and the elements' hoop stress (mean of the 4 quadrature points, no averaging over cells) against "
+        "Lame's solution",
+        {std::to_string(mesh.elements.size())}});
     Constraints constrained(3 * model.nodeCount(), 0);
     for (std::size_t n = 0; n < model.nodeCount(); ++n)
     {
@@ -314,9 +320,9 @@ ValidationResult lameQuadraticTest(const Progress&)
 ValidationResult dampingTest(const Progress& progress)
 {
     ValidationResult result;
-    result.description = "a 0.2 m cantilever (240 tets) bent by a tip load, released without load; backward Euler, "
-                         "h = 1 ms, 300 steps, Rayleigh beta = 0.22 s (thesis) and 0.005 s: total energy "
-                         "(kinetic + elastic) must never rise";
+    result.description = storedText("a 0.2 m cantilever (240 tets) bent by a tip load, released without load; backward "
+                                    "Euler, h = 1 ms, 300 steps, Rayleigh beta = 0.22 s (thesis) and 0.005 s: total "
+                                    "energy (kinetic + elastic) must never rise");
     const StructuredTetMesh mesh = boxTetMesh(Eigen::Vector3d(0.2, 0.02, 0.02), {10, 2, 2});
     const Constraints clamped = clampedAtXZero(mesh);
     int stage = 0;

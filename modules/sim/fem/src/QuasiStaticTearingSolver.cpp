@@ -2,6 +2,8 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -42,10 +44,11 @@ void QuasiStaticTearingSolver::initialize(const SimulationInput& input, const Pa
     m_startStatus.forceTolerance = s.equilibriumTolerance;
     m_safe = s.startPa;
     if (!equilibrium(m_safe, m_startStatus, {}))
-        m_startProblem = "the equilibrium at the ramp's start " + megapascals(m_safe) + " failed: " + m_failure;
+        m_startProblem = storedText(
+            Pattern{"the equilibrium at the ramp's start %1 failed: %2", {megapascals(m_safe), m_failure}});
     else if (!m_wall->elementsOverTearStrength().empty())
-        m_startProblem = "elements are over the tear strength already at the ramp's start " + megapascals(m_safe) +
-                         ": start lower";
+        m_startProblem = storedText(Pattern{
+            "elements are over the tear strength already at the ramp's start %1: start lower", {megapascals(m_safe)}});
     m_safeState = m_wall->model().positions();
     m_after.emplace_back(m_lastGoodPressure, m_solves);
 }
@@ -70,8 +73,8 @@ bool QuasiStaticTearingSolver::equilibrium(double pressure, RunStatus& status, c
     }
     ++m_failed;
     if (m_failure.empty())
-        m_failure = "no equilibrium in " + std::to_string(report.updates) + " Newton updates (force residual " +
-                    std::to_string(report.forceResidual) + ")";
+        m_failure = storedText(Pattern{"no equilibrium in %1 Newton updates (force residual %2)",
+                                       {std::to_string(report.updates), numberText(report.forceResidual)}});
     return false;
 }
 
@@ -95,7 +98,7 @@ StepOutcome QuasiStaticTearingSolver::step(RunStatus& status, const Progress& pr
     progress.report(m_safe / m_setup.endPa, withArguments(localized("vsim::Progress", "quasi-static tearing at %1"), {megapascals(m_safe)})); // the axis's share
     m_over = std::min(m_setup.endPa, m_safe + m_setup.incrementPa);
     if (!equilibrium(m_over, status, progress))
-        return record(StepOutcome::guard("the equilibrium at " + megapascals(m_over) + " failed: " + m_failure));
+        return record(equilibriumFailed());
     if (m_wall->elementsOverTearStrength().empty())
     {
         m_safe = m_over;
@@ -117,7 +120,7 @@ StepOutcome QuasiStaticTearingSolver::step(RunStatus& status, const Progress& pr
     }
     m_wall->restore(m_safeState);
     if (!equilibrium(m_over, status, progress))
-        return record(StepOutcome::guard("the equilibrium at " + megapascals(m_over) + " failed: " + m_failure));
+        return record(equilibriumFailed());
     if (m_onset < 0.0)
     {
         m_onset = m_over, m_bracket = m_over - safe;
@@ -127,6 +130,12 @@ StepOutcome QuasiStaticTearingSolver::step(RunStatus& status, const Progress& pr
         return record(onset);
     }
     return record(release(status, progress));
+}
+
+StepOutcome QuasiStaticTearingSolver::equilibriumFailed() const
+{
+    return StepOutcome::guard(
+        storedText(Pattern{"the equilibrium at %1 failed: %2", {megapascals(m_over), m_failure}}));
 }
 
 StepOutcome QuasiStaticTearingSolver::release(RunStatus& status, const Progress& progress)
@@ -141,13 +150,15 @@ StepOutcome QuasiStaticTearingSolver::release(RunStatus& status, const Progress&
         m_entropyCurve.emplace_back(m_over, m_wall->entropy().value());
         if (m_setup.entropyEnd > 0.0 && m_wall->entropy().value() > m_setup.entropyEnd)
             return {StepOutcome::Kind::EndCondition,
-                    "the fracture entropy passed " + std::to_string(m_setup.entropyEnd) + " nats at " + megapascals(m_over)};
+                    storedText(Pattern{"the fracture entropy passed %1 nats at %2",
+                                       {numberText(m_setup.entropyEnd), megapascals(m_over)}})};
         if (int(m_wall->entropy().tornElements()) >= m_setup.maxTears)
             return {StepOutcome::Kind::EndCondition,
-                    std::to_string(m_setup.maxTears) + " elements torn at " + megapascals(m_over)};
+                    storedText(Pattern{"%1 elements torn at %2", {std::to_string(m_setup.maxTears), megapascals(m_over)}})};
         if (!equilibrium(m_over, status, progress))
             return {StepOutcome::Kind::EndCondition,
-                    "the torn wall holds no equilibrium at " + megapascals(m_over) + " (rupture): " + m_failure};
+                    storedText(Pattern{"the torn wall holds no equilibrium at %1 (rupture): %2",
+                                       {megapascals(m_over), m_failure}})};
     }
     m_safe = m_over;
     m_safeState = m_wall->model().positions();

@@ -1,6 +1,8 @@
 #include "vsim/sim/fem/StaticWallSolver.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 #include "vsim/sim/fem/WallBoundaryConditions.h"
@@ -97,13 +99,16 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
             continue;
         }
         status.forceResidual = report.residualHistory.empty() ? 1.0 : report.residualHistory.back();
-        return StepOutcome::guard("the equilibrium at " + std::to_string(int(std::lround(100 * factor))) +
-                                  " % of the pressure " +
-                                  (failure.empty() ? "did not converge in " + std::to_string(report.updates) +
-                                                         " Newton updates (force residual " +
-                                                         std::to_string(status.forceResidual) + ")"
-                                                   : "failed: " + failure) +
-                                  " even in increments of 1/16; the last converged increment is kept");
+        const std::string percent = std::to_string(int(std::lround(100 * factor)));
+        return StepOutcome::guard(
+            failure.empty()
+                ? storedText(Pattern{"the equilibrium at %1 % of the pressure did not converge in %2 Newton updates "
+                                     "(force residual %3) even in increments of 1/16; the last converged increment "
+                                     "is kept",
+                                     {percent, std::to_string(report.updates), numberText(status.forceResidual)}})
+                : storedText(Pattern{"the equilibrium at %1 % of the pressure failed: %2 even in increments of 1/16; "
+                                     "the last converged increment is kept",
+                                     {percent, failure}}));
     }
 }
 

@@ -1,6 +1,8 @@
 #include "vsim/sim/fem/WallPathSolver.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 
 namespace vsim::sim::fem {
 
@@ -39,9 +41,11 @@ StepOutcome WallPathSolver::step(RunStatus& status, const Progress& progress)
     m_stepResiduals.push_back(outcome.report.cgResidual);
     if (!outcome.guard.empty())
     {
-        m_stopReason = outcome.guard + " at step " + std::to_string(step) + " (t = " + std::to_string(time) +
-                       " s, pressure " + std::to_string(pressure * 1e-6) + " MPa); the last good state is kept";
-        return StepOutcome::guard(outcome.guard + " at step " + std::to_string(step) + "; the last good state is kept");
+        m_stopReason = storedText(Pattern{"%1 at step %2 (t = %3 s, pressure %4 MPa); the last good state is kept",
+                                          {outcome.guard, std::to_string(step), numberText(time),
+                                           numberText(pressure * 1e-6)}});
+        return StepOutcome::guard(storedText(Pattern{"%1 at step %2; the last good state is kept",
+                                                     {outcome.guard, std::to_string(step)}}));
     }
     m_step = step;
     if (outcome.tornNow > 0)
@@ -52,8 +56,8 @@ StepOutcome WallPathSolver::step(RunStatus& status, const Progress& progress)
         m_entropyCurve.push_back({pressure, entropy});
         if (m_setup.entropyEnd > 0.0 && entropy >= m_setup.entropyEnd)
         {
-            m_stopReason = "the fracture entropy reached " + std::to_string(entropy) + " (end condition " +
-                           std::to_string(m_setup.entropyEnd) + ")";
+            m_stopReason = storedText(Pattern{"the fracture entropy reached %1 (end condition %2)",
+                                              {numberText(entropy), numberText(m_setup.entropyEnd)}});
             return {StepOutcome::Kind::EndCondition, m_stopReason};
         }
     }
@@ -88,7 +92,8 @@ StepOutcome WallPathSolver::equilibrate(RunStatus& status, const Progress& progr
     // The path's state is kept (equilibrate restored it): its own residual (the first of the history) goes with its
     // figures; none computed (the solve failed before its first residual) counts as 100 %.
     status.forceResidual = equilibrium.residualHistory.empty() ? 1.0 : equilibrium.residualHistory.front();
-    m_stopReason = "the equilibrium solve failed (" + failure + "); the figures are the load path's";
+    m_stopReason = storedText(
+        Pattern{"the equilibrium solve failed (%1); the figures are the load path's", {failure}});
     return StepOutcome::guard(m_stopReason);
 }
 

@@ -1,6 +1,7 @@
 #include "vsim/sim/fem/WallSimulation.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/fem/SurfaceLoads.h"
 
@@ -160,10 +161,10 @@ WallSimulation::StepOutcome WallSimulation::step()
         outcome.report = m_integrator.step(m_model, forces, m_fixed, m_contacts);
     }
     if (!m_model.positions().allFinite())
-        outcome.guard = "the solution is no longer finite (NaN or infinity)";
+        outcome.guard = storedText("the solution is no longer finite (NaN or infinity)");
     else if (!outcome.report.cgConverged && outcome.report.invertedElements == 0 &&
              outcome.report.cgIterations < m_settings.cgMaxIterations)
-        outcome.guard = "the conjugate gradients broke down (the system is not positive definite)";
+        outcome.guard = storedText("the conjugate gradients broke down (the system is not positive definite)");
     if (!outcome.guard.empty() || outcome.report.invertedElements > 0)
     {
         m_model.positions() = lastPositions;
@@ -172,9 +173,14 @@ WallSimulation::StepOutcome WallSimulation::step()
         if (outcome.guard.empty())
         {
             const Eigen::Vector3d where = 1e3 * m_model.firstInvertedCentroid();
-            char place[96];
-            std::snprintf(place, sizeof place, " (the first near %.1f, %.1f, %.1f mm)", where.x(), where.y(), where.z());
-            outcome.guard = std::to_string(outcome.report.invertedElements) + " elements inverted" + place;
+            auto mm = [](double value) {
+                char text[32];
+                std::snprintf(text, sizeof text, "%.1f", value);
+                return std::string(text);
+            };
+            outcome.guard = storedText(Pattern{"%1 elements inverted (the first near %2, %3, %4 mm)",
+                                               {std::to_string(outcome.report.invertedElements), mm(where.x()),
+                                                mm(where.y()), mm(where.z())}});
         }
         if (m_stepper)
             setStepper(m_stepperFactory); // the stepper's state is the failed one

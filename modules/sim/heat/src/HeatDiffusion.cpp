@@ -1,6 +1,7 @@
 #include "vsim/sim/heat/HeatDiffusion.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,12 +78,11 @@ StepOutcome HeatDiffusionSolver::step(RunStatus&, const Progress&)
     {
         const int i = int(where % std::size_t(n)), j = int(where / std::size_t(n) % std::size_t(n)),
                   k = int(where / (std::size_t(n) * std::size_t(n)));
-        return StepOutcome::guard("at t = " + numberText(m_timeS + dt) + " s the temperature rise at node (" +
-                                  std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) + ") reached " +
-                                  numberText(highest) + " K, above the initial maximum " + numberText(m_limitK) +
-                                  " K: the explicit step is unstable (time step " + numberText(dt) +
-                                  " s; the stability limit is h^2/(6D) = " +
-                                  numberText(m_spacingM * m_spacingM / (6.0 * m_diffusivityM2S)) + " s)");
+        return StepOutcome::guard(storedText(Pattern{
+            "at t = %1 s the temperature rise at node (%2, %3, %4) reached %5 K, above the initial maximum %6 K: the "
+            "explicit step is unstable (time step %7 s; the stability limit is h^2/(6D) = %8 s)",
+            {numberText(m_timeS + dt), std::to_string(i), std::to_string(j), std::to_string(k), numberText(highest),
+             numberText(m_limitK), numberText(dt), numberText(m_spacingM * m_spacingM / (6.0 * m_diffusivityM2S))}}));
     }
     m_rise.swap(m_next);
     m_timeS += dt;

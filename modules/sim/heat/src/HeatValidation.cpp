@@ -1,6 +1,7 @@
 #include "vsim/sim/heat/HeatValidation.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/common/RunDriver.h"
 #include "vsim/sim/heat/HeatDiffusion.h"
 
@@ -42,8 +43,9 @@ ValidationResult runHeatValidation(const std::string& name, const Progress& prog
     const auto start = std::chrono::steady_clock::now();
     ValidationResult result;
     result.name = name;
-    result.description = "the slowest mode of a 20 mm cube of tissue (D 0.14 mm^2/s) after one decay time, on the run "
-                         "driver: relative L2 error against the exact solution, and its order of convergence";
+    result.description = storedText("the slowest mode of a 20 mm cube of tissue (D 0.14 mm^2/s) after one decay time, "
+                                    "on the run driver: relative L2 error against the exact solution, and its order "
+                                    "of convergence");
     const double coarse = decayError(16, progress.subRange(0.0, 0.1));
     const double middle = decayError(32, progress.subRange(0.1, 0.3));
     const double fine = decayError(64, progress.subRange(0.3, 1.0));

@@ -1,6 +1,7 @@
 #include "vsim/sim/network/BloodFlow.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/ConicalPipe.h"
 
@@ -109,13 +110,15 @@ BloodFlowSolution solveBloodFlow(const VesselNetwork& network, const BloodFlowSe
     const auto& vessel = network.segments[std::size_t(tipVessel)];
     const double lumen = units::mmToM(vessel.to == tip ? vessel.endRadiusMm : vessel.startRadiusMm);
     result.occlusion = std::min(1.0, std::pow(setup.catheterRadius / lumen, 2));
-    auto mlMin = [](double q) { return std::to_string(units::m3PerSToMlPerMin(q)).substr(0, 6) + " ml/min"; };
+    auto mlMin = [](double q) { return std::to_string(units::m3PerSToMlPerMin(q)).substr(0, 6); };
     if (setup.injectionRate >= result.ownFlow)
-        result.wedgedBecause = "the injection (" + mlMin(setup.injectionRate) + ") is at least the vessel's own flow at "
-                               "the tip (" + mlMin(result.ownFlow) + ")";
+        result.wedgedBecause = storedText(Pattern{"the injection (%1 ml/min) is at least the vessel's own flow at the "
+                                                  "tip (%2 ml/min)",
+                                                  {mlMin(setup.injectionRate), mlMin(result.ownFlow)}});
     if (result.occlusion >= kWedgeOcclusion)
-        result.wedgedBecause += std::string(result.wedgedBecause.empty() ? "" : "; ") + "the catheter fills " +
-                                std::to_string(int(std::lround(100.0 * result.occlusion))) + " % of the lumen at the tip";
+        result.wedgedBecause += std::string(result.wedgedBecause.empty() ? "" : "; ") +
+                                storedText(Pattern{"the catheter fills %1 % of the lumen at the tip",
+                                                   {std::to_string(int(std::lround(100.0 * result.occlusion)))}});
     result.wedged = !result.wedgedBecause.empty();
     return result;
 }

@@ -2,6 +2,8 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/ConicalPipe.h"
 #include "vsim/sim/network/Inlet.h"
@@ -92,8 +94,9 @@ void setFields(NetworkRunResult& r, const TwoPhaseMixture& fluid, double bloodDe
     }
     r.metrics["max_reynolds"] = maxReynolds;
     if (maxReynolds > 2000.0)
-        r.warnings.push_back("the Reynolds number reaches " + std::to_string(int(maxReynolds)) +
-                             ": the flow may not be laminar there, and Hagen-Poiseuille does not hold");
+        r.warnings.push_back(storedText(Pattern{"the Reynolds number reaches %1: the flow may not be laminar there, and "
+                                                "Hagen-Poiseuille does not hold",
+                                                {std::to_string(int(maxReynolds))}}));
 }
 
 /// The best of the ranking as metrics.
@@ -163,7 +166,7 @@ void describeTerritory(NetworkRunResult& r, const VesselNetwork& net, const TipS
         m[key + "grade"] = gradeNumber(c.grade);
     }
     if (r.coverage->grade == 'C')
-        r.warnings.push_back("coverage grade C from this tip: part of a lesion is not perfused (see the feeders)");
+        r.warnings.push_back(storedText("coverage grade C from this tip: part of a lesion is not perfused (see the feeders)"));
     if (rank)
     {
         const auto ranking = std::chrono::steady_clock::now();
@@ -320,7 +323,7 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
             if (!outletsByTissue && feeders.count(outlet.node) && outlet.type == VesselNetwork::Outlet::Type::Resistance)
                 outlet.resistance *= p.get("tumour_resistance_factor");
         if (r.tumourOutlets.empty())
-            r.warnings.push_back("no outlet of the tree ends inside the tumour: nothing feeds it");
+            r.warnings.push_back(storedText("no outlet of the tree ends inside the tumour: nothing feeds it"));
     }
     const bool withBlood = p.get("blood_flow") > 0.5;
     if (withBlood && setup.tipPressurePa)
@@ -356,11 +359,12 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
         for (const BloodFlowSolution* b : {static_cast<const BloodFlowSolution*>(&*r.blood), &liquid})
             r.status.recordSolve(b->iterations, b->residual, blood.tolerance, blood.maxIterations);
         if (r.blood->wedged)
-            r.warnings.push_back("wedged catheter: " + r.blood->wedgedBecause + "; the injection refluxes or stops the "
-                                 "blood flow at the tip");
+            r.warnings.push_back(storedText(Pattern{
+                "wedged catheter: %1; the injection refluxes or stops the blood flow at the tip", {r.blood->wedgedBecause}}));
         if (r.blood->refluxShare > 1e-9)
-            r.warnings.push_back(std::to_string(int(std::lround(100.0 * r.blood->refluxShare))) +
-                                 " % of the injected drug refluxes past the catheter's tip (non-target delivery)");
+            r.warnings.push_back(storedText(Pattern{
+                "%1 % of the injected drug refluxes past the catheter's tip (non-target delivery)",
+                {std::to_string(int(std::lround(100.0 * r.blood->refluxShare)))}}));
     }
     else
     {
@@ -440,9 +444,9 @@ NetworkRunResult runNetwork(const NetworkRunSetup& setup, const Progress& progre
     }
     setFields(r, fluid, p.get("blood_density"));
     if (fluid.voidFraction > kBubblyVoidFractionLimit)
-        r.warnings.push_back("a void fraction of " + std::to_string(fluid.voidFraction) +
-                             " is past bubbly flow (about 0.25): the homogeneous model and the thesis's experiment do "
-                             "not cover it");
+        r.warnings.push_back(storedText(Pattern{"a void fraction of %1 is past bubbly flow (about 0.25): the "
+                                                "homogeneous model and the thesis's experiment do not cover it",
+                                                {numberText(fluid.voidFraction)}}));
     double downstream = 0.0;
     for (std::size_t s = 0; s < net.segments.size(); ++s)
         downstream += r.twoPhase.orientation.active(int(s)) ? 1.0 : 0.0;

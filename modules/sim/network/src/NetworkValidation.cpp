@@ -1,6 +1,7 @@
 #include "vsim/sim/network/NetworkValidation.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/network/BloodFlow.h"
 #include "vsim/sim/network/ConicalPipe.h"
@@ -49,7 +50,7 @@ VesselNetwork nodes(int count)
 
 ValidationResult cylinder()
 {
-    ValidationResult result{"network-cylinder", "conical resistance with R1 = R2 against 8 mu L / (pi R^4)", {}, 0.0};
+    ValidationResult result{"network-cylinder", storedText("conical resistance with R1 = R2 against 8 mu L / (pi R^4)"), {}, 0.0};
     for (const auto& [radius, length] : {std::pair{3e-3, 0.04}, std::pair{1e-3, 0.01}, std::pair{0.35e-3, 0.005}})
     {
         const double poiseuille = 8.0 * kViscosity * length / (std::numbers::pi * std::pow(radius, 4));
@@ -61,7 +62,7 @@ ValidationResult cylinder()
 
 ValidationResult cone()
 {
-    ValidationResult result{"network-cone", "eq. 6.6 against eq. 6.4 integrated (Gauss-Legendre, 64 x 8 points)", {}, 0.0};
+    ValidationResult result{"network-cone", storedText("eq. 6.6 against eq. 6.4 integrated (Gauss-Legendre, 64 x 8 points)"), {}, 0.0};
     for (const auto& [r1, r2] : {std::pair{3e-3, 2.7e-3}, std::pair{1e-3, 0.5e-3}, std::pair{0.7e-3, 2.1e-3}})
         result.figures.push_back(relative("R1 " + std::to_string(r1 * 1e3).substr(0, 4) + " mm, R2 " +
                                               std::to_string(r2 * 1e3).substr(0, 4) + " mm",
@@ -72,7 +73,7 @@ ValidationResult cone()
 
 ValidationResult conservation()
 {
-    ValidationResult result{"network-conservation", "Kirchhoff's law on a seeded random tree of 2,000 segments", {}, 0.0};
+    ValidationResult result{"network-conservation", storedText("Kirchhoff's law on a seeded random tree of 2,000 segments"), {}, 0.0};
     VesselNetwork network = randomTree(2000, 20261122);
     std::mt19937 random(20261122);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -93,7 +94,7 @@ ValidationResult conservation()
 ValidationResult bifurcation()
 {
     ValidationResult result{"network-bifurcation",
-                            "tip -> junction -> two branches with terminal resistances into 1,000 and 2,000 Pa", {}, 0.0};
+                            storedText("tip -> junction -> two branches with terminal resistances into 1,000 and 2,000 Pa"), {}, 0.0};
     VesselNetwork network = nodes(4);
     const double r0 = 2e9, r1 = 3e9, r2 = 5e9, t1 = 4e10, t2 = 2e10, p1 = 1000.0, p2 = 2000.0, q = 1e-7;
     addSegment(network, 0, 1, r0);
@@ -113,7 +114,7 @@ ValidationResult bifurcation()
 ValidationResult confluence()
 {
     ValidationResult result{"network-confluence",
-                            "injected branch and a second inlet at 6,000 Pa joining before one outlet at 500 Pa", {}, 0.0};
+                            storedText("injected branch and a second inlet at 6,000 Pa joining before one outlet at 500 Pa"), {}, 0.0};
     VesselNetwork network = nodes(4);
     const double ra = 4e9, rb = 6e9, ro = 3e9, pb = 6000.0, po = 500.0, q = 5e-7;
     addSegment(network, 0, 1, ra);
@@ -137,7 +138,7 @@ double annulusFactor(double R, double a)
 
 ValidationResult annulus()
 {
-    ValidationResult result{"network-annulus", "a catheter in a pipe: the annulus's Hagen-Poiseuille resistance", {}, 0.0};
+    ValidationResult result{"network-annulus", storedText("a catheter in a pipe: the annulus's Hagen-Poiseuille resistance"), {}, 0.0};
     for (const auto& [R, a] : {std::pair{1e-3, 0.45e-3}, std::pair{0.6e-3, 0.45e-3}, std::pair{3e-3, 0.3e-3}})
         result.figures.push_back(relative("cylinder R " + std::to_string(R * 1e3).substr(0, 4) + " mm, catheter " +
                                               std::to_string(a * 1e3).substr(0, 4) + " mm",
@@ -161,7 +162,7 @@ int addPipe(VesselNetwork& network, int from, int to, double radiusMm, double le
 ValidationResult mixing()
 {
     ValidationResult result{"network-mixing",
-                            "blood from the root and an injection at a tip, mixed at a confluence with a second inlet",
+                            storedText("blood from the root and an injection at a tip, mixed at a confluence with a second inlet"),
                             {}, 0.0};
     // 0 -> 1 (junction) -> 2 (the tip) -> 3 (confluence) -> 6 (outlet); 1 -> 4 (outlet); 5 (inlet at a pressure) -> 3.
     VesselNetwork network = nodes(7);
@@ -205,7 +206,7 @@ ValidationResult mixing()
 ValidationResult twoPhaseSplit()
 {
     ValidationResult result{"network-two-phase-split",
-                            "the injected mixture's viscosity shifts the split between the tip's branch and its sibling",
+                            storedText("the injected mixture's viscosity shifts the split between the tip's branch and its sibling"),
                             {}, 0.0};
     // 0 -> 1 (junction); 1 -> 2 (the tip) -> 3 (outlet, bed t); 1 -> 4 (outlet, bed t). Straight pipes; a catheter
     // of radius a from 0 to 2. Rate-driven root. With X the flow below the tip and c = q / X its injected fraction,

@@ -1,6 +1,8 @@
 #include "vsim/sim/smoke/SmokeSimulation.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/smoke/SmokeForces.h"
 
 #include <algorithm>
@@ -164,17 +166,20 @@ SmokeStepReport SmokeSimulation::step(double dt)
     report.cfl = m_speed * dt / m_grid.h;
     if (!backend.finite(m_grid))
     {
-        report.guard = "the flow is no longer finite at t = " + std::to_string(m_time) + " s";
+        report.guard = storedText(Pattern{"the flow is no longer finite at t = %1 s", {numberText(m_time)}});
         return report;
     }
     if (report.cfl > m_settings.cflGuard)
     {
-        char text[160];
-        std::snprintf(text, sizeof text,
-                      "the flow crossed %.1f cells in one step at t = %.3f s (the limit is %.1f): the run is unstable "
-                      "(too strong a confinement or vortex forcing, or too long a step)",
-                      report.cfl, m_time, m_settings.cflGuard);
-        report.guard = text;
+        auto fixed = [](double value, int decimals) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.*f", decimals, value);
+            return std::string(text);
+        };
+        report.guard = storedText(Pattern{"the flow crossed %1 cells in one step at t = %2 s (the limit is %3): the "
+                                          "run is unstable (too strong a confinement or vortex forcing, or too long "
+                                          "a step)",
+                                          {fixed(report.cfl, 1), fixed(m_time, 3), fixed(m_settings.cflGuard, 1)}});
     }
     return report;
 }

@@ -1,6 +1,7 @@
 #include "vsim/sim/smoke/SmokeValidation.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/smoke/SmokeForces.h"
 #include "vsim/sim/smoke/SmokeSimulation.h"
 
@@ -39,9 +40,10 @@ double enstrophy(const SmokeGrid& grid)
 ValidationResult divergenceCase(const Progress& progress)
 {
     ValidationResult result;
-    result.description = "a random velocity field (uniform in +-1 m/s on the faces) in a 1 m box of 48^3 cells, walls "
-                         "with an open top and a solid sphere of 0.15 m radius at the centre, projected by MGPCG to a "
-                         "relative residual of 1e-6 on three seeds: the largest |div u| h / max |u| left";
+    result.description = storedText("a random velocity field (uniform in +-1 m/s on the faces) in a 1 m box of 48^3 "
+                                    "cells, walls with an open top and a solid sphere of 0.15 m radius at the centre, "
+                                    "projected by MGPCG to a relative residual of 1e-6 on three seeds: the largest "
+                                    "|div u| h / max |u| left");
     double worstRatio = 0.0, worstResidual = 0.0;
     int iterations = 0;
     for (unsigned seed = 1; seed <= 3; ++seed)
@@ -129,10 +131,11 @@ TaylorGreenRun taylorGreen(int n, double confinement, double particleStrength, c
 ValidationResult taylorGreenCase(const Progress& progress)
 {
     ValidationResult result;
-    result.description = "the inviscid Taylor-Green vortex u = (sin x cos y cos z, -cos x sin y cos z, 0) (pi/m, 1 m/s) "
-                         "in a 1 m free-slip box of 32^3 cells for 1 s: the effective numerical viscosity "
-                         "-(dE/dt) / integral |w|^2 with vorticity confinement (epsilon 0.5) and with vortex particles "
-                         "(epsilon 0.5, r = 2 h) against the plain semi-Lagrangian scheme";
+    result.description = storedText("the inviscid Taylor-Green vortex u = (sin x cos y cos z, -cos x sin y cos z, 0) "
+                                    "(pi/m, 1 m/s) in a 1 m free-slip box of 32^3 cells for 1 s: the effective "
+                                    "numerical viscosity -(dE/dt) / integral |w|^2 with vorticity confinement "
+                                    "(epsilon 0.5) and with vortex particles (epsilon 0.5, r = 2 h) against the plain "
+                                    "semi-Lagrangian scheme");
     const TaylorGreenRun plain = taylorGreen(32, 0.0, 0.0, progress.subRange(0.0, 0.3));
     const TaylorGreenRun confined = taylorGreen(32, 0.5, 0.0, progress.subRange(0.3, 0.6));
     const TaylorGreenRun particles = taylorGreen(32, 0.0, 0.5, progress.subRange(0.6, 1.0));
@@ -183,14 +186,14 @@ ValidationResult massCase(const Progress& progress)
     ValidationResult result;
     const double conservative = massDrift(AdvectionScheme::Conservative, progress.subRange(0.0, 0.5));
     const double semiLagrangian = massDrift(AdvectionScheme::MacCormack, progress.subRange(0.5, 1.0));
-    char text[512];
-    std::snprintf(text, sizeof text,
-                  "a puff of smoke (1e-3 kg/m^3, 30 K above the ambient, 0.15 m radius) rising by buoyancy in a closed "
-                  "1 m box of 32^3 cells, 500 steps (the velocity by MacCormack with the limiter): the smoke mass at "
-                  "the end against the start, without renormalisation, moved by the limited finite-volume transport; "
-                  "moved by semi-Lagrangian MacCormack instead it drifted by %.1f %%",
-                  100.0 * semiLagrangian);
-    result.description = text;
+    char drift[32];
+    std::snprintf(drift, sizeof drift, "%.1f", 100.0 * semiLagrangian);
+    result.description = storedText(Pattern{
+        "a puff of smoke (1e-3 kg/m^3, 30 K above the ambient, 0.15 m radius) rising by buoyancy in a closed 1 m box "
+        "of 32^3 cells, 500 steps (the velocity by MacCormack with the limiter): the smoke mass at the end against the "
+        "start, without renormalisation, moved by the limited finite-volume transport; moved by semi-Lagrangian "
+        "MacCormack instead it drifted by %1 %",
+        {drift}});
     result.figures.push_back({"smoke mass drift after 500 steps (no renormalisation)", conservative, 0.0, 0.01, "relative"});
     return result;
 }
@@ -198,9 +201,10 @@ ValidationResult massCase(const Progress& progress)
 ValidationResult ballCase(const Progress& progress)
 {
     ValidationResult result;
-    result.description = "a ball of 0.1 m radius dropped from rest at 0.75 m in still air (a 1 m box of 48^3 cells, "
-                         "open at the top), falling under gravity for 0.25 s: the flow through the ball (the faces it "
-                         "touches against its own velocity), the divergence left around it, and the air pushed aside";
+    result.description = storedText("a ball of 0.1 m radius dropped from rest at 0.75 m in still air (a 1 m box of "
+                                    "48^3 cells, open at the top), falling under gravity for 0.25 s: the flow through "
+                                    "the ball (the faces it touches against its own velocity), the divergence left "
+                                    "around it, and the air pushed aside");
     DomainBoundaries boundaries{};
     boundaries[5] = DomainBoundary::Open;
     SmokeGrid grid = SmokeGrid::make(48, 48, 48, 1.0 / 48.0, boundaries);

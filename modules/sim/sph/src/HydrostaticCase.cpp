@@ -10,6 +10,7 @@
 #include "SphCases.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/common/RunDriver.h"
 #include "vsim/sim/sph/SphSolver.h"
 
@@ -116,10 +117,10 @@ ValidationResult hydrostaticCase(const Progress& progress)
 {
     ValidationResult result;
     result.name = "sph-hydrostatic";
-    result.description = "water at rest in an open tank (8 x 8 x 16 particles of 1 mm, 4 wall layers) after 0.3 s "
-                         "under gravity, and the same tank of mixture particles at void fraction 0.2 (thesis Table "
-                         "5.1): the pressure in the middle of the column, 2h below the surface and deeper, against "
-                         "the hydrostatic pressure of the model's fluid";
+    result.description = storedText("water at rest in an open tank (8 x 8 x 16 particles of 1 mm, 4 wall layers) after "
+                                    "0.3 s under gravity, and the same tank of mixture particles at void fraction 0.2 "
+                                    "(thesis Table 5.1): the pressure in the middle of the column, 2h below the surface "
+                                    "and deeper, against the hydrostatic pressure of the model's fluid");
     const ColumnErrors water = settledColumn(0.0, progress.subRange(0.0, 0.5));
     const ColumnErrors mixture = settledColumn(0.2, progress.subRange(0.5, 1.0));
     for (const auto& [label, errors] : {std::pair{"", water}, std::pair{"void 0.2: ", mixture}})

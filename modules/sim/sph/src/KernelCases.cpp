@@ -1,6 +1,7 @@
 #include "SphCases.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/sph/FiniteParticleMethod.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
 #include "vsim/sim/sph/QuarticKernel.h"
@@ -74,9 +75,8 @@ ValidationResult kernelCase()
 {
     ValidationResult result;
     result.name = "sph-kernel";
-    result.description =
-        "the 3D quartic kernel (h = 2 mm): its integral, W(2h), dW/dr against a central difference, "
-        "and its first moment on a 1 mm particle lattice against the identity";
+    result.description = storedText("the 3D quartic kernel (h = 2 mm): its integral, W(2h), dW/dr against a central "
+                                    "difference, and its first moment on a 1 mm particle lattice against the identity");
     const QuarticKernel kernel(kSmoothingRatio * kSpacingM);
     result.figures.push_back({"integral of W over space", kernelIntegral(kernel), 1.0, 1e-6, ""});
     result.figures.push_back(
@@ -162,10 +162,10 @@ ValidationResult fpmCase(const Progress& progress)
 {
     ValidationResult result;
     result.name = "sph-fpm";
-    result.description =
-        "the gradient of a linear field at jittered particles (1 mm, +-0.2 mm) within h of a wall, "
-        "three seeds: the first-order Finite Particle Method against the exact gradient, and plain "
-        "SPH's error beside it";
+    const std::string description =
+        storedText("the gradient of a linear field at jittered particles (1 mm, +-0.2 mm) within h of a wall, three "
+                   "seeds: the first-order Finite Particle Method against the exact gradient, and plain SPH's error "
+                   "beside it");
     FpmErrors worst;
     const unsigned seeds[] = {1, 2, 3};
     for (std::size_t s = 0; s < 3; ++s)
@@ -183,7 +183,8 @@ ValidationResult fpmCase(const Progress& progress)
     // show anything.
     result.figures.push_back(
         {"plain SPH gradient, largest relative error (must be large)", worst.plainGradient, 1.0, 0.9, ""});
-    result.description += " (" + std::to_string(worst.evaluated) + " particles evaluated)";
+    result.description =
+        storedText(Pattern{"%1 (%2 particles evaluated)", {description, std::to_string(worst.evaluated)}});
     return result;
 }
 

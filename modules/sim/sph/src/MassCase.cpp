@@ -9,6 +9,7 @@
 #include "SphCases.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/sph/SphSolver.h"
 
 #include <cmath>
@@ -55,11 +56,12 @@ ValidationResult massCase(const Progress& progress)
     // of the integral (about 180 particles in all), hence the tolerance.
     result.figures.push_back({"inlet's net mass / rho0 x integral of Q dt", netInlet / prescribed, 1.0, 0.08, ""});
     result.figures.push_back({"largest density variation", run.metrics.at("largest_density_variation"), 0.0, 0.01, ""});
-    result.description = "pipe 1 mm across, 2 mm long, velocity inlet (parabolic, mean 0.05 m/s, tracer) and pressure "
-                         "outlet, tracer absorbed within 0.1 mm of the wall, 6 ms: inflow " +
-                         numberText(1e9 * inflow) + " ug, outflow " + numberText(1e9 * outflow) + " ug, absorbed " +
-                         numberText(1e9 * absorbed) + " ug, mass change " + numberText(1e9 * change) + " ug (" +
-                         std::to_string(long(run.metrics.at("steps"))) + " steps)";
+    result.description = storedText(Pattern{
+        "pipe 1 mm across, 2 mm long, velocity inlet (parabolic, mean 0.05 m/s, tracer) and pressure outlet, tracer "
+        "absorbed within 0.1 mm of the wall, 6 ms: inflow %1 ug, outflow %2 ug, absorbed %3 ug, mass change %4 ug (%5 "
+        "steps)",
+        {numberText(1e9 * inflow), numberText(1e9 * outflow), numberText(1e9 * absorbed), numberText(1e9 * change),
+         std::to_string(long(run.metrics.at("steps")))}});
     return result;
 }
 

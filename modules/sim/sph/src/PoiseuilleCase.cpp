@@ -8,6 +8,7 @@
 #include "SphCases.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/common/RunDriver.h"
 #include "vsim/sim/sph/SphSolver.h"
 
@@ -46,9 +47,9 @@ ValidationResult poiseuilleCase(const Progress& progress)
     const double heightM = kAcross * kSpacingMm * 1e-3, nu = kViscosity / kDensity;
     const double force = 8.0 * nu * kPeakSpeed / (heightM * heightM); // m/s^2 for the peak speed
     const double decay = heightM * heightM / (std::numbers::pi * std::numbers::pi * nu);
-    result.description = "plane Poiseuille flow, 20 particles across a 2 mm channel (periodic along and across the "
-                         "flow, peak 0.1 m/s, Re 2), after 7 decay times: every fluid particle's velocity against the "
-                         "steady profile";
+    result.description = storedText("plane Poiseuille flow, 20 particles across a 2 mm channel (periodic along and "
+                                    "across the flow, peak 0.1 m/s, Re 2), after 7 decay times: every fluid particle's "
+                                    "velocity against the steady profile");
     ParameterSet parameters = caseParameters(kSpacingMm, kDensity, kViscosity, 10.0 * kPeakSpeed);
     parameters.set("body_force_x_m_s2", force);
     parameters.set("periodic_x_mm", kPeriod * kSpacingMm);

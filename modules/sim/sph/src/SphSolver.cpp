@@ -1,6 +1,7 @@
 #include "vsim/sim/sph/SphSolver.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -271,11 +272,12 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     absorbTracer();
     if (!m_openBoundaries.empty())
         m_openBoundaries.exchange(p, m_nextId, m_ledger);
-    auto putBack = [&](std::string why)
+    // Puts the state before the step back and stops the run with what went wrong at the step's end time.
+    auto putBack = [&](const std::string& what)
     {
         m_particles = before, m_rates = ratesBefore, m_ledger = ledgerBefore, m_nextId = nextIdBefore;
         m_grid->build(m_particles.position);
-        return StepOutcome::guard(std::move(why));
+        return StepOutcome::guard(storedText(Pattern{"at t = %1 s %2", {numberText(m_timeS + dt), what}}));
     };
     try
     {
@@ -288,7 +290,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     }
     catch (const Error& error)
     {
-        return putBack(std::string("at t = ") + numberText(m_timeS + dt) + " s: " + error.what());
+        return putBack(storedText(Pattern{"(sorting the particles): %1", {error.message()}}));
     }
     updateRates(m_timeS + dt);
     double worstDensity = 0.0;
@@ -303,14 +305,13 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
             p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
         const double variation = m_fluid.densityVariation(p.density[i], p.voidFraction[i]);
         if (!std::isfinite(variation) || !p.position[i].allFinite() || !p.velocity[i].allFinite())
-            return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[i]) +
-                           " has a value that is not finite");
+            return putBack(storedText(Pattern{"particle %1 has a value that is not finite", {std::to_string(p.id[i])}}));
         if (fluid && variation > worstDensity)
             worstDensity = variation, worst = i;
         if ((p.position[i].array() < m_boxLow.array()).any() ||
             (p.position[i].array() > m_boxHigh.array()).any())
-            return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[i]) +
-                           " left the domain (through a wall or an open end without an outlet)");
+            return putBack(storedText(Pattern{
+                "particle %1 left the domain (through a wall or an open end without an outlet)", {std::to_string(p.id[i])}}));
         // Through the wall: a fluid particle deeper than half a spacing below the surface the wall particles of
         // known depth describe (SphRates' d_i < 0 there). Half, not less: particles seeded on a lattice leave a
         // curved wall's surface up to a spacing from the nearest wall particle (a staircase), and fluid settles up to
@@ -318,21 +319,23 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
         // side stopped the run at 11.5 ms). Not against the walls around an open end's buffer, which hands fluid over
         // as close to them as it came (SphRates.h).
         if (fluid && m_rates.guardedWallDistance[i] < -0.5 * m_spacingM)
-            return putBack("at t = " + numberText(m_timeS + dt) + " s fluid particle " + std::to_string(p.id[i]) +
-                           " went " + numberText(-1e3 * m_rates.guardedWallDistance[i]) + " mm into the wall at " +
-                           positionText(p.position[i]) +
-                           ": the time step or the sound speed is too large for the flow, or the wall thinner than "
-                           "the kernel (a segmentation's ragged edge: the walls' backstop, parameter wall_repulsion "
-                           "0.01)");
+            return putBack(storedText(Pattern{
+                "fluid particle %1 went %2 mm into the wall at %3: the time step or the sound speed is too large for "
+                "the flow, or the wall thinner than the kernel (a segmentation's ragged edge: the walls' backstop, "
+                "parameter wall_repulsion 0.01)",
+                {std::to_string(p.id[i]), numberText(-1e3 * m_rates.guardedWallDistance[i]), positionText(p.position[i])}}));
     }
     if (worstDensity > m_densityGuard)
-        return putBack("at t = " + numberText(m_timeS + dt) + " s particle " + std::to_string(p.id[worst]) +
-                       "'s density is " + numberText(100.0 * worstDensity) +
-                       " % from the rest density (guard " + numberText(100.0 * m_densityGuard) + " %) at " +
-                       positionText(p.position[worst]) + ", " +
-                       (std::isfinite(m_rates.wallDistance[worst]) ? numberText(1e3 * m_rates.wallDistance[worst]) + " mm from the wall"
-                                                                   : std::string("away from the walls")) +
-                       ": raise the sound speed or lower the inflow");
+    {
+        const std::string where =
+            std::isfinite(m_rates.wallDistance[worst])
+                ? storedText(Pattern{"%1 mm from the wall", {numberText(1e3 * m_rates.wallDistance[worst])}})
+                : storedText("away from the walls");
+        return putBack(storedText(Pattern{"particle %1's density is %2 % from the rest density (guard %3 %) at %4, "
+                                          "%5: raise the sound speed or lower the inflow",
+                                          {std::to_string(p.id[worst]), numberText(100.0 * worstDensity),
+                                           numberText(100.0 * m_densityGuard), positionText(p.position[worst]), where}}));
+    }
     m_timeS += dt;
     m_stepS = dt;
     ++m_steps;

@@ -10,6 +10,7 @@
 #include "SphCases.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/sph/StenosisPipe.h"
 
@@ -164,15 +165,19 @@ ValidationResult stenosisCase(const Progress& progress)
     result.figures.push_back({"the particles' area ratio / analytic (4)", figures.areaRatio / analyticRatio, 1.0, 0.1, ""});
     result.figures.push_back({"largest density variation", flow.metrics.at("largest_density_variation"), 0.0, 0.02, ""});
     const SectionFlow &up = flow.flows[figures.upstream], &throat = flow.flows[figures.throat];
+    // Two stored texts (a pattern holds nine values at most), read one by one where they are joined by "; ".
     result.description =
-        "50 % diameter cosine stenosis in a 1.6 mm pipe, 0.05 m/s mean inflow (Re 48 in the throat), averaged 15-25 ms: "
-        "peak velocity ratio " + numberText(figures.peakRatio) + " upstream (" + numberText(up.peakVelocityMS) + " -> " +
-        numberText(throat.peakVelocityMS) + " m/s), " + numberText(figures.peakRatioDownstream) +
-        " downstream; mean ratio " + numberText(figures.meanRatio) + " (area ratio " + numberText(figures.areaRatio) +
-        "); pressure drop " + numberText(figures.pressureDropPa) + " Pa over 3.2 mm; throat wall shear stress " +
-        numberText(flow.throatWallShearPa) + " Pa (TAWSS); " +
-        std::to_string(long(flow.metrics.at("steps"))) + " steps, " +
-        std::to_string(long(flow.metrics.at("particles"))) + " particles";
+        storedText(Pattern{"50 % diameter cosine stenosis in a 1.6 mm pipe, 0.05 m/s mean inflow (Re 48 in the throat), "
+                           "averaged 15-25 ms: peak velocity ratio %1 upstream (%2 -> %3 m/s), %4 downstream",
+                           {numberText(figures.peakRatio), numberText(up.peakVelocityMS),
+                            numberText(throat.peakVelocityMS), numberText(figures.peakRatioDownstream)}}) +
+        "; " +
+        storedText(Pattern{"mean ratio %1 (area ratio %2); pressure drop %3 Pa over 3.2 mm; throat wall shear stress "
+                           "%4 Pa (TAWSS); %5 steps, %6 particles",
+                           {numberText(figures.meanRatio), numberText(figures.areaRatio),
+                            numberText(figures.pressureDropPa), numberText(flow.throatWallShearPa),
+                            std::to_string(long(flow.metrics.at("steps"))),
+                            std::to_string(long(flow.metrics.at("particles")))}});
     return result;
 }
 

@@ -9,6 +9,7 @@
 #include "SphCases.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/common/RunDriver.h"
 #include "vsim/sim/sph/SphSolver.h"
 
@@ -124,9 +125,9 @@ ValidationResult womersleyCase(const Progress& progress)
 {
     ValidationResult result;
     result.name = "sph-womersley";
-    result.description = "pulsatile flow in a rigid pipe 20 particles across (0.1 mm, periodic along its axis) from "
-                         "rest, alpha 4 (four cycles) and 8 (three): the velocity next to the axis over the last "
-                         "cycle against Womersley's solution";
+    result.description = storedText("pulsatile flow in a rigid pipe 20 particles across (0.1 mm, periodic along its "
+                                    "axis) from rest, alpha 4 (four cycles) and 8 (three): the velocity next to the "
+                                    "axis over the last cycle against Womersley's solution");
     const WomersleyErrors four = runWomersley(4.0, 4, progress.subRange(0.0, 0.6));
     const WomersleyErrors eight = runWomersley(8.0, 3, progress.subRange(0.6, 1.0));
     result.figures.push_back({"alpha 4: centerline amplitude / exact", four.amplitudeRatio, 1.0, 0.05, ""});

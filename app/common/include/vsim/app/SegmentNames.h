@@ -21,7 +21,7 @@ std::vector<std::string> segmentNames(const study::Study& study, const std::stri
 void renameSegment(study::Study& study, const std::string& centerlinesId, std::size_t index, const std::string& name);
 
 /// How a segment is titled in a table or a line of text: its name, and for an unnamed one its node numbers
-/// ("unnamed (nodes 4-7)").
+/// ("unnamed (nodes 4-7)", in the reader's language).
 std::string segmentTitle(const std::string& name, int fromNode, int toNode);
 
 } // namespace vsim::app

@@ -52,7 +52,7 @@ struct RunStatus
     /// else English, as the study and metrics.json keep it.
     std::string convergenceText(bool forPeople = false) const;
     /// "" when the run ran to its end; else e.g. "stopped by a guard at pressure 9.1 of 16.0 kPa: <message>" (the
-    /// solver's message stays as it wrote it).
+    /// solver's message, a stored text: storedTextForPeople() when `forPeople`).
     std::string stopText(bool forPeople = false) const;
     /// What a reader must know before reading the figures: "" when the solves converged and the run reached its
     /// target; else "NOT CONVERGED (...)" and / or "STOPPED EARLY (...)", joined by "; ".

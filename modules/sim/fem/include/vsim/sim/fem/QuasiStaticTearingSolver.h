@@ -48,6 +48,8 @@ private:
     /// Releases the most stressed element and solves again at m_over until none is over its strength.
     StepOutcome release(RunStatus& status, const Progress& progress);
     StepOutcome record(StepOutcome outcome);
+    /// The guard when the equilibrium at m_over failed (m_failure says why).
+    StepOutcome equilibriumFailed() const;
 
     QuasiStaticTearingSetup m_setup;
     std::unique_ptr<WallSimulation> m_wall;
