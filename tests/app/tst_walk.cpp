@@ -88,6 +88,19 @@ int colouredPixels(const QImage& picture)
     return count;
 }
 
+/// Opens the endoscope 30 % along the longest segment, focused on the centre; true when it shows the lumen's wall.
+bool endoscopeInLumen(gui::MainWindow& window)
+{
+    if (window.showEndoscope() && window.tasks().isBusy() && !test::waitForTask(window))
+        return false;
+    gui::EndoscopePanel* endoscope = window.endoscope();
+    if (!endoscope || !endoscope->hasData())
+        return false;
+    endoscope->setArc(0.3 * endoscope->frames().lengthMm());
+    endoscope->focusOnCentre();
+    return colouredPixels(endoscope->view()->picture()) > endoscope->view()->picture().width() * 20;
+}
+
 /// Coloured pixels of the 3D view right of its colour legend (which takes the left of the view).
 int colouredPixelsBesideLegend(gui::MainWindow& window)
 {
@@ -146,14 +159,8 @@ class TestWalk : public QObject
 
         QVERIFY(window.showVesselView());
         QVERIFY(gui::captureWindow(window.views()->vesselPanel()).save(folder + "/vessel-view.png"));
-        if (window.showEndoscope() && window.tasks().isBusy())
-            QVERIFY(test::waitForTask(window));
-        gui::EndoscopePanel* endoscope = window.endoscope();
-        QVERIFY(endoscope && endoscope->hasData());
-        endoscope->setArc(0.3 * endoscope->frames().lengthMm());
-        endoscope->focusOnCentre();
-        QVERIFY(colouredPixels(endoscope->view()->picture()) > endoscope->view()->picture().width() * 20);
-        QVERIFY(gui::captureWindow(endoscope).save(folder + "/endoscope.png"));
+        QVERIFY(endoscopeInLumen(window));
+        QVERIFY(gui::captureWindow(window.endoscope()).save(folder + "/endoscope.png"));
     }
 
 private slots:
@@ -233,13 +240,8 @@ private slots:
         gui::VesselViewPanel* vessel = window.views()->vesselPanel();
         QCOMPARE(vessel->reformationView()->pictureHeight(), int(vessel->frames().points.size()));
         keep(window, "2-cpr");
-        if (window.showEndoscope() && window.tasks().isBusy())
-            QVERIFY(test::waitForTask(window));
+        QVERIFY(endoscopeInLumen(window));
         gui::EndoscopePanel* endoscope = window.endoscope();
-        QVERIFY(endoscope && endoscope->hasData());
-        endoscope->setArc(0.3 * endoscope->frames().lengthMm());
-        endoscope->focusOnCentre();
-        QVERIFY(colouredPixels(endoscope->view()->picture()) > endoscope->view()->picture().width() * 20);
         window.views()->setLayoutMode(gui::LayoutMode::TwoByTwo);
 
         const double mesh = runStep(window, list, WorkflowStep::WallMesh);
