@@ -3869,6 +3869,106 @@
         <source>pulsatile flow in a rigid pipe 20 particles across (0.1 mm, periodic along its axis) from rest, alpha 4 (four cycles) and 8 (three): the velocity next to the axis over the last cycle against Womersley&apos;s solution</source>
         <translation>pulsierende Strömung in einem starren Rohr mit 20 Teilchen Durchmesser (0,1 mm, periodisch längs seiner Achse) aus der Ruhe, alpha 4 (vier Zyklen) und 8 (drei): die Geschwindigkeit nahe der Achse über den letzten Zyklus gegen die Womersley-Lösung</translation>
     </message>
+    <message>
+        <source>Vessel lumen</source>
+        <translation>Gefäßlumen</translation>
+    </message>
+    <message>
+        <source>Lumen surface</source>
+        <translation>Lumenoberfläche</translation>
+    </message>
+    <message>
+        <source>Vessel skeleton</source>
+        <translation>Gefäßskelett</translation>
+    </message>
+    <message>
+        <source>Centerlines</source>
+        <translation>Mittellinien</translation>
+    </message>
+    <message>
+        <source>Imported label</source>
+        <translation>Importiertes Label</translation>
+    </message>
+    <message>
+        <source>%1 (grown from one point)</source>
+        <translation>%1 (aus einem Punkt gewachsen)</translation>
+    </message>
+    <message>
+        <source>%1 (grown from %2 points)</source>
+        <translation>%1 (aus %2 Punkten gewachsen)</translation>
+    </message>
+    <message>
+        <source>Cloth sheet</source>
+        <translation>Tuch</translation>
+    </message>
+    <message>
+        <source>Imported wall</source>
+        <translation>Importierte Wand</translation>
+    </message>
+    <message>
+        <source>Blood flow (SPH)</source>
+        <translation>Blutfluss (SPH)</translation>
+    </message>
+    <message>
+        <source>Wall loads (SPH)</source>
+        <translation>Wandlasten (SPH)</translation>
+    </message>
+    <message>
+        <source>DICOM series %1</source>
+        <translation>DICOM-Serie %1</translation>
+    </message>
+    <message>
+        <source>Vessel lumen (aorta)</source>
+        <translation>Gefäßlumen (Aorta)</translation>
+    </message>
+    <message>
+        <source>Vessel lumen (hepatic arteries)</source>
+        <translation>Gefäßlumen (Leberarterien)</translation>
+    </message>
+    <message>
+        <source>Vessel lumen (from points)</source>
+        <translation>Gefäßlumen (aus Punkten)</translation>
+    </message>
+    <message>
+        <source>Needle injection (SPH)</source>
+        <translation>Nadelinjektion (SPH)</translation>
+    </message>
+    <message>
+        <source>Drug filling</source>
+        <translation>Wirkstofffüllung</translation>
+    </message>
+    <message>
+        <source>Drug flow</source>
+        <translation>Wirkstofffluss</translation>
+    </message>
+    <message>
+        <source>AAA sac (lumen 1, thrombus 4, wall 5)</source>
+        <translation>AAA-Sack (Lumen 1, Thrombus 4, Wand 5)</translation>
+    </message>
+    <message>
+        <source>Surgical smoke (%1, illustrative)</source>
+        <translation>Chirurgischer Rauch (%1, veranschaulichend)</translation>
+    </message>
+    <message>
+        <source>Report (anonymized)</source>
+        <translation>Bericht (anonymisiert)</translation>
+    </message>
+    <message>
+        <source>Report</source>
+        <translation>Bericht</translation>
+    </message>
+    <message>
+        <source>Wall run (%1)</source>
+        <translation>Wandlauf (%1)</translation>
+    </message>
+    <message>
+        <source>Wall stress (%1)</source>
+        <translation>Wandspannung (%1)</translation>
+    </message>
+    <message>
+        <source>Vessel wall</source>
+        <translation>Gefäßwand</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -3869,6 +3869,106 @@
         <source>pulsatile flow in a rigid pipe 20 particles across (0.1 mm, periodic along its axis) from rest, alpha 4 (four cycles) and 8 (three): the velocity next to the axis over the last cycle against Womersley&apos;s solution</source>
         <translation>刚性管中的脉动流，横跨 20 个粒子（0.1 mm，沿轴向周期），从静止开始，alpha 4（四个周期）和 8（三个周期）：最后一个周期内轴线附近的速度与 Womersley 解对比</translation>
     </message>
+    <message>
+        <source>Vessel lumen</source>
+        <translation>血管管腔</translation>
+    </message>
+    <message>
+        <source>Lumen surface</source>
+        <translation>管腔表面</translation>
+    </message>
+    <message>
+        <source>Vessel skeleton</source>
+        <translation>血管骨架</translation>
+    </message>
+    <message>
+        <source>Centerlines</source>
+        <translation>中心线</translation>
+    </message>
+    <message>
+        <source>Imported label</source>
+        <translation>导入的标签</translation>
+    </message>
+    <message>
+        <source>%1 (grown from one point)</source>
+        <translation>%1（从一个点生长）</translation>
+    </message>
+    <message>
+        <source>%1 (grown from %2 points)</source>
+        <translation>%1（从 %2 个点生长）</translation>
+    </message>
+    <message>
+        <source>Cloth sheet</source>
+        <translation>布片</translation>
+    </message>
+    <message>
+        <source>Imported wall</source>
+        <translation>导入的管壁</translation>
+    </message>
+    <message>
+        <source>Blood flow (SPH)</source>
+        <translation>血流（SPH）</translation>
+    </message>
+    <message>
+        <source>Wall loads (SPH)</source>
+        <translation>管壁载荷（SPH）</translation>
+    </message>
+    <message>
+        <source>DICOM series %1</source>
+        <translation>DICOM 序列 %1</translation>
+    </message>
+    <message>
+        <source>Vessel lumen (aorta)</source>
+        <translation>血管管腔（主动脉）</translation>
+    </message>
+    <message>
+        <source>Vessel lumen (hepatic arteries)</source>
+        <translation>血管管腔（肝动脉）</translation>
+    </message>
+    <message>
+        <source>Vessel lumen (from points)</source>
+        <translation>血管管腔（来自点）</translation>
+    </message>
+    <message>
+        <source>Needle injection (SPH)</source>
+        <translation>针头注射（SPH）</translation>
+    </message>
+    <message>
+        <source>Drug filling</source>
+        <translation>药物充盈</translation>
+    </message>
+    <message>
+        <source>Drug flow</source>
+        <translation>药物流动</translation>
+    </message>
+    <message>
+        <source>AAA sac (lumen 1, thrombus 4, wall 5)</source>
+        <translation>AAA 瘤囊（管腔 1，血栓 4，管壁 5）</translation>
+    </message>
+    <message>
+        <source>Surgical smoke (%1, illustrative)</source>
+        <translation>手术烟雾（%1，示意性）</translation>
+    </message>
+    <message>
+        <source>Report (anonymized)</source>
+        <translation>报告（已匿名化）</translation>
+    </message>
+    <message>
+        <source>Report</source>
+        <translation>报告</translation>
+    </message>
+    <message>
+        <source>Wall run (%1)</source>
+        <translation>管壁运行（%1）</translation>
+    </message>
+    <message>
+        <source>Wall stress (%1)</source>
+        <translation>管壁应力（%1）</translation>
+    </message>
+    <message>
+        <source>Vessel wall</source>
+        <translation>血管壁</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -12,6 +12,7 @@
 #include "vsim/app/VersionInfo.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/OutputSafety.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/dicom/DicomScan.h"
 #include "vsim/dicom/PhantomWriter.h"
 #include "vsim/imaging/Centerlines.h"
@@ -271,7 +272,7 @@ int segmentStudy(const Arguments& arguments, const Progress& progress)
         provenance.command = "segment";
         provenance.inputs = {imageId};
         result = segmentFromSeed(arguments, ct, provenance, progress.subRange(0.0, 0.9));
-        id = study.addLabel(result.label, "Vessel lumen", provenance, result.warnings);
+        id = study.addLabel(result.label, storedText("Vessel lumen"), provenance, result.warnings);
     }
     study.save();
     progress.report(1.0, "saved");
@@ -323,7 +324,7 @@ int surfaceStudy(const Arguments& arguments, const Progress& progress)
     if (result.surface.points.size() < result.fullVertices)
         notes.push_back("decimated from " + std::to_string(result.fullVertices) + " vertices: shape error mean " +
                         numberText(result.meanErrorMm) + " mm, Hausdorff " + numberText(result.hausdorffMm) + " mm");
-    const std::string id = study.addSurface(result.surface, "Lumen surface", provenance, notes);
+    const std::string id = study.addSurface(result.surface, storedText("Lumen surface"), provenance, notes);
     study.save();
     if (arguments.hasOption("stl"))
         mesh::writeStl(result.surface, arguments.option("stl"));
@@ -355,7 +356,7 @@ int skeletonStudy(const Arguments& arguments, const Progress& progress)
     std::vector<std::string> notes;
     if (result.crowdedAfterVdsm > 0)
         notes.push_back(std::to_string(result.crowdedAfterVdsm) + " crowded voxels remain after VDSM");
-    const std::string id = study.addSkeleton(result.graph, "Vessel skeleton", provenance, notes);
+    const std::string id = study.addSkeleton(result.graph, storedText("Vessel skeleton"), provenance, notes);
     study.save();
     progress.report(1.0, "saved");
     std::cout << "skeleton of " << labelId << " as " << id << ": " << result.graph.endpoints().size() << " endpoints, "
@@ -401,7 +402,7 @@ int centerlineStudy(const Arguments& arguments, const Progress& progress)
     if (fromTo)
         provenance.parameters["from_node"] = std::to_string(fromTo->first),
         provenance.parameters["to_node"] = std::to_string(fromTo->second);
-    const std::string id = study.addSkeleton(centerlines, "Centerlines", provenance);
+    const std::string id = study.addSkeleton(centerlines, storedText("Centerlines"), provenance);
     study.save();
     progress.report(1.0, "saved");
     double length = 0;

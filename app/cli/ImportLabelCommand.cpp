@@ -6,6 +6,7 @@
 #include "CommandLine.h"
 #include "vsim/app/MaskSource.h"
 #include "vsim/study/LabelImport.h"
+#include "vsim/core/StoredText.h"
 
 #include <cmath>
 #include <iostream>
@@ -41,7 +42,7 @@ int importLabelIntoStudy(const Arguments& arguments, const Progress& progress)
         if (!source.segmentLabels[n].empty())
             provenance.parameters["segment_" + std::to_string(n + 1)] = source.segmentLabels[n];
     const std::string name = input.filename().string();
-    const std::string id = study.addLabel(label, name.empty() ? "Imported label" : name, provenance, warnings);
+    const std::string id = study.addLabel(label, name.empty() ? storedText("Imported label") : name, provenance, warnings);
     study.save();
     progress.report(1.0, "saved");
     std::size_t voxels = 0;

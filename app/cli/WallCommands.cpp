@@ -4,6 +4,7 @@
 #include "CommandLine.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/OutputSafety.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/app/SacRecord.h"
 #include "vsim/app/WallPipeline.h"
@@ -47,7 +48,7 @@ int meshWall(const Arguments& arguments, const Progress& progress)
         const double length = quantityOption(arguments, "length", "mm", 40.0);
         const double thickness = quantityOption(arguments, "thickness", "mm", 0.5);
         const double cell = quantityOption(arguments, "cell", "mm", 1.0);
-        return addOtherWall(study, app::clothSheet(width, length, thickness, cell), "Cloth sheet",
+        return addOtherWall(study, app::clothSheet(width, length, thickness, cell), storedText("Cloth sheet"),
                             {{"shape", "sheet"},
                              {"width_mm", numberText(width)},
                              {"length_mm", numberText(length)},
@@ -86,7 +87,7 @@ int meshWall(const Arguments& arguments, const Progress& progress)
             provenance.parameters["lumen_point_mm"] = arguments.option("lumen-point");
         if (selection.fixOpenEnds)
             provenance.parameters["fixed"] = "open ends";
-        const std::string id = study.addTetMesh(marked.wall, "Imported wall", provenance, marked.warnings);
+        const std::string id = study.addTetMesh(marked.wall, storedText("Imported wall"), provenance, marked.warnings);
         study.save();
         std::cout << nlohmann::json{{"artifact", id},
                                     {"nodes", marked.wall.points.size()},

@@ -2,6 +2,7 @@
 
 #include "StudyDocument.h"
 #include "vsim/app/SegmentNames.h"
+#include "vsim/core/StoredText.h"
 
 namespace vsim::gui {
 
@@ -78,7 +79,7 @@ void RenameSegmentCommand::undo()
 RemoveArtifactCommand::RemoveArtifactCommand(StudyDocument& document, std::string id)
     : m_document(document), m_id(std::move(id))
 {
-    setText(QObject::tr("Delete \"%1\"").arg(QString::fromStdString(document.study().artifact(m_id).name)));
+    setText(QObject::tr("Delete \"%1\"").arg(QString::fromStdString(storedTextForPeople(document.study().artifact(m_id).name))));
 }
 
 void RemoveArtifactCommand::redo()

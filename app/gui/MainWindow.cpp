@@ -223,7 +223,7 @@ void MainWindow::refreshPatientOverlay()
             patient += (patient.isEmpty() ? "" : "  ") + tr("ID %1").arg(value("patient_id"));
         lines << patient << (value("study_date") + "  " + value("study_description")).trimmed();
         if (const std::string image = newestArtifact(study::ArtifactKind::Image); !image.empty())
-            lines << QString::fromStdString(m_document.study().artifact(image).name);
+            lines << QString::fromStdString(storedTextForPeople(m_document.study().artifact(image).name));
     }
     lines.removeAll(QString());
     m_views->setPatientText(lines.join('\n'));
@@ -255,7 +255,7 @@ void MainWindow::refreshArtifactTree()
     for (const study::Artifact& artifact : m_document.study().artifacts())
     {
         auto* item = new QTreeWidgetItem(m_artifactTree);
-        item->setText(0, QString::fromStdString(artifact.name));
+        item->setText(0, QString::fromStdString(storedTextForPeople(artifact.name)));
         if (isShowable(artifact))
             item->setCheckState(0, isArtifactShown(artifact.id) ? Qt::Checked : Qt::Unchecked);
         item->setText(1, artifactKindText(artifact.kind));

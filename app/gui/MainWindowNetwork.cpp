@@ -10,6 +10,7 @@
 #include "SegmentationPointsPanel.h"
 #include "ViewLayout.h"
 #include "vsim/app/NetworkPipeline.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/imaging/LesionGrowing.h"
 #include "vsim/imaging/OrganGrowing.h"
@@ -163,7 +164,8 @@ void MainWindow::showDrugDeliveryRun(std::shared_ptr<const sim::network::Network
     std::vector<std::pair<QString, QString>> labels;
     for (const study::Artifact& artifact : m_document.study().artifacts())
         if (artifact.kind == study::ArtifactKind::Label && !artifact.damaged)
-            labels.emplace_back(QString::fromStdString(artifact.id), QString::fromStdString(artifact.name));
+            labels.emplace_back(QString::fromStdString(artifact.id),
+                                QString::fromStdString(storedTextForPeople(artifact.name)));
     m_drugPanel->setLabelChoices(labels);
     m_drugPanel->setRequest(m_drugRequest);
     showTerritory(*run);
@@ -231,7 +233,8 @@ bool MainWindow::growOrganFromPoints(bool tumour)
                 text += (text.empty() ? "" : "; ") + std::to_string(p.x()) + "," + std::to_string(p.y()) + "," + std::to_string(p.z());
             provenance.parameters["points_mm"] = text;
             const std::string id = m_document.study().addLabel(
-                grown->label, organ + " (grown from " + std::to_string(points.size()) + " points)", provenance, grown->warnings);
+                grown->label, storedText(Pattern{"%1 (grown from %2 points)", {organ, std::to_string(points.size())}}),
+                provenance, grown->warnings);
             m_scene.labels[id] = grown->label;
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, title));
             statusBar()->showMessage(tr("%1 grown from %2 point(s): %3 ml; choose it as the %4 label in the Drug "

@@ -14,6 +14,7 @@
 #include "vsim/app/WallPipeline.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
+#include "vsim/core/StoredText.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>
@@ -176,7 +177,8 @@ bool MainWindow::openRunPlayer(const std::string& id)
                            if (m_drugDock)
                                m_drugDock->hide();
                            m_runDock->setWindowTitle(
-                               tr("Run Player: %1").arg(QString::fromStdString(m_document.study().artifact(id).name)));
+                               tr("Run Player: %1")
+                                   .arg(QString::fromStdString(storedTextForPeople(m_document.study().artifact(id).name))));
                            m_runDock->show();
                            m_runPlayer->setFrames(positions, axisQuantityText(run->axis.quantity),
                                                   QString::fromStdString(run->axis.unit),

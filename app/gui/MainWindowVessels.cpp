@@ -18,6 +18,7 @@
 #include "vsim/viz/DecimalText.h"
 #include "vsim/viz/SliceView.h"
 #include "vsim/viz/VolumeView3D.h"
+#include "vsim/core/StoredText.h"
 
 #include <QDockWidget>
 #include <QInputDialog>
@@ -253,7 +254,7 @@ bool MainWindow::segmentVessels(const std::optional<Eigen::Vector3d>& seedMm)
             const Eigen::Vector3d& seed = outcome->segmentation.seedMm;
             provenance.parameters["seed_mm"] = QString("%1,%2,%3").arg(seed.x()).arg(seed.y()).arg(seed.z()).toStdString();
             provenance.parameters["seed_found_automatically"] = outcome->segmentation.seedFound ? "yes" : "no";
-            const std::string id = m_document.study().addLabel(outcome->segmentation.label, "Vessel lumen", provenance,
+            const std::string id = m_document.study().addLabel(outcome->segmentation.label, storedText("Vessel lumen"), provenance,
                                                                outcome->segmentation.warnings);
             m_scene.labels[id] = outcome->segmentation.label; // what the views draw, before they are redrawn
             m_scene.lumenSurfaces[id] = outcome->surface;
@@ -326,13 +327,13 @@ bool MainWindow::extractSkeletonAndCenterlines()
             skeleton.inputs = {labelId};
             skeleton.parameters = outcome->skeletonParameters;
             const std::string skeletonId =
-                m_document.study().addSkeleton(outcome->skeleton.graph, "Vessel skeleton", skeleton);
+                m_document.study().addSkeleton(outcome->skeleton.graph, storedText("Vessel skeleton"), skeleton);
             study::Provenance centerline;
             centerline.command = "centerline";
             centerline.inputs = {skeletonId, labelId};
             centerline.parameters = outcome->centerlineParameters;
             const std::string centerlineId =
-                m_document.study().addSkeleton(outcome->centerlines, "Centerlines", centerline);
+                m_document.study().addSkeleton(outcome->centerlines, storedText("Centerlines"), centerline);
             m_scene.skeletons[skeletonId] = outcome->skeleton.graph;
             m_scene.skeletons[centerlineId] = outcome->centerlines;
             m_scene.measurements[centerlineId] = outcome->measurements;

@@ -2,6 +2,7 @@
 
 #include "PacsNodes.h"
 #include "vsim/study/Study.h"
+#include "vsim/core/StoredText.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -29,7 +30,8 @@ PacsSendDialog::PacsSendDialog(const study::Study& study, QWidget* parent) : QDi
         if (id.empty())
             return tr("%1: none in the study").arg(what);
         const study::Artifact& artifact = study.artifact(id);
-        return tr("%1: %2 (%3)").arg(what, QString::fromStdString(artifact.name), QString::fromStdString(artifact.provenance.time));
+        return tr("%1: %2 (%3)").arg(what, QString::fromStdString(storedTextForPeople(artifact.name)),
+                                        QString::fromStdString(artifact.provenance.time));
     };
     m_report = new QCheckBox(artifactText(m_reportId, tr("Newest report as a DICOM Encapsulated PDF")), this);
     m_label = new QCheckBox(artifactText(m_labelId, tr("Newest label as a DICOM SEG")), this);

@@ -1,6 +1,7 @@
 #include "WorkflowChecklist.h"
 
 #include "vsim/study/Study.h"
+#include "vsim/core/StoredText.h"
 
 #include <QPainter>
 #include <QPixmap>
@@ -81,7 +82,8 @@ void WorkflowChecklist::refresh(const study::Study* study)
     {
         const app::StepStatus status = study ? app::stepStatus(*study, step) : app::StepStatus{};
         const auto name = [&](const std::string& id) {
-            return study && study->hasArtifact(id) ? QString::fromStdString(study->artifact(id).name) : QString::fromStdString(id);
+            return study && study->hasArtifact(id) ? QString::fromStdString(storedTextForPeople(study->artifact(id).name))
+                                                   : QString::fromStdString(id);
         };
         QString state;
         switch (status.state)

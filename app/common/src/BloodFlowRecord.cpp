@@ -3,6 +3,7 @@
 #include "SphPipelineSupport.h"
 #include "vsim/app/BloodFlowPipeline.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 
 #include <nlohmann/json.hpp>
@@ -179,7 +180,7 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
     const std::string statusWarning = runStatusWarning(flow.run.status);
     if (!statusWarning.empty())
         warnings.insert(warnings.begin(), statusWarning);
-    const std::string id = study.addRun(flow.run, "Blood flow (SPH)", provenance, warnings);
+    const std::string id = study.addRun(flow.run, storedText("Blood flow (SPH)"), provenance, warnings);
     std::map<std::string, std::string> attributes = runAttributes(flow.run.metrics, flow.run.status);
     if (flow.stenosis)
         for (const auto& [key, value, definition] : stenosisRows(flow))
@@ -209,7 +210,7 @@ BloodFlowArtifacts addBloodFlowRun(study::Study& study, const BloodFlowRun& flow
             "tawss_pa, osi, wall_pressure_pa (NaN past an open end's plane and within a kernel support inside it)";
         derived.parameters["averaged_from_s"] = preciseNumberText(flow.averagedFromS); // the time window
         derived.parameters["averaged_over_s"] = preciseNumberText(flow.averagedS);
-        added.wallLoads = study.addSurface(flow.wallSurface, "Wall loads (SPH)", derived, warnings);
+        added.wallLoads = study.addSurface(flow.wallSurface, storedText("Wall loads (SPH)"), derived, warnings);
     }
     return added;
 }

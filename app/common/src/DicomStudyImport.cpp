@@ -2,6 +2,7 @@
 
 #include "vsim/core/Hounsfield.h"
 #include "vsim/core/Parameters.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/dicom/SeriesGeometry.h"
 #include "vsim/study/Study.h"
 
@@ -112,7 +113,7 @@ std::string addDicomVolumeToStudy(study::Study& study, dicom::DicomVolume volume
     provenance.inputs = {source.string()};
     std::string name = attribute(volume.attributes, "series_description");
     if (name.empty())
-        name = "DICOM series " + attribute(volume.attributes, "series_number");
+        name = storedText(Pattern{"DICOM series %1", {attribute(volume.attributes, "series_number")}});
     const std::string id = study.addImage(volume.image, name, provenance, volume.warnings);
     study.setArtifactAttributes(id, volume.attributes);
     return id;

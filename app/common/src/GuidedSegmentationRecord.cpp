@@ -1,6 +1,7 @@
 #include "vsim/app/GuidedSegmentationRecord.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <cstdlib>
 #include <sstream>
@@ -29,11 +30,11 @@ std::string labelName(imaging::SegmentationTarget target)
 {
     switch (target)
     {
-    case imaging::SegmentationTarget::Aorta: return "Vessel lumen (aorta)";
-    case imaging::SegmentationTarget::Hepatic: return "Vessel lumen (hepatic arteries)";
-    case imaging::SegmentationTarget::All: return "Vessel lumen (from points)";
+    case imaging::SegmentationTarget::Aorta: return storedText("Vessel lumen (aorta)");
+    case imaging::SegmentationTarget::Hepatic: return storedText("Vessel lumen (hepatic arteries)");
+    case imaging::SegmentationTarget::All: return storedText("Vessel lumen (from points)");
     }
-    return "Vessel lumen";
+    return storedText("Vessel lumen");
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "SphPipelineSupport.h"
 #include "vsim/app/InjectionPipeline.h"
 #include "vsim/app/RunRecord.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/sim/sph/FluidModel.h"
 
@@ -102,7 +103,7 @@ std::string addInjectionRun(study::Study& study, const InjectionRun& injection, 
     const std::string statusWarning = runStatusWarning(injection.run.status);
     if (!statusWarning.empty())
         warnings.insert(warnings.begin(), statusWarning);
-    const std::string id = study.addRun(injection.run, "Needle injection (SPH)", provenance, warnings);
+    const std::string id = study.addRun(injection.run, storedText("Needle injection (SPH)"), provenance, warnings);
     std::map<std::string, std::string> attributes = runAttributes(injection.run.metrics, injection.run.status);
     attributes["injection_mass_balance_kg"] = preciseNumberText(massBalanceKg(injection.run.metrics));
     attributes["injection_first_collected_s"] = preciseNumberText(injection.firstCollectedS);

@@ -3,6 +3,7 @@
 #include "vsim/app/RunRecord.h"
 #include "vsim/app/SegmentNames.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Units.h"
 #include "vsim/imaging/PartialVolumeRadii.h"
 #include "vsim/imaging/VesselMeasurements.h"
@@ -340,8 +341,8 @@ NetworkRunIds addNetworkRun(study::Study& study, const sim::network::NetworkRunR
     for (std::size_t i = 0; i < inputs.size(); ++i)
         filling.provenance.inputs[i == 0 ? "centerlines" : "input " + std::to_string(i + 1)] = inputs[i];
     NetworkRunIds ids;
-    ids.run = study.addRun(filling, "Drug filling", provenance, warnings);
-    const std::string id = ids.network = study.addNetwork(run.network, "Drug flow", provenance, warnings);
+    ids.run = study.addRun(filling, storedText("Drug filling"), provenance, warnings);
+    const std::string id = ids.network = study.addNetwork(run.network, storedText("Drug flow"), provenance, warnings);
     std::map<std::string, std::string> attributes = runAttributes(run.metrics, run.status);
     attributes["run_artifact"] = ids.run;
     // The best tip positions, for the report.

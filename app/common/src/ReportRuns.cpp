@@ -133,7 +133,7 @@ report::Section runsSection(const std::vector<const study::Artifact*>& runs, con
         const study::Artifact& run = *runs[i];
         const SolverInfo solver = solverOf(run);
         report::Table summary;
-        summary.caption = run.name + " (" + run.id + ")";
+        summary.caption = storedTextForPeople(run.name) + " (" + run.id + ")";
         summary.columns = {localized("Report", "Item"), localized("Report", "Value")};
         const auto& parameters = run.provenance.parameters;
         const std::string protocol = textOr(parameters, "protocol");

@@ -4,6 +4,7 @@
 #include "vsim/app/SacRecord.h"
 #include "vsim/app/WallPipeline.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/imaging/AneurysmSac.h"
 #include "vsim/imaging/VesselMeasurements.h"
 #include "vsim/viz/Snapshot.h"
@@ -87,7 +88,7 @@ bool addSacGeometry(report::Section& section, const study::Study& study)
         {"left_common_iliac_diameter_mm", localized("Report", "Left common iliac diameter (outer)"), "mm", -1},
         {"wall_thickness_mm", localized("Report", "Wall thickness (assumed, not measured)"), "mm", -1}};
     report::MetricTable geometry{
-        withArguments(localized("Report", "The aneurysm sac (%1)"), {study.artifact(sacId).name}), {}};
+        withArguments(localized("Report", "The aneurysm sac (%1)"), {storedTextForPeople(study.artifact(sacId).name)}), {}};
     std::string definitions = localized("Report", "Definitions.");
     for (const Row& row : rows)
         if (const std::optional<double> value = number(row.key))

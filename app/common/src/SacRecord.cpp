@@ -1,6 +1,7 @@
 // The AAA sac as a study artifact (SacRecord.h).
 
 #include "vsim/app/SacRecord.h"
+#include "vsim/core/StoredText.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -31,7 +32,7 @@ std::string recordAneurysmSac(study::Study& study, const imaging::AneurysmSac& s
     provenance.parameters = {{"wall_thickness_mm", text(wallThicknessMm)}};
     for (const auto& [key, value] : sac.figures)
         provenance.parameters[key] = text(value);
-    return study.addLabel(sac.labels, "AAA sac (lumen 1, thrombus 4, wall 5)", provenance, sac.warnings);
+    return study.addLabel(sac.labels, storedText("AAA sac (lumen 1, thrombus 4, wall 5)"), provenance, sac.warnings);
 }
 
 std::map<std::string, double> newestSacFigures(const study::Study& study, std::string* sacId)

@@ -163,7 +163,8 @@ std::string addSmokeRun(study::Study& study, const SmokeRun& run)
     std::vector<std::string> warnings = run.warnings;
     if (const std::string status = runStatusWarning(run.run.status); !status.empty())
         warnings.insert(warnings.begin(), status);
-    const std::string id = study.addRun(run.run, "Surgical smoke (" + run.scenario + ", illustrative)", provenance, warnings);
+    const std::string id = study.addRun(
+        run.run, storedText(Pattern{"Surgical smoke (%1, illustrative)", {run.scenario}}), provenance, warnings);
     std::map<std::string, std::string> attributes = runAttributes(run.run.metrics, run.run.status);
     nlohmann::json curve = nlohmann::json::array();
     for (const auto& [time, fraction] : run.obscuration)

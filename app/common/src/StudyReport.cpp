@@ -4,6 +4,7 @@
 #include "ReportSupport.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/Version.h"
 
 #include <algorithm>
@@ -135,7 +136,8 @@ std::string addReport(study::Study& study, const report::Report& report, const s
                              {"page", page},
                              {"language", options.language},
                              {"validation", options.validate ? "1" : "0"}};
-    const std::string id = study.addReport(pdf, options.anonymize ? "Report (anonymized)" : "Report", provenance);
+    const std::string id = study.addReport(
+        pdf, options.anonymize ? storedText("Report (anonymized)") : storedText("Report"), provenance);
     std::map<std::string, std::string> attributes;
     attributes["metrics"] = std::to_string(report.metrics().size());
     attributes["analyses_not_run"] = std::to_string(report.notRun.size());

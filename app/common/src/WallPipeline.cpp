@@ -131,7 +131,7 @@ std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const s
                              {"thrombus_from", sacId.empty() ? "none" : sacId}};
     if (!sacId.empty())
         provenance.inputs.push_back(sacId);
-    const std::string id = study.addTetMesh(build.wall.mesh, "Vessel wall", provenance, build.wall.warnings);
+    const std::string id = study.addTetMesh(build.wall.mesh, storedText("Vessel wall"), provenance, build.wall.warnings);
     study.setArtifactAttributes(id, {{"min_dihedral_deg", numberText(build.wall.minDihedralDeg)},
                                      {"min_dihedral_unsmoothed_deg", numberText(build.wall.minDihedralUnsmoothedDeg)},
                                      {"nodes_smoothed", std::to_string(build.wall.nodesSmoothed)},
@@ -242,8 +242,9 @@ WallRunIds addWallRun(study::Study& study, const sim::fem::FemRunResult& run, co
     if (!centerlinesId.empty())
         record.provenance.inputs["centerlines"] = centerlinesId;
     WallRunIds ids;
-    ids.run = study.addRun(record, "Wall run (" + protocol + ")", provenance, warnings);
-    ids.stress = study.addTetMesh(run.frames.back(), "Wall stress (" + protocol + ")", provenance, warnings);
+    ids.run = study.addRun(record, storedText(Pattern{"Wall run (%1)", {protocol}}), provenance, warnings);
+    ids.stress = study.addTetMesh(run.frames.back(), storedText(Pattern{"Wall stress (%1)", {protocol}}), provenance,
+                                  warnings);
     std::map<std::string, std::string> attributes = runAttributes(run.metrics, run.status);
     attributes["run_artifact"] = ids.run;
     study.setArtifactAttributes(ids.stress, attributes);
