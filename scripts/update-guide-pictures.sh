@@ -18,7 +18,7 @@ pictures = {'gui/dicom-import-dialog.png': 'import.png', 'gui/vessels.png': 'ves
             'gui-endoscope/endoscope-focused.png': 'endoscope.png', 'gui/pacs-dialog.png': 'pacs.png',
             'gui/pacs-send.png': 'pacs-send.png'}
 for code in ('de', 'zh_CN'):
-    for name in ('vessels', 'slice-view', 'import', 'wall-stress', 'vessel-view', 'endoscope'):
+    for name in ('vessels', 'slice-view', 'import', 'wall-stress', 'vessel-view', 'endoscope', 'drug', 'ruler'):
         pictures[f'gui-walk/guide-{code}/{name}.png'] = f'{code}/{name}.png'
 for source, name in pictures.items():
     picture = Image.open(f'{shots}/{source}').convert('RGB')

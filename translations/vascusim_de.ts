@@ -3969,6 +3969,22 @@
         <source>Vessel wall</source>
         <translation>Gefäßwand</translation>
     </message>
+    <message>
+        <source>Ruler %1: %2</source>
+        <translation>Lineal %1: %2</translation>
+    </message>
+    <message>
+        <source>Angle %1: %2</source>
+        <translation>Winkel %1: %2</translation>
+    </message>
+    <message>
+        <source>ROI %1: %2</source>
+        <translation>ROI %1: %2</translation>
+    </message>
+    <message>
+        <source>mean %1 HU, SD %2 HU, area %3 mm2</source>
+        <translation>Mittel %1 HU, SD %2 HU, Fläche %3 mm2</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -6234,6 +6250,157 @@
     </message>
 </context>
 <context>
+    <name>vsim::gui::FieldTitles</name>
+    <message>
+        <source>von Mises stress (kPa)</source>
+        <translation>Von-Mises-Spannung (kPa)</translation>
+    </message>
+    <message>
+        <source>maximum principal stress (kPa)</source>
+        <translation>größte Hauptspannung (kPa)</translation>
+    </message>
+    <message>
+        <source>wall strength (kPa)</source>
+        <translation>Wandfestigkeit (kPa)</translation>
+    </message>
+    <message>
+        <source>rupture potential index</source>
+        <translation>Rupturpotenzial-Index</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <source>displacement (mm)</source>
+        <translation>Verschiebung (mm)</translation>
+    </message>
+    <message>
+        <source>displacement x (mm)</source>
+        <translation>Verschiebung x (mm)</translation>
+    </message>
+    <message>
+        <source>displacement y (mm)</source>
+        <translation>Verschiebung y (mm)</translation>
+    </message>
+    <message>
+        <source>displacement z (mm)</source>
+        <translation>Verschiebung z (mm)</translation>
+    </message>
+    <message>
+        <source>drug flow (ml/min)</source>
+        <translation>Wirkstofffluss (ml/min)</translation>
+    </message>
+    <message>
+        <source>drug flow, liquid only (ml/min)</source>
+        <translation>Wirkstofffluss, nur flüssig (ml/min)</translation>
+    </message>
+    <message>
+        <source>flow (ml/min)</source>
+        <translation>Fluss (ml/min)</translation>
+    </message>
+    <message>
+        <source>mean velocity (mm/s)</source>
+        <translation>mittlere Geschwindigkeit (mm/s)</translation>
+    </message>
+    <message>
+        <source>pressure at the segment&apos;s start (mmHg)</source>
+        <translation>Druck am Anfang des Segments (mmHg)</translation>
+    </message>
+    <message>
+        <source>pressure at the segment&apos;s end (mmHg)</source>
+        <translation>Druck am Ende des Segments (mmHg)</translation>
+    </message>
+    <message>
+        <source>Reynolds number</source>
+        <translation>Reynolds-Zahl</translation>
+    </message>
+    <message>
+        <source>injected share of the flow (%)</source>
+        <translation>injizierter Anteil am Fluss (%)</translation>
+    </message>
+    <message>
+        <source>downstream of the catheter&apos;s tip</source>
+        <translation>stromab der Katheterspitze</translation>
+    </message>
+    <message>
+        <source>drug front enters the segment (s)</source>
+        <translation>Wirkstofffront erreicht das Segment (s)</translation>
+    </message>
+    <message>
+        <source>drug front leaves the segment (s)</source>
+        <translation>Wirkstofffront verlässt das Segment (s)</translation>
+    </message>
+    <message>
+        <source>filled length (mm)</source>
+        <translation>gefüllte Länge (mm)</translation>
+    </message>
+    <message>
+        <source>filled fraction</source>
+        <translation>gefüllter Anteil</translation>
+    </message>
+    <message>
+        <source>speed (m/s)</source>
+        <translation>Geschwindigkeitsbetrag (m/s)</translation>
+    </message>
+    <message>
+        <source>velocity x (m/s)</source>
+        <translation>Geschwindigkeit x (m/s)</translation>
+    </message>
+    <message>
+        <source>velocity y (m/s)</source>
+        <translation>Geschwindigkeit y (m/s)</translation>
+    </message>
+    <message>
+        <source>velocity z (m/s)</source>
+        <translation>Geschwindigkeit z (m/s)</translation>
+    </message>
+    <message>
+        <source>pressure (Pa)</source>
+        <translation>Druck (Pa)</translation>
+    </message>
+    <message>
+        <source>density (kg/m³)</source>
+        <translation>Dichte (kg/m³)</translation>
+    </message>
+    <message>
+        <source>void fraction</source>
+        <translation>Gasanteil</translation>
+    </message>
+    <message>
+        <source>wall particle</source>
+        <translation>Wandteilchen</translation>
+    </message>
+    <message>
+        <source>open boundary</source>
+        <translation>offener Rand</translation>
+    </message>
+    <message>
+        <source>tracer</source>
+        <translation>Tracer</translation>
+    </message>
+    <message>
+        <source>time-averaged wall shear stress (Pa)</source>
+        <translation>zeitgemittelte Wandschubspannung (Pa)</translation>
+    </message>
+    <message>
+        <source>oscillatory shear index</source>
+        <translation>oszillatorischer Scherindex</translation>
+    </message>
+    <message>
+        <source>wall pressure (Pa)</source>
+        <translation>Wanddruck (Pa)</translation>
+    </message>
+    <message>
+        <source>smoke density (mg/m³)</source>
+        <translation>Rauchdichte (mg/m³)</translation>
+    </message>
+    <message>
+        <source>temperature rise (K)</source>
+        <translation>Temperaturanstieg (K)</translation>
+    </message>
+</context>
+<context>
     <name>vsim::gui::HelpWindow</name>
     <message>
         <source>VascuSim User Guide</source>
@@ -7555,10 +7722,6 @@ Ersetzen?</translation>
     <message>
         <source>&amp;Include the Selected Measurement in the Report</source>
         <translation>Ausgewählte Messung in den Bericht &amp;aufnehmen</translation>
-    </message>
-    <message>
-        <source>%1 %2: %3</source>
-        <translation>%1 %2: %3</translation>
     </message>
     <message>
         <source>Measure %1</source>

@@ -3969,6 +3969,22 @@
         <source>Vessel wall</source>
         <translation>血管壁</translation>
     </message>
+    <message>
+        <source>Ruler %1: %2</source>
+        <translation>标尺 %1：%2</translation>
+    </message>
+    <message>
+        <source>Angle %1: %2</source>
+        <translation>角度 %1：%2</translation>
+    </message>
+    <message>
+        <source>ROI %1: %2</source>
+        <translation>ROI %1：%2</translation>
+    </message>
+    <message>
+        <source>mean %1 HU, SD %2 HU, area %3 mm2</source>
+        <translation>平均 %1 HU，标准差 %2 HU，面积 %3 mm2</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -6233,6 +6249,157 @@
     </message>
 </context>
 <context>
+    <name>vsim::gui::FieldTitles</name>
+    <message>
+        <source>von Mises stress (kPa)</source>
+        <translation>von Mises 应力（kPa）</translation>
+    </message>
+    <message>
+        <source>maximum principal stress (kPa)</source>
+        <translation>最大主应力（kPa）</translation>
+    </message>
+    <message>
+        <source>wall strength (kPa)</source>
+        <translation>管壁强度（kPa）</translation>
+    </message>
+    <message>
+        <source>rupture potential index</source>
+        <translation>破裂潜能指数</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>材料</translation>
+    </message>
+    <message>
+        <source>displacement (mm)</source>
+        <translation>位移（mm）</translation>
+    </message>
+    <message>
+        <source>displacement x (mm)</source>
+        <translation>位移 x（mm）</translation>
+    </message>
+    <message>
+        <source>displacement y (mm)</source>
+        <translation>位移 y（mm）</translation>
+    </message>
+    <message>
+        <source>displacement z (mm)</source>
+        <translation>位移 z（mm）</translation>
+    </message>
+    <message>
+        <source>drug flow (ml/min)</source>
+        <translation>药物流量（ml/min）</translation>
+    </message>
+    <message>
+        <source>drug flow, liquid only (ml/min)</source>
+        <translation>药物流量，仅液相（ml/min）</translation>
+    </message>
+    <message>
+        <source>flow (ml/min)</source>
+        <translation>流量（ml/min）</translation>
+    </message>
+    <message>
+        <source>mean velocity (mm/s)</source>
+        <translation>平均流速（mm/s）</translation>
+    </message>
+    <message>
+        <source>pressure at the segment&apos;s start (mmHg)</source>
+        <translation>段起点压力（mmHg）</translation>
+    </message>
+    <message>
+        <source>pressure at the segment&apos;s end (mmHg)</source>
+        <translation>段终点压力（mmHg）</translation>
+    </message>
+    <message>
+        <source>Reynolds number</source>
+        <translation>雷诺数</translation>
+    </message>
+    <message>
+        <source>injected share of the flow (%)</source>
+        <translation>注射液占流量的比例（%）</translation>
+    </message>
+    <message>
+        <source>downstream of the catheter&apos;s tip</source>
+        <translation>导管尖端下游</translation>
+    </message>
+    <message>
+        <source>drug front enters the segment (s)</source>
+        <translation>药物前沿进入该段（s）</translation>
+    </message>
+    <message>
+        <source>drug front leaves the segment (s)</source>
+        <translation>药物前沿离开该段（s）</translation>
+    </message>
+    <message>
+        <source>filled length (mm)</source>
+        <translation>充盈长度（mm）</translation>
+    </message>
+    <message>
+        <source>filled fraction</source>
+        <translation>充盈比例</translation>
+    </message>
+    <message>
+        <source>speed (m/s)</source>
+        <translation>速率（m/s）</translation>
+    </message>
+    <message>
+        <source>velocity x (m/s)</source>
+        <translation>速度 x（m/s）</translation>
+    </message>
+    <message>
+        <source>velocity y (m/s)</source>
+        <translation>速度 y（m/s）</translation>
+    </message>
+    <message>
+        <source>velocity z (m/s)</source>
+        <translation>速度 z（m/s）</translation>
+    </message>
+    <message>
+        <source>pressure (Pa)</source>
+        <translation>压力（Pa）</translation>
+    </message>
+    <message>
+        <source>density (kg/m³)</source>
+        <translation>密度（kg/m³）</translation>
+    </message>
+    <message>
+        <source>void fraction</source>
+        <translation>空隙率</translation>
+    </message>
+    <message>
+        <source>wall particle</source>
+        <translation>壁粒子</translation>
+    </message>
+    <message>
+        <source>open boundary</source>
+        <translation>开放边界</translation>
+    </message>
+    <message>
+        <source>tracer</source>
+        <translation>示踪剂</translation>
+    </message>
+    <message>
+        <source>time-averaged wall shear stress (Pa)</source>
+        <translation>时间平均壁面剪应力（Pa）</translation>
+    </message>
+    <message>
+        <source>oscillatory shear index</source>
+        <translation>振荡剪切指数</translation>
+    </message>
+    <message>
+        <source>wall pressure (Pa)</source>
+        <translation>壁面压力（Pa）</translation>
+    </message>
+    <message>
+        <source>smoke density (mg/m³)</source>
+        <translation>烟雾密度（mg/m³）</translation>
+    </message>
+    <message>
+        <source>temperature rise (K)</source>
+        <translation>温升（K）</translation>
+    </message>
+</context>
+<context>
     <name>vsim::gui::HelpWindow</name>
     <message>
         <source>VascuSim User Guide</source>
@@ -7553,10 +7720,6 @@ Replace them?</source>
     <message>
         <source>&amp;Include the Selected Measurement in the Report</source>
         <translation>将所选测量纳入报告(&amp;I)</translation>
-    </message>
-    <message>
-        <source>%1 %2: %3</source>
-        <translation>%1 %2：%3</translation>
     </message>
     <message>
         <source>Measure %1</source>

@@ -7,6 +7,7 @@
 #include "ViewLayout.h"
 #include "vsim/imaging/ViewMeasurements.h"
 #include "vsim/viz/SliceView.h"
+#include "vsim/core/StoredText.h"
 
 #include <QActionGroup>
 #include <QMenuBar>
@@ -96,14 +97,18 @@ std::string MainWindow::addMeasurement(const ViewMeasurement& drawn)
             if (a.kind == study::ArtifactKind::Measurement && a.provenance.parameters.count("kind") &&
                 a.provenance.parameters.at("kind") == kindName(drawn.kind))
                 ++number;
-        const QString name = tr("%1 %2: %3").arg(kindTitle(drawn.kind)).arg(number).arg(QString::fromStdString(measurementText(measured)));
+        // Kept in English like every name VascuSim gives (core StoredText.h), shown in the reader's language.
+        const std::vector<std::string> values{std::to_string(number), measurementText(measured)};
+        const std::string name = drawn.kind == ViewMeasurement::Kind::Ruler   ? storedText(Pattern{"Ruler %1: %2", values})
+                                 : drawn.kind == ViewMeasurement::Kind::Angle ? storedText(Pattern{"Angle %1: %2", values})
+                                                                              : storedText(Pattern{"ROI %1: %2", values});
         study::Provenance provenance;
         provenance.command = "measure";
         provenance.inputs = {imageId};
         provenance.parameters = {{"kind", kindName(drawn.kind)}, {"definition", measurementDefinition(drawn.kind)}};
-        const std::string id = m_document.study().addMeasurement(measured, name.toStdString(), provenance);
+        const std::string id = m_document.study().addMeasurement(measured, name, provenance);
         m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, tr("Measure %1").arg(kindTitle(drawn.kind))));
-        statusBar()->showMessage(name, 8000);
+        statusBar()->showMessage(QString::fromStdString(storedTextForPeople(name)), 8000);
         return id;
     }
     catch (const std::exception& error)
@@ -118,7 +123,7 @@ void MainWindow::setMeasurementInReport(const std::string& id, bool inReport)
     const study::Artifact& artifact = m_document.study().artifact(id);
     m_document.undoStack()->push(new SetArtifactAttributeCommand(
         m_document, id, "in_report", inReport ? "1" : "0",
-        (inReport ? tr("Include \"%1\" in the report") : tr("Leave \"%1\" out of the report")).arg(QString::fromStdString(artifact.name))));
+        (inReport ? tr("Include \"%1\" in the report") : tr("Leave \"%1\" out of the report")).arg(QString::fromStdString(storedTextForPeople(artifact.name)))));
 }
 
 void MainWindow::refreshViewMeasurements()
@@ -127,7 +132,7 @@ void MainWindow::refreshViewMeasurements()
     if (m_document.hasStudy())
         for (const study::Artifact& a : m_document.study().artifacts())
             if (a.kind == study::ArtifactKind::Measurement && !a.damaged && !m_hiddenArtifacts.count(a.id))
-                shown.push_back({m_document.study().loadMeasurement(a.id), a.name});
+                shown.push_back({m_document.study().loadMeasurement(a.id), storedTextForPeople(a.name)});
     for (viz::SliceOrientation orientation : kOrientations)
         m_views->sliceView(orientation)->setMeasurements(shown);
 }

@@ -235,7 +235,7 @@ void MainWindow::plotRunHistory()
                          : std::holds_alternative<ParticleSet>(first) ? tr("blood particles")
                          : std::holds_alternative<GridFields>(first)  ? tr("voxels")
                                                                       : tr("cells");
-    m_runPlot->setAxes(m_runPlayer->axisTitle(), tr("%1 over the %2 of each frame").arg(m_runPlayer->field(), over));
+    m_runPlot->setAxes(m_runPlayer->axisTitle(), tr("%1 over the %2 of each frame").arg(m_runPlayer->fieldText(), over));
     m_runPlot->setCurves({peak, middle});
 }
 
@@ -258,7 +258,7 @@ void MainWindow::drawRunFrame()
     if (range.second - range.first < 1e-12)
         range.second = range.first + 1e-6;
     const RunStatus& status = m_playedRun->status;
-    QString title = QString::fromStdString(field) + ", " + m_runPlayer->frameText();
+    QString title = m_runPlayer->fieldText() + ", " + m_runPlayer->frameText();
     if (!status.converged())
         title += tr(", NOT CONVERGED");
     else if (!status.complete())

@@ -1,5 +1,7 @@
 #include "RunPlayer.h"
 
+#include "FieldTitles.h"
+
 #include "vsim/viz/DecimalText.h"
 
 #include <QCheckBox>
@@ -69,7 +71,8 @@ void RunPlayer::setFrames(std::vector<double> positions, const QString& quantity
     {
         const QSignalBlocker blockField(m_field), blockSlider(m_slider);
         m_field->clear();
-        m_field->addItems(fields);
+        for (const QString& key : fields)
+            m_field->addItem(fieldTitle(key), key);
         m_field->setVisible(!fields.isEmpty()); // a player of one picture (the drug dock's tracers) has none
         m_perFrame->setVisible(!fields.isEmpty());
         m_slider->setRange(0, std::max(0, frameCount() - 1));
@@ -93,7 +96,8 @@ int RunPlayer::frameNearest(double position) const
 QString RunPlayer::axisTitle() const { return m_unit.isEmpty() ? m_quantity : QString("%1 (%2)").arg(m_quantity, m_unit); }
 double RunPlayer::speed() const { return m_speed->currentData().toDouble(); }
 bool RunPlayer::loops() const { return m_loop->isChecked(); }
-QString RunPlayer::field() const { return m_field->currentText(); }
+QString RunPlayer::field() const { return m_field->currentData().toString(); }
+QString RunPlayer::fieldText() const { return m_field->currentText(); }
 bool RunPlayer::rangePerFrame() const { return m_perFrame->isChecked(); }
 
 QString RunPlayer::frameText() const

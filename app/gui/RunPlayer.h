@@ -42,7 +42,9 @@ public:
     bool isPlaying() const;
     double speed() const;
     bool loops() const;
+    /// The field the frames are coloured by: its key (as the frames name it), and its title for people.
     QString field() const;
+    QString fieldText() const;
     /// True when the legend follows each frame's own range instead of the run's.
     bool rangePerFrame() const;
     /// "frame 3 / 21, time 0.150 s".

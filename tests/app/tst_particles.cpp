@@ -68,7 +68,7 @@ private slots:
         QCOMPARE(player->field(), QString("speed_m_s"));
         const int middle = player->frameCount() / 2;
         player->setFrame(middle);
-        QVERIFY2(window.views()->volumeView()->legendTitle().startsWith(QString("speed_m_s, frame %1 / ").arg(middle + 1)),
+        QVERIFY2(window.views()->volumeView()->legendTitle().startsWith(QString("speed (m/s), frame %1 / ").arg(middle + 1)),
                  qPrintable(window.views()->volumeView()->legendTitle()));
         // The slices through a fluid particle show the particles within their thickness.
         const ParticleSet& frame = std::get<ParticleSet>(run.frames[std::size_t(middle)].data);

@@ -8,6 +8,7 @@
 
 #include "DicomFixtures.h"
 #include "DrugDeliveryPanel.h"
+#include "FieldTitles.h"
 #include "GuiTestMain.h"
 #include "MainWindow.h"
 #include "RunPlayer.h"
@@ -217,8 +218,9 @@ private slots:
             gui::RunPlayer* player = second.runPlayer();
             QCOMPARE(player->frameCount(), int(record.keptFrameNumbers.size()));
             QCOMPARE(player->field(), QString(field));
+            QCOMPARE(player->fieldText(), gui::fieldTitle(field)); // "von Mises stress (kPa)", "filled fraction"
             player->setFrame(player->frameCount() / 2);
-            QVERIFY2(second.views()->volumeView()->legendTitle().startsWith(QString(field) + ", frame " +
+            QVERIFY2(second.views()->volumeView()->legendTitle().startsWith(player->fieldText() + ", frame " +
                                                                              QString::number(player->frameCount() / 2 + 1)),
                      qPrintable(second.views()->volumeView()->legendTitle()));
             // The slices through a point of the frame (inside a tet of the wall, on the tree's first segment) cut it.

@@ -55,7 +55,7 @@ private slots:
         QVERIFY(study.artifact(runId).attributes.count("peak_obscured_fraction"));
         // The 3D view volume-renders the density with its legend; closing the run takes it away.
         QTRY_VERIFY_WITH_TIMEOUT(window.views()->volumeView()->hasFieldVolume(), 20000);
-        QVERIFY2(window.views()->volumeView()->legendTitle().contains("smoke_density"),
+        QVERIFY2(window.views()->volumeView()->legendTitle().contains("smoke density (mg/m"),
                  qPrintable(window.views()->volumeView()->legendTitle()));
         window.runPlayer()->setFrame(window.runPlayer()->frameCount() - 1);
         QVERIFY(window.views()->volumeView()->hasFieldVolume());

@@ -9,6 +9,7 @@
 // checks the checklist's state and a view's state or pixels; the pictures stay in test-output/gui-walk.
 #include "DicomFixtures.h"
 #include "DicomImportDialog.h"
+#include "DrugDeliveryPanel.h"
 #include "EndoscopePanel.h"
 #include "GuiTestMain.h"
 #include "Languages.h"
@@ -123,9 +124,10 @@ class TestWalk : public QObject
     }
 
     /// The user guide's pictures in `language` (scripts/update-guide-pictures.sh takes them from guide-<language>):
-    /// the window (the guide's overview), the axial slice view with its overlays, the DICOM dialog on the walk's
-    /// series, the wall stress run played to its middle, the vessel view and the endoscope. Each shows what it
-    /// should (a series found, stress-coloured pixels, the lumen) before it is kept.
+    /// the window (the guide's overview), the axial slice view with its overlays, the drug dock with its run's
+    /// results, the ruler on its slice, the DICOM dialog on the walk's series, the wall stress run played to its
+    /// middle, the vessel view and the endoscope. Each shows what it should (the drug dock, a series found,
+    /// stress-coloured pixels, the lumen) before it is kept.
     void keepGuidePictures(gui::MainWindow& window, const QString& language)
     {
         const QString folder = m_output + "/guide-" + language;
@@ -133,6 +135,22 @@ class TestWalk : public QObject
         window.views()->volumeView()->showAnteriorView();
         QVERIFY(gui::captureWindow(&window).save(folder + "/vessels.png"));
         QVERIFY(gui::captureView(window.views()->sliceView(SliceOrientation::Axial)).save(folder + "/slice-view.png"));
+        // The drug dock as the study left it (its run's results), before a run played in the player hides it.
+        auto* drug = window.findChild<gui::DrugDeliveryPanel*>();
+        QVERIFY(drug && drug->isVisible());
+        QVERIFY(gui::captureWindow(&window).save(folder + "/drug.png"));
+
+        // The ruler on the slice it was drawn on.
+        const study::Study& study = window.document().study();
+        std::string ruler;
+        for (const study::Artifact& artifact : study.artifacts())
+            if (artifact.kind == study::ArtifactKind::Measurement)
+                ruler = artifact.id;
+        QVERIFY(!ruler.empty());
+        const ViewMeasurement drawn = study.loadMeasurement(ruler);
+        viz::SliceView* axial = window.views()->sliceView(SliceOrientation::Axial);
+        axial->setCursor(0.5 * (drawn.pointsMm.front() + drawn.pointsMm.back()));
+        QVERIFY(gui::captureView(axial).save(folder + "/ruler.png"));
 
         gui::DicomImportDialog dialog(&window);
         dialog.resize(1100, 700);
@@ -144,7 +162,6 @@ class TestWalk : public QObject
         QVERIFY(dialog.grab().save(folder + "/import.png"));
         dialog.close();
 
-        const study::Study& study = window.document().study();
         std::string wallRun;
         for (const study::Artifact& artifact : study.artifacts())
             if (artifact.kind == study::ArtifactKind::Run && artifact.name.rfind("Wall", 0) == 0)

@@ -101,7 +101,7 @@ private slots:
         QVERIFY(player);
         QCOMPARE(player->frameCount(), int(run.frames.size()));
         QCOMPARE(player->field(), QString("von_mises_kpa"));
-        QVERIFY2(window.views()->volumeView()->legendTitle().startsWith("von_mises_kpa, frame 1 / "),
+        QVERIFY2(window.views()->volumeView()->legendTitle().startsWith("von Mises stress (kPa), frame 1 / "),
                  qPrintable(window.views()->volumeView()->legendTitle()));
         const int middle = player->frameCount() / 2;
         player->setFrame(middle);

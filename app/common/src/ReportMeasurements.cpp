@@ -4,6 +4,7 @@
 #include "ReportSections.h"
 
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/core/ViewMeasurement.h"
 
 #include <cstdio>
@@ -37,8 +38,9 @@ std::optional<report::Section> measurementsSection(const study::Study& study)
         std::string points;
         for (const Eigen::Vector3d& p : m.pointsMm)
             points += (points.empty() ? "" : " ") + pointText(p);
-        const std::size_t colon = artifact.name.find(':');
-        table.rows.push_back({colon == std::string::npos ? artifact.name : artifact.name.substr(0, colon),
+        const std::string name = storedTextForPeople(artifact.name);
+        const std::size_t colon = name.find(':');
+        table.rows.push_back({colon == std::string::npos ? name : name.substr(0, colon),
                               measurementText(m, true), measurementDefinition(m.kind, true), points});
     }
     if (table.rows.empty())

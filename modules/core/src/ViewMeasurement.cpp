@@ -1,3 +1,4 @@
+#include "vsim/core/StoredText.h"
 #include "vsim/core/ViewMeasurement.h"
 
 #include "vsim/core/Error.h"
@@ -46,8 +47,12 @@ std::string measurementText(const ViewMeasurement& m, bool forPeople)
     case ViewMeasurement::Kind::Ruler: return number(m.lengthMm, "%.1f") + " mm";
     case ViewMeasurement::Kind::Angle: return number(m.angleDegrees, "%.1f") + " deg";
     case ViewMeasurement::Kind::Roi:
-        return withArguments(localized("vsim::ViewMeasurement", "mean %1 HU, SD %2 HU, area %3 mm2"),
-                             {number(m.meanHu, "%.0f"), number(m.sdHu, "%.0f"), number(m.areaMm2, "%.0f")});
+    {
+        // Stored in a measurement's name in English (StoredText.h), or for people in their language.
+        const std::vector<std::string> values{number(m.meanHu, "%.0f"), number(m.sdHu, "%.0f"), number(m.areaMm2, "%.0f")};
+        return forPeople ? withArguments(localized("vsim::ViewMeasurement", "mean %1 HU, SD %2 HU, area %3 mm2"), values)
+                         : storedText(Pattern{"mean %1 HU, SD %2 HU, area %3 mm2", values});
+    }
     }
     return {};
 }
