@@ -13,7 +13,15 @@ namespace {
 std::string positionText(const Eigen::Vector3d& positionM)
 {
     const Eigen::Vector3d x = 1e3 * positionM;
-    return "(" + numberText(x.x()) + ", " + numberText(x.y()) + ", " + numberText(x.z()) + ") mm";
+    // Appended piece by piece: GCC 12's -Wrestrict misreads "(" + std::string&& here.
+    std::string text = "(";
+    text += numberText(x.x());
+    text += ", ";
+    text += numberText(x.y());
+    text += ", ";
+    text += numberText(x.z());
+    text += ") mm";
+    return text;
 }
 
 } // namespace
