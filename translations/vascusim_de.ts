@@ -3985,6 +3985,18 @@
         <source>mean %1 HU, SD %2 HU, area %3 mm2</source>
         <translation>Mittel %1 HU, SD %2 HU, Fläche %3 mm2</translation>
     </message>
+    <message>
+        <source>physiological</source>
+        <translation>physiologisch</translation>
+    </message>
+    <message>
+        <source>thesis-rupture</source>
+        <translation>Ruptur nach der Dissertation</translation>
+    </message>
+    <message>
+        <source>interactive</source>
+        <translation>interaktiv</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -3985,6 +3985,18 @@
         <source>mean %1 HU, SD %2 HU, area %3 mm2</source>
         <translation>平均 %1 HU，标准差 %2 HU，面积 %3 mm2</translation>
     </message>
+    <message>
+        <source>physiological</source>
+        <translation>生理</translation>
+    </message>
+    <message>
+        <source>thesis-rupture</source>
+        <translation>论文破裂</translation>
+    </message>
+    <message>
+        <source>interactive</source>
+        <translation>交互</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

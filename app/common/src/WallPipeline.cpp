@@ -166,6 +166,18 @@ std::vector<viz::Callout> sacPeakCallouts(const study::Artifact& run)
 
 namespace {
 
+/// A wall protocol's name inside an artifact's name: a stored text, so that the workstation shows it translated.
+std::string protocolName(const std::string& protocol)
+{
+    if (protocol == "physiological")
+        return storedText("physiological");
+    if (protocol == "thesis-rupture")
+        return storedText("thesis-rupture");
+    if (protocol == "interactive")
+        return storedText("interactive");
+    return protocol;
+}
+
 /// Why this wall run cannot go to the GPU: no plugin or device, or a model the GPU stepper does not have; "" if it can.
 std::string wallGpuUnavailable(const std::string& protocol, const ParameterSet& parameters)
 {
@@ -242,9 +254,9 @@ WallRunIds addWallRun(study::Study& study, const sim::fem::FemRunResult& run, co
     if (!centerlinesId.empty())
         record.provenance.inputs["centerlines"] = centerlinesId;
     WallRunIds ids;
-    ids.run = study.addRun(record, storedText(Pattern{"Wall run (%1)", {protocol}}), provenance, warnings);
-    ids.stress = study.addTetMesh(run.frames.back(), storedText(Pattern{"Wall stress (%1)", {protocol}}), provenance,
-                                  warnings);
+    ids.run = study.addRun(record, storedText(Pattern{"Wall run (%1)", {protocolName(protocol)}}), provenance, warnings);
+    ids.stress = study.addTetMesh(run.frames.back(), storedText(Pattern{"Wall stress (%1)", {protocolName(protocol)}}),
+                                  provenance, warnings);
     std::map<std::string, std::string> attributes = runAttributes(run.metrics, run.status);
     attributes["run_artifact"] = ids.run;
     study.setArtifactAttributes(ids.stress, attributes);
