@@ -3,6 +3,7 @@
 #include "vsim/core/Localized.h"
 
 #include <cstddef>
+#include <cstdio>
 #include <map>
 #include <regex>
 #include <vector>
@@ -110,6 +111,13 @@ std::string storedValueForPeople(const std::string& value)
 std::string storedText(const Pattern& pattern)
 {
     return withArguments(pattern.text, pattern.values);
+}
+
+std::string storedNumber(double value, int decimals)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
 }
 
 std::string storedTextForPeople(const std::string& english)

@@ -15,13 +15,6 @@ using Eigen::Vector3d;
 
 constexpr double kDuplicateToleranceMm = 0.01;
 
-/// `value` with `decimals` decimals, for a stored text.
-std::string fixed(double value, int decimals)
-{
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-    return buffer;
-}
 
 void requirePlacement(const DicomSeries& series)
 {
@@ -145,10 +138,11 @@ SeriesGeometry planSeriesGeometry(const DicomSeries& series)
     if (plan.missingSlices > 0)
         plan.warnings.push_back(storedText(Pattern{
             "%1 missing slices (gaps up to %2 mm where the spacing is %3 mm): filled by interpolation",
-            {std::to_string(plan.missingSlices), fixed(*largest, 2), fixed(spacing, 2)}}));
+            {std::to_string(plan.missingSlices), storedNumber(*largest, 2), storedNumber(spacing, 2)}}));
     if (uneven)
         plan.warnings.push_back(storedText(Pattern{"uneven slice spacing (%1 to %2 mm): resampled to %3 mm",
-                                                   {fixed(*smallest, 3), fixed(*largest, 3), fixed(spacing, 3)}}));
+                                                   {storedNumber(*smallest, 3), storedNumber(*largest, 3),
+                                                    storedNumber(spacing, 3)}}));
 
     // Gantry tilt: the slices advance off their normal.
     const Vector3d advance = stack.positions.back() - stack.positions.front();
@@ -162,7 +156,7 @@ SeriesGeometry planSeriesGeometry(const DicomSeries& series)
         const double advanceSpacing = spacing / std::cos(plan.tiltDegrees * std::numbers::pi / 180.0);
         plan.grid = tiltedGrid(stack, advance, advanceSpacing);
         plan.warnings.push_back(storedText(Pattern{"gantry tilt of %1 degrees: resampled onto an orthogonal grid",
-                                                   {fixed(plan.tiltDegrees, 2)}}));
+                                                   {storedNumber(plan.tiltDegrees, 2)}}));
     }
     else
     {

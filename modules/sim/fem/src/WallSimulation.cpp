@@ -173,14 +173,9 @@ WallSimulation::StepOutcome WallSimulation::step()
         if (outcome.guard.empty())
         {
             const Eigen::Vector3d where = 1e3 * m_model.firstInvertedCentroid();
-            auto mm = [](double value) {
-                char text[32];
-                std::snprintf(text, sizeof text, "%.1f", value);
-                return std::string(text);
-            };
             outcome.guard = storedText(Pattern{"%1 elements inverted (the first near %2, %3, %4 mm)",
-                                               {std::to_string(outcome.report.invertedElements), mm(where.x()),
-                                                mm(where.y()), mm(where.z())}});
+                                               {std::to_string(outcome.report.invertedElements), storedNumber(where.x(), 1),
+                                                storedNumber(where.y(), 1), storedNumber(where.z(), 1)}});
         }
         if (m_stepper)
             setStepper(m_stepperFactory); // the stepper's state is the failed one

@@ -171,15 +171,11 @@ SmokeStepReport SmokeSimulation::step(double dt)
     }
     if (report.cfl > m_settings.cflGuard)
     {
-        auto fixed = [](double value, int decimals) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%.*f", decimals, value);
-            return std::string(text);
-        };
         report.guard = storedText(Pattern{"the flow crossed %1 cells in one step at t = %2 s (the limit is %3): the "
                                           "run is unstable (too strong a confinement or vortex forcing, or too long "
                                           "a step)",
-                                          {fixed(report.cfl, 1), fixed(m_time, 3), fixed(m_settings.cflGuard, 1)}});
+                                          {storedNumber(report.cfl, 1), storedNumber(m_time, 3),
+                                           storedNumber(m_settings.cflGuard, 1)}});
     }
     return report;
 }

@@ -17,6 +17,9 @@ namespace vsim {
 inline std::string storedText(const char* literal) { return literal; }
 /// The English of a stored text written as a pattern: its values filled in.
 std::string storedText(const Pattern& pattern);
+/// A value for a stored text: `value` with `decimals` digits after the '.' ("12.50"); storedTextForPeople() gives it
+/// the reader's decimal mark.
+std::string storedNumber(double value, int decimals);
 
 /// A stored English text in the reader's language: the catalogue's entry for a literal, or for the pattern that
 /// wrote it with its values filled into the translation (each value itself read as a stored text, numbers in the
