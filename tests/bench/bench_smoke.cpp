@@ -44,18 +44,26 @@ double median(std::vector<double> values)
 
 #ifdef VSIM_BENCH_SMOKE_CUDA
 /// The bytes one step's kernels move at the least, in units of N = the cells (one float per cell is 4 N): each
-/// kernel reading and writing its arrays once (CudaSmokeBackend.cu's kernels, the transport's `substeps` over the
-/// three axes, `iterations` conjugate-gradient iterations, the V-cycle's coarser levels an eighth of the finer's).
+/// kernel reading and writing its arrays once (cuda/smoke's kernels, the transport's `substeps` over the three
+/// axes, `iterations` conjugate-gradient iterations, the V-cycle's coarser levels an eighth of the finer's).
 /// An estimate of the compulsory traffic, not a count of the caches' misses.
 double leastBytesPerCell(int substeps, int iterations)
 {
-    const double vcycle = (4 + 8 * 9 + 10 + 9.5 + 9.5) * 8.0 / 7.0;      // zero, 8 half smoothing passes, A x, transfers
+    // The finest level's V-cycle: the first pass from x = 0 (b and the codes read, x written: 9), seven more half
+    // passes (x, half of b and of the codes read, half of x written: 8.5), the residual's restriction (b, x, the
+    // codes; an eighth written: 9.5), the prolongation (x read and written, the codes, an eighth read: 9.5).
+    const double vcycle = (9 + 7 * 8.5 + 9.5 + 9.5) * 8.0 / 7.0;
     const double advection = 24 + 48 + 16 + 29.0 * substeps + 17 + 12;   // copies, 3 lattices, start, sweeps, clamp, maxima
     const double forces = 8 + 17 + 95;                                    // cooling, buoyancy, vorticity and confinement
-    const double projectionSetUp = 27 + 26 + 4 + 26 + vcycle + 16 + 26 + 39 + 17 + 4 + 12;
-    const double perIteration = 10 + 8 + 24 + 4 + vcycle + 8 + 12;
+    // The right side 18, |b| 4, the true residual twice (13, |r| 4), the first V-cycle, p = z 8, r . z 8, the
+    // velocity's correction 39, the divergence left 17 and its largest 4, the largest speed 12.
+    const double projectionSetUp = 18 + 4 + 2 * 17 + vcycle + 8 + 8 + 39 + 17 + 4 + 12;
+    // Each iteration: q = A p with p . q 9, psi and r updated with |r| 24; all but the last also a V-cycle,
+    // r . z 8 and p = z + beta p 12.
+    const double perIteration = 9 + 24, perContinuation = vcycle + 8 + 12;
     const double guards = 44;                                             // the step's largest speeds, not-finite count
-    return advection + forces + projectionSetUp + iterations * perIteration + guards;
+    return advection + forces + projectionSetUp + iterations * perIteration + std::max(0, iterations - 1) * perContinuation +
+           guards;
 }
 
 /// The device's copy bandwidth (bytes/s, read plus write) over a 1 GiB device-to-device copy, the best of 5.

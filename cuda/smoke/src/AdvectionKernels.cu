@@ -26,7 +26,7 @@ __device__ float3 velocityAtCells(const Velocity& vel, float px, float py, float
 __device__ float valueAt(const float* data, const LatticeShape& s, int x, int y, int z)
 {
     x = min(max(x, 0), s.sx - 1), y = min(max(y, 0), s.sy - 1), z = min(max(z, 0), s.sz - 1);
-    return data[std::size_t(x) + std::size_t(s.sx) * (y + std::size_t(s.sy) * z)];
+    return __ldg(data + nodeIndex(x, y, z, s.sx, s.sy));
 }
 
 /// Advection.cpp's nodeVelocity: at node (i, j, k) of lattice `kind`, its own component exactly, the others the
@@ -56,11 +56,9 @@ __device__ float3 nodeVelocity(const Velocity& vel, int kind, int i, int j, int 
     return make_float3(result[0], result[1], result[2]);
 }
 
-/// Where node n came from over the step (dtCells = dt / h; negative: the forward trace), in cells.
-__device__ float3 traceBack(const Velocity& vel, const LatticeShape& shape, int kind, std::size_t n, float dtCells)
+/// Where node (i, j, k) came from over the step (dtCells = dt / h; negative: the forward trace), in cells.
+__device__ float3 traceBack(const Velocity& vel, const LatticeShape& shape, int kind, int i, int j, int k, float dtCells)
 {
-    const unsigned u = unsigned(n), sx = unsigned(shape.sx), sy = unsigned(shape.sy); // 32 bits: see transportKernel
-    const int i = int(u % sx), j = int((u / sx) % sy), k = int(u / (sx * sy));
     const float px = float(i) + shape.ox, py = float(j) + shape.oy, pz = float(k) + shape.oz;
     const float3 at = nodeVelocity(vel, kind, i, j, k);
     const float half = 0.5f * dtCells;
@@ -70,29 +68,30 @@ __device__ float3 traceBack(const Velocity& vel, const LatticeShape& shape, int 
 
 __global__ void semiLagrangianKernel(Velocity vel, LatticeShape shape, int kind, float* field, const float* old, float dtCells)
 {
-    const std::size_t n = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (n >= nodes(shape))
+    int i, j, k;
+    if (!threadNode(shape.sx, shape.sy, shape.sz, i, j, k))
         return;
-    const float3 from = traceBack(vel, shape, kind, n, dtCells);
-    field[n] = sampleLattice(old, shape, from.x, from.y, from.z);
+    const float3 from = traceBack(vel, shape, kind, i, j, k, dtCells);
+    field[nodeIndex(i, j, k, shape.sx, shape.sy)] = sampleLattice(old, shape, from.x, from.y, from.z);
 }
 
 __global__ void forwardKernel(Velocity vel, LatticeShape shape, int kind, const float* field, float* forward, float dtCells)
 {
-    const std::size_t n = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (n >= nodes(shape))
+    int i, j, k;
+    if (!threadNode(shape.sx, shape.sy, shape.sz, i, j, k))
         return;
-    const float3 to = traceBack(vel, shape, kind, n, -dtCells);
-    forward[n] = sampleLattice(field, shape, to.x, to.y, to.z);
+    const float3 to = traceBack(vel, shape, kind, i, j, k, -dtCells);
+    forward[nodeIndex(i, j, k, shape.sx, shape.sy)] = sampleLattice(field, shape, to.x, to.y, to.z);
 }
 
 __global__ void correctionKernel(Velocity vel, LatticeShape shape, int kind, float* field, const float* old,
                                  const float* forward, float dtCells)
 {
-    const std::size_t n = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (n >= nodes(shape))
+    int i, j, k;
+    if (!threadNode(shape.sx, shape.sy, shape.sz, i, j, k))
         return;
-    const float3 from = traceBack(vel, shape, kind, n, dtCells);
+    const unsigned n = nodeIndex(i, j, k, shape.sx, shape.sy);
+    const float3 from = traceBack(vel, shape, kind, i, j, k, dtCells);
     float low = 0.0f, high = 0.0f;
     sampleLattice(old, shape, from.x, from.y, from.z, &low, &high);
     const float corrected = field[n] + 0.5f * (old[n] - forward[n]);
@@ -164,19 +163,17 @@ __device__ bool faceFlux(const GridView& g, const AxisStencil& s, float speed, f
 /// faces (each face's computed by both its cells, alike), less the step's start value times the sweep's own
 /// divergence. Solid cells keep their values. 32-bit indices (the backend refuses grids of 2^31 cells or more).
 template <int axis>
-__global__ void transportKernel(GridView g, const float* velocity, float ratio, const float* start, const float* density,
-                                const float* temperature, float* outDensity, float* outTemperature)
+__global__ void transportKernel(GridView g, const float* __restrict__ velocity, float ratio, const float* __restrict__ start,
+                                const float* __restrict__ density, const float* __restrict__ temperature,
+                                float* __restrict__ outDensity, float* __restrict__ outTemperature)
 {
+    int ti, tj, tk;
+    if (!threadNode(g.nx, g.ny, g.nz, ti, tj, tk))
+        return;
     const unsigned nx = unsigned(g.nx), ny = unsigned(g.ny), cells = nx * ny * unsigned(g.nz);
-    const unsigned c = blockIdx.x * blockDim.x + threadIdx.x;
-    if (c >= cells)
-        return;
-    if (g.solid[c])
-    {
-        outDensity[c] = density[c], outTemperature[c] = temperature[c];
-        return;
-    }
-    const unsigned i = c % nx, j = (c / nx) % ny, k = c / (nx * ny);
+    const unsigned i = unsigned(ti), j = unsigned(tj), k = unsigned(tk), c = nodeIndex(ti, tj, tk, g.nx, g.ny);
+    // Every load first (the stencil holds the cell's own kind), then the solid's early way out: the loads wait
+    // on memory together.
     const int at = int(axis == 0 ? i : axis == 1 ? j : k), n = extentAlong<axis>(g);
     const int stride = axis == 0 ? 1 : axis == 1 ? int(nx) : int(nx * ny);
     AxisStencil s;
@@ -194,13 +191,19 @@ __global__ void transportKernel(GridView g, const float* velocity, float ratio, 
     const unsigned sx = nx + (axis == 0), sy = ny + (axis == 1);
     const unsigned low = i + sx * (j + sy * k), high = low + (axis == 0 ? 1u : axis == 1 ? sx : sx * sy);
     const float lowSpeed = velocity[low], highSpeed = velocity[high];
+    const float startDensity = start[c], startTemperature = start[cells + c];
+    if (s.kind[2] != kFluid) // a solid or a vent keeps its values
+    {
+        outDensity[c] = s.value[0][2], outTemperature[c] = s.value[1][2];
+        return;
+    }
     float lowFlux[2], highFlux[2];
     const bool lowPasses = faceFlux<axis, -1>(g, s, lowSpeed, lowFlux);
     const bool highPasses = faceFlux<axis, 0>(g, s, highSpeed, highFlux);
     // The sweep's own divergence: the velocity through the faces where smoke passes.
     const float divergence = (highPasses ? highSpeed : 0.0f) - (lowPasses ? lowSpeed : 0.0f);
-    outDensity[c] = s.value[0][2] - ratio * ((highFlux[0] - lowFlux[0]) - start[c] * divergence);
-    outTemperature[c] = s.value[1][2] - ratio * ((highFlux[1] - lowFlux[1]) - start[cells + c] * divergence);
+    outDensity[c] = s.value[0][2] - ratio * ((highFlux[0] - lowFlux[0]) - startDensity * divergence);
+    outTemperature[c] = s.value[1][2] - ratio * ((highFlux[1] - lowFlux[1]) - startTemperature * divergence);
 }
 
 __global__ void clampKernel(GridView g)
@@ -221,26 +224,26 @@ void advectLattice(const GridView& g, int kind, float* field, const float* old, 
 {
     const Velocity vel{u0, v0, w0, latticeOf(g, 0), latticeOf(g, 1), latticeOf(g, 2)};
     const LatticeShape shape = latticeOf(g, kind);
-    const unsigned blocks = blocksFor(nodes(shape));
-    semiLagrangianKernel<<<blocks, kBlock>>>(vel, shape, kind, field, old, dtCells);
+    const LatticeLaunch launch = launchOver(shape);
+    semiLagrangianKernel<<<launch.blocks, launch.threads>>>(vel, shape, kind, field, old, dtCells);
     if (!macCormack)
         return;
-    forwardKernel<<<blocks, kBlock>>>(vel, shape, kind, field, forward, dtCells);
-    correctionKernel<<<blocks, kBlock>>>(vel, shape, kind, field, old, forward, dtCells);
+    forwardKernel<<<launch.blocks, launch.threads>>>(vel, shape, kind, field, forward, dtCells);
+    correctionKernel<<<launch.blocks, launch.threads>>>(vel, shape, kind, field, old, forward, dtCells);
 }
 
 void transportAxis(GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
                    float*& density, float*& temperature, float*& spareDensity, float*& spareTemperature)
 {
-    const unsigned blocks = blocksFor(g.cells());
+    const LatticeLaunch launch = launchOver(g.nx, g.ny, g.nz);
     for (int sub = 0; sub < substeps; ++sub)
     {
         g.density = density, g.temperature = temperature;
         switch (axis)
         {
-        case 0: transportKernel<0><<<blocks, kBlock>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
-        case 1: transportKernel<1><<<blocks, kBlock>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
-        default: transportKernel<2><<<blocks, kBlock>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        case 0: transportKernel<0><<<launch.blocks, launch.threads>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        case 1: transportKernel<1><<<launch.blocks, launch.threads>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        default: transportKernel<2><<<launch.blocks, launch.threads>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
         }
         std::swap(density, spareDensity);
         std::swap(temperature, spareTemperature);

@@ -8,21 +8,28 @@
 namespace vsim::cuda::smoke {
 
 /// The block's reduction of `value` by `combine` (associative, with `identity`), by warp shuffles and shared
-/// memory; valid in thread 0. Every thread of the block must reach it.
+/// memory; valid in the block's first thread (threadInBlock() 0). Every thread of the block must reach it.
 template <class Combine>
 __device__ inline double blockReduce(double value, double identity, Combine combine)
 {
     __shared__ double warps[kBlock / 32];
+    const unsigned t = threadInBlock();
     for (int offset = 16; offset > 0; offset /= 2)
         value = combine(value, __shfl_down_sync(0xffffffffu, value, offset));
-    if (threadIdx.x % 32 == 0)
-        warps[threadIdx.x / 32] = value;
+    if (t % 32 == 0)
+        warps[t / 32] = value;
     __syncthreads();
-    value = threadIdx.x < kBlock / 32 ? warps[threadIdx.x] : identity;
-    if (threadIdx.x < 32)
+    value = t < kBlock / 32 ? warps[t] : identity;
+    if (t < 32)
         for (int offset = 16; offset > 0; offset /= 2)
             value = combine(value, __shfl_down_sync(0xffffffffu, value, offset));
     return value;
+}
+
+/// The block's place in its grid (x fastest): where it writes its partial sum.
+__device__ inline unsigned blockInGrid()
+{
+    return blockIdx.x + gridDim.x * (blockIdx.y + gridDim.y * blockIdx.z);
 }
 
 __device__ inline double blockSum(double value)

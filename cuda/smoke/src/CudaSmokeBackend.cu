@@ -55,9 +55,9 @@ struct CudaSmokeBackend::Device
     struct Level
     {
         int nx = 0, ny = 0, nz = 0;
-        Buffer<std::uint8_t> fluid, ambient, diagonal;
-        Buffer<float> x, b, r;
-        LevelView view() const { return {nx, ny, nz, fluid.data, diagonal.data}; }
+        Buffer<std::uint8_t> fluid, ambient, code; // code: SmokeKernels.cuh's LevelView
+        Buffer<float> x, b;
+        LevelView view() const { return {nx, ny, nz, code.data}; }
         std::size_t cells() const { return std::size_t(nx) * ny * nz; }
     };
 
@@ -66,7 +66,7 @@ struct CudaSmokeBackend::Device
     Buffer<std::uint8_t> solid, staticSolid;
     Buffer<float> u0, v0, w0, forward, start, spareDensity, spareTemperature, force, omega, magnitude;
     Buffer<float> psi, b, r, z, p, q, sink, left;
-    Buffer<double> scratch, particles, places;
+    Buffer<double> scratch, partials, particles, places;
     Buffer<int> changed, keep;
     std::vector<Level> levels;
     bool singular = false, prepared = false, hasVent = false, haveSink = false;
@@ -100,8 +100,8 @@ struct CudaSmokeBackend::Device
             for (Level& level : levels)
             {
                 const std::size_t n = level.cells();
-                level.fluid.zero(n), level.ambient.zero(n), level.diagonal.zero(n);
-                level.x.zero(n), level.b.zero(n), level.r.zero(n);
+                level.fluid.zero(n), level.ambient.zero(n), level.code.zero(n);
+                level.x.zero(n), level.b.zero(n);
             }
         }
         finestFlags(g, levels[0].fluid.data, levels[0].ambient.data);
@@ -113,7 +113,7 @@ struct CudaSmokeBackend::Device
                          coarse.fluid.data, coarse.ambient.data);
         }
         for (Level& level : levels)
-            levelDiagonal(level.nx, level.ny, level.nz, level.fluid.data, level.ambient.data, g.open, level.diagonal.data);
+            levelCodes(level.nx, level.ny, level.nz, level.fluid.data, level.ambient.data, g.open, level.code.data);
         singular = std::none_of(g.open, g.open + 6, [](std::uint8_t o) { return o != 0; }) && !hasVent;
         prepared = true;
     }
@@ -127,12 +127,11 @@ struct CudaSmokeBackend::Device
             solveCoarsest(view, x, rhs, kCoarsestSweeps);
             return;
         }
-        VSIM_CUDA_CHECK(cudaMemsetAsync(x, 0, level.cells() * sizeof(float)));
-        for (int sweep = 0; sweep < kSmoothingSweeps; ++sweep)
+        smoothLevelFromZero(view, x, rhs, 0); // x = 0 and the first sweep's first pass, in one
+        for (int sweep = 1; sweep < kSmoothingSweeps; ++sweep)
             smoothLevel(view, x, rhs, 0);
-        applyLevel(view, x, level.r.data);
         Level& coarse = levels[depth + 1];
-        restrictResidual(view, rhs, level.r.data, coarse.view(), coarse.b.data);
+        restrictResidual(view, rhs, x, coarse.view(), coarse.b.data);
         vcycle(depth + 1, coarse.b.data, coarse.x.data);
         prolongCorrection(view, x, coarse.view(), coarse.x.data);
         for (int sweep = 0; sweep < kSmoothingSweeps; ++sweep)
@@ -158,8 +157,7 @@ struct CudaSmokeBackend::Device
     double trueResidual()
     {
         const std::size_t n = g.cells();
-        applyLevel(levels[0].view(), psi.data, q.data);
-        difference(n, b.data, q.data, r.data);
+        residualOf(levels[0].view(), b.data, psi.data, r.data);
         removeNullSpace(r.data);
         return std::sqrt(dot(r.data, r.data, n, scratch.data));
     }
@@ -178,6 +176,7 @@ CudaSmokeBackend::CudaSmokeBackend(const host::SmokeGrid& grid) : m_device(std::
     for (int f = 0; f < 6; ++f)
         d.g.open[f] = grid.boundaries[std::size_t(f)] == host::DomainBoundary::Open;
     d.scratch.zero(2);
+    d.partials.zero(partialCount(grid.nx, grid.ny, grid.nz));
     d.changed.zero(1);
 }
 
@@ -369,7 +368,7 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
         stalled = false;
         while (residual > tolerance && report.iterations + iteration < maxIterations && rz > 0.0)
         {
-            const double pq = applyLevelDot(d.levels[0].view(), d.p.data, d.q.data, d.scratch.data);
+            const double pq = applyLevelDot(d.levels[0].view(), d.p.data, d.q.data, d.partials.data, d.scratch.data);
             if (!(pq > 0.0))
                 break;
             const double rr = updateSolution(n, float(rz / pq), d.p.data, d.q.data, d.psi.data, d.r.data, d.scratch.data);
@@ -470,9 +469,9 @@ std::size_t CudaSmokeBackend::deviceBytes() const
                                    &d.forward, &d.start, &d.spareDensity, &d.spareTemperature, &d.force, &d.omega, &d.magnitude, &d.psi, &d.b, &d.r,
                                    &d.z, &d.p, &d.q, &d.sink, &d.left})
         bytes += b->bytes();
-    bytes += d.solid.bytes() + d.staticSolid.bytes() + d.particles.bytes() + d.places.bytes();
+    bytes += d.solid.bytes() + d.staticSolid.bytes() + d.particles.bytes() + d.places.bytes() + d.partials.bytes();
     for (const Device::Level& level : d.levels)
-        bytes += level.fluid.bytes() * 3 + level.x.bytes() * 3;
+        bytes += level.fluid.bytes() * 3 + level.x.bytes() * 2;
     return bytes;
 }
 

@@ -7,13 +7,6 @@
 namespace vsim::cuda::smoke {
 namespace {
 
-/// Cell c's (i, j, k), in 32 bits (the backend refuses grids of 2^31 cells or more).
-__device__ void cellOf(const GridView& g, std::size_t c, int& i, int& j, int& k)
-{
-    const unsigned u = unsigned(c), nx = unsigned(g.nx), ny = unsigned(g.ny);
-    i = int(u % nx), j = int((u / nx) % ny), k = int(u / (nx * ny));
-}
-
 /// |centre of cell (i, j, k) - (cx, cy, cz)| in metres, in double precision as on the CPU.
 __device__ double distanceToCentre(const GridView& g, int i, int j, int k, double cx, double cy, double cz)
 {
@@ -58,11 +51,10 @@ __global__ void coolKernel(GridView g, float keep)
 __global__ void buoyancyKernel(GridView g, int axis, double scale, double alpha, double beta)
 {
     const LatticeShape shape = latticeOf(g, axis);
-    const std::size_t f = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (f >= nodes(shape))
+    int i, j, k;
+    if (!threadNode(shape.sx, shape.sy, shape.sz, i, j, k))
         return;
-    const unsigned u = unsigned(f), sx = unsigned(shape.sx), sy = unsigned(shape.sy);
-    const int i = int(u % sx), j = int((u / sx) % sy), k = int(u / (sx * sy));
+    const unsigned f = nodeIndex(i, j, k, shape.sx, shape.sy);
     const int at = axis == 0 ? i : axis == 1 ? j : k, n = axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
     if (at == 0 || at == n)
         return;
@@ -89,11 +81,10 @@ __device__ float3 centreVelocity(const GridView& g, int i, int j, int k)
 /// and its magnitude.
 __global__ void vorticityKernel(GridView g, float* omega, float* magnitude)
 {
-    const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (c >= g.cells())
-        return;
     int i, j, k;
-    cellOf(g, c, i, j, k);
+    if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
+        return;
+    const std::size_t c = nodeIndex(i, j, k, g.nx, g.ny);
     float3 w = make_float3(0.0f, 0.0f, 0.0f);
     if (!g.solid[c])
     {
@@ -124,11 +115,10 @@ __global__ void vorticityKernel(GridView g, float* omega, float* magnitude)
 /// f = epsilon h (N x w), N the unit gradient of |w|, at the fluid cells off the domain's edge.
 __global__ void confinementKernel(GridView g, float strength, const float* omega, const float* magnitude, float* force)
 {
-    const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (c >= g.cells())
-        return;
     int i, j, k;
-    cellOf(g, c, i, j, k);
+    if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
+        return;
+    const std::size_t c = nodeIndex(i, j, k, g.nx, g.ny);
     force[3 * c] = force[3 * c + 1] = force[3 * c + 2] = 0.0f;
     if (i < 1 || j < 1 || k < 1 || i > g.nx - 2 || j > g.ny - 2 || k > g.nz - 2 || g.solid[c])
         return;
@@ -178,11 +168,12 @@ __global__ void particleForcingKernel(GridView g, const double* particles, doubl
 /// Each cell adds half its force and half its upper neighbour's to the face between them (addCellForces).
 __global__ void cellForcesKernel(GridView g, const float* force, float dt)
 {
-    const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (c >= g.cells() || g.solid[c] == kSolid)
-        return;
     int i, j, k;
-    cellOf(g, c, i, j, k);
+    if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
+        return;
+    const std::size_t c = nodeIndex(i, j, k, g.nx, g.ny);
+    if (g.solid[c] == kSolid)
+        return;
     const std::size_t row = std::size_t(g.nx), slab = row * g.ny;
     if (i + 1 < g.nx && g.solid[c + 1] != kSolid)
         g.u[std::size_t(i + 1) + std::size_t(g.nx + 1) * (j + std::size_t(g.ny) * k)] += 0.5f * dt * (force[3 * c] + force[3 * (c + 1)]);
@@ -195,11 +186,10 @@ __global__ void cellForcesKernel(GridView g, const float* force, float dt)
 __global__ void solidsKernel(GridView g, const std::uint8_t* staticSolid, double cx, double cy, double cz, double radius,
                              float vx, float vy, float vz, int* changed)
 {
-    const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (c >= g.cells())
-        return;
     int i, j, k;
-    cellOf(g, c, i, j, k);
+    if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
+        return;
+    const std::size_t c = nodeIndex(i, j, k, g.nx, g.ny);
     std::uint8_t kind = staticSolid[c];
     float3 velocity = make_float3(0.0f, 0.0f, 0.0f);
     if (radius > 0.0 && distanceToCentre(g, i, j, k, cx, cy, cz) <= radius)
@@ -281,20 +271,23 @@ void addHeatForces(const GridView& g, float keep, double dt, double alpha, doubl
     if (keep != 1.0f)
         coolKernel<<<blocksFor(g.cells()), kBlock>>>(g, keep);
     for (int axis = 0; axis < 3; ++axis)
+    {
+        const LatticeLaunch faces = launchOver(latticeOf(g, axis));
         if (up[axis] != 0.0)
-            buoyancyKernel<<<blocksFor(nodes(latticeOf(g, axis))), kBlock>>>(g, axis, dt * up[axis], alpha, beta);
+            buoyancyKernel<<<faces.blocks, faces.threads>>>(g, axis, dt * up[axis], alpha, beta);
+    }
 }
 
 void vorticityConfinement(const GridView& g, double epsilon, float* force, float* omega, float* magnitude)
 {
-    const unsigned blocks = blocksFor(g.cells());
     if (epsilon <= 0.0)
     {
         VSIM_CUDA_CHECK(cudaMemsetAsync(force, 0, 3 * g.cells() * sizeof(float)));
         return;
     }
-    vorticityKernel<<<blocks, kBlock>>>(g, omega, magnitude);
-    confinementKernel<<<blocks, kBlock>>>(g, float(epsilon * g.h), omega, magnitude, force);
+    const LatticeLaunch cells = launchOver(g.nx, g.ny, g.nz);
+    vorticityKernel<<<cells.blocks, cells.threads>>>(g, omega, magnitude);
+    confinementKernel<<<cells.blocks, cells.threads>>>(g, float(epsilon * g.h), omega, magnitude, force);
 }
 
 void particleForcing(const GridView& g, const double* particles, int count, double epsilon, double radius, float* force)
@@ -307,13 +300,15 @@ void particleForcing(const GridView& g, const double* particles, int count, doub
 
 void addCellForces(const GridView& g, const float* force, float dt)
 {
-    cellForcesKernel<<<blocksFor(g.cells()), kBlock>>>(g, force, dt);
+    const LatticeLaunch cells = launchOver(g.nx, g.ny, g.nz);
+    cellForcesKernel<<<cells.blocks, cells.threads>>>(g, force, dt);
 }
 
 void placeSolids(const GridView& g, const std::uint8_t* staticSolid, double cx, double cy, double cz, double radius,
                  float vx, float vy, float vz, int* changed)
 {
-    solidsKernel<<<blocksFor(g.cells()), kBlock>>>(g, staticSolid, cx, cy, cz, radius, vx, vy, vz, changed);
+    const LatticeLaunch cells = launchOver(g.nx, g.ny, g.nz);
+    solidsKernel<<<cells.blocks, cells.threads>>>(g, staticSolid, cx, cy, cz, radius, vx, vy, vz, changed);
 }
 
 void advanceParticles(const GridView& g, double* particles, int count, double dt, int* keep)

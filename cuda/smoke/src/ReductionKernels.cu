@@ -14,7 +14,7 @@ __global__ void dotKernel(const float* a, const float* b, std::size_t n, double*
     for (std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x; c < n; c += std::size_t(gridDim.x) * blockDim.x)
         sum += double(a[c]) * double(b[c]);
     sum = blockSum(sum);
-    if (threadIdx.x == 0)
+    if (threadInBlock() == 0)
         atomicAdd(out, sum);
 }
 
@@ -27,7 +27,7 @@ __global__ void sumOnFluidKernel(const float* x, const std::uint8_t* fluid, std:
     sum = blockSum(sum);
     __syncthreads();
     count = blockSum(count);
-    if (threadIdx.x == 0)
+    if (threadInBlock() == 0)
         atomicAdd(out, sum), atomicAdd(out + 1, count);
 }
 
@@ -48,7 +48,7 @@ __global__ void maxAbsKernel(const float* a, std::size_t na, const float* b, std
     for (std::size_t n = first; n < nc; n += stride)
         largest = fmax(largest, absOrInfinity(c[n]));
     largest = blockMax(largest);
-    if (threadIdx.x == 0)
+    if (threadInBlock() == 0)
         atomicMaxNonNegative(out, largest);
 }
 
@@ -58,16 +58,34 @@ __global__ void notFiniteKernel(const float* field, std::size_t n, double* out)
     for (std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x; c < n; c += std::size_t(gridDim.x) * blockDim.x)
         count += isfinite(field[c]) ? 0.0 : 1.0;
     count = blockSum(count);
-    if (threadIdx.x == 0 && count > 0.0)
+    if (threadInBlock() == 0 && count > 0.0)
         atomicAdd(out, count);
 }
+
+/// out[0] += the sum of the blocks' partial sums (out[0] zeroed before).
+__global__ void sumPartialsKernel(const double* partials, unsigned count, double* out)
+{
+    double sum = 0.0;
+    for (unsigned n = blockIdx.x * blockDim.x + threadIdx.x; n < count; n += gridDim.x * blockDim.x)
+        sum += partials[n];
+    sum = blockSum(sum);
+    if (threadInBlock() == 0)
+        atomicAdd(out, sum);
+}
+
+} // namespace
 
 unsigned reduceBlocks(std::size_t n)
 {
     return std::max(1u, std::min(unsigned(kReduceBlocks), blocksFor(n)));
 }
 
-} // namespace
+double sumPartials(const double* partials, unsigned count, double* scratch)
+{
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, sizeof(double)));
+    sumPartialsKernel<<<reduceBlocks(count), kBlock>>>(partials, count, scratch);
+    return fetchScalar(scratch);
+}
 
 double fetchScalar(const double* scratch)
 {

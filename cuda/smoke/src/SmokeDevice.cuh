@@ -53,6 +53,12 @@ __host__ __device__ inline std::size_t nodes(const LatticeShape& s)
     return std::size_t(s.sx) * s.sy * s.sz;
 }
 
+/// Node (i, j, k)'s index on an sx x sy x ... lattice, in 32 bits (the backend refuses grids of 2^31 faces or more).
+__host__ __device__ inline unsigned nodeIndex(int i, int j, int k, int sx, int sy)
+{
+    return unsigned(i) + unsigned(sx) * (unsigned(j) + unsigned(sy) * unsigned(k));
+}
+
 /// Trilinear sample of `data` on lattice `s` at p (cells), clamped to the lattice, as the CPU's Advection.cpp
 /// (single precision); `low` / `high` take the range of the eight values when not null.
 __device__ inline float sampleLattice(const float* data, const LatticeShape& s, float px, float py, float pz,
@@ -63,10 +69,12 @@ __device__ inline float sampleLattice(const float* data, const LatticeShape& s, 
     const float fz = fminf(fmaxf(pz - s.oz, 0.0f), float(s.sz - 1));
     const int i = min(int(fx), s.sx - 2), j = min(int(fy), s.sy - 2), k = min(int(fz), s.sz - 2);
     const float a = fx - float(i), b = fy - float(j), c = fz - float(k);
-    const std::size_t row = std::size_t(s.sx), slab = std::size_t(s.sx) * std::size_t(s.sy);
-    const float* base = data + std::size_t(i) + row * std::size_t(j) + slab * std::size_t(k);
-    const float v000 = base[0], v100 = base[1], v010 = base[row], v110 = base[row + 1];
-    const float v001 = base[slab], v101 = base[slab + 1], v011 = base[slab + row], v111 = base[slab + row + 1];
+    const unsigned row = unsigned(s.sx), slab = unsigned(s.sx) * unsigned(s.sy);
+    const float* base = data + nodeIndex(i, j, k, s.sx, s.sy);
+    // Through the read-only cache: no kernel writes the lattice it samples.
+    const float v000 = __ldg(base), v100 = __ldg(base + 1), v010 = __ldg(base + row), v110 = __ldg(base + row + 1);
+    const float v001 = __ldg(base + slab), v101 = __ldg(base + slab + 1), v011 = __ldg(base + slab + row);
+    const float v111 = __ldg(base + slab + row + 1);
     if (low)
     {
         *low = fminf(fminf(fminf(v000, v100), fminf(v010, v110)), fminf(fminf(v001, v101), fminf(v011, v111)));
@@ -107,6 +115,37 @@ __device__ inline bool insideFluid(const GridView& g, double3 x)
 {
     const int i = int(floor((x.x - g.ox) / g.h)), j = int(floor((x.y - g.oy) / g.h)), k = int(floor((x.z - g.oz) / g.h));
     return i >= 0 && j >= 0 && k >= 0 && i < g.nx && j < g.ny && k < g.nz && g.solid[g.cell(i, j, k)] == kFluid;
+}
+
+/// One thread per node of an sx x sy x sz lattice, in blocks of 32 x 4 x 2 threads (kBlock; a warp along a row
+/// of x): each thread has its (i, j, k) from its block's place, without dividing (threadNode).
+struct LatticeLaunch
+{
+    dim3 blocks, threads;
+};
+
+inline LatticeLaunch launchOver(int sx, int sy, int sz)
+{
+    return {dim3(unsigned(sx + 31) / 32, unsigned(sy + 3) / 4, unsigned(sz + 1) / 2), dim3(32, 4, 2)};
+}
+
+inline LatticeLaunch launchOver(const LatticeShape& s)
+{
+    return launchOver(s.sx, s.sy, s.sz);
+}
+
+/// This thread's node (i, j, k) of the lattice launched by launchOver; false past its end.
+__device__ inline bool threadNode(int sx, int sy, int sz, int& i, int& j, int& k)
+{
+    i = int(blockIdx.x * blockDim.x + threadIdx.x), j = int(blockIdx.y * blockDim.y + threadIdx.y);
+    k = int(blockIdx.z * blockDim.z + threadIdx.z);
+    return i < sx && j < sy && k < sz;
+}
+
+/// The thread's place in its block, 0 ... kBlock - 1 (x fastest: a warp is 32 consecutive places).
+__device__ inline unsigned threadInBlock()
+{
+    return threadIdx.x + blockDim.x * (threadIdx.y + blockDim.y * threadIdx.z);
 }
 
 inline unsigned blocksFor(std::size_t n, int block = kBlock)

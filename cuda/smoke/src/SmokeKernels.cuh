@@ -60,11 +60,18 @@ void correctVelocity(const GridView& g, const float* psi);
 void divergenceLeft(const GridView& g, const float* sink, float* out);
 
 // ---- the Poisson operator and its multigrid levels (ProjectionKernels.cu)
+/// A level's cell code: 0 outside the fluid; in it kFluidCode plus the diagonal (its faces towards fluid, a vent or
+/// an open domain face, 0 ... 6): one byte, one load, for the operator, the smoother and the transfers.
+inline constexpr std::uint8_t kFluidCode = 8;
+__host__ __device__ inline int diagonalOf(std::uint8_t code)
+{
+    return code & 7;
+}
+
 struct LevelView
 {
     int nx, ny, nz;
-    const std::uint8_t* fluid;
-    const std::uint8_t* diagonal;
+    const std::uint8_t* code;
     __host__ __device__ std::size_t cells() const { return std::size_t(nx) * ny * nz; }
 };
 /// fluid and ambient (vent) flags of the finest level from the solid kinds.
@@ -72,30 +79,39 @@ void finestFlags(const GridView& g, std::uint8_t* fluid, std::uint8_t* ambient);
 /// A coarse level's flags from the fine one's (fluid when a child is; ambient when none is fluid and one is).
 void coarsenFlags(int fx, int fy, int fz, const std::uint8_t* fineFluid, const std::uint8_t* fineAmbient, int cx, int cy,
                   int cz, std::uint8_t* fluid, std::uint8_t* ambient);
-/// The diagonal: the faces of each fluid cell towards fluid, a vent or an open domain face.
-void levelDiagonal(int nx, int ny, int nz, const std::uint8_t* fluid, const std::uint8_t* ambient, const std::uint8_t open[6],
-                   std::uint8_t* diagonal);
-void applyLevel(const LevelView& level, const float* x, float* y);
+/// The level's cell codes (kFluidCode | the diagonal on the fluid cells, else 0).
+void levelCodes(int nx, int ny, int nz, const std::uint8_t* fluid, const std::uint8_t* ambient, const std::uint8_t open[6],
+                std::uint8_t* code);
+/// r = b - A x on the level.
+void residualOf(const LevelView& level, const float* b, const float* x, float* r);
 /// One red-black pass pair: colour `colourFirst`, then the other.
 void smoothLevel(const LevelView& level, float* x, const float* b, int colourFirst);
+/// smoothLevel from x = 0, without reading x (x's previous values are not used).
+void smoothLevelFromZero(const LevelView& level, float* x, const float* b, int colourFirst);
 /// The coarsest level: `sweeps` pass pairs from colour 0, then `sweeps` from colour 1, in one block.
 void solveCoarsest(const LevelView& level, float* x, const float* b, int sweeps);
-/// coarse.b = half the sum over each coarse cell's fluid children of (b - r).
-void restrictResidual(const LevelView& fine, const float* b, const float* r, const LevelView& coarse, float* coarseB);
+/// coarse.b = half the sum over each coarse cell's fluid children of the residual b - A x.
+void restrictResidual(const LevelView& fine, const float* b, const float* x, const LevelView& coarse, float* coarseB);
 /// x += the parent's correction on the fluid cells.
 void prolongCorrection(const LevelView& fine, float* x, const LevelView& coarse, const float* coarseX);
 /// x -= mean on the fluid cells.
 void subtractOnFluid(const LevelView& level, float* x, float mean);
 /// psi += alpha p; r -= alpha q; returns the new r's squared norm (`scratch`: 2 doubles on the device).
 double updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r, double* scratch);
-/// y = A x on the level; returns x . y (`scratch`: 2 doubles on the device).
-double applyLevelDot(const LevelView& level, const float* x, float* y, double* scratch);
-/// r = b - q.
-void difference(std::size_t n, const float* b, const float* q, float* r);
+/// y = A x on the level; returns x . y (`partials`: a double for each block of launchOver(the level),
+/// partialCount; `scratch`: 2 doubles on the device). Each block writes its sum, and few blocks add those up:
+/// one atomic addition per block to one double would queue 65,536 of them at 256^3.
+double applyLevelDot(const LevelView& level, const float* x, float* y, double* partials, double* scratch);
+/// The blocks of launchOver over the level: the partial sums applyLevelDot needs.
+std::size_t partialCount(int nx, int ny, int nz);
 /// p = z + beta p.
 void updateDirection(std::size_t n, float beta, const float* z, float* p);
 
 // ---- reductions (ReductionKernels.cu): each returns its value to the host (one small copy)
+/// The blocks of a grid-stride reduction over n values (at most 1,024: few atomic additions).
+unsigned reduceBlocks(std::size_t n);
+/// The sum of `count` partial sums on the device, through scratch[0].
+double sumPartials(const double* partials, unsigned count, double* scratch);
 /// The double at `scratch` on the device, copied to the host.
 double fetchScalar(const double* scratch);
 double dot(const float* a, const float* b, std::size_t n, double* scratch);
