@@ -3997,6 +3997,26 @@
         <source>interactive</source>
         <translation>interaktiv</translation>
     </message>
+    <message>
+        <source>tumour</source>
+        <translation>Tumor</translation>
+    </message>
+    <message>
+        <source>liver</source>
+        <translation>Leber</translation>
+    </message>
+    <message>
+        <source>ball drop</source>
+        <translation>Kugelfall</translation>
+    </message>
+    <message>
+        <source>endoscopic vessel harvesting</source>
+        <translation>endoskopische Gefäßentnahme</translation>
+    </message>
+    <message>
+        <source>liver ablation</source>
+        <translation>Leberablation</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

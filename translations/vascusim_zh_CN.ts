@@ -3997,6 +3997,26 @@
         <source>interactive</source>
         <translation>交互</translation>
     </message>
+    <message>
+        <source>tumour</source>
+        <translation>肿瘤</translation>
+    </message>
+    <message>
+        <source>liver</source>
+        <translation>肝脏</translation>
+    </message>
+    <message>
+        <source>ball drop</source>
+        <translation>落球</translation>
+    </message>
+    <message>
+        <source>endoscopic vessel harvesting</source>
+        <translation>内镜下血管采集</translation>
+    </message>
+    <message>
+        <source>liver ablation</source>
+        <translation>肝脏消融</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

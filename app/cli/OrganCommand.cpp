@@ -72,9 +72,10 @@ int segmentOrgan(const Arguments& arguments, const Progress& progress)
     provenance.parameters = parameters.valuesAsText();
     provenance.parameters["organ"] = organ;
     provenance.parameters["points_mm"] = pointsText;
+    const std::string organName = organ == "tumour" ? storedText("tumour") : storedText("liver"); // translated when shown
     const std::string name = points.size() == 1
-                                 ? storedText(Pattern{"%1 (grown from one point)", {organ}})
-                                 : storedText(Pattern{"%1 (grown from %2 points)", {organ, std::to_string(points.size())}});
+                                 ? storedText(Pattern{"%1 (grown from one point)", {organName}})
+                                 : storedText(Pattern{"%1 (grown from %2 points)", {organName, std::to_string(points.size())}});
     const std::string id = study.addLabel(grown.label, name, provenance, grown.warnings);
     study.save();
     progress.report(1.0, "saved");

@@ -220,7 +220,7 @@ bool MainWindow::growOrganFromPoints(bool tumour)
             grown->warnings = lesion.warnings;
         },
         [this, imageId, liverId, points, grown, parameters, title] {
-            const std::string organ = liverId.empty() ? "liver" : "tumour";
+            const std::string organ = liverId.empty() ? storedText("liver") : storedText("tumour");
             study::Provenance provenance;
             provenance.command = "segment-organ";
             provenance.inputs = {imageId};
@@ -239,10 +239,10 @@ bool MainWindow::growOrganFromPoints(bool tumour)
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, title));
             statusBar()->showMessage(tr("%1 grown from %2 point(s): %3 ml; choose it as the %4 label in the Drug "
                                         "Delivery dock")
-                                         .arg(QString::fromStdString(organ))
+                                         .arg(QString::fromStdString(storedTextForPeople(organ)))
                                          .arg(points.size())
                                          .arg(viz::decimalText(grown->figures.at("volume_ml"), 1))
-                                         .arg(QString::fromStdString(organ)),
+                                         .arg(QString::fromStdString(storedTextForPeople(organ))),
                                      8000);
         });
 }

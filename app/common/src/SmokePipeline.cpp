@@ -60,6 +60,18 @@ std::string newestLiver(const study::Study& study)
     return found;
 }
 
+/// The scenario's name in the run's name (a stored text, translated when shown; the option's word otherwise).
+std::string scenarioTitle(const std::string& scenario)
+{
+    if (scenario == "ball-drop")
+        return storedText("ball drop");
+    if (scenario == "evh")
+        return storedText("endoscopic vessel harvesting");
+    if (scenario == "liver-ablation")
+        return storedText("liver ablation");
+    return scenario;
+}
+
 } // namespace
 
 SmokeSetup smokeSetup(const std::string& scenario)
@@ -164,7 +176,7 @@ std::string addSmokeRun(study::Study& study, const SmokeRun& run)
     if (const std::string status = runStatusWarning(run.run.status); !status.empty())
         warnings.insert(warnings.begin(), status);
     const std::string id = study.addRun(
-        run.run, storedText(Pattern{"Surgical smoke (%1, illustrative)", {run.scenario}}), provenance, warnings);
+        run.run, storedText(Pattern{"Surgical smoke (%1, illustrative)", {scenarioTitle(run.scenario)}}), provenance, warnings);
     std::map<std::string, std::string> attributes = runAttributes(run.run.metrics, run.run.status);
     nlohmann::json curve = nlohmann::json::array();
     for (const auto& [time, fraction] : run.obscuration)

@@ -18,10 +18,12 @@
 #include <vtkProperty.h>
 #include <vtkProperty2D.h>
 #include <vtkScalarBarActor.h>
+#include <vtkScalarsToColors.h>
 #include <vtkSphereSource.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTubeFilter.h>
+#include <vtkVariant.h>
 
 #include <algorithm>
 
@@ -157,6 +159,23 @@ vtkSmartPointer<vtkScalarBarActor> newLegend()
     legend->SetHeight(0.6);
     legend->GetTitleTextProperty()->SetFontSize(12);
     return legend;
+}
+
+void labelLegend(vtkScalarBarActor* legend, const std::function<std::string(double)>& text, int count)
+{
+    vtkScalarsToColors* table = legend->GetLookupTable();
+    if (!table || count < 2)
+        return;
+    const double* range = table->GetRange();
+    const double low = range[0], high = range[1];
+    table->ResetAnnotations();
+    for (int n = 0; n < count; ++n)
+    {
+        const double value = n + 1 == count ? high : low + (high - low) * n / (count - 1);
+        table->SetAnnotation(vtkVariant(value), text(value));
+    }
+    legend->DrawTickLabelsOff();
+    legend->DrawAnnotationsOn();
 }
 
 void lookFromFront(vtkCamera* camera, const Eigen::Vector3d& centre, double heightMm)

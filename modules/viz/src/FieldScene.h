@@ -11,6 +11,7 @@
 #include <vtkSmartPointer.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,12 @@ std::vector<vtkSmartPointer<vtkProp>> calloutProps(const std::vector<Callout>& c
 
 /// A vertical colour legend with five labels.
 vtkSmartPointer<vtkScalarBarActor> newLegend();
+
+/// Labels the legend with `count` numbers across its table's range, each written by `text`, so that they carry
+/// the reader's decimal mark: VTK prints tick labels with printf, which keeps the '.', so the numbers become the
+/// table's annotations (drawn at their values) and the tick labels are off. Call after SetLookupTable, and again
+/// when the table's range changes.
+void labelLegend(vtkScalarBarActor* legend, const std::function<std::string(double)>& text, int count = 5);
 
 /// Looks at `centre` (mm) from the patient's front (anterior is -y in LPS), superior up, in parallel projection
 /// showing `heightMm`.

@@ -3,6 +3,7 @@
 
 #include "FieldScene.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/Localized.h"
 
 #include <vtkActor.h>
 #include <vtkImageData.h>
@@ -17,6 +18,7 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -43,10 +45,17 @@ QImage render(vtkPolyData* polyData, bool cellScalars, const SnapshotColouring& 
     renderer->AddActor(actor);
     vtkSmartPointer<vtkScalarBarActor> legend = detail::newLegend();
     legend->SetLookupTable(mapper->GetLookupTable());
+    // The report's decimal mark (the thread's language: core Localized.h), not the window's.
+    detail::labelLegend(legend, [](double value) {
+        char printed[32];
+        std::snprintf(printed, sizeof printed, "%.3g", value);
+        return localizedNumber(printed);
+    });
     fitFontToText(legend->GetTitleTextProperty(), QString::fromStdString(colouring.legendTitle));
     legend->SetTitle(colouring.legendTitle.c_str());
     const int fontSize = std::max(12, pixels.height() / 40);
-    for (vtkTextProperty* text : {legend->GetTitleTextProperty(), legend->GetLabelTextProperty()})
+    for (vtkTextProperty* text :
+         {legend->GetTitleTextProperty(), legend->GetLabelTextProperty(), legend->GetAnnotationTextProperty()})
     {
         text->SetColor(0.0, 0.0, 0.0);
         text->SetFontSize(fontSize);
@@ -54,7 +63,6 @@ QImage render(vtkPolyData* polyData, bool cellScalars, const SnapshotColouring& 
         text->ItalicOff();
     }
     legend->UnconstrainedFontSizeOn();
-    legend->SetLabelFormat("%.3g");
     legend->SetPosition(0.86, 0.15);
     renderer->AddViewProp(legend);
     for (const vtkSmartPointer<vtkProp>& prop : detail::calloutProps(callouts, fontSize, pixels.width(), pixels.height()))

@@ -5,6 +5,7 @@
 #include "VolumeProperties.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/viz/DecimalText.h"
 #include "vsim/interop/VtkImage.h"
 #include "vsim/interop/VtkMesh.h"
 
@@ -28,6 +29,7 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkScalarsToColors.h>
 #include <vtkTextProperty.h>
 #include <vtkTubeFilter.h>
 #include <vtkUnsignedCharArray.h>
@@ -55,9 +57,14 @@ void showLegendIn(vtkRenderer* renderer, vtkSmartPointer<vtkScalarBarActor>& leg
     {
         legend = detail::newLegend();
         legend->SetPosition(x, 0.1);
+        // Its numbers are annotations (labelLegend), drawn on the side opposite the tick labels': inward, towards
+        // the view's middle.
+        if (x < 0.5)
+            legend->SetTextPositionToPrecedeScalarBar();
         renderer->AddViewProp(legend);
     }
     legend->SetLookupTable(table);
+    detail::labelLegend(legend, [](double value) { return significantText(value, 3).toStdString(); });
     fitFontToText(legend->GetTitleTextProperty(), title);
     legend->SetTitle(title.toUtf8().constData());
     legend->SetVisibility(true);
@@ -271,6 +278,18 @@ void VolumeView3D::setFieldSurfaceOpacity(double opacity)
 }
 
 QString VolumeView3D::surfaceLegendTitle() const { return m_scene->surfaceLegendTitle; }
+
+QStringList VolumeView3D::legendLabels(bool surface) const
+{
+    vtkScalarBarActor* legend = surface ? m_scene->surfaceLegend : m_scene->legend;
+    QStringList labels;
+    if (!legend || !legend->GetVisibility() || !legend->GetLookupTable())
+        return labels;
+    vtkScalarsToColors* table = legend->GetLookupTable();
+    for (vtkIdType n = 0; n < table->GetNumberOfAnnotatedValues(); ++n)
+        labels << QString::fromStdString(table->GetAnnotation(n));
+    return labels;
+}
 
 void VolumeView3D::showLegend(vtkScalarsToColors* table, const QString& title)
 {

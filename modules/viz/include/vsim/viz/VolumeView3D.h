@@ -8,6 +8,7 @@
 
 #include <QColor>
 #include <QString>
+#include <QStringList>
 
 #include <array>
 #include <optional>
@@ -48,6 +49,9 @@ public:
     QString legendTitle() const;
     /// The coloured surface's legend title, empty when none is shown.
     QString surfaceLegendTitle() const;
+    /// The numbers on the legend on the right (lines, points, volumes) or, with `surface`, on the left, bottom to
+    /// top, in the reader's decimal mark (DecimalText.h); empty when that legend is not shown.
+    QStringList legendLabels(bool surface = false) const;
     /// Opacity of the coloured surface (0..1): lowered so that particles inside show through.
     void setFieldSurfaceOpacity(double opacity);
     /// Opacity of every surface (0..1): lowered so that skeletons and centerlines inside show through.
