@@ -49,10 +49,11 @@ double median(std::vector<double> values)
 /// An estimate of the compulsory traffic, not a count of the caches' misses.
 double leastBytesPerCell(int substeps, int iterations)
 {
-    // The finest level's V-cycle: the first pass from x = 0 (b and the codes read, x written: 9), seven more half
-    // passes (x, half of b and of the codes read, half of x written: 8.5), the residual's restriction (b, x, the
-    // codes; an eighth written: 9.5), the prolongation (x read and written, the codes, an eighth read: 9.5).
-    const double vcycle = (9 + 7 * 8.5 + 9.5 + 9.5) * 8.0 / 7.0;
+    // The finest level's V-cycle (its cells stored by colour): the first pass from x = 0 (b and the codes read, x
+    // written: 9), seven more half passes (the other colour's x, this colour's b and codes read, its x written:
+    // 6.5), the residual's restriction (b, x, the codes; an eighth written: 9.5), the prolongation (x read and
+    // written, the codes, an eighth read: 9.5).
+    const double vcycle = (9 + 7 * 6.5 + 9.5 + 9.5) * 8.0 / 7.0;
     const double advection = 24 + 48 + 16 + 29.0 * substeps + 17 + 12;   // copies, 3 lattices, start, sweeps, clamp, maxima
     const double forces = 8 + 17 + 95;                                    // cooling, buoyancy, vorticity and confinement
     // The right side 18, |b| 4, the true residual twice (13, |r| 4), the first V-cycle, p = z 8, r . z 8, the

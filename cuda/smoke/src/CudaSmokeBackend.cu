@@ -55,10 +55,12 @@ struct CudaSmokeBackend::Device
     struct Level
     {
         int nx = 0, ny = 0, nz = 0;
-        Buffer<std::uint8_t> fluid, ambient, code; // code: SmokeKernels.cuh's LevelView
+        bool byColour = false; // the finest level's cells by colour (SmokeKernels.cuh's LevelView)
+        Buffer<std::uint8_t> fluid, ambient, code; // each in the level's slots
         Buffer<float> x, b;
-        LevelView view() const { return {nx, ny, nz, code.data}; }
+        LevelView view() const { return {nx, ny, nz, code.data, byColour}; }
         std::size_t cells() const { return std::size_t(nx) * ny * nz; }
+        std::size_t slots() const { return view().slots(); }
     };
 
     GridView g;
@@ -82,12 +84,12 @@ struct CudaSmokeBackend::Device
     /// The operator's hierarchy for the solids now (PoissonMultigrid::prepare).
     void prepareMultigrid()
     {
-        std::vector<int> dims = {g.nx, g.ny, g.nz};
         if (levels.empty() || levels.front().nx != g.nx || levels.front().ny != g.ny || levels.front().nz != g.nz)
         {
             levels.clear();
             levels.emplace_back();
             levels.back().nx = g.nx, levels.back().ny = g.ny, levels.back().nz = g.nz;
+            levels.back().byColour = true;
             while (levels.back().cells() > kCoarsestCells)
             {
                 const Level& fine = levels.back();
@@ -99,21 +101,21 @@ struct CudaSmokeBackend::Device
             }
             for (Level& level : levels)
             {
-                const std::size_t n = level.cells();
+                const std::size_t n = level.slots();
                 level.fluid.zero(n), level.ambient.zero(n), level.code.zero(n);
                 level.x.zero(n), level.b.zero(n);
             }
         }
-        finestFlags(g, levels[0].fluid.data, levels[0].ambient.data);
+        finestFlags(g, levels[0].view(), levels[0].fluid.data, levels[0].ambient.data);
         for (std::size_t d = 1; d < levels.size(); ++d)
         {
             const Level &fine = levels[d - 1];
             Level& coarse = levels[d];
-            coarsenFlags(fine.nx, fine.ny, fine.nz, fine.fluid.data, fine.ambient.data, coarse.nx, coarse.ny, coarse.nz,
-                         coarse.fluid.data, coarse.ambient.data);
+            coarsenFlags(fine.view(), fine.fluid.data, fine.ambient.data, coarse.view(), coarse.fluid.data,
+                         coarse.ambient.data);
         }
         for (Level& level : levels)
-            levelCodes(level.nx, level.ny, level.nz, level.fluid.data, level.ambient.data, g.open, level.code.data);
+            levelCodes(level.view(), level.fluid.data, level.ambient.data, g.open, level.code.data);
         singular = std::none_of(g.open, g.open + 6, [](std::uint8_t o) { return o != 0; }) && !hasVent;
         prepared = true;
     }
@@ -143,7 +145,7 @@ struct CudaSmokeBackend::Device
         if (!singular)
             return;
         double sum = 0.0, count = 0.0;
-        sumOnFluid(x, levels[0].fluid.data, levels[0].cells(), scratch.data, sum, count);
+        sumOnFluid(x, levels[0].fluid.data, levels[0].slots(), scratch.data, sum, count);
         subtractOnFluid(levels[0].view(), x, count > 0.0 ? float(sum / count) : 0.0f);
     }
 
@@ -156,7 +158,7 @@ struct CudaSmokeBackend::Device
     /// r = b - A psi (null space removed); returns ||r||.
     double trueResidual()
     {
-        const std::size_t n = g.cells();
+        const std::size_t n = levels[0].slots();
         residualOf(levels[0].view(), b.data, psi.data, r.data);
         removeNullSpace(r.data);
         return std::sqrt(dot(r.data, r.data, n, scratch.data));
@@ -176,7 +178,8 @@ CudaSmokeBackend::CudaSmokeBackend(const host::SmokeGrid& grid) : m_device(std::
     for (int f = 0; f < 6; ++f)
         d.g.open[f] = grid.boundaries[std::size_t(f)] == host::DomainBoundary::Open;
     d.scratch.zero(2);
-    d.partials.zero(partialCount(grid.nx, grid.ny, grid.nz));
+    d.partials.zero(std::max(partialCount(LevelView{grid.nx, grid.ny, grid.nz, nullptr, true}),
+                             partialCount(LevelView{grid.nx, grid.ny, grid.nz, nullptr, false})));
     d.changed.zero(1);
 }
 
@@ -207,8 +210,11 @@ void CudaSmokeBackend::upload(const host::SmokeGrid& grid)
     ensure(d.forward, largestLattice), ensure(d.start, 2 * cells);
     ensure(d.spareDensity, cells), ensure(d.spareTemperature, cells);
     ensure(d.force, 3 * cells), ensure(d.omega, 3 * cells), ensure(d.magnitude, cells);
-    for (Buffer<float>* work : {&d.psi, &d.b, &d.r, &d.z, &d.p, &d.q, &d.left})
-        ensure(*work, cells);
+    // The projection's vectors in the finest level's slots (by colour); the divergence left x fastest.
+    const std::size_t slots = LevelView{grid.nx, grid.ny, grid.nz, nullptr, true}.slots();
+    for (Buffer<float>* work : {&d.psi, &d.b, &d.r, &d.z, &d.p, &d.q})
+        ensure(*work, slots);
+    ensure(d.left, cells);
     d.bind();
     d.prepared = false; // the solids may differ from the last upload
 }
@@ -343,10 +349,10 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
     Device& d = *m_device;
     if (!d.prepared)
         d.prepareMultigrid();
-    const std::size_t n = grid.cells();
+    const std::size_t n = d.levels[0].slots(), cells = grid.cells();
     const float* sink = withSink && d.haveSink ? d.sink.data : nullptr;
     applySolidBoundaries(d.g, d.anySolid);
-    projectionRightSide(d.g, d.levels[0].fluid.data, sink, d.b.data, d.psi.data);
+    projectionRightSide(d.g, d.levels[0].view(), d.levels[0].fluid.data, sink, d.b.data, d.psi.data);
     d.removeNullSpace(d.b.data);
     host::ProjectionReport report;
     const double bNorm = std::sqrt(dot(d.b.data, d.b.data, n, d.scratch.data));
@@ -394,9 +400,9 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
         report.relativeResidual = d.trueResidual() / bNorm;
     }
     report.converged = report.relativeResidual <= tolerance;
-    correctVelocity(d.g, d.psi.data);
+    correctVelocity(d.g, d.levels[0].view(), d.psi.data);
     divergenceLeft(d.g, sink, d.left.data);
-    report.maxDivergence = maxAbs(d.left.data, n, nullptr, 0, nullptr, 0, d.scratch.data);
+    report.maxDivergence = maxAbs(d.left.data, cells, nullptr, 0, nullptr, 0, d.scratch.data);
     const double speed = maxSpeed(grid);
     report.divergenceRatio = speed > 0.0 ? report.maxDivergence * grid.h / speed : 0.0;
     return report;

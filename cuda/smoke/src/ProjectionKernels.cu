@@ -94,16 +94,16 @@ __device__ float divergenceAt(const GridView& g, unsigned c, int i, int j, int k
     return inverse * (g.u[ux + 1] - g.u[ux] + g.v[vy + unsigned(g.nx)] - g.v[vy] + g.w[c + unsigned(g.nx) * unsigned(g.ny)] - g.w[c]);
 }
 
-__global__ void rightSideKernel(GridView g, const std::uint8_t* fluid, const float* sink, float* b, float* psi)
+__global__ void rightSideKernel(GridView g, LevelView finest, const std::uint8_t* fluid, const float* sink, float* b, float* psi)
 {
     int i, j, k;
     if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
         return;
-    const unsigned c = nodeIndex(i, j, k, g.nx, g.ny);
-    if (!fluid[c])
-        psi[c] = 0.0f;
+    const unsigned c = nodeIndex(i, j, k, g.nx, g.ny), s = finest.slot(i, j, k);
+    if (!fluid[s])
+        psi[s] = 0.0f;
     const float div = g.solid[c] ? 0.0f : divergenceAt(g, c, i, j, k, float(1.0 / g.h));
-    b[c] = float(-g.h * g.h) * (div - (sink ? sink[c] : 0.0f));
+    b[s] = float(-g.h * g.h) * (div - (sink ? sink[c] : 0.0f));
 }
 
 __global__ void divergenceLeftKernel(GridView g, const float* sink, float* out)
@@ -123,7 +123,7 @@ __device__ int sideOf(const GridView& g, unsigned c)
 }
 
 template <int axis>
-__global__ void correctKernel(GridView g, const float* psi)
+__global__ void correctKernel(GridView g, LevelView finest, const float* psi)
 {
     unsigned f;
     FaceSite site;
@@ -134,7 +134,9 @@ __global__ void correctKernel(GridView g, const float* psi)
     const unsigned low = at > 0 ? nodeIndex(i - (axis == 0), j - (axis == 1), k - (axis == 2), g.nx, g.ny) : 0;
     const int lowSide = at > 0 ? sideOf(g, low) : (g.open[2 * axis] ? 2 : 0);
     const int highSide = at < n ? sideOf(g, high) : (g.open[2 * axis + 1] ? 2 : 0);
-    const float psiHigh = psi[high], psiLow = psi[low]; // loaded with the kinds, not after them (0: a valid cell)
+    // psi loaded with the kinds, not after them (slot 0 stands in for a cell outside: a valid place to read).
+    const float psiHigh = psi[at < n ? finest.slot(i, j, k) : 0];
+    const float psiLow = psi[at > 0 ? finest.slot(i - (axis == 0), j - (axis == 1), k - (axis == 2)) : 0];
     if ((lowSide == 1 && highSide != 0) || (highSide == 1 && lowSide != 0))
     {
         float* face = axis == 0 ? g.u : axis == 1 ? g.v : g.w;
@@ -144,26 +146,29 @@ __global__ void correctKernel(GridView g, const float* psi)
 
 // ---- the operator's levels
 
-__global__ void finestFlagsKernel(GridView g, std::uint8_t* fluid, std::uint8_t* ambient)
+__global__ void finestFlagsKernel(GridView g, LevelView finest, std::uint8_t* fluid, std::uint8_t* ambient)
 {
-    const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (c < g.cells())
-        fluid[c] = g.solid[c] == kFluid, ambient[c] = g.solid[c] == kVent;
+    int i, j, k;
+    if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
+        return;
+    const std::uint8_t kind = g.solid[nodeIndex(i, j, k, g.nx, g.ny)];
+    const unsigned s = finest.slot(i, j, k);
+    fluid[s] = kind == kFluid, ambient[s] = kind == kVent;
 }
 
-__global__ void coarsenKernel(int fx, int fy, int fz, const std::uint8_t* fineFluid, const std::uint8_t* fineAmbient, int cx,
-                              int cy, int cz, std::uint8_t* fluid, std::uint8_t* ambient)
+__global__ void coarsenKernel(LevelView fine, const std::uint8_t* fineFluid, const std::uint8_t* fineAmbient, LevelView coarse,
+                              std::uint8_t* fluid, std::uint8_t* ambient)
 {
     int I, J, K;
-    if (!threadNode(cx, cy, cz, I, J, K))
+    if (!threadNode(coarse.nx, coarse.ny, coarse.nz, I, J, K))
         return;
-    const unsigned c = nodeIndex(I, J, K, cx, cy);
+    const unsigned c = coarse.slot(I, J, K);
     bool anyFluid = false, anyAmbient = false;
-    for (int k = 2 * K; k < min(2 * K + 2, fz); ++k)
-        for (int j = 2 * J; j < min(2 * J + 2, fy); ++j)
-            for (int i = 2 * I; i < min(2 * I + 2, fx); ++i)
+    for (int k = 2 * K; k < min(2 * K + 2, fine.nz); ++k)
+        for (int j = 2 * J; j < min(2 * J + 2, fine.ny); ++j)
+            for (int i = 2 * I; i < min(2 * I + 2, fine.nx); ++i)
             {
-                const unsigned child = nodeIndex(i, j, k, fx, fy);
+                const unsigned child = fine.slot(i, j, k);
                 anyFluid = anyFluid || fineFluid[child];
                 anyAmbient = anyAmbient || (!fineFluid[child] && fineAmbient[child]);
             }
@@ -176,13 +181,14 @@ struct OpenFaces
     std::uint8_t open[6];
 };
 
-__global__ void codeKernel(int nx, int ny, int nz, const std::uint8_t* fluid, const std::uint8_t* ambient, OpenFaces faces,
+__global__ void codeKernel(LevelView level, const std::uint8_t* fluid, const std::uint8_t* ambient, OpenFaces faces,
                            std::uint8_t* code)
 {
+    const int nx = level.nx, ny = level.ny, nz = level.nz;
     int i, j, k;
     if (!threadNode(nx, ny, nz, i, j, k))
         return;
-    const unsigned c = nodeIndex(i, j, k, nx, ny);
+    const unsigned c = level.slot(i, j, k);
     if (!fluid[c])
     {
         code[c] = 0;
@@ -197,7 +203,7 @@ __global__ void codeKernel(int nx, int ny, int nz, const std::uint8_t* fluid, co
             count += faces.open[f] ? 1 : 0;
         else
         {
-            const unsigned n = nodeIndex(a, b, d, nx, ny);
+            const unsigned n = level.slot(a, b, d);
             count += fluid[n] || ambient[n] ? 1 : 0;
         }
     }
@@ -213,14 +219,29 @@ struct Neighbourhood
 
 __device__ Neighbourhood neighbourhood(const LevelView& level, unsigned c, int i, int j, int k, const float* __restrict__ x)
 {
-    const unsigned row = unsigned(level.nx), slab = row * unsigned(level.ny);
+    // The neighbours' slots from c's, without level.slot's products: x fastest, they are c -+ 1, -+ a row, -+ a
+    // slab; by colour they hold the other colour, whose slot of (i, j, k) is c -+ colourSlots, their x-neighbours
+    // at (i -+ 1) / 2 of that row (each read only where it exists).
+    unsigned west, east, row, slab, other;
+    if (level.byColour)
+    {
+        const unsigned colourSlots = level.colourSlots(), t = unsigned(i >> 1);
+        other = c >= colourSlots ? c - colourSlots : c + colourSlots;
+        west = other - t + unsigned((i - 1) >> 1), east = other - t + unsigned((i + 1) >> 1);
+        row = level.half(), slab = row * unsigned(level.ny);
+    }
+    else
+    {
+        other = c, west = c - 1, east = c + 1;
+        row = unsigned(level.nx), slab = row * unsigned(level.ny);
+    }
     return {x[c],
-            i > 0 ? x[c - 1] : 0.0f,
-            i + 1 < level.nx ? x[c + 1] : 0.0f,
-            j > 0 ? x[c - row] : 0.0f,
-            j + 1 < level.ny ? x[c + row] : 0.0f,
-            k > 0 ? x[c - slab] : 0.0f,
-            k + 1 < level.nz ? x[c + slab] : 0.0f};
+            i > 0 ? x[west] : 0.0f,
+            i + 1 < level.nx ? x[east] : 0.0f,
+            j > 0 ? x[other - row] : 0.0f,
+            j + 1 < level.ny ? x[other + row] : 0.0f,
+            k > 0 ? x[other - slab] : 0.0f,
+            k + 1 < level.nz ? x[other + slab] : 0.0f};
 }
 
 /// (A x)_c at cell c = (i, j, k), 0 outside the fluid (the terms in PoissonMultigrid.cpp's order).
@@ -246,27 +267,78 @@ __device__ float applyAt(const LevelView& level, unsigned c, int i, int j, int k
     return sum;
 }
 
+/// The cells one thread of launchCells(level) takes: x fastest, one; by colour, the red and the black cell at
+/// place t of their rows (i = 2t and 2t + 1), so that a warp reads and writes runs of each colour's slots and a
+/// thread has two cells' loads in flight. Each kernel below computes its cells' values first and stores them after.
+struct ThreadCells
+{
+    int count = 0, j = 0, k = 0;
+    int i[2] = {0, 0};
+    unsigned slot[2] = {0, 0};
+};
+
+__device__ bool threadCells(const LevelView& level, ThreadCells& cells)
+{
+    if (!level.byColour)
+    {
+        if (!threadNode(level.nx, level.ny, level.nz, cells.i[0], cells.j, cells.k))
+            return false;
+        cells.count = 1, cells.slot[0] = level.slot(cells.i[0], cells.j, cells.k);
+        return true;
+    }
+    int t;
+    if (!threadNode(int(level.half()), level.ny, level.nz, t, cells.j, cells.k))
+        return false;
+    const unsigned place = unsigned(t) + level.half() * (unsigned(cells.j) + unsigned(level.ny) * unsigned(cells.k));
+#pragma unroll
+    for (int colour = 0; colour < 2; ++colour)
+    {
+        const int i = 2 * t + ((cells.j + cells.k + colour) & 1);
+        if (i < level.nx)
+            cells.i[cells.count] = i, cells.slot[cells.count] = unsigned(colour) * level.colourSlots() + place, ++cells.count;
+    }
+    return true;
+}
+
+/// The launch for ThreadCells: over the level's cells, or by colour over (half, ny, nz), two cells a thread.
+LatticeLaunch launchCells(const LevelView& level)
+{
+    return level.byColour ? launchOver(int(level.half()), level.ny, level.nz) : launchOver(level.nx, level.ny, level.nz);
+}
+
 /// r = b - A x (the same floats as A x first, then the difference).
 __global__ void residualKernel(LevelView level, const float* __restrict__ b, const float* __restrict__ x, float* __restrict__ r)
 {
-    int i, j, k;
-    if (!threadNode(level.nx, level.ny, level.nz, i, j, k))
+    ThreadCells cells;
+    if (!threadCells(level, cells))
         return;
-    const unsigned c = nodeIndex(i, j, k, level.nx, level.ny);
-    r[c] = b[c] - applyAt(level, c, i, j, k, x);
+    float value[2];
+#pragma unroll
+    for (int n = 0; n < 2; ++n)
+        if (n < cells.count)
+            value[n] = b[cells.slot[n]] - applyAt(level, cells.slot[n], cells.i[n], cells.j, cells.k, x);
+#pragma unroll
+    for (int n = 0; n < 2; ++n)
+        if (n < cells.count)
+            r[cells.slot[n]] = value[n];
 }
 
 /// y = A x, and each block's sum of x . y in partials[its place] (every thread reaches the block's sum).
 __global__ void applyDotKernel(LevelView level, const float* __restrict__ x, float* __restrict__ y, double* partials)
 {
-    int i, j, k;
+    ThreadCells cells;
     double product = 0.0;
-    if (threadNode(level.nx, level.ny, level.nz, i, j, k))
+    if (threadCells(level, cells))
     {
-        const unsigned c = nodeIndex(i, j, k, level.nx, level.ny);
-        const float value = applyAt(level, c, i, j, k, x);
-        y[c] = value;
-        product = double(x[c]) * double(value);
+        float value[2], own[2];
+#pragma unroll
+        for (int n = 0; n < 2; ++n)
+            if (n < cells.count)
+                value[n] = applyAt(level, cells.slot[n], cells.i[n], cells.j, cells.k, x), own[n] = x[cells.slot[n]];
+#pragma unroll
+        for (int n = 0; n < 2; ++n)
+            if (n < cells.count)
+                y[cells.slot[n]] = value[n], product += double(own[n]) * double(value[n]);
     }
     product = blockSum(product);
     if (threadInBlock() == 0)
@@ -305,7 +377,7 @@ __global__ void smoothKernel(LevelView level, float* __restrict__ x, const float
         return;
     const int i = 2 * t + (j + k + colour) % 2;
     if (i < level.nx)
-        relax(level, nodeIndex(i, j, k, level.nx, level.ny), i, j, k, x, b);
+        relax(level, level.slot(i, j, k), i, j, k, x, b);
 }
 
 /// The first pass of colour `colour` from x = 0, over every cell: a relaxed cell of that colour has no neighbour
@@ -313,13 +385,23 @@ __global__ void smoothKernel(LevelView level, float* __restrict__ x, const float
 /// takes 0. It stands for zeroing x and that pass (one write of x, no read of it).
 __global__ void smoothFromZeroKernel(LevelView level, float* __restrict__ x, const float* __restrict__ b, int colour)
 {
-    int i, j, k;
-    if (!threadNode(level.nx, level.ny, level.nz, i, j, k))
+    ThreadCells cells;
+    if (!threadCells(level, cells))
         return;
-    const unsigned c = nodeIndex(i, j, k, level.nx, level.ny);
-    const int diagonal = diagonalOf(level.code[c]);
-    const float rhs = b[c];
-    x[c] = (i + j + k + colour) % 2 == 0 && diagonal != 0 ? (rhs + 0.0f) / float(diagonal) : 0.0f;
+    float value[2];
+#pragma unroll
+    for (int n = 0; n < 2; ++n)
+        if (n < cells.count)
+        {
+            const int diagonal = diagonalOf(level.code[cells.slot[n]]);
+            const float rhs = b[cells.slot[n]];
+            value[n] = (cells.i[n] + cells.j + cells.k + colour) % 2 == 0 && diagonal != 0 ? (rhs + 0.0f) / float(diagonal)
+                                                                                          : 0.0f;
+        }
+#pragma unroll
+    for (int n = 0; n < 2; ++n)
+        if (n < cells.count)
+            x[cells.slot[n]] = value[n];
 }
 
 /// The coarsest level's sweeps in one block. With `inShared` the level (x, b, its codes: 9 bytes a cell) is
@@ -328,19 +410,19 @@ __global__ void smoothFromZeroKernel(LevelView level, float* __restrict__ x, con
 __global__ void coarsestKernel(LevelView global, float* globalX, const float* globalB, int sweeps, bool inShared)
 {
     extern __shared__ float shared[];
-    const std::size_t cells = global.cells();
+    const std::size_t cells = global.cells(), slots = global.slots();
     LevelView level = global;
     float* x = globalX;
     const float* b = globalB;
     if (inShared)
     {
-        float* sharedB = shared + cells;
-        std::uint8_t* codes = reinterpret_cast<std::uint8_t*>(shared + 2 * cells);
-        for (std::size_t c = threadIdx.x; c < cells; c += blockDim.x)
+        float* sharedB = shared + slots;
+        std::uint8_t* codes = reinterpret_cast<std::uint8_t*>(shared + 2 * slots);
+        for (std::size_t c = threadIdx.x; c < slots; c += blockDim.x)
             sharedB[c] = globalB[c], codes[c] = global.code[c];
         x = shared, b = sharedB, level.code = codes;
     }
-    for (std::size_t c = threadIdx.x; c < cells; c += blockDim.x)
+    for (std::size_t c = threadIdx.x; c < slots; c += blockDim.x)
         x[c] = 0.0f;
     const bool oneEach = cells <= blockDim.x;
     int mine[3] = {0, 0, 0};
@@ -355,7 +437,7 @@ __global__ void coarsestKernel(LevelView global, float* globalX, const float* gl
                 if (oneEach)
                 {
                     if (threadIdx.x < cells && (mine[0] + mine[1] + mine[2] + colour) % 2 == 0)
-                        relax(level, threadIdx.x, mine[0], mine[1], mine[2], x, b);
+                        relax(level, level.slot(mine[0], mine[1], mine[2]), mine[0], mine[1], mine[2], x, b);
                 }
                 else
                     for (std::size_t c = threadIdx.x; c < cells; c += blockDim.x)
@@ -363,12 +445,12 @@ __global__ void coarsestKernel(LevelView global, float* globalX, const float* gl
                         int i, j, k;
                         unpack(c, level.nx, level.ny, i, j, k);
                         if ((i + j + k + colour) % 2 == 0)
-                            relax(level, unsigned(c), i, j, k, x, b);
+                            relax(level, level.slot(i, j, k), i, j, k, x, b);
                     }
                 __syncthreads();
             }
     if (inShared)
-        for (std::size_t c = threadIdx.x; c < cells; c += blockDim.x)
+        for (std::size_t c = threadIdx.x; c < slots; c += blockDim.x)
             globalX[c] = x[c];
 }
 
@@ -385,29 +467,39 @@ __global__ void restrictResidualKernel(LevelView fine, const float* __restrict__
         for (int j = 2 * J; j < min(2 * J + 2, fine.ny); ++j)
             for (int i = 2 * I; i < min(2 * I + 2, fine.nx); ++i)
             {
-                const unsigned f = nodeIndex(i, j, k, fine.nx, fine.ny);
+                const unsigned f = fine.slot(i, j, k);
                 const float residual = b[f] - applyAt(fine, f, i, j, k, x);
                 if (fine.code[f])
                     sum += residual;
             }
-    coarseB[nodeIndex(I, J, K, coarse.nx, coarse.ny)] = 0.5f * sum;
+    coarseB[coarse.slot(I, J, K)] = 0.5f * sum;
 }
 
 __global__ void prolongKernel(LevelView fine, float* __restrict__ x, LevelView coarse, const float* __restrict__ coarseX)
 {
-    int i, j, k;
-    if (!threadNode(fine.nx, fine.ny, fine.nz, i, j, k))
+    ThreadCells cells;
+    if (!threadCells(fine, cells))
         return;
-    const unsigned c = nodeIndex(i, j, k, fine.nx, fine.ny);
-    const float value = x[c], correction = coarseX[nodeIndex(i / 2, j / 2, k / 2, coarse.nx, coarse.ny)];
-    if (fine.code[c])
-        x[c] = value + correction;
+    float value[2];
+    bool fluid[2];
+#pragma unroll
+    for (int n = 0; n < 2; ++n)
+        if (n < cells.count)
+        {
+            const unsigned c = cells.slot[n];
+            value[n] = x[c] + coarseX[coarse.slot(cells.i[n] / 2, cells.j / 2, cells.k / 2)];
+            fluid[n] = fine.code[c] != 0;
+        }
+#pragma unroll
+    for (int n = 0; n < 2; ++n)
+        if (n < cells.count && fluid[n])
+            x[cells.slot[n]] = value[n];
 }
 
 __global__ void subtractKernel(LevelView level, float* x, float mean)
 {
     const std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    if (c < level.cells() && level.code[c])
+    if (c < level.slots() && level.code[c])
         x[c] -= mean;
 }
 
@@ -452,18 +544,19 @@ void applySolidBoundaries(const GridView& g, bool anySolid)
     solidBoundaryKernel<2><<<w.blocks, w.threads>>>(g);
 }
 
-void projectionRightSide(const GridView& g, const std::uint8_t* fluid, const float* sink, float* b, float* psi)
+void projectionRightSide(const GridView& g, const LevelView& finest, const std::uint8_t* fluid, const float* sink, float* b,
+                         float* psi)
 {
     const LatticeLaunch cells = launchOver(g.nx, g.ny, g.nz);
-    rightSideKernel<<<cells.blocks, cells.threads>>>(g, fluid, sink, b, psi);
+    rightSideKernel<<<cells.blocks, cells.threads>>>(g, finest, fluid, sink, b, psi);
 }
 
-void correctVelocity(const GridView& g, const float* psi)
+void correctVelocity(const GridView& g, const LevelView& finest, const float* psi)
 {
     const LatticeLaunch u = launchOver(latticeOf(g, 0)), v = launchOver(latticeOf(g, 1)), w = launchOver(latticeOf(g, 2));
-    correctKernel<0><<<u.blocks, u.threads>>>(g, psi);
-    correctKernel<1><<<v.blocks, v.threads>>>(g, psi);
-    correctKernel<2><<<w.blocks, w.threads>>>(g, psi);
+    correctKernel<0><<<u.blocks, u.threads>>>(g, finest, psi);
+    correctKernel<1><<<v.blocks, v.threads>>>(g, finest, psi);
+    correctKernel<2><<<w.blocks, w.threads>>>(g, finest, psi);
 }
 
 void divergenceLeft(const GridView& g, const float* sink, float* out)
@@ -472,31 +565,32 @@ void divergenceLeft(const GridView& g, const float* sink, float* out)
     divergenceLeftKernel<<<cells.blocks, cells.threads>>>(g, sink, out);
 }
 
-void finestFlags(const GridView& g, std::uint8_t* fluid, std::uint8_t* ambient)
+void finestFlags(const GridView& g, const LevelView& finest, std::uint8_t* fluid, std::uint8_t* ambient)
 {
-    finestFlagsKernel<<<blocksFor(g.cells()), kBlock>>>(g, fluid, ambient);
+    const LatticeLaunch cells = launchOver(g.nx, g.ny, g.nz);
+    finestFlagsKernel<<<cells.blocks, cells.threads>>>(g, finest, fluid, ambient);
 }
 
-void coarsenFlags(int fx, int fy, int fz, const std::uint8_t* fineFluid, const std::uint8_t* fineAmbient, int cx, int cy,
-                  int cz, std::uint8_t* fluid, std::uint8_t* ambient)
+void coarsenFlags(const LevelView& fine, const std::uint8_t* fineFluid, const std::uint8_t* fineAmbient,
+                  const LevelView& coarse, std::uint8_t* fluid, std::uint8_t* ambient)
 {
-    const LatticeLaunch coarse = launchOver(cx, cy, cz);
-    coarsenKernel<<<coarse.blocks, coarse.threads>>>(fx, fy, fz, fineFluid, fineAmbient, cx, cy, cz, fluid, ambient);
+    const LatticeLaunch cells = launchOver(coarse.nx, coarse.ny, coarse.nz);
+    coarsenKernel<<<cells.blocks, cells.threads>>>(fine, fineFluid, fineAmbient, coarse, fluid, ambient);
 }
 
-void levelCodes(int nx, int ny, int nz, const std::uint8_t* fluid, const std::uint8_t* ambient, const std::uint8_t open[6],
+void levelCodes(const LevelView& level, const std::uint8_t* fluid, const std::uint8_t* ambient, const std::uint8_t open[6],
                 std::uint8_t* code)
 {
     OpenFaces faces;
     for (int f = 0; f < 6; ++f)
         faces.open[f] = open[f];
-    const LatticeLaunch cells = launchOver(nx, ny, nz);
-    codeKernel<<<cells.blocks, cells.threads>>>(nx, ny, nz, fluid, ambient, faces, code);
+    const LatticeLaunch cells = launchOver(level.nx, level.ny, level.nz);
+    codeKernel<<<cells.blocks, cells.threads>>>(level, fluid, ambient, faces, code);
 }
 
 void residualOf(const LevelView& level, const float* b, const float* x, float* r)
 {
-    const LatticeLaunch cells = launchOver(level.nx, level.ny, level.nz);
+    const LatticeLaunch cells = launchCells(level);
     residualKernel<<<cells.blocks, cells.threads>>>(level, b, x, r);
 }
 
@@ -509,7 +603,7 @@ void smoothLevel(const LevelView& level, float* x, const float* b, int colourFir
 
 void smoothLevelFromZero(const LevelView& level, float* x, const float* b, int colourFirst)
 {
-    const LatticeLaunch cells = launchOver(level.nx, level.ny, level.nz);
+    const LatticeLaunch cells = launchCells(level);
     smoothFromZeroKernel<<<cells.blocks, cells.threads>>>(level, x, b, colourFirst);
     const LatticeLaunch half = launchOver((level.nx + 1) / 2, level.ny, level.nz);
     smoothKernel<<<half.blocks, half.threads>>>(level, x, b, (colourFirst + 1) % 2);
@@ -518,7 +612,7 @@ void smoothLevelFromZero(const LevelView& level, float* x, const float* b, int c
 void solveCoarsest(const LevelView& level, float* x, const float* b, int sweeps)
 {
     constexpr std::size_t kSharedBytes = 40 * 1024; // within the 48 KiB a block has without opting in
-    const std::size_t bytes = level.cells() * (2 * sizeof(float) + 1);
+    const std::size_t bytes = level.slots() * (2 * sizeof(float) + 1);
     const bool inShared = bytes <= kSharedBytes;
     coarsestKernel<<<1, 1024, inShared ? bytes : 0>>>(level, x, b, sweeps, inShared);
 }
@@ -531,13 +625,13 @@ void restrictResidual(const LevelView& fine, const float* b, const float* x, con
 
 void prolongCorrection(const LevelView& fine, float* x, const LevelView& coarse, const float* coarseX)
 {
-    const LatticeLaunch cells = launchOver(fine.nx, fine.ny, fine.nz);
+    const LatticeLaunch cells = launchCells(fine);
     prolongKernel<<<cells.blocks, cells.threads>>>(fine, x, coarse, coarseX);
 }
 
 void subtractOnFluid(const LevelView& level, float* x, float mean)
 {
-    subtractKernel<<<blocksFor(level.cells()), kBlock>>>(level, x, mean);
+    subtractKernel<<<blocksFor(level.slots()), kBlock>>>(level, x, mean);
 }
 
 double updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r, double* scratch)
@@ -547,17 +641,17 @@ double updateSolution(std::size_t n, float alpha, const float* p, const float* q
     return fetchScalar(scratch);
 }
 
-std::size_t partialCount(int nx, int ny, int nz)
+std::size_t partialCount(const LevelView& level)
 {
-    const LatticeLaunch cells = launchOver(nx, ny, nz);
+    const LatticeLaunch cells = launchCells(level);
     return std::size_t(cells.blocks.x) * cells.blocks.y * cells.blocks.z;
 }
 
 double applyLevelDot(const LevelView& level, const float* x, float* y, double* partials, double* scratch)
 {
-    const LatticeLaunch cells = launchOver(level.nx, level.ny, level.nz);
+    const LatticeLaunch cells = launchCells(level);
     applyDotKernel<<<cells.blocks, cells.threads>>>(level, x, y, partials);
-    return sumPartials(partials, unsigned(partialCount(level.nx, level.ny, level.nz)), scratch);
+    return sumPartials(partials, unsigned(partialCount(level)), scratch);
 }
 
 void updateDirection(std::size_t n, float beta, const float* z, float* p)

@@ -52,11 +52,7 @@ void seedParticles(const GridView& g, const double* places, int count, double* p
 /// Faces of solids and of the domain's walls take the solid's normal velocity (applySolidBoundaries); without
 /// any solid or vent cell (`anySolid` false) only the walls' faces are visited, as the CPU's.
 void applySolidBoundaries(const GridView& g, bool anySolid);
-/// b = -h^2 (div u - sink) on the fluid cells (0 elsewhere); psi = 0 where a cell is not fluid.
-void projectionRightSide(const GridView& g, const std::uint8_t* fluid, const float* sink, float* b, float* psi);
-/// u -= grad psi / h on the faces between fluid cells and between fluid and the ambient (open faces, vents).
-void correctVelocity(const GridView& g, const float* psi);
-/// |div u - sink| per cell into `out` (cells()).
+/// |div u - sink| per cell into `out` (cells(), x fastest).
 void divergenceLeft(const GridView& g, const float* sink, float* out);
 
 // ---- the Poisson operator and its multigrid levels (ProjectionKernels.cu)
@@ -68,19 +64,41 @@ __host__ __device__ inline int diagonalOf(std::uint8_t code)
     return code & 7;
 }
 
+/// A multigrid level: its shape, its cell codes and where its arrays keep cell (i, j, k) (`slot`). The finest
+/// level keeps its cells by colour (`byColour`: the red ones, i + j + k even, first, then the black; row by row,
+/// (nx + 1) / 2 slots a row), so that a red-black half pass reads the other colour's x and writes its own in whole
+/// sectors, where the x-fastest order would read and write every other float; the coarser levels x fastest.
+/// Arrays over a level have slots() entries; a slot that holds no cell (odd nx) stays 0.
 struct LevelView
 {
     int nx, ny, nz;
     const std::uint8_t* code;
+    bool byColour;
     __host__ __device__ std::size_t cells() const { return std::size_t(nx) * ny * nz; }
+    __host__ __device__ unsigned half() const { return unsigned(nx + 1) / 2; }
+    __host__ __device__ unsigned colourSlots() const { return half() * unsigned(ny) * unsigned(nz); }
+    __host__ __device__ std::size_t slots() const { return byColour ? 2 * std::size_t(colourSlots()) : cells(); }
+    __host__ __device__ unsigned slot(int i, int j, int k) const
+    {
+        if (!byColour)
+            return unsigned(i) + unsigned(nx) * (unsigned(j) + unsigned(ny) * unsigned(k));
+        return unsigned((i + j + k) & 1) * colourSlots() + unsigned(i >> 1) + half() * (unsigned(j) + unsigned(ny) * unsigned(k));
+    }
 };
-/// fluid and ambient (vent) flags of the finest level from the solid kinds.
-void finestFlags(const GridView& g, std::uint8_t* fluid, std::uint8_t* ambient);
+/// b = -h^2 (div u - sink) on the fluid cells (0 elsewhere); psi = 0 where a cell is not fluid (b, psi and the
+/// flags in the finest level's slots; sink x fastest).
+void projectionRightSide(const GridView& g, const LevelView& finest, const std::uint8_t* fluid, const float* sink, float* b,
+                         float* psi);
+/// u -= grad psi / h on the faces between fluid cells and between fluid and the ambient (open faces, vents); psi in
+/// the finest level's slots.
+void correctVelocity(const GridView& g, const LevelView& finest, const float* psi);
+/// fluid and ambient (vent) flags of the finest level (in its slots) from the solid kinds.
+void finestFlags(const GridView& g, const LevelView& finest, std::uint8_t* fluid, std::uint8_t* ambient);
 /// A coarse level's flags from the fine one's (fluid when a child is; ambient when none is fluid and one is).
-void coarsenFlags(int fx, int fy, int fz, const std::uint8_t* fineFluid, const std::uint8_t* fineAmbient, int cx, int cy,
-                  int cz, std::uint8_t* fluid, std::uint8_t* ambient);
+void coarsenFlags(const LevelView& fine, const std::uint8_t* fineFluid, const std::uint8_t* fineAmbient,
+                  const LevelView& coarse, std::uint8_t* fluid, std::uint8_t* ambient);
 /// The level's cell codes (kFluidCode | the diagonal on the fluid cells, else 0).
-void levelCodes(int nx, int ny, int nz, const std::uint8_t* fluid, const std::uint8_t* ambient, const std::uint8_t open[6],
+void levelCodes(const LevelView& level, const std::uint8_t* fluid, const std::uint8_t* ambient, const std::uint8_t open[6],
                 std::uint8_t* code);
 /// r = b - A x on the level.
 void residualOf(const LevelView& level, const float* b, const float* x, float* r);
@@ -98,12 +116,12 @@ void prolongCorrection(const LevelView& fine, float* x, const LevelView& coarse,
 void subtractOnFluid(const LevelView& level, float* x, float mean);
 /// psi += alpha p; r -= alpha q; returns the new r's squared norm (`scratch`: 2 doubles on the device).
 double updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r, double* scratch);
-/// y = A x on the level; returns x . y (`partials`: a double for each block of launchOver(the level),
-/// partialCount; `scratch`: 2 doubles on the device). Each block writes its sum, and few blocks add those up:
-/// one atomic addition per block to one double would queue 65,536 of them at 256^3.
+/// y = A x on the level; returns x . y (`partials`: a double for each block of its launch, partialCount;
+/// `scratch`: 2 doubles on the device). Each block writes its sum, and few blocks add those up: one atomic
+/// addition per block to one double would queue 65,536 of them at 256^3.
 double applyLevelDot(const LevelView& level, const float* x, float* y, double* partials, double* scratch);
-/// The blocks of launchOver over the level: the partial sums applyLevelDot needs.
-std::size_t partialCount(int nx, int ny, int nz);
+/// The blocks of applyLevelDot's launch over the level: the partial sums it needs.
+std::size_t partialCount(const LevelView& level);
 /// p = z + beta p.
 void updateDirection(std::size_t n, float beta, const float* z, float* p);
 
