@@ -4017,6 +4017,74 @@
         <source>liver ablation</source>
         <translation>Leberablation</translation>
     </message>
+    <message>
+        <source>unnamed (nodes %1-%2)</source>
+        <translation>unbenannt (Knoten %1-%2)</translation>
+    </message>
+    <message>
+        <source>%1 at %2:%3 (TLS)</source>
+        <translation>%1 auf %2:%3 (TLS)</translation>
+    </message>
+    <message>
+        <source>%1 at %2:%3</source>
+        <translation>%1 auf %2:%3</translation>
+    </message>
+    <message>
+        <source>aorta</source>
+        <translation>Aorta</translation>
+    </message>
+    <message>
+        <source>left common iliac artery</source>
+        <translation>linke A. iliaca communis</translation>
+    </message>
+    <message>
+        <source>right common iliac artery</source>
+        <translation>rechte A. iliaca communis</translation>
+    </message>
+    <message>
+        <source>left renal artery</source>
+        <translation>linke Nierenarterie</translation>
+    </message>
+    <message>
+        <source>right renal artery</source>
+        <translation>rechte Nierenarterie</translation>
+    </message>
+    <message>
+        <source>superior mesenteric artery</source>
+        <translation>A. mesenterica superior</translation>
+    </message>
+    <message>
+        <source>celiac trunk</source>
+        <translation>Truncus coeliacus</translation>
+    </message>
+    <message>
+        <source>splenic artery</source>
+        <translation>A. lienalis</translation>
+    </message>
+    <message>
+        <source>common hepatic artery</source>
+        <translation>A. hepatica communis</translation>
+    </message>
+    <message>
+        <source>gastroduodenal artery</source>
+        <translation>A. gastroduodenalis</translation>
+    </message>
+    <message>
+        <source>proper hepatic artery</source>
+        <translation>A. hepatica propria</translation>
+    </message>
+    <message>
+        <source>right hepatic artery</source>
+        <translation>A. hepatica dextra</translation>
+    </message>
+    <message>
+        <source>left hepatic artery</source>
+        <translation>A. hepatica sinistra</translation>
+    </message>
+    <message>
+        <source>segmental hepatic artery</source>
+        <translation>segmentale Leberarterie</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -4017,6 +4017,74 @@
         <source>liver ablation</source>
         <translation>肝脏消融</translation>
     </message>
+    <message>
+        <source>unnamed (nodes %1-%2)</source>
+        <translation>未命名（节点 %1-%2）</translation>
+    </message>
+    <message>
+        <source>%1 at %2:%3 (TLS)</source>
+        <translation>%1，位于 %2:%3（TLS）</translation>
+    </message>
+    <message>
+        <source>%1 at %2:%3</source>
+        <translation>%1，位于 %2:%3</translation>
+    </message>
+    <message>
+        <source>aorta</source>
+        <translation>主动脉</translation>
+    </message>
+    <message>
+        <source>left common iliac artery</source>
+        <translation>左髂总动脉</translation>
+    </message>
+    <message>
+        <source>right common iliac artery</source>
+        <translation>右髂总动脉</translation>
+    </message>
+    <message>
+        <source>left renal artery</source>
+        <translation>左肾动脉</translation>
+    </message>
+    <message>
+        <source>right renal artery</source>
+        <translation>右肾动脉</translation>
+    </message>
+    <message>
+        <source>superior mesenteric artery</source>
+        <translation>肠系膜上动脉</translation>
+    </message>
+    <message>
+        <source>celiac trunk</source>
+        <translation>腹腔干</translation>
+    </message>
+    <message>
+        <source>splenic artery</source>
+        <translation>脾动脉</translation>
+    </message>
+    <message>
+        <source>common hepatic artery</source>
+        <translation>肝总动脉</translation>
+    </message>
+    <message>
+        <source>gastroduodenal artery</source>
+        <translation>胃十二指肠动脉</translation>
+    </message>
+    <message>
+        <source>proper hepatic artery</source>
+        <translation>肝固有动脉</translation>
+    </message>
+    <message>
+        <source>right hepatic artery</source>
+        <translation>肝右动脉</translation>
+    </message>
+    <message>
+        <source>left hepatic artery</source>
+        <translation>肝左动脉</translation>
+    </message>
+    <message>
+        <source>segmental hepatic artery</source>
+        <translation>肝段动脉</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -233,7 +233,9 @@ bool MainWindow::growOrganFromPoints(bool tumour)
                 text += (text.empty() ? "" : "; ") + std::to_string(p.x()) + "," + std::to_string(p.y()) + "," + std::to_string(p.z());
             provenance.parameters["points_mm"] = text;
             const std::string id = m_document.study().addLabel(
-                grown->label, storedText(Pattern{"%1 (grown from %2 points)", {organ, std::to_string(points.size())}}),
+                grown->label,
+                points.size() == 1 ? storedText(Pattern{"%1 (grown from one point)", {organ}})
+                                   : storedText(Pattern{"%1 (grown from %2 points)", {organ, std::to_string(points.size())}}),
                 provenance, grown->warnings);
             m_scene.labels[id] = grown->label;
             m_document.undoStack()->push(new AddedArtifactCommand(m_document, id, title));

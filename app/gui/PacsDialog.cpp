@@ -2,6 +2,7 @@
 
 #include "PacsNodes.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -28,6 +29,12 @@ namespace {
 QString text(const std::string& value)
 {
     return QString::fromStdString(value);
+}
+
+/// The node as people read it ("ORTHANC auf 127.0.0.1:4242" in German).
+QString nodeText(const dicom::PacsNode& node)
+{
+    return QString::fromStdString(storedTextForPeople(dicom::describe(node)));
 }
 
 /// YYYYMMDD shown as YYYY-MM-DD (ISO 8601), as the rest of the workstation writes dates.
@@ -288,7 +295,7 @@ void PacsDialog::fillSavedNodes(const QString& current)
     m_saved->clear();
     const QList<PacsNodeEntry> nodes = loadPacsNodes();
     for (const PacsNodeEntry& entry : nodes)
-        m_saved->addItem(tr("%1 (%2)").arg(entry.name, text(dicom::describe(entry.node))), entry.name);
+        m_saved->addItem(tr("%1 (%2)").arg(entry.name, nodeText(entry.node)), entry.name);
     const int index = std::max(0, m_saved->findData(current));
     if (!nodes.isEmpty())
     {
@@ -391,10 +398,10 @@ void PacsDialog::echo()
     if (isBusy())
         return;
     const dicom::PacsNode target = node();
-    m_status->setText(tr("Echo to %1...").arg(text(dicom::describe(target))));
+    m_status->setText(tr("Echo to %1...").arg(nodeText(target)));
     runInBackground([target](const Progress&) { dicom::pacsEcho(target); },
                     [this, target](const QString& error) {
-                        m_status->setText(error.isEmpty() ? tr("%1 answers the echo.").arg(text(dicom::describe(target)))
+                        m_status->setText(error.isEmpty() ? tr("%1 answers the echo.").arg(nodeText(target))
                                                           : tr("Echo failed: %1").arg(error));
                         emit echoFinished();
                     });
@@ -455,7 +462,7 @@ void PacsDialog::search()
             return;
         }
     const bool patients = Level(m_level->currentData().toInt()) == Level::Patients;
-    m_status->setText(tr("Searching %1...").arg(text(dicom::describe(target))));
+    m_status->setText(tr("Searching %1...").arg(nodeText(target)));
     auto studies = std::make_shared<std::vector<dicom::StudyMatch>>();
     auto people = std::make_shared<std::vector<dicom::PatientMatch>>();
     runInBackground(

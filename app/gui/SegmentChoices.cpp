@@ -1,5 +1,6 @@
 // SegmentChoices.h: the choices, the inlet's paths (depth first over the tree) and their joined frames.
 #include "SegmentChoices.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/imaging/VesselNames.h"
 #include "vsim/viz/DecimalText.h"
 
@@ -16,7 +17,7 @@ QString segmentName(const SkeletonGraph& centerlines, const std::vector<std::str
 {
     // A segment without a name (none, or the automatic naming's "unnamed") goes by its number.
     return e < names.size() && !names[e].empty() && names[e] != imaging::kUnnamedSegment
-               ? QString::fromStdString(names[e])
+               ? QString::fromStdString(storedTextForPeople(names[e])) // an anatomical name in the reader's language
                : QCoreApplication::translate("vsim::gui::VesselViewPanel", "segment %1").arg(e + 1);
 }
 

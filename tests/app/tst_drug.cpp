@@ -12,6 +12,7 @@
 #include "DicomFixtures.h"
 #include "DrugDeliveryPanel.h"
 #include "GuiTestMain.h"
+#include "Languages.h"
 #include "MainWindow.h"
 #include "RunPlayer.h"
 #include "SegmentationPointsPanel.h"
@@ -244,6 +245,29 @@ private slots:
         QVERIFY(std::count_if(markers.begin(), markers.end(), [](const viz::SliceMarker& k) { return k.text.rfind("feeder", 0) == 0; }) >= 1);
         QVERIFY(panel->findChild<QTextBrowser*>("drugSummary")->toPlainText().contains("Coverage grade A"));
         window.grab().save(QString::fromStdString((test::freshFolder("gui-drug", "territory") / "territory.png").string()));
+        // The German and Chinese guides' territory picture: the study saved, copied (its lock stays with this
+        // window) and opened in a window of each language, which shows the newest drug run with its territory.
+        QVERIFY(window.saveStudy());
+        QVERIFY(vsim::test::waitForTask(window));
+        const fs::path copy = test::freshFolder("gui-drug", "study-copy") / "drug.vsim";
+        fs::copy(bundle, copy, fs::copy_options::recursive);
+        for (const QString language : {"de", "zh_CN"})
+        {
+            QVERIFY(gui::installLanguage(language));
+            {
+                gui::MainWindow translated;
+                translated.resize(1400, 900);
+                translated.show();
+                QVERIFY(QTest::qWaitForWindowExposed(&translated));
+                QVERIFY(translated.openStudy(QString::fromStdString(copy.string())));
+                QVERIFY(vsim::test::waitForTask(translated));
+                QVERIFY(translated.grab().save(QString::fromStdString(
+                    (test::freshFolder("gui-drug", "territory-" + language) / "territory.png").string())));
+                QCOMPARE(translated.views()->sliceView(viz::SliceOrientation::Axial)->labelPalette(),
+                         viz::SliceView::LabelPalette::Territory);
+            }
+            gui::installLanguage("en");
+        }
 
         // Feeders corrected by hand: the first one found unticked in the dock's table, a segment that is none typed
         // in; the next run lists them so, records the edits and replaces the run it corrects.

@@ -8,6 +8,7 @@
 
 #include "DicomFixtures.h"
 #include "GuiTestMain.h"
+#include "Languages.h"
 #include "MainWindow.h"
 #include "OrthancServer.h"
 #include "PacsDialog.h"
@@ -201,6 +202,37 @@ private slots:
         QCOMPARE(dicom::findStudies(orthanc.node(), {}).size(), std::size_t(1));
         const QDir outbox(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/pacs-outbox");
         QVERIFY2(outbox.entryList(QDir::NoDotAndDotDot | QDir::AllEntries).isEmpty(), "the outbox is left empty");
+
+        // The German and Chinese guides' pictures of both dialogs, made in those languages (the dialogs take the
+        // language in force when they are made).
+        for (const QString language : {"de", "zh_CN"})
+        {
+            QVERIFY(gui::installLanguage(language));
+            {
+                gui::PacsDialog translated(&window);
+                translated.show();
+                translated.setNode("Test PACS", orthanc.node());
+                QSignalSpy found(&translated, &gui::PacsDialog::searchFinished);
+                QSignalSpy children(&translated, &gui::PacsDialog::childrenLoaded);
+                translated.setFilters("", "PACS-GUI-1", "20261101", "20261130", "CT");
+                translated.search();
+                QVERIFY(found.wait(30000));
+                QTreeWidgetItem* item = translated.results()->topLevelItem(0);
+                QVERIFY(item);
+                translated.results()->setCurrentItem(item);
+                item->setExpanded(true);
+                QVERIFY(children.wait(30000));
+                translated.results()->setCurrentItem(item->child(0));
+                translated.resize(1100, 720);
+                QVERIFY(translated.grab().save(QString::fromStdString(
+                    (fs::path(test::outputFolder("gui").toStdString()) / ("pacs-dialog-" + language.toStdString() + ".png")).string())));
+                gui::PacsSendDialog translatedSend(opened);
+                translatedSend.chooseNode("Test PACS");
+                QVERIFY(translatedSend.grab().save(QString::fromStdString(
+                    (fs::path(test::outputFolder("gui").toStdString()) / ("pacs-send-" + language.toStdString() + ".png")).string())));
+            }
+            gui::installLanguage("en");
+        }
     }
 };
 

@@ -5,6 +5,7 @@
 #include "vsim/app/NetworkPipeline.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/Localized.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/imaging/VesselNames.h"
 
 namespace vsim::app {
@@ -60,7 +61,7 @@ void renameSegment(study::Study& study, const std::string& centerlinesId, std::s
 std::string segmentTitle(const std::string& name, int fromNode, int toNode)
 {
     if (name != imaging::kUnnamedSegment)
-        return name;
+        return storedTextForPeople(name); // an anatomical name in the reader's language; a user's as typed
     return withArguments(localized("vsim::app::SegmentNames", "unnamed (nodes %1-%2)"),
                          {std::to_string(fromNode), std::to_string(toNode)});
 }

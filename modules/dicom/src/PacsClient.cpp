@@ -1,6 +1,7 @@
 #include "vsim/dicom/PacsClient.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include "DatasetText.h"
 #include "PacsAssociation.h"
@@ -23,7 +24,8 @@ using detail::Proposed;
 
 std::string describe(const PacsNode& node)
 {
-    return node.calledAeTitle + " at " + node.host + ":" + std::to_string(node.port) + (node.tls.enabled ? " (TLS)" : "");
+    const std::vector<std::string> values = {node.calledAeTitle, node.host, std::to_string(node.port)};
+    return node.tls.enabled ? storedText(Pattern{"%1 at %2:%3 (TLS)", values}) : storedText(Pattern{"%1 at %2:%3", values});
 }
 
 std::string RetrieveTarget::describe() const

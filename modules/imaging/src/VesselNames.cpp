@@ -3,6 +3,8 @@
 
 #include "vsim/imaging/VesselNames.h"
 
+#include "vsim/core/StoredText.h"
+
 #include "VesselTree.h"
 
 #include <algorithm>
@@ -143,11 +145,11 @@ private:
         const AorticPath path = followAorta(e);
         if (!looksAortic(path))
             return false;
-        name(path.edges, "aorta");
+        name(path.edges, storedText("aorta"));
         if (path.leftIliac >= 0)
         {
-            nameVessel(path.leftIliac, "left common iliac artery", 0.5);
-            nameVessel(path.rightIliac, "right common iliac artery", 0.5);
+            nameVessel(path.leftIliac, storedText("left common iliac artery"), 0.5);
+            nameVessel(path.rightIliac, storedText("right common iliac artery"), 0.5);
         }
         for (int a : path.edges)
         {
@@ -207,7 +209,8 @@ private:
             std::sort(side->begin(), side->end(), [](const Candidate& a, const Candidate& b) { return a.r > b.r; });
             if (side->empty() || (side->size() > 1 && (*side)[0].r < 1.3 * (*side)[1].r))
                 continue; // none, or two of about the same calibre: which is the main renal is not guessed
-            nameVessel((*side)[0].edge, side == &left ? "left renal artery" : "right renal artery", 0.7);
+            nameVessel((*side)[0].edge, side == &left ? storedText("left renal artery") : storedText("right renal artery"),
+                       0.7);
             lowestRenalZ = std::min(lowestRenalZ, (*side)[0].z);
         }
         // The celiac and the SMA arise above the renal arteries (the SMA at most about a centimetre below the
@@ -219,13 +222,13 @@ private:
         if (anterior.size() >= 2)
         {
             nameCeliac(anterior[0].edge, true);
-            nameVessel(anterior[1].edge, "superior mesenteric artery", 0.7);
+            nameVessel(anterior[1].edge, storedText("superior mesenteric artery"), 0.7);
         }
         else if (anterior.size() == 1 && !nameCeliac(anterior[0].edge, false))
         {
             const Division walk = follow(anterior[0].edge, divisionAt(*this, 0.7));
             if (walk.kids.empty() && direction(anterior[0].edge, 20.0, 40.0).z() <= -0.5)
-                name(walk.edges, "superior mesenteric artery");
+                name(walk.edges, storedText("superior mesenteric artery"));
         }
         return true;
     }
@@ -249,9 +252,9 @@ private:
         }
         if (!known && (hepatic < 0 || splenic < 0))
             return false;
-        name(walk.edges, "celiac trunk");
+        name(walk.edges, storedText("celiac trunk"));
         if (splenic >= 0)
-            nameVessel(splenic, "splenic artery", 0.7);
+            nameVessel(splenic, storedText("splenic artery"), 0.7);
         if (hepatic >= 0)
             nameCommonHepatic(hepatic, true);
         return true;
@@ -288,10 +291,10 @@ private:
         const auto [gda, proper] = walk.kids.empty() ? std::pair{-1, -1} : gastroduodenalAndProper(walk.last, walk.kids);
         if (!known && gda < 0)
             return false;
-        name(walk.edges, "common hepatic artery");
+        name(walk.edges, storedText("common hepatic artery"));
         if (gda >= 0)
         {
-            nameVessel(gda, "gastroduodenal artery", 0.7);
+            nameVessel(gda, storedText("gastroduodenal artery"), 0.7);
             nameProperHepatic(proper, true);
         }
         return true;
@@ -304,7 +307,7 @@ private:
         if (walk.kids.empty())
         {
             if (known)
-                name(walk.edges, "proper hepatic artery");
+                name(walk.edges, storedText("proper hepatic artery"));
             return known;
         }
         const double skip = radiusAtEnd(walk.last);
@@ -315,11 +318,11 @@ private:
         const bool rightAndLeft = d2.x() - d1.x() >= 0.3;
         if (!known && !rightAndLeft)
             return false;
-        name(walk.edges, "proper hepatic artery");
+        name(walk.edges, storedText("proper hepatic artery"));
         if (rightAndLeft)
         {
-            nameHepaticBranch(first, "right hepatic artery");
-            nameHepaticBranch(second, "left hepatic artery");
+            nameHepaticBranch(first, storedText("right hepatic artery"));
+            nameHepaticBranch(second, storedText("left hepatic artery"));
         }
         return true;
     }
@@ -330,7 +333,7 @@ private:
         const Division walk = follow(e, [](int, const std::vector<int>&) { return true; });
         this->name(walk.edges, name);
         for (int k : walk.kids)
-            nameSubtree(k, "segmental hepatic artery");
+            nameSubtree(k, storedText("segmental hepatic artery"));
     }
 
     /// A tree whose root is narrower than an aorta: a celiac, a common or a proper hepatic, by their divisions.

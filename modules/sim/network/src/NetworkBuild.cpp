@@ -2,6 +2,7 @@
 
 #include "vsim/core/Error.h"
 #include "vsim/core/Median.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/network/TipOrientation.h"
 
 #include <algorithm>
@@ -132,7 +133,8 @@ VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines, const std
 std::string branchName(const VesselNetwork& network, int segment)
 {
     const auto& own = network.segments[std::size_t(segment)];
-    return own.name.empty() ? "unnamed (nodes " + std::to_string(own.from) + " - " + std::to_string(own.to) + ")" : own.name;
+    return own.name.empty() ? storedText(Pattern{"unnamed (nodes %1-%2)", {std::to_string(own.from), std::to_string(own.to)}})
+                            : own.name;
 }
 
 std::pair<int, double> nearestSegment(const VesselNetwork& network, const Eigen::Vector3d& pointMm,

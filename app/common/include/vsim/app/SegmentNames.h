@@ -20,8 +20,8 @@ std::vector<std::string> segmentNames(const study::Study& study, const std::stri
 /// study. Throws vsim::Error for an unknown artifact, an index out of range or an empty name.
 void renameSegment(study::Study& study, const std::string& centerlinesId, std::size_t index, const std::string& name);
 
-/// How a segment is titled in a table or a line of text: its name, and for an unnamed one its node numbers
-/// ("unnamed (nodes 4-7)", in the reader's language).
+/// How a segment is titled in a table or a line of text: its name (an anatomical one in the reader's language,
+/// one a user typed as typed), and for an unnamed one its node numbers ("unnamed (nodes 4-7)", likewise).
 std::string segmentTitle(const std::string& name, int fromNode, int toNode);
 
 } // namespace vsim::app

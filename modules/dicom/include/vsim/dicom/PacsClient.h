@@ -139,7 +139,7 @@ std::vector<StoredObject> storeFiles(const PacsNode& node, const std::vector<std
                                      AnonymizedObjects anonymized = AnonymizedObjects::Refuse,
                                      const Progress& progress = {});
 
-/// "ORTHANC at 127.0.0.1:4242", with " (TLS)" on a TLS node (for messages).
+/// "ORTHANC at 127.0.0.1:4242", with " (TLS)" on a TLS node (for messages; a stored text, core StoredText.h).
 std::string describe(const PacsNode& node);
 
 } // namespace vsim::dicom

@@ -27,7 +27,8 @@ VesselNetwork networkFromCenterlines(const SkeletonGraph& centerlines,
                                      std::vector<std::string>* warnings = nullptr,
                                      const std::vector<std::string>& names = {});
 
-/// How a segment is named for people: its anatomical name, else "unnamed (nodes a - b)". (Not its nearest named
+/// How a segment is named for people: its anatomical name, else "unnamed (nodes a-b)" (a stored text: core
+/// StoredText.h, translated where it is shown). (Not its nearest named
 /// ancestor's: a tree rooted at the wrong end, e.g. an iliac artery's, would name every hepatic branch after it.)
 std::string branchName(const VesselNetwork& network, int segment);
 
