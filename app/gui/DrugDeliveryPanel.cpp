@@ -51,6 +51,12 @@ namespace {
 /// A figure shown (not parsed back) in the reader's decimal mark.
 QString number(double value, int decimals) { return viz::decimalText(value, decimals); }
 
+/// A branch's name in the reader's language (an anatomical name, or "unnamed (nodes a-b)").
+QString branchText(const VesselNetwork& network, int segment)
+{
+    return QString::fromStdString(storedTextForPeople(sim::network::branchName(network, segment)));
+}
+
 /// `text` (segment numbers, "3, 7") with `segment` in it or out of it, ascending; what is not a number is dropped.
 QString withSegment(const QString& text, int segment, bool in)
 {
@@ -209,7 +215,7 @@ void DrugDeliveryPanel::showFeeders()
     for (int row = 0; row < m_feeders->rowCount(); ++row)
     {
         const sim::network::Feeder& f = m_run->feeders[std::size_t(row)];
-        auto* name = new QTableWidgetItem(QString::fromStdString(storedTextForPeople(sim::network::branchName(m_run->network, f.segment))));
+        auto* name = new QTableWidgetItem(branchText(m_run->network, f.segment));
         name->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
         name->setCheckState(Qt::Checked);
         name->setData(Qt::UserRole, f.segment);
@@ -307,7 +313,7 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
         QStringList feeders;
         for (const sim::network::Feeder& f : r.feeders)
             feeders << tr("%1 (segment %2, %3 mm)")
-                           .arg(QString::fromStdString(storedTextForPeople(sim::network::branchName(r.network, f.segment))).toHtmlEscaped())
+                           .arg(branchText(r.network, f.segment).toHtmlEscaped())
                            .arg(f.segment)
                            .arg(number(f.radiusMm, 1));
         text += tr("<br>Feeders: %1.").arg(feeders.isEmpty() ? tr("none found") : feeders.join("; "));
@@ -316,8 +322,7 @@ void DrugDeliveryPanel::setRun(std::shared_ptr<const sim::network::NetworkRunRes
         for (const auto& [node, share] : r.perfused->extrahepaticDrug)
             if (share >= sim::network::kPerfusedShare)
                 nonTarget << tr("%1 %2 %")
-                                 .arg(QString::fromStdString(storedTextForPeople(sim::network::branchName(r.network, incident[std::size_t(node)].front())))
-                                          .toHtmlEscaped())
+                                 .arg(branchText(r.network, incident[std::size_t(node)].front()).toHtmlEscaped())
                                  .arg(number(100.0 * share, 1));
         if (!nonTarget.isEmpty())
             text += tr("<br>Drug leaving the liver: %1.").arg(nonTarget.join("; "));

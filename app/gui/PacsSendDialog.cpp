@@ -19,7 +19,8 @@ PacsSendDialog::PacsSendDialog(const study::Study& study, QWidget* parent) : QDi
     auto* form = new QFormLayout(this);
     m_node = new QComboBox(this);
     for (const PacsNodeEntry& entry : loadPacsNodes())
-        m_node->addItem(tr("%1 (%2)").arg(entry.name, QString::fromStdString(storedTextForPeople(dicom::describe(entry.node)))), entry.name);
+        m_node->addItem(tr("%1 (%2)").arg(entry.name, QString::fromStdString(storedTextForPeople(dicom::describe(entry.node)))),
+                        entry.name);
     form->addRow(tr("PACS node:"), m_node);
     if (m_node->count() == 0)
         form->addRow(new QLabel(tr("No PACS node is saved: add one in File > Query/Retrieve (PACS)."), this));
