@@ -161,8 +161,10 @@ __device__ bool faceFlux(const GridView& g, const AxisStencil& s, float speed, f
 
 /// One sub-step of the axis's sweep at each cell, from the fields `in` into `out`: the fluxes through its two
 /// faces (each face's computed by both its cells, alike), less the step's start value times the sweep's own
-/// divergence. Solid cells keep their values. 32-bit indices (the backend refuses grids of 2^31 cells or more).
-template <int axis>
+/// divergence. Solid cells keep their values; with `clamp` (the advection's last sub-step) the values written are
+/// clampKernel's: negative ones 0, none outside the fluid. 32-bit indices (the backend refuses grids of 2^31 cells
+/// or more).
+template <int axis, bool clamp>
 __global__ void transportKernel(GridView g, const float* __restrict__ velocity, float ratio, const float* __restrict__ start,
                                 const float* __restrict__ density, const float* __restrict__ temperature,
                                 float* __restrict__ outDensity, float* __restrict__ outTemperature)
@@ -194,7 +196,7 @@ __global__ void transportKernel(GridView g, const float* __restrict__ velocity, 
     const float startDensity = start[c], startTemperature = start[cells + c];
     if (s.kind[2] != kFluid) // a solid or a vent keeps its values
     {
-        outDensity[c] = s.value[0][2], outTemperature[c] = s.value[1][2];
+        outDensity[c] = clamp ? 0.0f : s.value[0][2], outTemperature[c] = clamp ? 0.0f : s.value[1][2];
         return;
     }
     float lowFlux[2], highFlux[2];
@@ -202,8 +204,23 @@ __global__ void transportKernel(GridView g, const float* __restrict__ velocity, 
     const bool highPasses = faceFlux<axis, 0>(g, s, highSpeed, highFlux);
     // The sweep's own divergence: the velocity through the faces where smoke passes.
     const float divergence = (highPasses ? highSpeed : 0.0f) - (lowPasses ? lowSpeed : 0.0f);
-    outDensity[c] = s.value[0][2] - ratio * ((highFlux[0] - lowFlux[0]) - startDensity * divergence);
-    outTemperature[c] = s.value[1][2] - ratio * ((highFlux[1] - lowFlux[1]) - startTemperature * divergence);
+    const float density1 = s.value[0][2] - ratio * ((highFlux[0] - lowFlux[0]) - startDensity * divergence);
+    const float temperature1 = s.value[1][2] - ratio * ((highFlux[1] - lowFlux[1]) - startTemperature * divergence);
+    outDensity[c] = clamp ? fmaxf(density1, 0.0f) : density1;
+    outTemperature[c] = clamp ? fmaxf(temperature1, 0.0f) : temperature1;
+}
+
+template <int axis>
+void launchTransport(const LatticeLaunch& launch, bool clamp, const GridView& g, const float* velocity, float ratio,
+                     const float* start, const float* density, const float* temperature, float* outDensity,
+                     float* outTemperature)
+{
+    if (clamp)
+        transportKernel<axis, true><<<launch.blocks, launch.threads>>>(g, velocity, ratio, start, density, temperature,
+                                                                      outDensity, outTemperature);
+    else
+        transportKernel<axis, false><<<launch.blocks, launch.threads>>>(g, velocity, ratio, start, density, temperature,
+                                                                       outDensity, outTemperature);
 }
 
 __global__ void clampKernel(GridView g)
@@ -233,17 +250,18 @@ void advectLattice(const GridView& g, int kind, float* field, const float* old, 
 }
 
 void transportAxis(GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
-                   float*& density, float*& temperature, float*& spareDensity, float*& spareTemperature)
+                   float*& density, float*& temperature, float*& spareDensity, float*& spareTemperature, bool clampLast)
 {
     const LatticeLaunch launch = launchOver(g.nx, g.ny, g.nz);
     for (int sub = 0; sub < substeps; ++sub)
     {
         g.density = density, g.temperature = temperature;
+        const bool clamp = clampLast && sub + 1 == substeps;
         switch (axis)
         {
-        case 0: transportKernel<0><<<launch.blocks, launch.threads>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
-        case 1: transportKernel<1><<<launch.blocks, launch.threads>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
-        default: transportKernel<2><<<launch.blocks, launch.threads>>>(g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        case 0: launchTransport<0>(launch, clamp, g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        case 1: launchTransport<1>(launch, clamp, g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
+        default: launchTransport<2>(launch, clamp, g, velocity, ratio, start, density, temperature, spareDensity, spareTemperature); break;
         }
         std::swap(density, spareDensity);
         std::swap(temperature, spareTemperature);

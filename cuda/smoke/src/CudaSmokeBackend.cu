@@ -7,6 +7,7 @@
 #include "vsim/cuda_common/DeviceBuffer.cuh"
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/sim/smoke/PoissonMultigrid.h"
+#include "vsim/sim/smoke/PressureWarmStart.h"
 #include "vsim/sim/smoke/SmokeSimulation.h"
 
 #include <algorithm>
@@ -67,13 +68,24 @@ struct CudaSmokeBackend::Device
     Buffer<float> u, v, w, density, temperature, solidVelocity;
     Buffer<std::uint8_t> solid, staticSolid;
     Buffer<float> u0, v0, w0, forward, start, spareDensity, spareTemperature, force, omega, magnitude;
-    Buffer<float> psi, b, r, z, p, q, sink, left;
+    Buffer<float> psi, previousPsi, b, r, z, p, q, sink;
+    host::PressureWarmStart warmStart;
     Buffer<double> scratch, partials, particles, places;
     Buffer<int> changed, keep;
     std::vector<Level> levels;
     bool singular = false, prepared = false, hasVent = false, haveSink = false;
     bool anySolid = true;   ///< a cell is not fluid (a solid, the ball, a vent): the general boundary pass
     bool staticAny = false; ///< the static anatomy has a cell that is not fluid
+    /// The largest |u|, |v|, |w| of the faces as they are (m/s), when `speedsKnown`: measured after a projection
+    /// and used until the velocity changes (the next step's transport sub-steps, maxSpeed).
+    double speeds[3] = {0.0, 0.0, 0.0};
+    bool speedsKnown = false;
+
+    void measureSpeeds()
+    {
+        faceSpeeds(g, scratch.data, speeds);
+        speedsKnown = true;
+    }
 
     void bind()
     {
@@ -177,7 +189,7 @@ CudaSmokeBackend::CudaSmokeBackend(const host::SmokeGrid& grid) : m_device(std::
     d.g.ox = grid.origin.x(), d.g.oy = grid.origin.y(), d.g.oz = grid.origin.z();
     for (int f = 0; f < 6; ++f)
         d.g.open[f] = grid.boundaries[std::size_t(f)] == host::DomainBoundary::Open;
-    d.scratch.zero(2);
+    d.scratch.zero(3);
     d.partials.zero(std::max(partialCount(LevelView{grid.nx, grid.ny, grid.nz, nullptr, true}),
                              partialCount(LevelView{grid.nx, grid.ny, grid.nz, nullptr, false})));
     d.changed.zero(1);
@@ -210,13 +222,13 @@ void CudaSmokeBackend::upload(const host::SmokeGrid& grid)
     ensure(d.forward, largestLattice), ensure(d.start, 2 * cells);
     ensure(d.spareDensity, cells), ensure(d.spareTemperature, cells);
     ensure(d.force, 3 * cells), ensure(d.omega, 3 * cells), ensure(d.magnitude, cells);
-    // The projection's vectors in the finest level's slots (by colour); the divergence left x fastest.
+    // The projection's vectors in the finest level's slots (by colour).
     const std::size_t slots = LevelView{grid.nx, grid.ny, grid.nz, nullptr, true}.slots();
-    for (Buffer<float>* work : {&d.psi, &d.b, &d.r, &d.z, &d.p, &d.q})
+    for (Buffer<float>* work : {&d.psi, &d.previousPsi, &d.b, &d.r, &d.z, &d.p, &d.q})
         ensure(*work, slots);
-    ensure(d.left, cells);
     d.bind();
     d.prepared = false; // the solids may differ from the last upload
+    d.speedsKnown = false;
 }
 
 void CudaSmokeBackend::download(host::SmokeGrid& grid)
@@ -236,6 +248,7 @@ void CudaSmokeBackend::download(host::SmokeGrid& grid)
 void CudaSmokeBackend::applySource(host::SmokeGrid& grid, const host::SmokeSource& source, double dt, bool setVelocity)
 {
     // The box of cells searched, as the CPU's (CpuSmokeBackend.cpp).
+    m_device->speedsKnown = m_device->speedsKnown && !setVelocity;
     const Eigen::Vector3d reach = Eigen::Vector3d::Constant(source.radius / grid.h + 1.0);
     const Eigen::Vector3d low = (source.centre - grid.origin) / grid.h - reach;
     const Eigen::Vector3d high = (source.centre - grid.origin) / grid.h + reach;
@@ -250,6 +263,10 @@ void CudaSmokeBackend::advect(host::SmokeGrid& grid, double dt, const host::Smok
 {
     Device& d = *m_device;
     const std::size_t cells = grid.cells();
+    if (!d.speedsKnown)
+        d.measureSpeeds();
+    const double startSpeeds[3] = {d.speeds[0], d.speeds[1], d.speeds[2]}; // the faces' at the step's start
+    d.speedsKnown = false;
     VSIM_CUDA_CHECK(cudaMemcpyAsync(d.u0.data, d.u.data, d.u.bytes(), cudaMemcpyDeviceToDevice));
     VSIM_CUDA_CHECK(cudaMemcpyAsync(d.v0.data, d.v.data, d.v.bytes(), cudaMemcpyDeviceToDevice));
     VSIM_CUDA_CHECK(cudaMemcpyAsync(d.w0.data, d.w.data, d.w.bytes(), cudaMemcpyDeviceToDevice));
@@ -265,16 +282,15 @@ void CudaSmokeBackend::advect(host::SmokeGrid& grid, double dt, const host::Smok
     VSIM_CUDA_CHECK(cudaMemcpyAsync(d.start.data + cells, d.temperature.data, cells * sizeof(float), cudaMemcpyDeviceToDevice));
     if (settings.scalarScheme == host::AdvectionScheme::Conservative)
     {
-        const std::size_t sizes[3] = {d.u0.count, d.v0.count, d.w0.count};
         float *density = d.density.data, *temperature = d.temperature.data;
         float *spareDensity = d.spareDensity.data, *spareTemperature = d.spareTemperature.data;
         for (int pass = 0; pass < 3; ++pass)
         {
             const int axis = reverseSweeps ? 2 - pass : pass;
-            const double fastest = maxAbs(old[axis], sizes[axis], nullptr, 0, nullptr, 0, d.scratch.data);
-            const int substeps = host::transportSubsteps(fastest, dt, grid.h);
+            const int substeps = host::transportSubsteps(startSpeeds[axis], dt, grid.h);
+            // The last sub-step clamps as it writes (clampScalars' floats).
             transportAxis(d.g, axis, old[axis], substeps, float(dt / substeps / grid.h), d.start.data, density, temperature,
-                          spareDensity, spareTemperature);
+                          spareDensity, spareTemperature, pass == 2);
         }
         // The sub-steps alternate between each field's two buffers: keep the result's as the field's.
         if (density != d.density.data)
@@ -289,12 +305,13 @@ void CudaSmokeBackend::advect(host::SmokeGrid& grid, double dt, const host::Smok
         advectLattice(d.g, 3, d.density.data, d.start.data, d.u0.data, d.v0.data, d.w0.data, dtCells, scalarMac, d.forward.data);
         advectLattice(d.g, 3, d.temperature.data, d.start.data + cells, d.u0.data, d.v0.data, d.w0.data, dtCells, scalarMac,
                       d.forward.data);
+        clampScalars(d.g);
     }
-    clampScalars(d.g);
 }
 
 void CudaSmokeBackend::addHeatForces(host::SmokeGrid&, double dt, const host::SmokeSettings& settings)
 {
+    m_device->speedsKnown = false;
     const float keep = settings.coolingPerS > 0.0 ? float(std::exp(-settings.coolingPerS * dt)) : 1.0f;
     const double up[3] = {settings.up.x(), settings.up.y(), settings.up.z()};
     smoke::addHeatForces(m_device->g, keep, dt, settings.buoyancyAlpha, settings.buoyancyBeta, up);
@@ -304,6 +321,7 @@ void CudaSmokeBackend::addVortexForces(host::SmokeGrid&, double dt, const host::
                                        const host::VortexParticles& particles)
 {
     Device& d = *m_device;
+    d.speedsKnown = false;
     vorticityConfinement(d.g, settings.confinement, d.force.data, d.omega.data, d.magnitude.data);
     const std::size_t count = particles.size();
     if (count > 0 && settings.particleStrength > 0.0)
@@ -327,6 +345,7 @@ void CudaSmokeBackend::placeSolids(host::SmokeGrid&, const std::vector<std::uint
         d.staticAny = std::any_of(staticSolid.begin(), staticSolid.end(), [](std::uint8_t s) { return s != host::kFluid; });
     }
     d.anySolid = sphere || d.staticAny;
+    d.speedsKnown = false; // the projection's boundary pass will read the solids' velocity
     VSIM_CUDA_CHECK(cudaMemsetAsync(d.changed.data, 0, sizeof(int)));
     smoke::placeSolids(d.g, d.staticSolid.data, sphere ? sphere->centre.x() : 0.0, sphere ? sphere->centre.y() : 0.0,
                        sphere ? sphere->centre.z() : 0.0, sphere ? sphere->radius : 0.0,
@@ -344,15 +363,17 @@ void CudaSmokeBackend::setSink(const std::vector<float>& sink)
     m_device->haveSink = true;
 }
 
-host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double tolerance, int maxIterations, bool withSink)
+host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double tolerance, int maxIterations, bool withSink,
+                                                 double stepS)
 {
     Device& d = *m_device;
     if (!d.prepared)
         d.prepareMultigrid();
-    const std::size_t n = d.levels[0].slots(), cells = grid.cells();
+    const std::size_t n = d.levels[0].slots();
     const float* sink = withSink && d.haveSink ? d.sink.data : nullptr;
     applySolidBoundaries(d.g, d.anySolid);
-    projectionRightSide(d.g, d.levels[0].view(), d.levels[0].fluid.data, sink, d.b.data, d.psi.data);
+    projectionRightSide(d.g, d.levels[0].view(), d.levels[0].fluid.data, sink, d.b.data, d.warmStart.weights(stepS), d.psi.data,
+                        d.previousPsi.data);
     d.removeNullSpace(d.b.data);
     host::ProjectionReport report;
     const double bNorm = std::sqrt(dot(d.b.data, d.b.data, n, d.scratch.data));
@@ -400,9 +421,10 @@ host::ProjectionReport CudaSmokeBackend::project(host::SmokeGrid& grid, double t
         report.relativeResidual = d.trueResidual() / bNorm;
     }
     report.converged = report.relativeResidual <= tolerance;
+    d.warmStart.record(stepS);
     correctVelocity(d.g, d.levels[0].view(), d.psi.data);
-    divergenceLeft(d.g, sink, d.left.data);
-    report.maxDivergence = maxAbs(d.left.data, cells, nullptr, 0, nullptr, 0, d.scratch.data);
+    report.maxDivergence = largestDivergenceLeft(d.g, sink, d.scratch.data);
+    d.measureSpeeds();
     const double speed = maxSpeed(grid);
     report.divergenceRatio = speed > 0.0 ? report.maxDivergence * grid.h / speed : 0.0;
     return report;
@@ -459,7 +481,9 @@ void CudaSmokeBackend::seedParticles(const host::SmokeGrid&, host::VortexParticl
 double CudaSmokeBackend::maxSpeed(const host::SmokeGrid&)
 {
     Device& d = *m_device;
-    return maxAbs(d.u.data, d.u.count, d.v.data, d.v.count, d.w.data, d.w.count, d.scratch.data);
+    if (!d.speedsKnown)
+        d.measureSpeeds();
+    return std::max({d.speeds[0], d.speeds[1], d.speeds[2]});
 }
 
 bool CudaSmokeBackend::finite(const host::SmokeGrid&)
@@ -472,8 +496,8 @@ std::size_t CudaSmokeBackend::deviceBytes() const
     const Device& d = *m_device;
     std::size_t bytes = 0;
     for (const Buffer<float>* b : {&d.u, &d.v, &d.w, &d.density, &d.temperature, &d.solidVelocity, &d.u0, &d.v0, &d.w0,
-                                   &d.forward, &d.start, &d.spareDensity, &d.spareTemperature, &d.force, &d.omega, &d.magnitude, &d.psi, &d.b, &d.r,
-                                   &d.z, &d.p, &d.q, &d.sink, &d.left})
+                                   &d.forward, &d.start, &d.spareDensity, &d.spareTemperature, &d.force, &d.omega, &d.magnitude, &d.psi, &d.previousPsi, &d.b, &d.r,
+                                   &d.z, &d.p, &d.q, &d.sink})
         bytes += b->bytes();
     bytes += d.solid.bytes() + d.staticSolid.bytes() + d.particles.bytes() + d.places.bytes() + d.partials.bytes();
     for (const Device::Level& level : d.levels)

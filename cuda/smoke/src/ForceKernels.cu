@@ -67,14 +67,16 @@ __global__ void buoyancyKernel(GridView g, int axis, double scale, double alpha,
     face[f] += float(scale * (beta * t - alpha * rho));
 }
 
+/// The velocity at cell (i, j, k)'s centre: the means of its opposite faces (32-bit indices: the backend refuses
+/// grids of 2^31 faces or more).
 __device__ float3 centreVelocity(const GridView& g, int i, int j, int k)
 {
-    const std::size_t c = g.cell(i, j, k);
-    const float u0 = g.u[std::size_t(i) + std::size_t(g.nx + 1) * (j + std::size_t(g.ny) * k)];
-    const float v0 = g.v[std::size_t(i) + std::size_t(g.nx) * (j + std::size_t(g.ny + 1) * k)];
-    const float v1 = g.v[std::size_t(i) + std::size_t(g.nx) * (j + 1 + std::size_t(g.ny + 1) * k)];
-    return make_float3(0.5f * (u0 + g.u[std::size_t(i + 1) + std::size_t(g.nx + 1) * (j + std::size_t(g.ny) * k)]),
-                       0.5f * (v0 + v1), 0.5f * (g.w[c] + g.w[c + std::size_t(g.nx) * g.ny]));
+    const unsigned c = nodeIndex(i, j, k, g.nx, g.ny), slab = unsigned(g.nx) * unsigned(g.ny);
+    const unsigned uFace = nodeIndex(i, j, k, g.nx + 1, g.ny), vFace = nodeIndex(i, j, k, g.nx, g.ny + 1);
+    const float u0 = __ldg(g.u + uFace), u1 = __ldg(g.u + uFace + 1);
+    const float v0 = __ldg(g.v + vFace), v1 = __ldg(g.v + vFace + unsigned(g.nx));
+    const float w0 = __ldg(g.w + c), w1 = __ldg(g.w + c + slab);
+    return make_float3(0.5f * (u0 + u1), 0.5f * (v0 + v1), 0.5f * (w0 + w1));
 }
 
 /// cellVorticity: central differences of the cell velocities (one-sided at the domain's edge), 0 in solids;
@@ -84,7 +86,7 @@ __global__ void vorticityKernel(GridView g, float* omega, float* magnitude)
     int i, j, k;
     if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
         return;
-    const std::size_t c = nodeIndex(i, j, k, g.nx, g.ny);
+    const unsigned c = nodeIndex(i, j, k, g.nx, g.ny);
     float3 w = make_float3(0.0f, 0.0f, 0.0f);
     if (!g.solid[c])
     {
@@ -108,7 +110,8 @@ __global__ void vorticityKernel(GridView g, float* omega, float* magnitude)
         }
         w = make_float3(d[1].z - d[2].y, d[2].x - d[0].z, d[0].y - d[1].x);
     }
-    omega[3 * c] = w.x, omega[3 * c + 1] = w.y, omega[3 * c + 2] = w.z;
+    float* cellOmega = omega + 3 * std::size_t(c);
+    cellOmega[0] = w.x, cellOmega[1] = w.y, cellOmega[2] = w.z;
     magnitude[c] = sqrtf(w.x * w.x + w.y * w.y + w.z * w.z);
 }
 

@@ -278,7 +278,9 @@ __global__ void smoothFromZeroKernel(LevelView level, float* __restrict__ x, con
 
 /// The coarsest level's sweeps in one block. With `inShared` the level (x, b, its codes: 9 bytes a cell) is
 /// copied to shared memory first and x back at the end: each pass then waits on shared memory, not on global.
-/// A level of no more cells than the block's threads gives each thread one cell, placed once.
+/// A level of no more than two cells a thread gives each thread the cells 2t and 2t + 1 (x neighbours, of the two
+/// colours where nx is even: one relaxation a thread a pass), placed once: the block is as small as the level
+/// allows, and a pass's barrier waits on few warps.
 __global__ void coarsestKernel(LevelView global, float* globalX, const float* globalB, int sweeps, bool inShared)
 {
     extern __shared__ float shared[];
@@ -296,20 +298,32 @@ __global__ void coarsestKernel(LevelView global, float* globalX, const float* gl
     }
     for (std::size_t c = threadIdx.x; c < slots; c += blockDim.x)
         x[c] = 0.0f;
-    const bool oneEach = cells <= blockDim.x;
-    int mine[3] = {0, 0, 0};
-    if (oneEach && threadIdx.x < cells)
-        unpack(threadIdx.x, level.nx, level.ny, mine[0], mine[1], mine[2]);
+    const bool pairs = cells <= 2 * std::size_t(blockDim.x);
+    int mine[2][3] = {{0, 0, 0}, {0, 0, 0}};
+    bool have[2] = {false, false};
+    unsigned slotOf[2] = {0, 0};
+    for (int m = 0; m < 2 && pairs; ++m)
+    {
+        const std::size_t c = 2 * std::size_t(threadIdx.x) + m;
+        have[m] = c < cells;
+        if (have[m])
+        {
+            unpack(c, level.nx, level.ny, mine[m][0], mine[m][1], mine[m][2]);
+            slotOf[m] = level.slot(mine[m][0], mine[m][1], mine[m][2]);
+        }
+    }
     __syncthreads();
     for (int first = 0; first < 2; ++first)
         for (int sweep = 0; sweep < sweeps; ++sweep)
             for (int pass = 0; pass < 2; ++pass)
             {
                 const int colour = (first + pass) % 2;
-                if (oneEach)
+                if (pairs)
                 {
-                    if (threadIdx.x < cells && (mine[0] + mine[1] + mine[2] + colour) % 2 == 0)
-                        relax(level, level.slot(mine[0], mine[1], mine[2]), mine[0], mine[1], mine[2], x, b);
+#pragma unroll
+                    for (int m = 0; m < 2; ++m)
+                        if (have[m] && (mine[m][0] + mine[m][1] + mine[m][2] + colour) % 2 == 0)
+                            relax(level, slotOf[m], mine[m][0], mine[m][1], mine[m][2], x, b);
                 }
                 else
                     for (std::size_t c = threadIdx.x; c < cells; c += blockDim.x)
@@ -426,7 +440,10 @@ void solveCoarsest(const LevelView& level, float* x, const float* b, int sweeps)
     constexpr std::size_t kSharedBytes = 40 * 1024; // within the 48 KiB a block has without opting in
     const std::size_t bytes = level.slots() * (2 * sizeof(float) + 1);
     const bool inShared = bytes <= kSharedBytes;
-    coarsestKernel<<<1, 1024, inShared ? bytes : 0>>>(level, x, b, sweeps, inShared);
+    // Two cells a thread where the level allows (whole warps), else 1,024 threads looping over the cells.
+    const std::size_t pairs = (level.cells() + 1) / 2;
+    const unsigned threads = pairs <= 1024 ? unsigned((pairs + 31) / 32 * 32) : 1024u;
+    coarsestKernel<<<1, threads, inShared ? bytes : 0>>>(level, x, b, sweeps, inShared);
 }
 
 void restrictResidual(const LevelView& fine, const float* b, const float* x, const LevelView& coarse, float* coarseB)

@@ -87,26 +87,38 @@ __device__ float divergenceAt(const GridView& g, unsigned c, int i, int j, int k
     return inverse * (g.u[ux + 1] - g.u[ux] + g.v[vy + unsigned(g.nx)] - g.v[vy] + g.w[c + unsigned(g.nx) * unsigned(g.ny)] - g.w[c]);
 }
 
-__global__ void rightSideKernel(GridView g, LevelView finest, const std::uint8_t* fluid, const float* sink, float* b, float* psi)
+__global__ void rightSideKernel(GridView g, LevelView finest, const std::uint8_t* fluid, const float* sink, float* b,
+                                sim::smoke::PressureWarmStart::Weights start, float* psi, float* previous)
 {
     int i, j, k;
     if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
         return;
     const unsigned c = nodeIndex(i, j, k, g.nx, g.ny), s = finest.slot(i, j, k);
-    if (!fluid[s])
-        psi[s] = 0.0f;
+    // The first guess, in the CPU's roundings (no fused multiply-add).
+    const bool inFluid = fluid[s];
+    const float last = inFluid ? psi[s] : 0.0f;
+    psi[s] = inFluid ? __fadd_rn(__fmul_rn(start.current, last), __fmul_rn(start.previous, previous[s])) : 0.0f;
+    previous[s] = last;
     const float div = g.solid[c] ? 0.0f : divergenceAt(g, c, i, j, k, float(1.0 / g.h));
     b[s] = float(-g.h * g.h) * (div - (sink ? sink[c] : 0.0f));
 }
 
-__global__ void divergenceLeftKernel(GridView g, const float* sink, float* out)
+/// *out = the largest |div u - sink| (NaN as +infinity), by a maximum per block.
+__global__ void divergenceLeftKernel(GridView g, const float* sink, double* out)
 {
     int i, j, k;
-    if (!threadNode(g.nx, g.ny, g.nz, i, j, k))
-        return;
-    const unsigned c = nodeIndex(i, j, k, g.nx, g.ny);
-    const float div = g.solid[c] ? 0.0f : divergenceAt(g, c, i, j, k, float(1.0 / g.h));
-    out[c] = fabsf(div - (sink ? sink[c] : 0.0f));
+    double left = 0.0;
+    if (threadNode(g.nx, g.ny, g.nz, i, j, k))
+    {
+        const unsigned c = nodeIndex(i, j, k, g.nx, g.ny);
+        const float div = g.solid[c] ? 0.0f : divergenceAt(g, c, i, j, k, float(1.0 / g.h));
+        const float value = fabsf(div - (sink ? sink[c] : 0.0f));
+        left = isnan(value) ? double(INFINITY) : double(value);
+    }
+    left = blockMax(left); // every thread of the block takes part
+    // Only a block above the largest so far goes to the atomic: 65,536 of them on one double would queue.
+    if (threadInBlock() == 0 && left > __ldcg(out))
+        atomicMaxNonNegative(out, left);
 }
 
 /// A side of a face: 1 fluid (psi of the cell), 2 ambient (psi 0: an open face, a vent), 0 a wall or a solid.
@@ -179,10 +191,10 @@ void applySolidBoundaries(const GridView& g, bool anySolid)
 }
 
 void projectionRightSide(const GridView& g, const LevelView& finest, const std::uint8_t* fluid, const float* sink, float* b,
-                         float* psi)
+                         sim::smoke::PressureWarmStart::Weights start, float* psi, float* previous)
 {
     const LatticeLaunch cells = launchOver(g.nx, g.ny, g.nz);
-    rightSideKernel<<<cells.blocks, cells.threads>>>(g, finest, fluid, sink, b, psi);
+    rightSideKernel<<<cells.blocks, cells.threads>>>(g, finest, fluid, sink, b, start, psi, previous);
 }
 
 void correctVelocity(const GridView& g, const LevelView& finest, const float* psi)
@@ -193,10 +205,12 @@ void correctVelocity(const GridView& g, const LevelView& finest, const float* ps
     correctKernel<2><<<w.blocks, w.threads>>>(g, finest, psi);
 }
 
-void divergenceLeft(const GridView& g, const float* sink, float* out)
+double largestDivergenceLeft(const GridView& g, const float* sink, double* scratch)
 {
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, sizeof(double)));
     const LatticeLaunch cells = launchOver(g.nx, g.ny, g.nz);
-    divergenceLeftKernel<<<cells.blocks, cells.threads>>>(g, sink, out);
+    divergenceLeftKernel<<<cells.blocks, cells.threads>>>(g, sink, scratch);
+    return fetchScalar(scratch);
 }
 
 double updateSolution(std::size_t n, float alpha, const float* p, const float* q, float* psi, float* r, double* scratch)

@@ -36,27 +36,37 @@ __device__ double absOrInfinity(float value)
     return isnan(value) ? double(INFINITY) : fabs(double(value));
 }
 
-__global__ void maxAbsKernel(const float* a, std::size_t na, const float* b, std::size_t nb, const float* c,
-                             std::size_t nc, double* out)
+/// Up to five arrays in one launch (a launch each costs its ramp and its tail).
+struct Arrays
 {
-    double largest = 0.0;
+    const float* data[5];
+    std::size_t size[5];
+    int count;
+};
+
+/// out[a] = the largest |value| of array a (NaN as +infinity), each array's in one pass.
+__global__ void maxAbsEachKernel(Arrays arrays, double* out)
+{
     const std::size_t stride = std::size_t(gridDim.x) * blockDim.x, first = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
-    for (std::size_t n = first; n < na; n += stride)
-        largest = fmax(largest, absOrInfinity(a[n]));
-    for (std::size_t n = first; n < nb; n += stride)
-        largest = fmax(largest, absOrInfinity(b[n]));
-    for (std::size_t n = first; n < nc; n += stride)
-        largest = fmax(largest, absOrInfinity(c[n]));
-    largest = blockMax(largest);
-    if (threadInBlock() == 0)
-        atomicMaxNonNegative(out, largest);
+    for (int a = 0; a < arrays.count; ++a)
+    {
+        double largest = 0.0;
+        for (std::size_t n = first; n < arrays.size[a]; n += stride)
+            largest = fmax(largest, absOrInfinity(arrays.data[a][n]));
+        largest = blockMax(largest);
+        if (threadInBlock() == 0)
+            atomicMaxNonNegative(out + a, largest);
+        __syncthreads(); // blockMax's shared memory again
+    }
 }
 
-__global__ void notFiniteKernel(const float* field, std::size_t n, double* out)
+__global__ void notFiniteKernel(Arrays arrays, double* out)
 {
     double count = 0.0;
-    for (std::size_t c = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x; c < n; c += std::size_t(gridDim.x) * blockDim.x)
-        count += isfinite(field[c]) ? 0.0 : 1.0;
+    const std::size_t stride = std::size_t(gridDim.x) * blockDim.x, first = blockIdx.x * std::size_t(blockDim.x) + threadIdx.x;
+    for (int a = 0; a < arrays.count; ++a)
+        for (std::size_t n = first; n < arrays.size[a]; n += stride)
+            count += isfinite(arrays.data[a][n]) ? 0.0 : 1.0;
     count = blockSum(count);
     if (threadInBlock() == 0 && count > 0.0)
         atomicAdd(out, count);
@@ -110,22 +120,21 @@ void sumOnFluid(const float* x, const std::uint8_t* fluid, std::size_t n, double
     sum = values[0], count = values[1];
 }
 
-double maxAbs(const float* a, std::size_t na, const float* b, std::size_t nb, const float* c, std::size_t nc,
-              double* scratch)
+void faceSpeeds(const GridView& g, double* scratch, double largest[3])
 {
-    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 2 * sizeof(double)));
-    maxAbsKernel<<<reduceBlocks(std::max(na, std::max(nb, nc))), kBlock>>>(a, na, b, nb, c, nc, scratch);
-    return fetchScalar(scratch);
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 3 * sizeof(double)));
+    const Arrays faces{{g.u, g.v, g.w}, {nodes(latticeOf(g, 0)), nodes(latticeOf(g, 1)), nodes(latticeOf(g, 2))}, 3};
+    maxAbsEachKernel<<<reduceBlocks(faces.size[0]), kBlock>>>(faces, scratch);
+    VSIM_CUDA_CHECK(cudaMemcpy(largest, scratch, 3 * sizeof(double), cudaMemcpyDeviceToHost));
 }
 
 double countNotFinite(const GridView& g, double* scratch)
 {
-    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, 2 * sizeof(double)));
+    VSIM_CUDA_CHECK(cudaMemsetAsync(scratch, 0, sizeof(double)));
     const std::size_t cells = g.cells();
-    const std::size_t sizes[5] = {nodes(latticeOf(g, 0)), nodes(latticeOf(g, 1)), nodes(latticeOf(g, 2)), cells, cells};
-    const float* fields[5] = {g.u, g.v, g.w, g.density, g.temperature};
-    for (int f = 0; f < 5; ++f)
-        notFiniteKernel<<<reduceBlocks(sizes[f]), kBlock>>>(fields[f], sizes[f], scratch);
+    const Arrays fields{{g.u, g.v, g.w, g.density, g.temperature},
+                        {nodes(latticeOf(g, 0)), nodes(latticeOf(g, 1)), nodes(latticeOf(g, 2)), cells, cells}, 5};
+    notFiniteKernel<<<reduceBlocks(cells), kBlock>>>(fields, scratch);
     return fetchScalar(scratch);
 }
 

@@ -7,6 +7,8 @@
 
 #include "SmokeDevice.cuh"
 
+#include "vsim/sim/smoke/PressureWarmStart.h"
+
 namespace vsim::cuda::smoke {
 
 // ---- advection (AdvectionKernels.cu)
@@ -19,9 +21,9 @@ void advectLattice(const GridView& g, int kind, float* field, const float* old, 
 /// `velocity` the axis's face velocities at the step's start, `substeps` sub-steps of `ratio` = dt / substeps / h,
 /// `start` the two fields at the step's start (density then temperature, cells() each). Each sub-step writes the
 /// spare arrays from the current ones and swaps them: afterwards `density` and `temperature` (and g's) point at
-/// the result, the spares at the other buffers.
+/// the result, the spares at the other buffers. `clampLast`: the last sub-step writes clampScalars' values.
 void transportAxis(GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
-                   float*& density, float*& temperature, float*& spareDensity, float*& spareTemperature);
+                   float*& density, float*& temperature, float*& spareDensity, float*& spareTemperature, bool clampLast);
 /// Negative smoke and heat to zero; none in cells that are not fluid.
 void clampScalars(const GridView& g);
 
@@ -52,8 +54,8 @@ void seedParticles(const GridView& g, const double* places, int count, double* p
 /// Faces of solids and of the domain's walls take the solid's normal velocity (applySolidBoundaries); without
 /// any solid or vent cell (`anySolid` false) only the walls' faces are visited, as the CPU's.
 void applySolidBoundaries(const GridView& g, bool anySolid);
-/// |div u - sink| per cell into `out` (cells(), x fastest).
-void divergenceLeft(const GridView& g, const float* sink, float* out);
+/// The largest |div u - sink| over the cells (1/s; NaN counts as +infinity; `scratch`: a double on the device).
+double largestDivergenceLeft(const GridView& g, const float* sink, double* scratch);
 
 // ---- the Poisson operator and its multigrid levels (ProjectionKernels.cu)
 /// A level's cell code: 0 outside the fluid; in it kFluidCode plus the diagonal (its faces towards fluid, a vent or
@@ -85,10 +87,11 @@ struct LevelView
         return unsigned((i + j + k) & 1) * colourSlots() + unsigned(i >> 1) + half() * (unsigned(j) + unsigned(ny) * unsigned(k));
     }
 };
-/// b = -h^2 (div u - sink) on the fluid cells (0 elsewhere); psi = 0 where a cell is not fluid (b, psi and the
+/// b = -h^2 (div u - sink) on the fluid cells (0 elsewhere); the first guess psi = start.current psi +
+/// start.previous previous on the fluid cells, 0 elsewhere, and previous = the psi it had (b, psi, previous and the
 /// flags in the finest level's slots; sink x fastest).
 void projectionRightSide(const GridView& g, const LevelView& finest, const std::uint8_t* fluid, const float* sink, float* b,
-                         float* psi);
+                         sim::smoke::PressureWarmStart::Weights start, float* psi, float* previous);
 /// u -= grad psi / h on the faces between fluid cells and between fluid and the ambient (open faces, vents); psi in
 /// the finest level's slots.
 void correctVelocity(const GridView& g, const LevelView& finest, const float* psi);
@@ -135,9 +138,9 @@ double fetchScalar(const double* scratch);
 double dot(const float* a, const float* b, std::size_t n, double* scratch);
 /// Sum and count of x over the fluid cells.
 void sumOnFluid(const float* x, const std::uint8_t* fluid, std::size_t n, double* scratch, double& sum, double& count);
-/// Largest |x| over three arrays (any may be null with n 0); NaN counts as +infinity.
-double maxAbs(const float* a, std::size_t na, const float* b, std::size_t nb, const float* c, std::size_t nc,
-              double* scratch);
+/// The largest |u|, |v| and |w| of the grid's faces, each (NaN counts as +infinity), in one launch
+/// (`scratch`: 3 doubles on the device).
+void faceSpeeds(const GridView& g, double* scratch, double largest[3]);
 /// The number of values that are not finite over the grid's velocity, smoke and temperature.
 double countNotFinite(const GridView& g, double* scratch);
 

@@ -86,14 +86,14 @@ void CpuSmokeBackend::placeSolids(SmokeGrid& grid, const std::vector<std::uint8_
             grid.density[c] = 0.0f, grid.temperature[c] = 0.0f;
 }
 
-ProjectionReport CpuSmokeBackend::project(SmokeGrid& grid, double tolerance, int maxIterations, bool withSink)
+ProjectionReport CpuSmokeBackend::project(SmokeGrid& grid, double tolerance, int maxIterations, bool withSink, double stepS)
 {
     if (!m_prepared)
     {
         m_projection.prepare(grid);
         m_prepared = true;
     }
-    return m_projection.project(grid, tolerance, maxIterations, withSink ? &m_sink : nullptr);
+    return m_projection.project(grid, tolerance, maxIterations, withSink ? &m_sink : nullptr, stepS);
 }
 
 void CpuSmokeBackend::advanceParticles(const SmokeGrid& grid, VortexParticles& particles, double dt)

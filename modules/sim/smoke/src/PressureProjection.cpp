@@ -129,22 +129,27 @@ void PressureProjection::prepare(const SmokeGrid& grid)
     m_sides.resize(grid.cells());
     for (std::size_t c = 0; c < grid.cells(); ++c)
         m_sides[c] = grid.solid[c] == kFluid ? 1 : grid.solid[c] == kVent ? 2 : 0;
-    for (std::vector<float>* work : {&m_psi, &m_b, &m_r, &m_z, &m_p, &m_q})
-        work->assign(grid.cells(), 0.0f);
+    for (std::vector<float>* work : {&m_psi, &m_previousPsi, &m_b, &m_r, &m_z, &m_p, &m_q})
+        work->resize(grid.cells(), 0.0f); // psi and its history kept (a moving ball changes the solids every few steps)
 }
 
 ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, int maxIterations,
-                                             const std::vector<float>* sourceDivergence)
+                                             const std::vector<float>* sourceDivergence, double stepS)
 {
     if (m_psi.size() != grid.cells())
         prepare(grid);
     applySolidBoundaries(grid);
     ProjectionReport report;
-    // The operator reads every neighbour and counts on 0 outside the fluid (a body that moved leaves old values).
+    // The first guess from the last two psi; 0 outside the fluid, where the operator counts on it (a body that moved
+    // leaves old values).
     const std::vector<std::uint8_t>& fluidCells = m_multigrid.fluid();
+    const PressureWarmStart::Weights start = m_warmStart.weights(stepS);
     for (std::size_t c = 0; c < m_psi.size(); ++c)
-        if (!fluidCells[c])
-            m_psi[c] = 0.0f;
+    {
+        const float last = fluidCells[c] ? m_psi[c] : 0.0f;
+        m_psi[c] = fluidCells[c] ? start.current * last + start.previous * m_previousPsi[c] : 0.0f;
+        m_previousPsi[c] = last;
+    }
     // b = -h^2 div u' on the fluid cells: A psi = b makes the corrected velocity divergence-free.
     const std::vector<float> div = divergence(grid);
     const float scale = float(-grid.h * grid.h);
@@ -220,6 +225,7 @@ ProjectionReport PressureProjection::project(SmokeGrid& grid, double tolerance, 
         report.relativeResidual = std::sqrt(dot(m_r, m_r)) / bNorm;
     }
     report.converged = report.relativeResidual <= tolerance;
+    m_warmStart.record(stepS);
 
     // u = u' - grad psi on the faces between fluid cells, and between a fluid cell and the ambient (an open domain
     // face or a vent cell, psi = 0 there).

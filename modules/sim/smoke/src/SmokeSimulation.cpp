@@ -90,10 +90,10 @@ double SmokeSimulation::stableStep(double maxDt) const
     return speed > 0.0 ? std::min(maxDt, m_settings.cfl * m_grid.h / speed) : maxDt;
 }
 
-ProjectionReport SmokeSimulation::project()
+ProjectionReport SmokeSimulation::projectStep(double stepS)
 {
     const bool sucking = m_suction && m_time >= m_suction->onS && m_time < m_suction->offS;
-    return backend().project(m_grid, m_settings.tolerance, m_settings.maxIterations, sucking);
+    return backend().project(m_grid, m_settings.tolerance, m_settings.maxIterations, sucking, stepS);
 }
 
 void SmokeSimulation::applySources(double dt, bool setVelocity)
@@ -151,7 +151,7 @@ SmokeStepReport SmokeSimulation::step(double dt)
     applySources(dt, true);
     report.forceSeconds = seconds(started);
     started = Clock::now();
-    report.projection = project();
+    report.projection = projectStep(dt);
     report.projectionSeconds = seconds(started);
     started = Clock::now();
     backend.advanceParticles(m_grid, m_particles, dt);

@@ -39,7 +39,7 @@ public:
                      const sim::smoke::MovingSphere* sphere) override;
     void setSink(const std::vector<float>& sink) override;
     sim::smoke::ProjectionReport project(sim::smoke::SmokeGrid& grid, double tolerance, int maxIterations,
-                                         bool withSink) override;
+                                         bool withSink, double stepS) override;
     void advanceParticles(const sim::smoke::SmokeGrid& grid, sim::smoke::VortexParticles& particles, double dt) override;
     void seedParticles(const sim::smoke::SmokeGrid& grid, sim::smoke::VortexParticles& particles,
                        const std::vector<Eigen::Vector3d>& places) override;

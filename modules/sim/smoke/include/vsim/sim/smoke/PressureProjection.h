@@ -3,10 +3,12 @@
 // The pressure projection of the stable-fluids step (Stam 1999; thesis eqs. 7.5 - 7.6, where the printed 7.5 means
 // the divergence of u'): the faces of solids and of wall boundaries take the solid's normal velocity, then
 // lap psi = div u' with psi = dt p / rho is solved by multigrid-preconditioned conjugate gradients
-// (PoissonMultigrid.h) to a relative residual, warm-started from the last projection's psi, and u = u' - grad psi.
+// (PoissonMultigrid.h) to a relative residual, warm-started from the last two projections' psi extrapolated in time
+// (PressureWarmStart.h), and u = u' - grad psi.
 // Every projection reports its iterations, its residual and the largest divergence left.
 
 #include "vsim/sim/smoke/PoissonMultigrid.h"
+#include "vsim/sim/smoke/PressureWarmStart.h"
 #include "vsim/sim/smoke/SmokeGrid.h"
 
 #include <vector>
@@ -32,13 +34,15 @@ std::vector<float> divergence(const SmokeGrid& grid);
 class PressureProjection
 {
 public:
-    /// Builds the operator for the grid's solids and boundaries; call again after they change.
+    /// Builds the operator for the grid's solids and boundaries; call again after they change (psi and its history
+    /// are kept while the grid's size is).
     void prepare(const SmokeGrid& grid);
     /// Projects the grid's velocity: the solid faces first, then the solve to `tolerance` (relative residual) in
     /// at most `maxIterations` conjugate-gradient iterations. `sourceDivergence` (1/s per cell, optional) is the
-    /// divergence the flow keeps: a suction's sink (negative) takes that much volume out of its cells.
+    /// divergence the flow keeps: a suction's sink (negative) takes that much volume out of its cells. `stepS`: the
+    /// length of the step this projection ends (s), for the warm start; 0 for a projection outside a step.
     ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations,
-                             const std::vector<float>* sourceDivergence = nullptr);
+                             const std::vector<float>* sourceDivergence = nullptr, double stepS = 0.0);
     /// psi of the last projection (m^2/s; the pressure is rho psi / dt).
     const std::vector<float>& potential() const { return m_psi; }
     const PoissonMultigrid& multigrid() const { return m_multigrid; }
@@ -47,6 +51,8 @@ private:
     PoissonMultigrid m_multigrid;
     std::vector<std::uint8_t> m_sides; ///< per cell: 1 fluid, 2 a vent (ambient), 0 solid
     std::vector<float> m_psi, m_b, m_r, m_z, m_p, m_q;
+    std::vector<float> m_previousPsi; ///< psi of the projection before the last
+    PressureWarmStart m_warmStart;
 };
 
 } // namespace vsim::sim::smoke

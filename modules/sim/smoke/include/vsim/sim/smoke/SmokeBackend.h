@@ -55,8 +55,8 @@ public:
                              const MovingSphere* sphere) = 0;
     /// The suction's divergence per cell (1/s), which project() keeps when asked to.
     virtual void setSink(const std::vector<float>& sink) = 0;
-    /// PressureProjection.h's project(), with the sink when `withSink`.
-    virtual ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations, bool withSink) = 0;
+    /// PressureProjection.h's project(), with the sink when `withSink`; `stepS` the step it ends (0: none).
+    virtual ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations, bool withSink, double stepS) = 0;
     /// VortexParticles::advance.
     virtual void advanceParticles(const SmokeGrid& grid, VortexParticles& particles, double dt) = 0;
     /// VortexParticles::seedAt: particles at `places` (m) that lie in fluid, with the grid's vorticity there.
@@ -83,7 +83,7 @@ public:
                          const VortexParticles& particles) override;
     void placeSolids(SmokeGrid& grid, const std::vector<std::uint8_t>& staticSolid, const MovingSphere* sphere) override;
     void setSink(const std::vector<float>& sink) override { m_sink = sink; }
-    ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations, bool withSink) override;
+    ProjectionReport project(SmokeGrid& grid, double tolerance, int maxIterations, bool withSink, double stepS) override;
     void advanceParticles(const SmokeGrid& grid, VortexParticles& particles, double dt) override;
     void seedParticles(const SmokeGrid& grid, VortexParticles& particles,
                        const std::vector<Eigen::Vector3d>& places) override;

@@ -118,9 +118,11 @@ public:
     const std::optional<MovingSphere>& sphere() const { return m_sphere; }
     double time() const { return m_time; }
     /// Makes the current velocity divergence-free (an initial field), with the solids as they are.
-    ProjectionReport project();
+    ProjectionReport project() { return projectStep(0.0); }
 
 private:
+    /// The projection that ends a step of `stepS` seconds (0: outside a step).
+    ProjectionReport projectStep(double stepS);
     /// The sources' smoke, heat and newborn particles (before the advection), or their velocity (`setVelocity`:
     /// after the forces, before the projection).
     void applySources(double dt, bool setVelocity);
