@@ -45,24 +45,27 @@ double median(std::vector<double> values)
 #ifdef VSIM_BENCH_SMOKE_CUDA
 /// The bytes one step's kernels move at the least, in units of N = the cells (one float per cell is 4 N): each
 /// kernel reading and writing its arrays once (cuda/smoke's kernels, the transport's `substeps` over the three
-/// axes, `iterations` conjugate-gradient iterations, the V-cycle's coarser levels an eighth of the finer's).
-/// An estimate of the compulsory traffic, not a count of the caches' misses.
+/// axes, `iterations` conjugate-gradient iterations). An estimate of the compulsory traffic, not a count of the
+/// caches' misses.
 double leastBytesPerCell(int substeps, int iterations)
 {
-    // The finest level's V-cycle (its cells stored by colour): the first pass from x = 0 (b and the codes read, x
-    // written: 9), seven more half passes (the other colour's x, this colour's b and codes read, its x written:
-    // 6.5), the residual's restriction (b, x, the codes; an eighth written: 9.5), the prolongation (x read and
-    // written, the codes, an eighth read: 9.5).
-    const double vcycle = (9 + 7 * 6.5 + 9.5 + 9.5) * 8.0 / 7.0;
-    const double advection = 24 + 48 + 16 + 29.0 * substeps + 17 + 12;   // copies, 3 lattices, start, sweeps, clamp, maxima
+    // A level's V-cycle per cell of that level: the first pass from x = 0 (b and the codes read, x written: 9),
+    // 4 s - 1 more half passes (by colour: the other colour's x, this colour's b and codes read, its x written:
+    // 6.5), the residual's restriction (b, x, the codes; an eighth written: 9.5) and the prolongation (x read and
+    // written, the codes, an eighth read: 9.5); s = PoissonMultigrid::smoothingSweeps (2 on the finest level, 6 on
+    // the coarser ones, which together hold a seventh of the finest's cells).
+    const auto level = [](int sweeps) { return 9 + (4 * sweeps - 1) * 6.5 + 9.5 + 9.5; };
+    const double vcycle = level(2) + level(6) / 7.0;
+    const double advection = 24 + 48 + 16 + 29.0 * substeps;             // copies, 3 lattices, start, sweeps (clamped in the last)
     const double forces = 8 + 17 + 95;                                    // cooling, buoyancy, vorticity and confinement
-    // The right side 18, |b| 4, the true residual twice (13, |r| 4), the first V-cycle, p = z 8, r . z 8, the
-    // velocity's correction 39, the divergence left 17 and its largest 4, the largest speed 12.
-    const double projectionSetUp = 18 + 4 + 2 * 17 + vcycle + 8 + 8 + 39 + 17 + 4 + 12;
+    // The right side with the warm start 34 (psi and its predecessor read and written), |b| 4, the true residual
+    // twice (13, |r| 4), the first V-cycle, p = z 8, r . z 8, the velocity's correction 39, the largest divergence
+    // left 13, the faces' largest speeds 12.
+    const double projectionSetUp = 34 + 4 + 2 * 17 + vcycle + 8 + 8 + 39 + 13 + 12;
     // Each iteration: q = A p with p . q 9, psi and r updated with |r| 24; all but the last also a V-cycle,
     // r . z 8 and p = z + beta p 12.
     const double perIteration = 9 + 24, perContinuation = vcycle + 8 + 12;
-    const double guards = 44;                                             // the step's largest speeds, not-finite count
+    const double guards = 20;                                             // the not-finite count over five fields
     return advection + forces + projectionSetUp + iterations * perIteration + std::max(0, iterations - 1) * perContinuation +
            guards;
 }

@@ -20,7 +20,6 @@ namespace host = vsim::sim::smoke;
 
 namespace {
 
-constexpr int kSmoothingSweeps = 2;  // as PoissonMultigrid.cpp
 constexpr int kCoarsestSweeps = 30;
 constexpr std::size_t kCoarsestCells = 512;
 constexpr int kCgAttempts = 3;       // as PressureProjection.cpp
@@ -141,14 +140,20 @@ struct CudaSmokeBackend::Device
             solveCoarsest(view, x, rhs, kCoarsestSweeps);
             return;
         }
+        const int sweeps = host::PoissonMultigrid::smoothingSweeps(depth);
+        if (depth + 2 == levels.size() && bottomFits(view, levels.back().view()))
+        {
+            solveBottom(view, levels.back().view(), rhs, x, sweeps, kCoarsestSweeps);
+            return;
+        }
         smoothLevelFromZero(view, x, rhs, 0); // x = 0 and the first sweep's first pass, in one
-        for (int sweep = 1; sweep < kSmoothingSweeps; ++sweep)
+        for (int sweep = 1; sweep < sweeps; ++sweep)
             smoothLevel(view, x, rhs, 0);
         Level& coarse = levels[depth + 1];
         restrictResidual(view, rhs, x, coarse.view(), coarse.b.data);
         vcycle(depth + 1, coarse.b.data, coarse.x.data);
         prolongCorrection(view, x, coarse.view(), coarse.x.data);
-        for (int sweep = 0; sweep < kSmoothingSweeps; ++sweep)
+        for (int sweep = 0; sweep < sweeps; ++sweep)
             smoothLevel(view, x, rhs, 1);
     }
 

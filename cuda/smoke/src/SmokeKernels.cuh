@@ -111,6 +111,11 @@ void smoothLevel(const LevelView& level, float* x, const float* b, int colourFir
 void smoothLevelFromZero(const LevelView& level, float* x, const float* b, int colourFirst);
 /// The coarsest level: `sweeps` pass pairs from colour 0, then `sweeps` from colour 1, in one block.
 void solveCoarsest(const LevelView& level, float* x, const float* b, int sweeps);
+/// Whether solveBottom takes these two levels (both x fastest, small enough for one block's shared memory).
+bool bottomFits(const LevelView& upper, const LevelView& coarsest);
+/// The V-cycle from `upper` down (upper, then the coarsest below it) in one block: x = the cycle's result for the
+/// right side rhs, as smoothing `sweeps` pairs, the coarse correction by `coarsestSweeps` pairs each way, smoothing.
+void solveBottom(const LevelView& upper, const LevelView& coarsest, const float* rhs, float* x, int sweeps, int coarsestSweeps);
 /// coarse.b = half the sum over each coarse cell's fluid children of the residual b - A x.
 void restrictResidual(const LevelView& fine, const float* b, const float* x, const LevelView& coarse, float* coarseB);
 /// x += the parent's correction on the fluid cells.

@@ -5,7 +5,6 @@
 namespace vsim::sim::smoke {
 namespace {
 
-constexpr int kSmoothingSweeps = 2;     // red-black sweeps before and after the coarse correction
 constexpr int kCoarsestSweeps = 30;     // symmetric sweeps that stand for a solve on the coarsest level
 constexpr std::size_t kCoarsestCells = 512;
 constexpr std::size_t kParallelCells = 32768; // smaller levels run on one thread: a parallel region costs more there
@@ -175,7 +174,8 @@ void PoissonMultigrid::vcycle(std::size_t depth, const std::vector<float>& b, st
             smooth(level, x, b, 1);
         return;
     }
-    for (int sweep = 0; sweep < kSmoothingSweeps; ++sweep)
+    const int sweeps = smoothingSweeps(depth);
+    for (int sweep = 0; sweep < sweeps; ++sweep)
         smooth(level, x, b, 0);
     applyLevel(level, x, level.r);
     const Level& coarse = m_levels[depth + 1];
@@ -206,7 +206,7 @@ void PoissonMultigrid::vcycle(std::size_t depth, const std::vector<float>& b, st
                 if (level.fluid[c])
                     x[c] += coarse.x[coarse.index(i / 2, j / 2, k / 2)];
             }
-    for (int sweep = 0; sweep < kSmoothingSweeps; ++sweep)
+    for (int sweep = 0; sweep < sweeps; ++sweep)
         smooth(level, x, b, 1);
 }
 

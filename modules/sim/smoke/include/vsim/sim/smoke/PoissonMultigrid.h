@@ -4,8 +4,8 @@
 // "A parallel multigrid Poisson solver for fluids simulation"): A x = sum over a fluid cell's faces of (x_cell -
 // x_neighbour), with no term through a solid face (Neumann, dp/dn = 0) and x = 0 beyond an open domain face
 // (Dirichlet, ambient pressure), and so in a vent cell. The hierarchy halves the grid (a coarse cell is fluid when any of its eight
-// children is); one V-cycle smooths with red-black Gauss-Seidel, red then black going down and black then red
-// coming up, so that the preconditioner is symmetric as conjugate gradients needs; the residual goes down as the
+// children is); one V-cycle smooths with red-black Gauss-Seidel (smoothingSweeps()), red then black going down and
+// black then red coming up, so that the preconditioner is symmetric as conjugate gradients needs; the residual goes down as the
 // children's sum over two (the coarse operator is the same stencil at twice the spacing), the correction comes up
 // piecewise constant. Without an open face the operator is singular (pressure up to a constant): apply() and the
 // V-cycle keep the mean over the fluid cells at zero then.
@@ -29,6 +29,13 @@ public:
     void precondition(const std::vector<float>& r, std::vector<float>& z) const;
     /// Sets the mean over the fluid cells to zero where the operator is singular; nothing otherwise.
     void removeNullSpace(std::vector<float>& x) const;
+
+    /// Red-black sweeps before and after the coarse correction at `depth` (0 the finest): 2 on the finest level
+    /// and 6 on the coarser ones, whose sweeps cost an eighth of the finest's or less. The coarse correction's
+    /// quality is what sets the iterations: the plume warm-started needs 3.0 MGPCG iterations a projection with
+    /// 6 coarse sweeps against 3.7-3.9 with 2, on the CPU at 128^3 and on the GPU at 256^3 (RESULTS.md,
+    /// 2026-11-30); more sweeps on the finest level cost more than the iterations they save.
+    static constexpr int smoothingSweeps(std::size_t depth) { return depth == 0 ? 2 : 6; }
 
     bool singular() const { return m_singular; }
     /// Whether the grid's operator is singular: no open domain face and no vent cell.
