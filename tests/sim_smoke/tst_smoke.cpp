@@ -9,6 +9,7 @@
 #include "vsim/sim/smoke/Advection.h"
 #include "vsim/sim/smoke/PoissonMultigrid.h"
 #include "vsim/sim/smoke/PressureProjection.h"
+#include "vsim/sim/smoke/PressureWarmStart.h"
 #include "vsim/sim/smoke/SmokeForces.h"
 #include "vsim/sim/smoke/SmokeSimulation.h"
 #include "vsim/sim/smoke/SmokeValidation.h"
@@ -102,6 +103,42 @@ private slots:
             QVERIFY2(std::abs(left - right) <= 1e-4 * std::abs(left), qPrintable(QString("%1 vs %2").arg(left).arg(right)));
             QVERIFY(dot(ma, a) > 0.0); // positive definite on the fluid cells (less the constant when closed)
         }
+    }
+
+    // The warm start's weights reproduce a pressure linear in time exactly, over steps of different lengths
+    // (psi = dt p: the truth is dt p(t + dt)); they fall back to the last psi without two comparable steps.
+    void warmStartExtrapolatesALinearPressure()
+    {
+        const auto pressure = [](double t) { return 3.0 + 20.0 * t; };
+        PressureWarmStart start;
+        const auto weights = [&](double dt) {
+            const PressureWarmStart::Weights w = start.weights(dt);
+            return std::pair<double, double>{w.current, w.previous};
+        };
+        QCOMPARE(weights(0.01), (std::pair<double, double>{1.0, 0.0})); // no step yet
+        double t = 0.0, psiPrevious = 0.0, psiLast = 0.0;
+        for (double dt : {0.010, 0.012, 0.011, 0.0095, 0.013})
+        {
+            if (t > 0.011) // two steps recorded: the guess is the truth to float rounding
+            {
+                const PressureWarmStart::Weights w = start.weights(dt);
+                const double guess = double(w.current) * psiLast + double(w.previous) * psiPrevious;
+                const double truth = dt * pressure(t + dt);
+                QVERIFY2(std::abs(guess - truth) <= 1e-6 * truth, qPrintable(QString("%1 vs %2").arg(guess).arg(truth)));
+            }
+            t += dt;
+            psiPrevious = psiLast, psiLast = dt * pressure(t);
+            start.record(dt);
+        }
+        QCOMPARE(weights(0.03), (std::pair<double, double>{1.0, 0.0}));   // more than twice the last step
+        QCOMPARE(weights(0.005), (std::pair<double, double>{1.0, 0.0}));  // less than half of it
+        QCOMPARE(weights(0.0), (std::pair<double, double>{1.0, 0.0}));    // a projection outside a step
+        start.record(0.0);                                                // forgets the history
+        QCOMPARE(weights(0.013), (std::pair<double, double>{1.0, 0.0}));
+        start.record(0.013);
+        QCOMPARE(weights(0.013), (std::pair<double, double>{1.0, 0.0}));  // one step: the last psi as it is
+        start.record(0.013);
+        QCOMPARE(weights(0.013), (std::pair<double, double>{2.0, -1.0})); // equal steps: 2 psi_n - psi_n-1
     }
 
     // A uniform stream through a pipe open at both ends is divergence-free already: the projection leaves it.
