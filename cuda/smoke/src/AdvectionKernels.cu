@@ -111,19 +111,20 @@ __device__ int extentAlong(const GridView& g)
     return axis == 0 ? g.nx : axis == 1 ? g.ny : g.nz;
 }
 
-/// A cell's neighbourhood along the sweep's axis, offsets -2 ... 2: inside the domain, its kind, its smoke and heat.
+/// A thread's two cells' neighbourhood along the sweep's axis, offsets -2 ... 3 from the first: inside the
+/// domain, its kind, its smoke and heat.
 struct AxisStencil
 {
-    bool inside[5];
-    std::uint8_t kind[5];
-    float value[2][5];
+    bool inside[6];
+    std::uint8_t kind[6];
+    float value[2][6];
 
     /// Whether cell o holds smoke (inside, fluid: a solid or a vent holds none).
     __device__ bool present(int o) const { return inside[o + 2] && kind[o + 2] == kFluid; }
 };
 
-/// The flux of smoke and heat through the face between stencil cells q and q + 1 (q = -1: the cell's low face,
-/// 0: its high face): the face velocity times the upwind cell's value with its minmod-limited slope
+/// The flux of smoke and heat through the face between stencil cells q and q + 1 (q = -1: the first cell's low
+/// face, 0: the face between the two cells, 1: the second cell's high face): the face velocity times the upwind cell's value with its minmod-limited slope
 /// (Advection.cpp's transportAlong); 0 where smoke does not pass (a solid on either side, a wall of the domain).
 /// Returns whether it passes. q and the axis are template arguments: every index below is known when compiled
 /// (a run-time index into the stencil, or into the kernel's parameters, would go through local memory).
@@ -159,28 +160,47 @@ __device__ bool faceFlux(const GridView& g, const AxisStencil& s, float speed, f
     return true;
 }
 
-/// One sub-step of the axis's sweep at each cell, from the fields `in` into `out`: the fluxes through its two
-/// faces (each face's computed by both its cells, alike), less the step's start value times the sweep's own
-/// divergence. Solid cells keep their values; with `clamp` (the advection's last sub-step) the values written are
-/// clampKernel's: negative ones 0, none outside the fluid. 32-bit indices (the backend refuses grids of 2^31 cells
-/// or more).
+/// The value a sub-step leaves in a cell: the fluxes through its two faces, less the step's start value times the
+/// sweep's own divergence (the velocity through the faces where smoke passes); a solid or a vent keeps its value.
+/// With `clamp` clampKernel's value: negative ones 0, none outside the fluid.
+template <bool clamp>
+__device__ float2 transported(bool fluid, float ratio, const float value[2], const float start[2], const float lowFlux[2],
+                              const float highFlux[2], float divergence)
+{
+    float out[2];
+#pragma unroll
+    for (int m = 0; m < 2; ++m)
+    {
+        const float next = fluid ? value[m] - ratio * ((highFlux[m] - lowFlux[m]) - start[m] * divergence) : value[m];
+        out[m] = clamp ? (fluid ? fmaxf(next, 0.0f) : 0.0f) : next;
+    }
+    return make_float2(out[0], out[1]);
+}
+
+/// One sub-step of the axis's sweep, two cells a thread along the axis (the second absent past an odd extent),
+/// from the fields `in` into `out`. The face between the two is computed once for both (the CPU computes it for
+/// each of its cells, alike: the same floats); the stencil is six cells where two threads of one cell each read
+/// ten. With `clamp` (the advection's last sub-step) the values written are clampKernel's. 32-bit indices (the
+/// backend refuses grids of 2^31 cells or more).
 template <int axis, bool clamp>
 __global__ void transportKernel(GridView g, const float* __restrict__ velocity, float ratio, const float* __restrict__ start,
                                 const float* __restrict__ density, const float* __restrict__ temperature,
                                 float* __restrict__ outDensity, float* __restrict__ outTemperature)
 {
     int ti, tj, tk;
-    if (!threadNode(g.nx, g.ny, g.nz, ti, tj, tk))
+    if (!threadNode(axis == 0 ? (g.nx + 1) / 2 : g.nx, axis == 1 ? (g.ny + 1) / 2 : g.ny, axis == 2 ? (g.nz + 1) / 2 : g.nz,
+                    ti, tj, tk))
         return;
+    ti *= axis == 0 ? 2 : 1, tj *= axis == 1 ? 2 : 1, tk *= axis == 2 ? 2 : 1;
     const unsigned nx = unsigned(g.nx), ny = unsigned(g.ny), cells = nx * ny * unsigned(g.nz);
     const unsigned i = unsigned(ti), j = unsigned(tj), k = unsigned(tk), c = nodeIndex(ti, tj, tk, g.nx, g.ny);
-    // Every load first (the stencil holds the cell's own kind), then the solid's early way out: the loads wait
-    // on memory together.
     const int at = int(axis == 0 ? i : axis == 1 ? j : k), n = extentAlong<axis>(g);
     const int stride = axis == 0 ? 1 : axis == 1 ? int(nx) : int(nx * ny);
+    const bool second = at + 1 < n;
+    // Every load first: the loads wait on memory together.
     AxisStencil s;
 #pragma unroll
-    for (int o = -2; o <= 2; ++o)
+    for (int o = -2; o <= 3; ++o)
     {
         const bool inside = at + o >= 0 && at + o < n;
         const unsigned cell = unsigned(int(c) + o * stride);
@@ -191,23 +211,26 @@ __global__ void transportKernel(GridView g, const float* __restrict__ velocity, 
     }
     // The faces' lattice: x fastest, (nx + 1, ny, nz) for u, (nx, ny + 1, nz) for v, (nx, ny, nz + 1) for w.
     const unsigned sx = nx + (axis == 0), sy = ny + (axis == 1);
-    const unsigned low = i + sx * (j + sy * k), high = low + (axis == 0 ? 1u : axis == 1 ? sx : sx * sy);
-    const float lowSpeed = velocity[low], highSpeed = velocity[high];
-    const float startDensity = start[c], startTemperature = start[cells + c];
-    if (s.kind[2] != kFluid) // a solid or a vent keeps its values
-    {
-        outDensity[c] = clamp ? 0.0f : s.value[0][2], outTemperature[c] = clamp ? 0.0f : s.value[1][2];
-        return;
-    }
-    float lowFlux[2], highFlux[2];
+    const unsigned faceStride = axis == 0 ? 1u : axis == 1 ? sx : sx * sy;
+    const unsigned low = i + sx * (j + sy * k), middle = low + faceStride;
+    const float lowSpeed = velocity[low], middleSpeed = velocity[middle];
+    const float highSpeed = second ? velocity[middle + faceStride] : 0.0f;
+    const unsigned c1 = c + unsigned(stride);
+    const float start0[2] = {start[c], start[cells + c]};
+    const float start1[2] = {second ? start[c1] : 0.0f, second ? start[cells + c1] : 0.0f};
+    float lowFlux[2], middleFlux[2], highFlux[2] = {0.0f, 0.0f};
     const bool lowPasses = faceFlux<axis, -1>(g, s, lowSpeed, lowFlux);
-    const bool highPasses = faceFlux<axis, 0>(g, s, highSpeed, highFlux);
-    // The sweep's own divergence: the velocity through the faces where smoke passes.
-    const float divergence = (highPasses ? highSpeed : 0.0f) - (lowPasses ? lowSpeed : 0.0f);
-    const float density1 = s.value[0][2] - ratio * ((highFlux[0] - lowFlux[0]) - startDensity * divergence);
-    const float temperature1 = s.value[1][2] - ratio * ((highFlux[1] - lowFlux[1]) - startTemperature * divergence);
-    outDensity[c] = clamp ? fmaxf(density1, 0.0f) : density1;
-    outTemperature[c] = clamp ? fmaxf(temperature1, 0.0f) : temperature1;
+    const bool middlePasses = faceFlux<axis, 0>(g, s, middleSpeed, middleFlux);
+    const bool highPasses = second && faceFlux<axis, 1>(g, s, highSpeed, highFlux);
+    const float value0[2] = {s.value[0][2], s.value[1][2]}, value1[2] = {s.value[0][3], s.value[1][3]};
+    const float through0 = (middlePasses ? middleSpeed : 0.0f) - (lowPasses ? lowSpeed : 0.0f);
+    const float2 first = transported<clamp>(s.kind[2] == kFluid, ratio, value0, start0, lowFlux, middleFlux, through0);
+    outDensity[c] = first.x, outTemperature[c] = first.y;
+    if (!second)
+        return;
+    const float through1 = (highPasses ? highSpeed : 0.0f) - (middlePasses ? middleSpeed : 0.0f);
+    const float2 next = transported<clamp>(s.kind[3] == kFluid, ratio, value1, start1, middleFlux, highFlux, through1);
+    outDensity[c1] = next.x, outTemperature[c1] = next.y;
 }
 
 template <int axis>
@@ -252,7 +275,9 @@ void advectLattice(const GridView& g, int kind, float* field, const float* old, 
 void transportAxis(GridView& g, int axis, const float* velocity, int substeps, float ratio, const float* start,
                    float*& density, float*& temperature, float*& spareDensity, float*& spareTemperature, bool clampLast)
 {
-    const LatticeLaunch launch = launchOver(g.nx, g.ny, g.nz);
+    // Two cells a thread along the axis.
+    const LatticeLaunch launch = launchOver(axis == 0 ? (g.nx + 1) / 2 : g.nx, axis == 1 ? (g.ny + 1) / 2 : g.ny,
+                                            axis == 2 ? (g.nz + 1) / 2 : g.nz);
     for (int sub = 0; sub < substeps; ++sub)
     {
         g.density = density, g.temperature = temperature;
