@@ -262,9 +262,9 @@ __global__ void smoothKernel(LevelView level, float* __restrict__ x, const float
         relax(level, level.slot(i, j, k), i, j, k, x, b);
 }
 
-/// smoothKernel on a level stored by colour, in fewer instructions (the profile found the half pass issue-bound:
-/// 137 instructions a cell): the layout's sizes come precomputed, and the neighbours' slots follow from the
-/// thread's place. Cell i = 2 t + shift of colour c sits at place t of its row in colour c's half; its
+/// smoothKernel on a level stored by colour (the finest): the layout's sizes come precomputed, and the
+/// neighbours' slots follow from the thread's place. (The half pass is bound by instruction issue: 116
+/// instructions a cell with quotient(), 137 before it.) Cell i = 2 t + shift of colour c sits at place t of its row in colour c's half; its
 /// neighbours are of the other colour: (i -+ 1) at places t - 1 + shift and t + shift of the same row, (j -+ 1)
 /// and (k -+ 1) at place t of the rows beside. The sum in relax's order, the same floats.
 __global__ void smoothByColourKernel(LevelView level, unsigned half, unsigned colourSlots, float* __restrict__ x,
