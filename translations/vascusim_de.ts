@@ -4085,6 +4085,22 @@
         <source>segmental hepatic artery</source>
         <translation>segmentale Leberarterie</translation>
     </message>
+    <message>
+        <source>this model does not solve its own tangent</source>
+        <translation>dieses Modell löst seine Tangente nicht selbst</translation>
+    </message>
+    <message>
+        <source>a model that solves its own tangent (the GPU) takes the conjugate-gradient static solve</source>
+        <translation>ein Modell, das seine Tangente selbst löst (die GPU), verlangt die statische Lösung mit konjugierten Gradienten</translation>
+    </message>
+    <message>
+        <source>the multigrid preconditioner needs the model&apos;s positions</source>
+        <translation>der Mehrgitter-Vorkonditionierer braucht die Positionen des Modells</translation>
+    </message>
+    <message>
+        <source>the static solve on the GPU is the modified Newton iteration with multigrid conjugate gradients</source>
+        <translation>die statische Lösung auf der GPU ist die modifizierte Newton-Iteration mit Mehrgitter-konjugierten Gradienten</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -4611,10 +4627,6 @@
     <message>
         <source>Quasi-static tearing</source>
         <translation>Quasistatisches Reißen</translation>
-    </message>
-    <message>
-        <source>1: the wall in static equilibrium at each pressure of the ramp, the tearing onset bracketed by bisection to 0.5 %, one element released per equilibrium (does not depend on the ramp; CPU); 0: the thesis&apos;s damped ramp, every element over the limit torn in the same step (the onset lags the ramp).</source>
-        <translation>1: die Wand im statischen Gleichgewicht bei jedem Druck der Rampe, der Reißbeginn per Bisektion auf 0,5 % eingegrenzt, ein Element je Gleichgewicht gelöst (unabhängig von der Rampe; CPU); 0: die gedämpfte Rampe der Dissertation, jedes Element über der Grenze reißt im selben Schritt (der Beginn hinkt der Rampe nach).</translation>
     </message>
     <message>
         <source>Fracture entropy end</source>
@@ -5559,6 +5571,18 @@
     <message>
         <source>smoke evacuation flow at the suction port (scenes with a port); liver-ablation&apos;s 20 l/min is calibrated to remove 85 % of the smoke in 10 s (Chou 2024) in the box phantom at 64 cells</source>
         <translation>Absaugfluss am Absaugport (Szenen mit Port); die 20 l/min der Leberablation sind so kalibriert, dass im Quader-Phantom mit 64 Zellen 85 % des Rauchs in 10 s entfernt werden (Chou 2024)</translation>
+    </message>
+    <message>
+        <source>1: the wall in static equilibrium at each pressure of the ramp, the tearing onset bracketed by bisection to 0.5 %, one element released per equilibrium (does not depend on the ramp); 0: the thesis&apos;s damped ramp, every element over the limit torn in the same step (the onset lags the ramp).</source>
+        <translation>1: die Wand im statischen Gleichgewicht bei jedem Druck der Rampe, der Reißbeginn per Bisektion auf 0,5 % eingegrenzt, ein Element je Gleichgewicht gelöst (unabhängig von der Rampe); 0: die gedämpfte Rampe der Dissertation, jedes Element über der Grenze reißt im selben Schritt (der Beginn hinkt der Rampe nach).</translation>
+    </message>
+    <message>
+        <source>Equilibrium iteration</source>
+        <translation>Gleichgewichtsiteration</translation>
+    </message>
+    <message>
+        <source>Quasi-static tearing&apos;s equilibria. 0: full Newton (the pressure&apos;s load stiffness in the tangent, GMRES with a Cholesky preconditioner; CPU). 1: modified Newton without the load stiffness, its symmetric tangent by multigrid conjugate gradients (about 3 times the updates; CPU and CUDA, the same tears on both).</source>
+        <translation>Gleichgewichte des quasistatischen Reißens. 0: volles Newton-Verfahren (die Laststeifigkeit des Drucks in der Tangente, GMRES mit Cholesky-Vorkonditionierer; CPU). 1: modifiziertes Newton-Verfahren ohne die Laststeifigkeit, seine symmetrische Tangente per Mehrgitter-konjugierten Gradienten (etwa 3-mal so viele Schritte; CPU und CUDA, auf beiden dieselben Risse).</translation>
     </message>
 </context>
 <context>

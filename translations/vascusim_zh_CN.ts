@@ -4085,6 +4085,22 @@
         <source>segmental hepatic artery</source>
         <translation>肝段动脉</translation>
     </message>
+    <message>
+        <source>this model does not solve its own tangent</source>
+        <translation>此模型不自行求解其切线刚度</translation>
+    </message>
+    <message>
+        <source>a model that solves its own tangent (the GPU) takes the conjugate-gradient static solve</source>
+        <translation>自行求解切线刚度的模型（GPU）须使用共轭梯度静力求解</translation>
+    </message>
+    <message>
+        <source>the multigrid preconditioner needs the model&apos;s positions</source>
+        <translation>多重网格预条件器需要模型的位置</translation>
+    </message>
+    <message>
+        <source>the static solve on the GPU is the modified Newton iteration with multigrid conjugate gradients</source>
+        <translation>GPU 上的静力求解是采用多重网格共轭梯度的修正牛顿迭代</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -4611,10 +4627,6 @@
     <message>
         <source>Quasi-static tearing</source>
         <translation>准静态撕裂</translation>
-    </message>
-    <message>
-        <source>1: the wall in static equilibrium at each pressure of the ramp, the tearing onset bracketed by bisection to 0.5 %, one element released per equilibrium (does not depend on the ramp; CPU); 0: the thesis&apos;s damped ramp, every element over the limit torn in the same step (the onset lags the ramp).</source>
-        <translation>1：管壁在斜坡的每个压力下处于静态平衡，撕裂起始以二分法界定到 0.5 %，每个平衡态释放一个单元（与斜坡无关；CPU）；0：论文的阻尼斜坡，超过极限的所有单元在同一步撕裂（起始滞后于斜坡）。</translation>
     </message>
     <message>
         <source>Fracture entropy end</source>
@@ -5559,6 +5571,18 @@
     <message>
         <source>smoke evacuation flow at the suction port (scenes with a port); liver-ablation&apos;s 20 l/min is calibrated to remove 85 % of the smoke in 10 s (Chou 2024) in the box phantom at 64 cells</source>
         <translation>抽吸口的排烟流量（带抽吸口的场景）；肝消融的 20 l/min 经校准，在 64 单元的长方体体模中 10 s 内清除 85 % 的烟雾（Chou 2024）</translation>
+    </message>
+    <message>
+        <source>1: the wall in static equilibrium at each pressure of the ramp, the tearing onset bracketed by bisection to 0.5 %, one element released per equilibrium (does not depend on the ramp); 0: the thesis&apos;s damped ramp, every element over the limit torn in the same step (the onset lags the ramp).</source>
+        <translation>1：管壁在斜坡的每个压力下处于静态平衡，撕裂起始以二分法界定到 0.5 %，每个平衡态释放一个单元（与斜坡无关）；0：论文的阻尼斜坡，超过极限的所有单元在同一步撕裂（起始滞后于斜坡）。</translation>
+    </message>
+    <message>
+        <source>Equilibrium iteration</source>
+        <translation>平衡迭代</translation>
+    </message>
+    <message>
+        <source>Quasi-static tearing&apos;s equilibria. 0: full Newton (the pressure&apos;s load stiffness in the tangent, GMRES with a Cholesky preconditioner; CPU). 1: modified Newton without the load stiffness, its symmetric tangent by multigrid conjugate gradients (about 3 times the updates; CPU and CUDA, the same tears on both).</source>
+        <translation>准静态撕裂的平衡态。0：完全牛顿法（切线中含压力的载荷刚度，GMRES 配 Cholesky 预条件器；CPU）。1：不含载荷刚度的修正牛顿法，其对称切线以多重网格共轭梯度求解（更新次数约 3 倍；CPU 与 CUDA，两者撕裂相同）。</translation>
     </message>
 </context>
 <context>

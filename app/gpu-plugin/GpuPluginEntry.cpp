@@ -4,6 +4,7 @@
 #include "vsim/core/Version.h"
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_fem/CudaBackwardEuler.h"
+#include "vsim/cuda_fem/CudaStaticWall.h"
 #include "vsim/cuda_smoke/CudaSmokeBackend.h"
 #include "vsim/cuda_sph/CudaSph.h"
 
@@ -17,6 +18,7 @@ vsim::app::GpuPluginApi makeTable()
     table.deviceCount = [] { return int(vsim::cuda::devices().size()); };
     table.deviceSummary = [] { return vsim::cuda::deviceSummary(); };
     table.wallStepperFactory = [] { return vsim::cuda::cudaStepperFactory(); };
+    table.wallStaticModelFactory = [] { return vsim::cuda::cudaStaticWallFactory(); };
     table.sphStepperFactory = [] { return vsim::cuda::cudaSphStepperFactory(); };
     table.smokeBackendFactory = [] { return vsim::cuda::cudaSmokeBackendFactory(); };
     return table;

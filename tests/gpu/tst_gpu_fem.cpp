@@ -4,6 +4,8 @@
 
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_fem/CudaBackwardEuler.h"
+#include "vsim/cuda_fem/CudaStaticWall.h"
+#include "vsim/sim/fem/QuasiStaticTearing.h"
 #include "vsim/sim/fem/StructuredMeshes.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/FemRun.h"
@@ -11,6 +13,9 @@
 #include "TubeWall.h"
 
 #include <QtTest>
+
+#include <chrono>
+#include <cmath>
 
 using namespace vsim;
 using namespace vsim::sim::fem;
@@ -204,6 +209,65 @@ private slots:
         QVERIFY(difference <= (equilibrium > 0.0 || multigrid ? 1e-7 : 1e-5) * largest);
         if (multigrid)
             QVERIFY(cpu.status.converged() && gpu.status.converged());
+    }
+
+    /// Issue 16 item 6: quasi-static tearing of a tube with a local thinning (one element the most stressed), every
+    /// equilibrium by the modified Newton iteration with multigrid PCG, on the CPU and with the tangent solves on the
+    /// GPU (CudaStaticWall): the same onset bracket, the same elements released in the same order, the same number
+    /// of equilibria, and the last equilibria within 1e-6 of each other. Three thinning places.
+    void quasiStaticTearingTearsTheSameElements_data()
+    {
+        QTest::addColumn<double>("angle");
+        QTest::addColumn<double>("z");
+        QTest::newRow("thinning at 0.1 rad, z 50 mm") << 0.1 << 50.0;
+        QTest::newRow("thinning at 2.0 rad, z 40 mm") << 2.0 << 40.0;
+        QTest::newRow("thinning at -2.5 rad, z 62 mm") << -2.5 << 62.0;
+    }
+
+    void quasiStaticTearingTearsTheSameElements()
+    {
+        if (vsim::cuda::devices().empty())
+            QSKIP("no CUDA device on this machine; run on the accelerator with the device tool");
+        QFETCH(double, angle);
+        QFETCH(double, z);
+        QuasiStaticTearingSetup setup = test::thinnedTubeTearing(test::thinnedTube(angle, z), 10e3);
+        setup.modifiedNewton = true;
+        const auto started = std::chrono::steady_clock::now();
+        const FemRunResult cpu = runQuasiStaticTearing(setup);
+        const auto cpuDone = std::chrono::steady_clock::now();
+        setup.equilibriumElsewhere = vsim::cuda::cudaStaticWallFactory();
+        const FemRunResult gpu = runQuasiStaticTearing(setup);
+        const auto gpuDone = std::chrono::steady_clock::now();
+        const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
+        for (const auto* run : {&cpu, &gpu})
+            qInfo("%s: onset %.4f kPa (bracket %.3f kPa), first element %.0f, %.0f torn, %.0f equilibria, %ld "
+                  "updates, %ld PCG iterations, %s; %s",
+                  run == &cpu ? "CPU" : "GPU", run->metrics.at("tear_onset_pressure_mpa") * 1e3,
+                  run->metrics.at("tear_onset_bracket_mpa") * 1e3, run->metrics.at("first_torn_element"),
+                  run->metrics.at("torn_elements"), run->metrics.at("equilibrium_solves"), run->status.solves,
+                  run->status.iterations, run->status.convergenceText().c_str(), run->status.stopText().c_str());
+        qInfo("wall clock: CPU %.2f s, GPU %.2f s", seconds(started, cpuDone), seconds(cpuDone, gpuDone));
+        QVERIFY(cpu.metrics.at("torn_elements") >= 1.0);
+        for (const char* metric : {"tear_onset_pressure_mpa", "tear_onset_bracket_mpa", "first_torn_element",
+                                   "torn_elements", "equilibrium_solves", "failed_equilibria", "final_pressure_kpa"})
+            QCOMPARE(gpu.metrics.at(metric), cpu.metrics.at(metric));
+        QCOMPARE(gpu.entropyCurve.size(), cpu.entropyCurve.size());
+        for (std::size_t k = 0; k < cpu.entropyCurve.size(); ++k) // the same releases at the same pressures
+            QCOMPARE(gpu.entropyCurve[k].first, cpu.entropyCurve[k].first);
+        QVERIFY(gpu.status.forceResidual <= 1e-8 && gpu.status.unconvergedSolves == 0);
+        // The same tangent (its rotations' derivative by rotationStiffnessKernel): the same updates, within 5 %.
+        QVERIFY(std::abs(gpu.status.solves - cpu.status.solves) <= cpu.status.solves / 20);
+        QCOMPARE(gpu.frames.size(), cpu.frames.size());
+        double difference = 0.0, size = 0.0;
+        for (const char* axis : {"displacement_x_mm", "displacement_y_mm", "displacement_z_mm"})
+        {
+            const std::vector<double>& a = cpu.frames.back().pointFields.at(axis);
+            const std::vector<double>& b = gpu.frames.back().pointFields.at(axis);
+            for (std::size_t n = 0; n < a.size(); ++n)
+                difference += (a[n] - b[n]) * (a[n] - b[n]), size += a[n] * a[n];
+        }
+        qInfo("last equilibrium: displacement GPU - CPU relative L2 %.3g", std::sqrt(difference / size));
+        QVERIFY(std::sqrt(difference / size) <= 1e-6);
     }
 };
 

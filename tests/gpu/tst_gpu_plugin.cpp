@@ -30,7 +30,8 @@ private slots:
         QVERIFY2(plugin != nullptr, app::gpuPluginStatus().c_str());
         QVERIFY(QString::fromStdString(app::gpuPluginStatus()).startsWith("loaded from "));
         QVERIFY(!plugin->runtimeVersion().empty());
-        QVERIFY(plugin->wallStepperFactory() && plugin->sphStepperFactory() && plugin->smokeBackendFactory());
+        QVERIFY(plugin->wallStepperFactory() && plugin->wallStaticModelFactory() && plugin->sphStepperFactory() &&
+                plugin->smokeBackendFactory());
         const int devices = plugin->deviceCount();
         QCOMPARE(app::gpuUnavailableReason().empty(), devices > 0);
         qInfo("plugin: %s; CUDA runtime %s; %s", app::gpuPluginStatus().c_str(), plugin->runtimeVersion().c_str(),

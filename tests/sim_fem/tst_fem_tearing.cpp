@@ -19,42 +19,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The structured tube (r 10 mm, 1.5 mm wall, 100 mm) with its outer surface pulled in by up to 40 % of the wall
-/// around angle `angle` (rad) and height `z` (mm): a smooth dent (cos^2 over +-25 degrees and +-10 mm).
-TetMesh thinnedTube(double angle, double z)
-{
-    TetMesh wall = test::tubeWall({1, 36, 30});
-    for (std::size_t n = 0; n < wall.points.size(); ++n)
-    {
-        if (wall.pointFields.at("wall_layer")[n] < 0.5)
-            continue;
-        Eigen::Vector3d& p = wall.points[n];
-        double turn = std::atan2(p.y(), p.x()) - angle;
-        turn = std::remainder(turn, 2.0 * kPi);
-        const double u = turn / (25.0 * kPi / 180.0), v = (p.z() - z) / 10.0;
-        if (std::abs(u) >= 1.0 || std::abs(v) >= 1.0)
-            continue;
-        const double dent = 0.4 * std::pow(std::cos(0.5 * kPi * u), 2) * std::pow(std::cos(0.5 * kPi * v), 2);
-        const double radius = p.head<2>().norm(), thickness = radius - 10.0;
-        p.head<2>() *= (10.0 + thickness * (1.0 - dent)) / radius;
-    }
-    return wall;
-}
-
-QuasiStaticTearingSetup setupFor(const TetMesh& wall, double incrementPa)
-{
-    QuasiStaticTearingSetup setup;
-    setup.wall = wall;
-    setup.material.youngModulusPa = 4.23e6;
-    setup.material.poissonRatio = 0.23;
-    setup.startPa = 0.0;
-    setup.endPa = 120e3;
-    setup.incrementPa = incrementPa;
-    setup.tearStressPa = 0.5e6;
-    setup.maxTears = 4; // the onset and the first releases (further ones bring the torn wall near a mechanism)
-    return setup;
-}
-
 } // namespace
 
 class FemTearing : public QObject
@@ -67,9 +31,9 @@ private slots:
         const std::vector<std::pair<double, double>> places = {{0.1, 50.0}, {2.0, 40.0}, {-2.5, 62.0}};
         for (const auto& [angle, z] : places)
         {
-            const TetMesh wall = thinnedTube(angle, z);
-            const FemRunResult coarse = runQuasiStaticTearing(setupFor(wall, 10e3));
-            const FemRunResult fine = runQuasiStaticTearing(setupFor(wall, 3.7e3));
+            const TetMesh wall = test::thinnedTube(angle, z);
+            const FemRunResult coarse = runQuasiStaticTearing(test::thinnedTubeTearing(wall, 10e3));
+            const FemRunResult fine = runQuasiStaticTearing(test::thinnedTubeTearing(wall, 3.7e3));
             const double onsetCoarse = coarse.metrics.at("tear_onset_pressure_mpa"),
                          onsetFine = fine.metrics.at("tear_onset_pressure_mpa");
             qInfo("thinning at %.1f rad, z %.0f mm: onset %.3f kPa (10 kPa steps, %.0f equilibria) vs %.3f kPa "
@@ -104,9 +68,40 @@ private slots:
         }
     }
 
+    /// The modified Newton iteration with multigrid PCG (the one the GPU runs) finds the same equilibria: the same
+    /// onset bracket and the same elements released, in more updates (no rotations' derivative and no load
+    /// stiffness in its tangent).
+    void modifiedNewtonTearsTheSameElements()
+    {
+        const TetMesh wall = test::thinnedTube(2.0, 40.0);
+        QuasiStaticTearingSetup full = test::thinnedTubeTearing(wall, 10e3), modified = full;
+        modified.modifiedNewton = true;
+        const FemRunResult a = runQuasiStaticTearing(full), b = runQuasiStaticTearing(modified);
+        qInfo("full Newton: onset %.4f kPa, first element %.0f, %.0f torn, %d updates in %d solves; modified: "
+              "onset %.4f kPa, first element %.0f, %.0f torn, %d updates, %d PCG iterations; %s",
+              a.metrics.at("tear_onset_pressure_mpa") * 1e3, a.metrics.at("first_torn_element"),
+              a.metrics.at("torn_elements"), int(a.status.solves), int(a.metrics.at("equilibrium_solves")),
+              b.metrics.at("tear_onset_pressure_mpa") * 1e3, b.metrics.at("first_torn_element"),
+              b.metrics.at("torn_elements"), int(b.status.solves), int(b.status.iterations), b.status.convergenceText().c_str());
+        QCOMPARE(b.metrics.at("tear_onset_pressure_mpa"), a.metrics.at("tear_onset_pressure_mpa"));
+        QCOMPARE(b.metrics.at("first_torn_element"), a.metrics.at("first_torn_element"));
+        QCOMPARE(b.metrics.at("torn_elements"), a.metrics.at("torn_elements"));
+        QCOMPARE(b.metrics.at("equilibrium_solves"), a.metrics.at("equilibrium_solves"));
+        QVERIFY(b.status.forceResidual <= 1e-8 && b.status.unconvergedSolves == 0);
+        QVERIFY(b.status.solves > a.status.solves); // a modified iteration: linear convergence
+        // The last frames agree to the equilibrium's tolerance.
+        const std::vector<double>& da = a.frames.back().pointFields.at("displacement_mm");
+        const std::vector<double>& db = b.frames.back().pointFields.at("displacement_mm");
+        double difference = 0.0, size = 0.0;
+        for (std::size_t i = 0; i < da.size(); ++i)
+            difference += (da[i] - db[i]) * (da[i] - db[i]), size += da[i] * da[i];
+        qInfo("last frames: displacement relative L2 difference %.2e", std::sqrt(difference / size));
+        QVERIFY(std::sqrt(difference / size) < 1e-6);
+    }
+
     void noTearBelowTheStrength()
     {
-        QuasiStaticTearingSetup setup = setupFor(thinnedTube(0.1, 50.0), 20e3);
+        QuasiStaticTearingSetup setup = test::thinnedTubeTearing(test::thinnedTube(0.1, 50.0), 20e3);
         setup.tearStressPa = 50e6;
         const FemRunResult run = runQuasiStaticTearing(setup);
         QCOMPARE(run.metrics.at("tear_onset_pressure_mpa"), -1.0);
@@ -117,7 +112,7 @@ private slots:
 
     void refusesABadSetup()
     {
-        QuasiStaticTearingSetup setup = setupFor(thinnedTube(0.1, 50.0), 0.0);
+        QuasiStaticTearingSetup setup = test::thinnedTubeTearing(test::thinnedTube(0.1, 50.0), 0.0);
         QVERIFY_THROWS_EXCEPTION(Error, runQuasiStaticTearing(setup));
     }
 };

@@ -185,8 +185,9 @@ std::string wallGpuUnavailable(const std::string& protocol, const ParameterSet& 
         return reason;
     if (sim::fem::femUsesQuadraticWall(protocol, parameters))
         return "the quadratic hyperelastic wall (wall_model 1) runs on the CPU: its GPU solver is not built yet";
-    if (sim::fem::femUsesQuasiStaticTearing(protocol, parameters))
-        return "quasi-static tearing (quasi_static 1) runs on the CPU: the GPU has no static solver yet";
+    if (sim::fem::femUsesQuasiStaticTearing(protocol, parameters) && parameters.get("modified_newton") < 0.5)
+        return "quasi-static tearing's full Newton iteration (modified_newton 0) runs on the CPU; the GPU runs the "
+               "modified one (modified_newton 1)";
     if (sim::fem::femMaterial(parameters).model != sim::fem::ElasticMaterial::Model::CorotationalLinear)
         return "the CUDA backend runs the co-rotational linear model only";
     return {};
@@ -202,7 +203,8 @@ WallBackend chooseWallBackend(const std::string& requested, const std::string& p
         return {};
     const std::string unavailable = wallGpuUnavailable(protocol, parameters);
     if (unavailable.empty())
-        return {"cuda", gpuPlugin()->deviceSummary(), gpuPlugin()->wallStepperFactory()};
+        return {"cuda", gpuPlugin()->deviceSummary(), gpuPlugin()->wallStepperFactory(),
+                gpuPlugin()->wallStaticModelFactory()};
     if (requested == "cuda")
         throw Error(Pattern{"%1: use --backend cpu or auto", {unavailable}});
     return {};
@@ -216,7 +218,7 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
     const auto started = std::chrono::steady_clock::now();
     sim::fem::FemRunResult run;
     if (protocol == "thesis-rupture")
-        run = sim::fem::runThesisRupture(wall, parameters, progress, backend.stepper);
+        run = sim::fem::runThesisRupture(wall, parameters, progress, backend.stepper, backend.staticModel);
     else if (protocol == "physiological")
     {
         const SkeletonGraph centerlines = study.loadSkeleton(centerlinesId);

@@ -6,7 +6,9 @@
 namespace vsim::sim::fem {
 
 BackwardEuler::BackwardEuler(const CorotationalFem& model, BackwardEulerSettings settings)
-    : m_settings(settings), m_system(model.makeMatrix()), m_lastDeltaV(Eigen::VectorXd::Zero(Eigen::Index(3 * model.nodeCount())))
+    : m_settings(settings), m_system(model.makeMatrix()),
+      m_lastDeltaV(Eigen::VectorXd::Zero(Eigen::Index(3 * model.nodeCount()))),
+      m_setUpRule(settings.multigridSetUpAgainFactor)
 {
     if (!(settings.timeStep > 0.0) || settings.rayleighAlpha < 0.0 || settings.rayleighBeta < 0.0)
         throw Error("the time step must be positive and the Rayleigh coefficients non-negative");
@@ -49,7 +51,7 @@ StepReport BackwardEuler::step(CorotationalFem& model, const Eigen::VectorXd& ex
         {
             m_multigrid = std::make_unique<AggregationMultigrid>(m_system, model.positions(), constrained);
             m_multigridConstraints = constrained;
-            m_iterationsAfterSetup = -1;
+            m_setUpRule.setUp();
             ++m_multigridSetUps;
         }
         else
@@ -57,15 +59,8 @@ StepReport BackwardEuler::step(CorotationalFem& model, const Eigen::VectorXd& ex
     }
     const ConjugateGradientResult cg = solveConjugateGradient(m_system, rhs, deltaV, constrained, m_settings.cgTolerance,
                                                               m_settings.cgMaxIterations, m_multigrid.get());
-    if (m_multigrid)
-    {
-        // The coarse levels keep the set-up's matrix: set up again once the wall has turned enough to double the
-        // iterations (from the next step's matrix).
-        if (m_iterationsAfterSetup < 0)
-            m_iterationsAfterSetup = cg.iterations;
-        else if (cg.iterations > m_settings.multigridSetUpAgainFactor * m_iterationsAfterSetup + 5)
-            m_multigrid.reset();
-    }
+    if (m_multigrid && m_setUpRule.setUpAgainAfter(cg.iterations))
+        m_multigrid.reset(); // set up again from the next step's matrix (MultigridSetUpRule.h)
     report.cgIterations = cg.iterations;
     report.cgResidual = cg.relativeResidual;
     report.cgConverged = cg.converged;

@@ -41,7 +41,40 @@ private:
     CorotationalFem& m_model;
 };
 
+/// One update's linear solve on the host: the tangent assembled at the last element pass (the rotations' derivative
+/// with rotationStiffness; the follower load's stiffness unless the solve is the symmetric PCG), then solved by
+/// `linear`.
+TangentSolveResult solveTangent(StaticModel& model, TangentSolver& linear, BlockSparseMatrix& stiffness,
+                                std::optional<BlockSparseMatrix>& definite, const Eigen::VectorXd& residual,
+                                Eigen::VectorXd& delta, double forceResidual, const StaticSolveSettings& settings,
+                                const ExternalStiffness& externalStiffness)
+{
+    const bool symmetric = settings.linear == LinearSolver::ConjugateGradient;
+    const bool consistent = settings.rotationStiffness;
+    model.assembleTangent(stiffness, consistent);
+    const bool fresh = linear.needsPreconditioner(forceResidual);
+    // A fresh GMRES preconditioner factorises the model's definite stand-in for its tangent: with the follower
+    // load's stiffness the symmetric part was indefinite on the thrombus wall for the first Newton updates, and
+    // so was the model's own tangent after the first long step; each fell back to an UMFPACK LU 3-4x slower
+    // than the Cholesky (RESULTS.md, 2026-11-27 and 2026-11-28).
+    const bool definiteWanted = fresh && settings.linear == LinearSolver::CholeskyGmres;
+    if (definiteWanted)
+    {
+        if (!definite)
+            definite = model.makeMatrix();
+        model.assembleDefiniteTangent(*definite, consistent);
+    }
+    if (externalStiffness && !symmetric)
+        externalStiffness(model.positions(), stiffness);
+    return linear.solve(stiffness, residual, delta, fresh, definiteWanted ? &*definite : nullptr);
+}
+
 } // namespace
+
+TangentSolveResult StaticModel::solveTangent(const Eigen::VectorXd&, Eigen::VectorXd&, double, const StaticSolveSettings&)
+{
+    throw Error("this model does not solve its own tangent");
+}
 
 StaticSolveReport solveStatic(CorotationalFem& model, const ExternalForces& external,
                               const std::vector<std::uint8_t>& constrained, const StaticSolveSettings& settings,
@@ -56,8 +89,11 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
                               const ExternalStiffness& externalStiffness)
 {
     StaticSolveReport report;
-    BlockSparseMatrix stiffness = model.makeMatrix();
-    TangentSolver linear(stiffness, constrained, settings);
+    const bool ownSolve = model.solvesItsTangent();
+    if (ownSolve && settings.linear != LinearSolver::ConjugateGradient)
+        throw Error("a model that solves its own tangent (the GPU) takes the conjugate-gradient static solve");
+    BlockSparseMatrix stiffness = ownSolve ? BlockSparseMatrix{} : model.makeMatrix();
+    TangentSolver linear(stiffness, constrained, settings, &model.positions());
     std::optional<BlockSparseMatrix> definite; // the preconditioner's matrix (CholeskyGmres)
     // The state at the model's positions: its element pass, inverted elements and residual force.
     Eigen::VectorXd residual, load;
@@ -92,26 +128,16 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
         }
         if (report.updates >= settings.maxUpdates)
             break;
-        model.assembleTangent(stiffness, settings.rotationStiffness);
-        const bool fresh = linear.needsPreconditioner(report.forceResidual);
-        // A fresh GMRES preconditioner factorises the model's definite stand-in for its tangent: with the follower
-        // load's stiffness the symmetric part was indefinite on the thrombus wall for the first Newton updates, and
-        // so was the model's own tangent after the first long step; each fell back to an UMFPACK LU 3-4x slower
-        // than the Cholesky (RESULTS.md, 2026-11-27 and 2026-11-28).
-        const bool definiteWanted = fresh && settings.linear == LinearSolver::CholeskyGmres;
-        if (definiteWanted)
-        {
-            if (!definite)
-                definite = model.makeMatrix();
-            model.assembleDefiniteTangent(*definite, settings.rotationStiffness);
-        }
-        if (externalStiffness)
-            externalStiffness(model.positions(), stiffness);
         Eigen::VectorXd delta;
-        const TangentSolveResult solved =
-            linear.solve(stiffness, residual, delta, fresh, definiteWanted ? &*definite : nullptr);
+        TangentSolveResult solved;
+        if (ownSolve)
+            solved = model.solveTangent(residual, delta, linear.tolerance(), settings);
+        else
+            solved = solveTangent(model, linear, stiffness, definite, residual, delta, report.forceResidual, settings,
+                                  externalStiffness);
         report.cgIterations += solved.iterations;
         report.factorisations += solved.factorised ? 1 : 0;
+        report.multigridSetUps += solved.multigridSetUp ? 1 : 0;
         report.worstLinearResidual = std::max(report.worstLinearResidual, solved.relativeResidual);
         report.linearIterations.push_back(solved.iterations);
         report.linearResiduals.push_back(solved.relativeResidual);

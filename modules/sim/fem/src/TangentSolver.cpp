@@ -21,9 +21,13 @@ void factoriseOrThrow(SparseDirect& direct, const BlockSparseMatrix& matrix)
 TangentSolver::~TangentSolver() = default;
 
 TangentSolver::TangentSolver(const BlockSparseMatrix& pattern, const std::vector<std::uint8_t>& constrained,
-                             const StaticSolveSettings& settings)
-    : m_settings(settings), m_constrained(constrained)
+                             const StaticSolveSettings& settings, const Eigen::VectorXd* positions)
+    : m_settings(settings), m_constrained(constrained), m_positions(positions),
+      m_setUpRule(settings.multigridSetUpAgainFactor)
 {
+    if (settings.linear == LinearSolver::ConjugateGradient && settings.cgPreconditioner == CgPreconditioner::Multigrid &&
+        positions == nullptr)
+        throw Error("the multigrid preconditioner needs the model's positions");
     if (settings.linear == LinearSolver::SparseLu)
         m_direct = std::make_unique<SparseDirect>(pattern, constrained, SparseDirect::Kind::GeneralLu);
     else if (settings.linear != LinearSolver::ConjugateGradient)
@@ -90,8 +94,21 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
     {
     case LinearSolver::ConjugateGradient:
     {
+        if (m_settings.cgPreconditioner == CgPreconditioner::Multigrid)
+        {
+            if (!m_multigrid)
+            {
+                m_multigrid = std::make_unique<AggregationMultigrid>(tangent, *m_positions, m_constrained);
+                m_setUpRule.setUp();
+                result.multigridSetUp = true;
+            }
+            else
+                m_multigrid->refreshFinest(tangent);
+        }
         const ConjugateGradientResult cg = solveConjugateGradient(tangent, f, dx, m_constrained, tolerance(),
-                                                                  m_settings.cgMaxIterations);
+                                                                  m_settings.cgMaxIterations, m_multigrid.get());
+        if (m_multigrid && m_setUpRule.setUpAgainAfter(cg.iterations))
+            m_multigrid.reset(); // set up again from the next update's tangent
         result.iterations = cg.iterations;
         result.relativeResidual = cg.relativeResidual;
         result.converged = cg.converged;

@@ -96,6 +96,14 @@ void WallSimulation::dragTo(const Eigen::Vector3d& targetMm)
         m_contacts.springs.front().anchor = units::mmToM(1.0) * targetMm;
 }
 
+void WallSimulation::setEquilibriumSolver(bool modifiedNewton, StaticModelFactory elsewhere)
+{
+    if (elsewhere && !modifiedNewton)
+        throw Error("the static solve on the GPU is the modified Newton iteration with multigrid conjugate gradients");
+    m_modifiedNewton = modifiedNewton;
+    m_staticModelFactory = std::move(elsewhere);
+}
+
 StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, std::string* failure,
                                               const Progress& progress)
 {
@@ -115,8 +123,9 @@ StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, 
         StaticSolveSettings settings;
         settings.tolerance = tolerance;
         settings.maxUpdates = maxUpdates;
-        settings.linear = LinearSolver::CholeskyGmres;
-        settings.rotationStiffness = true;
+        settings.linear = m_modifiedNewton ? LinearSolver::ConjugateGradient : LinearSolver::CholeskyGmres;
+        settings.cgPreconditioner = CgPreconditioner::Multigrid;
+        settings.rotationStiffness = true; // the full iteration's (the conjugate gradients leave it out)
         settings.afterResidual = [&](int updates, double residual) {
             progress.throwIfCancelled();
             // Newton's residual falls from about 1e-1 to the tolerance: progress on its logarithm.
@@ -125,7 +134,15 @@ StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, 
             std::snprintf(text, sizeof text, "equilibrium: update %d, force residual %.1e", updates, residual);
             progress.report(std::clamp(done, 0.0, 1.0), text);
         };
-        report = solveStatic(m_model, pressure, m_fixed, settings, pressureStiffness);
+        if (m_staticModelFactory)
+        {
+            const std::unique_ptr<StaticModel> elsewhere = m_staticModelFactory(m_model, m_fixed);
+            report = solveStatic(*elsewhere, pressure, m_fixed, settings);
+            m_model.positions() = elsewhere->positions();
+            m_model.updateElements();
+        }
+        else
+            report = solveStatic(m_model, pressure, m_fixed, settings, pressureStiffness);
     }
     catch (const Cancelled&)
     {

@@ -7,6 +7,7 @@
 // mismatch with a message (GpuPlugin.h).
 
 #include "vsim/sim/fem/ImplicitStepper.h"
+#include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/sim/smoke/SmokeBackend.h"
 #include "vsim/sim/sph/SphStepper.h"
 
@@ -15,7 +16,7 @@
 namespace vsim::app {
 
 /// Raised whenever this table, or a type it names, changes.
-inline constexpr int kGpuPluginInterface = 1;
+inline constexpr int kGpuPluginInterface = 2;
 
 /// What the plugin provides, filled by its entry point. Every function is set.
 struct GpuPluginApi
@@ -31,6 +32,8 @@ struct GpuPluginApi
     std::string (*deviceSummary)() = nullptr;
     /// The wall's co-rotational backward-Euler stepper on the GPU (cuda_fem).
     sim::fem::StepperFactory (*wallStepperFactory)() = nullptr;
+    /// The wall's static solve on the GPU (cuda_fem's CudaStaticWall: the quasi-static tearing's equilibria).
+    sim::fem::StaticModelFactory (*wallStaticModelFactory)() = nullptr;
     /// The SPH stepper on the GPU (cuda_sph); it throws vsim::Error for a solver it does not support.
     sim::sph::SphStepperFactory (*sphStepperFactory)() = nullptr;
     /// The smoke step's work on the GPU (cuda_smoke).

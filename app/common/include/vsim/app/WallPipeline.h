@@ -9,6 +9,7 @@
 #include "vsim/mesh/WallBoundary.h"
 #include "vsim/mesh/WallMesh.h"
 #include "vsim/sim/fem/FemRun.h"
+#include "vsim/sim/fem/StaticSolver.h"
 #include "vsim/study/Study.h"
 
 #include <string>
@@ -55,6 +56,7 @@ struct WallBackend
     std::string name = "cpu";         ///< "cpu" or "cuda", as recorded in the provenance
     std::string device;               ///< the GPU, for "cuda"
     sim::fem::StepperFactory stepper; ///< empty for the CPU
+    sim::fem::StaticModelFactory staticModel; ///< the quasi-static tearing's equilibria; empty for the CPU
 };
 
 /// The sac's PWS and PWRI nodal maxima of a physiological run artifact as callouts for 3D pictures: "PWS 242 kPa,

@@ -12,6 +12,7 @@
 #include "vsim/sim/fem/BlockSparseMatrix.h"
 #include "vsim/sim/fem/Contacts.h"
 #include "vsim/sim/fem/CorotationalFem.h"
+#include "vsim/sim/fem/MultigridSetUpRule.h"
 
 #include <Eigen/Core>
 
@@ -72,7 +73,7 @@ private:
     Eigen::VectorXd m_lastDeltaV;
     std::unique_ptr<AggregationMultigrid> m_multigrid;
     std::vector<std::uint8_t> m_multigridConstraints;
-    int m_iterationsAfterSetup = -1; ///< PCG iterations of the first solve with the current hierarchy
+    MultigridSetUpRule m_setUpRule;
     int m_multigridSetUps = 0;
 };
 

@@ -20,6 +20,7 @@
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/FemRun.h"
 #include "vsim/sim/fem/SacPeaks.h"
+#include "vsim/sim/fem/StaticSolver.h"
 
 #include <map>
 #include <string>
@@ -46,10 +47,10 @@ ElasticMaterial femMaterial(const ParameterSet& parameters);
 BackwardEulerSettings femIntegrator(const ParameterSet& parameters);
 
 /// The thesis protocol on a wall mesh (mm).
-/// `stepper`: where the implicit steps run (FemRunSetup::stepper; empty: this CPU), in both protocols (not used by
-/// the quasi-static tearing, which runs on the CPU).
+/// `stepper`: where the implicit steps run (FemRunSetup::stepper; empty: this CPU), in both protocols;
+/// `staticModel`: where the quasi-static tearing's equilibria run (with modified_newton 1; empty: this CPU).
 FemRunResult runThesisRupture(const TetMesh& wall, const ParameterSet& parameters, const Progress& progress = {},
-                              const StepperFactory& stepper = {});
+                              const StepperFactory& stepper = {}, const StaticModelFactory& staticModel = {});
 
 /// The physiological protocol; `centerlines` (mm, with radii) give each element's local diameter for the
 /// strength model. Adds metrics peak_rupture_index, its location, the strength there and max_diameter_mm; with a

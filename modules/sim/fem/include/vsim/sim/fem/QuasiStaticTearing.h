@@ -9,12 +9,15 @@
 // equilibrium solved again before the next release, one element at a time, until none is over its strength; then
 // the ramp goes on. The dynamic protocol instead tears every element over the limit in the same step, after a
 // damped lag that depends on the ramp rate (thesis ch. 4.6-4.7). The run ends at the ramp's end, when the fracture
-// entropy passes `entropyEnd`, or when the torn wall holds no equilibrium at the pressure (it ruptures). CPU only.
+// entropy passes `entropyEnd`, or when the torn wall holds no equilibrium at the pressure (it ruptures). The
+// equilibria run on this CPU, or with the modified Newton iteration on the GPU (the element stresses, the releases
+// and the bisection stay here: the same code decides on both).
 
 #include "vsim/core/Progress.h"
 #include "vsim/core/TetMesh.h"
 #include "vsim/sim/fem/ElasticMaterial.h"
 #include "vsim/sim/fem/FemRun.h"
+#include "vsim/sim/fem/StaticSolver.h"
 
 #include <functional>
 
@@ -35,6 +38,11 @@ struct QuasiStaticTearingSetup
     int equilibriumMaxUpdates = 30;
     double entropyEnd = 0.0;      ///< stop once the fracture entropy passes this (nats); 0: never
     int maxTears = 1000;          ///< elements released in all
+    /// The equilibria by the modified Newton iteration with multigrid PCG instead of the full one
+    /// (WallSimulation::setEquilibriumSolver), on this CPU or, with `equilibriumElsewhere`, on the GPU; it may take
+    /// 5 x equilibriumMaxUpdates.
+    bool modifiedNewton = false;
+    StaticModelFactory equilibriumElsewhere;
 };
 
 /// Runs the setup. Throws vsim::Error for a bad setup or a mesh that is not a wall, vsim::Cancelled when

@@ -3,20 +3,36 @@
 // Static equilibrium f_elastic(x) + f_external(x) = 0 for the free components, by repeated linearised solves
 // T dx = f, with T the model's tangent (the co-rotational model: R K R^T, optionally + the rotations' derivative,
 // then a full Newton iteration; the quadratic hyperelastic model: its consistent tangent) - d f_ext / dx (a
-// follower load's stiffness), the element pass and the loads updated between them, each by block-Jacobi conjugate
-// gradients, a sparse direct factorisation (SparseDirect.h) or GMRES with a kept Cholesky preconditioner
-// (TangentSolver.h), with a line search. Constrained components keep the positions they have (prescribed
-// displacements are set before the call).
+// follower load's stiffness), the element pass and the loads updated between them, each by conjugate gradients
+// (block Jacobi or the smoothed-aggregation V-cycle; on the symmetric part alone, without the load's stiffness: a
+// modified Newton iteration that takes more updates), a sparse direct factorisation (SparseDirect.h)
+// or GMRES with a kept Cholesky preconditioner (TangentSolver.h), with a line search. Constrained components keep
+// the positions they have (prescribed displacements are set before the call). A model may assemble and solve its
+// tangent elsewhere (the CUDA static wall, StaticModel::solvesItsTangent): the same iteration, its linear solves on
+// the GPU.
 
+#include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/CorotationalFem.h"
 
 #include <Eigen/Core>
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace vsim::sim::fem {
+
+struct StaticSolveSettings;
+
+struct TangentSolveResult
+{
+    int iterations = 0;            ///< Krylov iterations (0: a direct solve)
+    double relativeResidual = 0.0; ///< |f - T dx| / |f| on the free components
+    bool factorised = false;       ///< this solve factorised the tangent
+    bool converged = false;        ///< the residual reached the solve's tolerance
+    bool multigridSetUp = false;   ///< this solve set a multigrid hierarchy up
+};
 
 /// What the static solve needs of a model (CorotationalFem through an adapter, QuadraticFem directly).
 class StaticModel
@@ -43,6 +59,13 @@ public:
     {
         assembleTangent(matrix, consistent);
     }
+    /// Whether the model assembles and solves its own tangent (the consistent one, symmetric: ConjugateGradient
+    /// only); then makeMatrix and assembleTangent are not called.
+    virtual bool solvesItsTangent() const { return false; }
+    /// Solves T dx = f with T the consistent tangent of the last element pass, by PCG with `settings`' preconditioner
+    /// from dx = 0 to |f - T dx| <= tolerance |f| on the free components or settings.cgMaxIterations.
+    virtual TangentSolveResult solveTangent(const Eigen::VectorXd& f, Eigen::VectorXd& dx, double tolerance,
+                                            const StaticSolveSettings& settings);
 };
 
 struct StaticSolveReport
@@ -56,12 +79,15 @@ struct StaticSolveReport
     std::vector<int> linearIterations;   ///< per update: the Krylov iterations of its linear solve (0: direct)
     std::vector<double> linearResiduals; ///< per update: its linear solve's relative residual
     double smallestStep = 1.0;  ///< the smallest fraction of a Newton step the line search took
+    int multigridSetUps = 0;    ///< smoothed-aggregation hierarchies set up (ConjugateGradient with Multigrid)
     bool converged = false;
 };
 
 enum class LinearSolver
 {
-    ConjugateGradient, ///< block-Jacobi PCG to 0.1 x the force tolerance, at most cgMaxIterations (symmetric only)
+    ConjugateGradient, ///< PCG (cgPreconditioner) to 0.1 x the force tolerance, at most cgMaxIterations, on the
+                       ///< model's tangent without the follower load's stiffness (symmetric; with rotationStiffness
+                       ///< the co-rotational energy's Hessian, which is symmetric too)
     SparseCholesky,    ///< CHOLMOD supernodal Cholesky of the tangent's symmetric part, ordering once, per update
     SparseLu,          ///< UMFPACK multifrontal LU (the tangent with a follower load's stiffness)
     CholeskyGmres      ///< GMRES on the full tangent to linearTolerance, preconditioned by CHOLMOD's Cholesky of
@@ -75,6 +101,10 @@ struct StaticSolveSettings
     int maxUpdates = 20;
     LinearSolver linear = LinearSolver::ConjugateGradient;
     int cgMaxIterations = 20000;
+    /// ConjugateGradient: block Jacobi, or one smoothed-aggregation V-cycle (AggregationMultigrid.h) set up from
+    /// the first update's tangent and again by MultigridSetUpRule.h with multigridSetUpAgainFactor.
+    CgPreconditioner cgPreconditioner = CgPreconditioner::BlockJacobi;
+    double multigridSetUpAgainFactor = 2.0;
     double linearTolerance = 1e-8; ///< CholeskyGmres: each linear solve's relative residual |T dx - f| / |f|
     int gmresMaxIterations = 200;
     /// CholeskyGmres: refactorise after a solve that needed more (a fresh CHOLMOD factorisation of the quadratic
@@ -92,6 +122,11 @@ struct StaticSolveSettings
     /// it may throw vsim::Cancelled, which leaves the model at the last state evaluated).
     std::function<void(int updates, double forceResidual)> afterResidual;
 };
+
+/// Makes a model that solves its own tangent elsewhere (the CUDA static wall) from the co-rotational model's current
+/// state and its constrained components (3 per node, 1 = held). Throws vsim::Error when it cannot.
+using StaticModelFactory = std::function<std::unique_ptr<StaticModel>(const CorotationalFem& model,
+                                                                      const std::vector<std::uint8_t>& constrained)>;
 
 /// External forces (N, 3 per node) at the given positions (m): a follower pressure depends on them.
 using ExternalForces = std::function<Eigen::VectorXd(const Eigen::VectorXd& positions)>;

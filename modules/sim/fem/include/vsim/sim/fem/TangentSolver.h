@@ -1,7 +1,8 @@
 #pragma once
 
 // One linear solve T dx = f per Newton update of the static solve (StaticSolver.h), by the strategy its settings
-// name: block-Jacobi conjugate gradients, a sparse direct factorisation per update (CHOLMOD of the symmetric part,
+// name: conjugate gradients (block Jacobi, or the smoothed-aggregation V-cycle kept across updates by
+// MultigridSetUpRule.h), a sparse direct factorisation per update (CHOLMOD of the symmetric part,
 // UMFPACK LU), or GMRES on the full tangent preconditioned by a factorisation kept across updates near
 // equilibrium: CHOLMOD's Cholesky of the model's definite stand-in for its tangent (StaticModel::
 // assembleDefiniteTangent, without the follower load's stiffness) where that is positive definite, else UMFPACK's
@@ -13,6 +14,7 @@
 
 #include "vsim/sim/fem/BlockSparseMatrix.h"
 #include "vsim/sim/fem/Gmres.h"
+#include "vsim/sim/fem/MultigridSetUpRule.h"
 #include "vsim/sim/fem/StaticSolver.h"
 
 #include <Eigen/Core>
@@ -25,20 +27,14 @@ namespace vsim::sim::fem {
 
 class SparseDirect;
 
-struct TangentSolveResult
-{
-    int iterations = 0;            ///< Krylov iterations (0: a direct solve)
-    double relativeResidual = 0.0; ///< |f - T dx| / |f| on the free components
-    bool factorised = false;       ///< this solve factorised the tangent
-    bool converged = false;        ///< the residual reached the solve's tolerance
-};
-
 class TangentSolver
 {
 public:
-    /// `pattern`: the tangent's; `constrained`: 3 per node (1 = held; those components of dx are 0).
+    /// `pattern`: the tangent's; `constrained`: 3 per node (1 = held; those components of dx are 0); `positions`
+    /// (m, 3 per node): the model's, read when a multigrid hierarchy is set up (its rigid-body modes; needed for
+    /// ConjugateGradient with Multigrid, else vsim::Error).
     TangentSolver(const BlockSparseMatrix& pattern, const std::vector<std::uint8_t>& constrained,
-                  const StaticSolveSettings& settings);
+                  const StaticSolveSettings& settings, const Eigen::VectorXd* positions = nullptr);
     ~TangentSolver();
     TangentSolver(const TangentSolver&) = delete;
     TangentSolver& operator=(const TangentSolver&) = delete;
@@ -68,6 +64,9 @@ private:
     std::unique_ptr<SparseDirect> m_direct, m_lu;
     SparseDirect* m_preconditioner = nullptr; // the kept factorisation (CholeskyGmres)
     int m_lastIterations = 0;
+    const Eigen::VectorXd* m_positions;
+    std::unique_ptr<AggregationMultigrid> m_multigrid; // ConjugateGradient with Multigrid
+    MultigridSetUpRule m_setUpRule;
 };
 
 } // namespace vsim::sim::fem

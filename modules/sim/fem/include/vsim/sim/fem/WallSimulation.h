@@ -34,6 +34,13 @@ public:
     /// factory goes back to the CPU. Throws what the factory throws. Contacts (grab) need the CPU.
     void setStepper(StepperFactory factory);
 
+    /// How equilibrate solves: `modifiedNewton` false, the full Newton iteration (below; this CPU); true, the
+    /// modified one without the pressure's load stiffness, whose tangent R K R^T + the rotations' derivative is
+    /// symmetric, by multigrid PCG (StaticSolver.h, ConjugateGradient), on this CPU or, with a factory, on the model
+    /// it makes from the wall's state (the CUDA static wall). Throws vsim::Error for a factory without the modified
+    /// iteration.
+    void setEquilibriumSolver(bool modifiedNewton, StaticModelFactory elsewhere = {});
+
     void setPressure(double pressurePa) { m_pressure = pressurePa; }
     double pressure() const { return m_pressure; }
     /// Tears elements whose largest principal stress passes `strengthPa` after each step (0: no tearing).
@@ -55,9 +62,9 @@ public:
     /// One implicit step at the current pressure, contacts and tearing.
     StepOutcome step();
     /// Static equilibrium at the current pressure from the current state: the follower pressure on the current
-    /// shape, fixed ends, no contacts, by the Newton solve of StaticSolver.h (the rotations' derivative and the
-    /// pressure's load stiffness in the tangent, each linear solve by GMRES to 1e-8 with a Cholesky or LU
-    /// preconditioner, TangentSolver.h); velocities zeroed. When an
+    /// shape, fixed ends, no contacts, by the Newton solve of StaticSolver.h (by default the rotations' derivative
+    /// and the pressure's load stiffness in the tangent, each linear solve by GMRES to 1e-8 with a Cholesky or LU
+    /// preconditioner, TangentSolver.h; else as setEquilibriumSolver chose); velocities zeroed. When an
     /// element inverts the state is restored, the report is not converged and `failure` (when given) says where.
     /// `progress` follows the updates; a cancel restores the state and throws vsim::Cancelled.
     StaticSolveReport equilibrate(double tolerance, int maxUpdates, std::string* failure = nullptr,
@@ -98,6 +105,8 @@ private:
     double m_pressure = 0.0;
     double m_tearStrength = 0.0;
     double m_time = 0.0;
+    bool m_modifiedNewton = false;
+    StaticModelFactory m_staticModelFactory;
 };
 
 } // namespace vsim::sim::fem
