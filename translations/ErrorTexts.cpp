@@ -101,6 +101,7 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "could not write the movie frame %1"),
     QT_TRANSLATE_NOOP("vsim::Error", "CUDA call failed: %1: %2"),
     QT_TRANSLATE_NOOP("vsim::Error", "scaledSum: x and y differ in length"),
+    QT_TRANSLATE_NOOP("vsim::Error", "the static wall on the GPU was made for another mesh"),
     QT_TRANSLATE_NOOP("vsim::Error", "no CUDA device: run the wall solver on the CPU (--backend cpu)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the CUDA backend runs the co-rotational linear model only: run St. Venant-Kirchhoff on the CPU (--backend cpu)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the smoke's CUDA backend needs a CUDA device, and there is none"),

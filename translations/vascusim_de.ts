@@ -4101,6 +4101,10 @@
         <source>the static solve on the GPU is the modified Newton iteration with multigrid conjugate gradients</source>
         <translation>die statische Lösung auf der GPU ist die modifizierte Newton-Iteration mit Mehrgitter-konjugierten Gradienten</translation>
     </message>
+    <message>
+        <source>the static wall on the GPU was made for another mesh</source>
+        <translation>die statische Wand auf der GPU wurde für ein anderes Netz angelegt</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -4101,6 +4101,10 @@
         <source>the static solve on the GPU is the modified Newton iteration with multigrid conjugate gradients</source>
         <translation>GPU 上的静力求解是采用多重网格共轭梯度的修正牛顿迭代</translation>
     </message>
+    <message>
+        <source>the static wall on the GPU was made for another mesh</source>
+        <translation>GPU 上的静力管壁是为另一网格建立的</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -255,7 +255,7 @@ private slots:
         for (std::size_t k = 0; k < cpu.entropyCurve.size(); ++k) // the same releases at the same pressures
             QCOMPARE(gpu.entropyCurve[k].first, cpu.entropyCurve[k].first);
         QVERIFY(gpu.status.forceResidual <= 1e-8 && gpu.status.unconvergedSolves == 0);
-        // The same tangent (its rotations' derivative by rotationStiffnessKernel): the same updates, within 5 %.
+        // The same tangent (its rotations' derivative, RotationStiffness.cuh): the same updates, within 5 %.
         QVERIFY(std::abs(gpu.status.solves - cpu.status.solves) <= cpu.status.solves / 20);
         QCOMPARE(gpu.frames.size(), cpu.frames.size());
         double difference = 0.0, size = 0.0;

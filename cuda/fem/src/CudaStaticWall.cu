@@ -2,6 +2,10 @@
 
 #include "WallDevice.cuh"
 
+#include "vsim/core/Error.h"
+
+#include <Eigen/Geometry>
+
 namespace vsim::cuda {
 
 struct CudaStaticWall::Device : WallDevice
@@ -39,6 +43,24 @@ CudaStaticWall::CudaStaticWall(const sim::fem::CorotationalFem& model, const std
 }
 
 CudaStaticWall::~CudaStaticWall() = default;
+
+void CudaStaticWall::takeStateOf(const sim::fem::CorotationalFem& model)
+{
+    Device& d = *m_device;
+    if (model.nodeCount() != d.nodes || model.elementCount() != std::size_t(d.model.elements))
+        throw Error("the static wall on the GPU was made for another mesh");
+    m_positions = model.positions();
+    // The rotations into the element records' first four doubles (w, x, y, z), the element kernel's warm start.
+    std::vector<double> quaternions(4 * model.elementCount());
+    for (std::size_t e = 0; e < model.elementCount(); ++e)
+    {
+        const Eigen::Quaterniond q(model.rotation(e));
+        quaternions[4 * e] = q.w(), quaternions[4 * e + 1] = q.x(), quaternions[4 * e + 2] = q.y(),
+                        quaternions[4 * e + 3] = q.z();
+    }
+    VSIM_CUDA_CHECK(cudaMemcpy2D(d.elementRecords.data, 16 * sizeof(double), quaternions.data(), 4 * sizeof(double),
+                                 4 * sizeof(double), model.elementCount(), cudaMemcpyHostToDevice));
+}
 
 std::size_t CudaStaticWall::updateElements()
 {
@@ -108,7 +130,7 @@ sim::fem::TangentSolveResult CudaStaticWall::solveTangent(const Eigen::VectorXd&
 sim::fem::StaticModelFactory cudaStaticWallFactory()
 {
     return [](const sim::fem::CorotationalFem& model, const std::vector<std::uint8_t>& constrained) {
-        return std::unique_ptr<sim::fem::StaticModel>(std::make_unique<CudaStaticWall>(model, constrained));
+        return std::unique_ptr<sim::fem::RemoteStaticModel>(std::make_unique<CudaStaticWall>(model, constrained));
     };
 }
 

@@ -1,6 +1,8 @@
 #include "BlockRows.cuh"
 #include "DeviceMath.cuh"
+#include "ElementShape.cuh"
 #include "FemKernels.cuh"
+#include "RotationStiffness.cuh"
 
 namespace vsim::cuda::fem {
 namespace {
@@ -47,36 +49,6 @@ __device__ bool gridSum(double (&values)[Count], double* partials, DeviceScalars
         totals[i] = sum;
     }
     return true;
-}
-
-/// What the kernels read of element `e`'s record (DeviceModel::elementRecords): its rotation, the shape-function
-/// gradients (1/m: rows of the rest edges' inverse, g_0 = -(g_1 + g_2 + g_3), TetElement.cpp), V lambda, V mu.
-struct ElementShape
-{
-    Quat rotation;
-    double g[4][3];
-    double volumeLambda, volumeMu;
-};
-
-__device__ inline ElementShape elementShape(const DeviceModel& m, std::size_t e)
-{
-    double s[16]; // read as 16-byte pairs: the record is 128-byte aligned
-    const double2* pairs = reinterpret_cast<const double2*>(m.elementRecords + 16 * e);
-    for (int k = 0; k < 8; ++k)
-    {
-        const double2 pair = pairs[k];
-        s[2 * k] = pair.x, s[2 * k + 1] = pair.y;
-    }
-    ElementShape shape;
-    shape.rotation = Quat{s[0], s[1], s[2], s[3]};
-    for (int b = 1; b < 4; ++b)
-        for (int i = 0; i < 3; ++i)
-            shape.g[b][i] = s[4 + 3 * (b - 1) + i];
-    for (int i = 0; i < 3; ++i)
-        shape.g[0][i] = -(shape.g[1][i] + shape.g[2][i] + shape.g[3][i]);
-    shape.volumeLambda = s[13];
-    shape.volumeMu = s[14];
-    return shape;
 }
 
 } // namespace
@@ -132,11 +104,7 @@ __global__ void elementKernel(DeviceModel m, const double* x, DeviceScalars* s)
             for (int j = 0; j < 3; ++j)
                 h(i, j) += u[i] * shape.g[b][j];
     }
-    const double pressure = shape.volumeLambda * (h(0, 0) + h(1, 1) + h(2, 2));
-    Mat3 stress; // V sigma
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            stress(i, j) = shape.volumeMu * (h(i, j) + h(j, i)) + (i == j ? pressure : 0.0);
+    const Mat3 stress = volumeStress(shape, h); // V sigma
     for (int a = 0; a < 4; ++a)
     {
         double f[3];
@@ -149,8 +117,9 @@ __global__ void elementKernel(DeviceModel m, const double* x, DeviceScalars* s)
 }
 
 /// Off-diagonal stored block t = sum over its elements of R K_ab R^T, with K_ab = V (lambda g_a g_b^T + mu g_b g_a^T +
-/// mu (g_a . g_b) I) (V B^T D B written out per node pair; K_ba = K_ab^T), times the stiffness factor.
-__global__ void assembleKernel(DeviceModel m, double stiffnessFactor)
+/// mu (g_a . g_b) I) (V B^T D B written out per node pair; K_ba = K_ab^T), + the rotations' derivative at
+/// `rotationsAt` where given (RotationStiffness.cuh), times the stiffness factor.
+__global__ void assembleKernel(DeviceModel m, double stiffnessFactor, const double* rotationsAt)
 {
     const int stored = blockIdx.x * blockDim.x + threadIdx.x;
     if (stored >= m.storedBlocks)
@@ -166,17 +135,17 @@ __global__ void assembleKernel(DeviceModel m, double stiffnessFactor)
         const std::uint32_t entry = m.blockEntries[i], element = entry / 16;
         const int a = int(entry % 16 / 4), b = int(entry % 4);
         const ElementShape shape = elementShape(m, element);
-        const double* ga = shape.g[a];
-        const double* gb = shape.g[b];
-        const double dot = shape.volumeMu * (ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2]);
-        Mat3 k;
-        for (int row = 0; row < 3; ++row)
-            for (int c = 0; c < 3; ++c)
-                k(row, c) = shape.volumeLambda * ga[row] * gb[c] + shape.volumeMu * ga[c] * gb[row] + (row == c ? dot : 0.0);
+        const Mat3 k = stiffnessBlock(shape, a, b);
         const Mat3 r = rotationMatrix(shape.rotation);
         const Mat3 rotated = multiply(r, multiplyTransposed(k, r));
         for (int j = 0; j < 9; ++j)
             sum.m[j] += rotated.m[j];
+        if (rotationsAt)
+        {
+            const Mat3 derivative = rotationTerm(m, rotationsAt, element, a, b);
+            for (int j = 0; j < 9; ++j)
+                sum.m[j] += derivative.m[j];
+        }
     }
     for (int j = 0; j < 9; ++j)
         sum.m[j] *= stiffnessFactor;
@@ -288,17 +257,7 @@ __global__ void cgInitKernel(DeviceModel m, const double* b, const double* x, do
         const double det = determinant(block);
         Mat3 inverse;
         if (fabs(det) > 0.0)
-        {
-            inverse(0, 0) = (block(1, 1) * block(2, 2) - block(1, 2) * block(2, 1)) / det;
-            inverse(0, 1) = (block(0, 2) * block(2, 1) - block(0, 1) * block(2, 2)) / det;
-            inverse(0, 2) = (block(0, 1) * block(1, 2) - block(0, 2) * block(1, 1)) / det;
-            inverse(1, 0) = (block(1, 2) * block(2, 0) - block(1, 0) * block(2, 2)) / det;
-            inverse(1, 1) = (block(0, 0) * block(2, 2) - block(0, 2) * block(2, 0)) / det;
-            inverse(1, 2) = (block(0, 2) * block(1, 0) - block(0, 0) * block(1, 2)) / det;
-            inverse(2, 0) = (block(1, 0) * block(2, 1) - block(1, 1) * block(2, 0)) / det;
-            inverse(2, 1) = (block(0, 1) * block(2, 0) - block(0, 0) * block(2, 1)) / det;
-            inverse(2, 2) = (block(0, 0) * block(1, 1) - block(0, 1) * block(1, 0)) / det;
-        }
+            inverse = inverted(block, det);
         else
             for (int j = 0; j < 9; ++j)
                 inverse.m[j] = j % 4 == 0 ? 1.0 : 0.0;

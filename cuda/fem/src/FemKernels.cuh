@@ -71,11 +71,10 @@ struct DeviceScalars
 
 __global__ void resetKernel(DeviceScalars* s);
 __global__ void elementKernel(DeviceModel m, const double* x, DeviceScalars* s);
-__global__ void assembleKernel(DeviceModel m, double stiffnessFactor);
+/// `rotationsAt`: the positions at which the rotations' derivative (CorotationalFem::addRotationStiffness) joins the
+/// off-diagonal blocks (the static wall's tangent); null: R K R^T alone (the implicit step's).
+__global__ void assembleKernel(DeviceModel m, double stiffnessFactor, const double* rotationsAt);
 __global__ void diagonalKernel(DeviceModel m, double massFactor);
-/// Adds the rotations' derivative (CorotationalFem::addRotationStiffness) at positions x, times the stiffness factor,
-/// to the stored off-diagonal blocks (RotationStiffnessKernel.cu); run between assembleKernel and diagonalKernel.
-__global__ void rotationStiffnessKernel(DeviceModel m, const double* x, double stiffnessFactor);
 __global__ void forceKernel(DeviceModel m, double* force);
 __global__ void pressureKernel(DeviceModel m, const double* x, const DeviceScalars* s, double* external);
 __global__ void productKernel(DeviceModel m, const double* in, double* out);

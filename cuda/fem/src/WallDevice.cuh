@@ -189,10 +189,8 @@ struct WallDevice
     {
         fem::resetKernel<<<1, 1, 0, stream>>>(s);
         fem::elementKernel<<<blocksFor(std::size_t(model.elements)), kThreads, 0, stream>>>(model, x.data, s);
-        fem::assembleKernel<<<blocksFor(std::size_t(model.storedBlocks)), kThreads, 0, stream>>>(model, stiffnessFactor);
-        if (staticTangent)
-            fem::rotationStiffnessKernel<<<blocksFor(std::size_t(model.storedBlocks)), kThreads, 0, stream>>>(
-                model, x.data, stiffnessFactor);
+        fem::assembleKernel<<<blocksFor(std::size_t(model.storedBlocks)), kThreads, 0, stream>>>(
+            model, stiffnessFactor, staticTangent ? x.data : nullptr);
         fem::diagonalKernel<<<blocksFor(nodes * fem::kRowLanes), kThreads, 0, stream>>>(model, massFactor);
         fem::forceKernel<<<blocksFor(nodes), kThreads, 0, stream>>>(model, force.data);
         VSIM_CUDA_CHECK(cudaMemsetAsync(external.data, 0, std::size_t(dofs) * sizeof(double), stream));

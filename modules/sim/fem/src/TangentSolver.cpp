@@ -23,7 +23,8 @@ TangentSolver::~TangentSolver() = default;
 TangentSolver::TangentSolver(const BlockSparseMatrix& pattern, const std::vector<std::uint8_t>& constrained,
                              const StaticSolveSettings& settings, const Eigen::VectorXd* positions)
     : m_settings(settings), m_constrained(constrained), m_positions(positions),
-      m_setUpRule(settings.multigridSetUpAgainFactor)
+      m_ownMultigrid{nullptr, MultigridSetUpRule(settings.multigridSetUpAgainFactor)},
+      m_multigrid(settings.keptMultigrid ? *settings.keptMultigrid : m_ownMultigrid)
 {
     if (settings.linear == LinearSolver::ConjugateGradient && settings.cgPreconditioner == CgPreconditioner::Multigrid &&
         positions == nullptr)
@@ -96,19 +97,20 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
     {
         if (m_settings.cgPreconditioner == CgPreconditioner::Multigrid)
         {
-            if (!m_multigrid)
+            if (!m_multigrid.hierarchy)
             {
-                m_multigrid = std::make_unique<AggregationMultigrid>(tangent, *m_positions, m_constrained);
-                m_setUpRule.setUp();
+                m_multigrid.hierarchy = std::make_unique<AggregationMultigrid>(tangent, *m_positions, m_constrained);
+                m_multigrid.rule.setUp();
                 result.multigridSetUp = true;
             }
             else
-                m_multigrid->refreshFinest(tangent);
+                m_multigrid.hierarchy->refreshFinest(tangent);
         }
         const ConjugateGradientResult cg = solveConjugateGradient(tangent, f, dx, m_constrained, tolerance(),
-                                                                  m_settings.cgMaxIterations, m_multigrid.get());
-        if (m_multigrid && m_setUpRule.setUpAgainAfter(cg.iterations))
-            m_multigrid.reset(); // set up again from the next update's tangent
+                                                                  m_settings.cgMaxIterations,
+                                                                  m_multigrid.hierarchy.get());
+        if (m_multigrid.hierarchy && m_multigrid.rule.setUpAgainAfter(cg.iterations))
+            m_multigrid.hierarchy.reset(); // set up again from the next update's tangent
         result.iterations = cg.iterations;
         result.relativeResidual = cg.relativeResidual;
         result.converged = cg.converged;

@@ -102,6 +102,8 @@ void WallSimulation::setEquilibriumSolver(bool modifiedNewton, StaticModelFactor
         throw Error("the static solve on the GPU is the modified Newton iteration with multigrid conjugate gradients");
     m_modifiedNewton = modifiedNewton;
     m_staticModelFactory = std::move(elsewhere);
+    m_elsewhere.reset();
+    m_keptMultigrid.hierarchy.reset();
 }
 
 StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, std::string* failure,
@@ -125,6 +127,7 @@ StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, 
         settings.maxUpdates = maxUpdates;
         settings.linear = m_modifiedNewton ? LinearSolver::ConjugateGradient : LinearSolver::CholeskyGmres;
         settings.cgPreconditioner = CgPreconditioner::Multigrid;
+        settings.keptMultigrid = &m_keptMultigrid;
         settings.rotationStiffness = true; // the full iteration's (the conjugate gradients leave it out)
         settings.afterResidual = [&](int updates, double residual) {
             progress.throwIfCancelled();
@@ -136,9 +139,12 @@ StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, 
         };
         if (m_staticModelFactory)
         {
-            const std::unique_ptr<StaticModel> elsewhere = m_staticModelFactory(m_model, m_fixed);
-            report = solveStatic(*elsewhere, pressure, m_fixed, settings);
-            m_model.positions() = elsewhere->positions();
+            if (m_elsewhere)
+                m_elsewhere->takeStateOf(m_model);
+            else
+                m_elsewhere = m_staticModelFactory(m_model, m_fixed);
+            report = solveStatic(*m_elsewhere, pressure, m_fixed, settings);
+            m_model.positions() = m_elsewhere->positions();
             m_model.updateElements();
         }
         else
@@ -230,6 +236,8 @@ void WallSimulation::restore(const Eigen::VectorXd& positions)
 
 void WallSimulation::tear(const std::vector<std::size_t>& over)
 {
+    m_elsewhere.reset(); // another mesh: what the equilibria kept is set up again
+    m_keptMultigrid.hierarchy.reset();
     const std::vector<double> energies = m_model.elementEnergies();
     for (std::size_t e : over)
         m_entropy.addTornElement(energies[e]);

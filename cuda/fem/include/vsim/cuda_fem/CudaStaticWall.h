@@ -1,11 +1,13 @@
 #pragma once
 
-// The static solve's model on the GPU (sim::fem::StaticModel): the co-rotational wall's element pass, elastic
+// The static solve's model on the GPU (sim::fem::RemoteStaticModel): the co-rotational wall's element pass, elastic
 // forces and tangent (R K R^T + the rotations' derivative, CorotationalFem::addRotationStiffness) on the device, each
 // update's linear solve by the device's PCG with block Jacobi or the smoothed-aggregation V-cycle (set up from the
 // first update's tangent and again by MultigridSetUpRule). solveStatic (StaticSolver.h, ConjugateGradient) drives
 // it from the host: the same modified Newton iteration, line search and follower pressure as on the CPU, whose
-// positions, forces and updates cross the bus each update. No CUDA types in this header.
+// positions, forces and updates cross the bus each update. It keeps its device state and hierarchy across the
+// solves of one mesh (the quasi-static ramp's equilibria), taking the host model's state before each. No CUDA types
+// in this header.
 
 #include "vsim/sim/fem/CorotationalFem.h"
 #include "vsim/sim/fem/MultigridSetUpRule.h"
@@ -19,7 +21,7 @@
 
 namespace vsim::cuda {
 
-class CudaStaticWall final : public sim::fem::StaticModel
+class CudaStaticWall final : public sim::fem::RemoteStaticModel
 {
 public:
     /// Copies `model` (its current state) and the constrained components (3 per node, 1 = held) to the GPU. Throws
@@ -29,6 +31,8 @@ public:
     CudaStaticWall(const CudaStaticWall&) = delete;
     CudaStaticWall& operator=(const CudaStaticWall&) = delete;
 
+    /// The positions and element rotations of `model` (the mesh this one was made from).
+    void takeStateOf(const sim::fem::CorotationalFem& model) override;
     Eigen::VectorXd& positions() override { return m_positions; }
     /// Uploads the positions and runs the element pass and the force sum on the device.
     std::size_t updateElements() override;

@@ -13,6 +13,7 @@
 
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/CorotationalFem.h"
+#include "vsim/sim/fem/MultigridSetUpRule.h"
 
 #include <Eigen/Core>
 
@@ -24,6 +25,14 @@
 namespace vsim::sim::fem {
 
 struct StaticSolveSettings;
+
+/// A smoothed-aggregation hierarchy kept across the static solves of one mesh (the quasi-static ramp's equilibria):
+/// set up at the first update that needs one and again by its rule; the owner resets it when the mesh changes.
+struct KeptMultigrid
+{
+    std::unique_ptr<AggregationMultigrid> hierarchy;
+    MultigridSetUpRule rule{2.0}; ///< BackwardEulerSettings::multigridSetUpAgainFactor's default
+};
 
 struct TangentSolveResult
 {
@@ -105,6 +114,8 @@ struct StaticSolveSettings
     /// the first update's tangent and again by MultigridSetUpRule.h with multigridSetUpAgainFactor.
     CgPreconditioner cgPreconditioner = CgPreconditioner::BlockJacobi;
     double multigridSetUpAgainFactor = 2.0;
+    /// Multigrid: the hierarchy to use and keep across solves (its own rule then applies); null: one per solve.
+    KeptMultigrid* keptMultigrid = nullptr;
     double linearTolerance = 1e-8; ///< CholeskyGmres: each linear solve's relative residual |T dx - f| / |f|
     int gmresMaxIterations = 200;
     /// CholeskyGmres: refactorise after a solve that needed more (a fresh CHOLMOD factorisation of the quadratic
@@ -123,10 +134,20 @@ struct StaticSolveSettings
     std::function<void(int updates, double forceResidual)> afterResidual;
 };
 
-/// Makes a model that solves its own tangent elsewhere (the CUDA static wall) from the co-rotational model's current
-/// state and its constrained components (3 per node, 1 = held). Throws vsim::Error when it cannot.
-using StaticModelFactory = std::function<std::unique_ptr<StaticModel>(const CorotationalFem& model,
-                                                                      const std::vector<std::uint8_t>& constrained)>;
+/// A co-rotational model whose static solve runs elsewhere (the CUDA static wall): it solves its own tangent and
+/// keeps what it set up (its multigrid hierarchy) across solves of the same mesh.
+class RemoteStaticModel : public StaticModel
+{
+public:
+    /// Takes the positions and the element rotations (the rotation extraction's warm start) of `model`, which has
+    /// the mesh this one was made from.
+    virtual void takeStateOf(const CorotationalFem& model) = 0;
+};
+
+/// Makes a model that solves its own tangent elsewhere from the co-rotational model's current state and its
+/// constrained components (3 per node, 1 = held). Throws vsim::Error when it cannot.
+using StaticModelFactory = std::function<std::unique_ptr<RemoteStaticModel>(
+    const CorotationalFem& model, const std::vector<std::uint8_t>& constrained)>;
 
 /// External forces (N, 3 per node) at the given positions (m): a follower pressure depends on them.
 using ExternalForces = std::function<Eigen::VectorXd(const Eigen::VectorXd& positions)>;

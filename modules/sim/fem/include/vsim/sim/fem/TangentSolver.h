@@ -65,8 +65,8 @@ private:
     SparseDirect* m_preconditioner = nullptr; // the kept factorisation (CholeskyGmres)
     int m_lastIterations = 0;
     const Eigen::VectorXd* m_positions;
-    std::unique_ptr<AggregationMultigrid> m_multigrid; // ConjugateGradient with Multigrid
-    MultigridSetUpRule m_setUpRule;
+    KeptMultigrid m_ownMultigrid;  // ConjugateGradient with Multigrid, without settings.keptMultigrid
+    KeptMultigrid& m_multigrid;    // the one in use
 };
 
 } // namespace vsim::sim::fem

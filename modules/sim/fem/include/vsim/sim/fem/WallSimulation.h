@@ -107,6 +107,10 @@ private:
     double m_time = 0.0;
     bool m_modifiedNewton = false;
     StaticModelFactory m_staticModelFactory;
+    // What the modified iteration keeps across the equilibria of one mesh (reset by a tear): the CPU's multigrid
+    // hierarchy, or the model elsewhere with its own.
+    KeptMultigrid m_keptMultigrid;
+    std::unique_ptr<RemoteStaticModel> m_elsewhere;
 };
 
 } // namespace vsim::sim::fem
