@@ -637,6 +637,7 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "%1: %2"),
     QT_TRANSLATE_NOOP("vsim::Error", "cannot replace file: %1"),
     QT_TRANSLATE_NOOP("vsim::Error", "the mask's grid does not match the image's (%1): mask %2; image %3"),
+    QT_TRANSLATE_NOOP("vsim::Error", "the mask holds one value (%1): stored as label 1, the lumen's (give --label-value N for another)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the mask holds the value %1, outside the labels 1..255: give the label value to use (--label-value N)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the mask was on another grid of the same scan (offset %1, %2, %3 voxels): cut to the image's grid, every labelled voxel kept"),
     QT_TRANSLATE_NOOP("vsim::Error", "the mask's voxels were stored in another axis order or direction: reordered onto the image's grid, voxel for voxel"),

@@ -4105,6 +4105,10 @@
         <source>the static wall on the GPU was made for another mesh</source>
         <translation>die statische Wand auf der GPU wurde für ein anderes Netz angelegt</translation>
     </message>
+    <message>
+        <source>the mask holds one value (%1): stored as label 1, the lumen&apos;s (give --label-value N for another)</source>
+        <translation>die Maske enthält einen Wert (%1): als Label 1 gespeichert, das des Lumens (--label-value N für ein anderes)</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -4105,6 +4105,10 @@
         <source>the static wall on the GPU was made for another mesh</source>
         <translation>GPU 上的静力管壁是为另一网格建立的</translation>
     </message>
+    <message>
+        <source>the mask holds one value (%1): stored as label 1, the lumen&apos;s (give --label-value N for another)</source>
+        <translation>掩膜只含一个值（%1）：已存为标签 1，即管腔的标签（如需其他值请给出 --label-value N）</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -55,7 +55,8 @@ std::vector<CommandSpec> declareCommands()
          "    creates the study in a new or empty folder; values must read as CT in HU (any CT in HU does, a crop\n"
          "    without air too), else give the rescale HU = SLOPE x stored + INTERCEPT; --as-label adds a mask as a\n"
          "    label on the study's image grid (a NIfTI / NRRD / MetaImage file, a DICOM SEG or a DICOM mask series;\n"
-         "    its own labels, or every nonzero voxel as --label-value), refused when the grids do not match; --list prints the series found as JSON and imports nothing",
+         "    its own labels, a mask of one value as label 1, or every nonzero voxel as --label-value), refused when the\n"
+         "    grids do not match; --list prints the series found as JSON and imports nothing",
          importIntoStudy},
         {"phantom", 1, 1,
          {required("out"), value("size"), value("spacing"), value("noise"), value("seed"), value("transfer-syntax"),

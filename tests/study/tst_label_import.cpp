@@ -38,7 +38,6 @@ private slots:
         const vsim::LabelVolume placed = maskOnImageGrid(same, image, 1, warnings);
         QCOMPARE(int(placed.data()[image.linearIndex(2, 3, 4)]), 1);
         QVERIFY(warnings.empty());
-        QCOMPARE(int(maskOnImageGrid(same, image, std::nullopt, warnings).data()[image.linearIndex(2, 3, 4)]), 255);
 
         // The uncropped scan: 5, 4 and 3 voxels more before the crop's first voxel.
         const vsim::VolumeGeometry larger = grid({30, 30, 20}, image.origin - Eigen::Vector3d(5, 4, 3) * 1.5);
@@ -67,14 +66,43 @@ private slots:
                                         int(std::lround(inMask.z())))] = 7;
         std::vector<std::string> warnings;
         const vsim::LabelVolume placed = maskOnImageGrid(mask, image, std::nullopt, warnings);
-        QCOMPARE(int(placed.data()[image.linearIndex(4, 9, 2)]), 7);
-        QCOMPARE(std::count(placed.data(), placed.data() + placed.size(), std::uint8_t(7)), std::ptrdiff_t(1));
-        QVERIFY(!warnings.empty() && warnings.front().find("axis order") != std::string::npos);
+        QCOMPARE(int(placed.data()[image.linearIndex(4, 9, 2)]), 1); // one value: label 1 (binaryMaskIsLabelOne)
+        QCOMPARE(std::count(placed.data(), placed.data() + placed.size(), std::uint8_t(1)), std::ptrdiff_t(1));
+        QVERIFY(std::any_of(warnings.begin(), warnings.end(),
+                            [](const std::string& w) { return w.find("axis order") != std::string::npos; }));
         vsim::VolumeGeometry turned = image;
         turned.direction = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
         vsim::CtVolume turnedMask(turned);
         turnedMask.data()[0] = 1;
         QVERIFY_THROWS_EXCEPTION(vsim::Error, maskOnImageGrid(turnedMask, image, 1, warnings));
+    }
+
+    /// A binary mask from elsewhere (0 / 255) is one structure: label 1, the lumen's value, with a warning naming
+    /// the value; a mask of several values keeps them; a 0 / 1 mask needs no warning; a given value wins.
+    void binaryMaskIsLabelOne()
+    {
+        const vsim::VolumeGeometry image = grid({6, 6, 6}, {0.0, 0.0, 0.0});
+        vsim::CtVolume binary(image), several(image);
+        std::fill(binary.data(), binary.data() + image.voxelCount(), std::int16_t(0));
+        std::fill(several.data(), several.data() + image.voxelCount(), std::int16_t(0));
+        binary.data()[image.linearIndex(1, 2, 3)] = binary.data()[image.linearIndex(4, 4, 4)] = 255;
+        several.data()[image.linearIndex(1, 2, 3)] = 1, several.data()[image.linearIndex(4, 4, 4)] = 4;
+        std::vector<std::string> warnings;
+        const vsim::LabelVolume one = maskOnImageGrid(binary, image, std::nullopt, warnings);
+        QCOMPARE(int(one.data()[image.linearIndex(1, 2, 3)]), 1);
+        QCOMPARE(int(one.data()[image.linearIndex(4, 4, 4)]), 1);
+        QCOMPARE(warnings.size(), std::size_t(1));
+        QVERIFY(warnings.front().find("one value (255)") != std::string::npos);
+        warnings.clear();
+        const vsim::LabelVolume kept = maskOnImageGrid(several, image, std::nullopt, warnings);
+        QCOMPARE(int(kept.data()[image.linearIndex(1, 2, 3)]), 1);
+        QCOMPARE(int(kept.data()[image.linearIndex(4, 4, 4)]), 4);
+        QVERIFY(warnings.empty());
+        binary.data()[image.linearIndex(1, 2, 3)] = binary.data()[image.linearIndex(4, 4, 4)] = 1;
+        QCOMPARE(int(maskOnImageGrid(binary, image, std::nullopt, warnings).data()[image.linearIndex(4, 4, 4)]), 1);
+        QVERIFY(warnings.empty());
+        QCOMPARE(int(maskOnImageGrid(binary, image, 9, warnings).data()[image.linearIndex(4, 4, 4)]), 9);
+        QVERIFY(warnings.empty());
     }
 
     void mismatchedGridsAreRefused()

@@ -59,6 +59,23 @@ LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, s
     const int di = int(whole.x()), dj = int(whole.y()), dk = int(whole.z());
     const bool sameLattice = axisOf == std::array<int, 3>{0, 1, 2} && signOf == std::array<int, 3>{1, 1, 1};
 
+    // A binary mask from elsewhere (0 / 255, 0 / 1000) is one structure: stored as label 1, the value the vessel
+    // steps (skeleton, measure, mesh) read as the lumen; a mask with several values keeps them.
+    std::optional<std::int16_t> onlyValue;
+    bool binary = true;
+    for (std::size_t v = 0; v < mask.size() && binary; ++v)
+        if (const std::int16_t own = mask.data()[v]; own != 0)
+        {
+            binary = !onlyValue || *onlyValue == own;
+            onlyValue = own;
+        }
+    if (!value && binary && onlyValue && *onlyValue > 1) // a negative value is no mask's: refused below
+    {
+        warnings.push_back(storedText(Pattern{"the mask holds one value (%1): stored as label 1, the lumen's (give "
+                                              "--label-value N for another)",
+                                              {std::to_string(*onlyValue)}}));
+        value = 1;
+    }
     LabelVolume label(image);
     std::size_t labelled = 0, outside = 0;
     const std::array<int, 3>& d = source.dims;

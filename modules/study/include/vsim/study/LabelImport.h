@@ -17,7 +17,8 @@
 namespace vsim::study {
 
 /// The mask's nonzero voxels on `image`'s grid (0 elsewhere): as `value` when given, else with their own values (a
-/// multi-label mask keeps its labels; they must be 1..255). `warnings` gains a line when the mask was cut or padded.
+/// multi-label mask keeps its labels; they must be 1..255), a mask of one value as label 1 (with a warning).
+/// `warnings` gains a line when the mask was cut or padded.
 /// Throws vsim::Error naming both grids when they do not match as the header says, when the mask has no labelled
 /// voxel, and for own values outside 1..255.
 LabelVolume maskOnImageGrid(const CtVolume& mask, const VolumeGeometry& image, std::optional<std::uint8_t> value,
