@@ -128,7 +128,7 @@ StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, 
         settings.linear = m_modifiedNewton ? LinearSolver::ConjugateGradient : LinearSolver::CholeskyGmres;
         settings.cgPreconditioner = CgPreconditioner::Multigrid;
         settings.keptMultigrid = &m_keptMultigrid;
-        settings.rotationStiffness = true; // the full iteration's (the conjugate gradients leave it out)
+        settings.rotationStiffness = true; // both iterations; the conjugate gradients leave out the load stiffness
         settings.afterResidual = [&](int updates, double residual) {
             progress.throwIfCancelled();
             // Newton's residual falls from about 1e-1 to the tolerance: progress on its logarithm.

@@ -41,6 +41,8 @@ public:
     sim::fem::BlockSparseMatrix makeMatrix() const override { return {}; }
     void assembleTangent(sim::fem::BlockSparseMatrix&, bool) const override {}
     bool solvesItsTangent() const override { return true; }
+    /// The tangent always holds the rotations' derivative: the CPU's with settings.rotationStiffness (as
+    /// WallSimulation::equilibrate sets it).
     sim::fem::TangentSolveResult solveTangent(const Eigen::VectorXd& f, Eigen::VectorXd& dx, double tolerance,
                                               const sim::fem::StaticSolveSettings& settings) override;
 
