@@ -17,7 +17,8 @@ for binary in $binaries; do
         xargs -r -I{} cp -L -n {} "$out/lib/"
 done
 # The GPU plugin and its libraries (tst_gpu_plugin loads it from $VASCUSIM_GPU_PLUGIN=.dev/gpu/libvascusim-gpu.so).
-plugin=$(find "$build/lib" -name libvascusim-gpu.so 2>/dev/null | head -1)
+# The newest one: an older build layout may have left a stale copy beside it (lib/vascusim/ before lib/<triplet>/).
+plugin=$(find "$build/lib" -name libvascusim-gpu.so -printf '%T@ %p\n' 2>/dev/null | sort -nr | head -1 | cut -d' ' -f2-)
 if [ -n "$plugin" ]; then
     cp "$plugin" "$out/"
     ldd "$plugin" | awk '/=> \// {print $3}' | grep -v -E '/(libc|libm|libgcc_s|libstdc\+\+|libpthread|libdl|librt)\.so' |
