@@ -28,15 +28,7 @@ sim::fem::StepReport CudaBackwardEuler::step(double pressurePa)
         d.setUpMultigridFromDevice();
         d.setUpAgain = false;
     }
-    VSIM_CUDA_CHECK(cudaGraphLaunch(d.pcgStart.exec, d.stream));
-    fem::DeviceScalars scalars{};
-    do
-    {
-        VSIM_CUDA_CHECK(cudaGraphLaunch(d.iterations.exec, d.stream));
-        VSIM_CUDA_CHECK(cudaMemcpyAsync(&scalars, d.scalars.data, sizeof scalars, cudaMemcpyDeviceToHost, d.stream));
-        VSIM_CUDA_CHECK(cudaStreamSynchronize(d.stream));
-    } while (!scalars.done && scalars.residual > d.settings.cgTolerance &&
-             scalars.iterations < d.settings.cgMaxIterations);
+    const fem::DeviceScalars scalars = d.runPcg();
     VSIM_CUDA_CHECK(cudaGraphLaunch(d.finish.exec, d.stream));
     VSIM_CUDA_CHECK(cudaStreamSynchronize(d.stream));
     if (d.multigrid)

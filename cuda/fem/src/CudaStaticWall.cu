@@ -105,18 +105,10 @@ sim::fem::TangentSolveResult CudaStaticWall::solveTangent(const Eigen::VectorXd&
         d.setUpMultigridFromDevice();
         d.setUpAgain = false;
         m_setUpRule.setUp();
-        result.multigridSetUp = true;
     }
     VSIM_CUDA_CHECK(cudaMemcpyAsync(d.rhs.data, f.data(), 3 * d.nodes * sizeof(double), cudaMemcpyHostToDevice, d.stream));
     VSIM_CUDA_CHECK(cudaMemsetAsync(d.dv.data, 0, 3 * d.nodes * sizeof(double), d.stream)); // from dx = 0
-    VSIM_CUDA_CHECK(cudaGraphLaunch(d.pcgStart.exec, d.stream));
-    fem::DeviceScalars scalars{};
-    do
-    {
-        VSIM_CUDA_CHECK(cudaGraphLaunch(d.iterations.exec, d.stream));
-        VSIM_CUDA_CHECK(cudaMemcpyAsync(&scalars, d.scalars.data, sizeof scalars, cudaMemcpyDeviceToHost, d.stream));
-        VSIM_CUDA_CHECK(cudaStreamSynchronize(d.stream));
-    } while (!scalars.done && scalars.residual > tolerance && scalars.iterations < settings.cgMaxIterations);
+    const fem::DeviceScalars scalars = d.runPcg(); // d.settings carry the tolerance and the cap (recordedFor)
     dx.resize(Eigen::Index(3 * d.nodes));
     VSIM_CUDA_CHECK(cudaMemcpy(dx.data(), d.dv.data, 3 * d.nodes * sizeof(double), cudaMemcpyDeviceToHost));
     if (multigrid && m_setUpRule.setUpAgainAfter(scalars.iterations))

@@ -160,6 +160,21 @@ struct WallDevice
         });
     }
 
+    /// The PCG on the matrix and right-hand side in place: its start, then runs of iterations replayed until it
+    /// stops (converged, broken down or at the cap); the last scalars.
+    fem::DeviceScalars runPcg()
+    {
+        VSIM_CUDA_CHECK(cudaGraphLaunch(pcgStart.exec, stream));
+        fem::DeviceScalars last{};
+        do
+        {
+            VSIM_CUDA_CHECK(cudaGraphLaunch(iterations.exec, stream));
+            VSIM_CUDA_CHECK(cudaMemcpyAsync(&last, scalars.data, sizeof last, cudaMemcpyDeviceToHost, stream));
+            VSIM_CUDA_CHECK(cudaStreamSynchronize(stream));
+        } while (!last.done && last.residual > settings.cgTolerance && last.iterations < settings.cgMaxIterations);
+        return last;
+    }
+
     void recordPcg()
     {
         fem::DeviceScalars* s = scalars.data;

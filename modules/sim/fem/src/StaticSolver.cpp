@@ -137,7 +137,6 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
                                   externalStiffness);
         report.cgIterations += solved.iterations;
         report.factorisations += solved.factorised ? 1 : 0;
-        report.multigridSetUps += solved.multigridSetUp ? 1 : 0;
         report.worstLinearResidual = std::max(report.worstLinearResidual, solved.relativeResidual);
         report.linearIterations.push_back(solved.iterations);
         report.linearResiduals.push_back(solved.relativeResidual);

@@ -101,7 +101,6 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
             {
                 m_multigrid.hierarchy = std::make_unique<AggregationMultigrid>(tangent, *m_positions, m_constrained);
                 m_multigrid.rule.setUp();
-                result.multigridSetUp = true;
             }
             else
                 m_multigrid.hierarchy->refreshFinest(tangent);

@@ -40,7 +40,6 @@ struct TangentSolveResult
     double relativeResidual = 0.0; ///< |f - T dx| / |f| on the free components
     bool factorised = false;       ///< this solve factorised the tangent
     bool converged = false;        ///< the residual reached the solve's tolerance
-    bool multigridSetUp = false;   ///< this solve set a multigrid hierarchy up
 };
 
 /// What the static solve needs of a model (CorotationalFem through an adapter, QuadraticFem directly).
@@ -88,7 +87,6 @@ struct StaticSolveReport
     std::vector<int> linearIterations;   ///< per update: the Krylov iterations of its linear solve (0: direct)
     std::vector<double> linearResiduals; ///< per update: its linear solve's relative residual
     double smallestStep = 1.0;  ///< the smallest fraction of a Newton step the line search took
-    int multigridSetUps = 0;    ///< smoothed-aggregation hierarchies set up (ConjugateGradient with Multigrid)
     bool converged = false;
 };
 
