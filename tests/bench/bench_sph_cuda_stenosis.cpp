@@ -5,6 +5,7 @@
 // bench_sph_openfoam reads with --sph-in (give it the same --spacing) and prints a summary line.
 //
 //   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] [mean speed m/s] [length mm]
+//                           [particle shifting A]
 //
 // A mean speed (and length) other than the default's 0.05 m/s (5.6 mm) is StenosisPipe::atFlow's problem (Re 100
 // upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled).
@@ -35,7 +36,7 @@ try
     if (argc < 3)
     {
         std::fprintf(stderr, "usage: bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] "
-                             "[mean speed m/s] [length mm]\n");
+                             "[mean speed m/s] [length mm] [particle shifting A]\n");
         return 2;
     }
     if (vsim::cuda::devices().empty())
@@ -51,6 +52,8 @@ try
         pipe = pipe.atFlow(std::stod(argv[5]), argc > 6 ? std::stod(argv[6]) : pipe.lengthMm);
     if (argc > 4 && std::stod(argv[4]) > 0.0)
         pipe.soundSpeedMS = std::stod(argv[4]);
+    if (argc > 7)
+        pipe.particleShifting = std::stod(argv[7]);
     const auto start = std::chrono::steady_clock::now();
     SphSolver solver;
     configureStenosisPipe(pipe, solver, 1, 1); // sampled here every `every` steps, weighted by the time between
@@ -100,6 +103,7 @@ try
         {"device", vsim::cuda::deviceSummary()}, {"spacing_mm", pipe.spacingMm}, {"sound_speed_m_s", pipe.soundSpeedMS},
         {"sampled_every_steps", every}, {"inflow_kg", inflow}, {"mean_speed_m_s", pipe.meanSpeedMS},
         {"length_mm", pipe.lengthMm}, {"averaged_s", {pipe.averageFromS, pipe.endTimeS}},
+        {"particle_shifting", pipe.particleShifting},
         {"outflow_kg", double(gpu.massLedger().totalOutflow())}};
     std::ofstream(out) << report.dump(1) << '\n';
     std::printf("{\"case\": \"sph-stenosis on the GPU\", \"spacing_mm\": %.3f, \"sound_speed_m_s\": %.1f, "

@@ -121,12 +121,20 @@ private slots:
         QVERIFY(position <= 1e-4 && velocity <= 1e-4 && density <= 1e-4 && time <= 1e-4);
     }
 
+    void stenosisPipeParityWithOpenBoundaries_data()
+    {
+        QTest::addColumn<double>("shifting");
+        QTest::newRow("plain") << 0.0;
+        QTest::newRow("particle shifting A 2") << 2.0;
+    }
     void stenosisPipeParityWithOpenBoundaries()
     {
         if (vsim::cuda::devices().empty())
             QSKIP("no CUDA device on this machine; run on the accelerator with the device tool");
+        QFETCH(double, shifting);
         StenosisPipe pipe;
         pipe.rampS = 0.001;
+        pipe.particleShifting = shifting;
         SphSolver cpu;
         configureStenosisPipe(pipe, cpu);
         SimulationInput input;
@@ -200,10 +208,10 @@ private slots:
         const double outletDifference = std::abs(gpu.flowRate(1) - cpu.openBoundaries().flowRate(1)) / q;
         const double time = std::abs(gpu.timeS() - cpu.position()) / cpu.position();
         for (const auto& [steps, d] : {std::pair{100, at100}, std::pair{300, at300}})
-            qInfo("stenosis pipe at 0.1 mm, %d steps: particles CPU %zu, GPU %zu (%zu given, %zu compared, %zu "
+            qInfo("stenosis pipe at 0.1 mm, particle shifting %g, %d steps: particles CPU %zu, GPU %zu (%zu given, %zu compared, %zu "
                   "in another buffer or removed on one side); GPU - CPU: position %.3g of the largest "
                   "displacement, %.3g of the spacing; velocity %.3g, density %.3g (relative)",
-                  steps, d.cpuParticles, d.gpuParticles, given, d.compared, d.boundaryDiffers, d.position,
+                  shifting, steps, d.cpuParticles, d.gpuParticles, given, d.compared, d.boundaryDiffers, d.position,
                   d.positionPerSpacing, d.velocity, d.density);
         qInfo("after 300 steps (t = %.5f s): inflow %.6g kg (GPU %.3g relative), outflow %.6g kg (GPU - CPU %.3g "
               "of the inflow); flow rates: inlet %.3g, outlet %.3g relative to the inlet's %.4g ml/s; time %.3g",

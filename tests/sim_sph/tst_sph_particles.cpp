@@ -1,13 +1,14 @@
 // The SPH solver's particle machinery (issue 18): the quartic kernel's closed form at known points, the
 // neighbour grid against a brute-force search on random particles (three seeds, clustered and spread), and
 // the validation cases sph-kernel and sph-fpm with their stated tolerances, the mixture and the reference
-// pressure, and the walls' Lennard-Jones backstop against a fin one particle thick.
+// pressure, the walls' Lennard-Jones backstop against a fin one particle thick, and particle shifting.
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
 #include "vsim/sim/sph/OpenBoundary.h"
 #include "vsim/sim/sph/QuarticKernel.h"
+#include "vsim/sim/sph/SphRates.h"
 #include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/sph/SphValidation.h"
 
@@ -160,6 +161,110 @@ private slots:
         QCOMPARE(fluid.densityVariation(0.5 * rho0, 0.2), 0.0);
         QVERIFY(std::abs(fluid.densityVariation(1.02 * rho0, 0.2) - 0.02) < 1e-12);
         QVERIFY(std::abs(fluid.pressure(1.02 * rho0, 0.2) - fluid.stiffness(0.2) * (std::pow(1.02, 7.0) - 1.0)) < 1e-9);
+    }
+
+    /// Particle shifting (SphRates.h) on a periodic lattice of fluid moving as a whole: none on the perfect lattice
+    /// (by symmetry, to rounding); one particle moved 0.3 spacings off its site is sent back along the line it left by;
+    /// a lattice jittered by up to 0.25 spacings (three seeds) moved by the shift alone evens out: the RMS shift
+    /// velocity falls at least fivefold in 200 moves by dt s_i, |v| dt = 0.05 spacings. Off (A = 0): no shift computed.
+    void particleShiftingEvensOutTheParticles()
+    {
+        const double spacing = 1e-4, period = 10 * spacing;
+        const Eigen::Vector3d velocity(0.1, 0.0, 0.0);
+        const QuarticKernel kernel(2.0 * spacing);
+        FluidModel fluid;
+        fluid.particleShifting = 2.0;
+        fluid.shiftingReciprocalWeight = 1.0 / kernel.value(spacing);
+        NeighbourGrid grid(kernel.support(), Eigen::Vector3d::Constant(period));
+        auto lattice = [&](double jitter, unsigned seed)
+        {
+            std::mt19937 random(seed);
+            std::uniform_real_distribution<double> offset(-jitter, jitter);
+            ParticleState particles;
+            for (int k = 0; k < 10; ++k)
+                for (int j = 0; j < 10; ++j)
+                    for (int i = 0; i < 10; ++i)
+                    {
+                        const Eigen::Vector3d site = spacing * (Eigen::Vector3d(i, j, k) + Eigen::Vector3d::Constant(0.5));
+                        const Eigen::Vector3d moved(offset(random), offset(random), offset(random));
+                        particles.add(grid.wrap(site + spacing * moved), fluid.restDensity,
+                                      fluid.restDensity * spacing * spacing * spacing, false);
+                        particles.velocity.back() = velocity;
+                    }
+            return particles;
+        };
+        auto shifts = [&](const ParticleState& particles, const FluidModel& model)
+        {
+            grid.build(particles.position);
+            SphRates rates;
+            computeRates(particles, pressures(particles, model), grid, kernel, model, 0.0, rates);
+            return rates.shiftVelocity;
+        };
+        auto rms = [](const std::vector<Eigen::Vector3d>& values)
+        {
+            double sum = 0.0;
+            for (const auto& v : values)
+                sum += v.squaredNorm();
+            return std::sqrt(sum / double(values.size()));
+        };
+        ParticleState perfect = lattice(0.0, 1);
+        double largest = 0.0;
+        for (const auto& s : shifts(perfect, fluid))
+            largest = std::max(largest, s.norm());
+        QVERIFY2(largest <= 1e-9 * velocity.norm(), qPrintable(QString::number(largest)));
+
+        const std::size_t moved = 555; // i = j = k = 5
+        perfect.position[moved].y() += 0.3 * spacing;
+        const Eigen::Vector3d back = shifts(perfect, fluid)[moved];
+        qInfo("a particle 0.3 spacings off its site: shift velocity (%.3g, %.3g, %.3g) m/s at |v| %.3g m/s", back.x(),
+              back.y(), back.z(), velocity.norm());
+        QVERIFY(back.y() < -1e-3 * velocity.norm());
+        QVERIFY(std::abs(back.x()) <= 1e-6 * std::abs(back.y()) && std::abs(back.z()) <= 1e-6 * std::abs(back.y()));
+
+        for (unsigned seed : {11u, 12u, 13u})
+        {
+            ParticleState jittered = lattice(0.25, seed);
+            const double step = 0.05 * spacing / velocity.norm(); // |v| dt = 0.05 spacings
+            const double before = rms(shifts(jittered, fluid));
+            for (int move = 0; move < 200; ++move)
+            {
+                const std::vector<Eigen::Vector3d> s = shifts(jittered, fluid);
+                for (std::size_t i = 0; i < jittered.size(); ++i)
+                    jittered.position[i] = grid.wrap(jittered.position[i] + step * s[i]);
+            }
+            const double after = rms(shifts(jittered, fluid));
+            qInfo("seed %u: RMS shift velocity %.4g -> %.4g m/s after 200 moves", seed, before, after);
+            QVERIFY(after < 0.2 * before);
+        }
+        FluidModel off = fluid;
+        off.particleShifting = 0.0;
+        QVERIFY(shifts(perfect, off).empty());
+    }
+
+    /// Particle shifting with a free surface or without tension is refused with the reason.
+    void particleShiftingNeedsAFilledVessel()
+    {
+        for (const char* name : {"free_surface", "fluid_tension"})
+        {
+            ParticleSet particles;
+            particles.positionsMm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0.5, 0.0, 0.0)};
+            particles.fields["wall"] = {0.0, 0.0};
+            ParameterSet parameters(sphParameters());
+            parameters.set("particle_shifting", 2.0);
+            parameters.set(name, std::string(name) == "free_surface" ? 1.0 : 0.0);
+            SimulationInput input;
+            input.data["particles"] = particles;
+            SphSolver solver;
+            try
+            {
+                solver.initialize(input, parameters);
+                QFAIL("particle shifting was not refused");
+            }
+            catch (const Error& error)
+            {
+                QVERIFY2(error.message().find("particle_shifting 0") != std::string::npos, error.message().c_str());
+            }
+        }
     }
 
     /// Periodic along x (a channel's flow direction): neighbours across the seam found as nearest images.

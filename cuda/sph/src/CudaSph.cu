@@ -105,7 +105,7 @@ struct CudaSph::Device
     std::vector<double> flowRate, pressure; ///< per boundary, the last imposition's (m^3/s into the domain, Pa)
     int nextId = 0;
     ParticleArrays current, other;
-    DeviceArray<float4> acceleration, densityGradient, derived;
+    DeviceArray<float4> acceleration, densityGradient, derived, shiftVelocity;
     DeviceArray<float> densityRate, wallDistance, guardedWallDistance;
     DeviceArray<unsigned> keys, sortedKeys, cellStart, cellEnd, cellFluid;
     DeviceArray<int> order, sortedOrder;
@@ -122,9 +122,10 @@ struct CudaSph::Device
     sph::OpenBoundaryTallies lastTallies{};
     double time = 0.0, stepS = 0.0;
 
-    Device(std::size_t count, std::size_t capacityCount, std::size_t cellCount)
+    Device(std::size_t count, std::size_t capacityCount, std::size_t cellCount, bool shifting)
         : n(int(count)), capacity(int(capacityCount)), current(capacityCount), other(capacityCount),
           acceleration(capacityCount), densityGradient(capacityCount), derived(capacityCount),
+          shiftVelocity(shifting ? capacityCount : 0),
           densityRate(capacityCount), wallDistance(capacityCount), guardedWallDistance(capacityCount),
           keys(capacityCount), sortedKeys(capacityCount), cellStart(cellCount), cellEnd(cellCount),
           cellFluid(cellCount), order(capacityCount), sortedOrder(capacityCount), byKind(capacityCount),
@@ -140,7 +141,7 @@ struct CudaSph::Device
     sph::SphRatesArrays rates() const
     {
         return {acceleration.data(), densityGradient.data(), derived.data(), densityRate.data(), wallDistance.data(),
-                guardedWallDistance.data()};
+                shiftVelocity.data(), guardedWallDistance.data()};
     }
     bool open() const { return boundaryArgs.count > 0; }
 
@@ -309,6 +310,8 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     params.support2 = float(4.0 * h * h);
     params.eta2 = float(0.001 * h * h);
     params.diffusion = float(fluid.densityDiffusion * h * fluid.soundSpeed);
+    params.shifting = float(fluid.particleShifting * h);
+    params.shiftingReciprocalWeight = float(fluid.shiftingReciprocalWeight);
     params.soundSpeed = float(fluid.soundSpeed), params.gamma = float(fluid.gamma);
     params.restDensity = float(fluid.restDensity), params.gasDensity = float(fluid.gasDensity);
     params.viscosity = float(fluid.viscosity), params.gasViscosity = float(fluid.gasViscosity);
@@ -343,7 +346,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     const std::size_t buffered =
         std::size_t(std::count_if(p.boundary.begin(), p.boundary.end(), [](auto b) { return b != 0; }));
     const std::size_t capacity = settings.openBoundaries ? n + n / 10 + 2 * buffered : n;
-    m_device = std::make_unique<Device>(n, capacity, cells);
+    m_device = std::make_unique<Device>(n, capacity, cells, fluid.particleShifting > 0.0);
     Device& d = *m_device;
     d.params = params, d.fluid = fluid, d.settings = settings;
     if (settings.openBoundaries)
@@ -486,7 +489,7 @@ std::size_t CudaSph::deviceBytes() const
 {
     const Device& d = *m_device;
     return d.current.bytes() + d.other.bytes() + d.acceleration.bytes() + d.densityGradient.bytes() +
-           d.derived.bytes() + d.densityRate.bytes() + d.wallDistance.bytes() +
+           d.derived.bytes() + d.shiftVelocity.bytes() + d.densityRate.bytes() + d.wallDistance.bytes() +
            d.guardedWallDistance.bytes() + d.keys.bytes() + d.sortedKeys.bytes() + d.cellStart.bytes() +
            d.cellEnd.bytes() + d.cellFluid.bytes() + d.order.bytes() + d.sortedOrder.bytes() +
            d.byKind.bytes() + d.partitionScratch.bytes() + d.sortScratch.bytes();

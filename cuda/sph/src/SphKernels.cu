@@ -186,6 +186,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         // dot products with grad W = g rij as g times the dot product with rij (the same sums, reordered).
         float continuity = 0.0f, diffusion = 0.0f, fx = 0.0f, fy = 0.0f, fz = 0.0f;
         float viscousX = 0.0f, viscousY = 0.0f, viscousZ = 0.0f;
+        float crowdX = 0.0f, crowdY = 0.0f, crowdZ = 0.0f; // grad C_i (particle shifting)
         // Per neighbour, from its records: dj = (V_j, m_j p_j / rho_j^2, m_j, rho_j / rho0_j), gj = (G_j,
         // mu_j).
         forEachNeighbour(p, a, cellStart, cellEnd, i,
@@ -219,6 +220,13 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                                  const float push = wallRepulsionFactor(p, rr);
                                  fx += push * rx, fy += push * ry, fz += push * rz;
                              }
+                             if (p.shifting > 0.0f) // grad C_i with the anti-clumping term (SphRates.h)
+                             {
+                                 const float ratio = kernelValue(p, rr) * p.shiftingReciprocalWeight;
+                                 const float ratio2 = ratio * ratio;
+                                 const float crowd = vg * (1.0f + 0.2f * ratio2 * ratio2);
+                                 crowdX += crowd * rx, crowdY += crowd * ry, crowdZ += crowd * rz;
+                             }
                              const float damped = 1.0f / (r2 + p.eta2);
                              const float viscous = vg * (muI + gj.w) * r2 * damped; // rij . grad W = g r^2
                              viscousX += viscous * wx, viscousY += viscous * wy, viscousZ += viscous * wz;
@@ -229,6 +237,11 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         fy += inverseRhoI * viscousY + ey;
         fz += inverseRhoI * viscousZ + ez;
         rates.acceleration[i] = make_float4(fx, fy, fz, 0.0f);
+        if (p.shifting > 0.0f)
+        {
+            const float coefficient = -p.shifting * sqrtf(vi.x * vi.x + vi.y * vi.y + vi.z * vi.z);
+            rates.shiftVelocity[i] = make_float4(coefficient * crowdX, coefficient * crowdY, coefficient * crowdZ, 0.0f);
+        }
         acceleration = sqrtf(fx * fx + fy * fy + fz * fz);
         kinematic = muI / restI;
     }
@@ -253,6 +266,11 @@ __global__ void kickDriftKernel(SphParams p, SphArrays a, SphRatesArrays rates, 
         const float4 acc = rates.acceleration[i];
         v.x += 0.5f * dt * acc.x, v.y += 0.5f * dt * acc.y, v.z += 0.5f * dt * acc.z;
         a.velocity[i] = v;
+        if (p.shifting > 0.0f)
+        {
+            const float4 s = rates.shiftVelocity[i];
+            x.x += dt * s.x, x.y += dt * s.y, x.z += dt * s.z;
+        }
     }
     x.x += dt * v.x, x.y += dt * v.y, x.z += dt * v.z;
     a.position[i] = x;

@@ -17,6 +17,8 @@ struct SphParams
     float h, invH, wNorm, gradNorm; ///< h (m), 1 / h; 315 / (208 pi h^3) (1/m^3); wNorm / h^2 (1/m^5)
     float support2, eta2;           ///< (2h)^2, 0.001 h^2 (m^2)
     float diffusion;                ///< delta h c0 (m^2/s); 0: no delta-SPH term
+    float shifting;                 ///< A h of the particle shift (m; SphRates.h); 0: no shifting
+    float shiftingReciprocalWeight; ///< 1 / W(spacing), m^3
     float soundSpeed, gamma;
     float restDensity, gasDensity, viscosity, gasViscosity; ///< rho_p, rho_g (kg/m^3), mu_p, mu_g (Pa s)
     float gravity[3];    ///< m/s^2: what the walls' pressure extrapolation uses
@@ -68,6 +70,7 @@ struct SphRatesArrays
                              ///< neighbour
     float4* derived; ///< (V_i = m_i / rho_i, m_i p_i / rho_i^2, m_i, rho_i / rho0_i), made with the pressures
     float *densityRate, *wallDistance;
+    float4* shiftVelocity; ///< s_i (m/s) where particle shifting is on (SphRates.h)
     float* guardedWallDistance; ///< over the walls with the backstop where negative (infinite elsewhere): the
                                 ///< through-the-wall guard's (SphRates.h)
 };

@@ -31,6 +31,8 @@ double relativeDensity(const ParticleState& particles, const FluidModel& fluid, 
 // eta^2 / h^2 in the viscous term's 1 / (r^2 + eta^2): it only keeps r -> 0 finite. The usual 0.01 lowers the
 // Laplacian's normalisation on a lattice at h = 2 spacings to 0.9917 (the viscosity 0.8 % low); 0.001 gives 1.0002.
 constexpr double kEtaSquared = 0.001;
+// R of the particle shifting's anti-clumping term R (W_ij / W(spacing))^4 (Lind et al. 2012; Monaghan 2000).
+constexpr double kAntiClumping = 0.2;
 
 /// What the main pass needs from a fluid particle's neighbourhood first: G_i (the delta-SPH term's correction,
 /// when it is on) and the distance to the nearest wall surface, min over wall neighbours of |x_ij| - depth_j
@@ -96,6 +98,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
     }
     rates.acceleration.assign(std::size_t(n), Eigen::Vector3d::Zero());
     rates.densityRate.assign(std::size_t(n), 0.0);
+    const bool shifting = fluid.particleShifting > 0.0;
+    rates.shiftVelocity.assign(shifting ? std::size_t(n) : 0u, Eigen::Vector3d::Zero());
     const double h = kernel.smoothingLength(), eta2 = kEtaSquared * h * h;
     const double diffusion = fluid.densityDiffusion * h * fluid.soundSpeed;
     double largestAcceleration = 0.0, largestViscousRate = 0.0, largestKinematicViscosity = 0.0;
@@ -113,7 +117,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         const double muI = fluid.mixtureViscosity(particles.voidFraction[si]);
         auto relativeJ = [&](std::size_t sj) { return relativeDensity(particles, fluid, sj); };
         double densityRate = 0.0;
-        Eigen::Vector3d force = Eigen::Vector3d::Zero();
+        Eigen::Vector3d force = Eigen::Vector3d::Zero(), crowding = Eigen::Vector3d::Zero();
         grid.forEachNeighbour(
             particles.position, i,
             [&](int j, const Eigen::Vector3d& rij, double r)
@@ -147,6 +151,12 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                     force += mJ * (muI + muJ) * rDotGrad / (rhoI * rhoJ * (r * r + eta2)) * viscousVij;
                     if (particles.backstop[sj])
                         force += fluid.wallRepulsionFactor(r) * rij;
+                    if (shifting) // grad C_i with the anti-clumping term (SphRates.h)
+                    {
+                        const double ratio = kernel.value(r) * fluid.shiftingReciprocalWeight;
+                        const double ratio2 = ratio * ratio;
+                        crowding += (mJ / rhoJ) * (1.0 + kAntiClumping * ratio2 * ratio2) * gradW;
+                    }
                 }
                 largestViscousRate =
                     std::max(largestViscousRate, std::abs(h * vij.dot(rij) / (r * r + eta2)));
@@ -155,6 +165,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         if (!wallI)
         {
             rates.acceleration[si] = force + external;
+            if (shifting)
+                rates.shiftVelocity[si] = -fluid.particleShifting * h * vi.norm() * crowding;
             largestKinematicViscosity = std::max(largestKinematicViscosity, muI / restI);
             largestAcceleration = std::max(largestAcceleration, rates.acceleration[si].norm());
         }

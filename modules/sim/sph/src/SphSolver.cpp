@@ -53,6 +53,11 @@ std::vector<ParameterSpec> sphParameters()
          K::Real},
         {"delta_sph", "Density diffusion", "", 0.1, 0.0, 1.0, "Numerics",
          "delta of the delta-SPH term (Molteni & Colagrossi 2009; 0 switches it off)", K::Real},
+        {"particle_shifting", "Particle shifting", "", 0.0, 0.0, 10.0, "Numerics",
+         "A of the shift's coefficient A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: off): the drift also moves "
+         "each fluid particle down the gradient of the particles' concentration, which keeps a fast jet's shear layer "
+         "from tearing into streaks and voids; vessels only (not with a free surface or without tension)",
+         K::Real},
         {"cfl", "Courant number", "", 0.2, 0.01, 1.0, "Numerics", "the adaptive step's safety factor",
          K::Real},
         {"gravity_x_m_s2", "Gravity x", "m/s^2", 0.0, -100.0, 100.0, "Fluid", "patient frame (LPS)", K::Real},
@@ -114,10 +119,16 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_fluid.viscosity = parameters.get("viscosity_pa_s");
     m_fluid.soundSpeed = parameters.get("sound_speed_m_s");
     m_fluid.densityDiffusion = parameters.get("delta_sph");
+    m_fluid.particleShifting = parameters.get("particle_shifting");
+    m_fluid.shiftingReciprocalWeight = 1.0 / m_kernel->value(spacing);
     m_fluid.referencePressurePa = parameters.get("reference_pressure_pa");
     m_fluid.wallRepulsion = parameters.get("wall_repulsion") * m_fluid.soundSpeed * m_fluid.soundSpeed;
     m_fluid.wallRepulsionRange = kWallRepulsionReach * spacing;
     m_fluid.tension = parameters.get("fluid_tension") > 0.5;
+    if (m_fluid.particleShifting > 0.0 && (parameters.get("free_surface") > 0.5 || !m_fluid.tension))
+        throw Error("particle shifting (particle_shifting > 0) needs a fluid that fills its vessel: a free surface "
+                    "(free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; "
+                    "set particle_shifting 0");
     m_fluid.bodyForce = {parameters.get("body_force_x_m_s2"), parameters.get("body_force_y_m_s2"),
                          parameters.get("body_force_z_m_s2")};
     m_fluid.bodyForceFrequency = parameters.get("body_force_frequency_hz");
@@ -267,15 +278,20 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     // Kick and drift with the rates at the start of the step, then the second kick with the rates at the
     // drifted positions (leapfrog, kick-drift-kick); the wall particles stay where they are, the buffer particles
     // drift with their imposed velocities.
+    const bool shifting = !m_rates.shiftVelocity.empty();
     for (std::size_t i = 0; i < p.size(); ++i)
     {
         p.density[i] += 0.5 * dt * m_rates.densityRate[i];
         if (p.wall[i])
             continue;
         p.density[i] = std::max(p.density[i], m_fluid.densityFloor(p.voidFraction[i]));
+        Eigen::Vector3d drift = p.velocity[i];
         if (!p.boundary[i])
+        {
             p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
-        p.position[i] = m_grid->wrap(p.position[i] + dt * p.velocity[i]);
+            drift = shifting ? Eigen::Vector3d(p.velocity[i] + m_rates.shiftVelocity[i]) : p.velocity[i];
+        }
+        p.position[i] = m_grid->wrap(p.position[i] + dt * drift);
     }
     absorbTracer();
     if (!m_openBoundaries.empty())

@@ -94,6 +94,7 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
         detail::caseParameters(pipe.spacingMm, pipe.densityKgM3, pipe.viscosityPaS, pipe.soundSpeedMS);
     parameters.set("end_time_s", pipe.endTimeS);
     parameters.set("cfl", kStenosisCfl);
+    parameters.set("particle_shifting", pipe.particleShifting);
     return parameters;
 }
 

@@ -24,6 +24,10 @@ struct FluidModel
     double soundSpeed = 10.0;    ///< c0, m/s (numerical)
     double gamma = 7.0;
     double densityDiffusion = 0.1; ///< delta of the delta-SPH term (Antuono et al. 2010's form, SphRates.h; 0: off)
+    /// Particle shifting (SphRates.h): A of the shift's diffusion coefficient A h |v_i| (Skillen et al. 2013; 0: off),
+    /// and 1 / W(spacing), the anti-clumping term's reference (Lind et al. 2012), m^3.
+    double particleShifting = 0.0;
+    double shiftingReciprocalWeight = 0.0;
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero(); ///< m/s^2
     /// A driving body force per unit mass (m/s^2: a pressure gradient / rho in a periodic pipe), oscillating as
     /// cos(2 pi f t) when bodyForceFrequency > 0 (Hz).

@@ -23,6 +23,15 @@
 //      peak 15 % high). Wall particles stand still and get no rates: their pressure is the fluid's around them,
 //      extrapolated (extrapolateWallPressure, below). Buffer particles of the open boundaries (OpenBoundary.h) act on the
 //      fluid as fluid does, but outside the density diffusion, and get no rates: their values are imposed.
+//  particle shifting (an option, FluidModel::particleShifting A > 0): the drift moves a fluid particle by
+//      dt (v_i + s_i), s_i = -A h |v_i| grad C_i, grad C_i = sum_j V_j (1 + 0.2 (W_ij / W(spacing))^4) grad_i W_ij
+//      over every neighbour (fluid, walls, buffers): Fick's diffusion of the particles' concentration (Lind et al.
+//      2012, J Comput Phys 231:1499; the coefficient A h |v_i| dt of Skillen et al. 2013, Comput Methods Appl Mech
+//      Eng 265:163), with Monaghan's 2000 anti-clumping term. It keeps a jet's shear layer from ordering particles
+//      into streaks and voids (the tensile instability), which had stopped stenotic jets by the density guard. The
+//      fields are not corrected for the shift (first order in it: the shift per step is a small fraction of the
+//      spacing, A |v| dt ~ A Ma CFL h). Not at a free surface, whose truncated support would push particles out
+//      (SphSolver refuses the two together).
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
@@ -37,6 +46,8 @@ struct SphRates
 {
     std::vector<Eigen::Vector3d> acceleration; ///< m/s^2 (zero at wall and buffer particles)
     std::vector<double> densityRate;           ///< kg/(m^3 s)
+    /// s_i, m/s (fluid particles with particle shifting on; empty when it is off)
+    std::vector<Eigen::Vector3d> shiftVelocity;
     /// G_i, kg/m^4 (fluid particles; zero where M_i is singular).
     std::vector<Eigen::Vector3d> densityGradient;
     /// d_i, m (fluid particles; infinite without a wall neighbour of known depth).

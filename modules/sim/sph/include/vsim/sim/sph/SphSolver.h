@@ -29,7 +29,7 @@
 
 namespace vsim::sim::sph {
 
-/// spacing_mm, smoothing_ratio, density_kg_m3, viscosity_pa_s, sound_speed_m_s, delta_sph, cfl,
+/// spacing_mm, smoothing_ratio, density_kg_m3, viscosity_pa_s, sound_speed_m_s, delta_sph, particle_shifting, cfl,
 /// gravity_{x,y,z}_m_s2 (patient frame, LPS: a supine patient's is +y), end_time_s, density_guard,
 /// escape_margin_mm, reorder_every, body_force_{x,y,z}_m_s2 and body_force_frequency_hz, periodic_{x,y,z}_mm
 /// (validation channels), free_surface, wall_repulsion, absorption_distance_mm.

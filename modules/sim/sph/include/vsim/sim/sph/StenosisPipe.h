@@ -31,6 +31,7 @@ struct StenosisPipe
     double averageFromS = 0.015, endTimeS = 0.025;    ///< the settled flow's window
     double soundSpeedMS = 4.0;                        ///< the numerical sound speed c0 (80 x the throat's mean)
     double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
+    double particleShifting = 0.0;                    ///< the solver's particle_shifting A (0: off; SphRates.h)
     double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
     double sectionStepMm = 0.2;
 
