@@ -5,7 +5,7 @@
 // bench_sph_openfoam reads with --sph-in (give it the same --spacing) and prints a summary line.
 //
 //   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] [mean speed m/s] [length mm]
-//                           [particle shifting A]
+//                           [particle shifting A] [solver parameter=value]...
 //
 // A mean speed (and length) other than the default's 0.05 m/s (5.6 mm) is StenosisPipe::atFlow's problem (Re 100
 // upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled).
@@ -36,7 +36,7 @@ try
     if (argc < 3)
     {
         std::fprintf(stderr, "usage: bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] "
-                             "[mean speed m/s] [length mm] [particle shifting A]\n");
+                             "[mean speed m/s] [length mm] [particle shifting A] [solver parameter=value]...\n");
         return 2;
     }
     if (vsim::cuda::devices().empty())
@@ -59,7 +59,9 @@ try
     configureStenosisPipe(pipe, solver, 1, 1); // sampled here every `every` steps, weighted by the time between
     SimulationInput input;
     input.data["particles"] = stenosisPipeParticles(pipe);
-    const ParameterSet parameters = stenosisPipeParameters(pipe);
+    ParameterSet parameters = stenosisPipeParameters(pipe);
+    for (int a = 8; a < argc; ++a) // the solver's parameters (sphParameters), e.g. delta_sph=0
+        parameters.setFromText(argv[a]);
     solver.initialize(input, parameters);
     SectionSeries sections = solver.sections();
     WallLoadSeries wallLoads = solver.wallLoads();
@@ -77,6 +79,9 @@ try
         pending += gpu.lastStepS();
         if (gpu.largestDensityVariation() > largestVariation)
             largestVariation = gpu.largestDensityVariation(), largestAtS = gpu.timeS();
+        if (steps % 5000 == 0) // progress on stderr: how far a run that a time limit stops came
+            std::fprintf(stderr, "t = %.3f ms of %.3f, %ld steps, largest density variation so far %.3g\n",
+                         1e3 * gpu.timeS(), 1e3 * endS, steps, largestVariation);
         const auto stepEnd = std::chrono::steady_clock::now();
         stepping += std::chrono::duration<double>(stepEnd - stepStart).count();
         if (steps % every != 0)

@@ -2,6 +2,7 @@
 
 #include "SphKernels.cuh"
 #include "vsim/core/Error.h"
+#include "vsim/core/Parameters.h"
 #include "vsim/core/StoredText.h"
 #include "vsim/cuda_common/CudaCheck.h"
 
@@ -83,14 +84,16 @@ float asFloat(unsigned bits)
     return value;
 }
 
-std::string number(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
 
 } // namespace
+
+/// What a guard's message tells of one particle, read back from the device.
+struct ParticleAt
+{
+    int id = -1;
+    Eigen::Vector3d positionM = Eigen::Vector3d::Zero();
+    double wallDistanceM = INFINITY, guardedWallDistanceM = INFINITY;
+};
 
 struct CudaSph::Device
 {
@@ -242,6 +245,22 @@ struct CudaSph::Device
         }
     }
 
+    /// Particle `index` of the sorted order now (a guard's particle).
+    ParticleAt particleAt(int index) const
+    {
+        ParticleAt at;
+        float4 x;
+        float distance[2];
+        VSIM_CUDA_CHECK(cudaMemcpy(&x, current.position.data() + index, sizeof x, cudaMemcpyDeviceToHost));
+        VSIM_CUDA_CHECK(cudaMemcpy(&at.id, current.id.data() + index, sizeof at.id, cudaMemcpyDeviceToHost));
+        VSIM_CUDA_CHECK(cudaMemcpy(&distance[0], wallDistance.data() + index, sizeof(float), cudaMemcpyDeviceToHost));
+        VSIM_CUDA_CHECK(
+            cudaMemcpy(&distance[1], guardedWallDistance.data() + index, sizeof(float), cudaMemcpyDeviceToHost));
+        at.positionM = settings.boxLowM + Eigen::Vector3d(x.x, x.y, x.z);
+        at.wallDistanceM = distance[0], at.guardedWallDistanceM = distance[1];
+        return at;
+    }
+
     /// stableTimeStep (SphRates.cpp) from the last rates' maxima.
     double stableStep() const
     {
@@ -391,7 +410,7 @@ std::string CudaSph::step()
     Device& d = *m_device;
     const double dt = d.stableStep();
     // What went wrong at the step's end time (SphSolver's guards, the same words).
-    auto at = [&](const std::string& what) { return storedText(Pattern{"at t = %1 s %2", {number(d.time + dt), what}}); };
+    auto at = [&](const std::string& what) { return storedText(Pattern{"at t = %1 s %2", {numberText(d.time + dt), what}}); };
     d.resetReductions();
     sph::launchKickDrift(d.params, d.current.pointers(), d.rates(), float(dt), d.n);
     if (const std::string full = d.exchangeAndSort(); !full.empty())
@@ -409,16 +428,28 @@ std::string CudaSph::step()
         return at(storedText(Pattern{"particle %1 left the domain (through a wall or an open end without an outlet)",
                                      {std::to_string(d.last.escapedId)}}));
     if (d.last.throughWall)
+    {
+        const ParticleAt where = d.particleAt(d.last.throughWallIndex);
         return at(storedText(Pattern{
-            "fluid particle %1 went more than half a spacing into the wall: the time step or the sound speed is too "
-            "large for the flow, or the wall thinner than the kernel (a segmentation's ragged edge: the walls' "
-            "backstop, parameter wall_repulsion 0.01)",
-            {std::to_string(d.last.throughWallId)}}));
-    if (asFloat(d.last.largestDensityVariation) > d.settings.densityGuard)
-        return at(storedText(Pattern{"a particle's density is %1 % from the rest density (guard %2 %): raise the "
-                                     "sound speed or lower the inflow",
-                                     {number(100.0 * asFloat(d.last.largestDensityVariation)),
-                                      number(100.0 * d.settings.densityGuard)}}));
+            "fluid particle %1 went %2 mm into the wall at %3: the time step or the sound speed is too large for "
+            "the flow, or the wall thinner than the kernel (a segmentation's ragged edge: the walls' backstop, "
+            "parameter wall_repulsion 0.01)",
+            {std::to_string(d.last.throughWallId), numberText(-1e3 * where.guardedWallDistanceM),
+             sim::sph::positionText(where.positionM)}}));
+    }
+    if (largestDensityVariation() > d.settings.densityGuard)
+    {
+        const ParticleAt where = d.particleAt(int(d.last.largestDensityVariation & 0xffffffffu));
+        const std::string wall =
+            std::isfinite(where.wallDistanceM)
+                ? storedText(Pattern{"%1 mm from the wall", {numberText(1e3 * where.wallDistanceM)}})
+                : storedText("away from the walls");
+        return at(storedText(Pattern{"particle %1's density is %2 % from the rest density (guard %3 %) at %4, "
+                                     "%5: raise the sound speed or lower the inflow",
+                                     {std::to_string(where.id), numberText(100.0 * largestDensityVariation()),
+                                      numberText(100.0 * d.settings.densityGuard), sim::sph::positionText(where.positionM),
+                                      wall}}));
+    }
     return {};
 }
 
@@ -432,7 +463,7 @@ double CudaSph::lastStepS() const
 }
 double CudaSph::largestDensityVariation() const
 {
-    return asFloat(m_device->last.largestDensityVariation);
+    return asFloat(unsigned(m_device->last.largestDensityVariation >> 32));
 }
 std::size_t CudaSph::particleCount() const
 {

@@ -307,9 +307,17 @@ __global__ void kickKernel(SphParams p, SphArrays a, SphRatesArrays rates, float
         else if (fluid)
             variation = change;
         if (fluid && rates.guardedWallDistance[i] < -throughWallM && atomicExch(&r->throughWall, 1u) == 0u)
-            r->throughWallId = a.id[i];
+            r->throughWallId = a.id[i], r->throughWallIndex = i;
     }
-    warpMax(&r->largestDensityVariation, variation);
+    // The largest variation and its particle: one atomicMax per warp on (bits << 32 | index).
+    unsigned long long key = (static_cast<unsigned long long>(__float_as_uint(variation)) << 32) | unsigned(i);
+    for (int offset = 16; offset > 0; offset /= 2)
+    {
+        const unsigned long long other = __shfl_down_sync(0xffffffffu, key, offset);
+        key = other > key ? other : key;
+    }
+    if ((threadIdx.x & 31) == 0)
+        atomicMax(&r->largestDensityVariation, key);
 }
 
 } // namespace

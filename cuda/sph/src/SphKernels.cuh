@@ -79,9 +79,13 @@ struct SphRatesArrays
 /// flags.
 struct SphReductions
 {
-    unsigned largestAcceleration, largestViscousRate, largestKinematicViscosity, largestDensityVariation;
+    unsigned largestAcceleration, largestViscousRate, largestKinematicViscosity;
+    /// The largest density variation over the fluid and where: its float bits in the upper 32 bits, the particle's
+    /// index in the sorted order in the lower (atomicMax orders them by the variation first).
+    unsigned long long largestDensityVariation;
     unsigned escaped, notFinite, throughWall;
     int escapedId, notFiniteId, throughWallId;
+    int throughWallIndex; ///< the particle's index in the sorted order (its position and wall distance, read back)
 };
 
 /// Each particle's cell key (and the identity order for the sort), the fluid particles counted per cell

@@ -7,9 +7,7 @@
 #include <cmath>
 
 namespace vsim::sim::sph {
-namespace {
 
-/// A particle's position (m) as the guards print it: "(x, y, z) mm".
 std::string positionText(const Eigen::Vector3d& positionM)
 {
     const Eigen::Vector3d x = 1e3 * positionM;
@@ -23,8 +21,6 @@ std::string positionText(const Eigen::Vector3d& positionM)
     text += ") mm";
     return text;
 }
-
-} // namespace
 
 std::vector<ParameterSpec> sphParameters()
 {

@@ -48,6 +48,9 @@ constexpr double kStenosisCfl = 0.1;
 /// (0.71 spacings) meets its plateau.
 constexpr double kWallRepulsionReach = 0.9;
 
+/// A particle's position (m) as the guards print it: "(x, y, z) mm" (the CPU's and the GPU's the same).
+std::string positionText(const Eigen::Vector3d& positionM);
+
 /// What a step needs besides the particles and the fluid: the GPU backend (cuda/sph) takes it from the CPU solver.
 struct SphStepSettings
 {
