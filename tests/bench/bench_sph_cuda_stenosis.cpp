@@ -108,7 +108,7 @@ try
         {"device", vsim::cuda::deviceSummary()}, {"spacing_mm", pipe.spacingMm}, {"sound_speed_m_s", pipe.soundSpeedMS},
         {"sampled_every_steps", every}, {"inflow_kg", inflow}, {"mean_speed_m_s", pipe.meanSpeedMS},
         {"length_mm", pipe.lengthMm}, {"averaged_s", {pipe.averageFromS, pipe.endTimeS}},
-        {"particle_shifting", pipe.particleShifting},
+        {"particle_shifting", parameters.get("particle_shifting")}, {"cfl", parameters.get("cfl")},
         {"outflow_kg", double(gpu.massLedger().totalOutflow())}};
     std::ofstream(out) << report.dump(1) << '\n';
     std::printf("{\"case\": \"sph-stenosis on the GPU\", \"spacing_mm\": %.3f, \"sound_speed_m_s\": %.1f, "

@@ -14,6 +14,7 @@
 #include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/sph/StenosisPipe.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -46,7 +47,14 @@ StenosisPipe StenosisPipe::atFlow(double meanSpeed, double length) const
     pipe.rampS = rampS * (length / lengthMm) * (meanSpeedMS / meanSpeed); // the same number of quarter-wave periods
     const double jetTransitS = 1e-3 * (length - throatAtMm) / (4.0 * meanSpeed); // the throat's mean: 4 x (area ratio)
     pipe.averageFromS = pipe.rampS + 1.5 * jetTransitS, pipe.endTimeS = pipe.rampS + 2.5 * jetTransitS;
+    pipe.cfl = cfl * std::min(1.0, throatReynolds() / pipe.throatReynolds());
     return pipe;
+}
+
+double StenosisPipe::throatReynolds() const
+{
+    // The throat's mean speed is 4 times the inflow's (area ratio 4), its diameter R0.
+    return densityKgM3 * 4.0 * meanSpeedMS * 1e-3 * radiusMm / viscosityPaS;
 }
 
 double StenosisPipe::radiusAtMm(double xMm) const
@@ -93,7 +101,7 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
     ParameterSet parameters =
         detail::caseParameters(pipe.spacingMm, pipe.densityKgM3, pipe.viscosityPaS, pipe.soundSpeedMS);
     parameters.set("end_time_s", pipe.endTimeS);
-    parameters.set("cfl", kStenosisCfl);
+    parameters.set("cfl", pipe.cfl);
     parameters.set("particle_shifting", pipe.particleShifting);
     return parameters;
 }

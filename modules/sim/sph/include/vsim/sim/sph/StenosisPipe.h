@@ -11,6 +11,7 @@
 #include "vsim/core/ParticleSet.h"
 #include "vsim/core/Progress.h"
 #include "vsim/sim/sph/CrossSections.h"
+#include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/sph/StenosisFigures.h"
 #include "vsim/sim/sph/WallShear.h"
 
@@ -32,14 +33,21 @@ struct StenosisPipe
     double soundSpeedMS = 4.0;                        ///< the numerical sound speed c0 (80 x the throat's mean)
     double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
     double particleShifting = 0.0;                    ///< the solver's particle_shifting A (0: off; SphRates.h)
+    double cfl = kStenosisCfl;                        ///< the Courant number (atFlow lowers it for faster jets)
     double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
     double sectionStepMm = 0.2;
 
     /// The same narrowing at another mean inflow speed (m/s) and pipe length (mm; the throat stays 2.4 mm from the
     /// inlet, so a longer pipe gives the jet room to recover before the outlet), with the sound speed at the same
     /// ratio to the speed, the ramp as long against the pipe's quarter-wave period 4 L / c0 and the window after 1.5 to
-    /// 2.5 jet transits ((length - throat) / the throat's mean speed) past the ramp.
+    /// 2.5 jet transits ((length - throat) / the throat's mean speed) past the ramp, and the Courant number
+    /// scaled by min(1, this pipe's throat Re / the new one's) (from kStenosisCfl at Re 48): at a throat Re of 97 the jet blew up at 0.1 (the density 3 %
+    /// off on the axis at the throat within 0.5 ms of the ramp's end, at c0 80 and 160 times the mean speed, with
+    /// and without particle shifting) and held at 0.05 (within 0.18 % to 21 ms; 2026-11-30, RESULTS.md); at Re 48
+    /// 0.2 blew up and 0.1 holds (sph-stenosis).
     StenosisPipe atFlow(double meanSpeed, double length) const;
+    /// The Reynolds number of the throat's mean flow: rho 4 U R0 / mu (its diameter R0, its mean speed 4 U).
+    double throatReynolds() const;
     /// The lumen's radius at x (mm).
     double radiusAtMm(double xMm) const;
     /// The sections' positions along the axis (mm), two steps in from each end.
