@@ -3438,14 +3438,6 @@
         <translation>Teilchen %1 hat das Gebiet verlassen (durch eine Wand oder ein offenes Ende ohne Auslass)</translation>
     </message>
     <message>
-        <source>fluid particle %1 went more than half a spacing into the wall: the time step or the sound speed is too large for the flow, or the wall thinner than the kernel (a segmentation&apos;s ragged edge: the walls&apos; backstop, parameter wall_repulsion 0.01)</source>
-        <translation>Fluidteilchen %1 drang mehr als einen halben Abstand in die Wand ein: Zeitschritt oder Schallgeschwindigkeit sind zu groß für die Strömung, oder die Wand ist dünner als der Kern (ein ausgefranster Segmentierungsrand: die Rückhaltung der Wände, Parameter wall_repulsion 0,01)</translation>
-    </message>
-    <message>
-        <source>a particle&apos;s density is %1 % from the rest density (guard %2 %): raise the sound speed or lower the inflow</source>
-        <translation>die Dichte eines Teilchens weicht %1 % von der Ruhedichte ab (Wächter %2 %): erhöhen Sie die Schallgeschwindigkeit oder senken Sie den Zufluss</translation>
-    </message>
-    <message>
         <source>values rescaled to HU by the user&apos;s rescale: HU = %1 x stored + %2</source>
         <translation>Werte mit der Umrechnung des Benutzers in HU umgerechnet: HU = %1 x gespeichert + %2</translation>
     </message>
@@ -4108,6 +4100,10 @@
     <message>
         <source>the mask holds one value (%1): stored as label 1, the lumen&apos;s (give --label-value N for another)</source>
         <translation>die Maske enthält einen Wert (%1): als Label 1 gespeichert, das des Lumens (--label-value N für ein anderes)</translation>
+    </message>
+    <message>
+        <source>particle shifting (particle_shifting &gt; 0) needs a fluid that fills its vessel: a free surface (free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; set particle_shifting 0</source>
+        <translation>Partikelverschiebung (particle_shifting &gt; 0) braucht ein Fluid, das sein Gefäß füllt: eine freie Oberfläche (free_surface 1) oder ein Fluid ohne Zugspannung (fluid_tension 0) würde an seinem Rand auseinandergedrückt; particle_shifting 0 setzen</translation>
     </message>
 </context>
 <context>
@@ -5591,6 +5587,14 @@
     <message>
         <source>Quasi-static tearing&apos;s equilibria. 0: full Newton (the pressure&apos;s load stiffness in the tangent, GMRES with a Cholesky preconditioner; CPU). 1: modified Newton without the load stiffness, its symmetric tangent by multigrid conjugate gradients (about 3 times the updates; CPU and CUDA, the same tears on both).</source>
         <translation>Gleichgewichte des quasistatischen Reißens. 0: volles Newton-Verfahren (die Laststeifigkeit des Drucks in der Tangente, GMRES mit Cholesky-Vorkonditionierer; CPU). 1: modifiziertes Newton-Verfahren ohne die Laststeifigkeit, seine symmetrische Tangente per Mehrgitter-konjugierten Gradienten (etwa 3-mal so viele Schritte; CPU und CUDA, auf beiden dieselben Risse).</translation>
+    </message>
+    <message>
+        <source>Particle shifting</source>
+        <translation>Partikelverschiebung</translation>
+    </message>
+    <message>
+        <source>A of the shift&apos;s coefficient A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: off): the drift also moves each fluid particle down the gradient of the particles&apos; concentration, which keeps a fast jet&apos;s shear layer from tearing into streaks and voids; vessels only (not with a free surface or without tension)</source>
+        <translation>A des Verschiebungskoeffizienten A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: aus): die Drift bewegt jedes Fluidpartikel zusätzlich entlang des Gefälles der Partikelkonzentration, damit die Scherschicht eines schnellen Strahls nicht in Streifen und Lücken zerreißt; nur in Gefäßen (nicht mit freier Oberfläche oder ohne Zugspannung)</translation>
     </message>
 </context>
 <context>

@@ -3438,14 +3438,6 @@
         <translation>粒子 %1 离开了计算域（穿过壁面或没有出口的开放端）</translation>
     </message>
     <message>
-        <source>fluid particle %1 went more than half a spacing into the wall: the time step or the sound speed is too large for the flow, or the wall thinner than the kernel (a segmentation&apos;s ragged edge: the walls&apos; backstop, parameter wall_repulsion 0.01)</source>
-        <translation>流体粒子 %1 进入壁内超过半个粒子间距：时间步长或声速对该流动过大，或壁比核函数更薄（分割的锯齿边缘：壁面的防穿透力，参数 wall_repulsion 0.01）</translation>
-    </message>
-    <message>
-        <source>a particle&apos;s density is %1 % from the rest density (guard %2 %): raise the sound speed or lower the inflow</source>
-        <translation>某粒子的密度偏离静止密度 %1 %（保护阈值 %2 %）：请提高声速或降低入流</translation>
-    </message>
-    <message>
         <source>values rescaled to HU by the user&apos;s rescale: HU = %1 x stored + %2</source>
         <translation>已按用户的换算将数值换算为 HU：HU = %1 x 存储值 + %2</translation>
     </message>
@@ -4108,6 +4100,10 @@
     <message>
         <source>the mask holds one value (%1): stored as label 1, the lumen&apos;s (give --label-value N for another)</source>
         <translation>掩膜只含一个值（%1）：已存为标签 1，即管腔的标签（如需其他值请给出 --label-value N）</translation>
+    </message>
+    <message>
+        <source>particle shifting (particle_shifting &gt; 0) needs a fluid that fills its vessel: a free surface (free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; set particle_shifting 0</source>
+        <translation>粒子位移（particle_shifting &gt; 0）需要充满其血管的流体：自由表面（free_surface 1）或无张力流体（fluid_tension 0）会在边缘被推开；请设置 particle_shifting 0</translation>
     </message>
 </context>
 <context>
@@ -5591,6 +5587,14 @@
     <message>
         <source>Quasi-static tearing&apos;s equilibria. 0: full Newton (the pressure&apos;s load stiffness in the tangent, GMRES with a Cholesky preconditioner; CPU). 1: modified Newton without the load stiffness, its symmetric tangent by multigrid conjugate gradients (about 3 times the updates; CPU and CUDA, the same tears on both).</source>
         <translation>准静态撕裂的平衡态。0：完全牛顿法（切线中含压力的载荷刚度，GMRES 配 Cholesky 预条件器；CPU）。1：不含载荷刚度的修正牛顿法，其对称切线以多重网格共轭梯度求解（更新次数约 3 倍；CPU 与 CUDA，两者撕裂相同）。</translation>
+    </message>
+    <message>
+        <source>Particle shifting</source>
+        <translation>粒子位移</translation>
+    </message>
+    <message>
+        <source>A of the shift&apos;s coefficient A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: off): the drift also moves each fluid particle down the gradient of the particles&apos; concentration, which keeps a fast jet&apos;s shear layer from tearing into streaks and voids; vessels only (not with a free surface or without tension)</source>
+        <translation>位移系数 A h |v| 中的 A（Lind 等 2012，Skillen 等 2013；0：关闭）：漂移时每个流体粒子还沿粒子浓度梯度下降方向移动，使高速射流的剪切层不会撕裂成条纹和空洞；仅用于血管（不用于自由表面或无张力流体）</translation>
     </message>
 </context>
 <context>
