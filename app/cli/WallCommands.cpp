@@ -151,6 +151,8 @@ int meshWall(const Arguments& arguments, const Progress& progress)
                                 {"thrombus_from", sacId.empty() ? "none" : sacId},
                                 {"thrombus_elements", wall.thrombusElements},
                                 {"max_thrombus_mm", wall.maxThrombusMm},
+                                {"thrombus_sub_layers", sacId.empty() ? 0 : wall.innerSubLayers},
+                                {"thrombus_sub_layers_by_aspect", sacId.empty() ? 0 : wall.innerSubLayersByAspect},
                                 {"end_nodes", ends},
                                 {"warnings", wall.warnings}}
                      .dump(2)

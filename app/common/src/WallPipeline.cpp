@@ -141,7 +141,9 @@ std::string addWallMesh(study::Study& study, const WallMeshBuild& build, const s
                                      {"inverted_elements", std::to_string(build.wall.inverted)},
                                      {"ends", std::to_string(build.wall.endNodes.size())},
                                      {"thrombus_elements", std::to_string(build.wall.thrombusElements)},
-                                     {"max_thrombus_mm", numberText(build.wall.maxThrombusMm)}});
+                                     {"max_thrombus_mm", numberText(build.wall.maxThrombusMm)},
+                                     {"thrombus_sub_layers", std::to_string(build.wall.innerSubLayers)},
+                                     {"thrombus_sub_layers_by_aspect", std::to_string(build.wall.innerSubLayersByAspect)}});
     return id;
 }
 

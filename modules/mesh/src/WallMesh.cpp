@@ -24,6 +24,12 @@ constexpr double kFloorMarginDeg = 1.0;      // the lumen nodes slide for elemen
 /// A lumen node slides along the surface by at most this fraction of its mean edge: off the surface by under
 /// (0.1 a)^2 / (2 R), 0.005 mm for 3.7 mm edges on a 14 mm radius.
 constexpr double kLumenSlideFraction = 0.1;
+// The tallest the inner (thrombus) prisms may stand against their shortest lumen edge before the layer is split into
+// sub-layers: an ideal prism split into three tets keeps its smallest dihedral angle over 11 degrees from 0.4 to
+// 4.6 times as tall as wide, and falls to 8.1 at 7 and 4.1 at 14 (the thrombus test cylinder, RESULTS.md
+// 2026-11-30): 5 stays on the good side of the 10 degrees the clinical analysis asks.
+constexpr double kMaxInnerPrismAspect = 5.0;
+constexpr int kMaxThrombusSubLayers = 8;
 
 /// Removes the triangles of each end's cap (a vertex beyond the cut plane, one radius inside the end, within three
 /// radii or four mean edges of it). Returns the surface and, per vertex, the end whose new boundary it lies on (-1: none).
@@ -193,8 +199,12 @@ double minDihedralAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
     return smallest;
 }
 
-WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm,
-                       const OuterWallDistance& outerWall)
+namespace {
+
+/// buildWallMesh with `subLayers` prism layers through the inner layer (with the outer wall; 0: as many as the
+/// aspect rule asks).
+WallMesh buildLayeredWall(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm,
+                          const OuterWallDistance& outerWall, int subLayers)
 {
     if (lumen.triangles.empty())
         throw Error("the lumen surface is empty: extract the surface first");
@@ -221,7 +231,18 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
     // The layers' offsets along the normals: one layer of the wall thickness, or with the sac's outer wall the
     // thrombus-wall interface and the outer surface (the outer distances smoothed over two 1-rings: the label's
     // voxel steps would otherwise ripple the outer surface).
-    const int layers = outerWall ? 2 : 1;
+    // Each lumen vertex's mean and shortest edge (mm).
+    std::vector<double> edgeSum(std::size_t(n), 0.0), edgeCount(std::size_t(n), 0.0), shortestEdge(std::size_t(n), INFINITY);
+    for (const auto& t : surface.triangles)
+        for (int k = 0; k < 3; ++k)
+        {
+            const double length = (surface.points[std::size_t(t[std::size_t(k)])] - surface.points[std::size_t(t[std::size_t((k + 1) % 3)])]).norm();
+            for (int end : {t[std::size_t(k)], t[std::size_t((k + 1) % 3)]})
+            {
+                edgeSum[std::size_t(end)] += length, edgeCount[std::size_t(end)] += 1.0;
+                shortestEdge[std::size_t(end)] = std::min(shortestEdge[std::size_t(end)], length);
+            }
+        }
     std::vector<std::array<double, 2>> offset(surface.points.size(), {thicknessMm, thicknessMm});
     std::vector<double> thrombus(surface.points.size(), 0.0);
     if (outerWall)
@@ -241,13 +262,24 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
                 if (count[v] > 0)
                     outer[v] = sum[v] / count[v];
         }
+        double tallest = 0.0; // the inner prisms' largest height over their shortest lumen edge
         for (std::size_t v = 0; v < outer.size(); ++v)
         {
             thrombus[v] = outer[v] - thicknessMm;
             offset[v] = {std::max(thrombus[v], 0.5 * thicknessMm), outer[v]};
             wall.maxThrombusMm = std::max(wall.maxThrombusMm, thrombus[v]);
+            if (shortestEdge[v] > 0.0 && std::isfinite(shortestEdge[v]))
+                tallest = std::max(tallest, offset[v][0] / shortestEdge[v]);
         }
+        // A thick thrombus over fine lumen edges: the inner layer split into equal sub-layers (the same number
+        // everywhere, so the columns conform; where the inner layer is thin, its sub-layers are flat, which keeps
+        // better angles than tall ones).
+        wall.innerSubLayersByAspect = std::clamp(int(std::ceil(tallest / kMaxInnerPrismAspect)), 1, kMaxThrombusSubLayers);
+        wall.innerSubLayers = subLayers > 0 ? subLayers : wall.innerSubLayersByAspect;
     }
+    // The layers: the inner one's sub-layers, then the wall (with the sac's outer wall), or the single wall layer.
+    const int inner = outerWall ? wall.innerSubLayers : 0;
+    const int layers = inner + 1;
     wall.mesh.points = surface.points;
     wall.mesh.points.resize(std::size_t(layers + 1) * surface.points.size());
     for (int v = 0; v < n; ++v)
@@ -255,9 +287,10 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
         const Eigen::Vector3d direction = normal[std::size_t(v)];
         if (direction.norm() == 0.0)
             throw Error("a lumen vertex has no normal (degenerate surface)");
+        const auto& o = offset[std::size_t(v)];
         for (int l = 1; l <= layers; ++l)
             wall.mesh.points[std::size_t(l * n + v)] =
-                surface.points[std::size_t(v)] + offset[std::size_t(v)][std::size_t(l == layers ? 1 : 0)] * direction.normalized();
+                surface.points[std::size_t(v)] + (l == layers ? o[1] : o[0] * l / inner) * direction.normalized();
     }
     // Prisms (a, b, c) -> (a', b', c') into three tets; rotate so that the smallest index comes first (Dompierre
     // et al. 1999): with inner indices below outer ones, the quad diagonals follow the smaller inner index.
@@ -274,7 +307,7 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
             // The inner layer is thrombus where the prism's lumen corners have 1.5 wall thicknesses to the outer
             // wall on average (half a wall thickness of thrombus at least).
             const double meanThrombus = (thrombus[std::size_t(t[0])] + thrombus[std::size_t(t[1])] + thrombus[std::size_t(t[2])]) / 3.0;
-            const bool isThrombus = layers == 2 && l == 0 && meanThrombus >= 0.5 * thicknessMm;
+            const bool isThrombus = l < inner && meanThrombus >= 0.5 * thicknessMm;
             for (std::array<int, 4> tet : tets)
             {
                 if (signedVolume(wall.mesh.points, tet) < 0.0)
@@ -311,14 +344,6 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
     // sliding along the surface too.
     std::vector<Eigen::Vector3d> across(wall.mesh.points.size(), Eigen::Vector3d::Zero());
     std::vector<double> maxMove(wall.mesh.points.size(), 0.5 * thicknessMm);
-    std::vector<double> edgeSum(std::size_t(n), 0.0), edgeCount(std::size_t(n), 0.0);
-    for (const auto& t : surface.triangles)
-        for (int k = 0; k < 3; ++k)
-        {
-            const double length = (surface.points[std::size_t(t[std::size_t(k)])] - surface.points[std::size_t(t[std::size_t((k + 1) % 3)])]).norm();
-            for (int end : {t[std::size_t(k)], t[std::size_t((k + 1) % 3)]})
-                edgeSum[std::size_t(end)] += length, edgeCount[std::size_t(end)] += 1.0;
-        }
     for (std::size_t v = 0; v < across.size(); ++v)
         if (endSet[v] == 0.0)
         {
@@ -364,6 +389,20 @@ WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& 
         if (wall.endNodes[e].empty())
             wall.warnings.push_back(storedText(Pattern{"end %1 has no open boundary", {std::to_string(e + 1)}}));
     return wall;
+}
+
+} // namespace
+
+WallMesh buildWallMesh(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm,
+                       const OuterWallDistance& outerWall)
+{
+    WallMesh single = buildLayeredWall(lumen, ends, thicknessMm, outerWall, 1);
+    if (!outerWall || single.innerSubLayersByAspect <= 1)
+        return single;
+    // Sub-layers that a tall thrombus asks for are flat where the inner layer is thin (half a wall thickness under
+    // the lumen's longest edges): kept only where the whole wall's smallest angle gains by them.
+    WallMesh split = buildLayeredWall(lumen, ends, thicknessMm, outerWall, single.innerSubLayersByAspect);
+    return split.minDihedralDeg > single.minDihedralDeg ? split : single;
 }
 
 std::vector<std::array<int, 3>> lumenFaces(const TetMesh& wall)

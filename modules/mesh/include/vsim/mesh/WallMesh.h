@@ -9,7 +9,11 @@
 // With the aneurysm sac's outer wall (an OuterWallDistance from the sac label) the wall is two prism layers: the
 // wall of the given thickness inside the outer contour, and between it and the lumen the intraluminal thrombus
 // (cell field "material" 1; the wall 0). Where the outer contour lies less than 1.5 wall thicknesses from the lumen
-// (no thrombus to speak of, or outside the sac) both layers are wall, the inner one half a wall thickness.
+// (no thrombus to speak of, or outside the sac) both layers are wall, the inner one half a wall thickness. Where the
+// inner layer would stand more than 5 times as tall as its shortest lumen edge is long (a thick thrombus over a fine
+// lumen), it is split into as many equal sub-layers as that takes, everywhere (at most 8), when that raises the
+// wall's smallest dihedral angle (where the inner layer is thin the sub-layers are flat: on a coarse lumen they can
+// lose more than the tall prisms gain).
 // Where the offsets crowd (a saddle such as the iliac crotch) or a thick thrombus layer makes tall prisms, the nodes
 // off the held ends move to raise the smallest dihedral angles under 10 degrees (src/WallSmoothing.h): those off the
 // lumen at most half a wall thickness across their offset direction, the lumen nodes a tenth of their edge along
@@ -45,7 +49,7 @@ using OuterWallDistance = std::function<double(const Eigen::Vector3d& pointMm, c
 
 struct WallMesh
 {
-    /// The wall (mm). Point fields: "wall_layer" (0 lumen side, 0.5 the thrombus-wall interface, 1 outside),
+    /// The wall (mm). Point fields: "wall_layer" (0 lumen side, l / (sub-layers + 1) between the layers, 1 outside),
     /// "end_set" (0 free, k for end k - 1); with a thrombus layer the cell field "material" (0 wall, 1 thrombus).
     TetMesh mesh;
     std::vector<std::vector<int>> endNodes; ///< per end, its nodes (both layers)
@@ -60,6 +64,8 @@ struct WallMesh
     std::size_t inverted = 0;               ///< elements that could not be oriented positively (offset folded)
     std::size_t thrombusElements = 0;       ///< elements of the thrombus material
     double maxThrombusMm = 0.0;             ///< thickest thrombus layer (mm)
+    int innerSubLayers = 1;                 ///< prism layers through the inner (thrombus) layer (with the outer wall)
+    int innerSubLayersByAspect = 1;         ///< what the inner prisms' aspect asked (kept when it raised the angle)
     std::vector<std::string> warnings;
 };
 
