@@ -14,12 +14,14 @@
 //   jet's recirculation reattaches: a local ratio says nothing there).
 //
 //   bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] [--sph-in FILE] [--sph-out FILE]
+//                      [--openfoam-only]
 //
 // --spacing sets the SPH's particle lattice (0.1 mm by default) and with it the sections' slab thickness (two
 // spacings) on both sides.
 // --sph-out writes the SPH's sections and wall rings (JSON) after its run; --sph-in reads them instead of running
 // it (the SPH may run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2, or on the GPU:
-// bench_sph_cuda_stenosis). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
+// bench_sph_cuda_stenosis). --openfoam-only runs the two OpenFOAM meshes alone and prints their figures (exit 1
+// when one does not converge). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
 // not installed (`scripts/install-deps.sh --bench`).
 
 #include "OpenFoamStenosis.h"
@@ -51,6 +53,22 @@ json figuresJson(const sim::sph::StenosisFigures& f)
             {"area_ratio", f.areaRatio}, {"pressure_drop_pa", f.pressureDropPa}, {"flow_rate_ratio", f.flowRateRatio}};
 }
 
+/// The two OpenFOAM meshes: 40 cells per mm along (224 on the default 5.6 mm) by 32 across, and twice that (the
+/// reference).
+std::vector<bench::OpenFoamMesh> openFoamMeshes(const sim::sph::StenosisPipe& pipe)
+{
+    const int axial = int(std::lround(40.0 * pipe.lengthMm));
+    return {{axial, 32, 0.4, 5.0}, {2 * axial, 64, 0.4, 5.0}};
+}
+
+json openFoamJson(const bench::OpenFoamStenosisFlow& f)
+{
+    return {{"cells", f.cells}, {"iterations", f.iterations}, {"converged", f.converged},
+            {"pressure_residual", f.pressureResidual}, {"seconds", f.seconds},
+            {"inlet_flow_rate_m3s", f.inletFlowRateM3S}, {"figures", figuresJson(f.figures)},
+            {"throat_wss_pa", f.throatWallShearPa}};
+}
+
 json check(double ours, double reference, double tolerance)
 {
     const double difference = std::abs(ours - reference) / std::abs(reference);
@@ -66,11 +84,12 @@ int main(int argc, char** argv)
     {
         std::fprintf(stderr,
                      "usage: bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] "
-                     "[--sph-in FILE] [--sph-out FILE]\n");
+                     "[--sph-in FILE] [--sph-out FILE] [--openfoam-only]\n");
         return 2;
     }
     const fs::path work = argv[1];
     std::string sphIn, sphOut;
+    bool openFoamOnly = false;
     sim::sph::StenosisPipe pipe;
     double meanSpeed = 0.0, length = 0.0; // 0: the default problem's
     for (int a = 2; a < argc; ++a)
@@ -78,6 +97,8 @@ int main(int argc, char** argv)
         const std::string option = argv[a];
         if ((option == "--sph-in" || option == "--sph-out") && a + 1 < argc)
             (option == "--sph-in" ? sphIn : sphOut) = argv[++a];
+        else if (option == "--openfoam-only")
+            openFoamOnly = true;
         else if (option == "--spacing" && a + 1 < argc)
         {
             char* end = nullptr;
@@ -101,7 +122,7 @@ int main(int argc, char** argv)
         else
         {
             std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--spacing MM, --mean-speed M/S, --length MM, "
-                                 "--sph-in FILE, --sph-out FILE)\n",
+                                 "--sph-in FILE, --sph-out FILE, --openfoam-only)\n",
                          option.c_str());
             return 2;
         }
@@ -121,6 +142,22 @@ int main(int argc, char** argv)
         std::vector<sim::sph::SectionFlow> sph;
         json sphWall;
         const std::vector<double> arcs = pipe.sectionArcsMm();
+        if (openFoamOnly) // the reference alone (its SPH counterpart runs on the GPU: bench_sph_cuda_stenosis)
+        {
+            report["mean_speed_m_s"] = pipe.meanSpeedMS, report["length_mm"] = pipe.lengthMm;
+            report["throat_reynolds"] = pipe.throatReynolds();
+            report["openfoam"] = json::array();
+            bool converged = true;
+            const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe);
+            for (std::size_t m = 0; m < meshes.size(); ++m)
+            {
+                const auto f = bench::runOpenFoamStenosis(pipe, meshes[m], work / ("openfoam-" + std::to_string(m + 1)));
+                report["openfoam"].push_back(openFoamJson(f));
+                converged = converged && f.converged;
+            }
+            std::printf("%s\n", report.dump().c_str());
+            return converged ? 0 : 1;
+        }
         if (!sphIn.empty())
         {
             std::ifstream in(sphIn);
@@ -166,18 +203,13 @@ int main(int argc, char** argv)
             return 0;
         }
 
-        const int axial = int(std::lround(40.0 * pipe.lengthMm)); // 40 cells per mm (224 on the default 5.6 mm)
-        const std::vector<bench::OpenFoamMesh> meshes = {{axial, 32, 0.4, 5.0}, {2 * axial, 64, 0.4, 5.0}};
+        const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe);
         std::vector<bench::OpenFoamStenosisFlow> foam;
         json foamRuns = json::array();
         for (std::size_t m = 0; m < meshes.size(); ++m)
         {
             foam.push_back(bench::runOpenFoamStenosis(pipe, meshes[m], work / ("openfoam-" + std::to_string(m + 1))));
-            const auto& f = foam.back();
-            foamRuns.push_back({{"cells", f.cells}, {"iterations", f.iterations}, {"converged", f.converged},
-                                {"pressure_residual", f.pressureResidual}, {"seconds", f.seconds},
-                                {"inlet_flow_rate_m3s", f.inletFlowRateM3S}, {"figures", figuresJson(f.figures)},
-                                {"throat_wss_pa", f.throatWallShearPa}});
+            foamRuns.push_back(openFoamJson(foam.back()));
         }
         report["openfoam"] = foamRuns;
         report["flow_rate_m3s"] = pipe.flowRateM3S();
