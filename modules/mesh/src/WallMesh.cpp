@@ -201,8 +201,7 @@ double minDihedralAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, cons
 
 namespace {
 
-/// buildWallMesh with `subLayers` prism layers through the inner layer (with the outer wall; 0: as many as the
-/// aspect rule asks).
+/// buildWallMesh with `subLayers` (>= 1) prism layers through the inner layer (with the outer wall).
 WallMesh buildLayeredWall(const TriangleMesh& lumen, const std::vector<VesselEnd>& ends, double thicknessMm,
                           const OuterWallDistance& outerWall, int subLayers)
 {
@@ -228,9 +227,6 @@ WallMesh buildLayeredWall(const TriangleMesh& lumen, const std::vector<VesselEnd
             if (averaged[v].norm() > 0.0)
                 normal[v] = averaged[v].normalized();
     }
-    // The layers' offsets along the normals: one layer of the wall thickness, or with the sac's outer wall the
-    // thrombus-wall interface and the outer surface (the outer distances smoothed over two 1-rings: the label's
-    // voxel steps would otherwise ripple the outer surface).
     // Each lumen vertex's mean and shortest edge (mm).
     std::vector<double> edgeSum(std::size_t(n), 0.0), edgeCount(std::size_t(n), 0.0), shortestEdge(std::size_t(n), INFINITY);
     for (const auto& t : surface.triangles)
@@ -243,6 +239,9 @@ WallMesh buildLayeredWall(const TriangleMesh& lumen, const std::vector<VesselEnd
                 shortestEdge[std::size_t(end)] = std::min(shortestEdge[std::size_t(end)], length);
             }
         }
+    // The layers' offsets along the normals: one layer of the wall thickness, or with the sac's outer wall the
+    // thrombus-wall interface and the outer surface (the outer distances smoothed over two 1-rings: the label's
+    // voxel steps would otherwise ripple the outer surface).
     std::vector<std::array<double, 2>> offset(surface.points.size(), {thicknessMm, thicknessMm});
     std::vector<double> thrombus(surface.points.size(), 0.0);
     if (outerWall)
@@ -271,11 +270,10 @@ WallMesh buildLayeredWall(const TriangleMesh& lumen, const std::vector<VesselEnd
             if (shortestEdge[v] > 0.0 && std::isfinite(shortestEdge[v]))
                 tallest = std::max(tallest, offset[v][0] / shortestEdge[v]);
         }
-        // A thick thrombus over fine lumen edges: the inner layer split into equal sub-layers (the same number
-        // everywhere, so the columns conform; where the inner layer is thin, its sub-layers are flat, which keeps
-        // better angles than tall ones).
+        // A thick thrombus over fine lumen edges asks for the inner layer in equal sub-layers (the same number
+        // everywhere, so that the columns conform; buildWallMesh tries them).
         wall.innerSubLayersByAspect = std::clamp(int(std::ceil(tallest / kMaxInnerPrismAspect)), 1, kMaxThrombusSubLayers);
-        wall.innerSubLayers = subLayers > 0 ? subLayers : wall.innerSubLayersByAspect;
+        wall.innerSubLayers = subLayers;
     }
     // The layers: the inner one's sub-layers, then the wall (with the sac's outer wall), or the single wall layer.
     const int inner = outerWall ? wall.innerSubLayers : 0;
