@@ -84,7 +84,6 @@ float asFloat(unsigned bits)
     return value;
 }
 
-
 } // namespace
 
 /// What a guard's message tells of one particle, read back from the device.
