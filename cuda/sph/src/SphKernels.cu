@@ -224,7 +224,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                              {
                                  const float ratio = kernelValue(p, rr) * p.shiftingReciprocalWeight;
                                  const float ratio2 = ratio * ratio;
-                                 const float crowd = vg * (1.0f + 0.2f * ratio2 * ratio2);
+                                 const float crowd = vg * (1.0f + p.antiClumping * ratio2 * ratio2);
                                  crowdX += crowd * rx, crowdY += crowd * ry, crowdZ += crowd * rz;
                              }
                              const float damped = 1.0f / (r2 + p.eta2);

@@ -31,8 +31,6 @@ double relativeDensity(const ParticleState& particles, const FluidModel& fluid, 
 // eta^2 / h^2 in the viscous term's 1 / (r^2 + eta^2): it only keeps r -> 0 finite. The usual 0.01 lowers the
 // Laplacian's normalisation on a lattice at h = 2 spacings to 0.9917 (the viscosity 0.8 % low); 0.001 gives 1.0002.
 constexpr double kEtaSquared = 0.001;
-// R of the particle shifting's anti-clumping term R (W_ij / W(spacing))^4 (Lind et al. 2012; Monaghan 2000).
-constexpr double kAntiClumping = 0.2;
 
 /// What the main pass needs from a fluid particle's neighbourhood first: G_i (the delta-SPH term's correction,
 /// when it is on) and the distance to the nearest wall surface, min over wall neighbours of |x_ij| - depth_j
@@ -155,7 +153,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                     {
                         const double ratio = kernel.value(r) * fluid.shiftingReciprocalWeight;
                         const double ratio2 = ratio * ratio;
-                        crowding += (mJ / rhoJ) * (1.0 + kAntiClumping * ratio2 * ratio2) * gradW;
+                        crowding += (mJ / rhoJ) * (1.0 + FluidModel::kAntiClumping * ratio2 * ratio2) * gradW;
                     }
                 }
                 largestViscousRate =

@@ -281,12 +281,11 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
         if (p.wall[i])
             continue;
         p.density[i] = std::max(p.density[i], m_fluid.densityFloor(p.voidFraction[i]));
-        Eigen::Vector3d drift = p.velocity[i];
         if (!p.boundary[i])
-        {
             p.velocity[i] += 0.5 * dt * m_rates.acceleration[i];
-            drift = shifting ? Eigen::Vector3d(p.velocity[i] + m_rates.shiftVelocity[i]) : p.velocity[i];
-        }
+        Eigen::Vector3d drift = p.velocity[i];
+        if (shifting && !p.boundary[i])
+            drift += m_rates.shiftVelocity[i];
         p.position[i] = m_grid->wrap(p.position[i] + dt * drift);
     }
     absorbTracer();

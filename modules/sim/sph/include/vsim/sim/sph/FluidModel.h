@@ -28,6 +28,8 @@ struct FluidModel
     /// and 1 / W(spacing), the anti-clumping term's reference (Lind et al. 2012), m^3.
     double particleShifting = 0.0;
     double shiftingReciprocalWeight = 0.0;
+    /// R of the shift's anti-clumping term R (W_ij / W(spacing))^4 (Lind et al. 2012; Monaghan 2000).
+    static constexpr double kAntiClumping = 0.2;
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero(); ///< m/s^2
     /// A driving body force per unit mass (m/s^2: a pressure gradient / rho in a periodic pipe), oscillating as
     /// cos(2 pi f t) when bodyForceFrequency > 0 (Hz).
