@@ -1,8 +1,9 @@
 // The sph-stenosis problem (StenosisPipe.h) on the GPU (cuda/sph, single precision): the same particles, open
-// ends, sections and wall points as the CPU's runStenosisPipe, stepped by CudaSph; every `every`-th step the
-// particles come back to the host, where the sections and the wall loads take their samples, each weighted by the
-// time since the last (the CPU samples the sections every step and the wall every 10th). Writes the JSON that
-// bench_sph_openfoam reads with --sph-in (give it the same --spacing) and prints a summary line.
+// ends, sections and wall points as the CPU's runStenosisPipe, stepped by CudaSph; within the averaging window,
+// every `every`-th step the particles come back to the host, where the sections and the wall loads take their
+// samples, each weighted by the time since the last (the CPU samples the sections every step and the wall every
+// 10th). Writes the JSON that bench_sph_openfoam reads with --sph-in (give it the same --spacing) and prints a
+// summary line.
 //
 //   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] [mean speed m/s] [length mm]
 //                           [particle shifting A] [solver parameter=value]...
@@ -84,6 +85,11 @@ try
                          1e3 * gpu.timeS(), 1e3 * endS, steps, largestVariation);
         const auto stepEnd = std::chrono::steady_clock::now();
         stepping += std::chrono::duration<double>(stepEnd - stepStart).count();
+        if (gpu.timeS() < pipe.averageFromS) // nothing is sampled before the window: no download either
+        {
+            pending = 0.0;
+            continue;
+        }
         if (steps % every != 0)
             continue;
         const ParticleState particles = gpu.download();

@@ -1,7 +1,8 @@
 // The SPH solver's particle machinery (issue 18): the quartic kernel's closed form at known points, the
 // neighbour grid against a brute-force search on random particles (three seeds, clustered and spread), and
 // the validation cases sph-kernel and sph-fpm with their stated tolerances, the mixture and the reference
-// pressure, the walls' Lennard-Jones backstop against a fin one particle thick, and particle shifting.
+// pressure, the walls' Lennard-Jones backstop against a fin one particle thick, particle shifting, and the
+// through-the-wall guard's depths on a lattice-seeded curved wall.
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/FluidModel.h"
@@ -11,9 +12,11 @@
 #include "vsim/sim/sph/SphRates.h"
 #include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/sph/SphValidation.h"
+#include "vsim/sim/sph/StenosisPipe.h"
 
 #include <QtTest>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -265,6 +268,80 @@ private slots:
                 QVERIFY2(error.message().find("particle_shifting 0") != std::string::npos, error.message().c_str());
             }
         }
+    }
+
+    /// The through-the-wall guard on sph-stenosis's lattice (0.1 mm), where the GPU's jets at a throat Re of 97 and
+    /// 200 stopped on 2026-11-30 (0.2 mm past the throat, in the diverging wall's staircase). Its depths never
+    /// exceed the wall depths. At 4,000 random points near the diverging wall (seed 7): none whose nearest lattice
+    /// site was seeded fluid reads as through the wall (by the wall depths some did: the notches between the
+    /// smooth surface and the wall particles), and every one whose nearest site is a wall particle a layer or
+    /// more below the first (its lattice depth over a spacing) does.
+    void guardDepthsFollowTheLattice()
+    {
+        const StenosisPipe pipe;
+        SimulationInput input;
+        input.data["particles"] = stenosisPipeParticles(pipe);
+        SphSolver solver;
+        configureStenosisPipe(pipe, solver);
+        solver.initialize(input, stenosisPipeParameters(pipe));
+        const ParticleState& p = solver.particles(); // still on the lattice
+        const double dx = 1e-3 * pipe.spacingMm;
+        std::map<std::array<long, 3>, std::size_t> sites;
+        const auto siteOf = [dx](const Eigen::Vector3d& xM)
+        {
+            return std::array<long, 3>{std::lround(xM.x() / dx - 0.5), std::lround(xM.y() / dx - 0.5),
+                                       std::lround(xM.z() / dx - 0.5)};
+        };
+        std::vector<std::size_t> walls;
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            sites[siteOf(p.position[i])] = i;
+            if (!p.wall[i] || p.wallDepth[i] < 0.0)
+                continue;
+            QVERIFY(p.guardDepth[i] >= 0.0 && p.guardDepth[i] <= p.wallDepth[i]);
+            if (p.backstop[i] && std::abs(1e3 * p.position[i].x() - 2.8) < 0.6)
+                walls.push_back(i);
+        }
+        // The guard's reading at a point: min over the walls with the backstop of |x - x_j| - depth_j (SphRates.h).
+        const auto reading = [&](const Eigen::Vector3d& xM, const std::vector<double>& depth)
+        {
+            double least = INFINITY;
+            for (std::size_t j : walls)
+                least = std::min(least, (xM - p.position[j]).norm() - depth[j]);
+            return least;
+        };
+        std::mt19937 random(7);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        int fluidSites = 0, firedBefore = 0, firedNow = 0, deepSites = 0, deepCaught = 0;
+        for (int n = 0; n < 4000; ++n)
+        {
+            const double xMm = 2.4 + 0.8 * unit(random), angle = 2.0 * std::numbers::pi * unit(random);
+            const double rMm = pipe.radiusAtMm(xMm) + pipe.spacingMm * (3.0 * unit(random) - 1.0);
+            const Eigen::Vector3d point = 1e-3 * Eigen::Vector3d(xMm, rMm * std::cos(angle), rMm * std::sin(angle));
+            const auto site = sites.find(siteOf(point));
+            if (site == sites.end())
+                continue;
+            const std::size_t s = site->second;
+            if (!p.wall[s])
+            {
+                ++fluidSites;
+                firedBefore += reading(point, p.wallDepth) < -0.5 * dx;
+                firedNow += reading(point, p.guardDepth) < -0.5 * dx;
+            }
+            else if (p.guardDepth[s] > dx)
+            {
+                ++deepSites;
+                deepCaught += reading(point, p.guardDepth) < -0.5 * dx;
+            }
+        }
+        qInfo("%zu wall particles near the diverging side; of the points whose nearest site is fluid %d, the "
+              "wall depths read %d as through the wall, the guard depths %d; of those at a site a layer or more "
+              "below the first %d, caught %d",
+              walls.size(), fluidSites, firedBefore, firedNow, deepSites, deepCaught);
+        QVERIFY(fluidSites > 500 && deepSites > 100);
+        QVERIFY(firedBefore > 0); // the notches the old guard read as inside the wall
+        QCOMPARE(firedNow, 0);
+        QCOMPARE(deepCaught, deepSites);
     }
 
     /// Periodic along x (a channel's flow direction): neighbours across the seam found as nearest images.

@@ -390,7 +390,8 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
         position[i] = make_float4(float(x.x()), float(x.y()), float(x.z()), kind);
         velocity[i] = make_float4(
             float(p.velocity[i].x()), float(p.velocity[i].y()), float(p.velocity[i].z()),
-            p.wall[i] ? (p.backstop[i] ? 0.0f : sph::kWallWithoutBackstop) : float(p.boundary[i]));
+            p.wall[i] ? (p.backstop[i] ? float(std::max(0.0, p.guardDepth[i])) : sph::kWallWithoutBackstop)
+                      : float(p.boundary[i]));
         state[i] = make_float4(float(p.density[i]), float(p.mass[i]), float(p.voidFraction[i]), 0.0f);
     }
     d.current.position.upload(position), d.current.velocity.upload(velocity), d.current.state.upload(state);
@@ -502,7 +503,11 @@ sim::sph::ParticleState CudaSph::download() const
                 state[s].z);
         out.velocity.back() = Eigen::Vector3d(velocity[s].x, velocity[s].y, velocity[s].z);
         if (out.wall.back())
-            out.backstop.back() = velocity[s].w == 0.0f ? 1 : 0;
+        {
+            out.backstop.back() = velocity[s].w >= 0.0f ? 1 : 0;
+            if (out.wallDepth.back() >= 0.0 && velocity[s].w >= 0.0f)
+                out.guardDepth.back() = velocity[s].w;
+        }
         else
             out.boundary.back() = std::uint8_t(velocity[s].w);
         out.id.back() = id[s];

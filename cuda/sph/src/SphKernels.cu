@@ -130,9 +130,14 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
                              {
                                  const float d = r - xj.w;
                                  wallDistance = fminf(wallDistance, d);
-                                 // The backstop flag rides on the velocity record: read where it can matter.
-                                 if (d < guardedWallDistance && d < 0.0f && __ldg(&a.velocity[j]).w == 0.0f)
-                                     guardedWallDistance = d;
+                                 // The backstop and the guard depth (<= the wall depth) ride on the velocity
+                                 // record: read where they can matter.
+                                 if (d < 0.0f)
+                                 {
+                                     const float guardDepth = __ldg(&a.velocity[j]).w;
+                                     if (guardDepth >= 0.0f)
+                                         guardedWallDistance = fminf(guardedWallDistance, r - guardDepth);
+                                 }
                              }
                              return;
                          }
@@ -215,7 +220,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                                      fminf(p.betaMax, 1.0f + xj.w / fmaxf(wallDistanceI, 1e-3f * p.h));
                                  wx = beta * vi.x, wy = beta * vi.y, wz = beta * vi.z;
                              }
-                             if (wallJ && vj.w == 0.0f) // a wall with the backstop
+                             if (wallJ && vj.w >= 0.0f) // a wall with the backstop
                              {
                                  const float push = wallRepulsionFactor(p, rr);
                                  fx += push * rx, fy += push * ry, fz += push * rz;

@@ -15,6 +15,7 @@ void ParticleState::add(const Eigen::Vector3d& positionM, double densityKgM3, do
     voidFraction.push_back(voidFractionOfMixture);
     wall.push_back(isWall ? 1 : 0);
     wallDepth.push_back(isWall ? wallDepthM : -1.0);
+    guardDepth.push_back(wallDepth.back());
     boundary.push_back(0);
     tracer.push_back(0);
     backstop.push_back(isWall ? 1 : 0);

@@ -59,7 +59,7 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
                 {
                     wallDistance = std::min(wallDistance, r - particles.wallDepth[sj]);
                     if (particles.backstop[sj])
-                        guardedWallDistance = std::min(guardedWallDistance, r - particles.wallDepth[sj]);
+                        guardedWallDistance = std::min(guardedWallDistance, r - particles.guardDepth[sj]);
                 }
                 return;
             }

@@ -190,6 +190,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_grid->build(m_particles.position);
     m_particles.reorder(*m_grid); // neighbours near in memory
     m_grid->build(m_particles.position);
+    setGuardDepths();
     m_initialFluidMass = fluidMass();
     updateRates(0.0);
     m_stepS = stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl);
@@ -331,12 +332,11 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
             (p.position[i].array() > m_boxHigh.array()).any())
             return putBack(storedText(Pattern{
                 "particle %1 left the domain (through a wall or an open end without an outlet)", {std::to_string(p.id[i])}}));
-        // Through the wall: a fluid particle deeper than half a spacing below the surface the wall particles of
-        // known depth describe (SphRates' d_i < 0 there). Half, not less: particles seeded on a lattice leave a
-        // curved wall's surface up to a spacing from the nearest wall particle (a staircase), and fluid settles up to
-        // half-way into those notches without passing a wall particle (at a quarter spacing sph-stenosis's converging
-        // side stopped the run at 11.5 ms). Not against the walls around an open end's buffer, which hands fluid over
-        // as close to them as it came (SphRates.h).
+        // Through the wall: a fluid particle deeper than half a spacing below the surface the wall particles
+        // describe by their guard depths (ParticleState::guardDepth: the lattice's own surface where a smooth
+        // wall steps). Half, not less: the fluid packs up to a few tenths of a spacing closer to a wall than it was
+        // seeded (at a quarter spacing sph-stenosis's converging side stopped the run at 11.5 ms). Not against the
+        // walls around an open end's buffer, which hands fluid over as close to them as it came (SphRates.h).
         if (fluid && m_rates.guardedWallDistance[i] < -0.5 * m_spacingM)
             return putBack(storedText(Pattern{
                 "fluid particle %1 went %2 mm into the wall at %3: the time step or the sound speed is too large for "
@@ -381,6 +381,30 @@ void SphSolver::releaseBackstopAtOpenEnds()
                 (offset - offset.dot(b.normal) * b.normal).norm() <= b.radiusM + reach)
                 p.backstop[i] = 0;
         }
+    }
+}
+
+void SphSolver::setGuardDepths()
+{
+    // The surface a wall's own particles make lies half a spacing beyond the fluid particle nearest each of them
+    // (as ParticleSeeding measures a label's walls). A smooth wall seeded on a lattice (the analytic phantoms)
+    // steps: on sph-stenosis's diverging side at 0.1 mm the fluid filled a notch 0.5 spacings below the smooth
+    // surface without nearing a wall particle, and the guard stopped the jet at a throat Re of 97 and 200
+    // (2026-11-30, RESULTS.md). A wall particle beyond the support from the fluid keeps its given depth.
+    ParticleState& p = m_particles;
+    const double half = 0.5 * m_spacingM;
+#pragma omp parallel for schedule(dynamic, 256)
+    for (int i = 0; i < int(p.size()); ++i)
+    {
+        const std::size_t si = std::size_t(i);
+        if (!p.wall[si] || p.wallDepth[si] < 0.0)
+            continue;
+        double nearest = INFINITY;
+        m_grid->forEachNeighbour(p.position, i, [&](int j, const Eigen::Vector3d&, double r) {
+            if (!p.wall[std::size_t(j)])
+                nearest = std::min(nearest, r);
+        });
+        p.guardDepth[si] = std::min(p.wallDepth[si], std::max(0.0, nearest - half));
     }
 }
 

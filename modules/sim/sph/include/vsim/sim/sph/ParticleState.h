@@ -24,6 +24,12 @@ struct ParticleState
     /// Wall particles: how deep below the wall's surface they sit (m; the first layer half a spacing), for the
     /// no-slip velocity (SphRates.h); < 0 when unknown (the plain dynamic boundary then). Fluid particles: unused.
     std::vector<double> wallDepth;
+    /// Wall particles: the depth the through-the-wall guard measures against (m): the smaller of wallDepth and
+    /// the wall's depth on its own lattice, the distance to the nearest fluid particle as seeded less half a
+    /// spacing (SphSolver::setGuardDepths). On a lattice-seeded curved wall the two differ: the wall particles'
+    /// staircase leaves notches between the smooth surface and the particles, which the fluid may fill without
+    /// passing a wall particle. < 0 when unknown; equal to wallDepth until the solver sets it.
+    std::vector<double> guardDepth;
     /// 0 in the fluid and the walls; k + 1 for a particle in the buffer of open boundary k (OpenBoundary.h).
     std::vector<std::uint8_t> boundary;
     /// 1 at particles that carry the tracer (an injected drug: what the walls absorb); 0 otherwise.
@@ -50,8 +56,8 @@ private:
     /// Calls f on every per-particle array: the one list the copies, removals and reorders share.
     template <class F> void forEachArray(F&& f)
     {
-        f(position), f(velocity), f(density), f(mass), f(voidFraction), f(wall), f(wallDepth), f(boundary),
-            f(tracer), f(backstop), f(id);
+        f(position), f(velocity), f(density), f(mass), f(voidFraction), f(wall), f(wallDepth), f(guardDepth),
+            f(boundary), f(tracer), f(backstop), f(id);
     }
 };
 

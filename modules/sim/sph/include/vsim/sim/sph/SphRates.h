@@ -52,8 +52,8 @@ struct SphRates
     std::vector<Eigen::Vector3d> densityGradient;
     /// d_i, m (fluid particles; infinite without a wall neighbour of known depth).
     std::vector<double> wallDistance;
-    /// The same over the wall particles with the backstop (ParticleState::backstop), m: what the
-    /// through-the-wall guard reads (an open end's buffer hands fluid over arbitrarily close to the walls
+    /// The same over the wall particles with the backstop (ParticleState::backstop) and against their guard
+    /// depths (ParticleState::guardDepth), m: what the through-the-wall guard reads (an open end's buffer hands fluid over arbitrarily close to the walls
     /// around it).
     std::vector<double> guardedWallDistance;
     double largestAcceleration = 0.0; ///< m/s^2, over the fluid

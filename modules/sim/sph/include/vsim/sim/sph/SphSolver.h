@@ -125,6 +125,8 @@ private:
     void absorbTracer();
     /// Clears `backstop` at the wall particles within a support of an open end's buffer (SphSolver.cpp).
     void releaseBackstopAtOpenEnds();
+    /// Sets ParticleState::guardDepth from the particles as given (SphSolver.cpp).
+    void setGuardDepths();
     /// A step on the other stepper, and every m_syncEvery steps the particles back and the samples.
     StepOutcome stepElsewhere();
 
