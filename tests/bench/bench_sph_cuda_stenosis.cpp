@@ -9,7 +9,8 @@
 //                           [particle shifting A] [solver parameter=value]...
 //
 // A mean speed (and length) other than the default's 0.05 m/s (5.6 mm) is StenosisPipe::atFlow's problem (Re 100
-// upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled).
+// upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled), and the Courant number and
+// the walls' backstop follow the throat's Re (StenosisPipe.h).
 //
 // Exit 0 with "SKIP" without a device, 1 when a guard stops the run.
 
@@ -115,6 +116,7 @@ try
         {"sampled_every_steps", every}, {"inflow_kg", inflow}, {"mean_speed_m_s", pipe.meanSpeedMS},
         {"length_mm", pipe.lengthMm}, {"averaged_s", {pipe.averageFromS, pipe.endTimeS}},
         {"particle_shifting", parameters.get("particle_shifting")}, {"cfl", parameters.get("cfl")},
+        {"wall_repulsion", parameters.get("wall_repulsion")},
         {"outflow_kg", double(gpu.massLedger().totalOutflow())}};
     std::ofstream(out) << report.dump(1) << '\n';
     std::printf("{\"case\": \"sph-stenosis on the GPU\", \"spacing_mm\": %.3f, \"sound_speed_m_s\": %.1f, "

@@ -1,8 +1,8 @@
 // The SPH solver's particle machinery (issue 18): the quartic kernel's closed form at known points, the
 // neighbour grid against a brute-force search on random particles (three seeds, clustered and spread), and
 // the validation cases sph-kernel and sph-fpm with their stated tolerances, the mixture and the reference
-// pressure, the walls' Lennard-Jones backstop against a fin one particle thick, particle shifting, and the
-// through-the-wall guard's depths on a lattice-seeded curved wall.
+// pressure, the walls' Lennard-Jones backstop against a fin one particle thick, particle shifting, the
+// through-the-wall guard's depths on a lattice-seeded curved wall, and the stenosis pipe at a faster flow.
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/FluidModel.h"
@@ -342,6 +342,24 @@ private slots:
         QVERIFY(firedBefore > 0); // the notches the old guard read as inside the wall
         QCOMPARE(firedNow, 0);
         QCOMPARE(deepCaught, deepSites);
+    }
+
+    /// StenosisPipe::atFlow: a faster jet gets the Courant number scaled by the throats' Re and the walls'
+    /// backstop; the same flow keeps the sph-stenosis settings.
+    void stenosisPipeAtFlow()
+    {
+        const StenosisPipe pipe;
+        QVERIFY(std::abs(pipe.throatReynolds() - 1060.0 * 4.0 * 0.05 * 0.8e-3 / 3.5e-3) < 1e-9);
+        const StenosisPipe fast = pipe.atFlow(0.207, 8.0);
+        QVERIFY(std::abs(fast.throatReynolds() / pipe.throatReynolds() - 0.207 / 0.05) < 1e-12);
+        QVERIFY(std::abs(fast.cfl - pipe.cfl * 0.05 / 0.207) < 1e-12);
+        QCOMPARE(fast.wallRepulsion, 0.01);
+        QCOMPARE(stenosisPipeParameters(fast).get("wall_repulsion"), 0.01);
+        QVERIFY(std::abs(fast.soundSpeedMS - pipe.soundSpeedMS * 0.207 / 0.05) < 1e-12);
+        const StenosisPipe same = pipe.atFlow(0.05, 5.6);
+        QCOMPARE(same.cfl, pipe.cfl);
+        QCOMPARE(same.wallRepulsion, 0.0);
+        QCOMPARE(stenosisPipeParameters(pipe).get("wall_repulsion"), 0.0);
     }
 
     /// Periodic along x (a channel's flow direction): neighbours across the seam found as nearest images.

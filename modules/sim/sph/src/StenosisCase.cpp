@@ -48,6 +48,8 @@ StenosisPipe StenosisPipe::atFlow(double meanSpeed, double length) const
     const double jetTransitS = 1e-3 * (length - throatAtMm) / (4.0 * meanSpeed); // the throat's mean: 4 x (area ratio)
     pipe.averageFromS = pipe.rampS + 1.5 * jetTransitS, pipe.endTimeS = pipe.rampS + 2.5 * jetTransitS;
     pipe.cfl = cfl * std::min(1.0, throatReynolds() / pipe.throatReynolds());
+    if (pipe.throatReynolds() > throatReynolds())
+        pipe.wallRepulsion = std::max(wallRepulsion, 0.01);
     return pipe;
 }
 
@@ -103,6 +105,7 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
     parameters.set("end_time_s", pipe.endTimeS);
     parameters.set("cfl", pipe.cfl);
     parameters.set("particle_shifting", pipe.particleShifting);
+    parameters.set("wall_repulsion", pipe.wallRepulsion);
     return parameters;
 }
 

@@ -34,6 +34,7 @@ struct StenosisPipe
     double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
     double particleShifting = 0.0;                    ///< the solver's particle_shifting A (0: off; SphRates.h)
     double cfl = kStenosisCfl;                        ///< the Courant number (atFlow lowers it for faster jets)
+    double wallRepulsion = 0.0;                       ///< the solver's wall_repulsion (the walls' backstop; 0: off)
     double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
     double sectionStepMm = 0.2;
 
@@ -44,7 +45,9 @@ struct StenosisPipe
     /// scaled by min(1, this pipe's throat Re / the new one's) (from kStenosisCfl at Re 48): at a throat Re of 97 the jet blew up at 0.1 (the density 3 %
     /// off on the axis at the throat within 0.5 ms of the ramp's end, at c0 80 and 160 times the mean speed, with
     /// and without particle shifting) and held at 0.05 (within 0.18 % to 21 ms; 2026-11-30, RESULTS.md); at Re 48
-    /// 0.2 blew up and 0.1 holds (sph-stenosis).
+    /// 0.2 blew up and 0.1 holds (sph-stenosis). A faster jet than this pipe's also gets the walls' backstop
+    /// (wall_repulsion 0.01): at a throat Re of 200 the fluid crossed the first wall layer at the throat without
+    /// it at 0.05 and 0.1 mm, and with it ran to its end (2026-11-30, RESULTS.md).
     StenosisPipe atFlow(double meanSpeed, double length) const;
     /// The Reynolds number of the throat's mean flow: rho 4 U R0 / mu (its diameter R0, its mean speed 4 U).
     double throatReynolds() const;
