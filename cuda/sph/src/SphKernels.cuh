@@ -51,7 +51,8 @@ __device__ inline unsigned rowOf(const SphParams& p, int y, int z)
 /// loads: position (m) with w = the wall depth (m, >= 0) at a wall particle of known depth, -2 at one
 /// without, -1 in the fluid and the open boundaries' buffers; velocity (m/s) with w = k + 1 at a particle in
 /// the buffer of open boundary k, 0 in the fluid, at a wall particle with the backstop its guard depth (m, >= 0;
-/// ParticleState::guardDepth, 0 where unknown) and kWallWithoutBackstop at one without; state = (density kg/m^3, mass kg, void fraction, pressure Pa).
+/// ParticleState::guardDepth, 0 where unknown) and kWallWithoutBackstop at one without; state = (density kg/m^3,
+/// mass kg, void fraction, pressure Pa).
 /// The position record's w besides a wall depth (>= 0); kRemoved at a particle an open boundary let out this
 /// step (its key sorts it past the kept ones, and the step drops it).
 constexpr float kFluid = -1.0f, kWallOfUnknownDepth = -2.0f, kRemoved = -3.0f;

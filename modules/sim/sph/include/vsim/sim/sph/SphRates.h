@@ -53,8 +53,8 @@ struct SphRates
     /// d_i, m (fluid particles; infinite without a wall neighbour of known depth).
     std::vector<double> wallDistance;
     /// The same over the wall particles with the backstop (ParticleState::backstop) and against their guard
-    /// depths (ParticleState::guardDepth), m: what the through-the-wall guard reads (an open end's buffer hands fluid over arbitrarily close to the walls
-    /// around it).
+    /// depths (ParticleState::guardDepth), m: what the through-the-wall guard reads (an open end's buffer hands
+    /// fluid over arbitrarily close to the walls around it).
     std::vector<double> guardedWallDistance;
     double largestAcceleration = 0.0; ///< m/s^2, over the fluid
     double largestViscousRate = 0.0;  ///< max_ij |h v_ij . x_ij / (r^2 + 0.001 h^2)|, m/s (Monaghan's CFL)
