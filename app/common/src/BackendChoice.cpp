@@ -8,11 +8,16 @@ namespace vsim::app {
 
 bool chooseCuda(const std::string& requested, std::string& device)
 {
+    return chooseCuda(requested, device, gpuUnavailableReason);
+}
+
+bool chooseCuda(const std::string& requested, std::string& device, const std::function<std::string()>& whyNot)
+{
     if (requested != "auto" && requested != "cpu" && requested != "cuda")
         throw Error(Pattern{"unknown backend '%1' (auto, cpu, cuda)", {requested}});
     if (requested == "cpu")
         return false;
-    const std::string unavailable = gpuUnavailableReason();
+    const std::string unavailable = whyNot();
     if (unavailable.empty())
     {
         device = gpuPlugin()->deviceSummary();

@@ -1,5 +1,6 @@
 #include "vsim/app/WallPipeline.h"
 
+#include "BackendChoice.h"
 #include "GpuPlugin.h"
 #include "ReportSupport.h"
 #include "vsim/app/RunRecord.h"
@@ -199,17 +200,10 @@ std::string wallGpuUnavailable(const std::string& protocol, const ParameterSet& 
 
 WallBackend chooseWallBackend(const std::string& requested, const std::string& protocol, const ParameterSet& parameters)
 {
-    if (requested != "auto" && requested != "cpu" && requested != "cuda")
-        throw Error(Pattern{"unknown backend '%1' (auto, cpu, cuda)", {requested}});
-    if (requested == "cpu")
+    std::string device;
+    if (!chooseCuda(requested, device, [&] { return wallGpuUnavailable(protocol, parameters); }))
         return {};
-    const std::string unavailable = wallGpuUnavailable(protocol, parameters);
-    if (unavailable.empty())
-        return {"cuda", gpuPlugin()->deviceSummary(), gpuPlugin()->wallStepperFactory(),
-                gpuPlugin()->wallStaticModelFactory()};
-    if (requested == "cuda")
-        throw Error(Pattern{"%1: use --backend cpu or auto", {unavailable}});
-    return {};
+    return {"cuda", device, gpuPlugin()->wallStepperFactory(), gpuPlugin()->wallStaticModelFactory()};
 }
 
 sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::string& protocol, const std::string& wallId,
