@@ -181,9 +181,12 @@ void writeCase(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, con
     write(directory / "system/fvSolution",
           header("dictionary", "fvSolution") +
               "solvers { p { solver GAMG; smoother GaussSeidel; tolerance 1e-14; relTol 0.05; }\n"
-              " U { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-14; relTol 0.1; } }\n"
-              "SIMPLE { nNonOrthogonalCorrectors 0; consistent yes; residualControl { p 1e-11; } }\n"
-              "relaxationFactors { equations { U 0.9; } fields { p 1; } }\n");
+              " U { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-14; relTol 0.1; } }\n" +
+              std::string(mesh.classicSimple
+                   ? "SIMPLE { nNonOrthogonalCorrectors 0; consistent no; residualControl { p 1e-11; } }\n"
+                     "relaxationFactors { equations { U 0.7; } fields { p 0.3; } }\n"
+                   : "SIMPLE { nNonOrthogonalCorrectors 0; consistent yes; residualControl { p 1e-11; } }\n"
+                     "relaxationFactors { equations { U 0.9; } fields { p 1; } }\n"));
     write(directory / "constant/transportProperties",
           header("dictionary", "transportProperties") + "transportModel Newtonian; nu " +
               number(pipe.viscosityPaS / pipe.densityKgM3) + ";\n");

@@ -14,14 +14,15 @@
 //   jet's recirculation reattaches: a local ratio says nothing there).
 //
 //   bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] [--sph-in FILE] [--sph-out FILE]
-//                      [--openfoam-only]
+//                      [--openfoam-only] [--classic-simple]
 //
 // --spacing sets the SPH's particle lattice (0.1 mm by default) and with it the sections' slab thickness (two
 // spacings) on both sides.
 // --sph-out writes the SPH's sections and wall rings (JSON) after its run; --sph-in reads them instead of running
 // it (the SPH may run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2, or on the GPU:
 // bench_sph_cuda_stenosis). --openfoam-only runs the two OpenFOAM meshes alone and prints their figures (exit 1
-// when one does not converge). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
+// when one does not converge). --classic-simple solves with SIMPLE's relaxation in place of SIMPLEC's
+// (OpenFoamStenosis.h). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
 // not installed (`scripts/install-deps.sh --bench`).
 
 #include "OpenFoamStenosis.h"
@@ -55,10 +56,10 @@ json figuresJson(const sim::sph::StenosisFigures& f)
 
 /// The two OpenFOAM meshes: 40 cells per mm along (224 on the default 5.6 mm) by 32 across, and twice that (the
 /// reference).
-std::vector<bench::OpenFoamMesh> openFoamMeshes(const sim::sph::StenosisPipe& pipe)
+std::vector<bench::OpenFoamMesh> openFoamMeshes(const sim::sph::StenosisPipe& pipe, bool classicSimple)
 {
     const int axial = int(std::lround(40.0 * pipe.lengthMm));
-    return {{axial, 32, 0.4, 5.0}, {2 * axial, 64, 0.4, 5.0}};
+    return {{axial, 32, 0.4, 5.0, classicSimple}, {2 * axial, 64, 0.4, 5.0, classicSimple}};
 }
 
 json openFoamJson(const bench::OpenFoamStenosisFlow& f)
@@ -84,12 +85,12 @@ int main(int argc, char** argv)
     {
         std::fprintf(stderr,
                      "usage: bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] "
-                     "[--sph-in FILE] [--sph-out FILE] [--openfoam-only]\n");
+                     "[--sph-in FILE] [--sph-out FILE] [--openfoam-only] [--classic-simple]\n");
         return 2;
     }
     const fs::path work = argv[1];
     std::string sphIn, sphOut;
-    bool openFoamOnly = false;
+    bool openFoamOnly = false, classicSimple = false;
     sim::sph::StenosisPipe pipe;
     double meanSpeed = 0.0, length = 0.0; // 0: the default problem's
     for (int a = 2; a < argc; ++a)
@@ -99,6 +100,8 @@ int main(int argc, char** argv)
             (option == "--sph-in" ? sphIn : sphOut) = argv[++a];
         else if (option == "--openfoam-only")
             openFoamOnly = true;
+        else if (option == "--classic-simple")
+            classicSimple = true;
         else if (option == "--spacing" && a + 1 < argc)
         {
             char* end = nullptr;
@@ -122,7 +125,7 @@ int main(int argc, char** argv)
         else
         {
             std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--spacing MM, --mean-speed M/S, --length MM, "
-                                 "--sph-in FILE, --sph-out FILE, --openfoam-only)\n",
+                                 "--sph-in FILE, --sph-out FILE, --openfoam-only, --classic-simple)\n",
                          option.c_str());
             return 2;
         }
@@ -148,7 +151,7 @@ int main(int argc, char** argv)
             report["throat_reynolds"] = pipe.throatReynolds();
             report["openfoam"] = json::array();
             bool converged = true;
-            const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe);
+            const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple);
             for (std::size_t m = 0; m < meshes.size(); ++m)
             {
                 const auto f = bench::runOpenFoamStenosis(pipe, meshes[m], work / ("openfoam-" + std::to_string(m + 1)));
@@ -203,7 +206,7 @@ int main(int argc, char** argv)
             return 0;
         }
 
-        const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe);
+        const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple);
         std::vector<bench::OpenFoamStenosisFlow> foam;
         json foamRuns = json::array();
         for (std::size_t m = 0; m < meshes.size(); ++m)
