@@ -299,7 +299,7 @@ private slots:
             if (!p.wall[i] || p.wallDepth[i] < 0.0)
                 continue;
             QVERIFY(p.guardDepth[i] >= 0.0 && p.guardDepth[i] <= p.wallDepth[i]);
-            if (p.backstop[i] && std::abs(1e3 * p.position[i].x() - 2.8) < 0.6)
+            if (p.backstop[i] && std::abs(1e3 * p.position[i].x() - 2.8) < 1.2) // the points and a support
                 walls.push_back(i);
         }
         // The guard's reading at a point: min over the walls with the backstop of |x - x_j| - depth_j (SphRates.h).
