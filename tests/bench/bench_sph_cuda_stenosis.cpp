@@ -6,35 +6,90 @@
 // summary line.
 //
 //   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] [mean speed m/s] [length mm]
-//                           [particle shifting A] [solver parameter=value]...
+//                           [particle shifting A] [solver parameter=value]... [--checkpoint FILE]
+//                           [--stop-after SECONDS]
+//
+// --checkpoint goes on from FILE when it exists (SphCheckpoint.h: the particles, the time, the mass ledger, the
+// averages so far and this bench's own counters) and saves the run's end there; with --stop-after it saves the
+// run there once that many seconds have passed and exits 3: run the same command again to go on (a run longer
+// than one call of the device tool). The GPU gives no rates, so a resumed run evaluates them at the saved state (SphCheckpoint.h).
 //
 // A mean speed (and length) other than the default's 0.05 m/s (5.6 mm) is StenosisPipe::atFlow's problem (Re 100
 // upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled), and the Courant number and
 // the walls' backstop follow the throat's Re (StenosisPipe.h).
 //
-// Exit 0 with "SKIP" without a device, 1 when a guard stops the run.
+// Exit 0 with "SKIP" without a device, 1 when a guard stops the run, 3 when --stop-after saved it to go on.
 
 #include "StenosisJson.h"
 
 #include "vsim/core/Error.h"
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_sph/CudaSph.h"
+#include "vsim/sim/sph/SphCheckpoint.h"
 #include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/sph/StenosisPipe.h"
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 using namespace vsim;
 using namespace vsim::sim::sph;
 
+namespace {
+
+/// The option `name` and its value taken out of the arguments ("" when absent).
+std::string takeOption(std::vector<std::string>& arguments, const std::string& name)
+{
+    for (std::size_t a = 0; a + 1 < arguments.size(); ++a)
+        if (arguments[a] == name)
+        {
+            const std::string value = arguments[a + 1];
+            arguments.erase(arguments.begin() + long(a), arguments.begin() + long(a) + 2);
+            return value;
+        }
+    return {};
+}
+
+/// The GPU run now as a checkpoint: the solver's (its fluid mass at the start), the GPU's particles, time, ledger
+/// and boundaries' last values, this bench's series and counters.
+SphCheckpoint gpuCheckpoint(const SphSolver& solver, const cuda::CudaSph& gpu, long steps, const SectionSeries& sections,
+                            const WallLoadSeries& wallLoads, std::map<std::string, double> counters)
+{
+    SphCheckpoint c = solver.checkpoint();
+    c.particles = gpu.download();
+    c.rates = {};
+    c.timeS = gpu.timeS(), c.steps = steps, c.ledger = gpu.massLedger();
+    for (int id : c.particles.id)
+        c.nextId = std::max(c.nextId, id + 1);
+    for (std::size_t k = 0; k < c.boundaryFlowRateM3S.size(); ++k)
+        c.boundaryFlowRateM3S[k] = gpu.flowRate(k), c.boundaryPressurePa[k] = gpu.pressure(k);
+    c.sections = sections.sums(), c.wallLoads = wallLoads.sums();
+    c.counters = std::move(counters);
+    return c;
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 try
 {
+    std::vector<std::string> arguments(argv, argv + argc);
+    const std::string checkpointFile = takeOption(arguments, "--checkpoint");
+    const std::string stopAfterText = takeOption(arguments, "--stop-after");
+    const double stopAfterS = stopAfterText.empty() ? INFINITY : std::stod(stopAfterText);
+    if (!stopAfterText.empty() && checkpointFile.empty())
+        throw Error("--stop-after needs --checkpoint FILE to save the run in");
+    std::vector<char*> kept;
+    for (std::string& argument : arguments)
+        kept.push_back(argument.data());
+    argc = int(kept.size()), argv = kept.data();
     if (argc < 3)
     {
         std::fprintf(stderr, "usage: bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] "
@@ -64,16 +119,52 @@ try
     ParameterSet parameters = stenosisPipeParameters(pipe);
     for (int a = 8; a < argc; ++a) // the solver's parameters (sphParameters), e.g. delta_sph=0
         parameters.setFromText(argv[a]);
+    std::map<std::string, double> counters; // this bench's, carried through a checkpoint
+    if (!checkpointFile.empty() && std::filesystem::exists(checkpointFile))
+    {
+        auto saved = std::make_shared<SphCheckpoint>(readSphCheckpoint(checkpointFile));
+        counters = saved->counters;
+        solver.setStartState(saved);
+        std::fprintf(stderr, "going on from %s at t = %.3f ms, step %ld\n", checkpointFile.c_str(),
+                     1e3 * saved->timeS, saved->steps);
+    }
     solver.initialize(input, parameters);
     SectionSeries sections = solver.sections();
     WallLoadSeries wallLoads = solver.wallLoads();
     NeighbourGrid grid(solver.kernel().support());
     cuda::CudaSph gpu(solver);
     const double endS = parameters.get("end_time_s");
-    long steps = 0;
-    double pending = 0.0, largestVariation = 0.0, largestAtS = 0.0, stepping = 0.0, sampling = 0.0;
+    long steps = long(solver.metrics().at("steps"));
+    double pending = counters["pending_s"], largestVariation = counters["largest_density_variation"],
+           largestAtS = counters["largest_density_variation_at_s"], stepping = counters["stepping_seconds"],
+           sampling = counters["sampling_seconds"];
+    const double earlierSeconds = counters["seconds"];
+    const long earlierCalls = long(counters["calls"]);
+    // Saves the run (the final state too, so that the settled flow can be read again: WallShear.h's estimators).
+    auto save = [&]() {
+        const double seconds =
+            earlierSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        writeSphCheckpoint(gpuCheckpoint(solver, gpu, steps, sections, wallLoads,
+                                         {{"pending_s", pending},
+                                          {"largest_density_variation", largestVariation},
+                                          {"largest_density_variation_at_s", largestAtS},
+                                          {"stepping_seconds", stepping},
+                                          {"sampling_seconds", sampling},
+                                          {"seconds", seconds},
+                                          {"calls", double(earlierCalls + 1)}}),
+                           checkpointFile);
+    };
     while (gpu.timeS() < endS)
     {
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > stopAfterS)
+        {
+            save();
+            std::printf("{\"case\": \"sph-stenosis on the GPU\", \"saved_at_s\": %.6g, \"end_time_s\": %.6g, "
+                        "\"steps\": %ld, \"checkpoint\": \"%s\", \"largest_density_variation\": %.4g, "
+                        "\"next\": \"run the same command again to go on\"}\n",
+                        gpu.timeS(), endS, steps, checkpointFile.c_str(), largestVariation);
+            return 3;
+        }
         const auto stepStart = std::chrono::steady_clock::now();
         if (const std::string guard = gpu.step(); !guard.empty())
             throw Error("a guard stopped the GPU stenosis run: " + guard);
@@ -100,7 +191,10 @@ try
         pending = 0.0;
         sampling += std::chrono::duration<double>(std::chrono::steady_clock::now() - stepEnd).count();
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!checkpointFile.empty())
+        save();
+    const double seconds =
+        earlierSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::map<std::string, double> metrics = {{"steps", double(steps)}, {"particles", double(gpu.particleCount())},
                                              {"largest_density_variation", largestVariation}};
     const StenosisPipeFlow flow = stenosisPipeFlow(pipe, sections, wallLoads, metrics);
@@ -117,7 +211,7 @@ try
         {"length_mm", pipe.lengthMm}, {"averaged_s", {pipe.averageFromS, pipe.endTimeS}},
         {"particle_shifting", parameters.get("particle_shifting")}, {"cfl", parameters.get("cfl")},
         {"wall_repulsion", parameters.get("wall_repulsion")},
-        {"outflow_kg", double(gpu.massLedger().totalOutflow())}};
+        {"outflow_kg", double(gpu.massLedger().totalOutflow())}, {"calls", earlierCalls + 1}};
     std::ofstream(out) << report.dump(1) << '\n';
     std::printf("{\"case\": \"sph-stenosis on the GPU\", \"spacing_mm\": %.3f, \"sound_speed_m_s\": %.1f, "
                 "\"particles\": %zu, \"steps\": %ld, "

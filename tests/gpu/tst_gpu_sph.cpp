@@ -7,13 +7,15 @@
 // the mass through the boundaries and their flow rates (1e-4). Last, the run driver with the GPU as the solver's
 // stepper (SphSolver::setStepper, what `simulate sph --backend cuda` runs): the stenosis pipe at 0.2 mm through its
 // 25 ms, the stenosis figures from the sections (sampled every 10th step on the GPU, every step on the CPU) within
-// 1 % of the CPU's, the throat's wall shear stress within 3 %. Position and velocity differences are relative to the
+// 1 % of the CPU's, the throat's wall shear stress within 3 %. A GPU run saved halfway and gone on from
+// (SphCheckpoint.h) against the run that did not stop, at the CPU parity's tolerances. Position and velocity differences are relative to the
 // largest displacement and the largest speed, the density's to the rest density, the time's to the CPU's. The
 // GPU runs in single precision, the CPU in double. Skips without a device.
 
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_sph/CudaSph.h"
 #include "vsim/sim/sph/DamBreak.h"
+#include "vsim/sim/sph/SphCheckpoint.h"
 #include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/common/RunDriver.h"
 #include "vsim/sim/sph/StenosisFigures.h"
@@ -22,6 +24,8 @@
 #include <QtTest>
 
 #include <cmath>
+#include <filesystem>
+#include <unordered_map>
 
 using namespace vsim;
 using namespace vsim::sim::sph;
@@ -274,6 +278,80 @@ private slots:
         // path took every 100th step, before SphSolver::setStepper made the series sample at its cadence).
         QVERIFY(relative(flows[1].throatWallShearPa, flows[0].throatWallShearPa) <= 0.03);
         QVERIFY(relative(flows[1].metrics.at("inflow_kg"), flows[0].metrics.at("inflow_kg")) <= 1e-3);
+    }
+
+    /// A GPU run saved at step 150 (SphCheckpoint.h: the particles fetched, no rates), read back and gone on from
+    /// on a new GPU stepper to step 300, against the run that did not stop: the stenosis pipe at 0.1 mm with its
+    /// inlet's ramp of 1 ms, the particles given at the start compared by number as in the CPU parity (the resumed
+    /// run evaluates its first rates at the saved state, where the run that went on took them mid-step: half a kick
+    /// apart once), the particle count, the time and the mass through the ends.
+    void aSavedGpuRunGoesOn()
+    {
+        if (vsim::cuda::devices().empty())
+            QSKIP("no CUDA device on this machine; run on the accelerator with the device tool");
+        StenosisPipe pipe;
+        pipe.rampS = 0.001;
+        SimulationInput input;
+        input.data["particles"] = stenosisPipeParticles(pipe);
+        const ParameterSet parameters = stenosisPipeParameters(pipe);
+        auto stepTo = [](SphSolver& solver, int steps) {
+            RunStatus status;
+            while (solver.metrics().at("steps") < steps)
+                QVERIFY(solver.step(status, {}).kind != sim::StepOutcome::Kind::Guard);
+        };
+        SphSolver whole;
+        configureStenosisPipe(pipe, whole);
+        whole.setStepper(cuda::cudaSphStepperFactory());
+        whole.initialize(input, parameters);
+        const std::size_t given = whole.particles().size();
+        stepTo(whole, 300);
+        SphSolver first;
+        configureStenosisPipe(pipe, first);
+        first.setStepper(cuda::cudaSphStepperFactory());
+        first.initialize(input, parameters);
+        stepTo(first, 150);
+        QTemporaryDir folder;
+        const std::filesystem::path file = folder.filePath("gpu.sphcheckpoint").toStdString();
+        writeSphCheckpoint(first.checkpoint(), file);
+        SphSolver second;
+        configureStenosisPipe(pipe, second);
+        second.setStepper(cuda::cudaSphStepperFactory());
+        second.setStartState(std::make_shared<SphCheckpoint>(readSphCheckpoint(file)));
+        second.initialize(input, parameters);
+        QVERIFY(second.steppedElsewhere());
+        stepTo(second, 300);
+        const ParticleState a = whole.particles(), b = second.particles();
+        std::unordered_map<int, std::size_t> at;
+        for (std::size_t s = 0; s < b.size(); ++s)
+            at[b.id[s]] = s;
+        double speed = 0.0, dx = 0.0, dv = 0.0, drho = 0.0;
+        std::size_t compared = 0, fluid = 0;
+        for (std::size_t s = 0; s < a.size(); ++s)
+        {
+            if (std::size_t(a.id[s]) >= given || a.boundary[s] || a.wall[s])
+                continue;
+            ++fluid;
+            if (!at.count(a.id[s]))
+                continue;
+            const std::size_t r = at[a.id[s]];
+            speed = std::max(speed, a.velocity[s].norm());
+            dx = std::max(dx, (a.position[s] - b.position[r]).norm());
+            dv = std::max(dv, (a.velocity[s] - b.velocity[r]).norm());
+            drho = std::max(drho, std::abs(a.density[s] - b.density[r]));
+            ++compared;
+        }
+        const double inflow = whole.metrics().at("inflow_kg");
+        const double inflowDifference = std::abs(second.metrics().at("inflow_kg") - inflow) / inflow;
+        const double time = std::abs(second.position() - whole.position()) / whole.position();
+        qInfo("stenosis pipe at 0.1 mm on the GPU, saved at step 150 and gone on to 300 against the run that went "
+              "on: %zu / %zu particles, %zu of its %zu fluid particles given at the start compared; position %.3g of the spacing, velocity %.3g "
+              "of the largest speed, density %.3g (relative), time %.3g, inflow %.3g",
+              b.size(), a.size(), compared, fluid, dx / (1e-3 * pipe.spacingMm), dv / speed, drho / 1060.0, time,
+              inflowDifference);
+        QCOMPARE(b.size(), a.size());
+        QVERIFY(fluid > 0 && compared == fluid);
+        QVERIFY(dx / (1e-3 * pipe.spacingMm) <= 1e-3 && dv / speed <= 3e-4 && drho / 1060.0 <= 1e-4);
+        QVERIFY(time <= 1e-4 && inflowDifference <= 1e-4);
     }
 
     void refusesWhatItDoesNotRun()

@@ -1,5 +1,7 @@
 #include "vsim/sim/sph/CrossSections.h"
 
+#include "vsim/core/Error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -77,6 +79,16 @@ std::vector<SectionFlow> SectionSeries::averages() const
             *value /= m_weight;
     }
     return averages;
+}
+
+void SectionSeries::restore(Sums sums)
+{
+    const bool none = sums.flows.empty() && sums.largestPeaks.empty();
+    if (!none && (sums.flows.size() != m_sections.size() || sums.largestPeaks.size() != m_sections.size()))
+        throw Error(Pattern{"the saved section averages are for %1 sections, this run has %2",
+                            {std::to_string(sums.flows.size()), std::to_string(m_sections.size())}});
+    m_schedule.restore(sums.schedule);
+    m_weight = sums.weightS, m_sums = std::move(sums.flows), m_largestPeak = std::move(sums.largestPeaks);
 }
 
 } // namespace vsim::sim::sph

@@ -213,4 +213,13 @@ void OpenBoundaries::impose(ParticleState& particles, const NeighbourGrid& grid,
     }
 }
 
+void OpenBoundaries::restoreLast(std::vector<double> flowRatesM3S, std::vector<double> pressuresPa)
+{
+    if (flowRatesM3S.size() != m_boundaries.size() || pressuresPa.size() != m_boundaries.size())
+        throw Error(Pattern{"the saved run has %1 open boundaries, this run %2: the checkpoint belongs to another "
+                            "problem",
+                            {std::to_string(flowRatesM3S.size()), std::to_string(m_boundaries.size())}});
+    m_flowRate = std::move(flowRatesM3S), m_pressure = std::move(pressuresPa);
+}
+
 } // namespace vsim::sim::sph

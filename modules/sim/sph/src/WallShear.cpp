@@ -1,5 +1,7 @@
 #include "vsim/sim/sph/WallShear.h"
 
+#include "vsim/core/Error.h"
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -94,6 +96,15 @@ std::vector<WallLoadAverage> WallLoadSeries::averages() const
         a.osi = a.tawssPa > 0.0 ? 0.5 * (1.0 - a.meanShearPa.norm() / a.tawssPa) : 0.0;
     }
     return averages;
+}
+
+void WallLoadSeries::restore(Sums sums)
+{
+    if (!sums.points.empty() && sums.points.size() != m_points.size())
+        throw Error(Pattern{"the saved wall-load averages are for %1 points, this run has %2",
+                            {std::to_string(sums.points.size()), std::to_string(m_points.size())}});
+    m_schedule.restore(sums.schedule);
+    m_sums = std::move(sums.points);
 }
 
 } // namespace vsim::sim::sph

@@ -63,6 +63,17 @@ public:
     /// Forgets the samples (a new run).
     void reset() { m_weight = 0.0, m_schedule.reset(), m_sums.clear(), m_largestPeak.clear(); }
     void sampleEveryCall() { m_schedule.everyCall(); } ///< the caller keeps the cadence (SampleSchedule.h)
+    /// What the averages have summed so far and where their schedule stands (SphCheckpoint.h); restore() goes on
+    /// from it. Throws vsim::Error for sums of another number of sections.
+    struct Sums
+    {
+        double weightS = 0.0;
+        std::vector<SectionFlow> flows; ///< weighted sums
+        std::vector<double> largestPeaks;
+        SampleSchedule::State schedule;
+    };
+    Sums sums() const { return {m_weight, m_sums, m_largestPeak, m_schedule.state()}; }
+    void restore(Sums sums);
 
 private:
     std::vector<CrossSection> m_sections;

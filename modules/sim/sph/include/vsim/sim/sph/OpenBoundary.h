@@ -92,6 +92,9 @@ public:
     /// The last imposed pressure of boundary k (Pa above the reference; velocity prescribed: the mean of its buffer
     /// particles').
     double pressure(std::size_t k) const { return m_pressure.at(k); }
+    /// Puts back the last flow rates and pressures of a saved run (SphCheckpoint.h: a resistance outlet's pressure
+    /// follows its last outflow), after initialize(); throws vsim::Error for another number of boundaries.
+    void restoreLast(std::vector<double> flowRatesM3S, std::vector<double> pressuresPa);
     /// Where x (m) lies against boundary k: s = (x - c) . n (m; < 0 behind it) and whether it is within the disk.
     double signedDistance(std::size_t k, const Eigen::Vector3d& x) const { return (x - m_boundaries[k].centreM).dot(m_boundaries[k].normal); }
     bool withinDisk(std::size_t k, const Eigen::Vector3d& x) const;

@@ -52,12 +52,16 @@ struct ParticleState
     /// Puts every array in the grid's sorted order (the grid built on `position`).
     void reorder(const NeighbourGrid& grid);
 
-private:
-    /// Calls f on every per-particle array: the one list the copies, removals and reorders share.
+    /// Calls f on every per-particle array: the one list the copies, removals, reorders and checkpoints
+    /// (SphCheckpoint.h) share.
     template <class F> void forEachArray(F&& f)
     {
         f(position), f(velocity), f(density), f(mass), f(voidFraction), f(wall), f(wallDepth), f(guardDepth),
             f(boundary), f(tracer), f(backstop), f(id);
+    }
+    template <class F> void forEachArray(F&& f) const
+    {
+        const_cast<ParticleState*>(this)->forEachArray([&f](const auto& array) { f(array); });
     }
 };
 

@@ -30,6 +30,14 @@ public:
     /// Every call takes its sample from now on (a caller that already samples at its own cadence: SphSolver with
     /// another stepper).
     void everyCall() { m_every = 1; }
+    /// Where it stands (SphCheckpoint.h): the time since the last sample taken (s) and the calls so far.
+    struct State
+    {
+        double pendingS = 0.0;
+        long calls = 0;
+    };
+    State state() const { return {m_pending, m_calls}; }
+    void restore(State state) { m_pending = state.pendingS, m_calls = state.calls; }
 
 private:
     double m_from = 0.0, m_pending = 0.0; ///< s; m_pending: since the last sample taken

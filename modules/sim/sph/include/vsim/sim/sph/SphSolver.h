@@ -22,6 +22,7 @@
 #include "vsim/sim/sph/OpenBoundary.h"
 #include "vsim/sim/sph/ParticleState.h"
 #include "vsim/sim/sph/QuarticKernel.h"
+#include "vsim/sim/sph/SphCheckpoint.h"
 #include "vsim/sim/sph/SphRates.h"
 #include "vsim/sim/sph/SphStepper.h"
 
@@ -94,6 +95,14 @@ public:
         m_stepperFactory = std::move(factory), m_syncEvery = std::max(1, syncEvery);
     }
     bool steppedElsewhere() const { return m_stepper != nullptr; }
+    /// Goes on from a saved run (SphCheckpoint.h) at the next initialize(): the input's particles still set up the
+    /// box, the open boundaries' profiles and the walls (their depths, guard depths and backstop), then the saved
+    /// particles take their place, each wall particle matched to the input's by its number, with the saved time,
+    /// steps, mass ledger and time averages. initialize() throws vsim::Error when the saved walls or open
+    /// boundaries are not the input's. Null: start from the input.
+    void setStartState(std::shared_ptr<const SphCheckpoint> saved) { m_startState = std::move(saved); }
+    /// The run now, to go on from later (the particles fetched from the stepper).
+    SphCheckpoint checkpoint() const;
     void initialize(const SimulationInput& input, const ParameterSet& parameters) override;
     RunAxis axis() const override { return {"time", "s", m_endTimeS}; }
     double position() const override { return m_timeS; }
@@ -127,6 +136,8 @@ private:
     void releaseBackstopAtOpenEnds();
     /// Sets ParticleState::guardDepth from the particles as given (SphSolver.cpp).
     void setGuardDepths();
+    /// Puts the saved run in place of the particles as given (setStartState); true when it took the saved rates.
+    bool goOnFrom(const SphCheckpoint& saved);
     /// A step on the other stepper, and every m_syncEvery steps the particles back and the samples.
     StepOutcome stepElsewhere();
 
@@ -137,6 +148,7 @@ private:
     mutable bool m_stale = false;
     SphStepperFactory m_stepperFactory;
     std::unique_ptr<SphStepper> m_stepper;
+    std::shared_ptr<const SphCheckpoint> m_startState;
     int m_syncEvery = 10;
     double m_pendingS = 0.0; ///< stepped since the last samples (s)
     SphRates m_rates;

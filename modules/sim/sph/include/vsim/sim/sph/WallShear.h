@@ -70,6 +70,15 @@ public:
     std::vector<WallLoadAverage> averages() const;
     void reset() { m_schedule.reset(), m_sums.clear(); }
     void sampleEveryCall() { m_schedule.everyCall(); } ///< the caller keeps the cadence (SampleSchedule.h)
+    /// The weighted sums so far, one per point or none, and where the schedule stands (SphCheckpoint.h); restore()
+    /// goes on from them. Throws vsim::Error for sums of another number of points.
+    struct Sums
+    {
+        std::vector<WallLoadAverage> points;
+        SampleSchedule::State schedule;
+    };
+    Sums sums() const { return {m_sums, m_schedule.state()}; }
+    void restore(Sums sums);
 
 private:
     std::vector<WallPoint> m_points;
