@@ -187,7 +187,7 @@ try
         const ParticleState particles = gpu.download();
         grid.build(particles.position);
         sections.sample(particles, solver.fluid(), gpu.timeS(), pending);
-        wallLoads.sample(particles, grid, solver.fluid(), 1e-3 * pipe.spacingMm, gpu.timeS(), pending);
+        wallLoads.sample(particles, grid, solver.kernel(), solver.fluid(), 1e-3 * pipe.spacingMm, gpu.timeS(), pending);
         pending = 0.0;
         sampling += std::chrono::duration<double>(std::chrono::steady_clock::now() - stepEnd).count();
     }

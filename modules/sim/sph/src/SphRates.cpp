@@ -32,6 +32,28 @@ double relativeDensity(const ParticleState& particles, const FluidModel& fluid, 
 // Laplacian's normalisation on a lattice at h = 2 spacings to 0.9917 (the viscosity 0.8 % low); 0.001 gives 1.0002.
 constexpr double kEtaSquared = 0.001;
 
+/// The velocity difference the viscous term takes between i and neighbour j: at a wall particle of known depth the
+/// no-slip one, j moving opposite to i scaled by how much deeper it lies than i stands off the surface (Morris et al.
+/// 1997), v_ij = beta v_i; else v_i - v_j.
+Eigen::Vector3d viscousVelocityDifference(const ParticleState& particles, std::size_t i, std::size_t j,
+                                          double wallDistance, double h)
+{
+    const double depth = particles.wall[j] ? particles.wallDepth[j] : -1.0;
+    if (depth >= 0.0)
+        return std::min(kMorrisBetaMax, 1.0 + depth / std::max(wallDistance, 1e-3 * h)) * particles.velocity[i];
+    return particles.velocity[i] - particles.velocity[j];
+}
+
+/// Morris et al. 1997's viscous acceleration of i by j (Lo & Shao 2002 form), rDotGrad = x_ij . grad_i W_ij.
+Eigen::Vector3d viscousAcceleration(const ParticleState& particles, const FluidModel& fluid, std::size_t i,
+                                    std::size_t j, double rDotGrad, double r, double eta2, const Eigen::Vector3d& vij)
+{
+    const double muI = fluid.mixtureViscosity(particles.voidFraction[i]);
+    const double muJ = fluid.mixtureViscosity(particles.voidFraction[j]);
+    return particles.mass[j] * (muI + muJ) * rDotGrad /
+           (particles.density[i] * particles.density[j] * (r * r + eta2)) * vij;
+}
+
 /// What the main pass needs from a fluid particle's neighbourhood first: G_i (the delta-SPH term's correction,
 /// when it is on) and the distance to the nearest wall surface, min over wall neighbours of |x_ij| - depth_j
 /// (infinite when none has a known depth). See SphRates.h.
@@ -139,14 +161,9 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                 if (!wallI)
                 {
                     force -= mJ * (pI / (rhoI * rhoI) + pressure[sj] / (rhoJ * rhoJ)) * gradW;
-                    // No slip at a wall particle of known depth: it moves opposite to i, scaled by how much deeper
-                    // it lies than i stands off the surface (Morris et al. 1997), v_ij = beta v_i.
-                    const double depth = wallJ ? particles.wallDepth[sj] : -1.0;
-                    const Eigen::Vector3d viscousVij =
-                        depth >= 0.0 ? std::min(kMorrisBetaMax, 1.0 + depth / std::max(rates.wallDistance[si], 1e-3 * h)) * vi
-                                     : vij;
-                    const double muJ = fluid.mixtureViscosity(particles.voidFraction[sj]);
-                    force += mJ * (muI + muJ) * rDotGrad / (rhoI * rhoJ * (r * r + eta2)) * viscousVij;
+                    force += viscousAcceleration(
+                        particles, fluid, si, sj, rDotGrad, r, eta2,
+                        viscousVelocityDifference(particles, si, sj, rates.wallDistance[si], h));
                     if (particles.backstop[sj])
                         force += fluid.wallRepulsionFactor(r) * rij;
                     if (shifting) // grad C_i with the anti-clumping term (SphRates.h)
@@ -216,6 +233,26 @@ double stableTimeStep(const SphRates& rates, const QuarticKernel& kernel, const 
     if (rates.largestKinematicViscosity > 0.0) // the viscous limit at the particles' largest mu(s) / rho0(s)
         step = std::min(step, 0.125 * h * h / rates.largestKinematicViscosity);
     return step;
+}
+
+Eigen::Vector3d wallFrictionAcceleration(const ParticleState& particles, const NeighbourGrid& grid,
+                                         const QuarticKernel& kernel, const FluidModel& fluid, std::size_t i)
+{
+    const double h = kernel.smoothingLength(), eta2 = kEtaSquared * h * h;
+    double wallDistance = INFINITY; // as fluidNeighbourhood: min over wall neighbours of |x_ij| - depth_j
+    grid.forEachNeighbour(particles.position, int(i), [&](int j, const Eigen::Vector3d&, double r) {
+        if (particles.wall[std::size_t(j)] && particles.wallDepth[std::size_t(j)] >= 0.0)
+            wallDistance = std::min(wallDistance, r - particles.wallDepth[std::size_t(j)]);
+    });
+    Eigen::Vector3d friction = Eigen::Vector3d::Zero();
+    grid.forEachNeighbour(particles.position, int(i), [&](int j, const Eigen::Vector3d& rij, double r) {
+        const std::size_t sj = std::size_t(j);
+        if (!particles.wall[sj])
+            return;
+        friction += viscousAcceleration(particles, fluid, i, sj, rij.dot(kernel.gradient(rij, r)), r, eta2,
+                                        viscousVelocityDifference(particles, i, sj, wallDistance, h));
+    });
+    return friction;
 }
 
 } // namespace vsim::sim::sph

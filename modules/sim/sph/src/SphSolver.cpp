@@ -325,7 +325,7 @@ StepOutcome SphSolver::stepElsewhere()
         const ParticleState& p = particles();
         m_grid->build(p.position);
         m_sections.sample(p, m_fluid, m_timeS, m_pendingS);
-        m_wallLoads.sample(p, *m_grid, m_fluid, m_spacingM, m_timeS, m_pendingS);
+        m_wallLoads.sample(p, *m_grid, *m_kernel, m_fluid, m_spacingM, m_timeS, m_pendingS);
         m_pendingS = 0.0;
     }
     return {};
@@ -458,7 +458,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
     m_stepS = dt;
     ++m_steps;
     m_sections.sample(p, m_fluid, m_timeS, dt);
-    m_wallLoads.sample(p, *m_grid, m_fluid, m_spacingM, m_timeS, dt);
+    m_wallLoads.sample(p, *m_grid, *m_kernel, m_fluid, m_spacingM, m_timeS, dt);
     return {};
 }
 

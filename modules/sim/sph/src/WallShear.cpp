@@ -1,6 +1,7 @@
 #include "vsim/sim/sph/WallShear.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/sim/sph/SphRates.h"
 
 #include <Eigen/Dense>
 
@@ -9,22 +10,23 @@
 namespace vsim::sim::sph {
 namespace {
 
-constexpr double kDepthSpacings = 3.0;   // the fit reaches this deep into the fluid
-constexpr double kLateralSpacings = 1.5; // and this far along the wall
+constexpr double kPressureDepthSpacings = 3.0; // the pressure's line reaches this deep into the fluid
+constexpr double kLateralSpacings = 1.5;       // the columns' radius along the wall
 
 } // namespace
 
-WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, const FluidModel& fluid, double spacingM,
-                  const WallPoint& point)
+WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
+                  const FluidModel& fluid, double spacingM, const WallPoint& point)
 {
-    // Least squares over the fluid particles in the cylinder: u_t = u0 + a y + b y^2 (normal equations in
-    // (u0, a, b)) and p = p0 + c y.
-    Eigen::Matrix3d shearNormal = Eigen::Matrix3d::Zero();
-    Eigen::Matrix2d pressureNormal = Eigen::Matrix2d::Zero();
-    Eigen::Matrix3d shearRight = Eigen::Matrix3d::Zero();
-    Eigen::Vector2d pressureRight = Eigen::Vector2d::Zero();
-    const double deepest = kDepthSpacings * spacingM, widest = kLateralSpacings * spacingM;
+    // The friction over the column a support deep; the pressure's line p = p0 + c y (normal equations in (p0, c))
+    // over its first 3 spacings.
+    const double deepest = kernel.support(), pressureDepth = kPressureDepthSpacings * spacingM;
+    const double widest = kLateralSpacings * spacingM;
     const Eigen::Vector3d& n = point.normal;
+    Eigen::Vector3d friction = Eigen::Vector3d::Zero();
+    double volume = 0.0;
+    Eigen::Matrix2d pressureNormal = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d pressureRight = Eigen::Vector2d::Zero();
     grid.forEachNear(particles.position, grid.wrap(point.positionM + 0.5 * deepest * n), -1,
                      [&](int j, const Eigen::Vector3d& rij, double) {
                          const std::size_t k = std::size_t(j);
@@ -34,30 +36,27 @@ WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, con
                          const double y = offset.dot(n);
                          if (!(y > 0.0) || y > deepest || (offset - y * n).norm() > widest)
                              return;
-                         const double eta = y / spacingM; // the fits in spacings: well scaled
-                         const Eigen::Vector3d basis(1.0, eta, eta * eta);
-                         const Eigen::Vector2d affine(1.0, eta);
-                         const Eigen::Vector3d& u = particles.velocity[k];
-                         shearNormal += basis * basis.transpose();
-                         shearRight += basis * (u - u.dot(n) * n).transpose();
+                         friction += particles.mass[k] * wallFrictionAcceleration(particles, grid, kernel, fluid, k);
+                         volume += particles.mass[k] / particles.density[k];
+                         if (y > pressureDepth)
+                             return;
+                         const Eigen::Vector2d affine(1.0, y / spacingM); // in spacings: well scaled
                          pressureNormal += affine * affine.transpose();
                          pressureRight +=
                              affine * fluid.reportedPressure(particles.density[k], particles.voidFraction[k]);
                      });
     WallLoad load;
-    // The fits need particles at three depths at least (the lattice gives three layers).
-    if (!(std::abs(shearNormal.determinant()) > 1e-12 * shearNormal.squaredNorm()) ||
-        !(std::abs(pressureNormal.determinant()) > 1e-12 * pressureNormal.squaredNorm()))
+    // The line needs particles at two depths at least (the lattice gives three layers).
+    if (!(volume > 0.0) || !(std::abs(pressureNormal.determinant()) > 1e-12 * pressureNormal.squaredNorm()))
         return load;
-    const Eigen::Matrix3d coefficients = shearNormal.ldlt().solve(shearRight);
-    load.shearPa = fluid.viscosity / spacingM * coefficients.row(1).transpose();
+    load.shearPa = -(friction - friction.dot(n) * n) / (volume / deepest);
     load.pressurePa = pressureNormal.ldlt().solve(pressureRight)[0];
     load.valid = true;
     return load;
 }
 
-void WallLoadSeries::sample(const ParticleState& particles, const NeighbourGrid& grid, const FluidModel& fluid,
-                            double spacingM, double timeS, double weightS)
+void WallLoadSeries::sample(const ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
+                            const FluidModel& fluid, double spacingM, double timeS, double weightS)
 {
     const double weight = m_points.empty() ? 0.0 : m_schedule.due(timeS, weightS);
     if (!(weight > 0.0))
@@ -67,7 +66,7 @@ void WallLoadSeries::sample(const ParticleState& particles, const NeighbourGrid&
 #pragma omp parallel for schedule(dynamic, 16)
     for (std::ptrdiff_t k = 0; k < std::ptrdiff_t(m_points.size()); ++k)
     {
-        const WallLoad load = wallLoad(particles, grid, fluid, spacingM, m_points[std::size_t(k)]);
+        const WallLoad load = wallLoad(particles, grid, kernel, fluid, spacingM, m_points[std::size_t(k)]);
         if (!load.valid)
             continue;
         WallLoadAverage& sum = m_sums[std::size_t(k)];

@@ -68,6 +68,12 @@ std::vector<double> pressures(const ParticleState& particles, const FluidModel& 
 void computeRates(const ParticleState& particles, const std::vector<double>& pressure, const NeighbourGrid& grid,
                   const QuarticKernel& kernel, const FluidModel& fluid, double timeS, SphRates& rates);
 
+/// The viscous acceleration the wall particles alone give fluid particle i (m/s^2): computeRates's viscous term over
+/// i's wall neighbours, with the no-slip wall velocity (the backstop left out): the walls' friction on it. `grid`
+/// built on the particles' positions (WallShear.h sums it into the wall shear stress).
+Eigen::Vector3d wallFrictionAcceleration(const ParticleState& particles, const NeighbourGrid& grid,
+                                         const QuarticKernel& kernel, const FluidModel& fluid, std::size_t i);
+
 /// The wall particles' pressure from the fluid around them (Adami, Hu & Adams 2012, J Comput Phys 231:7057, for walls at
 /// rest): p_w = sum_f W+_wf (p_f + rho_f g . (x_w - x_f)) / sum_f W+_wf, W+ = max(W, 0) (the quartic kernel's negative
 /// lobe near 2h let a deep wall particle's sum of weights vanish: sph-mass blew up), over the fluid and buffer particles f

@@ -1,15 +1,21 @@
 #pragma once
 
 // The blood's load on the vessel wall from the particles (issue 18): at points on the wall's surface (the lumen
-// surface's vertices, or a validation case's analytic wall) with their unit normals into the lumen, from the fluid
-// particles in a cylinder on the point (3 lattice spacings deep along the normal, 1.5 across; the first three
-// layers of a lattice):
-//   wall shear stress  tau_w = mu du_t/dn at the wall, u_t the particles' velocities less their normal part, from
-//                      the least-squares parabola u_t = u0 + a y + b y^2 in the depth y: tau_w = mu a. The intercept
-//                      is fitted, not set to 0: the particles next to the wall carry a small apparent slip, and with
-//                      u0 = 0 sph-poiseuille read 5.9 % high (1.6e-3 with it). Interpolating u_t at probes by the FPM
-//                      first read 20 % high: its support, 4 spacings, is wider than the profile's curvature allows.
-//   wall pressure      the least-squares line p = p0 + c y, its value at the wall p0.
+// surface's vertices, or a validation case's analytic wall) with their unit normals into the lumen:
+//   wall shear stress  the friction the walls give the fluid: the tangential part of sum_i m_i a_i^wall over the fluid
+//                      particles in a column on the point (a kernel support deep along the normal, 1.5 lattice
+//                      spacings across), a_i^wall the viscous acceleration from the wall particles alone with their
+//                      no-slip velocity (SphRates.h: wallFrictionAcceleration), over the column's cross-section
+//                      sum_i V_i / depth (the same particles' volume: the lattice columns the disk happens to hold
+//                      cancel). It is the momentum the walls take out of the flow, so a boundary layer the particles
+//                      resolve coarsely still gives the friction the flow felt. It replaced (2026-12-01) a
+//                      least-squares parabola u_t = u0 + a y + b y^2 through the particles' velocities 3 spacings
+//                      deep (tau_w = mu a), which read a stenosis throat's boundary layer of about a spacing 44 % low
+//                      (Re 97, 0.05 mm: 15.1 against OpenFOAM's 27.1 Pa, friction 21.2) and 60 % low at Re 200 (27.9
+//                      against 70.5, friction 51.1), and hundreds of Pa where the walls' backstop held the fluid off a
+//                      diverging wall (RESULTS.md).
+//   wall pressure      the least-squares line p = p0 + c y through the fluid particles in a cylinder 3 spacings deep
+//                      and 1.5 across, its value at the wall p0.
 // WallLoadSeries averages them over time from a given time on: the time-averaged WSS (TAWSS, the mean of |tau_w|),
 // the oscillatory shear index OSI = (1 - |mean tau_w| / mean |tau_w|) / 2 (Ku et al. 1985; 0 for a steady flow) and
 // the mean wall pressure. SI: m, Pa.
@@ -17,6 +23,7 @@
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
 #include "vsim/sim/sph/ParticleState.h"
+#include "vsim/sim/sph/QuarticKernel.h"
 #include "vsim/sim/sph/SampleSchedule.h"
 
 #include <Eigen/Core>
@@ -35,13 +42,13 @@ struct WallLoad
 {
     Eigen::Vector3d shearPa = Eigen::Vector3d::Zero(); ///< tau_w, tangential (on the wall, in the flow's direction)
     double pressurePa = 0.0;
-    bool valid = false; ///< false where the cylinder holds fluid particles at fewer than three depths (past an open end)
+    bool valid = false; ///< false where the cylinder holds fluid particles at fewer than two depths (past an open end)
 };
 
-/// The load at `point` from the fluid particles of `particles` (the grid built on their positions; its reach at least
-/// 2.2 lattice spacings `spacingM`: the cylinder's corners from its centre), the blood's viscosity from `fluid`.
-WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, const FluidModel& fluid, double spacingM,
-                  const WallPoint& point);
+/// The load at `point` from the fluid particles of `particles` (the grid built on their positions with the kernel's
+/// support as its reach), the blood's viscosity from `fluid`, the lattice spacing `spacingM`.
+WallLoad wallLoad(const ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
+                  const FluidModel& fluid, double spacingM, const WallPoint& point);
 
 struct WallLoadAverage
 {
@@ -64,8 +71,8 @@ public:
     }
     bool empty() const { return m_points.empty(); }
     const std::vector<WallPoint>& points() const { return m_points; }
-    void sample(const ParticleState& particles, const NeighbourGrid& grid, const FluidModel& fluid, double spacingM,
-                double timeS, double weightS);
+    void sample(const ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
+                const FluidModel& fluid, double spacingM, double timeS, double weightS);
     /// The time averages per point (zeros before any sample).
     std::vector<WallLoadAverage> averages() const;
     void reset() { m_schedule.reset(), m_sums.clear(); }
