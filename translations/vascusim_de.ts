@@ -4105,6 +4105,46 @@
         <source>particle shifting (particle_shifting &gt; 0) needs a fluid that fills its vessel: a free surface (free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; set particle_shifting 0</source>
         <translation>Partikelverschiebung (particle_shifting &gt; 0) braucht ein Fluid, das sein Gefäß füllt: eine freie Oberfläche (free_surface 1) oder ein Fluid ohne Zugspannung (fluid_tension 0) würde an seinem Rand auseinandergedrückt; particle_shifting 0 setzen</translation>
     </message>
+    <message>
+        <source>the saved section averages are for %1 sections, this run has %2</source>
+        <translation>die gespeicherten Querschnittsmittel gelten für %1 Querschnitte, dieser Lauf hat %2</translation>
+    </message>
+    <message>
+        <source>the saved run has %1 open boundaries, this run %2: the checkpoint belongs to another problem</source>
+        <translation>der gespeicherte Lauf hat %1 offene Ränder, dieser Lauf %2: der Sicherungspunkt gehört zu einem anderen Problem</translation>
+    </message>
+    <message>
+        <source>the SPH checkpoint is cut short or damaged</source>
+        <translation>der SPH-Sicherungspunkt ist abgeschnitten oder beschädigt</translation>
+    </message>
+    <message>
+        <source>will not replace a file that is not an SPH checkpoint</source>
+        <translation>eine Datei, die kein SPH-Sicherungspunkt ist, wird nicht ersetzt</translation>
+    </message>
+    <message>
+        <source>cannot write the SPH checkpoint</source>
+        <translation>der SPH-Sicherungspunkt kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>cannot open the SPH checkpoint</source>
+        <translation>der SPH-Sicherungspunkt kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>not an SPH checkpoint of this version (its first line is not &apos;VSIM-SPH-CHECKPOINT 1&apos;)</source>
+        <translation>kein SPH-Sicherungspunkt dieser Version (seine erste Zeile ist nicht &apos;VSIM-SPH-CHECKPOINT 1&apos;)</translation>
+    </message>
+    <message>
+        <source>the saved run&apos;s wall particle %1 is not this run&apos;s: the checkpoint belongs to another problem</source>
+        <translation>das Wandpartikel %1 des gespeicherten Laufs gehört nicht zu diesem Lauf: der Sicherungspunkt gehört zu einem anderen Problem</translation>
+    </message>
+    <message>
+        <source>the saved run has %1 wall particles, this run %2: the checkpoint belongs to another problem</source>
+        <translation>der gespeicherte Lauf hat %1 Wandpartikel, dieser Lauf %2: der Sicherungspunkt gehört zu einem anderen Problem</translation>
+    </message>
+    <message>
+        <source>the saved wall-load averages are for %1 points, this run has %2</source>
+        <translation>die gespeicherten Wandlastmittel gelten für %1 Punkte, dieser Lauf hat %2</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

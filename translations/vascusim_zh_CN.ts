@@ -4105,6 +4105,46 @@
         <source>particle shifting (particle_shifting &gt; 0) needs a fluid that fills its vessel: a free surface (free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; set particle_shifting 0</source>
         <translation>粒子位移（particle_shifting &gt; 0）需要充满其血管的流体：自由表面（free_surface 1）或无张力流体（fluid_tension 0）会在边缘被推开；请设置 particle_shifting 0</translation>
     </message>
+    <message>
+        <source>the saved section averages are for %1 sections, this run has %2</source>
+        <translation>保存的截面平均值对应 %1 个截面，本次运行有 %2 个</translation>
+    </message>
+    <message>
+        <source>the saved run has %1 open boundaries, this run %2: the checkpoint belongs to another problem</source>
+        <translation>保存的运行有 %1 个开放边界，本次运行有 %2 个：该检查点属于另一个问题</translation>
+    </message>
+    <message>
+        <source>the SPH checkpoint is cut short or damaged</source>
+        <translation>SPH 检查点不完整或已损坏</translation>
+    </message>
+    <message>
+        <source>will not replace a file that is not an SPH checkpoint</source>
+        <translation>不会替换非 SPH 检查点的文件</translation>
+    </message>
+    <message>
+        <source>cannot write the SPH checkpoint</source>
+        <translation>无法写入 SPH 检查点</translation>
+    </message>
+    <message>
+        <source>cannot open the SPH checkpoint</source>
+        <translation>无法打开 SPH 检查点</translation>
+    </message>
+    <message>
+        <source>not an SPH checkpoint of this version (its first line is not &apos;VSIM-SPH-CHECKPOINT 1&apos;)</source>
+        <translation>不是此版本的 SPH 检查点（其第一行不是 &apos;VSIM-SPH-CHECKPOINT 1&apos;）</translation>
+    </message>
+    <message>
+        <source>the saved run&apos;s wall particle %1 is not this run&apos;s: the checkpoint belongs to another problem</source>
+        <translation>保存的运行中的壁面粒子 %1 不属于本次运行：该检查点属于另一个问题</translation>
+    </message>
+    <message>
+        <source>the saved run has %1 wall particles, this run %2: the checkpoint belongs to another problem</source>
+        <translation>保存的运行有 %1 个壁面粒子，本次运行有 %2 个：该检查点属于另一个问题</translation>
+    </message>
+    <message>
+        <source>the saved wall-load averages are for %1 points, this run has %2</source>
+        <translation>保存的壁面载荷平均值对应 %1 个点，本次运行有 %2 个</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
