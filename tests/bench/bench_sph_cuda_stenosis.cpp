@@ -125,8 +125,8 @@ try
         auto saved = std::make_shared<SphCheckpoint>(readSphCheckpoint(checkpointFile));
         counters = saved->counters;
         solver.setStartState(saved);
-        std::fprintf(stderr, "going on from %s at t = %.3f ms, step %ld\n", checkpointFile.c_str(),
-                     1e3 * saved->timeS, saved->steps);
+        std::fprintf(stderr, "going on from %s at t = %.3f ms, step %ld (density variation then %.4g)\n",
+                     checkpointFile.c_str(), 1e3 * saved->timeS, saved->steps, counters["density_variation_at_save"]);
     }
     solver.initialize(input, parameters);
     SectionSeries sections = solver.sections();
@@ -138,6 +138,7 @@ try
     double pending = counters["pending_s"], largestVariation = counters["largest_density_variation"],
            largestAtS = counters["largest_density_variation_at_s"], stepping = counters["stepping_seconds"],
            sampling = counters["sampling_seconds"];
+    counters["steps_at_start"] = double(steps);
     const double earlierSeconds = counters["seconds"];
     const long earlierCalls = long(counters["calls"]);
     // Saves the run (the final state too, so that the settled flow can be read again: WallShear.h's estimators).
@@ -151,7 +152,8 @@ try
                                           {"stepping_seconds", stepping},
                                           {"sampling_seconds", sampling},
                                           {"seconds", seconds},
-                                          {"calls", double(earlierCalls + 1)}}),
+                                          {"calls", double(earlierCalls + 1)},
+                                          {"density_variation_at_save", gpu.largestDensityVariation()}}),
                            checkpointFile);
     };
     while (gpu.timeS() < endS)
@@ -172,6 +174,9 @@ try
         pending += gpu.lastStepS();
         if (gpu.largestDensityVariation() > largestVariation)
             largestVariation = gpu.largestDensityVariation(), largestAtS = gpu.timeS();
+        if (steps - long(counters["steps_at_start"]) <= 3 && counters.count("density_variation_at_save"))
+            std::fprintf(stderr, "step %ld after going on: density variation %.4g\n", steps,
+                         gpu.largestDensityVariation());
         if (steps % 5000 == 0) // progress on stderr: how far a run that a time limit stops came
             std::fprintf(stderr, "t = %.3f ms of %.3f, %ld steps, largest density variation so far %.3g\n",
                          1e3 * gpu.timeS(), 1e3 * endS, steps, largestVariation);

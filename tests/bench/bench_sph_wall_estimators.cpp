@@ -6,7 +6,10 @@
 // object: the throat slab's means and every ring.
 //
 //   bench_sph_wall_estimators <checkpoint> <spacing mm> [mean speed m/s] [length mm] [particle shifting A]
-//                             [solver parameter=value]...
+//                             [solver parameter=value]... [--steps N]
+//
+// --steps goes on N steps on the CPU first, printing each step's largest density variation (stderr): whether a
+// saved GPU run goes on smoothly in double precision.
 //
 // The arguments after the checkpoint are bench_sph_cuda_stenosis's (its every and sound speed left out: the sound
 // speed follows the speed as there).
@@ -28,6 +31,9 @@ using namespace vsim::sim::sph;
 int main(int argc, char** argv)
 try
 {
+    long cpuSteps = 0;
+    if (argc > 2 && std::string(argv[argc - 2]) == "--steps")
+        cpuSteps = std::stol(argv[argc - 1]), argc -= 2;
     if (argc < 3)
     {
         std::fprintf(stderr, "usage: bench_sph_wall_estimators <checkpoint> <spacing mm> [mean speed m/s] [length mm] "
@@ -50,6 +56,17 @@ try
     const auto saved = std::make_shared<SphCheckpoint>(readSphCheckpoint(argv[1]));
     solver.setStartState(saved);
     solver.initialize(input, parameters);
+    for (long step = 0; step < cpuSteps; ++step)
+    {
+        RunStatus status;
+        const sim::StepOutcome outcome = solver.step(status, {});
+        const auto metrics = solver.metrics();
+        std::fprintf(stderr, "CPU step %ld: t = %.6f ms, largest density variation %.5f%s\n", step + 1,
+                     1e3 * solver.position(), metrics.at("largest_density_variation"),
+                     outcome.kind == sim::StepOutcome::Kind::Guard ? " (a guard stopped it)" : "");
+        if (outcome.kind == sim::StepOutcome::Kind::Guard)
+            break;
+    }
     const ParticleState& particles = solver.particles();
     NeighbourGrid grid(solver.kernel().support());
     grid.build(particles.position);
