@@ -783,10 +783,6 @@
         <translation>Volumenstrom Engstelle / stromauf (1 im eingeschwungenen Zustand)</translation>
     </message>
     <message>
-        <source>Wall loads on the lumen surface (the same run and window; tau_w from the particles next to the wall)</source>
-        <translation>Wandlasten auf der Lumenoberfläche (derselbe Lauf und dasselbe Zeitfenster; tau_w aus den wandnahen Partikeln)</translation>
-    </message>
-    <message>
         <source>Largest time-averaged wall shear stress (TAWSS)</source>
         <translation>Größte zeitgemittelte Wandschubspannung (TAWSS)</translation>
     </message>
@@ -1293,6 +1289,10 @@
     <message>
         <source>Scenario</source>
         <translation>Szenario</translation>
+    </message>
+    <message>
+        <source>Wall loads on the lumen surface (the same run and window; tau_w: the walls&apos; friction on the particles next to them)</source>
+        <translation>Wandlasten auf der Lumenoberfläche (derselbe Lauf und dasselbe Zeitfenster; tau_w: die Reibung der Wand an den wandnahen Partikeln)</translation>
     </message>
 </context>
 <context>

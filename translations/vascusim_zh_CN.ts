@@ -783,10 +783,6 @@
         <translation>流量 喉部 / 上游（稳定时为 1）</translation>
     </message>
     <message>
-        <source>Wall loads on the lumen surface (the same run and window; tau_w from the particles next to the wall)</source>
-        <translation>管腔表面的壁面载荷（同一运行与时间窗；tau_w 由近壁粒子计算）</translation>
-    </message>
-    <message>
         <source>Largest time-averaged wall shear stress (TAWSS)</source>
         <translation>最大时间平均壁面切应力（TAWSS）</translation>
     </message>
@@ -1293,6 +1289,10 @@
     <message>
         <source>Scenario</source>
         <translation>场景</translation>
+    </message>
+    <message>
+        <source>Wall loads on the lumen surface (the same run and window; tau_w: the walls&apos; friction on the particles next to them)</source>
+        <translation>管腔表面的壁面载荷（同一运行与时间窗；tau_w：壁面对近壁粒子的摩擦力）</translation>
     </message>
 </context>
 <context>

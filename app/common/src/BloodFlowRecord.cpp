@@ -95,8 +95,9 @@ nlohmann::json wallLoadsJson(const TriangleMesh& surface)
     const std::optional<WallLoadSummary> w = summariseWallLoads(surface);
     if (!w)
         return nullptr;
-    nlohmann::json json{{"definition", "on the lumen surface's vertices, time-averaged with the sections; tau_w = mu "
-                                       "du_t/dn from a least-squares parabola over the particles 3 spacings deep"},
+    nlohmann::json json{{"definition", "on the lumen surface's vertices, time-averaged with the sections; tau_w the "
+                                       "friction the wall particles put on the fluid particles in a column a kernel "
+                                       "support deep (Morris' no-slip viscous term), over the column's cross-section"},
                         {"vertices", w->vertices},
                         {"sampled_vertices", w->sampled}};
     for (const auto& [key, value, vertex, definition] : wallLoadRows(surface, *w))

@@ -147,8 +147,8 @@ std::optional<report::Section> stenosisSection(const study::Study& study, Vessel
     if (flow->attributes.count("wall_largest_tawss_pa"))
     {
         report::MetricTable wall{localized("Report",
-                                           "Wall loads on the lumen surface (the same run and window; tau_w from "
-                                           "the particles next to the wall)"),
+                                           "Wall loads on the lumen surface (the same run and window; tau_w: the "
+                                           "walls' friction on the particles next to them)"),
                                  {}};
         addMetrics(
             wall, *flow,
