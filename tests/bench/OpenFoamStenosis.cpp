@@ -20,6 +20,22 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kMarker = "VASCUSIM-OPENFOAM-CASE";
+constexpr const char* kSolvedKey = "VASCUSIM-OPENFOAM-SOLVED"; // the case solved here (caseKey), written last
+constexpr const char* kSolvedSeconds = "VASCUSIM-OPENFOAM-SECONDS";
+
+/// What the solution depends on: the pipe's geometry and flow and the mesh (not the particles' spacing, which sets
+/// only the sections the fields are read through).
+std::string caseKey(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh)
+{
+    std::ostringstream key;
+    key.precision(17);
+    key << "radius_mm " << pipe.radiusMm << " length_mm " << pipe.lengthMm << " throat_mm " << pipe.throatAtMm
+        << " half_length_mm " << pipe.halfLengthMm << " mean_speed_m_s " << pipe.meanSpeedMS << " density "
+        << pipe.densityKgM3 << " viscosity " << pipe.viscosityPaS << " axial " << mesh.axialCells << " radial "
+        << mesh.radialCells << " grading " << mesh.wallGrading << " wedge " << mesh.wedgeDegrees << " classic "
+        << mesh.classicSimple << "\n";
+    return key.str();
+}
 
 std::string header(const std::string& type, const std::string& object)
 {
@@ -262,26 +278,40 @@ sim::sph::SectionFlow sectionOfCells(const sim::sph::StenosisPipe& pipe, double 
 OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh,
                                          const fs::path& directory)
 {
-    if (fs::exists(directory))
-    {
-        if (!fs::exists(directory / kMarker))
-            throw Error(directory.string() + " exists and is not a case of this bench: not touched");
-        fs::remove_all(directory);
-    }
-    fs::create_directories(directory);
-    write(directory / kMarker, "written by VascuSim's bench_sph_openfoam; the whole folder is replaced by its next run\n");
-    if (!std::getenv("WM_PROJECT_DIR") && fs::exists("/usr/share/openfoam/etc/controlDict"))
-        setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 0); // Debian's layout; the binaries need it to find etc/
-
-    const auto start = std::chrono::steady_clock::now();
-    writeCase(pipe, mesh, directory);
-    run(directory, "blockMesh", "log.blockMesh");
-    run(directory, "postProcess -func writeCellCentres -time 0", "log.writeCellCentres");
-    writeInflow(pipe, directory);
-    run(directory, "simpleFoam", "log.simpleFoam");
-    run(directory, "postProcess -func writeCellVolumes -latestTime", "log.writeCellVolumes");
     OpenFoamStenosisFlow flow;
-    flow.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string key = caseKey(pipe, mesh);
+    const bool solved = fs::exists(directory / kMarker) && fs::exists(directory / kSolvedKey) &&
+                        read(directory / kSolvedKey) == key;
+    if (solved) // the same case solved before: read again (the sections' slabs follow the spacing, the case does not)
+    {
+        flow.reused = true;
+        flow.seconds = std::stod(read(directory / kSolvedSeconds));
+    }
+    else
+    {
+        if (fs::exists(directory))
+        {
+            if (!fs::exists(directory / kMarker))
+                throw Error(directory.string() + " exists and is not a case of this bench: not touched");
+            fs::remove_all(directory);
+        }
+        fs::create_directories(directory);
+        write(directory / kMarker, "written by VascuSim's bench_sph_openfoam; the whole folder is replaced by its next "
+                                   "run of another case (" + std::string(kSolvedKey) + " names the one it holds)\n");
+        if (!std::getenv("WM_PROJECT_DIR") && fs::exists("/usr/share/openfoam/etc/controlDict"))
+            setenv("WM_PROJECT_DIR", "/usr/share/openfoam", 0); // Debian's layout; the binaries need it to find etc/
+
+        const auto start = std::chrono::steady_clock::now();
+        writeCase(pipe, mesh, directory);
+        run(directory, "blockMesh", "log.blockMesh");
+        run(directory, "postProcess -func writeCellCentres -time 0", "log.writeCellCentres");
+        writeInflow(pipe, directory);
+        run(directory, "simpleFoam", "log.simpleFoam");
+        run(directory, "postProcess -func writeCellVolumes -latestTime", "log.writeCellVolumes");
+        flow.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        write(directory / kSolvedSeconds, std::to_string(flow.seconds));
+        write(directory / kSolvedKey, key);
+    }
 
     // One pressure solve per SIMPLE iteration (no non-orthogonal correctors).
     const std::string log = read(directory / "log.simpleFoam");

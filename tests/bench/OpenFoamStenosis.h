@@ -39,12 +39,14 @@ struct OpenFoamStenosisFlow
     int cells = 0, iterations = 0;
     double pressureResidual = 0.0; ///< the last SIMPLE iteration's initial pressure residual
     bool converged = false;        ///< simpleFoam stopped at its residual control
-    double seconds = 0.0;          ///< blockMesh + simpleFoam + the field writers
+    double seconds = 0.0;          ///< blockMesh + simpleFoam + the field writers (when it was solved)
+    bool reused = false;           ///< read from the same case solved before in its folder
 };
 
 /// Writes and runs the case in `directory` (created; a directory that exists must hold an earlier case of this
-/// bench, marked by its file VASCUSIM-OPENFOAM-CASE, and is then replaced). Throws vsim::Error when a step fails,
-/// naming its log.
+/// bench, marked by its file VASCUSIM-OPENFOAM-CASE, and is then replaced), or reads the solution there again when
+/// that earlier run solved the same case (the same pipe, flow and mesh; another spacing reads it through other
+/// sections). Throws vsim::Error when a step fails, naming its log.
 OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh,
                                          const std::filesystem::path& directory);
 

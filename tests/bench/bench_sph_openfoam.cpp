@@ -22,7 +22,8 @@
 // it (the SPH may run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2, or on the GPU:
 // bench_sph_cuda_stenosis). --openfoam-only runs the two OpenFOAM meshes alone and prints their figures (exit 1
 // when one does not converge). --classic-simple solves with SIMPLE's relaxation in place of SIMPLEC's
-// (OpenFoamStenosis.h). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
+// (OpenFoamStenosis.h). A work folder that holds the same OpenFOAM cases solved before (another --spacing or
+// --sph-in) is read again ("reused" in the JSON, the seconds its solve's). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
 // not installed (`scripts/install-deps.sh --bench`).
 
 #include "OpenFoamStenosis.h"
@@ -65,7 +66,7 @@ std::vector<bench::OpenFoamMesh> openFoamMeshes(const sim::sph::StenosisPipe& pi
 json openFoamJson(const bench::OpenFoamStenosisFlow& f)
 {
     return {{"cells", f.cells}, {"iterations", f.iterations}, {"converged", f.converged},
-            {"pressure_residual", f.pressureResidual}, {"seconds", f.seconds},
+            {"pressure_residual", f.pressureResidual}, {"seconds", f.seconds}, {"reused", f.reused},
             {"inlet_flow_rate_m3s", f.inletFlowRateM3S}, {"figures", figuresJson(f.figures)},
             {"throat_wss_pa", f.throatWallShearPa}};
 }
