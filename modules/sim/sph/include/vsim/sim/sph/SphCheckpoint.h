@@ -1,16 +1,17 @@
 #pragma once
 
 // A saved SPH run to go on from (issue 18): a GPU run longer than one call of the device it runs on (the
-// benches' --checkpoint), written at a step's end, read back by SphSolver::setStartState before its initialize().
-// The leapfrog step evaluates its rates once, from the state at the step's start, so the particles, the time and
-// the counters are the whole state: a resumed run computes the same rates and time steps as one that went on
-// (up to the summation order of the particles' new sorting).
+// benches' --checkpoint), written at a step's end, read back by SphSolver::setStartState before its
+// initialize(). The leapfrog step takes its first kick with rates evaluated between the last step's two kicks,
+// so the checkpoint holds them beside the particles (in their order), the time and the counters: a CPU run
+// gone on from one is the run that did not stop, to the last bit (tst_sph_stepper).
 //
 // The file is binary, in the writing machine's byte order and double precision (the same program on a machine
 // of the same kind reads it back; not an exchange format): the header line "VSIM-SPH-CHECKPOINT 1", then the
 // counters, the mass ledger, the particles (every ParticleState array), the rates of the next kick, the open
-// boundaries' last flow rates and pressures, the time averages' sums and the caller's named numbers. It is written beside its name and renamed over it, so that a run stopped while writing leaves
-// the last whole checkpoint.
+// boundaries' last flow rates and pressures, the time averages' sums and the caller's named numbers, and the
+// header again as the end mark. It is written beside its name and renamed over it, so that a run stopped while
+// writing leaves the last whole checkpoint.
 
 #include "vsim/sim/sph/CrossSections.h"
 #include "vsim/sim/sph/OpenBoundary.h"

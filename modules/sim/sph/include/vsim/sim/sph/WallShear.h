@@ -10,10 +10,10 @@
 //                      cancel). It is the momentum the walls take out of the flow, so a boundary layer the particles
 //                      resolve coarsely still gives the friction the flow felt. It replaced (2026-12-01) a
 //                      least-squares parabola u_t = u0 + a y + b y^2 through the particles' velocities 3 spacings
-//                      deep (tau_w = mu a), which read a stenosis throat's boundary layer of about a spacing 44 % low
-//                      (Re 97, 0.05 mm: 15.1 against OpenFOAM's 27.1 Pa, friction 21.2) and 60 % low at Re 200 (27.9
-//                      against 70.5, friction 51.1), and hundreds of Pa where the walls' backstop held the fluid off a
-//                      diverging wall (RESULTS.md).
+//                      deep (tau_w = mu a), which read a stenosis throat's boundary layer of about a spacing 47 % low
+//                      (Re 97, 0.05 mm: 15.1 against OpenFOAM's 28.5 Pa, the friction 22.0) and 60 % low at Re 200
+//                      (27.9 against 70.5, the friction 53.0), and hundreds of Pa where the walls' backstop held the
+//                      fluid off a diverging wall (RESULTS.md, 2026-12-01).
 //   wall pressure      the least-squares line p = p0 + c y through the fluid particles in a cylinder 3 spacings deep
 //                      and 1.5 across, its value at the wall p0.
 // WallLoadSeries averages them over time from a given time on: the time-averaged WSS (TAWSS, the mean of |tau_w|),
