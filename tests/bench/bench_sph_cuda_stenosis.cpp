@@ -12,8 +12,9 @@
 // --checkpoint goes on from FILE when it exists (SphCheckpoint.h: the particles, the time, the mass ledger, the
 // averages so far and this bench's own counters) and saves the run's end there; with --stop-after it saves the
 // run there once that many seconds have passed and exits 3: run the same command again to go on (a run longer
-// than one call of the device tool). The GPU gives no rates, so a resumed run evaluates them at the saved state
-// (SphCheckpoint.h); stderr gives the largest density variation at the save and over the first steps after it.
+// than one call of the device tool). The checkpoint holds the GPU's rates of the next kick, which the resumed run
+// takes (a checkpoint written before 2026-12-01 has none: the resumed run evaluates them at the saved state;
+// SphCheckpoint.h); stderr gives the largest density variation at the save and over the first steps after it.
 //
 // A mean speed (and length) other than the default's 0.05 m/s (5.6 mm) is StenosisPipe::atFlow's problem (Re 100
 // upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled), and the Courant number and
@@ -65,7 +66,7 @@ SphCheckpoint gpuCheckpoint(const SphSolver& solver, const cuda::CudaSph& gpu, l
 {
     SphCheckpoint c = solver.checkpoint();
     c.particles = gpu.download();
-    c.rates = {};
+    c.rates = gpu.nextRates();
     c.timeS = gpu.timeS(), c.steps = steps, c.ledger = gpu.massLedger();
     for (int id : c.particles.id)
         c.nextId = std::max(c.nextId, id + 1);

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <unordered_map>
 #include <vector>
 
 namespace vsim::cuda {
@@ -81,6 +82,28 @@ float asFloat(unsigned bits)
     float value;
     std::memcpy(&value, &bits, sizeof value);
     return value;
+}
+
+unsigned bitsOf(float value)
+{
+    unsigned bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+/// The indices of `id` in the order of the numbers they hold (download()'s order).
+std::vector<std::size_t> orderByNumber(const std::vector<int>& id)
+{
+    std::vector<std::size_t> order(id.size());
+    for (std::size_t s = 0; s < order.size(); ++s)
+        order[s] = s;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
+    return order;
+}
+
+float4 asFloat4(const Eigen::Vector3d& v)
+{
+    return make_float4(float(v.x()), float(v.y()), float(v.z()), 0.0f);
 }
 
 } // namespace
@@ -243,6 +266,37 @@ struct CudaSph::Device
         }
     }
 
+    /// Takes the saved rates of the next kick (SphSolver::savedStartRates, in the order of `ids`) in place of
+    /// updateRates: each sorted particle's by its number, and the largest values the time step reads.
+    void uploadRates(const sim::sph::SphRates& saved, const std::vector<int>& ids)
+    {
+        const std::size_t count = std::size_t(n);
+        if (ids.size() != count || saved.acceleration.size() != count || saved.densityRate.size() != count ||
+            saved.wallDistance.size() != count || (shiftVelocity.bytes() > 0 && saved.shiftVelocity.size() != count))
+            throw Error("the saved rates do not fit the particles: the checkpoint is damaged");
+        std::unordered_map<int, std::size_t> given;
+        for (std::size_t i = 0; i < count; ++i)
+            given.emplace(ids[i], i);
+        const std::vector<int> sorted = current.id.download(count);
+        std::vector<float4> a(count), shift(shiftVelocity.bytes() > 0 ? count : 0);
+        std::vector<float> rate(count), distance(count);
+        for (std::size_t s = 0; s < count; ++s)
+        {
+            const std::size_t i = given.at(sorted[s]);
+            a[s] = asFloat4(saved.acceleration[i]);
+            rate[s] = float(saved.densityRate[i]), distance[s] = float(saved.wallDistance[i]);
+            if (!shift.empty())
+                shift[s] = asFloat4(saved.shiftVelocity[i]);
+        }
+        acceleration.upload(a), densityRate.upload(rate), wallDistance.upload(distance);
+        if (!shift.empty())
+            shiftVelocity.upload(shift);
+        last = {};
+        last.largestAcceleration = bitsOf(float(saved.largestAcceleration));
+        last.largestViscousRate = bitsOf(float(saved.largestViscousRate));
+        last.largestKinematicViscosity = bitsOf(float(saved.largestKinematicViscosity));
+    }
+
     /// Particle `index` of the sorted order now (a guard's particle).
     ParticleAt particleAt(int index) const
     {
@@ -398,8 +452,13 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     d.current.id.upload(p.id);
     d.resetReductions();
     d.sort(d.n, d.n);
-    d.updateRates(solver.position());
-    d.fetchReductions();
+    if (const sim::sph::SphRates* saved = solver.savedStartRates())
+        d.uploadRates(*saved, p.id);
+    else
+    {
+        d.updateRates(solver.position());
+        d.fetchReductions();
+    }
     d.time = solver.position();
 }
 
@@ -489,12 +548,8 @@ sim::sph::ParticleState CudaSph::download() const
     const auto position = d.current.position.download(n), velocity = d.current.velocity.download(n);
     const auto state = d.current.state.download(n);
     const auto id = d.current.id.download(n);
-    std::vector<std::size_t> byId(n);
-    for (std::size_t s = 0; s < n; ++s)
-        byId[s] = s;
-    std::sort(byId.begin(), byId.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
     sim::sph::ParticleState out;
-    for (std::size_t s : byId)
+    for (std::size_t s : orderByNumber(id))
     {
         const Eigen::Vector3d x =
             d.settings.boxLowM + Eigen::Vector3d(position[s].x, position[s].y, position[s].z);
@@ -512,6 +567,27 @@ sim::sph::ParticleState CudaSph::download() const
             out.boundary.back() = std::uint8_t(velocity[s].w);
         out.id.back() = id[s];
     }
+    return out;
+}
+
+sim::sph::SphRates CudaSph::nextRates() const
+{
+    const Device& d = *m_device;
+    const std::size_t n = std::size_t(d.n);
+    const auto id = d.current.id.download(n);
+    const auto acceleration = d.acceleration.download(n), shift = d.shiftVelocity.download(n);
+    const auto densityRate = d.densityRate.download(n), wallDistance = d.wallDistance.download(n);
+    sim::sph::SphRates out;
+    for (std::size_t s : orderByNumber(id))
+    {
+        out.acceleration.emplace_back(acceleration[s].x, acceleration[s].y, acceleration[s].z);
+        out.densityRate.push_back(densityRate[s]), out.wallDistance.push_back(wallDistance[s]);
+        if (!shift.empty())
+            out.shiftVelocity.emplace_back(shift[s].x, shift[s].y, shift[s].z);
+    }
+    out.largestAcceleration = asFloat(d.last.largestAcceleration);
+    out.largestViscousRate = asFloat(d.last.largestViscousRate);
+    out.largestKinematicViscosity = asFloat(d.last.largestKinematicViscosity);
     return out;
 }
 

@@ -199,7 +199,8 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_grid->build(m_particles.position);
     setGuardDepths();
     m_initialFluidMass = fluidMass();
-    if (!(m_startState && goOnFrom(*m_startState)))
+    m_tookSavedRates = m_startState && goOnFrom(*m_startState);
+    if (!m_tookSavedRates)
         updateRates(m_timeS);
     m_stepS = stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl);
     m_stepper.reset(), m_stale = false, m_pendingS = 0.0;
@@ -289,7 +290,9 @@ SphCheckpoint SphSolver::checkpoint() const
     c.ledger = massLedger();
     c.initialFluidMassKg = m_initialFluidMass;
     c.sections = m_sections.sums(), c.wallLoads = m_wallLoads.sums();
-    if (!m_stepper) // the rates the next kick takes; a stepper keeps its own
+    if (m_stepper) // the rates the next kick takes, in the particles' order
+        c.rates = m_stepper->nextRates();
+    else
     {
         c.rates.acceleration = m_rates.acceleration, c.rates.densityRate = m_rates.densityRate;
         c.rates.shiftVelocity = m_rates.shiftVelocity, c.rates.wallDistance = m_rates.wallDistance;
@@ -363,6 +366,7 @@ void SphSolver::updateRates(double timeS)
 
 StepOutcome SphSolver::step(RunStatus&, const Progress&)
 {
+    m_tookSavedRates = false;
     if (m_stepper)
         return stepElsewhere();
     const double dt = std::min(stableTimeStep(m_rates, *m_kernel, m_fluid, m_cfl), m_endTimeS - m_timeS);

@@ -26,7 +26,8 @@ class CudaSph : public sim::sph::SphStepper
 {
 public:
     /// Copies the CPU solver's particles (after its initialize()), fluid, kernel, open boundaries and step
-    /// settings to the GPU and computes the rates at the start. Throws vsim::Error without a CUDA device, when
+    /// settings to the GPU and computes the rates at the start, or takes the saved ones when the solver goes on
+    /// from a checkpoint that holds them (SphSolver::savedStartRates). Throws vsim::Error without a CUDA device, when
     /// memory runs out, or for a solver with periodic axes, tracer absorption, an inlet of tracer or more than
     /// 32 open boundaries.
     explicit CudaSph(const sim::sph::SphSolver& solver);
@@ -52,6 +53,8 @@ public:
     /// The particles back on the host (m, m/s, kg/m^3, their buffers) in the order of their numbers `id`
     /// (a closed domain's: position i holds the particle whose id is i).
     sim::sph::ParticleState download() const override;
+    /// The rates of the next step's first kick in download()'s order (single precision, for a checkpoint).
+    sim::sph::SphRates nextRates() const override;
     /// Bytes of GPU memory held.
     std::size_t deviceBytes() const;
 

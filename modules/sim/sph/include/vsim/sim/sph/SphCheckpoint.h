@@ -4,7 +4,8 @@
 // benches' --checkpoint), written at a step's end, read back by SphSolver::setStartState before its
 // initialize(). The leapfrog step takes its first kick with rates evaluated between the last step's two kicks,
 // so the checkpoint holds them beside the particles (in their order), the time and the counters: a CPU run
-// gone on from one is the run that did not stop, to the last bit (tst_sph_stepper).
+// gone on from one is the run that did not stop, to the last bit (tst_sph_stepper); a GPU run, to its single
+// precision's rounding (the particles are sorted afresh, so their sums run in another order; tst_gpu_sph).
 //
 // The file is binary, in the writing machine's byte order and double precision (the same program on a machine
 // of the same kind reads it back; not an exchange format): the header line "VSIM-SPH-CHECKPOINT 1", then the
@@ -35,9 +36,10 @@ struct SphCheckpoint
     ParticleState particles;
     /// The rates the next step's first kick takes, in the particles' order (SphRates: acceleration, densityRate,
     /// shiftVelocity, wallDistance and the three largest values; the rest is recomputed before it is read). The
-    /// step evaluates them between its two kicks, so they cannot be recomputed from the particles; empty from a
-    /// stepper that does not give them (the GPU's), and the resumed run then evaluates them at the saved state:
-    /// half a kick's difference in the viscous and density terms, once.
+    /// step evaluates them between its two kicks, so they cannot be recomputed from the particles. The GPU's
+    /// stepper gives its own (single precision) and takes them back. Empty from a stepper that does not give
+    /// them: the resumed run then evaluates them at the saved state, half a kick's difference in the viscous and
+    /// density terms, once.
     SphRates rates;
     std::vector<double> boundaryFlowRateM3S, boundaryPressurePa; ///< each open boundary's last (OpenBoundaries)
     SectionSeries::Sums sections;      ///< the time averages so far

@@ -101,8 +101,12 @@ public:
     /// steps, mass ledger and time averages. initialize() throws vsim::Error when the saved walls or open
     /// boundaries are not the input's. Null: start from the input.
     void setStartState(std::shared_ptr<const SphCheckpoint> saved) { m_startState = std::move(saved); }
-    /// The run now, to go on from later (the particles fetched from the stepper).
+    /// The run now, to go on from later (the particles and the next kick's rates fetched from the stepper).
     SphCheckpoint checkpoint() const;
+    /// For a stepper made after initialize(): the saved rates the first kick takes, in particles()' order, when
+    /// it went on from a checkpoint that holds them (the stepper takes these rather than evaluating its own);
+    /// null otherwise, and once the solver has stepped.
+    const SphRates* savedStartRates() const { return m_tookSavedRates ? &m_rates : nullptr; }
     void initialize(const SimulationInput& input, const ParameterSet& parameters) override;
     RunAxis axis() const override { return {"time", "s", m_endTimeS}; }
     double position() const override { return m_timeS; }
@@ -152,6 +156,7 @@ private:
     int m_syncEvery = 10;
     double m_pendingS = 0.0; ///< stepped since the last samples (s)
     SphRates m_rates;
+    bool m_tookSavedRates = false; ///< m_rates are the checkpoint's (no step since)
     OpenBoundaries m_openBoundaries;
     SectionSeries m_sections;
     WallLoadSeries m_wallLoads;

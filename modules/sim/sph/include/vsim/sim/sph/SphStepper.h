@@ -6,6 +6,7 @@
 
 #include "vsim/sim/sph/OpenBoundary.h"
 #include "vsim/sim/sph/ParticleState.h"
+#include "vsim/sim/sph/SphRates.h"
 
 #include <functional>
 #include <memory>
@@ -25,6 +26,10 @@ public:
     virtual double lastStepS() const = 0; ///< the last step's length (s)
     /// The particles in the order of their numbers (m, m/s, kg/m^3, their buffers).
     virtual ParticleState download() const = 0;
+    /// The rates the next step's first kick takes, in download()'s order (acceleration, densityRate,
+    /// shiftVelocity, wallDistance and the three largest values: what a checkpoint keeps); empty from a stepper
+    /// that cannot give them.
+    virtual SphRates nextRates() const { return {}; }
     /// Mass through the open boundaries since the start (kg), their last flow rates into the domain (m^3/s) and
     /// their buffers' mean pressures (Pa).
     virtual const MassLedger& massLedger() const = 0;
