@@ -33,7 +33,11 @@ std::string caseKey(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh
         << " half_length_mm " << pipe.halfLengthMm << " mean_speed_m_s " << pipe.meanSpeedMS << " density "
         << pipe.densityKgM3 << " viscosity " << pipe.viscosityPaS << " axial " << mesh.axialCells << " radial "
         << mesh.radialCells << " grading " << mesh.wallGrading << " wedge " << mesh.wedgeDegrees << " classic "
-        << mesh.classicSimple << "\n";
+        << mesh.classicSimple;
+    if (mesh.transient) // from rest: the ramp and the averaging window matter too
+        key << " transient ramp_s " << pipe.rampS << " average_from_s " << pipe.averageFromS << " end_time_s "
+            << pipe.endTimeS;
+    key << "\n";
     return key.str();
 }
 
@@ -143,7 +147,7 @@ fs::path latestTime(const fs::path& directory)
             latest = entry.path(), latestValue = value;
     }
     if (latest.empty())
-        throw Error("simpleFoam wrote no time directory in " + directory.string());
+        throw Error("OpenFOAM wrote no time directory in " + directory.string());
     return latest;
 }
 
@@ -181,28 +185,56 @@ void writeCase(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, con
               " front { type wedge; faces ((0 1 5 4)); }\n"
               " back { type wedge; faces ((0 3 2 1)); }\n"
               " axis { type empty; faces ((0 1 1 0)); }\n);\nmergePatchPairs ();\n");
-    write(directory / "system/controlDict",
-          header("dictionary", "controlDict") +
-              "application simpleFoam; startFrom startTime; startTime 0; stopAt endTime; endTime 20000; deltaT 1;\n"
-              "writeControl timeStep; writeInterval 20000; writeFormat ascii; writePrecision 12; writeCompression off;\n"
-              "timeFormat general; timePrecision 8; runTimeModifiable false;\n"
-              "functions { wallShearStress { type wallShearStress; libs (\"libfieldFunctionObjects.so\"); "
-              "patches (wall); writeControl writeTime; } }\n");
+    const std::string wallShear = "wallShearStress { type wallShearStress; libs (\"libfieldFunctionObjects.so\"); "
+                                  "patches (wall); writeControl writeTime; }\n";
+    const std::string output = "writeFormat ascii; writePrecision 12; writeCompression off;\n"
+                               "timeFormat general; timePrecision 10; runTimeModifiable false;\n";
+    if (mesh.transient)
+    {
+        // The wall shear stress at every step, so that fieldAverage (after it) can average it too.
+        const std::string mean = " { mean on; prime2Mean off; base time; }";
+        write(directory / "system/controlDict",
+              header("dictionary", "controlDict") + "application pimpleFoam; startFrom startTime; startTime 0; " +
+                  "stopAt endTime; endTime " + number(pipe.endTimeS) + "; deltaT 1e-7; adjustTimeStep yes; " +
+                  "maxCo 0.5; maxDeltaT 1;\nwriteControl adjustableRunTime; writeInterval " +
+                  number(pipe.endTimeS) + ";\n" + output + "functions {\n" + wallShear +
+                  "average { type fieldAverage; libs (\"libfieldFunctionObjects.so\"); writeControl writeTime; "
+                  "timeStart " + number(pipe.averageFromS) + "; fields ( U" + mean + " p" + mean +
+                  " wallShearStress" + mean + " ); }\n}\n");
+    }
+    else
+        write(directory / "system/controlDict",
+              header("dictionary", "controlDict") +
+                  "application simpleFoam; startFrom startTime; startTime 0; stopAt endTime; endTime 20000; deltaT 1;\n"
+                  "writeControl timeStep; writeInterval 20000;\n" + output + "functions {\n" + wallShear + "}\n");
     write(directory / "system/fvSchemes",
           header("dictionary", "fvSchemes") +
-              "ddtSchemes { default steadyState; }\ngradSchemes { default Gauss linear; }\n"
-              "divSchemes { default none; div(phi,U) bounded Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }\n"
+              (mesh.transient ? "ddtSchemes { default backward; }\n" : "ddtSchemes { default steadyState; }\n") +
+              "gradSchemes { default Gauss linear; }\ndivSchemes { default none; div(phi,U) " +
+              (mesh.transient ? "Gauss linear" : "bounded Gauss linear") +
+              "; div((nuEff*dev2(T(grad(U))))) Gauss linear; }\n"
               "laplacianSchemes { default Gauss linear corrected; }\ninterpolationSchemes { default linear; }\n"
               "snGradSchemes { default corrected; }\n");
-    write(directory / "system/fvSolution",
-          header("dictionary", "fvSolution") +
-              "solvers { p { solver GAMG; smoother GaussSeidel; tolerance 1e-14; relTol 0.05; }\n"
-              " U { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-14; relTol 0.1; } }\n" +
-              std::string(mesh.classicSimple
-                   ? "SIMPLE { nNonOrthogonalCorrectors 0; consistent no; residualControl { p 1e-11; } }\n"
-                     "relaxationFactors { equations { U 0.7; } fields { p 0.3; } }\n"
-                   : "SIMPLE { nNonOrthogonalCorrectors 0; consistent yes; residualControl { p 1e-11; } }\n"
-                     "relaxationFactors { equations { U 0.9; } fields { p 1; } }\n"));
+    // Transient: every pressure correction to 1e-10 (the largest final residual is reported), and two non-orthogonal
+    // correctors: the cells by the wall lean up to 38 degrees where the narrowing is steepest (x = 2.0 and 2.8 mm),
+    // and without them the cell velocities there broke up into a stationary wiggle (the cells' mean axial velocity
+    // at 2.0 mm 36 % above the flow rate's, radial velocities of 0.3 m/s by the wall).
+    if (mesh.transient)
+        write(directory / "system/fvSolution",
+              header("dictionary", "fvSolution") +
+                  "solvers { \"(p|pFinal)\" { solver GAMG; smoother GaussSeidel; tolerance 1e-10; relTol 0; }\n"
+                  " \"(U|UFinal)\" { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-12; relTol 0; } }\n"
+                  "PIMPLE { nOuterCorrectors 1; nCorrectors 2; nNonOrthogonalCorrectors 2; }\n");
+    else
+        write(directory / "system/fvSolution",
+              header("dictionary", "fvSolution") +
+                  "solvers { p { solver GAMG; smoother GaussSeidel; tolerance 1e-14; relTol 0.05; }\n"
+                  " U { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-14; relTol 0.1; } }\n" +
+                  std::string(mesh.classicSimple
+                       ? "SIMPLE { nNonOrthogonalCorrectors 0; consistent no; residualControl { p 1e-11; } }\n"
+                         "relaxationFactors { equations { U 0.7; } fields { p 0.3; } }\n"
+                       : "SIMPLE { nNonOrthogonalCorrectors 0; consistent yes; residualControl { p 1e-11; } }\n"
+                         "relaxationFactors { equations { U 0.9; } fields { p 1; } }\n"));
     write(directory / "constant/transportProperties",
           header("dictionary", "transportProperties") + "transportModel Newtonian; nu " +
               number(pipe.viscosityPaS / pipe.densityKgM3) + ";\n");
@@ -213,21 +245,40 @@ void writeCase(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, con
                                  " wall { type zeroGradient; } front { type wedge; } back { type wedge; } axis { type empty; } }\n");
 }
 
-/// 0/U: the parabola u = 2 U (1 - r^2 / R0^2) at the inlet's face centres (r from the axis).
-void writeInflow(const sim::sph::StenosisPipe& pipe, const fs::path& directory)
+/// 0/U: the parabola u = 2 U (1 - r^2 / R0^2) at the inlet's face centres (r from the axis); transient, times the
+/// SPH's ramp (OpenBoundary.cpp: (1 - cos(pi t / T)) / 2 over T) at 41 times over it, in constant/boundaryData,
+/// which OpenFOAM interpolates linearly in time (0.08 % of the flow at most) and holds after the last.
+void writeInflow(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, const fs::path& directory)
 {
     const std::vector<double> centres = readList(directory / "0/C", 3, "inlet");
     const double radius = 1e-3 * pipe.radiusMm;
-    std::ostringstream faces;
-    for (std::size_t f = 0; f + 2 < centres.size(); f += 3)
+    const auto profile = [&](double scale) {
+        std::ostringstream faces;
+        for (std::size_t f = 0; f + 2 < centres.size(); f += 3)
+        {
+            const double r = std::hypot(centres[f + 1], centres[f + 2]);
+            faces << " (" << number(scale * 2.0 * pipe.meanSpeedMS * (1.0 - r * r / (radius * radius))) << " 0 0)";
+        }
+        return std::to_string(centres.size() / 3) + " (" + faces.str() + " )\n";
+    };
+    std::string inlet = "fixedValue; value nonuniform List<vector> " + profile(1.0);
+    if (mesh.transient)
     {
-        const double r = std::hypot(centres[f + 1], centres[f + 2]);
-        faces << " (" << number(2.0 * pipe.meanSpeedMS * (1.0 - r * r / (radius * radius))) << " 0 0)";
+        const fs::path data = directory / "constant/boundaryData/inlet";
+        std::ostringstream points;
+        for (std::size_t f = 0; f + 2 < centres.size(); f += 3)
+            points << " (" << number(centres[f]) << ' ' << number(centres[f + 1]) << ' ' << number(centres[f + 2]) << ')';
+        write(data / "points", std::to_string(centres.size() / 3) + " (" + points.str() + " )\n");
+        constexpr int kRampSteps = 40;
+        for (int k = 0; k <= kRampSteps; ++k)
+            write(data / number(pipe.rampS * k / kRampSteps) / "U",
+                  profile(0.5 * (1.0 - std::cos(std::numbers::pi * k / kRampSteps))));
+        write(data / number(2.0 * pipe.endTimeS) / "U", profile(1.0));
+        inlet = "timeVaryingMappedFixedValue; mapMethod nearest; offset (0 0 0); setAverage off";
     }
     write(directory / "0/U", header("volVectorField", "U") +
                                  "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\nboundaryField {\n"
-                                 " inlet { type fixedValue; value nonuniform List<vector> " +
-                                 std::to_string(centres.size() / 3) + " (" + faces.str() + " ); }\n"
+                                 " inlet { type " + inlet + "; }\n"
                                  " outlet { type zeroGradient; } wall { type noSlip; }\n"
                                  " front { type wedge; } back { type wedge; } axis { type empty; }\n}\n");
 }
@@ -280,6 +331,7 @@ OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, con
 {
     OpenFoamStenosisFlow flow;
     const std::string key = caseKey(pipe, mesh);
+    const std::string solver = mesh.transient ? "pimpleFoam" : "simpleFoam";
     const bool solved = fs::exists(directory / kMarker) && fs::exists(directory / kSolvedKey) &&
                         read(directory / kSolvedKey) == key;
     if (solved) // the same case solved before: read again (the sections' slabs follow the spacing, the case does not)
@@ -305,25 +357,36 @@ OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, con
         writeCase(pipe, mesh, directory);
         run(directory, "blockMesh", "log.blockMesh");
         run(directory, "postProcess -func writeCellCentres -time 0", "log.writeCellCentres");
-        writeInflow(pipe, directory);
-        run(directory, "simpleFoam", "log.simpleFoam");
+        writeInflow(pipe, mesh, directory);
+        run(directory, solver, "log." + solver);
         run(directory, "postProcess -func writeCellVolumes -latestTime", "log.writeCellVolumes");
         flow.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         write(directory / kSolvedSeconds, std::to_string(flow.seconds));
         write(directory / kSolvedKey, key);
     }
 
-    // One pressure solve per SIMPLE iteration (no non-orthogonal correctors).
-    const std::string log = read(directory / "log.simpleFoam");
-    const std::regex pressureSolve("Solving for p, Initial residual = ([-0-9.e+]+)");
-    for (auto it = std::sregex_iterator(log.begin(), log.end(), pressureSolve);
-         it != std::sregex_iterator(); ++it)
-        flow.pressureResidual = std::stod((*it)[1]), ++flow.iterations;
-    flow.converged = log.find("SIMPLE solution converged") != std::string::npos;
+    const std::string log = read(directory / ("log." + solver));
+    if (mesh.transient) // a time step's pressure corrections each solve to 1e-10: the largest final residual
+    {
+        const std::regex pressureSolve("Solving for p, Initial residual = [-0-9.e+]+, Final residual = ([-0-9.e+]+)");
+        for (auto it = std::sregex_iterator(log.begin(), log.end(), pressureSolve); it != std::sregex_iterator(); ++it)
+            flow.pressureResidual = std::max(flow.pressureResidual, std::stod((*it)[1]));
+        const std::regex timeStep("\nTime = ");
+        flow.iterations = int(std::distance(std::sregex_iterator(log.begin(), log.end(), timeStep), std::sregex_iterator()));
+        flow.converged = log.find("\nEnd") != std::string::npos && flow.pressureResidual <= 1e-10;
+    }
+    else // one pressure solve per SIMPLE iteration (no non-orthogonal correctors)
+    {
+        const std::regex pressureSolve("Solving for p, Initial residual = ([-0-9.e+]+)");
+        for (auto it = std::sregex_iterator(log.begin(), log.end(), pressureSolve); it != std::sregex_iterator(); ++it)
+            flow.pressureResidual = std::stod((*it)[1]), ++flow.iterations;
+        flow.converged = log.find("SIMPLE solution converged") != std::string::npos;
+    }
 
     const fs::path time = latestTime(directory);
-    const std::vector<double> centres = readList(directory / "0/C", 3), velocity = readList(time / "U", 3),
-                              pressure = readList(time / "p", 1), volume = readList(time / "V", 1);
+    const std::string mean = mesh.transient ? "Mean" : ""; // the window's averages
+    const std::vector<double> centres = readList(directory / "0/C", 3), velocity = readList(time / ("U" + mean), 3),
+                              pressure = readList(time / ("p" + mean), 1), volume = readList(time / "V", 1);
     flow.cells = int(volume.size());
     if (centres.size() != 3 * volume.size() || velocity.size() != centres.size() || pressure.size() != volume.size())
         throw Error("the fields in " + time.string() + " do not match the mesh's " + std::to_string(flow.cells) + " cells");
@@ -334,7 +397,7 @@ OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, con
     flow.figures = sim::sph::stenosisFigures(arcs, flow.sections, pipe.compareMm);
 
     const std::vector<double> wallCentres = readList(directory / "0/C", 3, "wall");
-    const std::vector<double> shear = readList(time / "wallShearStress", 3, "wall");
+    const std::vector<double> shear = readList(time / ("wallShearStress" + mean), 3, "wall");
     double throatSum = 0.0;
     int throatFaces = 0;
     for (std::size_t f = 0; 3 * f + 2 < shear.size() && 3 * f + 2 < wallCentres.size(); ++f)

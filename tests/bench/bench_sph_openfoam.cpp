@@ -14,7 +14,7 @@
 //   jet's recirculation reattaches: a local ratio says nothing there).
 //
 //   bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] [--sph-in FILE] [--sph-out FILE]
-//                      [--openfoam-only] [--classic-simple]
+//                      [--openfoam-only] [--classic-simple] [--transient]
 //
 // --spacing sets the SPH's particle lattice (0.1 mm by default) and with it the sections' slab thickness (two
 // spacings) on both sides.
@@ -22,7 +22,9 @@
 // it (the SPH may run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2, or on the GPU:
 // bench_sph_cuda_stenosis). --openfoam-only runs the two OpenFOAM meshes alone and prints their figures (exit 1
 // when one does not converge). --classic-simple solves with SIMPLE's relaxation in place of SIMPLEC's
-// (OpenFoamStenosis.h). A work folder that holds the same OpenFOAM cases solved before (another --spacing or
+// (OpenFoamStenosis.h). --transient runs pimpleFoam from rest through the SPH's ramp and averages over the SPH's
+// window (OpenFoamStenosis.h): the same question as the SPH's, whether or not the flow has settled by then; "converged"
+// then says that every pressure correction met its tolerance to the end. A work folder that holds the same OpenFOAM cases solved before (another --spacing or
 // --sph-in) is read again ("reused" in the JSON, the seconds its solve's). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
 // not installed (`scripts/install-deps.sh --bench`).
 
@@ -57,10 +59,10 @@ json figuresJson(const sim::sph::StenosisFigures& f)
 
 /// The two OpenFOAM meshes: 40 cells per mm along (224 on the default 5.6 mm) by 32 across, and twice that (the
 /// reference).
-std::vector<bench::OpenFoamMesh> openFoamMeshes(const sim::sph::StenosisPipe& pipe, bool classicSimple)
+std::vector<bench::OpenFoamMesh> openFoamMeshes(const sim::sph::StenosisPipe& pipe, bool classicSimple, bool transient)
 {
     const int axial = int(std::lround(40.0 * pipe.lengthMm));
-    return {{axial, 32, 0.4, 5.0, classicSimple}, {2 * axial, 64, 0.4, 5.0, classicSimple}};
+    return {{axial, 32, 0.4, 5.0, classicSimple, transient}, {2 * axial, 64, 0.4, 5.0, classicSimple, transient}};
 }
 
 json openFoamJson(const bench::OpenFoamStenosisFlow& f)
@@ -86,12 +88,12 @@ int main(int argc, char** argv)
     {
         std::fprintf(stderr,
                      "usage: bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] "
-                     "[--sph-in FILE] [--sph-out FILE] [--openfoam-only] [--classic-simple]\n");
+                     "[--sph-in FILE] [--sph-out FILE] [--openfoam-only] [--classic-simple] [--transient]\n");
         return 2;
     }
     const fs::path work = argv[1];
     std::string sphIn, sphOut;
-    bool openFoamOnly = false, classicSimple = false;
+    bool openFoamOnly = false, classicSimple = false, transient = false;
     sim::sph::StenosisPipe pipe;
     double meanSpeed = 0.0, length = 0.0; // 0: the default problem's
     for (int a = 2; a < argc; ++a)
@@ -103,6 +105,8 @@ int main(int argc, char** argv)
             openFoamOnly = true;
         else if (option == "--classic-simple")
             classicSimple = true;
+        else if (option == "--transient")
+            transient = true;
         else if (option == "--spacing" && a + 1 < argc)
         {
             char* end = nullptr;
@@ -126,7 +130,7 @@ int main(int argc, char** argv)
         else
         {
             std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--spacing MM, --mean-speed M/S, --length MM, "
-                                 "--sph-in FILE, --sph-out FILE, --openfoam-only, --classic-simple)\n",
+                                 "--sph-in FILE, --sph-out FILE, --openfoam-only, --classic-simple, --transient)\n",
                          option.c_str());
             return 2;
         }
@@ -142,7 +146,9 @@ int main(int argc, char** argv)
     }
     try
     {
-        json report = {{"bench", "sph_openfoam"}};
+        json report = {{"bench", "sph_openfoam"},
+                       {"openfoam_solver",
+                        transient ? "pimpleFoam from rest, averaged over the SPH's window" : "simpleFoam (steady)"}};
         std::vector<sim::sph::SectionFlow> sph;
         json sphWall;
         const std::vector<double> arcs = pipe.sectionArcsMm();
@@ -152,7 +158,7 @@ int main(int argc, char** argv)
             report["throat_reynolds"] = pipe.throatReynolds();
             report["openfoam"] = json::array();
             bool converged = true;
-            const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple);
+            const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple, transient);
             for (std::size_t m = 0; m < meshes.size(); ++m)
             {
                 const auto f = bench::runOpenFoamStenosis(pipe, meshes[m], work / ("openfoam-" + std::to_string(m + 1)));
@@ -207,7 +213,7 @@ int main(int argc, char** argv)
             return 0;
         }
 
-        const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple);
+        const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple, transient);
         std::vector<bench::OpenFoamStenosisFlow> foam;
         json foamRuns = json::array();
         for (std::size_t m = 0; m < meshes.size(); ++m)
