@@ -118,6 +118,7 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "%1 mm from the wall"),
     QT_TRANSLATE_NOOP("vsim::Error", "particle %1's density is %2 % from the rest density (guard %3 %) at %4, %5: raise the sound speed or lower the inflow"),
     QT_TRANSLATE_NOOP("vsim::Error", "away from the walls"),
+    QT_TRANSLATE_NOOP("vsim::Error", "the saved rates do not fit the particles: the checkpoint is damaged"),
     QT_TRANSLATE_NOOP("vsim::Error", "no CUDA device: run the SPH solver on the CPU (--backend cpu)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the CUDA SPH backend runs no periodic axes or tracer absorption yet: run this case on the CPU (--backend cpu)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the study has no artifact '%1'"),

@@ -1294,6 +1294,10 @@
         <source>Wall loads on the lumen surface (the same run and window; tau_w: the walls&apos; friction on the particles next to them)</source>
         <translation>Wandlasten auf der Lumenoberfläche (derselbe Lauf und dasselbe Zeitfenster; tau_w: die Reibung der Wand an den wandnahen Partikeln)</translation>
     </message>
+    <message>
+        <source>n/a</source>
+        <translation>k. A.</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Error</name>
@@ -4144,6 +4148,10 @@
     <message>
         <source>the saved wall-load averages are for %1 points, this run has %2</source>
         <translation>die gespeicherten Wandlastmittel gelten für %1 Punkte, dieser Lauf hat %2</translation>
+    </message>
+    <message>
+        <source>the saved rates do not fit the particles: the checkpoint is damaged</source>
+        <translation>die gespeicherten Raten passen nicht zu den Partikeln: der Sicherungspunkt ist beschädigt</translation>
     </message>
 </context>
 <context>

@@ -1294,6 +1294,10 @@
         <source>Wall loads on the lumen surface (the same run and window; tau_w: the walls&apos; friction on the particles next to them)</source>
         <translation>管腔表面的壁面载荷（同一运行与时间窗；tau_w：壁面对近壁粒子的摩擦力）</translation>
     </message>
+    <message>
+        <source>n/a</source>
+        <translation>不适用</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Error</name>
@@ -4144,6 +4148,10 @@
     <message>
         <source>the saved wall-load averages are for %1 points, this run has %2</source>
         <translation>保存的壁面载荷平均值对应 %1 个点，本次运行有 %2 个</translation>
+    </message>
+    <message>
+        <source>the saved rates do not fit the particles: the checkpoint is damaged</source>
+        <translation>保存的速率与粒子不符：检查点已损坏</translation>
     </message>
 </context>
 <context>

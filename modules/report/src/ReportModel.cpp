@@ -13,10 +13,20 @@ std::string planningStatement()
                                "only. They are not a diagnosis and need clinical judgement.");
 }
 
+namespace {
+
+/// What a figure that is not a finite number prints as.
+std::string notAvailable()
+{
+    return localized("Report", "n/a");
+}
+
+} // namespace
+
 std::string formatMetric(double value)
 {
     if (!std::isfinite(value))
-        return "n/a";
+        return notAvailable();
     char text[32];
     const double magnitude = std::abs(value);
     if (magnitude != 0.0 && (magnitude < 1e-3 || magnitude >= 1e6))
@@ -54,7 +64,7 @@ std::string fixedDecimals(double value, int decimals)
 std::string formatMetric(double value, const std::string& unit, int decimals)
 {
     if (!std::isfinite(value))
-        return "n/a";
+        return notAvailable();
     if (decimals < 0)
         decimals = meaningfulDecimals(unit);
     if (decimals >= 0)
