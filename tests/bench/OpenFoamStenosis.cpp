@@ -267,7 +267,8 @@ void writeInflow(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, c
         const fs::path data = directory / "constant/boundaryData/inlet";
         std::ostringstream points;
         for (std::size_t f = 0; f + 2 < centres.size(); f += 3)
-            points << " (" << number(centres[f]) << ' ' << number(centres[f + 1]) << ' ' << number(centres[f + 2]) << ')';
+            points << " (" << number(centres[f]) << ' ' << number(centres[f + 1]) << ' ' << number(centres[f + 2])
+                   << ')';
         write(data / "points", std::to_string(centres.size() / 3) + " (" + points.str() + " )\n");
         constexpr int kRampSteps = 40;
         for (int k = 0; k <= kRampSteps; ++k)
@@ -372,7 +373,8 @@ OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, con
         for (auto it = std::sregex_iterator(log.begin(), log.end(), pressureSolve); it != std::sregex_iterator(); ++it)
             flow.pressureResidual = std::max(flow.pressureResidual, std::stod((*it)[1]));
         const std::regex timeStep("\nTime = ");
-        flow.iterations = int(std::distance(std::sregex_iterator(log.begin(), log.end(), timeStep), std::sregex_iterator()));
+        flow.iterations =
+            int(std::distance(std::sregex_iterator(log.begin(), log.end(), timeStep), std::sregex_iterator()));
         flow.converged = log.find("\nEnd") != std::string::npos && flow.pressureResidual <= 1e-10;
     }
     else // one pressure solve per SIMPLE iteration (no non-orthogonal correctors)

@@ -3,15 +3,14 @@
 // The OpenFOAM side of the blood-flow cross-check (issue 18, bench_sph_openfoam): the sph-stenosis problem
 // (StenosisPipe.h) as an axisymmetric OpenFOAM v1912 case (Debian package `openfoam`; `scripts/install-deps.sh
 // --bench`): a 5-degree wedge about the pipe's axis, one blockMesh block whose wall edges follow R(x) through a
-// polyLine at every axial cell, cells graded towards the wall; the parabolic
-// inflow written face by face from the inlet's face centres, a pressure outlet at 0, no slip on the wall;
-// simpleFoam (steady, laminar, Newtonian), SIMPLEC to a pressure residual of 1e-11, second-order (linear)
-// convection; or, transient, pimpleFoam from rest with the SPH's ramped inflow (the parabola at the face centres,
-// 40 steps of the ramp, linear between them: constant/boundaryData) at a Courant number of 0.5, backward
-// differences in time, the fields averaged over the SPH's window (fieldAverage). Its cells are then read back into the SPH's section
-// definitions (CrossSections.h): each section a slab of the same thickness, its peak the mean of the fastest 5 % of
-// the slab's volume, its pressure the volume mean. The wall shear stress is OpenFOAM's wallShearStress function
-// object times the density.
+// polyLine at every axial cell, cells graded towards the wall; the parabolic inflow written face by face from the
+// inlet's face centres, a pressure outlet at 0, no slip on the wall; simpleFoam (steady, laminar, Newtonian),
+// SIMPLEC to a pressure residual of 1e-11, second-order (linear) convection; or, transient, pimpleFoam from rest
+// with the SPH's ramped inflow (the parabola at the face centres, 40 steps of the ramp, linear between them:
+// constant/boundaryData) at a Courant number of 0.5, backward differences in time, the fields averaged over the
+// SPH's window (fieldAverage). Its cells are then read back into the SPH's section definitions (CrossSections.h):
+// each section a slab of the same thickness, its peak the mean of the fastest 5 % of the slab's volume, its
+// pressure the volume mean. The wall shear stress is OpenFOAM's wallShearStress function object times the density.
 
 #include "vsim/sim/sph/StenosisPipe.h"
 

@@ -17,16 +17,16 @@
 //                      [--openfoam-only] [--classic-simple] [--transient]
 //
 // --spacing sets the SPH's particle lattice (0.1 mm by default) and with it the sections' slab thickness (two
-// spacings) on both sides.
-// --sph-out writes the SPH's sections and wall rings (JSON) after its run; --sph-in reads them instead of running
-// it (the SPH may run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2, or on the GPU:
-// bench_sph_cuda_stenosis). --openfoam-only runs the two OpenFOAM meshes alone and prints their figures (exit 1
-// when one does not converge). --classic-simple solves with SIMPLE's relaxation in place of SIMPLEC's
-// (OpenFoamStenosis.h). --transient runs pimpleFoam from rest through the SPH's ramp and averages over the SPH's
-// window (OpenFoamStenosis.h): the same question as the SPH's, whether or not the flow has settled by then; "converged"
-// then says that every pressure correction met its tolerance to the end. A work folder that holds the same OpenFOAM cases solved before (another --spacing or
-// --sph-in) is read again ("reused" in the JSON, the seconds its solve's). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is
-// not installed (`scripts/install-deps.sh --bench`).
+// spacings) on both sides. --sph-out writes the SPH's sections and wall rings (JSON) after its run; --sph-in reads
+// them instead of running it (the SPH may run on a machine without OpenFOAM: 4 min on 16 cores, about 30 min on 2,
+// or on the GPU: bench_sph_cuda_stenosis). --openfoam-only runs the two OpenFOAM meshes alone and prints their
+// figures (exit 1 when one does not converge). --classic-simple solves with SIMPLE's relaxation in place of
+// SIMPLEC's (OpenFoamStenosis.h). --transient runs pimpleFoam from rest through the SPH's ramp and averages over
+// the SPH's window (OpenFoamStenosis.h): the same question as the SPH's, whether or not the flow has settled by
+// then; "converged" then says that every pressure correction met its tolerance to the end. A work folder that holds
+// the same OpenFOAM cases solved before (another --spacing or --sph-in) is read again ("reused" in the JSON, the
+// seconds its solve's). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is not
+// installed (`scripts/install-deps.sh --bench`).
 
 #include "OpenFoamStenosis.h"
 #include "StenosisJson.h"
