@@ -628,6 +628,8 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "the SPH input's particles need the field 'wall' (1 at wall particles, 0 in the fluid)"),
     QT_TRANSLATE_NOOP("vsim::Error", "particle shifting (particle_shifting > 0) needs a fluid that fills its vessel: a free surface (free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; set particle_shifting 0"),
     QT_TRANSLATE_NOOP("vsim::Error", "the SPH input has no particles"),
+    QT_TRANSLATE_NOOP("vsim::Error", "the saved run shifted its particles and this run does not (particle_shifting 0): the checkpoint belongs to another problem"),
+    QT_TRANSLATE_NOOP("vsim::Error", "this run shifts its particles (particle_shifting) and the saved run did not: the checkpoint belongs to another problem"),
     QT_TRANSLATE_NOOP("vsim::Error", "unknown validation case '%1' (known: sph-kernel, sph-fpm, sph-hydrostatic, sph-poiseuille, sph-womersley, sph-mass, sph-stenosis)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the stenosis pipe needs a mean speed > 0 and room for the sections past the throat (length >= %1 mm)"),
     QT_TRANSLATE_NOOP("vsim::Error", "50 % diameter cosine stenosis in a 1.6 mm pipe, 0.05 m/s mean inflow (Re 48 in the throat), averaged 15-25 ms: peak velocity ratio %1 upstream (%2 -> %3 m/s), %4 downstream"),

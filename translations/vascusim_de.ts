@@ -4153,6 +4153,14 @@
         <source>the saved rates do not fit the particles: the checkpoint is damaged</source>
         <translation>die gespeicherten Raten passen nicht zu den Partikeln: der Sicherungspunkt ist beschädigt</translation>
     </message>
+    <message>
+        <source>the saved run shifted its particles and this run does not (particle_shifting 0): the checkpoint belongs to another problem</source>
+        <translation>der gespeicherte Lauf hat seine Partikel verschoben und dieser Lauf nicht (particle_shifting 0): der Sicherungspunkt gehört zu einem anderen Problem</translation>
+    </message>
+    <message>
+        <source>this run shifts its particles (particle_shifting) and the saved run did not: the checkpoint belongs to another problem</source>
+        <translation>dieser Lauf verschiebt seine Partikel (particle_shifting) und der gespeicherte Lauf nicht: der Sicherungspunkt gehört zu einem anderen Problem</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

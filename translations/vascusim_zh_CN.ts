@@ -4153,6 +4153,14 @@
         <source>the saved rates do not fit the particles: the checkpoint is damaged</source>
         <translation>保存的速率与粒子不符：检查点已损坏</translation>
     </message>
+    <message>
+        <source>the saved run shifted its particles and this run does not (particle_shifting 0): the checkpoint belongs to another problem</source>
+        <translation>保存的运行对粒子做了位移，而本次运行没有（particle_shifting 0）：该检查点属于另一个问题</translation>
+    </message>
+    <message>
+        <source>this run shifts its particles (particle_shifting) and the saved run did not: the checkpoint belongs to another problem</source>
+        <translation>本次运行对粒子做位移（particle_shifting），而保存的运行没有：该检查点属于另一个问题</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -263,6 +263,23 @@ private slots:
             QVERIFY(std::string(error.what()).find("another problem") != std::string::npos);
         }
 
+        // The same problem with particle shifting: the saved rates hold no shift velocities to drift by.
+        SphSolver shifting;
+        configureStenosisPipe(c.pipe, shifting);
+        ParameterSet shifted = c.parameters;
+        shifted.set("particle_shifting", 2.0);
+        shifting.setStartState(std::make_shared<SphCheckpoint>(readSphCheckpoint(file)));
+        try
+        {
+            shifting.initialize(c.input, shifted);
+            QFAIL("a checkpoint without shift velocities was taken by a run that shifts");
+        }
+        catch (const Error& error)
+        {
+            qInfo("particle shifting: %s", error.what());
+            QVERIFY(std::string(error.what()).find("another problem") != std::string::npos);
+        }
+
         const auto size = std::filesystem::file_size(file);
         std::filesystem::resize_file(file, size - 100);
         QVERIFY_THROWS_EXCEPTION(Error, readSphCheckpoint(file));

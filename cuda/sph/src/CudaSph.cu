@@ -266,8 +266,9 @@ struct CudaSph::Device
         }
     }
 
-    /// Takes the saved rates of the next kick (SphSolver::savedStartRates, in the order of `ids`) in place of
-    /// updateRates: each sorted particle's by its number, and the largest values the time step reads.
+    /// Takes the saved rates of the next kick (SphSolver::savedStartRates, in the order of `ids`; the solver has
+    /// checked that they fit its particles and its particle shifting) in place of updateRates: each sorted
+    /// particle's by its number, and the largest values the time step reads.
     void uploadRates(const sim::sph::SphRates& saved, const std::vector<int>& ids)
     {
         const std::size_t count = std::size_t(n);

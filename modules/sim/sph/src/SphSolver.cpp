@@ -269,6 +269,15 @@ bool SphSolver::goOnFrom(const SphCheckpoint& saved)
     if (saved.rates.acceleration.size() == n && saved.rates.densityRate.size() == n &&
         saved.rates.wallDistance.size() == n)
     {
+        // The first drift moves the particles by the saved shift velocities: a run with the other setting is
+        // another problem (a stepper would have none to take, or leave them out).
+        const bool savedShifting = saved.rates.shiftVelocity.size() == n;
+        if (savedShifting && m_fluid.particleShifting <= 0.0)
+            throw Error("the saved run shifted its particles and this run does not (particle_shifting 0): the "
+                        "checkpoint belongs to another problem");
+        if (!savedShifting && m_fluid.particleShifting > 0.0)
+            throw Error("this run shifts its particles (particle_shifting) and the saved run did not: the "
+                        "checkpoint belongs to another problem");
         // The saved order is the one the rates are in: kept (the next reorder comes when the run's would).
         m_rates = saved.rates;
         m_rates.densityGradient.assign(n, Eigen::Vector3d::Zero());
