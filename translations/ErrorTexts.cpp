@@ -600,6 +600,7 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "the saved section averages are for %1 sections, this run has %2"),
     QT_TRANSLATE_NOOP("vsim::Error", "the dam break needs a positive particle spacing"),
     QT_TRANSLATE_NOOP("vsim::Error", "the dam break needs at least 1000 particles"),
+    QT_TRANSLATE_NOOP("vsim::Error", "the dam break experiment's record does not cover that time"),
     QT_TRANSLATE_NOOP("vsim::Error", "water at rest in an open tank (8 x 8 x 16 particles of 1 mm, 4 wall layers) after 0.3 s under gravity, and the same tank of mixture particles at void fraction 0.2 (thesis Table 5.1): the pressure in the middle of the column, 2h below the surface and deeper, against the hydrostatic pressure of the model's fluid"),
     QT_TRANSLATE_NOOP("vsim::Error", "%1 (%2 particles evaluated)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the 3D quartic kernel (h = 2 mm): its integral, W(2h), dW/dr against a central difference, and its first moment on a 1 mm particle lattice against the identity"),

@@ -4161,6 +4161,10 @@
         <source>this run shifts its particles (particle_shifting) and the saved run did not: the checkpoint belongs to another problem</source>
         <translation>dieser Lauf verschiebt seine Partikel (particle_shifting) und der gespeicherte Lauf nicht: der Sicherungspunkt gehört zu einem anderen Problem</translation>
     </message>
+    <message>
+        <source>the dam break experiment&apos;s record does not cover that time</source>
+        <translation>die Aufzeichnung des Dammbruch-Experiments reicht nicht bis zu diesem Zeitpunkt</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

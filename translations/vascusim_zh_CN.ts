@@ -4161,6 +4161,10 @@
         <source>this run shifts its particles (particle_shifting) and the saved run did not: the checkpoint belongs to another problem</source>
         <translation>本次运行对粒子做位移（particle_shifting），而保存的运行没有：该检查点属于另一个问题</translation>
     </message>
+    <message>
+        <source>the dam break experiment&apos;s record does not cover that time</source>
+        <translation>溃坝实验的记录不包含该时刻</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

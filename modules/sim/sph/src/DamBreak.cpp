@@ -8,7 +8,24 @@
 
 namespace vsim::sim::sph {
 
-ParticleSet damBreakParticles(double spacingMm)
+namespace {
+
+/// How deep inside the obstacle `xMm` lies (mm; <= 0 outside): the distance to its nearest face (its floor side
+/// is the tank's).
+double obstacleDepthMm(const Eigen::Vector3d& xMm)
+{
+    double depth = 1e30;
+    for (int a = 0; a < 3; ++a)
+    {
+        depth = std::min(depth, xMm[a] - 1000.0 * kDamBreakObstacleM[0][a] + (a == 2 ? 1e30 : 0.0));
+        depth = std::min(depth, 1000.0 * kDamBreakObstacleM[1][a] - xMm[a]);
+    }
+    return depth;
+}
+
+} // namespace
+
+ParticleSet damBreakParticles(double spacingMm, bool obstacle)
 {
     if (!(spacingMm > 0.0))
         throw Error("the dam break needs a positive particle spacing");
@@ -28,19 +45,20 @@ ParticleSet damBreakParticles(double spacingMm)
                 const Eigen::Vector3d x = spacingMm * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5);
                 // How far outside the tank's interior the lattice point lies, in spacings (0 inside).
                 const int outside = std::max({-i, i - cells[0] + 1, -j, j - cells[1] + 1, -k, 0});
-                const bool isWall = outside > 0;
+                const double inObstacle = obstacle && outside == 0 ? obstacleDepthMm(x) : 0.0;
+                const bool isWall = outside > 0 || inObstacle > 0.0;
                 const bool water = !isWall && x.x() >= waterStart && x.z() < waterHeight;
                 if (!isWall && !water)
                     continue;
                 set.positionsMm.push_back(x);
                 wall.push_back(isWall ? 1.0 : 0.0);
-                depth.push_back(isWall ? spacingMm * (outside - 0.5) : 0.0);
+                depth.push_back(outside > 0 ? spacingMm * (outside - 0.5) : inObstacle);
                 pressure.push_back(water ? 1000.0 * 9.81 * (waterHeight - x.z()) * 1e-3 : 0.0);
             }
     return set;
 }
 
-DamBreakCase damBreakCase(double particles)
+DamBreakCase damBreakCase(double particles, bool obstacle)
 {
     if (!(particles >= 1000.0))
         throw Error("the dam break needs at least 1000 particles");
@@ -48,8 +66,8 @@ DamBreakCase damBreakCase(double particles)
     // correction for the walls' true share.
     const double first = 1000.0 * std::cbrt(0.6754 * 2.25 / particles);
     DamBreakCase c;
-    c.spacingMm = first * std::cbrt(double(damBreakParticles(first).size()) / particles);
-    c.particles = damBreakParticles(c.spacingMm);
+    c.spacingMm = first * std::cbrt(double(damBreakParticles(first, obstacle).size()) / particles);
+    c.particles = damBreakParticles(c.spacingMm, obstacle);
     for (double w : c.particles.fields.at("wall"))
         c.wallParticles += w > 0.5;
     return c;
