@@ -17,7 +17,8 @@ double obstacleDepthMm(const Eigen::Vector3d& xMm)
     double depth = 1e30;
     for (int a = 0; a < 3; ++a)
     {
-        depth = std::min(depth, xMm[a] - 1000.0 * kDamBreakObstacleM[0][a] + (a == 2 ? 1e30 : 0.0));
+        if (a < 2) // the box's floor side is the tank's floor
+            depth = std::min(depth, xMm[a] - 1000.0 * kDamBreakObstacleM[0][a]);
         depth = std::min(depth, 1000.0 * kDamBreakObstacleM[1][a] - xMm[a]);
     }
     return depth;
