@@ -4165,6 +4165,34 @@
         <source>the dam break experiment&apos;s record does not cover that time</source>
         <translation>die Aufzeichnung des Dammbruch-Experiments reicht nicht bis zu diesem Zeitpunkt</translation>
     </message>
+    <message>
+        <source>sph-dambreak needs a GPU at its million particles (about 20 hours on 2 CPU cores): %1; validate sph-dambreak --backend cpu [--particles N] runs it on the CPU</source>
+        <translation>sph-dambreak braucht bei seiner Million Partikel eine GPU (etwa 20 Stunden auf 2 CPU-Kernen): %1; validate sph-dambreak --backend cpu [--particles N] rechnet es auf der CPU</translation>
+    </message>
+    <message>
+        <source>the dam break&apos;s end must lie within the experiment&apos;s record (0 to %1 s)</source>
+        <translation>das Ende des Dammbruchs muss innerhalb der Aufzeichnung des Experiments liegen (0 bis %1 s)</translation>
+    </message>
+    <message>
+        <source>SPHERIC benchmark 2 (Kleefsman et al. 2005): the dam break with the obstacle, %1 particles (%2 walls) at %3 mm, c0 %4 m/s, on the %5; the water heights at the probes H1-H4 every 20 ms against MARIN&apos;s record (this project&apos;s tolerance: RMS within 10 % of the 0.55 m column, fronts within 50 ms, the whole record run)%6</source>
+        <translation>SPHERIC-Benchmark 2 (Kleefsman et al. 2005): der Dammbruch mit dem Hindernis, %1 Partikel (%2 Wandpartikel) bei %3 mm, c0 %4 m/s, auf der %5; die Wasserhöhen an den Sonden H1-H4 alle 20 ms gegen die Aufzeichnung von MARIN (Toleranz dieses Projekts: RMS innerhalb 10 % der 0,55-m-Säule, Fronten innerhalb 50 ms, die ganze Aufzeichnung gerechnet)%6</translation>
+    </message>
+    <message>
+        <source>; stopped by a guard: %1</source>
+        <translation>; von einem Wächter angehalten: %1</translation>
+    </message>
+    <message>
+        <source>dam break</source>
+        <translation>Dammbruch</translation>
+    </message>
+    <message>
+        <source>GPU (single precision)</source>
+        <translation>GPU (einfache Genauigkeit)</translation>
+    </message>
+    <message>
+        <source>CPU (double precision)</source>
+        <translation>CPU (doppelte Genauigkeit)</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -4165,6 +4165,34 @@
         <source>the dam break experiment&apos;s record does not cover that time</source>
         <translation>溃坝实验的记录不包含该时刻</translation>
     </message>
+    <message>
+        <source>sph-dambreak needs a GPU at its million particles (about 20 hours on 2 CPU cores): %1; validate sph-dambreak --backend cpu [--particles N] runs it on the CPU</source>
+        <translation>sph-dambreak 在其一百万粒子规模下需要 GPU（在 2 个 CPU 核上约需 20 小时）：%1；validate sph-dambreak --backend cpu [--particles N] 可在 CPU 上运行</translation>
+    </message>
+    <message>
+        <source>the dam break&apos;s end must lie within the experiment&apos;s record (0 to %1 s)</source>
+        <translation>溃坝的结束时间必须在实验记录范围内（0 至 %1 s）</translation>
+    </message>
+    <message>
+        <source>SPHERIC benchmark 2 (Kleefsman et al. 2005): the dam break with the obstacle, %1 particles (%2 walls) at %3 mm, c0 %4 m/s, on the %5; the water heights at the probes H1-H4 every 20 ms against MARIN&apos;s record (this project&apos;s tolerance: RMS within 10 % of the 0.55 m column, fronts within 50 ms, the whole record run)%6</source>
+        <translation>SPHERIC 基准 2（Kleefsman 等，2005）：带障碍物的溃坝，%1 个粒子（%2 个壁面粒子），间距 %3 mm，c0 %4 m/s，在 %5 上；探针 H1-H4 处每 20 ms 的水位与 MARIN 的记录比较（本项目的容差：RMS 在 0.55 m 水柱的 10 % 以内，波前到达在 50 ms 以内，须运行完整记录）%6</translation>
+    </message>
+    <message>
+        <source>; stopped by a guard: %1</source>
+        <translation>；被保护条件停止：%1</translation>
+    </message>
+    <message>
+        <source>dam break</source>
+        <translation>溃坝</translation>
+    </message>
+    <message>
+        <source>GPU (single precision)</source>
+        <translation>GPU（单精度）</translation>
+    </message>
+    <message>
+        <source>CPU (double precision)</source>
+        <translation>CPU（双精度）</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
