@@ -3,7 +3,10 @@
 // `particles` particles, single precision, run to `endS` (at most the experiment's record, 1.02 s), the four probes
 // read every 20 ms of simulated time against MARIN's measurements (Kleefsman et al. 2005).
 //
-//   bench_sph_cuda_dambreak [particles=1000000] [endS=1.02] [soundSpeedFactor=20] [solver parameter=value]...
+//   bench_sph_cuda_dambreak [particles=1000000] [endS=1.02] [soundSpeedFactor=20] [map] [solver parameter=value]...
+//
+// With `map`, stderr also gets the water's depth (cm, the probes' reading) on a 5 cm grid over the tank's first
+// 1.2 m (around the obstacle and behind it) every 0.1 s from 0.4 s on: where the water is when a probe differs.
 //
 // Prints one JSON object: the set-up, the run (steps, seconds, particle-steps per second, the largest density
 // variation at the samples), per probe the heights of both at every sample, the RMS difference (m) and the arrival
@@ -17,6 +20,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -36,6 +40,23 @@ std::string list(const std::vector<double>& values, const char* format)
     return "[" + out + "]";
 }
 
+/// The depth map of the bench's `map` (stderr): rows y from 0 to 1 m, columns x from 0 to 1.2 m, 5 cm apart.
+void printDepthMap(const ParticleState& particles, const QuarticKernel& kernel, double timeS)
+{
+    const int sample = int(std::lround(timeS / kDamBreakSampleS));
+    if (sample < 20 || sample % 5 != 0)
+        return;
+    const double spacingM = kernel.smoothingLength() / 2.0;
+    std::fprintf(stderr, "depth map (cm) at t = %.2f s, x 0 .. 1.2 m left to right, y 0 .. 1 m top to bottom:\n",
+                 timeS);
+    for (int j = 0; j <= 20; ++j)
+    {
+        for (int i = 0; i <= 24; ++i)
+            std::fprintf(stderr, "%3.0f", 100.0 * waterHeightM(particles, kernel, spacingM, 0.05 * i, 0.05 * j));
+        std::fprintf(stderr, "\n");
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -51,7 +72,10 @@ try
     options.untilS = argc > 2 ? std::min(std::stod(argv[2]), damBreakExperiment().lastTimeS()) : 0.0;
     options.soundSpeedFactor = argc > 3 ? std::stod(argv[3]) : 20.0;
     for (int a = 4; a < argc; ++a)
-        options.settings.push_back(argv[a]);
+        if (std::string(argv[a]) == "map")
+            options.onSample = printDepthMap;
+        else
+            options.settings.push_back(argv[a]);
     const auto started = std::chrono::steady_clock::now();
     const DamBreakCheck check = runDamBreakCheck(options, cuda::cudaSphStepperFactory());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

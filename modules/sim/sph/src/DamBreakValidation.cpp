@@ -116,6 +116,8 @@ DamBreakCheck runDamBreakCheck(const DamBreakCheckOptions& options, const SphSte
         }
         check.largestDensityVariation =
             std::max(check.largestDensityVariation, solver.metrics().at("largest_density_variation"));
+        if (options.onSample)
+            options.onSample(particles, solver.kernel(), t);
     };
     sample();
     RunStatus status;

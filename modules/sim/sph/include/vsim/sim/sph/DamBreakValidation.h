@@ -14,10 +14,12 @@
 #include "vsim/core/Parameters.h"
 #include "vsim/core/Progress.h"
 #include "vsim/core/Validation.h"
+#include "vsim/sim/sph/QuarticKernel.h"
 #include "vsim/sim/sph/SphStepper.h"
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,9 @@ struct DamBreakCheckOptions
     double untilS = 0.0;           ///< the run's end (s); 0: the record's end (1.02 s)
     double soundSpeedFactor = 20.0; ///< c0 = factor sqrt(g H) (DualSPHysics' CoefSound)
     std::vector<std::string> settings; ///< "parameter=value" after the case's own (SphSolver's parameters)
+    /// Called at every sample with the particles and the time (s), after the probes read them: where a benchmark
+    /// looks further (a map of the water's depth).
+    std::function<void(const ParticleState&, const QuarticKernel&, double)> onSample;
 };
 
 /// One probe's two series at the run's samples, and what is compared.
