@@ -23,7 +23,7 @@ Pattern leftOut(const std::string& unavailable)
 
 std::string whyDamBreakLeftOut(const std::string& backend)
 {
-    if (backend == "cpu")
+    if (backend != "auto") // "cpu" runs it; "cuda" without a GPU, and an unknown name, are refused when it runs
         return {};
     const std::string unavailable = gpuUnavailableReason();
     if (unavailable.empty())

@@ -20,7 +20,7 @@ ValidationResult validateDamBreak(const std::string& backend, const sim::sph::Da
                                   const Progress& progress);
 
 /// Why a run of every case (`validate all|sph`) leaves the dam break out on `backend`: "" when it runs it (a GPU
-/// for "auto" or "cuda", or "cpu" asked for).
+/// for "auto"; any other name, so that "cpu" runs it and "cuda" without a GPU or an unknown name is refused).
 std::string whyDamBreakLeftOut(const std::string& backend);
 
 } // namespace vsim::app
