@@ -38,6 +38,8 @@ CaseFamily sphFamily(const Arguments& arguments)
     std::vector<std::string> cases = sim::sph::sphValidationCases();
     cases.push_back("sph-dambreak");
     const std::string backend = arguments.option("backend", "auto");
+    if (backend != "auto" && backend != "cpu" && backend != "cuda")
+        throw UsageError("--backend: unknown backend '" + backend + "' (auto, cpu, cuda)");
     sim::sph::DamBreakCheckOptions options;
     options.particles = quantityOption(arguments, "particles", "", options.particles);
     options.untilS = quantityOption(arguments, "until", "s", options.untilS);
