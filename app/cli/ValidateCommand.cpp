@@ -2,6 +2,7 @@
 
 #include "CommandLine.h"
 
+#include "vsim/app/BackendNames.h"
 #include "vsim/app/DamBreakValidationRun.h"
 #include "vsim/core/Error.h"
 #include "vsim/core/StoredText.h"
@@ -38,7 +39,7 @@ CaseFamily sphFamily(const Arguments& arguments)
     std::vector<std::string> cases = sim::sph::sphValidationCases();
     cases.push_back("sph-dambreak");
     const std::string backend = arguments.option("backend", "auto");
-    if (backend != "auto" && backend != "cpu" && backend != "cuda")
+    if (!app::isBackendName(backend))
         throw UsageError("--backend: unknown backend '" + backend + "' (auto, cpu, cuda)");
     sim::sph::DamBreakCheckOptions options;
     options.particles = quantityOption(arguments, "particles", "", options.particles);

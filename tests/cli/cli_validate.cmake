@@ -15,6 +15,11 @@ execute_process(COMMAND ${CLI} validate fem-nothing RESULT_VARIABLE code OUTPUT_
 if(NOT code EQUAL 1 OR NOT err MATCHES "known: all, .*fem-patch.*heat-decay")
     message(FATAL_ERROR "an unknown case must exit 1 naming the known ones: exit ${code}\n${err}")
 endif()
+# An unknown backend is a usage error (exit 2) before any case of the family runs.
+execute_process(COMMAND ${CLI} validate sph --backend quantum RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 2 OR NOT err MATCHES "unknown backend 'quantum' \\(auto, cpu, cuda\\)" OR out MATCHES "sph-")
+    message(FATAL_ERROR "validate sph --backend quantum must exit 2 before any case: exit ${code}\n${out}\n${err}")
+endif()
 # The run driver's template solver (sim/heat) by its family name.
 execute_process(COMMAND ${CLI} validate heat RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 string(JSON name GET "${out}" case)

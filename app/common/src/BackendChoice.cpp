@@ -2,9 +2,16 @@
 
 #include "GpuPlugin.h"
 
+#include "vsim/app/BackendNames.h"
+
 #include "vsim/core/Error.h"
 
 namespace vsim::app {
+
+bool isBackendName(const std::string& name)
+{
+    return name == "auto" || name == "cpu" || name == "cuda";
+}
 
 bool chooseCuda(const std::string& requested, std::string& device)
 {
@@ -13,7 +20,7 @@ bool chooseCuda(const std::string& requested, std::string& device)
 
 bool chooseCuda(const std::string& requested, std::string& device, const std::function<std::string()>& whyNot)
 {
-    if (requested != "auto" && requested != "cpu" && requested != "cuda")
+    if (!isBackendName(requested))
         throw Error(Pattern{"unknown backend '%1' (auto, cpu, cuda)", {requested}});
     if (requested == "cpu")
         return false;
