@@ -1,8 +1,9 @@
 // The Newton update's linear solve (TangentSolver.h, Gmres.h) on the quadratic model's non-symmetric tangent (a
 // jittered, stretched and sheared box of wall and thrombus elements under a follower pressure on one face, one
 // face held): GMRES with the kept Cholesky preconditioner reaches 1e-8 and agrees with UMFPACK's LU; a kept
-// preconditioner serves the next, changed tangent within its budget; a compressed box's indefinite tangent is
-// preconditioned by the model's definite stand-in; a tangent whose symmetric part is not positive definite falls
+// preconditioner serves the next, changed tangent within its budget; near equilibrium the tangent's own symmetric
+// part is factorised and the stand-in not assembled; a compressed box's indefinite tangent is preconditioned by the
+// model's definite stand-in; a tangent whose symmetric part is not positive definite falls
 // back to LU; held components stay 0. Three seeds.
 
 #include "vsim/core/TetMesh.h"
@@ -75,8 +76,10 @@ void deform(QuadraticFem& model, const Case& c, std::mt19937& random, double str
     model.updateElements();
 }
 
-/// The tangent (consistent + load stiffness of 50 kPa) at a random deformation near `stretch`; the force vector.
-BlockSparseMatrix deformedTangent(const Case& c, unsigned seed, double stretch, Eigen::VectorXd& force)
+/// The tangent (consistent + load stiffness of `pressurePa`, 50 kPa by default) at a random deformation near
+/// `stretch`; the force vector.
+BlockSparseMatrix deformedTangent(const Case& c, unsigned seed, double stretch, Eigen::VectorXd& force,
+                                  double pressurePa = 5e4)
 {
     QuadraticFem model = boxModel(c);
     std::mt19937 random(seed);
@@ -84,9 +87,9 @@ BlockSparseMatrix deformedTangent(const Case& c, unsigned seed, double stretch, 
     deform(model, c, random, stretch);
     BlockSparseMatrix tangent = model.makeMatrix();
     model.assembleTangent(tangent, true);
-    subtractPressureStiffness(c.loaded, model.positions(), 5e4, tangent);
+    subtractPressureStiffness(c.loaded, model.positions(), pressurePa, tangent);
     force = Eigen::VectorXd::Zero(model.positions().size());
-    addPressureForces(c.loaded, model.positions(), 5e4, force);
+    addPressureForces(c.loaded, model.positions(), pressurePa, force);
     for (Eigen::Index i = 0; i < force.size(); ++i)
         force[i] += 1e-3 * jitter(random);
     return tangent;
@@ -122,6 +125,16 @@ BlockSparseMatrix shiftedIndefinite(BlockSparseMatrix matrix)
     for (std::size_t n = 0; n < matrix.nodeCount(); ++n)
         matrix.diagonal(n) -= (mean / 3.0) * Eigen::Matrix3d::Identity();
     return matrix;
+}
+
+/// The stand-in `matrix`, counting the calls that assemble it.
+TangentSolver::StandIn standInOf(const BlockSparseMatrix& matrix, int* calls = nullptr)
+{
+    return [&matrix, calls]() -> const BlockSparseMatrix& {
+        if (calls)
+            ++*calls;
+        return matrix;
+    };
 }
 
 } // namespace
@@ -180,6 +193,53 @@ private slots:
         }
     }
 
+    /// Near equilibrium (force residual under tangentCholeskyBelow) the tangent's own symmetric part, follower load
+    /// included, is factorised and the stand-in is not even assembled: GMRES needs fewer iterations than with the
+    /// stand-in (without the load stiffness). Far from it the stand-in is assembled and used. (The other cases'
+    /// jittered, sheared boxes are not positive definite even without the load.)
+    void tangentsOwnCholeskyNearEquilibrium()
+    {
+        const Case c = boxCase();
+        for (unsigned seed : {1u, 2u, 3u})
+        {
+            // A uniform stretch along x, volume kept (the box in tension along x), the follower load on the x = 0
+            // face.
+            QuadraticFem model = boxModel(c);
+            std::mt19937 random(seed);
+            std::uniform_real_distribution<double> stretch(1.005, 1.02), jitter(-1.0, 1.0);
+            const double along = stretch(random);
+            const Eigen::Vector3d f(along, 1.0 / std::sqrt(along), 1.0 / std::sqrt(along));
+            for (std::size_t n = 0; n < c.mesh.points.size(); ++n)
+                model.positions().segment<3>(Eigen::Index(3 * n)) = f.cwiseProduct(c.mesh.points[n]);
+            model.updateElements();
+            BlockSparseMatrix tangent = model.makeMatrix(), withoutLoad = model.makeMatrix();
+            model.assembleTangent(tangent, true);
+            model.assembleDefiniteTangent(withoutLoad, true);
+            subtractPressureStiffness(c.loaded, model.positions(), 5e2, tangent);
+            Eigen::VectorXd force = Eigen::VectorXd::Zero(model.positions().size());
+            addPressureForces(c.loaded, model.positions(), 5e2, force);
+            for (Eigen::Index i = 0; i < force.size(); ++i)
+                force[i] += 1e-4 * jitter(random);
+            StaticSolveSettings settings;
+            settings.linear = LinearSolver::CholeskyGmres;
+            int nearCalls = 0, farCalls = 0;
+            TangentSolver near(tangent, c.held, settings), far(tangent, c.held, settings);
+            Eigen::VectorXd x, y;
+            const TangentSolveResult own = near.solve(tangent, force, x, true, standInOf(withoutLoad, &nearCalls),
+                                                      0.5 * settings.tangentCholeskyBelow);
+            const TangentSolveResult stood = far.solve(tangent, force, y, true, standInOf(withoutLoad, &farCalls),
+                                                       2.0 * settings.tangentCholeskyBelow);
+            qInfo("seed %u: stretch %.3f, the tangent's own Cholesky %d iterations, the stand-in's %d", seed, f.x(),
+                  own.iterations, stood.iterations);
+            QVERIFY(own.converged && own.factorised && stood.converged && stood.factorised);
+            QCOMPARE(nearCalls, 0);
+            QCOMPARE(farCalls, 1);
+            QVERIFY(own.iterations < stood.iterations);
+            QVERIFY(residualOf(tangent, x, force, c.held) <= 2e-8);
+            QVERIFY(residualOf(tangent, y, force, c.held) <= 2e-8);
+        }
+    }
+
     void indefiniteSymmetricPartFallsBackToLu()
     {
         const Case c = boxCase();
@@ -215,7 +275,8 @@ private slots:
             settings.linear = LinearSolver::CholeskyGmres;
             TangentSolver solver(tangent, c.held, settings);
             Eigen::VectorXd x;
-            const TangentSolveResult solved = solver.solve(tangent, force, x, true, &model);
+            // Far from equilibrium (force residual 2): the stand-in is what the Cholesky is tried on.
+            const TangentSolveResult solved = solver.solve(tangent, force, x, true, standInOf(model), 2.0);
             qInfo("seed %u: indefinite model tangent, %d iterations, residual %.1e", seed, solved.iterations,
                   solved.relativeResidual);
             QVERIFY(solved.converged && solved.factorised);
@@ -260,7 +321,7 @@ private slots:
             settings.linear = LinearSolver::CholeskyGmres;
             TangentSolver solver(tangent, c.held, settings);
             Eigen::VectorXd x;
-            const TangentSolveResult solved = solver.solve(tangent, force, x, true, &definite);
+            const TangentSolveResult solved = solver.solve(tangent, force, x, true, standInOf(definite), 2.0);
             qInfo("seed %u: compressed to %.2f, GMRES with the definite stand-in: %d iterations, residual %.1e", seed,
                   kCompression, solved.iterations, solved.relativeResidual);
             QVERIFY(solved.converged && solved.factorised);

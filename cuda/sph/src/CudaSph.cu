@@ -1,95 +1,15 @@
 #include "vsim/cuda_sph/CudaSph.h"
 
-#include "SphKernels.cuh"
-#include "vsim/core/Error.h"
-#include "vsim/core/Parameters.h"
-#include "vsim/core/StoredText.h"
-#include "vsim/cuda_common/CudaCheck.h"
-
-#include <cub/device/device_radix_sort.cuh>
+#include "CudaSphDevice.cuh"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <unordered_map>
 #include <vector>
 
 namespace vsim::cuda {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-/// One device allocation of `count` values of T.
-template <class T> class DeviceArray
-{
-public:
-    DeviceArray() = default;
-    explicit DeviceArray(std::size_t count) : m_count(count)
-    {
-        VSIM_CUDA_CHECK(cudaMalloc(&m_data, std::max<std::size_t>(1, count) * sizeof(T)));
-    }
-    ~DeviceArray() { cudaFree(m_data); }
-    DeviceArray(DeviceArray&& other) noexcept { swap(other); }
-    DeviceArray& operator=(DeviceArray&& other) noexcept
-    {
-        swap(other);
-        return *this;
-    }
-    void swap(DeviceArray& other) noexcept
-    {
-        std::swap(m_data, other.m_data), std::swap(m_count, other.m_count);
-    }
-    T* data() const { return m_data; }
-    std::size_t bytes() const { return m_count * sizeof(T); }
-    void upload(const std::vector<T>& values)
-    {
-        VSIM_CUDA_CHECK(cudaMemcpy(m_data, values.data(), values.size() * sizeof(T), cudaMemcpyHostToDevice));
-    }
-    /// The first `count` values (all by default).
-    std::vector<T> download(std::size_t count = std::size_t(-1)) const
-    {
-        std::vector<T> values(std::min(count, m_count));
-        VSIM_CUDA_CHECK(cudaMemcpy(values.data(), m_data, values.size() * sizeof(T), cudaMemcpyDeviceToHost));
-        return values;
-    }
-
-private:
-    T* m_data = nullptr;
-    std::size_t m_count = 0;
-};
-
-/// The particle arrays, twice: the sorted order is gathered from one set into the other.
-struct ParticleArrays
-{
-    DeviceArray<float4> position, velocity, state;
-    DeviceArray<int> id;
-
-    explicit ParticleArrays(std::size_t n) : position(n), velocity(n), state(n), id(n) {}
-    sph::SphArrays pointers() const { return {position.data(), velocity.data(), state.data(), id.data()}; }
-    std::size_t bytes() const { return position.bytes() + velocity.bytes() + state.bytes() + id.bytes(); }
-};
-
-unsigned bitsFor(std::size_t count)
-{
-    unsigned bits = 1;
-    while ((std::size_t(1) << bits) < count)
-        ++bits;
-    return bits;
-}
-
-float asFloat(unsigned bits)
-{
-    float value;
-    std::memcpy(&value, &bits, sizeof value);
-    return value;
-}
-
-unsigned bitsOf(float value)
-{
-    unsigned bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
 
 /// The indices of `id` in the order of the numbers they hold (download()'s order).
 std::vector<std::size_t> orderByNumber(const std::vector<int>& id)
@@ -100,235 +20,6 @@ std::vector<std::size_t> orderByNumber(const std::vector<int>& id)
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
     return order;
 }
-
-float4 asFloat4(const Eigen::Vector3d& v)
-{
-    return make_float4(float(v.x()), float(v.y()), float(v.z()), 0.0f);
-}
-
-} // namespace
-
-/// What a guard's message tells of one particle, read back from the device.
-struct ParticleAt
-{
-    int id = -1;
-    Eigen::Vector3d positionM = Eigen::Vector3d::Zero();
-    double wallDistanceM = INFINITY, guardedWallDistanceM = INFINITY;
-};
-
-struct CudaSph::Device
-{
-    int n = 0;        ///< particles now
-    int capacity = 0; ///< particles the arrays hold (open boundaries create and remove particles)
-    sph::SphParams params{};
-    sim::sph::FluidModel fluid;
-    sim::sph::SphStepSettings settings;
-    sim::sph::OpenBoundaries boundaries;  ///< the CPU solver's, initialized: profiles and prescribed values
-    sph::OpenBoundaryArgs boundaryArgs{}; ///< what the kernels see of them
-    sim::sph::MassLedger ledger;
-    std::vector<double> flowRate, pressure; ///< per boundary, the last imposition's (m^3/s into the domain, Pa)
-    int nextId = 0;
-    ParticleArrays current, other;
-    DeviceArray<float4> acceleration, densityGradient, derived, shiftVelocity;
-    DeviceArray<float> densityRate, wallDistance, guardedWallDistance;
-    DeviceArray<unsigned> keys, sortedKeys, cellStart, cellEnd, cellFluid;
-    DeviceArray<int> order, sortedOrder;
-    DeviceArray<int> byKind, fluidSelected; // fluid indices first, then the others' (launchPartition)
-    DeviceArray<std::uint8_t> partitionScratch;
-    int fluidCount = 0;
-    DeviceArray<std::uint8_t> sortScratch;
-    std::size_t sortScratchBytes = 0;
-    unsigned keyBits = 1;
-    std::size_t cells = 0;
-    DeviceArray<sph::SphReductions> reductions;
-    DeviceArray<sph::OpenBoundaryTallies> tallies;
-    sph::SphReductions last{};
-    sph::OpenBoundaryTallies lastTallies{};
-    double time = 0.0, stepS = 0.0;
-
-    Device(std::size_t count, std::size_t capacityCount, std::size_t cellCount, bool shifting)
-        : n(int(count)), capacity(int(capacityCount)), current(capacityCount), other(capacityCount),
-          acceleration(capacityCount), densityGradient(capacityCount), derived(capacityCount),
-          shiftVelocity(shifting ? capacityCount : 0),
-          densityRate(capacityCount), wallDistance(capacityCount), guardedWallDistance(capacityCount),
-          keys(capacityCount), sortedKeys(capacityCount), cellStart(cellCount), cellEnd(cellCount),
-          cellFluid(cellCount), order(capacityCount), sortedOrder(capacityCount), byKind(capacityCount),
-          fluidSelected(1), keyBits(bitsFor(cellCount + 1)), cells(cellCount), reductions(1), tallies(1)
-    {
-        VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data(),
-                                                        sortedKeys.data(), order.data(), sortedOrder.data(),
-                                                        capacity, 0, int(keyBits)));
-        sortScratch = DeviceArray<std::uint8_t>(sortScratchBytes);
-        partitionScratch = DeviceArray<std::uint8_t>(sph::partitionScratchBytes(capacity));
-    }
-
-    sph::SphRatesArrays rates() const
-    {
-        return {acceleration.data(), densityGradient.data(), derived.data(), densityRate.data(), wallDistance.data(),
-                shiftVelocity.data(), guardedWallDistance.data()};
-    }
-    bool open() const { return boundaryArgs.count > 0; }
-
-    /// Cell keys (removed particles past every cell), the radix sort of `total` particles, the gather into the
-    /// sorted order, each cell's run over the `kept` ones, and the indices by kind. A closed domain's fluid
-    /// count is fixed; with open boundaries it is read back.
-    void sort(int total, int kept)
-    {
-        VSIM_CUDA_CHECK(cudaMemset(cellFluid.data(), 0, cellFluid.bytes()));
-        sph::launchCellKeys(params, current.pointers(), total, keys.data(), order.data(), cellFluid.data(),
-                            reductions.data());
-        VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sortScratch.data(), sortScratchBytes, keys.data(),
-                                                        sortedKeys.data(), order.data(), sortedOrder.data(),
-                                                        total, 0, int(keyBits)));
-        sph::launchGather(current.pointers(), other.pointers(), sortedOrder.data(), total);
-        std::swap(current, other);
-        n = kept;
-        VSIM_CUDA_CHECK(cudaMemset(cellStart.data(), 0, cellStart.bytes()));
-        VSIM_CUDA_CHECK(cudaMemset(cellEnd.data(), 0, cellEnd.bytes()));
-        sph::launchCellRanges(sortedKeys.data(), n, cellStart.data(), cellEnd.data());
-        sph::launchPartition(current.pointers(), n, byKind.data(), fluidSelected.data(),
-                             partitionScratch.data(), partitionScratch.bytes());
-        if (open())
-            VSIM_CUDA_CHECK(cudaMemcpy(&fluidCount, fluidSelected.data(), sizeof fluidCount, cudaMemcpyDeviceToHost));
-    }
-
-    /// The exchange after the drift (open boundaries only), then the sort; returns a guard's message, or "".
-    std::string exchangeAndSort()
-    {
-        if (!open())
-        {
-            sort(n, n);
-            return {};
-        }
-        sph::launchExchange(current.pointers(), boundaryArgs, n, nextId, tallies.data());
-        VSIM_CUDA_CHECK(cudaMemcpy(&lastTallies, tallies.data(), sizeof lastTallies, cudaMemcpyDeviceToHost));
-        if (lastTallies.overflow)
-            return storedText(Pattern{"the open boundaries let in more particles than the GPU's arrays hold (%1)",
-                                      {std::to_string(capacity)}});
-        const int total = n + int(lastTallies.created);
-        nextId += int(lastTallies.created);
-        for (int k = 0; k < boundaryArgs.count; ++k)
-            ledger.inflowKg[std::size_t(k)] += lastTallies.inflowKg[k],
-                ledger.outflowKg[std::size_t(k)] += lastTallies.outflowKg[k];
-        sort(total, total - int(lastTallies.removed));
-        return {};
-    }
-
-    /// SphSolver::updateRates: the buffers' values, the walls' pressure, every pressure, G and the wall
-    /// distances, the rates.
-    void updateRates(double timeS)
-    {
-        const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
-        const float e[3] = {float(external.x()), float(external.y()), float(external.z())};
-        const int* fluidList = byKind.data();
-        const int* others = byKind.data() + fluidCount;
-        if (open())
-        {
-            for (int k = 0; k < boundaryArgs.count; ++k)
-            {
-                const std::size_t b = std::size_t(k);
-                sph::OpenBoundaryParams& args = boundaryArgs.b[k];
-                args.speedScale = args.velocityPrescribed
-                                      ? float(boundaries.prescribedFlowRate(b, timeS) / boundaries.calibration(b))
-                                      : 0.0f;
-                args.pressure = float(boundaries.prescribedPressure(b, timeS, flowRate[b]));
-            }
-            sph::launchImpose(params, current.pointers(), rates(), boundaryArgs, cellStart.data(), cellEnd.data(),
-                              others, n - fluidCount, tallies.data());
-        }
-        sph::launchWallPressure(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(),
-                                cellFluid.data(), others, n - fluidCount);
-        sph::launchPressures(params, current.pointers(), rates(), n);
-        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), fluidList,
-                                 fluidCount);
-        sph::launchRates(params, current.pointers(), rates(), cellStart.data(), cellEnd.data(), e, fluidList,
-                         fluidCount, reductions.data());
-    }
-
-    void resetReductions()
-    {
-        VSIM_CUDA_CHECK(cudaMemset(reductions.data(), 0, sizeof(sph::SphReductions)));
-        if (open())
-            VSIM_CUDA_CHECK(cudaMemset(tallies.data(), 0, sizeof(sph::OpenBoundaryTallies)));
-    }
-    void fetchReductions()
-    {
-        VSIM_CUDA_CHECK(cudaMemcpy(&last, reductions.data(), sizeof last, cudaMemcpyDeviceToHost));
-        if (!open())
-            return;
-        VSIM_CUDA_CHECK(cudaMemcpy(&lastTallies, tallies.data(), sizeof lastTallies, cudaMemcpyDeviceToHost));
-        for (int k = 0; k < boundaryArgs.count; ++k)
-        {
-            const std::size_t b = std::size_t(k);
-            flowRate[b] = lastTallies.flux[k];
-            pressure[b] = lastTallies.members[k] > 0.0 ? lastTallies.pressureSum[k] / lastTallies.members[k]
-                                                       : double(boundaryArgs.b[k].pressure);
-        }
-    }
-
-    /// Takes the saved rates of the next kick (SphSolver::savedStartRates, in the order of `ids`; the solver has
-    /// checked that they fit its particles and its particle shifting) in place of updateRates: each sorted
-    /// particle's by its number, and the largest values the time step reads.
-    void uploadRates(const sim::sph::SphRates& saved, const std::vector<int>& ids)
-    {
-        const std::size_t count = std::size_t(n);
-        if (ids.size() != count || saved.acceleration.size() != count || saved.densityRate.size() != count ||
-            saved.wallDistance.size() != count || (shiftVelocity.bytes() > 0 && saved.shiftVelocity.size() != count))
-            throw Error("the saved rates do not fit the particles: the checkpoint is damaged");
-        std::unordered_map<int, std::size_t> given;
-        for (std::size_t i = 0; i < count; ++i)
-            given.emplace(ids[i], i);
-        const std::vector<int> sorted = current.id.download(count);
-        std::vector<float4> a(count), shift(shiftVelocity.bytes() > 0 ? count : 0);
-        std::vector<float> rate(count), distance(count);
-        for (std::size_t s = 0; s < count; ++s)
-        {
-            const std::size_t i = given.at(sorted[s]);
-            a[s] = asFloat4(saved.acceleration[i]);
-            rate[s] = float(saved.densityRate[i]), distance[s] = float(saved.wallDistance[i]);
-            if (!shift.empty())
-                shift[s] = asFloat4(saved.shiftVelocity[i]);
-        }
-        acceleration.upload(a), densityRate.upload(rate), wallDistance.upload(distance);
-        if (!shift.empty())
-            shiftVelocity.upload(shift);
-        last = {};
-        last.largestAcceleration = bitsOf(float(saved.largestAcceleration));
-        last.largestViscousRate = bitsOf(float(saved.largestViscousRate));
-        last.largestKinematicViscosity = bitsOf(float(saved.largestKinematicViscosity));
-    }
-
-    /// Particle `index` of the sorted order now (a guard's particle).
-    ParticleAt particleAt(int index) const
-    {
-        ParticleAt at;
-        float4 x;
-        float distance[2];
-        VSIM_CUDA_CHECK(cudaMemcpy(&x, current.position.data() + index, sizeof x, cudaMemcpyDeviceToHost));
-        VSIM_CUDA_CHECK(cudaMemcpy(&at.id, current.id.data() + index, sizeof at.id, cudaMemcpyDeviceToHost));
-        VSIM_CUDA_CHECK(cudaMemcpy(&distance[0], wallDistance.data() + index, sizeof(float), cudaMemcpyDeviceToHost));
-        VSIM_CUDA_CHECK(
-            cudaMemcpy(&distance[1], guardedWallDistance.data() + index, sizeof(float), cudaMemcpyDeviceToHost));
-        at.positionM = settings.boxLowM + Eigen::Vector3d(x.x, x.y, x.z);
-        at.wallDistanceM = distance[0], at.guardedWallDistanceM = distance[1];
-        return at;
-    }
-
-    /// stableTimeStep (SphRates.cpp) from the last rates' maxima.
-    double stableStep() const
-    {
-        const double h = params.h;
-        double step = h / (fluid.soundSpeed + asFloat(last.largestViscousRate));
-        if (asFloat(last.largestAcceleration) > 0.0f)
-            step = std::min(step, std::sqrt(h / asFloat(last.largestAcceleration)));
-        step *= settings.cfl;
-        if (asFloat(last.largestKinematicViscosity) > 0.0f)
-            step = std::min(step, 0.125 * h * h / asFloat(last.largestKinematicViscosity));
-        return step;
-    }
-};
-
-namespace {
 
 /// The open boundaries as the kernels see them (positions from the box's corner).
 sph::OpenBoundaryArgs boundaryArgs(const sim::sph::OpenBoundaries& boundaries, const Eigen::Vector3d& boxLowM,
@@ -449,8 +140,8 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
                       : float(p.boundary[i]));
         state[i] = make_float4(float(p.density[i]), float(p.mass[i]), float(p.voidFraction[i]), 0.0f);
     }
-    d.current.position.upload(position), d.current.velocity.upload(velocity), d.current.state.upload(state);
-    d.current.id.upload(p.id);
+    d.current.position.write(position), d.current.velocity.write(velocity), d.current.state.write(state);
+    d.current.id.write(p.id);
     d.resetReductions();
     d.sort(d.n, d.n);
     if (const sim::sph::SphRates* saved = solver.savedStartRates())
@@ -477,7 +168,7 @@ std::string CudaSph::step()
         return at(full);
     d.updateRates(d.time + dt);
     sph::launchKick(d.params, d.current.pointers(), d.rates(), float(dt), float(0.5 * d.settings.spacingM),
-                    d.n, d.reductions.data());
+                    d.n, d.reductions.data);
     d.fetchReductions();
     d.time += dt;
     d.stepS = dt;
@@ -489,7 +180,7 @@ std::string CudaSph::step()
                                      {std::to_string(d.last.escapedId)}}));
     if (d.last.throughWall)
     {
-        const ParticleAt where = d.particleAt(d.last.throughWallIndex);
+        const sph::ParticleAt where = d.particleAt(d.last.throughWallIndex);
         return at(storedText(Pattern{
             "fluid particle %1 went %2 mm into the wall at %3: the time step or the sound speed is too large for "
             "the flow, or the wall thinner than the kernel (a segmentation's ragged edge: the walls' backstop, "
@@ -499,7 +190,7 @@ std::string CudaSph::step()
     }
     if (largestDensityVariation() > d.settings.densityGuard)
     {
-        const ParticleAt where = d.particleAt(int(d.last.largestDensityVariation & 0xffffffffu));
+        const sph::ParticleAt where = d.particleAt(int(d.last.largestDensityVariation & 0xffffffffu));
         const std::string wall =
             std::isfinite(where.wallDistanceM)
                 ? storedText(Pattern{"%1 mm from the wall", {numberText(1e3 * where.wallDistanceM)}})
@@ -523,7 +214,7 @@ double CudaSph::lastStepS() const
 }
 double CudaSph::largestDensityVariation() const
 {
-    return asFloat(unsigned(m_device->last.largestDensityVariation >> 32));
+    return sph::asFloat(unsigned(m_device->last.largestDensityVariation >> 32));
 }
 std::size_t CudaSph::particleCount() const
 {
@@ -546,9 +237,9 @@ sim::sph::ParticleState CudaSph::download() const
 {
     const Device& d = *m_device;
     const std::size_t n = std::size_t(d.n);
-    const auto position = d.current.position.download(n), velocity = d.current.velocity.download(n);
-    const auto state = d.current.state.download(n);
-    const auto id = d.current.id.download(n);
+    const auto position = d.current.position.read(n), velocity = d.current.velocity.read(n);
+    const auto state = d.current.state.read(n);
+    const auto id = d.current.id.read(n);
     sim::sph::ParticleState out;
     for (std::size_t s : orderByNumber(id))
     {
@@ -575,9 +266,9 @@ sim::sph::SphRates CudaSph::nextRates() const
 {
     const Device& d = *m_device;
     const std::size_t n = std::size_t(d.n);
-    const auto id = d.current.id.download(n);
-    const auto acceleration = d.acceleration.download(n), shift = d.shiftVelocity.download(n);
-    const auto densityRate = d.densityRate.download(n), wallDistance = d.wallDistance.download(n);
+    const auto id = d.current.id.read(n);
+    const auto acceleration = d.acceleration.read(n), shift = d.shiftVelocity.read(n);
+    const auto densityRate = d.densityRate.read(n), wallDistance = d.wallDistance.read(n);
     sim::sph::SphRates out;
     for (std::size_t s : orderByNumber(id))
     {
@@ -586,9 +277,9 @@ sim::sph::SphRates CudaSph::nextRates() const
         if (!shift.empty())
             out.shiftVelocity.emplace_back(shift[s].x, shift[s].y, shift[s].z);
     }
-    out.largestAcceleration = asFloat(d.last.largestAcceleration);
-    out.largestViscousRate = asFloat(d.last.largestViscousRate);
-    out.largestKinematicViscosity = asFloat(d.last.largestKinematicViscosity);
+    out.largestAcceleration = sph::asFloat(d.last.largestAcceleration);
+    out.largestViscousRate = sph::asFloat(d.last.largestViscousRate);
+    out.largestKinematicViscosity = sph::asFloat(d.last.largestKinematicViscosity);
     return out;
 }
 

@@ -53,20 +53,21 @@ TangentSolveResult solveTangent(StaticModel& model, TangentSolver& linear, Block
     const bool consistent = settings.rotationStiffness;
     model.assembleTangent(stiffness, consistent);
     const bool fresh = linear.needsPreconditioner(forceResidual);
-    // A fresh GMRES preconditioner factorises the model's definite stand-in for its tangent: with the follower
-    // load's stiffness the symmetric part was indefinite on the thrombus wall for the first Newton updates, and
-    // so was the model's own tangent after the first long step; each fell back to an UMFPACK LU 3-4x slower
-    // than the Cholesky (RESULTS.md, 2026-11-27 and 2026-11-28).
-    const bool definiteWanted = fresh && settings.linear == LinearSolver::CholeskyGmres;
-    if (definiteWanted)
-    {
+    if (externalStiffness && !symmetric)
+        externalStiffness(model.positions(), stiffness);
+    // The model's definite stand-in for its tangent, assembled only when a fresh GMRES preconditioner needs it:
+    // with the follower load's stiffness the symmetric part was indefinite on the thrombus wall for the first
+    // Newton updates, and so was the model's own tangent after the first long step; each fell back to an UMFPACK
+    // LU 3-4x slower than the Cholesky (RESULTS.md, 2026-11-27 and 2026-11-28).
+    const TangentSolver::StandIn standIn = [&]() -> const BlockSparseMatrix& {
         if (!definite)
             definite = model.makeMatrix();
         model.assembleDefiniteTangent(*definite, consistent);
-    }
-    if (externalStiffness && !symmetric)
-        externalStiffness(model.positions(), stiffness);
-    return linear.solve(stiffness, residual, delta, fresh, definiteWanted ? &*definite : nullptr);
+        return *definite;
+    };
+    return linear.solve(stiffness, residual, delta, fresh,
+                        settings.linear == LinearSolver::CholeskyGmres ? standIn : TangentSolver::StandIn{},
+                        forceResidual);
 }
 
 } // namespace

@@ -48,6 +48,7 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         settings.maxUpdates = m_setup.maxUpdatesPerIncrement;
         settings.linear = m_setup.linear;
         settings.linearTolerance = 1e-8;
+        settings.tangentCholeskyBelow = m_setup.tangentCholeskyBelow;
         settings.rotationStiffness = true;
         settings.directionalLineSearch = true;
         const Progress stage = progress.subRange(m_reached, factor);

@@ -120,6 +120,10 @@ struct StaticSolveSettings
     /// thrombus wall costs about 27 iterations with it, and a fresh solve takes 12-26: RESULTS.md, 2026-11-27)
     int reuseIterations = 25;
     double reuseBelow = 0.1;       ///< CholeskyGmres: keep a factorisation only below this force residual
+    /// CholeskyGmres: factorise the tangent's own symmetric part (follower load's stiffness included) below this
+    /// force residual, before the model's definite stand-in, and keep that factorisation below it (TangentSolver.h;
+    /// at the start, residual 1, the thrombus wall's was indefinite: 7.4 s lost, RESULTS.md 2026-12-01)
+    double tangentCholeskyBelow = 0.7;
     /// The model's consistent tangent (co-rotational: + the derivative of the element rotations,
     /// CorotationalFem::addRotationStiffness): a full Newton iteration (quadratic convergence), with a direct
     /// solver that takes a non-symmetric matrix where the tangent is not symmetric.

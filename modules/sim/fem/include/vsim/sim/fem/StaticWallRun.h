@@ -35,6 +35,9 @@ struct StaticWallSetup
     int maxUpdatesPerIncrement = 15;                ///< Newton converges in 5-10 or not at all
     /// Each Newton update's linear solve: GMRES to 1e-8 with a kept CHOLMOD preconditioner, or UMFPACK LU.
     LinearSolver linear = LinearSolver::CholeskyGmres;
+    /// CholeskyGmres: the tangent's own Cholesky below this force residual (StaticSolveSettings; a negative value:
+    /// the definite stand-in only, as before 2026-12-01, which bench_fem_static compares)
+    double tangentCholeskyBelow = StaticSolveSettings{}.tangentCholeskyBelow;
 };
 
 /// The unloaded (zero-pressure) geometry by the backward displacement method (Bols et al. 2013, J Comput Appl Math

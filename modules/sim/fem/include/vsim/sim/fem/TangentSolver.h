@@ -4,13 +4,17 @@
 // name: conjugate gradients (block Jacobi, or the smoothed-aggregation V-cycle kept across updates by
 // MultigridSetUpRule.h), a sparse direct factorisation per update (CHOLMOD of the symmetric part,
 // UMFPACK LU), or GMRES on the full tangent preconditioned by a factorisation kept across updates near
-// equilibrium: CHOLMOD's Cholesky of the model's definite stand-in for its tangent (StaticModel::
-// assembleDefiniteTangent, without the follower load's stiffness) where that is positive definite, else UMFPACK's
-// LU of the tangent. The last is the converged wall
-// analysis's default. The follower pressure's load stiffness makes the tangent non-symmetric, which GMRES takes to
-// the 1e-8 the issue asks (12-26 iterations with a fresh Cholesky of the model's tangent on the thrombus wall);
-// CHOLMOD factorises the quadratic wall 2-4x faster than UMFPACK and solves it 2-10x faster (RESULTS.md); once the
-// force residual is small the tangent hardly changes between updates, so one factorisation serves several.
+// equilibrium. The last is the converged wall analysis's default; its preconditioner is, in this order:
+// - CHOLMOD's Cholesky of the tangent's own symmetric part, follower load's stiffness included, once the force
+//   residual is under the load (tangentCholeskyBelow) and until it has once been found not positive definite:
+//   GMRES then needs 1-3 iterations, the follower load's non-symmetric part being small;
+// - CHOLMOD's Cholesky of the model's definite stand-in for its tangent (StaticModel::assembleDefiniteTangent,
+//   without the follower load's stiffness), built only when asked for: the first, overshooting updates from rest
+//   leave regions compressed where the tangent's symmetric part is indefinite (12-50 iterations with it);
+// - UMFPACK's LU of the tangent, where neither is positive definite or GMRES does not converge.
+// The follower pressure's load stiffness makes the tangent non-symmetric, which GMRES takes to the 1e-8 the issue
+// asks; CHOLMOD factorises the quadratic wall 2-4x faster than UMFPACK and solves it 2-10x faster (RESULTS.md); once
+// the force residual is small the tangent hardly changes between updates, so one factorisation serves several.
 
 #include "vsim/sim/fem/BlockSparseMatrix.h"
 #include "vsim/sim/fem/Gmres.h"
@@ -20,6 +24,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -39,24 +44,24 @@ public:
     TangentSolver(const TangentSolver&) = delete;
     TangentSolver& operator=(const TangentSolver&) = delete;
     /// CholeskyGmres: whether the update with relative force residual `forceResidual` needs a fresh preconditioner
-    /// (none yet, the residual above reuseBelow, or the last solve with the kept one took over reuseIterations).
+    /// (none yet, the residual above reuseBelow (above tangentCholeskyBelow where the kept one is the tangent's own
+    /// Cholesky), or the last solve with the kept one took over reuseIterations).
     bool needsPreconditioner(double forceResidual) const;
-    /// Solves `tangent` dx = f; CholeskyGmres: with a fresh preconditioner when `fresh` (CHOLMOD of the symmetric
-    /// part of `material` where given, else of the tangent; UMFPACK's LU of the tangent where that is not positive
-    /// definite or does not bring GMRES to its tolerance), else the kept one with 3 x reuseIterations, then a fresh
-    /// one if that did not converge. `material`: the model's definite stand-in for its tangent, without a follower
-    /// load's stiffness (whose symmetric part is indefinite where the load is large against a soft material, the
-    /// thrombus at 120 mmHg).
-    /// Throws vsim::Error when a factorisation fails (a part of the wall not held).
+    /// The model's definite stand-in for its tangent (without a follower load's stiffness), assembled when called.
+    using StandIn = std::function<const BlockSparseMatrix&()>;
+    /// Solves `tangent` dx = f; CholeskyGmres: with a fresh preconditioner when `fresh` (the order above; the
+    /// tangent's own Cholesky only while `forceResidual` is under settings.tangentCholeskyBelow, the stand-in's
+    /// where `standIn` is given), else the kept one with 3 x reuseIterations, then a fresh one if that did not
+    /// converge. Throws vsim::Error when a factorisation fails (a part of the wall not held).
     TangentSolveResult solve(const BlockSparseMatrix& tangent, const Eigen::VectorXd& f, Eigen::VectorXd& dx,
-                             bool fresh = true, const BlockSparseMatrix* material = nullptr);
+                             bool fresh = true, const StandIn& standIn = {}, double forceResidual = 0.0);
     /// The tolerance a solve is judged against (direct solves: 1e-8 on their residual check).
     double tolerance() const;
 
 private:
     GmresResult gmres(const BlockSparseMatrix& tangent, const Eigen::VectorXd& f, Eigen::VectorXd& dx, int budget);
-    /// CHOLMOD of `symmetric` (the model's tangent, or the tangent itself), else UMFPACK's LU of `tangent`.
-    void factorisePreconditioner(const BlockSparseMatrix& symmetric, const BlockSparseMatrix& tangent);
+    /// The first of the preconditioners above that factorises.
+    void factorisePreconditioner(const BlockSparseMatrix& tangent, const StandIn& standIn, double forceResidual);
     void factoriseLu(const BlockSparseMatrix& tangent);
 
     const StaticSolveSettings& m_settings;
@@ -64,6 +69,8 @@ private:
     std::unique_ptr<SparseDirect> m_direct, m_lu;
     SparseDirect* m_preconditioner = nullptr; // the kept factorisation (CholeskyGmres)
     int m_lastIterations = 0;
+    bool m_tangentDefinite = true; // no Cholesky of the tangent's symmetric part has failed in this solve
+    bool m_keptIsTangents = false; // the kept factorisation is the tangent's own Cholesky
     const Eigen::VectorXd* m_positions;
     KeptMultigrid m_ownMultigrid;  // ConjugateGradient with Multigrid, without settings.keptMultigrid
     KeptMultigrid& m_multigrid;    // the one in use
