@@ -102,6 +102,23 @@ __global__ void pressuresKernel(SphParams p, SphArrays a, SphRatesArrays rates, 
                                    state.x / mixtureDensity(p, state.z));
 }
 
+/// The least r - guard depth over the walls whose depth particle i lies within (INFINITY if none).
+__device__ float guardedWallDistance(const SphParams& p, const SphArrays& a, const unsigned* cellStart,
+                                     const unsigned* cellEnd, int i)
+{
+    float distance = INFINITY;
+    forEachNeighbour(p, a, cellStart, cellEnd, i,
+                     [&](int j, float4 xj, float, float, float, float r, float)
+                     {
+                         if (!isWall(xj) || !(xj.w >= 0.0f) || !(r - xj.w < 0.0f))
+                             return;
+                         const float guardDepth = __ldg(&a.velocity[j]).w;
+                         if (guardDepth >= 0.0f)
+                             distance = fminf(distance, r - guardDepth);
+                     });
+    return distance;
+}
+
 /// fluidNeighbourhood: G_i = (M_i^T)^-1 sum_j V_j (rho_j / rho0_j - rho_i / rho0_i) grad W and the wall
 /// distance.
 __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
@@ -119,7 +136,7 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
     // The moment -sum V_j rij (x) grad W = -sum V_j g rij (x) rij (grad W = g rij) is symmetric: six sums.
     float m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
     float sum[3] = {0, 0, 0};
-    float wallDistance = INFINITY, guardedWallDistance = INFINITY;
+    float wallDistance = INFINITY;
     const bool gradients = p.diffusion > 0.0f;
     forEachNeighbour(p, a, cellStart, cellEnd, i,
                      [&](int j, float4 xj, float rx, float ry, float rz, float r, float)
@@ -127,18 +144,7 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
                          if (isWall(xj))
                          {
                              if (xj.w >= 0.0f)
-                             {
-                                 const float d = r - xj.w;
-                                 wallDistance = fminf(wallDistance, d);
-                                 // The backstop and the guard depth (<= the wall depth) ride on the velocity
-                                 // record: read where they can matter.
-                                 if (d < 0.0f)
-                                 {
-                                     const float guardDepth = __ldg(&a.velocity[j]).w;
-                                     if (guardDepth >= 0.0f)
-                                         guardedWallDistance = fminf(guardedWallDistance, r - guardDepth);
-                                 }
-                             }
+                                 wallDistance = fminf(wallDistance, r - xj.w);
                              return;
                          }
                          if (!gradients)
@@ -152,7 +158,11 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
                          sum[0] += difference * ax, sum[1] += difference * ay, sum[2] += difference * az;
                      });
     rates.wallDistance[i] = wallDistance;
-    rates.guardedWallDistance[i] = guardedWallDistance;
+    // The guard's distance, against each wall's guard depth (<= its wall depth, riding on the velocity record):
+    // only a particle within some wall's depth can have one, so it has a loop of its own, which the rest skip
+    // (in the loop above it cost 8 registers a thread and a quarter of the kernel's occupancy).
+    if (wallDistance < 0.0f)
+        rates.guardedWallDistance[i] = guardedWallDistance(p, a, cellStart, cellEnd, i);
     if (!gradients)
         return;
     // G = (M^T)^-1 sum by the adjugate (M is symmetric), where |det| > 1e-3 (SphRates.cpp).
@@ -172,7 +182,9 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
 }
 
 /// computeRates for the fluid particles (walls get no rates; a wall-fluid pair's viscous rate is the fluid
-/// one's).
+/// one's). The options a run may leave off (particle shifting, the walls' backstop) are template switches, so
+/// that a run without them carries neither their per-neighbour tests nor their registers (launchRates).
+template <bool Shifting, bool Backstop>
 __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, const unsigned* cellStart,
                             const unsigned* cellEnd, float ex, float ey, float ez, const int* fluid,
                             int count, SphReductions* r)
@@ -220,12 +232,12 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                                      fminf(p.betaMax, 1.0f + xj.w / fmaxf(wallDistanceI, 1e-3f * p.h));
                                  wx = beta * vi.x, wy = beta * vi.y, wz = beta * vi.z;
                              }
-                             if (wallJ && vj.w >= 0.0f) // a wall with the backstop
+                             if (Backstop && wallJ && vj.w >= 0.0f) // a wall with the backstop
                              {
                                  const float push = wallRepulsionFactor(p, rr);
                                  fx += push * rx, fy += push * ry, fz += push * rz;
                              }
-                             if (p.shifting > 0.0f) // grad C_i with the anti-clumping term (SphRates.h)
+                             if (Shifting) // grad C_i with the anti-clumping term (SphRates.h)
                              {
                                  const float ratio = kernelValue(p, rr) * p.shiftingReciprocalWeight;
                                  const float ratio2 = ratio * ratio;
@@ -242,7 +254,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         fy += inverseRhoI * viscousY + ey;
         fz += inverseRhoI * viscousZ + ez;
         rates.acceleration[i] = make_float4(fx, fy, fz, 0.0f);
-        if (p.shifting > 0.0f)
+        if (Shifting)
         {
             const float coefficient = -p.shifting * sqrtf(vi.x * vi.x + vi.y * vi.y + vi.z * vi.z);
             rates.shiftVelocity[i] = make_float4(coefficient * crowdX, coefficient * crowdY, coefficient * crowdZ, 0.0f);
@@ -377,8 +389,11 @@ void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& r
 {
     if (count == 0)
         return;
-    ratesKernel<<<blocks(count), kThreads>>>(p, a, rates, cellStart, cellEnd, external[0], external[1],
-                                             external[2], fluid, count, r);
+    const bool shifting = p.shifting > 0.0f, backstop = p.repulsion > 0.0f;
+    auto kernel = shifting ? (backstop ? ratesKernel<true, true> : ratesKernel<true, false>)
+                           : (backstop ? ratesKernel<false, true> : ratesKernel<false, false>);
+    kernel<<<blocks(count), kThreads>>>(p, a, rates, cellStart, cellEnd, external[0], external[1], external[2],
+                                        fluid, count, r);
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 
