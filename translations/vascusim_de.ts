@@ -5684,6 +5684,14 @@
         <source>A of the shift&apos;s coefficient A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: off): the drift also moves each fluid particle down the gradient of the particles&apos; concentration, which keeps a fast jet&apos;s shear layer from tearing into streaks and voids; vessels only (not with a free surface or without tension)</source>
         <translation>A des Verschiebungskoeffizienten A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: aus): die Drift bewegt jedes Fluidpartikel zusätzlich entlang des Gefälles der Partikelkonzentration, damit die Scherschicht eines schnellen Strahls nicht in Streifen und Lücken zerreißt; nur in Gefäßen (nicht mit freier Oberfläche oder ohne Zugspannung)</translation>
     </message>
+    <message>
+        <source>Shift correction</source>
+        <translation>Verschiebungskorrektur</translation>
+    </message>
+    <message>
+        <source>1: with particle shifting, a shifted particle&apos;s velocity follows it to where the shift moves it, v + dr . grad v (Lind et al. 2012&apos;s Taylor correction); 0: the particle keeps its velocity</source>
+        <translation>1: bei Partikelverschiebung folgt die Geschwindigkeit eines verschobenen Partikels ihm an den Ort, an den die Verschiebung es bringt, v + dr . grad v (Taylor-Korrektur nach Lind et al. 2012); 0: das Partikel behält seine Geschwindigkeit</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Progress</name>

@@ -5684,6 +5684,14 @@
         <source>A of the shift&apos;s coefficient A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: off): the drift also moves each fluid particle down the gradient of the particles&apos; concentration, which keeps a fast jet&apos;s shear layer from tearing into streaks and voids; vessels only (not with a free surface or without tension)</source>
         <translation>位移系数 A h |v| 中的 A（Lind 等 2012，Skillen 等 2013；0：关闭）：漂移时每个流体粒子还沿粒子浓度梯度下降方向移动，使高速射流的剪切层不会撕裂成条纹和空洞；仅用于血管（不用于自由表面或无张力流体）</translation>
     </message>
+    <message>
+        <source>Shift correction</source>
+        <translation>位移修正</translation>
+    </message>
+    <message>
+        <source>1: with particle shifting, a shifted particle&apos;s velocity follows it to where the shift moves it, v + dr . grad v (Lind et al. 2012&apos;s Taylor correction); 0: the particle keeps its velocity</source>
+        <translation>1：启用粒子位移时，被位移粒子的速度随其移到位移后的位置，v + dr . grad v（Lind 等 2012 的泰勒修正）；0：粒子保持原速度</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Progress</name>

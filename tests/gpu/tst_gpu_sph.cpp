@@ -128,17 +128,21 @@ private slots:
     void stenosisPipeParityWithOpenBoundaries_data()
     {
         QTest::addColumn<double>("shifting");
-        QTest::newRow("plain") << 0.0;
-        QTest::newRow("particle shifting A 2") << 2.0;
+        QTest::addColumn<bool>("correction");
+        QTest::newRow("plain") << 0.0 << false;
+        QTest::newRow("particle shifting A 2") << 2.0 << false;
+        QTest::newRow("particle shifting A 2, corrected") << 2.0 << true;
     }
     void stenosisPipeParityWithOpenBoundaries()
     {
         if (vsim::cuda::devices().empty())
             QSKIP("no CUDA device on this machine; run on the accelerator with the device tool");
         QFETCH(double, shifting);
+        QFETCH(bool, correction);
         StenosisPipe pipe;
         pipe.rampS = 0.001;
         pipe.particleShifting = shifting;
+        pipe.shiftCorrection = correction;
         SphSolver cpu;
         configureStenosisPipe(pipe, cpu);
         SimulationInput input;

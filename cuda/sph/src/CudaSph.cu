@@ -76,6 +76,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     params.shifting = float(fluid.particleShifting * h);
     params.shiftingReciprocalWeight = float(fluid.shiftingReciprocalWeight);
     params.antiClumping = float(sim::sph::FluidModel::kAntiClumping);
+    params.shiftCorrection = fluid.shiftCorrection ? 1 : 0;
     params.soundSpeed = float(fluid.soundSpeed), params.gamma = float(fluid.gamma);
     params.restDensity = float(fluid.restDensity), params.gasDensity = float(fluid.gasDensity);
     params.viscosity = float(fluid.viscosity), params.gasViscosity = float(fluid.gasViscosity);

@@ -204,6 +204,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         float continuity = 0.0f, diffusion = 0.0f, fx = 0.0f, fy = 0.0f, fz = 0.0f;
         float viscousX = 0.0f, viscousY = 0.0f, viscousZ = 0.0f;
         float crowdX = 0.0f, crowdY = 0.0f, crowdZ = 0.0f; // grad C_i (particle shifting)
+        float gradV[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};     // d v_k / d x_l at 3 k + l (the shift's correction)
         // Per neighbour, from its records: dj = (V_j, m_j p_j / rho_j^2, m_j, rho_j / rho0_j), gj = (G_j,
         // mu_j).
         forEachNeighbour(p, a, cellStart, cellEnd, i,
@@ -243,6 +244,13 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                                  const float ratio2 = ratio * ratio;
                                  const float crowd = vg * (1.0f + p.antiClumping * ratio2 * ratio2);
                                  crowdX += crowd * rx, crowdY += crowd * ry, crowdZ += crowd * rz;
+                                 if (p.shiftCorrection) // sum V_j (v_j - v_i) (x) grad W, grad W = g rij
+                                 {
+                                     const float v[3] = {vx, vy, vz}, rij[3] = {rx, ry, rz};
+                                     for (int k = 0; k < 3; ++k)
+                                         for (int l = 0; l < 3; ++l)
+                                             gradV[3 * k + l] -= vg * v[k] * rij[l];
+                                 }
                              }
                              const float damped = 1.0f / (r2 + p.eta2);
                              const float viscous = vg * (muI + gj.w) * r2 * damped; // rij . grad W = g r^2
@@ -253,12 +261,19 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         fx += inverseRhoI * viscousX + ex;
         fy += inverseRhoI * viscousY + ey;
         fz += inverseRhoI * viscousZ + ez;
-        rates.acceleration[i] = make_float4(fx, fy, fz, 0.0f);
         if (Shifting)
         {
             const float coefficient = -p.shifting * sqrtf(vi.x * vi.x + vi.y * vi.y + vi.z * vi.z);
-            rates.shiftVelocity[i] = make_float4(coefficient * crowdX, coefficient * crowdY, coefficient * crowdZ, 0.0f);
+            const float shift[3] = {coefficient * crowdX, coefficient * crowdY, coefficient * crowdZ};
+            rates.shiftVelocity[i] = make_float4(shift[0], shift[1], shift[2], 0.0f);
+            if (p.shiftCorrection) // (s_i . grad) v_i
+            {
+                fx += gradV[0] * shift[0] + gradV[1] * shift[1] + gradV[2] * shift[2];
+                fy += gradV[3] * shift[0] + gradV[4] * shift[1] + gradV[5] * shift[2];
+                fz += gradV[6] * shift[0] + gradV[7] * shift[1] + gradV[8] * shift[2];
+            }
         }
+        rates.acceleration[i] = make_float4(fx, fy, fz, 0.0f);
         acceleration = sqrtf(fx * fx + fy * fy + fz * fz);
         kinematic = muI / restI;
     }

@@ -20,6 +20,7 @@ struct SphParams
     float shifting;                 ///< A h of the particle shift (m; SphRates.h); 0: no shifting
     float shiftingReciprocalWeight; ///< 1 / W(spacing), m^3
     float antiClumping;             ///< R of the anti-clumping term (FluidModel::kAntiClumping)
+    int shiftCorrection;            ///< 1: a_i += (s_i . grad) v_i (FluidModel::shiftCorrection)
     float soundSpeed, gamma;
     float restDensity, gasDensity, viscosity, gasViscosity; ///< rho_p, rho_g (kg/m^3), mu_p, mu_g (Pa s)
     float gravity[3];    ///< m/s^2: what the walls' pressure extrapolation uses

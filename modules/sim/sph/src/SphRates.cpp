@@ -138,6 +138,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         auto relativeJ = [&](std::size_t sj) { return relativeDensity(particles, fluid, sj); };
         double densityRate = 0.0;
         Eigen::Vector3d force = Eigen::Vector3d::Zero(), crowding = Eigen::Vector3d::Zero();
+        Eigen::Matrix3d velocityGradient = Eigen::Matrix3d::Zero(); // d v_k / d x_l (the shift's correction)
         grid.forEachNeighbour(
             particles.position, i,
             [&](int j, const Eigen::Vector3d& rij, double r)
@@ -171,6 +172,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                         const double ratio = kernel.value(r) * fluid.shiftingReciprocalWeight;
                         const double ratio2 = ratio * ratio;
                         crowding += (mJ / rhoJ) * (1.0 + FluidModel::kAntiClumping * ratio2 * ratio2) * gradW;
+                        if (fluid.shiftCorrection)
+                            velocityGradient -= (mJ / rhoJ) * vij * gradW.transpose();
                     }
                 }
                 largestViscousRate =
@@ -181,7 +184,11 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         {
             rates.acceleration[si] = force + external;
             if (shifting)
+            {
                 rates.shiftVelocity[si] = -fluid.particleShifting * h * vi.norm() * crowding;
+                if (fluid.shiftCorrection)
+                    rates.acceleration[si] += velocityGradient * rates.shiftVelocity[si];
+            }
             largestKinematicViscosity = std::max(largestKinematicViscosity, muI / restI);
             largestAcceleration = std::max(largestAcceleration, rates.acceleration[si].norm());
         }

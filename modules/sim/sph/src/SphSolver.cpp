@@ -53,6 +53,10 @@ std::vector<ParameterSpec> sphParameters()
          "each fluid particle down the gradient of the particles' concentration, which keeps a fast jet's shear layer "
          "from tearing into streaks and voids; vessels only (not with a free surface or without tension)",
          K::Real},
+        {"shift_correction", "Shift correction", "", 0, 0, 1, "Numerics",
+         "1: with particle shifting, a shifted particle's velocity follows it to where the shift moves it, "
+         "v + dr . grad v (Lind et al. 2012's Taylor correction); 0: the particle keeps its velocity",
+         K::Integer},
         {"cfl", "Courant number", "", 0.2, 0.01, 1.0, "Numerics", "the adaptive step's safety factor",
          K::Real},
         {"gravity_x_m_s2", "Gravity x", "m/s^2", 0.0, -100.0, 100.0, "Fluid", "patient frame (LPS)", K::Real},
@@ -116,6 +120,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_fluid.densityDiffusion = parameters.get("delta_sph");
     m_fluid.particleShifting = parameters.get("particle_shifting");
     m_fluid.shiftingReciprocalWeight = 1.0 / m_kernel->value(spacing);
+    m_fluid.shiftCorrection = parameters.get("shift_correction") > 0.5;
     m_fluid.referencePressurePa = parameters.get("reference_pressure_pa");
     m_fluid.wallRepulsion = parameters.get("wall_repulsion") * m_fluid.soundSpeed * m_fluid.soundSpeed;
     m_fluid.wallRepulsionRange = kWallRepulsionReach * spacing;

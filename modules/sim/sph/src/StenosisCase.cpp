@@ -105,6 +105,7 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
     parameters.set("end_time_s", pipe.endTimeS);
     parameters.set("cfl", pipe.cfl);
     parameters.set("particle_shifting", pipe.particleShifting);
+    parameters.set("shift_correction", pipe.shiftCorrection ? 1.0 : 0.0);
     parameters.set("wall_repulsion", pipe.wallRepulsion);
     return parameters;
 }

@@ -28,6 +28,9 @@ struct FluidModel
     /// and 1 / W(spacing), the anti-clumping term's reference (Lind et al. 2012), m^3.
     double particleShifting = 0.0;
     double shiftingReciprocalWeight = 0.0;
+    /// The shift's convective correction (SphRates.h): the velocity follows the particle to where the shift moves
+    /// it, a_i += (s_i . grad) v_i (Lind et al. 2012's Taylor correction, in the rate form).
+    bool shiftCorrection = false;
     /// R of the shift's anti-clumping term R (W_ij / W(spacing))^4 (Lind et al. 2012; Monaghan 2000).
     static constexpr double kAntiClumping = 0.2;
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero(); ///< m/s^2

@@ -28,10 +28,15 @@
 //      over every neighbour (fluid, walls, buffers): Fick's diffusion of the particles' concentration (Lind et al.
 //      2012, J Comput Phys 231:1499; the coefficient A h |v_i| dt of Skillen et al. 2013, Comput Methods Appl Mech
 //      Eng 265:163), with Monaghan's 2000 anti-clumping term. It keeps a jet's shear layer from ordering particles
-//      into streaks and voids (the tensile instability), which had stopped stenotic jets by the density guard. The
-//      fields are not corrected for the shift (first order in it: the shift per step is a small fraction of the
-//      spacing, A |v| dt ~ A Ma CFL h). Not at a free surface, whose truncated support would push particles out
-//      (SphSolver refuses the two together).
+//      into streaks and voids (the tensile instability), which had stopped stenotic jets by the density guard.
+//      Without the correction (FluidModel::shiftCorrection) the fields are not corrected for the shift: a shifted
+//      particle takes its velocity across a shear layer (first order in the shift, A |v| dt ~ A Ma CFL h a step,
+//      but it adds up over the steps a particle spends in the layer). With it, the velocity follows the particle to
+//      where the shift moves it: a_i += (s_i . grad) v_i, grad v_i = sum_j V_j (v_j - v_i) (x) grad_i W_ij over
+//      every neighbour (Lind et al. 2012's Taylor correction v + dr . grad v, as a rate: the shift dr = dt s_i is
+//      taken with the velocity over the same step; the arbitrary Lagrangian-Eulerian form of Sun et al. 2017's
+//      delta+-SPH). Not at a free surface, whose truncated support would push particles out (SphSolver refuses the
+//      two together).
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"

@@ -33,6 +33,7 @@ struct StenosisPipe
     double soundSpeedMS = 4.0;                        ///< the numerical sound speed c0 (80 x the throat's mean)
     double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
     double particleShifting = 0.0;                    ///< the solver's particle_shifting A (0: off; SphRates.h)
+    bool shiftCorrection = false;                     ///< the solver's shift_correction (SphRates.h)
     double cfl = kStenosisCfl;                        ///< the Courant number (atFlow lowers it for faster jets)
     double wallRepulsion = 0.0;                       ///< the solver's wall_repulsion (the walls' backstop; 0: off)
     double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
