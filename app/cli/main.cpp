@@ -6,6 +6,7 @@
 #include "CliCommands.h"
 #include "CommandLine.h"
 #include "vsim/core/Error.h"
+#include "vsim/dicom/PacsClient.h"
 #include "vsim/study/StudyLock.h"
 
 #include <algorithm>
@@ -36,6 +37,7 @@ int main(int argc, char** argv)
     if (words[0] == "--version" && words.size() == 1)
         return vsim::cli::printVersion();
     std::signal(SIGINT, onInterrupt);
+    vsim::dicom::prepareDicomNetworking(); // before any thread reads the environment
     // A progress line only on a terminal: logs and pipes get the result and the errors alone.
     const bool showProgress = isatty(STDERR_FILENO) == 1;
     int lastPercent = -1;

@@ -4,6 +4,7 @@
 #include "MainWindow.h"
 #include "PacsNodes.h"
 #include "vsim/app/DemoStudy.h"
+#include "vsim/dicom/PacsClient.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -21,6 +22,7 @@ int main(int argc, char** argv)
     format.setDepthBufferSize(24);
     format.setStencilBufferSize(8);
     QSurfaceFormat::setDefaultFormat(format);
+    vsim::dicom::prepareDicomNetworking(); // before any thread reads the environment
 
     QApplication application(argc, argv);
     QApplication::setOrganizationName("VascuSim");

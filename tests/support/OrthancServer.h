@@ -131,6 +131,11 @@ public:
         file.write(QJsonDocument(config).toJson());
         file.close();
         m_process = std::make_unique<QProcess>();
+        // Orthanc's DCMTK without Nagle's algorithm too (dicom::prepareDicomNetworking: with it on either end each
+        // small PDU waits for a delayed acknowledgement; a PACS in the field is configured by its own people).
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.insert("TCP_NODELAY", "1");
+        m_process->setProcessEnvironment(environment);
         m_process->setProcessChannelMode(QProcess::MergedChannels);
         m_process->setStandardOutputFile(QString::fromStdString((folder / "orthanc.log").string()));
         m_process->start(executable(), {path});

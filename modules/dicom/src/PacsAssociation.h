@@ -54,6 +54,7 @@ public:
         : m_node(node), m_owned(scu ? nullptr : std::make_unique<PacsScu>()), m_scu(scu ? *scu : *m_owned)
     {
         ensureDcmtkCodecs(); // and DCMTK's own logging quiet
+        prepareDicomNetworking();
         if (node.calledAeTitle.empty() || node.calledAeTitle.size() > 16 || node.callingAeTitle.empty() ||
             node.callingAeTitle.size() > 16)
             throw Error(Pattern{"AE titles have 1 to 16 characters (PACS '%1', ours '%2')",

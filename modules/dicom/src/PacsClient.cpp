@@ -16,11 +16,18 @@
 #include <filesystem>
 #include <cstdlib>
 #include <memory>
+#include <mutex>
 
 namespace vsim::dicom {
 
 using detail::Association;
 using detail::Proposed;
+
+void prepareDicomNetworking()
+{
+    static std::once_flag once;
+    std::call_once(once, [] { setenv("TCP_NODELAY", "1", 0); }); // read by DCMTK at each connection (DUL, DULFSM)
+}
 
 std::string describe(const PacsNode& node)
 {

@@ -62,6 +62,7 @@ std::vector<std::filesystem::path> moveStudy(const PacsNode& node, const Retriev
     detail::prepareRetrieveFolder(folder);
     const detail::RetrieveWatcher watcher(progress);
 
+    prepareDicomNetworking();
     MoveListener listener;
     if (tls)
         listener.getConfig().setTransportLayer(tls.get());
