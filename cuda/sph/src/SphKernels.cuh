@@ -20,7 +20,6 @@ struct SphParams
     float shifting;                 ///< A h of the particle shift (m; SphRates.h); 0: no shifting
     float shiftingReciprocalWeight; ///< 1 / W(spacing), m^3
     float antiClumping;             ///< R of the anti-clumping term (FluidModel::kAntiClumping)
-    int shiftCorrection;            ///< 1: a_i += (s_i . grad) v_i (FluidModel::shiftCorrection)
     float soundSpeed, gamma;
     float restDensity, gasDensity, viscosity, gasViscosity; ///< rho_p, rho_g (kg/m^3), mu_p, mu_g (Pa s)
     float gravity[3];    ///< m/s^2: what the walls' pressure extrapolation uses
@@ -35,6 +34,10 @@ struct SphParams
     float repulsion, repulsionRange, repulsionPlateau; ///< the walls' backstop D (m^2/s^2; 0: off), r0 (m),
                                                        ///< r' / r0 (FluidModel.h)
     unsigned removedKey; ///< the cell key of a removed particle: past every cell's
+    /// 1: a_i += (s_i . grad) v_i (FluidModel::shiftCorrection). Last, so that no field the other kernels read
+    /// moved: placed after antiClumping it left their PTX the same but for the offsets, and the dam break measured
+    /// 3.45e8 particle-steps/s against 3.59e8 (RESULTS.md, 2026-12-02); here their PTX is the measured build's.
+    int shiftCorrection;
 };
 
 /// The number of the row of cells (y, z): rows are numbered tile by tile (tile x tile rows, y fastest
