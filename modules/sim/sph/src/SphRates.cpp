@@ -128,9 +128,9 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
     for (int i = 0; i < n; ++i)
     {
         const std::size_t si = std::size_t(i);
-        if (particles.boundary[si])
-            continue; // a buffer particle's values are imposed (OpenBoundary.h)
-        const bool wallI = particles.wall[si] != 0;
+        if (particles.boundary[si] || particles.wall[si])
+            continue; // a buffer particle's values are imposed (OpenBoundary.h); walls get no rates (their pressure:
+                      // extrapolateWallPressure), and a wall-fluid pair's viscous rate is the fluid one's (as on the GPU)
         const Eigen::Vector3d& vi = particles.velocity[si];
         const double rhoI = particles.density[si], pI = pressure[si];
         const double restI = fluid.mixtureDensity(particles.voidFraction[si]), relativeI = rhoI / restI;
@@ -144,54 +144,43 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
             [&](int j, const Eigen::Vector3d& rij, double r)
             {
                 const std::size_t sj = std::size_t(j);
-                const bool wallJ = particles.wall[sj] != 0;
-                if (wallI && wallJ)
-                    return; // frozen walls do not act on each other
                 const Eigen::Vector3d gradW = kernel.gradient(rij, r);
                 const Eigen::Vector3d vij = vi - particles.velocity[sj];
                 const double mJ = particles.mass[sj], rhoJ = particles.density[sj];
-                if (!wallI) // volume form: mixtures of other rest densities; walls take theirs from extrapolateWallPressure
-                    densityRate += rhoI * (mJ / rhoJ) * vij.dot(gradW);
-                if (!wallI && particles.isFluid(sj) && diffusion > 0.0)
+                densityRate += rhoI * (mJ / rhoJ) * vij.dot(gradW); // volume form: mixtures of other rest densities
+                if (particles.isFluid(sj) && diffusion > 0.0)
                 {
                     const Eigen::Vector3d psi = 2.0 * (relativeJ(sj) - relativeI) / (r * r) * (-rij) -
                                                 (rates.densityGradient[si] + rates.densityGradient[sj]);
                     densityRate += diffusion * restI * (mJ / rhoJ) * psi.dot(gradW);
                 }
                 const double rDotGrad = rij.dot(gradW);
-                if (!wallI)
+                force -= mJ * (pI / (rhoI * rhoI) + pressure[sj] / (rhoJ * rhoJ)) * gradW;
+                force += viscousAcceleration(particles, fluid, si, sj, rDotGrad, r, eta2,
+                                             viscousVelocityDifference(particles, si, sj, rates.wallDistance[si], h));
+                if (particles.backstop[sj])
+                    force += fluid.wallRepulsionFactor(r) * rij;
+                if (shifting) // grad C_i with the anti-clumping term (SphRates.h)
                 {
-                    force -= mJ * (pI / (rhoI * rhoI) + pressure[sj] / (rhoJ * rhoJ)) * gradW;
-                    force += viscousAcceleration(
-                        particles, fluid, si, sj, rDotGrad, r, eta2,
-                        viscousVelocityDifference(particles, si, sj, rates.wallDistance[si], h));
-                    if (particles.backstop[sj])
-                        force += fluid.wallRepulsionFactor(r) * rij;
-                    if (shifting) // grad C_i with the anti-clumping term (SphRates.h)
-                    {
-                        const double ratio = kernel.value(r) * fluid.shiftingReciprocalWeight;
-                        const double ratio2 = ratio * ratio;
-                        crowding += (mJ / rhoJ) * (1.0 + FluidModel::kAntiClumping * ratio2 * ratio2) * gradW;
-                        if (fluid.shiftCorrection)
-                            velocityGradient -= (mJ / rhoJ) * vij * gradW.transpose();
-                    }
+                    const double ratio = kernel.value(r) * fluid.shiftingReciprocalWeight;
+                    const double ratio2 = ratio * ratio;
+                    crowding += (mJ / rhoJ) * (1.0 + FluidModel::kAntiClumping * ratio2 * ratio2) * gradW;
+                    if (fluid.shiftCorrection)
+                        velocityGradient -= (mJ / rhoJ) * vij * gradW.transpose();
                 }
                 largestViscousRate =
                     std::max(largestViscousRate, std::abs(h * vij.dot(rij) / (r * r + eta2)));
             });
         rates.densityRate[si] = densityRate;
-        if (!wallI)
+        rates.acceleration[si] = force + external;
+        if (shifting)
         {
-            rates.acceleration[si] = force + external;
-            if (shifting)
-            {
-                rates.shiftVelocity[si] = -fluid.particleShifting * h * vi.norm() * crowding;
-                if (fluid.shiftCorrection)
-                    rates.acceleration[si] += velocityGradient * rates.shiftVelocity[si];
-            }
-            largestKinematicViscosity = std::max(largestKinematicViscosity, muI / restI);
-            largestAcceleration = std::max(largestAcceleration, rates.acceleration[si].norm());
+            rates.shiftVelocity[si] = -fluid.particleShifting * h * vi.norm() * crowding;
+            if (fluid.shiftCorrection)
+                rates.acceleration[si] += velocityGradient * rates.shiftVelocity[si];
         }
+        largestKinematicViscosity = std::max(largestKinematicViscosity, muI / restI);
+        largestAcceleration = std::max(largestAcceleration, rates.acceleration[si].norm());
     }
     rates.largestAcceleration = largestAcceleration;
     rates.largestViscousRate = largestViscousRate;

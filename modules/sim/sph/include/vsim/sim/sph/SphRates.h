@@ -62,7 +62,9 @@ struct SphRates
     /// fluid over arbitrarily close to the walls around it).
     std::vector<double> guardedWallDistance;
     double largestAcceleration = 0.0; ///< m/s^2, over the fluid
-    double largestViscousRate = 0.0;  ///< max_ij |h v_ij . x_ij / (r^2 + 0.001 h^2)|, m/s (Monaghan's CFL)
+    /// max_ij |h v_ij . x_ij / (r^2 + 0.001 h^2)| over a fluid particle i's neighbours j, m/s (Monaghan's CFL; as
+    /// on the GPU: a wall-buffer pair is not a fluid's)
+    double largestViscousRate = 0.0;
     double largestKinematicViscosity = 0.0; ///< max over the fluid of mu(s) / rho0(s), m^2/s
 };
 
