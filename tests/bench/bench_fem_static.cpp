@@ -4,9 +4,10 @@
 // updates, Krylov iterations, the force residuals, the peak wall stress; exit 1 when a solve does not converge or
 // the solvers' peak stresses differ by more than 1e-4 relative. gmres: the default (TangentSolver.h);
 // gmres-standin: its preconditioner always the model's definite stand-in (the tangent's own Cholesky never tried,
-// as before 2026-12-01); lu: an UMFPACK LU per update.
+// as before 2026-12-01); gmres-multigrid: GMRES with a smoothed-aggregation V-cycle of the stand-in, no
+// factorisation (LinearSolver::MultigridGmres); lu: an UMFPACK LU per update.
 //
-//   bench_fem_static <wall.vtu> [gmres | gmres-standin | lu]...
+//   bench_fem_static <wall.vtu> [gmres | gmres-standin | gmres-multigrid | lu]...
 
 #include "vsim/sim/fem/StaticWallRun.h"
 #include "vsim/study/MeshFileImport.h"
@@ -26,7 +27,7 @@ int run(int argc, char** argv)
 {
     if (argc < 2)
     {
-        std::fprintf(stderr, "usage: bench_fem_static <wall.vtu> [gmres | gmres-standin | lu]...\n");
+        std::fprintf(stderr, "usage: bench_fem_static <wall.vtu> [gmres | gmres-standin | gmres-multigrid | lu]...\n");
         return 2;
     }
     StaticWallSetup setup;
@@ -41,12 +42,14 @@ int run(int argc, char** argv)
     for (int a = 2; a < (argc > 2 ? argc : 3); ++a)
     {
         const std::string solver = argc > 2 ? argv[a] : "gmres";
-        if (solver != "gmres" && solver != "gmres-standin" && solver != "lu")
+        if (solver != "gmres" && solver != "gmres-standin" && solver != "gmres-multigrid" && solver != "lu")
         {
-            std::fprintf(stderr, "bench_fem_static: unknown solver '%s' (gmres | gmres-standin | lu)\n", solver.c_str());
+            std::fprintf(stderr, "bench_fem_static: unknown solver '%s' (gmres | gmres-standin | gmres-multigrid | lu)\n", solver.c_str());
             return 2;
         }
-        setup.linear = solver == "lu" ? LinearSolver::SparseLu : LinearSolver::CholeskyGmres;
+        setup.linear = solver == "lu"                ? LinearSolver::SparseLu
+                       : solver == "gmres-multigrid" ? LinearSolver::MultigridGmres
+                                                     : LinearSolver::CholeskyGmres;
         setup.tangentCholeskyBelow = solver == "gmres-standin" ? -1.0 : StaticWallSetup{}.tangentCholeskyBelow;
         const auto start = std::chrono::steady_clock::now();
         const FemRunResult run = runStaticWall(setup);

@@ -66,7 +66,9 @@ TangentSolveResult solveTangent(StaticModel& model, TangentSolver& linear, Block
         return *definite;
     };
     return linear.solve(stiffness, residual, delta, fresh,
-                        settings.linear == LinearSolver::CholeskyGmres ? standIn : TangentSolver::StandIn{},
+                        settings.linear == LinearSolver::CholeskyGmres || settings.linear == LinearSolver::MultigridGmres
+                            ? standIn
+                            : TangentSolver::StandIn{},
                         forceResidual);
 }
 

@@ -48,6 +48,8 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         settings.maxUpdates = m_setup.maxUpdatesPerIncrement;
         settings.linear = m_setup.linear;
         settings.linearTolerance = 1e-8;
+        if (m_setup.linear == LinearSolver::MultigridGmres)
+            settings.gmresMaxIterations = 2000; // a V-cycle is a weaker preconditioner than a factorisation
         settings.tangentCholeskyBelow = m_setup.tangentCholeskyBelow;
         settings.rotationStiffness = true;
         settings.directionalLineSearch = true;
@@ -77,7 +79,8 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         {
             failure = error.what();
         }
-        const bool krylov = m_setup.linear == LinearSolver::CholeskyGmres;
+        const bool krylov =
+            m_setup.linear == LinearSolver::CholeskyGmres || m_setup.linear == LinearSolver::MultigridGmres;
         for (std::size_t update = 0; update < report.linearResiduals.size(); ++update)
             status.recordSolve(report.linearIterations[update], report.linearResiduals[update], 1e-8,
                                krylov ? settings.gmresMaxIterations : 0);

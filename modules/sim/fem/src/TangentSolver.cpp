@@ -28,12 +28,13 @@ TangentSolver::TangentSolver(const BlockSparseMatrix& pattern, const std::vector
       m_ownMultigrid{nullptr, MultigridSetUpRule(settings.multigridSetUpAgainFactor)},
       m_multigrid(settings.keptMultigrid ? *settings.keptMultigrid : m_ownMultigrid)
 {
-    if (settings.linear == LinearSolver::ConjugateGradient && settings.cgPreconditioner == CgPreconditioner::Multigrid &&
+    if (((settings.linear == LinearSolver::ConjugateGradient && settings.cgPreconditioner == CgPreconditioner::Multigrid) ||
+         settings.linear == LinearSolver::MultigridGmres) &&
         positions == nullptr)
         throw Error("the multigrid preconditioner needs the model's positions");
     if (settings.linear == LinearSolver::SparseLu)
         m_direct = std::make_unique<SparseDirect>(pattern, constrained, SparseDirect::Kind::GeneralLu);
-    else if (settings.linear != LinearSolver::ConjugateGradient)
+    else if (settings.linear != LinearSolver::ConjugateGradient && settings.linear != LinearSolver::MultigridGmres)
         m_direct = std::make_unique<SparseDirect>(pattern, constrained, SparseDirect::Kind::SymmetricCholesky);
 }
 
@@ -44,6 +45,7 @@ double TangentSolver::tolerance() const
     case LinearSolver::ConjugateGradient:
         return 0.1 * m_settings.tolerance;
     case LinearSolver::CholeskyGmres:
+    case LinearSolver::MultigridGmres:
         return m_settings.linearTolerance;
     default:
         return kDirectTolerance;
@@ -160,6 +162,31 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
             }
             m_lastIterations = solved.iterations;
         }
+        result.relativeResidual = solved.relativeResidual;
+        result.converged = solved.converged;
+        return result;
+    }
+    case LinearSolver::MultigridGmres:
+    {
+        // The V-cycle's finest level is the stand-in itself, re-taken each update; its coarse levels stay as set up
+        // until the iterations say a new set-up pays (MultigridSetUpRule.h).
+        const BlockSparseMatrix& standInMatrix = standIn ? standIn() : tangent;
+        if (!m_multigrid.hierarchy)
+        {
+            m_multigrid.hierarchy = std::make_unique<AggregationMultigrid>(standInMatrix, *m_positions, m_constrained);
+            m_multigrid.rule.setUp();
+            result.factorised = true;
+        }
+        else
+            m_multigrid.hierarchy->refreshFinest(standInMatrix);
+        const AggregationMultigrid& cycle = *m_multigrid.hierarchy;
+        const GmresResult solved = solveGmres(
+            tangent, f, dx, m_constrained,
+            [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { cycle.apply(standInMatrix, r, z); },
+            m_settings.linearTolerance, m_settings.gmresMaxIterations);
+        if (m_multigrid.rule.setUpAgainAfter(solved.iterations))
+            m_multigrid.hierarchy.reset();
+        result.iterations = solved.iterations;
         result.relativeResidual = solved.relativeResidual;
         result.converged = solved.converged;
         return result;

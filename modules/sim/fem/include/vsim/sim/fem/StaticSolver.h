@@ -97,8 +97,10 @@ enum class LinearSolver
                        ///< the co-rotational energy's Hessian, which is symmetric too)
     SparseCholesky,    ///< CHOLMOD supernodal Cholesky of the tangent's symmetric part, ordering once, per update
     SparseLu,          ///< UMFPACK multifrontal LU (the tangent with a follower load's stiffness)
-    CholeskyGmres      ///< GMRES on the full tangent to linearTolerance, preconditioned by CHOLMOD's Cholesky of
+    CholeskyGmres,     ///< GMRES on the full tangent to linearTolerance, preconditioned by CHOLMOD's Cholesky of
                        ///< the model's tangent (TangentSolver.h), kept across updates near equilibrium
+    MultigridGmres     ///< GMRES on the full tangent to linearTolerance, preconditioned by one smoothed-aggregation
+                       ///< V-cycle of the model's definite stand-in (no factorisation: the algorithm the GPU runs)
 };
 
 /// Settings of solveStatic; set the members by name (the defaults are the validation cases').

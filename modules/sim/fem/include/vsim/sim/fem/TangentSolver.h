@@ -16,6 +16,11 @@
 // The follower pressure's load stiffness makes the tangent non-symmetric, which GMRES takes to the 1e-8 the issue
 // asks; CHOLMOD factorises the quadratic wall 2-4x faster than UMFPACK and solves it 2-10x faster (RESULTS.md); once
 // the force residual is small the tangent hardly changes between updates, so one factorisation serves several.
+// MultigridGmres, not a default: GMRES on the full tangent preconditioned by one smoothed-aggregation V-cycle of the
+// model's definite stand-in (the finest level re-taken each update, the hierarchy kept by MultigridSetUpRule.h), no
+// factorisation: the candidate for the GPU, which has no sparse direct solver. On cli_sac's thrombus wall it needs
+// about 390 iterations an update (125 s against 47 s on 2 cores, RESULTS.md 2026-12-02); where the stand-in is far
+// from an indefinite tangent it does not converge at all (nor does GMRES with the stand-in's Cholesky).
 
 #include "vsim/sim/fem/BlockSparseMatrix.h"
 #include "vsim/sim/fem/Gmres.h"
