@@ -66,9 +66,7 @@ TangentSolveResult solveTangent(StaticModel& model, TangentSolver& linear, Block
         return *definite;
     };
     return linear.solve(stiffness, residual, delta, fresh,
-                        settings.linear == LinearSolver::CholeskyGmres || settings.linear == LinearSolver::MultigridGmres
-                            ? standIn
-                            : TangentSolver::StandIn{},
+                        solvesByGmres(settings.linear) ? standIn : TangentSolver::StandIn{},
                         forceResidual);
 }
 

@@ -79,8 +79,7 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         {
             failure = error.what();
         }
-        const bool krylov =
-            m_setup.linear == LinearSolver::CholeskyGmres || m_setup.linear == LinearSolver::MultigridGmres;
+        const bool krylov = solvesByGmres(m_setup.linear);
         for (std::size_t update = 0; update < report.linearResiduals.size(); ++update)
             status.recordSolve(report.linearIterations[update], report.linearResiduals[update], 1e-8,
                                krylov ? settings.gmresMaxIterations : 0);

@@ -38,7 +38,7 @@ struct TangentSolveResult
 {
     int iterations = 0;            ///< Krylov iterations (0: a direct solve)
     double relativeResidual = 0.0; ///< |f - T dx| / |f| on the free components
-    bool factorised = false;       ///< this solve factorised the tangent
+    bool factorised = false;       ///< this solve factorised the tangent (MultigridGmres: set up its hierarchy)
     bool converged = false;        ///< the residual reached the solve's tolerance
 };
 
@@ -100,8 +100,15 @@ enum class LinearSolver
     CholeskyGmres,     ///< GMRES on the full tangent to linearTolerance, preconditioned by CHOLMOD's Cholesky of
                        ///< the model's tangent (TangentSolver.h), kept across updates near equilibrium
     MultigridGmres     ///< GMRES on the full tangent to linearTolerance, preconditioned by one smoothed-aggregation
-                       ///< V-cycle of the model's definite stand-in (no factorisation: the algorithm the GPU runs)
+                       ///< V-cycle of the model's definite stand-in (no factorisation: the candidate for the GPU,
+                       ///< not a default)
 };
+
+/// Whether `linear` is one of the GMRES solves on the full tangent (they take the model's definite stand-in).
+inline bool solvesByGmres(LinearSolver linear)
+{
+    return linear == LinearSolver::CholeskyGmres || linear == LinearSolver::MultigridGmres;
+}
 
 /// Settings of solveStatic; set the members by name (the defaults are the validation cases').
 struct StaticSolveSettings
