@@ -7,6 +7,8 @@ set -euo pipefail
 PACKAGES=(
     # toolchain
     build-essential cmake ninja-build ccache pkg-config git clang libclang-rt-14-dev
+    # the fast linker (cmake/VsimLinker.cmake)
+    lld
     # Qt 6 (base, OpenGL widgets, test, linguist tools)
     qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libgl-dev libglu1-mesa-dev

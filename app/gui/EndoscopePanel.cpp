@@ -23,7 +23,7 @@
 namespace vsim::gui {
 namespace {
 
-constexpr double kStepMm = 0.25; // the frames' arc step: the slider's resolution
+constexpr double kFlightStepMm = 0.25; // the frames' arc step: the slider's resolution
 constexpr int kTimerMs = 50;     // 20 camera moves a second while playing
 
 QDoubleSpinBox* spinBox(QWidget* parent, const char* name, double low, double high, double value, double step,
@@ -108,7 +108,7 @@ EndoscopePanel::EndoscopePanel(QWidget* parent) : QWidget(parent)
                 if (index >= 0)
                     setPath(m_segments->itemData(index).toList());
             });
-    connect(m_position, &QSlider::valueChanged, this, [this](int step) { setArc(step * kStepMm); });
+    connect(m_position, &QSlider::valueChanged, this, [this](int step) { setArc(step * kFlightStepMm); });
     for (QDoubleSpinBox* box : {m_focalLength, m_focus, m_fNumber})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] { applyLens(); });
     connect(focusCentre, &QPushButton::clicked, this, [this] { focusOnCentre(); });
@@ -135,7 +135,7 @@ int EndoscopePanel::segment() const { return singleSegment(m_path); }
 
 void EndoscopePanel::setPath(const VesselPath& path)
 {
-    if (!adoptPath(m_centerlines, path, kStepMm, m_segments, m_path, m_frames))
+    if (!adoptPath(m_centerlines, path, kFlightStepMm, m_segments, m_path, m_frames))
         return;
     {
         const QSignalBlocker quiet(m_position);

@@ -17,7 +17,7 @@
 namespace vsim::gui {
 namespace {
 
-constexpr double kStepMm = 0.5;           // arc step of the CPR rows and of a wheel notch
+constexpr double kArcStepMm = 0.5;           // arc step of the CPR rows and of a wheel notch
 constexpr double kHalfWidthMm = 25.0;     // the CPR and the cross-section span +-25 mm about the centerline
 constexpr double kSectionPixelMm = 0.25;
 
@@ -62,7 +62,7 @@ VesselViewPanel::VesselViewPanel(QWidget* parent) : QWidget(parent)
     connect(m_rotation, &QSlider::valueChanged, this, [this](int degrees) { setAngle(degrees); });
     connect(m_cpr, &viz::PlaneImageView::clicked, this, [this](const QPointF& mm) { setArc(mm.y()); });
     connect(m_plot, &LinePlot::clicked, this, [this](double x) { setArc(x); });
-    connect(m_section, &viz::PlaneImageView::stepped, this, [this](int steps) { setArc(m_arcMm + steps * kStepMm); });
+    connect(m_section, &viz::PlaneImageView::stepped, this, [this](int steps) { setArc(m_arcMm + steps * kArcStepMm); });
 }
 
 void VesselViewPanel::setData(const CtVolume& ct, const SkeletonGraph& centerlines, const std::vector<std::string>& names,
@@ -100,7 +100,7 @@ int VesselViewPanel::segment() const { return singleSegment(m_path); }
 
 void VesselViewPanel::setPath(const VesselPath& path)
 {
-    if (!adoptPath(m_centerlines, path, kStepMm, m_segments, m_path, m_frames))
+    if (!adoptPath(m_centerlines, path, kArcStepMm, m_segments, m_path, m_frames))
         return;
     // The measured sections of the path's segments, at their arc along the path (a segment run backwards counts
     // from its end).

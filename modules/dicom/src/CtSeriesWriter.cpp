@@ -1,6 +1,7 @@
 #include "vsim/dicom/CtSeriesWriter.h"
 
 #include "DcmtkSetup.h"
+#include "DecimalString.h"
 #include "vsim/core/DicomUid.h"
 #include "vsim/core/Localized.h"
 #include "vsim/core/ParallelFor.h"
@@ -43,31 +44,6 @@ Encoding encodingOf(TransferSyntax syntax)
     case TransferSyntax::JpegExtended: return {EXS_JPEGProcess2_4, std::make_unique<DJ_RPLossy>(90)};
     }
     throw Error("unknown transfer syntax");
-}
-
-/// A DICOM decimal string (at most 16 characters) with as many digits as fit.
-std::string decimal(double value)
-{
-    char buffer[32];
-    for (int precision = 12; precision > 1; --precision)
-    {
-        std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
-        if (std::string(buffer).size() <= 16)
-            return buffer;
-    }
-    return "0";
-}
-
-std::string decimals(std::initializer_list<double> values)
-{
-    std::string joined;
-    for (double value : values)
-    {
-        if (!joined.empty())
-            joined += '\\';
-        joined += decimal(value);
-    }
-    return joined;
 }
 
 std::string today(const char* format)
@@ -165,7 +141,7 @@ std::string orientationText(const SliceStack& stack)
 {
     const auto& x = stack.xDirection;
     const auto& y = stack.yDirection;
-    return decimals({x.x(), x.y(), x.z(), y.x(), y.y(), y.z()});
+    return detail::decimalStrings({x.x(), x.y(), x.z(), y.x(), y.y(), y.z()});
 }
 
 /// Classic CT Image Storage: plane and rescale attributes at the top level.
@@ -173,12 +149,12 @@ void putPlaneModules(DcmItem& dataset, const SeriesContext& context, std::size_t
 {
     const SliceStack& stack = context.stack;
     const Eigen::Vector3d& p = stack.positions[slice];
-    put(dataset, DCM_ImagePositionPatient, decimals({p.x(), p.y(), p.z()}));
+    put(dataset, DCM_ImagePositionPatient, detail::decimalStrings({p.x(), p.y(), p.z()}));
     put(dataset, DCM_ImageOrientationPatient, orientationText(stack));
-    put(dataset, DCM_SliceLocation, decimal(p.dot(stack.normal())));
-    put(dataset, DCM_PixelSpacing, decimals({stack.rowSpacing, stack.columnSpacing}));
-    put(dataset, DCM_SliceThickness, decimal(context.sliceThickness));
-    put(dataset, DCM_RescaleIntercept, decimal(context.intercept));
+    put(dataset, DCM_SliceLocation, detail::decimalString(p.dot(stack.normal())));
+    put(dataset, DCM_PixelSpacing, detail::decimalStrings({stack.rowSpacing, stack.columnSpacing}));
+    put(dataset, DCM_SliceThickness, detail::decimalString(context.sliceThickness));
+    put(dataset, DCM_RescaleIntercept, detail::decimalString(context.intercept));
     put(dataset, DCM_RescaleSlope, "1");
     put(dataset, DCM_RescaleType, "HU");
 }
@@ -189,11 +165,11 @@ void putFunctionalGroups(DcmItem& dataset, const SeriesContext& context)
     const SliceStack& stack = context.stack;
     DcmItem& shared = subItem(dataset, DCM_SharedFunctionalGroupsSequence);
     DcmItem& measures = subItem(shared, DCM_PixelMeasuresSequence);
-    put(measures, DCM_PixelSpacing, decimals({stack.rowSpacing, stack.columnSpacing}));
-    put(measures, DCM_SliceThickness, decimal(context.sliceThickness));
+    put(measures, DCM_PixelSpacing, detail::decimalStrings({stack.rowSpacing, stack.columnSpacing}));
+    put(measures, DCM_SliceThickness, detail::decimalString(context.sliceThickness));
     put(subItem(shared, DCM_PlaneOrientationSequence), DCM_ImageOrientationPatient, orientationText(stack));
     DcmItem& rescale = subItem(shared, DCM_PixelValueTransformationSequence);
-    put(rescale, DCM_RescaleIntercept, decimal(context.intercept));
+    put(rescale, DCM_RescaleIntercept, detail::decimalString(context.intercept));
     put(rescale, DCM_RescaleSlope, "1");
     put(rescale, DCM_RescaleType, "HU");
     put(subItem(shared, DCM_CTImageFrameTypeSequence), DCM_FrameType, "ORIGINAL\\PRIMARY\\VOLUME\\NONE");
@@ -201,7 +177,7 @@ void putFunctionalGroups(DcmItem& dataset, const SeriesContext& context)
     {
         DcmItem& frame = subItem(dataset, DCM_PerFrameFunctionalGroupsSequence, -2);
         const Eigen::Vector3d& p = stack.positions[f];
-        put(subItem(frame, DCM_PlanePositionSequence), DCM_ImagePositionPatient, decimals({p.x(), p.y(), p.z()}));
+        put(subItem(frame, DCM_PlanePositionSequence), DCM_ImagePositionPatient, detail::decimalStrings({p.x(), p.y(), p.z()}));
         put(subItem(frame, DCM_FrameContentSequence), DCM_InStackPositionNumber, std::to_string(f + 1));
     }
     put(dataset, DCM_NumberOfFrames, std::to_string(stack.positions.size()));

@@ -5,6 +5,7 @@
 #include "vsim/dicom/DicomSegmentation.h"
 
 #include "DcmtkSetup.h"
+#include "DecimalString.h"
 
 #include "vsim/core/DicomUid.h"
 #include "vsim/core/Error.h"
@@ -28,17 +29,12 @@
 namespace vsim::dicom {
 namespace {
 
+using detail::decimalString;
+
 void check(const OFCondition& condition, const std::string& what)
 {
     if (condition.bad())
         throw Error(Pattern{"writing the DICOM SEG failed at %1: %2", {what, condition.text()}});
-}
-
-std::string decimal(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
 }
 
 /// The Derivation Image functional group of a frame on slice k: derived (segmentation, DCM 113076) from the CT
@@ -96,15 +92,15 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
     check(seg->getSeries().setSeriesNumber("900"), "series number");
 
     FGPixelMeasures measures;
-    check(measures.setPixelSpacing((decimal(g.spacing.y()) + "\\" + decimal(g.spacing.x())).c_str()), "pixel spacing");
-    check(measures.setSliceThickness(decimal(g.spacing.z()).c_str()), "slice thickness");
-    check(measures.setSpacingBetweenSlices(decimal(g.spacing.z()).c_str()), "slice spacing");
+    check(measures.setPixelSpacing((decimalString(g.spacing.y()) + "\\" + decimalString(g.spacing.x())).c_str()), "pixel spacing");
+    check(measures.setSliceThickness(decimalString(g.spacing.z()).c_str()), "slice thickness");
+    check(measures.setSpacingBetweenSlices(decimalString(g.spacing.z()).c_str()), "slice spacing");
     check(seg->addForAllFrames(measures), "pixel measures");
     FGPlaneOrientationPatient orientation;
     const Eigen::Matrix3d& d = g.direction;
-    check(orientation.setImageOrientationPatient(decimal(d(0, 0)).c_str(), decimal(d(1, 0)).c_str(),
-                                                 decimal(d(2, 0)).c_str(), decimal(d(0, 1)).c_str(),
-                                                 decimal(d(1, 1)).c_str(), decimal(d(2, 1)).c_str()),
+    check(orientation.setImageOrientationPatient(decimalString(d(0, 0)).c_str(), decimalString(d(1, 0)).c_str(),
+                                                 decimalString(d(2, 0)).c_str(), decimalString(d(0, 1)).c_str(),
+                                                 decimalString(d(1, 1)).c_str(), decimalString(d(2, 1)).c_str()),
           "orientation");
     check(seg->addForAllFrames(orientation), "orientation");
 
@@ -147,7 +143,7 @@ void writeDicomSegmentation(const LabelVolume& label, const std::vector<std::str
                 continue;
             FGPlanePosPatient position;
             const Eigen::Vector3d p = g.indexToPatient(Eigen::Vector3d(0.0, 0.0, k));
-            check(position.setImagePositionPatient(decimal(p.x()).c_str(), decimal(p.y()).c_str(), decimal(p.z()).c_str()),
+            check(position.setImagePositionPatient(decimalString(p.x()).c_str(), decimalString(p.y()).c_str(), decimalString(p.z()).c_str()),
                   "frame position");
             FGFrameContent frameContent;
             check(frameContent.setDimensionIndexValues(number, 0), "frame content");

@@ -12,7 +12,7 @@
 namespace vsim::mesh::detail {
 namespace {
 
-constexpr int kSweeps = 4;
+constexpr int kFlipSweeps = 4;
 using Tet = std::array<int, 4>;
 
 double volume6(const TetMesh& mesh, const Tet& t)
@@ -97,7 +97,7 @@ std::size_t flipEdgesOfFour(TetMesh& mesh, const std::vector<double>& material, 
     std::vector<double> angle(mesh.tets.size());
     for (std::size_t t = 0; t < mesh.tets.size(); ++t)
         angle[t] = angleOf(mesh, mesh.tets[t]);
-    for (int sweep = 0; sweep < kSweeps; ++sweep)
+    for (int sweep = 0; sweep < kFlipSweeps; ++sweep)
     {
         std::unordered_map<std::uint64_t, std::vector<std::size_t>> around;
         for (std::size_t t = 0; t < mesh.tets.size(); ++t)

@@ -10,7 +10,7 @@
 namespace vsim::mesh::detail {
 namespace {
 
-constexpr int kSweeps = 6;
+constexpr int kSmoothingSweeps = 6;
 constexpr double kFirstStepFraction = 0.4; // of maxMoveMm
 constexpr double kLastStepFraction = 0.01;
 
@@ -100,7 +100,7 @@ double raiseDihedralAngles(TetMesh& mesh, const std::vector<Eigen::Vector3d>& di
     double smallestBefore = 180.0;
     for (std::size_t t = 0; t < mesh.tets.size(); ++t)
         smallestBefore = std::min(smallestBefore, angle[t] = smoother.angleOf(t));
-    for (int sweep = 0; sweep < kSweeps; ++sweep)
+    for (int sweep = 0; sweep < kSmoothingSweeps; ++sweep)
     {
         std::vector<bool> candidate(mesh.points.size(), false);
         for (std::size_t t = 0; t < mesh.tets.size(); ++t)

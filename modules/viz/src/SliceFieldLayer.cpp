@@ -1,4 +1,5 @@
 #include "SliceFieldLayer.h"
+#include "SliceDepths.h"
 
 #include "FieldScene.h"
 
@@ -31,8 +32,6 @@
 namespace vsim::viz {
 namespace {
 
-constexpr double kInFront =
-    0.75; // z of the cut: in front of the CT (0) and the labels (0.5), behind markers (1)
 constexpr double kSmallestTubeMm = 0.3; // a segment sized only by its resistance still shows as a ring
 
 [[noreturn]] void noField(const SimulationData& frame, const std::string& field)
@@ -173,14 +172,14 @@ void SliceFieldLayer::update(const Eigen::Vector3d& cursorMm, const ScreenAxes& 
         pickParticles(cursorMm, normal, thicknessMm);
     m_plane->SetOrigin(cursorMm.data());
     m_plane->SetNormal(normal.data());
-    // Patient mm -> slice coordinates: rows right, up, normal applied to (p - cursor), pushed to kInFront.
+    // Patient mm -> slice coordinates: rows right, up, normal applied to (p - cursor), pushed to slice_depth::kField.
     auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
     const Eigen::Vector3d rows[3] = {axes.right, axes.up, normal};
     for (int r = 0; r < 3; ++r)
     {
         for (int c = 0; c < 3; ++c)
             matrix->SetElement(r, c, rows[r][c]);
-        matrix->SetElement(r, 3, -rows[r].dot(cursorMm) + (r == 2 ? kInFront : 0.0));
+        matrix->SetElement(r, 3, -rows[r].dot(cursorMm) + (r == 2 ? slice_depth::kField : 0.0));
     }
     m_toSlice->SetMatrix(matrix);
 }

@@ -1,4 +1,5 @@
 #include "SliceMarkerLayer.h"
+#include "SliceDepths.h"
 #include "TextFonts.h"
 
 #include <vtkActor.h>
@@ -20,7 +21,6 @@ namespace {
 
 constexpr double kRingPixels = 7.0; // ring radius on screen
 constexpr int kRingSegments = 24;
-constexpr double kInFront = 1.0;    // z of the rings: in front of the CT (0) and the label overlay (0.5)
 
 } // namespace
 
@@ -72,7 +72,7 @@ void SliceMarkerLayer::update(const Eigen::Vector3d& cursorMm, const ScreenAxes&
         for (int s = 0; s < kRingSegments; ++s)
         {
             const double angle = 2.0 * M_PI * s / kRingSegments;
-            points->InsertNextPoint(x + radius * std::cos(angle), y + radius * std::sin(angle), kInFront);
+            points->InsertNextPoint(x + radius * std::cos(angle), y + radius * std::sin(angle), slice_depth::kMarkers);
         }
         std::vector<vtkIdType> ring(kRingSegments + 1);
         for (int s = 0; s <= kRingSegments; ++s)
@@ -86,7 +86,7 @@ void SliceMarkerLayer::update(const Eigen::Vector3d& cursorMm, const ScreenAxes&
         text->GetTextProperty()->SetFontSize(int(std::lround(13 * m_pixelScale)));
         text->GetTextProperty()->SetColor(marker.rgb[0], marker.rgb[1], marker.rgb[2]);
         text->GetPositionCoordinate()->SetCoordinateSystemToWorld();
-        text->GetPositionCoordinate()->SetValue(x + 1.3 * radius, y + 0.3 * radius, kInFront);
+        text->GetPositionCoordinate()->SetValue(x + 1.3 * radius, y + 0.3 * radius, slice_depth::kMarkers);
         m_renderer->AddViewProp(text);
         m_texts.push_back(text);
     }

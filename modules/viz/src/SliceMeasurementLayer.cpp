@@ -1,4 +1,5 @@
 #include "SliceMeasurementLayer.h"
+#include "SliceDepths.h"
 #include "TextFonts.h"
 
 #include <vtkActor.h>
@@ -15,7 +16,6 @@
 namespace vsim::viz {
 namespace {
 
-constexpr double kInFront = 1.2; // in front of the CT, labels and fields; behind the crosshair
 constexpr int kEllipseSegments = 48;
 const double kColour[3] = {0.3, 0.85, 1.0}; // cyan: apart from the crosshair's plane colours and the labels
 
@@ -57,7 +57,7 @@ void SliceMeasurementLayer::update(const Eigen::Vector3d& originMm, const Screen
     const auto polyline = [&](const std::vector<Eigen::Vector2d>& corners) {
         std::vector<vtkIdType> ids;
         for (const Eigen::Vector2d& c : corners)
-            ids.push_back(points->InsertNextPoint(c.x(), c.y(), kInFront));
+            ids.push_back(points->InsertNextPoint(c.x(), c.y(), slice_depth::kMeasurements));
         lines->InsertNextCell(vtkIdType(ids.size()), ids.data());
     };
     const auto draw = [&](const ViewMeasurement& m, const std::string& text) {
@@ -87,7 +87,7 @@ void SliceMeasurementLayer::update(const Eigen::Vector3d& originMm, const Screen
         label->GetTextProperty()->SetColor(kColour[0], kColour[1], kColour[2]);
         label->GetPositionCoordinate()->SetCoordinateSystemToWorld();
         const Eigen::Vector2d at = m.kind == ViewMeasurement::Kind::Angle ? p[1] : p.back();
-        label->GetPositionCoordinate()->SetValue(at.x() + 2.0, at.y() + 2.0, kInFront);
+        label->GetPositionCoordinate()->SetValue(at.x() + 2.0, at.y() + 2.0, slice_depth::kMeasurements);
         m_renderer->AddViewProp(label);
         m_texts.push_back(label);
     };

@@ -1,4 +1,5 @@
 #include "SliceOverlayLayer.h"
+#include "SliceDepths.h"
 #include "TextFonts.h"
 #include "vsim/viz/DecimalText.h"
 
@@ -18,7 +19,6 @@
 namespace vsim::viz {
 namespace {
 
-constexpr double kInFront = 1.5;     // z of the lines: in front of the CT (0), labels (0.5), fields and markers (1)
 constexpr double kGapPixels = 10.0;  // the crosshair leaves the cursor's surroundings free
 constexpr double kMarginFraction = 0.08; // the scale bar's distance from the view's bottom edge
 const Eigen::Vector3d kTextColour(1.0, 0.85, 0.2);
@@ -44,8 +44,8 @@ void setSegments(vtkActor* actor, const std::vector<std::array<double, 4>>& segm
     scalars->SetNumberOfComponents(3);
     for (std::size_t s = 0; s < segments.size(); ++s)
     {
-        const vtkIdType ids[2] = {points->InsertNextPoint(segments[s][0], segments[s][1], kInFront),
-                                  points->InsertNextPoint(segments[s][2], segments[s][3], kInFront)};
+        const vtkIdType ids[2] = {points->InsertNextPoint(segments[s][0], segments[s][1], slice_depth::kOverlay),
+                                  points->InsertNextPoint(segments[s][2], segments[s][3], slice_depth::kOverlay)};
         lines->InsertNextCell(2, ids);
         scalars->InsertNextTuple3(255.0 * colours[s][0], 255.0 * colours[s][1], 255.0 * colours[s][2]);
     }
@@ -132,7 +132,7 @@ void SliceOverlayLayer::update(const Eigen::Vector2d& crosshairMm, int widthPixe
                 {kTextColour, kTextColour, kTextColour});
     m_scaleBar->SetVisibility(m_scaleBarMm > 0.0);
     m_scaleText->SetInput(QStringLiteral("%1 mm").arg(significantText(m_scaleBarMm, 3)).toUtf8().constData());
-    m_scaleText->GetPositionCoordinate()->SetValue(0.5 * (left + right), bottom + 1.5 * tick, kInFront);
+    m_scaleText->GetPositionCoordinate()->SetValue(0.5 * (left + right), bottom + 1.5 * tick, slice_depth::kOverlay);
     m_scaleText->SetVisibility(m_scaleBarMm > 0.0);
 }
 

@@ -1,5 +1,6 @@
 #include "vsim/viz/SliceView.h"
 
+#include "SliceDepths.h"
 #include "SliceViewPipeline.h"
 
 #include "vsim/interop/VtkImage.h"
@@ -84,7 +85,7 @@ SliceView::SliceView(SliceOrientation orientation, QWidget* parent)
     p.labelColours->SetInputConnection(p.labelReslice->GetOutputPort());
     p.labelActor->GetMapper()->SetInputConnection(p.labelColours->GetOutputPort());
     p.labelActor->GetProperty()->SetInterpolationTypeToNearest();
-    p.labelActor->SetPosition(0.0, 0.0, 0.5); // in front of the CT slice (the camera looks down -z)
+    p.labelActor->SetPosition(0.0, 0.0, slice_depth::kLabels);
     p.labelActor->VisibilityOff();
     renderer()->AddViewProp(p.labelActor);
 
