@@ -429,7 +429,9 @@ void writeNetworkRun(const std::filesystem::path& folder, const sim::network::Ne
         interop::writeNrrd(sim::network::territoryLabel(*run.territories, *run.perfused, run.lesions),
                            folder / "territory.nrrd", true);
         std::ofstream csv = openForWriting(folder / "feeders.csv");
-        csv << "segment,name,from,to,lesion,enters_lesion_or_margin,added_by_hand,reached_from_tip,radius_mm,drug_flow_ml_min\n";
+        // entry_*_mm: patient frame (LPS), where the feeder enters the lesion or its margin (else its end nearest it)
+        csv << "segment,name,from,to,lesion,enters_lesion_or_margin,added_by_hand,reached_from_tip,radius_mm,drug_flow_ml_min,"
+               "entry_x_mm,entry_y_mm,entry_z_mm\n";
         for (const sim::network::Feeder& f : run.feeders)
         {
             const auto& segment = run.network.segments[std::size_t(f.segment)];
@@ -437,7 +439,8 @@ void writeNetworkRun(const std::filesystem::path& folder, const sim::network::Ne
                 << segment.to << "," << f.lesion + 1 << ","
                 << (f.entersLesion ? 1 : 0) << "," << (f.byHand ? 1 : 0) << "," << (f.reached ? 1 : 0) << ","
                 << numberText(f.radiusMm) << ","
-                << numberText(run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]) << "\n";
+                << numberText(run.network.segmentFields.at("drug_flow_ml_min")[std::size_t(f.segment)]) << ","
+                << numberText(f.entryMm.x()) << "," << numberText(f.entryMm.y()) << "," << numberText(f.entryMm.z()) << "\n";
         }
     }
     if (run.workingAngle) // DSA-like views at the working angle and from the front (8-bit PGM, the head up)

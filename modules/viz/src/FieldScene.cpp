@@ -157,8 +157,31 @@ vtkSmartPointer<vtkScalarBarActor> newLegend()
     legend->SetNumberOfLabels(5);
     legend->SetWidth(0.12);
     legend->SetHeight(0.6);
-    legend->GetTitleTextProperty()->SetFontSize(12);
     return legend;
+}
+
+void titleLegend(vtkScalarBarActor* legend, const QString& title, int fontSize, double roomPixels)
+{
+    constexpr int kLongestLine = 14; // characters; "von Mises (kPa)" stays on one line at 15 with its unit short
+    constexpr double kCharacterWidth = 0.6; // of the font size: a wide estimate for Arial's mixed text
+    QString lines = title;
+    const int unit = title.indexOf(" (");
+    if (title.size() > kLongestLine + 1 && unit > 0)
+        lines = title.left(unit) + "\n" + title.mid(unit + 1);
+    int longest = 0;
+    for (const QString& line : lines.split('\n'))
+        longest = std::max(longest, int(line.size()));
+    if (roomPixels > 0.0 && longest > 0)
+        fontSize = std::clamp(int(roomPixels / (kCharacterWidth * longest)), (3 * fontSize + 3) / 4, fontSize);
+    fitFontToText(legend->GetTitleTextProperty(), title);
+    legend->SetTitle(lines.toUtf8().constData());
+    for (vtkTextProperty* text :
+         {legend->GetTitleTextProperty(), legend->GetLabelTextProperty(), legend->GetAnnotationTextProperty()})
+    {
+        text->SetFontSize(fontSize);
+        text->ItalicOff();
+    }
+    legend->UnconstrainedFontSizeOn();
 }
 
 void labelLegend(vtkScalarBarActor* legend, const std::function<std::string(double)>& text, int count)

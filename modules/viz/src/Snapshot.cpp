@@ -1,5 +1,4 @@
 #include "vsim/viz/Snapshot.h"
-#include "TextFonts.h"
 
 #include "FieldScene.h"
 #include "vsim/core/Error.h"
@@ -51,18 +50,14 @@ QImage render(vtkPolyData* polyData, bool cellScalars, const SnapshotColouring& 
         std::snprintf(printed, sizeof printed, "%.3g", value);
         return localizedNumber(printed);
     });
-    fitFontToText(legend->GetTitleTextProperty(), QString::fromStdString(colouring.legendTitle));
-    legend->SetTitle(colouring.legendTitle.c_str());
     const int fontSize = std::max(12, pixels.height() / 40);
+    detail::titleLegend(legend, QString::fromStdString(colouring.legendTitle), fontSize);
     for (vtkTextProperty* text :
          {legend->GetTitleTextProperty(), legend->GetLabelTextProperty(), legend->GetAnnotationTextProperty()})
     {
-        text->SetColor(0.0, 0.0, 0.0);
-        text->SetFontSize(fontSize);
+        text->SetColor(0.0, 0.0, 0.0); // on the report's white
         text->ShadowOff();
-        text->ItalicOff();
     }
-    legend->UnconstrainedFontSizeOn();
     legend->SetPosition(0.86, 0.15);
     renderer->AddViewProp(legend);
     for (const vtkSmartPointer<vtkProp>& prop : detail::calloutProps(callouts, fontSize, pixels.width(), pixels.height()))

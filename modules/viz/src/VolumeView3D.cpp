@@ -1,5 +1,4 @@
 #include "vsim/viz/VolumeView3D.h"
-#include "TextFonts.h"
 
 #include "FieldScene.h"
 #include "VolumeProperties.h"
@@ -40,6 +39,7 @@
 #include <QMouseEvent>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -49,9 +49,10 @@ using detail::fieldMapper;
 
 namespace {
 
-/// Shows `legend` (made and added to `renderer` at `x` across the view the first time) for `table`, titled `title`.
+/// Shows `legend` (made and added to `renderer` at `x` across the view the first time) for `table`, titled `title`,
+/// its text 12 pixels high at `pixelScale` device pixels a pixel.
 void showLegendIn(vtkRenderer* renderer, vtkSmartPointer<vtkScalarBarActor>& legend, double x,
-                  vtkScalarsToColors* table, const QString& title)
+                  vtkScalarsToColors* table, const QString& title, double pixelScale)
 {
     if (!legend)
     {
@@ -65,8 +66,11 @@ void showLegendIn(vtkRenderer* renderer, vtkSmartPointer<vtkScalarBarActor>& leg
     }
     legend->SetLookupTable(table);
     detail::labelLegend(legend, [](double value) { return significantText(value, 3).toStdString(); });
-    fitFontToText(legend->GetTitleTextProperty(), title);
-    legend->SetTitle(title.toUtf8().constData());
+    // The title is centred over the bar (the legend's middle, 0.06 of the view right of x): its room is twice the
+    // distance from there to the nearer edge.
+    const int* size = renderer->GetSize(); // device pixels
+    const double room = 2.0 * std::min(x + 0.06, 0.94 - x) * double(size[0]);
+    detail::titleLegend(legend, title, int(std::lround(12 * pixelScale)), room);
     legend->SetVisibility(true);
 }
 
@@ -265,7 +269,7 @@ void VolumeView3D::showFieldSurface(const TriangleMesh& surface, const std::stri
     }
     // The surface's own legend, on the left: particles or lines shown with it keep theirs on the right.
     showLegendIn(renderer(), m_scene->surfaceLegend, kSurfaceLegendX,
-                 m_scene->fieldSurface->GetMapper()->GetLookupTable(), legendTitle);
+                 m_scene->fieldSurface->GetMapper()->GetLookupTable(), legendTitle, devicePixelRatioF());
     m_scene->surfaceLegendTitle = m_scene->legendTitle = legendTitle;
     update();
 }
@@ -293,7 +297,7 @@ QStringList VolumeView3D::legendLabels(bool surface) const
 
 void VolumeView3D::showLegend(vtkScalarsToColors* table, const QString& title)
 {
-    showLegendIn(renderer(), m_scene->legend, kPointsLegendX, table, title);
+    showLegendIn(renderer(), m_scene->legend, kPointsLegendX, table, title, devicePixelRatioF());
     m_scene->legendTitle = title;
     update();
 }
