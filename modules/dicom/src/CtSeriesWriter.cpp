@@ -22,6 +22,10 @@
 #include <memory>
 
 namespace vsim::dicom {
+
+using detail::decimalString;
+using detail::decimalStrings;
+
 namespace {
 
 constexpr int kUnsignedOffset = 1024; // stored = HU + 1024 for unsigned 12-bit storage (intercept -1024)
@@ -141,7 +145,7 @@ std::string orientationText(const SliceStack& stack)
 {
     const auto& x = stack.xDirection;
     const auto& y = stack.yDirection;
-    return detail::decimalStrings({x.x(), x.y(), x.z(), y.x(), y.y(), y.z()});
+    return decimalStrings({x.x(), x.y(), x.z(), y.x(), y.y(), y.z()});
 }
 
 /// Classic CT Image Storage: plane and rescale attributes at the top level.
@@ -149,12 +153,12 @@ void putPlaneModules(DcmItem& dataset, const SeriesContext& context, std::size_t
 {
     const SliceStack& stack = context.stack;
     const Eigen::Vector3d& p = stack.positions[slice];
-    put(dataset, DCM_ImagePositionPatient, detail::decimalStrings({p.x(), p.y(), p.z()}));
+    put(dataset, DCM_ImagePositionPatient, decimalStrings({p.x(), p.y(), p.z()}));
     put(dataset, DCM_ImageOrientationPatient, orientationText(stack));
-    put(dataset, DCM_SliceLocation, detail::decimalString(p.dot(stack.normal())));
-    put(dataset, DCM_PixelSpacing, detail::decimalStrings({stack.rowSpacing, stack.columnSpacing}));
-    put(dataset, DCM_SliceThickness, detail::decimalString(context.sliceThickness));
-    put(dataset, DCM_RescaleIntercept, detail::decimalString(context.intercept));
+    put(dataset, DCM_SliceLocation, decimalString(p.dot(stack.normal())));
+    put(dataset, DCM_PixelSpacing, decimalStrings({stack.rowSpacing, stack.columnSpacing}));
+    put(dataset, DCM_SliceThickness, decimalString(context.sliceThickness));
+    put(dataset, DCM_RescaleIntercept, decimalString(context.intercept));
     put(dataset, DCM_RescaleSlope, "1");
     put(dataset, DCM_RescaleType, "HU");
 }
@@ -165,11 +169,11 @@ void putFunctionalGroups(DcmItem& dataset, const SeriesContext& context)
     const SliceStack& stack = context.stack;
     DcmItem& shared = subItem(dataset, DCM_SharedFunctionalGroupsSequence);
     DcmItem& measures = subItem(shared, DCM_PixelMeasuresSequence);
-    put(measures, DCM_PixelSpacing, detail::decimalStrings({stack.rowSpacing, stack.columnSpacing}));
-    put(measures, DCM_SliceThickness, detail::decimalString(context.sliceThickness));
+    put(measures, DCM_PixelSpacing, decimalStrings({stack.rowSpacing, stack.columnSpacing}));
+    put(measures, DCM_SliceThickness, decimalString(context.sliceThickness));
     put(subItem(shared, DCM_PlaneOrientationSequence), DCM_ImageOrientationPatient, orientationText(stack));
     DcmItem& rescale = subItem(shared, DCM_PixelValueTransformationSequence);
-    put(rescale, DCM_RescaleIntercept, detail::decimalString(context.intercept));
+    put(rescale, DCM_RescaleIntercept, decimalString(context.intercept));
     put(rescale, DCM_RescaleSlope, "1");
     put(rescale, DCM_RescaleType, "HU");
     put(subItem(shared, DCM_CTImageFrameTypeSequence), DCM_FrameType, "ORIGINAL\\PRIMARY\\VOLUME\\NONE");
@@ -177,7 +181,7 @@ void putFunctionalGroups(DcmItem& dataset, const SeriesContext& context)
     {
         DcmItem& frame = subItem(dataset, DCM_PerFrameFunctionalGroupsSequence, -2);
         const Eigen::Vector3d& p = stack.positions[f];
-        put(subItem(frame, DCM_PlanePositionSequence), DCM_ImagePositionPatient, detail::decimalStrings({p.x(), p.y(), p.z()}));
+        put(subItem(frame, DCM_PlanePositionSequence), DCM_ImagePositionPatient, decimalStrings({p.x(), p.y(), p.z()}));
         put(subItem(frame, DCM_FrameContentSequence), DCM_InStackPositionNumber, std::to_string(f + 1));
     }
     put(dataset, DCM_NumberOfFrames, std::to_string(stack.positions.size()));

@@ -7,8 +7,7 @@
 #include <initializer_list>
 #include <string>
 
-namespace vsim::dicom::detail
-{
+namespace vsim::dicom::detail {
 
 /// `value` as a decimal string with as many significant digits (12 at most) as fit in 16 characters.
 inline std::string decimalString(double value)

@@ -1,10 +1,10 @@
 #include "vsim/viz/VolumeView3D.h"
 
 #include "FieldScene.h"
+#include "ViewLegend.h"
 #include "VolumeProperties.h"
 
 #include "vsim/core/Error.h"
-#include "vsim/viz/DecimalText.h"
 #include "vsim/interop/VtkImage.h"
 #include "vsim/interop/VtkMesh.h"
 
@@ -47,36 +47,9 @@ namespace vsim::viz {
 
 using detail::fieldMapper;
 
-namespace {
-
-/// Shows `legend` (made and added to `renderer` at `x` across the view the first time) for `table`, titled `title`,
-/// its text 12 pixels high at `pixelScale` device pixels a pixel.
-void showLegendIn(vtkRenderer* renderer, vtkSmartPointer<vtkScalarBarActor>& legend, double x,
-                  vtkScalarsToColors* table, const QString& title, double pixelScale)
-{
-    if (!legend)
-    {
-        legend = detail::newLegend();
-        legend->SetPosition(x, 0.1);
-        // Its numbers are annotations (labelLegend), drawn on the side opposite the tick labels': inward, towards
-        // the view's middle.
-        if (x < 0.5)
-            legend->SetTextPositionToPrecedeScalarBar();
-        renderer->AddViewProp(legend);
-    }
-    legend->SetLookupTable(table);
-    detail::labelLegend(legend, [](double value) { return significantText(value, 3).toStdString(); });
-    // The title is centred over the bar (the legend's middle, 0.06 of the view right of x): its room is twice the
-    // distance from there to the nearer edge.
-    const int* size = renderer->GetSize(); // device pixels
-    const double room = 2.0 * std::min(x + 0.06, 0.94 - x) * double(size[0]);
-    detail::titleLegend(legend, title, int(std::lround(12 * pixelScale)), room);
-    legend->SetVisibility(true);
-}
-
-constexpr double kSurfaceLegendX = 0.02, kPointsLegendX = 0.82; // view fractions: the surface's left, the rest right
-
-} // namespace
+using detail::kPointsLegendX;
+using detail::kSurfaceLegendX;
+using detail::showLegendIn;
 
 struct VolumeView3D::Scene
 {
