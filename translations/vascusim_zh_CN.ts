@@ -4745,8 +4745,8 @@
         <translation>管壁模型</translation>
     </message>
     <message>
-        <source>1: quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 70 s for 30,000 with a thrombus layer); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default once its solve is fast enough for the workstation&apos;s walls.</source>
-        <translation>1：二次（10 节点）四面体，采用 Raghavan &amp; Vorp 2000 超弹性 AAA 管壁（近不可压缩），管壁网格含血栓时采用 Wang 2001 血栓，以载荷增量和牛顿法求静态平衡（CPU；2 核上 15,000 个四面体约 20 s，含血栓层的 30,000 个约 70 s）；0：材料组的本构用于线性四面体，先阻尼加载路径，再求平衡（可用 GPU）。当其求解对工作站的管壁足够快时，1 将成为默认值。</translation>
+        <source>1: quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 50 s for 30,000 with a thrombus layer, 150 s for the demo&apos;s 31,000 around a wide sac); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default once its solve is fast enough for the workstation&apos;s walls.</source>
+        <translation>1：二次（10 节点）四面体，采用 Raghavan &amp; Vorp 2000 超弹性 AAA 管壁（近不可压缩），管壁网格含血栓时采用 Wang 2001 血栓，以载荷增量和牛顿法求静态平衡（CPU；2 核上 15,000 个四面体约 20 s，含血栓层的 30,000 个约 50 s，演示中围绕宽大瘤囊的 31,000 个约 150 s）；0：材料组的本构用于线性四面体，先阻尼加载路径，再求平衡（可用 GPU）。当其求解对工作站的管壁足够快时，1 将成为默认值。</translation>
     </message>
     <message>
         <source>Wall Poisson&apos;s ratio</source>

@@ -4,7 +4,8 @@
 // preconditioner serves the next, changed tangent within its budget; near equilibrium the tangent's own symmetric
 // part is factorised and the stand-in not assembled; a compressed box's indefinite tangent is preconditioned by the
 // model's definite stand-in; a tangent whose symmetric part is not positive definite falls
-// back to LU; near equilibrium GMRES with a multigrid V-cycle of the stand-in (no factorisation) agrees with the
+// back to LU, and a stand-in that failed is not factorised again far from equilibrium; a static solve whose line
+// search stalls gives up; near equilibrium GMRES with a multigrid V-cycle of the stand-in (no factorisation) agrees with the
 // LU; held components stay 0. Three seeds.
 
 #include "vsim/core/Error.h"
@@ -27,6 +28,7 @@ using namespace vsim::sim::fem;
 namespace {
 
 constexpr double kCompression = 0.75; // the stretch along x of the compressed box (volume kept)
+constexpr double kStallTestPa = 1e4;  // the stall case's follower pressure: its first Newton step overshoots
 
 struct Case
 {
@@ -384,6 +386,81 @@ private slots:
             QVERIFY(solved.converged && solved.factorised);
             QVERIFY(solved.iterations > 1 && solved.iterations <= settings.gmresMaxIterations); // not the LU
             QVERIFY(residualOf(tangent, x, force, c.held) <= 2e-8);
+        }
+    }
+
+    /// A stand-in that failed to precondition GMRES in this solve is not factorised again while the force
+    /// residual is over tangentCholeskyBelow: the next update goes straight to the LU (on the demo AAA wall each
+    /// failed attempt cost 200 iterations, about 20 s). Under it, the stand-in is tried again. The stand-in here is
+    /// the tangent at rest, far from the sheared box's, with a budget of 5 iterations.
+    void failedStandInIsNotFactorisedAgainFarFromEquilibrium()
+    {
+        const Case c = boxCase();
+        for (unsigned seed : {1u, 2u, 3u})
+        {
+            QuadraticFem model = boxModel(c);
+            BlockSparseMatrix atRest = model.makeMatrix();
+            model.updateElements();
+            model.assembleDefiniteTangent(atRest, true);
+            Eigen::VectorXd force;
+            const BlockSparseMatrix tangent = deformedTangent(c, seed, 1.08, force);
+            StaticSolveSettings settings;
+            settings.linear = LinearSolver::CholeskyGmres;
+            settings.gmresMaxIterations = 5;
+            TangentSolver solver(tangent, c.held, settings);
+            int calls = 0;
+            const TangentSolver::StandIn standIn = standInOf(atRest, &calls);
+            Eigen::VectorXd x;
+            const TangentSolveResult first = solver.solve(tangent, force, x, true, standIn, 2.0);
+            const TangentSolveResult second = solver.solve(tangent, force, x, true, standIn, 1.5);
+            const int callsFar = calls;
+            const TangentSolveResult near = solver.solve(tangent, force, x, true, standIn, 0.5);
+            qInfo("seed %u: stand-in at rest: %d iterations (then the LU), next update %d, stand-in assembled %d "
+                  "times far from equilibrium and %d in all", seed, first.iterations, second.iterations, callsFar, calls);
+            QVERIFY(first.converged && second.converged && near.converged);
+            QCOMPARE(first.iterations, settings.gmresMaxIterations + 1); // the stand-in's 5, then the LU's 1
+            QCOMPARE(second.iterations, 1);                              // the LU straight away
+            QCOMPARE(callsFar, 1);
+            QCOMPARE(calls, 2); // tried again under tangentCholeskyBelow
+            QVERIFY(residualOf(tangent, x, force, c.held) <= 2e-8);
+        }
+    }
+
+    /// solveStatic gives up once a line search's step is under stallStep (StaticSolveSettings): from rest under
+    /// 10 kPa the box's first Newton step overshoots (the line search takes 4 % of it), so with stallStep 1 the solve stops after that update,
+    /// not converged and marked stalled, its residual recorded; with 0 (never) the same solve converges.
+    void stalledSolveGivesUp()
+    {
+        const Case c = boxCase();
+        for (const double stallStep : {1.0, 0.0})
+        {
+            QuadraticFem model = boxModel(c);
+            StaticSolveSettings settings;
+            settings.linear = LinearSolver::CholeskyGmres;
+            settings.rotationStiffness = settings.directionalLineSearch = true;
+            settings.tolerance = 1e-8;
+            settings.stallStep = stallStep;
+            const ExternalForces load = [&c](const Eigen::VectorXd& x) {
+                Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
+                addPressureForces(c.loaded, x, kStallTestPa, f);
+                return f;
+            };
+            const ExternalStiffness stiffness = [&c](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) {
+                subtractPressureStiffness(c.loaded, x, kStallTestPa, tangent);
+            };
+            const StaticSolveReport report = solveStatic(model, load, c.held, settings, stiffness);
+            qInfo("stallStep %.0f: %d updates, smallest step %.3f, force residual %.1e, %s", stallStep, report.updates,
+                  report.smallestStep, report.forceResidual, report.stalled ? "stalled" : "not stalled");
+            if (stallStep > 0.0)
+            {
+                QVERIFY(report.stalled && !report.converged);
+                QCOMPARE(report.updates, 1);
+                QCOMPARE(report.residualHistory.size(), std::size_t(2));
+                QCOMPARE(report.residualHistory.back(), report.forceResidual);
+                QVERIFY(report.smallestStep < 1.0);
+            }
+            else
+                QVERIFY(report.converged && !report.stalled && report.forceResidual <= 1e-8);
         }
     }
 

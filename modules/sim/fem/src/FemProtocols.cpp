@@ -85,7 +85,8 @@ std::vector<ParameterSpec> femParameters()
         {"wall_model", "Wall model", "", 0, 0, 1, physiological,
          "1: quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall (nearly incompressible) "
          "and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and "
-         "Newton's method (CPU; on 2 cores about 20 s for 15,000 tets, 70 s for 30,000 with a thrombus layer); 0: the Material group's "
+         "Newton's method (CPU; on 2 cores about 20 s for 15,000 tets, 50 s for 30,000 with a thrombus layer, 150 s for "
+         "the demo's 31,000 around a wide sac); 0: the Material group's "
          "law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default "
          "once its solve is fast enough for the workstation's walls.",
          ParameterSpec::Kind::Integer},

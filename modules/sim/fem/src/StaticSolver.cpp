@@ -116,6 +116,18 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
     double reference = freeNorm(load, constrained); // the load at the start (a follower load changes after)
     if (reference == 0.0)
         reference = norm; // only prescribed displacements drive it
+    // After a line search: whether its step says the solve has stalled (StaticSolveSettings::stallStep); a stalled
+    // solve ends with this update counted and its residual recorded.
+    const auto stalls = [&](double step) {
+        report.smallestStep = std::min(report.smallestStep, step);
+        if (step >= settings.stallStep)
+            return false;
+        report.stalled = true;
+        ++report.updates;
+        report.forceResidual = reference > 0.0 ? norm / reference : 0.0;
+        report.residualHistory.push_back(report.forceResidual);
+        return true;
+    };
     for (;; ++report.updates)
     {
         report.forceResidual = reference > 0.0 ? norm / reference : 0.0;
@@ -179,7 +191,8 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
                     high = step, highSlope = g;
                 step = high < 0.0 ? std::min(1.0, 2.0 * step) : low + (high - low) * lowSlope / (lowSlope - highSlope);
             }
-            report.smallestStep = std::min(report.smallestStep, step);
+            if (stalls(step))
+                break;
             continue;
         }
         // Backtracking: the full step unless it inverts an element or does not lower the residual force (Armijo
@@ -201,7 +214,8 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
                 throw Error("no step along the Newton direction keeps every element uninverted");
             }
         }
-        report.smallestStep = std::min(report.smallestStep, step);
+        if (stalls(step))
+            break;
     }
     return report;
 }

@@ -53,6 +53,7 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         settings.tangentCholeskyBelow = m_setup.tangentCholeskyBelow;
         settings.rotationStiffness = true;
         settings.directionalLineSearch = true;
+        settings.stallStep = m_setup.stallStep;
         const Progress stage = progress.subRange(m_reached, factor);
         settings.afterResidual = [&](int updates, double residual) {
             stage.throwIfCancelled();

@@ -82,7 +82,8 @@ void TangentSolver::factorisePreconditioner(const BlockSparseMatrix& tangent, co
         }
         m_tangentDefinite = false;
     }
-    if ((standIn && cholesky(standIn())) || (!standIn && m_tangentDefinite && cholesky(tangent)))
+    const bool standInWorthTrying = !m_standInFailed || forceResidual <= m_settings.tangentCholeskyBelow;
+    if ((standIn && standInWorthTrying && cholesky(standIn())) || (!standIn && m_tangentDefinite && cholesky(tangent)))
         return;
     // Not positive definite: the tangent's own LU (the LU of the matrix that failed would leave GMRES as far from
     // the tangent as the Cholesky would have: 7.5e-8 after 200 iterations on a 1,500-vertex AAA wall, RESULTS.md).
@@ -156,6 +157,7 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
             result.iterations += solved.iterations;
             if (!solved.converged && m_preconditioner == m_direct.get())
             {
+                m_standInFailed = m_standInFailed || (standIn && !m_keptIsTangents);
                 factoriseLu(tangent); // the symmetric part no longer describes the tangent
                 solved = gmres(tangent, f, dx, m_settings.gmresMaxIterations);
                 result.iterations += solved.iterations;

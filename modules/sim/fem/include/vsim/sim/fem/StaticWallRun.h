@@ -33,6 +33,9 @@ struct StaticWallSetup
     double tolerance = 1e-6;                        ///< the last increment's relative force residual
     double intermediateTolerance = 1e-3;
     int maxUpdatesPerIncrement = 15;                ///< Newton converges in 5-10 or not at all
+    /// An increment whose line search takes a step under this fraction of the Newton step is given up and retried
+    /// at half the size (StaticSolveSettings::stallStep; the largest seen in a converging solve was 0.26)
+    double stallStep = 0.01;
     /// Each Newton update's linear solve: GMRES to 1e-8 with a kept CHOLMOD preconditioner, or UMFPACK LU.
     LinearSolver linear = LinearSolver::CholeskyGmres;
     /// CholeskyGmres: the tangent's own Cholesky below this force residual (StaticSolveSettings; a negative value:

@@ -12,7 +12,10 @@
 // - CHOLMOD's Cholesky of the model's definite stand-in for its tangent (StaticModel::assembleDefiniteTangent,
 //   without the follower load's stiffness), built only when asked for: the first, overshooting updates from rest
 //   leave regions compressed where the tangent's symmetric part is indefinite (12-50 iterations with it);
-// - UMFPACK's LU of the tangent, where neither is positive definite or GMRES does not converge.
+// - UMFPACK's LU of the tangent, where neither is positive definite or GMRES does not converge. Once GMRES has
+//   not converged with the stand-in in a solve, the stand-in is not tried again while the force residual is over
+//   tangentCholeskyBelow: far from equilibrium on the demo AAA wall (no thrombus, a 16 kPa load on a wide sac) it
+//   failed at each update, 200 iterations (about 20 s) before each LU (RESULTS.md, 2026-12-02).
 // The follower pressure's load stiffness makes the tangent non-symmetric, which GMRES takes to the 1e-8 the issue
 // asks; CHOLMOD factorises the quadratic wall 2-4x faster than UMFPACK and solves it 2-10x faster (RESULTS.md); once
 // the force residual is small the tangent hardly changes between updates, so one factorisation serves several.
@@ -77,6 +80,7 @@ private:
     int m_lastIterations = 0;
     bool m_tangentDefinite = true; // no Cholesky of the tangent's symmetric part has failed in this solve
     bool m_keptIsTangents = false; // the kept factorisation is the tangent's own Cholesky
+    bool m_standInFailed = false;  // GMRES did not converge with the stand-in's Cholesky in this solve
     const Eigen::VectorXd* m_positions;
     KeptMultigrid m_ownMultigrid;  // ConjugateGradient with Multigrid, without settings.keptMultigrid
     KeptMultigrid& m_multigrid;    // the one in use
