@@ -1,5 +1,7 @@
 #include "vsim/sim/fem/SparseDirect.h"
 
+#include "BlasThreads.h"
+
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
 
@@ -49,6 +51,7 @@ SparseDirect::~SparseDirect() = default;
 SparseDirect::SparseDirect(const BlockSparseMatrix& pattern, const std::vector<std::uint8_t>& constrained, Kind kind)
     : m_kind(kind), m_factors(std::make_unique<Factors>())
 {
+    detail::capBlasThreads();
     const std::size_t dofs = 3 * pattern.nodeCount();
     // The free degrees of freedom node by node, for the Cholesky in the fill-reducing order of the nodes (CHOLMOD
     // then keeps it: a natural ordering, postordered).
