@@ -116,16 +116,17 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
     double reference = freeNorm(load, constrained); // the load at the start (a follower load changes after)
     if (reference == 0.0)
         reference = norm; // only prescribed displacements drive it
-    // After a line search: whether its step says the solve has stalled (StaticSolveSettings::stallStep); a stalled
-    // solve ends with this update counted and its residual recorded.
+    // After a line search: whether its step says the solve has stalled (StaticSolveSettings::stallStep; a short step
+    // that reached the tolerance has not); a stalled solve ends with this update counted and its residual recorded.
     const auto stalls = [&](double step) {
         report.smallestStep = std::min(report.smallestStep, step);
-        if (step >= settings.stallStep)
+        const double residualNow = reference > 0.0 ? norm / reference : 0.0;
+        if (step >= settings.stallStep || residualNow <= settings.tolerance)
             return false;
         report.stalled = true;
         ++report.updates;
-        report.forceResidual = reference > 0.0 ? norm / reference : 0.0;
-        report.residualHistory.push_back(report.forceResidual);
+        report.forceResidual = residualNow;
+        report.residualHistory.push_back(residualNow);
         return true;
     };
     for (;; ++report.updates)
