@@ -147,6 +147,30 @@ class FemTangentSolver : public QObject
 {
     Q_OBJECT
 
+    /// Full Newton on the quadratic box with GMRES on the Cholesky (the wall solve's settings), to 1e-8.
+    static StaticSolveSettings loadedBoxSettings()
+    {
+        StaticSolveSettings settings;
+        settings.linear = LinearSolver::CholeskyGmres;
+        settings.rotationStiffness = settings.directionalLineSearch = true;
+        settings.tolerance = 1e-8;
+        return settings;
+    }
+
+    /// The box of `c` under kStallTestPa of follower pressure on its loaded faces, from rest.
+    static StaticSolveReport solveLoadedBox(const Case& c, QuadraticFem& model, const StaticSolveSettings& settings)
+    {
+        const ExternalForces load = [&c](const Eigen::VectorXd& x) {
+            Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
+            addPressureForces(c.loaded, x, kStallTestPa, f);
+            return f;
+        };
+        const ExternalStiffness stiffness = [&c](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) {
+            subtractPressureStiffness(c.loaded, x, kStallTestPa, tangent);
+        };
+        return solveStatic(model, load, c.held, settings, stiffness);
+    }
+
 private slots:
     void gmresWithCholeskyMatchesLu()
     {
@@ -435,25 +459,14 @@ private slots:
         for (const double stallStep : {1.0, 0.0})
         {
             QuadraticFem model = boxModel(c);
-            StaticSolveSettings settings;
-            settings.linear = LinearSolver::CholeskyGmres;
-            settings.rotationStiffness = settings.directionalLineSearch = true;
-            settings.tolerance = 1e-8;
+            StaticSolveSettings settings = loadedBoxSettings();
             settings.stallStep = stallStep;
-            const ExternalForces load = [&c](const Eigen::VectorXd& x) {
-                Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
-                addPressureForces(c.loaded, x, kStallTestPa, f);
-                return f;
-            };
-            const ExternalStiffness stiffness = [&c](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) {
-                subtractPressureStiffness(c.loaded, x, kStallTestPa, tangent);
-            };
-            const StaticSolveReport report = solveStatic(model, load, c.held, settings, stiffness);
+            const StaticSolveReport report = solveLoadedBox(c, model, settings);
             qInfo("stallStep %.0f: %d updates, smallest step %.3f, force residual %.1e, %s", stallStep, report.updates,
                   report.smallestStep, report.forceResidual, report.stalled ? "stalled" : "not stalled");
             if (stallStep > 0.0)
             {
-                QVERIFY(report.stalled && !report.converged);
+                QVERIFY(report.stalled && !report.converged && !report.abandonedFirstSolve);
                 QCOMPARE(report.updates, 1);
                 QCOMPARE(report.residualHistory.size(), std::size_t(2));
                 QCOMPARE(report.residualHistory.back(), report.forceResidual);
@@ -461,6 +474,45 @@ private slots:
             }
             else
                 QVERIFY(report.converged && !report.stalled && report.forceResidual <= 1e-8);
+        }
+    }
+
+    void firstSolveOverItsBudgetGivesUp()
+    {
+        // The first update's GMRES on the stand-in's Cholesky (the box at rest, without the pressure's stiffness)
+        // cannot reach 1e-8 in one iteration: the solve gives up there, the model untouched, no LU; with room (or no
+        // budget of its own) the same solve converges to the same state.
+        const Case c = boxCase();
+        Eigen::VectorXd reference;
+        for (const int budget : {1, 0, 100})
+        {
+            QuadraticFem model = boxModel(c);
+            const Eigen::VectorXd rest = model.positions();
+            StaticSolveSettings settings = loadedBoxSettings();
+            settings.firstSolveBudget = budget;
+            const StaticSolveReport report = solveLoadedBox(c, model, settings);
+            qInfo("firstSolveBudget %d: %d updates, %d factorisations, %d GMRES iterations, force residual %.1e%s", budget,
+                  report.updates, report.factorisations, report.cgIterations, report.forceResidual,
+                  report.abandonedFirstSolve ? ", abandoned" : "");
+            if (budget == 1)
+            {
+                QVERIFY(report.abandonedFirstSolve && report.stalled && !report.converged);
+                QCOMPARE(report.updates, 0);
+                QCOMPARE(report.factorisations, 1); // the stand-in's Cholesky only: no LU after it
+                QCOMPARE(report.cgIterations, 1);
+                QVERIFY(report.linearResiduals.empty()); // not a linear solve's result
+                QCOMPARE(report.residualHistory.size(), std::size_t(1)); // the residual at rest, nothing after
+                QCOMPARE(report.forceResidual, report.residualHistory.front());
+                QVERIFY(model.positions() == rest);
+                continue;
+            }
+            QVERIFY(report.converged && !report.stalled && !report.abandonedFirstSolve);
+            QVERIFY(report.forceResidual <= 1e-8);
+            QVERIFY(report.linearIterations.front() > 1);
+            if (reference.size() == 0)
+                reference = model.positions();
+            else
+                QVERIFY(model.positions() == reference); // the same iteration with or without the budget
         }
     }
 

@@ -151,6 +151,11 @@ StaticSolveReport solveStatic(StaticModel& model, const ExternalForces& external
                                   externalStiffness);
         report.cgIterations += solved.iterations;
         report.factorisations += solved.factorised ? 1 : 0;
+        if (solved.abandoned)
+        {
+            report.stalled = report.abandonedFirstSolve = true;
+            break;
+        }
         report.worstLinearResidual = std::max(report.worstLinearResidual, solved.relativeResidual);
         report.linearIterations.push_back(solved.iterations);
         report.linearResiduals.push_back(solved.relativeResidual);

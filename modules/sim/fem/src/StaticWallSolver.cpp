@@ -54,6 +54,8 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         settings.rotationStiffness = true;
         settings.directionalLineSearch = true;
         settings.stallStep = m_setup.stallStep;
+        const bool halvable = m_increment > 1.0 / 16.0 + 1e-12;
+        settings.firstSolveBudget = halvable ? m_setup.firstSolveBudget : 0; // the smallest increment: LU as before
         const Progress stage = progress.subRange(m_reached, factor);
         settings.afterResidual = [&](int updates, double residual) {
             stage.throwIfCancelled();
@@ -96,7 +98,7 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         }
         m_model->positions() = start; // back to the last converged increment
         m_model->updateElements();
-        if (m_increment > 1.0 / 16.0 + 1e-12)
+        if (halvable)
         {
             m_increment *= 0.5;
             ++m_cutbacks;

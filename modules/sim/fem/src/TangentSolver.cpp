@@ -153,8 +153,18 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
         {
             factorisePreconditioner(tangent, standIn, forceResidual);
             result.factorised = true;
-            solved = gmres(tangent, f, dx, m_settings.gmresMaxIterations);
+            // The first update on the stand-in's Cholesky with its own budget: past it the load step is too large.
+            const bool trial = m_solves == 0 && m_settings.firstSolveBudget > 0 && standIn &&
+                               m_preconditioner == m_direct.get() && !m_keptIsTangents;
+            solved = gmres(tangent, f, dx, trial ? m_settings.firstSolveBudget : m_settings.gmresMaxIterations);
             result.iterations += solved.iterations;
+            ++m_solves;
+            if (trial && !solved.converged)
+            {
+                result.abandoned = true;
+                result.relativeResidual = solved.relativeResidual;
+                return result;
+            }
             if (!solved.converged && m_preconditioner == m_direct.get())
             {
                 m_standInFailed = m_standInFailed || (standIn && !m_keptIsTangents);

@@ -40,6 +40,9 @@ struct TangentSolveResult
     double relativeResidual = 0.0; ///< |f - T dx| / |f| on the free components
     bool factorised = false;       ///< this solve factorised the tangent (MultigridGmres: set up its hierarchy)
     bool converged = false;        ///< the residual reached the solve's tolerance
+    /// StaticSolveSettings::firstSolveBudget ran out: no direction, and the solve gives up (not a linear solve's
+    /// result: the run status does not record it).
+    bool abandoned = false;
 };
 
 /// What the static solve needs of a model (CorotationalFem through an adapter, QuadraticFem directly).
@@ -87,7 +90,9 @@ struct StaticSolveReport
     std::vector<int> linearIterations;   ///< per update: the Krylov iterations of its linear solve (0: direct)
     std::vector<double> linearResiduals; ///< per update: its linear solve's relative residual
     double smallestStep = 1.0;  ///< the smallest fraction of a Newton step the line search took
-    bool stalled = false;       ///< given up: the line search's step fell under StaticSolveSettings::stallStep
+    bool stalled = false;       ///< given up: the line search's step fell under StaticSolveSettings::stallStep,
+                                ///< or abandonedFirstSolve
+    bool abandonedFirstSolve = false; ///< given up: the first update's GMRES did not converge within firstSolveBudget
     bool converged = false;
 };
 
@@ -146,6 +151,13 @@ struct StaticSolveSettings
     /// direction lead nowhere: on the demo AAA wall at the full pressure from rest the steps were 0.0018, 2e-5, 4e-5
     /// ... for 15 updates at a force residual of 8.3, where the caller's smaller load increment converges.
     double stallStep = 0.0;
+    /// CholeskyGmres: the first update's GMRES iterations with the Cholesky of the model's definite stand-in (0: no
+    /// limit of its own; gmresMaxIterations, then the tangent's LU). Where they do not suffice, the follower load's
+    /// stiffness outweighs the wall's at this load step, and the solve gives up at once (not converged, `stalled`,
+    /// `abandonedFirstSolve`) for the caller to take a smaller one, without the LU: on the demo AAA wall at the full
+    /// pressure from rest 200 iterations left 2.3e-7 and the increment then stalled (4 + 14 + 14 s lost), at half
+    /// the pressure 48 sufficed; cli_sac's thrombus wall takes 25 at the full pressure (RESULTS.md, 2026-12-02).
+    int firstSolveBudget = 0;
     /// Called with the update count and the relative force residual each time a residual is computed (progress;
     /// it may throw vsim::Cancelled, which leaves the model at the last state evaluated).
     std::function<void(int updates, double forceResidual)> afterResidual;

@@ -36,6 +36,10 @@ struct StaticWallSetup
     /// An increment whose line search takes a step under this fraction of the Newton step is given up and retried
     /// at half the size (StaticSolveSettings::stallStep; the largest seen in a converging solve was 0.26)
     double stallStep = 0.01;
+    /// An increment whose first linear solve needs more GMRES iterations than this on the stand-in's Cholesky is
+    /// given up and retried at half the size, while it can still be halved (StaticSolveSettings::firstSolveBudget;
+    /// 0: never). Converging increments took 25-50.
+    int firstSolveBudget = 100;
     /// Each Newton update's linear solve: GMRES to 1e-8 with a kept CHOLMOD preconditioner, or UMFPACK LU.
     LinearSolver linear = LinearSolver::CholeskyGmres;
     /// CholeskyGmres: the tangent's own Cholesky below this force residual (StaticSolveSettings; a negative value:

@@ -61,7 +61,9 @@ public:
     /// Solves `tangent` dx = f; CholeskyGmres: with a fresh preconditioner when `fresh` (the order above; the
     /// tangent's own Cholesky only while `forceResidual` is under settings.tangentCholeskyBelow, the stand-in's
     /// where `standIn` is given), else the kept one with 3 x reuseIterations, then a fresh one if that did not
-    /// converge. Throws vsim::Error when a factorisation fails (a part of the wall not held).
+    /// converge; the first fresh one on the stand-in's Cholesky with settings.firstSolveBudget where that is set,
+    /// `abandoned` when it does not converge within it. Throws vsim::Error when a factorisation fails (a part of the
+    /// wall not held).
     TangentSolveResult solve(const BlockSparseMatrix& tangent, const Eigen::VectorXd& f, Eigen::VectorXd& dx,
                              bool fresh = true, const StandIn& standIn = {}, double forceResidual = 0.0);
     /// The tolerance a solve is judged against (direct solves: 1e-8 on their residual check).
@@ -78,6 +80,7 @@ private:
     std::unique_ptr<SparseDirect> m_direct, m_lu;
     SparseDirect* m_preconditioner = nullptr; // the kept factorisation (CholeskyGmres)
     int m_lastIterations = 0;
+    int m_solves = 0;              // CholeskyGmres solves with a fresh preconditioner so far
     bool m_tangentDefinite = true; // no Cholesky of the tangent's symmetric part has failed in this solve
     bool m_keptIsTangents = false; // the kept factorisation is the tangent's own Cholesky
     bool m_standInFailed = false;  // GMRES did not converge with the stand-in's Cholesky in this solve
