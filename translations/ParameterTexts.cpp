@@ -142,7 +142,7 @@ static const char* const kParameterTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Parameters", "Blood pressure"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Systolic pressure on the lumen."),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Wall model"),
-    QT_TRANSLATE_NOOP("vsim::Parameters", "1: quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton's method (CPU; on 2 cores about 20 s for 15,000 tets, 50 s for 30,000 with a thrombus layer, 150 s for the demo's 31,000 around a wide sac); 0: the Material group's law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default once its solve is fast enough for the workstation's walls."),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "1 (the clinical analysis): quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton's method (CPU; on 2 cores about 20 s for 15,000 tets, 45 s for 30,000 with a thrombus layer, 85 s for the demo's 31,000 around a wide sac); 0: the Material group's law on linear tets, a damped load path then the equilibrium (GPU path possible; linear tets lock in bending and near incompressibility)."),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Wall Poisson's ratio"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Near incompressibility of the hyperelastic wall: its bulk modulus from the small-strain shear modulus (wall model 1)."),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Zero-pressure geometry"),

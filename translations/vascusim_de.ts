@@ -531,10 +531,6 @@
         <translation>Wirkstofffluss [ml/min]</translation>
     </message>
     <message>
-        <source>Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; the static equilibrium by Newton&apos;s method (sparse LU) to the force tolerance. The imaged geometry is taken as unloaded (CT shows the vessel at its pressure); the intraluminal thrombus, where the wall mesh has it, as its own layer (Wang et al. 2001).</source>
-        <translation>Wandmechanik: quadratische (10-Knoten-)Tetraeder-FEM, die hyperelastische AAA-Wand nach Raghavan &amp; Vorp 2000 (nahezu inkompressibel), der Blutdruck als mitgehende Last auf dem Lumen, Enden fixiert; das statische Gleichgewicht mit dem Newton-Verfahren (dünnbesetzte LU) bis zur Krafttoleranz. Die abgebildete Geometrie gilt als unbelastet (das CT zeigt das Gefäß unter seinem Druck); der intraluminale Thrombus, wo das Wandnetz ihn enthält, als eigene Schicht (Wang et al. 2001).</translation>
-    </message>
-    <message>
         <source>Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), lumped mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. 4); the physiological protocol&apos;s figures from the static equilibrium after the load path.</source>
         <translation>Wandmechanik: Tetraeder-FEM (korotierende lineare Elastizität oder St. Venant-Kirchhoff), konzentrierte Masse, Rayleigh-Dämpfung, implizites Euler-Verfahren mit Block-Jacobi-vorkonditioniertem CG (Dissertation Kap. 4); die Werte des physiologischen Protokolls aus dem statischen Gleichgewicht nach dem Lastpfad.</translation>
     </message>
@@ -1297,6 +1293,10 @@
     <message>
         <source>n/a</source>
         <translation>k. A.</translation>
+    </message>
+    <message>
+        <source>Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; the static equilibrium by Newton&apos;s method (GMRES preconditioned by a sparse Cholesky or LU factorisation) to the force tolerance. The imaged geometry is taken as unloaded (CT shows the vessel at its pressure); the intraluminal thrombus, where the wall mesh has it, as its own layer (Wang et al. 2001).</source>
+        <translation>Wandmechanik: FEM mit quadratischen (10-Knoten-)Tetraedern, die hyperelastische AAA-Wand nach Raghavan &amp; Vorp 2000 (nahezu inkompressibel), der Blutdruck als mitgehende Last auf dem Lumen, Enden gehalten; das statische Gleichgewicht nach dem Newton-Verfahren (GMRES, vorkonditioniert mit einer dünnbesetzten Cholesky- oder LU-Zerlegung) bis zur Krafttoleranz. Die abgebildete Geometrie gilt als unbelastet (das CT zeigt das Gefäß unter seinem Druck); der intraluminale Thrombus, wo das Wandnetz ihn enthält, als eigene Schicht (Wang et al. 2001).</translation>
     </message>
 </context>
 <context>
@@ -4745,10 +4745,6 @@
         <translation>Wandmodell</translation>
     </message>
     <message>
-        <source>1: quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 50 s for 30,000 with a thrombus layer, 150 s for the demo&apos;s 31,000 around a wide sac); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default once its solve is fast enough for the workstation&apos;s walls.</source>
-        <translation>1: quadratische Tetraeder (10 Knoten) mit der hyperelastischen AAA-Wand nach Raghavan &amp; Vorp 2000 (nahezu inkompressibel) und dem Thrombus nach Wang 2001, wo das Wandnetz einen hat, statisches Gleichgewicht in Laststufen mit dem Newton-Verfahren (CPU; auf 2 Kernen etwa 20 s für 15.000 Tetraeder, 50 s für 30.000 mit Thrombusschicht, 150 s für die 31.000 der Demo um einen weiten Sack); 0: das Gesetz der Gruppe Material auf linearen Tetraedern, ein gedämpfter Lastpfad, dann das Gleichgewicht (GPU möglich). 1 wird Standard, sobald seine Lösung für die Wände der Workstation schnell genug ist.</translation>
-    </message>
-    <message>
         <source>Wall Poisson&apos;s ratio</source>
         <translation>Querkontraktionszahl der Wand</translation>
     </message>
@@ -5691,6 +5687,10 @@
     <message>
         <source>1: with particle shifting, a shifted particle&apos;s velocity follows it to where the shift moves it, v + dr . grad v (Lind et al. 2012&apos;s Taylor correction); 0: the particle keeps its velocity</source>
         <translation>1: bei Partikelverschiebung folgt die Geschwindigkeit eines verschobenen Partikels ihm an den Ort, an den die Verschiebung es bringt, v + dr . grad v (Taylor-Korrektur nach Lind et al. 2012); 0: das Partikel behält seine Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>1 (the clinical analysis): quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 45 s for 30,000 with a thrombus layer, 85 s for the demo&apos;s 31,000 around a wide sac); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible; linear tets lock in bending and near incompressibility).</source>
+        <translation>1 (die klinische Analyse): quadratische (10-Knoten-)Tetraeder mit der hyperelastischen AAA-Wand nach Raghavan &amp; Vorp 2000 (nahezu inkompressibel) und dem Thrombus nach Wang 2001, wo das Wandnetz einen hat, statisches Gleichgewicht in Laststufen mit dem Newton-Verfahren (CPU; auf 2 Kernen etwa 20 s für 15.000 Tetraeder, 45 s für 30.000 mit Thrombusschicht, 85 s für die 31.000 der Demo um einen weiten Sack); 0: das Gesetz der Gruppe Material auf linearen Tetraedern, ein gedämpfter Lastpfad, dann das Gleichgewicht (GPU-Pfad möglich; lineare Tetraeder versteifen bei Biegung und nahezu Inkompressibilität).</translation>
     </message>
 </context>
 <context>

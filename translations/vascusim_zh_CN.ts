@@ -531,10 +531,6 @@
         <translation>药物流量 [ml/min]</translation>
     </message>
     <message>
-        <source>Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; the static equilibrium by Newton&apos;s method (sparse LU) to the force tolerance. The imaged geometry is taken as unloaded (CT shows the vessel at its pressure); the intraluminal thrombus, where the wall mesh has it, as its own layer (Wang et al. 2001).</source>
-        <translation>壁力学：二次（10 节点）四面体有限元，Raghavan &amp; Vorp 2000 超弹性 AAA 壁（近不可压缩），血压作为作用于管腔的随动载荷，两端固定；以牛顿法（稀疏 LU）求解静力平衡至力容差。成像几何视为无载荷状态（CT 显示的是处于其压力下的血管）；腔内血栓在壁网格包含时作为独立层（Wang et al. 2001）。</translation>
-    </message>
-    <message>
         <source>Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. Venant-Kirchhoff), lumped mass, Rayleigh damping, backward Euler with block-Jacobi preconditioned CG (thesis ch. 4); the physiological protocol&apos;s figures from the static equilibrium after the load path.</source>
         <translation>壁力学：四面体有限元（共旋线弹性或 St. Venant-Kirchhoff），集中质量，Rayleigh 阻尼，后向欧拉法配合块 Jacobi 预条件共轭梯度（论文第 4 章）；生理方案的数值取自加载路径之后的静力平衡。</translation>
     </message>
@@ -1297,6 +1293,10 @@
     <message>
         <source>n/a</source>
         <translation>不适用</translation>
+    </message>
+    <message>
+        <source>Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible), the blood pressure as a follower load on the lumen, ends held; the static equilibrium by Newton&apos;s method (GMRES preconditioned by a sparse Cholesky or LU factorisation) to the force tolerance. The imaged geometry is taken as unloaded (CT shows the vessel at its pressure); the intraluminal thrombus, where the wall mesh has it, as its own layer (Wang et al. 2001).</source>
+        <translation>管壁力学：二次（10 节点）四面体有限元，Raghavan &amp; Vorp 2000 超弹性 AAA 管壁（近乎不可压缩），血压作为随动载荷作用于管腔，两端固定；以牛顿法求解静力平衡（GMRES，以稀疏 Cholesky 或 LU 分解作预条件）直至力容差。成像几何被视为无载状态（CT 显示的是血管在其压力下的形态）；腔内血栓（若管壁网格包含）作为独立一层（Wang 等 2001）。</translation>
     </message>
 </context>
 <context>
@@ -4745,10 +4745,6 @@
         <translation>管壁模型</translation>
     </message>
     <message>
-        <source>1: quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 50 s for 30,000 with a thrombus layer, 150 s for the demo&apos;s 31,000 around a wide sac); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default once its solve is fast enough for the workstation&apos;s walls.</source>
-        <translation>1：二次（10 节点）四面体，采用 Raghavan &amp; Vorp 2000 超弹性 AAA 管壁（近不可压缩），管壁网格含血栓时采用 Wang 2001 血栓，以载荷增量和牛顿法求静态平衡（CPU；2 核上 15,000 个四面体约 20 s，含血栓层的 30,000 个约 50 s，演示中围绕宽大瘤囊的 31,000 个约 150 s）；0：材料组的本构用于线性四面体，先阻尼加载路径，再求平衡（可用 GPU）。当其求解对工作站的管壁足够快时，1 将成为默认值。</translation>
-    </message>
-    <message>
         <source>Wall Poisson&apos;s ratio</source>
         <translation>管壁泊松比</translation>
     </message>
@@ -5691,6 +5687,10 @@
     <message>
         <source>1: with particle shifting, a shifted particle&apos;s velocity follows it to where the shift moves it, v + dr . grad v (Lind et al. 2012&apos;s Taylor correction); 0: the particle keeps its velocity</source>
         <translation>1：启用粒子位移时，被位移粒子的速度随其移到位移后的位置，v + dr . grad v（Lind 等 2012 的泰勒修正）；0：粒子保持原速度</translation>
+    </message>
+    <message>
+        <source>1 (the clinical analysis): quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 45 s for 30,000 with a thrombus layer, 85 s for the demo&apos;s 31,000 around a wide sac); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible; linear tets lock in bending and near incompressibility).</source>
+        <translation>1（临床分析）：二次（10 节点）四面体，采用 Raghavan &amp; Vorp 2000 超弹性 AAA 管壁（近乎不可压缩），管壁网格含血栓时采用 Wang 2001 血栓模型，按载荷增量以牛顿法求静力平衡（CPU；在 2 核上 1.5 万个四面体约 20 秒，含血栓层的 3 万个约 45 秒，演示病例宽瘤囊周围的 3.1 万个约 85 秒）；0：材料组的本构律作用于线性四面体，先经阻尼加载路径，再求平衡（可用 GPU；线性四面体在弯曲和近乎不可压缩时会锁死）。</translation>
     </message>
 </context>
 <context>

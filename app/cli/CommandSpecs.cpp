@@ -129,7 +129,7 @@ std::vector<CommandSpec> declareCommands()
          "    tetrahedral vessel wall (one layer) around the lumen, opened at the centerline ends (fixed sets); the\n"
          "    thickness an assumption (1.5 mm: the uniform AAA wall of Raghavan et al. 2000, J Vasc Surg 31:760);\n"
          "    --thrombus: the intraluminal thrombus of the study's AAA sac (vascusim-cli sac) as its own layer inside\n"
-         "    the sac (for simulate fem --param wall_model=1)",
+         "    the sac (simulate fem's default wall model 1 takes it; the linear model 0 refuses it)",
          meshWall},
         {"mesh sheet", 1, 1,
          {kStudy, value("width"), value("length"), value("thickness"), value("cell"), kWait},

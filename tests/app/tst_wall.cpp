@@ -66,7 +66,6 @@ private slots:
         QCOMPARE(wall.provenance.inputs.front(), window.document().study().artifact(centerlinesId).provenance.inputs.back());
         QCOMPARE(wall.attributes.at("inverted_elements"), std::string("0"));
 
-        window.femParameters().set("settle_time_s", 0.2); // 20 pseudo-time steps keep the test short
         QVERIFY(window.simulateWall("physiological"));
         QVERIFY(vsim::test::waitForTask(window));
         QCOMPARE(failed.count(), 0);
@@ -90,7 +89,8 @@ private slots:
         const SolverRun run = window.document().study().loadRun(runArtifact.id);
         QVERIFY(run.frames.size() >= 2);
         QCOMPARE(run.status.converged(), converged);
-        QCOMPARE(run.axis.unit, std::string("s")); // the damped path's simulated time (wall_model 0)
+        QCOMPARE(run.axis.unit, std::string("kPa")); // the default quadratic wall's load increments (wall_model 1)
+        QCOMPARE(stress.provenance.parameters.at("wall_model"), std::string("1"));
         for (std::size_t f = 1; f < run.frames.size(); ++f)
             QVERIFY(run.frames[f].position > run.frames[f - 1].position);
         // The one time player on that run: every kept frame, the legend naming the field and the frame, play with

@@ -108,15 +108,15 @@ string(JSON min_dihedral GET "${wall}" min_dihedral_deg)
 if(min_dihedral LESS 10)
     message(FATAL_ERROR "the wall's smallest dihedral angle is ${min_dihedral} deg (10 at least):\n${wall}")
 endif()
-run_cli(1 linear simulate fem --study ${WORK}/aaa.vsim --protocol physiological --param female=0 --param family_history=0)
+run_cli(1 linear simulate fem --study ${WORK}/aaa.vsim --protocol physiological --param wall_model=0 --param female=0
+        --param family_history=0)
 if(NOT linear MATCHES "thrombus layer" OR thrombus_elements LESS 1000)
     message(FATAL_ERROR "the thrombus layer (${thrombus_elements} elements, thickest ${max_thrombus} mm) and the linear "
                         "model's refusal:
 ${wall}
 ${linear}")
 endif()
-run_cli(0 run simulate fem --study ${WORK}/aaa.vsim --protocol physiological --param wall_model=1 --param female=0
-        --param family_history=0)
+run_cli(0 run simulate fem --study ${WORK}/aaa.vsim --protocol physiological --param female=0 --param family_history=0)
 foreach(key sac_pws_p99_kpa sac_pws_nodal_max_kpa sac_pws_z_mm sac_pws_along_centerline_mm sac_pws_clock_h
         sac_pwri_p99 peak_von_mises_kpa run_force_residual sac_elements strength_from_sac_elements element_order
         equilibrium_updates thrombus_elements wall_clock_s)

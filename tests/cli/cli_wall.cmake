@@ -1,7 +1,7 @@
 # The wall steps as a user runs them: a small aaa phantom through segment, skeleton and centerline, then
-# `mesh wall` (no inverted element, over 1,000 tets), `simulate fem --protocol
-# physiological` (a positive peak stress and rupture index below 1, the frame series written), a cloth sheet, a
-# .vtu imported as a wall, and bad input (a file that is not .vtu, an unknown protocol, --backend cuda without a GPU,
+# `mesh wall` (no inverted element, over 1,000 tets), `simulate fem --protocol physiological --param wall_model=0`
+# (the linear wall on its damped path; the quadratic default runs in cli_sac and cli_report: a positive peak
+# stress and rupture index below 1, the frame series written), a cloth sheet, a .vtu imported as a wall, and bad input (a file that is not .vtu, an unknown protocol, --backend cuda without a GPU,
 # an unknown backend) refused.
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
@@ -18,8 +18,8 @@ string(JSON wall_id GET "${wall}" artifact)
 if(NOT inverted EQUAL 0 OR tets LESS 1000)
     message(FATAL_ERROR "mesh wall: ${inverted} inverted elements, ${tets} tets\n${wall}")
 endif()
-run_cli(0 run simulate fem --study ${study} --protocol physiological --param settle_time_s=0.3 --param female=0
-        --param family_history=0 --out ${WORK}/run)
+run_cli(0 run simulate fem --study ${study} --protocol physiological --param wall_model=0 --param settle_time_s=0.3
+        --param female=0 --param family_history=0 --out ${WORK}/run)
 string(JSON peak GET "${run}" metrics peak_von_mises_kpa)
 string(JSON index GET "${run}" metrics peak_rupture_index)
 string(JSON stop GET "${run}" stop_reason)
@@ -110,8 +110,8 @@ endif()
 # (and no equilibrium solve after them) is "not converged" (CLI output and the report, next to the figures); a
 # thesis ramp on a wall 400 times too soft is stopped by a guard, and the report states the pressure it reached
 # against the target.
-run_cli(0 capped simulate fem --study ${study} --protocol physiological --param settle_time_s=0.3 --param cg_max_iterations=2
-        --param equilibrium_tolerance=0)
+run_cli(0 capped simulate fem --study ${study} --protocol physiological --param wall_model=0 --param settle_time_s=0.3
+        --param cg_max_iterations=2 --param equilibrium_tolerance=0)
 string(JSON converged GET "${capped}" run_status converged)
 string(JSON convergence GET "${capped}" run_status convergence)
 if(converged OR NOT convergence MATCHES "^not converged: [0-9]+ of [0-9]+ solves ended above their tolerance at the 2-iteration cap")

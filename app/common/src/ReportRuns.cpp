@@ -35,8 +35,8 @@ SolverInfo solverOf(const study::Artifact& run)
                     ? localized("Report",
                                 "Wall mechanics: quadratic (10-node) tetrahedral FEM, the Raghavan & Vorp 2000 "
                                 "hyperelastic AAA wall (nearly incompressible), the blood pressure as a follower "
-                                "load on the lumen, ends held; the static equilibrium by Newton's method (sparse "
-                                "LU) to the force tolerance. The imaged geometry is taken as unloaded (CT shows "
+                                "load on the lumen, ends held; the static equilibrium by Newton's method (GMRES "
+                                "preconditioned by a sparse Cholesky or LU factorisation) to the force tolerance. The imaged geometry is taken as unloaded (CT shows "
                                 "the vessel at its pressure); the intraluminal thrombus, where the wall mesh has "
                                 "it, as its own layer (Wang et al. 2001).")
                     : localized("Report", "Wall mechanics: tetrahedral FEM (co-rotational linear elasticity or St. "

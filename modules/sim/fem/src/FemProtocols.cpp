@@ -82,13 +82,12 @@ std::vector<ParameterSpec> femParameters()
         {"entropy_end", "Fracture entropy end", "nats", 3.9, 0, 20, thesis,
          "Stop once the fracture entropy passes this (3.9: about 50 torn elements' worth)."},
         {"pressure_mmhg", "Blood pressure", "mmHg", 120, 1, 400, physiological, "Systolic pressure on the lumen."},
-        {"wall_model", "Wall model", "", 0, 0, 1, physiological,
-         "1: quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall (nearly incompressible) "
-         "and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and "
-         "Newton's method (CPU; on 2 cores about 20 s for 15,000 tets, 50 s for 30,000 with a thrombus layer, 150 s for "
-         "the demo's 31,000 around a wide sac); 0: the Material group's "
-         "law on linear tets, a damped load path then the equilibrium (GPU path possible). 1 becomes the default "
-         "once its solve is fast enough for the workstation's walls.",
+        {"wall_model", "Wall model", "", 1, 0, 1, physiological,
+         "1 (the clinical analysis): quadratic (10-node) tets with the Raghavan & Vorp 2000 hyperelastic AAA wall "
+         "(nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load "
+         "increments and Newton's method (CPU; on 2 cores about 20 s for 15,000 tets, 45 s for 30,000 with a thrombus "
+         "layer, 85 s for the demo's 31,000 around a wide sac); 0: the Material group's law on linear tets, a damped "
+         "load path then the equilibrium (GPU path possible; linear tets lock in bending and near incompressibility).",
          ParameterSpec::Kind::Integer},
         {"wall_poisson_ratio", "Wall Poisson's ratio", "", 0.49, 0.45, 0.499, physiological,
          "Near incompressibility of the hyperelastic wall: its bulk modulus from the small-strain shear modulus "
