@@ -263,6 +263,10 @@ private slots:
 
         const double mesh = runStep(window, list, WorkflowStep::WallMesh);
         QCOMPARE(list->state(WorkflowStep::WallMesh), StepState::Done);
+        // The linear wall (wall_model 0) keeps the walk within the suite's time: the default quadratic wall on this
+        // wall mesh took over 300 s on 2 loaded cores (2026-12-02); tst_wall runs the default in the workstation,
+        // cli_report (the demo) and cli_sac from the command line.
+        window.femParameters().set("wall_model", 0);
         const double stress = runStep(window, list, WorkflowStep::WallStress);
         QCOMPARE(list->state(WorkflowStep::WallStress), StepState::Done);
         QVERIFY(colouredPixelsBesideLegend(window) > 500); // the stress-coloured wall
