@@ -6,7 +6,8 @@
 // UMFPACK LU), or GMRES on the full tangent preconditioned by a factorisation kept across updates near
 // equilibrium. The last is the converged wall analysis's default; its preconditioner is, in this order:
 // - CHOLMOD's Cholesky of the tangent's own symmetric part, follower load's stiffness included, once the force
-//   residual is under tangentCholeskyBelow (0.7) and until it has once been found not positive definite: the
+//   residual is under tangentCholeskyBelow (0.7), and where it was found not positive definite only once the
+//   residual is under a quarter of the one at which it failed (kRetryTangentBelow in TangentSolver.cpp): the
 //   follower load's non-symmetric part is small (on cli_sac's thrombus wall GMRES took 4 iterations with it fresh
 //   against 13-14 with the stand-in, and 13-20 with it kept for four more updates);
 // - CHOLMOD's Cholesky of the model's definite stand-in for its tangent (StaticModel::assembleDefiniteTangent,
@@ -81,7 +82,8 @@ private:
     SparseDirect* m_preconditioner = nullptr; // the kept factorisation (CholeskyGmres)
     int m_lastIterations = 0;
     int m_solves = 0;              // CholeskyGmres solves with a fresh preconditioner so far
-    bool m_tangentDefinite = true; // no Cholesky of the tangent's symmetric part has failed in this solve
+    bool m_tangentDefinite = true; // no Cholesky of the tangent's symmetric part has failed since the last that worked
+    double m_indefiniteAt = 0.0;   // the force residual at which it last failed
     bool m_keptIsTangents = false; // the kept factorisation is the tangent's own Cholesky
     bool m_standInFailed = false;  // GMRES did not converge with the stand-in's Cholesky in this solve
     const Eigen::VectorXd* m_positions;
