@@ -372,6 +372,60 @@ private slots:
     /// the definite stand-in (stress and material tangent projected per quadrature point) factorises and
     /// preconditions GMRES on the tangent to 1e-8 within its budget, without the LU; at rest the two are the same
     /// matrix. (At 0.9 the tangent is nearly singular and GMRES needs the LU whatever the preconditioner.)
+    /// Once the tangent's own Cholesky has failed (the compressed box at a force residual of 0.5), it is not tried
+    /// again above a quarter of that residual (0.3: the stand-in is assembled and factorised), and is tried again
+    /// below it (0.1, the stretched box's definite tangent: it factorises, the stand-in is not assembled, and GMRES
+    /// needs fewer iterations than with the stand-in).
+    void tangentsOwnCholeskyTriedAgainWellBelowWhereItFailed()
+    {
+        const Case c = boxCase();
+        for (unsigned seed : {1u, 2u, 3u})
+        {
+            QuadraticFem model = boxModel(c);
+            std::mt19937 random(seed);
+            BlockSparseMatrix compressed = model.makeMatrix(), compressedDefinite = model.makeMatrix();
+            deform(model, c, random, kCompression, 1.0 / std::sqrt(kCompression)); // volume kept
+            model.assembleTangent(compressed, true);
+            model.assembleDefiniteTangent(compressedDefinite, true);
+            Eigen::VectorXd compressedForce = Eigen::VectorXd::Zero(model.positions().size());
+            addPressureForces(c.loaded, model.positions(), 5e4, compressedForce);
+
+            std::uniform_real_distribution<double> stretchOf(1.005, 1.02);
+            const double along = stretchOf(random);
+            const Eigen::Vector3d f(along, 1.0 / std::sqrt(along), 1.0 / std::sqrt(along));
+            for (std::size_t n = 0; n < c.mesh.points.size(); ++n)
+                model.positions().segment<3>(Eigen::Index(3 * n)) = f.cwiseProduct(c.mesh.points[n]);
+            model.updateElements();
+            BlockSparseMatrix stretched = model.makeMatrix(), stretchedDefinite = model.makeMatrix();
+            model.assembleTangent(stretched, true);
+            model.assembleDefiniteTangent(stretchedDefinite, true);
+            subtractPressureStiffness(c.loaded, model.positions(), 5e2, stretched);
+            Eigen::VectorXd force = Eigen::VectorXd::Zero(model.positions().size());
+            addPressureForces(c.loaded, model.positions(), 5e2, force);
+
+            StaticSolveSettings settings;
+            settings.linear = LinearSolver::CholeskyGmres;
+            TangentSolver solver(compressed, c.held, settings);
+            int failedCalls = 0, aboveCalls = 0, belowCalls = 0;
+            Eigen::VectorXd x, y, z;
+            const TangentSolveResult failed =
+                solver.solve(compressed, compressedForce, x, true, standInOf(compressedDefinite, &failedCalls), 0.5);
+            const TangentSolveResult above =
+                solver.solve(stretched, force, y, true, standInOf(stretchedDefinite, &aboveCalls), 0.3);
+            const TangentSolveResult below =
+                solver.solve(stretched, force, z, true, standInOf(stretchedDefinite, &belowCalls), 0.1);
+            qInfo("seed %u: after the failure at 0.5, the stand-in at 0.3 %d iterations, the tangent's own at 0.1 %d",
+                  seed, above.iterations, below.iterations);
+            QVERIFY(failed.converged && above.converged && below.converged);
+            QVERIFY(above.factorised && below.factorised);
+            QCOMPARE(failedCalls, 1); // the tangent's own failed, then the stand-in
+            QCOMPARE(aboveCalls, 1);  // not tried again at 0.3 > 0.25 x 0.5
+            QCOMPARE(belowCalls, 0);  // tried again at 0.1, and it factorised
+            QVERIFY(below.iterations < above.iterations);
+            QVERIFY(residualOf(stretched, z, force, c.held) <= 2e-8);
+        }
+    }
+
     void definiteTangentWhereTheCompressedTangentIsNot()
     {
         const Case c = boxCase();
