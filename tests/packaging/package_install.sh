@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The Debian packages end to end (issue 22): cpack builds them from this build, lintian checks them (every error or
 # warning is fixed or listed in packaging/lintian-accepted.txt), apt-get installs vascusim, the installed
-# vascusim-cli prints its version and runs a headless demo, vascusim-gpu (when built) is installed over it and
-# loaded, and both are purged, leaving none of their files. Needs root; skips (exit 77) when not root or when a
-# vascusim package is already installed here (the test would replace and purge somebody's installation).
+# vascusim-cli prints its version and runs a headless demo (at 256 x 256 x 200: cli_report runs the full-size one
+# from the build tree; here the point is that the installed files run the whole pipeline), vascusim-gpu (when built)
+# is installed over it and loaded, and both are purged, leaving none of their files. Needs root; skips (exit 77) when
+# not root or when a vascusim package is already installed here (the test would replace and purge somebody's
+# installation).
 # Usage: package_install.sh <build dir> <work dir, created> <source dir>
 set -euo pipefail
 build=$(realpath "$1") work=$2 source=$(realpath "$3")
@@ -60,7 +62,7 @@ installed vascusim-cli --version | tee version.txt
 grep -q "^VascuSim " version.txt || fail "--version did not name VascuSim"
 grep -q "^GPU plugin not installed" version.txt || fail "without vascusim-gpu the plugin should read 'not installed'"
 started=$(date +%s)
-installed vascusim-cli demo --out "$work/demo" > demo.json 2> demo.log ||
+installed vascusim-cli demo --out "$work/demo" --size 256x256x200 > demo.json 2> demo.log ||
     { tail -20 demo.log; fail "the installed vascusim-cli demo failed"; }
 echo "installed demo: $(( $(date +%s) - started )) s"
 for kind in aaa hepatic-tree stenosis; do
