@@ -73,6 +73,7 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
         Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
         double wallDistance = INFINITY, guardedWallDistance = INFINITY;
+        const double relativeI = relativeDensity(particles, fluid, si);
         grid.forEachNeighbour(particles.position, i, [&](int j, const Eigen::Vector3d& rij, double r) {
             const std::size_t sj = std::size_t(j);
             if (particles.wall[sj])
@@ -90,7 +91,7 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
             const Eigen::Vector3d gradW = kernel.gradient(rij, r);
             const double volume = particles.mass[sj] / particles.density[sj];
             moment.noalias() -= volume * rij * gradW.transpose(); // (x_j - x_i) (x) grad_i W_ij
-            sum += volume * (relativeDensity(particles, fluid, sj) - relativeDensity(particles, fluid, si)) * gradW;
+            sum += volume * (relativeDensity(particles, fluid, sj) - relativeI) * gradW;
         });
         rates.wallDistance[si] = wallDistance;
         rates.guardedWallDistance[si] = guardedWallDistance;

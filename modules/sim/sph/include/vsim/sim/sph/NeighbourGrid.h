@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -101,32 +102,47 @@ void NeighbourGrid::forEachNear(const std::vector<Eigen::Vector3d>& positionsM, 
     const std::array<int, 3> c = cellOf(xi);
     const double reach2 = m_reach * m_reach;
     constexpr int k = kCellsPerReach;
+    auto visit = [&](std::int64_t firstCell, std::int64_t lastCell) { // cells first..last, consecutive along x
+        for (int s = m_cellStart[std::size_t(firstCell)]; s < m_cellStart[std::size_t(lastCell) + 1]; ++s)
+        {
+            const int j = m_order[std::size_t(s)];
+            if (j == i)
+                continue;
+            const Eigen::Vector3d rij = offset(xi, positionsM[std::size_t(j)]);
+            const double r2 = rij.squaredNorm();
+            if (r2 < reach2)
+                f(j, rij, std::sqrt(r2));
+        }
+    };
     for (int dz = -k; dz <= k; ++dz)
         for (int dy = -k; dy <= k; ++dy)
-            for (int dx = -k; dx <= k; ++dx)
+        {
+            std::array<int, 3> n{c[0], c[1] + dy, c[2] + dz};
+            bool outside = false;
+            for (std::size_t a = 1; a < 3; ++a)
             {
-                std::array<int, 3> n{c[0] + dx, c[1] + dy, c[2] + dz};
-                bool outside = false;
-                for (std::size_t a = 0; a < 3; ++a)
-                {
-                    if (m_period[int(a)] > 0.0)
-                        n[a] = (n[a] + m_dims[a]) % m_dims[a];
-                    outside = outside || n[a] < 0 || n[a] >= m_dims[a];
-                }
-                if (outside)
-                    continue;
-                const std::int64_t cell = cellIndex(n);
-                for (int s = m_cellStart[std::size_t(cell)]; s < m_cellStart[std::size_t(cell) + 1]; ++s)
-                {
-                    const int j = m_order[std::size_t(s)];
-                    if (j == i)
-                        continue;
-                    const Eigen::Vector3d rij = offset(xi, positionsM[std::size_t(j)]);
-                    const double r2 = rij.squaredNorm();
-                    if (r2 < reach2)
-                        f(j, rij, std::sqrt(r2));
-                }
+                if (m_period[int(a)] > 0.0)
+                    n[a] = (n[a] + m_dims[a]) % m_dims[a];
+                outside = outside || n[a] < 0 || n[a] >= m_dims[a];
             }
+            if (outside)
+                continue;
+            if (m_period[0] > 0.0)
+                for (int dx = -k; dx <= k; ++dx)
+                {
+                    n[0] = (c[0] + dx + m_dims[0]) % m_dims[0];
+                    visit(cellIndex(n), cellIndex(n));
+                }
+            else
+            {
+                // Without a period along x the row's cells are consecutive in the sorted order: one range, visited in
+                // the same order as cell by cell.
+                std::array<int, 3> first = n, last = n;
+                first[0] = std::max(0, c[0] - k), last[0] = std::min(m_dims[0] - 1, c[0] + k);
+                if (first[0] <= last[0])
+                    visit(cellIndex(first), cellIndex(last));
+            }
+        }
 }
 
 } // namespace vsim::sim::sph
