@@ -89,6 +89,23 @@ void stretchKeepingVolume(QuadraticFem& model, const Case& c, double along)
     model.updateElements();
 }
 
+/// At the model's present state: the tangent with the load stiffness of `pressurePa` on the loaded face, its
+/// definite part without the load, and the follower force.
+struct LoadedState
+{
+    BlockSparseMatrix tangent, definite;
+    Eigen::VectorXd force;
+};
+LoadedState loadedState(QuadraticFem& model, const Case& c, double pressurePa)
+{
+    LoadedState state{model.makeMatrix(), model.makeMatrix(), Eigen::VectorXd::Zero(model.positions().size())};
+    model.assembleTangent(state.tangent, true);
+    model.assembleDefiniteTangent(state.definite, true);
+    subtractPressureStiffness(c.loaded, model.positions(), pressurePa, state.tangent);
+    addPressureForces(c.loaded, model.positions(), pressurePa, state.force);
+    return state;
+}
+
 /// The tangent (consistent + load stiffness of `pressurePa`, 50 kPa by default) at a random deformation near
 /// `stretch`; the force vector.
 BlockSparseMatrix deformedTangent(const Case& c, unsigned seed, double stretch, Eigen::VectorXd& force,
@@ -246,12 +263,7 @@ private slots:
             std::uniform_real_distribution<double> stretch(1.005, 1.02), jitter(-1.0, 1.0);
             const double along = stretch(random);
             stretchKeepingVolume(model, c, along);
-            BlockSparseMatrix tangent = model.makeMatrix(), withoutLoad = model.makeMatrix();
-            model.assembleTangent(tangent, true);
-            model.assembleDefiniteTangent(withoutLoad, true);
-            subtractPressureStiffness(c.loaded, model.positions(), 5e2, tangent);
-            Eigen::VectorXd force = Eigen::VectorXd::Zero(model.positions().size());
-            addPressureForces(c.loaded, model.positions(), 5e2, force);
+            auto [tangent, withoutLoad, force] = loadedState(model, c, 5e2);
             for (Eigen::Index i = 0; i < force.size(); ++i)
                 force[i] += 1e-4 * jitter(random);
             StaticSolveSettings settings;
@@ -396,12 +408,7 @@ private slots:
             std::uniform_real_distribution<double> stretchOf(1.005, 1.02);
             const double along = stretchOf(random);
             stretchKeepingVolume(model, c, along);
-            BlockSparseMatrix stretched = model.makeMatrix(), stretchedDefinite = model.makeMatrix();
-            model.assembleTangent(stretched, true);
-            model.assembleDefiniteTangent(stretchedDefinite, true);
-            subtractPressureStiffness(c.loaded, model.positions(), 5e2, stretched);
-            Eigen::VectorXd force = Eigen::VectorXd::Zero(model.positions().size());
-            addPressureForces(c.loaded, model.positions(), 5e2, force);
+            auto [stretched, stretchedDefinite, force] = loadedState(model, c, 5e2);
 
             StaticSolveSettings settings;
             settings.linear = LinearSolver::CholeskyGmres;
