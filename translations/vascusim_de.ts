@@ -4134,8 +4134,8 @@
         <translation>der SPH-Sicherungspunkt kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <source>not an SPH checkpoint of this version (its first line is not &apos;VSIM-SPH-CHECKPOINT 1&apos;)</source>
-        <translation>kein SPH-Sicherungspunkt dieser Version (seine erste Zeile ist nicht &apos;VSIM-SPH-CHECKPOINT 1&apos;)</translation>
+        <source>not an SPH checkpoint of this version (its first line is not &apos;VSIM-SPH-CHECKPOINT 2&apos;)</source>
+        <translation>kein SPH-Sicherungspunkt dieser Version (seine erste Zeile ist nicht &apos;VSIM-SPH-CHECKPOINT 2&apos;)</translation>
     </message>
     <message>
         <source>the saved run&apos;s wall particle %1 is not this run&apos;s: the checkpoint belongs to another problem</source>
@@ -4192,6 +4192,10 @@
     <message>
         <source>CPU (double precision)</source>
         <translation>CPU (doppelte Genauigkeit)</translation>
+    </message>
+    <message>
+        <source>a pulsatile inflow needs a period &gt; 0 s and an amplitude in [0, 1), not %1 s and %2</source>
+        <translation>ein pulsierender Einstrom braucht eine Periode &gt; 0 s und eine Amplitude in [0, 1), nicht %1 s und %2</translation>
     </message>
 </context>
 <context>

@@ -4134,8 +4134,8 @@
         <translation>无法打开 SPH 检查点</translation>
     </message>
     <message>
-        <source>not an SPH checkpoint of this version (its first line is not &apos;VSIM-SPH-CHECKPOINT 1&apos;)</source>
-        <translation>不是此版本的 SPH 检查点（其第一行不是 &apos;VSIM-SPH-CHECKPOINT 1&apos;）</translation>
+        <source>not an SPH checkpoint of this version (its first line is not &apos;VSIM-SPH-CHECKPOINT 2&apos;)</source>
+        <translation>不是此版本的 SPH 检查点（其第一行不是 &apos;VSIM-SPH-CHECKPOINT 2&apos;）</translation>
     </message>
     <message>
         <source>the saved run&apos;s wall particle %1 is not this run&apos;s: the checkpoint belongs to another problem</source>
@@ -4192,6 +4192,10 @@
     <message>
         <source>CPU (double precision)</source>
         <translation>CPU（双精度）</translation>
+    </message>
+    <message>
+        <source>a pulsatile inflow needs a period &gt; 0 s and an amplitude in [0, 1), not %1 s and %2</source>
+        <translation>脉动入流需要周期 &gt; 0 s 且振幅在 [0, 1) 内，而不是 %1 s 和 %2</translation>
     </message>
 </context>
 <context>

@@ -22,6 +22,7 @@ namespace {
 constexpr const char* kMarker = "VASCUSIM-OPENFOAM-CASE";
 constexpr const char* kSolvedKey = "VASCUSIM-OPENFOAM-SOLVED"; // the case solved here (caseKey), written last
 constexpr const char* kSolvedSeconds = "VASCUSIM-OPENFOAM-SECONDS";
+constexpr int kWritesPerCycle = 40; // a pulsatile run's writes a cycle: five in its systole (a tenth of the cycle)
 
 /// What the solution depends on: the pipe's geometry and flow and the mesh (not the particles' spacing, which sets
 /// only the sections the fields are read through).
@@ -35,8 +36,13 @@ std::string caseKey(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh
         << mesh.radialCells << " grading " << mesh.wallGrading << " wedge " << mesh.wedgeDegrees << " classic "
         << mesh.classicSimple;
     if (mesh.transient) // from rest: the ramp and the averaging window matter too
+    {
         key << " transient ramp_s " << pipe.rampS << " average_from_s " << pipe.averageFromS << " end_time_s "
-            << pipe.endTimeS;
+            << pipe.endTimeS << " waveform";
+        for (const auto& [time, factor] : pipe.inflowWaveform.points)
+            key << ' ' << time << ' ' << factor;
+        key << " systole " << pipe.systole.fromS << ' ' << pipe.systole.toS;
+    }
     key << "\n";
     return key.str();
 }
@@ -191,16 +197,22 @@ void writeCase(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, con
                                "timeFormat general; timePrecision 10; runTimeModifiable false;\n";
     if (mesh.transient)
     {
-        // The wall shear stress at every step, so that fieldAverage (after it) can average it too.
+        // The wall shear stress and its magnitude at every step, so that fieldAverage (after them) averages both: the
+        // time-averaged WSS is the mean of the magnitude. A pulsatile inflow also writes the fields every 1/40 of its
+        // cycle, whose writes in the systole the systolic figures are read from.
         const std::string mean = " { mean on; prime2Mean off; base time; }";
+        const double period = pipe.inflowWaveform.period();
         write(directory / "system/controlDict",
               header("dictionary", "controlDict") + "application pimpleFoam; startFrom startTime; startTime 0; " +
                   "stopAt endTime; endTime " + number(pipe.endTimeS) + "; deltaT 1e-7; adjustTimeStep yes; " +
                   "maxCo 0.5; maxDeltaT 1;\nwriteControl adjustableRunTime; writeInterval " +
-                  number(pipe.endTimeS) + ";\n" + output + "functions {\n" + wallShear +
+                  number(period > 0.0 ? period / kWritesPerCycle : pipe.endTimeS) + ";\n" + output + "functions {\n" +
+                  wallShear +
+                  "shearMagnitude { type mag; libs (\"libfieldFunctionObjects.so\"); field wallShearStress; "
+                  "writeControl writeTime; }\n"
                   "average { type fieldAverage; libs (\"libfieldFunctionObjects.so\"); writeControl writeTime; "
                   "timeStart " + number(pipe.averageFromS) + "; fields ( U" + mean + " p" + mean +
-                  " wallShearStress" + mean + " ); }\n}\n");
+                  " wallShearStress" + mean + " \"mag(wallShearStress)\"" + mean + " ); }\n}\n");
     }
     else
         write(directory / "system/controlDict",
@@ -246,8 +258,10 @@ void writeCase(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, con
 }
 
 /// 0/U: the parabola u = 2 U (1 - r^2 / R0^2) at the inlet's face centres (r from the axis); transient, times the
-/// SPH's ramp (OpenBoundary.cpp: (1 - cos(pi t / T)) / 2 over T) at 41 times over it, in constant/boundaryData,
-/// which OpenFOAM interpolates linearly in time (0.08 % of the flow at most) and holds after the last.
+/// SPH's inflow factor (StenosisPipe::inflowFactor: the ramp (1 - cos(pi t / T)) / 2 over T and the pulsatile
+/// waveform) at 41 times over the ramp and at each of the waveform's knots to the end, in constant/boundaryData,
+/// which OpenFOAM interpolates linearly in time (0.08 % of the flow at most on the ramp; the waveform is linear
+/// between its knots) and holds after the last.
 void writeInflow(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, const fs::path& directory)
 {
     const std::vector<double> centres = readList(directory / "0/C", 3, "inlet");
@@ -271,10 +285,18 @@ void writeInflow(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, c
                    << ')';
         write(data / "points", std::to_string(centres.size() / 3) + " (" + points.str() + " )\n");
         constexpr int kRampSteps = 40;
+        std::vector<double> times = {2.0 * pipe.endTimeS};
         for (int k = 0; k <= kRampSteps; ++k)
-            write(data / number(pipe.rampS * k / kRampSteps) / "U",
-                  profile(0.5 * (1.0 - std::cos(std::numbers::pi * k / kRampSteps))));
-        write(data / number(2.0 * pipe.endTimeS) / "U", profile(1.0));
+            times.push_back(pipe.rampS * k / kRampSteps);
+        const double period = pipe.inflowWaveform.period();
+        for (double cycle = 0.0; period > 0.0 && cycle <= pipe.endTimeS; cycle += period)
+            for (const auto& knot : pipe.inflowWaveform.points)
+                times.push_back(cycle + knot.first);
+        std::sort(times.begin(), times.end());
+        times.erase(std::unique(times.begin(), times.end(), [](double a, double b) { return b - a < 1e-12; }),
+                    times.end());
+        for (double time : times)
+            write(data / number(time) / "U", profile(pipe.inflowFactor(time)));
         inlet = "timeVaryingMappedFixedValue; mapMethod nearest; offset (0 0 0); setAverage off";
     }
     write(directory / "0/U", header("volVectorField", "U") +
@@ -323,6 +345,54 @@ sim::sph::SectionFlow sectionOfCells(const sim::sph::StenosisPipe& pipe, double 
     flow.meanPressurePa = pipe.densityKgM3 * p / v;
     flow.particles = int(in.size());
     return flow;
+}
+
+/// The time directories written in [fromS, toS] (s), in time order.
+std::vector<std::pair<double, fs::path>> timesWithin(const fs::path& directory, double fromS, double toS)
+{
+    std::vector<std::pair<double, fs::path>> times;
+    const double slack = 1e-9 * std::max(1.0, toS);
+    for (const auto& entry : fs::directory_iterator(directory))
+    {
+        const std::string name = entry.path().filename().string();
+        char* end = nullptr;
+        const double value = std::strtod(name.c_str(), &end);
+        if (entry.is_directory() && end && *end == '\0' && value >= fromS - slack && value <= toS + slack)
+            times.emplace_back(value, entry.path());
+    }
+    std::sort(times.begin(), times.end());
+    return times;
+}
+
+/// The sections averaged over the systole of the cycle that starts at `cycleS`, by the trapezoid rule over the writes
+/// in it (five a systole); empty when fewer than two were written.
+std::vector<sim::sph::SectionFlow> systolicSections(const sim::sph::StenosisPipe& pipe, const fs::path& directory,
+                                                    double cycleS, const std::vector<double>& centres,
+                                                    const std::vector<double>& volume)
+{
+    const auto times = timesWithin(directory, cycleS + pipe.systole.fromS, cycleS + pipe.systole.toS);
+    if (times.size() < 2)
+        return {};
+    const std::vector<double> arcs = pipe.sectionArcsMm();
+    std::vector<sim::sph::SectionFlow> sums(arcs.size());
+    for (std::size_t t = 0; t < times.size(); ++t)
+    {
+        const double weight = 0.5 * (times[std::min(t + 1, times.size() - 1)].first - times[t > 0 ? t - 1 : 0].first);
+        const std::vector<double> velocity = readList(times[t].second / "U", 3), pressure = readList(times[t].second / "p", 1);
+        for (std::size_t k = 0; k < arcs.size(); ++k)
+        {
+            const sim::sph::SectionFlow flow = sectionOfCells(pipe, arcs[k], centres, velocity, pressure, volume);
+            sums[k].areaM2 += weight * flow.areaM2, sums[k].flowRateM3S += weight * flow.flowRateM3S;
+            sums[k].meanVelocityMS += weight * flow.meanVelocityMS, sums[k].peakVelocityMS += weight * flow.peakVelocityMS;
+            sums[k].meanPressurePa += weight * flow.meanPressurePa, sums[k].particles = flow.particles;
+        }
+    }
+    const double span = times.back().first - times.front().first;
+    for (sim::sph::SectionFlow& flow : sums)
+        for (double* value : {&flow.areaM2, &flow.flowRateM3S, &flow.meanVelocityMS, &flow.peakVelocityMS,
+                              &flow.meanPressurePa})
+            *value /= span;
+    return sums;
 }
 
 } // namespace
@@ -397,15 +467,30 @@ OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, con
     for (double x : arcs)
         flow.sections.push_back(sectionOfCells(pipe, x, centres, velocity, pressure, volume));
     flow.figures = sim::sph::stenosisFigures(arcs, flow.sections, pipe.compareMm);
+    if (mesh.transient && !pipe.systole.empty()) // the averaged cycle's systole, and the cycle's before it
+    {
+        const double period = pipe.systole.periodS;
+        flow.systolicSections = systolicSections(pipe, directory, pipe.averageFromS, centres, volume);
+        if (flow.systolicSections.empty())
+            throw Error("OpenFOAM wrote no fields in the systole of " + directory.string());
+        flow.systolicFigures = sim::sph::stenosisFigures(arcs, flow.systolicSections, pipe.compareMm);
+        const auto before = systolicSections(pipe, directory, pipe.averageFromS - period, centres, volume);
+        if (!before.empty())
+            flow.previousSystolicFigures = sim::sph::stenosisFigures(arcs, before, pipe.compareMm);
+    }
 
     const std::vector<double> wallCentres = readList(directory / "0/C", 3, "wall");
-    const std::vector<double> shear = readList(time / ("wallShearStress" + mean), 3, "wall");
+    // Transient: the time average of the magnitude (TAWSS); steady: the magnitude of the stress.
+    const std::vector<double> shear = mesh.transient ? readList(time / "mag(wallShearStress)Mean", 1, "wall")
+                                                     : readList(time / "wallShearStress", 3, "wall");
+    const int shearWidth = mesh.transient ? 1 : 3;
     double throatSum = 0.0;
     int throatFaces = 0;
-    for (std::size_t f = 0; 3 * f + 2 < shear.size() && 3 * f + 2 < wallCentres.size(); ++f)
+    for (std::size_t f = 0; shearWidth * f + shearWidth - 1 < shear.size() && 3 * f + 2 < wallCentres.size(); ++f)
     {
         const double xMm = 1e3 * wallCentres[3 * f];
-        const double tau = pipe.densityKgM3 * Eigen::Vector3d(shear[3 * f], shear[3 * f + 1], shear[3 * f + 2]).norm();
+        const double tau = pipe.densityKgM3 * (shearWidth == 1 ? std::abs(shear[f])
+                                               : Eigen::Vector3d(shear[3 * f], shear[3 * f + 1], shear[3 * f + 2]).norm());
         flow.wallArcMm.push_back(xMm), flow.wallShearPa.push_back(tau);
         if (std::abs(xMm - pipe.throatAtMm) <= 0.5 * pipe.sectionThicknessMm())
             throatSum += tau, ++throatFaces;

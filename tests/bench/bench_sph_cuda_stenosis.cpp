@@ -7,7 +7,7 @@
 //
 //   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] [mean speed m/s] [length mm]
 //                           [particle shifting A] [solver parameter=value]... [--checkpoint FILE]
-//                           [--stop-after SECONDS]
+//                           [--stop-after SECONDS] [--period MS --amplitude A]
 //
 // --checkpoint goes on from FILE when it exists (SphCheckpoint.h: the particles, the time, the mass ledger, the
 // averages so far and this bench's own counters) and saves the run's end there; with --stop-after it saves the
@@ -19,6 +19,10 @@
 // A mean speed (and length) other than the default's 0.05 m/s (5.6 mm) is StenosisPipe::atFlow's problem (Re 100
 // upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled), and the Courant number and
 // the walls' backstop follow the throat's Re (StenosisPipe.h).
+//
+// --period and --amplitude make the inflow pulse (StenosisPipe::pulsatile: 1 + A sin(2 pi t / T), averaged over one
+// whole cycle once settled, the systole over a tenth of it about the inflow's peak); the JSON then holds the
+// systolic sections too ("systolic_sections"), which bench_sph_openfoam --period --amplitude compares.
 //
 // Exit 0 with "SKIP" without a device, 1 when a guard stops the run, 3 when --stop-after saved it to go on.
 
@@ -86,6 +90,9 @@ try
     const std::string checkpointFile = takeOption(arguments, "--checkpoint");
     const std::string stopAfterText = takeOption(arguments, "--stop-after");
     const double stopAfterS = stopAfterText.empty() ? INFINITY : std::stod(stopAfterText);
+    const std::string periodText = takeOption(arguments, "--period"), amplitudeText = takeOption(arguments, "--amplitude");
+    if (periodText.empty() != amplitudeText.empty())
+        throw Error("--period MS and --amplitude A go together (a pulsatile inflow)");
     if (!stopAfterText.empty() && checkpointFile.empty())
         throw Error("--stop-after needs --checkpoint FILE to save the run in");
     std::vector<char*> kept;
@@ -95,7 +102,8 @@ try
     if (argc < 3)
     {
         std::fprintf(stderr, "usage: bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] "
-                             "[mean speed m/s] [length mm] [particle shifting A] [solver parameter=value]...\n");
+                             "[mean speed m/s] [length mm] [particle shifting A] [solver parameter=value]... "
+                             "[--checkpoint FILE] [--stop-after SECONDS] [--period MS --amplitude A]\n");
         return 2;
     }
     if (vsim::cuda::devices().empty())
@@ -109,6 +117,8 @@ try
     const int every = argc > 3 ? std::stoi(argv[3]) : 10;
     if (argc > 5)
         pipe = pipe.atFlow(std::stod(argv[5]), argc > 6 ? std::stod(argv[6]) : pipe.lengthMm);
+    if (!periodText.empty())
+        pipe = pipe.pulsatile(1e-3 * std::stod(periodText), std::stod(amplitudeText));
     if (argc > 4 && std::stod(argv[4]) > 0.0)
         pipe.soundSpeedMS = std::stod(argv[4]);
     if (argc > 7)
@@ -208,7 +218,7 @@ try
     const nlohmann::json wall = {{"arc_mm", flow.wallArcMm}, {"tawss_pa", flow.wallShearPa},
                                  {"pressure_pa", flow.wallPressurePa}, {"throat_tawss_pa", flow.throatWallShearPa}};
     const double inflow = double(gpu.massLedger().totalInflow());
-    const nlohmann::json report = {
+    nlohmann::json report = {
         {"sections", bench::sectionsJson(flow.arcMm, flow.flows)}, {"wall", wall}, {"seconds", seconds},
         {"stepping_seconds", stepping}, {"sampling_seconds", sampling}, {"steps", steps},
         {"particles", gpu.particleCount()}, {"largest_density_variation", largestVariation},
@@ -219,6 +229,14 @@ try
         {"particle_shifting", parameters.get("particle_shifting")}, {"cfl", parameters.get("cfl")},
         {"wall_repulsion", parameters.get("wall_repulsion")},
         {"outflow_kg", double(gpu.massLedger().totalOutflow())}, {"calls", earlierCalls + 1}};
+    if (!pipe.systole.empty())
+    {
+        report["period_s"] = pipe.inflowWaveform.period(), report["amplitude"] = std::stod(amplitudeText);
+        report["womersley"] = pipe.womersleyNumber(), report["systole_s"] = {pipe.systole.fromS, pipe.systole.toS};
+        report["systolic_sections"] = bench::sectionsJson(flow.arcMm, flow.systolicFlows);
+        std::fprintf(stderr, "systolic peak velocity ratio %.4f, pressure drop %.3f Pa (Womersley %.2f)\n",
+                     flow.systolicFigures.peakRatio, flow.systolicFigures.pressureDropPa, pipe.womersleyNumber());
+    }
     std::ofstream(out) << report.dump(1) << '\n';
     std::printf("{\"case\": \"sph-stenosis on the GPU\", \"spacing_mm\": %.3f, \"sound_speed_m_s\": %.1f, "
                 "\"particles\": %zu, \"steps\": %ld, "

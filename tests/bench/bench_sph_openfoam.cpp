@@ -14,7 +14,8 @@
 //   jet's recirculation reattaches: a local ratio says nothing there).
 //
 //   bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] [--sph-in FILE] [--sph-out FILE]
-//                      [--openfoam-only] [--classic-simple] [--transient]
+//                      [--openfoam-only] [--classic-simple] [--transient] [--period MS --amplitude A]
+//                      [--coarse-only]
 //
 // --spacing sets the SPH's particle lattice (0.1 mm by default) and with it the sections' slab thickness (two
 // spacings) on both sides. --sph-out writes the SPH's sections and wall rings (JSON) after its run; --sph-in reads
@@ -25,8 +26,13 @@
 // the SPH's window (OpenFoamStenosis.h): the same question as the SPH's, whether or not the flow has settled by
 // then; "converged" then says that every pressure correction met its tolerance to the end. A work folder that holds
 // the same OpenFOAM cases solved before (another --spacing or --sph-in) is read again ("reused" in the JSON, the
-// seconds its solve's). Prints one JSON object; exit 1 beyond a tolerance, 0 with "SKIP" when simpleFoam is not
-// installed (`scripts/install-deps.sh --bench`).
+// seconds its solve's). --period and --amplitude make the inflow pulse on both sides (StenosisPipe::pulsatile;
+// transient): the figures above are then the averaged cycle's, the TAWSS the mean of the magnitude, and beside them
+// the systole's (a tenth of the cycle about the inflow's peak): the peak-systolic velocity ratio (<= 10 %, the
+// duplex criterion's counterpart) and the systolic pressure drop (<= 15 %); OpenFOAM's systolic peak ratio in the
+// cycle before shows how periodic its flow has become. --coarse-only solves the first wedge alone, which is then
+// the reference (a pulsatile run on the fine wedge takes about 8 times as long). Prints one JSON object; exit 1
+// beyond a tolerance, 0 with "SKIP" when simpleFoam is not installed (`scripts/install-deps.sh --bench`).
 
 #include "OpenFoamStenosis.h"
 #include "StenosisJson.h"
@@ -58,19 +64,35 @@ json figuresJson(const sim::sph::StenosisFigures& f)
 }
 
 /// The two OpenFOAM meshes: 40 cells per mm along (224 on the default 5.6 mm) by 32 across, and twice that (the
-/// reference).
-std::vector<bench::OpenFoamMesh> openFoamMeshes(const sim::sph::StenosisPipe& pipe, bool classicSimple, bool transient)
+/// reference); or the first alone (--coarse-only: the reference then).
+std::vector<bench::OpenFoamMesh> openFoamMeshes(const sim::sph::StenosisPipe& pipe, bool classicSimple, bool transient,
+                                                bool coarseOnly)
 {
     const int axial = int(std::lround(40.0 * pipe.lengthMm));
+    if (coarseOnly)
+        return {{axial, 32, 0.4, 5.0, classicSimple, transient}};
     return {{axial, 32, 0.4, 5.0, classicSimple, transient}, {2 * axial, 64, 0.4, 5.0, classicSimple, transient}};
 }
 
 json openFoamJson(const bench::OpenFoamStenosisFlow& f)
 {
-    return {{"cells", f.cells}, {"iterations", f.iterations}, {"converged", f.converged},
-            {"pressure_residual", f.pressureResidual}, {"seconds", f.seconds}, {"reused", f.reused},
-            {"inlet_flow_rate_m3s", f.inletFlowRateM3S}, {"figures", figuresJson(f.figures)},
-            {"throat_wss_pa", f.throatWallShearPa}};
+    json out = {{"cells", f.cells}, {"iterations", f.iterations}, {"converged", f.converged},
+                {"pressure_residual", f.pressureResidual}, {"seconds", f.seconds}, {"reused", f.reused},
+                {"inlet_flow_rate_m3s", f.inletFlowRateM3S}, {"figures", figuresJson(f.figures)},
+                {"throat_wss_pa", f.throatWallShearPa}};
+    if (!f.systolicSections.empty())
+        out["systolic_figures"] = figuresJson(f.systolicFigures),
+        out["previous_cycle_systolic_figures"] = figuresJson(f.previousSystolicFigures);
+    return out;
+}
+
+double parsedNumber(const char* text, const std::string& option)
+{
+    char* end = nullptr;
+    const double value = std::strtod(text, &end);
+    if (*end != '\0')
+        throw Error(option + " takes a number, not '" + std::string(text) + "'");
+    return value;
 }
 
 json check(double ours, double reference, double tolerance)
@@ -88,14 +110,16 @@ int main(int argc, char** argv)
     {
         std::fprintf(stderr,
                      "usage: bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] "
-                     "[--sph-in FILE] [--sph-out FILE] [--openfoam-only] [--classic-simple] [--transient]\n");
+                     "[--sph-in FILE] [--sph-out FILE] [--openfoam-only] [--classic-simple] [--transient] "
+                     "[--period MS --amplitude A]\n");
         return 2;
     }
     const fs::path work = argv[1];
     std::string sphIn, sphOut;
-    bool openFoamOnly = false, classicSimple = false, transient = false;
+    bool openFoamOnly = false, classicSimple = false, transient = false, coarseOnly = false;
     sim::sph::StenosisPipe pipe;
     double meanSpeed = 0.0, length = 0.0; // 0: the default problem's
+    double periodMs = 0.0, amplitude = -1.0; // a pulsatile inflow's (none by default)
     for (int a = 2; a < argc; ++a)
     {
         const std::string option = argv[a];
@@ -105,6 +129,8 @@ int main(int argc, char** argv)
             openFoamOnly = true;
         else if (option == "--classic-simple")
             classicSimple = true;
+        else if (option == "--coarse-only")
+            coarseOnly = true;
         else if (option == "--transient")
             transient = true;
         else if (option == "--spacing" && a + 1 < argc)
@@ -117,26 +143,51 @@ int main(int argc, char** argv)
                 return 2;
             }
         }
-        else if ((option == "--mean-speed" || option == "--length") && a + 1 < argc)
+        else if ((option == "--mean-speed" || option == "--length" || option == "--period" ||
+                  option == "--amplitude") && a + 1 < argc)
         {
-            char* end = nullptr;
-            (option == "--mean-speed" ? meanSpeed : length) = std::strtod(argv[++a], &end);
-            if (*end != '\0')
+            try
             {
-                std::fprintf(stderr, "bench_sph_openfoam: %s takes a number, not '%s'\n", option.c_str(), argv[a]);
+                const double value = parsedNumber(argv[++a], option);
+                (option == "--mean-speed" ? meanSpeed : option == "--length" ? length
+                                                      : option == "--period" ? periodMs : amplitude) = value;
+            }
+            catch (const Error& error)
+            {
+                std::fprintf(stderr, "bench_sph_openfoam: %s\n", error.what());
                 return 2;
             }
         }
         else
         {
             std::fprintf(stderr, "bench_sph_openfoam: unknown option '%s' (--spacing MM, --mean-speed M/S, --length MM, "
-                                 "--sph-in FILE, --sph-out FILE, --openfoam-only, --classic-simple, --transient)\n",
+                                 "--sph-in FILE, --sph-out FILE, --openfoam-only, --classic-simple, --transient, "
+                                 "--period MS, --amplitude A, --coarse-only)\n",
                          option.c_str());
             return 2;
         }
     }
     if (meanSpeed > 0.0 || length > 0.0)
         pipe = pipe.atFlow(meanSpeed > 0.0 ? meanSpeed : pipe.meanSpeedMS, length > 0.0 ? length : pipe.lengthMm);
+    if ((periodMs > 0.0) != (amplitude >= 0.0))
+    {
+        std::fprintf(stderr, "bench_sph_openfoam: --period MS and --amplitude A go together (a pulsatile inflow)\n");
+        return 2;
+    }
+    const bool pulsatile = periodMs > 0.0;
+    if (pulsatile)
+    {
+        try
+        {
+            pipe = pipe.pulsatile(1e-3 * periodMs, amplitude);
+        }
+        catch (const Error& error)
+        {
+            std::fprintf(stderr, "bench_sph_openfoam: %s\n", error.what());
+            return 2;
+        }
+        transient = true; // pimpleFoam through the cycles
+    }
     const bool haveOpenFoam = std::system("command -v simpleFoam > /dev/null 2>&1") == 0;
     if (!haveOpenFoam && sphOut.empty())
     {
@@ -149,7 +200,12 @@ int main(int argc, char** argv)
         json report = {{"bench", "sph_openfoam"},
                        {"openfoam_solver",
                         transient ? "pimpleFoam from rest, averaged over the SPH's window" : "simpleFoam (steady)"}};
-        std::vector<sim::sph::SectionFlow> sph;
+        if (pulsatile)
+            report["pulsatile"] = {{"period_s", pipe.inflowWaveform.period()}, {"amplitude", amplitude},
+                                   {"womersley", pipe.womersleyNumber()},
+                                   {"averaged_s", {pipe.averageFromS, pipe.endTimeS}},
+                                   {"systole_s", {pipe.systole.fromS, pipe.systole.toS}}};
+        std::vector<sim::sph::SectionFlow> sph, sphSystole;
         json sphWall;
         const std::vector<double> arcs = pipe.sectionArcsMm();
         if (openFoamOnly) // the reference alone (its SPH counterpart runs on the GPU: bench_sph_cuda_stenosis)
@@ -158,7 +214,7 @@ int main(int argc, char** argv)
             report["throat_reynolds"] = pipe.throatReynolds();
             report["openfoam"] = json::array();
             bool converged = true;
-            const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple, transient);
+            const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple, transient, coarseOnly);
             for (std::size_t m = 0; m < meshes.size(); ++m)
             {
                 const auto f = bench::runOpenFoamStenosis(pipe, meshes[m], work / ("openfoam-" + std::to_string(m + 1)));
@@ -181,7 +237,12 @@ int main(int argc, char** argv)
             if (std::abs(stored.value("mean_speed_m_s", 0.05) - pipe.meanSpeedMS) > 1e-12 ||
                 std::abs(stored.value("length_mm", 5.6) - pipe.lengthMm) > 1e-9)
                 throw Error(sphIn + " holds another problem: give its --mean-speed and --length");
+            if (std::abs(stored.value("period_s", 0.0) - pipe.inflowWaveform.period()) > 1e-12 ||
+                (pulsatile && std::abs(stored.value("amplitude", -1.0) - amplitude) > 1e-12))
+                throw Error(sphIn + " holds another inflow: give its --period and --amplitude (or none for a steady one)");
             sph = bench::sectionsFrom(stored.at("sections"));
+            if (pulsatile)
+                sphSystole = bench::sectionsFrom(stored.at("systolic_sections"));
             sphWall = stored.at("wall");
             report["sph"] = stored;
             report["sph"]["from"] = sphIn;
@@ -191,7 +252,7 @@ int main(int argc, char** argv)
             const auto start = std::chrono::steady_clock::now();
             const sim::sph::StenosisPipeFlow flow = sim::sph::runStenosisPipe(pipe);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            sph = flow.flows;
+            sph = flow.flows, sphSystole = flow.systolicFlows;
             sphWall = {{"arc_mm", flow.wallArcMm}, {"tawss_pa", flow.wallShearPa}, {"pressure_pa", flow.wallPressurePa},
                        {"throat_tawss_pa", flow.throatWallShearPa}};
             report["sph"] = {{"sections", bench::sectionsJson(flow.arcMm, flow.flows)}, {"wall", sphWall}, {"seconds", seconds},
@@ -199,12 +260,16 @@ int main(int argc, char** argv)
                              {"largest_density_variation", flow.metrics.at("largest_density_variation")},
                              {"precision", "double"}, {"spacing_mm", pipe.spacingMm},
                              {"mean_speed_m_s", pipe.meanSpeedMS}, {"length_mm", pipe.lengthMm}};
+            if (pulsatile)
+                report["sph"]["period_s"] = pipe.inflowWaveform.period(), report["sph"]["amplitude"] = amplitude,
+                report["sph"]["systolic_sections"] = bench::sectionsJson(flow.arcMm, flow.systolicFlows);
             if (!sphOut.empty())
                 std::ofstream(sphOut) << report["sph"].dump(1) << '\n';
         }
         const sim::sph::StenosisFigures sphFigures = sim::sph::stenosisFigures(arcs, sph, pipe.compareMm);
         report["sph"]["figures"] = figuresJson(sphFigures);
         report["sph"].erase("sections");
+        report["sph"].erase("systolic_sections");
         report["sph"].erase("wall");
         report["sph"]["throat_tawss_pa"] = sphWall.at("throat_tawss_pa");
         if (!haveOpenFoam)
@@ -213,7 +278,7 @@ int main(int argc, char** argv)
             return 0;
         }
 
-        const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple, transient);
+        const std::vector<bench::OpenFoamMesh> meshes = openFoamMeshes(pipe, classicSimple, transient, coarseOnly);
         std::vector<bench::OpenFoamStenosisFlow> foam;
         json foamRuns = json::array();
         for (std::size_t m = 0; m < meshes.size(); ++m)
@@ -242,6 +307,18 @@ int main(int argc, char** argv)
         report["peak_ratio"] = check(sphFigures.peakRatio, rf.peakRatio, 0.10);
         report["pressure_drop"] = check(sphFigures.pressureDropPa, rf.pressureDropPa, 0.15);
         report["throat_wss"] = check(sphWall.at("throat_tawss_pa"), reference.throatWallShearPa, 0.20);
+        bool systolePassed = true;
+        if (pulsatile) // the peak-systolic figures (the duplex peak-systolic velocity ratio's counterpart)
+        {
+            const sim::sph::StenosisFigures sphSystolic = sim::sph::stenosisFigures(arcs, sphSystole, pipe.compareMm);
+            report["systolic_peak_ratio"] = check(sphSystolic.peakRatio, reference.systolicFigures.peakRatio, 0.10);
+            report["systolic_pressure_drop"] =
+                check(sphSystolic.pressureDropPa, reference.systolicFigures.pressureDropPa, 0.15);
+            report["systolic_peak_velocity_throat"] = {{"sph", sphSystole[sphSystolic.throat].peakVelocityMS},
+                                                       {"openfoam", reference.systolicSections[rf.throat].peakVelocityMS}};
+            report["openfoam_previous_cycle_systolic_peak_ratio"] = reference.previousSystolicFigures.peakRatio;
+            systolePassed = report["systolic_peak_ratio"]["passed"] && report["systolic_pressure_drop"]["passed"];
+        }
         // Along the wall: each SPH ring against OpenFOAM's nearest wall face, between the compared sections.
         double worstWall = 0.0, worstWallAt = 0.0;
         json wallProfile = json::array();
@@ -263,7 +340,7 @@ int main(int argc, char** argv)
         report["wall_shear_profile"] = {{"rings", wallProfile}, {"largest_difference_over_throat_value", worstWall},
                                         {"at_mm", worstWallAt}};
         const bool passed = report["centerline_profile"]["passed"] && report["peak_ratio"]["passed"] &&
-                            report["pressure_drop"]["passed"] && report["throat_wss"]["passed"] &&
+                            report["pressure_drop"]["passed"] && report["throat_wss"]["passed"] && systolePassed &&
                             std::all_of(foam.begin(), foam.end(), [](const auto& f) { return f.converged; });
         report["passed"] = passed;
         std::printf("%s\n", report.dump().c_str());

@@ -43,52 +43,84 @@ SectionFlow sectionFlow(const ParticleState& particles, const FluidModel& fluid,
     return flow;
 }
 
+double PhaseWindow::overlap(double timeS, double spanS) const
+{
+    if (empty())
+        return 0.0;
+    const double phase = timeS - periodS * std::floor(timeS / periodS);
+    return std::max(0.0, std::min(phase, toS) - std::max(phase - spanS, fromS));
+}
+
+namespace {
+
+void addWeighted(SectionFlow& sum, const SectionFlow& flow, double weightS)
+{
+    sum.areaM2 += weightS * flow.areaM2;
+    sum.flowRateM3S += weightS * flow.flowRateM3S;
+    sum.meanVelocityMS += weightS * flow.meanVelocityMS;
+    sum.peakVelocityMS += weightS * flow.peakVelocityMS;
+    sum.meanPressurePa += weightS * flow.meanPressurePa;
+    sum.particles = std::max(sum.particles, flow.particles);
+}
+
+std::vector<SectionFlow> averaged(std::vector<SectionFlow> sums, std::size_t sections, double weightS)
+{
+    sums.resize(sections);
+    if (!(weightS > 0.0))
+        return std::vector<SectionFlow>(sections);
+    for (SectionFlow& average : sums)
+        for (double* value : {&average.areaM2, &average.flowRateM3S, &average.meanVelocityMS, &average.peakVelocityMS,
+                              &average.meanPressurePa})
+            *value /= weightS;
+    return sums;
+}
+
+} // namespace
+
 void SectionSeries::sample(const ParticleState& particles, const FluidModel& fluid, double timeS, double weightS)
 {
     weightS = m_schedule.due(timeS, weightS);
     if (!(weightS > 0.0))
         return;
+    // In the phase window: weighted by the part of the sample's time inside it.
+    const double phaseWeightS = m_window.overlap(timeS, weightS);
     m_sums.resize(m_sections.size());
     m_largestPeak.resize(m_sections.size(), -INFINITY);
+    if (phaseWeightS > 0.0)
+        m_phaseSums.resize(m_sections.size());
     for (std::size_t k = 0; k < m_sections.size(); ++k)
     {
         const SectionFlow flow = sectionFlow(particles, fluid, m_sections[k]);
-        SectionFlow& sum = m_sums[k];
-        sum.areaM2 += weightS * flow.areaM2;
-        sum.flowRateM3S += weightS * flow.flowRateM3S;
-        sum.meanVelocityMS += weightS * flow.meanVelocityMS;
-        sum.peakVelocityMS += weightS * flow.peakVelocityMS;
-        sum.meanPressurePa += weightS * flow.meanPressurePa;
-        sum.particles = std::max(sum.particles, flow.particles);
+        addWeighted(m_sums[k], flow, weightS);
+        if (phaseWeightS > 0.0)
+            addWeighted(m_phaseSums[k], flow, phaseWeightS);
         if (flow.particles > 0)
             m_largestPeak[k] = std::max(m_largestPeak[k], flow.peakVelocityMS);
     }
     m_weight += weightS;
+    m_phaseWeight += phaseWeightS;
 }
 
 std::vector<SectionFlow> SectionSeries::averages() const
 {
-    std::vector<SectionFlow> averages(m_sections.size());
-    if (!(m_weight > 0.0))
-        return averages;
-    for (std::size_t k = 0; k < m_sums.size(); ++k)
-    {
-        averages[k] = m_sums[k];
-        for (double* value : {&averages[k].areaM2, &averages[k].flowRateM3S, &averages[k].meanVelocityMS,
-                              &averages[k].peakVelocityMS, &averages[k].meanPressurePa})
-            *value /= m_weight;
-    }
-    return averages;
+    return averaged(m_sums, m_sections.size(), m_weight);
+}
+
+std::vector<SectionFlow> SectionSeries::phaseAverages() const
+{
+    return averaged(m_phaseSums, m_sections.size(), m_phaseWeight);
 }
 
 void SectionSeries::restore(Sums sums)
 {
     const bool none = sums.flows.empty() && sums.largestPeaks.empty();
-    if (!none && (sums.flows.size() != m_sections.size() || sums.largestPeaks.size() != m_sections.size()))
+    if ((!none && (sums.flows.size() != m_sections.size() || sums.largestPeaks.size() != m_sections.size())) ||
+        (!sums.phaseFlows.empty() && sums.phaseFlows.size() != m_sections.size()))
         throw Error(Pattern{"the saved section averages are for %1 sections, this run has %2",
                             {std::to_string(sums.flows.size()), std::to_string(m_sections.size())}});
     m_schedule.restore(sums.schedule);
     m_weight = sums.weightS, m_sums = std::move(sums.flows), m_largestPeak = std::move(sums.largestPeaks);
+    m_phaseWeight = sums.phaseWeightS, m_phaseSums = std::move(sums.phaseFlows);
 }
 
 } // namespace vsim::sim::sph

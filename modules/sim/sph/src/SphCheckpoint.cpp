@@ -9,7 +9,7 @@
 namespace vsim::sim::sph {
 namespace {
 
-constexpr char kHeader[] = "VSIM-SPH-CHECKPOINT 1\n";
+constexpr char kHeader[] = "VSIM-SPH-CHECKPOINT 2\n";
 static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "positions are written as three doubles each");
 
 class Writer
@@ -177,6 +177,10 @@ void writeSphCheckpoint(const SphCheckpoint& c, const std::filesystem::path& fil
             writeSums(w, f);
         w.array(c.sections.largestPeaks);
         writeSchedule(w, c.sections.schedule);
+        w.value(c.sections.phaseWeightS);
+        w.value(std::uint64_t(c.sections.phaseFlows.size()));
+        for (const SectionFlow& f : c.sections.phaseFlows)
+            writeSums(w, f);
         w.value(std::uint64_t(c.wallLoads.points.size()));
         for (const WallLoadAverage& a : c.wallLoads.points)
             writeSums(w, a);
@@ -199,7 +203,7 @@ SphCheckpoint readSphCheckpoint(const std::filesystem::path& file)
     if (!in)
         throw Error("cannot open the SPH checkpoint", {{"file", file.string()}});
     if (!isSphCheckpoint(file))
-        throw Error("not an SPH checkpoint of this version (its first line is not 'VSIM-SPH-CHECKPOINT 1')",
+        throw Error("not an SPH checkpoint of this version (its first line is not 'VSIM-SPH-CHECKPOINT 2')",
                     {{"file", file.string()}});
     in.seekg(std::streamoff(sizeof(kHeader) - 1));
     Reader r(in, file);
@@ -226,6 +230,10 @@ SphCheckpoint readSphCheckpoint(const std::filesystem::path& file)
         f = readSums(r);
     r.array(c.sections.largestPeaks);
     c.sections.schedule = readSchedule(r);
+    c.sections.phaseWeightS = r.value<double>();
+    c.sections.phaseFlows.resize(r.count());
+    for (SectionFlow& f : c.sections.phaseFlows)
+        f = readSums(r);
     c.wallLoads.points.resize(r.count());
     for (WallLoadAverage& a : c.wallLoads.points)
         a = readWallSums(r);

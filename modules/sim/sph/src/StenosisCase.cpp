@@ -53,6 +53,37 @@ StenosisPipe StenosisPipe::atFlow(double meanSpeed, double length) const
     return pipe;
 }
 
+StenosisPipe StenosisPipe::pulsatile(double periodS, double amplitude) const
+{
+    if (!(periodS > 0.0) || !(amplitude >= 0.0 && amplitude < 1.0))
+        throw Error(Pattern{"a pulsatile inflow needs a period > 0 s and an amplitude in [0, 1), not %1 s and %2",
+                            {numberText(periodS), numberText(amplitude)}});
+    const StenosisPipe peak = atFlow(meanSpeedMS * (1.0 + amplitude), lengthMm);
+    StenosisPipe pipe = *this;
+    pipe.soundSpeedMS = peak.soundSpeedMS, pipe.cfl = peak.cfl, pipe.wallRepulsion = peak.wallRepulsion;
+    constexpr int kPieces = 64;
+    pipe.inflowWaveform.points.clear();
+    for (int k = 0; k <= kPieces; ++k)
+        pipe.inflowWaveform.points.emplace_back(periodS * k / kPieces,
+                                                1.0 + amplitude * std::sin(2.0 * std::numbers::pi * k / kPieces));
+    pipe.averageFromS = periodS * std::ceil(averageFromS / periodS - 1e-9);
+    pipe.endTimeS = pipe.averageFromS + periodS;
+    pipe.systole = {periodS, 0.2 * periodS, 0.3 * periodS};
+    return pipe;
+}
+
+double StenosisPipe::inflowFactor(double timeS) const
+{
+    const double ramp = rampS > 0.0 && timeS < rampS ? 0.5 * (1.0 - std::cos(std::numbers::pi * timeS / rampS)) : 1.0;
+    return ramp * inflowWaveform.factorAt(timeS);
+}
+
+double StenosisPipe::womersleyNumber() const
+{
+    const double period = inflowWaveform.period();
+    return period > 0.0 ? 1e-3 * radiusMm * std::sqrt(2.0 * std::numbers::pi / period * densityKgM3 / viscosityPaS) : 0.0;
+}
+
 double StenosisPipe::throatReynolds() const
 {
     // The throat's mean speed is 4 times the inflow's (area ratio 4), its diameter R0.
@@ -117,13 +148,16 @@ ParticleSet stenosisPipeParticles(const StenosisPipe& pipe)
 
 void configureStenosisPipe(const StenosisPipe& pipe, SphSolver& solver, int sectionEvery, int wallEvery)
 {
-    solver.setOpenBoundaries(
-        detail::pipeEnds(pipeShape(pipe), pipe.radiusMm + 0.5 * pipe.spacingMm, pipe.flowRateM3S(), pipe.rampS));
+    std::vector<OpenBoundary> ends =
+        detail::pipeEnds(pipeShape(pipe), pipe.radiusMm + 0.5 * pipe.spacingMm, pipe.flowRateM3S(), pipe.rampS);
+    ends.front().waveform = pipe.inflowWaveform; // the inlet
+    solver.setOpenBoundaries(std::move(ends));
     std::vector<CrossSection> sections;
     for (double x : pipe.sectionArcsMm())
         sections.push_back({Eigen::Vector3d(1e-3 * x, 0.0, 0.0), Eigen::Vector3d::UnitX(),
                             1e-3 * (pipe.radiusMm + pipe.spacingMm), 1e-3 * pipe.sectionThicknessMm()});
     solver.setSections(sections, pipe.averageFromS, sectionEvery);
+    solver.setSectionsPhaseWindow(pipe.systole);
     solver.setWallPoints(pipe.wallPoints(kRingStepMm, kAround), pipe.averageFromS, wallEvery);
 }
 
@@ -134,6 +168,11 @@ StenosisPipeFlow stenosisPipeFlow(const StenosisPipe& pipe, const SectionSeries&
     flow.arcMm = pipe.sectionArcsMm();
     flow.flows = sections.averages();
     flow.figures = stenosisFigures(flow.arcMm, flow.flows, pipe.compareMm);
+    if (!pipe.systole.empty() && sections.phaseAveragedTime() > 0.0)
+    {
+        flow.systolicFlows = sections.phaseAverages();
+        flow.systolicFigures = stenosisFigures(flow.arcMm, flow.systolicFlows, pipe.compareMm);
+    }
     flow.metrics = std::move(metrics);
     const std::vector<WallLoadAverage> loads = wallLoads.averages();
     const std::vector<WallPoint>& points = wallLoads.points();

@@ -7,8 +7,9 @@
 //   peak velocity: the mean of the fastest 5 % of the section's particles' u_i (at least 3): the duplex peak
 //   velocity's counterpart, robust to a single particle's noise (about 2 % below the maximum of a parabolic profile
 //   sampled by 100 particles), mean pressure sum V_i p_i / sum V_i.
-// SectionSeries averages them over time (weighted by the time steps) from a given time on and keeps the largest peak
-// (the systolic peak of a pulsatile run). SI: m, m/s, m^3/s, Pa.
+// SectionSeries averages them over time (weighted by the time steps) from a given time on and keeps the largest peak;
+// for a pulsatile run it also averages over a phase window of each cycle (the systole: the duplex peak-systolic
+// velocities are read there). SI: m, m/s, m^3/s, Pa, s.
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/ParticleState.h"
@@ -35,6 +36,16 @@ struct SectionFlow
     int particles = 0;
 };
 
+/// A window of each cycle: the times t with fromS <= t mod periodS <= toS (s). A period of 0: no window.
+struct PhaseWindow
+{
+    double periodS = 0.0, fromS = 0.0, toS = 0.0;
+    bool empty() const { return !(periodS > 0.0) || !(toS > fromS); }
+    /// How much of the span (t - spanS, t] lies in the window (s): the weight in it of a sample at t that stands for
+    /// the time since the last one (a span shorter than the cycle).
+    double overlap(double timeS, double spanS) const;
+};
+
 /// The section's flow from the fluid particles (buffers and walls left out).
 SectionFlow sectionFlow(const ParticleState& particles, const FluidModel& fluid, const CrossSection& section);
 
@@ -57,11 +68,21 @@ public:
     void sample(const ParticleState& particles, const FluidModel& fluid, double timeS, double weightS);
     /// The time averages (peakVelocityMS: the average peak); empty flows before any sample.
     std::vector<SectionFlow> averages() const;
+    /// Also averages, from the same start, over the samples inside `window` of each cycle (each weighted by its time
+    /// in the window): phaseAverages().
+    void setPhaseWindow(PhaseWindow window) { m_window = window; }
+    const PhaseWindow& phaseWindow() const { return m_window; }
+    /// The averages over the phase window's samples; empty flows without a window or before its first sample.
+    std::vector<SectionFlow> phaseAverages() const;
+    double phaseAveragedTime() const { return m_phaseWeight; } ///< s
     /// The largest peak velocity of each section over the samples (m/s).
     const std::vector<double>& largestPeaks() const { return m_largestPeak; }
     double averagedTime() const { return m_weight; } ///< s
     /// Forgets the samples (a new run).
-    void reset() { m_weight = 0.0, m_schedule.reset(), m_sums.clear(), m_largestPeak.clear(); }
+    void reset()
+    {
+        m_weight = m_phaseWeight = 0.0, m_schedule.reset(), m_sums.clear(), m_phaseSums.clear(), m_largestPeak.clear();
+    }
     void sampleEveryCall() { m_schedule.everyCall(); } ///< the caller keeps the cadence (SampleSchedule.h)
     /// What the averages have summed so far and where their schedule stands (SphCheckpoint.h); restore() goes on
     /// from it. Throws vsim::Error for sums of another number of sections.
@@ -71,8 +92,10 @@ public:
         std::vector<SectionFlow> flows; ///< weighted sums
         std::vector<double> largestPeaks;
         SampleSchedule::State schedule;
+        double phaseWeightS = 0.0;
+        std::vector<SectionFlow> phaseFlows; ///< weighted sums over the phase window (none without one)
     };
-    Sums sums() const { return {m_weight, m_sums, m_largestPeak, m_schedule.state()}; }
+    Sums sums() const { return {m_weight, m_sums, m_largestPeak, m_schedule.state(), m_phaseWeight, m_phaseSums}; }
     void restore(Sums sums);
 
 private:
@@ -80,6 +103,9 @@ private:
     SampleSchedule m_schedule;
     double m_weight = 0.0; ///< s averaged
     std::vector<SectionFlow> m_sums;
+    PhaseWindow m_window;
+    double m_phaseWeight = 0.0; ///< s averaged inside the phase window
+    std::vector<SectionFlow> m_phaseSums;
     std::vector<double> m_largestPeak;
 };
 

@@ -8,11 +8,11 @@
 // precision's rounding (the particles are sorted afresh, so their sums run in another order; tst_gpu_sph).
 //
 // The file is binary, in the writing machine's byte order and double precision (the same program on a machine
-// of the same kind reads it back; not an exchange format): the header line "VSIM-SPH-CHECKPOINT 1", then the
+// of the same kind reads it back; not an exchange format): the header line "VSIM-SPH-CHECKPOINT 2", then the
 // counters, the mass ledger, the particles (every ParticleState array), the rates of the next kick, the open
-// boundaries' last flow rates and pressures, the time averages' sums and the caller's named numbers, and the
-// header again as the end mark. It is written beside its name and renamed over it, so that a run stopped while
-// writing leaves the last whole checkpoint.
+// boundaries' last flow rates and pressures, the time averages' sums (the sections' phase window's too: new in
+// version 2) and the caller's named numbers, and the header again as the end mark. It is written beside its name
+// and renamed over it, so that a run stopped while writing leaves the last whole checkpoint.
 
 #include "vsim/sim/sph/CrossSections.h"
 #include "vsim/sim/sph/OpenBoundary.h"

@@ -77,6 +77,8 @@ public:
     {
         m_sections = SectionSeries(std::move(sections), fromTimeS, everySteps);
     }
+    /// The sections' phase window (CrossSections.h: a pulsatile run's systole), after setSections().
+    void setSectionsPhaseWindow(PhaseWindow window) { m_sections.setPhaseWindow(window); }
     const SectionSeries& sections() const { return m_sections; }
     /// Points on the wall where the wall shear stress and pressure are averaged over time from `fromTimeS` on,
     /// sampled every `everySteps` steps (WallShear.h).

@@ -5,12 +5,15 @@
 // R(x) = R0 (1 - 0.25 (1 + cos(pi (x - throat) / half length))) to R0 / 2 (50 % in diameter, area ratio 4), a
 // parabolic inflow of the given mean speed, a pressure outlet at 0 Pa, blood as a Newtonian fluid. Sections every
 // step along the axis, each a slab two lattice spacings thick, hold the time-averaged flow (CrossSections.h).
+// Pulsatile (pulsatile()): the inflow times 1 + a sin(2 pi t / T), averaged over one whole cycle after the flow has
+// settled, and over the systole (a tenth of the cycle about the inflow's peak) for the peak-systolic figures.
 // mm for the geometry (the patient frame's unit), SI for the flow.
 
 #include "vsim/core/Parameters.h"
 #include "vsim/core/ParticleSet.h"
 #include "vsim/core/Progress.h"
 #include "vsim/sim/sph/CrossSections.h"
+#include "vsim/sim/sph/OpenBoundary.h"
 #include "vsim/sim/sph/SphSolver.h"
 #include "vsim/sim/sph/StenosisFigures.h"
 #include "vsim/sim/sph/WallShear.h"
@@ -38,6 +41,8 @@ struct StenosisPipe
     double wallRepulsion = 0.0;                       ///< the solver's wall_repulsion (the walls' backstop; 0: off)
     double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
     double sectionStepMm = 0.2;
+    Waveform inflowWaveform;                          ///< multiplies the inflow (empty: steady)
+    PhaseWindow systole;                              ///< the sections' systolic window (empty: steady)
 
     /// The same narrowing at another mean inflow speed (m/s) and pipe length (mm; the throat stays 2.4 mm from the
     /// inlet, so a longer pipe gives the jet room to recover before the outlet), with the sound speed at the same
@@ -50,6 +55,16 @@ struct StenosisPipe
     /// (wall_repulsion 0.01): at a throat Re of 200 the fluid crossed the first wall layer at the throat without
     /// it at 0.05 and 0.1 mm, and with it ran to its end (2026-11-30, RESULTS.md).
     StenosisPipe atFlow(double meanSpeed, double length) const;
+    /// The same pipe with its inflow pulsing as 1 + amplitude sin(2 pi t / period) (amplitude in [0, 1): the flow
+    /// never reverses; 64 linear pieces a cycle), the averaging window the first whole cycle that starts after the
+    /// steady window's start, the systole the tenth of the cycle about the inflow's peak (T / 4), and the sound speed,
+    /// the Courant number and the walls' backstop those of atFlow at the peak's speed (the peak's Mach number that of
+    /// the steady run). Throws vsim::Error for a period <= 0 or an amplitude outside [0, 1).
+    StenosisPipe pulsatile(double periodS, double amplitude) const;
+    /// The inflow's factor at time t: the ramp from rest times the waveform (OpenBoundaries::prescribedFlowRate).
+    double inflowFactor(double timeS) const;
+    /// The Womersley number R0 sqrt(2 pi / T rho / mu) of a pulsatile inflow (0 when steady).
+    double womersleyNumber() const;
     /// The Reynolds number of the throat's mean flow: rho 4 U R0 / mu (its diameter R0, its mean speed 4 U).
     double throatReynolds() const;
     /// The lumen's radius at x (mm).
@@ -73,6 +88,10 @@ struct StenosisPipeFlow
     /// over the ring's 8 points (WallShear.h).
     std::vector<double> wallArcMm, wallShearPa, wallPressurePa;
     double throatWallShearPa = 0.0; ///< the rings' TAWSS in the throat's section slab, averaged
+    /// Pulsatile: the sections averaged over the systole of the averaged cycle (peak-systolic velocities) and their
+    /// figures (the peak-systolic velocity ratio); empty when steady.
+    std::vector<SectionFlow> systolicFlows;
+    StenosisFigures systolicFigures;
 };
 
 /// The problem for another stepper (the GPU's, cuda/sph): the solver's parameters (the stenosis Courant number, 25
