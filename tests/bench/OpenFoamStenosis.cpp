@@ -41,7 +41,7 @@ std::string caseKey(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh
             << pipe.endTimeS << " waveform";
         for (const auto& [time, factor] : pipe.inflowWaveform.points)
             key << ' ' << time << ' ' << factor;
-        key << " systole " << pipe.systole.fromS << ' ' << pipe.systole.toS;
+        key << " systole " << pipe.systole.fromS << ' ' << pipe.systole.toS << " one cycle past the end";
     }
     key << "\n";
     return key.str();
@@ -199,19 +199,21 @@ void writeCase(const sim::sph::StenosisPipe& pipe, const OpenFoamMesh& mesh, con
     {
         // The wall shear stress and its magnitude at every step, so that fieldAverage (after them) averages both: the
         // time-averaged WSS is the mean of the magnitude. A pulsatile inflow also writes the fields every 1/40 of its
-        // cycle, whose writes in the systole the systolic figures are read from.
+        // cycle, whose writes in the systole the systolic figures are read from, and runs one cycle past the SPH's
+        // end (the averages stop there): the two cycles' systoles show how periodic the flow has become.
         const std::string mean = " { mean on; prime2Mean off; base time; }";
         const double period = pipe.inflowWaveform.period();
         write(directory / "system/controlDict",
               header("dictionary", "controlDict") + "application pimpleFoam; startFrom startTime; startTime 0; " +
-                  "stopAt endTime; endTime " + number(pipe.endTimeS) + "; deltaT 1e-7; adjustTimeStep yes; " +
+                  "stopAt endTime; endTime " + number(pipe.endTimeS + period) + "; deltaT 1e-7; adjustTimeStep yes; " +
                   "maxCo 0.5; maxDeltaT 1;\nwriteControl adjustableRunTime; writeInterval " +
                   number(period > 0.0 ? period / kWritesPerCycle : pipe.endTimeS) + ";\n" + output + "functions {\n" +
                   wallShear +
                   "shearMagnitude { type mag; libs (\"libfieldFunctionObjects.so\"); field wallShearStress; "
                   "writeControl writeTime; }\n"
                   "average { type fieldAverage; libs (\"libfieldFunctionObjects.so\"); writeControl writeTime; "
-                  "timeStart " + number(pipe.averageFromS) + "; fields ( U" + mean + " p" + mean +
+                  "timeStart " + number(pipe.averageFromS) + "; timeEnd " + number(pipe.endTimeS) + "; fields ( U" +
+                  mean + " p" + mean +
                   " wallShearStress" + mean + " \"mag(wallShearStress)\"" + mean + " ); }\n}\n");
     }
     else
@@ -455,10 +457,13 @@ OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, con
         flow.converged = log.find("SIMPLE solution converged") != std::string::npos;
     }
 
-    const fs::path time = latestTime(directory);
+    // The averages at the SPH's end (a pulsatile run goes on one cycle past it); the cell volumes at the last time.
+    const auto ends = timesWithin(directory, pipe.endTimeS, pipe.endTimeS);
+    const fs::path time = mesh.transient && !ends.empty() ? ends.front().second : latestTime(directory);
     const std::string mean = mesh.transient ? "Mean" : ""; // the window's averages
     const std::vector<double> centres = readList(directory / "0/C", 3), velocity = readList(time / ("U" + mean), 3),
-                              pressure = readList(time / ("p" + mean), 1), volume = readList(time / "V", 1);
+                              pressure = readList(time / ("p" + mean), 1),
+                              volume = readList(latestTime(directory) / "V", 1);
     flow.cells = int(volume.size());
     if (centres.size() != 3 * volume.size() || velocity.size() != centres.size() || pressure.size() != volume.size())
         throw Error("the fields in " + time.string() + " do not match the mesh's " + std::to_string(flow.cells) + " cells");
@@ -467,18 +472,15 @@ OpenFoamStenosisFlow runOpenFoamStenosis(const sim::sph::StenosisPipe& pipe, con
     for (double x : arcs)
         flow.sections.push_back(sectionOfCells(pipe, x, centres, velocity, pressure, volume));
     flow.figures = sim::sph::stenosisFigures(arcs, flow.sections, pipe.compareMm);
-    if (mesh.transient && !pipe.systole.empty()) // the averaged cycle's systole, and the cycle's before it
+    if (mesh.transient && !pipe.systole.empty()) // the averaged cycle's systole, and the next cycle's
     {
-        const double period = pipe.systole.periodS;
         flow.systolicSections = systolicSections(pipe, directory, pipe.averageFromS, centres, volume);
-        if (flow.systolicSections.empty())
-            throw Error("OpenFOAM wrote no fields in the systole of " + directory.string());
+        const auto next = systolicSections(pipe, directory, pipe.endTimeS, centres, volume);
+        if (flow.systolicSections.empty() || next.empty())
+            throw Error("OpenFOAM wrote no fields in the systoles of " + directory.string());
         flow.systolicFigures = sim::sph::stenosisFigures(arcs, flow.systolicSections, pipe.compareMm);
-        const auto before = systolicSections(pipe, directory, pipe.averageFromS - period, centres, volume);
-        if (!before.empty())
-            flow.previousSystolicFigures = sim::sph::stenosisFigures(arcs, before, pipe.compareMm);
+        flow.nextSystolicFigures = sim::sph::stenosisFigures(arcs, next, pipe.compareMm);
     }
-
     const std::vector<double> wallCentres = readList(directory / "0/C", 3, "wall");
     // Transient: the time average of the magnitude (TAWSS); steady: the magnitude of the stress.
     const std::vector<double> shear = mesh.transient ? readList(time / "mag(wallShearStress)Mean", 1, "wall")

@@ -9,7 +9,8 @@
 // with the SPH's ramped inflow (the parabola at the face centres, 40 steps of the ramp, linear between them:
 // constant/boundaryData) at a Courant number of 0.5, backward differences in time, the fields averaged over the
 // SPH's window (fieldAverage); a pulsatile inflow (StenosisPipe::pulsatile) likewise, its fields also written 40 times a
-// cycle, of which those in the systole give the systolic sections (the trapezoid rule over them). Its cells are then read back into the SPH's section definitions (CrossSections.h):
+// cycle, of which those in the systole give the systolic sections (the trapezoid rule over them), and run one cycle
+// past the SPH's end (the averages stop at it), whose systole shows how periodic the flow has become. Its cells are then read back into the SPH's section definitions (CrossSections.h):
 // each section a slab of the same thickness, its peak the mean of the fastest 5 % of the slab's volume, its
 // pressure the volume mean. The wall shear stress is OpenFOAM's wallShearStress function object times the density
 // (transient: the time average of its magnitude, the TAWSS).
@@ -42,10 +43,10 @@ struct OpenFoamStenosisFlow
     sim::sph::StenosisFigures figures;
     std::vector<double> wallArcMm, wallShearPa; ///< each wall face's axial position and |tau_w|
     double throatWallShearPa = 0.0;             ///< |tau_w| averaged over the wall faces in the throat's slab
-    /// Pulsatile: the sections over the averaged cycle's systole and their figures, and the figures of the cycle
-    /// before it (how periodic the flow has become; zeros when that cycle's systole was not written).
+    /// Pulsatile: the sections over the averaged cycle's systole and their figures, and the figures of the next
+    /// cycle's systole (OpenFOAM runs one cycle past the SPH's end: how periodic the flow has become).
     std::vector<sim::sph::SectionFlow> systolicSections;
-    sim::sph::StenosisFigures systolicFigures, previousSystolicFigures;
+    sim::sph::StenosisFigures systolicFigures, nextSystolicFigures;
     double inletFlowRateM3S = 0.0;              ///< the discrete inflow (the parabola sampled at the face centres)
     int cells = 0, iterations = 0; ///< SIMPLE iterations; transient: time steps
     /// The last SIMPLE iteration's initial pressure residual; transient: the largest over the time steps' last

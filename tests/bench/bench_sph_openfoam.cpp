@@ -30,7 +30,7 @@
 // transient): the figures above are then the averaged cycle's, the TAWSS the mean of the magnitude, and beside them
 // the systole's (a tenth of the cycle about the inflow's peak): the peak-systolic velocity ratio (<= 10 %, the
 // duplex criterion's counterpart) and the systolic pressure drop (<= 15 %); OpenFOAM's systolic peak ratio in the
-// cycle before shows how periodic its flow has become. --coarse-only solves the first wedge alone, which is then
+// cycle after (it runs one more) shows how periodic its flow has become. --coarse-only solves the first wedge alone, which is then
 // the reference (a pulsatile run on the fine wedge takes about 8 times as long). Prints one JSON object; exit 1
 // beyond a tolerance, 0 with "SKIP" when simpleFoam is not installed (`scripts/install-deps.sh --bench`).
 
@@ -82,7 +82,7 @@ json openFoamJson(const bench::OpenFoamStenosisFlow& f)
                 {"throat_wss_pa", f.throatWallShearPa}};
     if (!f.systolicSections.empty())
         out["systolic_figures"] = figuresJson(f.systolicFigures),
-        out["previous_cycle_systolic_figures"] = figuresJson(f.previousSystolicFigures);
+        out["next_cycle_systolic_figures"] = figuresJson(f.nextSystolicFigures);
     return out;
 }
 
@@ -316,7 +316,7 @@ int main(int argc, char** argv)
                 check(sphSystolic.pressureDropPa, reference.systolicFigures.pressureDropPa, 0.15);
             report["systolic_peak_velocity_throat"] = {{"sph", sphSystole[sphSystolic.throat].peakVelocityMS},
                                                        {"openfoam", reference.systolicSections[rf.throat].peakVelocityMS}};
-            report["openfoam_previous_cycle_systolic_peak_ratio"] = reference.previousSystolicFigures.peakRatio;
+            report["openfoam_next_cycle_systolic_peak_ratio"] = reference.nextSystolicFigures.peakRatio;
             systolePassed = report["systolic_peak_ratio"]["passed"] && report["systolic_pressure_drop"]["passed"];
         }
         // Along the wall: each SPH ring against OpenFOAM's nearest wall face, between the compared sections.

@@ -88,8 +88,11 @@ void SectionSeries::sample(const ParticleState& particles, const FluidModel& flu
     m_largestPeak.resize(m_sections.size(), -INFINITY);
     if (phaseWeightS > 0.0)
         m_phaseSums.resize(m_sections.size());
-    for (std::size_t k = 0; k < m_sections.size(); ++k)
+    // Each section reads all particles and sums on its own: in parallel, the same sums in the same order.
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t sk = 0; sk < std::ptrdiff_t(m_sections.size()); ++sk)
     {
+        const std::size_t k = std::size_t(sk);
         const SectionFlow flow = sectionFlow(particles, fluid, m_sections[k]);
         addWeighted(m_sums[k], flow, weightS);
         if (phaseWeightS > 0.0)
