@@ -3,6 +3,7 @@
 // same masked system on a tube wall and on a clamped box (random right-hand sides, seeds 1-3) in a fraction of
 // block Jacobi's iterations, and a run of implicit steps ends where block Jacobi's ends.
 
+#include "vsim/core/Error.h"
 #include "vsim/sim/fem/AggregationMultigrid.h"
 #include "vsim/sim/fem/BackwardEuler.h"
 #include "vsim/sim/fem/ConjugateGradient.h"
@@ -106,6 +107,24 @@ private slots:
                 QVERIFY2(asymmetry <= 1e-10, c.name);
                 QVERIFY2(x.dot(mx) > 0.0, c.name);
             }
+        }
+    }
+
+    /// The set-up's poll (AggregationMultigridSettings::afterLevel, a Cancel's) is called once per coarsening, and
+    /// what it throws leaves the set-up.
+    void setUpPollsAfterEachLevel()
+    {
+        for (const Case& c : cases())
+        {
+            const AtRest rest = atRest(c);
+            AggregationMultigridSettings settings;
+            int polls = 0;
+            settings.afterLevel = [&polls] { ++polls; };
+            const AggregationMultigrid multigrid(rest.matrix, rest.positions, c.held, settings);
+            QCOMPARE(std::size_t(polls), multigrid.levels().size() - 1);
+            QVERIFY(!multigrid.settings().afterLevel); // not kept past the set-up
+            settings.afterLevel = [] { throw Cancelled(); };
+            QVERIFY_THROWS_EXCEPTION(Cancelled, AggregationMultigrid(rest.matrix, rest.positions, c.held, settings));
         }
     }
 

@@ -394,6 +394,8 @@ AggregationMultigrid::AggregationMultigrid(const BlockSparseMatrix& a, const Eig
         m_levels.push_back(std::move(level));
         blockStart = coarseStart;
         modes = std::move(nextModes);
+        if (settings.afterLevel)
+            settings.afterLevel();
     }
     m_operatorComplexity = allEntries / finestEntries;
     const MultigridLevel& coarsest = m_levels.back();
@@ -406,6 +408,7 @@ AggregationMultigrid::AggregationMultigrid(const BlockSparseMatrix& a, const Eig
     m_coarsest.compute(regular);
     if (m_coarsest.info() != Eigen::Success)
         throw Error("multigrid: the coarsest level is not positive definite");
+    m_settings.afterLevel = nullptr; // a set-up's poll only (it may hold the caller's progress by reference)
 }
 
 void AggregationMultigrid::refreshFinest(const BlockSparseMatrix& a)

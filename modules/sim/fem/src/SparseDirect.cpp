@@ -6,7 +6,11 @@
 #include <Eigen/UmfPackSupport>
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <numeric>
+#include <thread>
 
 namespace vsim::sim::fem {
 namespace {
@@ -49,7 +53,7 @@ struct SparseDirect::Factors
 SparseDirect::~SparseDirect() = default;
 
 SparseDirect::SparseDirect(const BlockSparseMatrix& pattern, const std::vector<std::uint8_t>& constrained, Kind kind)
-    : m_kind(kind), m_factors(std::make_unique<Factors>())
+    : m_kind(kind), m_factors(std::make_shared<Factors>())
 {
     detail::capBlasThreads();
     const std::size_t dofs = 3 * pattern.nodeCount();
@@ -61,10 +65,8 @@ SparseDirect::SparseDirect(const BlockSparseMatrix& pattern, const std::vector<s
     if (nodeOrder.empty())
         nodeOrder.resize(pattern.nodeCount()), std::iota(nodeOrder.begin(), nodeOrder.end(), 0);
     else
-    {
-        m_factors->cholesky.cholmod().nmethods = 1;
-        m_factors->cholesky.cholmod().method[0].ordering = CHOLMOD_NATURAL;
-    }
+        m_naturalOrdering = true;
+    configure(*m_factors);
     m_freeIndex.assign(dofs, -1);
     for (int node : nodeOrder)
         for (std::size_t d = 3 * std::size_t(node); d < 3 * std::size_t(node) + 3; ++d)
@@ -104,10 +106,19 @@ SparseDirect::SparseDirect(const BlockSparseMatrix& pattern, const std::vector<s
     m_matrix.resizeNonZeros(Eigen::Index(inner.size()));
     std::copy(outer.begin(), outer.end(), m_matrix.outerIndexPtr());
     std::copy(inner.begin(), inner.end(), m_matrix.innerIndexPtr());
+}
+
+void SparseDirect::configure(Factors& factors) const
+{
+    if (m_naturalOrdering) // the rows come in the nodes' nested dissection already
+    {
+        factors.cholesky.cholmod().nmethods = 1;
+        factors.cholesky.cholmod().method[0].ordering = CHOLMOD_NATURAL;
+    }
     // GMRES refines the solves it is preconditioned with, and a direct solve checks its own residual: no
     // iterative refinement inside UMFPACK (by default up to two, each a solve and a product more).
-    m_factors->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
-    m_factors->cholesky.cholmod().print = 0; // a matrix that is not positive definite is reported by the return value
+    factors.lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+    factors.cholesky.cholmod().print = 0; // a matrix that is not positive definite is reported by the return value
 }
 
 void SparseDirect::copyValues(const BlockSparseMatrix& matrix)
@@ -134,20 +145,84 @@ void SparseDirect::copyValues(const BlockSparseMatrix& matrix)
     }
 }
 
-bool SparseDirect::factorize(const BlockSparseMatrix& matrix)
+namespace {
+
+/// Analyses the pattern (the first time) and factorises `matrix` into `factors`.
+template <class Factors>
+bool factorizeInto(Factors& factors, const Eigen::SparseMatrix<double>& matrix, bool cholesky, bool analyse)
+{
+    if (cholesky)
+    {
+        if (analyse)
+            factors.cholesky.analyzePattern(matrix);
+        factors.cholesky.factorize(matrix);
+        return factors.cholesky.info() == Eigen::Success;
+    }
+    if (analyse)
+        factors.lu.analyzePattern(matrix);
+    factors.lu.factorize(matrix);
+    return factors.lu.info() == Eigen::Success;
+}
+
+} // namespace
+
+bool SparseDirect::factorize(const BlockSparseMatrix& matrix, const std::function<void()>& whileWaiting)
 {
     copyValues(matrix);
-    if (m_kind == Kind::SymmetricCholesky)
+    const bool cholesky = m_kind == Kind::SymmetricCholesky, analyse = !m_analysed;
+    if (!whileWaiting)
     {
-        if (!m_analysed)
-            m_factors->cholesky.analyzePattern(m_matrix), m_analysed = true;
-        m_factors->cholesky.factorize(m_matrix);
-        return m_factors->cholesky.info() == Eigen::Success;
+        m_analysed = true;
+        return factorizeInto(*m_factors, m_matrix, cholesky, analyse);
     }
-    if (!m_analysed)
-        m_factors->lu.analyzePattern(m_matrix), m_analysed = true;
-    m_factors->lu.factorize(m_matrix);
-    return m_factors->lu.info() == Eigen::Success;
+    // On a thread of its own, which holds the factors and the matrix until it ends, so that the caller can leave
+    // meanwhile (whileWaiting throws vsim::Cancelled): the factorisation then finishes unseen and is dropped, and
+    // this object starts again from fresh factors.
+    struct Job
+    {
+        std::shared_ptr<Factors> factors;
+        Eigen::SparseMatrix<double> matrix;
+        std::mutex mutex;
+        std::condition_variable ended;
+        bool finished = false, succeeded = false;
+    };
+    auto job = std::make_shared<Job>();
+    job->factors = m_factors;
+    job->matrix.swap(m_matrix);
+    std::thread([job, cholesky, analyse] {
+        bool succeeded = false;
+        try
+        {
+            succeeded = factorizeInto(*job->factors, job->matrix, cholesky, analyse);
+        }
+        catch (...) // out of memory: a failed factorisation (an exception cannot leave a thread)
+        {
+        }
+        const std::lock_guard lock(job->mutex);
+        job->succeeded = succeeded, job->finished = true;
+        job->ended.notify_all();
+    }).detach();
+    std::unique_lock lock(job->mutex);
+    while (!job->ended.wait_for(lock, std::chrono::milliseconds(50), [&job] { return job->finished; }))
+    {
+        lock.unlock();
+        try
+        {
+            whileWaiting();
+        }
+        catch (...)
+        {
+            m_matrix = job->matrix; // its values and pattern, which the factorisation only reads
+            m_factors = std::make_shared<Factors>();
+            configure(*m_factors);
+            m_analysed = false;
+            throw;
+        }
+        lock.lock();
+    }
+    m_matrix.swap(job->matrix);
+    m_analysed = true;
+    return job->succeeded;
 }
 
 void SparseDirect::solveOnly(const Eigen::VectorXd& b, Eigen::VectorXd& x) const

@@ -57,6 +57,7 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         const bool halvable = m_increment > 1.0 / 16.0 + 1e-12;
         settings.firstSolveBudget = halvable ? m_setup.firstSolveBudget : 0; // the smallest increment: LU as before
         const Progress stage = progress.subRange(m_reached, factor);
+        settings.cancelPoll = [&stage] { stage.throwIfCancelled(); };
         settings.afterResidual = [&](int updates, double residual) {
             stage.throwIfCancelled();
             // Newton converges quadratically: progress by the residual's decades towards the tolerance.

@@ -16,9 +16,9 @@ constexpr double kDirectTolerance = 1e-8; // a direct solve's residual check
 // the last four updates took 1, 11, 12 and 13 (5.6 s against 16.6 s; the run 101.5 -> 90.1 s, RESULTS.md 2026-12-03).
 constexpr double kRetryTangentBelow = 0.25;
 
-void factoriseOrThrow(SparseDirect& direct, const BlockSparseMatrix& matrix)
+void factoriseOrThrow(SparseDirect& direct, const BlockSparseMatrix& matrix, const std::function<void()>& whileWaiting)
 {
-    if (!direct.factorize(matrix))
+    if (!direct.factorize(matrix, whileWaiting))
         throw Error("the tangent stiffness could not be factorised (a part of the wall is not held by the fixed ends, "
                     "or the load is past the wall's limit)");
 }
@@ -41,6 +41,13 @@ TangentSolver::TangentSolver(const BlockSparseMatrix& pattern, const std::vector
         m_direct = std::make_unique<SparseDirect>(pattern, constrained, SparseDirect::Kind::GeneralLu);
     else if (settings.linear != LinearSolver::ConjugateGradient && settings.linear != LinearSolver::MultigridGmres)
         m_direct = std::make_unique<SparseDirect>(pattern, constrained, SparseDirect::Kind::SymmetricCholesky);
+}
+
+AggregationMultigridSettings TangentSolver::multigridSettings() const
+{
+    AggregationMultigridSettings settings;
+    settings.afterLevel = m_settings.cancelPoll;
+    return settings;
 }
 
 double TangentSolver::tolerance() const
@@ -70,7 +77,7 @@ void TangentSolver::factorisePreconditioner(const BlockSparseMatrix& tangent, co
                                             double forceResidual)
 {
     const auto cholesky = [this](const BlockSparseMatrix& matrix) {
-        const bool ok = m_direct->factorize(matrix);
+        const bool ok = m_direct->factorize(matrix, m_settings.cancelPoll);
         if (ok)
             m_preconditioner = m_direct.get();
         m_keptIsTangents = false;
@@ -104,7 +111,7 @@ void TangentSolver::factoriseLu(const BlockSparseMatrix& tangent)
     // iterations, RESULTS.md): the tangent's own LU for this update.
     if (!m_lu)
         m_lu = std::make_unique<SparseDirect>(tangent, m_constrained, SparseDirect::Kind::GeneralLu);
-    factoriseOrThrow(*m_lu, tangent);
+    factoriseOrThrow(*m_lu, tangent, m_settings.cancelPoll);
     m_preconditioner = m_lu.get();
 }
 
@@ -130,7 +137,8 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
         {
             if (!m_multigrid.hierarchy)
             {
-                m_multigrid.hierarchy = std::make_unique<AggregationMultigrid>(tangent, *m_positions, m_constrained);
+                m_multigrid.hierarchy =
+                    std::make_unique<AggregationMultigrid>(tangent, *m_positions, m_constrained, multigridSettings());
                 m_multigrid.rule.setUp();
             }
             else
@@ -192,7 +200,8 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
         const BlockSparseMatrix& standInMatrix = standIn ? standIn() : tangent;
         if (!m_multigrid.hierarchy)
         {
-            m_multigrid.hierarchy = std::make_unique<AggregationMultigrid>(standInMatrix, *m_positions, m_constrained);
+            m_multigrid.hierarchy =
+                std::make_unique<AggregationMultigrid>(standInMatrix, *m_positions, m_constrained, multigridSettings());
             m_multigrid.rule.setUp();
             result.factorised = true;
         }
@@ -211,7 +220,7 @@ TangentSolveResult TangentSolver::solve(const BlockSparseMatrix& tangent, const 
         return result;
     }
     default:
-        factoriseOrThrow(*m_direct, tangent);
+        factoriseOrThrow(*m_direct, tangent, m_settings.cancelPoll);
         result.relativeResidual = m_direct->solve(f, dx);
         result.factorised = true;
         result.converged = result.relativeResidual <= kDirectTolerance;

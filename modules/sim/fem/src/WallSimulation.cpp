@@ -129,6 +129,7 @@ StaticSolveReport WallSimulation::equilibrate(double tolerance, int maxUpdates, 
         settings.cgPreconditioner = CgPreconditioner::Multigrid;
         settings.keptMultigrid = &m_keptMultigrid;
         settings.rotationStiffness = true; // both iterations; the conjugate gradients leave out the load stiffness
+        settings.cancelPoll = [&progress] { progress.throwIfCancelled(); };
         settings.afterResidual = [&](int updates, double residual) {
             progress.throwIfCancelled();
             // Newton's residual falls from about 1e-1 to the tolerance: progress on its logarithm.

@@ -19,6 +19,7 @@
 #include <Eigen/SparseCore>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace vsim::sim::fem {
@@ -30,6 +31,7 @@ struct AggregationMultigridSettings
     int maxLevels = 10;
     int chebyshevDegree = 2;            ///< pre- and post-smoothing polynomial degree
     double chebyshevLowerFraction = 1.0 / 30.0; ///< the smoothed interval [fraction, 1] x the largest eigenvalue
+    std::function<void()> afterLevel; ///< called as each level is set up (a Cancel's poll: it may throw)
 };
 
 using SparseRows = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;

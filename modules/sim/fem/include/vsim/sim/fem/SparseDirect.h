@@ -14,6 +14,7 @@
 #include <Eigen/SparseCore>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -33,8 +34,11 @@ public:
     SparseDirect(const SparseDirect&) = delete;
     SparseDirect& operator=(const SparseDirect&) = delete;
     /// Factorises `matrix` (the pattern's). Returns false when the factorisation fails (singular, or not positive
-    /// definite for the Cholesky kind).
-    bool factorize(const BlockSparseMatrix& matrix);
+    /// definite for the Cholesky kind). With `whileWaiting` the factorisation runs on a thread of its own and
+    /// whileWaiting is called every 50 ms until it ends; when it throws (vsim::Cancelled: a Cancel during seconds
+    /// of factorisation), the exception leaves at once, the factorisation is left to finish unseen and dropped,
+    /// and this object holds no factors until the next factorize().
+    bool factorize(const BlockSparseMatrix& matrix, const std::function<void()>& whileWaiting = {});
     /// x = A^-1 b on the free components; constrained components of x are 0. Returns ||A x - b|| / ||b|| (free).
     double solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
     /// The same without the residual check (a preconditioner's solve).
@@ -52,14 +56,15 @@ private:
         std::uint8_t row, column;
     };
     void copyValues(const BlockSparseMatrix& matrix);
+    void configure(Factors& factors) const; ///< the solvers' settings on fresh factors
 
     Kind m_kind;
     std::vector<std::int64_t> m_freeIndex; // per degree of freedom: its free index, -1 when constrained
     std::vector<std::int64_t> m_freeDofs;  // per free index: the degree of freedom
     Eigen::SparseMatrix<double> m_matrix; // the free part (the Cholesky kind: the lower triangle of its symmetric part)
     std::vector<Source> m_sources;
-    std::unique_ptr<Factors> m_factors;
-    bool m_analysed = false;
+    std::shared_ptr<Factors> m_factors; ///< shared with a factorisation's thread while it runs
+    bool m_analysed = false, m_naturalOrdering = false;
 };
 
 } // namespace vsim::sim::fem

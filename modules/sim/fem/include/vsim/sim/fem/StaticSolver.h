@@ -161,6 +161,11 @@ struct StaticSolveSettings
     /// Called with the update count and the relative force residual each time a residual is computed (progress;
     /// it may throw vsim::Cancelled, which leaves the model at the last state evaluated).
     std::function<void(int updates, double forceResidual)> afterResidual;
+    /// Called while a preconditioner is set up, seconds each on a clinical wall: every 50 ms of a direct
+    /// factorisation (SparseDirect.h) and after each level of a multigrid hierarchy (AggregationMultigrid.h). It may
+    /// throw vsim::Cancelled, which leaves at once and the model at the last state evaluated. Empty: the
+    /// factorisations run on the calling thread.
+    std::function<void()> cancelPoll;
 };
 
 /// A co-rotational model whose static solve runs elsewhere (the CUDA static wall): it solves its own tangent and

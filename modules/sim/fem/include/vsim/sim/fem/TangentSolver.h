@@ -26,6 +26,7 @@
 // about 390 iterations an update (125 s against 47 s on 2 cores, RESULTS.md 2026-12-02); where the stand-in is far
 // from an indefinite tangent it does not converge at all (nor does GMRES with the stand-in's Cholesky).
 
+#include "vsim/sim/fem/AggregationMultigrid.h"
 #include "vsim/sim/fem/BlockSparseMatrix.h"
 #include "vsim/sim/fem/Gmres.h"
 #include "vsim/sim/fem/MultigridSetUpRule.h"
@@ -75,6 +76,7 @@ private:
     /// The first of the preconditioners above that factorises.
     void factorisePreconditioner(const BlockSparseMatrix& tangent, const StandIn& standIn, double forceResidual);
     void factoriseLu(const BlockSparseMatrix& tangent);
+    AggregationMultigridSettings multigridSettings() const; ///< the defaults with the settings' Cancel poll
 
     const StaticSolveSettings& m_settings;
     std::vector<std::uint8_t> m_constrained;
