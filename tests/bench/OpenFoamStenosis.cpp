@@ -380,21 +380,12 @@ std::vector<sim::sph::SectionFlow> systolicSections(const sim::sph::StenosisPipe
     for (std::size_t t = 0; t < times.size(); ++t)
     {
         const double weight = 0.5 * (times[std::min(t + 1, times.size() - 1)].first - times[t > 0 ? t - 1 : 0].first);
-        const std::vector<double> velocity = readList(times[t].second / "U", 3), pressure = readList(times[t].second / "p", 1);
+        const std::vector<double> velocity = readList(times[t].second / "U", 3);
+        const std::vector<double> pressure = readList(times[t].second / "p", 1);
         for (std::size_t k = 0; k < arcs.size(); ++k)
-        {
-            const sim::sph::SectionFlow flow = sectionOfCells(pipe, arcs[k], centres, velocity, pressure, volume);
-            sums[k].areaM2 += weight * flow.areaM2, sums[k].flowRateM3S += weight * flow.flowRateM3S;
-            sums[k].meanVelocityMS += weight * flow.meanVelocityMS, sums[k].peakVelocityMS += weight * flow.peakVelocityMS;
-            sums[k].meanPressurePa += weight * flow.meanPressurePa, sums[k].particles = flow.particles;
-        }
+            sim::sph::addWeighted(sums[k], sectionOfCells(pipe, arcs[k], centres, velocity, pressure, volume), weight);
     }
-    const double span = times.back().first - times.front().first;
-    for (sim::sph::SectionFlow& flow : sums)
-        for (double* value : {&flow.areaM2, &flow.flowRateM3S, &flow.meanVelocityMS, &flow.peakVelocityMS,
-                              &flow.meanPressurePa})
-            *value /= span;
-    return sums;
+    return sim::sph::averaged(std::move(sums), arcs.size(), times.back().first - times.front().first);
 }
 
 } // namespace

@@ -51,31 +51,27 @@ double PhaseWindow::overlap(double timeS, double spanS) const
     return std::max(0.0, std::min(phase, toS) - std::max(phase - spanS, fromS));
 }
 
-namespace {
-
-void addWeighted(SectionFlow& sum, const SectionFlow& flow, double weightS)
+void addWeighted(SectionFlow& sum, const SectionFlow& flow, double weight)
 {
-    sum.areaM2 += weightS * flow.areaM2;
-    sum.flowRateM3S += weightS * flow.flowRateM3S;
-    sum.meanVelocityMS += weightS * flow.meanVelocityMS;
-    sum.peakVelocityMS += weightS * flow.peakVelocityMS;
-    sum.meanPressurePa += weightS * flow.meanPressurePa;
+    sum.areaM2 += weight * flow.areaM2;
+    sum.flowRateM3S += weight * flow.flowRateM3S;
+    sum.meanVelocityMS += weight * flow.meanVelocityMS;
+    sum.peakVelocityMS += weight * flow.peakVelocityMS;
+    sum.meanPressurePa += weight * flow.meanPressurePa;
     sum.particles = std::max(sum.particles, flow.particles);
 }
 
-std::vector<SectionFlow> averaged(std::vector<SectionFlow> sums, std::size_t sections, double weightS)
+std::vector<SectionFlow> averaged(std::vector<SectionFlow> sums, std::size_t sections, double weight)
 {
     sums.resize(sections);
-    if (!(weightS > 0.0))
+    if (!(weight > 0.0))
         return std::vector<SectionFlow>(sections);
     for (SectionFlow& average : sums)
         for (double* value : {&average.areaM2, &average.flowRateM3S, &average.meanVelocityMS, &average.peakVelocityMS,
                               &average.meanPressurePa})
-            *value /= weightS;
+            *value /= weight;
     return sums;
 }
-
-} // namespace
 
 void SectionSeries::sample(const ParticleState& particles, const FluidModel& fluid, double timeS, double weightS)
 {

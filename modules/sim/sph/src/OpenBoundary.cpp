@@ -58,11 +58,15 @@ double OpenBoundaries::shape(std::size_t k, const Eigen::Vector3d& x) const
     return std::max(0.0, 1.0 - r2 / (m_equivalentRadius[k] * m_equivalentRadius[k]));
 }
 
+double rampFactor(double timeS, double rampS)
+{
+    return rampS > 0.0 && timeS < rampS ? 0.5 * (1.0 - std::cos(std::numbers::pi * timeS / rampS)) : 1.0;
+}
+
 double OpenBoundaries::prescribedFlowRate(std::size_t k, double timeS) const
 {
     const OpenBoundary& b = m_boundaries[k];
-    const double ramp = b.rampS > 0.0 && timeS < b.rampS ? 0.5 * (1.0 - std::cos(std::numbers::pi * timeS / b.rampS)) : 1.0;
-    return b.flowRateM3S * ramp * b.waveform.factorAt(timeS);
+    return b.flowRateM3S * rampFactor(timeS, b.rampS) * b.waveform.factorAt(timeS);
 }
 
 double OpenBoundaries::prescribedPressure(std::size_t k, double timeS, double flowRate) const

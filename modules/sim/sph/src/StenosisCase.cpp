@@ -74,8 +74,7 @@ StenosisPipe StenosisPipe::pulsatile(double periodS, double amplitude) const
 
 double StenosisPipe::inflowFactor(double timeS) const
 {
-    const double ramp = rampS > 0.0 && timeS < rampS ? 0.5 * (1.0 - std::cos(std::numbers::pi * timeS / rampS)) : 1.0;
-    return ramp * inflowWaveform.factorAt(timeS);
+    return rampFactor(timeS, rampS) * inflowWaveform.factorAt(timeS);
 }
 
 double StenosisPipe::womersleyNumber() const

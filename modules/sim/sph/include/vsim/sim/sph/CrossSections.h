@@ -49,6 +49,11 @@ struct PhaseWindow
 /// The section's flow from the fluid particles (buffers and walls left out).
 SectionFlow sectionFlow(const ParticleState& particles, const FluidModel& fluid, const CrossSection& section);
 
+/// sum += weight x flow over the averaged quantities (the particles: the larger count).
+void addWeighted(SectionFlow& sum, const SectionFlow& flow, double weight);
+/// The sums (`sections` of them) divided by their total weight; empty flows when the weight is 0.
+std::vector<SectionFlow> averaged(std::vector<SectionFlow> sums, std::size_t sections, double weight);
+
 /// Time averages of sections' flows.
 class SectionSeries
 {

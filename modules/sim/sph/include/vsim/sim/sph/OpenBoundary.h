@@ -40,6 +40,9 @@ struct Waveform
     double period() const { return points.empty() ? 0.0 : points.back().first; }
 };
 
+/// The inflow's rise from rest over `rampS` (s): (1 - cos(pi t / ramp)) / 2, then 1 (no ramp: 1).
+double rampFactor(double timeS, double rampS);
+
 struct OpenBoundary
 {
     enum class Prescribed { Velocity, Pressure };
