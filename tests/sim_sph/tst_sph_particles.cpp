@@ -253,6 +253,11 @@ private slots:
         QCOMPARE(fast.wallRepulsion, 0.01);
         QCOMPARE(stenosisPipeParameters(fast).get("wall_repulsion"), 0.01);
         QVERIFY(std::abs(fast.soundSpeedMS - pipe.soundSpeedMS * 0.207 / 0.05) < 1e-12);
+        // The upper end, upstream Re 500 (throat 1000): its Courant number is one the solver takes.
+        const StenosisPipe re500 = pipe.atFlow(1.032, 8.0);
+        QVERIFY(std::abs(re500.throatReynolds() / 2.0 - 500.0) < 1.0);
+        QVERIFY(re500.cfl < 0.01);
+        QCOMPARE(stenosisPipeParameters(re500).get("cfl"), re500.cfl);
         const StenosisPipe same = pipe.atFlow(0.05, 5.6);
         QCOMPARE(same.cfl, pipe.cfl);
         QCOMPARE(same.wallRepulsion, 0.0);
