@@ -2,6 +2,7 @@
 
 #include "vsim/core/DicomUid.h"
 #include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 
 #include <QSettings>
 #include <QtGlobal>
@@ -60,6 +61,11 @@ void savePacsNodes(const QList<PacsNodeEntry>& nodes)
         settings.setValue("tls_private_key", QString::fromStdString(entry.node.tls.privateKey));
     }
     settings.endArray();
+}
+
+QString nodeText(const dicom::PacsNode& node)
+{
+    return QString::fromStdString(storedTextForPeople(dicom::describe(node)));
 }
 
 QString savedUidRoot()

@@ -17,6 +17,9 @@ struct PacsNodeEntry
     dicom::PacsNode node;
 };
 
+/// The node as people read it ("ORTHANC auf 127.0.0.1:4242" in German).
+QString nodeText(const dicom::PacsNode& node);
+
 /// The saved nodes, in the order saved.
 QList<PacsNodeEntry> loadPacsNodes();
 /// Replaces the saved nodes.
