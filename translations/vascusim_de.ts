@@ -4197,6 +4197,10 @@
         <source>a pulsatile inflow needs a period &gt; 0 s and an amplitude in [0, 1), not %1 s and %2</source>
         <translation>ein pulsierender Einstrom braucht eine Periode &gt; 0 s und eine Amplitude in [0, 1), nicht %1 s und %2</translation>
     </message>
+    <message>
+        <source>the CUDA SPH backend runs no Finite Particle Method yet: run this case on the CPU (--backend cpu) or set fpm 0</source>
+        <translation>das CUDA-SPH-Backend rechnet noch keine Finite-Partikel-Methode: rechnen Sie diesen Fall auf der CPU (--backend cpu) oder setzen Sie fpm 0</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5695,6 +5699,14 @@
     <message>
         <source>1 (the clinical analysis): quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 45 s for 30,000 with a thrombus layer, 85 s for the demo&apos;s 31,000 around a wide sac); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible; linear tets lock in bending and near incompressibility).</source>
         <translation>1 (die klinische Analyse): quadratische (10-Knoten-)Tetraeder mit der hyperelastischen AAA-Wand nach Raghavan &amp; Vorp 2000 (nahezu inkompressibel) und dem Thrombus nach Wang 2001, wo das Wandnetz einen hat, statisches Gleichgewicht in Laststufen mit dem Newton-Verfahren (CPU; auf 2 Kernen etwa 20 s für 15.000 Tetraeder, 45 s für 30.000 mit Thrombusschicht, 85 s für die 31.000 der Demo um einen weiten Sack); 0: das Gesetz der Gruppe Material auf linearen Tetraedern, ein gedämpfter Lastpfad, dann das Gleichgewicht (GPU-Pfad möglich; lineare Tetraeder versteifen bei Biegung und nahezu Inkompressibilität).</translation>
+    </message>
+    <message>
+        <source>Finite Particle Method</source>
+        <translation>Finite-Partikel-Methode</translation>
+    </message>
+    <message>
+        <source>1: the density rate from the velocity&apos;s divergence and the density diffusion&apos;s gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums (CPU only)</source>
+        <translation>1: die Dichteänderung aus der Divergenz der Geschwindigkeit und der Gradient der Dichtediffusion nach der Finite-Partikel-Methode erster Ordnung (Dissertation Gl. 5.17), exakt für lineare Felder, auch wo Wände oder eine freie Oberfläche den Kern abschneiden; 0: die SPH-Summen (nur CPU)</translation>
     </message>
 </context>
 <context>

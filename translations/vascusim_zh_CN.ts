@@ -4197,6 +4197,10 @@
         <source>a pulsatile inflow needs a period &gt; 0 s and an amplitude in [0, 1), not %1 s and %2</source>
         <translation>脉动入流需要周期 &gt; 0 s 且振幅在 [0, 1) 内，而不是 %1 s 和 %2</translation>
     </message>
+    <message>
+        <source>the CUDA SPH backend runs no Finite Particle Method yet: run this case on the CPU (--backend cpu) or set fpm 0</source>
+        <translation>CUDA SPH 后端尚不支持有限粒子法：请在 CPU 上运行此算例（--backend cpu）或设置 fpm 0</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5695,6 +5699,14 @@
     <message>
         <source>1 (the clinical analysis): quadratic (10-node) tets with the Raghavan &amp; Vorp 2000 hyperelastic AAA wall (nearly incompressible) and the Wang 2001 thrombus where the wall mesh has one, static equilibrium by load increments and Newton&apos;s method (CPU; on 2 cores about 20 s for 15,000 tets, 45 s for 30,000 with a thrombus layer, 85 s for the demo&apos;s 31,000 around a wide sac); 0: the Material group&apos;s law on linear tets, a damped load path then the equilibrium (GPU path possible; linear tets lock in bending and near incompressibility).</source>
         <translation>1（临床分析）：二次（10 节点）四面体，采用 Raghavan &amp; Vorp 2000 超弹性 AAA 管壁（近乎不可压缩），管壁网格含血栓时采用 Wang 2001 血栓模型，按载荷增量以牛顿法求静力平衡（CPU；在 2 核上 1.5 万个四面体约 20 秒，含血栓层的 3 万个约 45 秒，演示病例宽瘤囊周围的 3.1 万个约 85 秒）；0：材料组的本构律作用于线性四面体，先经阻尼加载路径，再求平衡（可用 GPU；线性四面体在弯曲和近乎不可压缩时会锁死）。</translation>
+    </message>
+    <message>
+        <source>Finite Particle Method</source>
+        <translation>有限粒子法</translation>
+    </message>
+    <message>
+        <source>1: the density rate from the velocity&apos;s divergence and the density diffusion&apos;s gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums (CPU only)</source>
+        <translation>1：密度变化率由速度散度、密度扩散项的梯度由一阶有限粒子法（论文式 5.17）计算，在壁面或自由表面截断核函数处对线性场仍精确；0：SPH 求和（仅 CPU）</translation>
     </message>
 </context>
 <context>

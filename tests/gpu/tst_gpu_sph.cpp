@@ -32,13 +32,15 @@ using namespace vsim::sim::sph;
 
 namespace {
 
-void initializeDamBreak(SphSolver& solver, double spacingMm, double absorptionMm = 0.0, bool tension = true)
+void initializeDamBreak(SphSolver& solver, double spacingMm, double absorptionMm = 0.0, bool tension = true,
+                        bool fpm = false)
 {
     SimulationInput input;
     input.data["particles"] = damBreakParticles(spacingMm);
     ParameterSet parameters = damBreakParameters(spacingMm);
     parameters.set("absorption_distance_mm", absorptionMm);
     parameters.set("fluid_tension", tension ? 1.0 : 0.0);
+    parameters.set("fpm", fpm ? 1.0 : 0.0);
     solver.initialize(input, parameters);
 }
 
@@ -389,6 +391,9 @@ private slots:
         SphSolver solver; // tracer absorption: the CPU's alone (open boundaries run on the GPU now)
         initializeDamBreak(solver, 80.0, 1.0);
         QVERIFY_THROWS_EXCEPTION(Error, cuda::CudaSph{solver});
+        SphSolver withFpm; // the Finite Particle Method's rates: the CPU's alone
+        initializeDamBreak(withFpm, 80.0, 0.0, true, true);
+        QVERIFY_THROWS_EXCEPTION(Error, cuda::CudaSph{withFpm});
     }
 };
 

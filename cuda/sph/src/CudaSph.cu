@@ -65,6 +65,9 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
                     "CPU (--backend cpu)");
     const sim::sph::ParticleState& p = solver.particles();
     const sim::sph::FluidModel& fluid = solver.fluid();
+    if (fluid.finiteParticleMethod)
+        throw Error("the CUDA SPH backend runs no Finite Particle Method yet: run this case on the CPU (--backend "
+                    "cpu) or set fpm 0");
     const double h = solver.kernel().smoothingLength();
     sph::SphParams params{};
     params.h = float(h), params.invH = float(1.0 / h);

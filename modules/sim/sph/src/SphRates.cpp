@@ -1,5 +1,7 @@
 #include "vsim/sim/sph/SphRates.h"
 
+#include "vsim/sim/sph/FiniteParticleMethod.h"
+
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -55,15 +57,17 @@ Eigen::Vector3d viscousAcceleration(const ParticleState& particles, const FluidM
 }
 
 /// What the main pass needs from a fluid particle's neighbourhood first: G_i (the delta-SPH term's correction,
-/// when it is on) and the distance to the nearest wall surface, min over wall neighbours of |x_ij| - depth_j
-/// (infinite when none has a known depth). See SphRates.h.
+/// when it is on), the distance to the nearest wall surface, min over wall neighbours of |x_ij| - depth_j
+/// (infinite when none has a known depth), and with the Finite Particle Method tr(grad v_i). See SphRates.h.
 void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
                         const FluidModel& fluid, bool densityGradients, SphRates& rates)
 {
     const int n = int(particles.size());
+    const bool fpm = fluid.finiteParticleMethod;
     rates.densityGradient.assign(std::size_t(n), Eigen::Vector3d::Zero());
     rates.wallDistance.assign(std::size_t(n), INFINITY);
     rates.guardedWallDistance.assign(std::size_t(n), INFINITY);
+    rates.velocityDivergence.assign(fpm ? std::size_t(n) : 0u, NAN);
 #pragma omp parallel for schedule(dynamic, 256)
     for (int i = 0; i < n; ++i)
     {
@@ -74,8 +78,22 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
         double wallDistance = INFINITY, guardedWallDistance = INFINITY;
         const double relativeI = relativeDensity(particles, fluid, si);
+        // With FPM: i itself first (rij = 0), then each neighbour.
+        FpmFields<3> velocity;
+        FpmFields<1> density;
+        if (fpm)
+        {
+            const double volumeI = particles.mass[si] / particles.density[si], w0 = kernel.value(0.0);
+            velocity.add(Eigen::Vector3d::Zero(), w0, Eigen::Vector3d::Zero(), volumeI, particles.velocity[si]);
+            density.add(Eigen::Vector3d::Zero(), w0, Eigen::Vector3d::Zero(), volumeI,
+                        FpmFields<1>::Values(relativeI));
+        }
         grid.forEachNeighbour(particles.position, i, [&](int j, const Eigen::Vector3d& rij, double r) {
             const std::size_t sj = std::size_t(j);
+            const double volume = particles.mass[sj] / particles.density[sj];
+            const Eigen::Vector3d gradW = fpm || densityGradients ? kernel.gradient(rij, r) : Eigen::Vector3d::Zero();
+            if (fpm)
+                velocity.add(rij, kernel.value(r), gradW, volume, particles.velocity[sj]);
             if (particles.wall[sj])
             {
                 if (particles.wallDepth[sj] >= 0.0)
@@ -88,13 +106,24 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
             }
             if (!densityGradients)
                 return;
-            const Eigen::Vector3d gradW = kernel.gradient(rij, r);
-            const double volume = particles.mass[sj] / particles.density[sj];
+            if (fpm)
+            {
+                density.add(rij, kernel.value(r), gradW, volume, FpmFields<1>::Values(relativeDensity(particles, fluid, sj)));
+                return;
+            }
             moment.noalias() -= volume * rij * gradW.transpose(); // (x_j - x_i) (x) grad_i W_ij
             sum += volume * (relativeDensity(particles, fluid, sj) - relativeI) * gradW;
         });
         rates.wallDistance[si] = wallDistance;
         rates.guardedWallDistance[si] = guardedWallDistance;
+        if (fpm)
+        {
+            if (const auto solved = velocity.solve())
+                rates.velocityDivergence[si] = (*solved)(1, 0) + (*solved)(2, 1) + (*solved)(3, 2);
+            if (const auto solved = density.solve(); solved && densityGradients)
+                rates.densityGradient[si] = solved->col(0).tail<3>();
+            continue;
+        }
         const Eigen::Matrix3d transposed = moment.transpose();
         // A particle with too few fluid neighbours around it (a droplet, a jet's tip) keeps G = 0: plain Molteni.
         if (densityGradients && std::abs(transposed.determinant()) > 1e-3)
@@ -109,13 +138,14 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
 {
     const int n = int(particles.size());
     const bool wallDepths = std::any_of(particles.wallDepth.begin(), particles.wallDepth.end(), [](double d) { return d >= 0.0; });
-    if (fluid.densityDiffusion > 0.0 || wallDepths)
+    if (fluid.densityDiffusion > 0.0 || wallDepths || fluid.finiteParticleMethod)
         fluidNeighbourhood(particles, grid, kernel, fluid, fluid.densityDiffusion > 0.0, rates);
     else
     {
         rates.densityGradient.assign(std::size_t(n), Eigen::Vector3d::Zero());
         rates.wallDistance.assign(std::size_t(n), INFINITY);
         rates.guardedWallDistance.assign(std::size_t(n), INFINITY);
+        rates.velocityDivergence.clear();
     }
     rates.acceleration.assign(std::size_t(n), Eigen::Vector3d::Zero());
     rates.densityRate.assign(std::size_t(n), 0.0);
@@ -137,7 +167,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         const double restI = fluid.mixtureDensity(particles.voidFraction[si]), relativeI = rhoI / restI;
         const double muI = fluid.mixtureViscosity(particles.voidFraction[si]);
         auto relativeJ = [&](std::size_t sj) { return relativeDensity(particles, fluid, sj); };
-        double densityRate = 0.0;
+        double continuity = 0.0, diffusionRate = 0.0;
         Eigen::Vector3d force = Eigen::Vector3d::Zero(), crowding = Eigen::Vector3d::Zero();
         Eigen::Matrix3d velocityGradient = Eigen::Matrix3d::Zero(); // d v_k / d x_l (the shift's correction)
         grid.forEachNeighbour(
@@ -148,12 +178,12 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                 const Eigen::Vector3d gradW = kernel.gradient(rij, r);
                 const Eigen::Vector3d vij = vi - particles.velocity[sj];
                 const double mJ = particles.mass[sj], rhoJ = particles.density[sj];
-                densityRate += rhoI * (mJ / rhoJ) * vij.dot(gradW); // volume form: mixtures of other rest densities
+                continuity += rhoI * (mJ / rhoJ) * vij.dot(gradW); // volume form: mixtures of other rest densities
                 if (particles.isFluid(sj) && diffusion > 0.0)
                 {
                     const Eigen::Vector3d psi = 2.0 * (relativeJ(sj) - relativeI) / (r * r) * (-rij) -
                                                 (rates.densityGradient[si] + rates.densityGradient[sj]);
-                    densityRate += diffusion * restI * (mJ / rhoJ) * psi.dot(gradW);
+                    diffusionRate += diffusion * restI * (mJ / rhoJ) * psi.dot(gradW);
                 }
                 const double rDotGrad = rij.dot(gradW);
                 force -= mJ * (pI / (rhoI * rhoI) + pressure[sj] / (rhoJ * rhoJ)) * gradW;
@@ -172,7 +202,9 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                 largestViscousRate =
                     std::max(largestViscousRate, std::abs(h * vij.dot(rij) / (r * r + eta2)));
             });
-        rates.densityRate[si] = densityRate;
+        // With FPM the continuity equation's divergence is the FPM one where its system was regular (SphRates.h).
+        const bool fpmDivergence = !rates.velocityDivergence.empty() && std::isfinite(rates.velocityDivergence[si]);
+        rates.densityRate[si] = (fpmDivergence ? -rhoI * rates.velocityDivergence[si] : continuity) + diffusionRate;
         rates.acceleration[si] = force + external;
         if (shifting)
         {

@@ -57,6 +57,11 @@ std::vector<ParameterSpec> sphParameters()
          "1: with particle shifting, a shifted particle's velocity follows it to where the shift moves it, "
          "v + dr . grad v (Lind et al. 2012's Taylor correction); 0: the particle keeps its velocity",
          K::Integer},
+        {"fpm", "Finite Particle Method", "", 0, 0, 1, "Numerics",
+         "1: the density rate from the velocity's divergence and the density diffusion's gradient by the first-order "
+         "Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the "
+         "kernel; 0: the SPH sums (CPU only)",
+         K::Integer},
         // down to 0.001: a stenosis's jet at throat Re 1000 takes 0.0048 (StenosisPipe::atFlow)
         {"cfl", "Courant number", "", 0.2, 0.001, 1.0, "Numerics", "the adaptive step's safety factor", K::Real},
         {"gravity_x_m_s2", "Gravity x", "m/s^2", 0.0, -100.0, 100.0, "Fluid", "patient frame (LPS)", K::Real},
@@ -121,6 +126,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_fluid.particleShifting = parameters.get("particle_shifting");
     m_fluid.shiftingReciprocalWeight = 1.0 / m_kernel->value(spacing);
     m_fluid.shiftCorrection = parameters.get("shift_correction") > 0.5;
+    m_fluid.finiteParticleMethod = parameters.get("fpm") > 0.5;
     m_fluid.referencePressurePa = parameters.get("reference_pressure_pa");
     m_fluid.wallRepulsion = parameters.get("wall_repulsion") * m_fluid.soundSpeed * m_fluid.soundSpeed;
     m_fluid.wallRepulsionRange = kWallRepulsionReach * spacing;

@@ -31,6 +31,10 @@ struct FluidModel
     /// The shift's convective correction (SphRates.h): the velocity follows the particle to where the shift moves
     /// it, a_i += (s_i . grad) v_i (Lind et al. 2012's Taylor correction, in the rate form).
     bool shiftCorrection = false;
+    /// The Finite Particle Method's first-order correction (thesis ch. 5.2, eq. 5.17 "with f = v"; SphRates.h):
+    /// the continuity equation's velocity divergence and the delta-SPH term's density gradient from FPM systems
+    /// instead of the SPH sums.
+    bool finiteParticleMethod = false;
     /// R of the shift's anti-clumping term R (W_ij / W(spacing))^4 (Lind et al. 2012; Monaghan 2000).
     static constexpr double kAntiClumping = 0.2;
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero(); ///< m/s^2

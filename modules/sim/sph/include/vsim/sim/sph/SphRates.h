@@ -37,6 +37,15 @@
 //      taken with the velocity over the same step; the arbitrary Lagrangian-Eulerian form of Sun et al. 2017's
 //      delta+-SPH). Not at a free surface, whose truncated support would push particles out (SphSolver refuses the
 //      two together).
+//  the Finite Particle Method (an option, FluidModel::finiteParticleMethod; thesis ch. 5.2: "the change of fluid
+//      density can be derived by computing the first-order derivative of velocity using the FPM described in
+//      Equation (5.17)"): drho_i/dt = -rho_i tr(grad v_i) + D_i, grad v_i from the FPM system (FiniteParticleMethod.h)
+//      over i itself and every neighbour (the walls at rest: v = 0; a buffer particle with its imposed velocity),
+//      and G_i the FPM gradient of rho / rho0 over i and its neighbours that are not walls (the sum's set). Both
+//      are exact for linear fields whatever the particles' arrangement, also where a free surface or a wall cuts
+//      the support, where the SPH sums are not (tst_sph_fpm_rates). Where a system is singular (a particle with too
+//      few neighbours), that particle keeps the SPH sum. Not momentum-conserving in the continuity equation (the
+//      SPH sum's pairwise antisymmetry is given up), as in the thesis. CPU only (the CUDA backend refuses it).
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
@@ -57,6 +66,9 @@ struct SphRates
     std::vector<Eigen::Vector3d> densityGradient;
     /// d_i, m (fluid particles; infinite without a wall neighbour of known depth).
     std::vector<double> wallDistance;
+    /// With the Finite Particle Method: tr(grad v_i) by FPM, 1/s (fluid particles; NaN where the system is singular
+    /// and the SPH sum stands); empty without it.
+    std::vector<double> velocityDivergence;
     /// The same over the wall particles with the backstop (ParticleState::backstop) and against their guard
     /// depths (ParticleState::guardDepth), m: what the through-the-wall guard reads (an open end's buffer hands
     /// fluid over arbitrarily close to the walls around it).
