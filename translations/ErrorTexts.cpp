@@ -120,7 +120,6 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "away from the walls"),
     QT_TRANSLATE_NOOP("vsim::Error", "no CUDA device: run the SPH solver on the CPU (--backend cpu)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the CUDA SPH backend runs no periodic axes or tracer absorption yet: run this case on the CPU (--backend cpu)"),
-    QT_TRANSLATE_NOOP("vsim::Error", "the CUDA SPH backend runs no Finite Particle Method yet: run this case on the CPU (--backend cpu) or set fpm 0"),
     QT_TRANSLATE_NOOP("vsim::Error", "the open boundaries let in more particles than the GPU's arrays hold (%1)"),
     QT_TRANSLATE_NOOP("vsim::Error", "the saved rates do not fit the particles: the checkpoint is damaged"),
     QT_TRANSLATE_NOOP("vsim::Error", "the study has no artifact '%1'"),

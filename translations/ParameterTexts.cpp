@@ -261,7 +261,7 @@ static const char* const kParameterTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Parameters", "Shift correction"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "1: with particle shifting, a shifted particle's velocity follows it to where the shift moves it, v + dr . grad v (Lind et al. 2012's Taylor correction); 0: the particle keeps its velocity"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Finite Particle Method"),
-    QT_TRANSLATE_NOOP("vsim::Parameters", "1: the density rate from the velocity's divergence and the density diffusion's gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums (CPU only)"),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "1: the density rate from the velocity's divergence and the density diffusion's gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Courant number"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "the adaptive step's safety factor"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Gravity x"),

@@ -4197,10 +4197,6 @@
         <source>a pulsatile inflow needs a period &gt; 0 s and an amplitude in [0, 1), not %1 s and %2</source>
         <translation>ein pulsierender Einstrom braucht eine Periode &gt; 0 s und eine Amplitude in [0, 1), nicht %1 s und %2</translation>
     </message>
-    <message>
-        <source>the CUDA SPH backend runs no Finite Particle Method yet: run this case on the CPU (--backend cpu) or set fpm 0</source>
-        <translation>das CUDA-SPH-Backend rechnet noch keine Finite-Partikel-Methode: rechnen Sie diesen Fall auf der CPU (--backend cpu) oder setzen Sie fpm 0</translation>
-    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5705,8 +5701,8 @@
         <translation>Finite-Partikel-Methode</translation>
     </message>
     <message>
-        <source>1: the density rate from the velocity&apos;s divergence and the density diffusion&apos;s gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums (CPU only)</source>
-        <translation>1: die Dichteänderung aus der Divergenz der Geschwindigkeit und der Gradient der Dichtediffusion nach der Finite-Partikel-Methode erster Ordnung (Dissertation Gl. 5.17), exakt für lineare Felder, auch wo Wände oder eine freie Oberfläche den Kern abschneiden; 0: die SPH-Summen (nur CPU)</translation>
+        <source>1: the density rate from the velocity&apos;s divergence and the density diffusion&apos;s gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums</source>
+        <translation>1: die Dichteänderung aus der Divergenz der Geschwindigkeit und der Gradient der Dichtediffusion nach der Finite-Partikel-Methode erster Ordnung (Dissertation Gl. 5.17), exakt für lineare Felder, auch wo Wände oder eine freie Oberfläche den Kern abschneiden; 0: die SPH-Summen</translation>
     </message>
 </context>
 <context>

@@ -4197,10 +4197,6 @@
         <source>a pulsatile inflow needs a period &gt; 0 s and an amplitude in [0, 1), not %1 s and %2</source>
         <translation>脉动入流需要周期 &gt; 0 s 且振幅在 [0, 1) 内，而不是 %1 s 和 %2</translation>
     </message>
-    <message>
-        <source>the CUDA SPH backend runs no Finite Particle Method yet: run this case on the CPU (--backend cpu) or set fpm 0</source>
-        <translation>CUDA SPH 后端尚不支持有限粒子法：请在 CPU 上运行此算例（--backend cpu）或设置 fpm 0</translation>
-    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5705,8 +5701,8 @@
         <translation>有限粒子法</translation>
     </message>
     <message>
-        <source>1: the density rate from the velocity&apos;s divergence and the density diffusion&apos;s gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums (CPU only)</source>
-        <translation>1：密度变化率由速度散度、密度扩散项的梯度由一阶有限粒子法（论文式 5.17）计算，在壁面或自由表面截断核函数处对线性场仍精确；0：SPH 求和（仅 CPU）</translation>
+        <source>1: the density rate from the velocity&apos;s divergence and the density diffusion&apos;s gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums</source>
+        <translation>1：密度变化率由速度散度、密度扩散项的梯度由一阶有限粒子法（论文式 5.17）计算，在壁面或自由表面截断核函数处对线性场仍精确；0：SPH 求和</translation>
     </message>
 </context>
 <context>

@@ -1,7 +1,7 @@
 // The Finite Particle Method in the solver's rates (issue 18; FluidModel::finiteParticleMethod, SphRates.h): the
 // density rate of a linear flow with a linear density is exact at every particle of a jittered block, its free
 // surfaces and corners included, where the SPH sum is not; and the solver with FPM on follows the Taylor-Green
-// vortex's viscous decay as the SPH sums do. The GPU refuses the option (tests/gpu/tst_gpu_sph).
+// vortex's viscous decay as the SPH sums do. The GPU's FPM against this: tests/gpu/tst_gpu_sph.
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"

@@ -65,9 +65,6 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
                     "CPU (--backend cpu)");
     const sim::sph::ParticleState& p = solver.particles();
     const sim::sph::FluidModel& fluid = solver.fluid();
-    if (fluid.finiteParticleMethod)
-        throw Error("the CUDA SPH backend runs no Finite Particle Method yet: run this case on the CPU (--backend "
-                    "cpu) or set fpm 0");
     const double h = solver.kernel().smoothingLength();
     sph::SphParams params{};
     params.h = float(h), params.invH = float(1.0 / h);
@@ -80,6 +77,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     params.shiftingReciprocalWeight = float(fluid.shiftingReciprocalWeight);
     params.antiClumping = float(sim::sph::FluidModel::kAntiClumping);
     params.shiftCorrection = fluid.shiftCorrection ? 1 : 0;
+    params.fpm = fluid.finiteParticleMethod ? 1 : 0;
     params.soundSpeed = float(fluid.soundSpeed), params.gamma = float(fluid.gamma);
     params.restDensity = float(fluid.restDensity), params.gasDensity = float(fluid.gasDensity);
     params.viscosity = float(fluid.viscosity), params.gasViscosity = float(fluid.gasViscosity);
@@ -114,7 +112,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     const std::size_t buffered =
         std::size_t(std::count_if(p.boundary.begin(), p.boundary.end(), [](auto b) { return b != 0; }));
     const std::size_t capacity = settings.openBoundaries ? n + n / 10 + 2 * buffered : n;
-    m_device = std::make_unique<Device>(n, capacity, cells, fluid.particleShifting > 0.0);
+    m_device = std::make_unique<Device>(n, capacity, cells, fluid.particleShifting > 0.0, fluid.finiteParticleMethod);
     Device& d = *m_device;
     d.params = params, d.fluid = fluid, d.settings = settings;
     if (settings.openBoundaries)
@@ -297,7 +295,7 @@ std::size_t CudaSph::deviceBytes() const
     const Device& d = *m_device;
     return d.current.bytes() + d.other.bytes() + d.acceleration.bytes() + d.densityGradient.bytes() +
            d.derived.bytes() + d.shiftVelocity.bytes() + d.densityRate.bytes() + d.wallDistance.bytes() +
-           d.guardedWallDistance.bytes() + d.keys.bytes() + d.sortedKeys.bytes() + d.cellStart.bytes() +
+           d.guardedWallDistance.bytes() + d.velocityDivergence.bytes() + d.keys.bytes() + d.sortedKeys.bytes() + d.cellStart.bytes() +
            d.cellEnd.bytes() + d.cellFluid.bytes() + d.order.bytes() + d.sortedOrder.bytes() +
            d.byKind.bytes() + d.partitionScratch.bytes() + d.sortScratch.bytes();
 }

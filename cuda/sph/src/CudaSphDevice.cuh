@@ -88,6 +88,7 @@ struct CudaSph::Device
     sph::ParticleArrays current, other;
     Buffer<float4> acceleration, densityGradient, derived, shiftVelocity;
     Buffer<float> densityRate, wallDistance, guardedWallDistance;
+    Buffer<float> velocityDivergence; ///< with FPM only (launchFpm)
     Buffer<unsigned> keys, sortedKeys, cellStart, cellEnd, cellFluid;
     Buffer<int> order, sortedOrder;
     Buffer<int> byKind, fluidSelected; // fluid indices first, then the others' (launchPartition)
@@ -103,11 +104,12 @@ struct CudaSph::Device
     sph::OpenBoundaryTallies lastTallies{};
     double time = 0.0, stepS = 0.0;
 
-    Device(std::size_t count, std::size_t capacityCount, std::size_t cellCount, bool shifting)
+    Device(std::size_t count, std::size_t capacityCount, std::size_t cellCount, bool shifting, bool fpm)
         : n(int(count)), capacity(int(capacityCount)), current(capacityCount), other(capacityCount),
           acceleration(capacityCount), densityGradient(capacityCount), derived(capacityCount),
           shiftVelocity(shifting ? capacityCount : 0),
           densityRate(capacityCount), wallDistance(capacityCount), guardedWallDistance(capacityCount),
+          velocityDivergence(fpm ? capacityCount : 0),
           keys(capacityCount), sortedKeys(capacityCount), cellStart(cellCount), cellEnd(cellCount),
           cellFluid(cellCount), order(capacityCount), sortedOrder(capacityCount), byKind(capacityCount),
           fluidSelected(1), keyBits(sph::bitsFor(cellCount + 1)), cells(cellCount), reductions(1), tallies(1)
@@ -122,7 +124,7 @@ struct CudaSph::Device
     sph::SphRatesArrays rates() const
     {
         return {acceleration.data, densityGradient.data, derived.data, densityRate.data, wallDistance.data,
-                shiftVelocity.data, guardedWallDistance.data};
+                shiftVelocity.data, guardedWallDistance.data, velocityDivergence.data};
     }
     bool open() const { return boundaryArgs.count > 0; }
 
@@ -198,6 +200,8 @@ struct CudaSph::Device
         sph::launchPressures(params, current.pointers(), rates(), n);
         sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data, cellEnd.data, fluidList,
                                  fluidCount);
+        if (params.fpm)
+            sph::launchFpm(params, current.pointers(), rates(), cellStart.data, cellEnd.data, fluidList, fluidCount);
         sph::launchRates(params, current.pointers(), rates(), cellStart.data, cellEnd.data, e, fluidList,
                          fluidCount, reductions.data);
     }

@@ -137,7 +137,7 @@ __global__ void neighbourhoodKernel(SphParams p, SphArrays a, SphRatesArrays rat
     float m00 = 0, m01 = 0, m02 = 0, m11 = 0, m12 = 0, m22 = 0;
     float sum[3] = {0, 0, 0};
     float wallDistance = INFINITY;
-    const bool gradients = p.diffusion > 0.0f;
+    const bool gradients = p.diffusion > 0.0f && !p.fpm; // with FPM, G is launchFpm's
     forEachNeighbour(p, a, cellStart, cellEnd, i,
                      [&](int j, float4 xj, float rx, float ry, float rz, float r, float)
                      {
@@ -257,7 +257,10 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                              viscousX += viscous * wx, viscousY += viscous * wy, viscousZ += viscous * wz;
                              viscousRate = fmaxf(viscousRate, fabsf(p.h * vr * damped));
                          });
-        rates.densityRate[i] = rhoI * continuity + p.diffusion * restI * diffusion;
+        // With FPM the continuity equation's divergence is the FPM one where its system was regular (SphRates.h).
+        const float fpmDivergence = p.fpm ? rates.velocityDivergence[i] : NAN;
+        rates.densityRate[i] =
+            (isfinite(fpmDivergence) ? -rhoI * fpmDivergence : rhoI * continuity) + p.diffusion * restI * diffusion;
         fx += inverseRhoI * viscousX + ex;
         fy += inverseRhoI * viscousY + ey;
         fz += inverseRhoI * viscousZ + ez;

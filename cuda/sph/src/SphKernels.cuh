@@ -38,6 +38,9 @@ struct SphParams
     /// moved: placed after antiClumping it left their PTX the same but for the offsets, and the dam break measured
     /// 3.45e8 particle-steps/s against 3.59e8 (RESULTS.md, 2026-12-02); here their PTX is the measured build's.
     int shiftCorrection;
+    /// 1: the Finite Particle Method's density rate and density gradient (FluidModel::finiteParticleMethod;
+    /// launchFpm). After shiftCorrection for the same reason.
+    int fpm;
 };
 
 /// The number of the row of cells (y, z): rows are numbered tile by tile (tile x tile rows, y fastest
@@ -79,6 +82,7 @@ struct SphRatesArrays
     float4* shiftVelocity; ///< s_i (m/s) where particle shifting is on (SphRates.h)
     float* guardedWallDistance; ///< over the walls with the backstop where negative (infinite elsewhere): the
                                 ///< through-the-wall guard's (SphRates.h)
+    float* velocityDivergence;  ///< tr(grad v_i) by FPM (1/s; NaN where its system is singular); null without FPM
 };
 
 /// Maxima over a step (non-negative floats as their bit patterns, so that atomicMax on unsigned orders them),
@@ -115,6 +119,13 @@ void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesAr
 void launchPressures(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, int n);
 void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
                          const unsigned* cellStart, const unsigned* cellEnd, const int* fluid, int count);
+/// With the Finite Particle Method (SphRates.h, after launchNeighbourhood, which then leaves G at 0): each fluid
+/// particle's velocity divergence from the FPM system over itself and every neighbour, and G from the FPM system of
+/// rho / rho0 over itself and its neighbours that are not walls (where that system is regular and the delta-SPH
+/// term is on). Each system in units of h (test functions W and h grad W, offsets (x_j - x_i) / h), so that its
+/// entries are of one order in single precision.
+void launchFpm(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, const unsigned* cellStart,
+               const unsigned* cellEnd, const int* fluid, int count);
 void launchRates(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
                  const unsigned* cellStart, const unsigned* cellEnd, const float external[3],
                  const int* fluid, int count, SphReductions* r);

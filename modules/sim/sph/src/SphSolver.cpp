@@ -60,7 +60,7 @@ std::vector<ParameterSpec> sphParameters()
         {"fpm", "Finite Particle Method", "", 0, 0, 1, "Numerics",
          "1: the density rate from the velocity's divergence and the density diffusion's gradient by the first-order "
          "Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the "
-         "kernel; 0: the SPH sums (CPU only)",
+         "kernel; 0: the SPH sums",
          K::Integer},
         // down to 0.001: a stenosis's jet at throat Re 1000 takes 0.0048 (StenosisPipe::atFlow)
         {"cfl", "Courant number", "", 0.2, 0.001, 1.0, "Numerics", "the adaptive step's safety factor", K::Real},

@@ -45,7 +45,7 @@
 //      are exact for linear fields whatever the particles' arrangement, also where a free surface or a wall cuts
 //      the support, where the SPH sums are not (tst_sph_fpm_rates). Where a system is singular (a particle with too
 //      few neighbours), that particle keeps the SPH sum. Not momentum-conserving in the continuity equation (the
-//      SPH sum's pairwise antisymmetry is given up), as in the thesis. CPU only (the CUDA backend refuses it).
+//      SPH sum's pairwise antisymmetry is given up), as in the thesis. The CUDA backend's launchFpm runs the same.
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
