@@ -90,10 +90,14 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
         }
         grid.forEachNeighbour(particles.position, i, [&](int j, const Eigen::Vector3d& rij, double r) {
             const std::size_t sj = std::size_t(j);
-            const double volume = particles.mass[sj] / particles.density[sj];
-            const Eigen::Vector3d gradW = fpm || densityGradients ? kernel.gradient(rij, r) : Eigen::Vector3d::Zero();
-            if (fpm)
-                velocity.add(rij, kernel.value(r), gradW, volume, particles.velocity[sj]);
+            if (fpm) // the velocity over every neighbour (a wall particle stands still), rho / rho0 over the others
+            {
+                const double volume = particles.mass[sj] / particles.density[sj], w = kernel.value(r);
+                const Eigen::Vector3d gradW = kernel.gradient(rij, r);
+                velocity.add(rij, w, gradW, volume, particles.velocity[sj]);
+                if (!particles.wall[sj] && densityGradients)
+                    density.add(rij, w, gradW, volume, FpmFields<1>::Values(relativeDensity(particles, fluid, sj)));
+            }
             if (particles.wall[sj])
             {
                 if (particles.wallDepth[sj] >= 0.0)
@@ -104,13 +108,10 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
                 }
                 return;
             }
-            if (!densityGradients)
+            if (!densityGradients || fpm)
                 return;
-            if (fpm)
-            {
-                density.add(rij, kernel.value(r), gradW, volume, FpmFields<1>::Values(relativeDensity(particles, fluid, sj)));
-                return;
-            }
+            const Eigen::Vector3d gradW = kernel.gradient(rij, r);
+            const double volume = particles.mass[sj] / particles.density[sj];
             moment.noalias() -= volume * rij * gradW.transpose(); // (x_j - x_i) (x) grad_i W_ij
             sum += volume * (relativeDensity(particles, fluid, sj) - relativeI) * gradW;
         });
