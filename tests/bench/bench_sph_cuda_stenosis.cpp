@@ -227,7 +227,8 @@ try
         {"sampled_every_steps", every}, {"inflow_kg", inflow}, {"mean_speed_m_s", pipe.meanSpeedMS},
         {"length_mm", pipe.lengthMm}, {"averaged_s", {pipe.averageFromS, pipe.endTimeS}},
         {"particle_shifting", parameters.get("particle_shifting")}, {"cfl", parameters.get("cfl")},
-        {"wall_repulsion", parameters.get("wall_repulsion")},
+        {"wall_repulsion", parameters.get("wall_repulsion")}, {"shift_correction", parameters.get("shift_correction")},
+        {"fpm", parameters.get("fpm")},
         {"outflow_kg", double(gpu.massLedger().totalOutflow())}, {"calls", earlierCalls + 1}};
     if (!pipe.systole.empty())
     {
