@@ -12,6 +12,8 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 namespace vsim::sim::sph {
@@ -71,6 +73,7 @@ public:
     /// Adds neighbour j (or particle i itself, with rij = 0): rij = x_i - x_j (m), its volume V_j (m^3), its
     /// value f_j.
     void add(const Eigen::Vector3d& rij, double volumeM3, double value);
+    /// The corrected value and gradient; nothing where FpmFields::solve gives nothing.
     std::optional<CorrectedField> solve() const;
 
 private:
