@@ -2,13 +2,16 @@
 // on the 3D dam break; DualSPHysics 5.4 measured 3.4-3.6e8 on an H100, single precision): the dam break of
 // bench_sph_cpu (DamBreak.h, SPHERIC 2 without its obstacle) at about `particles` particles, set up by the
 // CPU solver, then `steps` GPU steps after 20 of warm-up; with `cpuSteps` > 0 the CPU solver (all OpenMP
-// threads) steps the same particles that many times beside it, for the same machine's CPU figure.
+// threads) steps the same particles that many times beside it, for the same machine's CPU figure; with
+// `phaseSteps` > 0 it then prints where that many more steps' time went (GpuStepPhases.h).
 //
-//   bench_sph_cuda [particles=1000000] [steps=200] [cpuSteps=0]
+//   bench_sph_cuda [particles=1000000] [steps=200] [cpuSteps=0] [phaseSteps=0]
 //
 // Prints one JSON object: counts, spacing, h = 2 spacings, single precision on the GPU (double on the CPU),
 // the device, seconds per step and particle-steps per second (every particle, wall ones included, as
 // DualSPHysics counts them), the simulated time and the largest density variation at the end.
+
+#include "GpuStepPhases.h"
 
 #include "vsim/cuda_common/DeviceInfo.h"
 #include "vsim/cuda_sph/CudaSph.h"
@@ -34,6 +37,7 @@ try
     const double wanted = argc > 1 ? std::stod(argv[1]) : 1e6;
     const int steps = argc > 2 ? std::stoi(argv[2]) : 200;
     const int cpuSteps = argc > 3 ? std::stoi(argv[3]) : 0;
+    const int phaseSteps = argc > 4 ? std::stoi(argv[4]) : 0;
     if (vsim::cuda::devices().empty())
     {
         std::printf("SKIP: no CUDA device\n");
@@ -85,6 +89,8 @@ try
         kSoundSpeedFactor * std::sqrt(9.81 * kDamBreakWaterHeightM), steps, gpuStep, n / gpuStep, gpu.timeS(),
         gpu.largestDensityVariation(), double(gpu.deviceBytes()) / 1048576.0, omp_get_max_threads(), cpuSteps,
         cpuStep, cpuStep > 0.0 ? n / cpuStep : 0.0);
+    if (phaseSteps > 0)
+        std::printf("%s\n", bench::gpuStepPhases(gpu, phaseSteps).dump().c_str());
     return 0;
 }
 catch (const std::exception& error)

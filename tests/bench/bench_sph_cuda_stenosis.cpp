@@ -7,7 +7,7 @@
 //
 //   bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] [mean speed m/s] [length mm]
 //                           [particle shifting A] [solver parameter=value]... [--checkpoint FILE]
-//                           [--stop-after SECONDS] [--period MS --amplitude A]
+//                           [--stop-after SECONDS] [--period MS --amplitude A] [--phases STEPS]
 //
 // --checkpoint goes on from FILE when it exists (SphCheckpoint.h: the particles, the time, the mass ledger, the
 // averages so far and this bench's own counters) and saves the run's end there; with --stop-after it saves the
@@ -24,8 +24,12 @@
 // whole cycle once settled, the systole over a tenth of it about the inflow's peak); the JSON then holds the
 // systolic sections too ("systolic_sections"), which bench_sph_openfoam --period --amplitude compares.
 //
+// --phases STEPS profiles instead of running to the end: from the start (or the checkpoint) STEPS steps untimed, then
+// STEPS with each phase of the step timed (GpuStepPhases.h); prints that JSON and saves nothing.
+//
 // Exit 0 with "SKIP" without a device, 1 when a guard stops the run, 3 when --stop-after saved it to go on.
 
+#include "GpuStepPhases.h"
 #include "StenosisJson.h"
 
 #include "vsim/core/Error.h"
@@ -91,6 +95,7 @@ try
     const std::string stopAfterText = takeOption(arguments, "--stop-after");
     const double stopAfterS = stopAfterText.empty() ? INFINITY : std::stod(stopAfterText);
     const std::string periodText = takeOption(arguments, "--period"), amplitudeText = takeOption(arguments, "--amplitude");
+    const std::string phasesText = takeOption(arguments, "--phases");
     if (periodText.empty() != amplitudeText.empty())
         throw Error("--period MS and --amplitude A go together (a pulsatile inflow)");
     if (!stopAfterText.empty() && checkpointFile.empty())
@@ -103,7 +108,8 @@ try
     {
         std::fprintf(stderr, "usage: bench_sph_cuda_stenosis <spacing mm> <out.json> [every] [sound speed m/s] "
                              "[mean speed m/s] [length mm] [particle shifting A] [solver parameter=value]... "
-                             "[--checkpoint FILE] [--stop-after SECONDS] [--period MS --amplitude A]\n");
+                             "[--checkpoint FILE] [--stop-after SECONDS] [--period MS --amplitude A] "
+                             "[--phases STEPS]\n");
         return 2;
     }
     if (vsim::cuda::devices().empty())
@@ -145,6 +151,11 @@ try
     WallLoadSeries wallLoads = solver.wallLoads();
     NeighbourGrid grid(solver.kernel().support());
     cuda::CudaSph gpu(solver);
+    if (!phasesText.empty())
+    {
+        std::printf("%s\n", bench::gpuStepPhases(gpu, std::stoi(phasesText)).dump().c_str());
+        return 0;
+    }
     const double endS = parameters.get("end_time_s");
     long steps = long(solver.metrics().at("steps"));
     double pending = counters["pending_s"], largestVariation = counters["largest_density_variation"],

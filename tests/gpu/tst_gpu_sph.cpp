@@ -24,6 +24,8 @@
 
 #include <QtTest>
 
+#include <chrono>
+
 #include <cmath>
 #include <filesystem>
 #include <unordered_map>
@@ -386,6 +388,34 @@ private slots:
         QVERIFY(evaluated.time <= 1e-4 && evaluated.inflow <= 1e-4);
         QVERIFY(exact.position <= 2e-5 && exact.velocity <= 1e-5 && exact.density <= 5e-7);
         QVERIFY(exact.time <= 1e-7 && exact.inflow <= 1e-5);
+    }
+
+    /// The phase profile (StepPhases.cuh) only waits: the same steps to the bit, and every phase of a closed
+    /// domain's step listed, their times adding up to no more than the run's.
+    void timingThePhasesChangesNothing()
+    {
+        if (vsim::cuda::devices().empty())
+            QSKIP("no CUDA device on this machine; run on the accelerator with the device tool");
+        SphSolver solver;
+        initializeDamBreak(solver, 80.0);
+        cuda::CudaSph plain(solver), timed(solver);
+        timed.timePhases(true);
+        const auto start = std::chrono::steady_clock::now();
+        for (int s = 0; s < 20; ++s)
+            QVERIFY(plain.step().empty() && timed.step().empty());
+        const double both = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const ParticleState a = plain.download(), b = timed.download();
+        QVERIFY(a.position == b.position && a.velocity == b.velocity && a.density == b.density);
+        double total = 0.0;
+        QStringList names;
+        for (const auto& [phase, seconds] : timed.phaseSeconds())
+            total += seconds, names << QString::fromStdString(phase);
+        qInfo() << "phases:" << names.join(", ") << "in" << total << "s of" << both << "s for both runs";
+        for (const char* phase : {"kick and drift", "cell keys", "radix sort", "gather", "cell ranges",
+                                  "partition by kind", "wall pressure", "pressures", "neighbourhood (G, wall distance)",
+                                  "rates", "kick", "reductions read back"})
+            QVERIFY2(names.contains(phase), phase);
+        QVERIFY(total > 0.0 && total <= both);
     }
 
     void refusesWhatItDoesNotRun()

@@ -161,17 +161,21 @@ CudaSph::~CudaSph() = default;
 std::string CudaSph::step()
 {
     Device& d = *m_device;
+    d.phases.lap("between steps (the caller's)");
     const double dt = d.stableStep();
     // What went wrong at the step's end time (SphSolver's guards, the same words).
     auto at = [&](const std::string& what) { return storedText(Pattern{"at t = %1 s %2", {numberText(d.time + dt), what}}); };
     d.resetReductions();
     sph::launchKickDrift(d.params, d.current.pointers(), d.rates(), float(dt), d.n);
+    d.phases.lap("kick and drift");
     if (const std::string full = d.exchangeAndSort(); !full.empty())
         return at(full);
     d.updateRates(d.time + dt);
     sph::launchKick(d.params, d.current.pointers(), d.rates(), float(dt), float(0.5 * d.settings.spacingM),
                     d.n, d.reductions.data);
+    d.phases.lap("kick");
     d.fetchReductions();
+    d.phases.lap("reductions read back");
     d.time += dt;
     d.stepS = dt;
     if (d.last.notFinite)
@@ -288,6 +292,16 @@ sim::sph::SphRates CudaSph::nextRates() const
 sim::sph::SphStepperFactory cudaSphStepperFactory()
 {
     return [](const sim::sph::SphSolver& solver) { return std::make_unique<CudaSph>(solver); };
+}
+
+void CudaSph::timePhases(bool on)
+{
+    m_device->phases.enable(on);
+}
+
+std::vector<std::pair<std::string, double>> CudaSph::phaseSeconds() const
+{
+    return m_device->phases.totals();
 }
 
 std::size_t CudaSph::deviceBytes() const

@@ -5,6 +5,7 @@
 // download and accessors. Single precision on the device; positions from the domain box's low corner.
 
 #include "SphKernels.cuh"
+#include "StepPhases.cuh"
 #include "vsim/core/Error.h"
 #include "vsim/core/Parameters.h"
 #include "vsim/core/StoredText.h"
@@ -103,6 +104,7 @@ struct CudaSph::Device
     sph::SphReductions last{};
     sph::OpenBoundaryTallies lastTallies{};
     double time = 0.0, stepS = 0.0;
+    sph::StepPhases phases; ///< off unless asked for (CudaSph::timePhases)
 
     Device(std::size_t count, std::size_t capacityCount, std::size_t cellCount, bool shifting, bool fpm)
         : n(int(count)), capacity(int(capacityCount)), current(capacityCount), other(capacityCount),
@@ -136,19 +138,24 @@ struct CudaSph::Device
         VSIM_CUDA_CHECK(cudaMemset(cellFluid.data, 0, cellFluid.bytes()));
         sph::launchCellKeys(params, current.pointers(), total, keys.data, order.data, cellFluid.data,
                             reductions.data);
+        phases.lap("cell keys");
         VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sortScratch.data, sortScratchBytes, keys.data,
                                                         sortedKeys.data, order.data, sortedOrder.data,
                                                         total, 0, int(keyBits)));
+        phases.lap("radix sort");
         sph::launchGather(current.pointers(), other.pointers(), sortedOrder.data, total);
         std::swap(current, other);
         n = kept;
+        phases.lap("gather");
         VSIM_CUDA_CHECK(cudaMemset(cellStart.data, 0, cellStart.bytes()));
         VSIM_CUDA_CHECK(cudaMemset(cellEnd.data, 0, cellEnd.bytes()));
         sph::launchCellRanges(sortedKeys.data, n, cellStart.data, cellEnd.data);
+        phases.lap("cell ranges");
         sph::launchPartition(current.pointers(), n, byKind.data, fluidSelected.data,
                              partitionScratch.data, partitionScratch.bytes());
         if (open())
             VSIM_CUDA_CHECK(cudaMemcpy(&fluidCount, fluidSelected.data, sizeof fluidCount, cudaMemcpyDeviceToHost));
+        phases.lap("partition by kind");
     }
 
     /// The exchange after the drift (open boundaries only), then the sort; returns a guard's message, or "".
@@ -161,6 +168,7 @@ struct CudaSph::Device
         }
         sph::launchExchange(current.pointers(), boundaryArgs, n, nextId, tallies.data);
         VSIM_CUDA_CHECK(cudaMemcpy(&lastTallies, tallies.data, sizeof lastTallies, cudaMemcpyDeviceToHost));
+        phases.lap("open boundaries' exchange");
         if (lastTallies.overflow)
             return storedText(Pattern{"the open boundaries let in more particles than the GPU's arrays hold (%1)",
                                       {std::to_string(capacity)}});
@@ -194,16 +202,24 @@ struct CudaSph::Device
             }
             sph::launchImpose(params, current.pointers(), rates(), boundaryArgs, cellStart.data, cellEnd.data,
                               others, n - fluidCount, tallies.data);
+            phases.lap("open boundaries' values");
         }
         sph::launchWallPressure(params, current.pointers(), rates(), cellStart.data, cellEnd.data,
                                 cellFluid.data, others, n - fluidCount);
+        phases.lap("wall pressure");
         sph::launchPressures(params, current.pointers(), rates(), n);
+        phases.lap("pressures");
         sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data, cellEnd.data, fluidList,
                                  fluidCount);
+        phases.lap("neighbourhood (G, wall distance)");
         if (params.fpm)
+        {
             sph::launchFpm(params, current.pointers(), rates(), cellStart.data, cellEnd.data, fluidList, fluidCount);
+            phases.lap("FPM systems");
+        }
         sph::launchRates(params, current.pointers(), rates(), cellStart.data, cellEnd.data, e, fluidList,
                          fluidCount, reductions.data);
+        phases.lap("rates");
     }
 
     void resetReductions()

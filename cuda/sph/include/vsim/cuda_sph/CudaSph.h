@@ -19,6 +19,8 @@
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace vsim::cuda {
 
@@ -55,6 +57,11 @@ public:
     sim::sph::ParticleState download() const override;
     /// The rates of the next step's first kick in download()'s order (single precision, for a checkpoint).
     sim::sph::SphRates nextRates() const override;
+    /// Times each phase of the steps from now on (StepPhases.cuh: waits for the device after each, so a run
+    /// with it on is slower; for a profile, not a speed figure), or stops.
+    void timePhases(bool on);
+    /// Seconds per phase since timing began, in the order of the step.
+    std::vector<std::pair<std::string, double>> phaseSeconds() const;
     /// Bytes of GPU memory held.
     std::size_t deviceBytes() const;
 
