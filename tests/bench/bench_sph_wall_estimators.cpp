@@ -6,10 +6,13 @@
 // object: the throat slab's means and every ring.
 //
 //   bench_sph_wall_estimators <checkpoint> <spacing mm> [mean speed m/s] [length mm] [particle shifting A]
-//                             [solver parameter=value]... [--steps N]
+//                             [solver parameter=value]... [--steps N] [--profile-at X_MM]
 //
 // --steps goes on N steps on the CPU first, printing each step's largest density variation (stderr): whether a
 // saved GPU run goes on smoothly in double precision.
+// --profile-at adds the fluid particles within a spacing of the section at x = X_MM ("profile": their distance from
+// the axis and from the wall, mm, and their axial speed, m/s): the near-wall velocity profile the wall shear is
+// read from, for a comparison with the reference solver's cells there (compare_throat_profile.py).
 //
 // The arguments after the checkpoint are bench_sph_cuda_stenosis's (its every and sound speed left out: the sound
 // speed follows the speed as there).
@@ -24,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 using namespace vsim;
 using namespace vsim::sim::sph;
@@ -32,8 +36,18 @@ int main(int argc, char** argv)
 try
 {
     long cpuSteps = 0;
-    if (argc > 2 && std::string(argv[argc - 2]) == "--steps")
-        cpuSteps = std::stol(argv[argc - 1]), argc -= 2;
+    double profileAtMm = NAN;
+    for (bool taken = true; taken && argc > 2;)
+    {
+        const std::string option = argv[argc - 2];
+        taken = option == "--steps" || option == "--profile-at";
+        if (option == "--steps")
+            cpuSteps = std::stol(argv[argc - 1]);
+        else if (option == "--profile-at")
+            profileAtMm = std::stod(argv[argc - 1]);
+        if (taken)
+            argc -= 2;
+    }
     if (argc < 3)
     {
         std::fprintf(stderr, "usage: bench_sph_wall_estimators <checkpoint> <spacing mm> [mean speed m/s] [length mm] "
@@ -95,6 +109,22 @@ try
     }
     for (double& value : throat)
         value /= std::max(1, throatRings);
+    nlohmann::json profile = nlohmann::json::object();
+    if (std::isfinite(profileAtMm))
+    {
+        const double radiusMm = pipe.radiusAtMm(profileAtMm);
+        std::vector<double> axis, wall, speed;
+        for (std::size_t i = 0; i < particles.size(); ++i)
+        {
+            const Eigen::Vector3d& x = particles.position[i];
+            if (!particles.isFluid(i) || std::abs(1e3 * x.x() - profileAtMm) > pipe.spacingMm)
+                continue;
+            const double r = 1e3 * std::hypot(x.y(), x.z());
+            axis.push_back(r), wall.push_back(radiusMm - r), speed.push_back(particles.velocity[i].x());
+        }
+        profile = {{"x_mm", profileAtMm}, {"radius_mm", radiusMm}, {"half_width_mm", pipe.spacingMm},
+                   {"axis_distance_mm", axis}, {"wall_distance_mm", wall}, {"axial_speed_m_s", speed}};
+    }
     const nlohmann::json report = {{"case", "sph-stenosis wall shear estimates at the run's end"},
                                    {"checkpoint", argv[1]},
                                    {"time_s", solver.position()},
@@ -103,7 +133,8 @@ try
                                    {"throat_reynolds", pipe.throatReynolds()},
                                    {"throat", {{"wss_pa", throat[0]}, {"pressure_pa", throat[1]},
                                                {"run_tawss_pa", throat[2]}, {"run_osi", throat[3]}}},
-                                   {"rings", rings}};
+                                   {"rings", rings},
+                                   {"profile", profile}};
     std::printf("%s\n", report.dump(1).c_str());
     return 0;
 }
