@@ -633,6 +633,7 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "(sorting the particles): %1"),
     QT_TRANSLATE_NOOP("vsim::Error", "the SPH input's particles need the field 'wall' (1 at wall particles, 0 in the fluid)"),
     QT_TRANSLATE_NOOP("vsim::Error", "particle shifting (particle_shifting > 0) needs a fluid that fills its vessel: a free surface (free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; set particle_shifting 0"),
+    QT_TRANSLATE_NOOP("vsim::Error", "the SPH input gives some of the particles' velocity components, not all three: give velocity_x_m_s, velocity_y_m_s and velocity_z_m_s together"),
     QT_TRANSLATE_NOOP("vsim::Error", "the SPH input has no particles"),
     QT_TRANSLATE_NOOP("vsim::Error", "the saved run's wall particle %1 is not this run's: the checkpoint belongs to another problem"),
     QT_TRANSLATE_NOOP("vsim::Error", "the saved run has %1 wall particles, this run %2: the checkpoint belongs to another problem"),

@@ -4197,6 +4197,10 @@
         <source>a pulsatile inflow needs a period &gt; 0 s and an amplitude in [0, 1), not %1 s and %2</source>
         <translation>ein pulsierender Einstrom braucht eine Periode &gt; 0 s und eine Amplitude in [0, 1), nicht %1 s und %2</translation>
     </message>
+    <message>
+        <source>the SPH input gives some of the particles&apos; velocity components, not all three: give velocity_x_m_s, velocity_y_m_s and velocity_z_m_s together</source>
+        <translation>die SPH-Eingabe gibt nur einen Teil der Geschwindigkeitskomponenten der Partikel an, nicht alle drei: velocity_x_m_s, velocity_y_m_s und velocity_z_m_s zusammen angeben</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

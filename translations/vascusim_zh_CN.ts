@@ -4197,6 +4197,10 @@
         <source>a pulsatile inflow needs a period &gt; 0 s and an amplitude in [0, 1), not %1 s and %2</source>
         <translation>脉动入流需要周期 &gt; 0 s 且振幅在 [0, 1) 内，而不是 %1 s 和 %2</translation>
     </message>
+    <message>
+        <source>the SPH input gives some of the particles&apos; velocity components, not all three: give velocity_x_m_s, velocity_y_m_s and velocity_z_m_s together</source>
+        <translation>SPH 输入只给出了粒子速度的部分分量，而不是全部三个：请同时给出 velocity_x_m_s、velocity_y_m_s 和 velocity_z_m_s</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -153,6 +153,10 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     const auto pressure = given.fields.find("pressure_pa");
     const auto vx = given.fields.find("velocity_x_m_s"), vy = given.fields.find("velocity_y_m_s"),
                vz = given.fields.find("velocity_z_m_s");
+    const int velocityFields = int(vx != given.fields.end()) + int(vy != given.fields.end()) + int(vz != given.fields.end());
+    if (velocityFields != 0 && velocityFields != 3)
+        throw Error("the SPH input gives some of the particles' velocity components, not all three: give "
+                    "velocity_x_m_s, velocity_y_m_s and velocity_z_m_s together");
     const auto depth = given.fields.find("wall_depth_mm");
     const auto buffer = given.fields.find("open_boundary"), tracer = given.fields.find("tracer");
     m_absorptionDistanceM = parameters.get("absorption_distance_mm") * 1e-3;
@@ -172,7 +176,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
                                : m_fluid.densityAt(pressure->second[i] - m_fluid.referencePressurePa, voidFraction);
         m_particles.add(x, rho, m_fluid.mixtureDensity(voidFraction) * volume, isWall,
                         depth == given.fields.end() ? -1.0 : depth->second[i] * 1e-3, voidFraction);
-        if (vx != given.fields.end() && vy != given.fields.end() && vz != given.fields.end())
+        if (velocityFields == 3)
             m_particles.velocity.back() = {vx->second[i], vy->second[i], vz->second[i]};
         if (buffer != given.fields.end() && !isWall)
             m_particles.boundary.back() = std::uint8_t(std::clamp(std::lround(buffer->second[i]), 0L, 255L));
