@@ -622,6 +622,7 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "the open boundary '%1' needs a unit normal and a positive radius"),
     QT_TRANSLATE_NOOP("vsim::Error", "a buffer particle names open boundary %1 of %2"),
     QT_TRANSLATE_NOOP("vsim::Error", "the open boundary '%1' has no buffer particles behind it"),
+    QT_TRANSLATE_NOOP("vsim::Error", "the open boundary '%1' has buffer particles down to %2 mm behind its plane, and its buffer must be as deep as the kernel's support, %3 mm (2 x the smoothing ratio x the spacing): seed it for this smoothing ratio"),
     QT_TRANSLATE_NOOP("vsim::Error", "the saved run has %1 open boundaries, this run %2: the checkpoint belongs to another problem"),
     QT_TRANSLATE_NOOP("vsim::Error", "plane Poiseuille flow, 20 particles across a 2 mm channel (periodic along and across the flow, peak 0.1 m/s, Re 2), after 7 decay times: every fluid particle's velocity against the steady profile"),
     QT_TRANSLATE_NOOP("vsim::Error", "the SPH smoothing length must be a positive length"),

@@ -4201,6 +4201,10 @@
         <source>the SPH input gives some of the particles&apos; velocity components, not all three: give velocity_x_m_s, velocity_y_m_s and velocity_z_m_s together</source>
         <translation>die SPH-Eingabe gibt nur einen Teil der Geschwindigkeitskomponenten der Partikel an, nicht alle drei: velocity_x_m_s, velocity_y_m_s und velocity_z_m_s zusammen angeben</translation>
     </message>
+    <message>
+        <source>the open boundary &apos;%1&apos; has buffer particles down to %2 mm behind its plane, and its buffer must be as deep as the kernel&apos;s support, %3 mm (2 x the smoothing ratio x the spacing): seed it for this smoothing ratio</source>
+        <translation>die offene Grenze '%1' hat Pufferpartikel bis %2 mm hinter ihrer Ebene, und ihr Puffer muss so tief sein wie der Träger des Kerns, %3 mm (2 x das Glättungsverhältnis x der Abstand): für dieses Glättungsverhältnis neu besetzen</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

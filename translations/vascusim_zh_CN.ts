@@ -4201,6 +4201,10 @@
         <source>the SPH input gives some of the particles&apos; velocity components, not all three: give velocity_x_m_s, velocity_y_m_s and velocity_z_m_s together</source>
         <translation>SPH 输入只给出了粒子速度的部分分量，而不是全部三个：请同时给出 velocity_x_m_s、velocity_y_m_s 和 velocity_z_m_s</translation>
     </message>
+    <message>
+        <source>the open boundary &apos;%1&apos; has buffer particles down to %2 mm behind its plane, and its buffer must be as deep as the kernel&apos;s support, %3 mm (2 x the smoothing ratio x the spacing): seed it for this smoothing ratio</source>
+        <translation>开放边界 '%1' 的缓冲粒子位于其平面后方至 %2 mm 处，而其缓冲区必须与核函数的支撑域一样深，即 %3 mm（2 x 光滑比 x 粒子间距）：请按此光滑比重新布置粒子</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -30,6 +30,7 @@
 // Exit 0 with "SKIP" without a device, 1 when a guard stops the run, 3 when --stop-after saved it to go on.
 
 #include "GpuStepPhases.h"
+#include "StenosisArguments.h"
 #include "StenosisJson.h"
 
 #include "vsim/core/Error.h"
@@ -133,6 +134,7 @@ try
     SphSolver solver;
     configureStenosisPipe(pipe, solver, 1, 1); // sampled here every `every` steps, weighted by the time between
     SimulationInput input;
+    bench::takeSmoothingRatio(pipe, 8, argc, argv);
     input.data["particles"] = stenosisPipeParticles(pipe);
     ParameterSet parameters = stenosisPipeParameters(pipe);
     for (int a = 8; a < argc; ++a) // the solver's parameters (sphParameters), e.g. delta_sph=0

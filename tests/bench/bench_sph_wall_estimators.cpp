@@ -17,6 +17,8 @@
 // The arguments after the checkpoint are bench_sph_cuda_stenosis's (its every and sound speed left out: the sound
 // speed follows the speed as there).
 
+#include "StenosisArguments.h"
+
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/SphCheckpoint.h"
 #include "vsim/sim/sph/SphSolver.h"
@@ -63,6 +65,7 @@ try
     SphSolver solver;
     configureStenosisPipe(pipe, solver);
     SimulationInput input;
+    bench::takeSmoothingRatio(pipe, 6, argc, argv);
     input.data["particles"] = stenosisPipeParticles(pipe);
     ParameterSet parameters = stenosisPipeParameters(pipe);
     for (int a = 6; a < argc; ++a)

@@ -264,6 +264,41 @@ private slots:
         QCOMPARE(stenosisPipeParameters(pipe).get("wall_repulsion"), 0.0);
     }
 
+    /// An open end's buffer is a kernel support deep: the imposed inflow divides the buffer's volume by that depth,
+    /// so a buffer seeded for another smoothing ratio would scale it (the stenosis pipe's four spacings under h =
+    /// 1.5 spacings let in 0.77 of its flow, 2026-12-03). The pipe seeded for its own ratio starts; seeded for 2
+    /// and run at 1.5, or at 2.5, it is refused with the depths.
+    void openEndsAreASupportDeep()
+    {
+        StenosisPipe pipe;
+        pipe.spacingMm = 0.2, pipe.lengthMm = 5.6;
+        for (const double ratio : {1.5, 2.0, 2.5})
+        {
+            StenosisPipe seeded = pipe;
+            seeded.smoothingRatio = ratio;
+            SimulationInput input;
+            input.data["particles"] = stenosisPipeParticles(seeded);
+            SphSolver solver;
+            configureStenosisPipe(seeded, solver);
+            solver.initialize(input, stenosisPipeParameters(seeded)); // its own ratio: taken
+            if (ratio == 2.0)
+                continue;
+            input.data["particles"] = stenosisPipeParticles(pipe); // seeded for 2
+            SphSolver other;
+            configureStenosisPipe(seeded, other);
+            try
+            {
+                other.initialize(input, stenosisPipeParameters(seeded));
+                QFAIL("buffers seeded for another smoothing ratio were taken");
+            }
+            catch (const Error& error)
+            {
+                qInfo("ratio %.1f on buffers for 2: %s", ratio, error.what());
+                QVERIFY(std::string(error.what()).find("support") != std::string::npos);
+            }
+        }
+    }
+
     /// Periodic along x (a channel's flow direction): neighbours across the seam found as nearest images.
     void periodicNeighbours()
     {

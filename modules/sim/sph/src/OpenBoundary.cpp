@@ -1,6 +1,7 @@
 #include "vsim/sim/sph/OpenBoundary.h"
 
 #include "vsim/core/Error.h"
+#include "vsim/core/Parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -105,6 +106,26 @@ void OpenBoundaries::initialize(const ParticleState& particles, double depthM, d
     for (std::size_t i = 0; i < particles.size(); ++i)
         if (particles.boundary[i])
             m_calibration[particles.boundary[i] - 1u] += shape(particles.boundary[i] - 1u, particles.position[i]) * volume / depthM;
+}
+
+void OpenBoundaries::checkBufferDepths(const ParticleState& particles, double depthM, double spacingM) const
+{
+    // The calibration divides the buffer's volume by the depth: a buffer of another depth than the kernel's support
+    // (seeded for another smoothing ratio) would scale the imposed inflow by their ratio. A buffer seeded a support
+    // deep on a lattice has its deepest particle within a spacing of that depth.
+    std::vector<double> deepest(m_boundaries.size(), 0.0);
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (particles.boundary[i] && particles.boundary[i] <= m_boundaries.size())
+        {
+            const std::size_t k = particles.boundary[i] - 1u;
+            deepest[k] = std::max(deepest[k], -signedDistance(k, particles.position[i]));
+        }
+    for (std::size_t k = 0; k < m_boundaries.size(); ++k)
+        if (deepest[k] > depthM + 1e-9 * depthM || deepest[k] < depthM - spacingM - 1e-9 * depthM)
+            throw Error(Pattern{"the open boundary '%1' has buffer particles down to %2 mm behind its plane, and its "
+                                "buffer must be as deep as the kernel's support, %3 mm (2 x the smoothing ratio x "
+                                "the spacing): seed it for this smoothing ratio",
+                                {m_boundaries[k].name, numberText(1e3 * deepest[k]), numberText(1e3 * depthM)}});
 }
 
 void OpenBoundaries::exchange(ParticleState& particles, int& nextId, MassLedger& ledger) const

@@ -196,6 +196,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_ledger.inflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
     m_ledger.outflowKg.assign(m_openBoundaries.boundaries().size(), 0.0);
     m_openBoundaries.setReferencePressure(m_fluid.referencePressurePa);
+    m_openBoundaries.checkBufferDepths(m_particles, m_kernel->support(), spacing);
     m_openBoundaries.initialize(m_particles, m_kernel->support(), spacing);
     releaseBackstopAtOpenEnds();
     for (std::size_t i = 0; i < m_particles.size(); ++i) // a buffer holds what its boundary lets in

@@ -24,11 +24,12 @@ namespace {
 constexpr double kRingStepMm = 0.05; // the wall rings' spacing along the axis
 constexpr int kAround = 8;           // points on each ring
 
-/// The pipe's lattice, walls and the two ends' buffers (four spacings deep).
+/// The pipe's lattice, walls and the two ends' buffers (a kernel support deep: four spacings at h = 2 spacings).
 detail::PipeShape pipeShape(const StenosisPipe& pipe)
 {
     detail::PipeShape shape;
-    shape.spacingMm = pipe.spacingMm, shape.lengthMm = pipe.lengthMm, shape.bufferDepthMm = 4.0 * pipe.spacingMm;
+    shape.spacingMm = pipe.spacingMm, shape.lengthMm = pipe.lengthMm;
+    shape.bufferDepthMm = 2.0 * pipe.smoothingRatio * pipe.spacingMm;
     shape.radiusMm = [pipe](double xMm) { return pipe.radiusAtMm(xMm); };
     return shape;
 }
@@ -133,6 +134,7 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
     ParameterSet parameters =
         detail::caseParameters(pipe.spacingMm, pipe.densityKgM3, pipe.viscosityPaS, pipe.soundSpeedMS);
     parameters.set("end_time_s", pipe.endTimeS);
+    parameters.set("smoothing_ratio", pipe.smoothingRatio);
     parameters.set("cfl", pipe.cfl);
     parameters.set("particle_shifting", pipe.particleShifting);
     parameters.set("shift_correction", pipe.shiftCorrection ? 1.0 : 0.0);

@@ -81,6 +81,10 @@ public:
     /// = k + 1 for boundary k) of `depthM` (the support); throws vsim::Error for a boundary without buffer
     /// particles, a normal that is not a unit vector or a buffer index beyond the boundaries.
     void initialize(const ParticleState& particles, double depthM, double spacingM);
+    /// Throws vsim::Error for a boundary whose deepest buffer particle lies beyond `depthM` or more than `spacingM`
+    /// short of it: seeded for another smoothing ratio, its imposed inflow would be scaled by the depths' ratio
+    /// (SphSolver::initialize checks a lattice's buffers before initialize()).
+    void checkBufferDepths(const ParticleState& particles, double depthM, double spacingM) const;
     /// The fluid's reference pressure (FluidModel::referencePressurePa, Pa): the prescribed pressures are gauge, and
     /// prescribedPressure() and pressure() give them above it.
     void setReferencePressure(double pressurePa) { m_referencePa = pressurePa; }

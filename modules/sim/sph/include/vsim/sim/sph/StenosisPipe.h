@@ -35,6 +35,7 @@ struct StenosisPipe
     double averageFromS = 0.015, endTimeS = 0.025;    ///< the settled flow's window
     double soundSpeedMS = 4.0;                        ///< the numerical sound speed c0 (80 x the throat's mean)
     double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
+    double smoothingRatio = 2.0;                      ///< the solver's smoothing_ratio h / spacing (the buffers: 2h)
     double particleShifting = 0.0;                    ///< the solver's particle_shifting A (0: off; SphRates.h)
     bool shiftCorrection = false;                     ///< the solver's shift_correction (SphRates.h)
     double cfl = kStenosisCfl;                        ///< the Courant number (atFlow lowers it for faster jets)
