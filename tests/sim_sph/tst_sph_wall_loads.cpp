@@ -18,6 +18,36 @@
 using namespace vsim;
 using namespace vsim::sim::sph;
 
+namespace {
+
+constexpr int kPeriod = 12; // the flat wall's lattice along and across the flow (periodic)
+
+FluidModel blood()
+{
+    FluidModel fluid;
+    fluid.restDensity = 1060.0, fluid.viscosity = 3.5e-3, fluid.soundSpeed = 10.0;
+    return fluid;
+}
+
+/// A flat wall of four lattice layers (spacing `s`, their depths below the no-slip plane y = 0) under `fluidLayers`
+/// layers of fluid at rest, kPeriod x kPeriod spacings along and across.
+ParticleState flatWall(double s, int fluidLayers, const FluidModel& fluid)
+{
+    ParticleState particles;
+    for (int k = -4; k < fluidLayers; ++k)
+        for (int i = 0; i < kPeriod; ++i)
+            for (int j = 0; j < kPeriod; ++j)
+            {
+                const double y = (k + 0.5) * s;
+                particles.add(Eigen::Vector3d((i + 0.5) * s, y, (j + 0.5) * s), fluid.restDensity,
+                              fluid.restDensity * s * s * s, k < 0, k < 0 ? -y : -1.0);
+                particles.id.back() = int(particles.size()) - 1;
+            }
+    return particles;
+}
+
+} // namespace
+
 class SphWallLoads : public QObject
 {
     Q_OBJECT
@@ -28,23 +58,14 @@ private slots:
     /// other than the solver's: the shear is imposed, not stepped to). The wall pressure at rest density: 0.
     void wallFrictionReadsACouetteFlow()
     {
-        const double s = 1e-4, gamma = 1000.0, period = 12 * s;
+        const double s = 1e-4, gamma = 1000.0;
         const QuarticKernel kernel(2.0 * s);
-        FluidModel fluid;
-        fluid.restDensity = 1060.0, fluid.viscosity = 3.5e-3, fluid.soundSpeed = 10.0;
-        ParticleState particles;
-        for (int k = -4; k < 12; ++k)
-            for (int i = 0; i < 12; ++i)
-                for (int j = 0; j < 12; ++j)
-                {
-                    const double y = (k + 0.5) * s;
-                    particles.add(Eigen::Vector3d((i + 0.5) * s, y, (j + 0.5) * s), fluid.restDensity,
-                                  fluid.restDensity * s * s * s, k < 0, k < 0 ? -y : -1.0);
-                    particles.id.back() = int(particles.size()) - 1;
-                    if (k >= 0)
-                        particles.velocity.back() = Eigen::Vector3d(gamma * y, 0.0, 0.0);
-                }
-        NeighbourGrid grid(kernel.support(), Eigen::Vector3d(period, 0.0, period));
+        const FluidModel fluid = blood();
+        ParticleState particles = flatWall(s, 12, fluid);
+        for (std::size_t i = 0; i < particles.size(); ++i)
+            if (!particles.wall[i])
+                particles.velocity[i] = Eigen::Vector3d(gamma * particles.position[i].y(), 0.0, 0.0);
+        NeighbourGrid grid(kernel.support(), Eigen::Vector3d(kPeriod * s, 0.0, kPeriod * s));
         grid.build(particles.position);
         const double expected = fluid.viscosity * gamma;
         double worst = 0.0;
@@ -73,21 +94,11 @@ private slots:
     /// is the other; RESULTS.md, 2026-12-03).
     void wallFrictionReadsAThinBoundaryLayerLow()
     {
-        const double s = 1e-4, speed = 0.1, period = 12 * s;
+        const double s = 1e-4, speed = 0.1;
         const QuarticKernel kernel(2.0 * s);
-        FluidModel fluid;
-        fluid.restDensity = 1060.0, fluid.viscosity = 3.5e-3, fluid.soundSpeed = 10.0;
-        ParticleState particles;
-        for (int k = -4; k < 40; ++k)
-            for (int i = 0; i < 12; ++i)
-                for (int j = 0; j < 12; ++j)
-                {
-                    const double y = (k + 0.5) * s;
-                    particles.add(Eigen::Vector3d((i + 0.5) * s, y, (j + 0.5) * s), fluid.restDensity,
-                                  fluid.restDensity * s * s * s, k < 0, k < 0 ? -y : -1.0);
-                    particles.id.back() = int(particles.size()) - 1;
-                }
-        NeighbourGrid grid(kernel.support(), Eigen::Vector3d(period, 0.0, period));
+        const FluidModel fluid = blood();
+        ParticleState particles = flatWall(s, 40, fluid);
+        NeighbourGrid grid(kernel.support(), Eigen::Vector3d(kPeriod * s, 0.0, kPeriod * s));
         grid.build(particles.position);
         double previous = 0.0;
         for (const double spacings : {0.5, 1.0, 2.0, 4.0, 8.0})
