@@ -241,7 +241,7 @@ try
         {"length_mm", pipe.lengthMm}, {"averaged_s", {pipe.averageFromS, pipe.endTimeS}},
         {"particle_shifting", parameters.get("particle_shifting")}, {"cfl", parameters.get("cfl")},
         {"wall_repulsion", parameters.get("wall_repulsion")}, {"shift_correction", parameters.get("shift_correction")},
-        {"fpm", parameters.get("fpm")},
+        {"fpm", parameters.get("fpm")}, {"smoothing_ratio", parameters.get("smoothing_ratio")},
         {"outflow_kg", double(gpu.massLedger().totalOutflow())}, {"calls", earlierCalls + 1}};
     if (!pipe.systole.empty())
     {
