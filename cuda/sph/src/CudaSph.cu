@@ -128,6 +128,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     }
     d.nextId = p.id.empty() ? 0 : *std::max_element(p.id.begin(), p.id.end()) + 1;
     d.fluidCount = int(std::count_if(p.wall.begin(), p.wall.end(), [](auto w) { return w == 0; })) - int(buffered);
+    d.bufferCount = int(buffered);
     std::vector<float4> position(n), velocity(n), state(n);
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -311,7 +312,7 @@ std::size_t CudaSph::deviceBytes() const
            d.derived.bytes() + d.shiftVelocity.bytes() + d.densityRate.bytes() + d.wallDistance.bytes() +
            d.guardedWallDistance.bytes() + d.velocityDivergence.bytes() + d.keys.bytes() + d.sortedKeys.bytes() + d.cellStart.bytes() +
            d.cellEnd.bytes() + d.cellFluid.bytes() + d.order.bytes() + d.sortedOrder.bytes() +
-           d.byKind.bytes() + d.partitionScratch.bytes() + d.sortScratch.bytes();
+           d.fluidList.bytes() + d.bufferList.bytes() + d.wallList.bytes() + d.partitionScratch.bytes() + d.sortScratch.bytes();
 }
 
 } // namespace vsim::cuda

@@ -92,9 +92,10 @@ struct CudaSph::Device
     Buffer<float> velocityDivergence; ///< with FPM only (launchFpm)
     Buffer<unsigned> keys, sortedKeys, cellStart, cellEnd, cellFluid;
     Buffer<int> order, sortedOrder;
-    Buffer<int> byKind, fluidSelected; // fluid indices first, then the others' (launchPartition)
+    Buffer<int> fluidList, bufferList, wallList, kindCounts; // the indices by kind (launchPartition)
     Buffer<std::uint8_t> partitionScratch;
-    int fluidCount = 0;
+    int fluidCount = 0, bufferCount = 0; ///< the walls: the rest of the n
+
     Buffer<std::uint8_t> sortScratch;
     std::size_t sortScratchBytes = 0;
     unsigned keyBits = 1;
@@ -113,8 +114,8 @@ struct CudaSph::Device
           densityRate(capacityCount), wallDistance(capacityCount), guardedWallDistance(capacityCount),
           velocityDivergence(fpm ? capacityCount : 0),
           keys(capacityCount), sortedKeys(capacityCount), cellStart(cellCount), cellEnd(cellCount),
-          cellFluid(cellCount), order(capacityCount), sortedOrder(capacityCount), byKind(capacityCount),
-          fluidSelected(1), keyBits(sph::bitsFor(cellCount + 1)), cells(cellCount), reductions(1), tallies(1)
+          cellFluid(cellCount), order(capacityCount), sortedOrder(capacityCount), fluidList(capacityCount),
+          bufferList(capacityCount), wallList(capacityCount), kindCounts(2), keyBits(sph::bitsFor(cellCount + 1)), cells(cellCount), reductions(1), tallies(1)
     {
         VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data,
                                                         sortedKeys.data, order.data, sortedOrder.data,
@@ -151,10 +152,14 @@ struct CudaSph::Device
         VSIM_CUDA_CHECK(cudaMemset(cellEnd.data, 0, cellEnd.bytes()));
         sph::launchCellRanges(sortedKeys.data, n, cellStart.data, cellEnd.data);
         phases.lap("cell ranges");
-        sph::launchPartition(current.pointers(), n, byKind.data, fluidSelected.data,
+        sph::launchPartition(current.pointers(), n, fluidList.data, bufferList.data, wallList.data, kindCounts.data,
                              partitionScratch.data, partitionScratch.bytes());
         if (open())
-            VSIM_CUDA_CHECK(cudaMemcpy(&fluidCount, fluidSelected.data, sizeof fluidCount, cudaMemcpyDeviceToHost));
+        {
+            int counts[2];
+            VSIM_CUDA_CHECK(cudaMemcpy(counts, kindCounts.data, sizeof counts, cudaMemcpyDeviceToHost));
+            fluidCount = counts[0], bufferCount = counts[1];
+        }
         phases.lap("partition by kind");
     }
 
@@ -187,8 +192,7 @@ struct CudaSph::Device
     {
         const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
         const float e[3] = {float(external.x()), float(external.y()), float(external.z())};
-        const int* fluidList = byKind.data;
-        const int* others = byKind.data + fluidCount;
+        const int wallCount = n - fluidCount - bufferCount;
         if (open())
         {
             for (int k = 0; k < boundaryArgs.count; ++k)
@@ -201,23 +205,24 @@ struct CudaSph::Device
                 args.pressure = float(boundaries.prescribedPressure(b, timeS, flowRate[b]));
             }
             sph::launchImpose(params, current.pointers(), rates(), boundaryArgs, cellStart.data, cellEnd.data,
-                              others, n - fluidCount, tallies.data);
+                              bufferList.data, bufferCount, tallies.data);
             phases.lap("open boundaries' values");
         }
         sph::launchWallPressure(params, current.pointers(), rates(), cellStart.data, cellEnd.data,
-                                cellFluid.data, others, n - fluidCount);
+                                cellFluid.data, wallList.data, wallCount);
         phases.lap("wall pressure");
         sph::launchPressures(params, current.pointers(), rates(), n);
         phases.lap("pressures");
-        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data, cellEnd.data, fluidList,
-                                 fluidCount);
+        sph::launchNeighbourhood(params, current.pointers(), rates(), cellStart.data, cellEnd.data,
+                                 fluidList.data, fluidCount);
         phases.lap("neighbourhood (G, wall distance)");
         if (params.fpm)
         {
-            sph::launchFpm(params, current.pointers(), rates(), cellStart.data, cellEnd.data, fluidList, fluidCount);
+            sph::launchFpm(params, current.pointers(), rates(), cellStart.data, cellEnd.data, fluidList.data,
+                           fluidCount);
             phases.lap("FPM systems");
         }
-        sph::launchRates(params, current.pointers(), rates(), cellStart.data, cellEnd.data, e, fluidList,
+        sph::launchRates(params, current.pointers(), rates(), cellStart.data, cellEnd.data, e, fluidList.data,
                          fluidCount, reductions.data);
         phases.lap("rates");
     }

@@ -84,46 +84,59 @@ __global__ void exchangeKernel(SphArrays a, OpenBoundaryArgs boundaries, int n, 
     }
 }
 
-/// OpenBoundaries::impose for the buffer particles among `others`: the values extrapolated from the fluid
-/// at the mirror point across the plane (Shepard, max(W, 0) V), the prescribed ones imposed; their rates zero
-/// (G's w: their viscosity, which the fluid's viscous term reads).
+/// The sum of a value over the lanes of a warp, in every lane.
+__device__ float warpSum(float value)
+{
+    for (int offset = 16; offset > 0; offset /= 2)
+        value += __shfl_xor_sync(0xffffffffu, value, offset);
+    return value;
+}
+
+/// OpenBoundaries::impose for the listed buffer particles, a warp each: the values extrapolated from the fluid
+/// at the mirror point across the plane (Shepard, max(W, 0) V; the neighbours dealt out over the lanes), the
+/// prescribed ones imposed; their rates zero (G's w: their viscosity, which the fluid's viscous term reads).
 __global__ void imposeKernel(SphParams p, SphArrays a, SphRatesArrays rates, OpenBoundaryArgs boundaries,
-                             const unsigned* cellStart, const unsigned* cellEnd, const int* others, int count,
+                             const unsigned* cellStart, const unsigned* cellEnd, const int* buffers, int count,
                              OpenBoundaryTallies* t)
 {
-    const int thread = blockIdx.x * blockDim.x + threadIdx.x;
-    if (thread >= count)
+    const int warp = (blockIdx.x * blockDim.x + threadIdx.x) / 32;
+    const unsigned lane = threadIdx.x % 32u;
+    if (warp >= count) // the whole warp: kThreads is a multiple of 32
         return;
-    const int i = others[thread];
+    const int i = buffers[warp];
     const float4 x = a.position[i];
     float4 v = a.velocity[i];
-    if (isWall(x) || !(v.w > 0.0f))
-        return;
     const int k = int(v.w) - 1;
     const OpenBoundaryParams& b = boundaries.b[k];
+    const float s = along(b, x);
+    const float4 mirror = make_float4(x.x - 2.0f * s * b.normal[0], x.y - 2.0f * s * b.normal[1],
+                                      x.z - 2.0f * s * b.normal[2], kFluid);
+    float weight = 0.0f, relative = 0.0f, vx = 0.0f, vy = 0.0f, vz = 0.0f;
+    forEachNeighbourAround(
+        p, a, cellStart, cellEnd, mirror, i,
+        [&](int j, float4 xj, float, float, float, float r, float)
+        {
+            if (isWall(xj))
+                return;
+            const float4 vj = __ldg(&a.velocity[j]);
+            if (vj.w != 0.0f) // another buffer particle
+                return;
+            const float4 sj = __ldg(&a.state[j]);
+            const float w = fmaxf(kernelValue(p, r), 0.0f) * sj.y / sj.x;
+            weight += w;
+            relative += w * sj.x / mixtureDensity(p, sj.z);
+            vx += w * vj.x, vy += w * vj.y, vz += w * vj.z;
+        },
+        nullptr, lane, 32u);
+    weight = warpSum(weight), relative = warpSum(relative);
+    vx = warpSum(vx), vy = warpSum(vy), vz = warpSum(vz);
+    if (lane != 0)
+        return;
     float4 state = a.state[i];
     rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
     rates.densityRate[i] = 0.0f;
     rates.densityGradient[i] = make_float4(0.0f, 0.0f, 0.0f, mixtureViscosity(p, state.z));
     rates.wallDistance[i] = rates.guardedWallDistance[i] = INFINITY;
-    const float s = along(b, x);
-    const float4 mirror = make_float4(x.x - 2.0f * s * b.normal[0], x.y - 2.0f * s * b.normal[1],
-                                      x.z - 2.0f * s * b.normal[2], kFluid);
-    float weight = 0.0f, relative = 0.0f, vx = 0.0f, vy = 0.0f, vz = 0.0f;
-    forEachNeighbourAround(p, a, cellStart, cellEnd, mirror, i,
-                           [&](int j, float4 xj, float, float, float, float r, float)
-                           {
-                               if (isWall(xj))
-                                   return;
-                               const float4 vj = __ldg(&a.velocity[j]);
-                               if (vj.w != 0.0f) // another buffer particle
-                                   return;
-                               const float4 sj = __ldg(&a.state[j]);
-                               const float w = fmaxf(kernelValue(p, r), 0.0f) * sj.y / sj.x;
-                               weight += w;
-                               relative += w * sj.x / mixtureDensity(p, sj.z);
-                               vx += w * vj.x, vy += w * vj.y, vz += w * vj.z;
-                           });
     const bool extrapolated = weight > 0.05f; // else the values stay (no fluid near the mirror point yet)
     if (b.velocityPrescribed)
     {
@@ -159,11 +172,13 @@ void launchExchange(const SphArrays& a, const OpenBoundaryArgs& boundaries, int 
 
 void launchImpose(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
                   const OpenBoundaryArgs& boundaries, const unsigned* cellStart, const unsigned* cellEnd,
-                  const int* others, int count, OpenBoundaryTallies* tallies)
+                  const int* buffers, int count, OpenBoundaryTallies* tallies)
 {
     if (count == 0)
         return;
-    imposeKernel<<<blocks(count), kThreads>>>(p, a, rates, boundaries, cellStart, cellEnd, others, count, tallies);
+    static_assert(kThreads % 32 == 0, "a warp per buffer particle");
+    imposeKernel<<<blocks(32 * count), kThreads>>>(p, a, rates, boundaries, cellStart, cellEnd, buffers, count,
+                                                   tallies);
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 

@@ -90,11 +90,13 @@ __device__ inline void cellOf(const SphParams& p, float4 x, int c[3])
 /// f(j, xj, rx, ry, rz, r, r2) for every particle j != self within the support of the point xi (m from the
 /// box's corner; xj the position record, rij = xi - x_j, m; r = |rij|, r2 = r^2). With `cellFluid` (fluid
 /// particles per cell) only the cells that hold fluid are scanned: the wall particles' pass, whose sums run
-/// over the fluid alone (most walls see none).
+/// over the fluid alone (most walls see none). With `first` and `stride` each row's run is dealt out: a warp's
+/// lane `first` of `stride` visits the candidates first, first + stride, ... (the caller sums over the lanes).
 template <class F>
 __device__ void forEachNeighbourAround(const SphParams& p, const SphArrays& a, const unsigned* cellStart,
                                        const unsigned* cellEnd, float4 xi, int self, F&& f,
-                                       const unsigned* cellFluid = nullptr)
+                                       const unsigned* cellFluid = nullptr, unsigned first = 0,
+                                       unsigned stride = 1)
 {
     int c[3];
     cellOf(p, xi, c);
@@ -130,7 +132,7 @@ __device__ void forEachNeighbourAround(const SphParams& p, const SphArrays& a, c
                 if (e > s)
                     begin = min(begin, s), end = max(end, e);
             }
-            for (unsigned j = begin; j < end; ++j)
+            for (unsigned j = begin + first; j < end; j += stride)
             {
                 if (int(j) == self)
                     continue;

@@ -65,8 +65,6 @@ __global__ void wallPressureKernel(SphParams p, SphArrays a, SphRatesArrays rate
     if (t >= count)
         return;
     const int i = walls[t];
-    if (!isWall(a.position[i])) // a buffer particle of an open boundary (launchImpose)
-        return;
     // A wall particle's rates are zero; its viscosity rides in G's w for the fluid's rates (SphKernels.cuh).
     rates.acceleration[i] = make_float4(0.0f, 0.0f, 0.0f, 0.0f);
     rates.densityRate[i] = 0.0f;
@@ -422,21 +420,29 @@ struct IsFluidParticle
     const float4* velocity;
     __device__ bool operator()(int i) const { return position[i].w == kFluid && velocity[i].w == 0.0f; }
 };
+struct IsBufferParticle
+{
+    const float4* position;
+    const float4* velocity;
+    __device__ bool operator()(int i) const { return position[i].w == kFluid && velocity[i].w != 0.0f; }
+};
 } // namespace
 
 std::size_t partitionScratchBytes(int n)
 {
     std::size_t bytes = 0;
     VSIM_CUDA_CHECK(cub::DevicePartition::If(nullptr, bytes, thrust::counting_iterator<int>(0), (int*)nullptr,
-                                             (int*)nullptr, n, IsFluidParticle{nullptr, nullptr}));
+                                             (int*)nullptr, (int*)nullptr, (int*)nullptr, n,
+                                             IsFluidParticle{nullptr, nullptr}, IsBufferParticle{nullptr, nullptr}));
     return bytes;
 }
 
-void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch,
+void launchPartition(const SphArrays& a, int n, int* fluid, int* buffers, int* walls, int* counts, void* scratch,
                      std::size_t scratchBytes)
 {
-    VSIM_CUDA_CHECK(cub::DevicePartition::If(scratch, scratchBytes, thrust::counting_iterator<int>(0),
-                                             indices, selected, n, IsFluidParticle{a.position, a.velocity}));
+    VSIM_CUDA_CHECK(cub::DevicePartition::If(scratch, scratchBytes, thrust::counting_iterator<int>(0), fluid,
+                                             buffers, walls, counts, n, IsFluidParticle{a.position, a.velocity},
+                                             IsBufferParticle{a.position, a.velocity}));
 }
 
 void launchKickDrift(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, float dt, int n)

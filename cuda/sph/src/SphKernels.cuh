@@ -104,14 +104,13 @@ void launchCellKeys(const SphParams& p, const SphArrays& a, int n, unsigned* key
                     unsigned* cellFluid, SphReductions* r);
 void launchGather(const SphArrays& from, const SphArrays& to, const int* order, int n);
 void launchCellRanges(const unsigned* sortedKeys, int n, unsigned* cellStart, unsigned* cellEnd);
-/// The fluid particles' indices first, then the others' (walls and buffers; `selected` receives the fluid
-/// count): the passes that run over one kind launch a thread per particle of it, so that no warp idles on the
-/// other kind.
+/// The particles' indices by kind, each list in the sorted order: fluid, buffers of the open boundaries, walls
+/// (`counts` receives the fluid and the buffer counts; the walls are the rest): the passes that run over one kind
+/// launch a thread (or a warp) per particle of it, so that no warp idles on another kind.
 std::size_t partitionScratchBytes(int n);
-void launchPartition(const SphArrays& a, int n, int* indices, int* selected, void* scratch,
+void launchPartition(const SphArrays& a, int n, int* fluid, int* buffers, int* walls, int* counts, void* scratch,
                      std::size_t scratchBytes);
-/// The walls' pressure (the `count` indices of walls and buffers; the buffers are passed over), and their
-/// rates zeroed (G's w: their viscosity).
+/// The walls' pressure (the `count` wall indices), and their rates zeroed (G's w: their viscosity).
 void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
                         const unsigned* cellStart, const unsigned* cellEnd, const unsigned* cellFluid,
                         const int* walls, int count);
@@ -170,10 +169,11 @@ struct OpenBoundaryTallies
 /// removed. Copies beyond the capacity set `overflow`.
 void launchExchange(const SphArrays& a, const OpenBoundaryArgs& boundaries, int n, int firstId,
                     OpenBoundaryTallies* tallies);
-/// The buffers' values (OpenBoundaries::impose) for the `count` particles listed in `others` (walls and
-/// buffers: the walls are passed over), their rates zeroed, and the tallies of flux and pressure.
+/// The buffers' values (OpenBoundaries::impose) for the `count` buffer particles listed, their rates zeroed, and
+/// the tallies of flux and pressure. A warp per particle: the buffers are a few thousand, too few threads to
+/// hide the neighbour loop's latency one each (0.34 ms of a 1.7 ms step on the stenosis pipe, 2026-12-03).
 void launchImpose(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
                   const OpenBoundaryArgs& boundaries, const unsigned* cellStart, const unsigned* cellEnd,
-                  const int* others, int count, OpenBoundaryTallies* tallies);
+                  const int* buffers, int count, OpenBoundaryTallies* tallies);
 
 } // namespace vsim::cuda::sph
