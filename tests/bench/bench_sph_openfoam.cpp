@@ -9,6 +9,8 @@
 //   peak velocity ratio          throat / 1.6 mm upstream: <= 10 %;
 //   pressure drop                1.6 mm upstream - 1.6 mm downstream (section means): <= 15 %;
 //   wall shear stress in the throat: the mean |tau_w| over the wall in the throat's section slab: <= 20 %;
+//   the fluid kept (a GPU run's file that names its first fluid mass): the ledger's net outflow <= 3 % of it, or the
+//                                SPH's figures are not a full pipe's (fluidKept below);
 //   beside them, the wall shear stress along the wall (the SPH's rings every 0.05 mm against OpenFOAM's nearest wall
 //   face), reported as the largest difference over OpenFOAM's throat value (the stress nearly vanishes where the
 //   jet's recirculation reattaches: a local ratio says nothing there).
@@ -100,6 +102,19 @@ json check(double ours, double reference, double tolerance)
     const double difference = std::abs(ours - reference) / std::abs(reference);
     return {{"sph", ours}, {"openfoam", reference}, {"relative_difference", difference}, {"tolerance", tolerance},
             {"passed", difference <= tolerance}};
+}
+
+/// Whether the SPH run's pipe still holds its fluid: a pipe full of fluid within the density guard (3 %) holds its
+/// first mass within 3 %, so a larger net outflow (the ledger's, kg) means particles that no longer fill the pipe at
+/// their carried density (the pulsatile Re 200 run's wake thinned to 0.5-0.7 rho0 by summation while its continuity
+/// density read rho0: RESULTS.md, 2026-12-04), and its figures are not a flow's.
+json fluidKept(const json& run)
+{
+    const double initial = run.at("initial_fluid_kg").get<double>();
+    const double netOut = run.at("outflow_kg").get<double>() - run.at("inflow_kg").get<double>();
+    const double fraction = netOut / initial;
+    return {{"initial_fluid_kg", initial}, {"net_outflow_kg", netOut}, {"net_outflow_fraction", fraction},
+            {"tolerance", 0.03}, {"passed", std::abs(fraction) <= 0.03}};
 }
 
 } // namespace
@@ -246,6 +261,8 @@ int main(int argc, char** argv)
             sphWall = stored.at("wall");
             report["sph"] = stored;
             report["sph"]["from"] = sphIn;
+            if (stored.contains("initial_fluid_kg")) // GPU runs since 2026-12-04
+                report["fluid_kept"] = fluidKept(stored);
         }
         else
         {
@@ -339,7 +356,8 @@ int main(int argc, char** argv)
         }
         report["wall_shear_profile"] = {{"rings", wallProfile}, {"largest_difference_over_throat_value", worstWall},
                                         {"at_mm", worstWallAt}};
-        const bool passed = report["centerline_profile"]["passed"] && report["peak_ratio"]["passed"] &&
+        const bool fluidKeptPassed = !report.contains("fluid_kept") || report["fluid_kept"]["passed"].get<bool>();
+        const bool passed = fluidKeptPassed && report["centerline_profile"]["passed"] && report["peak_ratio"]["passed"] &&
                             report["pressure_drop"]["passed"] && report["throat_wss"]["passed"] && systolePassed &&
                             std::all_of(foam.begin(), foam.end(), [](const auto& f) { return f.converged; });
         report["passed"] = passed;
