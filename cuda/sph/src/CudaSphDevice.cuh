@@ -94,8 +94,7 @@ struct CudaSph::Device
     Buffer<int> order, sortedOrder;
     Buffer<int> fluidList, bufferList, wallList, kindCounts; // the indices by kind (launchPartition)
     Buffer<std::uint8_t> partitionScratch;
-    int fluidCount = 0, bufferCount = 0; ///< the walls: the rest of the n
-
+    int fluidCount = 0, bufferCount = 0; ///< the lists' lengths; the walls are the rest of the n particles
     Buffer<std::uint8_t> sortScratch;
     std::size_t sortScratchBytes = 0;
     unsigned keyBits = 1;
@@ -115,7 +114,8 @@ struct CudaSph::Device
           velocityDivergence(fpm ? capacityCount : 0),
           keys(capacityCount), sortedKeys(capacityCount), cellStart(cellCount), cellEnd(cellCount),
           cellFluid(cellCount), order(capacityCount), sortedOrder(capacityCount), fluidList(capacityCount),
-          bufferList(capacityCount), wallList(capacityCount), kindCounts(2), keyBits(sph::bitsFor(cellCount + 1)), cells(cellCount), reductions(1), tallies(1)
+          bufferList(capacityCount), wallList(capacityCount), kindCounts(2), keyBits(sph::bitsFor(cellCount + 1)),
+          cells(cellCount), reductions(1), tallies(1)
     {
         VSIM_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, sortScratchBytes, keys.data,
                                                         sortedKeys.data, order.data, sortedOrder.data,
