@@ -4203,7 +4203,19 @@
     </message>
     <message>
         <source>the open boundary &apos;%1&apos; has buffer particles down to %2 mm behind its plane, and its buffer must be as deep as the kernel&apos;s support, %3 mm (2 x the smoothing ratio x the spacing): seed it for this smoothing ratio</source>
-        <translation>die offene Grenze '%1' hat Pufferpartikel bis %2 mm hinter ihrer Ebene, und ihr Puffer muss so tief sein wie der Träger des Kerns, %3 mm (2 x das Glättungsverhältnis x der Abstand): für dieses Glättungsverhältnis neu besetzen</translation>
+        <translation>die offene Grenze &apos;%1&apos; hat Pufferpartikel bis %2 mm hinter ihrer Ebene, und ihr Puffer muss so tief sein wie der Träger des Kerns, %3 mm (2 x das Glättungsverhältnis x der Abstand): für dieses Glättungsverhältnis neu besetzen</translation>
+    </message>
+    <message>
+        <source>density by summation (density_summation 1) needs a fluid that fills its vessel: at a free surface (free_surface 1) or the edge of a liquid without tension (fluid_tension 0) the particles&apos; sums fall short and would read as suction; set density_summation 0</source>
+        <translation>die Dichte durch Summation (density_summation 1) braucht ein Fluid, das sein Gefäß füllt: an einer freien Oberfläche (free_surface 1) oder am Rand einer Flüssigkeit ohne Zug (fluid_tension 0) fallen die Summen der Partikel zu klein aus und wirkten als Sog; setzen Sie density_summation 0</translation>
+    </message>
+    <message>
+        <source>the Finite Particle Method (fpm 1) corrects the continuity equation&apos;s density rate, which density by summation (density_summation 1) does not use: set one of them to 0</source>
+        <translation>die Finite-Partikel-Methode (fpm 1) korrigiert die Dichterate der Kontinuitätsgleichung, die die Dichte durch Summation (density_summation 1) nicht verwendet: setzen Sie eines von beiden auf 0</translation>
+    </message>
+    <message>
+        <source>the density&apos;s relaxation towards summation (density_relaxation_s &gt; 0) is for the continuity density (density_summation 0) of a fluid that fills its vessel (free_surface 0, fluid_tension 1): set density_relaxation_s 0</source>
+        <translation>die Relaxation der Dichte zur Summation (density_relaxation_s &gt; 0) gilt der Kontinuitätsdichte (density_summation 0) eines Fluids, das sein Gefäß füllt (free_surface 0, fluid_tension 1): setzen Sie density_relaxation_s 0</translation>
     </message>
 </context>
 <context>
@@ -5711,6 +5723,22 @@
     <message>
         <source>1: the density rate from the velocity&apos;s divergence and the density diffusion&apos;s gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums</source>
         <translation>1: die Dichteänderung aus der Divergenz der Geschwindigkeit und der Gradient der Dichtediffusion nach der Finite-Partikel-Methode erster Ordnung (Dissertation Gl. 5.17), exakt für lineare Felder, auch wo Wände oder eine freie Oberfläche den Kern abschneiden; 0: die SPH-Summen</translation>
+    </message>
+    <message>
+        <source>Density by summation</source>
+        <translation>Dichte durch Summation</translation>
+    </message>
+    <message>
+        <source>1: each fluid particle&apos;s density from how closely its neighbours stand, m_i sum_j W_ij scaled so that the seeding lattice reads the rest density (no continuity equation, so no density diffusion: delta_sph and fpm have nothing to act on); it cannot drift from the particles&apos; spacing, which the continuity density did in a stenotic jet&apos;s wake; vessels only (a fluid that fills its walls); 0: the continuity equation</source>
+        <translation>1: die Dichte jedes Fluidpartikels aus dem Abstand seiner Nachbarn, m_i sum_j W_ij, so skaliert, dass das Startgitter die Ruhedichte ergibt (keine Kontinuitätsgleichung, also keine Dichtediffusion: delta_sph und fpm wirken nicht); sie kann nicht vom Abstand der Partikel abdriften, wie es die Kontinuitätsdichte im Nachlauf eines Stenosejets tat; nur für Gefäße (ein Fluid, das seine Wände füllt); 0: die Kontinuitätsgleichung</translation>
+    </message>
+    <message>
+        <source>Density relaxation time</source>
+        <translation>Relaxationszeit der Dichte</translation>
+    </message>
+    <message>
+        <source>&gt; 0: with the continuity equation, each fluid particle&apos;s density also relaxes towards its summation density over this time, so that it cannot drift from the particles&apos; spacing over longer times (a stenotic jet&apos;s wake thinned out by 30 % at a constant continuity density) while keeping the continuity density&apos;s smoothness over shorter ones; a drift at rate r leaves the two about r times this apart; vessels only; 0: off</source>
+        <translation>&gt; 0: mit der Kontinuitätsgleichung relaxiert die Dichte jedes Fluidpartikels zusätzlich über diese Zeit zu seiner Summationsdichte, sodass sie über längere Zeiten nicht vom Abstand der Partikel abdriften kann (der Nachlauf eines Stenosejets dünnte bei gleichbleibender Kontinuitätsdichte um 30 % aus), über kürzere aber die Glätte der Kontinuitätsdichte behält; eine Drift mit der Rate r lässt beide etwa r mal diese Zeit auseinander; nur für Gefäße; 0: aus</translation>
     </message>
 </context>
 <context>

@@ -4203,7 +4203,19 @@
     </message>
     <message>
         <source>the open boundary &apos;%1&apos; has buffer particles down to %2 mm behind its plane, and its buffer must be as deep as the kernel&apos;s support, %3 mm (2 x the smoothing ratio x the spacing): seed it for this smoothing ratio</source>
-        <translation>开放边界 '%1' 的缓冲粒子位于其平面后方至 %2 mm 处，而其缓冲区必须与核函数的支撑域一样深，即 %3 mm（2 x 光滑比 x 粒子间距）：请按此光滑比重新布置粒子</translation>
+        <translation>开放边界 &apos;%1&apos; 的缓冲粒子位于其平面后方至 %2 mm 处，而其缓冲区必须与核函数的支撑域一样深，即 %3 mm（2 x 光滑比 x 粒子间距）：请按此光滑比重新布置粒子</translation>
+    </message>
+    <message>
+        <source>density by summation (density_summation 1) needs a fluid that fills its vessel: at a free surface (free_surface 1) or the edge of a liquid without tension (fluid_tension 0) the particles&apos; sums fall short and would read as suction; set density_summation 0</source>
+        <translation>求和密度（density_summation 1）需要充满血管的流体：在自由表面（free_surface 1）或无张力液体（fluid_tension 0）的边缘，粒子的求和不足，会被读作吸力；请设置 density_summation 0</translation>
+    </message>
+    <message>
+        <source>the Finite Particle Method (fpm 1) corrects the continuity equation&apos;s density rate, which density by summation (density_summation 1) does not use: set one of them to 0</source>
+        <translation>有限粒子法（fpm 1）修正连续性方程的密度变化率，而求和密度（density_summation 1）不使用它：请将其中之一设为 0</translation>
+    </message>
+    <message>
+        <source>the density&apos;s relaxation towards summation (density_relaxation_s &gt; 0) is for the continuity density (density_summation 0) of a fluid that fills its vessel (free_surface 0, fluid_tension 1): set density_relaxation_s 0</source>
+        <translation>密度向求和密度的松弛（density_relaxation_s &gt; 0）适用于充满血管的流体（free_surface 0，fluid_tension 1）的连续性密度（density_summation 0）：请设置 density_relaxation_s 0</translation>
     </message>
 </context>
 <context>
@@ -5711,6 +5723,22 @@
     <message>
         <source>1: the density rate from the velocity&apos;s divergence and the density diffusion&apos;s gradient by the first-order Finite Particle Method (thesis eq. 5.17), exact for linear fields where walls or a free surface cut the kernel; 0: the SPH sums</source>
         <translation>1：密度变化率由速度散度、密度扩散项的梯度由一阶有限粒子法（论文式 5.17）计算，在壁面或自由表面截断核函数处对线性场仍精确；0：SPH 求和</translation>
+    </message>
+    <message>
+        <source>Density by summation</source>
+        <translation>求和密度</translation>
+    </message>
+    <message>
+        <source>1: each fluid particle&apos;s density from how closely its neighbours stand, m_i sum_j W_ij scaled so that the seeding lattice reads the rest density (no continuity equation, so no density diffusion: delta_sph and fpm have nothing to act on); it cannot drift from the particles&apos; spacing, which the continuity density did in a stenotic jet&apos;s wake; vessels only (a fluid that fills its walls); 0: the continuity equation</source>
+        <translation>1：每个流体粒子的密度由其邻居的间距得出，m_i sum_j W_ij，经缩放使初始晶格读出静止密度（无连续性方程，因此无密度扩散：delta_sph 和 fpm 不起作用）；它不会像连续性密度在狭窄射流尾流中那样偏离粒子间距；仅用于血管（充满其壁的流体）；0：连续性方程</translation>
+    </message>
+    <message>
+        <source>Density relaxation time</source>
+        <translation>密度松弛时间</translation>
+    </message>
+    <message>
+        <source>&gt; 0: with the continuity equation, each fluid particle&apos;s density also relaxes towards its summation density over this time, so that it cannot drift from the particles&apos; spacing over longer times (a stenotic jet&apos;s wake thinned out by 30 % at a constant continuity density) while keeping the continuity density&apos;s smoothness over shorter ones; a drift at rate r leaves the two about r times this apart; vessels only; 0: off</source>
+        <translation>&gt; 0：使用连续性方程时，每个流体粒子的密度还在此时间内向其求和密度松弛，使其在较长时间内不会偏离粒子间距（狭窄射流的尾流在连续性密度不变时稀疏了 30 %），而在较短时间内保持连续性密度的平滑；以速率 r 的漂移使两者相差约 r 乘以此时间；仅用于血管；0：关闭</translation>
     </message>
 </context>
 <context>

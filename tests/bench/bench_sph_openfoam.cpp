@@ -276,12 +276,15 @@ int main(int argc, char** argv)
                              {"steps", flow.metrics.at("steps")}, {"particles", flow.metrics.at("particles")},
                              {"largest_density_variation", flow.metrics.at("largest_density_variation")},
                              {"precision", "double"}, {"spacing_mm", pipe.spacingMm},
-                             {"mean_speed_m_s", pipe.meanSpeedMS}, {"length_mm", pipe.lengthMm}};
+                             {"mean_speed_m_s", pipe.meanSpeedMS}, {"length_mm", pipe.lengthMm},
+                             {"inflow_kg", flow.metrics.at("inflow_kg")}, {"outflow_kg", flow.metrics.at("outflow_kg")},
+                             {"initial_fluid_kg", flow.metrics.at("fluid_mass_kg") - flow.metrics.at("fluid_mass_change_kg")}};
             if (pulsatile)
                 report["sph"]["period_s"] = pipe.inflowWaveform.period(), report["sph"]["amplitude"] = amplitude,
                 report["sph"]["systolic_sections"] = bench::sectionsJson(flow.arcMm, flow.systolicFlows);
             if (!sphOut.empty())
                 std::ofstream(sphOut) << report["sph"].dump(1) << '\n';
+            report["fluid_kept"] = fluidKept(report["sph"]);
         }
         const sim::sph::StenosisFigures sphFigures = sim::sph::stenosisFigures(arcs, sph, pipe.compareMm);
         report["sph"]["figures"] = figuresJson(sphFigures);

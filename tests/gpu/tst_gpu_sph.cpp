@@ -133,10 +133,14 @@ private slots:
         QTest::addColumn<double>("shifting");
         QTest::addColumn<bool>("correction");
         QTest::addColumn<bool>("fpm");
-        QTest::newRow("plain") << 0.0 << false << false;
-        QTest::newRow("particle shifting A 2") << 2.0 << false << false;
-        QTest::newRow("particle shifting A 2, corrected") << 2.0 << true << false;
-        QTest::newRow("Finite Particle Method") << 0.0 << false << true;
+        QTest::addColumn<bool>("summation");
+        QTest::addColumn<double>("relaxationS");
+        QTest::newRow("plain") << 0.0 << false << false << false << 0.0;
+        QTest::newRow("particle shifting A 2") << 2.0 << false << false << false << 0.0;
+        QTest::newRow("particle shifting A 2, corrected") << 2.0 << true << false << false << 0.0;
+        QTest::newRow("Finite Particle Method") << 0.0 << false << true << false << 0.0;
+        QTest::newRow("density by summation, shifting A 2") << 2.0 << false << false << true << 0.0;
+        QTest::newRow("continuity relaxed to summation over 0.5 ms, shifting A 2") << 2.0 << false << false << false << 5e-4;
     }
     void stenosisPipeParityWithOpenBoundaries()
     {
@@ -145,10 +149,14 @@ private slots:
         QFETCH(double, shifting);
         QFETCH(bool, correction);
         QFETCH(bool, fpm);
+        QFETCH(bool, summation);
+        QFETCH(double, relaxationS);
         StenosisPipe pipe;
         pipe.rampS = 0.001;
         pipe.particleShifting = shifting;
         pipe.shiftCorrection = correction;
+        pipe.densitySummation = summation;
+        pipe.densityRelaxationS = relaxationS;
         SphSolver cpu;
         configureStenosisPipe(pipe, cpu);
         SimulationInput input;
@@ -224,10 +232,10 @@ private slots:
         const double outletDifference = std::abs(gpu.flowRate(1) - cpu.openBoundaries().flowRate(1)) / q;
         const double time = std::abs(gpu.timeS() - cpu.position()) / cpu.position();
         for (const auto& [steps, d] : {std::pair{100, at100}, std::pair{300, at300}})
-            qInfo("stenosis pipe at 0.1 mm, particle shifting %g, FPM %d, %d steps: particles CPU %zu, GPU %zu (%zu given, %zu compared, %zu "
+            qInfo("stenosis pipe at 0.1 mm, particle shifting %g, FPM %d, summation %d, relaxation %g s, %d steps: particles CPU %zu, GPU %zu (%zu given, %zu compared, %zu "
                   "in another buffer or removed on one side); GPU - CPU: position %.3g of the largest "
                   "displacement, %.3g of the spacing; velocity %.3g, density %.3g (relative)",
-                  shifting, int(fpm), steps, d.cpuParticles, d.gpuParticles, given, d.compared, d.boundaryDiffers, d.position,
+                  shifting, int(fpm), int(summation), relaxationS, steps, d.cpuParticles, d.gpuParticles, given, d.compared, d.boundaryDiffers, d.position,
                   d.positionPerSpacing, d.velocity, d.density);
         qInfo("after 300 steps (t = %.5f s): inflow %.6g kg (GPU %.3g relative), outflow %.6g kg (GPU - CPU %.3g "
               "of the inflow); flow rates: inlet %.3g, outlet %.3g relative to the inlet's %.4g ml/s; time %.3g",
@@ -240,10 +248,16 @@ private slots:
         // Positions: here a particle moves 0.0025 spacings a step, and a single-precision position 5 mm from the
         // box's corner rounds by 2.3e-6 spacings a step, so the positions part by that floor (1.6e-4 spacings after
         // 300 steps, 5.7e-4 of the largest displacement after 100), not by the algorithm: bounded per spacing.
-        QVERIFY(at100.velocity <= 1e-4 && at100.density <= 1e-4 && at100.positionPerSpacing <= 1e-3);
+        // Density by summation reads the positions themselves, whose single-precision rounding (2.3e-6 spacings a
+        // step, above) the continuity density never sees: after 100 steps the densities part by 3.2e-5 and the
+        // velocities, tiny yet in the ramp's first tenth, by 2.7e-3 of the largest (on the H200, 2026-12-04;
+        // 1.7e-3 after 300); relaxed towards summation over 0.5 ms, by 6.4e-6 and 6.8e-4 (6.4e-4 after 300). Their
+        // velocities are held to 5e-3 and 2e-3: the 1e-4 is the continuity density's.
+        const double velocityBound = summation ? 5e-3 : relaxationS > 0.0 ? 2e-3 : 1e-4;
+        QVERIFY(at100.velocity <= velocityBound && at100.density <= 1e-4 && at100.positionPerSpacing <= 1e-3);
         // With particle shifting the single-precision difference grows faster after the first 100 steps (a shift
         // moves a particle by the small difference of large sums; 4.0e-4 in velocity after 300 steps on the H200).
-        QVERIFY(at300.velocity <= (shifting > 0.0 ? 1e-3 : 3e-4) && at300.density <= 1e-4 &&
+        QVERIFY(at300.velocity <= (summation ? velocityBound : shifting > 0.0 ? 1e-3 : 3e-4) && at300.density <= 1e-4 &&
                 at300.positionPerSpacing <= 1e-3 && time <= 1e-4);
         QVERIFY(inflowDifference <= 1e-4 && outflowDifference <= 1e-4 && inletDifference <= 1e-4 &&
                 outletDifference <= 1e-4);

@@ -193,6 +193,12 @@ struct CudaSph::Device
         const Eigen::Vector3d external = fluid.externalAcceleration(timeS);
         const float e[3] = {float(external.x()), float(external.y()), float(external.z())};
         const int wallCount = n - fluidCount - bufferCount;
+        if (params.summation)
+        {
+            sph::launchSummationDensity(params, current.pointers(), cellStart.data, cellEnd.data, fluidList.data,
+                                        fluidCount);
+            phases.lap("density by summation");
+        }
         if (open())
         {
             for (int k = 0; k < boundaryArgs.count; ++k)

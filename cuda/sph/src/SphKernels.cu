@@ -88,6 +88,20 @@ __global__ void wallPressureKernel(SphParams p, SphArrays a, SphRatesArrays rate
         a.state[i].x = densityAt(p, fmaxf(p.pressureFloor, pressure / weight), a.state[i].z);
 }
 
+/// summationDensity: a fluid particle's density m_i sum_j W_ij (itself included) times the lattice's scale.
+__global__ void summationDensityKernel(SphParams p, SphArrays a, const unsigned* cellStart, const unsigned* cellEnd,
+                                       const int* fluid, int count)
+{
+    const int t = blockIdx.x * blockDim.x + threadIdx.x;
+    if (t >= count)
+        return;
+    const int i = fluid[t];
+    float sum = kernelValue(p, 0.0f);
+    forEachNeighbour(p, a, cellStart, cellEnd, i,
+                     [&](int, float4, float, float, float, float r, float) { sum += kernelValue(p, r); });
+    a.state[i].x = p.summationScale * a.state[i].y * sum;
+}
+
 __global__ void pressuresKernel(SphParams p, SphArrays a, SphRatesArrays rates, int n)
 {
     const int i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -200,6 +214,7 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         // The per-neighbour work with the factors common to all neighbours taken out of the sums, and the
         // dot products with grad W = g rij as g times the dot product with rij (the same sums, reordered).
         float continuity = 0.0f, diffusion = 0.0f, fx = 0.0f, fy = 0.0f, fz = 0.0f;
+        float weights = kernelValue(p, 0.0f); // sum_j W_ij, i included (the relaxation towards summation)
         float viscousX = 0.0f, viscousY = 0.0f, viscousZ = 0.0f;
         float crowdX = 0.0f, crowdY = 0.0f, crowdZ = 0.0f; // grad C_i (particle shifting)
         float gradV[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};     // d v_k / d x_l at 3 k + l (the shift's correction)
@@ -222,6 +237,8 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
                                  diffusion +=
                                      vg * (-2.0f * (dj.w - relativeI) -
                                            ((gi.x + gj.x) * rx + (gi.y + gj.y) * ry + (gi.z + gj.z) * rz));
+                             if (p.relaxationRate > 0.0f)
+                                 weights += kernelValue(p, rr);
                              const float pressureTerm = (dj.z * pressureI + dj.y) * g;
                              fx -= pressureTerm * rx, fy -= pressureTerm * ry, fz -= pressureTerm * rz;
                              float wx = vx, wy = vy, wz = vz;
@@ -258,7 +275,11 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         // With FPM the continuity equation's divergence is the FPM one where its system was regular (SphRates.h).
         const float fpmDivergence = p.fpm ? rates.velocityDivergence[i] : NAN;
         rates.densityRate[i] =
-            (isfinite(fpmDivergence) ? -rhoI * fpmDivergence : rhoI * continuity) + p.diffusion * restI * diffusion;
+            p.summation ? 0.0f
+                        : (isfinite(fpmDivergence) ? -rhoI * fpmDivergence : rhoI * continuity) +
+                              p.diffusion * restI * diffusion;
+        if (p.relaxationRate > 0.0f)
+            rates.densityRate[i] += p.relaxationRate * (p.summationScale * si.y * weights - rhoI);
         fx += inverseRhoI * viscousX + ex;
         fy += inverseRhoI * viscousY + ey;
         fz += inverseRhoI * viscousZ + ez;
@@ -381,6 +402,15 @@ void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesAr
     if (count == 0)
         return;
     wallPressureKernel<<<blocks(count), kThreads>>>(p, a, rates, cellStart, cellEnd, cellFluid, walls, count);
+    VSIM_CUDA_CHECK(cudaGetLastError());
+}
+
+void launchSummationDensity(const SphParams& p, const SphArrays& a, const unsigned* cellStart,
+                            const unsigned* cellEnd, const int* fluid, int count)
+{
+    if (count == 0)
+        return;
+    summationDensityKernel<<<blocks(count), kThreads>>>(p, a, cellStart, cellEnd, fluid, count);
     VSIM_CUDA_CHECK(cudaGetLastError());
 }
 

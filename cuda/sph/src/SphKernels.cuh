@@ -41,6 +41,13 @@ struct SphParams
     /// 1: the Finite Particle Method's density rate and density gradient (FluidModel::finiteParticleMethod;
     /// launchFpm). After shiftCorrection for the same reason.
     int fpm;
+    /// 1: density by summation (FluidModel::densitySummation; launchSummationDensity), each fluid particle's
+    /// m_i sum_j W_ij times summationScale, and no density rate. After fpm for the same reason.
+    int summation;
+    float summationScale;
+    /// 1 / tau of the continuity density's relaxation towards summation (FluidModel::densityRelaxationS; 1/s;
+    /// 0: off).
+    float relaxationRate;
 };
 
 /// The number of the row of cells (y, z): rows are numbered tile by tile (tile x tile rows, y fastest
@@ -114,6 +121,10 @@ void launchPartition(const SphArrays& a, int n, int* fluid, int* buffers, int* w
 void launchWallPressure(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,
                         const unsigned* cellStart, const unsigned* cellEnd, const unsigned* cellFluid,
                         const int* walls, int count);
+/// Density by summation (SphRates.h, summationDensity): the `count` fluid particles' densities from their
+/// neighbours' positions.
+void launchSummationDensity(const SphParams& p, const SphArrays& a, const unsigned* cellStart,
+                            const unsigned* cellEnd, const int* fluid, int count);
 /// Every particle's pressure (state.w) and its derived record.
 void launchPressures(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates, int n);
 void launchNeighbourhood(const SphParams& p, const SphArrays& a, const SphRatesArrays& rates,

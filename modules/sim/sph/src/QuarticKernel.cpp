@@ -43,4 +43,15 @@ Eigen::Vector3d QuarticKernel::gradient(const Eigen::Vector3d& rij) const
     return derivative(r) / r * rij;
 }
 
+double QuarticKernel::latticeSum(double spacingM) const
+{
+    const int reach = int(std::ceil(support() / spacingM));
+    double sum = 0.0;
+    for (int x = -reach; x <= reach; ++x)
+        for (int y = -reach; y <= reach; ++y)
+            for (int z = -reach; z <= reach; ++z)
+                sum += value(spacingM * std::sqrt(double(x * x + y * y + z * z)));
+    return sum;
+}
+
 } // namespace vsim::sim::sph

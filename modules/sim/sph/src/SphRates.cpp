@@ -134,6 +134,23 @@ void fluidNeighbourhood(const ParticleState& particles, const NeighbourGrid& gri
 
 } // namespace
 
+void summationDensity(ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
+                      const FluidModel& fluid)
+{
+    const int n = int(particles.size());
+    const double self = kernel.value(0.0);
+#pragma omp parallel for schedule(dynamic, 256)
+    for (int i = 0; i < n; ++i)
+    {
+        const std::size_t si = std::size_t(i);
+        if (!particles.isFluid(si))
+            continue;
+        double sum = self;
+        grid.forEachNeighbour(particles.position, i, [&](int, const Eigen::Vector3d&, double r) { sum += kernel.value(r); });
+        particles.density[si] = fluid.summationScale * particles.mass[si] * sum;
+    }
+}
+
 void computeRates(const ParticleState& particles, const std::vector<double>& pressure, const NeighbourGrid& grid,
                   const QuarticKernel& kernel, const FluidModel& fluid, double timeS, SphRates& rates)
 {
@@ -151,6 +168,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
     rates.acceleration.assign(std::size_t(n), Eigen::Vector3d::Zero());
     rates.densityRate.assign(std::size_t(n), 0.0);
     const bool shifting = fluid.particleShifting > 0.0;
+    const bool relaxing = fluid.densityRelaxationS > 0.0 && !fluid.densitySummation;
     rates.shiftVelocity.assign(shifting ? std::size_t(n) : 0u, Eigen::Vector3d::Zero());
     const double h = kernel.smoothingLength(), eta2 = kEtaSquared * h * h;
     const double diffusion = fluid.densityDiffusion * h * fluid.soundSpeed;
@@ -168,7 +186,7 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         const double restI = fluid.mixtureDensity(particles.voidFraction[si]), relativeI = rhoI / restI;
         const double muI = fluid.mixtureViscosity(particles.voidFraction[si]);
         auto relativeJ = [&](std::size_t sj) { return relativeDensity(particles, fluid, sj); };
-        double continuity = 0.0, diffusionRate = 0.0;
+        double continuity = 0.0, diffusionRate = 0.0, weights = kernel.value(0.0); // weights: sum_j W_ij, i included
         Eigen::Vector3d force = Eigen::Vector3d::Zero(), crowding = Eigen::Vector3d::Zero();
         Eigen::Matrix3d velocityGradient = Eigen::Matrix3d::Zero(); // d v_k / d x_l (the shift's correction)
         grid.forEachNeighbour(
@@ -187,6 +205,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
                     diffusionRate += diffusion * restI * (mJ / rhoJ) * psi.dot(gradW);
                 }
                 const double rDotGrad = rij.dot(gradW);
+                if (relaxing)
+                    weights += kernel.value(r);
                 force -= mJ * (pI / (rhoI * rhoI) + pressure[sj] / (rhoJ * rhoJ)) * gradW;
                 force += viscousAcceleration(particles, fluid, si, sj, rDotGrad, r, eta2,
                                              viscousVelocityDifference(particles, si, sj, rates.wallDistance[si], h));
@@ -205,7 +225,10 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
             });
         // With FPM the continuity equation's divergence is the FPM one where its system was regular (SphRates.h).
         const bool fpmDivergence = !rates.velocityDivergence.empty() && std::isfinite(rates.velocityDivergence[si]);
-        rates.densityRate[si] = (fpmDivergence ? -rhoI * rates.velocityDivergence[si] : continuity) + diffusionRate;
+        if (!fluid.densitySummation)
+            rates.densityRate[si] = (fpmDivergence ? -rhoI * rates.velocityDivergence[si] : continuity) + diffusionRate;
+        if (relaxing)
+            rates.densityRate[si] += (fluid.summationScale * particles.mass[si] * weights - rhoI) / fluid.densityRelaxationS;
         rates.acceleration[si] = force + external;
         if (shifting)
         {

@@ -48,6 +48,18 @@ std::vector<ParameterSpec> sphParameters()
          K::Real},
         {"delta_sph", "Density diffusion", "", 0.1, 0.0, 1.0, "Numerics",
          "delta of the delta-SPH term (Molteni & Colagrossi 2009; 0 switches it off)", K::Real},
+        {"density_summation", "Density by summation", "", 0, 0, 1, "Numerics",
+         "1: each fluid particle's density from how closely its neighbours stand, m_i sum_j W_ij scaled so that the "
+         "seeding lattice reads the rest density (no continuity equation, so no density diffusion: delta_sph and fpm "
+         "have nothing to act on); it cannot drift from the particles' spacing, which the continuity density did in a "
+         "stenotic jet's wake; vessels only (a fluid that fills its walls); 0: the continuity equation",
+         K::Integer},
+        {"density_relaxation_s", "Density relaxation time", "s", 0.0, 0.0, 1e3, "Numerics",
+         "> 0: with the continuity equation, each fluid particle's density also relaxes towards its summation density "
+         "over this time, so that it cannot drift from the particles' spacing over longer times (a stenotic jet's wake "
+         "thinned out by 30 % at a constant continuity density) while keeping the continuity density's smoothness "
+         "over shorter ones; a drift at rate r leaves the two about r times this apart; vessels only; 0: off",
+         K::Real},
         {"particle_shifting", "Particle shifting", "", 0.0, 0.0, 10.0, "Numerics",
          "A of the shift's coefficient A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: off): the drift also moves "
          "each fluid particle down the gradient of the particles' concentration, which keeps a fast jet's shear layer "
@@ -135,6 +147,22 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
         throw Error("particle shifting (particle_shifting > 0) needs a fluid that fills its vessel: a free surface "
                     "(free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; "
                     "set particle_shifting 0");
+    m_fluid.densitySummation = parameters.get("density_summation") > 0.5;
+    if (m_fluid.densitySummation && (parameters.get("free_surface") > 0.5 || !m_fluid.tension))
+        throw Error("density by summation (density_summation 1) needs a fluid that fills its vessel: at a free surface "
+                    "(free_surface 1) or the edge of a liquid without tension (fluid_tension 0) the particles' sums "
+                    "fall short and would read as suction; set density_summation 0");
+    if (m_fluid.densitySummation && m_fluid.finiteParticleMethod)
+        throw Error("the Finite Particle Method (fpm 1) corrects the continuity equation's density rate, which density "
+                    "by summation (density_summation 1) does not use: set one of them to 0");
+    m_fluid.densityRelaxationS = parameters.get("density_relaxation_s");
+    if (m_fluid.densityRelaxationS > 0.0 && (m_fluid.densitySummation || parameters.get("free_surface") > 0.5 || !m_fluid.tension))
+        throw Error("the density's relaxation towards summation (density_relaxation_s > 0) is for the continuity density "
+                    "(density_summation 0) of a fluid that fills its vessel (free_surface 0, fluid_tension 1): set "
+                    "density_relaxation_s 0");
+    if (m_fluid.densitySummation) // nothing to diffuse: no density rate
+        m_fluid.densityDiffusion = 0.0;
+    m_fluid.summationScale = 1.0 / (spacing * spacing * spacing * m_kernel->latticeSum(spacing));
     m_fluid.bodyForce = {parameters.get("body_force_x_m_s2"), parameters.get("body_force_y_m_s2"),
                          parameters.get("body_force_z_m_s2")};
     m_fluid.bodyForceFrequency = parameters.get("body_force_frequency_hz");
@@ -274,6 +302,8 @@ long double SphSolver::fluidMass() const
 
 void SphSolver::updateRates(double timeS)
 {
+    if (m_fluid.densitySummation)
+        summationDensity(m_particles, *m_grid, *m_kernel, m_fluid);
     if (!m_openBoundaries.empty())
         m_openBoundaries.impose(m_particles, *m_grid, *m_kernel, m_fluid, timeS);
     extrapolateWallPressure(m_particles, *m_grid, *m_kernel, m_fluid, m_freeSurface);

@@ -139,6 +139,8 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
     parameters.set("particle_shifting", pipe.particleShifting);
     parameters.set("shift_correction", pipe.shiftCorrection ? 1.0 : 0.0);
     parameters.set("wall_repulsion", pipe.wallRepulsion);
+    parameters.set("density_summation", pipe.densitySummation ? 1.0 : 0.0);
+    parameters.set("density_relaxation_s", pipe.densityRelaxationS);
     return parameters;
 }
 

@@ -35,6 +35,15 @@ struct FluidModel
     /// the continuity equation's velocity divergence and the delta-SPH term's density gradient from FPM systems
     /// instead of the SPH sums.
     bool finiteParticleMethod = false;
+    /// Density by summation instead of the continuity equation (SphRates.h, summationDensity): a fluid particle's
+    /// density is m_i sum_j W_ij over every neighbour (itself, fluid, walls, buffers) times summationScale, 1 /
+    /// (V0 sum over the seeding lattice), so that the lattice the particles start on reads exactly their rest
+    /// density. For a fluid that fills its vessel (SphSolver refuses a free surface or a liquid without tension).
+    bool densitySummation = false;
+    double summationScale = 1.0;
+    /// With the continuity density: the time (s) over which it relaxes towards the summation density, a rate
+    /// (rho_sum,i - rho_i) / tau added to drho_i/dt (SphRates.h); 0: off.
+    double densityRelaxationS = 0.0;
     /// R of the shift's anti-clumping term R (W_ij / W(spacing))^4 (Lind et al. 2012; Monaghan 2000).
     static constexpr double kAntiClumping = 0.2;
     Eigen::Vector3d gravity = Eigen::Vector3d::Zero(); ///< m/s^2

@@ -46,6 +46,20 @@
 //      the support, where the SPH sums are not (tst_sph_fpm_rates). Where a system is singular (a particle with too
 //      few neighbours), that particle keeps the SPH sum. Not momentum-conserving in the continuity equation (the
 //      SPH sum's pairwise antisymmetry is given up), as in the thesis. The CUDA backend's launchFpm runs the same.
+//  density by summation (an option, FluidModel::densitySummation): rho_i = m_i sum_j W_ij (Hu & Adams 2006's number
+//      density, times the lattice's scale) from the positions alone, and no continuity rate. The continuity density
+//      is a particle's own record and drifts from what its neighbours' spacing says wherever the discrete divergence
+//      misses how they move apart (a stenotic jet's shear layer, particles shifted, fluid handed over by an open
+//      end): the pulsatile stenosis at throat Re 200 read rho0 by continuity where the wake's particles stood at
+//      0.5-0.7 of the lattice's number density, no pressure held them, and the pipe lost 30 % of its fluid
+//      through the outlet (RESULTS.md, 2026-12-04). Summation cannot drift: fluid that thins out is at a lower
+//      pressure and is drawn back. It needs the support filled (walls a support deep, no free surface). Summation
+//      reads every particle's disorder at once, though: at the pulsatile stenosis's inlet (Womersley 9 against the
+//      buffer's parabola) it swung to 5 % where the continuity density stayed within 2.2 % (RESULTS.md, 2026-12-04).
+//  the continuity density relaxed towards summation (an option, FluidModel::densityRelaxationS tau > 0): drho_i/dt
+//      gains (rho_sum,i - rho_i) / tau. Over times short against tau the continuity density's smoothness stands (and
+//      its delta-SPH term); over longer ones a particle's density follows its neighbours' spacing, so the slow drift
+//      above cannot build up: a drift at rate r leaves the two apart by about r tau.
 
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
@@ -59,7 +73,7 @@ namespace vsim::sim::sph {
 struct SphRates
 {
     std::vector<Eigen::Vector3d> acceleration; ///< m/s^2 (zero at wall and buffer particles)
-    std::vector<double> densityRate;           ///< kg/(m^3 s)
+    std::vector<double> densityRate;           ///< kg/(m^3 s) (zero at fluid particles with density by summation)
     /// s_i, m/s (fluid particles with particle shifting on; empty when it is off)
     std::vector<Eigen::Vector3d> shiftVelocity;
     /// G_i, kg/m^4 (fluid particles; zero where M_i is singular).
@@ -82,6 +96,12 @@ struct SphRates
 
 /// The pressure of every particle from its density (Tait).
 std::vector<double> pressures(const ParticleState& particles, const FluidModel& fluid);
+
+/// Density by summation (FluidModel::densitySummation): each fluid particle's density (not the walls', whose
+/// density is their extrapolated pressure's, nor the buffers', whose values the open boundaries impose), `grid` built
+/// on the particles' positions.
+void summationDensity(ParticleState& particles, const NeighbourGrid& grid, const QuarticKernel& kernel,
+                      const FluidModel& fluid);
 
 /// Fills `rates` for the particles (`grid` built on their positions) at time `timeS` (s: the body force's phase).
 void computeRates(const ParticleState& particles, const std::vector<double>& pressure, const NeighbourGrid& grid,

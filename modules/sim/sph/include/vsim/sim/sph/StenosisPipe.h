@@ -38,6 +38,8 @@ struct StenosisPipe
     double smoothingRatio = 2.0;                      ///< the solver's smoothing_ratio h / spacing (the buffers: 2h)
     double particleShifting = 0.0;                    ///< the solver's particle_shifting A (0: off; SphRates.h)
     bool shiftCorrection = false;                     ///< the solver's shift_correction (SphRates.h)
+    bool densitySummation = false;                    ///< the solver's density_summation (SphRates.h)
+    double densityRelaxationS = 0.0;                  ///< the solver's density_relaxation_s (SphRates.h; 0: off)
     double cfl = kStenosisCfl;                        ///< the Courant number (atFlow lowers it for faster jets)
     double wallRepulsion = 0.0;                       ///< the solver's wall_repulsion (the walls' backstop; 0: off)
     double compareMm = 1.6;                           ///< the compared sections' distance from the throat (2 R0)
