@@ -2,6 +2,8 @@
 // back; its Taylor correction adds the exact (s . grad) v in a shear flow; the solver refuses shifting with a free
 // surface or without tension. Split from tst_sph_particles.cpp (the particle machinery).
 
+#include "SphRefusal.h"
+
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/FluidModel.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
@@ -186,24 +188,9 @@ private slots:
     {
         for (const char* name : {"free_surface", "fluid_tension"})
         {
-            ParticleSet particles;
-            particles.positionsMm = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0.5, 0.0, 0.0)};
-            particles.fields["wall"] = {0.0, 0.0};
-            ParameterSet parameters(sphParameters());
-            parameters.set("particle_shifting", 2.0);
-            parameters.set(name, std::string(name) == "free_surface" ? 1.0 : 0.0);
-            SimulationInput input;
-            input.data["particles"] = particles;
-            SphSolver solver;
-            try
-            {
-                solver.initialize(input, parameters);
-                QFAIL("particle shifting was not refused");
-            }
-            catch (const Error& error)
-            {
-                QVERIFY2(error.message().find("particle_shifting 0") != std::string::npos, error.message().c_str());
-            }
+            const std::string refusal = test::sphRefusal(
+                {{"particle_shifting", 2.0}, {name, std::string(name) == "free_surface" ? 1.0 : 0.0}});
+            QVERIFY2(refusal.find("particle_shifting 0") != std::string::npos, name);
         }
     }
 
