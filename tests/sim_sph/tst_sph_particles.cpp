@@ -5,6 +5,7 @@
 // depths on a lattice-seeded curved wall, and the stenosis pipe at a faster flow (particle shifting:
 // tst_sph_shifting.cpp).
 
+#include "JitteredLattice.h"
 #include "SphRefusal.h"
 
 #include "vsim/core/Error.h"
@@ -360,17 +361,9 @@ private slots:
         constexpr int kSide = 12;
         auto lattice = [&](double stretch, unsigned seed, double jitter)
         {
-            std::mt19937 random(seed);
-            std::uniform_real_distribution<double> offset(-jitter, jitter);
             ParticleState particles;
-            for (int x = 0; x < kSide; ++x)
-                for (int y = 0; y < kSide; ++y)
-                    for (int z = 0; z < kSide; ++z)
-                    {
-                        const Eigen::Vector3d at = stretch * spacing *
-                                                   (Eigen::Vector3d(x, y, z) + Eigen::Vector3d(offset(random), offset(random), offset(random)));
-                        particles.add(at, 0.0, rho0 * spacing * spacing * spacing, false, -1.0, 0.0);
-                    }
+            for (const Eigen::Vector3d& at : test::jitteredLattice(Eigen::Vector3i::Constant(kSide), stretch * spacing, jitter, seed))
+                particles.add(at, 0.0, rho0 * spacing * spacing * spacing, false, -1.0, 0.0);
             NeighbourGrid grid(kernel.support(), Eigen::Vector3d::Constant(stretch * spacing * kSide));
             for (Eigen::Vector3d& x : particles.position)
                 x = grid.wrap(x);

@@ -2,6 +2,7 @@
 // back; its Taylor correction adds the exact (s . grad) v in a shear flow; the solver refuses shifting with a free
 // surface or without tension. Split from tst_sph_particles.cpp (the particle machinery).
 
+#include "JitteredLattice.h"
 #include "SphRefusal.h"
 
 #include "vsim/core/Error.h"
@@ -119,20 +120,13 @@ private slots:
         NeighbourGrid grid(kernel.support(), spacing * Eigen::Vector3d(nx, ny, nz));
         auto lattice = [&](double jitter, unsigned seed, bool shear)
         {
-            std::mt19937 random(seed);
-            std::uniform_real_distribution<double> offset(-jitter, jitter);
             ParticleState particles;
-            for (int k = 0; k < nz; ++k)
-                for (int j = 0; j < ny; ++j)
-                    for (int i = 0; i < nx; ++i)
-                    {
-                        const Eigen::Vector3d site = spacing * (Eigen::Vector3d(i, j, k) + Eigen::Vector3d::Constant(0.5));
-                        const Eigen::Vector3d x =
-                            grid.wrap(site + spacing * Eigen::Vector3d(offset(random), offset(random), offset(random)));
-                        particles.add(x, fluid.restDensity, fluid.restDensity * spacing * spacing * spacing, false);
-                        particles.velocity.back() =
-                            Eigen::Vector3d(shear ? speed * std::sin(wave * x.y()) : speed, 0.0, 0.0);
-                    }
+            for (const Eigen::Vector3d& site : test::jitteredLattice({nx, ny, nz}, spacing, jitter, seed))
+            {
+                const Eigen::Vector3d x = grid.wrap(site + Eigen::Vector3d::Constant(0.5 * spacing));
+                particles.add(x, fluid.restDensity, fluid.restDensity * spacing * spacing * spacing, false);
+                particles.velocity.back() = Eigen::Vector3d(shear ? speed * std::sin(wave * x.y()) : speed, 0.0, 0.0);
+            }
             return particles;
         };
         auto rates = [&](const ParticleState& particles, bool correction)
