@@ -632,6 +632,7 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "cannot open the SPH checkpoint"),
     QT_TRANSLATE_NOOP("vsim::Error", "not an SPH checkpoint of this version (its first line is not 'VSIM-SPH-CHECKPOINT 2')"),
     QT_TRANSLATE_NOOP("vsim::Error", "(sorting the particles): %1"),
+    QT_TRANSLATE_NOOP("vsim::Error", "at t = %1 s the vessel has lost %2 % of its first fluid mass through its open ends (outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill it, so its figures would not be a flow's; relax the density towards summation (density_relaxation_s) or raise the sound speed"),
     QT_TRANSLATE_NOOP("vsim::Error", "the SPH input's particles need the field 'wall' (1 at wall particles, 0 in the fluid)"),
     QT_TRANSLATE_NOOP("vsim::Error", "particle shifting (particle_shifting > 0) needs a fluid that fills its vessel: a free surface (free_surface 1) or a fluid without tension (fluid_tension 0) would be pushed apart at its edge; set particle_shifting 0"),
     QT_TRANSLATE_NOOP("vsim::Error", "density by summation (density_summation 1) needs a fluid that fills its vessel: at a free surface (free_surface 1) or the edge of a liquid without tension (fluid_tension 0) the particles' sums fall short and would read as suction; set density_summation 0"),

@@ -277,6 +277,8 @@ static const char* const kParameterTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Parameters", "Guards"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Density guard"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "the run stops when a fluid particle's density is further than this from the rest density (relative)"),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "Fluid loss guard"),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "> 0: the run stops when the fluid's net outflow through the open ends (outflow - inflow, the mass ledger's) exceeds this share of its first fluid mass: a vessel whose particles thin out while their densities still read full (the continuity density's drift: density_relaxation_s) empties, and its figures are not a flow's; 0: off (a domain that fills: an injection)"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Escape margin"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "the run stops when a particle leaves the particles' starting box grown by this"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Reorder every"),

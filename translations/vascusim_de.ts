@@ -4217,6 +4217,10 @@
         <source>the density&apos;s relaxation towards summation (density_relaxation_s &gt; 0) is for the continuity density (density_summation 0) of a fluid that fills its vessel (free_surface 0, fluid_tension 1): set density_relaxation_s 0</source>
         <translation>die Relaxation der Dichte zur Summation (density_relaxation_s &gt; 0) gilt der Kontinuitätsdichte (density_summation 0) eines Fluids, das sein Gefäß füllt (free_surface 0, fluid_tension 1): setzen Sie density_relaxation_s 0</translation>
     </message>
+    <message>
+        <source>at t = %1 s the vessel has lost %2 % of its first fluid mass through its open ends (outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill it, so its figures would not be a flow&apos;s; relax the density towards summation (density_relaxation_s) or raise the sound speed</source>
+        <translation>bei t = %1 s hat das Gefäß %2 % seiner anfänglichen Fluidmasse durch seine offenen Enden verloren (Ausfluss - Zufluss; fluid_loss_guard %3 %): seine Partikel füllen es nicht mehr, seine Werte wären also nicht die einer Strömung; lassen Sie die Dichte zur Summation relaxieren (density_relaxation_s) oder erhöhen Sie die Schallgeschwindigkeit</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5739,6 +5743,14 @@
     <message>
         <source>&gt; 0: with the continuity equation, each fluid particle&apos;s density also relaxes towards its summation density over this time, so that it cannot drift from the particles&apos; spacing over longer times (a stenotic jet&apos;s wake thinned out by 30 % at a constant continuity density) while keeping the continuity density&apos;s smoothness over shorter ones; a drift at rate r leaves the two about r times this apart; vessels only; 0: off</source>
         <translation>&gt; 0: mit der Kontinuitätsgleichung relaxiert die Dichte jedes Fluidpartikels zusätzlich über diese Zeit zu seiner Summationsdichte, sodass sie über längere Zeiten nicht vom Abstand der Partikel abdriften kann (der Nachlauf eines Stenosejets dünnte bei gleichbleibender Kontinuitätsdichte um 30 % aus), über kürzere aber die Glätte der Kontinuitätsdichte behält; eine Drift mit der Rate r lässt beide etwa r mal diese Zeit auseinander; nur für Gefäße; 0: aus</translation>
+    </message>
+    <message>
+        <source>Fluid loss guard</source>
+        <translation>Wächter für Fluidverlust</translation>
+    </message>
+    <message>
+        <source>&gt; 0: the run stops when the fluid&apos;s net outflow through the open ends (outflow - inflow, the mass ledger&apos;s) exceeds this share of its first fluid mass: a vessel whose particles thin out while their densities still read full (the continuity density&apos;s drift: density_relaxation_s) empties, and its figures are not a flow&apos;s; 0: off (a domain that fills: an injection)</source>
+        <translation>&gt; 0: der Lauf hält an, wenn der Nettoausfluss des Fluids durch die offenen Enden (Ausfluss - Zufluss, laut Massenbilanz) diesen Anteil seiner anfänglichen Fluidmasse übersteigt: ein Gefäß, dessen Partikel ausdünnen, während ihre Dichten noch voll anzeigen (die Drift der Kontinuitätsdichte: density_relaxation_s), leert sich, und seine Werte sind nicht die einer Strömung; 0: aus (ein Gebiet, das sich füllt: eine Injektion)</translation>
     </message>
 </context>
 <context>

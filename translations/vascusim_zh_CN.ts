@@ -4217,6 +4217,10 @@
         <source>the density&apos;s relaxation towards summation (density_relaxation_s &gt; 0) is for the continuity density (density_summation 0) of a fluid that fills its vessel (free_surface 0, fluid_tension 1): set density_relaxation_s 0</source>
         <translation>密度向求和密度的松弛（density_relaxation_s &gt; 0）适用于充满血管的流体（free_surface 0，fluid_tension 1）的连续性密度（density_summation 0）：请设置 density_relaxation_s 0</translation>
     </message>
+    <message>
+        <source>at t = %1 s the vessel has lost %2 % of its first fluid mass through its open ends (outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill it, so its figures would not be a flow&apos;s; relax the density towards summation (density_relaxation_s) or raise the sound speed</source>
+        <translation>在 t = %1 s 时，血管已通过其开放端失去其初始流体质量的 %2 %（流出 - 流入；fluid_loss_guard %3 %）：其粒子已不再充满血管，因此其数值不代表流动；请使密度向求和密度松弛（density_relaxation_s）或提高声速</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5739,6 +5743,14 @@
     <message>
         <source>&gt; 0: with the continuity equation, each fluid particle&apos;s density also relaxes towards its summation density over this time, so that it cannot drift from the particles&apos; spacing over longer times (a stenotic jet&apos;s wake thinned out by 30 % at a constant continuity density) while keeping the continuity density&apos;s smoothness over shorter ones; a drift at rate r leaves the two about r times this apart; vessels only; 0: off</source>
         <translation>&gt; 0：使用连续性方程时，每个流体粒子的密度还在此时间内向其求和密度松弛，使其在较长时间内不会偏离粒子间距（狭窄射流的尾流在连续性密度不变时稀疏了 30 %），而在较短时间内保持连续性密度的平滑；以速率 r 的漂移使两者相差约 r 乘以此时间；仅用于血管；0：关闭</translation>
+    </message>
+    <message>
+        <source>Fluid loss guard</source>
+        <translation>流体损失保护</translation>
+    </message>
+    <message>
+        <source>&gt; 0: the run stops when the fluid&apos;s net outflow through the open ends (outflow - inflow, the mass ledger&apos;s) exceeds this share of its first fluid mass: a vessel whose particles thin out while their densities still read full (the continuity density&apos;s drift: density_relaxation_s) empties, and its figures are not a flow&apos;s; 0: off (a domain that fills: an injection)</source>
+        <translation>&gt; 0：当流体通过开放端的净流出（流出 - 流入，按质量账）超过其初始流体质量的此比例时，运行停止：粒子变稀而密度仍显示为满的血管（连续性密度的漂移：density_relaxation_s）会排空，其数值不代表流动；0：关闭（逐渐充满的区域：注射）</translation>
     </message>
 </context>
 <context>

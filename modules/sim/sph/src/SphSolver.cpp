@@ -85,6 +85,12 @@ std::vector<ParameterSpec> sphParameters()
          "the run stops when a fluid particle's density is further than this from the rest density "
          "(relative)",
          K::Real},
+        {"fluid_loss_guard", "Fluid loss guard", "", 0.0, 0.0, 1.0, "Guards",
+         "> 0: the run stops when the fluid's net outflow through the open ends (outflow - inflow, the mass ledger's) "
+         "exceeds this share of its first fluid mass: a vessel whose particles thin out while their densities still "
+         "read full (the continuity density's drift: density_relaxation_s) empties, and its figures are not a flow's; "
+         "0: off (a domain that fills: an injection)",
+         K::Real},
         {"escape_margin_mm", "Escape margin", "mm", 5.0, 0.0, 1e4, "Guards",
          "the run stops when a particle leaves the particles' starting box grown by this", K::Real},
         {"reorder_every", "Reorder every", "steps", 20, 1, 1e6, "Numerics",
@@ -171,6 +177,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_cfl = parameters.get("cfl");
     m_endTimeS = parameters.get("end_time_s");
     m_densityGuard = parameters.get("density_guard");
+    m_fluidLossGuard = parameters.get("fluid_loss_guard");
     m_reorderEvery = int(parameters.get("reorder_every"));
     m_timeS = 0.0, m_steps = 0;
 
@@ -267,6 +274,8 @@ StepOutcome SphSolver::stepElsewhere()
     ++m_steps;
     if (!guard.empty())
         return StepOutcome::guard(guard);
+    if (const std::string loss = fluidLossText(m_timeS); !loss.empty())
+        return StepOutcome::guard(loss);
     if (m_steps % m_syncEvery == 0 || m_timeS >= m_endTimeS)
     {
         const ParticleState& p = particles();
@@ -404,12 +413,33 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
                                           {std::to_string(p.id[worst]), numberText(100.0 * worstDensity),
                                            numberText(100.0 * m_densityGuard), positionText(p.position[worst]), where}}));
     }
+    if (const std::string loss = fluidLossText(m_timeS + dt); !loss.empty())
+    {
+        StepOutcome outcome = putBack(""); // the state before the step, with the loss's own words
+        outcome.message = loss;
+        return outcome;
+    }
     m_timeS += dt;
     m_stepS = dt;
     ++m_steps;
     m_sections.sample(p, m_fluid, m_timeS, dt);
     m_wallLoads.sample(p, *m_grid, *m_kernel, m_fluid, m_spacingM, m_timeS, dt);
     return {};
+}
+
+std::string SphSolver::fluidLossText(double timeS) const
+{
+    if (!(m_fluidLossGuard > 0.0) || !(m_initialFluidMass > 0.0))
+        return {};
+    const MassLedger& ledger = massLedger();
+    const double share = double((ledger.totalOutflow() - ledger.totalInflow()) / m_initialFluidMass);
+    if (share <= m_fluidLossGuard)
+        return {};
+    return storedText(Pattern{"at t = %1 s the vessel has lost %2 % of its first fluid mass through its open ends "
+                              "(outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill it, so its figures would "
+                              "not be a flow's; relax the density towards summation (density_relaxation_s) or raise "
+                              "the sound speed",
+                              {numberText(timeS), numberText(100.0 * share), numberText(100.0 * m_fluidLossGuard)}});
 }
 
 void SphSolver::releaseBackstopAtOpenEnds()

@@ -146,6 +146,9 @@ private:
     bool goOnFrom(const SphCheckpoint& saved);
     /// A step on the other stepper, and every m_syncEvery steps the particles back and the samples.
     StepOutcome stepElsewhere();
+    /// The fluid loss guard's words at time t (s) when the ledger's net outflow exceeds its share of the first fluid
+    /// mass; "" otherwise or when it is off.
+    std::string fluidLossText(double timeS) const;
 
     FluidModel m_fluid;
     std::unique_ptr<QuarticKernel> m_kernel;
@@ -168,6 +171,7 @@ private:
     bool m_freeSurface = false;
     int m_nextId = 0;
     double m_timeS = 0.0, m_endTimeS = 0.0, m_stepS = 0.0, m_cfl = 0.2, m_densityGuard = 0.03, m_spacingM = 0.0;
+    double m_fluidLossGuard = 0.0; ///< share of the first fluid mass (0: off)
     Eigen::Vector3d m_boxLow = Eigen::Vector3d::Zero(),
                     m_boxHigh = Eigen::Vector3d::Zero(); ///< m, with the margin
     long m_steps = 0;
