@@ -242,7 +242,8 @@ try
         {"particle_shifting", parameters.get("particle_shifting")}, {"cfl", parameters.get("cfl")},
         {"wall_repulsion", parameters.get("wall_repulsion")}, {"shift_correction", parameters.get("shift_correction")},
         {"fpm", parameters.get("fpm")}, {"density_summation", parameters.get("density_summation")},
-        {"density_relaxation_s", parameters.get("density_relaxation_s")}, {"smoothing_ratio", parameters.get("smoothing_ratio")},
+        {"density_relaxation_s", parameters.get("density_relaxation_s")},
+        {"smoothing_ratio", parameters.get("smoothing_ratio")},
         {"outflow_kg", double(gpu.massLedger().totalOutflow())}, {"calls", earlierCalls + 1},
         {"initial_fluid_kg", double(solver.checkpoint().initialFluidMassKg)}};
     if (!pipe.systole.empty())

@@ -278,7 +278,8 @@ int main(int argc, char** argv)
                              {"precision", "double"}, {"spacing_mm", pipe.spacingMm},
                              {"mean_speed_m_s", pipe.meanSpeedMS}, {"length_mm", pipe.lengthMm},
                              {"inflow_kg", flow.metrics.at("inflow_kg")}, {"outflow_kg", flow.metrics.at("outflow_kg")},
-                             {"initial_fluid_kg", flow.metrics.at("fluid_mass_kg") - flow.metrics.at("fluid_mass_change_kg")}};
+                             {"initial_fluid_kg",
+                              flow.metrics.at("fluid_mass_kg") - flow.metrics.at("fluid_mass_change_kg")}};
             if (pulsatile)
                 report["sph"]["period_s"] = pipe.inflowWaveform.period(), report["sph"]["amplitude"] = amplitude,
                 report["sph"]["systolic_sections"] = bench::sectionsJson(flow.arcMm, flow.systolicFlows);

@@ -363,7 +363,8 @@ private slots:
         auto lattice = [&](double stretch, unsigned seed, double jitter)
         {
             ParticleState particles;
-            for (const Eigen::Vector3d& at : test::jitteredLattice(Eigen::Vector3i::Constant(kSide), stretch * spacing, jitter, seed))
+            const Eigen::Vector3i counts = Eigen::Vector3i::Constant(kSide);
+            for (const Eigen::Vector3d& at : test::jitteredLattice(counts, stretch * spacing, jitter, seed))
                 particles.add(at, 0.0, rho0 * spacing * spacing * spacing, false, -1.0, 0.0);
             NeighbourGrid grid(kernel.support(), Eigen::Vector3d::Constant(stretch * spacing * kSide));
             for (Eigen::Vector3d& x : particles.position)
@@ -407,8 +408,8 @@ private slots:
         }
         for (const char* name : {"free_surface", "fluid_tension", "fpm", "density_relaxation_s"})
         {
-            const std::string refusal =
-                test::sphRefusal({{"density_summation", 1.0}, {name, std::string(name) == "fluid_tension" ? 0.0 : 1.0}});
+            const double value = std::string(name) == "fluid_tension" ? 0.0 : 1.0;
+            const std::string refusal = test::sphRefusal({{"density_summation", 1.0}, {name, value}});
             QVERIFY2(refusal.find("density_summation") != std::string::npos, name);
         }
         QCOMPARE(test::sphRefusal({{"density_summation", 1.0}}), std::string());

@@ -80,8 +80,8 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     params.fpm = fluid.finiteParticleMethod ? 1 : 0;
     params.summation = fluid.densitySummation ? 1 : 0;
     params.summationScale = float(fluid.summationScale);
-    params.relaxationRate =
-        fluid.densityRelaxationS > 0.0 && !fluid.densitySummation ? float(1.0 / fluid.densityRelaxationS) : 0.0f;
+    const bool relaxing = fluid.densityRelaxationS > 0.0 && !fluid.densitySummation;
+    params.relaxationRate = relaxing ? float(1.0 / fluid.densityRelaxationS) : 0.0f;
     params.soundSpeed = float(fluid.soundSpeed), params.gamma = float(fluid.gamma);
     params.restDensity = float(fluid.restDensity), params.gasDensity = float(fluid.gasDensity);
     params.viscosity = float(fluid.viscosity), params.gasViscosity = float(fluid.gasViscosity);

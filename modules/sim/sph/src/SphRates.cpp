@@ -146,7 +146,8 @@ void summationDensity(ParticleState& particles, const NeighbourGrid& grid, const
         if (!particles.isFluid(si))
             continue;
         double sum = self;
-        grid.forEachNeighbour(particles.position, i, [&](int, const Eigen::Vector3d&, double r) { sum += kernel.value(r); });
+        grid.forEachNeighbour(particles.position, i,
+                              [&](int, const Eigen::Vector3d&, double r) { sum += kernel.value(r); });
         particles.density[si] = fluid.summationScale * particles.mass[si] * sum;
     }
 }
@@ -186,7 +187,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         const double restI = fluid.mixtureDensity(particles.voidFraction[si]), relativeI = rhoI / restI;
         const double muI = fluid.mixtureViscosity(particles.voidFraction[si]);
         auto relativeJ = [&](std::size_t sj) { return relativeDensity(particles, fluid, sj); };
-        double continuity = 0.0, diffusionRate = 0.0, weights = kernel.value(0.0); // weights: sum_j W_ij, i included
+        double continuity = 0.0, diffusionRate = 0.0;
+        double weights = kernel.value(0.0); // sum_j W_ij, i included (the relaxation towards summation)
         Eigen::Vector3d force = Eigen::Vector3d::Zero(), crowding = Eigen::Vector3d::Zero();
         Eigen::Matrix3d velocityGradient = Eigen::Matrix3d::Zero(); // d v_k / d x_l (the shift's correction)
         grid.forEachNeighbour(
@@ -226,9 +228,11 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         // With FPM the continuity equation's divergence is the FPM one where its system was regular (SphRates.h).
         const bool fpmDivergence = !rates.velocityDivergence.empty() && std::isfinite(rates.velocityDivergence[si]);
         if (!fluid.densitySummation)
-            rates.densityRate[si] = (fpmDivergence ? -rhoI * rates.velocityDivergence[si] : continuity) + diffusionRate;
+            rates.densityRate[si] =
+                (fpmDivergence ? -rhoI * rates.velocityDivergence[si] : continuity) + diffusionRate;
         if (relaxing)
-            rates.densityRate[si] += (fluid.summationScale * particles.mass[si] * weights - rhoI) / fluid.densityRelaxationS;
+            rates.densityRate[si] +=
+                (fluid.summationScale * particles.mass[si] * weights - rhoI) / fluid.densityRelaxationS;
         rates.acceleration[si] = force + external;
         if (shifting)
         {

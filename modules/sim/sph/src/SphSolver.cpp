@@ -162,10 +162,11 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
         throw Error("the Finite Particle Method (fpm 1) corrects the continuity equation's density rate, which density "
                     "by summation (density_summation 1) does not use: set one of them to 0");
     m_fluid.densityRelaxationS = parameters.get("density_relaxation_s");
-    if (m_fluid.densityRelaxationS > 0.0 && (m_fluid.densitySummation || parameters.get("free_surface") > 0.5 || !m_fluid.tension))
-        throw Error("the density's relaxation towards summation (density_relaxation_s > 0) is for the continuity density "
-                    "(density_summation 0) of a fluid that fills its vessel (free_surface 0, fluid_tension 1): set "
-                    "density_relaxation_s 0");
+    const bool filledVessel = parameters.get("free_surface") < 0.5 && m_fluid.tension;
+    if (m_fluid.densityRelaxationS > 0.0 && (m_fluid.densitySummation || !filledVessel))
+        throw Error("the density's relaxation towards summation (density_relaxation_s > 0) is for the continuity "
+                    "density (density_summation 0) of a fluid that fills its vessel (free_surface 0, fluid_tension "
+                    "1): set density_relaxation_s 0");
     if (m_fluid.densitySummation) // nothing to diffuse: no density rate
         m_fluid.densityDiffusion = 0.0;
     m_fluid.summationScale = 1.0 / (spacing * spacing * spacing * m_kernel->latticeSum(spacing));
@@ -435,10 +436,10 @@ std::string SphSolver::fluidLossText(double timeS) const
     const double share = double((ledger.totalOutflow() - ledger.totalInflow()) / m_initialFluidMass);
     if (share <= m_fluidLossGuard)
         return {};
-    return storedText(Pattern{"at t = %1 s the vessel has lost %2 % of its first fluid mass through its open ends "
-                              "(outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill it, so its figures would "
-                              "not be a flow's; relax the density towards summation (density_relaxation_s) or raise "
-                              "the sound speed",
+    return storedText(Pattern{"at t = %1 s the vessel has lost %2 % of its first fluid mass through its "
+                              "open ends (outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill "
+                              "it, so its figures would not be a flow's; relax the density towards summation "
+                              "(density_relaxation_s) or raise the sound speed",
                               {numberText(timeS), numberText(100.0 * share), numberText(100.0 * m_fluidLossGuard)}});
 }
 
