@@ -2,7 +2,7 @@
 
 // The stenosis benches' solver arguments (parameter=value): a smoothing ratio among them shapes the pipe's open ends
 // too, whose buffers are a kernel support deep (OpenBoundaries::initialize refuses another depth), so it goes into
-// the StenosisPipe before its particles are seeded.
+// the StenosisPipe before its open ends and particles are made.
 
 #include "vsim/sim/sph/StenosisPipe.h"
 

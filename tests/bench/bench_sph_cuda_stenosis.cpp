@@ -130,11 +130,11 @@ try
         pipe.soundSpeedMS = std::stod(argv[4]);
     if (argc > 7)
         pipe.particleShifting = std::stod(argv[7]);
+    bench::takeSmoothingRatio(pipe, 8, argc, argv);
     const auto start = std::chrono::steady_clock::now();
     SphSolver solver;
     configureStenosisPipe(pipe, solver, 1, 1); // sampled here every `every` steps, weighted by the time between
     SimulationInput input;
-    bench::takeSmoothingRatio(pipe, 8, argc, argv);
     input.data["particles"] = stenosisPipeParticles(pipe);
     ParameterSet parameters = stenosisPipeParameters(pipe);
     for (int a = 8; a < argc; ++a) // the solver's parameters (sphParameters), e.g. delta_sph=0

@@ -62,10 +62,10 @@ try
         pipe = pipe.atFlow(std::stod(argv[3]), argc > 4 ? std::stod(argv[4]) : pipe.lengthMm);
     if (argc > 5)
         pipe.particleShifting = std::stod(argv[5]);
+    bench::takeSmoothingRatio(pipe, 6, argc, argv);
     SphSolver solver;
     configureStenosisPipe(pipe, solver);
     SimulationInput input;
-    bench::takeSmoothingRatio(pipe, 6, argc, argv);
     input.data["particles"] = stenosisPipeParticles(pipe);
     ParameterSet parameters = stenosisPipeParameters(pipe);
     for (int a = 6; a < argc; ++a)
