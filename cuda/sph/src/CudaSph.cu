@@ -208,7 +208,10 @@ std::string CudaSph::step()
                 : storedText("away from the walls");
         return at(storedText(Pattern{"particle %1's density is %2 % from the rest density (guard %3 %) at %4, "
                                      "%5: raise the sound speed or lower the inflow",
-                                     {std::to_string(where.id), numberText(100.0 * largestDensityVariation()),
+                                     {std::to_string(where.id),
+                                      sim::sph::signedPercentText(where.densityKgM3 /
+                                                                      d.fluid.mixtureDensity(where.voidFraction) -
+                                                                  1.0),
                                       numberText(100.0 * d.settings.densityGuard), sim::sph::positionText(where.positionM),
                                       wall}}));
     }

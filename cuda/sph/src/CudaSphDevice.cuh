@@ -70,6 +70,7 @@ struct ParticleAt
     int id = -1;
     Eigen::Vector3d positionM = Eigen::Vector3d::Zero();
     double wallDistanceM = INFINITY, guardedWallDistanceM = INFINITY;
+    double densityKgM3 = 0.0, voidFraction = 0.0;
 };
 
 } // namespace sph
@@ -290,15 +291,17 @@ struct CudaSph::Device
     sph::ParticleAt particleAt(int index) const
     {
         sph::ParticleAt at;
-        float4 x;
+        float4 x, state;
         float distance[2];
         VSIM_CUDA_CHECK(cudaMemcpy(&x, current.position.data + index, sizeof x, cudaMemcpyDeviceToHost));
+        VSIM_CUDA_CHECK(cudaMemcpy(&state, current.state.data + index, sizeof state, cudaMemcpyDeviceToHost));
         VSIM_CUDA_CHECK(cudaMemcpy(&at.id, current.id.data + index, sizeof at.id, cudaMemcpyDeviceToHost));
         VSIM_CUDA_CHECK(cudaMemcpy(&distance[0], wallDistance.data + index, sizeof(float), cudaMemcpyDeviceToHost));
         VSIM_CUDA_CHECK(
             cudaMemcpy(&distance[1], guardedWallDistance.data + index, sizeof(float), cudaMemcpyDeviceToHost));
         at.positionM = settings.boxLowM + Eigen::Vector3d(x.x, x.y, x.z);
         at.wallDistanceM = distance[0], at.guardedWallDistanceM = distance[1];
+        at.densityKgM3 = state.x, at.voidFraction = state.z;
         return at;
     }
 

@@ -7,6 +7,11 @@
 #include <cmath>
 
 namespace vsim::sim::sph {
+std::string signedPercentText(double fraction)
+{
+    return (fraction >= 0.0 ? "+" : "") + numberText(100.0 * fraction);
+}
+
 std::string positionText(const Eigen::Vector3d& positionM)
 {
     const Eigen::Vector3d x = 1e3 * positionM;
@@ -411,7 +416,10 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
                 : storedText("away from the walls");
         return putBack(storedText(Pattern{"particle %1's density is %2 % from the rest density (guard %3 %) at %4, "
                                           "%5: raise the sound speed or lower the inflow",
-                                          {std::to_string(p.id[worst]), numberText(100.0 * worstDensity),
+                                          {std::to_string(p.id[worst]),
+                                           signedPercentText(p.density[worst] /
+                                                                 m_fluid.mixtureDensity(p.voidFraction[worst]) -
+                                                             1.0),
                                            numberText(100.0 * m_densityGuard), positionText(p.position[worst]), where}}));
     }
     if (const std::string loss = fluidLossText(m_timeS + dt); !loss.empty())

@@ -49,6 +49,10 @@ constexpr double kStenosisCfl = 0.1;
 /// (0.71 spacings) meets its plateau.
 constexpr double kWallRepulsionReach = 0.9;
 
+/// A density's departure (rho / rho0 - 1) as the density guard prints it: percent with its sign, "+3.01" or
+/// "-3.01" (compressed or stretched: which one tells a jet's impact from a tensile void).
+std::string signedPercentText(double fraction);
+
 /// A particle's position (m) as the guards print it: "(x, y, z) mm" (the CPU's and the GPU's the same).
 std::string positionText(const Eigen::Vector3d& positionM);
 
