@@ -631,6 +631,7 @@ const char* const kLibraryTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Error", "cannot write the SPH checkpoint"),
     QT_TRANSLATE_NOOP("vsim::Error", "cannot open the SPH checkpoint"),
     QT_TRANSLATE_NOOP("vsim::Error", "not an SPH checkpoint of this version (its first line is not 'VSIM-SPH-CHECKPOINT 2')"),
+    QT_TRANSLATE_NOOP("vsim::Error", "the SPH input's particles carry the field '%1', which the solver does not read (it reads wall, wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s and void_fraction): is it misspelt?"),
     QT_TRANSLATE_NOOP("vsim::Error", "(sorting the particles): %1"),
     QT_TRANSLATE_NOOP("vsim::Error", "at t = %1 s the vessel has lost %2 % of its first fluid mass through its open ends (outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill it, so its figures would not be a flow's; relax the density towards summation (density_relaxation_s) or raise the sound speed"),
     QT_TRANSLATE_NOOP("vsim::Error", "the SPH input's particles need the field 'wall' (1 at wall particles, 0 in the fluid)"),

@@ -4221,6 +4221,10 @@
         <source>at t = %1 s the vessel has lost %2 % of its first fluid mass through its open ends (outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill it, so its figures would not be a flow&apos;s; relax the density towards summation (density_relaxation_s) or raise the sound speed</source>
         <translation>bei t = %1 s hat das Gefäß %2 % seiner anfänglichen Fluidmasse durch seine offenen Enden verloren (Ausfluss - Zufluss; fluid_loss_guard %3 %): seine Partikel füllen es nicht mehr, seine Werte wären also nicht die einer Strömung; lassen Sie die Dichte zur Summation relaxieren (density_relaxation_s) oder erhöhen Sie die Schallgeschwindigkeit</translation>
     </message>
+    <message>
+        <source>the SPH input&apos;s particles carry the field &apos;%1&apos;, which the solver does not read (it reads wall, wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s and void_fraction): is it misspelt?</source>
+        <translation>die Partikel der SPH-Eingabe tragen das Feld &apos;%1&apos;, das der Löser nicht liest (er liest wall, wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s und void_fraction): ist es falsch geschrieben?</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

@@ -4221,6 +4221,10 @@
         <source>at t = %1 s the vessel has lost %2 % of its first fluid mass through its open ends (outflow - inflow; fluid_loss_guard %3 %): its particles no longer fill it, so its figures would not be a flow&apos;s; relax the density towards summation (density_relaxation_s) or raise the sound speed</source>
         <translation>在 t = %1 s 时，血管已通过其开放端失去其初始流体质量的 %2 %（流出 - 流入；fluid_loss_guard %3 %）：其粒子已不再充满血管，因此其数值不代表流动；请使密度向求和密度松弛（density_relaxation_s）或提高声速</translation>
     </message>
+    <message>
+        <source>the SPH input&apos;s particles carry the field &apos;%1&apos;, which the solver does not read (it reads wall, wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s and void_fraction): is it misspelt?</source>
+        <translation>SPH 输入的粒子带有字段 &apos;%1&apos;，求解器不读取该字段（它读取 wall、wall_depth_mm、open_boundary、tracer、pressure_pa、velocity_x_m_s、velocity_y_m_s、velocity_z_m_s 和 void_fraction）：是否拼写错误？</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>

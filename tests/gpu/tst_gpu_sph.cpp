@@ -446,5 +446,15 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestGpuSph)
+// Run on the accelerator outside ctest (scripts/gpu-bundle.sh), where QtTest's watchdog would stop a test function
+// after its default 5 minutes: the stenosis parity rows took 150 s beside two runs on the GPU (2026-12-04). Half an
+// hour unless given, as ctest gives (tests/CMakeLists.txt).
+int main(int argc, char** argv)
+{
+    if (!qEnvironmentVariableIsSet("QTEST_FUNCTION_TIMEOUT"))
+        qputenv("QTEST_FUNCTION_TIMEOUT", "1800000");
+    QCoreApplication application(argc, argv);
+    TestGpuSph test;
+    return QTest::qExec(&test, argc, argv);
+}
 #include "tst_gpu_sph.moc"

@@ -138,6 +138,15 @@ private slots:
         QVERIFY(unguarded->position() > guarded->position());
     }
 
+    /// A particle field the solver does not read is refused with its name (a misspelt void fraction would
+    /// otherwise leave every particle at the default); the fields it reads are taken.
+    void unknownParticleFieldsAreRefused()
+    {
+        const std::string refusal = test::sphRefusal({}, {{"void_fractoin", {0.2, 0.2}}});
+        QVERIFY2(refusal.find("'void_fractoin'") != std::string::npos, refusal.c_str());
+        QCOMPARE(test::sphRefusal({}, {{"void_fraction", {0.2, 0.2}}, {"pressure_pa", {0.0, 0.0}}}), std::string());
+    }
+
     /// The density guard says which way a particle left the rest density (a jet's compression or a tensile void):
     /// the stenosis pipe at 0.2 mm, at rest, its fluid seeded 5 % denser or lighter than rho0, stops at its first
     /// step with the worst particle's departure printed with its sign, about +5 or -5 %.

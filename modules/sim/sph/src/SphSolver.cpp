@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace vsim::sim::sph {
 std::string signedPercentText(double fraction)
@@ -136,6 +137,18 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     given.validate();
     if (!given.fields.count("wall"))
         throw Error("the SPH input's particles need the field 'wall' (1 at wall particles, 0 in the fluid)");
+    // Every field the input gives is read: a misspelt one ("void_fractoin") would otherwise be dropped without a word
+    // and the run go on with the default it meant to replace.
+    static const std::set<std::string> readFields = {"wall", "wall_depth_mm", "open_boundary", "tracer", "pressure_pa",
+                                                     "velocity_x_m_s", "velocity_y_m_s", "velocity_z_m_s",
+                                                     "void_fraction"};
+    for (const auto& field : given.fields)
+        if (!readFields.count(field.first))
+            throw Error(storedText(Pattern{
+                "the SPH input's particles carry the field '%1', which the solver does not read (it reads wall, "
+                "wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s "
+                "and void_fraction): is it misspelt?",
+                {field.first}}));
     const double spacing = parameters.get("spacing_mm") * 1e-3;
     m_spacingM = spacing;
     m_kernel = std::make_unique<QuarticKernel>(parameters.get("smoothing_ratio") * spacing);
