@@ -259,9 +259,10 @@ private slots:
         // moves a particle by the small difference of large sums; 4.0e-4 in velocity after 300 steps on the H200).
         QVERIFY(at300.velocity <= (summation ? velocityBound : shifting > 0.0 ? 1e-3 : 3e-4) && at300.density <= 1e-4 &&
                 at300.positionPerSpacing <= 1e-3 && time <= 1e-4);
-        // The ledger counts whole particles: the same on both sides. The flow rates are the open ends' means of
-        // the particles' velocities, so they part as the velocities do (relaxed towards summation: the outlet by
-        // 8.0e-4 of the inlet's flow after 300 steps on the H200, 2026-12-04): held to the row's velocity bound.
+        // The ledger counts whole particles: the same on both sides. The flow rates are the open ends' means
+        // of the particles' velocities, so they part as the velocities do (relaxed towards summation: the
+        // outlet by 8.0e-4 of the inlet's flow after 300 steps on the H200, 2026-12-04): held to the row's
+        // velocity bound.
         const double flowRateBound = summation || relaxationS > 0.0 ? velocityBound : 1e-4;
         QVERIFY(inflowDifference <= 1e-4 && outflowDifference <= 1e-4);
         QVERIFY(inletDifference <= flowRateBound && outletDifference <= flowRateBound);
@@ -446,9 +447,9 @@ private slots:
     }
 };
 
-// Run on the accelerator outside ctest (scripts/gpu-bundle.sh), where QtTest's watchdog would stop a test function
-// after its default 5 minutes: the stenosis parity rows took 150 s beside two runs on the GPU (2026-12-04). Half an
-// hour unless given, as ctest gives (tests/CMakeLists.txt).
+// Run on the accelerator outside ctest (scripts/gpu-bundle.sh), where QtTest's watchdog would stop a test
+// function after its default 5 minutes: the stenosis parity rows took 150 s beside two runs on the GPU
+// (2026-12-04). Half an hour unless given, as ctest gives (tests/CMakeLists.txt).
 int main(int argc, char** argv)
 {
     if (!qEnvironmentVariableIsSet("QTEST_FUNCTION_TIMEOUT"))

@@ -1,8 +1,8 @@
 #pragma once
 
-// What SphSolver::initialize says to a set of parameters on two fluid particles (and their fields besides 'wall'):
-// the error's message, or "" when it takes them (the SPH tests' check that a combination of options, or an input,
-// is refused with its reason).
+// What SphSolver::initialize says to a set of parameters on two fluid particles (and their fields besides
+// 'wall'): the error's message, or "" when it takes them (the SPH tests' check that a combination of options,
+// or an input, is refused with its reason).
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/SphSolver.h"

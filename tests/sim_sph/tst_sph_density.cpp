@@ -144,12 +144,13 @@ private slots:
     {
         const std::string refusal = test::sphRefusal({}, {{"void_fractoin", {0.2, 0.2}}});
         QVERIFY2(refusal.find("'void_fractoin'") != std::string::npos, refusal.c_str());
-        QCOMPARE(test::sphRefusal({}, {{"void_fraction", {0.2, 0.2}}, {"pressure_pa", {0.0, 0.0}}}), std::string());
+        QCOMPARE(test::sphRefusal({}, {{"void_fraction", {0.2, 0.2}}, {"pressure_pa", {0.0, 0.0}}}),
+                 std::string());
     }
 
-    /// The density guard says which way a particle left the rest density (a jet's compression or a tensile void):
-    /// the stenosis pipe at 0.2 mm, at rest, its fluid seeded 5 % denser or lighter than rho0, stops at its first
-    /// step with the worst particle's departure printed with its sign, about +5 or -5 %.
+    /// The density guard says which way a particle left the rest density (a jet's compression or a tensile
+    /// void): the stenosis pipe at 0.2 mm, at rest, its fluid seeded 5 % denser or lighter than rho0, stops
+    /// at its first step with the worst particle's departure printed with its sign, about +5 or -5 %.
     void densityGuardSaysCompressedOrStretched()
     {
         StenosisPipe pipe;
@@ -160,7 +161,8 @@ private slots:
             SphSolver solver;
             configureStenosisPipe(pipe, solver);
             ParticleSet particles = stenosisPipeParticles(pipe);
-            // Tait's pressure of that density (gamma 7, B = rho0 c0^2 / 7): the solver seeds densities from it.
+            // Tait's pressure of that density (gamma 7, B = rho0 c0^2 / 7): the solver seeds its densities
+            // from it.
             const double tait = pipe.densityKgM3 * pipe.soundSpeedMS * pipe.soundSpeedMS / 7.0 *
                                 (std::pow(1.0 + offset, 7.0) - 1.0);
             particles.fields["pressure_pa"].assign(particles.size(), tait);

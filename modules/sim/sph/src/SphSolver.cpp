@@ -10,7 +10,9 @@
 namespace vsim::sim::sph {
 std::string signedPercentText(double fraction)
 {
-    return (fraction >= 0.0 ? "+" : "") + numberText(100.0 * fraction);
+    std::string text = fraction >= 0.0 ? "+" : ""; // appended: GCC 12's -Wrestrict misreads "+" + std::string&&
+    text += numberText(100.0 * fraction);
+    return text;
 }
 
 std::string positionText(const Eigen::Vector3d& positionM)
@@ -137,17 +139,17 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     given.validate();
     if (!given.fields.count("wall"))
         throw Error("the SPH input's particles need the field 'wall' (1 at wall particles, 0 in the fluid)");
-    // Every field the input gives is read: a misspelt one ("void_fractoin") would otherwise be dropped without a word
-    // and the run go on with the default it meant to replace.
-    static const std::set<std::string> readFields = {"wall", "wall_depth_mm", "open_boundary", "tracer", "pressure_pa",
-                                                     "velocity_x_m_s", "velocity_y_m_s", "velocity_z_m_s",
-                                                     "void_fraction"};
+    // Every field the input gives is read: a misspelt one ("void_fractoin") would otherwise be dropped
+    // without a word and the run go on with the default it meant to replace.
+    static const std::set<std::string> readFields = {"wall",           "wall_depth_mm",  "open_boundary",
+                                                     "tracer",         "pressure_pa",    "velocity_x_m_s",
+                                                     "velocity_y_m_s", "velocity_z_m_s", "void_fraction"};
     for (const auto& field : given.fields)
         if (!readFields.count(field.first))
             throw Error(storedText(Pattern{
-                "the SPH input's particles carry the field '%1', which the solver does not read (it reads wall, "
-                "wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s "
-                "and void_fraction): is it misspelt?",
+                "the SPH input's particles carry the field '%1', which the solver does not read (it reads "
+                "wall, wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, "
+                "velocity_z_m_s and void_fraction): is it misspelt?",
                 {field.first}}));
     const double spacing = parameters.get("spacing_mm") * 1e-3;
     m_spacingM = spacing;
@@ -427,13 +429,12 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
             std::isfinite(m_rates.wallDistance[worst])
                 ? storedText(Pattern{"%1 mm from the wall", {numberText(1e3 * m_rates.wallDistance[worst])}})
                 : storedText("away from the walls");
+        const double departure = p.density[worst] / m_fluid.mixtureDensity(p.voidFraction[worst]) - 1.0;
         return putBack(storedText(Pattern{"particle %1's density is %2 % from the rest density (guard %3 %) at %4, "
                                           "%5: raise the sound speed or lower the inflow",
-                                          {std::to_string(p.id[worst]),
-                                           signedPercentText(p.density[worst] /
-                                                                 m_fluid.mixtureDensity(p.voidFraction[worst]) -
-                                                             1.0),
-                                           numberText(100.0 * m_densityGuard), positionText(p.position[worst]), where}}));
+                                          {std::to_string(p.id[worst]), signedPercentText(departure),
+                                           numberText(100.0 * m_densityGuard),
+                                           positionText(p.position[worst]), where}}));
     }
     if (const std::string loss = fluidLossText(m_timeS + dt); !loss.empty())
     {
