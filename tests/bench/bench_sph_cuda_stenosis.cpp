@@ -15,6 +15,8 @@
 // than one call of the device tool). The checkpoint holds the GPU's rates of the next kick, which the resumed run
 // takes (a checkpoint written before 2026-12-01 has none: the resumed run evaluates them at the saved state;
 // SphCheckpoint.h); stderr gives the largest density variation at the save and over the first steps after it.
+// When a guard stops the run, the state it read is saved beside it as FILE.guard (to read back, e.g. the
+// densities near the particle the guard names; not to go on from).
 //
 // A mean speed (and length) other than the default's 0.05 m/s (5.6 mm) is StenosisPipe::atFlow's problem (Re 100
 // upstream at 0.207 m/s); the sound speed then scales with it unless given (0: scaled), and the Courant number and
@@ -167,7 +169,7 @@ try
     const double earlierSeconds = counters["seconds"];
     const long earlierCalls = long(counters["calls"]);
     // Saves the run (the final state too, so that the settled flow can be read again: WallShear.h's estimators).
-    auto save = [&]() {
+    auto save = [&](const std::string& file) {
         const double seconds =
             earlierSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeSphCheckpoint(gpuCheckpoint(solver, gpu, steps, sections, wallLoads,
@@ -179,13 +181,13 @@ try
                                           {"seconds", seconds},
                                           {"calls", double(earlierCalls + 1)},
                                           {"density_variation_at_save", gpu.largestDensityVariation()}}),
-                           checkpointFile);
+                           file);
     };
     while (gpu.timeS() < endS)
     {
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > stopAfterS)
         {
-            save();
+            save(checkpointFile);
             std::printf("{\"case\": \"sph-stenosis on the GPU\", \"saved_at_s\": %.6g, \"end_time_s\": %.6g, "
                         "\"steps\": %ld, \"checkpoint\": \"%s\", \"largest_density_variation\": %.4g, "
                         "\"next\": \"run the same command again to go on\"}\n",
@@ -194,7 +196,21 @@ try
         }
         const auto stepStart = std::chrono::steady_clock::now();
         if (const std::string guard = gpu.step(); !guard.empty())
+        {
+            if (!checkpointFile.empty()) // the state the guard read: to read back, not to go on from
+                try
+                {
+                    save(checkpointFile + ".guard");
+                    std::fprintf(stderr, "the state at the guard's stop saved to %s.guard\n",
+                                 checkpointFile.c_str());
+                }
+                catch (const std::exception& error) // the guard's own message matters more
+                {
+                    std::fprintf(stderr, "the state at the guard's stop was not saved: %s\n",
+                                 error.what());
+                }
             throw Error("a guard stopped the GPU stenosis run: " + guard);
+        }
         ++steps;
         pending += gpu.lastStepS();
         if (gpu.largestDensityVariation() > largestVariation)
@@ -222,7 +238,7 @@ try
         sampling += std::chrono::duration<double>(std::chrono::steady_clock::now() - stepEnd).count();
     }
     if (!checkpointFile.empty())
-        save();
+        save(checkpointFile);
     const double seconds =
         earlierSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::map<std::string, double> metrics = {{"steps", double(steps)}, {"particles", double(gpu.particleCount())},
