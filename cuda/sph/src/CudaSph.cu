@@ -206,7 +206,7 @@ std::string CudaSph::step()
             std::isfinite(where.wallDistanceM)
                 ? storedText(Pattern{"%1 mm from the wall", {numberText(1e3 * where.wallDistanceM)}})
                 : storedText("away from the walls");
-        const double departure = where.densityKgM3 / d.fluid.mixtureDensity(where.voidFraction) - 1.0;
+        const double departure = d.fluid.densityDeparture(where.densityKgM3, where.voidFraction);
         return at(storedText(Pattern{"particle %1's density is %2 % from the rest density (guard %3 %) at %4, "
                                      "%5: raise the sound speed or lower the inflow",
                                      {std::to_string(where.id), sim::sph::signedPercentText(departure),

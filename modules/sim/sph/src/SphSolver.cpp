@@ -429,7 +429,7 @@ StepOutcome SphSolver::step(RunStatus&, const Progress&)
             std::isfinite(m_rates.wallDistance[worst])
                 ? storedText(Pattern{"%1 mm from the wall", {numberText(1e3 * m_rates.wallDistance[worst])}})
                 : storedText("away from the walls");
-        const double departure = p.density[worst] / m_fluid.mixtureDensity(p.voidFraction[worst]) - 1.0;
+        const double departure = m_fluid.densityDeparture(p.density[worst], p.voidFraction[worst]);
         return putBack(storedText(Pattern{"particle %1's density is %2 % from the rest density (guard %3 %) at %4, "
                                           "%5: raise the sound speed or lower the inflow",
                                           {std::to_string(p.id[worst]), signedPercentText(departure),

@@ -74,11 +74,15 @@ struct FluidModel
     bool tension = true;
     /// The least density a fluid particle of void fraction s keeps (kg/m^3): 0 under tension, rho0(s) without.
     double densityFloor(double voidFraction) const { return tension ? 0.0 : mixtureDensity(voidFraction); }
-    /// The density's departure from the rest density the guard reads: |rho / rho0(s) - 1|, or its compression only
-    /// without tension.
+    /// The density's signed departure from the rest density, rho / rho0(s) - 1 (> 0 compressed, < 0 stretched).
+    double densityDeparture(double density, double voidFraction) const
+    {
+        return density / mixtureDensity(voidFraction) - 1.0;
+    }
+    /// The departure the guard reads: |rho / rho0(s) - 1|, or its compression only without tension.
     double densityVariation(double density, double voidFraction) const
     {
-        const double change = density / mixtureDensity(voidFraction) - 1.0;
+        const double change = densityDeparture(density, voidFraction);
         return tension ? std::abs(change) : std::max(change, 0.0);
     }
 
