@@ -262,6 +262,8 @@ static const char* const kParameterTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Parameters", "> 0: with the continuity equation, each fluid particle's density also relaxes towards its summation density over this time, so that it cannot drift from the particles' spacing over longer times (a stenotic jet's wake thinned out by 30 % at a constant continuity density) while keeping the continuity density's smoothness over shorter ones; a drift at rate r leaves the two about r times this apart; vessels only; 0: off"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Particle shifting"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "A of the shift's coefficient A h |v| (Lind et al. 2012, Skillen et al. 2013; 0: off): the drift also moves each fluid particle down the gradient of the particles' concentration, which keeps a fast jet's shear layer from tearing into streaks and voids; vessels only (not with a free surface or without tension)"),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "Shifting speed floor"),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "> 0: the shift's coefficient is A h max(|v|, this), so that slow zones (a stenosis's separation zone) are shifted too, where with |v| alone the particles clump and leave voids; the flow's largest speed makes it the delta+-SPH shift (Sun et al. 2017); 0: |v| alone"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Shift correction"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "1: with particle shifting, a shifted particle's velocity follows it to where the shift moves it, v + dr . grad v (Lind et al. 2012's Taylor correction); 0: the particle keeps its velocity"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Finite Particle Method"),

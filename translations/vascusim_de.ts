@@ -5756,6 +5756,14 @@
         <source>&gt; 0: the run stops when the fluid&apos;s net outflow through the open ends (outflow - inflow, the mass ledger&apos;s) exceeds this share of its first fluid mass: a vessel whose particles thin out while their densities still read full (the continuity density&apos;s drift: density_relaxation_s) empties, and its figures are not a flow&apos;s; 0: off (a domain that fills: an injection)</source>
         <translation>&gt; 0: der Lauf hält an, wenn der Nettoausfluss des Fluids durch die offenen Enden (Ausfluss - Zufluss, laut Massenbilanz) diesen Anteil seiner anfänglichen Fluidmasse übersteigt: ein Gefäß, dessen Partikel ausdünnen, während ihre Dichten noch voll anzeigen (die Drift der Kontinuitätsdichte: density_relaxation_s), leert sich, und seine Werte sind nicht die einer Strömung; 0: aus (ein Gebiet, das sich füllt: eine Injektion)</translation>
     </message>
+    <message>
+        <source>Shifting speed floor</source>
+        <translation>Untergrenze der Verschiebungsgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>&gt; 0: the shift&apos;s coefficient is A h max(|v|, this), so that slow zones (a stenosis&apos;s separation zone) are shifted too, where with |v| alone the particles clump and leave voids; the flow&apos;s largest speed makes it the delta+-SPH shift (Sun et al. 2017); 0: |v| alone</source>
+        <translation>&gt; 0: der Koeffizient der Verschiebung ist A h max(|v|, dieser Wert), damit auch langsame Zonen (die Ablösungszone hinter einer Stenose) verschoben werden, wo die Partikel mit |v| allein verklumpen und Lücken lassen; die größte Geschwindigkeit der Strömung ergibt die Verschiebung von delta+-SPH (Sun et al. 2017); 0: |v| allein</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Progress</name>

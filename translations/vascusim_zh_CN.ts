@@ -5756,6 +5756,14 @@
         <source>&gt; 0: the run stops when the fluid&apos;s net outflow through the open ends (outflow - inflow, the mass ledger&apos;s) exceeds this share of its first fluid mass: a vessel whose particles thin out while their densities still read full (the continuity density&apos;s drift: density_relaxation_s) empties, and its figures are not a flow&apos;s; 0: off (a domain that fills: an injection)</source>
         <translation>&gt; 0：当流体通过开放端的净流出（流出 - 流入，按质量账）超过其初始流体质量的此比例时，运行停止：粒子变稀而密度仍显示为满的血管（连续性密度的漂移：density_relaxation_s）会排空，其数值不代表流动；0：关闭（逐渐充满的区域：注射）</translation>
     </message>
+    <message>
+        <source>Shifting speed floor</source>
+        <translation>位移速度下限</translation>
+    </message>
+    <message>
+        <source>&gt; 0: the shift&apos;s coefficient is A h max(|v|, this), so that slow zones (a stenosis&apos;s separation zone) are shifted too, where with |v| alone the particles clump and leave voids; the flow&apos;s largest speed makes it the delta+-SPH shift (Sun et al. 2017); 0: |v| alone</source>
+        <translation>&gt; 0：位移系数为 A h max(|v|, 此值)，使慢速区（狭窄后的分离区）也得到位移；若只用 |v|，那里的粒子会聚集成团并留下空隙；取流动的最大速度即为 delta+-SPH 位移（Sun 等，2017）；0：只用 |v|</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Progress</name>

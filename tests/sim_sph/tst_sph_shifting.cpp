@@ -28,7 +28,8 @@ private slots:
     /// Particle shifting (SphRates.h) on a periodic lattice of fluid moving as a whole: none on the perfect lattice
     /// (by symmetry, to rounding); one particle moved 0.3 spacings off its site is sent back along the line it left by;
     /// a lattice jittered by up to 0.25 spacings (three seeds) moved by the shift alone evens out: the RMS shift
-    /// velocity falls at least fivefold in 200 moves by dt s_i, |v| dt = 0.05 spacings. Off (A = 0): no shift computed.
+    /// velocity falls at least fivefold in 200 moves by dt s_i, |v| dt = 0.05 spacings. With a speed floor a slower
+    /// fluid is shifted as at the floor's speed. Off (A = 0): no shift computed.
     void particleShiftingEvensOutTheParticles()
     {
         const double spacing = 1e-4, period = 10 * spacing;
@@ -82,6 +83,19 @@ private slots:
               back.y(), back.z(), velocity.norm());
         QVERIFY(back.y() < -1e-3 * velocity.norm());
         QVERIFY(std::abs(back.x()) <= 1e-6 * std::abs(back.y()) && std::abs(back.z()) <= 1e-6 * std::abs(back.y()));
+
+        // The speed floor (FluidModel::shiftingSpeedMS): the same particle in a fluid at a tenth of the speed is
+        // shifted as at the floor's speed; a floor below |v| changes nothing.
+        ParticleState slow = perfect;
+        for (auto& v : slow.velocity)
+            v = 0.1 * velocity;
+        FluidModel floored = fluid;
+        floored.shiftingSpeedMS = velocity.norm();
+        const Eigen::Vector3d slowBack = shifts(slow, fluid)[moved], flooredBack = shifts(slow, floored)[moved];
+        QVERIFY((slowBack - 0.1 * back).norm() <= 1e-9 * back.norm());
+        QVERIFY((flooredBack - back).norm() <= 1e-9 * back.norm());
+        floored.shiftingSpeedMS = 0.5 * velocity.norm();
+        QVERIFY((shifts(perfect, floored)[moved] - back).norm() <= 1e-12 * back.norm());
 
         for (unsigned seed : {11u, 12u, 13u})
         {

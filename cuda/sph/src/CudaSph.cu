@@ -75,6 +75,7 @@ CudaSph::CudaSph(const sim::sph::SphSolver& solver)
     params.diffusion = float(fluid.densityDiffusion * h * fluid.soundSpeed);
     params.shifting = float(fluid.particleShifting * h);
     params.shiftingReciprocalWeight = float(fluid.shiftingReciprocalWeight);
+    params.shiftingSpeed = float(fluid.shiftingSpeedMS);
     params.antiClumping = float(sim::sph::FluidModel::kAntiClumping);
     params.shiftCorrection = fluid.shiftCorrection ? 1 : 0;
     params.fpm = fluid.finiteParticleMethod ? 1 : 0;

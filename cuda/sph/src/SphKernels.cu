@@ -285,7 +285,8 @@ __global__ void ratesKernel(SphParams p, SphArrays a, SphRatesArrays rates, cons
         fz += inverseRhoI * viscousZ + ez;
         if (Shifting)
         {
-            const float coefficient = -p.shifting * sqrtf(vi.x * vi.x + vi.y * vi.y + vi.z * vi.z);
+            const float coefficient =
+                -p.shifting * fmaxf(sqrtf(vi.x * vi.x + vi.y * vi.y + vi.z * vi.z), p.shiftingSpeed);
             const float shift[3] = {coefficient * crowdX, coefficient * crowdY, coefficient * crowdZ};
             rates.shiftVelocity[i] = make_float4(shift[0], shift[1], shift[2], 0.0f);
             if (p.shiftCorrection) // (s_i . grad) v_i

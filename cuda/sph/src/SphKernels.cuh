@@ -19,6 +19,7 @@ struct SphParams
     float diffusion;                ///< delta h c0 (m^2/s); 0: no delta-SPH term
     float shifting;                 ///< A h of the particle shift (m; SphRates.h); 0: no shifting
     float shiftingReciprocalWeight; ///< 1 / W(spacing), m^3
+    float shiftingSpeed;            ///< m/s: the shift's speed floor (FluidModel::shiftingSpeedMS)
     float antiClumping;             ///< R of the anti-clumping term (FluidModel::kAntiClumping)
     float soundSpeed, gamma;
     float restDensity, gasDensity, viscosity, gasViscosity; ///< rho_p, rho_g (kg/m^3), mu_p, mu_g (Pa s)

@@ -236,7 +236,8 @@ void computeRates(const ParticleState& particles, const std::vector<double>& pre
         rates.acceleration[si] = force + external;
         if (shifting)
         {
-            rates.shiftVelocity[si] = -fluid.particleShifting * h * vi.norm() * crowding;
+            rates.shiftVelocity[si] =
+                -fluid.particleShifting * h * std::max(vi.norm(), fluid.shiftingSpeedMS) * crowding;
             if (fluid.shiftCorrection)
                 rates.acceleration[si] += velocityGradient * rates.shiftVelocity[si];
         }

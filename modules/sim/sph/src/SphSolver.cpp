@@ -73,6 +73,11 @@ std::vector<ParameterSpec> sphParameters()
          "each fluid particle down the gradient of the particles' concentration, which keeps a fast jet's shear layer "
          "from tearing into streaks and voids; vessels only (not with a free surface or without tension)",
          K::Real},
+        {"shifting_speed_m_s", "Shifting speed floor", "m/s", 0.0, 0.0, 1e3, "Numerics",
+         "> 0: the shift's coefficient is A h max(|v|, this), so that slow zones (a stenosis's separation zone) are "
+         "shifted too, where with |v| alone the particles clump and leave voids; the flow's largest speed makes it "
+         "the delta+-SPH shift (Sun et al. 2017); 0: |v| alone",
+         K::Real},
         {"shift_correction", "Shift correction", "", 0, 0, 1, "Numerics",
          "1: with particle shifting, a shifted particle's velocity follows it to where the shift moves it, "
          "v + dr . grad v (Lind et al. 2012's Taylor correction); 0: the particle keeps its velocity",
@@ -163,6 +168,7 @@ void SphSolver::initialize(const SimulationInput& input, const ParameterSet& par
     m_fluid.densityDiffusion = parameters.get("delta_sph");
     m_fluid.particleShifting = parameters.get("particle_shifting");
     m_fluid.shiftingReciprocalWeight = 1.0 / m_kernel->value(spacing);
+    m_fluid.shiftingSpeedMS = parameters.get("shifting_speed_m_s");
     m_fluid.shiftCorrection = parameters.get("shift_correction") > 0.5;
     m_fluid.finiteParticleMethod = parameters.get("fpm") > 0.5;
     m_fluid.referencePressurePa = parameters.get("reference_pressure_pa");

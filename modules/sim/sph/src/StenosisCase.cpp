@@ -86,8 +86,7 @@ double StenosisPipe::womersleyNumber() const
 
 double StenosisPipe::throatReynolds() const
 {
-    // The throat's mean speed is 4 times the inflow's (area ratio 4), its diameter R0.
-    return densityKgM3 * 4.0 * meanSpeedMS * 1e-3 * radiusMm / viscosityPaS;
+    return densityKgM3 * throatMeanSpeedMS() * 1e-3 * radiusMm / viscosityPaS; // the throat's diameter is R0
 }
 
 double StenosisPipe::radiusAtMm(double xMm) const
@@ -137,6 +136,7 @@ ParameterSet stenosisPipeParameters(const StenosisPipe& pipe)
     parameters.set("smoothing_ratio", pipe.smoothingRatio);
     parameters.set("cfl", pipe.cfl);
     parameters.set("particle_shifting", pipe.particleShifting);
+    parameters.set("shifting_speed_m_s", pipe.particleShifting > 0.0 ? pipe.throatMeanSpeedMS() : 0.0);
     parameters.set("shift_correction", pipe.shiftCorrection ? 1.0 : 0.0);
     parameters.set("wall_repulsion", pipe.wallRepulsion);
     parameters.set("density_summation", pipe.densitySummation ? 1.0 : 0.0);

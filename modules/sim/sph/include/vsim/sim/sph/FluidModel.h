@@ -28,6 +28,11 @@ struct FluidModel
     /// and 1 / W(spacing), the anti-clumping term's reference (Lind et al. 2012), m^3.
     double particleShifting = 0.0;
     double shiftingReciprocalWeight = 0.0;
+    /// The shift's speed floor (m/s; 0: none): the coefficient is A h max(|v_i|, this), so that a slow zone (a
+    /// stenosis's separation zone, at a tenth of the jet's speed) is shifted too; there, with |v_i| alone, the
+    /// particles clumped and left voids. With the flow's largest speed it is the delta+-SPH shift's form (Sun et
+    /// al. 2017: CFL Ma (2h)^2 = 4 h U_max dt).
+    double shiftingSpeedMS = 0.0;
     /// The shift's convective correction (SphRates.h): the velocity follows the particle to where the shift moves
     /// it, a_i += (s_i . grad) v_i (Lind et al. 2012's Taylor correction, in the rate form).
     bool shiftCorrection = false;

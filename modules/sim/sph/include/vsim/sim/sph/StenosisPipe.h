@@ -37,6 +37,10 @@ struct StenosisPipe
     double densityKgM3 = 1060.0, viscosityPaS = 3.5e-3; ///< blood
     double smoothingRatio = 2.0;                      ///< the solver's smoothing_ratio h / spacing (the buffers: 2h)
     double particleShifting = 0.0;                    ///< the solver's particle_shifting A (0: off; SphRates.h)
+    /// With shifting, the solver's shifting_speed_m_s is the throat's mean speed (throatMeanSpeedMS): with |v|
+    /// alone the slow separation zone past the throat clumped (relaxed runs at 0.05 mm stopped at 34-40 ms of 42,
+    /// 3 % below the rest density; 2026-12-04, RESULTS.md), with it no particle came within a tenth of a spacing
+    /// of another.
     bool shiftCorrection = false;                     ///< the solver's shift_correction (SphRates.h)
     bool densitySummation = false;                    ///< the solver's density_summation (SphRates.h)
     double densityRelaxationS = 0.0;                  ///< the solver's density_relaxation_s (SphRates.h; 0: off)
@@ -70,6 +74,8 @@ struct StenosisPipe
     double womersleyNumber() const;
     /// The Reynolds number of the throat's mean flow: rho 4 U R0 / mu (its diameter R0, its mean speed 4 U).
     double throatReynolds() const;
+    /// The throat's mean speed 4 U (m/s; area ratio 4), of the inflow's mean over a cycle.
+    double throatMeanSpeedMS() const { return 4.0 * meanSpeedMS; }
     /// The lumen's radius at x (mm).
     double radiusAtMm(double xMm) const;
     /// The sections' positions along the axis (mm), two steps in from each end.
