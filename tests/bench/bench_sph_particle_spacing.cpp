@@ -1,15 +1,18 @@
-// How evenly a saved SPH run's fluid particles stand (issue 18: the relaxed stenosis runs' late stops were clumps and
-// voids in the slow zone past the throat; sim/sph README). Reads a checkpoint (bench_sph_cuda_stenosis --checkpoint
-// C saves C, and C.guard where a guard stopped it) and prints one JSON object, over the fluid particles (not the
-// walls, not the open ends' buffers) in slabs along x:
-//   - how many stand within 0.1 and 0.3 spacings of another fluid particle (a lattice: none; a clump: several),
-//   - the least continuity density and the least summation density m_i sum_j W_ij (walls included, scaled so that
-//     the seeding lattice reads rho0: SphRates.h), both as rho / rho0 - 1 (a void between clumps reads far below),
+// How evenly a saved SPH run's fluid particles stand (issue 18: the relaxed stenosis runs' late stops were
+// clumps and voids in the slow zone past the throat; sim/sph README). Reads a checkpoint
+// (bench_sph_cuda_stenosis --checkpoint C saves C, and C.guard where a guard stopped it) and prints one JSON
+// object, over the fluid particles (not the walls, not the open ends' buffers) in slabs along x:
+//   - how many stand within 0.1 and 0.3 spacings of another fluid particle (a lattice: none; a clump:
+//     several),
+//   - the least continuity density and the least summation density m_i sum_j W_ij (walls included, scaled so
+//     that the seeding lattice reads rho0: SphRates.h), both as rho / rho0 - 1 (a void between clumps reads far
+//     below),
 //   - the mean of the two densities' difference (the continuity density's drift from the spacing).
 //
 //   bench_sph_particle_spacing <checkpoint> <spacing mm> [smoothing ratio, default 2] [slab mm, default 0.5]
 //
-// The rest density is blood's (1060 kg/m^3), as in the stenosis benches; a mixture's particles are read against it.
+// The rest density is blood's (1060 kg/m^3), as in the stenosis benches; a mixture's particles are read
+// against it.
 
 #include "vsim/core/Error.h"
 #include "vsim/sim/sph/NeighbourGrid.h"
@@ -50,7 +53,8 @@ try
     }
     const SphCheckpoint saved = readSphCheckpoint(argv[1]);
     const double spacing = 1e-3 * std::stod(argv[2]); // m
-    const double ratio = argc > 3 ? std::stod(argv[3]) : 2.0, slab = 1e-3 * (argc > 4 ? std::stod(argv[4]) : 0.5);
+    const double ratio = argc > 3 ? std::stod(argv[3]) : 2.0;
+    const double slab = 1e-3 * (argc > 4 ? std::stod(argv[4]) : 0.5); // m
     if (!(spacing > 0.0) || !(ratio > 0.0) || !(slab > 0.0))
         throw Error("the spacing, the smoothing ratio and the slab must be > 0");
     const QuarticKernel kernel(ratio * spacing);
