@@ -4,9 +4,9 @@
 // object, over the fluid particles (not the walls, not the open ends' buffers) in slabs along x:
 //   - how many stand within 0.1 and 0.3 spacings of another fluid particle (a lattice: none; a clump:
 //     several),
-//   - the least continuity density and the least summation density m_i sum_j W_ij (walls included, scaled so
-//     that the seeding lattice reads rho0: SphRates.h), both as rho / rho0 - 1 (a void between clumps reads far
-//     below),
+//   - the least continuity density and the least summation density m_i sum_j W_ij (walls included, scaled
+//     so that the seeding lattice reads rho0: SphRates.h), both as rho / rho0 - 1 (a void between clumps
+//     reads far below),
 //   - the mean of the two densities' difference (the continuity density's drift from the spacing).
 //
 //   bench_sph_particle_spacing <checkpoint> <spacing mm> [smoothing ratio, default 2] [slab mm, default 0.5]
