@@ -122,6 +122,13 @@ private slots:
         const std::string runId = study.newestArtifact(study::ArtifactKind::Run);
         QVERIFY(!runId.empty());
         QCOMPARE(study.artifact(runId).provenance.command, std::string("simulate sph"));
+        // The form's untouched numerics are the pipeline's stenosis choices, as from the command line (SphSolver.h:
+        // kStenosisShifting), not the solver's defaults (no shifting, no relaxation).
+        const auto& used = study.artifact(runId).provenance.parameters;
+        QCOMPARE(std::stod(used.at("particle_shifting")), sim::sph::kStenosisShifting);
+        QVERIFY(std::stod(used.at("shifting_speed_m_s")) > 0.1);  // the throat's mean, above the inlet's 0.1 m/s
+        QVERIFY(std::stod(used.at("density_relaxation_s")) > 0.0);
+        QCOMPARE(std::stod(used.at("fluid_loss_guard")), 0.1);
         QVERIFY(window.runPlayer() && window.runPlayer()->frameCount() >= 4);
         // The sections along the centerline under the Run Player (velocities and pressures, time-averaged): none
         // before the averaging window, so hidden; then the run given made-up sections (the real ones are

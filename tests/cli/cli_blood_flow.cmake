@@ -3,7 +3,7 @@
 # ramp (the plumbing: the inlet and the outlet at the vessel's ends, the outlet's gauge pressure as the reference,
 # the particle frames written to --out and kept as a Run in the study, the mass ledger balanced, the wall loads
 # averaged over 12.5-20 ms on the lumen surface's vertices and kept as a "Wall loads (SPH)" surface, and in the
-# report). Bad input: an unknown unit, a profile, the CUDA backend without a device, a folder that is not VascuSim's.
+# report; the stenosis numerics chosen). Bad input: an unknown unit, a profile, the CUDA backend without a device, a folder that is not VascuSim's.
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(study ${WORK}/flow.vsim)
@@ -48,6 +48,21 @@ execute_process(COMMAND ${PYTHON} -c "import sys, math; a = list(map(float, sys.
 if(NOT in_throat EQUAL 0)
     message(FATAL_ERROR "the largest TAWSS (${wall_tawss} Pa) lies at ${peak_at} mm, over 10 mm from the stenosis's "
             "centre (${throat_x}, ${throat_y}, ${throat_z} mm)")
+endif()
+# The stenosis numerics the pipeline chose (SphSolver.h: kStenosisShifting): particle shifting A 2 with its speed
+# floor at the throat's mean speed (the inlet's 0.1 m/s times the truth's area ratio; the label's voxels and the
+# inlet's centerline radius move it: within a factor 0.6-1.6), the continuity density relaxed over 20 h / c0.
+string(JSON shifting GET "${flow}" parameters particle_shifting)
+string(JSON shift_floor GET "${flow}" parameters shifting_speed_m_s)
+string(JSON relaxation GET "${flow}" parameters density_relaxation_s)
+string(JSON sound_speed GET "${flow}" parameters sound_speed_m_s)
+string(JSON reference_d GET "${truth}" measures reference_diameter_mm)
+string(JSON minimal_d GET "${truth}" measures minimal_diameter_mm)
+execute_process(COMMAND ${PYTHON} -c "import sys; a, f, t, c, D, d = map(float, sys.argv[1:]); throat = 0.1 * (D / d) ** 2; sys.exit(0 if a == 2 and 0.6 <= f / throat <= 1.6 and abs(t - 20 * 2e-3 / c) <= 1e-9 * t else 1)"
+                ${shifting} ${shift_floor} ${relaxation} ${sound_speed} ${reference_d} ${minimal_d} RESULT_VARIABLE chosen)
+if(NOT chosen EQUAL 0)
+    message(FATAL_ERROR "simulate sph's stenosis numerics: shifting ${shifting}, its floor ${shift_floor} m/s (truth "
+            "diameters ${reference_d} / ${minimal_d} mm at 0.1 m/s), relaxation ${relaxation} s at c0 ${sound_speed} m/s")
 endif()
 # The outlets' 50 mmHg (6,666 Pa) is the reference pressure: reported on the pressures, left out of the equation of
 # state (as an absolute level in it the buffers compressed the fluid: the run stopped at the density guard at 0.13 ms).

@@ -71,6 +71,15 @@ bool given(const BloodFlowSetup& setup, const std::string& name)
     return std::find(setup.given.begin(), setup.given.end(), name) != setup.given.end();
 }
 
+/// The solver's parameters runBloodFlow chooses for the vessel unless the user sets them (BloodFlowPipeline.h).
+bool chosenUnlessSet(const std::string& key)
+{
+    static const std::vector<std::string> chosen = {
+        "spacing_mm", "end_time_s", "sound_speed_m_s", "cfl", "reference_pressure_pa", "fluid_loss_guard",
+        "particle_shifting", "shifting_speed_m_s", "density_relaxation_s"};
+    return std::find(chosen.begin(), chosen.end(), key) != chosen.end();
+}
+
 } // namespace
 
 std::vector<ParameterSpec> bloodFlowSetupParameters()
@@ -98,10 +107,8 @@ BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& 
 {
     BloodFlowSetup setup;
     setup.parameters = solverParameters;
-    for (const ParameterSpec& spec : solverParameters.specs()) // the chosen five only where the form changed them
-        if ((spec.key != "spacing_mm" && spec.key != "end_time_s" && spec.key != "sound_speed_m_s" &&
-             spec.key != "cfl" && spec.key != "reference_pressure_pa") ||
-            solverParameters.get(spec.key) != spec.defaultValue)
+    for (const ParameterSpec& spec : solverParameters.specs()) // the chosen ones only where the form changed them
+        if (!chosenUnlessSet(spec.key) || solverParameters.get(spec.key) != spec.defaultValue)
             setup.given.push_back(spec.key);
     if (form.get("inlet_flow_rate_ml_s") > 0.0)
         setup.inlet.kind = BloodFlowInlet::Kind::FlowRate, setup.inlet.value = 1e-6 * form.get("inlet_flow_rate_ml_s");
@@ -200,6 +207,17 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
         parameters.set("reference_pressure_pa", setup.outletPressurePa);
     if (!given(setup, "cfl")) // a stenosis's jet needs the smaller step (SphSolver.h)
         parameters.set("cfl", sim::sph::kStenosisCfl);
+    // ... and the shift with its floor at the narrowest section's mean speed at the inflow's peak (half the
+    // parabolic peak expected there), and the continuity density relaxed towards summation (SphSolver.h:
+    // kStenosisShifting).
+    if (!given(setup, "particle_shifting"))
+        parameters.set("particle_shifting", sim::sph::kStenosisShifting);
+    if (!given(setup, "shifting_speed_m_s") && parameters.get("particle_shifting") > 0.0)
+        parameters.set("shifting_speed_m_s", 0.5 * expectedPeak);
+    if (!given(setup, "density_relaxation_s") && parameters.get("density_summation") == 0.0)
+        parameters.set("density_relaxation_s", sim::sph::kStenosisRelaxationSmoothingTimes * 1e-3 * spacingMm *
+                                                   parameters.get("smoothing_ratio") /
+                                                   parameters.get("sound_speed_m_s"));
     // A vessel that empties through its outlets while its particles' densities read full (SphRates.h: the continuity
     // density's drift) stops with the reason rather than print a thinned flow's figures. 10 %: over three times what
     // a pulse's compression stores (the density guard's 3 %).

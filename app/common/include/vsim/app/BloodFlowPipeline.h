@@ -43,8 +43,11 @@ struct BloodFlowSetup
     BloodFlowInlet inlet;
     double outletPressurePa = 0.0; ///< every outlet (gauge); also the solver's reference pressure unless given
     double compareMm = 6.0;        ///< the stenosis figures' comparison distance (the thesis's hand case: 6 mm)
-    /// The solver's parameters; spacing_mm, sound_speed_m_s, cfl (sim::sph::kStenosisCfl), end_time_s and
-    /// reference_pressure_pa (the outlets' pressure) are chosen (below) unless `given` names them.
+    /// The solver's parameters; spacing_mm, sound_speed_m_s, cfl (sim::sph::kStenosisCfl), end_time_s,
+    /// reference_pressure_pa (the outlets' pressure), fluid_loss_guard (0.1), particle_shifting
+    /// (sim::sph::kStenosisShifting), shifting_speed_m_s (the narrowest section's mean speed at the inflow's
+    /// peak) and density_relaxation_s (20 h / c0; not with density_summation) are chosen (runBloodFlow) unless
+    /// `given` names them.
     ParameterSet parameters{sim::sph::sphParameters()};
     std::vector<std::string> given; ///< parameter names the user set
     double rampS = -1.0;            ///< the inflow's rise from rest; < 0: 8 L / c0 (L the path's length)
@@ -81,9 +84,9 @@ struct BloodFlowRun
 /// inlet_flow_rate_ml_s (> 0 replaces the velocity), outlet_pressure_mmhg, compare_mm, spacing_mm and end_time_s (0:
 /// chosen), frames.
 std::vector<ParameterSpec> bloodFlowSetupParameters();
-/// The setup from that form and the solver's parameters (every one counts as given, but the solver's spacing_mm,
-/// end_time_s, sound_speed_m_s, cfl and reference_pressure_pa only where they differ from their defaults; the form's
-/// spacing and end time at 0 are chosen).
+/// The setup from that form and the solver's parameters (every one counts as given, but those runBloodFlow chooses
+/// (BloodFlowSetup::parameters) only where they differ from their defaults; the form's spacing and end time at 0 are
+/// chosen).
 BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters);
 
 /// Runs the blood flow of the study's centerlines (their label's lumen) under `control` (without a frame schedule:

@@ -43,6 +43,15 @@ std::vector<ParameterSpec> sphParameters();
 /// Poiseuille, Womersley, mass) pass at the default and keep it.
 constexpr double kStenosisCfl = 0.1;
 
+/// A stenosis's other numerics, those of the 0.05 mm cross-check against OpenFOAM at throat Re 97 (2026-12-04,
+/// RESULTS.md; sim/sph/README.md): particle shifting A 2 (without it the recovering jet tore into streaks and voids
+/// and stopped at the density guard), its speed floor the narrowest section's mean speed (without it the slow
+/// separation zone clumped) and the continuity density relaxed towards summation over 20 h / c0 (without it the
+/// jet's wake thinned out: 4.1 % of the fluid lost at 0.1 mm). With them the run kept its fluid (net outflow 0.08 %)
+/// and read the peak velocity ratio 1.1 % and the pressure drop 3.1 % from simpleFoam's.
+constexpr double kStenosisShifting = 2.0;
+constexpr double kStenosisRelaxationSmoothingTimes = 20.0; ///< tau in units of h / c0
+
 /// The walls' backstop's reach r0 in spacings (FluidModel.h): short of the lattice's spacing, so that the
 /// fluid at the wall's lattice distance feels none (single precision's rounding of it had the GPU push where
 /// the CPU did not: parity after 100 steps 5.7e-4 with r0 one spacing) and a pass between four wall particles
