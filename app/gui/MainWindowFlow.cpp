@@ -171,6 +171,7 @@ bool MainWindow::showWallLoads(const std::string& field)
     else
         shown.title += tr(", time-averaged");
     shown.title += tr("; grey: no value");
+    statusBar()->clearMessage(); // an earlier "Wall loads failed" (none yet) no longer holds
     viz::VolumeView3D* view = m_views->volumeView();
     if (m_playedRun && !m_playedRun->frames.empty() &&
         std::holds_alternative<ParticleSet>(m_playedRun->frames.front().data))

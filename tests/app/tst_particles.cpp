@@ -21,6 +21,7 @@
 #include "vsim/viz/VolumeView3D.h"
 
 #include <QDockWidget>
+#include <QStatusBar>
 
 namespace fs = std::filesystem;
 using namespace vsim;
@@ -162,6 +163,7 @@ private slots:
                          study::Provenance{"simulate sph", {{"averaged_from_s", "0.002"}, {"averaged_over_s", "0.002"}},
                                            {runId}, "", ""});
         QVERIFY(window.showWallLoads("tawss_pa"));
+        QVERIFY(window.statusBar()->currentMessage().isEmpty()); // the "none yet" above is over
         viz::VolumeView3D* view = window.views()->volumeView();
         QVERIFY2(view->surfaceLegendTitle().startsWith("TAWSS (Pa)") &&
                      view->surfaceLegendTitle().contains("averaged over 2.0-4.0 ms"),
