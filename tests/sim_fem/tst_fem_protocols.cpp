@@ -1,7 +1,8 @@
 // The wall-solver protocols. Physiological: a straight tube (radius 5 mm, 1.5 mm wall, ends fixed) at 120 mmHg
 // carries the Laplace / Lame mean hoop stress p a / t in its middle within 5 %; the wall-strength model gives
 // Vande Geest 2006's value for its reference patient. Thesis rupture: on a thin tube with a low tear strength the
-// wall tears during the ramp, the onset pressure is reported and the fracture entropy rises as it tears.
+// wall tears during the ramp, the onset pressure is reported and the fracture entropy rises as it tears. A lumen
+// pressure that varies over the wall (a blood-flow run's, one-way coupling) is carried section by section.
 
 #include "WallFixtures.h"
 #include "vsim/core/Units.h"
@@ -9,6 +10,7 @@
 #include "vsim/core/Error.h"
 #include "vsim/core/Progress.h"
 #include "vsim/sim/fem/FemProtocols.h"
+#include "vsim/sim/fem/StaticWallRun.h"
 
 #include <QtTest>
 
@@ -42,6 +44,35 @@ double meanHoopNear(const TetMesh& frame, double z, double halfWidth)
     return sum / count;
 }
 
+/// A tube's section at height `z` mm (+- `halfWidth`) in a run's frame of `wall` (polygon of `sides`): the mean
+/// hoop (largest principal) stress and the deformed inner and outer radii (the polygon's vertices, mean over each
+/// side of the wall, scaled to the inscribed circle).
+struct TubeSection
+{
+    double hoopKpa = 0.0, innerMm = 0.0, outerMm = 0.0;
+    /// The section's statics: the mean hoop stress p a' / (b' - a') under a lumen pressure `pressureKpa`.
+    double staticsKpa(double pressureKpa) const { return pressureKpa * innerMm / (outerMm - innerMm); }
+};
+TubeSection tubeSection(const TetMesh& wall, const TetMesh& frame, double z, double halfWidth, int sides)
+{
+    TubeSection section;
+    section.hoopKpa = meanHoopNear(frame, z, halfWidth);
+    double inner = 0.0, outer = 0.0;
+    int innerCount = 0, outerCount = 0;
+    const auto& layer = wall.pointFields.at("wall_layer");
+    for (std::size_t n = 0; n < frame.points.size(); ++n)
+        if (std::abs(frame.points[n].z() - z) < halfWidth)
+        {
+            const Eigen::Vector2d moved(frame.points[n].x() + frame.pointFields.at("displacement_x_mm")[n],
+                                        frame.points[n].y() + frame.pointFields.at("displacement_y_mm")[n]);
+            (layer[n] == 0.0 ? inner : outer) += moved.norm();
+            ++(layer[n] == 0.0 ? innerCount : outerCount);
+        }
+    section.innerMm = inner / innerCount * std::cos(M_PI / sides);
+    section.outerMm = outer / outerCount * std::cos(M_PI / sides);
+    return section;
+}
+
 } // namespace
 
 class FemProtocols : public QObject
@@ -59,20 +90,8 @@ private slots:
         // The mid-section's inner radius is the polygon's (64 sides): use its inscribed radius for a.
         const double a = radius * std::cos(M_PI / 64), pressureKpa = units::mmHgToPa(120.0) * 1e-3;
         const auto midSection = [&](const TetMesh& last, double& hoopMean, double& innerMm, double& outerMm) {
-            hoopMean = meanHoopNear(last, 30.0, 5.0);
-            // Deformed radii at the mid-section (the polygon's vertices, mean over each side of the wall).
-            double inner = 0.0, outer = 0.0;
-            int innerCount = 0, outerCount = 0;
-            const auto& layer = wall.pointFields.at("wall_layer");
-            for (std::size_t n = 0; n < last.points.size(); ++n)
-                if (std::abs(last.points[n].z() - 30.0) < 5.0)
-                {
-                    const Eigen::Vector2d moved(last.points[n].x() + last.pointFields.at("displacement_x_mm")[n],
-                                                last.points[n].y() + last.pointFields.at("displacement_y_mm")[n]);
-                    (layer[n] == 0.0 ? inner : outer) += moved.norm();
-                    ++(layer[n] == 0.0 ? innerCount : outerCount);
-                }
-            innerMm = inner / innerCount * std::cos(M_PI / 64), outerMm = outer / outerCount * std::cos(M_PI / 64);
+            const TubeSection section = tubeSection(wall, last, 30.0, 5.0, 64);
+            hoopMean = section.hoopKpa, innerMm = section.innerMm, outerMm = section.outerMm;
         };
 
         // The quadratic analysis (wall_model 1: quadratic tets, Raghavan-Vorp wall): the mean hoop stress through the wall is the
@@ -147,6 +166,70 @@ private slots:
         QVERIFY(unknown.metrics.at("rupture_index_computed") == 0.0 && !unknown.metrics.count("peak_rupture_index"));
         QVERIFY(!unknown.frames.back().cellFields.count("rupture_index"));
         QVERIFY(run.metrics.at("rupture_index_computed") == 1.0);
+    }
+
+    /// One-way coupling (flow_wall_pressure 1): the lumen carries the pressure plus a field on its points
+    /// (kLumenExtraPressureField, as a blood-flow run's wall pressure). A constant field c gives the uniform run at
+    /// p + c; a field linear along the tube is carried section by section: a cylindrical shell under a pressure
+    /// linear in z stays in its membrane state (w'' = 0: no bending), so each section's mean hoop stress is its own
+    /// statics p(z) a' / (b' - a'). Asking for the coupling without the field, or on the linear model, is refused.
+    void lumenPressureFieldIsCarriedSectionBySection()
+    {
+        const double radius = 5.0, length = 60.0;
+        const int sides = 32;
+        TetMesh wall = tubeWall(radius, length, sides);
+        const SkeletonGraph centerline = test::cylinderCenterline(radius, length);
+        ParameterSet parameters(femParameters());
+        parameters.set("wall_model", 1);
+        parameters.set("flow_wall_pressure", 1);
+        QVERIFY_THROWS_EXCEPTION(Error, runPhysiological(wall, centerline, parameters)); // no field on the wall
+
+        const double pressurePa = units::mmHgToPa(120.0), addedPa = 2000.0;
+        wall.pointFields[kLumenExtraPressureField] = std::vector<double>(wall.points.size(), addedPa);
+        const FemRunResult coupled = runPhysiological(wall, centerline, parameters);
+        parameters.set("flow_wall_pressure", 0);
+        parameters.set("pressure_mmhg", units::paToMmHg(pressurePa + addedPa));
+        const FemRunResult uniform = runPhysiological(wall, centerline, parameters);
+        const auto& a = coupled.frames.back().pointFields.at("displacement_mm");
+        const auto& b = uniform.frames.back().pointFields.at("displacement_mm");
+        double largest = 0.0, difference = 0.0;
+        for (std::size_t n = 0; n < a.size(); ++n)
+            largest = std::max(largest, std::abs(b[n])), difference = std::max(difference, std::abs(a[n] - b[n]));
+        qInfo("a constant added %.0f Pa against the uniform %.1f mmHg: displacements %.2e mm apart (largest %.4f mm)",
+              addedPa, parameters.get("pressure_mmhg"), difference, largest);
+        QVERIFY(coupled.status.converged() && uniform.status.converged());
+        QVERIFY(difference <= 1e-6 * largest);
+
+        // Linear along the tube: -3 kPa at z 15 mm to +3 kPa at z 45 mm.
+        const double slopePaPerMm = 200.0;
+        std::vector<double> linear(wall.points.size());
+        for (std::size_t n = 0; n < linear.size(); ++n)
+            linear[n] = slopePaPerMm * (wall.points[n].z() - 0.5 * length);
+        wall.pointFields[kLumenExtraPressureField] = linear;
+        parameters.set("pressure_mmhg", 120.0);
+        parameters.set("flow_wall_pressure", 1);
+        const FemRunResult graded = runPhysiological(wall, centerline, parameters);
+        QVERIFY2(graded.status.converged(), graded.stopReason.c_str());
+        double previous = 0.0;
+        for (double z : {18.0, 30.0, 42.0})
+        {
+            const TubeSection section = tubeSection(wall, graded.frames.back(), z, 3.0, sides);
+            const double localKpa = 1e-3 * (pressurePa + slopePaPerMm * (z - 0.5 * length));
+            qInfo("z %.0f mm: lumen %.2f kPa, mean hoop %.2f kPa, the section's statics %.2f kPa", z, localKpa,
+                  section.hoopKpa, section.staticsKpa(localKpa));
+            QVERIFY(std::abs(section.hoopKpa / section.staticsKpa(localKpa) - 1.0) < 0.03);
+            QVERIFY(section.hoopKpa > previous); // the higher the pressure, the higher the stress
+            previous = section.hoopKpa;
+        }
+        // An untouched parameter leaves the field unused: the uniform 120 mmHg.
+        parameters.set("flow_wall_pressure", 0);
+        const FemRunResult ignored = runPhysiological(wall, centerline, parameters);
+        const TubeSection low = tubeSection(wall, ignored.frames.back(), 18.0, 3.0, sides);
+        QVERIFY(std::abs(low.hoopKpa / low.staticsKpa(1e-3 * pressurePa) - 1.0) < 0.03);
+
+        parameters.set("flow_wall_pressure", 1);
+        parameters.set("wall_model", 0);
+        QVERIFY_THROWS_EXCEPTION(Error, runPhysiological(wall, centerline, parameters));
     }
 
     /// The zero-pressure geometry (backward displacement): the loaded wall comes back to the imaged one within

@@ -3,6 +3,7 @@
 #include "BackendChoice.h"
 #include "GpuPlugin.h"
 #include "ReportSupport.h"
+#include "vsim/app/FlowWallPressure.h"
 #include "vsim/app/RunRecord.h"
 #include "vsim/app/SacRecord.h"
 #include "vsim/core/Error.h"
@@ -210,7 +211,7 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
                                        const std::string& centerlinesId, const ParameterSet& parameters,
                                        const WallBackend& backend, const Progress& progress)
 {
-    const TetMesh wall = study.loadTetMesh(wallId);
+    TetMesh wall = study.loadTetMesh(wallId);
     const auto started = std::chrono::steady_clock::now();
     sim::fem::FemRunResult run;
     if (protocol == "thesis-rupture")
@@ -219,7 +220,18 @@ sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::str
     {
         const SkeletonGraph centerlines = study.loadSkeleton(centerlinesId);
         const std::optional<sim::fem::SacRegion> sac = newestSacRegion(study, centerlines);
+        std::optional<FlowWallPressure> flow;
+        if (parameters.get("flow_wall_pressure") > 0.5)
+            flow = addFlowWallPressure(study, wall);
         run = sim::fem::runPhysiological(wall, centerlines, parameters, progress, backend.stepper, sac ? &*sac : nullptr);
+        if (flow)
+        {
+            run.record.provenance.inputs[kFlowWallLoadsInput] = flow->wallLoadsId;
+            run.metrics["flow_pressure_lumen_points"] = double(flow->lumenPoints);
+            run.metrics["flow_pressure_covered_share"] = double(flow->coveredPoints) / double(flow->lumenPoints);
+            run.metrics["flow_pressure_min_pa"] = flow->smallestPa;
+            run.metrics["flow_pressure_max_pa"] = flow->largestPa;
+        }
     }
     else
         throw Error(Pattern{"unknown protocol '%1' (thesis-rupture, physiological, interactive)", {protocol}});
@@ -251,6 +263,16 @@ WallRunIds addWallRun(study::Study& study, const sim::fem::FemRunResult& run, co
     record.provenance.inputs = {{"wall", wallId}};
     if (!centerlinesId.empty())
         record.provenance.inputs["centerlines"] = centerlinesId;
+    if (const auto flow = run.record.provenance.inputs.find(kFlowWallLoadsInput);
+        flow != run.record.provenance.inputs.end()) // the blood flow's wall pressure it carried
+    {
+        provenance.inputs.push_back(flow->second), record.provenance.inputs[flow->first] = flow->second;
+        if (const auto covered = run.metrics.find("flow_pressure_covered_share");
+            covered != run.metrics.end() && covered->second < kFlowPressureCoveredWarning)
+            warnings.push_back(storedText(Pattern{
+                "the blood flow's wall pressure reached %1 % of the lumen; the rest carries the uniform pressure",
+                {numberText(std::round(1000.0 * covered->second) / 10.0)}}));
+    }
     WallRunIds ids;
     ids.run = study.addRun(record, storedText(Pattern{"Wall run (%1)", {protocolName(protocol)}}), provenance, warnings);
     ids.stress = study.addTetMesh(run.frames.back(), storedText(Pattern{"Wall stress (%1)", {protocolName(protocol)}}),

@@ -96,6 +96,11 @@ std::vector<ParameterSpec> femParameters()
          "1: the unloaded geometry is found first (backward displacement, Bols et al. 2013) so that the loaded wall "
          "is the imaged one; 0: the imaged (loaded) geometry is taken as unloaded (wall model 1).",
          ParameterSpec::Kind::Integer},
+        {"flow_wall_pressure", "Blood flow's wall pressure", "", 0, 0, 1, physiological,
+         "1: the lumen carries the blood pressure plus the time-averaged wall pressure of the study's newest "
+         "blood-flow run (relative to its outlets; one-way coupling), scaled with the load; 0: a uniform pressure "
+         "(wall model 1).",
+         ParameterSpec::Kind::Integer},
         {"load_increments", "Load increments", "", 1, 1, 100, physiological,
          "Pressure increments, each solved to equilibrium; one that fails is retried at half the size (wall "
          "model 1).", ParameterSpec::Kind::Integer},
@@ -154,7 +159,8 @@ std::map<std::string, std::string> femProtocolValues(const ParameterSet& paramet
     // and the load path's settings do not enter it; the linear one has no increments or wall Poisson's ratio.
     const bool quadratic = femUsesQuadraticWall(protocol, parameters);
     const std::vector<std::string> linearOnly = {"settle_time_s", "settle_time_step_ms"},
-                                   quadraticOnly = {"wall_poisson_ratio", "load_increments", "zero_pressure_geometry"};
+                                   quadraticOnly = {"wall_poisson_ratio", "load_increments", "zero_pressure_geometry",
+                                                    "flow_wall_pressure"};
     const std::map<std::string, std::string> all = parameters.valuesAsText();
     std::map<std::string, std::string> used;
     for (const ParameterSpec& spec : femProtocolParameters(protocol))
@@ -376,10 +382,18 @@ FemRunResult runPhysiological(const TetMesh& wall, const SkeletonGraph& centerli
         throw Error("the physiological protocol needs centerlines (for the local diameter)");
     const double pressure = units::mmHgToPa(p.get("pressure_mmhg"));
     FemRunResult result;
+    const bool coupled = p.get("flow_wall_pressure") > 0.5;
+    if (coupled && !wall.pointFields.count(kLumenExtraPressureField))
+        throw Error("flow_wall_pressure 1 needs the blood flow's wall pressure on the wall's lumen (vascusim-cli "
+                    "simulate fem or the workstation add it from the study's newest blood-flow run)");
+    if (coupled && !femUsesQuadraticWall("physiological", p))
+        throw Error("flow_wall_pressure 1 needs wall_model 1 (the quadratic hyperelastic wall)");
     if (femUsesQuadraticWall("physiological", p))
     {
         StaticWallSetup setup;
         setup.wall = wall;
+        if (!coupled) // a uniform lumen pressure unless asked for
+            setup.wall.pointFields.erase(kLumenExtraPressureField);
         // The wall, and the intraluminal thrombus where the mesh has it (mesh wall with the sac: material 1).
         setup.materials = {HyperelasticMaterial::raghavanVorp2000(p.get("wall_poisson_ratio")),
                            HyperelasticMaterial::wang2001Thrombus(p.get("wall_poisson_ratio"))};

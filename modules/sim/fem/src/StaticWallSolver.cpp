@@ -31,7 +31,20 @@ void StaticWallSolver::initialize(const SimulationInput& input, const ParameterS
     m_model = std::make_unique<QuadraticFem>(quadraticFromLinear(metres, m_wall.tets), m_setup.materials,
                                              m_setup.elementMaterial);
     m_held = quadraticConstraints(m_model->mesh(), conditions.fixed);
-    m_faces = quadraticFaces(m_model->mesh(), conditions.faceNodes(m_wall.tets));
+    const std::vector<std::array<int, 3>> cornerFaces = conditions.faceNodes(m_wall.tets);
+    m_faces = quadraticFaces(m_model->mesh(), cornerFaces);
+    m_faceExtraPa.clear();
+    if (const auto extra = m_wall.pointFields.find(kLumenExtraPressureField); extra != m_wall.pointFields.end())
+        for (const auto& [a, b, c] : cornerFaces) // the face's mean of its corners' values
+        {
+            const double pa = (extra->second[std::size_t(a)] + extra->second[std::size_t(b)] +
+                               extra->second[std::size_t(c)]) / 3.0;
+            if (!std::isfinite(pa) || !(m_setup.pressurePa + pa > 0.0))
+                throw Error(Pattern{"the lumen's added pressure (%1) must be finite and leave the pressure positive "
+                                    "(%2 Pa + %3 Pa)",
+                                    {kLumenExtraPressureField, numberText(m_setup.pressurePa), numberText(pa)}});
+            m_faceExtraPa.push_back(pa);
+        }
     m_reached = 0.0, m_increment = 1.0 / m_setup.loadIncrements;
     m_converged = m_updates = m_cutbacks = m_factorisations = 0;
     m_residuals.clear();
@@ -70,7 +83,11 @@ StepOutcome StaticWallSolver::step(RunStatus& status, const Progress& progress)
         std::string failure;
         try
         {
-            const FollowerPressure load = followerPressure(m_faces, pressure);
+            std::vector<double> facePressures(m_faceExtraPa.size());
+            for (std::size_t f = 0; f < facePressures.size(); ++f) // the load factor scales the whole lumen load
+                facePressures[f] = factor * (m_setup.pressurePa + m_faceExtraPa[f]);
+            const FollowerPressure load =
+                m_faceExtraPa.empty() ? followerPressure(m_faces, pressure) : followerPressure(m_faces, facePressures);
             report = solveStatic(*m_model, load.forces, m_held, settings, load.stiffness);
         }
         catch (const Cancelled&)

@@ -1,5 +1,7 @@
 #include "vsim/sim/fem/SurfaceLoads.h"
 
+#include "vsim/core/Error.h"
+#include "vsim/core/StoredText.h"
 #include "vsim/sim/fem/QuadraticTet.h"
 
 #include <Eigen/Geometry>
@@ -56,11 +58,17 @@ void subtractPressureStiffness(const std::vector<std::array<int, 3>>& faces, con
     }
 }
 
-void addPressureForces(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
-                       double pressurePa, Eigen::VectorXd& forces)
+namespace {
+
+/// The 6-node faces' forces and load stiffness with face f under `pressureOf(f)` (Pa).
+template <class PressureOf>
+void addQuadraticPressureForces(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
+                                const PressureOf& pressureOf, Eigen::VectorXd& forces)
 {
-    for (const auto& face : faces)
+    for (std::size_t f = 0; f < faces.size(); ++f)
     {
+        const std::array<int, 6>& face = faces[f];
+        const double pressurePa = pressureOf(f);
         const Eigen::Matrix<double, 3, 6> x = facePositions(face, positions);
         for (const Eigen::Vector3d& q : triangleQuadraturePoints())
         {
@@ -72,11 +80,15 @@ void addPressureForces(const std::vector<std::array<int, 6>>& faces, const Eigen
     }
 }
 
-void subtractPressureStiffness(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
-                               double pressurePa, BlockSparseMatrix& tangent)
+template <class PressureOf>
+void subtractQuadraticPressureStiffness(const std::vector<std::array<int, 6>>& faces,
+                                        const Eigen::VectorXd& positions, const PressureOf& pressureOf,
+                                        BlockSparseMatrix& tangent)
 {
-    for (const auto& face : faces)
+    for (std::size_t f = 0; f < faces.size(); ++f)
     {
+        const std::array<int, 6>& face = faces[f];
+        const double pressurePa = pressureOf(f);
         const Eigen::Matrix<double, 3, 6> x = facePositions(face, positions);
         std::array<Eigen::Matrix3d, 36> blocks;
         blocks.fill(Eigen::Matrix3d::Zero());
@@ -94,6 +106,20 @@ void subtractPressureStiffness(const std::vector<std::array<int, 6>>& faces, con
                 tangent.block(tangent.slotOf(std::size_t(face[std::size_t(a)]), std::size_t(face[std::size_t(b)]))) +=
                     blocks[std::size_t(6 * a + b)];
     }
+}
+
+} // namespace
+
+void addPressureForces(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
+                       double pressurePa, Eigen::VectorXd& forces)
+{
+    addQuadraticPressureForces(faces, positions, [pressurePa](std::size_t) { return pressurePa; }, forces);
+}
+
+void subtractPressureStiffness(const std::vector<std::array<int, 6>>& faces, const Eigen::VectorXd& positions,
+                               double pressurePa, BlockSparseMatrix& tangent)
+{
+    subtractQuadraticPressureStiffness(faces, positions, [pressurePa](std::size_t) { return pressurePa; }, tangent);
 }
 
 namespace {
@@ -123,6 +149,25 @@ FollowerPressure followerPressure(const std::vector<std::array<int, 3>>& faces, 
 FollowerPressure followerPressure(const std::vector<std::array<int, 6>>& faces, double pressurePa)
 {
     return followerPressureOn(faces, pressurePa);
+}
+
+FollowerPressure followerPressure(const std::vector<std::array<int, 6>>& faces,
+                                  const std::vector<double>& facePressuresPa)
+{
+    if (facePressuresPa.size() != faces.size())
+        throw Error(Pattern{"%1 face pressures for %2 pressure faces",
+                            {std::to_string(facePressuresPa.size()), std::to_string(faces.size())}});
+    const auto pressureOf = [facePressuresPa](std::size_t f) { return facePressuresPa[f]; };
+    FollowerPressure load;
+    load.forces = [faces, pressureOf](const Eigen::VectorXd& x) {
+        Eigen::VectorXd f = Eigen::VectorXd::Zero(x.size());
+        addQuadraticPressureForces(faces, x, pressureOf, f);
+        return f;
+    };
+    load.stiffness = [faces, pressureOf](const Eigen::VectorXd& x, BlockSparseMatrix& tangent) {
+        subtractQuadraticPressureStiffness(faces, x, pressureOf, tangent);
+    };
+    return load;
 }
 
 void addGravityForces(const Eigen::VectorXd& mass, const Eigen::Vector3d& gravity, Eigen::VectorXd& forces)

@@ -70,10 +70,19 @@ std::vector<viz::Callout> sacPeakCallouts(const study::Artifact& run);
 WallBackend chooseWallBackend(const std::string& requested, const std::string& protocol, const ParameterSet& parameters);
 
 /// Runs `protocol` ("thesis-rupture" or "physiological") on the wall artifact `wallId` (centerlines needed by the
-/// physiological protocol) on `backend`. Throws vsim::Error for an unknown protocol.
+/// physiological protocol) on `backend`. With flow_wall_pressure 1 the lumen also carries the study's newest
+/// blood-flow wall pressure (FlowWallPressure.h): the run's record names that artifact as its input
+/// kFlowWallLoadsInput, and metrics flow_pressure_lumen_points, flow_pressure_covered_share and
+/// flow_pressure_min_pa / _max_pa (the pressure added, relative to the flow's outlets) say what it carried.
+/// Throws vsim::Error for an unknown protocol.
 sim::fem::FemRunResult runWallProtocol(const study::Study& study, const std::string& protocol, const std::string& wallId,
                                        const std::string& centerlinesId, const ParameterSet& parameters,
                                        const WallBackend& backend = {}, const Progress& progress = {});
+
+/// The run record's input naming the blood flow's wall loads a coupled run carried.
+inline constexpr const char* kFlowWallLoadsInput = "flow_wall_loads";
+/// Below this share of the lumen reached by the flow's wall pressure, the run says so (addWallRun's warnings).
+inline constexpr double kFlowPressureCoveredWarning = 0.95;
 
 /// Adds a run to the study: its last frame ("Wall stress (protocol)", metrics as attributes, warnings and an early
 /// stop as warnings, the backend in the provenance) and the whole run ("Wall run (protocol)", a Run artifact with

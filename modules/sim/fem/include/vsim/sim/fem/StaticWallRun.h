@@ -23,9 +23,14 @@
 
 namespace vsim::sim::fem {
 
+/// A wall point field (Pa) added to the lumen pressure where the wall has it: each lumen face carries the pressure
+/// plus the mean of its corners' values, all scaled by the load factor (a pressure that varies over the lumen, e.g.
+/// a blood-flow run's time-averaged wall pressure: one-way coupling).
+inline constexpr const char* kLumenExtraPressureField = "lumen_added_pressure_pa";
+
 struct StaticWallSetup
 {
-    TetMesh wall;                                   ///< mm; point fields wall_layer and end_set
+    TetMesh wall; ///< mm; point fields wall_layer and end_set, and kLumenExtraPressureField where it has one
     std::vector<HyperelasticMaterial> materials;    ///< [0]: the wall, [1]: the thrombus (where elements have it)
     std::vector<std::uint8_t> elementMaterial;      ///< per tet, an index into materials; empty: all the wall
     double pressurePa = 0.0;

@@ -44,6 +44,7 @@ private:
     std::unique_ptr<QuadraticFem> m_model;
     std::vector<std::uint8_t> m_held;
     std::vector<std::array<int, 6>> m_faces;
+    std::vector<double> m_faceExtraPa; ///< per face, the wall's kLumenExtraPressureField (empty without it)
     double m_reached = 0.0, m_increment = 1.0; ///< load factors
     int m_converged = 0, m_updates = 0, m_cutbacks = 0, m_factorisations = 0;
     std::vector<double> m_residuals;

@@ -45,6 +45,10 @@ struct FollowerPressure
 };
 FollowerPressure followerPressure(const std::vector<std::array<int, 3>>& faces, double pressurePa);
 FollowerPressure followerPressure(const std::vector<std::array<int, 6>>& faces, double pressurePa);
+/// The same with face f under its own pressure `facePressuresPa[f]` (Pa; a pressure that varies over the lumen, as a
+/// blood-flow run's wall pressure does). Throws vsim::Error when the counts differ.
+FollowerPressure followerPressure(const std::vector<std::array<int, 6>>& faces,
+                                  const std::vector<double>& facePressuresPa);
 
 /// Adds m g to `forces` for lumped masses `mass` (kg per component) and gravity `gravity` (m/s^2).
 void addGravityForces(const Eigen::VectorXd& mass, const Eigen::Vector3d& gravity, Eigen::VectorXd& forces);
