@@ -147,6 +147,8 @@ static const char* const kParameterTexts[] = {
     QT_TRANSLATE_NOOP("vsim::Parameters", "Near incompressibility of the hyperelastic wall: its bulk modulus from the small-strain shear modulus (wall model 1)."),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Zero-pressure geometry"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "1: the unloaded geometry is found first (backward displacement, Bols et al. 2013) so that the loaded wall is the imaged one; 0: the imaged (loaded) geometry is taken as unloaded (wall model 1)."),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "Blood flow's wall pressure"),
+    QT_TRANSLATE_NOOP("vsim::Parameters", "1: the lumen carries the blood pressure plus the time-averaged wall pressure of the study's newest blood-flow run (relative to its outlets; one-way coupling), scaled with the load; 0: a uniform pressure (wall model 1)."),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Load increments"),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Pressure increments, each solved to equilibrium; one that fails is retried at half the size (wall model 1)."),
     QT_TRANSLATE_NOOP("vsim::Parameters", "Load path time"),

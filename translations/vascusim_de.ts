@@ -4225,6 +4225,42 @@
         <source>the SPH input&apos;s particles carry the field &apos;%1&apos;, which the solver does not read (it reads wall, wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s and void_fraction): is it misspelt?</source>
         <translation>die Partikel der SPH-Eingabe tragen das Feld &apos;%1&apos;, das der Löser nicht liest (er liest wall, wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s und void_fraction): ist es falsch geschrieben?</translation>
     </message>
+    <message>
+        <source>the wall loads %1 have no wall_pressure_pa</source>
+        <translation>die Wandlasten %1 haben kein wall_pressure_pa</translation>
+    </message>
+    <message>
+        <source>none of the wall&apos;s %1 lumen points lies within %2 mm of the blood flow&apos;s wall (%3): the flow ran through other vessels</source>
+        <translation>keiner der %1 Lumenpunkte der Wand liegt innerhalb von %2 mm von der Wand der Blutströmung (%3): die Strömung lief durch andere Gefäße</translation>
+    </message>
+    <message>
+        <source>flow_wall_pressure 1 needs a blood-flow run&apos;s wall loads in the study (Flow &gt; Blood Flow, or vascusim-cli simulate sph, run to its averaging window)</source>
+        <translation>flow_wall_pressure 1 braucht die Wandlasten eines Blutströmungslaufs in der Studie (Strömung &gt; Blutfluss (SPH) oder vascusim-cli simulate sph, bis in sein Mittelungsfenster gerechnet)</translation>
+    </message>
+    <message>
+        <source>the wall mesh has no wall_layer field: its lumen is not known</source>
+        <translation>das Wandnetz hat kein Feld wall_layer: sein Lumen ist unbekannt</translation>
+    </message>
+    <message>
+        <source>the blood flow&apos;s wall pressure reached %1 % of the lumen; the rest carries the uniform pressure</source>
+        <translation>der Wanddruck der Blutströmung erreichte %1 % des Lumens; der Rest trägt den gleichförmigen Druck</translation>
+    </message>
+    <message>
+        <source>flow_wall_pressure 1 needs the blood flow&apos;s wall pressure on the wall&apos;s lumen (vascusim-cli simulate fem or the workstation add it from the study&apos;s newest blood-flow run)</source>
+        <translation>flow_wall_pressure 1 braucht den Wanddruck der Blutströmung auf dem Lumen der Wand (vascusim-cli simulate fem oder die Workstation fügen ihn aus dem neuesten Blutströmungslauf der Studie hinzu)</translation>
+    </message>
+    <message>
+        <source>flow_wall_pressure 1 needs wall_model 1 (the quadratic hyperelastic wall)</source>
+        <translation>flow_wall_pressure 1 braucht wall_model 1 (die quadratische hyperelastische Wand)</translation>
+    </message>
+    <message>
+        <source>the lumen&apos;s added pressure (%1) must be finite and leave the pressure positive (%2 Pa + %3 Pa)</source>
+        <translation>der zusätzliche Lumendruck (%1) muss endlich sein und den Druck positiv lassen (%2 Pa + %3 Pa)</translation>
+    </message>
+    <message>
+        <source>%1 face pressures for %2 pressure faces</source>
+        <translation>%1 Flächendrücke für %2 Druckflächen</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5763,6 +5799,14 @@
     <message>
         <source>&gt; 0: the shift&apos;s coefficient is A h max(|v|, this), so that slow zones (a stenosis&apos;s separation zone) are shifted too, where with |v| alone the particles clump and leave voids; the flow&apos;s largest speed makes it the delta+-SPH shift (Sun et al. 2017); 0: |v| alone</source>
         <translation>&gt; 0: der Koeffizient der Verschiebung ist A h max(|v|, dieser Wert), damit auch langsame Zonen (die Ablösungszone hinter einer Stenose) verschoben werden, wo die Partikel mit |v| allein verklumpen und Lücken lassen; die größte Geschwindigkeit der Strömung ergibt die Verschiebung von delta+-SPH (Sun et al. 2017); 0: |v| allein</translation>
+    </message>
+    <message>
+        <source>Blood flow&apos;s wall pressure</source>
+        <translation>Wanddruck der Blutströmung</translation>
+    </message>
+    <message>
+        <source>1: the lumen carries the blood pressure plus the time-averaged wall pressure of the study&apos;s newest blood-flow run (relative to its outlets; one-way coupling), scaled with the load; 0: a uniform pressure (wall model 1).</source>
+        <translation>1: das Lumen trägt den Blutdruck plus den zeitgemittelten Wanddruck des neuesten Blutströmungslaufs der Studie (relativ zu seinen Auslässen; Einweg-Kopplung), mit der Last skaliert; 0: ein gleichförmiger Druck (Wandmodell 1).</translation>
     </message>
 </context>
 <context>

@@ -4225,6 +4225,42 @@
         <source>the SPH input&apos;s particles carry the field &apos;%1&apos;, which the solver does not read (it reads wall, wall_depth_mm, open_boundary, tracer, pressure_pa, velocity_x_m_s, velocity_y_m_s, velocity_z_m_s and void_fraction): is it misspelt?</source>
         <translation>SPH 输入的粒子带有字段 &apos;%1&apos;，求解器不读取该字段（它读取 wall、wall_depth_mm、open_boundary、tracer、pressure_pa、velocity_x_m_s、velocity_y_m_s、velocity_z_m_s 和 void_fraction）：是否拼写错误？</translation>
     </message>
+    <message>
+        <source>the wall loads %1 have no wall_pressure_pa</source>
+        <translation>壁面载荷 %1 没有 wall_pressure_pa</translation>
+    </message>
+    <message>
+        <source>none of the wall&apos;s %1 lumen points lies within %2 mm of the blood flow&apos;s wall (%3): the flow ran through other vessels</source>
+        <translation>血管壁的 %1 个管腔点中没有一个位于血流壁面 (%3) 的 %2 mm 以内：血流经过的是其他血管</translation>
+    </message>
+    <message>
+        <source>flow_wall_pressure 1 needs a blood-flow run&apos;s wall loads in the study (Flow &gt; Blood Flow, or vascusim-cli simulate sph, run to its averaging window)</source>
+        <translation>flow_wall_pressure 1 需要研究中某次血流计算的壁面载荷（血流 &gt; 血流 (SPH)，或 vascusim-cli simulate sph，并运行到其平均时间窗）</translation>
+    </message>
+    <message>
+        <source>the wall mesh has no wall_layer field: its lumen is not known</source>
+        <translation>血管壁网格没有 wall_layer 字段：其管腔未知</translation>
+    </message>
+    <message>
+        <source>the blood flow&apos;s wall pressure reached %1 % of the lumen; the rest carries the uniform pressure</source>
+        <translation>血流的壁面压力覆盖了 %1 % 的管腔；其余部分承受均匀压力</translation>
+    </message>
+    <message>
+        <source>flow_wall_pressure 1 needs the blood flow&apos;s wall pressure on the wall&apos;s lumen (vascusim-cli simulate fem or the workstation add it from the study&apos;s newest blood-flow run)</source>
+        <translation>flow_wall_pressure 1 需要血管壁管腔上的血流壁面压力（vascusim-cli simulate fem 或工作站会从研究中最新的血流计算添加）</translation>
+    </message>
+    <message>
+        <source>flow_wall_pressure 1 needs wall_model 1 (the quadratic hyperelastic wall)</source>
+        <translation>flow_wall_pressure 1 需要 wall_model 1（二次超弹性血管壁）</translation>
+    </message>
+    <message>
+        <source>the lumen&apos;s added pressure (%1) must be finite and leave the pressure positive (%2 Pa + %3 Pa)</source>
+        <translation>管腔的附加压力 (%1) 必须是有限值且使压力保持为正 (%2 Pa + %3 Pa)</translation>
+    </message>
+    <message>
+        <source>%1 face pressures for %2 pressure faces</source>
+        <translation>%1 个面压力对应 %2 个受压面</translation>
+    </message>
 </context>
 <context>
     <name>vsim::Parameters</name>
@@ -5763,6 +5799,14 @@
     <message>
         <source>&gt; 0: the shift&apos;s coefficient is A h max(|v|, this), so that slow zones (a stenosis&apos;s separation zone) are shifted too, where with |v| alone the particles clump and leave voids; the flow&apos;s largest speed makes it the delta+-SPH shift (Sun et al. 2017); 0: |v| alone</source>
         <translation>&gt; 0：位移系数为 A h max(|v|, 此值)，使慢速区（狭窄后的分离区）也得到位移；若只用 |v|，那里的粒子会聚集成团并留下空隙；取流动的最大速度即为 delta+-SPH 位移（Sun 等，2017）；0：只用 |v|</translation>
+    </message>
+    <message>
+        <source>Blood flow&apos;s wall pressure</source>
+        <translation>血流的壁面压力</translation>
+    </message>
+    <message>
+        <source>1: the lumen carries the blood pressure plus the time-averaged wall pressure of the study&apos;s newest blood-flow run (relative to its outlets; one-way coupling), scaled with the load; 0: a uniform pressure (wall model 1).</source>
+        <translation>1：管腔承受血压加上研究中最新血流计算的时间平均壁面压力（相对于其出口；单向耦合），随载荷缩放；0：均匀压力（血管壁模型 1）。</translation>
     </message>
 </context>
 <context>

@@ -3,7 +3,7 @@
 # ramp (the plumbing: the inlet and the outlet at the vessel's ends, the outlet's gauge pressure as the reference,
 # the particle frames written to --out and kept as a Run in the study, the mass ledger balanced, the wall loads
 # averaged over 12.5-20 ms on the lumen surface's vertices and kept as a "Wall loads (SPH)" surface, and in the
-# report; the stenosis numerics chosen). Bad input: an unknown unit, a profile, the CUDA backend without a device, a folder that is not VascuSim's.
+# report; the stenosis numerics chosen); the wall's lumen loaded by that wall pressure (one-way coupling). Bad input: an unknown unit, a profile, the CUDA backend without a device, a folder that is not VascuSim's.
 include(${CMAKE_CURRENT_LIST_DIR}/RunCli.cmake)
 
 set(study ${WORK}/flow.vsim)
@@ -101,6 +101,30 @@ if(NOT code EQUAL 0 OR NOT report_text MATCHES "Wall loads on the lumen surface"
    OR NOT report_text MATCHES "Time-averaged wall shear stress \\(TAWSS, Pa\\) on the lumen surface"
    OR report_text MATCHES "not rendered")
     message(FATAL_ERROR "the report does not give the wall loads:\n${report_text}")
+endif()
+
+# One-way coupling: the wall's lumen carries 120 mmHg plus the flow's time-averaged wall pressure (relative to its
+# outlets). The run names the wall loads among its inputs and says how much of the lumen they reached and what they
+# added; every added pressure is >= 0 here (the outlets are the flow's lowest pressure), so the peak von Mises stress
+# rises from the uniform run's, and by no more than the largest added share of the pressure (2 % for the mesh).
+run_cli(0 ignored mesh wall --study ${study} --target-vertices 800)
+set(patient --param female=0 --param family_history=0)
+run_cli(0 uniform simulate fem --study ${study} --protocol physiological ${patient})
+run_cli(0 coupled simulate fem --study ${study} --protocol physiological ${patient} --param flow_wall_pressure=1)
+string(JSON uniform_peak GET "${uniform}" metrics peak_von_mises_kpa)
+string(JSON coupled_peak GET "${coupled}" metrics peak_von_mises_kpa)
+string(JSON covered GET "${coupled}" metrics flow_pressure_covered_share)
+string(JSON added_min GET "${coupled}" metrics flow_pressure_min_pa)
+string(JSON added_max GET "${coupled}" metrics flow_pressure_max_pa)
+string(JSON coupled_status GET "${coupled}" run_status converged)
+string(JSON coupled_run GET "${coupled}" run_artifact)
+file(READ ${study}/runs/${coupled_run}/run.json coupled_record)
+execute_process(COMMAND ${PYTHON} -c "import sys; u, c, lo, hi, cov = map(float, sys.argv[1:]); p = 120 * 133.322; sys.exit(0 if cov >= 0.9 and lo >= -1 and hi > lo and u < c <= 1.02 * u * (1 + hi / p) else 1)"
+                ${uniform_peak} ${coupled_peak} ${added_min} ${added_max} ${covered} RESULT_VARIABLE plausible)
+if(NOT plausible EQUAL 0 OR NOT coupled_status OR NOT coupled_record MATCHES "\"flow_wall_loads\": \"${wall_id}\"")
+    message(FATAL_ERROR "simulate fem with the flow's wall pressure: peak ${coupled_peak} kPa against ${uniform_peak} "
+                        "uniform, ${covered} of the lumen reached, ${added_min}..${added_max} Pa added, converged "
+                        "${coupled_status}\n${coupled}")
 endif()
 
 # Refusals: exit 2 for usage, 1 for what cannot be done; nothing is added.
