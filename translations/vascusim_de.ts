@@ -8572,6 +8572,14 @@ Ersetzen?</translation>
         <source>%1 to %2%3, default %4%3</source>
         <translation>%1 bis %2%3, Standard %4%3</translation>
     </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>Chosen for the vessel when the run starts (recorded in its provenance); untick to give this value, the default included.</source>
+        <translation>Beim Start des Laufs für das Gefäß gewählt (in seiner Herkunft vermerkt); abwählen, um diesen Wert vorzugeben, auch den Standardwert.</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ReportExportDialog</name>

@@ -8570,6 +8570,14 @@ Replace them?</source>
         <source>%1 to %2%3, default %4%3</source>
         <translation>%1 至 %2%3，默认 %4%3</translation>
     </message>
+    <message>
+        <source>Automatic</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Chosen for the vessel when the run starts (recorded in its provenance); untick to give this value, the default included.</source>
+        <translation>运行开始时按血管选定（记录在其来源信息中）；取消勾选即采用此值，包括默认值。</translation>
+    </message>
 </context>
 <context>
     <name>vsim::gui::ReportExportDialog</name>

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "DrugDeliveryPanel.h"
+#include "ParameterForm.h"
 #include "ReportExportDialog.h"
 #include "SceneCache.h"
 #include "StudyDocument.h"
@@ -195,6 +196,9 @@ public:
     bool showWallLoads(const std::string& field);
     ParameterSet& bloodFlowSetup() { return m_bloodFlowSetup; }
     ParameterSet& sphParameters() { return m_sphParameters; }
+    /// The SPH solver parameters the blood flow and the needle injection choose for the vessel (every one at first;
+    /// Flow > Blood Flow Parameters' "Automatic" ticks); the others of sphParameters() are given as they stand.
+    AutomaticParameters& sphAutomatic() { return m_sphAutomatic; }
     /// Loads Run artifact `id` in the background (double-click in the study tree) and plays it in the Run Player
     /// dock: each frame drawn in 3D coloured by the player's field, its legend naming the field, the frame, and the
     /// run's status when it did not converge or stopped early. False without a study or for another kind.
@@ -356,6 +360,7 @@ private:
     ParameterSet m_femParameters;
     ParameterSet m_networkParameters;
     ParameterSet m_bloodFlowSetup, m_injectionSetup, m_sphParameters;
+    AutomaticParameters m_sphAutomatic;
     std::map<std::string, ParameterSet> m_smokeParameters; ///< per scenario
     DrugDeliveryRequest m_drugRequest;
     app::NetworkRunIds m_lastDrugRun; ///< the drug run this window made last: the next replaces it unless kept

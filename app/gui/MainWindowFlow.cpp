@@ -32,6 +32,10 @@ void MainWindow::createFlowMenu()
     m_bloodFlowSetup = ParameterSet(app::bloodFlowSetupParameters());
     m_injectionSetup = ParameterSet(app::injectionSetupParameters());
     m_sphParameters = ParameterSet(sim::sph::sphParameters());
+    for (const auto* chosen : {&app::bloodFlowChosenParameters(), &app::injectionChosenParameters()})
+        for (const std::string& key : *chosen)
+            if (m_sphAutomatic.ticked.insert(key).second)
+                m_sphAutomatic.keys.push_back(key);
     QMenu* flow = menuBar()->addMenu(tr("F&low"));
     m_documentActions << flow->addAction(tr("Blood &Flow (SPH)"), this, [this] { simulateBloodFlow(); });
     m_documentActions << flow->addAction(tr("Needle &Injection (SPH, Thesis Scenario a)"), this,
@@ -46,7 +50,7 @@ void MainWindow::createFlowMenu()
         editParametersInDialog(this, tr("Blood flow parameters"),
                                {{tr("Inlet, outlets, figures"), &m_bloodFlowSetup},
                                 {tr("Needle injection"), &m_injectionSetup},
-                                {tr("SPH solver"), &m_sphParameters}});
+                                {tr("SPH solver"), &m_sphParameters, &m_sphAutomatic}});
     });
 }
 
@@ -60,7 +64,7 @@ bool MainWindow::simulateBloodFlow()
         showError(tr("Blood flow"), tr("The vessel ends come from the centerlines: run Skeleton && Centerlines first."));
         return false;
     }
-    app::BloodFlowSetup setup = app::bloodFlowSetupFrom(m_bloodFlowSetup, m_sphParameters);
+    app::BloodFlowSetup setup = app::bloodFlowSetupFrom(m_bloodFlowSetup, m_sphParameters, m_sphAutomatic.ticked);
     setup.centerlinesId = centerlinesId;
     auto flow = std::make_shared<app::BloodFlowRun>();
     return m_tasks.run(
@@ -98,7 +102,7 @@ bool MainWindow::simulateNeedleInjection()
         showError(tr("Needle injection"), tr("The vessel ends come from the centerlines: run Skeleton && Centerlines first."));
         return false;
     }
-    app::InjectionSetup setup = app::injectionSetupFrom(m_injectionSetup, m_sphParameters);
+    app::InjectionSetup setup = app::injectionSetupFrom(m_injectionSetup, m_sphParameters, m_sphAutomatic.ticked);
     setup.centerlinesId = centerlinesId;
     auto injection = std::make_shared<app::InjectionRun>();
     return m_tasks.run(

@@ -1,11 +1,13 @@
 #include "ParameterForm.h"
 
 #include <QCoreApplication>
+#include <QCheckBox>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSpinBox>
@@ -34,6 +36,11 @@ QString parameterToolTip(const ParameterSpec& spec)
 }
 
 ParameterForm::ParameterForm(const ParameterSet& initial, QWidget* parent)
+    : ParameterForm(initial, AutomaticParameters{}, parent)
+{
+}
+
+ParameterForm::ParameterForm(const ParameterSet& initial, const AutomaticParameters& automatic, QWidget* parent)
     : QWidget(parent), m_declared(initial.specs())
 {
     auto* layout = new QVBoxLayout(this);
@@ -70,11 +77,54 @@ ParameterForm::ParameterForm(const ParameterSet& initial, QWidget* parent)
         }
         field->setObjectName(QString::fromStdString(spec.key));
         field->setToolTip(parameterToolTip(spec));
-        form->addRow(parameterText(spec.label), field);
         m_fields[spec.key] = field;
+        if (std::find(automatic.keys.begin(), automatic.keys.end(), spec.key) == automatic.keys.end())
+        {
+            form->addRow(parameterText(spec.label), field);
+            continue;
+        }
+        auto* row = new QWidget(this);
+        auto* rowLayout = new QHBoxLayout(row);
+        rowLayout->setContentsMargins(0, 0, 0, 0);
+        auto* tick = new QCheckBox(tr("Automatic"), row);
+        tick->setObjectName(QString::fromStdString(spec.key + "_automatic"));
+        tick->setToolTip(tr("Chosen for the vessel when the run starts (recorded in its provenance); untick to give "
+                            "this value, the default included."));
+        rowLayout->addWidget(field, 1);
+        rowLayout->addWidget(tick);
+        form->addRow(parameterText(spec.label), row);
+        m_automatic[spec.key] = tick;
+        connect(tick, &QCheckBox::toggled, this, [this, key = spec.key](bool ticked) { setAutomatic(key, ticked); });
     }
     layout->addStretch();
     show(initial);
+    for (const auto& [key, tick] : m_automatic)
+    {
+        tick->setChecked(automatic.ticked.count(key) > 0);
+        setAutomatic(key, tick->isChecked());
+    }
+}
+
+void ParameterForm::setAutomatic(const std::string& key, bool ticked)
+{
+    QAbstractSpinBox* field = m_fields.at(key);
+    field->setEnabled(!ticked);
+    if (!ticked)
+        return;
+    const double declared = m_declared.get(key);
+    if (auto* integer = qobject_cast<QSpinBox*>(field))
+        integer->setValue(int(std::lround(declared)));
+    else if (auto* real = qobject_cast<QDoubleSpinBox*>(field))
+        real->setValue(declared);
+}
+
+std::set<std::string> ParameterForm::automatic() const
+{
+    std::set<std::string> ticked;
+    for (const auto& [key, tick] : m_automatic)
+        if (tick->isChecked())
+            ticked.insert(key);
+    return ticked;
 }
 
 void ParameterForm::show(const ParameterSet& values)
@@ -101,23 +151,27 @@ ParameterSet ParameterForm::values() const
     return result;
 }
 
-void ParameterForm::resetToDefaults() { show(m_declared); }
+void ParameterForm::resetToDefaults()
+{
+    show(m_declared);
+    for (const auto& [key, tick] : m_automatic)
+        tick->setChecked(true);
+}
 
-bool editParametersInDialog(QWidget* parent, const QString& title,
-                            const std::vector<std::pair<QString, ParameterSet*>>& pages)
+bool editParametersInDialog(QWidget* parent, const QString& title, const std::vector<ParameterPage>& pages)
 {
     QDialog dialog(parent);
     dialog.setWindowTitle(title);
     auto* layout = new QVBoxLayout(&dialog);
     auto* tabs = new QTabWidget(&dialog);
     std::vector<ParameterForm*> forms;
-    for (const auto& [name, parameters] : pages)
+    for (const ParameterPage& page : pages)
     {
         auto* scroll = new QScrollArea(tabs);
-        auto* form = new ParameterForm(*parameters, scroll);
+        auto* form = new ParameterForm(*page.values, page.automatic ? *page.automatic : AutomaticParameters{}, scroll);
         scroll->setWidget(form);
         scroll->setWidgetResizable(true);
-        tabs->addTab(scroll, name);
+        tabs->addTab(scroll, page.title);
         forms.push_back(form);
     }
     layout->addWidget(tabs);
@@ -132,7 +186,11 @@ bool editParametersInDialog(QWidget* parent, const QString& title,
     if (dialog.exec() != QDialog::Accepted)
         return false;
     for (std::size_t page = 0; page < pages.size(); ++page)
-        *pages[page].second = forms[page]->values();
+    {
+        *pages[page].values = forms[page]->values();
+        if (pages[page].automatic)
+            pages[page].automatic->ticked = forms[page]->automatic();
+    }
     return true;
 }
 

@@ -71,16 +71,15 @@ bool given(const BloodFlowSetup& setup, const std::string& name)
     return std::find(setup.given.begin(), setup.given.end(), name) != setup.given.end();
 }
 
-/// The solver's parameters runBloodFlow chooses for the vessel unless the user sets them (BloodFlowPipeline.h).
-bool chosenUnlessSet(const std::string& key)
+} // namespace
+
+const std::vector<std::string>& bloodFlowChosenParameters()
 {
     static const std::vector<std::string> chosen = {
         "spacing_mm", "end_time_s", "sound_speed_m_s", "cfl", "reference_pressure_pa", "fluid_loss_guard",
         "particle_shifting", "shifting_speed_m_s", "density_relaxation_s"};
-    return std::find(chosen.begin(), chosen.end(), key) != chosen.end();
+    return chosen;
 }
-
-} // namespace
 
 std::vector<ParameterSpec> bloodFlowSetupParameters()
 {
@@ -103,13 +102,12 @@ std::vector<ParameterSpec> bloodFlowSetupParameters()
     };
 }
 
-BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters)
+BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters,
+                                  const std::set<std::string>& automatic)
 {
     BloodFlowSetup setup;
     setup.parameters = solverParameters;
-    for (const ParameterSpec& spec : solverParameters.specs()) // the chosen ones only where the form changed them
-        if (!chosenUnlessSet(spec.key) || solverParameters.get(spec.key) != spec.defaultValue)
-            setup.given.push_back(spec.key);
+    setup.given = givenUnlessAutomatic(solverParameters, automatic);
     if (form.get("inlet_flow_rate_ml_s") > 0.0)
         setup.inlet.kind = BloodFlowInlet::Kind::FlowRate, setup.inlet.value = 1e-6 * form.get("inlet_flow_rate_ml_s");
     else

@@ -103,13 +103,20 @@ std::vector<ParameterSpec> injectionSetupParameters()
     };
 }
 
-InjectionSetup injectionSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters)
+const std::vector<std::string>& injectionChosenParameters()
+{
+    static const std::vector<std::string> chosen = {
+        "spacing_mm", "void_fraction", "reference_pressure_pa", "free_surface", "fluid_tension", "cfl",
+        "wall_repulsion", "gravity_x_m_s2", "gravity_y_m_s2", "gravity_z_m_s2", "sound_speed_m_s", "end_time_s"};
+    return chosen;
+}
+
+InjectionSetup injectionSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters,
+                                  const std::set<std::string>& automatic)
 {
     InjectionSetup setup;
     setup.parameters = solverParameters;
-    for (const ParameterSpec& spec : solverParameters.specs())
-        if (solverParameters.get(spec.key) != spec.defaultValue)
-            setup.given.push_back(spec.key);
+    setup.given = givenUnlessAutomatic(solverParameters, automatic);
     setup.needleBoreMm = form.get("needle_bore_mm");
     setup.particlesPerSecond = form.get("particles_per_s");
     setup.collectionDepthMm = form.get("box_depth_mm");

@@ -178,4 +178,14 @@ nlohmann::json openBoundaryJson(const sim::sph::OpenBoundary& b)
     return json;
 }
 
+std::vector<std::string> givenUnlessAutomatic(const ParameterSet& solverParameters,
+                                              const std::set<std::string>& automatic)
+{
+    std::vector<std::string> given;
+    for (const ParameterSpec& spec : solverParameters.specs())
+        if (!automatic.count(spec.key))
+            given.push_back(spec.key);
+    return given;
+}
+
 } // namespace vsim::app

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -112,5 +113,10 @@ SolverRun runSph(sim::sph::SphSolver& solver, const SimulationInput& input, cons
 
 /// An open boundary as the run documents and the provenance print it (mm, ml/s, mmHg).
 nlohmann::json openBoundaryJson(const sim::sph::OpenBoundary& boundary);
+
+/// The solver parameters a workstation form gives: every one but those ticked `automatic` (the pipeline chooses
+/// those).
+std::vector<std::string> givenUnlessAutomatic(const ParameterSet& solverParameters,
+                                              const std::set<std::string>& automatic);
 
 } // namespace vsim::app

@@ -22,6 +22,7 @@
 #include "vsim/study/Study.h"
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -84,10 +85,14 @@ struct BloodFlowRun
 /// inlet_flow_rate_ml_s (> 0 replaces the velocity), outlet_pressure_mmhg, compare_mm, spacing_mm and end_time_s (0:
 /// chosen), frames.
 std::vector<ParameterSpec> bloodFlowSetupParameters();
-/// The setup from that form and the solver's parameters (every one counts as given, but those runBloodFlow chooses
-/// (BloodFlowSetup::parameters) only where they differ from their defaults; the form's spacing and end time at 0 are
-/// chosen).
-BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters);
+/// The solver parameters runBloodFlow chooses for the vessel unless `given` names them (BloodFlowSetup::parameters):
+/// the workstation's "Automatic" ticks.
+const std::vector<std::string>& bloodFlowChosenParameters();
+/// The setup from that form and the solver's parameters: every solver parameter counts as given but those in
+/// `automatic` (runBloodFlow chooses them), a value equal to its default included; the form's spacing and end time at
+/// 0 are chosen.
+BloodFlowSetup bloodFlowSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters,
+                                  const std::set<std::string>& automatic);
 
 /// Runs the blood flow of the study's centerlines (their label's lumen) under `control` (without a frame schedule:
 /// setup.frames over the end time). Throws vsim::Error for a

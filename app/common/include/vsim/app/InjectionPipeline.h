@@ -32,6 +32,7 @@
 
 #include <Eigen/Core>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -84,10 +85,14 @@ struct InjectionRun
 /// The set-up as a form declares it (the workstation's Flow > Blood Flow Parameters, "Needle injection"):
 /// needle_bore_mm, particles_per_s, box_depth_mm, box_margin_mm, spacing_mm and end_time_s (0: chosen), frames.
 std::vector<ParameterSpec> injectionSetupParameters();
-/// The set-up from that form and the solver's parameters: a solver parameter counts as given where it differs from
-/// its default (the injection chooses its own spacing, sound speed, Courant number, tension, backstop, gravity, void
-/// fraction and gauge level otherwise); the form's spacing and end time at 0 are chosen.
-InjectionSetup injectionSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters);
+/// The solver parameters runInjection chooses unless `given` names them (InjectionSetup::parameters): its spacing,
+/// sound speed, Courant number, tension, backstop, gravity, void fraction, gauge level and end time.
+const std::vector<std::string>& injectionChosenParameters();
+/// The set-up from that form and the solver's parameters: every solver parameter counts as given but those in
+/// `automatic` (runInjection chooses them), a value equal to its default included; the form's spacing and end time
+/// at 0 are chosen.
+InjectionSetup injectionSetupFrom(const ParameterSet& form, const ParameterSet& solverParameters,
+                                  const std::set<std::string>& automatic);
 
 /// Runs the needle injection on the study's centerlines (their label's lumen) under `control` (without a frame
 /// schedule: setup.frames over the end time). Throws vsim::Error for a study without the centerlines' label, a needle
