@@ -121,7 +121,8 @@ json fluidKept(const json& run)
 
 int main(int argc, char** argv)
 {
-    if (argc < 2)
+    // The work folder first: an option in its place (--help) is refused, not made a folder.
+    if (argc < 2 || argv[1][0] == '-')
     {
         std::fprintf(stderr,
                      "usage: bench_sph_openfoam <work folder> [--spacing MM] [--mean-speed M/S --length MM] "
