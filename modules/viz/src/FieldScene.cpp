@@ -1,5 +1,6 @@
 #include "FieldScene.h"
 #include "TextFonts.h"
+#include "TitleLines.h"
 
 #include "vsim/core/Error.h"
 #include "vsim/interop/VtkMesh.h"
@@ -160,7 +161,7 @@ vtkSmartPointer<vtkScalarBarActor> newLegend()
     return legend;
 }
 
-void titleLegend(vtkScalarBarActor* legend, const QString& title, int fontSize, double roomPixels)
+void titleLegend(vtkScalarBarActor* legend, const QString& title, int fontSize, double roomPixels, int dpi)
 {
     constexpr int kLongestLine = 14; // characters; "von Mises (kPa)" stays on one line at 15 with its unit short
     constexpr double kCharacterWidth = 0.6; // of the font size: a wide estimate for Arial's mixed text
@@ -174,13 +175,17 @@ void titleLegend(vtkScalarBarActor* legend, const QString& title, int fontSize, 
     if (roomPixels > 0.0 && longest > 0)
         fontSize = std::clamp(int(roomPixels / (kCharacterWidth * longest)), (3 * fontSize + 3) / 4, fontSize);
     fitFontToText(legend->GetTitleTextProperty(), title);
-    legend->SetTitle(lines.toUtf8().constData());
     for (vtkTextProperty* text :
          {legend->GetTitleTextProperty(), legend->GetLabelTextProperty(), legend->GetAnnotationTextProperty()})
     {
         text->SetFontSize(fontSize);
         text->ItalicOff();
     }
+    // A line still wider than the room at that size breaks again where its script allows (TitleLines.h): VTK
+    // centres the title over the bar and clips it at the view's edge.
+    if (roomPixels > 0.0)
+        lines = titleLines(lines, legend->GetTitleTextProperty(), roomPixels, dpi);
+    legend->SetTitle(lines.toUtf8().constData());
     legend->UnconstrainedFontSizeOn();
 }
 

@@ -53,8 +53,10 @@ vtkSmartPointer<vtkScalarBarActor> newLegend();
 /// alike, upright: VTK otherwise shrinks the title to the bar's width, 6-8 pixels for "von Mises (kPa)". A long
 /// title is broken before its unit, "Drug flow" over "(ml/min; grey: none)", so that it stays within the view; with
 /// `roomPixels` (the width the title may take, centred over the bar) the text is smaller where its longest line
-/// would not fit, down to three quarters of `fontSize`.
-void titleLegend(vtkScalarBarActor* legend, const QString& title, int fontSize, double roomPixels = 0.0);
+/// would not fit, down to three quarters of `fontSize`, and a line still wider than the room at that size, measured
+/// at the view's `dpi`, breaks into more (TitleLines.h).
+void titleLegend(vtkScalarBarActor* legend, const QString& title, int fontSize, double roomPixels = 0.0,
+                 int dpi = 72);
 
 /// Labels the legend with `count` numbers across its table's range, each written by `text`, so that they carry
 /// the reader's decimal mark: VTK prints tick labels with printf, which keeps the '.', so the numbers become the

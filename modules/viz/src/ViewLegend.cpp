@@ -4,6 +4,7 @@
 
 #include "vsim/viz/DecimalText.h"
 
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkScalarsToColors.h>
@@ -33,7 +34,8 @@ void showLegendIn(vtkRenderer* renderer, vtkSmartPointer<vtkScalarBarActor>& leg
     const double middle = x + 0.5 * legend->GetWidth();
     const int* size = renderer->GetSize(); // device pixels
     const double room = 2.0 * std::min(middle, 1.0 - middle) * double(size[0]);
-    titleLegend(legend, title, int(std::lround(12 * pixelScale)), room);
+    vtkRenderWindow* window = renderer->GetRenderWindow();
+    titleLegend(legend, title, int(std::lround(12 * pixelScale)), room, window ? window->GetDPI() : 72);
     legend->SetVisibility(true);
 }
 

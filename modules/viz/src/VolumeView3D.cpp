@@ -1,6 +1,7 @@
 #include "vsim/viz/VolumeView3D.h"
 
 #include "FieldScene.h"
+#include "TitleLines.h"
 #include "ViewLegend.h"
 #include "VolumeProperties.h"
 
@@ -49,6 +50,7 @@ using detail::fieldMapper;
 
 using detail::kPointsLegendX;
 using detail::kSurfaceLegendX;
+using detail::lineWidthsPixels;
 using detail::showLegendIn;
 
 struct VolumeView3D::Scene
@@ -266,6 +268,28 @@ QStringList VolumeView3D::legendLabels(bool surface) const
     for (vtkIdType n = 0; n < table->GetNumberOfAnnotatedValues(); ++n)
         labels << QString::fromStdString(table->GetAnnotation(n));
     return labels;
+}
+
+QStringList VolumeView3D::legendTitleLines(bool surface) const
+{
+    vtkScalarBarActor* legend = surface ? m_scene->surfaceLegend : m_scene->legend;
+    if (!legend || !legend->GetVisibility() || !legend->GetTitle())
+        return {};
+    return QString::fromUtf8(legend->GetTitle()).split('\n');
+}
+
+bool VolumeView3D::legendTitleWithinView(bool surface) const
+{
+    vtkScalarBarActor* legend = surface ? m_scene->surfaceLegend : m_scene->legend;
+    const QStringList lines = legendTitleLines(surface);
+    if (lines.isEmpty())
+        return false;
+    const int* size = renderer()->GetSize(); // device pixels
+    const double middle = (legend->GetPosition()[0] + 0.5 * legend->GetWidth()) * double(size[0]);
+    for (int width : lineWidthsPixels(lines.join('\n'), legend->GetTitleTextProperty(), renderWindow()->GetDPI()))
+        if (middle - 0.5 * width < 0.0 || middle + 0.5 * width > double(size[0]))
+            return false;
+    return true;
 }
 
 void VolumeView3D::showLegend(vtkScalarsToColors* table, const QString& title)

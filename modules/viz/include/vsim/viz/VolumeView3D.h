@@ -52,6 +52,12 @@ public:
     /// The numbers on the legend on the right (lines, points, volumes) or, with `surface`, on the left, bottom to
     /// top, in the reader's decimal mark (DecimalText.h); empty when that legend is not shown.
     QStringList legendLabels(bool surface = false) const;
+    /// The lines of the title on the legend on the right or, with `surface`, on the left, as drawn; empty when that
+    /// legend is not shown.
+    QStringList legendTitleLines(bool surface = false) const;
+    /// Whether every line of that legend's title, centred over its bar and measured by VTK's text renderer, lies
+    /// within the view's width (false when the legend is not shown).
+    bool legendTitleWithinView(bool surface = false) const;
     /// Opacity of the coloured surface (0..1): lowered so that particles inside show through.
     void setFieldSurfaceOpacity(double opacity);
     /// Opacity of every surface (0..1): lowered so that skeletons and centerlines inside show through.
