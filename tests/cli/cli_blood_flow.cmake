@@ -13,7 +13,7 @@ run_cli(0 ignored segment --study ${study})
 run_cli(0 ignored skeleton --study ${study})
 run_cli(0 ignored centerline --study ${study})
 
-run_cli(0 flow simulate sph --study ${study} --inlet 0.1m/s --outlet 50mmHg --spacing 1.0mm --ramp 0.005s --until 0.02s
+run_cli(0 flow simulate sph --study ${study} --inlet 0.03m/s --outlet 50mmHg --spacing 1.0mm --ramp 0.005s --until 0.02s
         --frames 4 --out ${WORK}/run)
 string(JSON stopped GET "${flow}" run_status stopped_by)
 string(JSON boundaries LENGTH "${flow}" boundaries)
@@ -49,20 +49,24 @@ if(NOT in_throat EQUAL 0)
     message(FATAL_ERROR "the largest TAWSS (${wall_tawss} Pa) lies at ${peak_at} mm, over 10 mm from the stenosis's "
             "centre (${throat_x}, ${throat_y}, ${throat_z} mm)")
 endif()
-# The stenosis numerics the pipeline chose (SphSolver.h: kStenosisShifting): particle shifting A 2 with its speed
-# floor at the throat's mean speed (the inlet's 0.1 m/s times the truth's area ratio; the label's voxels and the
-# inlet's centerline radius move it: within a factor 0.6-1.6), the continuity density relaxed over 20 h / c0.
+# The stenosis numerics the pipeline chose (SphSolver.h: kStenosisShifting, stenosisCfl): particle shifting A 2 with
+# its floor at the throat's mean speed (the inlet's 0.03 m/s times the truth's area ratio; the label's voxels and the
+# inlet's centerline radius move it: within a factor 0.6-1.6), the continuity density relaxed over 20 h / c0, and the
+# Courant number 0.1 x 48.457 / the throat's Re (rho U d / mu of its mean flow; the truth's about 110 here), within
+# the same factor. (At 0.1 m/s, throat Re about 390, that Courant number takes 8x the steps: 8,796 in 348 s.)
 string(JSON shifting GET "${flow}" parameters particle_shifting)
 string(JSON shift_floor GET "${flow}" parameters shifting_speed_m_s)
 string(JSON relaxation GET "${flow}" parameters density_relaxation_s)
 string(JSON sound_speed GET "${flow}" parameters sound_speed_m_s)
+string(JSON courant GET "${flow}" parameters cfl)
 string(JSON reference_d GET "${truth}" measures reference_diameter_mm)
 string(JSON minimal_d GET "${truth}" measures minimal_diameter_mm)
-execute_process(COMMAND ${PYTHON} -c "import sys; a, f, t, c, D, d = map(float, sys.argv[1:]); throat = 0.1 * (D / d) ** 2; sys.exit(0 if a == 2 and 0.6 <= f / throat <= 1.6 and abs(t - 20 * 2e-3 / c) <= 1e-9 * t else 1)"
-                ${shifting} ${shift_floor} ${relaxation} ${sound_speed} ${reference_d} ${minimal_d} RESULT_VARIABLE chosen)
+execute_process(COMMAND ${PYTHON} -c "import sys; a, f, t, c, n, D, d = map(float, sys.argv[1:]); throat = 0.03 * (D / d) ** 2; re = 1060 * throat * 1e-3 * d / 3.5e-3; sys.exit(0 if a == 2 and 0.6 <= f / throat <= 1.6 and abs(t - 20 * 2e-3 / c) <= 1e-9 * t and 0.6 <= n / (0.1 * 48.457 / re) <= 1.6 else 1)"
+                ${shifting} ${shift_floor} ${relaxation} ${sound_speed} ${courant} ${reference_d} ${minimal_d} RESULT_VARIABLE chosen)
 if(NOT chosen EQUAL 0)
     message(FATAL_ERROR "simulate sph's stenosis numerics: shifting ${shifting}, its floor ${shift_floor} m/s (truth "
-            "diameters ${reference_d} / ${minimal_d} mm at 0.1 m/s), relaxation ${relaxation} s at c0 ${sound_speed} m/s")
+            "diameters ${reference_d} / ${minimal_d} mm at 0.03 m/s), relaxation ${relaxation} s at c0 ${sound_speed} m/s, "
+            "Courant number ${courant}")
 endif()
 # The outlets' 50 mmHg (6,666 Pa) is the reference pressure: reported on the pressures, left out of the equation of
 # state (as an absolute level in it the buffers compressed the fluid: the run stopped at the density guard at 0.13 ms).

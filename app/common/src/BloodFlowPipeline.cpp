@@ -203,8 +203,13 @@ BloodFlowRun runBloodFlow(const study::Study& study, const BloodFlowSetup& setup
                        std::max({0.5, 10.0 * expectedPeak, std::sqrt(viscousDropPa / (0.005 * density))}));
     if (!given(setup, "reference_pressure_pa")) // the outlets' level: pressures reported against the same zero
         parameters.set("reference_pressure_pa", setup.outletPressurePa);
-    if (!given(setup, "cfl")) // a stenosis's jet needs the smaller step (SphSolver.h)
-        parameters.set("cfl", sim::sph::kStenosisCfl);
+    // A stenosis's jet needs the smaller step, the smaller the faster it is (SphSolver.h: stenosisCfl), by the
+    // Reynolds number of the narrowest section's mean flow (half the parabolic peak expected there) over its
+    // diameter.
+    const double throatReynolds = density * 0.5 * expectedPeak * 2e-3 * narrowest /
+                                  blood.mixtureViscosity(parameters.get("void_fraction"));
+    if (!given(setup, "cfl"))
+        parameters.set("cfl", sim::sph::stenosisCfl(throatReynolds));
     // ... and the shift with its floor at the narrowest section's mean speed at the inflow's peak (half the
     // parabolic peak expected there), and the continuity density relaxed towards summation (SphSolver.h:
     // kStenosisShifting).

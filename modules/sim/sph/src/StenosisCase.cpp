@@ -48,7 +48,7 @@ StenosisPipe StenosisPipe::atFlow(double meanSpeed, double length) const
     pipe.rampS = rampS * (length / lengthMm) * (meanSpeedMS / meanSpeed); // the same number of quarter-wave periods
     const double jetTransitS = 1e-3 * (length - throatAtMm) / (4.0 * meanSpeed); // the throat's mean: 4 x (area ratio)
     pipe.averageFromS = pipe.rampS + 1.5 * jetTransitS, pipe.endTimeS = pipe.rampS + 2.5 * jetTransitS;
-    pipe.cfl = cfl * std::min(1.0, throatReynolds() / pipe.throatReynolds());
+    pipe.cfl = stenosisCfl(pipe.throatReynolds(), cfl, throatReynolds());
     if (pipe.throatReynolds() > throatReynolds())
         pipe.wallRepulsion = std::max(wallRepulsion, 0.01);
     return pipe;

@@ -44,7 +44,8 @@ struct BloodFlowSetup
     BloodFlowInlet inlet;
     double outletPressurePa = 0.0; ///< every outlet (gauge); also the solver's reference pressure unless given
     double compareMm = 6.0;        ///< the stenosis figures' comparison distance (the thesis's hand case: 6 mm)
-    /// The solver's parameters; spacing_mm, sound_speed_m_s, cfl (sim::sph::kStenosisCfl), end_time_s,
+    /// The solver's parameters; spacing_mm, sound_speed_m_s, cfl (sim::sph::stenosisCfl of the narrowest section's
+    /// Re), end_time_s,
     /// reference_pressure_pa (the outlets' pressure), fluid_loss_guard (0.1), particle_shifting
     /// (sim::sph::kStenosisShifting), shifting_speed_m_s (the narrowest section's mean speed at the inflow's
     /// peak) and density_relaxation_s (20 h / c0; not with density_summation) are chosen (runBloodFlow) unless

@@ -42,6 +42,19 @@ std::vector<ParameterSpec> sphParameters();
 /// runs through with the density within 0.62 % (2026-11-27, RESULTS.md). The validation channels (hydrostatic,
 /// Poiseuille, Womersley, mass) pass at the default and keep it.
 constexpr double kStenosisCfl = 0.1;
+/// The throat Reynolds number (rho U d / mu of the narrowest section's mean flow) up to which kStenosisCfl holds:
+/// sph-stenosis's pipe, 0.2 m/s through a 0.8 mm throat in blood (StenosisPipe's defaults).
+constexpr double kStenosisCflReynolds = 48.457;
+/// The stenosis Courant number for a jet of `throatReynolds`: `cflAtReference` scaled by min(1, `referenceReynolds`
+/// / `throatReynolds`). A faster jet needs the smaller step: at throat Re 97 the jet blew up at 0.1 (0.05 mm
+/// particles, with and without the stenosis numerics below: the density guard on the axis in the throat at 12.4 and
+/// 13.7 ms) and held at 0.05; at Re 200 0.024 held (2026-11-30 and 2026-12-06, RESULTS.md). StenosisPipe::atFlow
+/// and the study pipeline (app/BloodFlowPipeline) both take it.
+inline double stenosisCfl(double throatReynolds, double cflAtReference = kStenosisCfl,
+                          double referenceReynolds = kStenosisCflReynolds)
+{
+    return throatReynolds > referenceReynolds ? cflAtReference * referenceReynolds / throatReynolds : cflAtReference;
+}
 
 /// A stenosis's other numerics, those of the 0.05 mm cross-check against OpenFOAM at throat Re 97 (2026-12-04,
 /// RESULTS.md; sim/sph/README.md): particle shifting A 2 (without it the recovering jet tore into streaks and voids
